@@ -1,0 +1,1065 @@
+// What each grammar rule does when it matches: PEGTL actions, kept apart from
+// the grammar. They work on the Interpreter's value stack and block stack.
+#pragma once
+
+#include <iostream>
+
+#include <tao/pegtl.hpp>
+
+#include "language/grammar.hpp"
+#include "language/interpreter_state.hpp"
+#include "language/value_ops.hpp"
+
+namespace hexant::language {
+
+namespace g = grammar;
+using runtime::TimeOp;
+using runtime::TransformKind;
+
+template <typename Rule>
+struct action : p::nothing<Rule> {};
+
+// The word a rule matched, without the blanks after it.
+template <typename ActionInput>
+std::string word(const ActionInput& in) {
+    const std::string s = in.string();
+    std::size_t n = 0;
+    while (n < s.size() && (std::isalnum(static_cast<unsigned char>(s[n])) || s[n] == '_')) ++n;
+    return s.substr(0, n);
+}
+
+// Rules whose action is to remember the word they matched.
+#define HEXANT_NAME_ACTION(rule)                                        \
+    template <>                                                         \
+    struct action<g::rule> {                                            \
+        template <typename ActionInput>                                 \
+        static void apply(const ActionInput& in, Interpreter& st) {     \
+            st.push_name(word(in));                                     \
+        }                                                               \
+    }
+HEXANT_NAME_ACTION(function_name);
+HEXANT_NAME_ACTION(defined_name);
+HEXANT_NAME_ACTION(colour_model);
+HEXANT_NAME_ACTION(colour_component_name);
+HEXANT_NAME_ACTION(component_name);
+HEXANT_NAME_ACTION(declare_kind);
+HEXANT_NAME_ACTION(declare_name);
+HEXANT_NAME_ACTION(for_variable);
+HEXANT_NAME_ACTION(deformation_name);
+HEXANT_NAME_ACTION(unsupported_pattern_name);
+HEXANT_NAME_ACTION(finish_setting_name);
+HEXANT_NAME_ACTION(csg_kind);
+HEXANT_NAME_ACTION(object_flag_name);
+HEXANT_NAME_ACTION(light_setting_name);
+HEXANT_NAME_ACTION(camera_vector_name);
+HEXANT_NAME_ACTION(global_setting_name);
+HEXANT_NAME_ACTION(global_ignored_name);
+HEXANT_NAME_ACTION(unsupported_kind);
+HEXANT_NAME_ACTION(kw_sphere);
+HEXANT_NAME_ACTION(kw_box);
+HEXANT_NAME_ACTION(kw_plane);
+HEXANT_NAME_ACTION(kw_polygon);
+HEXANT_NAME_ACTION(kw_triangle);
+HEXANT_NAME_ACTION(kw_smooth_triangle);
+HEXANT_NAME_ACTION(kw_disc);
+HEXANT_NAME_ACTION(kw_cylinder);
+HEXANT_NAME_ACTION(kw_cone);
+HEXANT_NAME_ACTION(kw_torus);
+HEXANT_NAME_ACTION(kw_prism);
+#undef HEXANT_NAME_ACTION
+
+// A ValueError from the value operations becomes an error at the rule's place.
+#define HEXANT_ACTION(rule) \
+    template <>             \
+    struct action<g::rule>
+#define HEXANT_APPLY                                              \
+    template <typename ActionInput>                               \
+    static void apply(const ActionInput& in, Interpreter& st) {   \
+        try {                                                     \
+            run(in, st);                                          \
+        } catch (const ValueError& e) {                           \
+            Interpreter::fail(in.position(), e.what());           \
+        }                                                         \
+    }                                                             \
+    template <typename ActionInput>                               \
+    static void run(const ActionInput& in, Interpreter& st)
+
+// ------------------------------------------------------------ literals
+
+HEXANT_ACTION(number_text) {
+    HEXANT_APPLY { (void)in; st.push(Value{TimeFunction(std::strtod(in.string().c_str(), nullptr))}); }
+};
+
+HEXANT_ACTION(string_content) {
+    HEXANT_APPLY {
+        const std::string raw = in.string();
+        std::string out;
+        for (std::size_t i = 0; i < raw.size(); ++i) {
+            if (raw[i] != '\\' || i + 1 == raw.size()) {
+                out += raw[i];
+                continue;
+            }
+            const char c = raw[++i];
+            switch (c) {
+                case 'n': out += '\n'; break;
+                case 't': out += '\t'; break;
+                case 'r': out += '\r'; break;
+                case 'a': out += '\a'; break;
+                case 'b': out += '\b'; break;
+                case 'f': out += '\f'; break;
+                case 'v': out += '\v'; break;
+                case '0': out += '\0'; break;
+                default: out += c; break;
+            }
+        }
+        st.push(Value{out});
+    }
+};
+
+HEXANT_ACTION(frame_open) {
+    HEXANT_APPLY { (void)in; st.open_frame(); }
+};
+
+HEXANT_ACTION(vector_literal) {
+    HEXANT_APPLY {
+        std::vector<Value> items = st.close_frame();
+        if (items.size() < 2 || items.size() > 5)
+            throw ValueError("a vector has 2 to 5 components, not " + std::to_string(items.size()));
+        Vector v;
+        v.size = static_cast<int>(items.size());
+        for (std::size_t i = 0; i < items.size(); ++i)
+            v.c[i] = to_float(items[i], "a vector component");
+        st.push(Value{v});
+    }
+};
+
+HEXANT_ACTION(function_call) {
+    HEXANT_APPLY {
+        (void)in;
+        std::vector<Value> args = st.close_frame();
+        const std::string name = st.pop_name();
+        st.push(call_builtin(name, args, st.random));
+    }
+};
+
+HEXANT_ACTION(defined_call) {
+    HEXANT_APPLY {
+        (void)in;
+        st.push(Value{TimeFunction(st.lookup(st.pop_name()) ? 1.0 : 0.0)});
+    }
+};
+
+HEXANT_ACTION(builtin_constant_name) {
+    HEXANT_APPLY {
+        const std::string w = in.string();
+        const auto& a = st.options.animation;
+        auto f = [&](double v) { st.push(Value{TimeFunction(v)}); };
+        if (w == "pi") f(3.14159265358979323846);
+        else if (w == "tau") f(2 * 3.14159265358979323846);
+        else if (w == "true" || w == "yes" || w == "on") f(1.0);
+        else if (w == "false" || w == "no" || w == "off") f(0.0);
+        else if (w == "x") st.push(make_vector({1.0, 0.0, 0.0}));
+        else if (w == "y") st.push(make_vector({0.0, 1.0, 0.0}));
+        else if (w == "z") st.push(make_vector({0.0, 0.0, 1.0}));
+        else if (w == "t") st.push(make_vector({0.0, 0.0, 0.0, 1.0}));
+        else if (w == "u") st.push(make_vector({1.0, 0.0}));
+        else if (w == "v") st.push(make_vector({0.0, 1.0}));
+        else if (w == "image_width") f(a.width);
+        else if (w == "image_height") f(a.height);
+        else if (w == "clock") st.push(Value{a.is_animation() ? TimeFunction::clock() : TimeFunction(a.initial_clock)});
+        else if (w == "clock_delta") f(a.clock_delta());
+        else if (w == "clock_on") f(a.is_animation() ? 1.0 : 0.0);
+        else if (w == "initial_clock") f(a.initial_clock);
+        else if (w == "final_clock") f(a.final_clock);
+        else if (w == "initial_frame") f(a.initial_frame);
+        else if (w == "final_frame") f(a.final_frame);
+        else if (w == "version") f(st.version);
+        else if (w == "frame_number") {
+            // The frame whose shutter holds the time: constant within a frame.
+            if (!a.is_animation() || a.clock_delta() == 0.0) {
+                f(a.initial_frame);
+            } else {
+                const TimeFunction steps = (TimeFunction::clock() - a.initial_clock) / a.clock_delta();
+                st.push(Value{TimeFunction::apply(TimeOp::Floor, steps + 1e-9) + double(a.initial_frame)});
+            }
+        }
+    }
+};
+
+HEXANT_ACTION(colour_model_literal) {
+    HEXANT_APPLY {
+        (void)in;
+        Value v = st.pop();
+        st.push(colour_model(st.pop_name(), v));
+    }
+};
+
+HEXANT_ACTION(colour_keyword) {
+    HEXANT_APPLY {
+        (void)in;
+        Vector black;
+        black.size = 5;
+        st.push(Value{black});
+    }
+};
+
+HEXANT_ACTION(colour_base) {
+    HEXANT_APPLY {
+        (void)in;
+        Value v = st.pop();
+        const runtime::ColourFunction c = to_colour(v, "the colour after 'color'");
+        Vector r;
+        r.size = 5;
+        for (int i = 0; i < 5; ++i) r.c[i] = c.c[i];
+        st.top() = Value{r};
+    }
+};
+
+HEXANT_ACTION(colour_component_setting) {
+    HEXANT_APPLY {
+        (void)in;
+        const TimeFunction v = to_float(st.pop(), "a colour component");
+        const std::string name = st.pop_name();
+        Vector& c = st.top().as<Vector>();
+        const int i = name == "red" ? 0 : name == "green" ? 1 : name == "blue" ? 2 : name == "filter" ? 3 : 4;
+        c.c[i] = v;
+    }
+};
+
+HEXANT_ACTION(reference) {
+    HEXANT_APPLY {
+        const std::string name = word(in);
+        const Value* v = st.lookup(name);
+        if (v == nullptr) throw ValueError("undeclared identifier '" + name + "'");
+        if (v->is<Unevaluated>()) {
+            const auto& u = v->as<Unevaluated>();
+            throw ValueError("'" + name + "' is a " + u.what + " (declared at " + u.where.source + ":" +
+                             std::to_string(u.where.line) + ":" + std::to_string(u.where.column) +
+                             "), which hexant does not support");
+        }
+        if (v->is<std::shared_ptr<Array>>()) {
+            // Arrays are values: a copy, so that changing it leaves the original alone.
+            st.push(Value{std::make_shared<Array>(*v->as<std::shared_ptr<Array>>())});
+            return;
+        }
+        st.push(*v);
+    }
+};
+
+HEXANT_ACTION(component_access) {
+    HEXANT_APPLY {
+        (void)in;
+        Value v = st.pop();
+        st.push(component(v, st.pop_name()));
+    }
+};
+
+// The element of an array; `indices` already constant.
+inline std::size_t element_index(const Array& array, const std::vector<double>& indices) {
+    if (indices.size() != array.dimensions.size())
+        throw ValueError("this array has " + std::to_string(array.dimensions.size()) +
+                         " dimension(s) but " + std::to_string(indices.size()) + " index(es) were given");
+    std::size_t flat = 0;
+    for (std::size_t d = 0; d < indices.size(); ++d) {
+        const double i = std::floor(indices[d]);
+        if (i < 0 || i >= array.dimensions[d])
+            throw ValueError("array index " + std::to_string(static_cast<long long>(i)) +
+                             " is out of range 0.." + std::to_string(array.dimensions[d] - 1));
+        flat = flat * static_cast<std::size_t>(array.dimensions[d]) + static_cast<std::size_t>(i);
+    }
+    return flat;
+}
+
+HEXANT_ACTION(index_suffix) {
+    HEXANT_APPLY {
+        (void)in;
+        const double index = to_constant(st.pop(), "an array index");
+        Value a = st.pop();
+        if (!a.is<std::shared_ptr<Array>>()) throw ValueError("'[ ]' needs an array, not a " + type_name(a));
+        auto array = a.as<std::shared_ptr<Array>>();
+        if (array->dimensions.size() > 1) {
+            // A[i] of a many-dimensional array: the sub-array.
+            const int rows = array->dimensions[0];
+            if (index < 0 || index >= rows)
+                throw ValueError("array index " + std::to_string(static_cast<long long>(index)) +
+                                 " is out of range 0.." + std::to_string(rows - 1));
+            auto sub = std::make_shared<Array>();
+            sub->dimensions.assign(array->dimensions.begin() + 1, array->dimensions.end());
+            const std::size_t stride = array->elements.size() / static_cast<std::size_t>(rows);
+            const std::size_t start = static_cast<std::size_t>(index) * stride;
+            sub->elements.assign(array->elements.begin() + static_cast<std::ptrdiff_t>(start),
+                                 array->elements.begin() + static_cast<std::ptrdiff_t>(start + stride));
+            st.push(Value{sub});
+            return;
+        }
+        const std::size_t i = element_index(*array, {index});
+        if (!array->elements[i]) throw ValueError("array element " + std::to_string(i) + " is used before it is set");
+        st.push(**array->elements[i]);
+    }
+};
+
+HEXANT_ACTION(spline_call) {
+    HEXANT_APPLY {
+        (void)in;
+        std::vector<Value> args = st.close_frame();
+        Value s = st.pop();
+        if (!s.is<std::shared_ptr<const runtime::Spline>>())
+            throw ValueError("only a spline can be called like this, not a " + type_name(s));
+        if (args.empty() || args.size() > 2) throw ValueError("a spline takes one argument, the time");
+        const auto spline = s.as<std::shared_ptr<const runtime::Spline>>();
+        const TimeFunction t = to_float(args[0], "the spline's argument");
+        if (spline->dimensions() == 1) {
+            st.push(Value{TimeFunction::spline_component(spline, 0, t)});
+            return;
+        }
+        Vector v;
+        v.size = spline->dimensions();
+        for (int i = 0; i < v.size; ++i) v.c[i] = TimeFunction::spline_component(spline, i, t);
+        st.push(Value{v});
+    }
+};
+
+// ------------------------------------------------------------ operators
+
+template <TimeOp Op>
+struct unary_action {
+    HEXANT_APPLY { (void)in; st.push(unary_op(Op, st.pop())); }
+};
+template <> struct action<g::negation> : unary_action<TimeOp::Negate> {};
+template <> struct action<g::logical_not> : unary_action<TimeOp::Not> {};
+
+template <TimeOp Op>
+struct binary_action {
+    HEXANT_APPLY {
+        (void)in;
+        Value b = st.pop();
+        Value a = st.pop();
+        st.push(binary_op(Op, a, b));
+    }
+};
+template <> struct action<g::multiplication> : binary_action<TimeOp::Multiply> {};
+template <> struct action<g::division> : binary_action<TimeOp::Divide> {};
+template <> struct action<g::addition> : binary_action<TimeOp::Add> {};
+template <> struct action<g::subtraction> : binary_action<TimeOp::Subtract> {};
+template <> struct action<g::less_equal> : binary_action<TimeOp::LessEqual> {};
+template <> struct action<g::greater_equal> : binary_action<TimeOp::GreaterEqual> {};
+template <> struct action<g::not_equal> : binary_action<TimeOp::NotEqual> {};
+template <> struct action<g::less> : binary_action<TimeOp::Less> {};
+template <> struct action<g::greater> : binary_action<TimeOp::Greater> {};
+template <> struct action<g::equal> : binary_action<TimeOp::Equal> {};
+template <> struct action<g::logical_and> : binary_action<TimeOp::And> {};
+template <> struct action<g::logical_or> : binary_action<TimeOp::Or> {};
+
+HEXANT_ACTION(conditional_tail) {
+    HEXANT_APPLY {
+        (void)in;
+        Value c = st.pop();
+        Value b = st.pop();
+        Value a = st.pop();
+        st.push(conditional(a, b, c));
+    }
+};
+
+// ------------------------------------------------------------ directives
+
+HEXANT_ACTION(declare_directive) {
+    HEXANT_APPLY {
+        std::vector<Value> frame = st.close_frame();  // indices..., value
+        Value value = std::move(frame.back());
+        frame.pop_back();
+        const std::string name = st.pop_name();
+        const bool local = st.pop_name() == "local";
+        if (value.is<std::shared_ptr<Array>>())
+            value = Value{std::make_shared<Array>(*value.as<std::shared_ptr<Array>>())};
+        if (frame.empty()) {
+            st.declare(name, std::move(value), local);
+        } else {
+            st.assign_element(name, frame, std::move(value), in.position());
+        }
+    }
+};
+
+HEXANT_ACTION(undef_name) {
+    HEXANT_APPLY { st.undefine(word(in)); }
+};
+
+HEXANT_ACTION(version_value) {
+    HEXANT_APPLY { (void)in; st.version = to_constant(st.pop(), "#version"); }
+};
+
+HEXANT_ACTION(debug_directive) {
+    HEXANT_APPLY { (void)in; st.messages() << to_string_value(st.pop(), "#debug's text"); }
+};
+
+HEXANT_ACTION(warning_directive) {
+    HEXANT_APPLY { st.warn(in.position(), to_string_value(st.pop(), "#warning's text")); }
+};
+
+HEXANT_ACTION(error_directive) {
+    HEXANT_APPLY { Interpreter::fail(in.position(), "#error: " + to_string_value(st.pop(), "#error's text")); }
+};
+
+HEXANT_ACTION(unsupported_directive) {
+    HEXANT_APPLY { Interpreter::fail(in.position(), "#" + word(in) + " is not supported by hexant"); }
+};
+
+HEXANT_ACTION(unknown_directive) {
+    template <typename ActionInput>
+    static void apply(const ActionInput& in, Interpreter&) {
+        const char* b = in.begin();
+        const char* e = in.input().end();
+        const char* q = b;
+        while (q != e && (std::isalnum(static_cast<unsigned char>(*q)) || *q == '_')) ++q;
+        Interpreter::fail(in.position(), "unknown directive '#" + std::string(b, q) + "'");
+    }
+};
+
+HEXANT_ACTION(default_item) {
+    HEXANT_APPLY {
+        (void)in;
+        Value v = st.pop();
+        auto& texture = st.scene.default_texture;
+        if (v.is<runtime::Texture>()) texture = v.as<runtime::Texture>();
+        else if (v.is<runtime::Pigment>()) texture.pigment = v.as<runtime::Pigment>();
+        else if (v.is<runtime::Finish>()) texture.finish = v.as<runtime::Finish>();
+    }
+};
+
+// ------------------------------------------------------------ transformations
+
+inline runtime::TransformStep make_step(TransformKind kind, const runtime::Vector3Function& v) {
+    runtime::TransformStep step;
+    step.kind = kind;
+    step.vector = v;
+    return step;
+}
+
+HEXANT_ACTION(translate_step) {
+    HEXANT_APPLY { st.apply_transform(make_step(TransformKind::Translate, to_vector3(st.pop(), "translate's amount")), in.position()); }
+};
+HEXANT_ACTION(rotate_step) {
+    HEXANT_APPLY { st.apply_transform(make_step(TransformKind::Rotate, to_vector3(st.pop(), "rotate's angles")), in.position()); }
+};
+HEXANT_ACTION(scale_step) {
+    HEXANT_APPLY {
+        const auto v = to_vector3(st.pop(), "scale's factors");
+        for (const auto& c : v.c)
+            if (c.is_constant() && c.constant() == 0.0)
+                throw ValueError("scale by zero (POV-Ray also refuses it)");
+        st.apply_transform(make_step(TransformKind::Scale, v), in.position());
+    }
+};
+HEXANT_ACTION(matrix_step) {
+    HEXANT_APPLY {
+        std::vector<Value> entries = st.close_frame();
+        if (entries.size() != 12)
+            throw ValueError("matrix needs 12 numbers, not " + std::to_string(entries.size()));
+        runtime::TransformStep step;
+        step.kind = TransformKind::Matrix;
+        for (int i = 0; i < 12; ++i) step.matrix[i] = to_float(entries[i], "a matrix entry");
+        st.apply_transform(step, in.position());
+    }
+};
+HEXANT_ACTION(transform_step) {
+    HEXANT_APPLY {
+        Value v = st.pop();
+        if (!v.is<runtime::Transform>()) throw ValueError("transform needs a transform, not a " + type_name(v));
+        for (const auto& step : v.as<runtime::Transform>().steps()) st.apply_transform(step, in.position());
+    }
+};
+HEXANT_ACTION(transform_open) {
+    HEXANT_APPLY { (void)in; st.blocks.emplace_back(std::in_place_type<runtime::Transform>); }
+};
+HEXANT_ACTION(transform_base) {
+    HEXANT_APPLY {
+        Value v = st.pop();
+        if (!v.is<runtime::Transform>()) throw ValueError("transform { } starts with a transform, not a " + type_name(v));
+        st.block<runtime::Transform>(in.position(), "a transform") = v.as<runtime::Transform>();
+    }
+};
+HEXANT_ACTION(transform_inverse) {
+    HEXANT_APPLY {
+        auto& t = st.block<runtime::Transform>(in.position(), "inverse");
+        t = t.inverse();
+    }
+};
+HEXANT_ACTION(transform_block) {
+    HEXANT_APPLY {
+        (void)in;
+        Value v{std::get<runtime::Transform>(st.blocks.back())};
+        st.blocks.pop_back();
+        st.push(std::move(v));
+    }
+};
+HEXANT_ACTION(deformation) {
+    HEXANT_APPLY {
+        const TimeFunction amount = to_float(st.pop(), "the deformation's amount");
+        const auto axis = to_vector3(st.pop(), "the deformation's axis");
+        const std::string name = st.pop_name();
+        runtime::TransformStep step;
+        step.kind = name == "twist" ? TransformKind::Twist : name == "taper" ? TransformKind::Taper : TransformKind::Bend;
+        step.vector = axis;
+        step.amount = amount;
+        st.apply_deformation(step, in.position());
+    }
+};
+
+// ------------------------------------------------------------ textures
+
+HEXANT_ACTION(pigment_open) {
+    HEXANT_APPLY { (void)in; st.blocks.emplace_back(std::in_place_type<runtime::Pigment>); }
+};
+HEXANT_ACTION(pigment_base) {
+    HEXANT_APPLY {
+        Value v = st.pop();
+        auto& pigment = st.block<runtime::Pigment>(in.position(), "a pigment");
+        if (v.is<runtime::Pigment>()) {
+            pigment = v.as<runtime::Pigment>();
+        } else {
+            pigment = runtime::Pigment{};
+            pigment.colours = {to_colour(v, "a pigment")};
+        }
+    }
+};
+HEXANT_ACTION(checker_pattern) {
+    HEXANT_APPLY {
+        std::vector<Value> colours = st.close_frame();
+        auto& pigment = st.block<runtime::Pigment>(in.position(), "checker");
+        pigment.pattern = runtime::Pigment::Pattern::Checker;
+        if (colours.empty()) {
+            // POV-Ray's default checker colours: blue and green.
+            pigment.colours = {runtime::ColourFunction{{0.0, 0.0, 1.0, 0.0, 0.0}},
+                               runtime::ColourFunction{{0.0, 1.0, 0.0, 0.0, 0.0}}};
+        } else {
+            pigment.colours = {to_colour(colours[0], "checker's first colour"),
+                               to_colour(colours[1], "checker's second colour")};
+        }
+    }
+};
+HEXANT_ACTION(unsupported_pattern) {
+    HEXANT_APPLY {
+        auto& pigment = st.block<runtime::Pigment>(in.position(), "a pattern");
+        pigment.pattern = runtime::Pigment::Pattern::Unsupported;
+        pigment.unsupported_name = st.pop_name();
+        pigment.unsupported_place = {in.position().source, in.position().line, in.position().column};
+    }
+};
+HEXANT_ACTION(pigment_block) {
+    HEXANT_APPLY {
+        (void)in;
+        Value v{std::get<runtime::Pigment>(st.blocks.back())};
+        st.blocks.pop_back();
+        st.push(std::move(v));
+    }
+};
+
+HEXANT_ACTION(finish_open) {
+    HEXANT_APPLY { (void)in; st.blocks.emplace_back(std::in_place_type<runtime::Finish>); }
+};
+HEXANT_ACTION(finish_base) {
+    HEXANT_APPLY {
+        Value v = st.pop();
+        if (!v.is<runtime::Finish>()) throw ValueError("finish { } starts with a finish, not a " + type_name(v));
+        st.block<runtime::Finish>(in.position(), "a finish") = v.as<runtime::Finish>();
+    }
+};
+HEXANT_ACTION(finish_setting) {
+    HEXANT_APPLY {
+        Value v = st.pop();
+        const std::string name = st.pop_name();
+        auto& f = st.block<runtime::Finish>(in.position(), name.c_str());
+        TimeFunction x;
+        if (v.is<Vector>()) {
+            // A colour amount (ambient rgb <..>): hexant keeps its mean.
+            const auto c = to_colour(v, name);
+            x = (c.c[0] + c.c[1] + c.c[2]) / 3.0;
+        } else {
+            x = to_float(v, name);
+        }
+        if (name == "ambient") f.ambient = x;
+        else if (name == "diffuse") f.diffuse = x;
+        else if (name == "brilliance") f.brilliance = x;
+        else if (name == "phong") f.phong = x;
+        else if (name == "phong_size") f.phong_size = x;
+        else if (name == "specular") f.specular = x;
+        else if (name == "roughness") f.roughness = x;
+        else if (name == "emission") f.emission = x;
+        // crand and metallic are read and ignored.
+    }
+};
+HEXANT_ACTION(reflection_value) {
+    HEXANT_APPLY {
+        Value v = st.pop();
+        auto& f = st.block<runtime::Finish>(in.position(), "reflection");
+        if (v.is<TimeFunction>()) {
+            const TimeFunction x = v.as<TimeFunction>();
+            f.reflection = runtime::ColourFunction{{x, x, x, 0.0, 0.0}};
+        } else {
+            f.reflection = to_colour(v, "reflection");
+            f.reflection.c[3] = f.reflection.c[4] = 0.0;
+        }
+    }
+};
+HEXANT_ACTION(ignored_value) {
+    HEXANT_APPLY { (void)in; st.pop(); }
+};
+HEXANT_ACTION(finish_block) {
+    HEXANT_APPLY {
+        (void)in;
+        Value v{std::get<runtime::Finish>(st.blocks.back())};
+        st.blocks.pop_back();
+        st.push(std::move(v));
+    }
+};
+
+HEXANT_ACTION(interior_open) {
+    HEXANT_APPLY { (void)in; st.blocks.emplace_back(std::in_place_type<runtime::Interior>); }
+};
+HEXANT_ACTION(interior_base) {
+    HEXANT_APPLY {
+        Value v = st.pop();
+        if (!v.is<runtime::Interior>()) throw ValueError("interior { } starts with an interior, not a " + type_name(v));
+        st.block<runtime::Interior>(in.position(), "an interior") = v.as<runtime::Interior>();
+    }
+};
+HEXANT_ACTION(ior_setting) {
+    HEXANT_APPLY { st.block<runtime::Interior>(in.position(), "ior").ior = to_float(st.pop(), "ior"); }
+};
+HEXANT_ACTION(interior_block) {
+    HEXANT_APPLY {
+        (void)in;
+        Value v{std::get<runtime::Interior>(st.blocks.back())};
+        st.blocks.pop_back();
+        st.push(std::move(v));
+    }
+};
+
+HEXANT_ACTION(texture_open) {
+    HEXANT_APPLY { (void)in; st.blocks.emplace_back(std::in_place_type<runtime::Texture>); }
+};
+HEXANT_ACTION(texture_base) {
+    HEXANT_APPLY {
+        Value v = st.pop();
+        auto& t = st.block<runtime::Texture>(in.position(), "a texture");
+        if (v.is<runtime::Texture>()) t = v.as<runtime::Texture>();
+        else if (v.is<runtime::Pigment>()) t.pigment = v.as<runtime::Pigment>();
+        else throw ValueError("texture { } starts with a texture, not a " + type_name(v));
+    }
+};
+HEXANT_ACTION(texture_pigment) {
+    HEXANT_APPLY { Value v = st.pop(); st.block<runtime::Texture>(in.position(), "pigment").pigment = v.as<runtime::Pigment>(); }
+};
+HEXANT_ACTION(texture_finish) {
+    HEXANT_APPLY { Value v = st.pop(); st.block<runtime::Texture>(in.position(), "finish").finish = v.as<runtime::Finish>(); }
+};
+HEXANT_ACTION(normal_block) {
+    HEXANT_APPLY {
+        if (!st.warned_normal) st.warn(in.position(), "normal { } is read and ignored: hexant does not perturb normals");
+        st.warned_normal = true;
+    }
+};
+HEXANT_ACTION(texture_block) {
+    HEXANT_APPLY {
+        (void)in;
+        Value v{std::get<runtime::Texture>(st.blocks.back())};
+        st.blocks.pop_back();
+        st.push(std::move(v));
+    }
+};
+HEXANT_ACTION(material_open) {
+    HEXANT_APPLY { (void)in; st.blocks.emplace_back(std::in_place_type<MaterialBuilder>); }
+};
+HEXANT_ACTION(material_base) {
+    HEXANT_APPLY { (void)st; throw ValueError("declared materials are not supported; declare its texture and interior"); (void)in; }
+};
+HEXANT_ACTION(material_texture) {
+    HEXANT_APPLY { Value v = st.pop(); st.block<MaterialBuilder>(in.position(), "texture").texture = v.as<runtime::Texture>(); }
+};
+HEXANT_ACTION(material_interior) {
+    HEXANT_APPLY { Value v = st.pop(); st.block<MaterialBuilder>(in.position(), "interior").interior = v.as<runtime::Interior>(); }
+};
+
+// ------------------------------------------------------------ objects
+
+// Where an object was written.
+template <typename ActionInput>
+runtime::SourcePlace source_place(const ActionInput& in) {
+    const auto p = in.position();
+    return {p.source, p.line, p.column};
+}
+
+runtime::ObjectRecord make_shape(const std::string& kind, std::vector<Value>& args, Interpreter& st);
+
+HEXANT_ACTION(shape_arguments) {
+    HEXANT_APPLY {
+        std::vector<Value> args = st.close_frame();
+        const std::string kind = st.pop_name();
+        runtime::ObjectRecord record = make_shape(kind, args, st);
+        record.place = source_place(in);
+        st.blocks.emplace_back(std::move(record));
+    }
+};
+HEXANT_ACTION(prism_open) {
+    HEXANT_APPLY {
+        (void)in;
+        st.prism_spline = "linear_spline";
+        st.prism_sweep = "linear_sweep";
+    }
+};
+HEXANT_ACTION(prism_option) {
+    HEXANT_APPLY {
+        const std::string w = word(in);
+        if (w.find("sweep") != std::string::npos) st.prism_sweep = w;
+        else st.prism_spline = w;
+    }
+};
+
+// Finishes the object on top of the block stack and pushes it as a value.
+struct finish_object {
+    HEXANT_APPLY {
+        (void)in;
+        Block b = std::move(st.blocks.back());
+        st.blocks.pop_back();
+        if (auto* light = std::get_if<runtime::LightRecord>(&b)) {
+            st.push(Value{std::move(*light)});
+            return;
+        }
+        auto& record = std::get<runtime::ObjectRecord>(b);
+        if (const auto* prism = std::get_if<runtime::Prism>(&record.shape); prism && prism->points.empty()) {
+            // A prism of a kind hexant lacks: usable only where nothing uses it.
+            st.push(Value{Unevaluated{"prism with " + st.prism_sweep + " and " + st.prism_spline, in.position()}});
+            return;
+        }
+        st.push(Value{runtime::ObjectPtr(std::make_shared<runtime::ObjectRecord>(std::move(record)))});
+    }
+};
+template <typename K> struct action<g::shape_block<K>> : finish_object {};
+template <> struct action<g::prism_block> : finish_object {};
+template <> struct action<g::csg_block> : finish_object {};
+template <> struct action<g::object_block> : finish_object {};
+
+HEXANT_ACTION(csg_open) {
+    HEXANT_APPLY {
+        const std::string kind = st.pop_name();
+        runtime::Csg csg;
+        csg.kind = kind == "intersection" ? runtime::Csg::Kind::Intersection
+                   : kind == "difference" ? runtime::Csg::Kind::Difference
+                   : kind == "merge"      ? runtime::Csg::Kind::Merge
+                                          : runtime::Csg::Kind::Union;
+        runtime::ObjectRecord record;
+        record.shape = std::move(csg);
+        record.place = source_place(in);
+        st.blocks.emplace_back(std::move(record));
+    }
+};
+HEXANT_ACTION(csg_child) {
+    HEXANT_APPLY {
+        Value v = st.pop();
+        auto& record = st.block<runtime::ObjectRecord>(in.position(), "an object");
+        if (v.is<runtime::LightRecord>()) {
+            record.lights.push_back(v.as<runtime::LightRecord>());
+            return;
+        }
+        if (v.is<Unevaluated>())
+            throw ValueError(v.as<Unevaluated>().what + " is not supported by hexant");
+        std::get<runtime::Csg>(record.shape).children.push_back(v.as<runtime::ObjectPtr>());
+    }
+};
+HEXANT_ACTION(object_base) {
+    HEXANT_APPLY {
+        Value v = st.pop();
+        if (v.is<runtime::ObjectPtr>()) {
+            runtime::ObjectRecord copy = *v.as<runtime::ObjectPtr>();
+            st.blocks.emplace_back(std::move(copy));
+        } else if (v.is<runtime::LightRecord>()) {
+            st.blocks.emplace_back(v.as<runtime::LightRecord>());
+        } else if (v.is<Unevaluated>()) {
+            const auto& u = v.as<Unevaluated>();
+            throw ValueError("this " + u.what + " (written at " + u.where.source + ":" +
+                             std::to_string(u.where.line) + ":" + std::to_string(u.where.column) +
+                             ") is not supported by hexant");
+        } else {
+            throw ValueError("object { } needs an object, not a " + type_name(v));
+        }
+    }
+};
+
+// The texture an object modifier changes, made if the object has none.
+inline runtime::Texture& object_texture(Interpreter& st, const p::position& where) {
+    auto& record = st.block<runtime::ObjectRecord>(where, "a texture");
+    if (!record.texture) record.texture = runtime::Texture{};
+    return *record.texture;
+}
+
+HEXANT_ACTION(object_texture) {
+    HEXANT_APPLY { Value v = st.pop(); object_texture(st, in.position()) = v.as<runtime::Texture>(); }
+};
+HEXANT_ACTION(object_pigment) {
+    HEXANT_APPLY { Value v = st.pop(); object_texture(st, in.position()).pigment = v.as<runtime::Pigment>(); }
+};
+HEXANT_ACTION(object_finish) {
+    HEXANT_APPLY { Value v = st.pop(); object_texture(st, in.position()).finish = v.as<runtime::Finish>(); }
+};
+HEXANT_ACTION(object_interior) {
+    HEXANT_APPLY { Value v = st.pop(); st.block<runtime::ObjectRecord>(in.position(), "interior").interior = v.as<runtime::Interior>(); }
+};
+HEXANT_ACTION(object_material) {
+    HEXANT_APPLY {
+        MaterialBuilder m = std::get<MaterialBuilder>(st.blocks.back());
+        st.blocks.pop_back();
+        auto& record = st.block<runtime::ObjectRecord>(in.position(), "material");
+        if (m.texture) record.texture = m.texture;
+        if (m.interior) record.interior = m.interior;
+    }
+};
+HEXANT_ACTION(object_flag) {
+    HEXANT_APPLY {
+        std::vector<Value> given = st.close_frame();
+        const std::string name = st.pop_name();
+        const bool on = given.empty() || runtime::pov_true(to_constant(given[0], name));
+        if (!st.blocks.empty() && std::holds_alternative<runtime::LightRecord>(st.blocks.back()))
+            throw ValueError("'" + name + "' does not belong in a light_source");
+        auto& record = st.block<runtime::ObjectRecord>(in.position(), name.c_str());
+        if (name == "no_shadow") record.no_shadow = on;
+        else if (name == "hollow") record.hollow = on;
+        else if (name == "inverse") record.inverse = on;
+        else if (name == "open") {
+            if (auto* c = std::get_if<runtime::Cylinder>(&record.shape)) c->open = on;
+            else if (auto* k = std::get_if<runtime::Cone>(&record.shape)) k->open = on;
+            else if (auto* pr = std::get_if<runtime::Prism>(&record.shape)) pr->open = on;
+            else throw ValueError("'open' belongs to a cylinder, cone or prism, not a " +
+                                  std::string(runtime::shape_name(record.shape)));
+        }
+        // sturm, no_image, no_reflection, no_radiosity, double_illumination, smooth: read, no effect.
+    }
+};
+HEXANT_ACTION(object_ignored_block) {
+    HEXANT_APPLY { st.warn(in.position(), word(in) + " { } is read and ignored"); }
+};
+
+// ------------------------------------------------------------ lights
+
+HEXANT_ACTION(light_arguments) {
+    HEXANT_APPLY {
+        std::vector<Value> args = st.close_frame();
+        runtime::LightRecord light;
+        light.position = to_vector3(args[0], "the light's position");
+        light.colour = to_colour(args[1], "the light's colour");
+        (void)in;
+        st.blocks.emplace_back(std::move(light));
+    }
+};
+HEXANT_ACTION(light_flag) {
+    HEXANT_APPLY {
+        const std::string w = word(in);
+        auto& light = st.block<runtime::LightRecord>(in.position(), w.c_str());
+        if (w == "shadowless") light.shadowless = true;
+        else if (w == "spotlight") light.spotlight = true;
+        else if (w == "cylinder" || w == "parallel")
+            st.warn(in.position(), w + " lights are rendered as point lights");
+    }
+};
+HEXANT_ACTION(light_setting) {
+    HEXANT_APPLY {
+        Value v = st.pop();
+        const std::string name = st.pop_name();
+        auto& light = st.block<runtime::LightRecord>(in.position(), name.c_str());
+        if (name == "point_at") light.point_at = to_vector3(v, name);
+        else if (name == "radius") light.radius = to_float(v, name);
+        else if (name == "falloff") light.falloff = to_float(v, name);
+        else if (name == "tightness") light.tightness = to_float(v, name);
+    }
+};
+HEXANT_ACTION(area_light) {
+    HEXANT_APPLY {
+        st.close_frame();
+        st.block<runtime::LightRecord>(in.position(), "area_light").area_light = true;
+    }
+};
+HEXANT_ACTION(light_looks_like) {
+    HEXANT_APPLY { st.warn(in.position(), word(in) + " { } is read and ignored"); }
+};
+template <> struct action<g::light_block> : finish_object {};
+
+// ------------------------------------------------------------ camera and scene
+
+HEXANT_ACTION(camera_open) {
+    HEXANT_APPLY { (void)in; st.blocks.emplace_back(std::in_place_type<runtime::CameraRecord>); }
+};
+HEXANT_ACTION(camera_base) {
+    HEXANT_APPLY {
+        Value v = st.pop();
+        if (!v.is<runtime::CameraRecord>()) throw ValueError("camera { } starts with a camera, not a " + type_name(v));
+        st.block<runtime::CameraRecord>(in.position(), "a camera") = v.as<runtime::CameraRecord>();
+    }
+};
+HEXANT_ACTION(camera_setting) {
+    HEXANT_APPLY {
+        Value v = st.pop();
+        const std::string name = st.pop_name();
+        auto& camera = st.block<runtime::CameraRecord>(in.position(), name.c_str());
+        runtime::CameraItem item;
+        using K = runtime::CameraItem::Kind;
+        if (name == "angle") {
+            item.kind = K::Angle;
+            item.angle = to_float(v, "the camera's angle");
+            if (item.angle.is_constant() && (item.angle.constant() <= 0.0 || item.angle.constant() >= 180.0))
+                throw ValueError("a perspective camera's angle must lie between 0 and 180 degrees");
+        } else {
+            item.kind = name == "location" ? K::Location : name == "look_at" ? K::LookAt
+                        : name == "direction" ? K::Direction : name == "right" ? K::Right
+                        : name == "up" ? K::Up : K::Sky;
+            item.vector = to_vector3(v, "the camera's " + name);
+        }
+        camera.items.push_back(std::move(item));
+    }
+};
+HEXANT_ACTION(camera_unsupported_type) {
+    HEXANT_APPLY { (void)st; Interpreter::fail(in.position(), word(in) + " cameras are not supported by hexant (only perspective)"); }
+};
+HEXANT_ACTION(camera_ignored_setting) {
+    HEXANT_APPLY { st.warn(in.position(), word(in) + " is read and ignored (no depth of field)"); }
+};
+HEXANT_ACTION(camera_block) {
+    HEXANT_APPLY {
+        (void)in;
+        Value v{std::get<runtime::CameraRecord>(st.blocks.back())};
+        st.blocks.pop_back();
+        st.push(std::move(v));
+    }
+};
+HEXANT_ACTION(scene_camera) {
+    HEXANT_APPLY { (void)in; st.scene.camera = st.pop().as<runtime::CameraRecord>(); }
+};
+HEXANT_ACTION(background_colour) {
+    HEXANT_APPLY { (void)in; st.scene.background = to_colour(st.pop(), "the background"); }
+};
+HEXANT_ACTION(global_setting) {
+    HEXANT_APPLY {
+        (void)in;
+        Value v = st.pop();
+        const std::string name = st.pop_name();
+        if (name == "assumed_gamma") st.scene.global.assumed_gamma = to_constant(v, name);
+        else if (name == "max_trace_level") st.scene.global.max_trace_level = static_cast<int>(to_constant(v, name));
+        else st.scene.global.ambient_light = to_colour(v, name);
+    }
+};
+HEXANT_ACTION(global_ignored_setting) {
+    HEXANT_APPLY {
+        st.close_frame();
+        st.warn(in.position(), "global setting '" + st.pop_name() + "' is read and ignored");
+    }
+};
+HEXANT_ACTION(unsupported_block) {
+    HEXANT_APPLY { st.push(Value{Unevaluated{st.pop_name(), in.position()}}); }
+};
+
+// ------------------------------------------------------------ arrays and splines
+
+HEXANT_ACTION(array_dimensions) {
+    HEXANT_APPLY {
+        (void)in;
+        std::vector<Value> sizes = st.close_frame();
+        auto array = std::make_shared<Array>();
+        std::size_t total = 1;
+        for (auto& s : sizes) {
+            const double n = to_constant(s, "an array size");
+            if (n < 1 || n > 1e8) throw ValueError("an array size must be from 1 to 10^8");
+            array->dimensions.push_back(static_cast<int>(n));
+            total *= static_cast<std::size_t>(n);
+            if (total > 100'000'000) throw ValueError("this array would hold more than 10^8 elements");
+        }
+        array->elements.resize(total);
+        st.push(Value{array});
+    }
+};
+HEXANT_ACTION(array_initializer) {
+    HEXANT_APPLY {
+        (void)in;
+        std::vector<Value> items = st.close_frame();
+        auto list = std::make_shared<Array>();  // no dimensions: an initializer list
+        for (auto& item : items) list->elements.emplace_back(std::make_shared<Value>(std::move(item)));
+        st.push(Value{list});
+    }
+};
+void fill_array(Array& array, const Array& list, std::size_t dimension, std::size_t& next);
+HEXANT_ACTION(array_value) {
+    HEXANT_APPLY {
+        (void)in;
+        Value top = st.pop();
+        auto list = top.as<std::shared_ptr<Array>>();
+        if (!list->dimensions.empty()) {  // no initializer
+            st.push(std::move(top));
+            return;
+        }
+        auto array = st.pop().as<std::shared_ptr<Array>>();
+        std::size_t next = 0;
+        fill_array(*array, *list, 0, next);
+        st.push(Value{array});
+    }
+};
+HEXANT_ACTION(spline_open) {
+    HEXANT_APPLY { (void)in; st.blocks.emplace_back(std::in_place_type<SplineBuilder>); }
+};
+HEXANT_ACTION(spline_kind) {
+    HEXANT_APPLY {
+        const std::string w = word(in);
+        auto& s = st.block<SplineBuilder>(in.position(), w.c_str());
+        using K = runtime::SplineKind;
+        s.kind = w == "linear_spline" ? K::Linear : w == "quadratic_spline" ? K::Quadratic
+                 : w == "cubic_spline" ? K::Cubic : K::Natural;
+    }
+};
+HEXANT_ACTION(spline_key) {
+    HEXANT_APPLY {
+        Value v = st.pop();
+        const double t = to_constant(st.pop(), "a spline key's time");
+        auto& s = st.block<SplineBuilder>(in.position(), "a spline key");
+        runtime::Spline::Key key{t, {0, 0, 0, 0, 0}};
+        int dims = 1;
+        if (v.is<TimeFunction>()) {
+            key.value[0] = to_constant(v, "a spline key's value");
+        } else {
+            const Vector vec = to_vector(v, "a spline key's value");
+            dims = vec.size;
+            for (int i = 0; i < vec.size; ++i)
+                key.value[i] = to_constant(Value{vec.c[i]}, "a spline key's value");
+        }
+        if (s.keys.empty()) s.dimensions = dims;
+        else s.dimensions = std::max(s.dimensions, dims);
+        s.keys.push_back(key);
+    }
+};
+HEXANT_ACTION(spline_block) {
+    HEXANT_APPLY {
+        SplineBuilder b = std::get<SplineBuilder>(st.blocks.back());
+        st.blocks.pop_back();
+        if (b.keys.empty()) Interpreter::fail(in.position(), "a spline needs at least one key");
+        st.push(Value{std::shared_ptr<const runtime::Spline>(
+            std::make_shared<runtime::Spline>(b.kind, std::move(b.keys), b.dimensions))});
+    }
+};
+
+HEXANT_ACTION(scene_object) {
+    HEXANT_APPLY {
+        Value v = st.pop();
+        if (v.is<runtime::LightRecord>()) {
+            st.scene.lights.push_back(v.as<runtime::LightRecord>());
+        } else if (v.is<runtime::ObjectPtr>()) {
+            st.add_object(v.as<runtime::ObjectPtr>(), in.position());
+        } else if (v.is<Unevaluated>()) {
+            throw ValueError(v.as<Unevaluated>().what + " is not supported by hexant");
+        }
+    }
+};
+HEXANT_ACTION(scene_unsupported) {
+    HEXANT_APPLY {
+        (void)in;
+        throw ValueError(st.pop().as<Unevaluated>().what + " is not supported by hexant");
+    }
+};
+
+#undef HEXANT_ACTION
+#undef HEXANT_APPLY
+
+}  // namespace hexant::language

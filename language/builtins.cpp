@@ -1,0 +1,375 @@
+#include "language/builtins.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <map>
+
+#include "language/value_ops.hpp"
+
+namespace hexant::language {
+
+using runtime::TimeOp;
+
+std::string format_number(double value, int length, int precision) {
+    char buffer[512];
+    const bool zero_pad = length < 0;
+    const int width = std::min(std::abs(length), 200);
+    if (precision < 0)
+        std::snprintf(buffer, sizeof buffer, zero_pad ? "%0*g" : "%*g", width, value);
+    else
+        std::snprintf(buffer, sizeof buffer, zero_pad ? "%0*.*f" : "%*.*f", width,
+                      std::min(precision, 100), value);
+    return buffer;
+}
+
+namespace {
+
+using Args = std::vector<Value>;
+
+void expect_count(const std::string& name, const Args& args, std::size_t lo, std::size_t hi) {
+    if (args.size() < lo || args.size() > hi) {
+        std::string want = lo == hi ? std::to_string(lo)
+                           : hi > 100 ? "at least " + std::to_string(lo)
+                                      : std::to_string(lo) + " to " + std::to_string(hi);
+        throw ValueError(name + "() takes " + want + " argument" + (hi == 1 ? "" : "s") +
+                         ", not " + std::to_string(args.size()));
+    }
+}
+
+TimeFunction arg_float(const std::string& name, const Args& args, std::size_t i) {
+    return to_float(args[i], "argument " + std::to_string(i + 1) + " of " + name + "()");
+}
+double arg_constant(const std::string& name, const Args& args, std::size_t i) {
+    return to_constant(args[i], "argument " + std::to_string(i + 1) + " of " + name + "()");
+}
+runtime::Vector3Function arg_vector(const std::string& name, const Args& args, std::size_t i) {
+    return to_vector3(args[i], "argument " + std::to_string(i + 1) + " of " + name + "()");
+}
+const std::string& arg_string(const std::string& name, const Args& args, std::size_t i) {
+    return to_string_value(args[i], "argument " + std::to_string(i + 1) + " of " + name + "()");
+}
+
+Value vec3(const TimeFunction& a, const TimeFunction& b, const TimeFunction& c) {
+    return make_vector({a, b, c});
+}
+
+constexpr double kPi = 3.14159265358979323846;
+
+// v rotated by r degrees about x, then y, then z (POV-Ray's vrotate).
+Value rotate_vector(runtime::Vector3Function v, const runtime::Vector3Function& r) {
+    for (int axis = 0; axis < 3; ++axis) {
+        const TimeFunction angle = r.c[axis] * (kPi / 180.0);
+        if (angle.is_constant() && angle.constant() == 0.0) continue;
+        const TimeFunction s = TimeFunction::apply(TimeOp::Sin, angle);
+        const TimeFunction c = TimeFunction::apply(TimeOp::Cos, angle);
+        const int a = (axis + 1) % 3, b = (axis + 2) % 3;
+        const TimeFunction va = v.c[a], vb = v.c[b];
+        v.c[a] = va * c - vb * s;
+        v.c[b] = va * s + vb * c;
+    }
+    return vec3(v.c[0], v.c[1], v.c[2]);
+}
+
+TimeFunction dot(const runtime::Vector3Function& a, const runtime::Vector3Function& b) {
+    return a.c[0] * b.c[0] + a.c[1] * b.c[1] + a.c[2] * b.c[2];
+}
+
+runtime::Vector3Function cross(const runtime::Vector3Function& a,
+                               const runtime::Vector3Function& b) {
+    return {{a.c[1] * b.c[2] - a.c[2] * b.c[1], a.c[2] * b.c[0] - a.c[0] * b.c[2],
+             a.c[0] * b.c[1] - a.c[1] * b.c[0]}};
+}
+
+TimeFunction length(const runtime::Vector3Function& a) {
+    return TimeFunction::apply(TimeOp::Sqrt, dot(a, a));
+}
+
+using Builtin = std::function<Value(const std::string&, const Args&, RandomStreams&)>;
+
+Builtin unary(TimeOp op) {
+    return [op](const std::string& name, const Args& args, RandomStreams&) {
+        expect_count(name, args, 1, 1);
+        return Value{TimeFunction::apply(op, arg_float(name, args, 0))};
+    };
+}
+
+Builtin binary(TimeOp op) {
+    return [op](const std::string& name, const Args& args, RandomStreams&) {
+        expect_count(name, args, 2, 2);
+        return Value{TimeFunction::apply(op, arg_float(name, args, 0), arg_float(name, args, 1))};
+    };
+}
+
+Builtin fold(TimeOp op) {
+    return [op](const std::string& name, const Args& args, RandomStreams&) {
+        expect_count(name, args, 2, 1000);
+        TimeFunction r = arg_float(name, args, 0);
+        for (std::size_t i = 1; i < args.size(); ++i)
+            r = TimeFunction::apply(op, r, arg_float(name, args, i));
+        return Value{r};
+    };
+}
+
+Builtin hyperbolic(double sign, bool tangent) {
+    return [sign, tangent](const std::string& name, const Args& args, RandomStreams&) {
+        expect_count(name, args, 1, 1);
+        const TimeFunction x = arg_float(name, args, 0);
+        const TimeFunction ep = TimeFunction::apply(TimeOp::Exp, x);
+        const TimeFunction em = TimeFunction::apply(TimeOp::Exp, -x);
+        if (tangent) return Value{(ep - em) / (ep + em)};
+        return Value{(ep + em * sign) * 0.5};
+    };
+}
+
+const std::map<std::string, Builtin>& table() {
+    static const std::map<std::string, Builtin> functions = {
+        {"abs", unary(TimeOp::Abs)},
+        {"sin", unary(TimeOp::Sin)},
+        {"cos", unary(TimeOp::Cos)},
+        {"tan", unary(TimeOp::Tan)},
+        {"asin", unary(TimeOp::Asin)},
+        {"acos", unary(TimeOp::Acos)},
+        {"atan", unary(TimeOp::Atan)},
+        {"sqrt", unary(TimeOp::Sqrt)},
+        {"exp", unary(TimeOp::Exp)},
+        {"log", unary(TimeOp::Log10)},
+        {"ln", unary(TimeOp::Ln)},
+        {"int", unary(TimeOp::Int)},
+        {"floor", unary(TimeOp::Floor)},
+        {"ceil", unary(TimeOp::Ceil)},
+        {"sinh", hyperbolic(-1.0, false)},
+        {"cosh", hyperbolic(1.0, false)},
+        {"tanh", hyperbolic(1.0, true)},
+        {"atan2", binary(TimeOp::Atan2)},
+        {"pow", binary(TimeOp::Pow)},
+        {"mod", binary(TimeOp::Mod)},
+        {"div", binary(TimeOp::IntDiv)},
+        {"min", fold(TimeOp::Min)},
+        {"max", fold(TimeOp::Max)},
+        {"radians",
+         [](const std::string& n, const Args& a, RandomStreams&) {
+             expect_count(n, a, 1, 1);
+             return Value{arg_float(n, a, 0) * (kPi / 180.0)};
+         }},
+        {"degrees",
+         [](const std::string& n, const Args& a, RandomStreams&) {
+             expect_count(n, a, 1, 1);
+             return Value{arg_float(n, a, 0) * (180.0 / kPi)};
+         }},
+        {"select",
+         [](const std::string& n, const Args& a, RandomStreams&) {
+             expect_count(n, a, 3, 4);
+             const TimeFunction s = arg_float(n, a, 0);
+             if (a.size() == 3) {
+                 if (s.is_constant()) return s.constant() < 0.0 ? a[1] : a[2];
+                 return Value{TimeFunction::apply(TimeOp::Select, s, arg_float(n, a, 1),
+                                                  arg_float(n, a, 2))};
+             }
+             if (s.is_constant())
+                 return s.constant() < 0.0 ? a[1] : (s.constant() == 0.0 ? a[2] : a[3]);
+             const TimeFunction is_zero = TimeFunction::apply(TimeOp::Equal, s, 0.0);
+             return Value{TimeFunction::apply(
+                 TimeOp::Select, s, arg_float(n, a, 1),
+                 TimeFunction::apply(TimeOp::Conditional, is_zero, arg_float(n, a, 2),
+                                     arg_float(n, a, 3)))};
+         }},
+        {"vlength",
+         [](const std::string& n, const Args& a, RandomStreams&) {
+             expect_count(n, a, 1, 1);
+             return Value{length(arg_vector(n, a, 0))};
+         }},
+        {"vnormalize",
+         [](const std::string& n, const Args& a, RandomStreams&) {
+             expect_count(n, a, 1, 1);
+             const auto v = arg_vector(n, a, 0);
+             const TimeFunction l = length(v);
+             if (l.is_constant() && l.constant() == 0.0)
+                 throw ValueError("vnormalize() of a zero-length vector");
+             return vec3(v.c[0] / l, v.c[1] / l, v.c[2] / l);
+         }},
+        {"vdot",
+         [](const std::string& n, const Args& a, RandomStreams&) {
+             expect_count(n, a, 2, 2);
+             return Value{dot(arg_vector(n, a, 0), arg_vector(n, a, 1))};
+         }},
+        {"vcross",
+         [](const std::string& n, const Args& a, RandomStreams&) {
+             expect_count(n, a, 2, 2);
+             const auto c = cross(arg_vector(n, a, 0), arg_vector(n, a, 1));
+             return vec3(c.c[0], c.c[1], c.c[2]);
+         }},
+        {"vrotate",
+         [](const std::string& n, const Args& a, RandomStreams&) {
+             expect_count(n, a, 2, 2);
+             return rotate_vector(arg_vector(n, a, 0), arg_vector(n, a, 1));
+         }},
+        {"vaxis_rotate",
+         [](const std::string& n, const Args& a, RandomStreams&) {
+             expect_count(n, a, 3, 3);
+             const auto v = arg_vector(n, a, 0);
+             auto k = arg_vector(n, a, 1);
+             const TimeFunction l = length(k);
+             if (l.is_constant() && l.constant() == 0.0)
+                 throw ValueError("vaxis_rotate() about a zero-length axis");
+             for (auto& c : k.c) c = c / l;
+             const TimeFunction angle = arg_float(n, a, 2) * (kPi / 180.0);
+             const TimeFunction s = TimeFunction::apply(TimeOp::Sin, angle);
+             const TimeFunction c = TimeFunction::apply(TimeOp::Cos, angle);
+             const auto kv = cross(k, v);
+             const TimeFunction kd = dot(k, v) * (TimeFunction(1.0) - c);
+             return vec3(v.c[0] * c + kv.c[0] * s + k.c[0] * kd,
+                         v.c[1] * c + kv.c[1] * s + k.c[1] * kd,
+                         v.c[2] * c + kv.c[2] * s + k.c[2] * kd);
+         }},
+        {"str",
+         [](const std::string& n, const Args& a, RandomStreams&) {
+             expect_count(n, a, 3, 3);
+             return Value{format_number(arg_constant(n, a, 0),
+                                        static_cast<int>(arg_constant(n, a, 1)),
+                                        static_cast<int>(arg_constant(n, a, 2)))};
+         }},
+        {"vstr",
+         [](const std::string& n, const Args& a, RandomStreams&) {
+             expect_count(n, a, 5, 5);
+             const Vector v = to_vector(a[0], "argument 1 of vstr()");
+             const int dims = static_cast<int>(arg_constant(n, a, 1));
+             const std::string& sep = arg_string(n, a, 2);
+             const int len = static_cast<int>(arg_constant(n, a, 3));
+             const int prec = static_cast<int>(arg_constant(n, a, 4));
+             std::string out;
+             for (int i = 0; i < std::clamp(dims, 1, 5); ++i) {
+                 if (i) out += sep;
+                 const TimeFunction c = i < v.size ? v.c[i] : TimeFunction(0.0);
+                 out += format_number(to_constant(Value{c}, "a component given to vstr()"), len,
+                                      prec);
+             }
+             return Value{out};
+         }},
+        {"concat",
+         [](const std::string& n, const Args& a, RandomStreams&) {
+             expect_count(n, a, 1, 100000);
+             std::string out;
+             for (std::size_t i = 0; i < a.size(); ++i) out += arg_string(n, a, i);
+             return Value{out};
+         }},
+        {"chr",
+         [](const std::string& n, const Args& a, RandomStreams&) {
+             expect_count(n, a, 1, 1);
+             const double c = arg_constant(n, a, 0);
+             if (c < 1 || c > 127) throw ValueError("chr() needs a character code from 1 to 127");
+             return Value{std::string(1, static_cast<char>(c))};
+         }},
+        {"asc",
+         [](const std::string& n, const Args& a, RandomStreams&) {
+             expect_count(n, a, 1, 1);
+             const std::string& s = arg_string(n, a, 0);
+             return Value{TimeFunction(s.empty() ? 0.0 : static_cast<unsigned char>(s[0]))};
+         }},
+        {"strlen",
+         [](const std::string& n, const Args& a, RandomStreams&) {
+             expect_count(n, a, 1, 1);
+             return Value{TimeFunction(static_cast<double>(arg_string(n, a, 0).size()))};
+         }},
+        {"substr",
+         [](const std::string& n, const Args& a, RandomStreams&) {
+             expect_count(n, a, 3, 3);
+             const std::string& s = arg_string(n, a, 0);
+             const double p = arg_constant(n, a, 1), l = arg_constant(n, a, 2);
+             if (p < 1 || l < 0 || p - 1 + l > static_cast<double>(s.size()))
+                 throw ValueError("substr() reaches outside the string");
+             return Value{s.substr(static_cast<std::size_t>(p - 1), static_cast<std::size_t>(l))};
+         }},
+        {"strupr",
+         [](const std::string& n, const Args& a, RandomStreams&) {
+             expect_count(n, a, 1, 1);
+             std::string s = arg_string(n, a, 0);
+             for (auto& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+             return Value{s};
+         }},
+        {"strlwr",
+         [](const std::string& n, const Args& a, RandomStreams&) {
+             expect_count(n, a, 1, 1);
+             std::string s = arg_string(n, a, 0);
+             for (auto& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+             return Value{s};
+         }},
+        {"val",
+         [](const std::string& n, const Args& a, RandomStreams&) {
+             expect_count(n, a, 1, 1);
+             return Value{TimeFunction(std::strtod(arg_string(n, a, 0).c_str(), nullptr))};
+         }},
+        {"file_exists",
+         [](const std::string& n, const Args& a, RandomStreams&) {
+             expect_count(n, a, 1, 1);
+             return Value{TimeFunction(std::filesystem::exists(arg_string(n, a, 0)) ? 1.0 : 0.0)};
+         }},
+        {"dimensions",
+         [](const std::string& n, const Args& a, RandomStreams&) {
+             expect_count(n, a, 1, 1);
+             if (!a[0].is<std::shared_ptr<Array>>())
+                 throw ValueError("dimensions() needs an array, not a " + type_name(a[0]));
+             return Value{TimeFunction(
+                 static_cast<double>(a[0].as<std::shared_ptr<Array>>()->dimensions.size()))};
+         }},
+        {"dimension_size",
+         [](const std::string& n, const Args& a, RandomStreams&) {
+             expect_count(n, a, 2, 2);
+             if (!a[0].is<std::shared_ptr<Array>>())
+                 throw ValueError("dimension_size() needs an array, not a " + type_name(a[0]));
+             const auto& dims = a[0].as<std::shared_ptr<Array>>()->dimensions;
+             const double d = arg_constant(n, a, 1);
+             if (d < 1 || d > static_cast<double>(dims.size()))
+                 return Value{TimeFunction(0.0)};
+             return Value{TimeFunction(static_cast<double>(dims[static_cast<std::size_t>(d) - 1]))};
+         }},
+        {"seed",
+         [](const std::string& n, const Args& a, RandomStreams& r) {
+             expect_count(n, a, 1, 1);
+             r.streams.emplace_back(arg_constant(n, a, 0));
+             return Value{TimeFunction(static_cast<double>(r.streams.size() - 1))};
+         }},
+        {"rand",
+         [](const std::string& n, const Args& a, RandomStreams& r) {
+             expect_count(n, a, 1, 1);
+             const double s = arg_constant(n, a, 0);
+             if (s < 0 || s >= static_cast<double>(r.streams.size()))
+                 throw ValueError("rand() needs a stream made by seed()");
+             return Value{TimeFunction(r.streams[static_cast<std::size_t>(s)].next())};
+         }},
+        {"bitwise_and",
+         [](const std::string& n, const Args& a, RandomStreams&) {
+             expect_count(n, a, 2, 1000);
+             long long r = static_cast<long long>(arg_constant(n, a, 0));
+             for (std::size_t i = 1; i < a.size(); ++i) r &= static_cast<long long>(arg_constant(n, a, i));
+             return Value{TimeFunction(static_cast<double>(r))};
+         }},
+        {"bitwise_or",
+         [](const std::string& n, const Args& a, RandomStreams&) {
+             expect_count(n, a, 2, 1000);
+             long long r = static_cast<long long>(arg_constant(n, a, 0));
+             for (std::size_t i = 1; i < a.size(); ++i) r |= static_cast<long long>(arg_constant(n, a, i));
+             return Value{TimeFunction(static_cast<double>(r))};
+         }},
+        {"bitwise_xor",
+         [](const std::string& n, const Args& a, RandomStreams&) {
+             expect_count(n, a, 2, 1000);
+             long long r = static_cast<long long>(arg_constant(n, a, 0));
+             for (std::size_t i = 1; i < a.size(); ++i) r ^= static_cast<long long>(arg_constant(n, a, i));
+             return Value{TimeFunction(static_cast<double>(r))};
+         }},
+    };
+    return functions;
+}
+
+}  // namespace
+
+Value call_builtin(const std::string& name, const std::vector<Value>& args, RandomStreams& random) {
+    const auto& functions = table();
+    auto it = functions.find(name);
+    if (it == functions.end()) throw ValueError("unknown function " + name + "()");
+    return it->second(name, args, random);
+}
+
+}  // namespace hexant::language

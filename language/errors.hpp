@@ -1,0 +1,144 @@
+// What the reader says when a rule that must match does not: one message per
+// place that can fail, attached from outside the grammar with PEGTL's
+// must_if, as in PEGTL's json_errors.hpp.
+#pragma once
+
+#include <string>
+
+#include <tao/pegtl.hpp>
+
+#include "language/grammar.hpp"
+
+namespace hexant::language {
+
+template <typename Rule>
+inline constexpr const char* error_message = nullptr;
+
+#define HEXANT_ERROR(rule, text) \
+    template <>                  \
+    inline constexpr auto error_message<grammar::rule> = text
+
+HEXANT_ERROR(block_comment_rest, "unterminated comment: '/*' without '*/'");
+HEXANT_ERROR(number_end, "malformed number");
+HEXANT_ERROR(string_close, "unterminated string: expected '\"' before the end of the line");
+HEXANT_ERROR(paren_content, "expected an expression after '('");
+HEXANT_ERROR(paren_close, "expected ')'");
+HEXANT_ERROR(vector_component, "expected a vector component after '<' or ','");
+HEXANT_ERROR(vector_close, "expected ',' or '>' to close the vector");
+HEXANT_ERROR(call_open, "expected '(' after the function's name");
+HEXANT_ERROR(call_argument, "expected an argument after ','");
+HEXANT_ERROR(call_close, "expected ',' or ')' after the argument");
+HEXANT_ERROR(defined_name, "expected a name inside defined( )");
+HEXANT_ERROR(colour_model_argument, "expected a colour value after the colour keyword");
+HEXANT_ERROR(colour_component_value, "expected a value after the colour component keyword");
+HEXANT_ERROR(index_value, "expected an index after '['");
+HEXANT_ERROR(index_close, "expected ']'");
+HEXANT_ERROR(unary_operand, "expected an operand after the operator");
+HEXANT_ERROR(product_operand, "expected an operand after the operator");
+HEXANT_ERROR(sum_operand, "expected an operand after the comparison");
+HEXANT_ERROR(comparison_operand, "expected an operand after '&'");
+HEXANT_ERROR(conjunction_operand, "expected an operand after '|'");
+HEXANT_ERROR(conditional_branch, "expected an expression in the '? :' operator");
+HEXANT_ERROR(colon, "expected ':' in the '? :' operator");
+HEXANT_ERROR(skip::braced_close, "unterminated block: '{' without '}'");
+HEXANT_ERROR(skip::parenthesized_close, "unterminated '(': expected ')'");
+HEXANT_ERROR(skip::nested_end, "directive block without #end");
+HEXANT_ERROR(ignored_value, "expected a value");
+HEXANT_ERROR(skipped_block, "expected '{'");
+HEXANT_ERROR(declare_target, "expected a name to declare after #declare or #local");
+HEXANT_ERROR(declare_equals, "expected '=' after the declared name");
+HEXANT_ERROR(declared_value, "expected a value after '='");
+HEXANT_ERROR(undef_name, "expected a declared name after #undef");
+HEXANT_ERROR(version_value, "expected a version number after #version");
+HEXANT_ERROR(message_text, "expected a string after the directive");
+HEXANT_ERROR(condition_value, "expected a condition");
+HEXANT_ERROR(condition_close, "expected ')' after the condition");
+HEXANT_ERROR(macro_parameter, "expected a parameter name after ','");
+HEXANT_ERROR(for_variable, "expected a loop variable name after '#for ('");
+HEXANT_ERROR(for_bound, "expected a number in #for ( )");
+HEXANT_ERROR(comma, "expected ','");
+HEXANT_ERROR(lparen, "expected '('");
+HEXANT_ERROR(rparen, "expected ')'");
+HEXANT_ERROR(lbrace, "expected '{'");
+HEXANT_ERROR(rbrace, "expected '}' or a modifier that belongs in this block");
+HEXANT_ERROR(transform_amount, "expected a vector after the transformation");
+HEXANT_ERROR(matrix_open, "expected '<' after matrix");
+HEXANT_ERROR(matrix_entry, "expected a number in the matrix");
+HEXANT_ERROR(matrix_close, "expected ',' or '>' in the matrix");
+HEXANT_ERROR(transform_argument, "expected '{' or a declared transform after transform");
+HEXANT_ERROR(transform_block, "expected '{' after transform");
+HEXANT_ERROR(deformation_axis, "expected an axis vector after the deformation");
+HEXANT_ERROR(deformation_amount, "expected an amount after the deformation's axis");
+HEXANT_ERROR(checker_colour, "expected a second colour for checker");
+HEXANT_ERROR(finish_setting_value, "expected a value after the finish setting");
+HEXANT_ERROR(reflection_amount, "expected a value or '{' after reflection");
+HEXANT_ERROR(reflection_value, "expected a value in reflection { }");
+HEXANT_ERROR(ior_value, "expected a value after ior");
+HEXANT_ERROR(shape_arguments, "expected the object's parameters");
+HEXANT_ERROR(shape_argument, "expected a parameter");
+HEXANT_ERROR(object_close, "expected '}' or a modifier that belongs in this object");
+HEXANT_ERROR(object_base, "expected an object or a declared object's name");
+HEXANT_ERROR(light_arguments, "expected the light's position and colour");
+HEXANT_ERROR(light_setting_value, "expected a value after the light setting");
+HEXANT_ERROR(area_light_argument, "expected area_light <axis1>, <axis2>, size1, size2");
+HEXANT_ERROR(camera_vector_value, "expected a value after the camera setting");
+HEXANT_ERROR(background_colour, "expected a colour in background { }");
+HEXANT_ERROR(global_setting_value, "expected a value after the global setting");
+HEXANT_ERROR(charset_name, "expected a character set name after charset");
+HEXANT_ERROR(array_dimensions, "expected '[' and a size after array");
+HEXANT_ERROR(array_size, "expected the array's size");
+HEXANT_ERROR(array_initializer_close, "expected ',' or '}' in the array's elements");
+HEXANT_ERROR(spline_key_value, "expected the spline key's value after its time");
+HEXANT_ERROR(scene_end,
+             "expected a scene item (an object, camera, light_source, background, "
+             "global_settings) or a directive");
+
+HEXANT_ERROR(condition, "expected '(' and a condition");
+HEXANT_ERROR(for_header, "expected ( NAME, START, END [, STEP] ) after #for");
+HEXANT_ERROR(range_header, "expected ( LOW, HIGH ) after #range");
+HEXANT_ERROR(include_name, "expected a file name after #include");
+HEXANT_ERROR(macro_body_end,
+             "this does not belong here: expected an item of the block the macro is called in, "
+             "or a directive");
+HEXANT_ERROR(include_end,
+             "this does not belong here: expected an item of the block the file is included in, "
+             "or a directive");
+
+#undef HEXANT_ERROR
+
+struct error_messages {
+    template <typename Rule>
+    static constexpr auto message = error_message<Rule>;
+    // Only a failed must<> is an error; elsewhere failing means trying the
+    // next alternative.
+    template <typename Rule>
+    static constexpr bool raise_on_failure = false;
+};
+
+// The text of the token where a failure was found, for "... but found 'x'".
+template <typename ParseInput>
+std::string found_text(const ParseInput& in) {
+    const char* b = in.current();
+    const char* e = in.end();
+    if (b == e) return " but found the end of the file";
+    const char* q = b;
+    auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+    if (word(*q))
+        while (q != e && word(*q) && q - b < 40) ++q;
+    else
+        ++q;
+    return " but found '" + std::string(b, q) + "'";
+}
+
+template <typename Rule>
+struct control : tao::pegtl::must_if<error_messages, tao::pegtl::normal, true>::control<Rule> {
+    template <typename ParseInput, typename... States>
+    [[noreturn]] static void raise(const ParseInput& in, States&&...) {
+        static_assert(error_messages::message<Rule> != nullptr,
+                      "every rule under must<> needs an error_message");
+        throw tao::pegtl::parse_error(std::string(error_messages::message<Rule>) + found_text(in),
+                                      in);
+    }
+};
+
+}  // namespace hexant::language

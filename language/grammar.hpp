@@ -1,0 +1,818 @@
+// The grammar of hexant's scene language, a subset of POV-Ray 3.7's SDL.
+//
+// Rules only: what each rule does lives in actions.hpp, its error message in
+// errors.hpp. Directives that steer the reading itself (#if, #while, #for,
+// #switch, #macro, #include and macro calls) are custom rules whose match()
+// hands the input to the interpreter (interpreter_state.hpp), which runs them
+// as POV-Ray does: while the text is read, replaying a loop's or a macro's
+// stored source range so that positions stay exact.
+//
+// Every rule consumes the blanks and comments after it, so rules start at a
+// token.
+#pragma once
+
+#include <cctype>
+#include <string_view>
+
+#include <tao/pegtl.hpp>
+#include <tao/pegtl/contrib/analyze_traits.hpp>
+
+namespace hexant::language::grammar {
+
+namespace p = tao::pegtl;
+
+// ---------------------------------------------------------------- lexical
+
+struct line_comment : p::seq<p::two<'/'>, p::until<p::eolf>> {};
+struct block_comment;
+struct block_comment_rest : p::until<p::string<'*', '/'>, p::sor<block_comment, p::any>> {};
+struct block_comment : p::if_must<p::string<'/', '*'>, block_comment_rest> {};
+struct separator : p::sor<p::space, line_comment, block_comment> {};
+struct ws : p::star<separator> {};
+
+template <char... C>
+struct punct : p::seq<p::string<C...>, ws> {};
+struct lbrace : punct<'{'> {};
+struct rbrace : punct<'}'> {};
+struct lparen : punct<'('> {};
+struct rparen : punct<')'> {};
+struct lbracket : punct<'['> {};
+struct rbracket : punct<']'> {};
+struct comma : punct<','> {};
+struct semicolon : punct<';'> {};
+struct colon : punct<':'> {};
+struct equals : punct<'='> {};
+struct langle : punct<'<'> {};
+struct rangle : punct<'>'> {};
+
+#define HEXANT_KEYWORD(rule, text) \
+    struct rule : p::seq<TAO_PEGTL_KEYWORD(text), ws> {}
+
+// A name that is not one of hexant's keywords. Matched by a custom rule
+// because the set of keywords is a table (keywords.cpp), not a grammar.
+bool is_reserved_word(std::string_view word);
+struct name {
+    using rule_t = name;
+    using subs_t = p::empty_list;
+    template <p::apply_mode, p::rewind_mode, template <typename...> class Action,
+              template <typename...> class Control, typename ParseInput, typename... States>
+    static bool match(ParseInput& in, States&...) {
+        const char* b = in.current();
+        const char* e = in.end();
+        auto is_first = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; };
+        auto is_other = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+        if (b == e || !is_first(*b)) return false;
+        const char* q = b + 1;
+        while (q != e && is_other(*q)) ++q;
+        if (is_reserved_word(std::string_view(b, static_cast<std::size_t>(q - b)))) return false;
+        in.bump_in_this_line(static_cast<std::size_t>(q - b));
+        return true;
+    }
+};
+// A declared name, its trailing blanks consumed.
+struct identifier : p::seq<name, ws> {};
+
+
+// Custom rules whose reading the interpreter does (interpreter_state.hpp):
+// each hands the input to one member of the parse state. Without a state
+// (grammar analysis, grammar tests) they match nothing.
+#define HEXANT_CUSTOM_RULE(rule, member)                                                        \
+    template <typename Item>                                                                   \
+    struct rule {                                                                              \
+        using rule_t = rule;                                                                   \
+        using subs_t = p::empty_list;                                                          \
+        template <p::apply_mode, p::rewind_mode, template <typename...> class Action,          \
+                  template <typename...> class Control, typename ParseInput, typename... States> \
+        static bool match(ParseInput& in, States&... st) {                                     \
+            if constexpr (sizeof...(States) == 0) {                                            \
+                return false;                                                                  \
+            } else {                                                                           \
+                return (st.template member<Item, Action, Control>(in), ...);                   \
+            }                                                                                  \
+        }                                                                                      \
+    }
+
+HEXANT_CUSTOM_RULE(macro_call, call_macro);
+HEXANT_CUSTOM_RULE(if_directive, run_if);
+HEXANT_CUSTOM_RULE(ifdef_directive, run_ifdef);
+HEXANT_CUSTOM_RULE(while_directive, run_while);
+HEXANT_CUSTOM_RULE(for_directive, run_for);
+HEXANT_CUSTOM_RULE(switch_directive, run_switch);
+HEXANT_CUSTOM_RULE(include_directive, run_include);
+// #macro NAME(PARAMS) ... #end (the Item is unused).
+struct macro_definition_item {};
+HEXANT_CUSTOM_RULE(macro_definition_rule, define_macro);
+struct macro_definition : macro_definition_rule<macro_definition_item> {};
+
+// ---------------------------------------------------------------- literals
+
+struct exponent : p::seq<p::one<'e', 'E'>, p::opt<p::one<'+', '-'>>, p::plus<p::digit>> {};
+struct number_text
+    : p::seq<p::sor<p::seq<p::plus<p::digit>, p::opt<p::one<'.'>, p::star<p::digit>>>,
+                    p::seq<p::one<'.'>, p::plus<p::digit>>>,
+             p::opt<exponent>> {};
+struct number_end : p::not_at<p::identifier_other> {};
+struct number : p::seq<number_text, p::must<number_end>, ws> {};
+
+struct string_escape : p::seq<p::one<'\\'>, p::any> {};
+struct string_content : p::star<p::sor<string_escape, p::not_one<'"', '\n', '\r'>>> {};
+struct string_close : p::one<'"'> {};
+struct string_literal : p::seq<p::one<'"'>, string_content, p::must<string_close>, ws> {};
+
+// ---------------------------------------------------------------- expressions
+
+struct expression;
+struct sum;
+struct unary;
+struct value;
+
+// Marks where a variable-length list of values begins on the value stack.
+struct frame_open : p::success {};
+
+struct paren_close : rparen {};
+struct paren_content : p::seq<expression> {};
+struct paren_expression : p::seq<lparen, p::must<paren_content>, p::must<paren_close>> {};
+
+struct vector_open : langle {};
+struct vector_close : rangle {};
+struct vector_component : p::seq<sum> {};
+struct vector_literal
+    : p::seq<vector_open, frame_open, p::must<vector_component>,
+             p::star<comma, p::must<vector_component>>, p::must<vector_close>> {};
+
+// Built-in functions; the name picks the implementation (builtins.cpp).
+struct function_name
+    : p::sor<TAO_PEGTL_KEYWORD("abs"), TAO_PEGTL_KEYWORD("sin"), TAO_PEGTL_KEYWORD("cos"),
+             TAO_PEGTL_KEYWORD("tan"), TAO_PEGTL_KEYWORD("asin"), TAO_PEGTL_KEYWORD("acos"),
+             TAO_PEGTL_KEYWORD("atan2"), TAO_PEGTL_KEYWORD("atan"), TAO_PEGTL_KEYWORD("sqrt"),
+             TAO_PEGTL_KEYWORD("pow"), TAO_PEGTL_KEYWORD("exp"), TAO_PEGTL_KEYWORD("log"),
+             TAO_PEGTL_KEYWORD("ln"), TAO_PEGTL_KEYWORD("min"), TAO_PEGTL_KEYWORD("max"),
+             TAO_PEGTL_KEYWORD("mod"), TAO_PEGTL_KEYWORD("div"), TAO_PEGTL_KEYWORD("int"),
+             TAO_PEGTL_KEYWORD("floor"), TAO_PEGTL_KEYWORD("ceil"), TAO_PEGTL_KEYWORD("radians"),
+             TAO_PEGTL_KEYWORD("degrees"), TAO_PEGTL_KEYWORD("select"),
+             TAO_PEGTL_KEYWORD("vlength"), TAO_PEGTL_KEYWORD("vnormalize"),
+             TAO_PEGTL_KEYWORD("vcross"), TAO_PEGTL_KEYWORD("vdot"), TAO_PEGTL_KEYWORD("vrotate"),
+             TAO_PEGTL_KEYWORD("vaxis_rotate"), TAO_PEGTL_KEYWORD("vstr"),
+             TAO_PEGTL_KEYWORD("str"), TAO_PEGTL_KEYWORD("concat"), TAO_PEGTL_KEYWORD("chr"),
+             TAO_PEGTL_KEYWORD("asc"), TAO_PEGTL_KEYWORD("strlen"), TAO_PEGTL_KEYWORD("substr"),
+             TAO_PEGTL_KEYWORD("strupr"), TAO_PEGTL_KEYWORD("strlwr"), TAO_PEGTL_KEYWORD("val"),
+             TAO_PEGTL_KEYWORD("dimension_size"), TAO_PEGTL_KEYWORD("dimensions"),
+             TAO_PEGTL_KEYWORD("seed"), TAO_PEGTL_KEYWORD("rand"), TAO_PEGTL_KEYWORD("sinh"),
+             TAO_PEGTL_KEYWORD("cosh"), TAO_PEGTL_KEYWORD("tanh"), TAO_PEGTL_KEYWORD("bitwise_and"),
+             TAO_PEGTL_KEYWORD("bitwise_or"), TAO_PEGTL_KEYWORD("bitwise_xor"),
+             TAO_PEGTL_KEYWORD("file_exists")> {};
+struct call_open : lparen {};
+struct call_close : rparen {};
+struct call_argument : p::seq<value> {};
+struct call_arguments : p::opt<call_argument, p::star<comma, p::must<call_argument>>> {};
+struct function_call
+    : p::seq<function_name, ws, p::must<call_open>, frame_open, call_arguments,
+             p::must<call_close>> {};
+
+// defined(IDENT): whether a name is declared.
+HEXANT_KEYWORD(kw_defined, "defined");
+struct defined_name : identifier {};
+struct defined_call
+    : p::seq<kw_defined, p::must<lparen>, p::must<defined_name>, p::must<paren_close>> {};
+
+struct builtin_constant_name
+    : p::sor<TAO_PEGTL_KEYWORD("pi"), TAO_PEGTL_KEYWORD("tau"), TAO_PEGTL_KEYWORD("true"),
+             TAO_PEGTL_KEYWORD("false"), TAO_PEGTL_KEYWORD("yes"), TAO_PEGTL_KEYWORD("no"),
+             TAO_PEGTL_KEYWORD("on"), TAO_PEGTL_KEYWORD("off"), TAO_PEGTL_KEYWORD("x"),
+             TAO_PEGTL_KEYWORD("y"), TAO_PEGTL_KEYWORD("z"), TAO_PEGTL_KEYWORD("t"),
+             TAO_PEGTL_KEYWORD("u"), TAO_PEGTL_KEYWORD("v"), TAO_PEGTL_KEYWORD("image_width"),
+             TAO_PEGTL_KEYWORD("image_height"), TAO_PEGTL_KEYWORD("clock_delta"),
+             TAO_PEGTL_KEYWORD("clock_on"), TAO_PEGTL_KEYWORD("clock"),
+             TAO_PEGTL_KEYWORD("frame_number"), TAO_PEGTL_KEYWORD("initial_clock"),
+             TAO_PEGTL_KEYWORD("final_clock"), TAO_PEGTL_KEYWORD("initial_frame"),
+             TAO_PEGTL_KEYWORD("final_frame"), TAO_PEGTL_KEYWORD("version")> {};
+struct builtin_constant : p::seq<builtin_constant_name, ws> {};
+
+// Colours: rgb <..>, rgbf, rgbt, rgbft, srgb..., and `color red 1 green .5`.
+struct colour_model
+    : p::sor<TAO_PEGTL_KEYWORD("rgbft"), TAO_PEGTL_KEYWORD("rgbf"), TAO_PEGTL_KEYWORD("rgbt"),
+             TAO_PEGTL_KEYWORD("rgb"), TAO_PEGTL_KEYWORD("srgbft"), TAO_PEGTL_KEYWORD("srgbf"),
+             TAO_PEGTL_KEYWORD("srgbt"), TAO_PEGTL_KEYWORD("srgb")> {};
+struct colour_model_argument : p::seq<unary> {};
+struct colour_model_literal : p::seq<colour_model, ws, p::must<colour_model_argument>> {};
+struct colour_component_name
+    : p::sor<TAO_PEGTL_KEYWORD("red"), TAO_PEGTL_KEYWORD("green"), TAO_PEGTL_KEYWORD("blue"),
+             TAO_PEGTL_KEYWORD("filter"), TAO_PEGTL_KEYWORD("transmit")> {};
+struct colour_component_value : p::seq<unary> {};
+struct colour_component_setting
+    : p::seq<colour_component_name, ws, p::must<colour_component_value>> {};
+struct colour_keyword : p::seq<p::sor<TAO_PEGTL_KEYWORD("color"), TAO_PEGTL_KEYWORD("colour")>, ws> {};
+struct colour_base : p::seq<p::not_at<colour_component_name>, unary> {};
+struct colour_expression
+    : p::seq<colour_keyword, p::opt<colour_base>, p::star<colour_component_setting>> {};
+
+// A call of a declared macro; the body is spliced in where the call stands.
+struct value_item;
+
+// A declared name used as a value.
+struct reference : identifier {};
+
+struct primary
+    : p::sor<number, string_literal, vector_literal, paren_expression, function_call,
+             colour_model_literal, colour_expression, defined_call, builtin_constant,
+             macro_call<value_item>, reference> {};
+
+struct component_name
+    : p::sor<TAO_PEGTL_KEYWORD("x"), TAO_PEGTL_KEYWORD("y"), TAO_PEGTL_KEYWORD("z"),
+             TAO_PEGTL_KEYWORD("t"), TAO_PEGTL_KEYWORD("u"), TAO_PEGTL_KEYWORD("v"),
+             TAO_PEGTL_KEYWORD("red"), TAO_PEGTL_KEYWORD("green"), TAO_PEGTL_KEYWORD("blue"),
+             TAO_PEGTL_KEYWORD("filter"), TAO_PEGTL_KEYWORD("transmit"),
+             TAO_PEGTL_KEYWORD("gray"), TAO_PEGTL_KEYWORD("grey")> {};
+struct component_access : p::seq<p::one<'.'>, component_name, ws> {};
+struct index_close : rbracket {};
+struct index_value : p::seq<expression> {};
+struct index_suffix : p::seq<lbracket, p::must<index_value>, p::must<index_close>> {};
+// S(t): evaluating a spline.
+struct spline_call : p::seq<call_open, frame_open, call_arguments, p::must<call_close>> {};
+struct postfix : p::seq<primary, p::star<p::sor<component_access, index_suffix, spline_call>>> {};
+
+struct unary_operand : p::seq<unary> {};
+struct negation : p::seq<p::one<'-'>, ws, p::must<unary_operand>> {};
+struct unary_plus : p::seq<p::one<'+'>, ws, p::must<unary_operand>> {};
+struct logical_not : p::seq<p::one<'!'>, p::not_at<p::one<'='>>, ws, p::must<unary_operand>> {};
+struct unary : p::sor<negation, unary_plus, logical_not, postfix> {};
+
+struct multiplication : p::seq<p::one<'*'>, ws, p::must<unary_operand>> {};
+struct division : p::seq<p::one<'/'>, ws, p::must<unary_operand>> {};
+struct product : p::seq<unary, p::star<p::sor<multiplication, division>>> {};
+
+struct product_operand : product {};
+struct addition : p::seq<p::one<'+'>, ws, p::must<product_operand>> {};
+struct subtraction : p::seq<p::one<'-'>, ws, p::must<product_operand>> {};
+struct sum : p::seq<product, p::star<p::sor<addition, subtraction>>> {};
+
+struct sum_operand : p::seq<sum> {};
+struct less_equal : p::seq<p::string<'<', '='>, ws, p::must<sum_operand>> {};
+struct greater_equal : p::seq<p::string<'>', '='>, ws, p::must<sum_operand>> {};
+struct not_equal : p::seq<p::string<'!', '='>, ws, p::must<sum_operand>> {};
+struct less : p::seq<p::one<'<'>, ws, p::must<sum_operand>> {};
+struct greater : p::seq<p::one<'>'>, ws, p::must<sum_operand>> {};
+struct equal : p::seq<p::one<'='>, ws, p::must<sum_operand>> {};
+struct comparison
+    : p::seq<sum, p::star<p::sor<less_equal, greater_equal, not_equal, less, greater, equal>>> {};
+
+struct comparison_operand : comparison {};
+struct logical_and : p::seq<p::one<'&'>, ws, p::must<comparison_operand>> {};
+struct conjunction : p::seq<comparison, p::star<logical_and>> {};
+struct conjunction_operand : conjunction {};
+struct logical_or : p::seq<p::one<'|'>, ws, p::must<conjunction_operand>> {};
+struct disjunction : p::seq<conjunction, p::star<logical_or>> {};
+
+struct conditional_branch : p::seq<expression> {};
+struct conditional_tail
+    : p::seq<p::one<'?'>, ws, p::must<conditional_branch>, p::must<colon>,
+             p::must<conditional_branch>> {};
+struct expression : p::seq<disjunction, p::opt<conditional_tail>> {};
+
+// ---------------------------------------------------------------- skipping
+
+// Text read without being run: a false #if branch, a loop or macro body
+// being stepped over. Strings and comments are skipped whole, nested
+// directive blocks as a unit.
+namespace skip {
+struct string_raw : p::seq<p::one<'"'>, p::until<p::one<'"'>, p::sor<p::seq<p::one<'\\'>, p::any>, p::any>>> {};
+struct blanks : p::star<p::blank> {};
+struct divider_word
+    : p::sor<TAO_PEGTL_KEYWORD("else"), TAO_PEGTL_KEYWORD("elseif"), TAO_PEGTL_KEYWORD("end"),
+             TAO_PEGTL_KEYWORD("case"), TAO_PEGTL_KEYWORD("range"), TAO_PEGTL_KEYWORD("break")> {};
+struct divider : p::seq<p::one<'#'>, blanks, divider_word> {};
+struct end : p::seq<p::one<'#'>, blanks, TAO_PEGTL_KEYWORD("end")> {};
+struct opener
+    : p::seq<p::one<'#'>, blanks,
+             p::sor<TAO_PEGTL_KEYWORD("if"), TAO_PEGTL_KEYWORD("ifdef"), TAO_PEGTL_KEYWORD("ifndef"),
+                    TAO_PEGTL_KEYWORD("while"), TAO_PEGTL_KEYWORD("for"),
+                    TAO_PEGTL_KEYWORD("switch"), TAO_PEGTL_KEYWORD("macro")>> {};
+struct nested;
+struct token : p::sor<separator, string_raw, nested, p::seq<p::not_at<divider>, p::any>> {};
+// Up to (not including) the next divider at this depth, or the end.
+struct text : p::star<token> {};
+struct nested_end : end {};
+struct nested
+    : p::seq<opener, p::star<p::sor<token, p::seq<p::not_at<end>, divider>>>, p::must<nested_end>> {};
+// A { ... } block with everything inside it.
+struct braced;
+struct braced_token : p::sor<separator, string_raw, braced, p::not_one<'{', '}'>> {};
+struct braced_close : p::one<'}'> {};
+struct braced : p::seq<p::one<'{'>, p::star<braced_token>, p::must<braced_close>> {};
+struct until_rbrace : p::star<braced_token> {};
+struct parenthesized;
+struct paren_token : p::sor<separator, string_raw, parenthesized, p::not_one<'(', ')'>> {};
+struct parenthesized_close : p::one<')'> {};
+struct parenthesized : p::seq<p::one<'('>, p::star<paren_token>, p::must<parenthesized_close>> {};
+}  // namespace skip
+
+// A value read and thrown away (a setting hexant ignores).
+struct ignored_value : p::seq<expression> {};
+// A { } block stepped over whole.
+struct skipped_block : p::seq<skip::braced> {};
+
+// ---------------------------------------------------------------- directives
+
+HEXANT_KEYWORD(kw_declare, "declare");
+HEXANT_KEYWORD(kw_local, "local");
+HEXANT_KEYWORD(kw_undef, "undef");
+HEXANT_KEYWORD(kw_version, "version");
+HEXANT_KEYWORD(kw_debug, "debug");
+HEXANT_KEYWORD(kw_warning, "warning");
+HEXANT_KEYWORD(kw_error, "error");
+HEXANT_KEYWORD(kw_default, "default");
+
+struct hash : p::seq<p::one<'#'>, skip::blanks> {};
+
+// #declare NAME = value; #declare NAME[i][j] = value; #local likewise.
+struct declare_kind : p::sor<kw_declare, kw_local> {};
+struct declare_index : p::seq<lbracket, p::must<index_value>, p::must<index_close>> {};
+struct declare_name : identifier {};
+struct declare_target : p::seq<frame_open, declare_name, p::star<declare_index>> {};
+struct declare_equals : equals {};
+struct declared_value : p::seq<value> {};
+struct declare_directive
+    : p::seq<declare_kind, p::must<declare_target>, p::must<declare_equals>,
+             p::must<declared_value>, p::opt<semicolon>> {};
+
+struct undef_name : identifier {};
+struct undef_directive : p::seq<kw_undef, p::must<undef_name>> {};
+struct version_value : p::seq<expression> {};
+struct version_directive : p::seq<kw_version, p::must<version_value>, p::opt<semicolon>> {};
+struct message_text : p::seq<expression> {};
+struct debug_directive : p::seq<kw_debug, p::must<message_text>> {};
+struct warning_directive : p::seq<kw_warning, p::must<message_text>> {};
+struct error_directive : p::seq<kw_error, p::must<message_text>> {};
+
+// #if, #ifdef, #ifndef, #while, #for, #switch, #macro, #include and macro
+// calls are custom rules (above), with Item the kind of thing their bodies hold.
+
+// The parts the custom rules read with the grammar.
+struct condition_close : rparen {};
+struct condition_value : p::seq<expression> {};
+struct condition : p::seq<lparen, p::must<condition_value>, p::must<condition_close>> {};
+struct include_name : p::seq<expression> {};
+struct macro_name : identifier {};
+struct macro_parameter : identifier {};
+struct macro_parameters
+    : p::seq<lparen, p::opt<macro_parameter, p::star<comma, p::must<macro_parameter>>>,
+             p::must<rparen>> {};
+struct for_variable : identifier {};
+struct for_bound : p::seq<expression> {};
+struct for_header
+    : p::seq<lparen, p::must<for_variable>, p::must<comma>, p::must<for_bound>, p::must<comma>,
+             p::must<for_bound>, p::opt<comma, p::must<for_bound>>, p::must<condition_close>> {};
+struct range_header
+    : p::seq<lparen, p::must<condition_value>, p::must<comma>, p::must<condition_value>,
+             p::must<condition_close>> {};
+struct macro_body_end : p::eof {};
+struct include_end : p::eof {};
+
+struct unsupported_directive
+    : p::sor<TAO_PEGTL_KEYWORD("fopen"), TAO_PEGTL_KEYWORD("fclose"), TAO_PEGTL_KEYWORD("read"),
+             TAO_PEGTL_KEYWORD("write"), TAO_PEGTL_KEYWORD("render"),
+             TAO_PEGTL_KEYWORD("statistics")> {};
+// Anything after '#' that is not a directive, nor a block's divider.
+struct unknown_directive : p::seq<p::not_at<skip::divider_word>, p::identifier_first> {};
+
+struct default_block;
+template <typename Item>
+struct directive
+    : p::seq<hash,
+             p::sor<declare_directive, if_directive<Item>, ifdef_directive<Item>,
+                    while_directive<Item>, for_directive<Item>, switch_directive<Item>,
+                    include_directive<Item>, macro_definition, undef_directive, version_directive,
+                    debug_directive, warning_directive, error_directive, default_block,
+                    unsupported_directive, unknown_directive>> {};
+
+// ---------------------------------------------------------------- modifiers
+
+HEXANT_KEYWORD(kw_translate, "translate");
+HEXANT_KEYWORD(kw_rotate, "rotate");
+HEXANT_KEYWORD(kw_scale, "scale");
+HEXANT_KEYWORD(kw_matrix, "matrix");
+HEXANT_KEYWORD(kw_transform, "transform");
+HEXANT_KEYWORD(kw_inverse, "inverse");
+
+struct transform_amount : p::seq<expression> {};
+struct translate_step : p::seq<kw_translate, p::must<transform_amount>> {};
+struct rotate_step : p::seq<kw_rotate, p::must<transform_amount>> {};
+struct scale_step : p::seq<kw_scale, p::must<transform_amount>> {};
+struct matrix_entry : p::seq<sum> {};
+struct matrix_open : langle {};
+struct matrix_close : rangle {};
+struct matrix_step
+    : p::seq<kw_matrix, p::must<matrix_open>, frame_open, p::must<matrix_entry>,
+             p::star<comma, p::must<matrix_entry>>, p::must<matrix_close>> {};
+struct transform_block;
+struct transform_reference : p::seq<expression> {};
+struct transform_argument : p::sor<transform_block, transform_reference> {};
+struct transform_step : p::seq<kw_transform, p::must<transform_argument>> {};
+struct transformation
+    : p::sor<translate_step, rotate_step, scale_step, matrix_step, transform_step> {};
+
+// transform { [IDENT] steps [inverse] }
+struct transform_open : p::seq<lbrace> {};
+struct transform_inverse : kw_inverse {};
+struct transform_item
+    : p::sor<directive<transform_item>, macro_call<transform_item>, transformation,
+             transform_inverse> {};
+struct transform_base : p::seq<p::not_at<kw_inverse>, expression> {};
+struct transform_block
+    : p::seq<transform_open, p::opt<transform_base>, p::star<transform_item>, p::must<rbrace>> {};
+struct transform_value : p::seq<kw_transform, p::must<transform_block>> {};
+
+// hexant's deformations: twist <axis>, DEGREES_PER_UNIT; taper <axis>, FACTOR;
+// bend <axis>, DEGREES.
+struct deformation_name
+    : p::sor<TAO_PEGTL_KEYWORD("twist"), TAO_PEGTL_KEYWORD("taper"), TAO_PEGTL_KEYWORD("bend")> {};
+struct deformation_axis : p::seq<sum> {};
+struct deformation_amount : p::seq<expression> {};
+struct deformation
+    : p::seq<deformation_name, ws, p::must<deformation_axis>, p::must<comma>,
+             p::must<deformation_amount>> {};
+
+// ---------------------------------------------------------------- textures
+
+HEXANT_KEYWORD(kw_pigment, "pigment");
+HEXANT_KEYWORD(kw_finish, "finish");
+HEXANT_KEYWORD(kw_texture, "texture");
+HEXANT_KEYWORD(kw_normal, "normal");
+HEXANT_KEYWORD(kw_interior, "interior");
+HEXANT_KEYWORD(kw_material, "material");
+HEXANT_KEYWORD(kw_checker, "checker");
+
+// Patterns POV-Ray has and hexant does not: parsed, kept by name, an error
+// only where a scene uses them.
+struct unsupported_pattern_name
+    : p::sor<TAO_PEGTL_KEYWORD("agate"), TAO_PEGTL_KEYWORD("average"),
+             TAO_PEGTL_KEYWORD("boxed"), TAO_PEGTL_KEYWORD("bozo"), TAO_PEGTL_KEYWORD("brick"),
+             TAO_PEGTL_KEYWORD("bumps"), TAO_PEGTL_KEYWORD("cells"), TAO_PEGTL_KEYWORD("crackle"),
+             TAO_PEGTL_KEYWORD("cylindrical"), TAO_PEGTL_KEYWORD("dents"),
+             TAO_PEGTL_KEYWORD("facets"), TAO_PEGTL_KEYWORD("gradient"),
+             TAO_PEGTL_KEYWORD("granite"), TAO_PEGTL_KEYWORD("hexagon"),
+             TAO_PEGTL_KEYWORD("leopard"), TAO_PEGTL_KEYWORD("marble"), TAO_PEGTL_KEYWORD("onion"),
+             TAO_PEGTL_KEYWORD("planar"), TAO_PEGTL_KEYWORD("quilted"), TAO_PEGTL_KEYWORD("radial"),
+             TAO_PEGTL_KEYWORD("ripples"), TAO_PEGTL_KEYWORD("spherical"),
+             TAO_PEGTL_KEYWORD("spiral1"), TAO_PEGTL_KEYWORD("spiral2"),
+             TAO_PEGTL_KEYWORD("spotted"), TAO_PEGTL_KEYWORD("waves"), TAO_PEGTL_KEYWORD("wood"),
+             TAO_PEGTL_KEYWORD("wrinkles"), TAO_PEGTL_KEYWORD("image_map"),
+             TAO_PEGTL_KEYWORD("color_map"), TAO_PEGTL_KEYWORD("colour_map"),
+             TAO_PEGTL_KEYWORD("pigment_map"), TAO_PEGTL_KEYWORD("function"),
+             TAO_PEGTL_KEYWORD("julia"), TAO_PEGTL_KEYWORD("mandel"), TAO_PEGTL_KEYWORD("pavement"),
+             TAO_PEGTL_KEYWORD("tiling"), TAO_PEGTL_KEYWORD("cubic"), TAO_PEGTL_KEYWORD("object"),
+             TAO_PEGTL_KEYWORD("slope"), TAO_PEGTL_KEYWORD("aoi"), TAO_PEGTL_KEYWORD("density_file"),
+             TAO_PEGTL_KEYWORD("image_pattern"), TAO_PEGTL_KEYWORD("uv_mapping"),
+             TAO_PEGTL_KEYWORD("wave")> {};
+struct unsupported_pattern : p::seq<unsupported_pattern_name, skip::until_rbrace> {};
+
+struct checker_colour : p::seq<sum> {};
+struct checker_pattern
+    : p::seq<kw_checker, frame_open, p::opt<checker_colour, p::opt<comma>, p::must<checker_colour>>> {};
+struct pigment_open : p::seq<kw_pigment, p::must<lbrace>> {};
+struct pigment_base : p::seq<p::not_at<kw_checker>, expression> {};
+struct pigment_item
+    : p::sor<directive<pigment_item>, macro_call<pigment_item>, checker_pattern,
+             unsupported_pattern, transformation> {};
+struct pigment_block
+    : p::seq<pigment_open, p::opt<pigment_base>, p::star<pigment_item>, p::must<rbrace>> {};
+
+struct finish_setting_name
+    : p::sor<TAO_PEGTL_KEYWORD("ambient"), TAO_PEGTL_KEYWORD("diffuse"),
+             TAO_PEGTL_KEYWORD("brilliance"), TAO_PEGTL_KEYWORD("phong_size"),
+             TAO_PEGTL_KEYWORD("phong"), TAO_PEGTL_KEYWORD("specular"),
+             TAO_PEGTL_KEYWORD("roughness"), TAO_PEGTL_KEYWORD("emission"),
+             TAO_PEGTL_KEYWORD("crand"), TAO_PEGTL_KEYWORD("metallic")> {};
+struct finish_setting_value : p::seq<expression> {};
+struct finish_setting : p::seq<finish_setting_name, ws, p::must<finish_setting_value>> {};
+struct reflection_value : p::seq<expression> {};
+struct reflection_option
+    : p::sor<p::seq<p::sor<TAO_PEGTL_KEYWORD("falloff"), TAO_PEGTL_KEYWORD("exponent"),
+                           TAO_PEGTL_KEYWORD("metallic")>,
+                    ws, p::must<ignored_value>>,
+             p::seq<TAO_PEGTL_KEYWORD("fresnel"), ws, p::opt<ignored_value>>, comma> {};
+struct reflection_ignored_option : reflection_option {};
+struct reflection_block
+    : p::seq<lbrace, p::must<reflection_value>, p::star<reflection_ignored_option>,
+             p::must<rbrace>> {};
+struct reflection_amount : p::sor<reflection_block, reflection_value> {};
+struct reflection_setting
+    : p::seq<TAO_PEGTL_KEYWORD("reflection"), ws, p::must<reflection_amount>> {};
+struct finish_flag
+    : p::seq<p::sor<TAO_PEGTL_KEYWORD("conserve_energy"), TAO_PEGTL_KEYWORD("fresnel")>, ws> {};
+struct finish_ignored_block
+    : p::seq<p::sor<TAO_PEGTL_KEYWORD("irid"), TAO_PEGTL_KEYWORD("subsurface")>, ws, skip::braced, ws> {};
+struct finish_open : p::seq<kw_finish, p::must<lbrace>> {};
+struct finish_base : p::seq<expression> {};
+struct finish_item
+    : p::sor<directive<finish_item>, macro_call<finish_item>, finish_setting, reflection_setting,
+             finish_flag, finish_ignored_block> {};
+struct finish_block
+    : p::seq<finish_open, p::opt<finish_base>, p::star<finish_item>, p::must<rbrace>> {};
+
+// normal { } changes shading only; hexant reads it and ignores it.
+struct normal_block : p::seq<kw_normal, p::must<skipped_block>, ws> {};
+
+struct interior_open : p::seq<kw_interior, p::must<lbrace>> {};
+struct interior_base : p::seq<expression> {};
+struct ior_value : p::seq<expression> {};
+struct ior_setting : p::seq<TAO_PEGTL_KEYWORD("ior"), ws, p::must<ior_value>> {};
+struct interior_ignored_setting
+    : p::sor<p::seq<p::sor<TAO_PEGTL_KEYWORD("caustics"), TAO_PEGTL_KEYWORD("dispersion"),
+                           TAO_PEGTL_KEYWORD("dispersion_samples"),
+                           TAO_PEGTL_KEYWORD("fade_distance"), TAO_PEGTL_KEYWORD("fade_power"),
+                           TAO_PEGTL_KEYWORD("fade_color"), TAO_PEGTL_KEYWORD("fade_colour")>,
+                    ws, p::must<ignored_value>>,
+             p::seq<TAO_PEGTL_KEYWORD("media"), ws, p::must<skipped_block>, ws>> {};
+struct interior_item
+    : p::sor<directive<interior_item>, macro_call<interior_item>, ior_setting,
+             interior_ignored_setting> {};
+struct interior_block
+    : p::seq<interior_open, p::opt<interior_base>, p::star<interior_item>, p::must<rbrace>> {};
+
+struct texture_open : p::seq<kw_texture, p::must<lbrace>> {};
+struct texture_base : p::seq<expression> {};
+struct texture_pigment : p::seq<pigment_block> {};
+struct texture_finish : p::seq<finish_block> {};
+struct texture_item
+    : p::sor<directive<texture_item>, macro_call<texture_item>, texture_pigment, texture_finish,
+             normal_block, transformation> {};
+struct texture_block
+    : p::seq<texture_open, p::opt<texture_base>, p::star<texture_item>, p::must<rbrace>> {};
+
+// material { texture { } interior { } }
+struct material_open : p::seq<kw_material, p::must<lbrace>> {};
+struct material_base : p::seq<expression> {};
+struct material_texture : p::seq<texture_block> {};
+struct material_interior : p::seq<interior_block> {};
+struct material_item
+    : p::sor<directive<material_item>, material_texture, material_interior, transformation> {};
+struct material_block
+    : p::seq<material_open, p::opt<material_base>, p::star<material_item>, p::must<rbrace>> {};
+
+// ---------------------------------------------------------------- objects
+
+struct object_value;
+struct object_modifier;
+struct object_modifiers : p::star<object_modifier> {};
+struct object_close : rbrace {};
+
+// A shape's leading arguments: values separated by commas, which POV-Ray
+// lets one leave out.
+struct shape_argument : p::seq<sum> {};
+struct shape_arguments
+    : p::seq<frame_open, shape_argument, p::star<p::opt<comma>, shape_argument>> {};
+
+template <typename Keyword>
+struct shape_block
+    : p::seq<Keyword, p::must<lbrace>, p::must<shape_arguments>, object_modifiers,
+             p::must<object_close>> {};
+
+HEXANT_KEYWORD(kw_sphere, "sphere");
+HEXANT_KEYWORD(kw_box, "box");
+HEXANT_KEYWORD(kw_plane, "plane");
+HEXANT_KEYWORD(kw_polygon, "polygon");
+HEXANT_KEYWORD(kw_triangle, "triangle");
+HEXANT_KEYWORD(kw_smooth_triangle, "smooth_triangle");
+HEXANT_KEYWORD(kw_disc, "disc");
+HEXANT_KEYWORD(kw_cylinder, "cylinder");
+HEXANT_KEYWORD(kw_cone, "cone");
+HEXANT_KEYWORD(kw_torus, "torus");
+HEXANT_KEYWORD(kw_prism, "prism");
+
+// prism { [linear_sweep] [linear_spline] H1, H2, N, <..>, ... }
+struct prism_option
+    : p::seq<p::sor<TAO_PEGTL_KEYWORD("linear_sweep"), TAO_PEGTL_KEYWORD("conic_sweep"),
+                    TAO_PEGTL_KEYWORD("linear_spline"), TAO_PEGTL_KEYWORD("quadratic_spline"),
+                    TAO_PEGTL_KEYWORD("cubic_spline"), TAO_PEGTL_KEYWORD("bezier_spline")>,
+             ws> {};
+struct prism_open : p::seq<kw_prism, p::must<lbrace>> {};
+struct prism_block
+    : p::seq<prism_open, p::star<prism_option>, p::must<shape_arguments>, object_modifiers,
+             p::must<object_close>> {};
+
+HEXANT_KEYWORD(kw_union, "union");
+HEXANT_KEYWORD(kw_merge, "merge");
+HEXANT_KEYWORD(kw_intersection, "intersection");
+HEXANT_KEYWORD(kw_difference, "difference");
+HEXANT_KEYWORD(kw_motion_blur, "motion_blur");
+struct csg_kind : p::sor<kw_union, kw_merge, kw_intersection, kw_difference, kw_motion_blur> {};
+struct csg_open : p::seq<csg_kind, p::must<lbrace>> {};
+struct csg_child : p::seq<object_value> {};
+struct csg_item
+    : p::sor<directive<csg_item>, macro_call<csg_item>, csg_child, object_modifier> {};
+struct csg_block : p::seq<csg_open, p::star<csg_item>, p::must<object_close>> {};
+
+// object { IDENT modifiers } or object { shape modifiers }
+HEXANT_KEYWORD(kw_object, "object");
+struct object_base : p::sor<object_value, expression> {};
+struct object_block
+    : p::seq<kw_object, p::must<lbrace>, p::must<object_base>, object_modifiers,
+             p::must<object_close>> {};
+
+// light_source { <position>, colour modifiers }
+HEXANT_KEYWORD(kw_light_source, "light_source");
+struct light_arguments : p::seq<frame_open, p::must<shape_argument>, p::opt<comma>, p::must<shape_argument>> {};
+struct light_flag
+    : p::seq<p::sor<TAO_PEGTL_KEYWORD("shadowless"), TAO_PEGTL_KEYWORD("spotlight"),
+                    TAO_PEGTL_KEYWORD("cylinder"), TAO_PEGTL_KEYWORD("parallel"),
+                    TAO_PEGTL_KEYWORD("jitter"), TAO_PEGTL_KEYWORD("circular"),
+                    TAO_PEGTL_KEYWORD("orient")>,
+             ws> {};
+struct light_setting_name
+    : p::sor<TAO_PEGTL_KEYWORD("point_at"), TAO_PEGTL_KEYWORD("radius"),
+             TAO_PEGTL_KEYWORD("falloff"), TAO_PEGTL_KEYWORD("tightness"),
+             TAO_PEGTL_KEYWORD("adaptive"), TAO_PEGTL_KEYWORD("fade_distance"),
+             TAO_PEGTL_KEYWORD("fade_power"), TAO_PEGTL_KEYWORD("media_interaction"),
+             TAO_PEGTL_KEYWORD("media_attenuation")> {};
+struct light_setting_value : p::seq<expression> {};
+struct light_setting : p::seq<light_setting_name, ws, p::must<light_setting_value>> {};
+struct area_light_argument : p::seq<sum> {};
+struct area_light
+    : p::seq<TAO_PEGTL_KEYWORD("area_light"), ws, frame_open, p::must<area_light_argument>,
+             p::must<comma>, p::must<area_light_argument>, p::must<comma>,
+             p::must<area_light_argument>, p::must<comma>, p::must<area_light_argument>> {};
+struct light_looks_like
+    : p::seq<p::sor<TAO_PEGTL_KEYWORD("looks_like"), TAO_PEGTL_KEYWORD("projected_through")>, ws,
+             p::must<skipped_block>, ws> {};
+struct light_item
+    : p::sor<directive<light_item>, macro_call<light_item>, light_flag, light_setting,
+             area_light, light_looks_like, transformation> {};
+struct light_block
+    : p::seq<kw_light_source, p::must<lbrace>, p::must<light_arguments>, p::star<light_item>,
+             p::must<object_close>> {};
+
+// Object kinds POV-Ray has and hexant does not: kept as source, an error
+// only where used. Also `function { }` and the *_map blocks.
+struct unsupported_kind
+    : p::sor<TAO_PEGTL_KEYWORD("function"), TAO_PEGTL_KEYWORD("isosurface"),
+             TAO_PEGTL_KEYWORD("blob"), TAO_PEGTL_KEYWORD("mesh2"), TAO_PEGTL_KEYWORD("mesh"),
+             TAO_PEGTL_KEYWORD("height_field"), TAO_PEGTL_KEYWORD("lathe"), TAO_PEGTL_KEYWORD("sor"),
+             TAO_PEGTL_KEYWORD("sphere_sweep"), TAO_PEGTL_KEYWORD("superellipsoid"),
+             TAO_PEGTL_KEYWORD("text"), TAO_PEGTL_KEYWORD("julia_fractal"),
+             TAO_PEGTL_KEYWORD("parametric"), TAO_PEGTL_KEYWORD("poly"),
+             TAO_PEGTL_KEYWORD("polynomial"), TAO_PEGTL_KEYWORD("cubic"),
+             TAO_PEGTL_KEYWORD("quartic"), TAO_PEGTL_KEYWORD("quadric"),
+             TAO_PEGTL_KEYWORD("bicubic_patch"), TAO_PEGTL_KEYWORD("ovus"),
+             TAO_PEGTL_KEYWORD("lemon"), TAO_PEGTL_KEYWORD("color_map"),
+             TAO_PEGTL_KEYWORD("colour_map"), TAO_PEGTL_KEYWORD("pigment_map"),
+             TAO_PEGTL_KEYWORD("normal_map"), TAO_PEGTL_KEYWORD("texture_map"),
+             TAO_PEGTL_KEYWORD("slope_map"), TAO_PEGTL_KEYWORD("density_map"),
+             TAO_PEGTL_KEYWORD("density"), TAO_PEGTL_KEYWORD("media"),
+             TAO_PEGTL_KEYWORD("photons"), TAO_PEGTL_KEYWORD("rainbow"),
+             TAO_PEGTL_KEYWORD("sky_sphere"), TAO_PEGTL_KEYWORD("fog")> {};
+struct unsupported_block
+    : p::seq<unsupported_kind, ws, p::opt<skip::parenthesized, ws>, p::must<skipped_block>, ws> {};
+
+struct object_value
+    : p::sor<shape_block<kw_sphere>, shape_block<kw_box>, shape_block<kw_plane>,
+             shape_block<kw_polygon>, shape_block<kw_triangle>,
+             shape_block<kw_smooth_triangle>, shape_block<kw_disc>, shape_block<kw_cylinder>,
+             shape_block<kw_cone>, shape_block<kw_torus>, prism_block, csg_block, object_block,
+             light_block> {};
+
+// Things that modify an object, in any order.
+struct object_texture : p::seq<texture_block> {};
+struct object_pigment : p::seq<pigment_block> {};
+struct object_finish : p::seq<finish_block> {};
+struct object_interior : p::seq<interior_block> {};
+struct object_material : p::seq<material_block> {};
+struct object_flag_name
+    : p::sor<TAO_PEGTL_KEYWORD("no_shadow"), TAO_PEGTL_KEYWORD("hollow"),
+             TAO_PEGTL_KEYWORD("inverse"), TAO_PEGTL_KEYWORD("open"), TAO_PEGTL_KEYWORD("sturm"),
+             TAO_PEGTL_KEYWORD("no_image"), TAO_PEGTL_KEYWORD("no_reflection"),
+             TAO_PEGTL_KEYWORD("no_radiosity"), TAO_PEGTL_KEYWORD("double_illumination"),
+             TAO_PEGTL_KEYWORD("smooth")> {};
+struct object_flag_value : p::seq<p::not_at<p::one<'<'>>, expression> {};
+struct object_flag : p::seq<object_flag_name, ws, frame_open, p::opt<object_flag_value>> {};
+struct object_ignored_block
+    : p::seq<p::sor<TAO_PEGTL_KEYWORD("bounded_by"), TAO_PEGTL_KEYWORD("clipped_by"),
+                    TAO_PEGTL_KEYWORD("photons"), TAO_PEGTL_KEYWORD("radiosity")>,
+             ws, p::must<skipped_block>, ws> {};
+struct object_modifier
+    : p::sor<directive<object_modifier>, macro_call<object_modifier>, transformation,
+             deformation, object_texture, object_pigment, object_finish, normal_block,
+             object_interior, object_material, object_flag, object_ignored_block> {};
+
+// ---------------------------------------------------------------- scene items
+
+HEXANT_KEYWORD(kw_camera, "camera");
+struct camera_open : p::seq<kw_camera, p::must<lbrace>> {};
+struct camera_base : p::seq<expression> {};
+struct camera_vector_name
+    : p::sor<TAO_PEGTL_KEYWORD("location"), TAO_PEGTL_KEYWORD("look_at"),
+             TAO_PEGTL_KEYWORD("direction"), TAO_PEGTL_KEYWORD("right"), TAO_PEGTL_KEYWORD("up"),
+             TAO_PEGTL_KEYWORD("sky"), TAO_PEGTL_KEYWORD("angle")> {};
+struct camera_vector_value : p::seq<expression> {};
+struct camera_setting : p::seq<camera_vector_name, ws, p::must<camera_vector_value>> {};
+struct camera_perspective : p::seq<TAO_PEGTL_KEYWORD("perspective"), ws> {};
+struct camera_unsupported_type
+    : p::sor<TAO_PEGTL_KEYWORD("orthographic"), TAO_PEGTL_KEYWORD("fisheye"),
+             TAO_PEGTL_KEYWORD("ultra_wide_angle"), TAO_PEGTL_KEYWORD("omnimax"),
+             TAO_PEGTL_KEYWORD("panoramic"), TAO_PEGTL_KEYWORD("spherical"),
+             TAO_PEGTL_KEYWORD("cylinder")> {};
+struct camera_ignored_setting
+    : p::seq<p::sor<TAO_PEGTL_KEYWORD("aperture"), TAO_PEGTL_KEYWORD("blur_samples"),
+                    TAO_PEGTL_KEYWORD("focal_point"), TAO_PEGTL_KEYWORD("confidence"),
+                    TAO_PEGTL_KEYWORD("variance")>,
+             ws, p::must<ignored_value>, p::opt<comma, ignored_value>> {};
+struct camera_item
+    : p::sor<directive<camera_item>, macro_call<camera_item>, camera_perspective, camera_setting,
+             camera_ignored_setting, transformation, camera_unsupported_type> {};
+struct camera_block
+    : p::seq<camera_open, p::opt<camera_base>, p::star<camera_item>, p::must<rbrace>> {};
+
+HEXANT_KEYWORD(kw_background, "background");
+struct background_colour : p::seq<expression> {};
+struct background_block
+    : p::seq<kw_background, p::must<lbrace>, p::must<background_colour>, p::must<rbrace>> {};
+
+HEXANT_KEYWORD(kw_global_settings, "global_settings");
+struct global_setting_name
+    : p::sor<TAO_PEGTL_KEYWORD("assumed_gamma"), TAO_PEGTL_KEYWORD("max_trace_level"),
+             TAO_PEGTL_KEYWORD("ambient_light")> {};
+struct global_setting_value : p::seq<expression> {};
+struct global_setting : p::seq<global_setting_name, ws, p::must<global_setting_value>> {};
+struct charset_name : p::identifier {};
+struct global_charset : p::seq<TAO_PEGTL_KEYWORD("charset"), ws, p::must<charset_name>, ws> {};
+// Any other setting: a name and a { } block or a value; warned and ignored.
+struct global_ignored_name : p::seq<p::identifier, ws> {};
+struct global_ignored_setting
+    : p::seq<global_ignored_name, frame_open, p::sor<p::seq<skip::braced, ws>, expression>> {};
+struct global_item
+    : p::sor<directive<global_item>, global_setting, global_charset, global_ignored_setting> {};
+struct global_settings_block
+    : p::seq<kw_global_settings, p::must<lbrace>, p::star<global_item>, p::must<rbrace>> {};
+
+// #default { texture { } | pigment { } | finish { } }
+struct default_item : p::sor<texture_block, pigment_block, finish_block> {};
+struct default_block
+    : p::seq<kw_default, p::must<lbrace>, p::star<default_item>, p::must<rbrace>> {};
+
+// ---------------------------------------------------------------- values
+
+// array[N][M] { ... }
+HEXANT_KEYWORD(kw_array, "array");
+struct array_size : p::seq<expression> {};
+struct array_dimension : p::seq<lbracket, p::must<array_size>, p::must<index_close>> {};
+struct array_dimensions : p::seq<frame_open, p::plus<array_dimension>> {};
+struct array_element;
+struct array_initializer_close : rbrace {};
+struct array_initializer
+    : p::seq<lbrace, frame_open, p::opt<array_element, p::star<comma, array_element>>,
+             p::opt<comma>, p::must<array_initializer_close>> {};
+struct array_element : p::sor<array_initializer, value> {};
+struct array_value : p::seq<kw_array, p::must<array_dimensions>, p::opt<array_initializer>> {};
+
+// spline { [kind] t, value ... }
+HEXANT_KEYWORD(kw_spline, "spline");
+struct spline_open : p::seq<kw_spline, p::must<lbrace>> {};
+struct spline_kind
+    : p::seq<p::sor<TAO_PEGTL_KEYWORD("linear_spline"), TAO_PEGTL_KEYWORD("quadratic_spline"),
+                    TAO_PEGTL_KEYWORD("cubic_spline"), TAO_PEGTL_KEYWORD("natural_spline")>,
+             ws> {};
+struct spline_key_time : p::seq<sum> {};
+struct spline_key_value : p::seq<sum> {};
+struct spline_key
+    : p::seq<spline_key_time, p::opt<comma>, p::must<spline_key_value>, p::opt<comma>> {};
+struct spline_item : p::sor<directive<spline_item>, spline_kind, spline_key> {};
+struct spline_block : p::seq<spline_open, p::star<spline_item>, p::must<rbrace>> {};
+
+struct value
+    : p::sor<object_value, camera_block, texture_block, pigment_block, finish_block,
+             interior_block, transform_value, array_value, spline_block,
+             unsupported_block, expression> {};
+
+// A macro called where a value is wanted holds values (and directives).
+struct value_item : p::sor<directive<value_item>, value> {};
+
+// ---------------------------------------------------------------- the scene
+
+struct scene_object : p::seq<object_value> {};
+struct scene_unsupported : p::seq<unsupported_block> {};
+struct scene_camera : p::seq<camera_block> {};
+struct scene_item
+    : p::sor<directive<scene_item>, macro_call<scene_item>, scene_object, scene_camera,
+             background_block, global_settings_block, scene_unsupported, semicolon> {};
+struct scene_end : p::eof {};
+struct scene_file : p::seq<ws, p::star<scene_item>, p::must<scene_end>> {};
+
+}  // namespace hexant::language::grammar
+
+// For analyze<>(): each custom rule consumes input when it succeeds.
+namespace tao::pegtl {
+template <typename Name>
+struct analyze_traits<Name, hexant::language::grammar::name> : analyze_any_traits<> {};
+#define HEXANT_CUSTOM_ANALYZE(rule)                                                         \
+    template <typename Name, typename Item>                                                \
+    struct analyze_traits<Name, hexant::language::grammar::rule<Item>> : analyze_any_traits<> {}
+HEXANT_CUSTOM_ANALYZE(macro_call);
+HEXANT_CUSTOM_ANALYZE(if_directive);
+HEXANT_CUSTOM_ANALYZE(ifdef_directive);
+HEXANT_CUSTOM_ANALYZE(while_directive);
+HEXANT_CUSTOM_ANALYZE(for_directive);
+HEXANT_CUSTOM_ANALYZE(switch_directive);
+HEXANT_CUSTOM_ANALYZE(include_directive);
+HEXANT_CUSTOM_ANALYZE(macro_definition_rule);
+#undef HEXANT_CUSTOM_ANALYZE
+}  // namespace tao::pegtl

@@ -1,0 +1,363 @@
+// The reader's non-template parts: symbols, blocks, shapes, and the entry
+// points that run the grammar over a scene file.
+#include "language/interpreter.hpp"
+
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "language/actions.hpp"
+#include "language/interpreter_state.hpp"
+
+#ifndef HEXANT_BUNDLED_INCLUDE_DIR
+#define HEXANT_BUNDLED_INCLUDE_DIR "language/include"
+#endif
+
+namespace hexant::language {
+
+std::filesystem::path bundled_include_dir() { return HEXANT_BUNDLED_INCLUDE_DIR; }
+
+Interpreter::Interpreter(const ParseOptions& options_in, runtime::SceneDescription& scene_in,
+                         std::filesystem::path scene_folder)
+    : scene(scene_in), options(options_in), scene_folder_(std::move(scene_folder)) {
+    scopes_.emplace_back();  // the global table
+}
+
+// ------------------------------------------------------------------ sources and errors
+
+const std::string& Interpreter::add_source(const std::string& name, std::string text) {
+    sources_.emplace_back(name, std::move(text));
+    return sources_.back().second;
+}
+
+ErrorPlace Interpreter::place(const p::position& position, std::string note) const {
+    ErrorPlace place{position.source, position.line, position.column, {}, std::move(note)};
+    // The newest source of that name holds the position.
+    for (auto it = sources_.rbegin(); it != sources_.rend(); ++it) {
+        if (it->first != position.source) continue;
+        const std::string& text = it->second;
+        std::size_t begin = std::min(position.byte, text.size());
+        while (begin > 0 && text[begin - 1] != '\n') --begin;
+        std::size_t end = begin;
+        while (end < text.size() && text[end] != '\n' && text[end] != '\r') ++end;
+        place.source_line = text.substr(begin, end - begin);
+        break;
+    }
+    return place;
+}
+
+SceneError Interpreter::to_scene_error(const p::parse_error& e) const {
+    const auto& positions = e.positions();
+    SceneError error(std::string(e.message()),
+                     positions.empty() ? ErrorPlace{} : place(positions.front()));
+    for (std::size_t i = 1; i < positions.size(); ++i) error.add_context(place(positions[i], "from here"));
+    return error;
+}
+
+std::ostream& Interpreter::messages() const {
+    return options.messages ? *options.messages : std::cerr;
+}
+
+void Interpreter::warn(const p::position& position, const std::string& message) {
+    std::string text = position.source + ":" + std::to_string(position.line) + ":" +
+                       std::to_string(position.column) + ": warning: " + message;
+    messages() << text << "\n";
+    scene.warnings.push_back(std::move(text));
+}
+
+// ------------------------------------------------------------------ stacks
+
+Value Interpreter::pop() {
+    if (stack_.empty()) throw std::logic_error("hexant: value stack underflow");
+    Value v = std::move(stack_.back());
+    stack_.pop_back();
+    return v;
+}
+
+Value& Interpreter::top() {
+    if (stack_.empty()) throw std::logic_error("hexant: value stack underflow");
+    return stack_.back();
+}
+
+std::vector<Value> Interpreter::close_frame() {
+    if (frames_.empty()) throw std::logic_error("hexant: frame stack underflow");
+    const std::size_t begin = frames_.back();
+    frames_.pop_back();
+    std::vector<Value> values(std::make_move_iterator(stack_.begin() + static_cast<std::ptrdiff_t>(begin)),
+                              std::make_move_iterator(stack_.end()));
+    stack_.resize(begin);
+    return values;
+}
+
+std::string Interpreter::pop_name() {
+    if (names_.empty()) throw std::logic_error("hexant: name stack underflow");
+    std::string n = std::move(names_.back());
+    names_.pop_back();
+    return n;
+}
+
+void Interpreter::apply_transform(runtime::TransformStep step, const p::position& where) {
+    if (blocks.empty()) fail(where, "a transformation does not belong here");
+    Block& b = blocks.back();
+    if (auto* object = std::get_if<runtime::ObjectRecord>(&b)) {
+        // As in POV-Ray, an object's texture moves with it.
+        if (object->texture) object->texture->transform.append(step);
+        object->transform.append(std::move(step));
+    } else if (auto* light = std::get_if<runtime::LightRecord>(&b)) {
+        light->transform.append(std::move(step));
+    } else if (auto* camera = std::get_if<runtime::CameraRecord>(&b)) {
+        runtime::CameraItem item;
+        item.kind = runtime::CameraItem::Kind::Transform;
+        item.step = std::move(step);
+        camera->items.push_back(std::move(item));
+    } else if (auto* texture = std::get_if<runtime::Texture>(&b)) {
+        texture->transform.append(std::move(step));
+    } else if (auto* pigment = std::get_if<runtime::Pigment>(&b)) {
+        pigment->transform.append(std::move(step));
+    } else if (auto* transform = std::get_if<runtime::Transform>(&b)) {
+        transform->append(std::move(step));
+    } else if (auto* material = std::get_if<MaterialBuilder>(&b)) {
+        if (material->texture) material->texture->transform.append(std::move(step));
+    } else {
+        fail(where, "a transformation does not belong here");
+    }
+}
+
+void Interpreter::apply_deformation(runtime::TransformStep step, const p::position& where) {
+    if (blocks.empty() || !std::holds_alternative<runtime::ObjectRecord>(blocks.back()))
+        fail(where, "a deformation belongs in an object");
+    apply_transform(std::move(step), where);
+}
+
+// ------------------------------------------------------------------ symbols
+
+const Value* Interpreter::lookup(const std::string& name) const {
+    for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it) {
+        auto found = it->find(name);
+        if (found != it->end()) return &found->second;
+    }
+    return nullptr;
+}
+
+void Interpreter::declare(const std::string& name, Value value, bool local) {
+    auto& table = local ? scopes_.back() : scopes_.front();
+    table[name] = std::move(value);
+}
+
+void Interpreter::assign_element(const std::string& name, const std::vector<Value>& indices,
+                                 Value value, const p::position& where) {
+    Value* target = nullptr;
+    for (auto it = scopes_.rbegin(); it != scopes_.rend() && !target; ++it) {
+        auto found = it->find(name);
+        if (found != it->end()) target = &found->second;
+    }
+    if (!target) fail(where, "undeclared array '" + name + "'");
+    if (!target->is<std::shared_ptr<Array>>()) fail(where, "'" + name + "' is not an array");
+    auto& array = *target->as<std::shared_ptr<Array>>();
+    std::vector<double> at;
+    try {
+        for (const auto& i : indices) at.push_back(to_constant(i, "an array index"));
+        array.elements[element_index(array, at)] = std::make_shared<Value>(std::move(value));
+    } catch (const ValueError& e) {
+        fail(where, e.what());
+    }
+}
+
+bool Interpreter::undefine(const std::string& name) {
+    for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it)
+        if (it->erase(name)) return true;
+    return false;
+}
+
+std::filesystem::path Interpreter::resolve_include(const std::string& name,
+                                                   const p::position& where) const {
+    namespace fs = std::filesystem;
+    const fs::path file(name);
+    if (file.is_absolute()) {
+        if (fs::exists(file)) return file;
+        fail(where, "include file '" + name + "' not found");
+    }
+    std::vector<fs::path> folders{scene_folder_};
+    folders.insert(folders.end(), options.include_paths.begin(), options.include_paths.end());
+    folders.push_back(bundled_include_dir());
+    for (const auto& folder : folders) {
+        const fs::path candidate = folder / file;
+        if (fs::is_regular_file(candidate)) return candidate;
+    }
+    std::string searched;
+    for (const auto& folder : folders) searched += (searched.empty() ? "" : ", ") + folder.string();
+    fail(where, "include file '" + name + "' not found (searched " + searched + ")");
+}
+
+// ------------------------------------------------------------------ objects
+
+namespace {
+
+void check_patterns(const runtime::ObjectRecord& object) {
+    if (object.texture && object.texture->pigment.pattern == runtime::Pigment::Pattern::Unsupported) {
+        const auto& pigment = object.texture->pigment;
+        throw ValueError("pigment pattern '" + pigment.unsupported_name + "' (written at " +
+                         pigment.unsupported_place.to_string() + ") is not supported by hexant");
+    }
+    if (const auto* csg = std::get_if<runtime::Csg>(&object.shape))
+        for (const auto& child : csg->children) check_patterns(*child);
+}
+
+// Lights inside CSGs move with them: hand them to the scene with the
+// transforms of every object around them.
+void collect_lights(const runtime::ObjectRecord& object, const runtime::Transform& outer,
+                    std::vector<runtime::LightRecord>& lights) {
+    runtime::Transform here = object.transform;
+    here.append(outer);
+    for (auto light : object.lights) {
+        light.transform.append(here);
+        lights.push_back(std::move(light));
+    }
+    if (const auto* csg = std::get_if<runtime::Csg>(&object.shape))
+        for (const auto& child : csg->children) collect_lights(*child, here, lights);
+}
+
+}  // namespace
+
+void Interpreter::add_object(const runtime::ObjectPtr& object, const p::position& where) {
+    try {
+        check_patterns(*object);
+    } catch (const ValueError& e) {
+        fail(where, e.what());
+    }
+    collect_lights(*object, runtime::Transform{}, scene.lights);
+    scene.objects.push_back(object);
+}
+
+void fill_array(Array& array, const Array& list, std::size_t dimension, std::size_t& next) {
+    const int want = array.dimensions[dimension];
+    if (static_cast<int>(list.elements.size()) != want)
+        throw ValueError("the array's dimension " + std::to_string(dimension + 1) + " has " +
+                         std::to_string(want) + " elements but " +
+                         std::to_string(list.elements.size()) + " were given");
+    for (const auto& element : list.elements) {
+        const Value& v = **element;
+        const bool is_list = v.is<std::shared_ptr<Array>>() &&
+                             v.as<std::shared_ptr<Array>>()->dimensions.empty();
+        if (dimension + 1 < array.dimensions.size()) {
+            if (!is_list) throw ValueError("expected a { } list for the array's next dimension");
+            fill_array(array, *v.as<std::shared_ptr<Array>>(), dimension + 1, next);
+        } else {
+            if (is_list) throw ValueError("the array has fewer dimensions than this { } list");
+            array.elements[next++] = std::make_shared<Value>(v);
+        }
+    }
+}
+
+runtime::ObjectRecord make_shape(const std::string& kind, std::vector<Value>& args,
+                                 Interpreter& st) {
+    auto need = [&](std::size_t lo, std::size_t hi, const char* what) {
+        if (args.size() < lo || args.size() > hi)
+            throw ValueError(kind + " needs " + what + ", but " + std::to_string(args.size()) +
+                             " value" + (args.size() == 1 ? " was" : "s were") + " given");
+    };
+    auto vec = [&](std::size_t i, const std::string& what) {
+        return to_vector3(args[i], kind + "'s " + what);
+    };
+    auto num = [&](std::size_t i, const std::string& what) { return to_float(args[i], kind + "'s " + what); };
+    runtime::ObjectRecord record;
+    if (kind == "sphere") {
+        need(2, 2, "a centre and a radius");
+        record.shape = runtime::Sphere{vec(0, "centre"), num(1, "radius")};
+    } else if (kind == "box") {
+        need(2, 2, "two corners");
+        record.shape = runtime::Box{vec(0, "first corner"), vec(1, "second corner")};
+    } else if (kind == "plane") {
+        need(2, 2, "a normal and a distance");
+        record.shape = runtime::Plane{vec(0, "normal"), num(1, "distance")};
+    } else if (kind == "polygon") {
+        if (args.empty()) need(1, 1, "a point count and the points");
+        const double n = to_constant(args[0], "polygon's point count");
+        if (n < 3) throw ValueError("a polygon needs at least 3 points");
+        if (args.size() != static_cast<std::size_t>(n) + 1)
+            throw ValueError("polygon says it has " + std::to_string(static_cast<int>(n)) +
+                             " points but lists " + std::to_string(args.size() - 1));
+        runtime::Polygon polygon;
+        for (std::size_t i = 1; i < args.size(); ++i) {
+            const Vector v = to_vector(args[i], "a polygon point");
+            polygon.points.push_back({{v.c[0], v.c[1], v.size >= 3 ? v.c[2] : TimeFunction(0.0)}});
+        }
+        record.shape = std::move(polygon);
+    } else if (kind == "triangle") {
+        need(3, 3, "three corners");
+        record.shape = runtime::Triangle{{vec(0, "first corner"), vec(1, "second corner"), vec(2, "third corner")}};
+    } else if (kind == "smooth_triangle") {
+        need(6, 6, "three corners, each with its normal");
+        record.shape = runtime::SmoothTriangle{{vec(0, "first corner"), vec(2, "second corner"), vec(4, "third corner")},
+                                               {vec(1, "first normal"), vec(3, "second normal"), vec(5, "third normal")}};
+    } else if (kind == "disc") {
+        need(3, 4, "a centre, a normal, a radius and optionally a hole radius");
+        runtime::Disc disc{vec(0, "centre"), vec(1, "normal"), num(2, "radius")};
+        if (args.size() == 4) disc.hole_radius = num(3, "hole radius");
+        record.shape = std::move(disc);
+    } else if (kind == "cylinder") {
+        need(3, 3, "two end points and a radius");
+        record.shape = runtime::Cylinder{vec(0, "base point"), vec(1, "cap point"), num(2, "radius")};
+    } else if (kind == "cone") {
+        need(4, 4, "a base point and radius and a cap point and radius");
+        record.shape = runtime::Cone{vec(0, "base point"), num(1, "base radius"), vec(2, "cap point"), num(3, "cap radius")};
+    } else if (kind == "torus") {
+        need(2, 2, "a major and a minor radius");
+        record.shape = runtime::Torus{num(0, "major radius"), num(1, "minor radius")};
+    } else if (kind == "prism") {
+        runtime::Prism prism;
+        if (args.size() < 3) need(3, 3, "two heights, a point count and the points");
+        prism.height1 = num(0, "first height");
+        prism.height2 = num(1, "second height");
+        const bool supported = st.prism_spline == "linear_spline" && st.prism_sweep == "linear_sweep";
+        if (supported) {
+            const double n = to_constant(args[2], "prism's point count");
+            if (n < 3) throw ValueError("a prism needs at least 3 points");
+            if (args.size() != static_cast<std::size_t>(n) + 3)
+                throw ValueError("prism says it has " + std::to_string(static_cast<int>(n)) +
+                                 " points but lists " + std::to_string(args.size() - 3));
+            for (std::size_t i = 3; i < args.size(); ++i)
+                prism.points.push_back(to_vector2(args[i], "a prism point"));
+        }
+        record.shape = std::move(prism);
+    } else {
+        throw std::logic_error("hexant: unknown shape " + kind);
+    }
+    return record;
+}
+
+// ------------------------------------------------------------------ entry points
+
+namespace {
+
+runtime::SceneDescription parse(const std::string& text, const std::string& name,
+                                const std::filesystem::path& folder, const ParseOptions& options) {
+    runtime::SceneDescription scene;
+    scene.animation = options.animation;
+    Interpreter interpreter(options, scene, folder);
+    // Declare= / --declare: each value is read as an expression.
+    for (const auto& [key, value] : options.declares) {
+        const std::string source = "#declare " + key + " = " + value + ";";
+        interpreter.read_file<grammar::scene_item, action, control>("--declare " + key, source);
+    }
+    interpreter.read_file<grammar::scene_item, action, control>(name, text);
+    return scene;
+}
+
+}  // namespace
+
+runtime::SceneDescription parse_scene_file(const std::filesystem::path& path,
+                                           const ParseOptions& options) {
+    std::ifstream stream(path, std::ios::binary);
+    if (!stream) throw SceneError("cannot read the scene file", ErrorPlace{path.string(), 0, 0, {}, {}});
+    std::string text((std::istreambuf_iterator<char>(stream)), std::istreambuf_iterator<char>());
+    const auto folder = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+    return parse(text, path.string(), folder, options);
+}
+
+runtime::SceneDescription parse_scene_text(const std::string& text, const std::string& name,
+                                           const ParseOptions& options) {
+    return parse(text, name, std::filesystem::current_path(), options);
+}
+
+}  // namespace hexant::language

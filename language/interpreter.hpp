@@ -1,0 +1,42 @@
+// The scene language's entry points: read a POV-Ray-style scene, run its
+// directives as it is read, and return the runtime records it describes.
+#pragma once
+
+#include <filesystem>
+#include <iosfwd>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "language/scene_error.hpp"
+#include "runtime/scene.hpp"
+
+namespace hexant::language {
+
+struct ParseOptions {
+    runtime::Animation animation;  // image size and the clock mapping
+    // Searched after the scene's own folder, in order (POV-Ray's +L).
+    std::vector<std::filesystem::path> include_paths;
+    // NAME=VALUE pairs (POV-Ray's Declare=); VALUE is read as an expression.
+    std::vector<std::pair<std::string, std::string>> declares;
+    // Where #debug and #warning text goes (stderr when null).
+    std::ostream* messages = nullptr;
+    // Stated limits that stop runaway scenes with a clear error.
+    std::size_t max_loop_iterations = 10'000'000;
+    int max_macro_depth = 200;
+    int max_include_depth = 100;
+};
+
+// Throws SceneError for any problem in the scene.
+runtime::SceneDescription parse_scene_file(const std::filesystem::path& path,
+                                           const ParseOptions& options);
+// The same for text in memory; `name` is used in error messages and the
+// current folder is the include folder.
+runtime::SceneDescription parse_scene_text(const std::string& text, const std::string& name,
+                                           const ParseOptions& options);
+
+// The folder of the include files that ship with hexant (colors.inc), which
+// is searched last.
+std::filesystem::path bundled_include_dir();
+
+}  // namespace hexant::language

@@ -1,0 +1,580 @@
+// The state of one reading of a scene: the value stack the actions work on,
+// the blocks being built, the symbol tables, and the directives that steer
+// the reading (#if, #while, #for, #switch, #macro, #include, macro calls).
+//
+// Directives run as the text is read, as in POV-Ray. A loop rewinds the input
+// to its condition; a macro call reads the macro's stored source range with
+// its original positions; so every error points at the right line.
+#pragma once
+
+#include <cmath>
+#include <deque>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <unordered_map>
+#include <variant>
+#include <vector>
+
+#include <tao/pegtl.hpp>
+
+#include "language/builtins.hpp"
+#include "language/errors.hpp"
+#include "language/grammar.hpp"
+#include "language/interpreter.hpp"
+#include "language/value.hpp"
+#include "language/value_ops.hpp"
+#include "runtime/scene.hpp"
+
+namespace hexant::language {
+
+namespace p = tao::pegtl;
+using Input = p::memory_input<p::tracking_mode::eager, p::eol::lf_crlf, std::string>;
+
+struct SplineBuilder {
+    runtime::SplineKind kind = runtime::SplineKind::Linear;
+    std::vector<runtime::Spline::Key> keys;
+    int dimensions = 1;
+};
+
+struct MaterialBuilder {
+    std::optional<runtime::Texture> texture;
+    std::optional<runtime::Interior> interior;
+};
+
+// A block under construction: `sphere { ... }`, `texture { ... }` ...
+using Block = std::variant<runtime::ObjectRecord, runtime::LightRecord, runtime::CameraRecord,
+                           runtime::Texture, runtime::Pigment, runtime::Finish, runtime::Interior,
+                           runtime::Transform, SplineBuilder, MaterialBuilder>;
+
+// The block-structure directives that end or divide a directive's body.
+enum class Divider { None, Else, Elseif, End, Case, Range, Break };
+
+class Interpreter {
+public:
+    Interpreter(const ParseOptions& options, runtime::SceneDescription& scene,
+                std::filesystem::path scene_folder);
+
+    // ---- sources and errors
+    // Keeps the text for the whole reading (macros point into it).
+    const std::string& add_source(const std::string& name, std::string text);
+    ErrorPlace place(const p::position& position, std::string note = {}) const;
+    SceneError to_scene_error(const p::parse_error& e) const;
+    [[noreturn]] static void fail(const p::position& position, const std::string& message) {
+        throw p::parse_error(message, position);
+    }
+    void warn(const p::position& position, const std::string& message);
+    std::ostream& messages() const;
+
+    // ---- the value stack
+    void push(Value v) { stack_.push_back(std::move(v)); }
+    Value pop();
+    Value& top();
+    std::size_t depth() const { return stack_.size(); }
+    void open_frame() { frames_.push_back(stack_.size()); }
+    std::vector<Value> close_frame();
+    void push_name(std::string name) { names_.push_back(std::move(name)); }
+    std::string pop_name();
+
+    // ---- blocks under construction
+    std::vector<Block> blocks;
+    template <typename T>
+    T& block(const p::position& where, const char* what);
+    void apply_transform(runtime::TransformStep step, const p::position& where);
+    void apply_deformation(runtime::TransformStep step, const p::position& where);
+
+    // ---- symbols
+    const Value* lookup(const std::string& name) const;
+    void declare(const std::string& name, Value value, bool local);
+    void assign_element(const std::string& name, const std::vector<Value>& indices, Value value,
+                        const p::position& where);
+    bool undefine(const std::string& name);
+
+    // A finished top-level object joins the scene; its lights join the
+    // scene's lights, and a pattern hexant lacks is an error here, where used.
+    void add_object(const runtime::ObjectPtr& object, const p::position& where);
+
+    // ---- what the scene fills in
+    runtime::SceneDescription& scene;
+    const ParseOptions& options;
+    RandomStreams random;
+    double version = 3.7;
+    // prism { ... } options read before its arguments
+    std::string prism_spline = "linear_spline", prism_sweep = "linear_sweep";
+    bool warned_normal = false;
+
+    // ---- directives, called by the custom rules in grammar.hpp
+    template <typename Item, template <typename...> class Action,
+              template <typename...> class Control, typename ParseInput>
+    bool run_if(ParseInput& in);
+    template <typename Item, template <typename...> class Action,
+              template <typename...> class Control, typename ParseInput>
+    bool run_ifdef(ParseInput& in);
+    template <typename Item, template <typename...> class Action,
+              template <typename...> class Control, typename ParseInput>
+    bool run_while(ParseInput& in);
+    template <typename Item, template <typename...> class Action,
+              template <typename...> class Control, typename ParseInput>
+    bool run_for(ParseInput& in);
+    template <typename Item, template <typename...> class Action,
+              template <typename...> class Control, typename ParseInput>
+    bool run_switch(ParseInput& in);
+    template <typename Item, template <typename...> class Action,
+              template <typename...> class Control, typename ParseInput>
+    bool run_include(ParseInput& in);
+    template <typename Item, template <typename...> class Action,
+              template <typename...> class Control, typename ParseInput>
+    bool define_macro(ParseInput& in);
+    template <typename Item, template <typename...> class Action,
+              template <typename...> class Control, typename ParseInput>
+    bool call_macro(ParseInput& in);
+
+    // Reads a whole file's items with the given rule (the main scene, an include).
+    template <typename Items, template <typename...> class Action,
+              template <typename...> class Control>
+    void read_file(const std::string& name, const std::string& text);
+
+    std::filesystem::path resolve_include(const std::string& name, const p::position& where) const;
+
+private:
+    template <typename Rule, template <typename...> class Action,
+              template <typename...> class Control, typename ParseInput>
+    void read(ParseInput& in) {
+        (void)p::match<p::must<Rule>, p::apply_mode::action, p::rewind_mode::dontcare, Action, Control>(
+            in, *this);
+    }
+    template <template <typename...> class Control, typename ParseInput>
+    void skip_text(ParseInput& in) {
+        (void)p::match<grammar::skip::text, p::apply_mode::nothing, p::rewind_mode::dontcare, p::nothing,
+                 Control>(in, *this);
+    }
+    template <typename ParseInput>
+    Divider next_divider(ParseInput& in);
+    template <typename ParseInput>
+    bool keyword(ParseInput& in, std::string_view word);
+    template <typename ParseInput>
+    std::string identifier(ParseInput& in, const char* what);
+    template <template <typename...> class Action, template <typename...> class Control,
+              typename ParseInput>
+    double condition(ParseInput& in, const char* directive);
+    template <typename Item, template <typename...> class Action,
+              template <typename...> class Control, typename ParseInput>
+    Divider run_body(ParseInput& in) {
+        (void)p::match<p::star<Item>, p::apply_mode::action, p::rewind_mode::dontcare, Action, Control>(
+            in, *this);
+        return next_divider(in);
+    }
+    template <template <typename...> class Control, typename ParseInput>
+    Divider skip_body(ParseInput& in) {
+        skip_text<Control>(in);
+        return next_divider(in);
+    }
+    template <typename ParseInput>
+    [[noreturn]] void unclosed(const p::position& opened, const char* directive, Divider found,
+                               const ParseInput& in);
+
+    std::deque<std::pair<std::string, std::string>> sources_;
+    std::vector<std::unordered_map<std::string, Value>> scopes_;
+    std::vector<Value> stack_;
+    std::vector<std::size_t> frames_;
+    std::vector<std::string> names_;
+    std::filesystem::path scene_folder_;
+    int macro_depth_ = 0;
+    int include_depth_ = 0;
+};
+
+// ------------------------------------------------------------------ templates
+
+template <typename T>
+T& Interpreter::block(const p::position& where, const char* what) {
+    if (blocks.empty() || !std::holds_alternative<T>(blocks.back()))
+        fail(where, std::string(what) + " does not belong here");
+    return std::get<T>(blocks.back());
+}
+
+template <typename ParseInput>
+void Interpreter::unclosed(const p::position& opened, const char* directive, Divider found,
+                           const ParseInput& in) {
+    static const char* names[] = {"", "#else", "#elseif", "#end", "#case", "#range", "#break"};
+    if (found == Divider::None) {
+        if (in.empty())
+            fail(opened, std::string(directive) + " has no matching #end");
+        fail(in.position(), std::string("this does not belong inside ") + directive +
+                                " here: expected an item of the enclosing block, a directive "
+                                "or #end" + found_text(in));
+    }
+    fail(in.position(), std::string(names[static_cast<int>(found)]) + " does not belong here, in the " +
+                            directive + " opened at line " + std::to_string(opened.line));
+}
+
+template <typename ParseInput>
+bool Interpreter::keyword(ParseInput& in, std::string_view word) {
+    const char* b = in.current();
+    const std::size_t n = word.size();
+    if (static_cast<std::size_t>(in.end() - b) < n || std::string_view(b, n) != word) return false;
+    if (b + n != in.end() && (std::isalnum(static_cast<unsigned char>(b[n])) || b[n] == '_'))
+        return false;
+    in.bump_in_this_line(n);
+    (void)p::match<grammar::ws, p::apply_mode::nothing, p::rewind_mode::dontcare, p::nothing, p::normal>(
+        in);
+    return true;
+}
+
+template <typename ParseInput>
+std::string Interpreter::identifier(ParseInput& in, const char* what) {
+    const char* b = in.current();
+    const auto position = in.position();
+    if (!p::match<grammar::name, p::apply_mode::nothing, p::rewind_mode::required, p::nothing,
+                  p::normal>(in))
+        fail(position, std::string("expected ") + what + found_text(in));
+    std::string result(b, in.current());
+    (void)p::match<grammar::ws, p::apply_mode::nothing, p::rewind_mode::dontcare, p::nothing, p::normal>(
+        in);
+    return result;
+}
+
+template <typename ParseInput>
+Divider Interpreter::next_divider(ParseInput& in) {
+    const char* b = in.current();
+    const char* e = in.end();
+    if (b == e || *b != '#') return Divider::None;
+    const char* q = b + 1;
+    while (q != e && (*q == ' ' || *q == '\t')) ++q;
+    const char* w = q;
+    while (q != e && (std::isalnum(static_cast<unsigned char>(*q)) || *q == '_')) ++q;
+    const std::string_view word(w, static_cast<std::size_t>(q - w));
+    Divider d = Divider::None;
+    if (word == "else") d = Divider::Else;
+    else if (word == "elseif") d = Divider::Elseif;
+    else if (word == "end") d = Divider::End;
+    else if (word == "case") d = Divider::Case;
+    else if (word == "range") d = Divider::Range;
+    else if (word == "break") d = Divider::Break;
+    if (d == Divider::None) return d;
+    in.bump_in_this_line(static_cast<std::size_t>(q - b));
+    (void)p::match<grammar::ws, p::apply_mode::nothing, p::rewind_mode::dontcare, p::nothing, p::normal>(
+        in);
+    return d;
+}
+
+template <template <typename...> class Action, template <typename...> class Control,
+          typename ParseInput>
+double Interpreter::condition(ParseInput& in, const char* directive) {
+    const auto position = in.position();
+    read<grammar::condition, Action, Control>(in);
+    try {
+        return to_constant(pop(), std::string("the condition of ") + directive);
+    } catch (const ValueError& e) {
+        fail(position, e.what());
+    }
+}
+
+template <typename Item, template <typename...> class Action,
+          template <typename...> class Control, typename ParseInput>
+bool Interpreter::run_if(ParseInput& in) {
+    const auto opened = in.position();
+    if (!keyword(in, "if")) return false;
+    bool taken = runtime::pov_true(condition<Action, Control>(in, "#if"));
+    bool seen_else = false;
+    for (;;) {
+        const auto at = in.position();
+        const Divider d = taken ? run_body<Item, Action, Control>(in) : skip_body<Control>(in);
+        if (d == Divider::End) return true;
+        if (taken) {
+            // The rest, up to #end, is skipped whatever it holds.
+            if (d != Divider::Else && d != Divider::Elseif) unclosed(opened, "#if", d, in);
+            if (d == Divider::Else && seen_else) unclosed(opened, "#if", d, in);
+            Divider rest;
+            do {
+                rest = skip_body<Control>(in);
+            } while (rest == Divider::Else || rest == Divider::Elseif);
+            if (rest != Divider::End) unclosed(opened, "#if", rest, in);
+            return true;
+        }
+        if (d == Divider::Else) {
+            if (seen_else) unclosed(opened, "#if", d, in);
+            seen_else = true;
+            taken = true;
+            // After #else only #end may follow.
+            const Divider last = run_body<Item, Action, Control>(in);
+            if (last != Divider::End) unclosed(opened, "#if", last, in);
+            return true;
+        }
+        if (d == Divider::Elseif) {
+            taken = runtime::pov_true(condition<Action, Control>(in, "#elseif"));
+            continue;
+        }
+        unclosed(opened, "#if", d, in);
+    }
+}
+
+template <typename Item, template <typename...> class Action,
+          template <typename...> class Control, typename ParseInput>
+bool Interpreter::run_ifdef(ParseInput& in) {
+    const auto opened = in.position();
+    bool negate = false;
+    if (keyword(in, "ifndef")) negate = true;
+    else if (!keyword(in, "ifdef")) return false;
+    const char* name = negate ? "#ifndef" : "#ifdef";
+    read<grammar::lparen, Action, Control>(in);
+    const std::string id = identifier(in, "a name in #ifdef ( )");
+    read<grammar::condition_close, Action, Control>(in);
+    const bool taken = (lookup(id) != nullptr) != negate;
+    const auto at = in.position();
+    Divider d = taken ? run_body<Item, Action, Control>(in) : skip_body<Control>(in);
+    if (d == Divider::Else) {
+        d = taken ? skip_body<Control>(in) : run_body<Item, Action, Control>(in);
+    }
+    if (d != Divider::End) unclosed(opened, name, d, in);
+    return true;
+}
+
+template <typename Item, template <typename...> class Action,
+          template <typename...> class Control, typename ParseInput>
+bool Interpreter::run_while(ParseInput& in) {
+    const auto opened = in.position();
+    if (!keyword(in, "while")) return false;
+    const auto start = in.iterator();
+    for (std::size_t count = 0;; ++count) {
+        in.iterator() = start;
+        const bool go = runtime::pov_true(condition<Action, Control>(in, "#while"));
+        if (go && count >= options.max_loop_iterations)
+            fail(opened, "#while loop ran more than " +
+                             std::to_string(options.max_loop_iterations) +
+                             " times; stopping (is its condition ever false?)");
+        const auto at = in.position();
+        const Divider d = go ? run_body<Item, Action, Control>(in) : skip_body<Control>(in);
+        if (d != Divider::End) unclosed(opened, "#while", d, in);
+        if (!go) return true;
+    }
+}
+
+template <typename Item, template <typename...> class Action,
+          template <typename...> class Control, typename ParseInput>
+bool Interpreter::run_for(ParseInput& in) {
+    const auto opened = in.position();
+    if (!keyword(in, "for")) return false;
+    open_frame();
+    read<grammar::for_header, Action, Control>(in);
+    std::vector<Value> bounds = close_frame();
+    const std::string variable = pop_name();
+    double from, to, step = 1.0;
+    try {
+        from = to_constant(bounds[0], "the start of #for");
+        to = to_constant(bounds[1], "the end of #for");
+        if (bounds.size() > 2) step = to_constant(bounds[2], "the step of #for");
+    } catch (const ValueError& e) {
+        fail(opened, e.what());
+    }
+    if (step == 0.0) fail(opened, "#for with a step of 0 would never end");
+    const auto start = in.iterator();
+    std::size_t count = 0;
+    for (double v = from; step > 0 ? v <= to + runtime::kPovEpsilon : v >= to - runtime::kPovEpsilon;
+         v += step) {
+        if (++count > options.max_loop_iterations)
+            fail(opened, "#for loop ran more than " +
+                             std::to_string(options.max_loop_iterations) + " times; stopping");
+        declare(variable, Value{TimeFunction(v)}, true);
+        in.iterator() = start;
+        const Divider d = run_body<Item, Action, Control>(in);
+        if (d != Divider::End) unclosed(opened, "#for", d, in);
+    }
+    if (count == 0) {
+        const Divider d = skip_body<Control>(in);
+        if (d != Divider::End) unclosed(opened, "#for", d, in);
+    }
+    return true;
+}
+
+template <typename Item, template <typename...> class Action,
+          template <typename...> class Control, typename ParseInput>
+bool Interpreter::run_switch(ParseInput& in) {
+    const auto opened = in.position();
+    if (!keyword(in, "switch")) return false;
+    const double value = condition<Action, Control>(in, "#switch");
+    bool matched = false;
+    bool executing = false;
+    Divider d = skip_body<Control>(in);
+    for (;;) {
+        const auto at = in.position();
+        switch (d) {
+            case Divider::Case:
+            case Divider::Range: {
+                bool hit;
+                if (d == Divider::Case) {
+                    hit = std::fabs(condition<Action, Control>(in, "#case") - value) <
+                          runtime::kPovEpsilon;
+                } else {
+                    open_frame();
+                    read<grammar::range_header, Action, Control>(in);
+                    auto r = close_frame();
+                    double lo, hi;
+                    try {
+                        lo = to_constant(r[0], "the low end of #range");
+                        hi = to_constant(r[1], "the high end of #range");
+                    } catch (const ValueError& e) {
+                        fail(at, e.what());
+                    }
+                    hit = value >= lo && value <= hi;
+                }
+                executing = hit || executing;
+                if (executing) matched = true;
+                d = executing ? run_body<Item, Action, Control>(in) : skip_body<Control>(in);
+                break;
+            }
+            case Divider::Else:
+                executing = !matched;
+                d = executing ? run_body<Item, Action, Control>(in) : skip_body<Control>(in);
+                break;
+            case Divider::Break:
+                if (executing) {
+                    // Skip the remaining clauses up to #end.
+                    do {
+                        d = skip_body<Control>(in);
+                    } while (d != Divider::End && d != Divider::None);
+                    if (d != Divider::End) unclosed(opened, "#switch", d, in);
+                    return true;
+                }
+                d = skip_body<Control>(in);
+                break;
+            case Divider::End: return true;
+            default: unclosed(opened, "#switch", d, in);
+        }
+    }
+}
+
+template <typename Item, template <typename...> class Action,
+          template <typename...> class Control, typename ParseInput>
+bool Interpreter::define_macro(ParseInput& in) {
+    const auto opened = in.position();
+    if (!keyword(in, "macro")) return false;
+    std::string name = identifier(in, "the macro's name after #macro");
+    std::vector<std::string> parameters;
+    read<grammar::lparen, Action, Control>(in);
+    while (in.current() != in.end() && *in.current() != ')') {
+        if (!parameters.empty()) read<grammar::comma, Action, Control>(in);
+        parameters.push_back(identifier(in, "a parameter name in #macro ( )"));
+    }
+    read<grammar::rparen, Action, Control>(in);
+    const char* body_begin = in.current();
+    const auto body_position = in.position();
+    skip_text<Control>(in);
+    const char* body_end = in.current();
+    const Divider d = next_divider(in);
+    if (d != Divider::End) unclosed(opened, "#macro", d, in);
+    auto macro = std::make_shared<Macro>(Macro{std::move(name), std::move(parameters), body_begin,
+                                               body_end, body_position, opened});
+    declare(macro->name, Value{std::shared_ptr<const Macro>(macro)}, false);
+    return true;
+}
+
+template <typename Item, template <typename...> class Action,
+          template <typename...> class Control, typename ParseInput>
+bool Interpreter::call_macro(ParseInput& in) {
+    const char* b = in.current();
+    const char* e = in.end();
+    const char* q = b;
+    while (q != e && (std::isalnum(static_cast<unsigned char>(*q)) || *q == '_')) ++q;
+    if (q == b || std::isdigit(static_cast<unsigned char>(*b))) return false;
+    const std::string name(b, q);
+    const Value* v = lookup(name);
+    if (v == nullptr || !v->is<std::shared_ptr<const Macro>>()) return false;
+    const auto macro = v->as<std::shared_ptr<const Macro>>();
+    const auto call_place = in.position();
+    in.bump_in_this_line(static_cast<std::size_t>(q - b));
+    (void)p::match<grammar::ws, p::apply_mode::nothing, p::rewind_mode::dontcare, p::nothing, p::normal>(
+        in);
+    read<grammar::call_open, Action, Control>(in);
+    open_frame();
+    (void)p::match<grammar::call_arguments, p::apply_mode::action, p::rewind_mode::dontcare, Action,
+             Control>(in, *this);
+    read<grammar::call_close, Action, Control>(in);
+    std::vector<Value> args = close_frame();
+    if (args.size() != macro->parameters.size())
+        fail(call_place, "macro '" + name + "' takes " + std::to_string(macro->parameters.size()) +
+                             " argument" + (macro->parameters.size() == 1 ? "" : "s") + ", not " +
+                             std::to_string(args.size()));
+    if (macro_depth_ >= options.max_macro_depth)
+        fail(call_place, "macro calls nested more than " +
+                             std::to_string(options.max_macro_depth) +
+                             " deep; stopping (runaway recursion?)");
+    scopes_.emplace_back();
+    for (std::size_t i = 0; i < args.size(); ++i)
+        scopes_.back()[macro->parameters[i]] = std::move(args[i]);
+    ++macro_depth_;
+    const std::size_t before = depth();
+    const auto& at = macro->body_position;
+    Input body(macro->body_begin, macro->body_end, at.source, at.byte, at.line, at.column);
+    try {
+        (void)p::match<p::seq<grammar::ws, p::star<Item>, p::must<grammar::macro_body_end>>,
+                 p::apply_mode::action, p::rewind_mode::dontcare, Action, Control>(body, *this);
+    } catch (const p::parse_error& error) {
+        SceneError scene_error = to_scene_error(error);
+        scene_error.add_context(place(call_place, "in macro '" + name + "' called here"));
+        throw scene_error;
+    } catch (SceneError& scene_error) {
+        scene_error.add_context(place(call_place, "in macro '" + name + "' called here"));
+        throw;
+    }
+    --macro_depth_;
+    scopes_.pop_back();
+    if constexpr (std::is_same_v<Item, grammar::value_item>) {
+        if (depth() != before + 1)
+            fail(call_place, "macro '" + name + "' is used as a value but gives " +
+                                 std::to_string(depth() - before) + " values");
+    }
+    return true;
+}
+
+template <typename Item, template <typename...> class Action,
+          template <typename...> class Control, typename ParseInput>
+bool Interpreter::run_include(ParseInput& in) {
+    const auto opened = in.position();
+    if (!keyword(in, "include")) return false;
+    read<grammar::include_name, Action, Control>(in);
+    std::string file;
+    try {
+        file = to_string_value(pop(), "the name after #include");
+    } catch (const ValueError& e) {
+        fail(opened, e.what());
+    }
+    if (include_depth_ >= options.max_include_depth)
+        fail(opened, "#include nested more than " + std::to_string(options.max_include_depth) +
+                         " deep; stopping (does a file include itself?)");
+    const std::filesystem::path path = resolve_include(file, opened);
+    std::ifstream stream(path, std::ios::binary);
+    if (!stream) fail(opened, "cannot read include file '" + path.string() + "'");
+    std::string text((std::istreambuf_iterator<char>(stream)), std::istreambuf_iterator<char>());
+    ++include_depth_;
+    scopes_.emplace_back();
+    try {
+        read_file<Item, Action, Control>(path.string(), text);
+    } catch (SceneError& scene_error) {
+        scene_error.add_context(place(opened, "included from here"));
+        throw;
+    }
+    scopes_.pop_back();
+    --include_depth_;
+    return true;
+}
+
+template <typename Items, template <typename...> class Action,
+          template <typename...> class Control>
+void Interpreter::read_file(const std::string& name, const std::string& text) {
+    const std::string& stored = add_source(name, text);
+    Input in(stored.data(), stored.data() + stored.size(), name, 0, 1, 1);
+    try {
+        if constexpr (std::is_same_v<Items, grammar::scene_item>)
+            (void)p::match<grammar::scene_file, p::apply_mode::action, p::rewind_mode::dontcare, Action,
+                     Control>(in, *this);
+        else
+            (void)p::match<p::seq<grammar::ws, p::star<Items>, p::must<grammar::include_end>>,
+                     p::apply_mode::action, p::rewind_mode::dontcare, Action, Control>(in, *this);
+    } catch (const p::parse_error& error) {
+        throw to_scene_error(error);
+    }
+}
+
+}  // namespace hexant::language

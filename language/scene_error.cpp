@@ -1,0 +1,40 @@
+#include "language/scene_error.hpp"
+
+#include <sstream>
+
+namespace hexant::language {
+
+namespace {
+
+std::string header(const ErrorPlace& place) {
+    return place.file + ":" + std::to_string(place.line) + ":" + std::to_string(place.column);
+}
+
+// The source line with a caret under the column (tabs kept so it lines up).
+void caret(std::ostringstream& out, const ErrorPlace& place) {
+    if (place.source_line.empty() && place.column <= 1) return;
+    out << "    " << place.source_line << "\n    ";
+    for (std::size_t i = 1; i < place.column && i <= place.source_line.size(); ++i)
+        out << (place.source_line[i - 1] == '\t' ? '\t' : ' ');
+    out << "^\n";
+}
+
+}  // namespace
+
+SceneError::SceneError(std::string message, ErrorPlace place)
+    : std::runtime_error(header(place) + ": " + message), message_(std::move(message)) {
+    places_.push_back(std::move(place));
+}
+
+std::string SceneError::formatted() const {
+    std::ostringstream out;
+    out << header(places_.front()) << ": error: " << message_ << "\n";
+    caret(out, places_.front());
+    for (std::size_t i = 1; i < places_.size(); ++i) {
+        out << header(places_[i]) << ": note: " << places_[i].note << "\n";
+        caret(out, places_[i]);
+    }
+    return out.str();
+}
+
+}  // namespace hexant::language

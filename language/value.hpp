@@ -1,0 +1,79 @@
+// The values a scene's expressions and declarations produce. Floats and
+// vector components are time functions (constant unless they use `clock`).
+#pragma once
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <tao/pegtl/position.hpp>
+
+#include "runtime/camera.hpp"
+#include "runtime/light.hpp"
+#include "runtime/material.hpp"
+#include "runtime/object.hpp"
+#include "runtime/spline.hpp"
+#include "runtime/transform.hpp"
+
+namespace hexant::language {
+
+using runtime::TimeFunction;
+
+// 2 to 5 components; colours are 5 (red, green, blue, filter, transmit).
+struct Vector {
+    int size = 3;
+    std::array<TimeFunction, 5> c{};
+};
+
+// A declaration hexant keeps as source only (a `function {}`, a pattern or
+// object kind it lacks): an error where it is used, never where declared.
+struct Unevaluated {
+    std::string what;  // e.g. "function", "isosurface"
+    tao::pegtl::position where;
+};
+
+struct Macro {
+    std::string name;
+    std::vector<std::string> parameters;
+    const char* body_begin;  // into a source buffer that outlives the parse
+    const char* body_end;
+    tao::pegtl::position body_position;
+    tao::pegtl::position defined_at;
+};
+
+struct Value;
+struct Array {
+    std::vector<int> dimensions;
+    std::vector<std::optional<std::shared_ptr<Value>>> elements;  // row-major
+};
+
+struct Value {
+    using Variant =
+        std::variant<TimeFunction, Vector, std::string, runtime::ObjectPtr, runtime::LightRecord,
+                     runtime::CameraRecord, runtime::Texture, runtime::Pigment, runtime::Finish,
+                     runtime::Interior, runtime::Transform, std::shared_ptr<Array>,
+                     std::shared_ptr<const runtime::Spline>, std::shared_ptr<const Macro>,
+                     Unevaluated>;
+    Variant v;
+
+    template <typename T>
+    bool is() const {
+        return std::holds_alternative<T>(v);
+    }
+    template <typename T>
+    const T& as() const {
+        return std::get<T>(v);
+    }
+    template <typename T>
+    T& as() {
+        return std::get<T>(v);
+    }
+};
+
+// "float", "vector", "object" ... for messages.
+std::string type_name(const Value& value);
+
+}  // namespace hexant::language

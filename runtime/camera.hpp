@@ -1,0 +1,43 @@
+// POV-Ray's perspective camera. POV-Ray applies the camera's items in the
+// order they are written (look_at uses the sky and lengths known so far), so
+// the record keeps them in order and evaluates them at a time t.
+#pragma once
+
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "runtime/transform.hpp"
+#include "runtime/vector_function.hpp"
+
+namespace hexant::runtime {
+
+struct CameraItem {
+    enum class Kind { Location, LookAt, Direction, Right, Up, Sky, Angle, Transform };
+    Kind kind;
+    Vector3Function vector;  // Location .. Sky
+    TimeFunction angle;      // Angle: horizontal field of view in degrees
+    TransformStep step;      // Transform
+};
+
+// The camera's vectors at one instant, as POV-Ray uses them to make rays:
+// a ray through screen point (u, v) in [-0.5, 0.5]^2 has direction
+// direction + u * right + v * up, from location.
+struct CameraFrame {
+    glm::dvec3 location{0, 0, 0};
+    glm::dvec3 direction{0, 0, 1};
+    glm::dvec3 right{1.33, 0, 0};
+    glm::dvec3 up{0, 1, 0};
+    glm::dvec3 sky{0, 1, 0};
+};
+
+struct CameraRecord {
+    std::vector<CameraItem> items;
+
+    bool depends_on_time() const;
+    // The camera at time t. `aspect` is image width / height; POV-Ray does not
+    // change `right` to match it, and neither does hexant.
+    CameraFrame evaluate(double t) const;
+};
+
+}  // namespace hexant::runtime

@@ -1,0 +1,23 @@
+// A light source record after POV-Ray's light_source.
+#pragma once
+
+#include "runtime/transform.hpp"
+#include "runtime/vector_function.hpp"
+
+namespace hexant::runtime {
+
+struct LightRecord {
+    Vector3Function position;
+    ColourFunction colour;
+    bool shadowless = false;
+    bool spotlight = false;   // parsed; rendered as a point light for now
+    bool area_light = false;  // parsed; rendered as a point light for now
+    Vector3Function point_at{};
+    TimeFunction radius = 30.0, falloff = 45.0, tightness = 0.0;
+    Transform transform;
+
+    bool depends_on_time() const { return position.depends_on_time() || colour.depends_on_time() ||
+                                          transform.depends_on_time(); }
+};
+
+}  // namespace hexant::runtime

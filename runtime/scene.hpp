@@ -1,0 +1,33 @@
+// What the language hands to the renderer: plain records, no syntax.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "runtime/animation.hpp"
+#include "runtime/camera.hpp"
+#include "runtime/light.hpp"
+#include "runtime/object.hpp"
+
+namespace hexant::runtime {
+
+struct GlobalSettings {
+    double assumed_gamma = 1.0;
+    int max_trace_level = 5;
+    ColourFunction ambient_light{{1.0, 1.0, 1.0, 0.0, 0.0}};
+};
+
+struct SceneDescription {
+    CameraRecord camera;  // POV-Ray's default camera when the scene has none
+    std::vector<LightRecord> lights;
+    std::vector<ObjectPtr> objects;
+    ColourFunction background{};  // black
+    GlobalSettings global;
+    // The texture of objects that have none of their own (#default).
+    Texture default_texture;
+    Animation animation;
+    std::vector<std::string> warnings;
+};
+
+}  // namespace hexant::runtime

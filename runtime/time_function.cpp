@@ -1,0 +1,185 @@
+#include "runtime/time_function.hpp"
+
+#include <sstream>
+
+#include "runtime/spline.hpp"
+#include "runtime/time_ops.hpp"
+
+namespace hexant::runtime {
+
+int arity(TimeOp op) {
+    if (op == TimeOp::Constant || op == TimeOp::Clock) return 0;
+    if (op <= TimeOp::SrgbDecode || op == TimeOp::SplineComponent) return 1;
+    if (op <= TimeOp::Or) return 2;
+    return 3;
+}
+
+const char* name(TimeOp op) {
+    switch (op) {
+        case TimeOp::Constant: return "constant";
+        case TimeOp::Clock: return "clock";
+        case TimeOp::Negate: return "-";
+        case TimeOp::Not: return "!";
+        case TimeOp::Abs: return "abs";
+        case TimeOp::Sin: return "sin";
+        case TimeOp::Cos: return "cos";
+        case TimeOp::Tan: return "tan";
+        case TimeOp::Asin: return "asin";
+        case TimeOp::Acos: return "acos";
+        case TimeOp::Atan: return "atan";
+        case TimeOp::Sqrt: return "sqrt";
+        case TimeOp::Exp: return "exp";
+        case TimeOp::Log10: return "log";
+        case TimeOp::Ln: return "ln";
+        case TimeOp::Int: return "int";
+        case TimeOp::Floor: return "floor";
+        case TimeOp::Ceil: return "ceil";
+        case TimeOp::SrgbDecode: return "srgb";
+        case TimeOp::Add: return "+";
+        case TimeOp::Subtract: return "-";
+        case TimeOp::Multiply: return "*";
+        case TimeOp::Divide: return "/";
+        case TimeOp::Pow: return "pow";
+        case TimeOp::Atan2: return "atan2";
+        case TimeOp::Min: return "min";
+        case TimeOp::Max: return "max";
+        case TimeOp::Mod: return "mod";
+        case TimeOp::IntDiv: return "div";
+        case TimeOp::Less: return "<";
+        case TimeOp::LessEqual: return "<=";
+        case TimeOp::Equal: return "=";
+        case TimeOp::NotEqual: return "!=";
+        case TimeOp::GreaterEqual: return ">=";
+        case TimeOp::Greater: return ">";
+        case TimeOp::And: return "&";
+        case TimeOp::Or: return "|";
+        case TimeOp::Select: return "select";
+        case TimeOp::Conditional: return "?:";
+        case TimeOp::SplineComponent: return "spline";
+    }
+    return "?";
+}
+
+TimeFunction::TimeFunction(double value) : value_(value) {}
+TimeFunction::TimeFunction(std::shared_ptr<const Node> node) : node_(std::move(node)) {}
+
+TimeFunction TimeFunction::clock() {
+    auto node = std::make_shared<Node>();
+    node->op = TimeOp::Clock;
+    return TimeFunction(std::move(node));
+}
+
+TimeFunction TimeFunction::apply(TimeOp op, const TimeFunction& a) {
+    if (a.is_constant()) return TimeFunction(apply_op(op, a.constant()));
+    auto node = std::make_shared<Node>();
+    node->op = op;
+    node->args[0] = a;
+    return TimeFunction(std::move(node));
+}
+
+TimeFunction TimeFunction::apply(TimeOp op, const TimeFunction& a, const TimeFunction& b) {
+    if (a.is_constant() && b.is_constant())
+        return TimeFunction(apply_op(op, a.constant(), b.constant()));
+    auto node = std::make_shared<Node>();
+    node->op = op;
+    node->args[0] = a;
+    node->args[1] = b;
+    return TimeFunction(std::move(node));
+}
+
+TimeFunction TimeFunction::apply(TimeOp op, const TimeFunction& a, const TimeFunction& b,
+                                 const TimeFunction& c) {
+    if (a.is_constant() && b.is_constant() && c.is_constant())
+        return TimeFunction(apply_op(op, a.constant(), b.constant(), c.constant()));
+    // A constant condition picks its branch now, even if the branches vary.
+    if (a.is_constant() && op == TimeOp::Select) return a.constant() < 0.0 ? b : c;
+    if (a.is_constant() && op == TimeOp::Conditional) return pov_true(a.constant()) ? b : c;
+    auto node = std::make_shared<Node>();
+    node->op = op;
+    node->args = {a, b, c};
+    return TimeFunction(std::move(node));
+}
+
+TimeFunction TimeFunction::spline_component(std::shared_ptr<const Spline> spline, int component,
+                                            const TimeFunction& t) {
+    if (t.is_constant()) return TimeFunction(spline->evaluate(t.constant())[component]);
+    auto node = std::make_shared<Node>();
+    node->op = TimeOp::SplineComponent;
+    node->args[0] = t;
+    node->spline = std::move(spline);
+    node->component = component;
+    return TimeFunction(std::move(node));
+}
+
+double TimeFunction::operator()(double t) const {
+    if (!node_) return value_;
+    const Node& n = *node_;
+    switch (n.op) {
+        case TimeOp::Clock: return t;
+        case TimeOp::SplineComponent: return n.spline->evaluate(n.args[0](t))[n.component];
+        default: break;
+    }
+    switch (arity(n.op)) {
+        case 1: return apply_op(n.op, n.args[0](t));
+        case 2: return apply_op(n.op, n.args[0](t), n.args[1](t));
+        default: {
+            // Evaluate only the branch taken, as POV-Ray does.
+            double a = n.args[0](t);
+            bool first = n.op == TimeOp::Select ? a < 0.0 : pov_true(a);
+            return first ? n.args[1](t) : n.args[2](t);
+        }
+    }
+}
+
+std::string TimeFunction::to_string() const {
+    std::ostringstream out;
+    if (!node_) {
+        out << value_;
+        return out.str();
+    }
+    const Node& n = *node_;
+    switch (n.op) {
+        case TimeOp::Clock: return "clock";
+        case TimeOp::Negate: return "-" + n.args[0].to_string();
+        case TimeOp::Not: return "!" + n.args[0].to_string();
+        case TimeOp::SplineComponent:
+            out << "spline(" << n.args[0].to_string() << ")[" << n.component << "]";
+            return out.str();
+        case TimeOp::Conditional:
+            return "(" + n.args[0].to_string() + " ? " + n.args[1].to_string() + " : " +
+                   n.args[2].to_string() + ")";
+        default: break;
+    }
+    if (n.op >= TimeOp::Add && n.op <= TimeOp::Divide) {
+        return "(" + n.args[0].to_string() + " " + name(n.op) + " " + n.args[1].to_string() + ")";
+    }
+    if (n.op >= TimeOp::Less && n.op <= TimeOp::Or) {
+        return "(" + n.args[0].to_string() + " " + name(n.op) + " " + n.args[1].to_string() + ")";
+    }
+    out << name(n.op) << "(";
+    for (int i = 0; i < arity(n.op); ++i) out << (i ? ", " : "") << n.args[i].to_string();
+    out << ")";
+    return out.str();
+}
+
+TimeFunction operator+(const TimeFunction& a, const TimeFunction& b) {
+    if (a.is_constant() && a.constant() == 0.0) return b;
+    if (b.is_constant() && b.constant() == 0.0) return a;
+    return TimeFunction::apply(TimeOp::Add, a, b);
+}
+TimeFunction operator-(const TimeFunction& a, const TimeFunction& b) {
+    if (b.is_constant() && b.constant() == 0.0) return a;
+    return TimeFunction::apply(TimeOp::Subtract, a, b);
+}
+TimeFunction operator*(const TimeFunction& a, const TimeFunction& b) {
+    if (a.is_constant() && a.constant() == 1.0) return b;
+    if (b.is_constant() && b.constant() == 1.0) return a;
+    return TimeFunction::apply(TimeOp::Multiply, a, b);
+}
+TimeFunction operator/(const TimeFunction& a, const TimeFunction& b) {
+    if (b.is_constant() && b.constant() == 1.0) return a;
+    return TimeFunction::apply(TimeOp::Divide, a, b);
+}
+TimeFunction operator-(const TimeFunction& a) { return TimeFunction::apply(TimeOp::Negate, a); }
+
+}  // namespace hexant::runtime

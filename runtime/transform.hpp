@@ -1,0 +1,60 @@
+// An object's placement as POV-Ray builds it: the ordered list of
+// translate/rotate/scale/matrix steps (and hexant's deformations), each of
+// whose amounts may be a function of time. Evaluating the list at t gives the
+// object-to-world map at that instant.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include <glm/mat4x4.hpp>
+
+#include "runtime/vector_function.hpp"
+
+namespace hexant::runtime {
+
+enum class TransformKind {
+    Translate,
+    Rotate,  // degrees about x, then y, then z (POV-Ray's order)
+    Scale,
+    Matrix,  // POV-Ray's 4x3 matrix, rows (m00 m01 m02) ... (m30 m31 m32)
+    // Deformations (not affine): Barr's twist, taper and bend about an axis.
+    Twist,  // amount: degrees of twist per unit along the axis
+    Taper,  // amount: scale factor per unit along the axis
+    Bend,   // amount: degrees of bend over a unit length along the axis
+};
+
+struct TransformStep {
+    TransformKind kind;
+    Vector3Function vector;             // translate, rotate, scale amounts; deformation axis
+    std::array<TimeFunction, 12> matrix;  // Matrix only
+    TimeFunction amount;                // deformations only
+    bool inverse = false;               // apply the inverse of this step
+
+    bool is_deformation() const { return kind >= TransformKind::Twist; }
+    bool depends_on_time() const;
+    // The affine map of this step at time t; only for non-deformations.
+    glm::dmat4 matrix_at(double t) const;
+};
+
+class Transform {
+public:
+    void append(TransformStep step) { steps_.push_back(std::move(step)); }
+    void append(const Transform& other);
+    // The transform that undoes this one: the steps reversed, each inverted.
+    Transform inverse() const;
+
+    const std::vector<TransformStep>& steps() const { return steps_; }
+    bool empty() const { return steps_.empty(); }
+    bool depends_on_time() const;
+    bool has_deformation() const;
+
+    // Object-to-world at time t, composing the steps in order. Only for
+    // transforms without deformations.
+    glm::dmat4 matrix_at(double t) const;
+
+private:
+    std::vector<TransformStep> steps_;
+};
+
+}  // namespace hexant::runtime
