@@ -256,12 +256,11 @@ struct equal : p::seq<p::one<'='>, ws, p::must<sum_operand>> {};
 struct comparison
     : p::seq<sum, p::star<p::sor<less_equal, greater_equal, not_equal, less, greater, equal>>> {};
 
+// POV-Ray gives & and | one precedence, read left to right.
 struct comparison_operand : comparison {};
 struct logical_and : p::seq<p::one<'&'>, ws, p::must<comparison_operand>> {};
-struct conjunction : p::seq<comparison, p::star<logical_and>> {};
-struct conjunction_operand : conjunction {};
-struct logical_or : p::seq<p::one<'|'>, ws, p::must<conjunction_operand>> {};
-struct disjunction : p::seq<conjunction, p::star<logical_or>> {};
+struct logical_or : p::seq<p::one<'|'>, ws, p::must<comparison_operand>> {};
+struct disjunction : p::seq<comparison, p::star<p::sor<logical_and, logical_or>>> {};
 
 struct conditional_branch : p::seq<expression> {};
 struct conditional_tail

@@ -371,8 +371,8 @@ bool Interpreter::run_for(ParseInput& in) {
     if (step == 0.0) fail(opened, "#for with a step of 0 would never end");
     const auto start = in.iterator();
     std::size_t count = 0;
-    for (double v = from; step > 0 ? v <= to + runtime::kPovEpsilon : v >= to - runtime::kPovEpsilon;
-         v += step) {
+    double v = from;
+    for (; step > 0 ? v <= to + runtime::kPovEpsilon : v >= to - runtime::kPovEpsilon; v += step) {
         if (++count > options.max_loop_iterations)
             fail(opened, "#for loop ran more than " +
                              std::to_string(options.max_loop_iterations) + " times; stopping");
@@ -381,6 +381,8 @@ bool Interpreter::run_for(ParseInput& in) {
         const Divider d = run_body<Item, Action, Control>(in);
         if (d != Divider::End) unclosed(opened, "#for", d, in);
     }
+    // As in POV-Ray, the variable is left one step past the end.
+    declare(variable, Value{TimeFunction(v)}, true);
     if (count == 0) {
         const Divider d = skip_body<Control>(in);
         if (d != Divider::End) unclosed(opened, "#for", d, in);

@@ -1,6 +1,7 @@
-// POV-Ray's perspective camera. POV-Ray applies the camera's items in the
-// order they are written (look_at uses the sky and lengths known so far), so
-// the record keeps them in order and evaluates them at a time t.
+// POV-Ray's perspective camera. POV-Ray 3.5+ gathers the camera's items (the
+// last of each kind wins), then applies angle, look_at and finally the
+// transforms in the order written (camera.cpp). The record keeps the items
+// as written, each possibly a function of time, and evaluates them at t.
 #pragma once
 
 #include <vector>
@@ -35,8 +36,8 @@ struct CameraRecord {
     std::vector<CameraItem> items;
 
     bool depends_on_time() const;
-    // The camera at time t. `aspect` is image width / height; POV-Ray does not
-    // change `right` to match it, and neither does hexant.
+    // The camera at time t. POV-Ray does not change `right` to match the
+    // image's aspect ratio, and neither does hexant.
     CameraFrame evaluate(double t) const;
 };
 

@@ -1,0 +1,134 @@
+// POV-Ray 3.7's perspective camera (language version 3.5 and later).
+//
+// POV-Ray does NOT apply the camera's items in the order written. It reads
+// them all (a repeated item replaces the earlier value; transforms compose in
+// the order written), then builds the camera in a fixed order:
+//   1. start from the defaults (location <0,0,0>, direction <0,0,1>,
+//      right <1.33,0,0>, up <0,1,0>, sky <0,1,0>) overridden by the values
+//      given for location, direction, right, up and sky;
+//   2. angle A (if given and > 0): direction keeps its line but gets length
+//      |right| / (2 tan(A/2)); A must be < 180;
+//   3. look_at P (if given): with the lengths |direction|, |up|, |right| and
+//      the handedness sign of (up x direction) . right taken from step 2,
+//        direction = normalize(P - location)       (error if P == location)
+//        right     = normalize(sky x direction)    (kept as it was, then
+//                    normalized, if sky is parallel to direction)
+//        up        = direction x right
+//      then direction, up and right get back their lengths, right with its
+//      sign flipped when the handedness was not positive;
+//   4. the transforms, composed in order, move location as a point and
+//      direction, up and right as directions (no translation). sky and
+//      look_at are not moved.
+// This record keeps the items in the order written; evaluate() applies the
+// rules above at time t.
+#include "runtime/camera.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include <glm/geometric.hpp>
+#include <glm/mat4x4.hpp>
+
+namespace hexant::runtime {
+
+namespace {
+
+constexpr double kEpsilon = 1.0e-10;  // POV-Ray's EPSILON
+constexpr double kPi = 3.14159265358979323846;
+
+}  // namespace
+
+bool CameraRecord::depends_on_time() const {
+    for (const CameraItem& item : items) {
+        switch (item.kind) {
+            case CameraItem::Kind::Angle:
+                if (item.angle.depends_on_time()) return true;
+                break;
+            case CameraItem::Kind::Transform:
+                if (item.step.depends_on_time()) return true;
+                break;
+            default:
+                if (item.vector.depends_on_time()) return true;
+                break;
+        }
+    }
+    return false;
+}
+
+CameraFrame CameraRecord::evaluate(double t) const {
+    CameraFrame cam;  // POV-Ray's defaults
+    bool has_look_at = false, has_angle = false;
+    glm::dvec3 look_at{0, 0, 1};
+    double angle = 0.0;
+    glm::dmat4 transform(1.0);
+    bool has_transform = false;
+
+    // 1. Gather: the last value of each item wins; transforms compose.
+    for (const CameraItem& item : items) {
+        switch (item.kind) {
+            case CameraItem::Kind::Location: cam.location = item.vector(t); break;
+            case CameraItem::Kind::Direction: cam.direction = item.vector(t); break;
+            case CameraItem::Kind::Right: cam.right = item.vector(t); break;
+            case CameraItem::Kind::Up: cam.up = item.vector(t); break;
+            case CameraItem::Kind::Sky: cam.sky = item.vector(t); break;
+            case CameraItem::Kind::LookAt:
+                look_at = item.vector(t);
+                has_look_at = true;
+                break;
+            case CameraItem::Kind::Angle:
+                angle = item.angle(t);
+                has_angle = true;
+                break;
+            case CameraItem::Kind::Transform:
+                transform = item.step.matrix_at(t) * transform;
+                has_transform = true;
+                break;
+        }
+    }
+
+    // 2. angle sets the direction's length from right's.
+    if (has_angle) {
+        if (angle < 0.0) throw std::domain_error("camera: negative viewing angle");
+        if (angle >= 180.0)
+            throw std::domain_error("camera: viewing angle has to be smaller than 180 degrees");
+        if (angle > 0.0) {
+            const double length = glm::length(cam.right) / std::tan(angle * kPi / 360.0) / 2.0;
+            cam.direction = glm::normalize(cam.direction) * length;
+        }
+    }
+
+    // 3. look_at turns the camera, keeping the lengths and the handedness.
+    if (has_look_at) {
+        const double direction_length = glm::length(cam.direction);
+        const double up_length = glm::length(cam.up);
+        const double right_length = glm::length(cam.right);
+        const double handedness = glm::dot(glm::cross(cam.up, cam.direction), cam.right);
+
+        glm::dvec3 direction = look_at - cam.location;
+        if (glm::dot(direction, direction) < kEpsilon)
+            throw std::domain_error("camera: location and look_at point must be different");
+        direction = glm::normalize(direction);
+
+        glm::dvec3 right = glm::cross(cam.sky, direction);
+        if (std::fabs(right.x) < kEpsilon && std::fabs(right.y) < kEpsilon &&
+            std::fabs(right.z) < kEpsilon)
+            right = cam.right;  // sky parallel to the view: keep the old right
+        right = glm::normalize(right);
+
+        cam.up = glm::cross(direction, right) * up_length;
+        cam.direction = direction * direction_length;
+        cam.right = right * (handedness > 0.0 ? right_length : -right_length);
+    }
+
+    // 4. The transforms, last.
+    if (has_transform) {
+        const glm::dmat3 linear(transform);
+        cam.location = glm::dvec3(transform * glm::dvec4(cam.location, 1.0));
+        cam.direction = linear * cam.direction;
+        cam.up = linear * cam.up;
+        cam.right = linear * cam.right;
+    }
+    return cam;
+}
+
+}  // namespace hexant::runtime
