@@ -308,12 +308,9 @@ HEXANT_ACTION(spline_call) {
         if (args.empty() || args.size() > 2) throw ValueError("a spline takes one argument, the time");
         const auto spline = s.as<std::shared_ptr<const runtime::Spline>>();
         const TimeFunction t = to_float(args[0], "the spline's argument");
-        if (spline->dimensions() == 1) {
-            st.push(Value{TimeFunction::spline_component(spline, 0, t)});
-            return;
-        }
+        // POV-Ray's S(t) is a vector even for a spline of floats (the value in .x).
         Vector v;
-        v.size = spline->dimensions();
+        v.size = std::max(spline->dimensions(), 2);
         for (int i = 0; i < v.size; ++i) v.c[i] = TimeFunction::spline_component(spline, i, t);
         st.push(Value{v});
     }
@@ -1000,6 +997,18 @@ HEXANT_ACTION(array_value) {
 };
 HEXANT_ACTION(spline_open) {
     HEXANT_APPLY { (void)in; st.blocks.emplace_back(std::in_place_type<SplineBuilder>); }
+};
+HEXANT_ACTION(spline_base) {
+    HEXANT_APPLY {
+        Value v = st.pop();
+        if (!v.is<std::shared_ptr<const runtime::Spline>>())
+            throw ValueError("spline { } starts with a spline, not a " + type_name(v));
+        const auto& base = *v.as<std::shared_ptr<const runtime::Spline>>();
+        auto& s = st.block<SplineBuilder>(in.position(), "a spline");
+        s.kind = base.kind();
+        s.keys = base.keys();
+        s.dimensions = base.dimensions();
+    }
 };
 HEXANT_ACTION(spline_kind) {
     HEXANT_APPLY {

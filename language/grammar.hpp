@@ -193,7 +193,8 @@ struct colour_model
     : p::sor<TAO_PEGTL_KEYWORD("rgbft"), TAO_PEGTL_KEYWORD("rgbf"), TAO_PEGTL_KEYWORD("rgbt"),
              TAO_PEGTL_KEYWORD("rgb"), TAO_PEGTL_KEYWORD("srgbft"), TAO_PEGTL_KEYWORD("srgbf"),
              TAO_PEGTL_KEYWORD("srgbt"), TAO_PEGTL_KEYWORD("srgb")> {};
-struct colour_model_argument : p::seq<unary> {};
+// POV-Ray's rgb takes a whole sum: rgb <.1,.2,.3> + .5 leaves filter at 0.
+struct colour_model_argument : p::seq<sum> {};
 struct colour_model_literal : p::seq<colour_model, ws, p::must<colour_model_argument>> {};
 struct colour_component_name
     : p::sor<TAO_PEGTL_KEYWORD("red"), TAO_PEGTL_KEYWORD("green"), TAO_PEGTL_KEYWORD("blue"),
@@ -775,7 +776,11 @@ struct spline_key_value : p::seq<sum> {};
 struct spline_key
     : p::seq<spline_key_time, p::opt<comma>, p::must<spline_key_value>, p::opt<comma>> {};
 struct spline_item : p::sor<directive<spline_item>, spline_kind, spline_key> {};
-struct spline_block : p::seq<spline_open, p::star<spline_item>, p::must<rbrace>> {};
+// spline { S ... } starts from a declared spline S.
+struct spline_base
+    : p::seq<p::at<reference, p::sor<rbrace, spline_kind>>, p::seq<expression>> {};
+struct spline_block
+    : p::seq<spline_open, p::opt<spline_base>, p::star<spline_item>, p::must<rbrace>> {};
 
 struct value
     : p::sor<object_value, camera_block, texture_block, pigment_block, finish_block,

@@ -140,6 +140,9 @@ const Value* Interpreter::lookup(const std::string& name) const {
 }
 
 void Interpreter::declare(const std::string& name, Value value, bool local) {
+    // #declare of a name local to the current macro or file changes that
+    // local (a macro's parameter, say); otherwise it is global.
+    if (!local && scopes_.size() > 1 && scopes_.back().count(name)) local = true;
     auto& table = local ? scopes_.back() : scopes_.front();
     table[name] = std::move(value);
 }

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cmath>
+#include <algorithm>
 #include <deque>
 #include <filesystem>
 #include <fstream>
@@ -490,8 +491,23 @@ bool Interpreter::call_macro(ParseInput& in) {
         in);
     read<grammar::call_open, Action, Control>(in);
     open_frame();
-    (void)p::match<grammar::call_arguments, p::apply_mode::action, p::rewind_mode::dontcare, Action,
-             Control>(in, *this);
+    // An argument that is just a declared name is passed by reference, as in
+    // POV-Ray: what the macro #declares to its parameter goes back to it.
+    std::vector<std::string> references;
+    if (in.current() != in.end() && *in.current() != ')') {
+        do {
+            const char* start = in.current();
+            read<grammar::call_argument, Action, Control>(in);
+            std::string text(start, in.current());
+            while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
+            const bool is_name = !text.empty() && !std::isdigit(static_cast<unsigned char>(text[0])) &&
+                                 std::all_of(text.begin(), text.end(), [](char c) {
+                                     return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+                                 });
+            references.push_back(is_name && lookup(text) ? text : std::string());
+        } while (p::match<grammar::comma, p::apply_mode::nothing, p::rewind_mode::required,
+                          p::nothing, p::normal>(in));
+    }
     read<grammar::call_close, Action, Control>(in);
     std::vector<Value> args = close_frame();
     if (args.size() != macro->parameters.size())
@@ -521,6 +537,18 @@ bool Interpreter::call_macro(ParseInput& in) {
         throw;
     }
     --macro_depth_;
+    for (std::size_t i = 0; i < references.size(); ++i) {
+        if (references[i].empty()) continue;
+        auto found = scopes_.back().find(macro->parameters[i]);
+        if (found == scopes_.back().end()) continue;
+        for (std::size_t level = scopes_.size() - 1; level-- > 0;) {
+            auto target = scopes_[level].find(references[i]);
+            if (target != scopes_[level].end()) {
+                target->second = found->second;
+                break;
+            }
+        }
+    }
     scopes_.pop_back();
     if constexpr (std::is_same_v<Item, grammar::value_item>) {
         if (depth() != before + 1)
