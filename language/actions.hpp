@@ -77,6 +77,8 @@ HEXANT_NAME_ACTION(kw_prism);
     static void apply(const ActionInput& in, Interpreter& st) {   \
         try {                                                     \
             run(in, st);                                          \
+        } catch (const UnsupportedError& e) {                     \
+            throw unsupported_use(e.what(), in.position());       \
         } catch (const ValueError& e) {                           \
             Interpreter::fail(in.position(), e.what());           \
         }                                                         \
@@ -233,7 +235,7 @@ HEXANT_ACTION(reference) {
         if (v == nullptr) throw ValueError("undeclared identifier '" + name + "'");
         if (v->is<Unevaluated>()) {
             const auto& u = v->as<Unevaluated>();
-            throw ValueError("'" + name + "' is a " + u.what + " (declared at " + u.where.source + ":" +
+            throw UnsupportedError("'" + name + "' is a " + u.what + " (declared at " + u.where.source + ":" +
                              std::to_string(u.where.line) + ":" + std::to_string(u.where.column) +
                              "), which hexant does not support");
         }
@@ -663,6 +665,19 @@ HEXANT_ACTION(texture_block) {
         st.push(std::move(v));
     }
 };
+HEXANT_ACTION(texture_layer) {
+    HEXANT_APPLY {
+        // Layered textures are kept as source: an error only where used.
+        st.pop();
+        if (!st.top().is<Unevaluated>()) st.top() = Value{Unevaluated{"layered texture", in.position()}};
+    }
+};
+HEXANT_ACTION(material_value) {
+    HEXANT_APPLY {
+        st.blocks.pop_back();
+        st.push(Value{Unevaluated{"material", in.position()}});
+    }
+};
 HEXANT_ACTION(material_open) {
     HEXANT_APPLY { (void)in; st.blocks.emplace_back(std::in_place_type<MaterialBuilder>); }
 };
@@ -758,7 +773,7 @@ HEXANT_ACTION(csg_child) {
             return;
         }
         if (v.is<Unevaluated>())
-            throw ValueError(v.as<Unevaluated>().what + " is not supported by hexant");
+            throw UnsupportedError(v.as<Unevaluated>().what + " is not supported by hexant");
         std::get<runtime::Csg>(record.shape).children.push_back(v.as<runtime::ObjectPtr>());
     }
 };
@@ -772,7 +787,7 @@ HEXANT_ACTION(object_base) {
             st.blocks.emplace_back(v.as<runtime::LightRecord>());
         } else if (v.is<Unevaluated>()) {
             const auto& u = v.as<Unevaluated>();
-            throw ValueError("this " + u.what + " (written at " + u.where.source + ":" +
+            throw UnsupportedError("this " + u.what + " (written at " + u.where.source + ":" +
                              std::to_string(u.where.line) + ":" + std::to_string(u.where.column) +
                              ") is not supported by hexant");
         } else {

@@ -277,6 +277,7 @@ struct expression : p::seq<disjunction, p::opt<conditional_tail>> {};
 namespace skip {
 struct string_raw : p::seq<p::one<'"'>, p::until<p::one<'"'>, p::sor<p::seq<p::one<'\\'>, p::any>, p::any>>> {};
 struct blanks : p::star<p::blank> {};
+struct separators : p::star<separator> {};
 struct divider_word
     : p::sor<TAO_PEGTL_KEYWORD("else"), TAO_PEGTL_KEYWORD("elseif"), TAO_PEGTL_KEYWORD("end"),
              TAO_PEGTL_KEYWORD("case"), TAO_PEGTL_KEYWORD("range"), TAO_PEGTL_KEYWORD("break")> {};
@@ -300,10 +301,20 @@ struct braced_token : p::sor<separator, string_raw, braced, p::not_one<'{', '}'>
 struct braced_close : p::one<'}'> {};
 struct braced : p::seq<p::one<'{'>, p::star<braced_token>, p::must<braced_close>> {};
 struct until_rbrace : p::star<braced_token> {};
+
 struct parenthesized;
 struct paren_token : p::sor<separator, string_raw, parenthesized, p::not_one<'(', ')'>> {};
 struct parenthesized_close : p::one<')'> {};
 struct parenthesized : p::seq<p::one<'('>, p::star<paren_token>, p::must<parenthesized_close>> {};
+// The text of a declaration's value, stepped over: a block (with any further
+// texture layers) or anything up to ';'.
+struct declaration_block
+    : p::seq<p::identifier, separators, p::opt<parenthesized, separators>, braced, separators,
+             p::star<TAO_PEGTL_KEYWORD("texture"), separators, braced, separators>> {};
+struct declaration_text
+    : p::seq<p::star<p::sor<separator, string_raw, braced, parenthesized, p::not_one<';', '#'>>>,
+             p::opt<p::one<';'>>> {};
+struct declaration : p::seq<p::sor<declaration_block, declaration_text>, separators> {};
 }  // namespace skip
 
 // A value read and thrown away (a setting hexant ignores).
@@ -330,9 +341,17 @@ struct declare_index : p::seq<lbracket, p::must<index_value>, p::must<index_clos
 struct declare_name : identifier {};
 struct declare_target : p::seq<frame_open, declare_name, p::star<declare_index>> {};
 struct declare_equals : equals {};
-struct declared_value : p::seq<value> {};
+// The value of a #declare; a custom rule so that a declaration using
+// something hexant lacks is kept unevaluated instead of failing.
+struct declared_value_item {};
+HEXANT_CUSTOM_RULE(declared_value_rule, declare_value);
+struct declared_value : declared_value_rule<declared_value_item> {};
+// POV-Ray 3.7: #declare deprecated [once] "message" NAME = ...
+struct declare_deprecation
+    : p::seq<TAO_PEGTL_KEYWORD("deprecated"), ws, p::opt<TAO_PEGTL_KEYWORD("once"), ws>,
+             p::must<ignored_value>> {};
 struct declare_directive
-    : p::seq<declare_kind, p::must<declare_target>, p::must<declare_equals>,
+    : p::seq<declare_kind, p::opt<declare_deprecation>, p::must<declare_target>, p::must<declare_equals>,
              p::must<declared_value>, p::opt<semicolon>> {};
 
 struct undef_name : identifier {};
@@ -482,7 +501,7 @@ struct finish_setting_name
              TAO_PEGTL_KEYWORD("brilliance"), TAO_PEGTL_KEYWORD("phong_size"),
              TAO_PEGTL_KEYWORD("phong"), TAO_PEGTL_KEYWORD("specular"),
              TAO_PEGTL_KEYWORD("roughness"), TAO_PEGTL_KEYWORD("emission"),
-             TAO_PEGTL_KEYWORD("crand"), TAO_PEGTL_KEYWORD("metallic")> {};
+             TAO_PEGTL_KEYWORD("crand")> {};
 struct finish_setting_value : p::seq<expression> {};
 struct finish_setting : p::seq<finish_setting_name, ws, p::must<finish_setting_value>> {};
 struct reflection_value : p::seq<expression> {};
@@ -490,7 +509,8 @@ struct reflection_option
     : p::sor<p::seq<p::sor<TAO_PEGTL_KEYWORD("falloff"), TAO_PEGTL_KEYWORD("exponent"),
                            TAO_PEGTL_KEYWORD("metallic")>,
                     ws, p::must<ignored_value>>,
-             p::seq<TAO_PEGTL_KEYWORD("fresnel"), ws, p::opt<ignored_value>>, comma> {};
+             p::seq<TAO_PEGTL_KEYWORD("fresnel"), ws, p::opt<ignored_value>>,
+             p::seq<comma, p::opt<ignored_value>>> {};  // the maximum: hexant uses the minimum
 struct reflection_ignored_option : reflection_option {};
 struct reflection_block
     : p::seq<lbrace, p::must<reflection_value>, p::star<reflection_ignored_option>,
@@ -499,7 +519,9 @@ struct reflection_amount : p::sor<reflection_block, reflection_value> {};
 struct reflection_setting
     : p::seq<TAO_PEGTL_KEYWORD("reflection"), ws, p::must<reflection_amount>> {};
 struct finish_flag
-    : p::seq<p::sor<TAO_PEGTL_KEYWORD("conserve_energy"), TAO_PEGTL_KEYWORD("fresnel")>, ws> {};
+    : p::seq<p::sor<TAO_PEGTL_KEYWORD("conserve_energy"), TAO_PEGTL_KEYWORD("fresnel"),
+                    TAO_PEGTL_KEYWORD("metallic")>,
+             ws, p::opt<ignored_value>> {};
 struct finish_ignored_block
     : p::seq<p::sor<TAO_PEGTL_KEYWORD("irid"), TAO_PEGTL_KEYWORD("subsurface")>, ws, skip::braced, ws> {};
 struct finish_open : p::seq<kw_finish, p::must<lbrace>> {};
@@ -598,7 +620,8 @@ HEXANT_KEYWORD(kw_difference, "difference");
 HEXANT_KEYWORD(kw_motion_blur, "motion_blur");
 struct csg_kind : p::sor<kw_union, kw_merge, kw_intersection, kw_difference, kw_motion_blur> {};
 struct csg_open : p::seq<csg_kind, p::must<lbrace>> {};
-struct csg_child : p::seq<object_value> {};
+struct unsupported_block;
+struct csg_child : p::sor<object_value, unsupported_block> {};
 struct csg_item
     : p::sor<directive<csg_item>, macro_call<csg_item>, csg_child, object_modifier> {};
 struct csg_block : p::seq<csg_open, p::star<csg_item>, p::must<object_close>> {};
@@ -782,9 +805,15 @@ struct spline_base
 struct spline_block
     : p::seq<spline_open, p::opt<spline_base>, p::star<spline_item>, p::must<rbrace>> {};
 
+// texture { } texture { } ...: POV-Ray's layered texture.
+struct texture_layer : p::seq<texture_block> {};
+// A declared material is kept as source (hexant has no material values yet).
+struct material_value : p::seq<material_block> {};
+struct texture_value : p::seq<texture_block, p::star<texture_layer>> {};
+
 struct value
-    : p::sor<object_value, camera_block, texture_block, pigment_block, finish_block,
-             interior_block, transform_value, array_value, spline_block,
+    : p::sor<object_value, camera_block, texture_value, pigment_block, finish_block,
+             interior_block, material_value, transform_value, array_value, spline_block,
              unsupported_block, expression> {};
 
 // A macro called where a value is wanted holds values (and directives).
@@ -818,5 +847,6 @@ HEXANT_CUSTOM_ANALYZE(for_directive);
 HEXANT_CUSTOM_ANALYZE(switch_directive);
 HEXANT_CUSTOM_ANALYZE(include_directive);
 HEXANT_CUSTOM_ANALYZE(macro_definition_rule);
+HEXANT_CUSTOM_ANALYZE(declared_value_rule);
 #undef HEXANT_CUSTOM_ANALYZE
 }  // namespace tao::pegtl

@@ -50,6 +50,11 @@ using Block = std::variant<runtime::ObjectRecord, runtime::LightRecord, runtime:
                            runtime::Texture, runtime::Pigment, runtime::Finish, runtime::Interior,
                            runtime::Transform, SplineBuilder, MaterialBuilder>;
 
+// A parse error that is the use of something hexant lacks (see UnsupportedError).
+struct unsupported_use : p::parse_error {
+    using p::parse_error::parse_error;
+};
+
 // The block-structure directives that end or divide a directive's body.
 enum class Divider { None, Else, Elseif, End, Case, Range, Break };
 
@@ -131,6 +136,9 @@ public:
     template <typename Item, template <typename...> class Action,
               template <typename...> class Control, typename ParseInput>
     bool call_macro(ParseInput& in);
+    template <typename Item, template <typename...> class Action,
+              template <typename...> class Control, typename ParseInput>
+    bool declare_value(ParseInput& in);
 
     // Reads a whole file's items with the given rule (the main scene, an include).
     template <typename Items, template <typename...> class Action,
@@ -457,7 +465,12 @@ bool Interpreter::define_macro(ParseInput& in) {
     std::vector<std::string> parameters;
     read<grammar::lparen, Action, Control>(in);
     while (in.current() != in.end() && *in.current() != ')') {
-        if (!parameters.empty()) read<grammar::comma, Action, Control>(in);
+        if (!parameters.empty()) {
+            // POV-Ray lets one leave out the ',' and allows a trailing one.
+            (void)p::match<grammar::comma, p::apply_mode::nothing, p::rewind_mode::required,
+                           p::nothing, p::normal>(in);
+            if (in.current() != in.end() && *in.current() == ')') break;
+        }
         parameters.push_back(identifier(in, "a parameter name in #macro ( )"));
     }
     read<grammar::rparen, Action, Control>(in);
@@ -528,6 +541,11 @@ bool Interpreter::call_macro(ParseInput& in) {
     try {
         (void)p::match<p::seq<grammar::ws, p::star<Item>, p::must<grammar::macro_body_end>>,
                  p::apply_mode::action, p::rewind_mode::dontcare, Action, Control>(body, *this);
+    } catch (const unsupported_use&) {
+        // A #declare around the call may keep it as source and read on.
+        --macro_depth_;
+        scopes_.pop_back();
+        throw;
     } catch (const p::parse_error& error) {
         SceneError scene_error = to_scene_error(error);
         scene_error.add_context(place(call_place, "in macro '" + name + "' called here"));
@@ -556,6 +574,31 @@ bool Interpreter::call_macro(ParseInput& in) {
                                  std::to_string(depth() - before) + " values");
     }
     return true;
+}
+
+template <typename Item, template <typename...> class Action,
+          template <typename...> class Control, typename ParseInput>
+bool Interpreter::declare_value(ParseInput& in) {
+    const auto start = in.iterator();
+    const std::size_t values = stack_.size(), block_count = blocks.size(),
+                      frame_count = frames_.size(), name_count = names_.size();
+    try {
+        return p::match<grammar::value, p::apply_mode::action, p::rewind_mode::required, Action,
+                        Control>(in, *this);
+    } catch (const unsupported_use& e) {
+        // Keep the declaration as source: an error only where it is used.
+        in.iterator() = start;
+        stack_.erase(stack_.begin() + static_cast<std::ptrdiff_t>(values), stack_.end());
+        blocks.erase(blocks.begin() + static_cast<std::ptrdiff_t>(block_count), blocks.end());
+        frames_.resize(frame_count);
+        names_.resize(name_count);
+        const auto where = in.position();
+        (void)p::match<grammar::skip::declaration, p::apply_mode::nothing, p::rewind_mode::dontcare,
+                       p::nothing, Control>(in, *this);
+        push(Value{Unevaluated{"declaration that hexant cannot evaluate (" + std::string(e.message()) + ")",
+                               where}});
+        return true;
+    }
 }
 
 template <typename Item, template <typename...> class Action,

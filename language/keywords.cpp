@@ -10,7 +10,7 @@
 namespace hexant::language::grammar {
 
 namespace {
-constexpr std::array<std::string_view, 312> kReserved = {
+constexpr std::array<std::string_view, 314> kReserved = {
     "abs",
     "acos",
     "adaptive",
@@ -85,6 +85,7 @@ constexpr std::array<std::string_view, 312> kReserved = {
     "density_file",
     "density_map",
     "dents",
+    "deprecated",
     "difference",
     "diffuse",
     "dimension_size",
@@ -193,6 +194,7 @@ constexpr std::array<std::string_view, 312> kReserved = {
     "off",
     "omnimax",
     "on",
+    "once",
     "onion",
     "open",
     "orient",

@@ -16,6 +16,12 @@ struct ValueError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+// The use of something hexant lacks (a function, an isosurface ...): inside a
+// #declare it makes the declaration unevaluated rather than an error.
+struct UnsupportedError : ValueError {
+    using ValueError::ValueError;
+};
+
 Value make_float(const TimeFunction& f);
 Value make_vector(std::initializer_list<TimeFunction> components);
 
