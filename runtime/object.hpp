@@ -25,7 +25,9 @@ struct ObjectRecord {
     std::vector<LightRecord> lights;
     SourcePlace place;  // where the object was written
 
-    bool depends_on_time() const;
+    bool depends_on_time() const;  // anything about it
+    bool shape_depends_on_time() const;
+    bool texture_depends_on_time() const;
 };
 
 }  // namespace hexant::runtime

@@ -1,0 +1,37 @@
+# The two set-up commands: `make run` and `make test`. Each installs the
+# Debian packages hexant needs (as root; otherwise it prints the command),
+# configures, builds into build/, then renders (for now: checks) the atom
+# example or runs the whole test suite.
+PACKAGES := build-essential cmake tao-pegtl-dev libglm-dev catch2 libcli11-dev \
+            libopenimageio-dev libtbb-dev
+JOBS := $(shell nproc 2>/dev/null || echo 2)
+
+.PHONY: run test build deps clean
+
+run: build
+	./build/hexant check examples/atom.pov examples/atom.ini
+
+test: build
+	cd build && ctest --output-on-failure -j$(JOBS)
+
+build: deps
+	cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+	cmake --build build -j$(JOBS)
+
+deps:
+	@missing=""; for p in $(PACKAGES); do \
+	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "install ok installed" || missing="$$missing $$p"; \
+	done; \
+	if [ -n "$$missing" ]; then \
+	  if [ "$$(id -u)" = 0 ]; then \
+	    echo "Installing:$$missing"; \
+	    apt-get update && DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends $$missing; \
+	  else \
+	    echo "hexant needs these Debian packages. Run:"; \
+	    echo "  sudo apt-get install -y$$missing"; \
+	    exit 1; \
+	  fi; \
+	fi
+
+clean:
+	rm -rf build

@@ -1,0 +1,49 @@
+// The shape every subcommand shares:
+//   hexant SUBCOMMAND SCENE.pov [FILE.ini ...] [flags]
+// POV-Ray .ini files apply in order, then flags override them.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "language/interpreter.hpp"
+
+namespace hexant::app {
+
+// What the command line says, before it is resolved into ParseOptions.
+struct SceneArguments {
+    std::vector<std::string> files;  // the scene and .ini files, in order
+    std::optional<int> width, height, frame_count;
+    std::optional<std::string> clock_range;  // A:B
+    bool cyclic = false;
+    std::optional<double> shutter;
+    std::vector<std::string> include_paths;
+    std::vector<std::string> declares;  // NAME=VALUE
+    std::optional<std::size_t> max_loop_iterations;
+};
+
+// Adds the shared positionals and flags to a subcommand.
+void add_scene_arguments(CLI::App& command, SceneArguments& arguments);
+
+struct ResolvedScene {
+    std::filesystem::path scene;
+    language::ParseOptions options;
+    std::vector<std::string> warnings;  // from .ini files
+    std::optional<double> at_clock;     // --clock C
+};
+
+// Applies the .ini files in order, then the flags. Throws std::runtime_error
+// naming the file and line of a bad .ini setting, or a bad flag.
+ResolvedScene resolve(const SceneArguments& arguments);
+
+// Reads one POV-Ray .ini file onto `resolved` (Input_File_Name, Width,
+// Height, Initial_Frame, Final_Frame, Initial_Clock, Final_Clock,
+// Cyclic_Animation, Library_Path, Declare, and their +W, +H, +KFI, +KFF, +KI,
+// +KF, +KC, +L switches).
+void apply_ini_file(const std::filesystem::path& ini, ResolvedScene& resolved);
+
+}  // namespace hexant::app

@@ -1,0 +1,49 @@
+// hexant: renders animations written in a POV-Ray-style scene language with
+// Glassner's spacetime ray tracing. Each subcommand takes
+//   hexant SUBCOMMAND SCENE.pov [FILE.ini ...] [flags]
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "app/command_line.hpp"
+#include "app/scene_dump.hpp"
+#include "app/scene_summary.hpp"
+#include "language/interpreter.hpp"
+
+int main(int argc, char** argv) {
+    using namespace hexant;
+    CLI::App program{"hexant: spacetime ray tracing of POV-Ray-style animated scenes"};
+    program.require_subcommand(1);
+
+    app::SceneArguments check_arguments;
+    CLI::App* check = program.add_subcommand(
+        "check", "Read and evaluate a scene; summarize it, or report the first error");
+    app::add_scene_arguments(*check, check_arguments);
+
+    app::SceneArguments dump_arguments;
+    CLI::App* dump = program.add_subcommand(
+        "dump", "Print every object with its parameters at one clock value");
+    app::add_scene_arguments(*dump, dump_arguments);
+
+    CLI11_PARSE(program, argc, argv);
+
+    const app::SceneArguments& arguments = check->parsed() ? check_arguments : dump_arguments;
+    try {
+        app::ResolvedScene resolved = app::resolve(arguments);
+        for (const auto& warning : resolved.warnings) std::cerr << warning << "\n";
+        const runtime::SceneDescription scene =
+            language::parse_scene_file(resolved.scene, resolved.options);
+        if (check->parsed()) {
+            app::summarize_scene(scene, std::cout);
+        } else {
+            app::dump_scene(scene, resolved.at_clock.value_or(scene.animation.time_begin()), std::cout);
+        }
+        return 0;
+    } catch (const language::SceneError& e) {
+        std::cerr << e.formatted();
+        return 1;
+    } catch (const std::exception& e) {
+        std::cerr << "hexant: error: " << e.what() << "\n";
+        return 1;
+    }
+}

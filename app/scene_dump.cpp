@@ -1,0 +1,156 @@
+#include "app/scene_dump.hpp"
+
+#include <cstdio>
+#include <string>
+
+namespace hexant::app {
+
+namespace {
+
+using runtime::TimeFunction;
+
+std::string number(double v) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.10g", v == 0.0 ? 0.0 : v);  // no "-0"
+    return buffer;
+}
+
+std::string vector(const runtime::Vector3Function& v, double t) {
+    return "<" + number(v.c[0](t)) + ", " + number(v.c[1](t)) + ", " + number(v.c[2](t)) + ">";
+}
+std::string vector(const glm::dvec3& v) {
+    return "<" + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + ">";
+}
+std::string colour(const runtime::ColourFunction& c, double t) {
+    std::string s = "<";
+    for (int i = 0; i < 5; ++i) s += (i ? ", " : "") + number(c.c[i](t));
+    return s + ">";
+}
+
+std::string transform(const runtime::Transform& transform, double t) {
+    if (!transform.has_deformation()) {
+        const glm::dmat4 m = transform.matrix_at(t);
+        std::string s = "[";
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 3; ++j) s += (i || j ? ", " : "") + number(m[i][j]);
+        return "transform=" + s + "]";
+    }
+    static const char* names[] = {"translate", "rotate", "scale", "matrix", "twist", "taper", "bend"};
+    std::string s = "steps=";
+    for (const auto& step : transform.steps()) {
+        s += std::string(names[static_cast<int>(step.kind)]) + (step.inverse ? "^-1" : "") + "(" +
+             vector(step.vector, t);
+        if (step.is_deformation()) s += "," + number(step.amount(t));
+        s += ")";
+    }
+    return s;
+}
+
+std::string texture(const runtime::Texture& texture, double t) {
+    std::string s;
+    const auto& p = texture.pigment;
+    switch (p.pattern) {
+        case runtime::Pigment::Pattern::Solid: s = "pigment=solid" + colour(p.colours[0], t); break;
+        case runtime::Pigment::Pattern::Checker:
+            s = "pigment=checker" + colour(p.colours[0], t) + colour(p.colours[1], t);
+            break;
+        case runtime::Pigment::Pattern::Unsupported: s = "pigment=" + p.unsupported_name; break;
+    }
+    const auto& f = texture.finish;
+    s += " finish=ambient:" + number(f.ambient(t)) + ",diffuse:" + number(f.diffuse(t)) +
+         ",brilliance:" + number(f.brilliance(t)) + ",phong:" + number(f.phong(t)) +
+         ",phong_size:" + number(f.phong_size(t)) + ",specular:" + number(f.specular(t)) +
+         ",roughness:" + number(f.roughness(t)) + ",reflection:" + colour(f.reflection, t);
+    return s;
+}
+
+struct ShapeWriter {
+    double t;
+    std::string operator()(const runtime::Sphere& s) const {
+        return "sphere center=" + vector(s.center, t) + " radius=" + number(s.radius(t));
+    }
+    std::string operator()(const runtime::Box& b) const {
+        return "box corner1=" + vector(b.corner1, t) + " corner2=" + vector(b.corner2, t);
+    }
+    std::string operator()(const runtime::Plane& p) const {
+        return "plane normal=" + vector(p.normal, t) + " distance=" + number(p.distance(t));
+    }
+    std::string operator()(const runtime::Polygon& p) const {
+        std::string s = "polygon points=";
+        for (std::size_t i = 0; i < p.points.size(); ++i) s += (i ? ";" : "") + vector(p.points[i], t);
+        return s;
+    }
+    std::string operator()(const runtime::Triangle& tr) const {
+        return "triangle p1=" + vector(tr.points[0], t) + " p2=" + vector(tr.points[1], t) +
+               " p3=" + vector(tr.points[2], t);
+    }
+    std::string operator()(const runtime::SmoothTriangle& tr) const {
+        std::string s = "smooth_triangle";
+        for (int i = 0; i < 3; ++i)
+            s += " p" + std::to_string(i + 1) + "=" + vector(tr.points[i], t) + " n" +
+                 std::to_string(i + 1) + "=" + vector(tr.normals[i], t);
+        return s;
+    }
+    std::string operator()(const runtime::Disc& d) const {
+        return "disc center=" + vector(d.center, t) + " normal=" + vector(d.normal, t) +
+               " radius=" + number(d.radius(t)) + " hole_radius=" + number(d.hole_radius(t));
+    }
+    std::string operator()(const runtime::Cylinder& c) const {
+        return "cylinder base=" + vector(c.base, t) + " cap=" + vector(c.cap, t) +
+               " radius=" + number(c.radius(t)) + " open=" + (c.open ? "1" : "0");
+    }
+    std::string operator()(const runtime::Cone& c) const {
+        return "cone base=" + vector(c.base, t) + " base_radius=" + number(c.base_radius(t)) +
+               " cap=" + vector(c.cap, t) + " cap_radius=" + number(c.cap_radius(t)) +
+               " open=" + (c.open ? "1" : "0");
+    }
+    std::string operator()(const runtime::Torus& r) const {
+        return "torus major=" + number(r.major_radius(t)) + " minor=" + number(r.minor_radius(t));
+    }
+    std::string operator()(const runtime::Prism& p) const {
+        std::string s = "prism height1=" + number(p.height1(t)) + " height2=" + number(p.height2(t)) +
+                        " points=";
+        for (std::size_t i = 0; i < p.points.size(); ++i)
+            s += (i ? ";" : "") + ("<" + number(p.points[i].c[0](t)) + ", " + number(p.points[i].c[1](t)) + ">");
+        return s + " open=" + (p.open ? "1" : "0");
+    }
+    std::string operator()(const runtime::Csg& c) const {
+        static const char* kinds[] = {"union", "merge", "intersection", "difference"};
+        return std::string(kinds[static_cast<int>(c.kind)]) + " children=" + std::to_string(c.children.size());
+    }
+};
+
+void dump_object(const runtime::ObjectRecord& object, const std::string& name, double t,
+                 std::ostream& out) {
+    out << name << " " << std::visit(ShapeWriter{t}, object.shape) << " "
+        << transform(object.transform, t);
+    if (object.texture) out << " " << texture(*object.texture, t);
+    if (object.interior) out << " ior=" << number(object.interior->ior(t));
+    out << " no_shadow=" << object.no_shadow << " hollow=" << object.hollow
+        << " inverse=" << object.inverse << "\n";
+    if (const auto* csg = std::get_if<runtime::Csg>(&object.shape))
+        for (std::size_t i = 0; i < csg->children.size(); ++i)
+            dump_object(*csg->children[i], name.substr(0, name.size() - 1) + "." + std::to_string(i) + "]", t, out);
+}
+
+}  // namespace
+
+void dump_scene(const runtime::SceneDescription& scene, double t, std::ostream& out) {
+    const runtime::CameraFrame camera = scene.camera.evaluate(t);
+    out << "camera location=" << vector(camera.location) << " direction=" << vector(camera.direction)
+        << " right=" << vector(camera.right) << " up=" << vector(camera.up)
+        << " sky=" << vector(camera.sky) << "\n";
+    out << "background colour=" << colour(scene.background, t) << "\n";
+    for (std::size_t i = 0; i < scene.lights.size(); ++i) {
+        const auto& light = scene.lights[i];
+        const glm::dvec4 p = light.transform.has_deformation()
+                                 ? glm::dvec4(light.position(t), 1.0)
+                                 : light.transform.matrix_at(t) * glm::dvec4(light.position(t), 1.0);
+        out << "light[" << i << "] position=" << vector(glm::dvec3(p)) << " colour="
+            << colour(light.colour, t) << " shadowless=" << light.shadowless << "\n";
+    }
+    for (std::size_t i = 0; i < scene.objects.size(); ++i)
+        dump_object(*scene.objects[i], "object[" + std::to_string(i) + "]", t, out);
+}
+
+}  // namespace hexant::app

@@ -1,0 +1,61 @@
+#include "app/scene_summary.hpp"
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace hexant::app {
+
+namespace {
+
+std::string number(double v) {
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.6g", v);
+    return buffer;
+}
+
+std::string vector(const glm::dvec3& v) {
+    return "<" + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + ">";
+}
+
+// "center, transform depend on time" or "static".
+std::string timing(const runtime::ObjectRecord& object) {
+    std::vector<std::string> parts;
+    if (object.shape_depends_on_time()) parts.push_back("shape");
+    if (object.transform.depends_on_time()) parts.push_back("transform");
+    if (object.texture_depends_on_time()) parts.push_back("texture");
+    if (object.transform.has_deformation()) parts.push_back("(deformed)");
+    if (parts.empty()) return "static";
+    std::string s;
+    for (const auto& p : parts) s += (s.empty() ? "" : ", ") + p;
+    return s + (parts.size() == 1 && parts[0] == "(deformed)" ? "" : " vary with time");
+}
+
+}  // namespace
+
+void summarize_scene(const runtime::SceneDescription& scene, std::ostream& out) {
+    const auto& a = scene.animation;
+    out << "frames " << a.initial_frame << ".." << a.final_frame << ", clock " << number(a.time_begin())
+        << ".." << number(a.time_end()) << (a.cyclic ? " (cyclic)" : "") << ", shutter "
+        << number(a.shutter) << ", " << a.width << "x" << a.height << "\n";
+    const auto camera = scene.camera.evaluate(a.time_begin());
+    out << "camera at " << vector(camera.location) << " looking along " << vector(camera.direction)
+        << (scene.camera.depends_on_time() ? ", moves with time" : ", static") << "\n";
+    out << scene.lights.size() << " light" << (scene.lights.size() == 1 ? "" : "s") << "\n";
+    for (std::size_t i = 0; i < scene.lights.size(); ++i)
+        out << "  light " << i << ": " << (scene.lights[i].depends_on_time() ? "moves with time" : "static")
+            << (scene.lights[i].shadowless ? ", shadowless" : "") << "\n";
+    out << scene.objects.size() << " object" << (scene.objects.size() == 1 ? "" : "s") << "\n";
+    std::size_t moving = 0;
+    for (std::size_t i = 0; i < scene.objects.size(); ++i) {
+        const auto& object = *scene.objects[i];
+        if (object.depends_on_time()) ++moving;
+        out << "  object " << i << ": " << runtime::shape_name(object.shape) << " at "
+            << object.place.to_string() << ", " << timing(object) << "\n";
+    }
+    out << moving << " of " << scene.objects.size() << " objects depend on time";
+    if (!scene.warnings.empty()) out << "; " << scene.warnings.size() << " warning(s)";
+    out << "\n";
+}
+
+}  // namespace hexant::app
