@@ -233,8 +233,9 @@ const std::map<std::string, Builtin>& table() {
         {"vstr",
          [](const std::string& n, const Args& a, RandomStreams&) {
              expect_count(n, a, 5, 5);
-             const Vector v = to_vector(a[0], "argument 1 of vstr()");
-             const int dims = static_cast<int>(arg_constant(n, a, 1));
+             // POV-Ray's order: vstr(components, vector, separator, length, precision)
+             const int dims = static_cast<int>(arg_constant(n, a, 0));
+             const Vector v = to_vector(a[1], "argument 2 of vstr()");
              const std::string& sep = arg_string(n, a, 2);
              const int len = static_cast<int>(arg_constant(n, a, 3));
              const int prec = static_cast<int>(arg_constant(n, a, 4));

@@ -120,11 +120,13 @@ std::string found_text(const ParseInput& in) {
     const char* b = in.current();
     const char* e = in.end();
     if (b == e) return " but found the end of the file";
+    if (*b == '\n' || *b == '\r') return " but found the end of the line";
     const char* q = b;
+    if (*q == '#') ++q;  // a directive: show its name
     auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
-    if (word(*q))
+    if (q != e && word(*q))
         while (q != e && word(*q) && q - b < 40) ++q;
-    else
+    else if (q == b)
         ++q;
     return " but found '" + std::string(b, q) + "'";
 }

@@ -203,6 +203,17 @@ T& Interpreter::block(const p::position& where, const char* what) {
     return std::get<T>(blocks.back());
 }
 
+// Where a directive starts: at its '#', just before the input's position.
+template <typename ParseInput>
+p::position directive_position(const ParseInput& in) {
+    p::position position = in.position();
+    if (position.byte > 0 && position.column > 1 && in.current()[-1] == '#') {
+        --position.byte;
+        --position.column;
+    }
+    return position;
+}
+
 template <typename ParseInput>
 void Interpreter::unclosed(const p::position& opened, const char* directive, Divider found,
                            const ParseInput& in) {
@@ -283,7 +294,7 @@ double Interpreter::condition(ParseInput& in, const char* directive) {
 template <typename Item, template <typename...> class Action,
           template <typename...> class Control, typename ParseInput>
 bool Interpreter::run_if(ParseInput& in) {
-    const auto opened = in.position();
+    const auto opened = directive_position(in);
     if (!keyword(in, "if")) return false;
     bool taken = runtime::pov_true(condition<Action, Control>(in, "#if"));
     bool seen_else = false;
@@ -322,7 +333,7 @@ bool Interpreter::run_if(ParseInput& in) {
 template <typename Item, template <typename...> class Action,
           template <typename...> class Control, typename ParseInput>
 bool Interpreter::run_ifdef(ParseInput& in) {
-    const auto opened = in.position();
+    const auto opened = directive_position(in);
     bool negate = false;
     if (keyword(in, "ifndef")) negate = true;
     else if (!keyword(in, "ifdef")) return false;
@@ -343,7 +354,7 @@ bool Interpreter::run_ifdef(ParseInput& in) {
 template <typename Item, template <typename...> class Action,
           template <typename...> class Control, typename ParseInput>
 bool Interpreter::run_while(ParseInput& in) {
-    const auto opened = in.position();
+    const auto opened = directive_position(in);
     if (!keyword(in, "while")) return false;
     const auto start = in.iterator();
     for (std::size_t count = 0;; ++count) {
@@ -363,7 +374,7 @@ bool Interpreter::run_while(ParseInput& in) {
 template <typename Item, template <typename...> class Action,
           template <typename...> class Control, typename ParseInput>
 bool Interpreter::run_for(ParseInput& in) {
-    const auto opened = in.position();
+    const auto opened = directive_position(in);
     if (!keyword(in, "for")) return false;
     open_frame();
     read<grammar::for_header, Action, Control>(in);
@@ -402,7 +413,7 @@ bool Interpreter::run_for(ParseInput& in) {
 template <typename Item, template <typename...> class Action,
           template <typename...> class Control, typename ParseInput>
 bool Interpreter::run_switch(ParseInput& in) {
-    const auto opened = in.position();
+    const auto opened = directive_position(in);
     if (!keyword(in, "switch")) return false;
     const double value = condition<Action, Control>(in, "#switch");
     bool matched = false;
@@ -459,7 +470,7 @@ bool Interpreter::run_switch(ParseInput& in) {
 template <typename Item, template <typename...> class Action,
           template <typename...> class Control, typename ParseInput>
 bool Interpreter::define_macro(ParseInput& in) {
-    const auto opened = in.position();
+    const auto opened = directive_position(in);
     if (!keyword(in, "macro")) return false;
     std::string name = identifier(in, "the macro's name after #macro");
     std::vector<std::string> parameters;
@@ -604,7 +615,7 @@ bool Interpreter::declare_value(ParseInput& in) {
 template <typename Item, template <typename...> class Action,
           template <typename...> class Control, typename ParseInput>
 bool Interpreter::run_include(ParseInput& in) {
-    const auto opened = in.position();
+    const auto opened = directive_position(in);
     if (!keyword(in, "include")) return false;
     read<grammar::include_name, Action, Control>(in);
     std::string file;

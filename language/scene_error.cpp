@@ -12,7 +12,7 @@ std::string header(const ErrorPlace& place) {
 
 // The source line with a caret under the column (tabs kept so it lines up).
 void caret(std::ostringstream& out, const ErrorPlace& place) {
-    if (place.source_line.empty() && place.column <= 1) return;
+    if (place.line == 0) return;  // no place in a file (e.g. an unreadable scene)
     out << "    " << place.source_line << "\n    ";
     for (std::size_t i = 1; i < place.column && i <= place.source_line.size(); ++i)
         out << (place.source_line[i - 1] == '\t' ? '\t' : ' ');

@@ -1,0 +1,2 @@
+// error: 2:12: expected '='
+#declare X 1;

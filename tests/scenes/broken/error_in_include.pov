@@ -1,0 +1,2 @@
+// error: include/broken_part.inc:3:13: undeclared identifier 'Missing'
+#include "include/broken_part.inc"

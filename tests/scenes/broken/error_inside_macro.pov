@@ -1,0 +1,5 @@
+// error: 3:15: undeclared identifier 'Size'
+#macro Ball(P)
+  sphere { P, Size }
+#end
+Ball(<1, 0, 0>)

@@ -1,0 +1,3 @@
+// error: 3:1: found '}'
+sphere { 0, 1 }
+}

@@ -1,0 +1,3 @@
+// error: 2:18: unterminated string
+#declare A = "abc
+sphere { 0, 1 }
