@@ -58,7 +58,7 @@ void apply_ini_file(const std::filesystem::path& ini, ResolvedScene& r) {
         if (auto c = line.find(';'); c != std::string::npos) line.erase(c);
         line = trim(line);
         if (line.empty() || line[0] == '[') continue;
-        std::string key, value;
+        std::string key, value, written;  // written: the key as the file spells it
         if (line[0] == '+' || line[0] == '-') {  // a switch such as +W320 or +KFF64
             const bool on = line[0] == '+';
             const std::string s = line.substr(1);
@@ -70,6 +70,7 @@ void apply_ini_file(const std::filesystem::path& ini, ResolvedScene& r) {
             for (const auto& [prefix, name] : switches) {
                 if (lower(s.substr(0, prefix.size())) == lower(prefix)) {
                     key = name;
+                    written = line;
                     value = s.substr(prefix.size());
                     if (name == "cyclic_animation") value = on ? "on" : "off";
                     found = true;
@@ -86,7 +87,8 @@ void apply_ini_file(const std::filesystem::path& ini, ResolvedScene& r) {
                 r.warnings.push_back(place + ": line '" + line + "' is ignored");
                 continue;
             }
-            key = lower(trim(line.substr(0, eq)));
+            written = trim(line.substr(0, eq));
+            key = lower(written);
             value = trim(line.substr(eq + 1));
         }
         auto integer = [&]() {
@@ -96,7 +98,7 @@ void apply_ini_file(const std::filesystem::path& ini, ResolvedScene& r) {
                 if (used != value.size()) throw std::invalid_argument(value);
                 return v;
             } catch (const std::exception&) {
-                throw std::runtime_error(place + ": " + key + " needs a whole number, not '" + value + "'");
+                throw std::runtime_error(place + ": " + written + " needs a whole number, not '" + value + "'");
             }
         };
         auto number_value = [&]() {
@@ -106,14 +108,14 @@ void apply_ini_file(const std::filesystem::path& ini, ResolvedScene& r) {
                 if (used != value.size()) throw std::invalid_argument(value);
                 return v;
             } catch (const std::exception&) {
-                throw std::runtime_error(place + ": " + key + " needs a number, not '" + value + "'");
+                throw std::runtime_error(place + ": " + written + " needs a number, not '" + value + "'");
             }
         };
         auto boolean = [&]() {
             const std::string v = lower(value);
             if (v == "on" || v == "true" || v == "yes" || v == "1" || v.empty()) return true;
             if (v == "off" || v == "false" || v == "no" || v == "0") return false;
-            throw std::runtime_error(place + ": " + key + " needs on or off, not '" + value + "'");
+            throw std::runtime_error(place + ": " + written + " needs on or off, not '" + value + "'");
         };
         if (key == "input_file_name") {
             r.scene = ini.parent_path() / value;
@@ -139,7 +141,7 @@ void apply_ini_file(const std::filesystem::path& ini, ResolvedScene& r) {
                 throw std::runtime_error(place + ": Declare needs NAME=VALUE, not '" + value + "'");
             r.options.declares.emplace_back(trim(value.substr(0, eq)), trim(value.substr(eq + 1)));
         } else {
-            r.warnings.push_back(place + ": setting '" + key + "' is ignored");
+            r.warnings.push_back(place + ": setting '" + written + "' is ignored");
         }
     }
 }

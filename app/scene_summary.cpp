@@ -20,15 +20,15 @@ std::string vector(const glm::dvec3& v) {
 
 // "center, transform depend on time" or "static".
 std::string timing(const runtime::ObjectRecord& object) {
-    std::vector<std::string> parts;
-    if (object.shape_depends_on_time()) parts.push_back("shape");
+    std::vector<std::string> parts = object.timed_parameters();
     if (object.transform.depends_on_time()) parts.push_back("transform");
     if (object.texture_depends_on_time()) parts.push_back("texture");
-    if (object.transform.has_deformation()) parts.push_back("(deformed)");
-    if (parts.empty()) return "static";
+    if (object.interior && object.interior->ior.depends_on_time()) parts.push_back("ior");
     std::string s;
     for (const auto& p : parts) s += (s.empty() ? "" : ", ") + p;
-    return s + (parts.size() == 1 && parts[0] == "(deformed)" ? "" : " vary with time");
+    s = parts.empty() ? "static" : s + (parts.size() == 1 ? " depends" : " depend") + " on time";
+    if (object.transform.has_deformation()) s += "; deformed";
+    return s;
 }
 
 }  // namespace

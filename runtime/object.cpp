@@ -1,5 +1,8 @@
 #include "runtime/object.hpp"
 
+#include <string>
+#include <vector>
+
 namespace hexant::runtime {
 
 const char* shape_name(const Shape& shape) {
@@ -17,50 +20,79 @@ namespace {
 
 bool varies(const TimeFunction& f) { return f.depends_on_time(); }
 bool varies(const Vector3Function& v) { return v.depends_on_time(); }
+bool varies(const Vector2Function& v) { return v.depends_on_time(); }
+template <typename T, std::size_t N>
+bool varies(const std::array<T, N>& items) {
+    for (const auto& item : items)
+        if (varies(item)) return true;
+    return false;
+}
+template <typename T>
+bool varies(const std::vector<T>& items) {
+    for (const auto& item : items)
+        if (varies(item)) return true;
+    return false;
+}
 
-struct ShapeVaries {
-    bool operator()(const Sphere& s) const { return varies(s.center) || varies(s.radius); }
-    bool operator()(const Box& b) const { return varies(b.corner1) || varies(b.corner2); }
-    bool operator()(const Plane& p) const { return varies(p.normal) || varies(p.distance); }
-    bool operator()(const Polygon& p) const {
-        for (const auto& q : p.points)
-            if (varies(q)) return true;
-        return false;
+// The names of a shape's parameters that depend on time.
+struct TimedParameters {
+    std::vector<std::string> names;
+    void check(bool timed, const char* name) {
+        if (timed) names.emplace_back(name);
     }
-    bool operator()(const Triangle& t) const {
-        for (const auto& q : t.points)
-            if (varies(q)) return true;
-        return false;
+    void operator()(const Sphere& s) { check(varies(s.center), "center"); check(varies(s.radius), "radius"); }
+    void operator()(const Box& b) { check(varies(b.corner1), "corner1"); check(varies(b.corner2), "corner2"); }
+    void operator()(const Plane& p) { check(varies(p.normal), "normal"); check(varies(p.distance), "distance"); }
+    void operator()(const Polygon& p) { check(varies(p.points), "points"); }
+    void operator()(const Triangle& t) { check(varies(t.points), "points"); }
+    void operator()(const SmoothTriangle& t) {
+        check(varies(t.points), "points");
+        check(varies(t.normals), "normals");
     }
-    bool operator()(const SmoothTriangle& t) const {
-        for (int i = 0; i < 3; ++i)
-            if (varies(t.points[i]) || varies(t.normals[i])) return true;
-        return false;
+    void operator()(const Disc& d) {
+        check(varies(d.center), "center");
+        check(varies(d.normal), "normal");
+        check(varies(d.radius), "radius");
+        check(varies(d.hole_radius), "hole_radius");
     }
-    bool operator()(const Disc& d) const {
-        return varies(d.center) || varies(d.normal) || varies(d.radius) || varies(d.hole_radius);
+    void operator()(const Cylinder& c) {
+        check(varies(c.base), "base");
+        check(varies(c.cap), "cap");
+        check(varies(c.radius), "radius");
     }
-    bool operator()(const Cylinder& c) const { return varies(c.base) || varies(c.cap) || varies(c.radius); }
-    bool operator()(const Cone& c) const {
-        return varies(c.base) || varies(c.cap) || varies(c.base_radius) || varies(c.cap_radius);
+    void operator()(const Cone& c) {
+        check(varies(c.base), "base");
+        check(varies(c.base_radius), "base_radius");
+        check(varies(c.cap), "cap");
+        check(varies(c.cap_radius), "cap_radius");
     }
-    bool operator()(const Torus& t) const { return varies(t.major_radius) || varies(t.minor_radius); }
-    bool operator()(const Prism& p) const {
-        if (varies(p.height1) || varies(p.height2)) return true;
-        for (const auto& q : p.points)
-            if (q.depends_on_time()) return true;
-        return false;
+    void operator()(const Torus& t) {
+        check(varies(t.major_radius), "major_radius");
+        check(varies(t.minor_radius), "minor_radius");
     }
-    bool operator()(const Csg& c) const {
+    void operator()(const Prism& p) {
+        check(varies(p.height1), "height1");
+        check(varies(p.height2), "height2");
+        check(varies(p.points), "points");
+    }
+    void operator()(const Csg& c) {
         for (const auto& child : c.children)
-            if (child->depends_on_time()) return true;
-        return false;
+            if (child->depends_on_time()) {
+                names.emplace_back("children");
+                return;
+            }
     }
 };
 
 }  // namespace
 
-bool ObjectRecord::shape_depends_on_time() const { return std::visit(ShapeVaries{}, shape); }
+std::vector<std::string> ObjectRecord::timed_parameters() const {
+    TimedParameters timed;
+    std::visit(timed, shape);
+    return timed.names;
+}
+
+bool ObjectRecord::shape_depends_on_time() const { return !timed_parameters().empty(); }
 
 bool ObjectRecord::texture_depends_on_time() const {
     if (!texture) return false;

@@ -4,6 +4,8 @@
 
 #include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "runtime/light.hpp"
 #include "runtime/material.hpp"
@@ -27,6 +29,8 @@ struct ObjectRecord {
 
     bool depends_on_time() const;  // anything about it
     bool shape_depends_on_time() const;
+    // The names of the shape's parameters that depend on time ("center", ...).
+    std::vector<std::string> timed_parameters() const;
     bool texture_depends_on_time() const;
 };
 

@@ -1,0 +1,106 @@
+// The command line's shape: POV-Ray .ini files apply in order, then flags.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+#include "app/command_line.hpp"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path temp_folder() {
+    const fs::path folder = fs::temp_directory_path() / "hexant_command_line_test";
+    fs::create_directories(folder);
+    return folder;
+}
+
+fs::path write(const std::string& name, const std::string& text) {
+    const fs::path path = temp_folder() / name;
+    std::ofstream(path) << text;
+    return path;
+}
+
+}  // namespace
+
+TEST_CASE("an .ini file sets POV-Ray's animation options and names the scene", "[app][ini]") {
+    const auto ini = write("anim.ini",
+                           "; a comment\n[section]\nInput_File_Name=scene.pov\nWidth=126\n"
+                           "Height = 96\nInitial_Frame=1\nFinal_Frame=64\nInitial_Clock=0\n"
+                           "Final_Clock=2\nCyclic_Animation=on\nLibrary_Path=lib\n"
+                           "Declare=Speed=3\nAntialias=on\n");
+    hexant::app::SceneArguments arguments;
+    arguments.files = {ini.string()};
+    const auto r = hexant::app::resolve(arguments);
+    CHECK(r.scene == temp_folder() / "scene.pov");
+    const auto& a = r.options.animation;
+    CHECK(a.width == 126);
+    CHECK(a.height == 96);
+    CHECK(a.final_frame == 64);
+    CHECK(a.final_clock == 2.0);
+    CHECK(a.cyclic);
+    CHECK(a.clock_delta() == Approx(2.0 / 64));
+    REQUIRE(r.options.include_paths.size() == 1);
+    CHECK(r.options.include_paths[0] == temp_folder() / "lib");
+    REQUIRE(r.options.declares.size() == 1);
+    CHECK(r.options.declares[0].first == "Speed");
+    CHECK(r.options.declares[0].second == "3");
+    REQUIRE(r.warnings.size() == 1);  // Antialias is not hexant's
+    CHECK(r.warnings[0].find("anim.ini:13") != std::string::npos);
+}
+
+TEST_CASE(".ini switches and later files override earlier ones; flags override all", "[app][ini]") {
+    const auto first = write("first.ini", "+W100\n+H50\n+KFI1\n+KFF10\n+KI0\n+KF1\n");
+    const auto second = write("second.ini", "Width=200\n-KC\n");
+    hexant::app::SceneArguments arguments;
+    arguments.files = {"scene.pov", first.string(), second.string()};
+    arguments.height = 77;
+    arguments.frame_count = 4;
+    arguments.shutter = 0.5;
+    arguments.clock_range = "0.5:1.5";
+    const auto r = hexant::app::resolve(arguments);
+    const auto& a = r.options.animation;
+    CHECK(r.scene == "scene.pov");
+    CHECK(a.width == 200);
+    CHECK(a.height == 77);
+    CHECK(a.initial_frame == 1);
+    CHECK(a.final_frame == 4);
+    CHECK_FALSE(a.cyclic);
+    CHECK(a.shutter == 0.5);
+    CHECK(a.initial_clock == 0.5);
+    CHECK(a.final_clock == 1.5);
+}
+
+TEST_CASE("a single --clock value is POV-Ray's +K for a still", "[app][ini]") {
+    hexant::app::SceneArguments arguments;
+    arguments.files = {"scene.pov"};
+    arguments.clock_range = "0.25";
+    const auto r = hexant::app::resolve(arguments);
+    REQUIRE(r.at_clock);
+    CHECK(*r.at_clock == 0.25);
+    CHECK(r.options.animation.initial_clock == 0.25);
+    CHECK_FALSE(r.options.animation.is_animation());
+}
+
+TEST_CASE("bad .ini values and flags are errors naming the place", "[app][ini]") {
+    const auto bad = write("bad.ini", "Width=126\nHeight=lots\n");
+    hexant::app::SceneArguments arguments;
+    arguments.files = {"scene.pov", bad.string()};
+    REQUIRE_THROWS_WITH(hexant::app::resolve(arguments), Catch::Contains("bad.ini:2") &&
+                                                             Catch::Contains("Height"));
+    hexant::app::SceneArguments two_scenes;
+    two_scenes.files = {"a.pov", "b.pov"};
+    REQUIRE_THROWS_WITH(hexant::app::resolve(two_scenes), Catch::Contains("more than one scene"));
+    hexant::app::SceneArguments no_scene;
+    no_scene.files = {write("empty.ini", "Width=3\n").string()};
+    REQUIRE_THROWS_WITH(hexant::app::resolve(no_scene), Catch::Contains("no scene"));
+    hexant::app::SceneArguments bad_clock;
+    bad_clock.files = {"a.pov"};
+    bad_clock.clock_range = "0:x";
+    REQUIRE_THROWS_WITH(hexant::app::resolve(bad_clock), Catch::Contains("--clock"));
+    hexant::app::SceneArguments bad_declare;
+    bad_declare.files = {"a.pov"};
+    bad_declare.declares = {"NoValue"};
+    REQUIRE_THROWS_WITH(hexant::app::resolve(bad_declare), Catch::Contains("NAME=VALUE"));
+}
