@@ -18,7 +18,7 @@ inline constexpr const char* error_message = nullptr;
     template <>                  \
     inline constexpr auto error_message<grammar::rule> = text
 
-HEXANT_ERROR(block_comment_rest, "unterminated comment: '/*' without '*/'");
+HEXANT_ERROR(unterminated_comment, "unterminated comment: this '/*' has no '*/'");
 HEXANT_ERROR(number_end, "malformed number");
 HEXANT_ERROR(string_close, "unterminated string: expected '\"' before the end of the line");
 HEXANT_ERROR(paren_content, "expected an expression after '('");
@@ -137,8 +137,11 @@ struct control : tao::pegtl::must_if<error_messages, tao::pegtl::normal, true>::
     [[noreturn]] static void raise(const ParseInput& in, States&&...) {
         static_assert(error_messages::message<Rule> != nullptr,
                       "every rule under must<> needs an error_message");
-        throw tao::pegtl::parse_error(std::string(error_messages::message<Rule>) + found_text(in),
-                                      in);
+        if constexpr (std::is_same_v<Rule, grammar::unterminated_comment>)
+            throw tao::pegtl::parse_error(error_messages::message<Rule>, in);  // at its '/*'
+        else
+            throw tao::pegtl::parse_error(
+                std::string(error_messages::message<Rule>) + found_text(in), in);
     }
 };
 

@@ -24,9 +24,13 @@ namespace p = tao::pegtl;
 // ---------------------------------------------------------------- lexical
 
 struct line_comment : p::seq<p::two<'/'>, p::until<p::eolf>> {};
+// Block comments nest. One without its end is an error reported at its '/*'.
 struct block_comment;
-struct block_comment_rest : p::until<p::string<'*', '/'>, p::sor<block_comment, p::any>> {};
-struct block_comment : p::if_must<p::string<'/', '*'>, block_comment_rest> {};
+struct block_comment_body
+    : p::seq<p::string<'/', '*'>, p::until<p::string<'*', '/'>, p::sor<block_comment, p::any>>> {};
+struct unterminated_comment : p::success {};
+struct block_comment
+    : p::sor<block_comment_body, p::seq<p::at<p::string<'/', '*'>>, p::raise<unterminated_comment>>> {};
 struct separator : p::sor<p::space, line_comment, block_comment> {};
 struct ws : p::star<separator> {};
 

@@ -1,4 +1,4 @@
-// error: 5:1: unterminated comment
+// error: 3:1: unterminated comment
 sphere { 0, 1 }
 /* never closed
 sphere { 0, 1 }
