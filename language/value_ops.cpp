@@ -100,13 +100,20 @@ Value conditional(const Value& a, const Value& b, const Value& c) {
         return Value{TimeFunction::apply(TimeOp::Conditional, cond, b.as<TimeFunction>(),
                                          c.as<TimeFunction>())};
     if ((b.is<TimeFunction>() || b.is<Vector>()) && (c.is<TimeFunction>() || c.is<Vector>())) {
-        // Component-wise on numbers; select() on time-dependent objects is not possible.
-        const Value zero = binary_op(TimeOp::Multiply, b, Value{TimeFunction(0.0)});
-        const Vector vb = binary_op(TimeOp::Add, b, binary_op(TimeOp::Multiply, c, Value{TimeFunction(0.0)})).as<Vector>();
-        const Vector vc = binary_op(TimeOp::Add, c, binary_op(TimeOp::Multiply, b, Value{TimeFunction(0.0)})).as<Vector>();
-        (void)zero;
-        Vector r = vb;
-        for (int i = 0; i < r.size; ++i)
+        // Component-wise on numbers, with the usual promotion and padding.
+        const int size = std::max(b.is<Vector>() ? b.as<Vector>().size : 0,
+                                  c.is<Vector>() ? c.as<Vector>().size : 0);
+        auto widen = [size](const Value& v) {
+            if (v.is<TimeFunction>()) return promote(v.as<TimeFunction>(), size);
+            Vector r = v.as<Vector>();
+            for (int i = r.size; i < size; ++i) r.c[i] = 0.0;
+            r.size = size;
+            return r;
+        };
+        const Vector vb = widen(b), vc = widen(c);
+        Vector r;
+        r.size = size;
+        for (int i = 0; i < size; ++i)
             r.c[i] = TimeFunction::apply(TimeOp::Conditional, cond, vb.c[i], vc.c[i]);
         return Value{r};
     }
