@@ -10,3 +10,5 @@ box { -1, 1 twist y, 90 * clock taper y, 0.5 bend x, 30 * clock }
 sphere { 0, 1 pigment { rgb <clock, 0, 1 - clock> } }
 camera { location <0, 2, -10> + x * clock look_at 0 }
 light_source { <10, 10, -10> * (1 + clock), rgb 1 }
+// MegaPOV's motion_blur { } reads as a plain group: the blur is hexant's anyway.
+motion_blur { sphere { x * clock, 0.3 } }
