@@ -586,8 +586,15 @@ struct object_close : rbrace {};
 // A shape's leading arguments: values separated by commas, which POV-Ray
 // lets one leave out.
 struct shape_argument : p::seq<sum> {};
+// Where a comma is left out, a macro call starts the modifiers, not another
+// argument: sphere { 0, R Move() } (as in POV-Ray, whose expressions end there).
+struct macro_ahead_item {};
+HEXANT_CUSTOM_RULE(macro_ahead_rule, macro_ahead);
+struct macro_ahead : macro_ahead_rule<macro_ahead_item> {};
 struct shape_arguments
-    : p::seq<frame_open, shape_argument, p::star<p::opt<comma>, shape_argument>> {};
+    : p::seq<frame_open, shape_argument,
+             p::star<p::sor<p::seq<comma, p::must<shape_argument>>,
+                            p::seq<p::not_at<macro_ahead>, shape_argument>>>> {};
 
 template <typename Keyword>
 struct shape_block
@@ -853,4 +860,7 @@ HEXANT_CUSTOM_ANALYZE(include_directive);
 HEXANT_CUSTOM_ANALYZE(macro_definition_rule);
 HEXANT_CUSTOM_ANALYZE(declared_value_rule);
 #undef HEXANT_CUSTOM_ANALYZE
+// macro_ahead only looks.
+template <typename Name, typename Item>
+struct analyze_traits<Name, hexant::language::grammar::macro_ahead_rule<Item>> : analyze_opt_traits<> {};
 }  // namespace tao::pegtl

@@ -139,6 +139,17 @@ public:
     template <typename Item, template <typename...> class Action,
               template <typename...> class Control, typename ParseInput>
     bool declare_value(ParseInput& in);
+    // Whether a call of a declared macro comes next; consumes nothing.
+    template <typename Item, template <typename...> class Action,
+              template <typename...> class Control, typename ParseInput>
+    bool macro_ahead(ParseInput& in) {
+        const char* b = in.current();
+        const char* q = b;
+        while (q != in.end() && (std::isalnum(static_cast<unsigned char>(*q)) || *q == '_')) ++q;
+        if (q == b) return false;
+        const Value* v = lookup(std::string(b, q));
+        return v != nullptr && v->is<std::shared_ptr<const Macro>>();
+    }
 
     // Reads a whole file's items with the given rule (the main scene, an include).
     template <typename Items, template <typename...> class Action,
