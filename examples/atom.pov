@@ -7,7 +7,7 @@
 //
 // Render with hexant:   build/hexant render examples/atom.pov examples/atom.ini
 // Check it (for now):   build/hexant check examples/atom.pov examples/atom.ini
-// Render with POV-Ray:  povray examples/atom.ini +Iexamples/atom.pov
+// Render with POV-Ray:  povray examples/atom.ini examples/atom.pov
 #version 3.7;
 #include "colors.inc"
 
@@ -17,6 +17,7 @@ camera {
     location <0, 5, -11>
     look_at <0, 0.6, 0>
     angle 40
+    right x * image_width / image_height   // square pixels at any size
 }
 
 light_source { <-6, 14, -8>, rgb 1 }
@@ -37,21 +38,24 @@ sphere {
 }
 
 // One electron: an orbit of radius R tilted by Tilt (degrees about x, then
-// z), turning Turns times over the animation, starting at phase Phase.
-#macro Electron(R, Tilt, Turns, Phase, Colour)
+// z), turning Turns times over the animation, starting at phase Phase; the
+// tilted orbit itself precesses Precession times about the vertical. Whole
+// numbers of turns keep the animation cyclic.
+#macro Electron(R, Tilt, Turns, Precession, Phase, Colour)
     sphere {
         <R, 0, 0>, 0.22
         rotate y * (Phase + 360 * Turns * clock)
         rotate Tilt
+        rotate y * 360 * Precession * clock
         translate y * Nucleus_Height
         pigment { Colour }
         finish { phong 0.8 phong_size 60 }
     }
 #end
 
-Electron(1.7, < 20, 0,  10>, 1,   0, rgb <0.3, 0.5, 1.0>)
-Electron(1.9, <-35, 0,  25>, 2,  60, rgb <0.3, 1.0, 0.5>)
-Electron(2.1, < 60, 0, -15>, 3, 120, rgb <1.0, 0.9, 0.3>)
-Electron(2.3, <-10, 0, -50>, 4, 180, rgb <1.0, 0.4, 0.9>)
-Electron(2.5, < 75, 0,  40>, 5, 240, rgb <0.4, 1.0, 1.0>)
-Electron(2.7, <-60, 0, -30>, 6, 300, rgb <1.0, 0.6, 0.3>)
+Electron(1.7, < 20, 0,  10>, 1,  0,   0, rgb <0.3, 0.5, 1.0>)
+Electron(1.9, <-35, 0,  25>, 2,  1,  60, rgb <0.3, 1.0, 0.5>)
+Electron(2.1, < 60, 0, -15>, 3, -1, 120, rgb <1.0, 0.9, 0.3>)
+Electron(2.3, <-10, 0, -50>, 4,  0, 180, rgb <1.0, 0.4, 0.9>)
+Electron(2.5, < 75, 0,  40>, 5,  1, 240, rgb <0.4, 1.0, 1.0>)
+Electron(2.7, <-60, 0, -30>, 6, -1, 300, rgb <1.0, 0.6, 0.3>)

@@ -55,18 +55,35 @@ HEXANT_NAME_ACTION(camera_vector_name);
 HEXANT_NAME_ACTION(global_setting_name);
 HEXANT_NAME_ACTION(global_ignored_name);
 HEXANT_NAME_ACTION(unsupported_kind);
-HEXANT_NAME_ACTION(kw_sphere);
-HEXANT_NAME_ACTION(kw_box);
-HEXANT_NAME_ACTION(kw_plane);
-HEXANT_NAME_ACTION(kw_polygon);
-HEXANT_NAME_ACTION(kw_triangle);
-HEXANT_NAME_ACTION(kw_smooth_triangle);
-HEXANT_NAME_ACTION(kw_disc);
-HEXANT_NAME_ACTION(kw_cylinder);
-HEXANT_NAME_ACTION(kw_cone);
-HEXANT_NAME_ACTION(kw_torus);
-HEXANT_NAME_ACTION(kw_prism);
 #undef HEXANT_NAME_ACTION
+
+// A shape's keyword: remembers which shape and where it was written.
+template <typename ActionInput>
+void shape_keyword(const ActionInput& in, Interpreter& st) {
+    st.push_name(word(in));
+    const auto p = in.position();
+    st.shape_place = {p.source, p.line, p.column};
+}
+#define HEXANT_SHAPE_KEYWORD(rule)                                  \
+    template <>                                                     \
+    struct action<g::rule> {                                        \
+        template <typename ActionInput>                             \
+        static void apply(const ActionInput& in, Interpreter& st) { \
+            shape_keyword(in, st);                                  \
+        }                                                           \
+    }
+HEXANT_SHAPE_KEYWORD(kw_sphere);
+HEXANT_SHAPE_KEYWORD(kw_box);
+HEXANT_SHAPE_KEYWORD(kw_plane);
+HEXANT_SHAPE_KEYWORD(kw_polygon);
+HEXANT_SHAPE_KEYWORD(kw_triangle);
+HEXANT_SHAPE_KEYWORD(kw_smooth_triangle);
+HEXANT_SHAPE_KEYWORD(kw_disc);
+HEXANT_SHAPE_KEYWORD(kw_cylinder);
+HEXANT_SHAPE_KEYWORD(kw_cone);
+HEXANT_SHAPE_KEYWORD(kw_torus);
+HEXANT_SHAPE_KEYWORD(kw_prism);
+#undef HEXANT_SHAPE_KEYWORD
 
 // A ValueError from the value operations becomes an error at the rule's place.
 #define HEXANT_ACTION(rule) \
@@ -171,15 +188,16 @@ HEXANT_ACTION(builtin_constant_name) {
         else if (w == "clock") st.push(Value{a.is_animation() ? TimeFunction::clock() : TimeFunction(a.initial_clock)});
         else if (w == "clock_delta") f(a.clock_delta());
         else if (w == "clock_on") f(a.is_animation() ? 1.0 : 0.0);
-        else if (w == "initial_clock") f(a.initial_clock);
-        else if (w == "final_clock") f(a.final_clock);
-        else if (w == "initial_frame") f(a.initial_frame);
-        else if (w == "final_frame") f(a.final_frame);
+        // In a still, POV-Ray reads these four (and frame_number) as 0.
+        else if (w == "initial_clock") f(a.is_animation() ? a.initial_clock : 0.0);
+        else if (w == "final_clock") f(a.is_animation() ? a.final_clock : 0.0);
+        else if (w == "initial_frame") f(a.is_animation() ? a.initial_frame : 0.0);
+        else if (w == "final_frame") f(a.is_animation() ? a.final_frame : 0.0);
         else if (w == "version") f(st.version);
         else if (w == "frame_number") {
             // The frame whose shutter holds the time: constant within a frame.
             if (!a.is_animation() || a.clock_delta() == 0.0) {
-                f(a.initial_frame);
+                f(a.is_animation() ? a.initial_frame : 0.0);
             } else {
                 const TimeFunction steps = (TimeFunction::clock() - a.initial_clock) / a.clock_delta();
                 st.push(Value{TimeFunction::apply(TimeOp::Floor, steps + 1e-9) + double(a.initial_frame)});
@@ -707,7 +725,7 @@ HEXANT_ACTION(shape_arguments) {
         std::vector<Value> args = st.close_frame();
         const std::string kind = st.pop_name();
         runtime::ObjectRecord record = make_shape(kind, args, st);
-        record.place = source_place(in);
+        record.place = st.shape_place;
         st.blocks.emplace_back(std::move(record));
     }
 };

@@ -110,6 +110,7 @@ public:
     // prism { ... } options read before its arguments
     std::string prism_spline = "linear_spline", prism_sweep = "linear_sweep";
     bool warned_normal = false;
+    runtime::SourcePlace shape_place;  // where the shape being read was written
 
     // ---- directives, called by the custom rules in grammar.hpp
     template <typename Item, template <typename...> class Action,
