@@ -1,8 +1,5 @@
 #include "app/command_line.hpp"
 
-#include <algorithm>
-#include <cctype>
-#include <fstream>
 #include <stdexcept>
 
 namespace hexant::app {
@@ -27,131 +24,31 @@ void add_scene_arguments(CLI::App& command, SceneArguments& a) {
                        "Stop a #while or #for after this many iterations (default 10^7)");
 }
 
+void apply_ini_file(const std::filesystem::path& ini, ResolvedScene& resolved,
+                    const std::string& section) {
+    const language::IniSettings settings = language::read_ini_file(ini, section);
+    language::apply_ini_settings(settings, resolved.options, resolved.scene);
+    resolved.warnings.insert(resolved.warnings.end(), settings.warnings.begin(),
+                             settings.warnings.end());
+}
+
 namespace {
 
-std::string lower(std::string s) {
-    std::transform(s.begin(), s.end(), s.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return s;
+double full_number(const std::string& text) {
+    std::size_t used = 0;
+    const double v = std::stod(text, &used);
+    if (used != text.size()) throw std::invalid_argument(text);
+    return v;
 }
-
-std::string trim(const std::string& s) {
-    const auto b = s.find_first_not_of(" \t\r\"");
-    if (b == std::string::npos) return {};
-    const auto e = s.find_last_not_of(" \t\r\"");
-    return s.substr(b, e - b + 1);
-}
-
-bool is_ini(const std::string& file) { return lower(std::filesystem::path(file).extension().string()) == ".ini"; }
 
 }  // namespace
-
-void apply_ini_file(const std::filesystem::path& ini, ResolvedScene& r) {
-    std::ifstream in(ini);
-    if (!in) throw std::runtime_error("cannot read " + ini.string());
-    std::string line;
-    int number = 0;
-    auto& a = r.options.animation;
-    while (std::getline(in, line)) {
-        ++number;
-        const std::string place = ini.string() + ":" + std::to_string(number);
-        if (auto c = line.find(';'); c != std::string::npos) line.erase(c);
-        line = trim(line);
-        if (line.empty() || line[0] == '[') continue;
-        std::string key, value, written;  // written: the key as the file spells it
-        if (line[0] == '+' || line[0] == '-') {  // a switch such as +W320 or +KFF64
-            const bool on = line[0] == '+';
-            const std::string s = line.substr(1);
-            static const std::vector<std::pair<std::string, std::string>> switches = {
-                {"KFI", "initial_frame"}, {"KFF", "final_frame"}, {"KI", "initial_clock"},
-                {"KF", "final_clock"},    {"KC", "cyclic_animation"}, {"W", "width"},
-                {"H", "height"},          {"L", "library_path"}};
-            bool found = false;
-            for (const auto& [prefix, name] : switches) {
-                if (lower(s.substr(0, prefix.size())) == lower(prefix)) {
-                    key = name;
-                    written = line;
-                    value = s.substr(prefix.size());
-                    if (name == "cyclic_animation") value = on ? "on" : "off";
-                    found = true;
-                    break;
-                }
-            }
-            if (!found) {
-                r.warnings.push_back(place + ": switch '" + line + "' is ignored");
-                continue;
-            }
-        } else {
-            const auto eq = line.find('=');
-            if (eq == std::string::npos) {
-                r.warnings.push_back(place + ": line '" + line + "' is ignored");
-                continue;
-            }
-            written = trim(line.substr(0, eq));
-            key = lower(written);
-            value = trim(line.substr(eq + 1));
-        }
-        auto integer = [&]() {
-            try {
-                std::size_t used = 0;
-                const int v = std::stoi(value, &used);
-                if (used != value.size()) throw std::invalid_argument(value);
-                return v;
-            } catch (const std::exception&) {
-                throw std::runtime_error(place + ": " + written + " needs a whole number, not '" + value + "'");
-            }
-        };
-        auto number_value = [&]() {
-            try {
-                std::size_t used = 0;
-                const double v = std::stod(value, &used);
-                if (used != value.size()) throw std::invalid_argument(value);
-                return v;
-            } catch (const std::exception&) {
-                throw std::runtime_error(place + ": " + written + " needs a number, not '" + value + "'");
-            }
-        };
-        auto boolean = [&]() {
-            const std::string v = lower(value);
-            if (v == "on" || v == "true" || v == "yes" || v == "1" || v.empty()) return true;
-            if (v == "off" || v == "false" || v == "no" || v == "0") return false;
-            throw std::runtime_error(place + ": " + written + " needs on or off, not '" + value + "'");
-        };
-        if (key == "input_file_name") {
-            r.scene = ini.parent_path() / value;
-        } else if (key == "width") {
-            a.width = integer();
-        } else if (key == "height") {
-            a.height = integer();
-        } else if (key == "initial_frame") {
-            a.initial_frame = integer();
-        } else if (key == "final_frame") {
-            a.final_frame = integer();
-        } else if (key == "initial_clock") {
-            a.initial_clock = number_value();
-        } else if (key == "final_clock") {
-            a.final_clock = number_value();
-        } else if (key == "cyclic_animation") {
-            a.cyclic = boolean();
-        } else if (key == "library_path") {
-            r.options.include_paths.push_back(ini.parent_path() / value);
-        } else if (key == "declare") {
-            const auto eq = value.find('=');
-            if (eq == std::string::npos)
-                throw std::runtime_error(place + ": Declare needs NAME=VALUE, not '" + value + "'");
-            r.options.declares.emplace_back(trim(value.substr(0, eq)), trim(value.substr(eq + 1)));
-        } else {
-            r.warnings.push_back(place + ": setting '" + written + "' is ignored");
-        }
-    }
-}
 
 ResolvedScene resolve(const SceneArguments& arguments) {
     ResolvedScene r;
     std::string named_scene;  // a scene on the command line wins over Input_File_Name
     for (const auto& file : arguments.files) {
-        if (is_ini(file)) {
-            apply_ini_file(file, r);
+        if (const auto ini = language::ini_reference(file)) {
+            apply_ini_file(ini->file, r, ini->section);
         } else {
             if (!named_scene.empty())
                 throw std::runtime_error("more than one scene named: " + named_scene + " and " + file);
@@ -172,13 +69,11 @@ ResolvedScene resolve(const SceneArguments& arguments) {
         const std::string& text = *arguments.clock_range;
         const auto colon = text.find(':');
         try {
-            std::size_t used = 0;
             if (colon == std::string::npos) {
-                r.at_clock = std::stod(text, &used);
-                if (used != text.size()) throw std::invalid_argument(text);
+                r.at_clock = full_number(text);
             } else {
-                a.initial_clock = std::stod(text.substr(0, colon), &used);
-                a.final_clock = std::stod(text.substr(colon + 1));
+                a.initial_clock = full_number(text.substr(0, colon));
+                a.final_clock = full_number(text.substr(colon + 1));
             }
         } catch (const std::exception&) {
             throw std::runtime_error("--clock needs A:B or a single value C, not '" + text + "'");

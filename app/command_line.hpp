@@ -10,6 +10,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "language/ini_file.hpp"
 #include "language/interpreter.hpp"
 
 namespace hexant::app {
@@ -36,14 +37,15 @@ struct ResolvedScene {
     std::optional<double> at_clock;     // --clock C
 };
 
-// Applies the .ini files in order, then the flags. Throws std::runtime_error
-// naming the file and line of a bad .ini setting, or a bad flag.
+// Applies the .ini files in order (a word ending in .ini, or .ini[Label] to
+// select a section, is an .ini file; any other is the scene), then the flags.
+// Throws std::runtime_error naming the file and line of a bad .ini setting,
+// or a bad flag.
 ResolvedScene resolve(const SceneArguments& arguments);
 
-// Reads one POV-Ray .ini file onto `resolved` (Input_File_Name, Width,
-// Height, Initial_Frame, Final_Frame, Initial_Clock, Final_Clock,
-// Cyclic_Animation, Library_Path, Declare, and their +W, +H, +KFI, +KFF, +KI,
-// +KF, +KC, +L switches).
-void apply_ini_file(const std::filesystem::path& ini, ResolvedScene& resolved);
+// Reads one POV-Ray .ini file (language/ini_file.hpp) onto `resolved`: its
+// options replace the current ones, its warnings are added.
+void apply_ini_file(const std::filesystem::path& ini, ResolvedScene& resolved,
+                    const std::string& section = {});
 
 }  // namespace hexant::app

@@ -26,7 +26,7 @@ fs::path write(const std::string& name, const std::string& text) {
 
 TEST_CASE("an .ini file sets POV-Ray's animation options and names the scene", "[app][ini]") {
     const auto ini = write("anim.ini",
-                           "; a comment\n[section]\nInput_File_Name=scene.pov\nWidth=126\n"
+                           "; a comment\nInput_File_Name=scene.pov\nWidth=126\n"
                            "Height = 96\nInitial_Frame=1\nFinal_Frame=64\nInitial_Clock=0\n"
                            "Final_Clock=2\nCyclic_Animation=on\nLibrary_Path=lib\n"
                            "Declare=Speed=3\nAntialias=on\n");
@@ -47,7 +47,7 @@ TEST_CASE("an .ini file sets POV-Ray's animation options and names the scene", "
     CHECK(r.options.declares[0].first == "Speed");
     CHECK(r.options.declares[0].second == "3");
     REQUIRE(r.warnings.size() == 1);  // Antialias is not hexant's
-    CHECK(r.warnings[0].find("anim.ini:13") != std::string::npos);
+    CHECK(r.warnings[0].find("anim.ini:12") != std::string::npos);
 }
 
 TEST_CASE(".ini switches and later files override earlier ones; flags override all", "[app][ini]") {
