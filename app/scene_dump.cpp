@@ -35,12 +35,23 @@ std::string transform(const runtime::Transform& transform, double t) {
             for (int j = 0; j < 3; ++j) s += (i || j ? ", " : "") + number(m[i][j]);
         return "transform=" + s + "]";
     }
+    // With a deformation there is no one matrix: each step as written.
     static const char* names[] = {"translate", "rotate", "scale", "matrix", "twist", "taper", "bend"};
     std::string s = "steps=";
+    bool first = true;
     for (const auto& step : transform.steps()) {
-        s += std::string(names[static_cast<int>(step.kind)]) + (step.inverse ? "^-1" : "") + "(" +
-             vector(step.vector, t);
-        if (step.is_deformation()) s += "," + number(step.amount(t));
+        s += std::string(first ? "" : ";") + names[static_cast<int>(step.kind)] +
+             (step.inverse ? "^-1" : "") + "(";
+        first = false;
+        if (step.kind == runtime::TransformKind::Matrix) {
+            s += "[";
+            for (int i = 0; i < 12; ++i) s += (i ? ", " : "") + number(step.matrix[i](t));
+            s += "]";
+        } else if (step.is_deformation()) {
+            s += "axis=" + vector(step.vector, t) + ",amount=" + number(step.amount(t));
+        } else {
+            s += vector(step.vector, t);
+        }
         s += ")";
     }
     return s;
@@ -60,7 +71,8 @@ std::string texture(const runtime::Texture& texture, double t) {
     s += " finish=ambient:" + number(f.ambient(t)) + ",diffuse:" + number(f.diffuse(t)) +
          ",brilliance:" + number(f.brilliance(t)) + ",phong:" + number(f.phong(t)) +
          ",phong_size:" + number(f.phong_size(t)) + ",specular:" + number(f.specular(t)) +
-         ",roughness:" + number(f.roughness(t)) + ",reflection:" + colour(f.reflection, t);
+         ",roughness:" + number(f.roughness(t)) + ",reflection:<" + number(f.reflection.c[0](t)) + ", " +
+         number(f.reflection.c[1](t)) + ", " + number(f.reflection.c[2](t)) + ">";
     return s;
 }
 
