@@ -101,7 +101,8 @@ HEXANT_SHAPE_KEYWORD(kw_prism);
         }                                                         \
     }                                                             \
     template <typename ActionInput>                               \
-    static void run(const ActionInput& in, Interpreter& st)
+    static void run([[maybe_unused]] const ActionInput& in,      \
+                    [[maybe_unused]] Interpreter& st)
 
 // ------------------------------------------------------------ literals
 

@@ -3,7 +3,10 @@
 #   // error: [FILE:]LINE:COLUMN: SUBSTRING
 # (FILE relative to the scene's folder, for errors inside an #include), with
 # exit code 1, the place as file:line:column, the substring, and a caret.
-# A line `// flags: ...` adds command-line flags.
+# A line `// flags: ...` adds command-line flags. Lines `// note: [FILE:]LINE:COLUMN: SUBSTRING`
+# anywhere in the scene ask for the chain of places (an #include, a macro call)
+# printed after the error: each must appear as `file:line:column: note:`
+# followed on the same line by the substring.
 # Called as: cmake -DHEXANT=... -DSCENE=... -P expect_error.cmake
 file(STRINGS "${SCENE}" header LIMIT_COUNT 3)
 set(expect "")
@@ -39,6 +42,29 @@ string(FIND "${err}" "${substring}" at)
 if(at EQUAL -1)
   message(FATAL_ERROR "expected the message to contain '${substring}'\n${err}")
 endif()
+file(STRINGS "${SCENE}" notes REGEX "^// note: ")
+foreach(note IN LISTS notes)
+  if(NOT note MATCHES "^// note: (([^:]+):)?([0-9]+):([0-9]+): (.+)$")
+    message(FATAL_ERROR "${SCENE}: bad line '${note}': must be // note: [FILE:]LINE:COLUMN: SUBSTRING")
+  endif()
+  if(CMAKE_MATCH_2)
+    set(note_where "${folder}/${CMAKE_MATCH_2}:${CMAKE_MATCH_3}:${CMAKE_MATCH_4}: note:")
+  else()
+    set(note_where "${SCENE}:${CMAKE_MATCH_3}:${CMAKE_MATCH_4}: note:")
+  endif()
+  set(note_text "${CMAKE_MATCH_5}")
+  string(FIND "${err}" "${note_where}" at)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "expected a note at ${note_where}\n${err}")
+  endif()
+  string(SUBSTRING "${err}" ${at} -1 rest)
+  string(FIND "${rest}" "\n" eol)
+  string(SUBSTRING "${rest}" 0 ${eol} note_line)
+  string(FIND "${note_line}" "${note_text}" at)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "expected the note '${note_line}' to contain '${note_text}'\n${err}")
+  endif()
+endforeach()
 if(NOT err MATCHES "\n *\\^")
   message(FATAL_ERROR "expected a caret under the source line\n${err}")
 endif()

@@ -3,3 +3,4 @@
   sphere { P, Size }
 #end
 Ball(<1, 0, 0>)
+// note: 5:1: in macro 'Ball'

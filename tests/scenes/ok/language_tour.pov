@@ -1,5 +1,5 @@
 // Directives and expressions across the language: every one of them must run.
-#version 3.7;
+#version 3.7; global_settings { assumed_gamma 1.0 }
 #include "colors.inc"
 #include "lib/parts.inc"            // found in the scene's own folder
 
@@ -26,13 +26,13 @@
   #else #error "not else"
 #end
 // POV-Ray's precedence: unary minus, *, +, comparisons, & and | left to right, ?:
-#declare E = -2 * 3 + 4 < 0 & 1 | 0 ? 10 : 20;
+#declare E = (-2 * 3 + 4 < 0 & 1 | 0 ? 10 : 20);   // POV-Ray reads ?: only inside ( )
 #if (E != 10) #error "precedence" #end
 #declare V = <1, 2, 3> * 2 + 1;            // float promotion
 #declare W = <1, 2> + <1, 2, 3, 4, 5>;      // sizes pad with zeros
-#declare C = color red 1 green .5 filter .2;
-#declare D = rgbft <.1, .2, .3, .4, .5> + srgb <.5, .5, .5>;
-#if (V.y != 5 | W.t != 4 | C.filter != .2 | C.blue != 0) #error "components" #end
+#declare C = color red 1 green .5 filter .25;
+#declare D0 = srgb <.5, .5, .5>; #declare D = rgbft <.1, .2, .3, .4, .5> + D0;
+#if (V.y != 5 | W.t != 4 | C.filter != .25 | C.blue != 0) #error "components" #end
 #declare F = abs(-1) + sin(pi/2) + cos(0) + tan(0) + asin(1) + acos(1) + atan(0) + atan2(1, 1)
            + sqrt(4) + pow(2, 3) + exp(0) + log(100) + ln(1) + min(1, 2, 3) + max(1, 2) + mod(7, 3)
            + div(7, 2) + int(-1.5) + floor(1.5) + ceil(1.5) + radians(180) + degrees(pi)
