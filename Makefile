@@ -2,7 +2,7 @@
 # Debian packages hexant needs (as root; otherwise it prints the command),
 # configures, builds into build/, then renders (for now: checks) the atom
 # example or runs the whole test suite.
-PACKAGES := build-essential cmake tao-pegtl-dev libglm-dev catch2 libcli11-dev \
+PACKAGES := build-essential cmake pkg-config tao-pegtl-dev libglm-dev catch2 libcli11-dev \
             libopenimageio-dev libtbb-dev
 JOBS := $(shell nproc 2>/dev/null || echo 2)
 
