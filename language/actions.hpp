@@ -875,7 +875,8 @@ HEXANT_ACTION(light_arguments) {
         std::vector<Value> args = st.close_frame();
         runtime::LightRecord light;
         light.position = to_vector3(args[0], "the light's position");
-        light.colour = to_colour(args[1], "the light's colour");
+        if (args.size() > 1) light.colour = to_colour(args[1], "the light's colour");
+        else light.colour.c = {1.0, 1.0, 1.0, 0.0, 0.0};  // POV-Ray's default: white
         (void)in;
         st.blocks.emplace_back(std::move(light));
     }

@@ -646,7 +646,10 @@ struct object_block
 
 // light_source { <position>, colour modifiers }
 HEXANT_KEYWORD(kw_light_source, "light_source");
-struct light_arguments : p::seq<frame_open, p::must<shape_argument>, p::opt<comma>, p::must<shape_argument>> {};
+// The colour may be left out (POV-Ray: white).
+struct light_arguments
+    : p::seq<frame_open, p::must<shape_argument>,
+             p::opt<p::opt<comma>, p::not_at<macro_ahead>, shape_argument>> {};
 struct light_flag
     : p::seq<p::sor<TAO_PEGTL_KEYWORD("shadowless"), TAO_PEGTL_KEYWORD("spotlight"),
                     TAO_PEGTL_KEYWORD("cylinder"), TAO_PEGTL_KEYWORD("parallel"),
