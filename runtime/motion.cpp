@@ -1,0 +1,363 @@
+#include "runtime/motion.hpp"
+
+#include <stdexcept>
+
+#include <glm/matrix.hpp>
+
+#include "runtime/time_tape.hpp"
+
+namespace hexant::runtime {
+
+namespace {
+
+constexpr double kDegree = 3.14159265358979323846 / 180.0;
+
+// Rotation by `degrees` about principal axis `axis`, as transform.cpp's
+// axis_rotation (POV-Ray's Compute_Rotation_Transform): a' = a c - b s,
+// b' = a s + b c for the two other axes a, b.
+template <class N>
+AffineMap<N> axis_rotation(int axis, const N& degrees) {
+    using std::cos;
+    using std::sin;
+    const N angle = degrees * N(kDegree);
+    const N s = sin(angle), c = cos(angle);
+    AffineMap<N> m = AffineMap<N>::identity();
+    const int a = (axis + 1) % 3, b = (axis + 2) % 3;
+    m.m[a][a] = c;
+    m.m[a][b] = -s;
+    m.m[b][a] = s;
+    m.m[b][b] = c;
+    return m;
+}
+
+// The inverse of a general affine map by its adjugate; a singular map (a
+// scene's `matrix` with a zero determinant) divides by zero, which the
+// interval type turns into entire() and doubles into Inf, kept out of the
+// tracer by the callers' finite checks.
+template <class N>
+AffineMap<N> inverse_of(const AffineMap<N>& a) {
+    const auto& m = a.m;
+    AffineMap<N> r;
+    r.m[0][0] = m[1][1] * m[2][2] - m[1][2] * m[2][1];
+    r.m[0][1] = m[0][2] * m[2][1] - m[0][1] * m[2][2];
+    r.m[0][2] = m[0][1] * m[1][2] - m[0][2] * m[1][1];
+    r.m[1][0] = m[1][2] * m[2][0] - m[1][0] * m[2][2];
+    r.m[1][1] = m[0][0] * m[2][2] - m[0][2] * m[2][0];
+    r.m[1][2] = m[0][2] * m[1][0] - m[0][0] * m[1][2];
+    r.m[2][0] = m[1][0] * m[2][1] - m[1][1] * m[2][0];
+    r.m[2][1] = m[0][1] * m[2][0] - m[0][0] * m[2][1];
+    r.m[2][2] = m[0][0] * m[1][1] - m[0][1] * m[1][0];
+    const N det = m[0][0] * r.m[0][0] + m[0][1] * r.m[1][0] + m[0][2] * r.m[2][0];
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) r.m[i][j] = r.m[i][j] / det;
+    for (int i = 0; i < 3; ++i)
+        r.m[i][3] = -(r.m[i][0] * m[0][3] + r.m[i][1] * m[1][3] + r.m[i][2] * m[2][3]);
+    return r;
+}
+
+// At most this many time-dependent amounts live on the stack per call;
+// more go to the heap (a scene would need dozens of moving steps on one
+// object).
+constexpr std::size_t kStackAmounts = 48;
+
+}  // namespace
+
+// Evaluates a Motion's stages for one number type: the tape once, then each
+// stage's map from the amounts.
+template <class N>
+struct MotionEvaluator {
+    const Motion& motion;
+    std::array<N, kStackAmounts> stack{};
+    std::vector<N> heap;
+    N* amounts = nullptr;
+
+    MotionEvaluator(const Motion& m, const N& t) : motion(m) {
+        if (!m.tape_) return;
+        const std::size_t count = m.tape_->output_count();
+        if (count <= kStackAmounts) {
+            amounts = stack.data();
+        } else {
+            heap.resize(count);
+            amounts = heap.data();
+        }
+        m.tape_->evaluate(t, amounts);
+    }
+
+    N value(const Motion::Parameter& p) const {
+        return p.slot < 0 ? N(p.constant) : amounts[p.slot];
+    }
+    std::array<N, 3> vector(const Motion::Step& s) const {
+        return {value(s.p[0]), value(s.p[1]), value(s.p[2])};
+    }
+
+    // One affine step's map (or its inverse).
+    AffineMap<N> step_map(const Motion::Step& s, bool invert) const {
+        const bool inverse = s.inverse != invert;
+        AffineMap<N> m = AffineMap<N>::identity();
+        switch (s.kind) {
+            case TransformKind::Translate: {
+                const auto v = vector(s);
+                for (int i = 0; i < 3; ++i) m.m[i][3] = inverse ? -v[i] : v[i];
+                return m;
+            }
+            case TransformKind::Scale: {
+                const auto v = vector(s);
+                for (int i = 0; i < 3; ++i) m.m[i][i] = inverse ? N(1.0) / v[i] : v[i];
+                return m;
+            }
+            case TransformKind::Rotate: {
+                const auto v = vector(s);
+                if (!inverse)
+                    return axis_rotation(2, v[2]) * (axis_rotation(1, v[1]) * axis_rotation(0, v[0]));
+                return axis_rotation(0, -v[0]) * (axis_rotation(1, -v[1]) * axis_rotation(2, -v[2]));
+            }
+            case TransformKind::Matrix: {
+                // POV-Ray's row i (glm's column i) is the image of axis i;
+                // row 3 the translation.
+                for (int i = 0; i < 4; ++i)
+                    for (int j = 0; j < 3; ++j) m.m[j][i] = value(s.p[i * 3 + j]);
+                return inverse ? inverse_of(m) : m;
+            }
+            default: break;
+        }
+        throw std::logic_error("Motion: a deformation step in an affine stage");
+    }
+
+    // A moving stage's map: its steps in order (or undone in reverse order).
+    AffineMap<N> stage_map(const Motion::Stage& stage, bool invert) const {
+        AffineMap<N> m = AffineMap<N>::identity();
+        if (!invert) {
+            for (const auto& s : stage.steps) m = step_map(s, false) * m;
+        } else {
+            for (auto it = stage.steps.rbegin(); it != stage.steps.rend(); ++it)
+                m = step_map(*it, true) * m;
+        }
+        return m;
+    }
+
+    std::array<N, 3> deform(const Motion::Stage& stage, const std::array<N, 3>& p,
+                            bool invert) const {
+        const N amount = value(stage.amount);
+        if (stage.fixed_frame) return deform_in(stage.kind, stage.frame, p, amount, invert != stage.inverse);
+        const std::array<N, 3> axis{value(stage.axis[0]), value(stage.axis[1]), value(stage.axis[2])};
+        return deform_in(stage.kind, deformation_frame(axis), p, amount, invert != stage.inverse);
+    }
+
+    template <class M>
+    static std::array<N, 3> deform_in(Motion::StageKind kind, const DeformationFrame<M>& f,
+                                      const std::array<N, 3>& p, const N& amount, bool inverse) {
+        switch (kind) {
+            case Motion::StageKind::Twist: return inverse ? untwist(p, f, amount) : twist(p, f, amount);
+            case Motion::StageKind::Taper: return inverse ? untaper(p, f, amount) : taper(p, f, amount);
+            case Motion::StageKind::Bend: return inverse ? unbend(p, f, amount) : bend(p, f, amount);
+            default: break;
+        }
+        return p;
+    }
+
+    std::array<N, 3> through(const Motion::Stage& stage, const std::array<N, 3>& p,
+                             bool invert) const {
+        switch (stage.kind) {
+            case Motion::StageKind::Fixed:
+                return invert ? stage.backward.apply(p) : stage.forward.apply(p);
+            case Motion::StageKind::Moving: return stage_map(stage, invert).apply(p);
+            default: return deform(stage, p, invert);
+        }
+    }
+};
+
+Motion::Motion(const Transform& transform) {
+    std::vector<TimeFunction> outputs;
+    auto parameter = [&](const TimeFunction& f) {
+        Parameter p;
+        if (f.is_constant()) {
+            p.constant = f.constant();
+        } else {
+            p.slot = static_cast<int>(outputs.size());
+            outputs.push_back(f);
+        }
+        return p;
+    };
+
+    for (const TransformStep& step : transform.steps()) {
+        if (step.is_deformation()) {
+            Stage stage;
+            stage.kind = step.kind == TransformKind::Twist   ? StageKind::Twist
+                         : step.kind == TransformKind::Taper ? StageKind::Taper
+                                                             : StageKind::Bend;
+            stage.inverse = step.inverse;
+            for (int i = 0; i < 3; ++i) stage.axis[i] = parameter(step.vector.c[i]);
+            stage.amount = parameter(step.amount);
+            stage.fixed_frame = !step.vector.depends_on_time();
+            if (stage.fixed_frame) stage.frame = deformation_frame(step.vector(0.0));
+            stages_.push_back(stage);
+            affine_ = false;
+            identity_ = false;
+            continue;
+        }
+        if (!step.depends_on_time()) {
+            // A constant step joins a preceding constant stage.
+            const AffineMap<double> m = AffineMap<double>::from(step.matrix_at(0.0));
+            if (stages_.empty() || stages_.back().kind != StageKind::Fixed) {
+                stages_.push_back(Stage{});
+            }
+            Stage& stage = stages_.back();
+            stage.forward = m * stage.forward;
+            stage.backward = to_glm(stage.forward) == glm::dmat4(1.0)
+                                 ? AffineMap<double>::identity()
+                                 : AffineMap<double>::from(glm::inverse(to_glm(stage.forward)));
+            identity_ = identity_ && to_glm(stage.forward) == glm::dmat4(1.0);
+            continue;
+        }
+        Step s;
+        s.kind = step.kind;
+        s.inverse = step.inverse;
+        if (step.kind == TransformKind::Matrix) {
+            for (int i = 0; i < 12; ++i) s.p[i] = parameter(step.matrix[i]);
+        } else {
+            for (int i = 0; i < 3; ++i) s.p[i] = parameter(step.vector.c[i]);
+        }
+        if (stages_.empty() || stages_.back().kind != StageKind::Moving) {
+            Stage stage;
+            stage.kind = StageKind::Moving;
+            stages_.push_back(stage);
+        }
+        stages_.back().steps.push_back(s);
+        identity_ = false;
+    }
+
+    if (!outputs.empty()) tape_ = std::make_shared<const TimeTape>(TimeTape::compile(outputs));
+    fixed_affine_ = affine_ && !tape_;
+    if (fixed_affine_ && !stages_.empty()) {
+        // Constant and affine: the stages merged into one (only Fixed stages
+        // exist, and consecutive ones were merged).
+        forward_ = stages_.front().forward;
+        backward_ = stages_.front().backward;
+    }
+}
+
+template <class N>
+std::array<N, 3> Motion::to_world_general(const std::array<N, 3>& p, const N& t) const {
+    const MotionEvaluator<N> e(*this, t);
+    std::array<N, 3> q = p;
+    for (const Stage& stage : stages_) q = e.through(stage, q, false);
+    return q;
+}
+
+template <class N>
+std::array<N, 3> Motion::to_object_general(const std::array<N, 3>& p, const N& t) const {
+    const MotionEvaluator<N> e(*this, t);
+    std::array<N, 3> q = p;
+    for (auto it = stages_.rbegin(); it != stages_.rend(); ++it) q = e.through(*it, q, true);
+    return q;
+}
+
+template std::array<double, 3> Motion::to_world_general(const std::array<double, 3>&,
+                                                        const double&) const;
+template std::array<Interval, 3> Motion::to_world_general(const std::array<Interval, 3>&,
+                                                          const Interval&) const;
+template std::array<Dual, 3> Motion::to_world_general(const std::array<Dual, 3>&,
+                                                      const Dual&) const;
+template std::array<double, 3> Motion::to_object_general(const std::array<double, 3>&,
+                                                         const double&) const;
+template std::array<Interval, 3> Motion::to_object_general(const std::array<Interval, 3>&,
+                                                           const Interval&) const;
+template std::array<Dual, 3> Motion::to_object_general(const std::array<Dual, 3>&,
+                                                       const Dual&) const;
+
+glm::dmat4 Motion::matrix_at(double t) const {
+    if (fixed_affine_) return to_glm(forward_);
+    if (!affine_) throw std::logic_error("Motion::matrix_at on a deformed object");
+    const MotionEvaluator<double> e(*this, t);
+    AffineMap<double> m = AffineMap<double>::identity();
+    for (const Stage& stage : stages_)
+        m = (stage.kind == StageKind::Fixed ? stage.forward : e.stage_map(stage, false)) * m;
+    return to_glm(m);
+}
+
+glm::dmat4 Motion::inverse_at(double t) const {
+    if (fixed_affine_) return to_glm(backward_);
+    if (!affine_) throw std::logic_error("Motion::inverse_at on a deformed object");
+    const MotionEvaluator<double> e(*this, t);
+    AffineMap<double> m = AffineMap<double>::identity();
+    for (auto it = stages_.rbegin(); it != stages_.rend(); ++it)
+        m = (it->kind == StageKind::Fixed ? it->backward : e.stage_map(*it, true)) * m;
+    return to_glm(m);
+}
+
+IntervalAffine Motion::matrix_over(const Interval& t) const {
+    if (fixed_affine_) return IntervalAffine::from(forward_);
+    if (!affine_) throw std::logic_error("Motion::matrix_over on a deformed object");
+    const MotionEvaluator<Interval> e(*this, t);
+    IntervalAffine m = IntervalAffine::identity();
+    for (const Stage& stage : stages_)
+        m = (stage.kind == StageKind::Fixed ? IntervalAffine::from(stage.forward)
+                                            : e.stage_map(stage, false)) *
+            m;
+    return m;
+}
+
+IntervalVec3 Motion::world_box(const IntervalVec3& object_box, const Interval& t) const {
+    if (fixed_affine_) return forward_.apply(object_box);
+    if (affine_) return matrix_over(t).apply(object_box);
+    // Interval evaluation of a deformation over a wide box overestimates
+    // (the dependency problem grows with the box); the images of the eight
+    // half boxes, unioned, are often much tighter, and the true image lies
+    // inside both answers.
+    IntervalVec3 whole = to_world(object_box, t);
+    IntervalVec3 pieces{Interval(interval_detail::kInf, -interval_detail::kInf),
+                        Interval(interval_detail::kInf, -interval_detail::kInf),
+                        Interval(interval_detail::kInf, -interval_detail::kInf)};
+    for (int corner = 0; corner < 8; ++corner) {
+        IntervalVec3 half;
+        for (int i = 0; i < 3; ++i) {
+            const Interval& b = object_box[i];
+            const double m = b.mid();
+            half[i] = (corner >> i & 1) ? Interval(m, b.hi) : Interval(b.lo, m);
+        }
+        const IntervalVec3 image = to_world(half, t);
+        for (int i = 0; i < 3; ++i) pieces[i] = hull(pieces[i], image[i]);
+    }
+    for (int i = 0; i < 3; ++i) {
+        const Interval both = intersect(whole[i], pieces[i]);
+        whole[i] = both.is_empty() ? hull(whole[i], pieces[i]) : both;
+    }
+    return whole;
+}
+
+glm::dmat3 Motion::jacobian_at(const glm::dvec3& object_point, double t) const {
+    if (fixed_affine_) return glm::dmat3(to_glm(forward_));
+    const MotionEvaluator<double> e(*this, t);
+    glm::dmat3 j(1.0);
+    std::array<double, 3> p{object_point.x, object_point.y, object_point.z};
+    for (const Stage& stage : stages_) {
+        glm::dmat3 step(1.0);
+        if (stage.kind == StageKind::Fixed) {
+            step = glm::dmat3(to_glm(stage.forward));
+        } else if (stage.kind == StageKind::Moving) {
+            step = glm::dmat3(to_glm(e.stage_map(stage, false)));
+        } else {
+            const double amount = e.value(stage.amount);
+            const DeformationFrame<double> frame =
+                stage.fixed_frame ? stage.frame
+                                  : deformation_frame(std::array<double, 3>{
+                                        e.value(stage.axis[0]), e.value(stage.axis[1]),
+                                        e.value(stage.axis[2])});
+            // An inverse stage's Jacobian is the inverse of the forward one
+            // at the stage's output, its preimage.
+            const std::array<double, 3> at = stage.inverse ? e.through(stage, p, false) : p;
+            const glm::dvec3 x(at[0], at[1], at[2]);
+            switch (stage.kind) {
+                case StageKind::Twist: step = twist_jacobian(x, frame, amount); break;
+                case StageKind::Taper: step = taper_jacobian(x, frame, amount); break;
+                default: step = bend_jacobian(x, frame, amount); break;
+            }
+            if (stage.inverse) step = glm::inverse(step);
+        }
+        j = step * j;
+        p = e.through(stage, p, false);
+    }
+    return j;
+}
+
+}  // namespace hexant::runtime

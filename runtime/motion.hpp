@@ -1,0 +1,138 @@
+// An object's Transform compiled for the tracer: object-to-world and back at
+// a time (double), over a time interval (Interval bounds) and with
+// derivatives (Dual), for affine steps and Barr's deformations alike.
+//
+// The steps become a chain of stages. Consecutive affine steps collapse into
+// one stage: a constant stage keeps its matrix and inverse, computed once; a
+// moving stage keeps its steps, whose amounts come from one time tape shared
+// by the whole chain. Each deformation is a stage of its own. A transform
+// that is constant and affine is one matrix and nothing else: to_world is an
+// inline matrix product, with no tape, allocation or indirect call.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
+#include "runtime/deformation.hpp"
+#include "runtime/dual.hpp"
+#include "runtime/interval.hpp"
+#include "runtime/interval_matrix.hpp"
+#include "runtime/transform.hpp"
+
+namespace hexant::runtime {
+
+class TimeTape;
+
+class Motion {
+  public:
+    Motion() = default;  // the identity
+    explicit Motion(const Transform& transform);
+
+    // Nothing depends on time.
+    bool is_static() const { return tape_ == nullptr; }
+    // No deformation: one matrix at each time.
+    bool is_affine() const { return affine_; }
+    bool is_identity() const { return identity_; }
+
+    // Object to world at t, and back; only when is_affine().
+    glm::dmat4 matrix_at(double t) const;
+    glm::dmat4 inverse_at(double t) const;
+    // Entries that hold the matrix's entries at every time in t; only when
+    // is_affine(). Rotations use interval sines and cosines of the interval
+    // angle, so a short interval gives a thin enclosure.
+    IntervalAffine matrix_over(const Interval& t) const;
+
+    // Object to world and back, for N = double, Interval (enclosing every
+    // value over the boxes p and t) and Dual (p and t carrying derivatives
+    // with respect to one common parameter). to_object undoes to_world
+    // exactly where the deformations are one to one (see deformation.hpp).
+    template <class N>
+    std::array<N, 3> to_world(const std::array<N, 3>& p, const N& t) const {
+        if (fixed_affine_) return forward_.apply(p);
+        return to_world_general(p, t);
+    }
+    template <class N>
+    std::array<N, 3> to_object(const std::array<N, 3>& p, const N& t) const {
+        if (fixed_affine_) return backward_.apply(p);
+        return to_object_general(p, t);
+    }
+    glm::dvec3 to_world(const glm::dvec3& p, double t) const {
+        const auto r = to_world(std::array<double, 3>{p.x, p.y, p.z}, t);
+        return {r[0], r[1], r[2]};
+    }
+    glm::dvec3 to_object(const glm::dvec3& p, double t) const {
+        const auto r = to_object(std::array<double, 3>{p.x, p.y, p.z}, t);
+        return {r[0], r[1], r[2]};
+    }
+
+    // A box holding the images of all points of object_box at all times in
+    // t. For deformations the box is also cut into a few pieces, and the
+    // tighter of the two answers' intersection is returned.
+    IntervalVec3 world_box(const IntervalVec3& object_box, const Interval& t) const;
+
+    // d(world)/d(object) at an object point, from the analytic derivatives
+    // of each stage. A world normal is inverse-transpose(J) times the object
+    // normal.
+    glm::dmat3 jacobian_at(const glm::dvec3& object_point, double t) const;
+
+  private:
+    // A step's amount: a constant, or output `slot` of the tape.
+    struct Parameter {
+        double constant = 0.0;
+        int slot = -1;
+    };
+    struct Step {
+        TransformKind kind = TransformKind::Translate;
+        bool inverse = false;
+        std::array<Parameter, 12> p;  // vector in p[0..2]; Matrix uses all twelve
+    };
+    enum class StageKind : std::uint8_t { Fixed, Moving, Twist, Taper, Bend };
+    struct Stage {
+        StageKind kind = StageKind::Fixed;
+        AffineMap<double> forward = AffineMap<double>::identity();   // Fixed
+        AffineMap<double> backward = AffineMap<double>::identity();  // Fixed
+        std::vector<Step> steps;                                     // Moving
+        std::array<Parameter, 3> axis;                               // deformations ...
+        Parameter amount;
+        bool inverse = false;
+        bool fixed_frame = true;  // the axis is constant and `frame` holds its frame
+        DeformationFrame<double> frame;
+    };
+
+    template <class N>
+    friend struct MotionEvaluator;
+
+    template <class N>
+    std::array<N, 3> to_world_general(const std::array<N, 3>& p, const N& t) const;
+    template <class N>
+    std::array<N, 3> to_object_general(const std::array<N, 3>& p, const N& t) const;
+
+    bool fixed_affine_ = true;  // constant and affine: forward_ and backward_ are the map
+    bool affine_ = true;
+    bool identity_ = true;
+    AffineMap<double> forward_ = AffineMap<double>::identity();
+    AffineMap<double> backward_ = AffineMap<double>::identity();
+    std::vector<Stage> stages_;
+    std::shared_ptr<const TimeTape> tape_;  // every time-dependent amount; null when static
+};
+
+extern template std::array<double, 3> Motion::to_world_general(const std::array<double, 3>&,
+                                                               const double&) const;
+extern template std::array<Interval, 3> Motion::to_world_general(const std::array<Interval, 3>&,
+                                                                 const Interval&) const;
+extern template std::array<Dual, 3> Motion::to_world_general(const std::array<Dual, 3>&,
+                                                             const Dual&) const;
+extern template std::array<double, 3> Motion::to_object_general(const std::array<double, 3>&,
+                                                                const double&) const;
+extern template std::array<Interval, 3> Motion::to_object_general(const std::array<Interval, 3>&,
+                                                                  const Interval&) const;
+extern template std::array<Dual, 3> Motion::to_object_general(const std::array<Dual, 3>&,
+                                                              const Dual&) const;
+
+}  // namespace hexant::runtime

@@ -1,0 +1,242 @@
+// Motion (an object's compiled transform) against the plain Transform it was
+// built from: the same matrices at a time; interval bounds that hold every
+// point at every time of the interval, thin for short intervals; Barr's
+// deformations undone by their inverses; Jacobians that match finite
+// differences.
+#include "runtime/motion.hpp"
+
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <random>
+
+#include "runtime/deformation.hpp"
+#include "runtime/transform.hpp"
+
+using hexant::runtime::Interval;
+using hexant::runtime::IntervalVec3;
+using hexant::runtime::Motion;
+using hexant::runtime::TimeFunction;
+using hexant::runtime::Transform;
+using hexant::runtime::TransformKind;
+using hexant::runtime::TransformStep;
+using hexant::runtime::Vector3Function;
+
+namespace {
+
+struct Random {
+    std::mt19937_64 engine;
+    explicit Random(unsigned seed) : engine(seed) {}
+    double uniform(double lo, double hi) {
+        return std::uniform_real_distribution<double>(lo, hi)(engine);
+    }
+    int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(engine); }
+};
+
+TimeFunction clock_times(double rate, double offset = 0.0) {
+    return TimeFunction::clock() * TimeFunction(rate) + TimeFunction(offset);
+}
+
+TransformStep step(TransformKind kind, TimeFunction x, TimeFunction y, TimeFunction z,
+                   TimeFunction amount = TimeFunction(0.0)) {
+    TransformStep s{kind, Vector3Function{{x, y, z}}, {}, amount, false};
+    return s;
+}
+
+// A random step; moving ones change fast (rotations of several turns per
+// unit of time).
+TransformStep random_step(Random& r, bool moving) {
+    const auto value = [&](double lo, double hi) {
+        return moving && r.integer(0, 1) ? clock_times(r.uniform(lo, hi) * 4.0, r.uniform(lo, hi))
+                                         : TimeFunction(r.uniform(lo, hi));
+    };
+    switch (r.integer(0, 3)) {
+        case 0: return step(TransformKind::Translate, value(-5, 5), value(-5, 5), value(-5, 5));
+        case 1: return step(TransformKind::Rotate, value(-720, 720), value(-720, 720), value(-720, 720));
+        case 2: {
+            const auto positive = [&] { return TimeFunction(r.uniform(0.3, 3.0)); };
+            return step(TransformKind::Scale, positive(), positive(), positive());
+        }
+        default: {
+            TransformStep s = step(TransformKind::Matrix, 0.0, 0.0, 0.0);
+            for (int i = 0; i < 12; ++i)
+                s.matrix[i] = TimeFunction((i < 9 && i % 4 == 0 ? 1.0 : 0.0) + r.uniform(-0.4, 0.4));
+            if (moving) s.matrix[10] = clock_times(r.uniform(-3, 3));
+            return s;
+        }
+    }
+}
+
+double max_difference(const glm::dmat4& a, const glm::dmat4& b) {
+    double d = 0.0;
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) d = std::max(d, std::fabs(a[i][j] - b[i][j]));
+    return d;
+}
+
+bool holds(const IntervalVec3& box, const std::array<double, 3>& p) {
+    return box[0].contains(p[0]) && box[1].contains(p[1]) && box[2].contains(p[2]);
+}
+
+glm::dvec3 apply(const glm::dmat4& m, const glm::dvec3& p) {
+    return glm::dvec3(m * glm::dvec4(p, 1.0));
+}
+
+}  // namespace
+
+TEST_CASE("motion: identity, static and moving transforms are told apart", "[motion]") {
+    CHECK(Motion().is_identity());
+    CHECK(Motion().is_static());
+    Transform fixed;
+    fixed.append(step(TransformKind::Translate, 1.0, 2.0, 3.0));
+    const Motion f(fixed);
+    CHECK(f.is_static());
+    CHECK(f.is_affine());
+    CHECK_FALSE(f.is_identity());
+    Transform moving = fixed;
+    moving.append(step(TransformKind::Rotate, 0.0, clock_times(360.0), 0.0));
+    const Motion m(moving);
+    CHECK_FALSE(m.is_static());
+    CHECK(m.is_affine());
+    Transform bent = fixed;
+    bent.append(step(TransformKind::Bend, 0.0, 1.0, 0.0, 30.0));
+    const Motion b(bent);
+    CHECK(b.is_static());
+    CHECK_FALSE(b.is_affine());
+}
+
+TEST_CASE("motion: matrices equal the transform's at every time", "[motion]") {
+    Random r(3);
+    for (int trial = 0; trial < 500; ++trial) {
+        Transform transform;
+        const int steps = r.integer(1, 6);
+        const bool moving = trial % 3 != 0;
+        for (int i = 0; i < steps; ++i) {
+            TransformStep s = random_step(r, moving);
+            s.inverse = r.integer(0, 4) == 0;
+            transform.append(s);
+        }
+        const Motion motion(transform);
+        for (int k = 0; k < 5; ++k) {
+            const double t = r.uniform(-1.0, 2.0);
+            const glm::dmat4 expected = transform.matrix_at(t);
+            const glm::dmat4 m = motion.matrix_at(t);
+            const double size = 1.0 + max_difference(expected, glm::dmat4(0.0));
+            REQUIRE(max_difference(m, expected) <= 1e-12 * size);
+            const glm::dmat4 round_trip = motion.inverse_at(t) * m;
+            REQUIRE(max_difference(round_trip, glm::dmat4(1.0)) <= 1e-11 * size * size);
+            const glm::dvec3 p(r.uniform(-3, 3), r.uniform(-3, 3), r.uniform(-3, 3));
+            const glm::dvec3 w = motion.to_world(p, t);
+            REQUIRE(glm::length(w - apply(expected, p)) <= 1e-12 * size * 10.0);
+            REQUIRE(glm::length(motion.to_object(w, t) - p) <= 1e-10 * size * size);
+        }
+    }
+}
+
+TEST_CASE("motion: interval bounds hold every point at every time", "[motion]") {
+    Random r(5);
+    for (int trial = 0; trial < 400; ++trial) {
+        Transform transform;
+        const int steps = r.integer(1, 5);
+        for (int i = 0; i < steps; ++i) transform.append(random_step(r, true));
+        if (trial % 2 == 0) {
+            // A deformation among the affine steps, its amount moving too.
+            const int kind = r.integer(0, 2);
+            const TransformKind k = kind == 0 ? TransformKind::Twist
+                                    : kind == 1 ? TransformKind::Taper
+                                                : TransformKind::Bend;
+            const double rate = kind == 0 ? 720.0 : kind == 1 ? 0.2 : 20.0;
+            transform.append(step(k, r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1),
+                                  clock_times(r.uniform(-rate, rate), r.uniform(-rate, rate))));
+            transform.append(random_step(r, true));
+        }
+        const Motion motion(transform);
+        const double t0 = r.uniform(0.0, 1.0);
+        const Interval t(t0, t0 + r.uniform(0.0, 0.3));
+        const IntervalVec3 box{Interval(-1.0, r.uniform(-1.0, 1.0)), Interval(-0.5, 0.5),
+                               Interval(0.2, r.uniform(0.2, 2.0))};
+        const IntervalVec3 world = motion.world_box(box, t);
+        for (int k = 0; k < 300; ++k) {
+            const double tk = k == 0 ? t.lo : k == 1 ? t.hi : r.uniform(t.lo, t.hi);
+            const std::array<double, 3> p{r.uniform(box[0].lo, box[0].hi),
+                                          r.uniform(box[1].lo, box[1].hi),
+                                          r.uniform(box[2].lo, box[2].hi)};
+            REQUIRE(holds(world, motion.to_world(p, tk)));
+        }
+    }
+}
+
+TEST_CASE("motion: a short interval of a fast rotation gives a thin arc's box", "[motion]") {
+    Transform transform;
+    transform.append(step(TransformKind::Rotate, 0.0, clock_times(3600.0), 0.0));  // 10 turns
+    const Motion motion(transform);
+    const IntervalVec3 point{Interval(1.0), Interval(0.0), Interval(0.0)};
+    const IntervalVec3 arc = motion.world_box(point, Interval(0.0, 1e-4));  // 0.36 degrees
+    CHECK(arc[0].width() < 1e-4);
+    CHECK(arc[2].width() < 7e-3);  // the arc's chord, 2 pi 1e-4 * 10, plus rounding
+    const IntervalVec3 whole = motion.world_box(point, Interval(0.0, 1.0));
+    CHECK(whole[0].lo <= -1.0);
+    CHECK(whole[2].hi >= 1.0);
+}
+
+TEST_CASE("motion: deformations are undone by their inverses and their Jacobians are right",
+          "[motion]") {
+    Random r(9);
+    const TransformKind kinds[] = {TransformKind::Twist, TransformKind::Taper, TransformKind::Bend};
+    for (const TransformKind kind : kinds) {
+        for (int trial = 0; trial < 300; ++trial) {
+            // The deformation acts first, on points of the object's own
+            // space; the map is one to one there: twists of up to 30 turns per
+            // unit, tapers with 1 + m a > 0 and bends with 1 - k s > 0 and
+            // |k a| < pi over the points drawn (|p| < 0.96).
+            Transform transform;
+            const double amount = kind == TransformKind::Twist   ? r.uniform(-10800.0, 10800.0)
+                                  : kind == TransformKind::Taper ? r.uniform(-0.9, 0.9)
+                                                                 : r.uniform(-50.0, 50.0);
+            glm::dvec3 axis(r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1));
+            if (trial % 10 == 0) axis = {0.0, 1.0, 0.0};
+            transform.append(step(kind, axis.x, axis.y, axis.z, clock_times(0.0, amount)));
+            transform.append(random_step(r, false));
+            const Motion motion(transform);
+            REQUIRE_FALSE(motion.is_affine());
+            const glm::dvec3 p = glm::dvec3(r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)) *
+                                 0.55;
+            const double t = r.uniform(0.0, 1.0);
+            const glm::dvec3 w = motion.to_world(p, t);
+            const glm::dvec3 back = motion.to_object(w, t);
+            INFO("amount " << amount << " point " << p.x << ' ' << p.y << ' ' << p.z);
+            REQUIRE(glm::length(back - p) <= 1e-9);
+            // The Jacobian against central differences.
+            const glm::dmat3 j = motion.jacobian_at(p, t);
+            const double h = 1e-6;
+            for (int c = 0; c < 3; ++c) {
+                glm::dvec3 e(0.0);
+                e[c] = h;
+                const glm::dvec3 diff = (motion.to_world(p + e, t) - motion.to_world(p - e, t)) /
+                                        (2.0 * h);
+                const double scale = 1.0 + glm::length(diff);
+                REQUIRE(glm::length(diff - j[c]) <= 1e-5 * scale * (1.0 + std::fabs(amount) / 100.0));
+            }
+        }
+    }
+}
+
+TEST_CASE("motion: an inverse deformation step inverts the deformation", "[motion]") {
+    Transform forward;
+    forward.append(step(TransformKind::Twist, 0.0, 1.0, 0.0, 90.0));
+    TransformStep undo = forward.steps().front();
+    undo.inverse = true;
+    Transform both = forward;
+    both.append(undo);
+    const Motion motion(both);
+    const glm::dvec3 p(0.3, 0.7, -0.2);
+    CHECK(glm::length(motion.to_world(p, 0.0) - p) < 1e-15);
+    const glm::dmat3 j = motion.jacobian_at(p, 0.0);
+    for (int c = 0; c < 3; ++c)
+        for (int k = 0; k < 3; ++k) CHECK(j[c][k] == Approx(c == k ? 1.0 : 0.0).margin(1e-14));
+    // A quarter turn per unit along y: the point at height 1 turns by 90 degrees.
+    const Motion twist(forward);
+    const glm::dvec3 q = twist.to_world(glm::dvec3(1.0, 1.0, 0.0), 0.0);
+    CHECK(std::fabs(q.y - 1.0) < 1e-15);
+    CHECK(std::hypot(q.x, q.z) == Approx(1.0).epsilon(1e-15));
+    CHECK(std::fabs(q.x) < 1e-15);
+}
