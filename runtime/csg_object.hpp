@@ -1,0 +1,43 @@
+// Groups and constructive solid geometry over intelligent objects: union,
+// merge, intersection and difference. The children already carry the
+// group's transform (the factory composes it into each), so a group only
+// combines its children's answers.
+#pragma once
+
+#include <vector>
+
+#include "runtime/intelligent_object.hpp"
+#include "runtime/shapes.hpp"
+
+namespace hexant::runtime {
+
+class CsgObject final : public IntelligentObject {
+public:
+    CsgObject(Csg::Kind kind, std::vector<IntelligentObjectPtr> children, bool inverse);
+
+    bool bounded() const override;
+    // A union answers with its children's bounds (several, each tight); an
+    // intersection with the smallest bounded child's; a difference with its
+    // first child's: every surface event of the result lies in those.
+    void bound(const Box4& region, std::vector<SlabBound>& out) const override;
+    std::optional<ObjectHit> intersect(const Ray4& ray, double s_min,
+                                       double s_max) const override;
+    SurfacePoint complete(const Ray4& ray, const ObjectHit& hit) const override;
+    bool inside(const Event& event) const override;
+    double occupancy(const Box4& region) const override;
+    bool moves() const override;
+    bool deformed() const override;
+
+    Csg::Kind kind() const { return kind_; }
+    const std::vector<IntelligentObjectPtr>& children() const { return children_; }
+
+private:
+    // Is a hit on child `index` a surface of the combined solid?
+    bool keeps(std::size_t index, const Event& event) const;
+
+    Csg::Kind kind_;
+    std::vector<IntelligentObjectPtr> children_;
+    bool inverse_;
+};
+
+}  // namespace hexant::runtime

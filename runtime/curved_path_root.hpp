@@ -1,0 +1,81 @@
+// The first place where a curved path meets a surface: the root finder for
+// deformed objects (a straight world ray is a curve in undeformed object
+// space) and for rays that travel in time through a moving frame.
+//
+// Bisection on interval bounds, nearest piece first: a piece of the path
+// whose interval box the surface cannot meet is dropped, any other piece is
+// halved, so no root is skipped; once a piece's box is small against the
+// object's size, the path inside it is straight to far below that size (its
+// deviation from the chord is second order), and the exact straight-ray
+// routine solves on the chord. No fixed-step marching.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <utility>
+
+#include "runtime/geometry/ray3.hpp"
+#include "runtime/interval.hpp"
+
+namespace hexant::runtime {
+
+struct CurvedPathHit {
+    double s;                      // the path's parameter at the hit
+    geometry::SurfaceHit surface;  // the chord's hit (its s is the chord's own parameter)
+};
+
+// Stops halving when a piece's box is this small against the object's size:
+// a relative width, so it holds for objects of any scale. The chord then
+// misses the curve by about (curvature * piece length^2), far below 1e-12 of
+// the size for any deformation the map's limits allow.
+inline constexpr double kCurvedPathRelativeWidth = 1e-6;
+// A hard limit on pieces examined, so a pathological path cannot hang the
+// tracer; reaching it means a miss (counted by the caller's tests).
+inline constexpr int kCurvedPathMaxPieces = 1 << 16;
+
+// box_over(Interval s) -> geometry::Box3 holding the path over s;
+// point_at(double s) -> glm::dvec3 on the path;
+// may_meet(Box3, Interval s) -> bool, false only if the surface has no point
+// in the box (at the path's times over s, when the surface moves);
+// chord_hit(Ray3, double u_min, double u_max, Interval s) -> optional<SurfaceHit>.
+template <class BoxOver, class PointAt, class MayMeet, class ChordHit>
+std::optional<CurvedPathHit> first_hit_on_curve(double s_min, double s_max, double object_size,
+                                                BoxOver&& box_over, PointAt&& point_at,
+                                                MayMeet&& may_meet, ChordHit&& chord_hit) {
+    if (!(s_min < s_max) || !std::isfinite(s_min) || !std::isfinite(s_max)) return std::nullopt;
+    const double stop_width = kCurvedPathRelativeWidth * object_size;
+    // A small explicit stack: depth grows with log2 of (path length / stop width).
+    std::pair<double, double> stack[256];
+    int top = 0;
+    stack[top++] = {s_min, s_max};
+    int examined = 0;
+    while (top > 0 && examined < kCurvedPathMaxPieces) {
+        const auto [a, b] = stack[--top];
+        ++examined;
+        const geometry::Box3 box = box_over(Interval(a, b));
+        if (!may_meet(box, Interval(a, b))) continue;
+        const glm::dvec3 extent = box.hi - box.lo;
+        const double width = std::max({extent.x, extent.y, extent.z});
+        const double mid = 0.5 * (a + b);
+        const bool tiny = width <= stop_width || !(a < mid && mid < b) || top >= 254;
+        if (!tiny) {
+            stack[top++] = {mid, b};  // far half examined last
+            stack[top++] = {a, mid};
+            continue;
+        }
+        const glm::dvec3 p0 = point_at(a), p1 = point_at(b);
+        const geometry::Ray3 chord{p0, p1 - p0};
+        // The chord's own parameter runs over [0, 1]; a hit exactly at a
+        // piece's end belongs to both neighbours, so accept the closed range.
+        const double below = std::nextafter(0.0, -1.0);
+        if (auto hit = chord_hit(chord, below, std::nextafter(1.0, 2.0), Interval(a, b))) {
+            const double u = std::clamp(hit->s, 0.0, 1.0);
+            const double s = std::clamp(a + u * (b - a), a, b);
+            if (s > s_min && s < s_max) return CurvedPathHit{s, *hit};
+        }
+    }
+    return std::nullopt;
+}
+
+}  // namespace hexant::runtime

@@ -1,0 +1,87 @@
+// The messages an object answers for the tracer, after Glassner's
+// "intelligent objects": each object knows its own motion and deformation and
+// answers, for itself, where it may be (bound), where a ray meets it
+// (intersect), what it looks like there (complete) and how much of a region
+// it fills (occupancy). Nothing here knows the hierarchy.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "runtime/material_sample.hpp"
+#include "runtime/slab_bound.hpp"
+#include "runtime/spacetime.hpp"
+
+namespace hexant::runtime {
+
+class IntelligentObject;
+
+// A surface event found by intersect(): enough for complete() to finish the
+// job without solving again.
+struct ObjectHit {
+    double s = 0.0;  // ray parameter: the event is ray.at(s)
+    Event event{};
+    const IntelligentObject* object = nullptr;  // the primitive hit (inside groups too)
+    glm::dvec3 object_point{};   // in the primitive's own (undeformed) space
+    glm::dvec3 object_normal{};  // geometric normal there, unit
+    glm::dvec3 object_shading_normal{};
+    glm::dvec2 uv{};
+    int part = 0;  // which face, cap or side (per shape kind)
+    // The normal points into the solid the scene sees (a difference's cut,
+    // an `inverse` object): complete() turns it around.
+    bool flipped = false;
+};
+
+// What complete() returns: world-space normals at the hit's time, texture
+// coordinates and the material evaluated at the hit's time and place.
+struct SurfacePoint {
+    Event event{};
+    glm::dvec3 geometric_normal{};  // unit; for solids outward, for flat shapes their own side
+    glm::dvec3 shading_normal{};    // unit; faces the same side as geometric_normal
+    glm::dvec2 uv{};
+    MaterialSample material;
+};
+
+class IntelligentObject {
+public:
+    virtual ~IntelligentObject() = default;
+
+    // False for objects without a finite extent (a plane): the tracer keeps
+    // them outside the hierarchy and tests them on every ray.
+    virtual bool bounded() const { return true; }
+
+    // Appends to `out` one or more 12-slab bounds that together contain every
+    // surface event of the object inside `region`. Conservative always; an
+    // object whose surface has no event in the region may append nothing.
+    virtual void bound(const Box4& region, std::vector<SlabBound>& out) const = 0;
+
+    // The first surface event along `ray` with s_min < s < s_max.
+    virtual std::optional<ObjectHit> intersect(const Ray4& ray, double s_min,
+                                               double s_max) const = 0;
+
+    // Normals, texture coordinates and material at a hit this object returned.
+    virtual SurfacePoint complete(const Ray4& ray, const ObjectHit& hit) const = 0;
+
+    // Is the event inside the object's solid (POV-Ray's inside, with
+    // `inverse`)? Flat objects have no inside.
+    virtual bool inside(const Event& event) const = 0;
+
+    // The fraction of the region's 4D volume that the object's solid fills,
+    // in [0, 1]; for the hierarchy's density criterion.
+    virtual double occupancy(const Box4& region) const = 0;
+
+    // Does anything about the object change with time?
+    virtual bool moves() const = 0;
+    // Is its map to world space non-affine (twist, taper, bend)?
+    virtual bool deformed() const = 0;
+    // Does it cast shadows (no no_shadow)?
+    virtual bool casts_shadow() const { return true; }
+};
+
+using IntelligentObjectPtr = std::unique_ptr<IntelligentObject>;
+
+}  // namespace hexant::runtime

@@ -1,0 +1,26 @@
+// A texture evaluated at one event: plain numbers for the shader. Colours
+// are linear (assumed_gamma 1.0), as POV-Ray holds them.
+#pragma once
+
+#include <glm/vec3.hpp>
+
+namespace hexant::runtime {
+
+struct MaterialSample {
+    glm::dvec3 colour{0.0};  // the pigment's red, green, blue
+    double filter = 0.0;
+    double transmit = 0.0;
+    // POV-Ray 3.7's finish, at the event's time.
+    double ambient = 0.1;
+    double diffuse = 0.6;
+    double brilliance = 1.0;
+    double phong = 0.0;
+    double phong_size = 40.0;
+    double specular = 0.0;
+    double roughness = 0.05;
+    glm::dvec3 reflection{0.0};
+    double emission = 0.0;
+    double ior = 1.0;  // the interior's index of refraction
+};
+
+}  // namespace hexant::runtime

@@ -1,0 +1,105 @@
+#include "runtime/object_factory.hpp"
+
+#include <optional>
+#include <type_traits>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include "runtime/csg_object.hpp"
+#include "runtime/object_error.hpp"
+#include "runtime/objects/box_model.hpp"
+#include "runtime/objects/cylinder_model.hpp"
+#include "runtime/objects/disc_model.hpp"
+#include "runtime/objects/plane_model.hpp"
+#include "runtime/objects/polygon_model.hpp"
+#include "runtime/objects/prism_model.hpp"
+#include "runtime/objects/sphere_model.hpp"
+#include "runtime/objects/torus_model.hpp"
+#include "runtime/objects/triangle_model.hpp"
+#include "runtime/primitive.hpp"
+
+namespace hexant::runtime {
+
+namespace {
+
+// What a group hands down to its children, already in world terms.
+struct Inherited {
+    Transform to_world;  // the group's object space to the world
+    std::optional<Texture> texture;
+    std::optional<Interior> interior;
+    bool no_shadow = false;
+};
+
+template <class Model, class Shape>
+IntelligentObjectPtr make_primitive(const Shape& shape, const Transform& to_world,
+                                    TextureEvaluator texture, PrimitiveOptions options) {
+    return std::make_unique<Primitive<Model>>(Model(shape), to_world, std::move(texture), options);
+}
+
+IntelligentObjectPtr build(const ObjectRecord& record, const Inherited& parent) {
+    Transform to_world = record.transform;
+    to_world.append(parent.to_world);
+    std::optional<Texture> texture = parent.texture;
+    if (record.texture) {
+        // The record's texture maps to the record's parent space.
+        texture = *record.texture;
+        texture->transform.append(parent.to_world);
+    }
+    const std::optional<Interior> interior = record.interior ? record.interior : parent.interior;
+    const bool no_shadow = record.no_shadow || parent.no_shadow;
+
+    if (const auto* csg = std::get_if<Csg>(&record.shape)) {
+        const Inherited down{to_world, texture, interior, no_shadow};
+        std::vector<IntelligentObjectPtr> children;
+        children.reserve(csg->children.size());
+        for (const auto& child : csg->children) children.push_back(build(*child, down));
+        return std::make_unique<CsgObject>(csg->kind, std::move(children), record.inverse);
+    }
+    if (std::holds_alternative<Plane>(record.shape) && to_world.has_deformation())
+        throw ObjectError(record.place,
+                          "a plane cannot be twisted, tapered or bent (it has no bound to "
+                          "search in); deform a box or a polygon instead");
+
+    TextureEvaluator evaluator(*texture, interior);
+    const PrimitiveOptions options{record.inverse, no_shadow};
+    return std::visit(
+        [&](const auto& shape) -> IntelligentObjectPtr {
+            using S = std::decay_t<decltype(shape)>;
+            if constexpr (std::is_same_v<S, Sphere>)
+                return make_primitive<objects::SphereModel>(shape, to_world, evaluator, options);
+            else if constexpr (std::is_same_v<S, Box>)
+                return make_primitive<objects::BoxModel>(shape, to_world, evaluator, options);
+            else if constexpr (std::is_same_v<S, Plane>)
+                return make_primitive<objects::PlaneModel>(shape, to_world, evaluator, options);
+            else if constexpr (std::is_same_v<S, Polygon>)
+                return make_primitive<objects::PolygonModel>(shape, to_world, evaluator, options);
+            else if constexpr (std::is_same_v<S, Triangle>)
+                return make_primitive<objects::TriangleModel>(shape, to_world, evaluator, options);
+            else if constexpr (std::is_same_v<S, SmoothTriangle>)
+                return make_primitive<objects::SmoothTriangleModel>(shape, to_world, evaluator,
+                                                                    options);
+            else if constexpr (std::is_same_v<S, Disc>)
+                return make_primitive<objects::DiscModel>(shape, to_world, evaluator, options);
+            else if constexpr (std::is_same_v<S, Cylinder>)
+                return make_primitive<objects::CylinderModel>(shape, to_world, evaluator, options);
+            else if constexpr (std::is_same_v<S, Cone>)
+                return make_primitive<objects::ConeModel>(shape, to_world, evaluator, options);
+            else if constexpr (std::is_same_v<S, Torus>)
+                return make_primitive<objects::TorusModel>(shape, to_world, evaluator, options);
+            else if constexpr (std::is_same_v<S, Prism>)
+                return make_primitive<objects::PrismModel>(shape, to_world, evaluator, options);
+            else
+                throw std::logic_error("make_intelligent_object: CSG handled above");
+        },
+        record.shape);
+}
+
+}  // namespace
+
+IntelligentObjectPtr make_intelligent_object(const ObjectRecord& record,
+                                             const Texture& default_texture) {
+    return build(record, Inherited{Transform{}, default_texture, std::nullopt, false});
+}
+
+}  // namespace hexant::runtime

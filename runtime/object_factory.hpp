@@ -1,0 +1,19 @@
+// From the language's object records to the tracer's intelligent objects:
+// one Primitive per shape, CsgObject for groups. A group's transform,
+// texture, interior and no_shadow pass down into its children here, so that
+// every primitive carries its whole object-to-world map and a group only
+// combines its children's answers.
+#pragma once
+
+#include "runtime/intelligent_object.hpp"
+#include "runtime/object.hpp"
+
+namespace hexant::runtime {
+
+// Throws ObjectError (naming where the object was written) for what the
+// tracer cannot do: an unsupported pigment pattern in use, a deformed plane.
+// `default_texture` is the scene's (#default) for objects that have none.
+IntelligentObjectPtr make_intelligent_object(const ObjectRecord& record,
+                                             const Texture& default_texture = Texture{});
+
+}  // namespace hexant::runtime

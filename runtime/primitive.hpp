@@ -1,0 +1,280 @@
+// One shape as an intelligent object: a model (the shape's time functions,
+// runtime/objects/*_model.hpp), its motion (transforms and deformations) and
+// its texture. The paths are chosen once per call by what the object uses:
+//   - static and undeformed: the cached geometry and inverse matrix, one
+//     plain ray/shape routine (no tape, no time);
+//   - moving, undeformed, ray at one instant: the geometry and matrices at
+//     the ray's time, the same routine;
+//   - deformed, or a ray that travels in time through a moving object: the
+//     ray's curved image in object space, solved by first_hit_on_curve
+//     (interval bisection, no root skipped).
+#pragma once
+
+#include <algorithm>
+#include <optional>
+#include <utility>
+
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+
+#include "runtime/curved_path_root.hpp"
+#include "runtime/intelligent_object.hpp"
+#include "runtime/motion.hpp"
+#include "runtime/normal_transform.hpp"
+#include "runtime/objects/model_support.hpp"
+#include "runtime/occupancy_sampling.hpp"
+#include "runtime/ray_box_clip.hpp"
+#include "runtime/swept_bound.hpp"
+#include "runtime/texture_evaluator.hpp"
+
+namespace hexant::runtime {
+
+struct PrimitiveOptions {
+    bool inverse = false;    // POV-Ray's `inverse`: inside and outside swapped
+    bool no_shadow = false;  // casts no shadow
+};
+
+template <class Model>
+constexpr bool is_unbounded_model() {
+    if constexpr (requires { Model::kUnbounded; })
+        return Model::kUnbounded;
+    else
+        return false;
+}
+
+template <class Model>
+class Primitive final : public IntelligentObject {
+public:
+    using Geometry = typename Model::Geometry;
+    static constexpr bool kUnbounded = is_unbounded_model<Model>();
+
+    Primitive(Model model, const Transform& transform, TextureEvaluator texture,
+              PrimitiveOptions options)
+        : model_(std::move(model)), motion_(transform), texture_(std::move(texture)),
+          options_(options) {
+        moves_ = !model_.is_static() || !motion_.is_static();
+        if (model_.is_static()) {
+            static_geometry_ = model_.at(0.0);
+            if constexpr (!kUnbounded)
+                static_object_box_ =
+                    objects::to_interval_box(geometry::object_bounds(*static_geometry_));
+        }
+        if constexpr (!kUnbounded)
+            if (!moves_) static_world_box_ = world_box_over(Interval(0.0));
+    }
+
+    bool bounded() const override { return !kUnbounded; }
+    bool moves() const override { return moves_; }
+    bool deformed() const override { return !motion_.is_affine(); }
+    bool casts_shadow() const override { return !options_.no_shadow; }
+
+    void bound(const Box4& region, std::vector<SlabBound>& out) const override {
+        if constexpr (kUnbounded) return;
+        if (region.is_empty()) return;
+        if (!moves_) {
+            const Box4 piece = piece_box(static_world_box_, region.time(), region);
+            if (piece.is_empty()) return;
+            SlabBound b = SlabBound::empty();
+            b.add(piece);
+            b.clip(region);
+            if (!b.is_empty()) out.push_back(b);
+            return;
+        }
+        std::vector<Box4> pieces;
+        swept_pieces(
+            region, region.time(), 0, [this](const Interval& t) { return world_box_over(t); },
+            pieces);
+        append_swept_bounds(pieces, region, out);
+    }
+
+    std::optional<ObjectHit> intersect(const Ray4& ray, double s_min,
+                                       double s_max) const override {
+        if (!(s_min < s_max)) return std::nullopt;
+        const bool one_instant = ray.direction.w == 0.0 || !moves_;
+        if (motion_.is_affine() && (one_instant || kUnbounded))
+            return intersect_affine(ray, s_min, s_max);
+        return intersect_curved(ray, s_min, s_max);
+    }
+
+    SurfacePoint complete(const Ray4& ray, const ObjectHit& hit) const override {
+        const double t = hit.event.w;
+        const glm::dmat3 linear = motion_.is_affine()
+                                      ? glm::dmat3(motion_.matrix_at(t))
+                                      : motion_.jacobian_at(hit.object_point, t);
+        glm::dvec3 facing = -glm::dvec3(ray.direction);
+        const double length = glm::length(facing);
+        facing = length > 0.0 && std::isfinite(length) ? facing / length : glm::dvec3(0, 1, 0);
+        SurfacePoint p;
+        p.event = hit.event;
+        p.geometric_normal = transform_normal(linear, hit.object_normal, facing);
+        p.shading_normal = transform_normal(linear, hit.object_shading_normal, p.geometric_normal);
+        if (hit.flipped) {
+            p.geometric_normal = -p.geometric_normal;
+            p.shading_normal = -p.shading_normal;
+        }
+        p.uv = hit.uv;
+        p.material = texture_.at(glm::dvec3(hit.event), t);
+        return p;
+    }
+
+    bool inside(const Event& event) const override {
+        if constexpr (!Model::kSolid) {
+            return false;  // flat shapes have no inside, `inverse` or not
+        } else {
+            const double t = event.w;
+            const glm::dvec3 p = to_object(glm::dvec3(event), t);
+            const bool in = static_geometry_ ? geometry::inside(*static_geometry_, p)
+                                             : geometry::inside(model_.at(t), p);
+            return in != options_.inverse;
+        }
+    }
+
+    double occupancy(const Box4& region) const override {
+        if constexpr (!Model::kSolid) return 0.0;
+        if (region.is_empty() || !(region.volume() > 0.0)) return 0.0;
+        const auto inside_at = [this](const Event& e) { return inside(e); };
+        if (options_.inverse || kUnbounded) return sampled_occupancy(region, inside_at);
+        const Box4 near = piece_box(world_box_over(region.time()), region.time(), region);
+        if (near.is_empty()) return 0.0;
+        const double share = near.volume() / region.volume();
+        if (!moves_ && motion_.is_affine() && contains_box(region, near)) {
+            // Exact: the whole solid lies in the region at every instant.
+            const double volume = Model::volume(*static_geometry_);
+            if (volume >= 0.0) {
+                const double det = std::fabs(glm::determinant(glm::dmat3(motion_.matrix_at(0.0))));
+                const glm::dvec4 e = region.hi - region.lo;
+                return std::clamp(volume * det / (e.x * e.y * e.z), 0.0, 1.0);
+            }
+        }
+        if (!(near.volume() > 0.0)) return 0.0;
+        return share * sampled_occupancy(near, inside_at);
+    }
+
+private:
+    static bool contains_box(const Box4& outer, const Box4& inner) {
+        for (int i = 0; i < 3; ++i)
+            if (inner.lo[i] < outer.lo[i] || inner.hi[i] > outer.hi[i]) return false;
+        return true;
+    }
+
+    // A conservative world box of the surface over every instant of t.
+    objects::IntervalBox world_box_over(const Interval& t) const {
+        const objects::IntervalBox object_box =
+            model_.is_static() ? static_object_box_ : model_.box_over(t);
+        return motion_.world_box(object_box, t);
+    }
+
+    glm::dvec3 to_object(const glm::dvec3& p, double t) const {
+        if (motion_.is_identity()) return p;
+        if (motion_.is_affine()) return glm::dvec3(motion_.inverse_at(t) * glm::dvec4(p, 1.0));
+        const auto q = motion_.template to_object<double>({p.x, p.y, p.z}, t);
+        return {q[0], q[1], q[2]};
+    }
+
+    glm::dvec3 to_world(const glm::dvec3& p, double t) const {
+        if (motion_.is_identity()) return p;
+        if (motion_.is_affine()) return glm::dvec3(motion_.matrix_at(t) * glm::dvec4(p, 1.0));
+        const auto q = motion_.template to_world<double>({p.x, p.y, p.z}, t);
+        return {q[0], q[1], q[2]};
+    }
+
+    ObjectHit make_hit(const Ray4& ray, double s, const geometry::SurfaceHit& surface) const {
+        ObjectHit hit;
+        hit.s = s;
+        const double t = ray.origin.w + s * ray.direction.w;
+        // The world point from the surface point (exact to the surface's own
+        // ulps), not from the ray, whose origin may lie far away.
+        hit.event = Event(to_world(surface.point, t), t);
+        hit.object = this;
+        hit.object_point = surface.point;
+        hit.object_normal = surface.normal;
+        hit.object_shading_normal = surface.shading_normal;
+        hit.uv = surface.uv;
+        hit.part = surface.part;
+        hit.flipped = options_.inverse;
+        return hit;
+    }
+
+    std::optional<ObjectHit> intersect_affine(const Ray4& ray, double s_min, double s_max) const {
+        const double t = ray.origin.w;
+        geometry::Ray3 local{glm::dvec3(ray.origin), glm::dvec3(ray.direction)};
+        if (!motion_.is_identity()) {
+            const glm::dmat4 inverse = motion_.inverse_at(t);
+            local.origin = glm::dvec3(inverse * glm::dvec4(local.origin, 1.0));
+            local.direction = glm::dmat3(inverse) * local.direction;
+        }
+        const auto surface = static_geometry_
+                                 ? geometry::intersect(*static_geometry_, local, s_min, s_max)
+                                 : geometry::intersect(model_.at(t), local, s_min, s_max);
+        if (!surface) return std::nullopt;
+        return make_hit(ray, surface->s, *surface);
+    }
+
+    // The ray's image in object space is a curve: the deformation bends it,
+    // or the ray's time runs along it through a moving frame.
+    std::optional<ObjectHit> intersect_curved(const Ray4& ray, double s_min, double s_max) const {
+        const glm::dvec3 o(ray.origin), d(ray.direction);
+        const double ow = ray.origin.w, dw = ray.direction.w;
+        const auto time_over = [&](const Interval& s) {
+            return dw == 0.0 ? Interval(ow) : Interval(ow) + s * Interval(dw);
+        };
+        // Only a finite stretch of time can be bounded: a ray travelling in
+        // time needs a finite segment (the tracer's cells give one).
+        const Interval ray_time = time_over(Interval(s_min, s_max));
+        if (!std::isfinite(ray_time.lo) || !std::isfinite(ray_time.hi)) return std::nullopt;
+        double a = s_min, b = s_max;
+        if (!clip_ray_to_box(o, d, world_box_over(ray_time), a, b)) return std::nullopt;
+        const objects::IntervalBox object_box =
+            model_.is_static() ? static_object_box_ : model_.box_over(ray_time);
+        const double size = largest_width(object_box);
+        if (!std::isfinite(size)) return std::nullopt;
+
+        // The surface is one fixed geometry unless it changes along the ray.
+        const bool fixed = model_.is_static() || dw == 0.0;
+        std::optional<Geometry> fixed_geometry;
+        if (fixed) fixed_geometry = static_geometry_ ? *static_geometry_ : model_.at(ow);
+
+        const auto box_over = [&](const Interval& s) {
+            const std::array<Interval, 3> world{Interval(o.x) + s * Interval(d.x),
+                                                Interval(o.y) + s * Interval(d.y),
+                                                Interval(o.z) + s * Interval(d.z)};
+            const auto q = motion_.template to_object<Interval>(world, time_over(s));
+            return geometry::Box3{{q[0].lo, q[1].lo, q[2].lo}, {q[0].hi, q[1].hi, q[2].hi}};
+        };
+        const auto point_at = [&](double s) {
+            const auto q = motion_.template to_object<double>(
+                {o.x + s * d.x, o.y + s * d.y, o.z + s * d.z}, ow + s * dw);
+            return glm::dvec3(q[0], q[1], q[2]);
+        };
+        const auto may_meet = [&](const geometry::Box3& box, const Interval& s) {
+            if (fixed) return geometry::surface_may_meet(*fixed_geometry, box);
+            // The surface at the piece's middle time, and the box widened by
+            // how far the surface moves during the piece.
+            const Interval t = time_over(s);
+            const Geometry mid = model_.at(t.mid());
+            const double r = model_.surface_motion(t, mid);
+            const glm::dvec3 widen(r);
+            return geometry::surface_may_meet(mid, geometry::Box3{box.lo - widen, box.hi + widen});
+        };
+        const auto chord_hit = [&](const geometry::Ray3& chord, double u0, double u1,
+                                   const Interval& s) {
+            if (fixed) return geometry::intersect(*fixed_geometry, chord, u0, u1);
+            return geometry::intersect(model_.at(time_over(s).mid()), chord, u0, u1);
+        };
+        const auto found = first_hit_on_curve(a, b, size, box_over, point_at, may_meet, chord_hit);
+        if (!found || !(found->s > s_min && found->s < s_max)) return std::nullopt;
+        return make_hit(ray, found->s, found->surface);
+    }
+
+    Model model_;
+    Motion motion_;
+    TextureEvaluator texture_;
+    PrimitiveOptions options_;
+    bool moves_ = false;
+    std::optional<Geometry> static_geometry_;
+    objects::IntervalBox static_object_box_{};
+    objects::IntervalBox static_world_box_{};
+};
+
+}  // namespace hexant::runtime

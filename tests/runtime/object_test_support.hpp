@@ -1,0 +1,270 @@
+// Shared helpers of the intelligent-object tests: scenes parsed from SDL
+// text, and an independent reference for where an object's surface is.
+//
+// The reference never calls the code under test. It evaluates the record's
+// time functions with TimeFunction itself (the tree, not the tape), samples
+// each shape kind's surface from its own parametrisation, and maps to the
+// world step by step: TransformStep::matrix_at for the affine steps, and
+// Barr's deformations written geometrically (Rodrigues' rotation for twist,
+// the circle of radius 1/k for bend), not in the frame-and-series form of
+// runtime/deformation.hpp.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <memory>
+#include <random>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "language/interpreter.hpp"
+#include "runtime/intelligent_object.hpp"
+#include "runtime/object.hpp"
+#include "runtime/object_factory.hpp"
+#include "runtime/scene.hpp"
+
+namespace object_test {
+
+namespace rt = hexant::runtime;
+
+inline constexpr double kPi = 3.14159265358979323846;
+inline constexpr double kDegree = kPi / 180.0;
+
+class Random {
+  public:
+    explicit Random(std::uint64_t seed) : engine_(seed) {}
+    double uniform(double lo = 0.0, double hi = 1.0) {
+        return std::uniform_real_distribution<double>(lo, hi)(engine_);
+    }
+    int integer(int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(engine_); }
+    glm::dvec3 unit_vector() {
+        const double z = uniform(-1.0, 1.0), phi = uniform(0.0, 2.0 * kPi);
+        const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+        return {r * std::cos(phi), r * std::sin(phi), z};
+    }
+
+  private:
+    std::mt19937_64 engine_;
+};
+
+// A scene and its objects. The animation has two frames, so that `clock`
+// stays a function of time (a single frame fixes it at 0).
+struct Parsed {
+    rt::SceneDescription scene;
+    std::vector<rt::IntelligentObjectPtr> objects;
+};
+
+inline Parsed parse(const std::string& sdl) {
+    hexant::language::ParseOptions options;
+    options.animation.initial_frame = 1;
+    options.animation.final_frame = 2;
+    Parsed parsed{hexant::language::parse_scene_text(sdl, "object-test.pov", options), {}};
+    for (const auto& record : parsed.scene.objects)
+        parsed.objects.push_back(rt::make_intelligent_object(*record, parsed.scene.default_texture));
+    return parsed;
+}
+
+inline glm::dvec3 vec(const rt::Vector3Function& f, double t) {
+    return f(t);
+}
+
+// An orthonormal pair perpendicular to a unit vector.
+inline void perpendicular_pair(const glm::dvec3& n, glm::dvec3& u, glm::dvec3& v) {
+    const glm::dvec3 helper = std::fabs(n.x) < 0.6 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+    u = glm::normalize(glm::cross(n, helper));
+    v = glm::cross(n, u);
+}
+
+// A point of a convex outline's inside: a random point of a random fan
+// triangle (the test scenes' polygons and prisms are convex).
+inline glm::dvec3 in_convex_fan(const std::vector<glm::dvec3>& outline, Random& random) {
+    const std::size_t n = outline.size();
+    const std::size_t i = 1 + static_cast<std::size_t>(random.integer(0, static_cast<int>(n) - 3));
+    double a = random.uniform(), b = random.uniform();
+    if (a + b > 1.0) {
+        a = 1.0 - a;
+        b = 1.0 - b;
+    }
+    return outline[0] + a * (outline[i] - outline[0]) + b * (outline[i + 1] - outline[0]);
+}
+
+// A random point of the shape's surface at time t, in object space.
+inline glm::dvec3 sample_object_surface(const rt::Shape& shape, double t, Random& random) {
+    if (const auto* s = std::get_if<rt::Sphere>(&shape))
+        return vec(s->center, t) + s->radius(t) * random.unit_vector();
+    if (const auto* b = std::get_if<rt::Box>(&shape)) {
+        const glm::dvec3 c1 = vec(b->corner1, t), c2 = vec(b->corner2, t);
+        const glm::dvec3 lo = glm::min(c1, c2), hi = glm::max(c1, c2);
+        glm::dvec3 p(random.uniform(lo.x, hi.x), random.uniform(lo.y, hi.y),
+                     random.uniform(lo.z, hi.z));
+        const int face = random.integer(0, 5);
+        p[face % 3] = face < 3 ? lo[face % 3] : hi[face % 3];
+        return p;
+    }
+    if (const auto* p = std::get_if<rt::Polygon>(&shape)) {
+        std::vector<glm::dvec3> outline;
+        for (std::size_t i = 0; i + 1 < p->points.size(); ++i) outline.push_back(vec(p->points[i], t));
+        return in_convex_fan(outline, random);
+    }
+    const auto barycentric = [&](const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+        double u = random.uniform(), v = random.uniform();
+        if (u + v > 1.0) {
+            u = 1.0 - u;
+            v = 1.0 - v;
+        }
+        return a + u * (b - a) + v * (c - a);
+    };
+    if (const auto* tr = std::get_if<rt::Triangle>(&shape))
+        return barycentric(vec(tr->points[0], t), vec(tr->points[1], t), vec(tr->points[2], t));
+    if (const auto* tr = std::get_if<rt::SmoothTriangle>(&shape))
+        return barycentric(vec(tr->points[0], t), vec(tr->points[1], t), vec(tr->points[2], t));
+    if (const auto* d = std::get_if<rt::Disc>(&shape)) {
+        glm::dvec3 u, v;
+        perpendicular_pair(glm::normalize(vec(d->normal, t)), u, v);
+        const double r0 = d->hole_radius(t), r1 = d->radius(t);
+        const double r = std::sqrt(random.uniform(r0 * r0, r1 * r1));
+        const double phi = random.uniform(0.0, 2.0 * kPi);
+        return vec(d->center, t) + r * (std::cos(phi) * u + std::sin(phi) * v);
+    }
+    // Cylinder and cone: a side point or a cap point.
+    const auto round_solid = [&](const glm::dvec3& base, double r_base, const glm::dvec3& cap,
+                                 double r_cap, bool open) {
+        const glm::dvec3 axis = cap - base;
+        glm::dvec3 u, v;
+        perpendicular_pair(glm::normalize(axis), u, v);
+        const double phi = random.uniform(0.0, 2.0 * kPi);
+        const glm::dvec3 around = std::cos(phi) * u + std::sin(phi) * v;
+        const int part = open ? 0 : random.integer(0, 2);
+        if (part == 0) {
+            const double h = random.uniform();
+            return base + h * axis + (r_base + h * (r_cap - r_base)) * around;
+        }
+        const double r = (part == 1 ? r_base : r_cap) * std::sqrt(random.uniform());
+        return (part == 1 ? base : cap) + r * around;
+    };
+    if (const auto* c = std::get_if<rt::Cylinder>(&shape))
+        return round_solid(vec(c->base, t), c->radius(t), vec(c->cap, t), c->radius(t), c->open);
+    if (const auto* c = std::get_if<rt::Cone>(&shape))
+        return round_solid(vec(c->base, t), c->base_radius(t), vec(c->cap, t), c->cap_radius(t),
+                           c->open);
+    if (const auto* tor = std::get_if<rt::Torus>(&shape)) {
+        const double major = tor->major_radius(t), minor = tor->minor_radius(t);
+        const double phi = random.uniform(0.0, 2.0 * kPi), theta = random.uniform(0.0, 2.0 * kPi);
+        const double ring = major + minor * std::cos(theta);
+        return {ring * std::cos(phi), minor * std::sin(theta), ring * std::sin(phi)};
+    }
+    if (const auto* pr = std::get_if<rt::Prism>(&shape)) {
+        const double h1 = pr->height1(t), h2 = pr->height2(t);
+        std::vector<glm::dvec3> outline;
+        for (const auto& q : pr->points) outline.push_back({q.c[0](t), 0.0, q.c[1](t)});
+        if (glm::length(outline.front() - outline.back()) == 0.0) outline.pop_back();
+        const int part = pr->open ? 0 : random.integer(0, 2);
+        if (part == 0) {
+            const std::size_t i = static_cast<std::size_t>(random.integer(0, int(outline.size()) - 1));
+            const glm::dvec3 a = outline[i], b = outline[(i + 1) % outline.size()];
+            glm::dvec3 p = a + random.uniform() * (b - a);
+            p.y = random.uniform(std::min(h1, h2), std::max(h1, h2));
+            return p;
+        }
+        glm::dvec3 p = in_convex_fan(outline, random);
+        p.y = part == 1 ? h1 : h2;
+        return p;
+    }
+    throw std::logic_error("sample_object_surface: a shape kind without a sampler");
+}
+
+// The deformation's spine: the unit part of +y perpendicular to the axis, or
+// of +z when the axis is within 1e-3 of +-y (hexant's documented rule).
+inline glm::dvec3 spine_of(const glm::dvec3& axis) {
+    const glm::dvec3 reference =
+        axis.x * axis.x + axis.z * axis.z >= 1e-6 ? glm::dvec3(0, 1, 0) : glm::dvec3(0, 0, 1);
+    return glm::normalize(reference - glm::dot(reference, axis) * axis);
+}
+
+// Rodrigues' rotation of p about the unit axis by angle (radians).
+inline glm::dvec3 rotate_about(const glm::dvec3& p, const glm::dvec3& axis, double angle) {
+    const double c = std::cos(angle), s = std::sin(angle);
+    return p * c + glm::cross(axis, p) * s + axis * glm::dot(axis, p) * (1.0 - c);
+}
+
+// One deformation step, forward or undone, from its geometric definition.
+inline glm::dvec3 reference_deform(rt::TransformKind kind, const glm::dvec3& axis_direction,
+                                   double amount, const glm::dvec3& p, bool inverse) {
+    const glm::dvec3 axis = glm::normalize(axis_direction);
+    const double a = glm::dot(p, axis);
+    switch (kind) {
+        case rt::TransformKind::Twist:
+            return rotate_about(p, axis, (inverse ? -1.0 : 1.0) * amount * kDegree * a);
+        case rt::TransformKind::Taper: {
+            const glm::dvec3 along = a * axis, across = p - along;
+            const double f = 1.0 + amount * a;
+            return along + (inverse ? across / f : across * f);
+        }
+        default: {  // bend: the axis becomes an arc of radius 1/k about a centre on the spine
+            const double k = amount * kDegree;
+            if (k == 0.0) return p;
+            const glm::dvec3 spine = spine_of(axis), cross = glm::cross(axis, spine);
+            const double s = glm::dot(p, spine), c = glm::dot(p, cross);
+            const double radius = 1.0 / k;
+            double a2, s2;
+            if (!inverse) {
+                const double theta = k * a;
+                a2 = (radius - s) * std::sin(theta);
+                s2 = radius - (radius - s) * std::cos(theta);
+            } else {
+                // a' = D sin(k a), R - s' = D cos(k a), D = R - s of the sign of R.
+                const double sign = radius > 0.0 ? 1.0 : -1.0;
+                const double d = sign * std::hypot(a, radius - s);
+                const double theta = std::atan2(sign * a, sign * (radius - s));
+                a2 = theta / k;
+                s2 = radius - d;
+            }
+            return a2 * axis + s2 * spine + c * cross;
+        }
+    }
+}
+
+// The record's object-to-world map at t, step by step.
+inline glm::dvec3 reference_to_world(const rt::Transform& transform, glm::dvec3 p, double t) {
+    for (const auto& step : transform.steps()) {
+        if (step.is_deformation())
+            p = reference_deform(step.kind, step.vector(t), step.amount(t), p, step.inverse);
+        else
+            p = glm::dvec3(step.matrix_at(t) * glm::dvec4(p, 1.0));
+    }
+    return p;
+}
+
+inline glm::dvec3 reference_to_object(const rt::Transform& transform, glm::dvec3 p, double t) {
+    const auto& steps = transform.steps();
+    for (auto it = steps.rbegin(); it != steps.rend(); ++it) {
+        if (it->is_deformation())
+            p = reference_deform(it->kind, it->vector(t), it->amount(t), p, !it->inverse);
+        else
+            p = glm::dvec3(glm::inverse(it->matrix_at(t)) * glm::dvec4(p, 1.0));
+    }
+    return p;
+}
+
+// A random surface event of a top-level record at time t.
+inline rt::Event sample_surface_event(const rt::ObjectRecord& record, double t, Random& random) {
+    const glm::dvec3 p = sample_object_surface(record.shape, t, random);
+    return rt::Event(reference_to_world(record.transform, p, t), t);
+}
+
+// Samples per variant for the property tests: 10^5 in the suite, more with
+// HEXANT_PROPERTY_SAMPLES (e.g. 10000000 for the long run in the README).
+inline long property_samples() {
+    if (const char* env = std::getenv("HEXANT_PROPERTY_SAMPLES")) {
+        const long n = std::atol(env);
+        if (n > 0) return n;
+    }
+    return 100000;
+}
+
+}  // namespace object_test
