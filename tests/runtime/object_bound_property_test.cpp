@@ -21,12 +21,6 @@ using namespace object_test;
 
 namespace {
 
-struct Variant {
-    const char* name;
-    std::string transform;  // written inside the object after its parameters
-    bool moving_parameters = false;
-};
-
 // The reference reaches a surface event by other roundings than the code
 // under test (at most some tens of operations on numbers no larger than the
 // event's coordinates, each within 2^-53 of its result; a stiff twist's
@@ -51,33 +45,14 @@ bool inside_some(const std::vector<rt::SlabBound>& bounds, const rt::Event& e) {
     return false;
 }
 
-const std::vector<Variant>& variants() {
-    static const std::vector<Variant> list = {
-        {"static", "rotate <20, 30, 40> scale <1, 2, 1.5> translate <1, -2, 3>"},
-        {"translation", "translate <4 * clock, -3 * clock * clock, 2 * sin(5 * clock)>"},
-        {"fast rotation", "translate <2, 0, 0> rotate <0, 3600 * clock, 0> rotate <15, 0, 0>"},
-        {"spline path", "translate Path(clock)"},
-        {"moving parameters", "rotate <0, 0, 30>", true},
-        {"twist", "twist <0, 1, 0.2>, 720 * clock - 180 translate <clock, 0, 0>"},
-        {"taper", "taper <0.3, 1, 0>, 0.8 * clock - 0.4 rotate <0, 90 * clock, 0>"},
-        {"bend", "bend <0, 1, 0>, 60 * clock translate <0, 0, clock>"},
-        {"stiff twist", "twist <0.1, 1, 0>, 10800 translate <0, clock, 0>"},
-    };
-    return list;
-}
-
-const char* kPath =
-    "#declare Path = spline { cubic_spline -0.5, <0, 0, 0> 0, <1, 0, 0> 0.3, <1, 2, 0> "
-    "0.6, <-1, 1, 1> 1, <0, 0, 3> 1.5, <0, 0, 0> }\n";
-
-// Runs every variant of one kind; `fixed` and `moving` are the object's
-// keyword and parameters, static and with moving parameters.
-void check_kind(const std::string& keyword, const std::string& fixed, const std::string& moving) {
+// Runs every variant of one kind.
+void check_kind(const KindScene& kind) {
+    const std::string& keyword = kind.keyword;
     const long wanted = property_samples();
     Random random(std::hash<std::string>{}(keyword));
     for (const Variant& variant : variants()) {
         const std::string sdl = std::string(kPath) + keyword + " { " +
-                                (variant.moving_parameters ? moving : fixed) + " " +
+                                (variant.moving_parameters ? kind.moving : kind.fixed) + " " +
                                 variant.transform + " }\n";
         INFO(keyword << ", " << variant.name << ": " << sdl);
         const Parsed parsed = parse(sdl);
@@ -145,50 +120,37 @@ void check_kind(const std::string& keyword, const std::string& fixed, const std:
 }  // namespace
 
 TEST_CASE("bound holds the surface: sphere", "[object][property]") {
-    check_kind("sphere", "<0.2, 0.1, 0>, 0.8", "<0.3 * sin(6 * clock), 0, 0>, 0.5 + 0.3 * clock");
+    check_kind(kind_scene("sphere"));
 }
 
 TEST_CASE("bound holds the surface: box", "[object][property]") {
-    check_kind("box", "<-0.5, -0.7, -0.4>, <0.6, 0.5, 0.3>",
-               "<-0.5, -0.7, -0.4>, <0.6 + clock, 0.5, 0.3 - 0.5 * clock>");
+    check_kind(kind_scene("box"));
 }
 
 TEST_CASE("bound holds the surface: polygon", "[object][property]") {
-    check_kind("polygon", "5, <-0.5, -0.5, 0>, <0.5, -0.5, 0>, <0.6, 0.4, 0>, <-0.4, 0.5, 0>, <-0.5, -0.5, 0>",
-               "5, <-0.5, -0.5, 0>, <0.5, -0.5, 0>, <0.6 + clock, 0.4, 0>, <-0.4, 0.5, 0>, "
-               "<-0.5, -0.5, 0>");
+    check_kind(kind_scene("polygon"));
 }
 
 TEST_CASE("bound holds the surface: triangle and smooth_triangle", "[object][property]") {
-    check_kind("triangle", "<-0.5, 0, 0>, <0.5, 0.1, 0>, <0, 0.7, 0.3>",
-               "<-0.5, 0, 0>, <0.5, 0.1, clock>, <0, 0.7 - clock, 0.3>");
-    check_kind("smooth_triangle",
-               "<-0.5, 0, 0>, <0, 0, 1>, <0.5, 0.1, 0>, <0.1, 0, 1>, <0, 0.7, 0.3>, <0, 0.2, 1>",
-               "<-0.5, 0, 0>, <0, 0, 1>, <0.5, 0.1, clock>, <0.1, 0, 1>, <0, 0.7, 0.3>, <0, 0.2, 1>");
+    check_kind(kind_scene("triangle"));
+    check_kind(kind_scene("smooth_triangle"));
 }
 
 TEST_CASE("bound holds the surface: disc", "[object][property]") {
-    check_kind("disc", "<0, 0, 0>, <0.3, 1, 0.2>, 0.8, 0.2",
-               "<0, clock, 0>, <0.3, 1, 0.2 + clock>, 0.8 - 0.3 * clock, 0.2");
+    check_kind(kind_scene("disc"));
 }
 
 TEST_CASE("bound holds the surface: cylinder and cone", "[object][property]") {
-    check_kind("cylinder", "<0, -0.5, 0>, <0.2, 0.6, 0.1>, 0.3",
-               "<0, -0.5, 0>, <0.2, 0.6 + clock, 0.1>, 0.3 + 0.2 * clock");
-    check_kind("cone", "<0, -0.5, 0>, 0.5, <0, 0.6, 0.2>, 0.1",
-               "<0, -0.5, 0>, 0.5 - 0.2 * clock, <0, 0.6, 0.2 + clock>, 0.1");
+    check_kind(kind_scene("cylinder"));
+    check_kind(kind_scene("cone"));
 }
 
 TEST_CASE("bound holds the surface: torus", "[object][property]") {
-    check_kind("torus", "0.7, 0.2", "0.7 - 0.3 * clock, 0.2 + 0.1 * clock");
+    check_kind(kind_scene("torus"));
 }
 
 TEST_CASE("bound holds the surface: prism", "[object][property]") {
-    check_kind("prism",
-               "linear_sweep linear_spline -0.5, 0.5, 5, <-0.5, -0.5>, <0.5, -0.5>, <0.6, 0.4>, "
-               "<-0.4, 0.5>, <-0.5, -0.5>",
-               "linear_sweep linear_spline -0.5, 0.5 + clock, 5, <-0.5, -0.5>, <0.5, -0.5>, "
-               "<0.6, 0.4 + clock>, <-0.4, 0.5>, <-0.5, -0.5>");
+    check_kind(kind_scene("prism"));
 }
 
 TEST_CASE("a plane is unbounded and gives no bound", "[object]") {

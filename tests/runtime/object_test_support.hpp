@@ -257,6 +257,81 @@ inline rt::Event sample_surface_event(const rt::ObjectRecord& record, double t, 
     return rt::Event(reference_to_world(record.transform, p, t), t);
 }
 
+// The motions every object kind is tried with: static, moving and deformed.
+struct Variant {
+    const char* name;
+    std::string transform;  // written inside the object after its parameters
+    bool moving_parameters = false;
+};
+
+inline const std::vector<Variant>& variants() {
+    static const std::vector<Variant> list = {
+        {"static", "rotate <20, 30, 40> scale <1, 2, 1.5> translate <1, -2, 3>"},
+        {"translation", "translate <4 * clock, -3 * clock * clock, 2 * sin(5 * clock)>"},
+        {"fast rotation", "translate <2, 0, 0> rotate <0, 3600 * clock, 0> rotate <15, 0, 0>"},
+        {"spline path", "translate Path(clock)"},
+        {"moving parameters", "rotate <0, 0, 30>", true},
+        {"twist", "twist <0, 1, 0.2>, 720 * clock - 180 translate <clock, 0, 0>"},
+        {"taper", "taper <0.3, 1, 0>, 0.8 * clock - 0.4 rotate <0, 90 * clock, 0>"},
+        {"bend", "bend <0, 1, 0>, 60 * clock translate <0, 0, clock>"},
+        {"stiff twist", "twist <0.1, 1, 0>, 10800 translate <0, clock, 0>"},
+    };
+    return list;
+}
+
+inline const char* kPath =
+    "#declare Path = spline { cubic_spline -0.5, <0, 0, 0> 0, <1, 0, 0> 0.3, <1, 2, 0> "
+    "0.6, <-1, 1, 1> 1, <0, 0, 3> 1.5, <0, 0, 0> }\n";
+
+// Each bounded kind's parameters in its own space (size about 1), fixed and
+// with parameters that move. The polygons and prisms are convex, as the
+// sampler requires.
+struct KindScene {
+    std::string keyword, fixed, moving;
+};
+
+inline const std::vector<KindScene>& kind_scenes() {
+    static const std::vector<KindScene> list = {
+        {"sphere",
+         "<0.2, 0.1, 0>, 0.8",
+         "<0.3 * sin(6 * clock), 0, 0>, 0.5 + 0.3 * clock"},
+        {"box",
+         "<-0.5, -0.7, -0.4>, <0.6, 0.5, 0.3>",
+         "<-0.5, -0.7, -0.4>, <0.6 + clock, 0.5, 0.3 - 0.5 * clock>"},
+        {"polygon",
+         "5, <-0.5, -0.5, 0>, <0.5, -0.5, 0>, <0.6, 0.4, 0>, <-0.4, 0.5, 0>, <-0.5, -0.5, 0>",
+         "5, <-0.5, -0.5, 0>, <0.5, -0.5, 0>, <0.6 + clock, 0.4, 0>, <-0.4, 0.5, 0>, <-0.5, -0.5, 0>"},
+        {"triangle",
+         "<-0.5, 0, 0>, <0.5, 0.1, 0>, <0, 0.7, 0.3>",
+         "<-0.5, 0, 0>, <0.5, 0.1, clock>, <0, 0.7 - clock, 0.3>"},
+        {"smooth_triangle",
+         "<-0.5, 0, 0>, <0, 0, 1>, <0.5, 0.1, 0>, <0.1, 0, 1>, <0, 0.7, 0.3>, <0, 0.2, 1>",
+         "<-0.5, 0, 0>, <0, 0, 1>, <0.5, 0.1, clock>, <0.1, 0, 1>, <0, 0.7, 0.3>, <0, 0.2, 1>"},
+        {"disc",
+         "<0, 0, 0>, <0.3, 1, 0.2>, 0.8, 0.2",
+         "<0, clock, 0>, <0.3, 1, 0.2 + clock>, 0.8 - 0.3 * clock, 0.2"},
+        {"cylinder",
+         "<0, -0.5, 0>, <0.2, 0.6, 0.1>, 0.3",
+         "<0, -0.5, 0>, <0.2, 0.6 + clock, 0.1>, 0.3 + 0.2 * clock"},
+        {"cone",
+         "<0, -0.5, 0>, 0.5, <0, 0.6, 0.2>, 0.1",
+         "<0, -0.5, 0>, 0.5 - 0.2 * clock, <0, 0.6, 0.2 + clock>, 0.1"},
+        {"torus",
+         "0.7, 0.2",
+         "0.7 - 0.3 * clock, 0.2 + 0.1 * clock"},
+        {"prism",
+         "linear_sweep linear_spline -0.5, 0.5, 5, <-0.5, -0.5>, <0.5, -0.5>, <0.6, 0.4>, <-0.4, 0.5>, <-0.5, -0.5>",
+         "linear_sweep linear_spline -0.5, 0.5 + clock, 5, <-0.5, -0.5>, <0.5, -0.5>, <0.6, 0.4 + clock>, <-0.4, 0.5>, <-0.5, -0.5>"},
+    };
+    return list;
+}
+
+inline const KindScene& kind_scene(const std::string& keyword) {
+    for (const auto& k : kind_scenes())
+        if (k.keyword == keyword) return k;
+    throw std::logic_error("no test scene for " + keyword);
+}
+
 // Samples per variant for the property tests: 10^5 in the suite, more with
 // HEXANT_PROPERTY_SAMPLES (e.g. 10000000 for the long run in the README).
 inline long property_samples() {
