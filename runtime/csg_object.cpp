@@ -164,4 +164,9 @@ bool CsgObject::deformed() const {
                        [](const auto& c) { return c->deformed(); });
 }
 
+bool CsgObject::casts_shadow() const {
+    return std::any_of(children_.begin(), children_.end(),
+                       [](const auto& c) { return c->casts_shadow(); });
+}
+
 }  // namespace hexant::runtime

@@ -27,6 +27,8 @@ public:
     double occupancy(const Box4& region) const override;
     bool moves() const override;
     bool deformed() const override;
+    // A group casts a shadow where any child does (no_shadow passes down).
+    bool casts_shadow() const override;
 
     Csg::Kind kind() const { return kind_; }
     const std::vector<IntelligentObjectPtr>& children() const { return children_; }

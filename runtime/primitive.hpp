@@ -135,10 +135,11 @@ public:
         if (region.is_empty() || !(region.volume() > 0.0)) return 0.0;
         const auto inside_at = [this](const Event& e) { return inside(e); };
         if (options_.inverse || kUnbounded) return sampled_occupancy(region, inside_at);
-        const Box4 near = piece_box(world_box_over(region.time()), region.time(), region);
+        const objects::IntervalBox world = world_box_over(region.time());
+        const Box4 near = piece_box(world, region.time(), region);
         if (near.is_empty()) return 0.0;
         const double share = near.volume() / region.volume();
-        if (!moves_ && motion_.is_affine() && contains_box(region, near)) {
+        if (!moves_ && motion_.is_affine() && contains_box(region, world)) {
             // Exact: the whole solid lies in the region at every instant.
             const double volume = Model::volume(*static_geometry_);
             if (volume >= 0.0) {
@@ -152,9 +153,10 @@ public:
     }
 
 private:
-    static bool contains_box(const Box4& outer, const Box4& inner) {
+    // Does the region hold the whole world box in space?
+    static bool contains_box(const Box4& region, const objects::IntervalBox& world) {
         for (int i = 0; i < 3; ++i)
-            if (inner.lo[i] < outer.lo[i] || inner.hi[i] > outer.hi[i]) return false;
+            if (world[i].lo < region.lo[i] || world[i].hi > region.hi[i]) return false;
         return true;
     }
 
