@@ -134,21 +134,51 @@ inline Interval operator-(const Interval& a, const Interval& b) {
     return {next_down(a.lo - b.hi), next_up(a.hi - b.lo)};
 }
 
+namespace interval_detail {
+
+// std::fmin and std::fmax (a NaN argument is skipped), written inline: the
+// library calls cost more than the products they sort.
+inline double min_skipping_nan(double a, double b) {
+    return (b < a || a != a) ? b : a;
+}
+inline double max_skipping_nan(double a, double b) {
+    return (b > a || a != a) ? b : a;
+}
+inline double min4(double a, double b, double c, double d) {
+    return min_skipping_nan(min_skipping_nan(a, b), min_skipping_nan(c, d));
+}
+inline double max4(double a, double b, double c, double d) {
+    return max_skipping_nan(max_skipping_nan(a, b), max_skipping_nan(c, d));
+}
+
+// a * k for a finite non-zero point k: two products whose order is k's sign
+// (the common case of a box times a constant matrix entry).
+inline Interval scaled(const Interval& a, double k) {
+    const double p = a.lo * k, q = a.hi * k;
+    return k > 0.0 ? Interval{next_down(p), next_up(q)} : Interval{next_down(q), next_up(p)};
+}
+
+inline bool is_nonzero_point(const Interval& a) {
+    return a.lo == a.hi && a.lo != 0.0 && std::isfinite(a.lo);
+}
+
+}  // namespace interval_detail
+
 inline Interval operator*(const Interval& a, const Interval& b) {
     using namespace interval_detail;
-    // fmin/fmax skip NaN: 0 * inf at an end means the limit of finite
+    if (is_nonzero_point(b)) return scaled(a, b.lo);
+    if (is_nonzero_point(a)) return scaled(b, a.lo);
+    // NaN products are skipped: 0 * inf at an end means the limit of finite
     // products, which the other three corners already bound.
     const double p1 = a.lo * b.lo, p2 = a.lo * b.hi, p3 = a.hi * b.lo, p4 = a.hi * b.hi;
-    return {next_down(std::fmin(std::fmin(p1, p2), std::fmin(p3, p4))),
-            next_up(std::fmax(std::fmax(p1, p2), std::fmax(p3, p4)))};
+    return {next_down(min4(p1, p2, p3, p4)), next_up(max4(p1, p2, p3, p4))};
 }
 
 inline Interval operator/(const Interval& a, const Interval& b) {
     using namespace interval_detail;
     if (b.contains_zero()) return Interval::entire();
     const double q1 = a.lo / b.lo, q2 = a.lo / b.hi, q3 = a.hi / b.lo, q4 = a.hi / b.hi;
-    return {next_down(std::fmin(std::fmin(q1, q2), std::fmin(q3, q4))),
-            next_up(std::fmax(std::fmax(q1, q2), std::fmax(q3, q4)))};
+    return {next_down(min4(q1, q2, q3, q4)), next_up(max4(q1, q2, q3, q4))};
 }
 
 inline Interval& Interval::operator+=(const Interval& b) {

@@ -1,6 +1,7 @@
 #include "runtime/slab_bound.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace hexant::runtime {
@@ -21,16 +22,29 @@ std::array<Event, kSlabCount> make_normals() {
     return n;
 }
 
-// The range of n · e over a box, rounded outward: the sum of the ranges of
-// each term (halving is exact short of underflow, which the outward step
-// covers too).
+// The range of n · e over a box, rounded outward. Each product takes the
+// box end that its sign picks; the products by 0 and ±0.5 are exact (short
+// of underflow, at most half the smallest subnormal each), and the three
+// sums are each within half an ulp of a partial sum no larger than
+// m = sum |n_i| max(|lo_i|, |hi_i|), so widening both ends by 4 ulps of m,
+// plus the underflow, holds the exact range.
 Interval dot_range(const Event& n, const Event& lo, const Event& hi) {
-    Interval sum(0.0);
+    double a = 0.0, b = 0.0, m = 0.0;
     for (int i = 0; i < 4; ++i) {
-        if (n[i] == 0.0) continue;
-        sum = sum + Interval(n[i]) * Interval(lo[i], hi[i]);
+        if (n[i] > 0.0) {
+            a += n[i] * lo[i];
+            b += n[i] * hi[i];
+        } else if (n[i] < 0.0) {
+            a += n[i] * hi[i];
+            b += n[i] * lo[i];
+        } else {
+            continue;
+        }
+        m += std::fabs(n[i]) * std::max(std::fabs(lo[i]), std::fabs(hi[i]));
     }
-    return sum;
+    constexpr double kUlp = std::numeric_limits<double>::epsilon();  // 2 units of roundoff
+    const double e = 4.0 * kUlp * m + 4.0 * std::numeric_limits<double>::denorm_min();
+    return {a - e, b + e};
 }
 
 }  // namespace

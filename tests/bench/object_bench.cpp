@@ -3,7 +3,7 @@
 // moving versus deformed, and the plain sphere routine beside the static
 // sphere (what "cost is paid only where used" promises).
 //
-//   build/tests/bench/hexant_object_bench [--rays N] [--repeats R]
+//   build/tests/bench/hexant_object_bench [--rays N] [--repeats R] [--kind K] [--variant V]
 //
 // Each figure is the median over R timed passes over the same N rays (or N
 // regions), all kinds measured in one run, so ratios between rows are fair;
@@ -26,6 +26,7 @@ namespace {
 struct Options {
     int rays = 4096;
     int repeats = 9;
+    std::string kind, variant;  // only these, when given
 };
 
 Options parse_options(int argc, char** argv) {
@@ -36,8 +37,15 @@ Options parse_options(int argc, char** argv) {
             o.rays = std::max(1, std::atoi(argv[++i]));
         } else if (!std::strcmp(argv[i], "--repeats") && has_value) {
             o.repeats = std::max(1, std::atoi(argv[++i]));
+        } else if (!std::strcmp(argv[i], "--kind") && has_value) {
+            o.kind = argv[++i];
+        } else if (!std::strcmp(argv[i], "--variant") && has_value) {
+            o.variant = argv[++i];
         } else {
-            std::fprintf(stderr, "usage: %s [--rays N] [--repeats R]\n", argv[0]);
+            std::fprintf(stderr,
+                         "usage: %s [--rays N] [--repeats R] [--kind sphere|box|...] "
+                         "[--variant static|moving|deformed]\n",
+                         argv[0]);
             std::exit(2);
         }
     }
@@ -117,6 +125,8 @@ int main(int argc, char** argv) {
     for (const KindScene& kind : kinds) {
         for (const BenchVariant& variant : kVariants) {
             if (kind.keyword == "plane" && std::string(variant.name) == "deformed") continue;
+            if (!options.kind.empty() && options.kind != kind.keyword) continue;
+            if (!options.variant.empty() && options.variant != variant.name) continue;
             const std::string sdl =
                 std::string(kPath) + kind.keyword + " { " + kind.fixed + " " + variant.transform + " }\n";
             const Parsed parsed = parse(sdl);
