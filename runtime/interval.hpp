@@ -126,6 +126,9 @@ inline Interval operator-(const Interval& a) {
 
 inline Interval operator+(const Interval& a, const Interval& b) {
     using namespace interval_detail;
+    // Adding an exact zero is exact (sparse matrices add many).
+    if (b.lo == 0.0 && b.hi == 0.0) return a;
+    if (a.lo == 0.0 && a.hi == 0.0) return b;
     return {next_down(a.lo + b.lo), next_up(a.hi + b.hi)};
 }
 
@@ -166,6 +169,11 @@ inline bool is_nonzero_point(const Interval& a) {
 
 inline Interval operator*(const Interval& a, const Interval& b) {
     using namespace interval_detail;
+    // Exact cases first: a point 0 gives 0 (with an infinite end too, the
+    // limit of finite products, as below) and a point 1 changes nothing.
+    if ((b.lo == 0.0 && b.hi == 0.0) || (a.lo == 0.0 && a.hi == 0.0)) return Interval(0.0);
+    if (b.lo == 1.0 && b.hi == 1.0) return a;
+    if (a.lo == 1.0 && a.hi == 1.0) return b;
     if (is_nonzero_point(b)) return scaled(a, b.lo);
     if (is_nonzero_point(a)) return scaled(b, a.lo);
     // NaN products are skipped: 0 * inf at an end means the limit of finite

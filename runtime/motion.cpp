@@ -285,6 +285,20 @@ glm::dmat4 Motion::inverse_at(double t) const {
     return to_glm(m);
 }
 
+Motion::Placement Motion::placement_at(double t) const {
+    if (fixed_affine_) return {to_glm(forward_), to_glm(backward_)};
+    if (!affine_) throw std::logic_error("Motion::placement_at on a deformed object");
+    const MotionEvaluator<double> e(*this, t);
+    AffineMap<double> forward = AffineMap<double>::identity();
+    AffineMap<double> backward = AffineMap<double>::identity();
+    for (const Stage& stage : stages_) {
+        const bool fixed = stage.kind == StageKind::Fixed;
+        forward = (fixed ? stage.forward : e.stage_map(stage, false)) * forward;
+        backward = backward * (fixed ? stage.backward : e.stage_map(stage, true));
+    }
+    return {to_glm(forward), to_glm(backward)};
+}
+
 IntervalAffine Motion::matrix_over(const Interval& t) const {
     if (fixed_affine_) return IntervalAffine::from(forward_);
     if (!affine_) throw std::logic_error("Motion::matrix_over on a deformed object");

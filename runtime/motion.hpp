@@ -43,6 +43,13 @@ class Motion {
     // Object to world at t, and back; only when is_affine().
     glm::dmat4 matrix_at(double t) const;
     glm::dmat4 inverse_at(double t) const;
+    // Both at once, from one evaluation of the time functions (a moving
+    // object's intersection needs the inverse for the ray and the matrix
+    // for the hit).
+    struct Placement {
+        glm::dmat4 to_world, to_object;
+    };
+    Placement placement_at(double t) const;
     // Entries that hold the matrix's entries at every time in t; only when
     // is_affine(). Rotations use interval sines and cosines of the interval
     // angle, so a short interval gives a thin enclosure.

@@ -181,13 +181,16 @@ private:
         return {q[0], q[1], q[2]};
     }
 
-    ObjectHit make_hit(const Ray4& ray, double s, const geometry::SurfaceHit& surface) const {
+    // `to_world_at` maps the surface point to the world at the hit's time.
+    template <class ToWorld>
+    ObjectHit make_hit(const Ray4& ray, double s, const geometry::SurfaceHit& surface,
+                       ToWorld&& to_world_at) const {
         ObjectHit hit;
         hit.s = s;
         const double t = ray.origin.w + s * ray.direction.w;
         // The world point from the surface point (exact to the surface's own
         // ulps), not from the ray, whose origin may lie far away.
-        hit.event = Event(to_world(surface.point, t), t);
+        hit.event = Event(to_world_at(surface.point, t), t);
         hit.object = this;
         hit.object_point = surface.point;
         hit.object_normal = surface.normal;
@@ -201,16 +204,26 @@ private:
     std::optional<ObjectHit> intersect_affine(const Ray4& ray, double s_min, double s_max) const {
         const double t = ray.origin.w;
         geometry::Ray3 local{glm::dvec3(ray.origin), glm::dvec3(ray.direction)};
-        if (!motion_.is_identity()) {
-            const glm::dmat4 inverse = motion_.inverse_at(t);
-            local.origin = glm::dvec3(inverse * glm::dvec4(local.origin, 1.0));
-            local.direction = glm::dmat3(inverse) * local.direction;
+        const auto find = [&]() {
+            return static_geometry_ ? geometry::intersect(*static_geometry_, local, s_min, s_max)
+                                    : geometry::intersect(model_.at(t), local, s_min, s_max);
+        };
+        if (motion_.is_identity()) {
+            const auto surface = find();
+            if (!surface) return std::nullopt;
+            return make_hit(ray, surface->s, *surface,
+                            [](const glm::dvec3& p, double) { return p; });
         }
-        const auto surface = static_geometry_
-                                 ? geometry::intersect(*static_geometry_, local, s_min, s_max)
-                                 : geometry::intersect(model_.at(t), local, s_min, s_max);
+        // The ray is at one instant (or the object does not move): one
+        // placement serves the ray and the hit.
+        const Motion::Placement placement = motion_.placement_at(t);
+        local.origin = glm::dvec3(placement.to_object * glm::dvec4(local.origin, 1.0));
+        local.direction = glm::dmat3(placement.to_object) * local.direction;
+        const auto surface = find();
         if (!surface) return std::nullopt;
-        return make_hit(ray, surface->s, *surface);
+        return make_hit(ray, surface->s, *surface, [&](const glm::dvec3& p, double) {
+            return glm::dvec3(placement.to_world * glm::dvec4(p, 1.0));
+        });
     }
 
     // The ray's image in object space is a curve: the deformation bends it,
@@ -266,7 +279,8 @@ private:
         };
         const auto found = first_hit_on_curve(a, b, size, box_over, point_at, may_meet, chord_hit);
         if (!found || !(found->s > s_min && found->s < s_max)) return std::nullopt;
-        return make_hit(ray, found->s, found->surface);
+        return make_hit(ray, found->s, found->surface,
+                        [this](const glm::dvec3& p, double t) { return to_world(p, t); });
     }
 
     Model model_;
