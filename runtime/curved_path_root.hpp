@@ -11,6 +11,8 @@
 #pragma once
 
 #include <algorithm>
+#include <atomic>
+#include <cstdint>
 #include <cmath>
 #include <optional>
 #include <utility>
@@ -34,6 +36,15 @@ inline constexpr double kCurvedPathRelativeWidth = 1e-6;
 // tracer; reaching it means a miss (counted by the caller's tests).
 inline constexpr int kCurvedPathMaxPieces = 1 << 16;
 
+// How many curved-path solves this process has run: what a scene without
+// deformations or time-travelling rays must leave at zero (relaxed: a count
+// for tests and statistics, not a synchronisation).
+inline std::atomic<std::uint64_t> g_curved_path_solves{0};
+
+inline std::uint64_t curved_path_solves() {
+    return g_curved_path_solves.load(std::memory_order_relaxed);
+}
+
 // box_over(Interval s) -> geometry::Box3 holding the path over s;
 // point_at(double s) -> glm::dvec3 on the path;
 // may_meet(Box3, Interval s) -> bool, false only if the surface has no point
@@ -44,6 +55,7 @@ std::optional<CurvedPathHit> first_hit_on_curve(double s_min, double s_max, doub
                                                 BoxOver&& box_over, PointAt&& point_at,
                                                 MayMeet&& may_meet, ChordHit&& chord_hit) {
     if (!(s_min < s_max) || !std::isfinite(s_min) || !std::isfinite(s_max)) return std::nullopt;
+    g_curved_path_solves.fetch_add(1, std::memory_order_relaxed);
     const double stop_width = kCurvedPathRelativeWidth * object_size;
     // A small explicit stack: depth grows with log2 of (path length / stop width).
     std::pair<double, double> stack[256];

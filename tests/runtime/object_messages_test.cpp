@@ -9,6 +9,8 @@
 #include <string>
 
 #include "object_test_support.hpp"
+#include "runtime/curved_path_root.hpp"
+#include "runtime/geometry/offset_ray.hpp"
 #include "runtime/object_error.hpp"
 
 using namespace object_test;
@@ -250,5 +252,65 @@ TEST_CASE("factory: a pattern hexant does not have is an error naming where it w
         INFO(what);
         CHECK(what.find("patterns.pov:4") != std::string::npos);
         CHECK(what.find("bozo") != std::string::npos);
+    }
+}
+
+TEST_CASE("only deformed objects and time-travelling rays enter the curved-path solver",
+          "[object]") {
+    const Parsed plain = parse(
+        "sphere { <0, 0, 0>, 1 rotate <0, 360 * clock, 0> translate <clock, 0, 0> }\n"
+        "box { <-1, -1, -1>, <1, 1, 1> scale <1, 1 + clock, 1> }\n"
+        "torus { 1, 0.3 }\n");
+    const Parsed bent = parse("box { <-0.2, -1, -0.2>, <0.2, 1, 0.2> bend y, 30 }\n");
+    Random random(8);
+    const std::uint64_t before = rt::curved_path_solves();
+    for (int i = 0; i < 200; ++i) {
+        const glm::dvec3 d = random.unit_vector();
+        const rt::Ray4 r = ray(-5.0 * d + 0.5 * random.unit_vector(), d, random.uniform(0.0, 1.0));
+        for (const auto& object : plain.objects) object->intersect(r, 0.0, kInf);
+    }
+    CHECK(rt::curved_path_solves() == before);
+    // A deformed object solves on the curve; so does a ray whose time runs
+    // through a moving object.
+    bent.objects.front()->intersect(ray({0, 0, -5}, {0, 0, 1}), 0.0, kInf);
+    CHECK(rt::curved_path_solves() == before + 1);
+    const rt::Ray4 travelling{rt::Event(0, 0, -5, 0), rt::Event(0, 0, 1, 0.1)};
+    plain.objects.front()->intersect(travelling, 0.0, 10.0);
+    CHECK(rt::curved_path_solves() == before + 2);
+}
+
+TEST_CASE("secondary rays offset from a hit do not find the surface they leave", "[object]") {
+    // Reflected rays leave a convex solid and must not meet it again at any
+    // distance; a far placement and a fast motion make the hit point's
+    // rounding large in absolute terms, which the offset must clear.
+    const Parsed parsed = parse(
+        "sphere { <0, 0, 0>, 1 translate <1e6, -3e5, 2e5> }\n"
+        "sphere { <0, 0, 0>, 1e-4 translate <2, 0, 0> rotate <0, 36000 * clock, 0> }\n"
+        "box { <-1, -2, -3>, <1, 2, 3> rotate <10, 20, 30> translate <5e5, 0, 0> }\n");
+    const glm::dvec3 centres[] = {{1e6, -3e5, 2e5}, {2, 0, 0}, {5e5, 0, 0}};
+    Random random(12);
+    for (std::size_t k = 0; k < parsed.objects.size(); ++k) {
+        const auto& object = *parsed.objects[k];
+        int reflected = 0;
+        for (int i = 0; i < 2000; ++i) {
+            const double t = k == 1 ? random.uniform(0.0, 1.0) : 0.0;
+            const double angle = 36000.0 * t * kDegree;
+            const glm::dvec3 c = k == 1 ? glm::dvec3(2.0 * std::cos(angle), 0.0, -2.0 * std::sin(angle))
+                                        : centres[k];
+            const glm::dvec3 d = random.unit_vector();
+            const double size = k == 1 ? 1e-4 : 1.0;
+            const rt::Ray4 r = ray(c - 10.0 * size * d + 0.9 * size * random.unit_vector(), d, t);
+            const auto hit = object.intersect(r, 0.0, kInf);
+            if (!hit) continue;
+            const rt::SurfacePoint p = object.complete(r, *hit);
+            const glm::dvec3 n = p.geometric_normal;
+            const glm::dvec3 out = d - 2.0 * glm::dot(d, n) * n;
+            const glm::dvec3 start = rt::geometry::offset_ray(glm::dvec3(hit->event), n);
+            const auto again = object.intersect(ray(start, out, t), 0.0, kInf);
+            INFO("object " << k << " ray " << i);
+            REQUIRE_FALSE(again);
+            ++reflected;
+        }
+        CHECK(reflected > 500);
     }
 }
