@@ -82,4 +82,30 @@ bool SlabRay::intersect(const SlabBound& bound, double s_min, double s_max, doub
     return true;
 }
 
+bool SlabRay::clip(const Box4& box, double s_min, double s_max, double* enter,
+                   double* exit) const {
+    double near = s_min, far = s_max;
+    if (!(near <= far)) return false;
+    for (int k = 0; k < 4; ++k) {
+        const double lo = box.lo[k], hi = box.hi[k];
+        if (!(lo <= hi)) return false;
+        if (parallel_[k]) {
+            if (origin_dot_[k] < lo || origin_dot_[k] > hi) return false;
+            continue;
+        }
+        double a = (lo - origin_dot_[k]) * inverse_dot_[k];
+        double b = (hi - origin_dot_[k]) * inverse_dot_[k];
+        if (a > b) std::swap(a, b);
+        a -= std::fabs(a) * kParameterMargin;
+        b += std::fabs(b) * kParameterMargin;
+        if (a != a || b != b) continue;
+        near = std::max(near, a);
+        far = std::min(far, b);
+        if (near > far) return false;
+    }
+    if (enter) *enter = near;
+    if (exit) *exit = far;
+    return true;
+}
+
 }  // namespace hexant::runtime

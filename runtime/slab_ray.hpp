@@ -36,6 +36,12 @@ class SlabRay {
     bool intersect(const SlabBound& bound, double s_min, double s_max, double* enter = nullptr,
                    double* exit = nullptr) const;
 
+    // The same for a 4D box (a hierarchy cell): only the principal slabs,
+    // whose dot products are exact, with the same widening. A ray at one
+    // instant meets only boxes whose time range holds that instant.
+    bool clip(const Box4& box, double s_min, double s_max, double* enter = nullptr,
+              double* exit = nullptr) const;
+
     const Ray4& ray() const { return ray_; }
 
   private:

@@ -1,0 +1,44 @@
+// What the tracer counts, per thread and merged at the end: the rows of the
+// paper's Tables 1 and 2.
+#pragma once
+
+#include <cstdint>
+
+namespace hexant::tracer {
+
+struct Counters {
+    // Rays by kind.
+    std::uint64_t primary_rays = 0;
+    std::uint64_t shadow_rays = 0;
+    std::uint64_t reflected_rays = 0;
+    std::uint64_t refracted_rays = 0;
+    // Hierarchy.
+    std::uint64_t bounds_built = 0;  // object bound() answers while building
+    std::uint64_t cells = 0;         // cells kept in the hierarchies
+    std::uint64_t bound_tests = 0;   // ray / 12-slab bound tests
+    std::uint64_t object_tests = 0;  // ray / object intersections (at the ray's time)
+    std::uint64_t mailbox_hits = 0;  // object tests saved by the mailbox
+    double build_seconds = 0.0;
+    double render_seconds = 0.0;
+
+    std::uint64_t rays() const {
+        return primary_rays + shadow_rays + reflected_rays + refracted_rays;
+    }
+
+    Counters& operator+=(const Counters& o) {
+        primary_rays += o.primary_rays;
+        shadow_rays += o.shadow_rays;
+        reflected_rays += o.reflected_rays;
+        refracted_rays += o.refracted_rays;
+        bounds_built += o.bounds_built;
+        cells += o.cells;
+        bound_tests += o.bound_tests;
+        object_tests += o.object_tests;
+        mailbox_hits += o.mailbox_hits;
+        build_seconds += o.build_seconds;
+        render_seconds += o.render_seconds;
+        return *this;
+    }
+};
+
+}  // namespace hexant::tracer

@@ -1,0 +1,135 @@
+#include "tracer/hierarchy.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <optional>
+
+namespace hexant::tracer {
+
+namespace {
+
+using runtime::Box4;
+using runtime::IntelligentObject;
+using runtime::SlabBound;
+
+// A cell under construction; cells are laid out in the final array only
+// once their children are known, so that children stay consecutive.
+struct Node {
+    Box4 region;
+    SlabBound bound = SlabBound::empty();
+    std::vector<Node> children;
+    std::vector<std::uint32_t> objects;  // leaves only
+};
+
+class Builder {
+public:
+    Builder(std::span<const IntelligentObject* const> objects, const BuildOptions& options,
+            Counters& counters)
+        : objects_(objects), options_(options), counters_(counters) {}
+
+    // The node for `region`, or nothing when no candidate meets it.
+    std::optional<Node> build(const Box4& region, const std::vector<std::uint32_t>& candidates,
+                              int depth) {
+        Node node;
+        node.region = region;
+        std::vector<std::uint32_t> inside;
+        std::vector<SlabBound> answers;
+        for (const std::uint32_t index : candidates) {
+            answers.clear();
+            objects_[index]->bound(region, answers);
+            ++counters_.bounds_built;
+            bool meets = false;
+            for (SlabBound b : answers) {
+                if (options_.split == SplitMode::Space) {
+                    // The baseline's static bound: the box the object spans
+                    // over the whole shutter interval.
+                    b = SlabBound::of_box(b.box());
+                }
+                b.clip(region);
+                if (b.is_empty()) continue;
+                node.bound.add(b);
+                meets = true;
+            }
+            if (meets) inside.push_back(index);
+        }
+        if (inside.empty()) return std::nullopt;
+        depth_ = std::max(depth_, depth);
+
+        if (depth < options_.max_depth && should_split(region, inside)) {
+            const int count = options_.split == SplitMode::Spacetime ? 16 : 8;
+            for (int c = 0; c < count; ++c) {
+                Box4 part = region.child(c);
+                if (options_.split == SplitMode::Space) {  // halve space only
+                    part.lo.w = region.lo.w;
+                    part.hi.w = region.hi.w;
+                }
+                if (auto child = build(part, inside, depth + 1))
+                    node.children.push_back(std::move(*child));
+            }
+            if (node.children.size() == 1) return std::move(node.children.front());
+            if (!node.children.empty()) {
+                node.bound = SlabBound::empty();
+                for (const Node& child : node.children) node.bound.add(child.bound);
+                return node;
+            }
+        }
+        node.objects = std::move(inside);
+        return node;
+    }
+
+    int depth() const { return depth_; }
+
+private:
+    bool should_split(const Box4& region, const std::vector<std::uint32_t>& inside) const {
+        if (inside.size() > options_.max_objects) return true;
+        double filled = 0.0;
+        for (const std::uint32_t index : inside) filled += objects_[index]->occupancy(region);
+        return filled < options_.max_occupancy;
+    }
+
+    std::span<const IntelligentObject* const> objects_;
+    const BuildOptions& options_;
+    Counters& counters_;
+    int depth_ = 0;
+};
+
+}  // namespace
+
+Hierarchy Hierarchy::build(std::span<const IntelligentObject* const> objects, const Box4& root,
+                           const BuildOptions& options, Counters& counters) {
+    const auto start = std::chrono::steady_clock::now();
+    Hierarchy h;
+    std::vector<std::uint32_t> all(objects.size());
+    for (std::uint32_t i = 0; i < all.size(); ++i) all[i] = i;
+    Builder builder(objects, options, counters);
+    std::optional<Node> top = builder.build(root, all, 0);
+    if (top) {
+        // Breadth-first layout: each node's children are consecutive.
+        std::vector<const Node*> order{&*top};
+        h.cells_.push_back(Cell{top->region, top->bound});
+        for (std::size_t i = 0; i < order.size(); ++i) {
+            const Node& node = *order[i];
+            Cell& cell = h.cells_[i];
+            if (node.children.empty()) {
+                cell.first_object = static_cast<std::uint32_t>(h.object_refs_.size());
+                cell.object_count = static_cast<std::uint32_t>(node.objects.size());
+                h.object_refs_.insert(h.object_refs_.end(), node.objects.begin(),
+                                      node.objects.end());
+                continue;
+            }
+            cell.first_child = static_cast<std::uint32_t>(h.cells_.size());
+            cell.child_count = static_cast<std::uint32_t>(node.children.size());
+            for (const Node& child : node.children) {
+                order.push_back(&child);
+                h.cells_.push_back(Cell{child.region, child.bound});
+            }
+        }
+    }
+    h.depth_ = builder.depth();
+    counters.cells += h.cells_.size();
+    counters.build_seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return h;
+}
+
+}  // namespace hexant::tracer

@@ -1,0 +1,73 @@
+// The question every mode of the tracer answers for a ray: the first surface
+// event along it, or whether anything casting a shadow lies on a segment.
+// Three modes answer it (DESIGN.md, tracer/): one spacetime hierarchy for the
+// whole animation, a spatial hierarchy per frame (the paper's baseline), and
+// brute force (the reference). They must agree up to ties between equal
+// distances.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "runtime/intelligent_object.hpp"
+#include "runtime/spacetime.hpp"
+#include "tracer/counters.hpp"
+#include "tracer/hierarchy.hpp"
+#include "tracer/mailbox.hpp"
+
+namespace hexant::tracer {
+
+enum class Mode { Spacetime, Frames, Brute };
+
+// "spacetime", "frames", "brute"; throws std::invalid_argument otherwise.
+Mode parse_mode(const std::string& name);
+const char* mode_name(Mode mode);
+
+// What one thread carries between rays.
+struct ThreadState {
+    Mailbox mailbox;
+    Counters counters;
+};
+
+// The scene's objects as the tracer holds them: the hierarchy indexes the
+// bounded ones; the unbounded ones (planes) are tested on every ray.
+struct ObjectSet {
+    std::vector<const runtime::IntelligentObject*> bounded;
+    std::vector<const runtime::IntelligentObject*> unbounded;
+
+    static ObjectSet of(std::span<const runtime::IntelligentObjectPtr> objects);
+    std::size_t size() const { return bounded.size() + unbounded.size(); }
+};
+
+// The smallest box the bounded objects' own bounds fit in over [t0, t1]:
+// the root cell is this, extended by the eye and the lights.
+runtime::Box4 enclosing_box(const ObjectSet& objects, double t0, double t1);
+
+class RayQuery {
+public:
+    virtual ~RayQuery() = default;
+    // Make ready for rays with times in [t0, t1] (one frame's shutter):
+    // the frame-by-frame mode builds that frame's hierarchy here; the others
+    // have nothing to do.
+    virtual void prepare_frame(double t0, double t1, Counters& counters) = 0;
+    // The nearest surface event with s_min < s < s_max.
+    virtual std::optional<runtime::ObjectHit> first_hit(const runtime::Ray4& ray, double s_min,
+                                                        double s_max,
+                                                        ThreadState& state) const = 0;
+    // Does an object that casts shadows meet the ray with s_min < s < s_max?
+    virtual bool occluded(const runtime::Ray4& ray, double s_min, double s_max,
+                          ThreadState& state) const = 0;
+    // The mailbox size a thread needs.
+    virtual std::size_t object_count() const = 0;
+};
+
+// `animation` is the root's spacetime box (objects, lights and eye over the
+// whole time range); the frame-by-frame mode takes its space part.
+std::unique_ptr<RayQuery> make_ray_query(Mode mode, ObjectSet objects,
+                                         const runtime::Box4& animation,
+                                         const BuildOptions& options, Counters& counters);
+
+}  // namespace hexant::tracer
