@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/command_line.hpp"
+#include "app/render_command.hpp"
 #include "app/scene_dump.hpp"
 #include "app/scene_summary.hpp"
 #include "language/interpreter.hpp"
@@ -25,7 +26,13 @@ int main(int argc, char** argv) {
         "dump", "Print every object with its parameters at one clock value");
     app::add_scene_arguments(*dump, dump_arguments);
 
+    app::RenderArguments render_arguments;
+    CLI::App* render = program.add_subcommand(
+        "render", "Render the animation's frames with spacetime ray tracing");
+    app::add_render_arguments(*render, render_arguments);
+
     CLI11_PARSE(program, argc, argv);
+    if (render->parsed()) return app::run_render(render_arguments, std::cout, std::cerr);
 
     const app::SceneArguments& arguments = check->parsed() ? check_arguments : dump_arguments;
     try {

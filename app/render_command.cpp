@@ -1,0 +1,201 @@
+#include "app/render_command.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <unistd.h>
+
+#include "language/interpreter.hpp"
+#include "language/scene_error.hpp"
+#include "runtime/object_error.hpp"
+#include "tracer/image_output.hpp"
+#include "tracer/renderer.hpp"
+
+namespace hexant::app {
+
+namespace {
+
+using tracer::Counters;
+
+struct FrameRange {
+    int first, last;
+};
+
+FrameRange frame_range(const std::optional<std::string>& text, const runtime::Animation& a) {
+    FrameRange r{a.initial_frame, a.final_frame};
+    if (!text) return r;
+    const auto colon = text->find(':');
+    try {
+        if (colon == std::string::npos) {
+            r.first = r.last = std::stoi(*text);
+        } else {
+            r.first = std::stoi(text->substr(0, colon));
+            r.last = std::stoi(text->substr(colon + 1));
+        }
+    } catch (const std::exception&) {
+        throw std::runtime_error("--frames: expected A:B or A, got '" + *text + "'");
+    }
+    if (r.first > r.last || r.first < a.initial_frame || r.last > a.final_frame)
+        throw std::runtime_error("--frames " + *text + ": the animation has frames " +
+                                 std::to_string(a.initial_frame) + " to " +
+                                 std::to_string(a.final_frame));
+    return r;
+}
+
+struct Row {
+    const char* name;
+    double (*value)(const Counters&);
+    int decimals;
+};
+
+double per_ray(std::uint64_t n, const Counters& c) {
+    return c.rays() ? double(n) / double(c.rays()) : 0.0;
+}
+
+const Row kRows[] = {
+    {"primary rays", [](const Counters& c) { return double(c.primary_rays); }, 0},
+    {"shadow rays", [](const Counters& c) { return double(c.shadow_rays); }, 0},
+    {"reflected rays", [](const Counters& c) { return double(c.reflected_rays); }, 0},
+    {"refracted rays", [](const Counters& c) { return double(c.refracted_rays); }, 0},
+    {"bounds built", [](const Counters& c) { return double(c.bounds_built); }, 0},
+    {"hierarchy cells", [](const Counters& c) { return double(c.cells); }, 0},
+    {"ray/bound tests", [](const Counters& c) { return double(c.bound_tests); }, 0},
+    {"ray/object tests", [](const Counters& c) { return double(c.object_tests); }, 0},
+    {"ray/bound tests per ray", [](const Counters& c) { return per_ray(c.bound_tests, c); }, 2},
+    {"ray/object tests per ray", [](const Counters& c) { return per_ray(c.object_tests, c); }, 2},
+    {"build time (s)", [](const Counters& c) { return c.build_seconds; }, 3},
+    {"render time (s)", [](const Counters& c) { return c.render_seconds; }, 3},
+    {"total time (s)", [](const Counters& c) { return c.build_seconds + c.render_seconds; }, 3},
+};
+
+void print_stats(std::ostream& out, const std::vector<std::pair<std::string, Counters>>& columns) {
+    out << std::left << std::setw(26) << "";
+    for (const auto& c : columns) out << std::right << std::setw(16) << c.first;
+    if (columns.size() == 2) out << std::setw(10) << "ratio";
+    out << "\n";
+    for (const Row& row : kRows) {
+        out << std::left << std::setw(26) << row.name;
+        for (const auto& c : columns)
+            out << std::right << std::setw(16) << std::fixed << std::setprecision(row.decimals)
+                << row.value(c.second);
+        if (columns.size() == 2) {
+            const double a = row.value(columns[0].second), b = row.value(columns[1].second);
+            out << std::setw(10) << std::setprecision(2);
+            if (a > 0.0) out << b / a; else out << "-";
+        }
+        out << "\n";
+    }
+}
+
+void write_stats_json(const std::string& path,
+                      const std::vector<std::pair<std::string, Counters>>& columns) {
+    std::ostringstream json;
+    json << "{\n";
+    for (std::size_t i = 0; i < columns.size(); ++i) {
+        json << "  \"" << columns[i].first << "\": {";
+        for (std::size_t r = 0; r < std::size(kRows); ++r)
+            json << (r ? ", " : "") << "\"" << kRows[r].name << "\": "
+                 << std::setprecision(17) << kRows[r].value(columns[i].second);
+        json << "}" << (i + 1 < columns.size() ? "," : "") << "\n";
+    }
+    json << "}\n";
+    std::ofstream file(path);
+    file << json.str();
+    if (!file) throw std::runtime_error(path + ": cannot write the statistics");
+}
+
+// One full render in one mode; frames go to files as they finish.
+Counters render_mode(const runtime::SceneDescription& scene, const RenderArguments& args,
+                     tracer::Mode mode, const std::string& pattern, FrameRange range,
+                     bool write, std::vector<tracer::Image>* keep) {
+    tracer::RenderSettings settings;
+    settings.mode = mode;
+    settings.samples_per_pixel = args.samples_per_pixel;
+    settings.jitter = !args.no_jitter;
+    settings.threads = args.threads;
+    settings.build.max_depth = args.max_depth;
+    settings.progress = isatty(STDERR_FILENO);
+    tracer::Renderer renderer(scene, settings);
+    for (int frame = range.first; frame <= range.last; ++frame) {
+        tracer::Image image = renderer.render_frame(frame);
+        if (write) tracer::write_image(image, tracer::frame_path(pattern, frame));
+        if (keep) keep->push_back(std::move(image));
+    }
+    if (settings.progress) std::cerr << "\r" << std::string(40, ' ') << "\r";
+    return renderer.counters();
+}
+
+}  // namespace
+
+void add_render_arguments(CLI::App& command, RenderArguments& a) {
+    add_scene_arguments(command, a.scene);
+    command.add_option("--mode", a.mode, "spacetime (default), frames (per-frame hierarchies) or brute");
+    command.add_option("--spp", a.samples_per_pixel, "Samples per pixel (default 1)")
+        ->check(CLI::Range(1, 1 << 20));
+    command.add_flag("--no-jitter", a.no_jitter,
+                     "Samples at the centres of their strata (with --spp 1: the pixel centre)");
+    command.add_option("--frames", a.frames, "A:B renders frames A to B of the animation");
+    command.add_option("-o,--output", a.output,
+                       "Frame file pattern; #### becomes the frame number (default "
+                       "out/SCENE/frame_####.png; .exr writes linear float)");
+    command.add_option("--contact-sheet", a.contact_sheet, "Also write the frames as one grid image");
+    command.add_option("--animation", a.animation, "Also write an animated GIF of the frames");
+    command.add_flag("--stats", a.stats, "Print the paper's table rows for the run");
+    command.add_option("--stats-json", a.stats_json, "Write the same figures as JSON");
+    command.add_flag("--compare", a.compare,
+                     "Render in spacetime and frames modes and print both columns and their ratio");
+    command.add_option("--threads", a.threads, "Worker threads (default: all cores)");
+    command.add_option("--max-depth", a.max_depth, "Hierarchy depth limit (default 5)")
+        ->check(CLI::Range(0, 12));
+}
+
+int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err) {
+    try {
+        ResolvedScene resolved = resolve(args.scene);
+        for (const auto& warning : resolved.warnings) err << warning << "\n";
+        const runtime::SceneDescription scene =
+            language::parse_scene_file(resolved.scene, resolved.options);
+        const FrameRange range = frame_range(args.frames, scene.animation);
+        const std::string pattern =
+            args.output ? *args.output
+                        : "out/" + resolved.scene.stem().string() + "/frame_####.png";
+        if (range.last > range.first && pattern.find('#') == std::string::npos)
+            throw std::runtime_error("-o " + pattern +
+                                     ": several frames need a #### in the name for the number");
+        const bool keep_frames = args.contact_sheet || args.animation;
+        std::vector<tracer::Image> frames;
+        std::vector<std::pair<std::string, Counters>> columns;
+        const tracer::Mode mode = args.compare ? tracer::Mode::Spacetime : tracer::parse_mode(args.mode);
+        columns.emplace_back(tracer::mode_name(mode),
+                             render_mode(scene, args, mode, pattern, range, true,
+                                         keep_frames ? &frames : nullptr));
+        if (args.compare)
+            columns.emplace_back("frames", render_mode(scene, args, tracer::Mode::Frames, pattern,
+                                                       range, false, nullptr));
+        out << "frames " << range.first << " to " << range.last << ": "
+            << tracer::frame_path(pattern, range.first)
+            << (range.last > range.first ? " ... " + tracer::frame_path(pattern, range.last) : "")
+            << "\n";
+        if (args.contact_sheet) {
+            tracer::write_image(tracer::contact_sheet(frames), *args.contact_sheet);
+            out << "contact sheet: " << *args.contact_sheet << "\n";
+        }
+        if (args.animation) {
+            tracer::write_animation(frames, *args.animation);
+            out << "animation: " << *args.animation << "\n";
+        }
+        if (args.stats || args.compare) print_stats(out, columns);
+        if (args.stats_json) write_stats_json(*args.stats_json, columns);
+        return 0;
+    } catch (const language::SceneError& e) {
+        err << e.formatted();
+        return 1;
+    } catch (const std::exception& e) {
+        err << "hexant: error: " << e.what() << "\n";
+        return 1;
+    }
+}
+
+}  // namespace hexant::app

@@ -1,0 +1,35 @@
+// `hexant render`: frames of an animation, their contact sheet and animated
+// file, and the paper's table rows (--stats, --compare).
+#pragma once
+
+#include <iosfwd>
+#include <optional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "app/command_line.hpp"
+
+namespace hexant::app {
+
+struct RenderArguments {
+    SceneArguments scene;
+    std::string mode = "spacetime";
+    int samples_per_pixel = 1;
+    bool no_jitter = false;
+    std::optional<std::string> frames;  // A:B
+    std::optional<std::string> output;  // pattern with ####
+    std::optional<std::string> contact_sheet, animation, stats_json;
+    bool stats = false;
+    bool compare = false;
+    int threads = 0;
+    int max_depth = 5;
+};
+
+void add_render_arguments(CLI::App& command, RenderArguments& arguments);
+
+// Renders as the arguments say; returns the exit status. Errors go to `err`
+// naming their place; frames finished before an error stay written.
+int run_render(const RenderArguments& arguments, std::ostream& out, std::ostream& err);
+
+}  // namespace hexant::app

@@ -1,0 +1,131 @@
+#include "tracer/renderer.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include <glm/geometric.hpp>
+#include <tbb/blocked_range2d.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+
+#include "runtime/object_factory.hpp"
+#include "tracer/sample_pattern.hpp"
+
+namespace hexant::tracer {
+
+namespace {
+
+using runtime::Box4;
+using runtime::Event;
+
+// The root cell: the objects' extent over the animation, the eye and the
+// lights at every frame's opening and closing.
+Box4 animation_root(const runtime::SceneDescription& scene, const ObjectSet& objects) {
+    const auto& a = scene.animation;
+    Box4 root = enclosing_box(objects, a.time_begin(), a.time_end());
+    const auto add = [&](const glm::dvec3& p) {
+        root.extend(Event(p, a.time_begin()));
+        root.extend(Event(p, a.time_end()));
+    };
+    for (int f = a.initial_frame; f <= a.final_frame; ++f) {
+        const double open = a.clock_of_frame(f);
+        for (const double t : {open, open + a.shutter * a.clock_delta()}) {
+            add(scene.camera.evaluate(t).location);
+            for (const auto& light : scene.lights) {
+                glm::dvec3 p = light.position(t);
+                if (!light.transform.empty()) p = glm::dvec3(light.transform.matrix_at(t) * glm::dvec4(p, 1.0));
+                add(p);
+            }
+        }
+    }
+    // A flat extent (everything in one plane, or a still) gets a little
+    // thickness so that the cells have volume.
+    for (int i = 0; i < 4; ++i) {
+        if (root.hi[i] > root.lo[i]) continue;
+        const double pad = std::max(1e-9, std::fabs(root.lo[i]) * 1e-9);
+        root.lo[i] -= pad;
+        root.hi[i] += pad;
+    }
+    return root;
+}
+
+}  // namespace
+
+Renderer::Renderer(const runtime::SceneDescription& scene, const RenderSettings& settings)
+    : scene_(scene), settings_(settings) {
+    for (const auto& record : scene.objects)
+        objects_.push_back(runtime::make_intelligent_object(*record, scene.default_texture));
+    const ObjectSet set = ObjectSet::of(objects_);
+    root_ = animation_root(scene, set);
+    query_ = make_ray_query(settings.mode, set, root_, settings.build, counters_);
+    shader_ = std::make_unique<Shader>(scene, *query_);
+}
+
+Renderer::~Renderer() = default;
+
+Image Renderer::render_frame(int frame) {
+    const auto& a = scene_.animation;
+    const double open = a.clock_of_frame(frame);
+    const double length = a.shutter * a.clock_delta();
+    query_->prepare_frame(open, open + length, counters_);
+
+    const int width = a.width, height = a.height;
+    const int spp = std::max(1, settings_.samples_per_pixel);
+    Image image(width, height);
+    const bool moving_camera = scene_.camera.depends_on_time();
+    const runtime::CameraFrame fixed_camera = scene_.camera.evaluate(open);
+    const std::size_t object_count = query_->object_count();
+    tbb::enumerable_thread_specific<ThreadState> states(
+        [&] { return ThreadState{Mailbox(object_count), {}}; });
+    std::atomic<long> rows_done{0};
+    const auto start = std::chrono::steady_clock::now();
+
+    std::unique_ptr<tbb::global_control> limit;
+    if (settings_.threads > 0)
+        limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                      settings_.threads);
+    constexpr int kTile = 16;
+    tbb::parallel_for(
+        tbb::blocked_range2d<int>(0, height, kTile, 0, width, kTile),
+        [&](const tbb::blocked_range2d<int>& tile) {
+            ThreadState& state = states.local();
+            for (int y = tile.rows().begin(); y < tile.rows().end(); ++y) {
+                for (int x = tile.cols().begin(); x < tile.cols().end(); ++x) {
+                    const std::uint32_t seed = pixel_seed(frame, x, y);
+                    glm::dvec3 sum(0.0);
+                    for (int i = 0; i < spp; ++i) {
+                        const PixelSample s = pixel_sample(seed, static_cast<std::uint32_t>(i),
+                                                           static_cast<std::uint32_t>(spp),
+                                                           settings_.jitter);
+                        const double t = open + s.time * length;
+                        const runtime::CameraFrame camera =
+                            moving_camera ? scene_.camera.evaluate(t) : fixed_camera;
+                        // POV-Ray's screen: x from -0.5 (left) to 0.5, y from
+                        // 0.5 (top) to -0.5; left-handed.
+                        const double u = (x + s.x) / width - 0.5;
+                        const double v = 0.5 - (y + s.y) / height;
+                        const glm::dvec3 d =
+                            glm::normalize(camera.direction + u * camera.right + v * camera.up);
+                        const runtime::Ray4 ray{Event(camera.location, t), Event(d, 0.0)};
+                        sum += shader_->trace(ray, state);
+                    }
+                    image.set(x, y, sum / double(spp));
+                }
+                if (settings_.progress) {
+                    const long done = ++rows_done;
+                    if (done % 8 == 0)
+                        std::fprintf(stderr, "\rframe %d: %3ld%%", frame, done * 100 / (long(height) * ((width + kTile - 1) / kTile)) );
+                }
+            }
+        });
+    for (const ThreadState& s : states) counters_ += s.counters;
+    counters_.render_seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return image;
+}
+
+}  // namespace hexant::tracer

@@ -1,0 +1,117 @@
+#include "tracer/shader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <glm/geometric.hpp>
+
+#include "runtime/geometry/offset_ray.hpp"
+
+namespace hexant::tracer {
+
+namespace {
+
+using runtime::Event;
+using runtime::Ray4;
+
+glm::dvec3 rgb(const runtime::ColourFunction& c, double t) {
+    return {c.c[0](t), c.c[1](t), c.c[2](t)};
+}
+
+// POV-Ray stops following rays whose contribution falls below its
+// adc_bailout (1/255).
+constexpr double kBailout = 1.0 / 255.0;
+
+}  // namespace
+
+glm::dvec3 Shader::Light::position_at(double t) const {
+    const glm::dvec3 p = position(t);
+    if (transform.empty()) return p;
+    return glm::dvec3(transform.matrix_at(t) * glm::dvec4(p, 1.0));
+}
+
+Shader::Shader(const runtime::SceneDescription& scene, const RayQuery& query)
+    : query_(query), background_(scene.background), ambient_light_(scene.global.ambient_light),
+      max_trace_level_(std::max(1, scene.global.max_trace_level)) {
+    for (const auto& l : scene.lights)
+        lights_.push_back({l.position, l.transform, l.colour, l.shadowless});
+}
+
+glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, ThreadState& state) const {
+    const double t = ray.origin.w;
+    const auto hit = query_.first_hit(ray, 0.0, std::numeric_limits<double>::infinity(), state);
+    if (!hit) return rgb(background_, t);
+    const runtime::SurfacePoint p = hit->object->complete(ray, *hit);
+    const runtime::MaterialSample& m = p.material;
+    const glm::dvec3 d = glm::normalize(glm::dvec3(ray.direction));
+    const glm::dvec3 point(p.event);
+    const double time = p.event.w;
+    // Lighting uses the normal on the viewer's side, as POV-Ray does.
+    glm::dvec3 n = p.shading_normal;
+    glm::dvec3 geometric = p.geometric_normal;
+    const bool back = glm::dot(geometric, d) > 0.0;
+    if (back) {
+        n = -n;
+        geometric = -geometric;
+    }
+    if (glm::dot(n, d) > 0.0) n = geometric;  // an interpolated normal facing away
+
+    const double opaque = std::clamp(1.0 - m.filter - m.transmit, 0.0, 1.0);
+    glm::dvec3 colour = m.colour * (m.ambient * rgb(ambient_light_, time) + m.emission) * opaque;
+
+    const glm::dvec3 start = runtime::geometry::offset_ray(point, geometric);
+    for (const Light& light : lights_) {
+        glm::dvec3 to_light = light.position_at(time) - point;
+        const double distance = glm::length(to_light);
+        if (!(distance > 0.0)) continue;
+        to_light /= distance;
+        const double cosine = glm::dot(n, to_light);
+        if (cosine <= 0.0) continue;
+        if (!light.shadowless) {
+            ++state.counters.shadow_rays;
+            const Ray4 shadow{Event(start, time), Event(to_light, 0.0)};
+            if (query_.occluded(shadow, 0.0, glm::length(light.position_at(time) - start), state))
+                continue;
+        }
+        const glm::dvec3 light_colour = rgb(light.colour, time);
+        glm::dvec3 lit = m.diffuse * std::pow(cosine, m.brilliance) * m.colour * opaque;
+        if (m.phong > 0.0) {
+            const glm::dvec3 reflected = d - 2.0 * glm::dot(d, n) * n;
+            const double c = glm::dot(reflected, to_light);
+            if (c > 0.0) lit += glm::dvec3(m.phong * std::pow(c, m.phong_size));
+        }
+        if (m.specular > 0.0) {
+            const glm::dvec3 half = glm::normalize(to_light - d);
+            const double c = glm::dot(half, n);
+            if (c > 0.0) lit += glm::dvec3(m.specular * std::pow(c, 1.0 / m.roughness));
+        }
+        colour += lit * light_colour;
+    }
+
+    if (depth >= max_trace_level_) return colour;
+    const double reflect_weight = std::max({m.reflection.x, m.reflection.y, m.reflection.z});
+    if (reflect_weight * weight > kBailout) {
+        ++state.counters.reflected_rays;
+        const glm::dvec3 r = d - 2.0 * glm::dot(d, n) * n;
+        const Ray4 reflected{Event(start, time), Event(r, 0.0)};
+        colour += m.reflection * radiance(reflected, depth + 1, weight * reflect_weight, state);
+    }
+    const double through = m.filter + m.transmit;
+    if (through * weight > kBailout) {
+        // Entering the solid when the ray meets the outward normal's front.
+        const double eta = back ? m.ior : 1.0 / m.ior;
+        const double c = -glm::dot(d, geometric);
+        const double k = 1.0 - eta * eta * (1.0 - c * c);
+        glm::dvec3 out = k >= 0.0 ? eta * d + (eta * c - std::sqrt(k)) * geometric
+                                  : d + 2.0 * c * geometric;  // total internal reflection
+        const glm::dvec3 from = k >= 0.0 ? runtime::geometry::offset_ray(point, -geometric) : start;
+        ++state.counters.refracted_rays;
+        const Ray4 next{Event(from, time), Event(out, 0.0)};
+        const glm::dvec3 behind = radiance(next, depth + 1, weight * through, state);
+        colour += behind * (m.filter * m.colour + glm::dvec3(m.transmit));
+    }
+    return colour;
+}
+
+}  // namespace hexant::tracer

@@ -1,0 +1,46 @@
+// POV-Ray 3.7's lighting at a surface event, at the event's own time:
+// ambient (times the global ambient_light) and emission, then per point
+// light diffuse with brilliance, phong and specular highlights, with a hard
+// shadow ray cast at the same time (none for shadowless lights); then
+// reflection and transmission (filter, transmit, refraction by ior) by
+// recursion up to max_trace_level. Colours are linear (assumed_gamma 1.0).
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include "runtime/scene.hpp"
+#include "runtime/spacetime.hpp"
+#include "tracer/ray_query.hpp"
+
+namespace hexant::tracer {
+
+class Shader {
+public:
+    Shader(const runtime::SceneDescription& scene, const RayQuery& query);
+
+    // The colour seen along a primary ray.
+    glm::dvec3 trace(const runtime::Ray4& ray, ThreadState& state) const {
+        ++state.counters.primary_rays;
+        return radiance(ray, 1, 1.0, state);
+    }
+
+private:
+    struct Light {
+        runtime::Vector3Function position;
+        runtime::Transform transform;
+        runtime::ColourFunction colour;
+        bool shadowless = false;
+        glm::dvec3 position_at(double t) const;
+    };
+
+    glm::dvec3 radiance(const runtime::Ray4& ray, int depth, double weight,
+                        ThreadState& state) const;
+
+    const RayQuery& query_;
+    std::vector<Light> lights_;
+    runtime::ColourFunction background_;
+    runtime::ColourFunction ambient_light_;
+    int max_trace_level_;
+};
+
+}  // namespace hexant::tracer
