@@ -1,7 +1,8 @@
 # The two set-up commands: `make run` and `make test`. Each installs the
 # Debian packages hexant needs (as root; otherwise it prints the command),
-# configures, builds into build/, then renders (for now: checks) the atom
-# example or runs the whole test suite.
+# configures, builds into build/, then renders the atom example (frames,
+# contact sheet and animated GIF under out/atom/) or runs the whole test
+# suite.
 PACKAGES := build-essential cmake pkg-config tao-pegtl-dev libglm-dev catch2 libcli11-dev \
             libopenimageio-dev libtbb-dev
 JOBS := $(shell nproc 2>/dev/null || echo 2)
@@ -9,7 +10,8 @@ JOBS := $(shell nproc 2>/dev/null || echo 2)
 .PHONY: run test build deps clean
 
 run: build
-	./build/hexant check examples/atom.pov examples/atom.ini
+	./build/hexant render examples/atom.pov examples/atom.ini \
+	  --contact-sheet out/atom/contact_sheet.png --animation out/atom/atom.gif
 
 test: build
 	cd build && ctest --output-on-failure -j$(JOBS)

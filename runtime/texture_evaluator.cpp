@@ -52,9 +52,7 @@ TextureEvaluator::TextureEvaluator(const Texture& texture, const std::optional<I
 }
 
 int checker_index(const glm::dvec3& p) {
-    constexpr double kSmallTolerance = 1e-3;  // POV-Ray 3.7's SMALL_TOLERANCE
-    const double sum = std::floor(p.x + kSmallTolerance) + std::floor(p.y + kSmallTolerance) +
-                       std::floor(p.z + kSmallTolerance);
+    const double sum = std::floor(p.x) + std::floor(p.y) + std::floor(p.z);
     // fmod of an integer-valued double is exact; no int overflow far away.
     return std::fabs(std::fmod(sum, 2.0)) == 1.0 ? 1 : 0;
 }

@@ -41,9 +41,11 @@ private:
     bool depends_on_time_ = false;
 };
 
-// POV-Ray's checker: which of the two colours a pattern point takes. The
-// small offset is POV-Ray's SMALL_TOLERANCE (1e-3, in pattern units, as
-// POV-Ray has it), so faces lying on integer planes pick the same square.
+// POV-Ray's checker: which of the two colours a pattern point takes, by the
+// parity of floor(x) + floor(y) + floor(z). POV-Ray 3.7's renders show no
+// offset of the square edges (a 1e-3 offset, as older sources have, flips
+// the pixels whose hits lie within 1e-3 of an edge; see
+// tests/tracer/pov_reference).
 int checker_index(const glm::dvec3& pattern_point);
 
 }  // namespace hexant::runtime

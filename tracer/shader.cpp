@@ -76,12 +76,13 @@ glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, ThreadSta
         }
         const glm::dvec3 light_colour = rgb(light.colour, time);
         glm::dvec3 lit = m.diffuse * std::pow(cosine, m.brilliance) * m.colour * opaque;
-        if (m.phong > 0.0) {
+        // POV-Ray's shadowless lights are fill lights: no highlights.
+        if (m.phong > 0.0 && !light.shadowless) {
             const glm::dvec3 reflected = d - 2.0 * glm::dot(d, n) * n;
             const double c = glm::dot(reflected, to_light);
             if (c > 0.0) lit += glm::dvec3(m.phong * std::pow(c, m.phong_size));
         }
-        if (m.specular > 0.0) {
+        if (m.specular > 0.0 && !light.shadowless) {
             const glm::dvec3 half = glm::normalize(to_light - d);
             const double c = glm::dot(half, n);
             if (c > 0.0) lit += glm::dvec3(m.specular * std::pow(c, 1.0 / m.roughness));

@@ -1,7 +1,8 @@
 // POV-Ray 3.7's lighting at a surface event, at the event's own time:
 // ambient (times the global ambient_light) and emission, then per point
 // light diffuse with brilliance, phong and specular highlights, with a hard
-// shadow ray cast at the same time (none for shadowless lights); then
+// shadow ray cast at the same time (shadowless lights cast none and, as
+// POV-Ray's fill lights, add no highlights); then
 // reflection and transmission (filter, transmit, refraction by ior) by
 // recursion up to max_trace_level. Colours are linear (assumed_gamma 1.0).
 #pragma once

@@ -1,0 +1,85 @@
+// `hexant render` as a user meets it: frames where -o says, the stats rows,
+// and clear errors (naming the flag or the place) with nothing half-written.
+#include "app/render_command.hpp"
+
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+using hexant::app::RenderArguments;
+using hexant::app::run_render;
+
+namespace {
+
+fs::path scene_file(const std::string& text) {
+    const fs::path folder = fs::temp_directory_path() / "hexant_render_command_test";
+    fs::create_directories(folder);
+    const fs::path path = folder / "scene.pov";
+    std::ofstream(path) << text;
+    return path;
+}
+
+RenderArguments arguments_for(const fs::path& scene, const fs::path& out) {
+    RenderArguments a;
+    a.scene.files = {scene.string()};
+    a.scene.width = 16;
+    a.scene.height = 12;
+    a.scene.frame_count = 3;
+    a.output = (out / "f_##.png").string();
+    return a;
+}
+
+}  // namespace
+
+TEST_CASE("render writes the frames, the contact sheet and the table rows", "[app][render]") {
+    const fs::path scene = scene_file(
+        "camera { location <0, 0, -5> look_at 0 }\nlight_source { <0, 5, -5>, rgb 1 }\n"
+        "sphere { <clock, 0, 0>, 1 pigment { rgb 1 } }\n");
+    const fs::path out = scene.parent_path() / "out";
+    fs::remove_all(out);
+    RenderArguments a = arguments_for(scene, out);
+    a.frames = "2:3";
+    a.contact_sheet = (out / "sheet.png").string();
+    a.compare = true;
+    std::ostringstream stdout_text, stderr_text;
+    REQUIRE(run_render(a, stdout_text, stderr_text) == 0);
+    INFO(stderr_text.str());
+    CHECK_FALSE(fs::exists(out / "f_01.png"));
+    CHECK(fs::exists(out / "f_02.png"));
+    CHECK(fs::exists(out / "f_03.png"));
+    CHECK(fs::exists(out / "sheet.png"));
+    const std::string text = stdout_text.str();
+    CHECK(text.find("ray/object tests per ray") != std::string::npos);
+    CHECK(text.find("spacetime") != std::string::npos);
+    CHECK(text.find("ratio") != std::string::npos);
+}
+
+TEST_CASE("render reports bad requests clearly and writes nothing", "[app][render]") {
+    const fs::path scene = scene_file("sphere { 0, 1 }\n");
+    const fs::path out = scene.parent_path() / "bad";
+    fs::remove_all(out);
+    std::ostringstream o, e;
+    RenderArguments a = arguments_for(scene, out);
+    a.frames = "2:9";
+    CHECK(run_render(a, o, e) != 0);
+    CHECK(e.str().find("--frames 2:9") != std::string::npos);
+    a = arguments_for(scene, out);
+    a.output = (out / "same_name.png").string();
+    e.str("");
+    CHECK(run_render(a, o, e) != 0);
+    CHECK(e.str().find("####") != std::string::npos);
+    a = arguments_for(scene, out);
+    a.mode = "fast";
+    e.str("");
+    CHECK(run_render(a, o, e) != 0);
+    CHECK(e.str().find("fast") != std::string::npos);
+    // A scene error names its place.
+    const fs::path broken = scene_file("sphere { 0, 1 \n");
+    a = arguments_for(broken, out);
+    e.str("");
+    CHECK(run_render(a, o, e) != 0);
+    CHECK(e.str().find("scene.pov:") != std::string::npos);
+    CHECK_FALSE(fs::exists(out));
+}

@@ -1,0 +1,149 @@
+// The renderer: the three modes make the same image of a moving scene; the
+// image does not depend on the thread count; frames are written whole
+// (temporary name, then rename) where the pattern says.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "language/interpreter.hpp"
+#include "tracer/image_output.hpp"
+#include "tracer/renderer.hpp"
+
+namespace tr = hexant::tracer;
+namespace fs = std::filesystem;
+
+namespace {
+
+// Fast spinners, a box crossing the view, a moving light and camera, a
+// mirror and a glass sphere: every kind of ray the shader casts.
+const char* kScene = R"(
+camera { location <0, 3, -8> look_at <0, 0.5, 0> angle 45 translate <clock, 0, 0> }
+light_source { <-4 + 8 * clock, 8, -6>, rgb 1 }
+light_source { <5, 4, -3>, rgb 0.3 shadowless }
+background { rgb <0.1, 0.1, 0.2> }
+plane { y, 0 pigment { checker rgb 0.8, rgb 0.3 } }
+#declare I = 0;
+#while (I < 12)
+  sphere { <1.5 + 0.1 * I, 0.4 + 0.15 * I, 0>, 0.2 rotate y * (360 * (1 + I) * clock + 30 * I)
+           pigment { rgb <0.9, 0.3 + 0.05 * I, 0.2> } finish { phong 0.5 } }
+  #declare I = I + 1;
+#end
+box { <-0.5, 0, -0.5>, <0.5, 1, 0.5> translate <-4 + 8 * clock, 0, 1> pigment { rgb <0.2, 0.5, 0.9> } }
+sphere { <0, 1, 2>, 0.8 pigment { rgb 0.2 } finish { reflection 0.6 } }
+sphere { <-1.5, 0.6, -1>, 0.6 pigment { rgbf <0.9, 1, 0.9, 0.9> } interior { ior 1.5 } }
+)";
+
+hexant::runtime::SceneDescription parse_scene() {
+    hexant::language::ParseOptions options;
+    options.animation.width = 40;
+    options.animation.height = 30;
+    options.animation.initial_frame = 1;
+    options.animation.final_frame = 4;
+    return hexant::language::parse_scene_text(kScene, "render-test.pov", options);
+}
+
+double largest_difference(const tr::Image& a, const tr::Image& b) {
+    REQUIRE(a.rgb.size() == b.rgb.size());
+    double d = 0.0;
+    for (std::size_t i = 0; i < a.rgb.size(); ++i) d = std::max(d, double(std::fabs(a.rgb[i] - b.rgb[i])));
+    return d;
+}
+
+tr::Image render(const hexant::runtime::SceneDescription& scene, tr::Mode mode, int frame,
+                 int threads = 0) {
+    tr::RenderSettings settings;
+    settings.mode = mode;
+    settings.samples_per_pixel = 4;
+    settings.threads = threads;
+    tr::Renderer renderer(scene, settings);
+    return renderer.render_frame(frame);
+}
+
+}  // namespace
+
+TEST_CASE("spacetime, frames and brute force render the same images", "[tracer][render]") {
+    const auto scene = parse_scene();
+    for (const int frame : {1, 3}) {
+        const tr::Image brute = render(scene, tr::Mode::Brute, frame);
+        // Equal hits give equal colours; a tie between equal distances could
+        // pick another object, which this scene does not have.
+        CHECK(largest_difference(render(scene, tr::Mode::Spacetime, frame), brute) == 0.0);
+        CHECK(largest_difference(render(scene, tr::Mode::Frames, frame), brute) == 0.0);
+        // Not a blank image: the comparison means something.
+        double sum = 0.0;
+        for (float v : brute.rgb) sum += v;
+        CHECK(sum > 0.1 * brute.rgb.size());
+    }
+}
+
+TEST_CASE("the image does not depend on the thread count", "[tracer][render]") {
+    const auto scene = parse_scene();
+    const tr::Image one = render(scene, tr::Mode::Spacetime, 2, 1);
+    const tr::Image two = render(scene, tr::Mode::Spacetime, 2, 2);
+    const tr::Image eight = render(scene, tr::Mode::Spacetime, 2, 8);
+    CHECK(largest_difference(one, two) == 0.0);
+    CHECK(largest_difference(one, eight) == 0.0);
+}
+
+TEST_CASE("motion blur: a sample's time is its own, within the frame's shutter", "[tracer][render]") {
+    // A sphere crossing the whole view during frame 1's shutter leaves a
+    // streak: many pixels partly covered; at shutter 0 it is a sharp disc.
+    hexant::language::ParseOptions options;
+    options.animation.width = 48;
+    options.animation.height = 16;
+    options.animation.initial_frame = 1;
+    options.animation.final_frame = 2;
+    const char* text = "camera { location <0, 0, -10> look_at 0 }\n"
+                       "light_source { <0, 0, -10>, rgb 1 }\n"
+                       "sphere { <-4 + 8 * clock, 0, 0>, 0.8 pigment { rgb 1 } finish { ambient 1 diffuse 0 } }\n";
+    auto scene = hexant::language::parse_scene_text(text, "blur.pov", options);
+    const auto partial_pixels = [&](double shutter) {
+        scene.animation.shutter = shutter;
+        tr::RenderSettings settings;
+        settings.samples_per_pixel = 16;
+        tr::Renderer renderer(scene, settings);
+        const tr::Image image = renderer.render_frame(1);
+        int partial = 0;
+        for (int x = 0; x < image.width; ++x) {
+            const double v = image.at(x, image.height / 2).x;
+            if (v > 0.05 && v < 0.95) ++partial;
+        }
+        return partial;
+    };
+    CHECK(partial_pixels(0.0) <= 4);   // the disc's two edges, antialiased
+    CHECK(partial_pixels(1.0) >= 20);  // a streak over half the width
+}
+
+TEST_CASE("frames are written whole where the pattern says", "[tracer][render]") {
+    CHECK(tr::frame_path("out/a/frame_####.png", 7) == "out/a/frame_0007.png");
+    CHECK(tr::frame_path("f##.exr", 123) == "f123.exr");
+    CHECK(tr::frame_path("still.png", 3) == "still.png");
+    const fs::path folder = fs::temp_directory_path() / "hexant_render_test";
+    fs::remove_all(folder);
+    tr::Image image(8, 4);
+    image.set(1, 1, {1.0, 0.5, 0.25});
+    tr::write_image(image, folder / "deep/er/f.png");
+    tr::write_image(image, folder / "f.exr");
+    CHECK(fs::exists(folder / "deep/er/f.png"));
+    CHECK(fs::exists(folder / "f.exr"));
+    for (const auto& entry : fs::recursive_directory_iterator(folder))
+        CHECK(entry.path().string().find(".partial") == std::string::npos);
+    // A name no format knows is an error naming the file, and leaves nothing.
+    CHECK_THROWS_WITH(tr::write_image(image, folder / "f.unknown"), Catch::Contains("f.unknown"));
+    CHECK_FALSE(fs::exists(folder / "f.unknown"));
+    // Contact sheets read like a book.
+    tr::Image a(2, 2), b(2, 2), c(2, 2);
+    b.set(0, 0, {1, 0, 0});
+    c.set(0, 0, {0, 1, 0});
+    const tr::Image sheet = tr::contact_sheet({a, b, c});
+    CHECK(sheet.width == 4);
+    CHECK(sheet.height == 4);
+    CHECK(sheet.at(2, 0).x == 1.0);  // second frame: top right
+    CHECK(sheet.at(0, 2).y == 1.0);  // third frame: next row, left
+    CHECK(tr::to_srgb8(0.0) == 0);
+    CHECK(tr::to_srgb8(1.0) == 255);
+    CHECK(tr::to_srgb8(0.5) == 188);
+    fs::remove_all(folder);
+}
