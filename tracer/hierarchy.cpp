@@ -55,14 +55,9 @@ public:
         if (inside.empty()) return std::nullopt;
         depth_ = std::max(depth_, depth);
 
-        if (depth < options_.max_depth && should_split(region, inside)) {
-            const int count = options_.split == SplitMode::Spacetime ? 16 : 8;
-            for (int c = 0; c < count; ++c) {
-                Box4 part = region.child(c);
-                if (options_.split == SplitMode::Space) {  // halve space only
-                    part.lo.w = region.lo.w;
-                    part.hi.w = region.hi.w;
-                }
+        const Split split = depth < options_.max_depth ? choose_split(region, inside) : Split{};
+        if (split.space || split.time) {
+            for (const Box4& part : parts(region, split)) {
                 if (auto child = build(part, inside, depth + 1))
                     node.children.push_back(std::move(*child));
             }
@@ -80,11 +75,52 @@ public:
     int depth() const { return depth_; }
 
 private:
-    bool should_split(const Box4& region, const std::vector<std::uint32_t>& inside) const {
-        if (inside.size() > options_.max_objects) return true;
-        double filled = 0.0;
-        for (const std::uint32_t index : inside) filled += objects_[index]->occupancy(region);
-        return filled < options_.max_occupancy;
+    struct Split {
+        bool space = false, time = false;
+    };
+
+    // The paper's criterion says whether to split; what moves says along
+    // which axes. Halving time helps only where something moves (a static
+    // scene builds no time splits); halving space only where there is more
+    // than one object to separate or the objects leave much of the cell
+    // empty (a lone object's own bound is already as tight as its cell's).
+    Split choose_split(const Box4& region, const std::vector<std::uint32_t>& inside) const {
+        bool moving = false;
+        for (const std::uint32_t index : inside) moving = moving || objects_[index]->moves();
+        Split split;
+        split.time = moving && options_.split == SplitMode::Spacetime;
+        if (inside.size() > options_.max_objects) {
+            split.space = true;
+        } else if (inside.size() > 1) {
+            double filled = 0.0;
+            for (const std::uint32_t index : inside) filled += objects_[index]->occupancy(region);
+            split.space = filled < options_.max_occupancy;
+        }
+        // With nothing to separate in space, a moving object's swept bound
+        // still tightens when its time is halved.
+        return split;
+    }
+
+    static std::vector<Box4> parts(const Box4& region, Split split) {
+        std::vector<Box4> out;
+        const int count = split.space ? 8 : 1;
+        for (int c = 0; c < count; ++c) {
+            for (int half = 0; half < (split.time ? 2 : 1); ++half) {
+                Box4 part = region.child(c | (half << 3));
+                if (!split.time) {
+                    part.lo.w = region.lo.w;
+                    part.hi.w = region.hi.w;
+                }
+                if (!split.space) {
+                    for (int i = 0; i < 3; ++i) {
+                        part.lo[i] = region.lo[i];
+                        part.hi[i] = region.hi[i];
+                    }
+                }
+                out.push_back(part);
+            }
+        }
+        return out;
     }
 
     std::span<const IntelligentObject* const> objects_;

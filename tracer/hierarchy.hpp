@@ -3,8 +3,12 @@
 //
 // Down: a cell (a 4D box) splits into 16 equal children, halving x, y, z and
 // t, while the paper's criterion holds: more than `max_objects` objects meet
-// the cell; or, with that many or fewer, they fill less than
-// `max_occupancy` of its volume; and never below `max_depth`.
+// the cell; or, with that many or fewer (but more than one), they fill less
+// than `max_occupancy` of its volume; and never below `max_depth`. Time is
+// halved only where something in the cell moves (8 spatial children
+// otherwise), and a cell with one moving object halves its time only (2
+// children): splitting space around a lone object cannot tighten its bound,
+// splitting the time it sweeps can.
 // Up: a leaf's bound is the union of its objects' 12-slab bounds inside the
 // cell (each object clips to the region it is asked about); an inner cell's
 // is the union of its children's. A cell with one child is replaced by it.

@@ -78,7 +78,8 @@ public:
     Walk(const Hierarchy& h, std::span<const IntelligentObject* const> objects, const Ray4& ray,
          double s_min, double s_max, bool shadow, ThreadState& state)
         : h_(h), objects_(objects), ray_(ray), slab_ray_(ray), s_min_(s_min), s_max_(s_max),
-          shadow_(shadow), state_(state), best_s_(s_max) {}
+          shadow_(shadow), state_(state), best_s_(s_max), instant_(ray.direction.w == 0.0),
+          time_(ray.origin.w) {}
 
     void run() {
         if (h_.empty()) return;
@@ -117,8 +118,11 @@ private:
         int n = 0;
         for (std::uint32_t c = 0; c < cell.child_count; ++c) {
             const std::uint32_t index = cell.first_child + c;
+            const runtime::Box4& region = h_.cells()[index].region;
+            // A ray at one instant sees only the children whose time holds it.
+            if (instant_ && (time_ < region.lo.w || time_ > region.hi.w)) continue;
             double e, x;
-            if (!slab_ray_.clip(h_.cells()[index].region, enter, exit, &e, &x)) continue;
+            if (!slab_ray_.clip(region, enter, exit, &e, &x)) continue;
             exits[n] = x;
             order[n++] = {e, index};
         }
@@ -146,6 +150,8 @@ private:
     double best_s_;
     std::optional<ObjectHit> best_;
     bool blocked_ = false;
+    bool instant_;
+    double time_;
 };
 
 // The unbounded objects, tested on every ray; their indices follow the
