@@ -81,7 +81,8 @@ Image Renderer::render_frame(int frame) {
     const std::size_t object_count = query_->object_count();
     tbb::enumerable_thread_specific<ThreadState> states(
         [&] { return ThreadState{Mailbox(object_count), {}}; });
-    std::atomic<long> rows_done{0};
+    std::atomic<long> pixels_done{0};
+    std::atomic<int> last_shown{-1};
     const auto start = std::chrono::steady_clock::now();
 
     std::unique_ptr<tbb::global_control> limit;
@@ -115,11 +116,15 @@ Image Renderer::render_frame(int frame) {
                     }
                     image.set(x, y, sum / double(spp));
                 }
-                if (settings_.progress) {
-                    const long done = ++rows_done;
-                    if (done % 8 == 0)
-                        std::fprintf(stderr, "\rframe %d: %3ld%%", frame, done * 100 / (long(height) * ((width + kTile - 1) / kTile)) );
+            }
+            if (settings_.progress) {
+                // The thread that moves the percentage on prints it.
+                const long done = pixels_done += long(tile.rows().size()) * long(tile.cols().size());
+                const int percent = int(done * 100 / (long(width) * height));
+                int shown = last_shown.load();
+                while (percent > shown && !last_shown.compare_exchange_weak(shown, percent)) {
                 }
+                if (percent > shown) std::fprintf(stderr, "\rframe %d: %3d%%", frame, percent);
             }
         });
     for (const ThreadState& s : states) counters_ += s.counters;
