@@ -155,6 +155,14 @@ Hierarchy Hierarchy::build(std::span<const IntelligentObject* const> objects, co
             }
             cell.first_child = static_cast<std::uint32_t>(h.cells_.size());
             cell.child_count = static_cast<std::uint32_t>(node.children.size());
+            cell.splits_time_only = std::all_of(
+                node.children.begin(), node.children.end(), [&](const Node& child) {
+                    for (int k = 0; k < 3; ++k)
+                        if (child.region.lo[k] != node.region.lo[k] ||
+                            child.region.hi[k] != node.region.hi[k])
+                            return false;
+                    return true;
+                });
             for (const Node& child : node.children) {
                 order.push_back(&child);
                 h.cells_.push_back(Cell{child.region, child.bound});

@@ -44,6 +44,10 @@ struct Cell {
     runtime::SlabBound bound;   // what its objects occupy inside region
     std::uint32_t first_child = 0, child_count = 0;    // children are consecutive
     std::uint32_t first_object = 0, object_count = 0;  // a leaf's object indices
+    // The children halve time only (same space as this cell): a ray at one
+    // instant meets exactly one of them, whose bound is tighter than this
+    // cell's, so the walk goes straight to it.
+    bool splits_time_only = false;
     bool is_leaf() const { return child_count == 0; }
 };
 

@@ -93,6 +93,14 @@ public:
 private:
     // True when the walk may stop.
     bool visit(const Cell& cell, double enter, double exit) {
+        if (instant_ && cell.splits_time_only) {
+            for (std::uint32_t c = 0; c < cell.child_count; ++c) {
+                const Cell& child = h_.cells()[cell.first_child + c];
+                if (time_ >= child.region.lo.w && time_ <= child.region.hi.w)
+                    return visit(child, enter, exit);
+            }
+            return false;
+        }
         ++state_.counters.bound_tests;
         if (!slab_ray_.intersect(cell.bound, enter, exit)) return false;
         if (cell.is_leaf()) {
