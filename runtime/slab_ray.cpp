@@ -8,16 +8,9 @@ namespace hexant::runtime {
 
 namespace {
 
-constexpr double kEpsilon = std::numeric_limits<double>::epsilon() * 0.5;  // unit roundoff
-
-constexpr double gamma(int n) {
-    return n * kEpsilon / (1.0 - n * kEpsilon);
-}
-
-// Widening of the parameters: the subtraction and the multiplication by the
-// rounded reciprocal (three roundings) stay within gamma(3) relative; twice
-// that is Ize's margin, and one more ulp covers the widening's own rounding.
-constexpr double kParameterMargin = 2.0 * gamma(3) + 2.0 * kEpsilon;
+using slab_ray_detail::gamma;
+using slab_ray_detail::kEpsilon;
+using slab_ray_detail::kParameterMargin;
 
 }  // namespace
 
@@ -73,34 +66,6 @@ bool SlabRay::intersect(const SlabBound& bound, double s_min, double s_max, doub
         a -= std::fabs(a) * kParameterMargin;
         b += std::fabs(b) * kParameterMargin;
         if (a != a || b != b) continue;  // a slab that says nothing
-        near = std::max(near, a);
-        far = std::min(far, b);
-        if (near > far) return false;
-    }
-    if (enter) *enter = near;
-    if (exit) *exit = far;
-    return true;
-}
-
-bool SlabRay::clip(const Box4& box, double s_min, double s_max, double* enter,
-                   double* exit) const {
-    double near = s_min, far = s_max;
-    if (!(near <= far)) return false;
-    // Time first: a ray at one instant leaves half of a cell's children at
-    // once, before any division.
-    for (const int k : {3, 0, 1, 2}) {
-        const double lo = box.lo[k], hi = box.hi[k];
-        if (!(lo <= hi)) return false;
-        if (parallel_[k]) {
-            if (origin_dot_[k] < lo || origin_dot_[k] > hi) return false;
-            continue;
-        }
-        double a = (lo - origin_dot_[k]) * inverse_dot_[k];
-        double b = (hi - origin_dot_[k]) * inverse_dot_[k];
-        if (a > b) std::swap(a, b);
-        a -= std::fabs(a) * kParameterMargin;
-        b += std::fabs(b) * kParameterMargin;
-        if (a != a || b != b) continue;
         near = std::max(near, a);
         far = std::min(far, b);
         if (near > far) return false;

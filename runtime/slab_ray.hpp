@@ -18,12 +18,30 @@
 //    inside or out for all s, never a division by zero.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
 
 #include "runtime/slab_bound.hpp"
 #include "runtime/spacetime.hpp"
 
 namespace hexant::runtime {
+
+namespace slab_ray_detail {
+
+inline constexpr double kEpsilon = std::numeric_limits<double>::epsilon() * 0.5;  // unit roundoff
+
+constexpr double gamma(int n) {
+    return n * kEpsilon / (1.0 - n * kEpsilon);
+}
+
+// Widening of the parameters: the subtraction and the multiplication by the
+// rounded reciprocal (three roundings) stay within gamma(3) relative; twice
+// that is Ize's margin, and one more ulp covers the widening's own rounding.
+inline constexpr double kParameterMargin = 2.0 * gamma(3) + 2.0 * kEpsilon;
+
+}  // namespace slab_ray_detail
 
 class SlabRay {
   public:
@@ -52,5 +70,34 @@ class SlabRay {
     std::array<double, kSlabCount> origin_error_;   // bound of |computed - exact| n · o
     std::array<double, kSlabCount> direction_error_;
 };
+
+// Inline: the hierarchy's walk clips every child it might enter.
+inline bool SlabRay::clip(const Box4& box, double s_min, double s_max, double* enter,
+                          double* exit) const {
+    double near = s_min, far = s_max;
+    if (!(near <= far)) return false;
+    // Time first: a ray at one instant leaves half of a cell's children at
+    // once, before any division.
+    for (const int k : {3, 0, 1, 2}) {
+        const double lo = box.lo[k], hi = box.hi[k];
+        if (!(lo <= hi)) return false;
+        if (parallel_[k]) {
+            if (origin_dot_[k] < lo || origin_dot_[k] > hi) return false;
+            continue;
+        }
+        double a = (lo - origin_dot_[k]) * inverse_dot_[k];
+        double b = (hi - origin_dot_[k]) * inverse_dot_[k];
+        if (a > b) std::swap(a, b);
+        a -= std::fabs(a) * slab_ray_detail::kParameterMargin;
+        b += std::fabs(b) * slab_ray_detail::kParameterMargin;
+        if (a != a || b != b) continue;
+        near = std::max(near, a);
+        far = std::min(far, b);
+        if (near > far) return false;
+    }
+    if (enter) *enter = near;
+    if (exit) *exit = far;
+    return true;
+}
 
 }  // namespace hexant::runtime

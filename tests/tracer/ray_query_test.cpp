@@ -153,3 +153,33 @@ TEST_CASE("each object is tested at most once per ray however many cells hold it
     CHECK(state.counters.object_tests == 1);
     CHECK(state.counters.mailbox_hits > 0);
 }
+
+TEST_CASE("a static scene builds no time splits; a moving one does", "[tracer]") {
+    const auto time_splits = [](const std::string& sdl) {
+        const Parsed parsed = parse(sdl);
+        const auto set = tr::ObjectSet::of(parsed.objects);
+        tr::Counters counters;
+        const tr::Hierarchy h =
+            tr::Hierarchy::build(set.bounded, root_box(set), tr::BuildOptions{}, counters);
+        REQUIRE_FALSE(h.empty());
+        int splits = 0;
+        for (const tr::Cell& cell : h.cells())
+            if (cell.region.lo.w != h.root().region.lo.w || cell.region.hi.w != h.root().region.hi.w)
+                ++splits;
+        return std::pair<int, std::size_t>(splits, h.cells().size());
+    };
+    std::string still, moving;
+    for (int i = 0; i < 10; ++i) {
+        char line[160];
+        std::snprintf(line, sizeof line, "sphere { <%d, %d, 0>, 0.3 }\n", i % 4, i / 4);
+        still += line;
+        std::snprintf(line, sizeof line, "sphere { <%d, %d, 0>, 0.3 translate <clock, 0, 0> }\n",
+                      i % 4, i / 4);
+        moving += line;
+    }
+    const auto [still_splits, still_cells] = time_splits(still);
+    const auto [moving_splits, moving_cells] = time_splits(moving);
+    CHECK(still_cells > 8);  // it does subdivide space
+    CHECK(still_splits == 0);
+    CHECK(moving_splits > 0);
+}
