@@ -6,7 +6,7 @@
 // back into the first.
 //
 // Render with hexant:   build/hexant render examples/atom.pov examples/atom.ini
-// Check it (for now):   build/hexant check examples/atom.pov examples/atom.ini
+// Check it:             build/hexant check examples/atom.pov examples/atom.ini
 // Render with POV-Ray:  povray examples/atom.ini examples/atom.pov
 #version 3.7;
 #include "colors.inc"

@@ -43,6 +43,7 @@ TEST_CASE("render writes the frames, the contact sheet and the table rows", "[ap
     a.frames = "2:3";
     a.contact_sheet = (out / "sheet.png").string();
     a.compare = true;
+    a.stats_json = (out / "stats.json").string();
     std::ostringstream stdout_text, stderr_text;
     REQUIRE(run_render(a, stdout_text, stderr_text) == 0);
     INFO(stderr_text.str());
@@ -54,6 +55,12 @@ TEST_CASE("render writes the frames, the contact sheet and the table rows", "[ap
     CHECK(text.find("ray/object tests per ray") != std::string::npos);
     CHECK(text.find("spacetime") != std::string::npos);
     CHECK(text.find("ratio") != std::string::npos);
+    // The same figures for tools: one object per mode, the rows as keys.
+    std::ifstream json(out / "stats.json");
+    const std::string stats((std::istreambuf_iterator<char>(json)), std::istreambuf_iterator<char>());
+    CHECK(stats.find("\"frames\": {") != std::string::npos);
+    CHECK(stats.find("\"spacetime\": {") != std::string::npos);
+    CHECK(stats.find("\"primary rays\": 384") != std::string::npos);  // 2 frames of 16 x 12
 }
 
 TEST_CASE("render reports bad requests clearly and writes nothing", "[app][render]") {
