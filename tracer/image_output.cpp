@@ -86,10 +86,19 @@ void write_image(const Image& image, const fs::path& path) {
     finish(temporary, path);
 }
 
+// A full grid when one is nearly square (32 frames: 8 by 4, not 6 by 6 with
+// four holes); otherwise the smallest square that holds them all.
+static int default_columns(int n) {
+    const int square = static_cast<int>(std::ceil(std::sqrt(double(n))));
+    for (int columns = square; columns <= 2 * square; ++columns)
+        if (n % columns == 0) return columns;
+    return square;
+}
+
 Image contact_sheet(const std::vector<Image>& frames, int columns) {
     if (frames.empty()) return {};
     const int n = static_cast<int>(frames.size());
-    if (columns <= 0) columns = static_cast<int>(std::ceil(std::sqrt(double(n))));
+    if (columns <= 0) columns = default_columns(n);
     const int rows = (n + columns - 1) / columns;
     const int w = frames.front().width, h = frames.front().height;
     Image sheet(w * columns, h * rows);

@@ -21,7 +21,8 @@ std::string frame_path(const std::string& pattern, int frame);
 void write_image(const Image& image, const std::filesystem::path& path);
 
 // The frames as a grid read like a book: left to right, top to bottom;
-// `columns` 0 chooses a near-square grid.
+// `columns` 0 chooses a full grid when one is nearly square (32 frames: 8
+// by 4), else the smallest square grid.
 Image contact_sheet(const std::vector<Image>& frames, int columns = 0);
 
 // An animated file (GIF) of the frames at `fps`.

@@ -137,11 +137,21 @@ TEST_CASE("frames are written whole where the pattern says", "[tracer][render]")
     tr::Image a(2, 2), b(2, 2), c(2, 2);
     b.set(0, 0, {1, 0, 0});
     c.set(0, 0, {0, 1, 0});
-    const tr::Image sheet = tr::contact_sheet({a, b, c});
+    const tr::Image sheet = tr::contact_sheet({a, b, c}, 2);
     CHECK(sheet.width == 4);
     CHECK(sheet.height == 4);
     CHECK(sheet.at(2, 0).x == 1.0);  // second frame: top right
     CHECK(sheet.at(0, 2).y == 1.0);  // third frame: next row, left
+    // The default grid is full when a nearly square one exists, else square.
+    const auto grid = [](int n) {
+        const tr::Image s = tr::contact_sheet(std::vector<tr::Image>(n, tr::Image(1, 1)));
+        return std::pair{s.width, s.height};
+    };
+    CHECK(grid(64) == std::pair{8, 8});
+    CHECK(grid(32) == std::pair{8, 4});
+    CHECK(grid(16) == std::pair{4, 4});
+    CHECK(grid(3) == std::pair{3, 1});
+    CHECK(grid(7) == std::pair{3, 3});
     CHECK(tr::to_srgb8(0.0) == 0);
     CHECK(tr::to_srgb8(1.0) == 255);
     CHECK(tr::to_srgb8(0.5) == 188);
