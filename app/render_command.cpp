@@ -1,5 +1,6 @@
 #include "app/render_command.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -19,29 +20,41 @@ namespace {
 
 using tracer::Counters;
 
-struct FrameRange {
-    int first, last;
-};
-
-FrameRange frame_range(const std::optional<std::string>& text, const runtime::Animation& a) {
-    FrameRange r{a.initial_frame, a.final_frame};
-    if (!text) return r;
-    const auto colon = text->find(':');
-    try {
-        if (colon == std::string::npos) {
-            r.first = r.last = std::stoi(*text);
-        } else {
-            r.first = std::stoi(text->substr(0, colon));
-            r.last = std::stoi(text->substr(colon + 1));
-        }
-    } catch (const std::exception&) {
-        throw std::runtime_error("--frames: expected A:B or A, got '" + *text + "'");
+// The frames to render, in increasing order: "A:B", "A", or a comma list of
+// those ("1,17,33", "1:4,9").
+std::vector<int> frame_selection(const std::optional<std::string>& text,
+                                 const runtime::Animation& a) {
+    std::vector<int> frames;
+    if (!text) {
+        for (int k = a.initial_frame; k <= a.final_frame; ++k) frames.push_back(k);
+        return frames;
     }
-    if (r.first > r.last || r.first < a.initial_frame || r.last > a.final_frame)
-        throw std::runtime_error("--frames " + *text + ": the animation has frames " +
-                                 std::to_string(a.initial_frame) + " to " +
-                                 std::to_string(a.final_frame));
-    return r;
+    std::stringstream items(*text + ",");  // every item ends with a comma
+    std::string item;
+    while (std::getline(items, item, ',')) {
+        const auto colon = item.find(':');
+        int first = 0, last = 0;
+        try {
+            std::size_t used = 0, used_last = 0;
+            first = last = std::stoi(item, &used);
+            if (colon != std::string::npos) last = std::stoi(item.substr(colon + 1), &used_last);
+            if ((colon == std::string::npos ? used : colon + 1 + used_last) != item.size() ||
+                (colon != std::string::npos && used != colon))
+                throw std::invalid_argument(item);
+        } catch (const std::exception&) {
+            throw std::runtime_error("--frames: expected A:B, A or a comma list of those, got '" +
+                                     *text + "'");
+        }
+        if (first > last || first < a.initial_frame || last > a.final_frame)
+            throw std::runtime_error("--frames " + *text + ": the animation has frames " +
+                                     std::to_string(a.initial_frame) + " to " +
+                                     std::to_string(a.final_frame));
+        for (int k = first; k <= last; ++k) frames.push_back(k);
+    }
+    if (frames.empty()) throw std::runtime_error("--frames: no frame named in '" + *text + "'");
+    std::sort(frames.begin(), frames.end());
+    frames.erase(std::unique(frames.begin(), frames.end()), frames.end());
+    return frames;
 }
 
 struct Row {
@@ -110,8 +123,9 @@ void write_stats_json(const std::string& path,
 
 // One full render in one mode; frames go to files as they finish.
 Counters render_mode(const runtime::SceneDescription& scene, const RenderArguments& args,
-                     tracer::Mode mode, const std::string& pattern, FrameRange range,
-                     bool write, std::vector<tracer::Image>* keep) {
+                     tracer::Mode mode, const std::string& pattern,
+                     const std::vector<int>& frames, bool write,
+                     std::vector<tracer::Image>* keep) {
     tracer::RenderSettings settings;
     settings.mode = mode;
     settings.samples_per_pixel = args.samples_per_pixel;
@@ -120,7 +134,7 @@ Counters render_mode(const runtime::SceneDescription& scene, const RenderArgumen
     settings.build.max_depth = args.max_depth;
     settings.progress = isatty(STDERR_FILENO);
     tracer::Renderer renderer(scene, settings);
-    for (int frame = range.first; frame <= range.last; ++frame) {
+    for (const int frame : frames) {
         tracer::Image image = renderer.render_frame(frame);
         if (write) tracer::write_image(image, tracer::frame_path(pattern, frame));
         if (keep) keep->push_back(std::move(image));
@@ -138,7 +152,7 @@ void add_render_arguments(CLI::App& command, RenderArguments& a) {
         ->check(CLI::Range(1, 1 << 20));
     command.add_flag("--no-jitter", a.no_jitter,
                      "Samples at the centres of their strata (with --spp 1: the pixel centre)");
-    command.add_option("--frames", a.frames, "A:B renders frames A to B of the animation");
+    command.add_option("--frames", a.frames, "A:B renders frames A to B of the animation; a comma list (1,17,33 or 1:4,9) renders those");
     command.add_option("-o,--output", a.output,
                        "Frame file pattern; #### becomes the frame number (default "
                        "out/SCENE/frame_####.png; .exr writes linear float)");
@@ -159,11 +173,11 @@ int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err
         for (const auto& warning : resolved.warnings) err << warning << "\n";
         const runtime::SceneDescription scene =
             language::parse_scene_file(resolved.scene, resolved.options);
-        const FrameRange range = frame_range(args.frames, scene.animation);
+        const std::vector<int> selected = frame_selection(args.frames, scene.animation);
         const std::string pattern =
             args.output ? *args.output
                         : "out/" + resolved.scene.stem().string() + "/frame_####.png";
-        if (range.last > range.first && pattern.find('#') == std::string::npos)
+        if (selected.size() > 1 && pattern.find('#') == std::string::npos)
             throw std::runtime_error("-o " + pattern +
                                      ": several frames need a #### in the name for the number");
         const bool keep_frames = args.contact_sheet || args.animation;
@@ -171,16 +185,23 @@ int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err
         std::vector<std::pair<std::string, Counters>> columns;
         const tracer::Mode mode = args.compare ? tracer::Mode::Spacetime : tracer::parse_mode(args.mode);
         columns.emplace_back(tracer::mode_name(mode),
-                             render_mode(scene, args, mode, pattern, range, true,
+                             render_mode(scene, args, mode, pattern, selected, true,
                                          keep_frames ? &frames : nullptr));
         if (args.compare)  // the paper's order: frame by frame, then spacetime
             columns.emplace(columns.begin(), "frames",
-                            render_mode(scene, args, tracer::Mode::Frames, pattern, range, false,
+                            render_mode(scene, args, tracer::Mode::Frames, pattern, selected, false,
                                         nullptr));
-        out << "frames " << range.first << " to " << range.last << ": "
-            << tracer::frame_path(pattern, range.first)
-            << (range.last > range.first ? " ... " + tracer::frame_path(pattern, range.last) : "")
-            << "\n";
+        const int first = selected.front(), last = selected.back();
+        const bool contiguous = last - first + 1 == static_cast<int>(selected.size());
+        out << "frames ";
+        if (contiguous) {
+            out << first << " to " << last << ": " << tracer::frame_path(pattern, first)
+                << (last > first ? " ... " + tracer::frame_path(pattern, last) : "") << "\n";
+        } else {
+            for (std::size_t i = 0; i < selected.size(); ++i) out << (i ? ", " : "") << selected[i];
+            out << ": " << tracer::frame_path(pattern, first) << " ... "
+                << tracer::frame_path(pattern, last) << "\n";
+        }
         if (args.contact_sheet) {
             tracer::write_image(tracer::contact_sheet(frames), *args.contact_sheet);
             out << "contact sheet: " << *args.contact_sheet << "\n";

@@ -63,6 +63,31 @@ TEST_CASE("render writes the frames, the contact sheet and the table rows", "[ap
     CHECK(stats.find("\"primary rays\": 384") != std::string::npos);  // 2 frames of 16 x 12
 }
 
+TEST_CASE("render takes a list of frames", "[app][render]") {
+    const fs::path scene = scene_file(
+        "camera { location <0, 0, -5> look_at 0 }\nlight_source { <0, 5, -5>, rgb 1 }\n"
+        "sphere { <clock, 0, 0>, 1 pigment { rgb 1 } }\n");
+    const fs::path out = scene.parent_path() / "list";
+    fs::remove_all(out);
+    RenderArguments a = arguments_for(scene, out);
+    a.scene.frame_count = 5;
+    a.frames = "4,1,4:5";
+    std::ostringstream o, e;
+    REQUIRE(run_render(a, o, e) == 0);
+    CHECK(fs::exists(out / "f_01.png"));
+    CHECK_FALSE(fs::exists(out / "f_02.png"));
+    CHECK_FALSE(fs::exists(out / "f_03.png"));
+    CHECK(fs::exists(out / "f_04.png"));
+    CHECK(fs::exists(out / "f_05.png"));
+    CHECK(o.str().find("frames 1, 4, 5:") != std::string::npos);
+    for (const char* bad : {"1,", "1;3", "2:x", "3:1", "1,9", ":2"}) {
+        a.frames = bad;
+        e.str("");
+        CHECK(run_render(a, o, e) != 0);
+        CHECK(e.str().find("--frames") != std::string::npos);
+    }
+}
+
 TEST_CASE("render reports bad requests clearly and writes nothing", "[app][render]") {
     const fs::path scene = scene_file("sphere { 0, 1 }\n");
     const fs::path out = scene.parent_path() / "bad";
