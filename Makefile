@@ -7,7 +7,7 @@ PACKAGES := build-essential cmake pkg-config tao-pegtl-dev libglm-dev catch2 lib
             libopenimageio-dev libtbb-dev
 JOBS := $(shell nproc 2>/dev/null || echo 2)
 
-.PHONY: run test build deps clean
+.PHONY: run test golden build deps clean
 
 run: build
 	./build/hexant render examples/atom.pov examples/atom.ini \
@@ -15,6 +15,11 @@ run: build
 
 test: build
 	cd build && ctest --output-on-failure -j$(JOBS)
+
+# Renders the golden-test frames anew and stores them in tests/golden/: run by
+# hand after a change that is meant to change the images, then look at them.
+golden: build
+	cmake --build build --target update_golden
 
 build: deps
 	cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
