@@ -127,12 +127,63 @@ struct MotionEvaluator {
     AffineMap<N> stage_map(const Motion::Stage& stage, bool invert) const {
         AffineMap<N> m = AffineMap<N>::identity();
         if (!invert) {
-            for (const auto& s : stage.steps) m = step_map(s, false) * m;
+            for (const auto& s : stage.steps) apply_step(s, false, m);
         } else {
             for (auto it = stage.steps.rbegin(); it != stage.steps.rend(); ++it)
-                m = step_map(*it, true) * m;
+                apply_step(*it, true, m);
         }
         return m;
+    }
+
+    // m = (the step's map, or its inverse) * m, without forming the step's
+    // matrix: a translation adds to the last column, a scale scales rows, a
+    // rotation turns two rows per axis and skips axes whose angle is a
+    // constant 0 (the same products as step_map's, minus multiplications by
+    // exact ones and zeros). Moving objects pay this per ray.
+    void apply_step(const Motion::Step& s, bool invert, AffineMap<N>& m) const {
+        const bool inverse = s.inverse != invert;
+        switch (s.kind) {
+            case TransformKind::Translate:
+                for (int i = 0; i < 3; ++i) {
+                    const N v = value(s.p[i]);
+                    m.m[i][3] = m.m[i][3] + (inverse ? -v : v);
+                }
+                return;
+            case TransformKind::Scale:
+                for (int i = 0; i < 3; ++i) {
+                    const N v = value(s.p[i]);
+                    const N f = inverse ? N(1.0) / v : v;
+                    for (int j = 0; j < 4; ++j) m.m[i][j] = f * m.m[i][j];
+                }
+                return;
+            case TransformKind::Rotate:
+                if (!inverse) {
+                    for (int axis = 0; axis < 3; ++axis) rotate_rows(axis, s.p[axis], false, m);
+                } else {
+                    for (int axis = 2; axis >= 0; --axis) rotate_rows(axis, s.p[axis], true, m);
+                }
+                return;
+            default:
+                m = step_map(s, invert) * m;
+                return;
+        }
+    }
+
+    // m = (rotation about `axis` by the parameter's degrees, negated if
+    // asked) * m, as axis_rotation(axis, degrees) * m.
+    void rotate_rows(int axis, const Motion::Parameter& p, bool negate, AffineMap<N>& m) const {
+        using std::cos;
+        using std::sin;
+        if (p.slot < 0 && p.constant == 0.0) return;  // the identity, exactly
+        const N degrees = negate ? -value(p) : value(p);
+        const N angle = degrees * N(kDegree);
+        const N sn = sin(angle), cs = cos(angle);
+        const int a = (axis + 1) % 3, b = (axis + 2) % 3;
+        for (int j = 0; j < 4; ++j) {
+            const N ra = m.m[a][j], rb = m.m[b][j];
+            m.m[a][j] = cs * ra - sn * rb;
+            m.m[b][j] = sn * ra + cs * rb;
+        }
     }
 
     std::array<N, 3> deform(const Motion::Stage& stage, const std::array<N, 3>& p,
