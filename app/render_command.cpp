@@ -130,6 +130,7 @@ Counters render_mode(const runtime::SceneDescription& scene, const RenderArgumen
     settings.mode = mode;
     settings.samples_per_pixel = args.samples_per_pixel;
     settings.jitter = !args.no_jitter;
+    settings.sample_seed = args.seed;
     settings.threads = args.threads;
     settings.build.max_depth = args.max_depth;
     settings.progress = isatty(STDERR_FILENO);
@@ -152,6 +153,9 @@ void add_render_arguments(CLI::App& command, RenderArguments& a) {
         ->check(CLI::Range(1, 1 << 20));
     command.add_flag("--no-jitter", a.no_jitter,
                      "Samples at the centres of their strata (with --spp 1: the pixel centre)");
+    command.add_option("--seed", a.seed,
+                       "Scramble the samples with this number (default 0); another seed gives "
+                       "an independent estimate of the same image");
     command.add_option("--frames", a.frames, "A:B renders frames A to B of the animation; a comma list (1,17,33 or 1:4,9) renders those");
     command.add_option("-o,--output", a.output,
                        "Frame file pattern; #### becomes the frame number (default "

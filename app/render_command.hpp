@@ -17,6 +17,7 @@ struct RenderArguments {
     std::string mode = "spacetime";
     int samples_per_pixel = 1;
     bool no_jitter = false;
+    unsigned seed = 0;
     std::optional<std::string> frames;  // A:B
     std::optional<std::string> output;  // pattern with ####
     std::optional<std::string> contact_sheet, animation, stats_json;

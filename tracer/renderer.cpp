@@ -96,7 +96,7 @@ Image Renderer::render_frame(int frame) {
             ThreadState& state = states.local();
             for (int y = tile.rows().begin(); y < tile.rows().end(); ++y) {
                 for (int x = tile.cols().begin(); x < tile.cols().end(); ++x) {
-                    const std::uint32_t seed = pixel_seed(frame, x, y);
+                    const std::uint32_t seed = pixel_seed(frame, x, y, settings_.sample_seed);
                     glm::dvec3 sum(0.0);
                     for (int i = 0; i < spp; ++i) {
                         const PixelSample s = pixel_sample(seed, static_cast<std::uint32_t>(i),

@@ -6,6 +6,7 @@
 // merged when the frame is done.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -22,6 +23,9 @@ struct RenderSettings {
     Mode mode = Mode::Spacetime;
     int samples_per_pixel = 1;
     bool jitter = true;
+    // 0: the samples every render of this frame uses; another number gives
+    // independent scrambles (an independent estimate of the same image).
+    std::uint32_t sample_seed = 0;
     BuildOptions build;
     int threads = 0;        // 0: as many as the machine has
     bool progress = false;  // a progress line on stderr

@@ -71,10 +71,14 @@ struct PixelSample {
     double time;  // in [0, 1) across the shutter
 };
 
-inline std::uint32_t pixel_seed(int frame, int x, int y) {
+// `sample_seed` 0 keeps the seeds every earlier image was made with; any
+// other value gives independent scrambles.
+inline std::uint32_t pixel_seed(int frame, int x, int y, std::uint32_t sample_seed = 0) {
     using sobol_detail::hash;
-    return hash(static_cast<std::uint32_t>(frame) ^
-                hash(static_cast<std::uint32_t>(x) ^ hash(static_cast<std::uint32_t>(y) + 0x9e3779b9u)));
+    const std::uint32_t seed =
+        hash(static_cast<std::uint32_t>(frame) ^
+             hash(static_cast<std::uint32_t>(x) ^ hash(static_cast<std::uint32_t>(y) + 0x9e3779b9u)));
+    return sample_seed == 0 ? seed : hash(seed ^ hash(sample_seed));
 }
 
 // Sample `index` of a pixel. Without jitter, the same unscrambled points
