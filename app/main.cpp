@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/command_line.hpp"
+#include "app/error_time_command.hpp"
 #include "app/render_command.hpp"
 #include "app/scene_dump.hpp"
 #include "app/scene_summary.hpp"
@@ -31,8 +32,18 @@ int main(int argc, char** argv) {
         "render", "Render the animation's frames with spacetime ray tracing");
     app::add_render_arguments(*render, render_arguments);
 
+    CLI::App* bench = program.add_subcommand("bench", "Measure hexant: speed and error");
+    bench->require_subcommand(1);
+    app::ErrorTimeArguments error_time_arguments;
+    CLI::App* error_time = bench->add_subcommand(
+        "error-time", "Error of one frame against a high-sample reference, against its run time, "
+                      "per mode and sample count (CSV and log-log plot)");
+    app::add_error_time_arguments(*error_time, error_time_arguments);
+
     CLI11_PARSE(program, argc, argv);
     if (render->parsed()) return app::run_render(render_arguments, std::cout, std::cerr);
+    if (error_time->parsed())
+        return app::run_error_time(error_time_arguments, std::cout, std::cerr);
 
     const app::SceneArguments& arguments = check->parsed() ? check_arguments : dump_arguments;
     try {

@@ -1,6 +1,7 @@
 #include "tracer/image_compare.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include <OpenImageIO/imagebuf.h>
@@ -61,6 +62,24 @@ ImageDifference compare_images(const fs::path& a, const fs::path& b, double fail
     d.failing = r.nfail;
     d.warning = r.nwarn;
     return d;
+}
+
+ImageError image_error(const fs::path& image, const fs::path& reference, double epsilon) {
+    namespace algo = OIIO::ImageBufAlgo;
+    const OIIO::ImageBuf a = read(image, ImageSpace::Linear);
+    const OIIO::ImageBuf r = read(reference, ImageSpace::Linear);
+    check_same_shape(a, image, r, reference);
+    const OIIO::ImageBuf difference = algo::sub(a, r);
+    const OIIO::ImageBuf squared = algo::mul(difference, difference);
+    const OIIO::ImageBuf relative =
+        algo::div(squared, algo::add(algo::mul(r, r), static_cast<float>(epsilon)));
+    const auto mean_of = [](const OIIO::ImageBuf& buffer) {
+        const algo::PixelStats stats = algo::computePixelStats(buffer);
+        double sum = 0.0;
+        for (const double v : stats.avg) sum += v;
+        return stats.avg.empty() ? 0.0 : sum / double(stats.avg.size());
+    };
+    return {std::sqrt(mean_of(squared)), mean_of(relative)};
 }
 
 void write_difference_image(const fs::path& a, const fs::path& b, const fs::path& out,

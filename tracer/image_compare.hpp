@@ -29,6 +29,16 @@ ImageDifference compare_images(const std::filesystem::path& a, const std::filesy
                                double fail_threshold, double warn_threshold,
                                ImageSpace space = ImageSpace::Stored);
 
+// The error of an image against a reference, in linear light, averaged over
+// pixels and channels: root mean squared error, and relative MSE
+// ((a - r)^2 / (r^2 + epsilon), epsilon keeping dark pixels from dominating,
+// 0.01 as Rousselle et al. and most denoising papers use).
+struct ImageError {
+    double rmse = 0.0, relative_mse = 0.0;
+};
+ImageError image_error(const std::filesystem::path& image, const std::filesystem::path& reference,
+                       double epsilon = 0.01);
+
 // Writes |a - b| scaled by `gain`, as a frame (write_image: the sRGB encoding
 // of a PNG brightens faint differences further, which is what a person
 // looking for them wants).

@@ -1,0 +1,275 @@
+#include "app/error_time_command.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <vector>
+
+#include "app/log_log_plot.hpp"
+#include "language/interpreter.hpp"
+#include "language/scene_error.hpp"
+#include "tracer/image_compare.hpp"
+#include "tracer/image_output.hpp"
+#include "tracer/renderer.hpp"
+
+namespace hexant::app {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// The reference's samples are scrambled with their own seed, so that its
+// noise is independent of every measured image's (which use seed 0).
+constexpr std::uint32_t kReferenceSeed = 0x5eed;
+
+std::vector<int> int_list(const std::string& text, const char* flag) {
+    std::vector<int> values;
+    std::stringstream items(text + ",");
+    std::string item;
+    while (std::getline(items, item, ',')) {
+        std::size_t used = 0;
+        int value = 0;
+        try {
+            value = std::stoi(item, &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (used != item.size() || value < 1)
+            throw std::runtime_error(std::string(flag) + ": expected a comma list of positive "
+                                     "whole numbers, got '" + text + "'");
+        values.push_back(value);
+    }
+    return values;
+}
+
+std::vector<tracer::Mode> mode_list(const std::string& text) {
+    std::vector<tracer::Mode> modes;
+    std::stringstream items(text);
+    std::string item;
+    while (std::getline(items, item, ',')) modes.push_back(tracer::parse_mode(item));
+    if (modes.empty()) throw std::runtime_error("--modes: no mode named");
+    return modes;
+}
+
+std::string file_text(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// What the reference depends on: the scene and .ini texts, the settings that
+// change the image, and the reference's sample count.
+std::string reference_key(const ErrorTimeArguments& args, const runtime::SceneDescription& scene,
+                          int frame, int reference_spp) {
+    std::ostringstream key;
+    for (const auto& file : args.scene.files) {
+        const fs::path path = file.substr(0, file.find('['));
+        key << file << '\n' << file_text(path) << '\n';
+    }
+    key << scene.animation.width << 'x' << scene.animation.height << " frame " << frame
+        << " spp " << reference_spp << " shutter " << scene.animation.shutter << " clock "
+        << scene.animation.initial_clock << ':' << scene.animation.final_clock << " frames "
+        << scene.animation.initial_frame << ':' << scene.animation.final_frame << " cyclic "
+        << scene.animation.cyclic;
+    for (const auto& d : args.scene.declares) key << " declare " << d;
+    std::ostringstream hex;
+    hex << std::hex << std::setw(16) << std::setfill('0') << std::hash<std::string>{}(key.str());
+    return hex.str();
+}
+
+struct Point {
+    tracer::Mode mode;
+    int spp;
+    double seconds, build_seconds, render_seconds;
+    std::uint64_t rays;
+    tracer::ImageError error;
+};
+
+// Renders `frame` once and writes it; the build time is charged as the
+// frame's share: spacetime builds one hierarchy for all the animation's
+// frames, frames mode builds one per frame.
+Point measure(const runtime::SceneDescription& scene, tracer::Mode mode, int spp, int frame,
+              const ErrorTimeArguments& args, const fs::path& image) {
+    tracer::RenderSettings settings;
+    settings.mode = mode;
+    settings.samples_per_pixel = spp;
+    settings.threads = args.threads;
+    settings.build.max_depth = args.max_depth;
+    tracer::Renderer renderer(scene, settings);
+    tracer::write_image(renderer.render_frame(frame), image);
+    const tracer::Counters& c = renderer.counters();
+    const int frames = scene.animation.final_frame - scene.animation.initial_frame + 1;
+    const double build_share =
+        mode == tracer::Mode::Spacetime ? c.build_seconds / std::max(1, frames) : c.build_seconds;
+    return {mode, spp, build_share + c.render_seconds, build_share, c.render_seconds, c.rays(), {}};
+}
+
+const char* colour_of(tracer::Mode mode) {
+    switch (mode) {
+        case tracer::Mode::Spacetime: return "#d62728";
+        case tracer::Mode::Frames: return "#1f77b4";
+        default: return "#2ca02c";
+    }
+}
+
+// Time a mode needs to reach `error`: log-log interpolation between its
+// points; nothing when the error lies outside them.
+std::optional<double> time_for(const std::vector<Point>& points, tracer::Mode mode, double error) {
+    std::vector<std::pair<double, double>> curve;  // (error, time)
+    for (const Point& p : points)
+        if (p.mode == mode) curve.emplace_back(p.error.rmse, p.seconds);
+    for (std::size_t i = 0; i + 1 < curve.size(); ++i) {
+        const auto [e0, t0] = curve[i];
+        const auto [e1, t1] = curve[i + 1];
+        if ((e0 >= error && error >= e1) || (e1 >= error && error >= e0)) {
+            if (e0 == e1) return t0;
+            const double f = std::log(error / e0) / std::log(e1 / e0);
+            return std::exp(std::log(t0) + f * std::log(t1 / t0));
+        }
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
+void add_error_time_arguments(CLI::App& command, ErrorTimeArguments& a) {
+    add_scene_arguments(command, a.scene);
+    command.add_option("--frame", a.frame, "The frame to measure (default: the middle one)");
+    command.add_option("--spp-list", a.spp_list, "Sample counts to measure (default 1,2,4,...,256)");
+    command.add_option("--modes", a.modes, "Modes to measure (default spacetime,frames)");
+    command.add_option("--reference-spp", a.reference_spp,
+                       "Samples of the reference (default 4 times the largest measured)")
+        ->check(CLI::Range(1, 1 << 20));
+    command.add_option("-o,--output", a.output_dir,
+                       "Folder for the CSV, the plot, the images and the cached reference "
+                       "(default out/SCENE/error-time)");
+    command.add_option("--threads", a.threads, "Worker threads (default: all cores)");
+    command.add_option("--max-depth", a.max_depth, "Hierarchy depth limit (default 5)")
+        ->check(CLI::Range(0, 12));
+}
+
+int run_error_time(const ErrorTimeArguments& args, std::ostream& out, std::ostream& err) {
+    try {
+        const ResolvedScene resolved = resolve(args.scene);
+        for (const auto& warning : resolved.warnings) err << warning << "\n";
+        const runtime::SceneDescription scene =
+            language::parse_scene_file(resolved.scene, resolved.options);
+        const runtime::Animation& a = scene.animation;
+        const int frame = args.frame.value_or((a.initial_frame + a.final_frame) / 2);
+        if (frame < a.initial_frame || frame > a.final_frame)
+            throw std::runtime_error("--frame " + std::to_string(frame) +
+                                     ": the animation has frames " +
+                                     std::to_string(a.initial_frame) + " to " +
+                                     std::to_string(a.final_frame));
+        std::vector<int> spps = int_list(args.spp_list, "--spp-list");
+        std::sort(spps.begin(), spps.end());
+        spps.erase(std::unique(spps.begin(), spps.end()), spps.end());
+        const std::vector<tracer::Mode> modes = mode_list(args.modes);
+        const int reference_spp = args.reference_spp > 0 ? args.reference_spp : 4 * spps.back();
+        const fs::path dir = args.output_dir
+                                 ? fs::path(*args.output_dir)
+                                 : fs::path("out") / resolved.scene.stem() / "error-time";
+        fs::create_directories(dir);
+
+        // The reference, cached by what it depends on.
+        const fs::path reference =
+            dir / ("reference_" + reference_key(args, scene, frame, reference_spp) + ".exr");
+        if (fs::exists(reference)) {
+            out << "reference: " << reference.string() << " (cached)\n";
+        } else {
+            out << "reference: rendering frame " << frame << " at " << reference_spp
+                << " samples per pixel ..." << std::flush;
+            tracer::RenderSettings settings;
+            settings.samples_per_pixel = reference_spp;
+            settings.sample_seed = kReferenceSeed;
+            settings.threads = args.threads;
+            settings.build.max_depth = args.max_depth;
+            tracer::Renderer renderer(scene, settings);
+            tracer::write_image(renderer.render_frame(frame), reference);
+            out << " " << reference.string() << "\n";
+        }
+
+        // Sample counts in the outer loop, modes inside: a slow spell of a
+        // shared machine then falls on both modes alike.
+        std::vector<Point> points;
+        for (const int spp : spps) {
+            for (const tracer::Mode mode : modes) {
+                const fs::path image = dir / (std::string(tracer::mode_name(mode)) + "_spp" +
+                                              std::to_string(spp) + ".exr");
+                Point p = measure(scene, mode, spp, frame, args, image);
+                p.error = tracer::image_error(image, reference);
+                points.push_back(p);
+                out << std::left << std::setw(10) << tracer::mode_name(mode) << std::right
+                    << " spp " << std::setw(5) << spp << "  " << std::fixed << std::setprecision(3)
+                    << std::setw(8) << p.seconds << " s  rmse " << std::scientific
+                    << std::setprecision(3) << p.error.rmse << "  relMSE " << p.error.relative_mse
+                    << std::defaultfloat << "\n";
+            }
+        }
+        std::stable_sort(points.begin(), points.end(),
+                         [](const Point& x, const Point& y) { return x.mode < y.mode; });
+
+        const fs::path csv = dir / "error_time.csv";
+        {
+            std::ofstream file(csv);
+            file << "mode,spp,seconds,build_seconds,render_seconds,rays,rmse,relative_mse\n"
+                 << std::setprecision(9);
+            for (const Point& p : points)
+                file << tracer::mode_name(p.mode) << ',' << p.spp << ',' << p.seconds << ','
+                     << p.build_seconds << ',' << p.render_seconds << ',' << p.rays << ','
+                     << p.error.rmse << ',' << p.error.relative_mse << '\n';
+            if (!file) throw std::runtime_error(csv.string() + ": cannot write");
+        }
+        LogLogPlot plot;
+        plot.title = resolved.scene.stem().string() + ", frame " + std::to_string(frame) +
+                     ": error against time";
+        plot.x_label = "seconds for the frame (render + its share of the build)";
+        plot.y_label = "RMSE against " + std::to_string(reference_spp) + " spp (linear)";
+        for (const tracer::Mode mode : modes) {
+            PlotCurve curve{tracer::mode_name(mode), colour_of(mode), {}};
+            for (const Point& p : points)
+                if (p.mode == mode) curve.points.emplace_back(p.seconds, p.error.rmse);
+            plot.curves.push_back(std::move(curve));
+        }
+        const fs::path svg = dir / "error_time.svg";
+        {
+            std::ofstream file(svg);
+            file << to_svg(plot);
+            if (!file) throw std::runtime_error(svg.string() + ": cannot write");
+        }
+
+        // Time to reach the same error: at each error the first mode
+        // reached, how long each other mode needs (interpolated).
+        if (modes.size() > 1) {
+            out << "time to reach the same RMSE (" << tracer::mode_name(modes[1]) << " / "
+                << tracer::mode_name(modes[0]) << "):\n";
+            for (const Point& p : points) {
+                if (p.mode != modes[0]) continue;
+                const auto other = time_for(points, modes[1], p.error.rmse);
+                out << "  rmse " << std::scientific << std::setprecision(3) << p.error.rmse
+                    << std::fixed << std::setprecision(3) << ": " << p.seconds << " s against ";
+                if (other)
+                    out << *other << " s, ratio " << std::setprecision(2) << *other / p.seconds << "\n";
+                else
+                    out << "(outside the measured range)\n";
+            }
+            out << std::defaultfloat;
+        }
+        out << "csv: " << csv.string() << "\nplot: " << svg.string() << "\n";
+        return 0;
+    } catch (const language::SceneError& e) {
+        err << e.formatted();
+        return 1;
+    } catch (const std::exception& e) {
+        err << "hexant: error: " << e.what() << "\n";
+        return 1;
+    }
+}
+
+}  // namespace hexant::app

@@ -1,0 +1,33 @@
+// `hexant bench error-time`: the error of one frame against a high-sample
+// reference, beside the time it took, for each mode at growing sample counts.
+// Writes a CSV and a log-log plot (SVG: time across, error up, one curve per
+// mode; the faster method is the lower curve).
+#pragma once
+
+#include <iosfwd>
+#include <optional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "app/command_line.hpp"
+
+namespace hexant::app {
+
+struct ErrorTimeArguments {
+    SceneArguments scene;
+    std::optional<int> frame;  // default: the animation's middle frame
+    std::string spp_list = "1,2,4,8,16,32,64,128,256";
+    std::string modes = "spacetime,frames";
+    int reference_spp = 0;  // 0: 4 times the largest of spp_list
+    std::optional<std::string> output_dir;  // default out/SCENE/error-time
+    int threads = 0;
+    int max_depth = 5;
+};
+
+void add_error_time_arguments(CLI::App& command, ErrorTimeArguments& arguments);
+
+// Returns the exit status; errors go to `err` naming their place.
+int run_error_time(const ErrorTimeArguments& arguments, std::ostream& out, std::ostream& err);
+
+}  // namespace hexant::app

@@ -1,0 +1,117 @@
+// `hexant bench error-time`: a CSV and a plot with one curve per mode, the
+// error falling as samples grow, the reference cached, bad lists refused.
+#include "app/error_time_command.hpp"
+
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+
+#include "app/log_log_plot.hpp"
+
+namespace fs = std::filesystem;
+using hexant::app::ErrorTimeArguments;
+using hexant::app::run_error_time;
+
+namespace {
+
+std::string read_text(const fs::path& path) {
+    std::ifstream in(path);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::size_t count_of(const std::string& text, const std::string& what) {
+    std::size_t n = 0;
+    for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+}
+
+}  // namespace
+
+TEST_CASE("error-time measures each mode at each sample count against a cached reference",
+          "[app][bench]") {
+    const fs::path folder = fs::temp_directory_path() / "hexant_error_time_test";
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    const fs::path scene = folder / "moving.pov";
+    std::ofstream(scene) << "camera { location <0, 0, -5> look_at 0 }\n"
+                            "light_source { <0, 5, -5>, rgb 1 }\n"
+                            "sphere { <2 * clock - 1, 0, 0>, 0.8 pigment { rgb <1, 0.5, 0.2> } }\n"
+                            "plane { z, 1 pigment { checker rgb 1, rgb 0.2 scale 0.5 } }\n";
+    ErrorTimeArguments a;
+    a.scene.files = {scene.string()};
+    a.scene.width = 24;
+    a.scene.height = 16;
+    a.scene.frame_count = 3;
+    a.spp_list = "4,1";
+    a.reference_spp = 64;
+    a.output_dir = (folder / "out").string();
+    std::ostringstream out, err;
+    REQUIRE(run_error_time(a, out, err) == 0);
+    INFO(out.str() << err.str());
+
+    // One row per mode and sample count.
+    const std::string csv = read_text(folder / "out/error_time.csv");
+    REQUIRE(csv.rfind("mode,spp,seconds,build_seconds,render_seconds,rays,rmse,relative_mse\n", 0) == 0);
+    std::map<std::string, double> rmse;  // "mode spp" -> rmse
+    std::istringstream rows(csv);
+    std::string row;
+    std::getline(rows, row);
+    while (std::getline(rows, row)) {
+        std::istringstream fields(row);
+        std::string mode, spp, skip, value;
+        std::getline(fields, mode, ',');
+        std::getline(fields, spp, ',');
+        for (int i = 0; i < 4; ++i) std::getline(fields, skip, ',');
+        std::getline(fields, value, ',');
+        rmse[mode + " " + spp] = std::stod(value);
+    }
+    REQUIRE(rmse.size() == 4);
+    // More samples, less error; the modes trace the same samples, so their
+    // errors agree (up to ties between equal distances).
+    CHECK(rmse["spacetime 4"] < rmse["spacetime 1"]);
+    CHECK(rmse["frames 4"] < rmse["frames 1"]);
+    CHECK(rmse["spacetime 1"] == Approx(rmse["frames 1"]).epsilon(1e-6));
+    CHECK(rmse["spacetime 4"] > 0.0);
+
+    const std::string svg = read_text(folder / "out/error_time.svg");
+    CHECK(count_of(svg, "<polyline") == 2);
+    CHECK(svg.find("spacetime") != std::string::npos);
+
+    // The reference is rendered once.
+    out.str("");
+    REQUIRE(run_error_time(a, out, err) == 0);
+    CHECK(out.str().find("(cached)") != std::string::npos);
+
+    // Bad requests name the flag.
+    for (const char* bad : {"1,,2", "0", "x"}) {
+        a.spp_list = bad;
+        err.str("");
+        CHECK(run_error_time(a, out, err) != 0);
+        CHECK(err.str().find("--spp-list") != std::string::npos);
+    }
+    a.spp_list = "1";
+    a.modes = "spacetime,fast";
+    err.str("");
+    CHECK(run_error_time(a, out, err) != 0);
+    CHECK(err.str().find("fast") != std::string::npos);
+    a.modes = "spacetime";
+    a.frame = 7;
+    err.str("");
+    CHECK(run_error_time(a, out, err) != 0);
+    CHECK(err.str().find("--frame 7") != std::string::npos);
+    fs::remove_all(folder);
+}
+
+TEST_CASE("a log-log plot leaves out points it cannot place", "[app][bench]") {
+    hexant::app::LogLogPlot plot;
+    plot.title = "a < b";
+    plot.curves.push_back({"one", "red", {{1.0, 0.1}, {10.0, 0.01}, {0.0, 1.0}, {5.0, -1.0}}});
+    const std::string svg = hexant::app::to_svg(plot);
+    CHECK(count_of(svg, "<circle") == 2);
+    CHECK(svg.find("a &lt; b") != std::string::npos);
+    CHECK(svg.find("nan") == std::string::npos);
+    CHECK(svg.find("inf") == std::string::npos);
+}
