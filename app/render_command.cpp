@@ -72,12 +72,15 @@ const Row kRows[] = {
     {"shadow rays", [](const Counters& c) { return double(c.shadow_rays); }, 0},
     {"reflected rays", [](const Counters& c) { return double(c.reflected_rays); }, 0},
     {"refracted rays", [](const Counters& c) { return double(c.refracted_rays); }, 0},
+    {"objects", [](const Counters& c) { return double(c.objects); }, 0},
     {"bounds built", [](const Counters& c) { return double(c.bounds_built); }, 0},
     {"hierarchy cells", [](const Counters& c) { return double(c.cells); }, 0},
     {"ray/bound tests", [](const Counters& c) { return double(c.bound_tests); }, 0},
     {"ray/object tests", [](const Counters& c) { return double(c.object_tests); }, 0},
     {"ray/bound tests per ray", [](const Counters& c) { return per_ray(c.bound_tests, c); }, 2},
     {"ray/object tests per ray", [](const Counters& c) { return per_ray(c.object_tests, c); }, 2},
+    {"time splits", [](const Counters& c) { return double(c.time_splits); }, 0},
+    {"deformation maps", [](const Counters& c) { return double(c.deformation_maps); }, 0},
     {"build time (s)", [](const Counters& c) { return c.build_seconds; }, 3},
     {"render time (s)", [](const Counters& c) { return c.render_seconds; }, 3},
     {"total time (s)", [](const Counters& c) { return c.build_seconds + c.render_seconds; }, 3},
@@ -133,6 +136,7 @@ Counters render_mode(const runtime::SceneDescription& scene, const RenderArgumen
     settings.sample_seed = args.seed;
     settings.threads = args.threads;
     settings.build.max_depth = args.max_depth;
+    settings.build.boxes_in_space = !args.frames_slab_bounds;
     settings.progress = isatty(STDERR_FILENO);
     tracer::Renderer renderer(scene, settings);
     for (const int frame : frames) {
@@ -169,6 +173,9 @@ void add_render_arguments(CLI::App& command, RenderArguments& a) {
     command.add_option("--threads", a.threads, "Worker threads (default: all cores)");
     command.add_option("--max-depth", a.max_depth, "Hierarchy depth limit (default 5)")
         ->check(CLI::Range(0, 12));
+    command.add_flag("--frames-slab-bounds", a.frames_slab_bounds,
+                     "In frames mode, keep each object's 12-slab bound instead of widening it to "
+                     "a box (the same builder as spacetime, in 3D)");
 }
 
 int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err) {

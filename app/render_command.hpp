@@ -25,6 +25,7 @@ struct RenderArguments {
     bool compare = false;
     int threads = 0;
     int max_depth = 5;
+    bool frames_slab_bounds = false;  // frames mode: keep 12-slab bounds instead of boxes
 };
 
 void add_render_arguments(CLI::App& command, RenderArguments& arguments);

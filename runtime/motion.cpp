@@ -1,3 +1,4 @@
+#include "runtime/work_counts.hpp"
 #include "runtime/motion.hpp"
 
 #include <stdexcept>
@@ -188,6 +189,7 @@ struct MotionEvaluator {
 
     std::array<N, 3> deform(const Motion::Stage& stage, const std::array<N, 3>& p,
                             bool invert) const {
+        ++this_thread_work.deformation_maps;
         const N amount = value(stage.amount);
         if (stage.fixed_frame) return deform_in(stage.kind, stage.frame, p, amount, invert != stage.inverse);
         const std::array<N, 3> axis{value(stage.axis[0]), value(stage.axis[1]), value(stage.axis[2])};

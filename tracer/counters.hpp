@@ -18,6 +18,10 @@ struct Counters {
     std::uint64_t bound_tests = 0;   // ray / 12-slab bound tests
     std::uint64_t object_tests = 0;  // ray / object intersections (at the ray's time)
     std::uint64_t mailbox_hits = 0;  // object tests saved by the mailbox
+    // Paying only for what a scene uses: these stay 0 where it uses nothing.
+    std::uint64_t objects = 0;           // intelligent objects built from the scene
+    std::uint64_t time_splits = 0;       // cells whose children halve time
+    std::uint64_t deformation_maps = 0;  // runtime::WorkCounts, while building and tracing
     double build_seconds = 0.0;
     double render_seconds = 0.0;
 
@@ -35,6 +39,9 @@ struct Counters {
         bound_tests += o.bound_tests;
         object_tests += o.object_tests;
         mailbox_hits += o.mailbox_hits;
+        objects += o.objects;
+        time_splits += o.time_splits;
+        deformation_maps += o.deformation_maps;
         build_seconds += o.build_seconds;
         render_seconds += o.render_seconds;
         return *this;

@@ -4,6 +4,8 @@
 #include <chrono>
 #include <optional>
 
+#include "runtime/work_counts.hpp"
+
 namespace hexant::tracer {
 
 namespace {
@@ -40,7 +42,7 @@ public:
             ++counters_.bounds_built;
             bool meets = false;
             for (SlabBound b : answers) {
-                if (options_.split == SplitMode::Space) {
+                if (options_.split == SplitMode::Space && options_.boxes_in_space) {
                     // The baseline's static bound: the box the object spans
                     // over the whole shutter interval.
                     b = SlabBound::of_box(b.box());
@@ -134,6 +136,7 @@ private:
 Hierarchy Hierarchy::build(std::span<const IntelligentObject* const> objects, const Box4& root,
                            const BuildOptions& options, Counters& counters) {
     const auto start = std::chrono::steady_clock::now();
+    const std::uint64_t deformation_maps = runtime::this_thread_work.deformation_maps;
     Hierarchy h;
     std::vector<std::uint32_t> all(objects.size());
     for (std::uint32_t i = 0; i < all.size(); ++i) all[i] = i;
@@ -163,6 +166,10 @@ Hierarchy Hierarchy::build(std::span<const IntelligentObject* const> objects, co
                             return false;
                     return true;
                 });
+            if (node.children.front().region.hi.w != node.region.hi.w ||
+                node.children.front().region.lo.w != node.region.lo.w ||
+                node.children.back().region.hi.w != node.region.hi.w)
+                ++counters.time_splits;
             for (const Node& child : node.children) {
                 order.push_back(&child);
                 h.cells_.push_back(Cell{child.region, child.bound});
@@ -171,6 +178,7 @@ Hierarchy Hierarchy::build(std::span<const IntelligentObject* const> objects, co
     }
     h.depth_ = builder.depth();
     counters.cells += h.cells_.size();
+    counters.deformation_maps += runtime::this_thread_work.deformation_maps - deformation_maps;
     counters.build_seconds +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return h;

@@ -13,6 +13,7 @@
 #include <tbb/parallel_for.h>
 
 #include "runtime/object_factory.hpp"
+#include "runtime/work_counts.hpp"
 #include "tracer/sample_pattern.hpp"
 
 namespace hexant::tracer {
@@ -59,8 +60,11 @@ Renderer::Renderer(const runtime::SceneDescription& scene, const RenderSettings&
     : scene_(scene), settings_(settings) {
     for (const auto& record : scene.objects)
         objects_.push_back(runtime::make_intelligent_object(*record, scene.default_texture));
+    counters_.objects = objects_.size();
     const ObjectSet set = ObjectSet::of(objects_);
+    const std::uint64_t maps = runtime::this_thread_work.deformation_maps;
     root_ = animation_root(scene, set);
+    counters_.deformation_maps += runtime::this_thread_work.deformation_maps - maps;
     query_ = make_ray_query(settings.mode, set, root_, settings.build, counters_);
     shader_ = std::make_unique<Shader>(scene, *query_);
 }
@@ -94,6 +98,7 @@ Image Renderer::render_frame(int frame) {
         tbb::blocked_range2d<int>(0, height, kTile, 0, width, kTile),
         [&](const tbb::blocked_range2d<int>& tile) {
             ThreadState& state = states.local();
+            const std::uint64_t maps = runtime::this_thread_work.deformation_maps;
             for (int y = tile.rows().begin(); y < tile.rows().end(); ++y) {
                 for (int x = tile.cols().begin(); x < tile.cols().end(); ++x) {
                     const std::uint32_t seed = pixel_seed(frame, x, y, settings_.sample_seed);
@@ -117,6 +122,7 @@ Image Renderer::render_frame(int frame) {
                     image.set(x, y, sum / double(spp));
                 }
             }
+            state.counters.deformation_maps += runtime::this_thread_work.deformation_maps - maps;
             if (settings_.progress) {
                 // The thread that moves the percentage on prints it.
                 const long done = pixels_done += long(tile.rows().size()) * long(tile.cols().size());
