@@ -8,6 +8,7 @@
 // HEXANT_STRESS_RAYS=N runs N rays per case instead of 1500 (the long run:
 // README.md, "What hexant guarantees numerically").
 #include <catch2/catch.hpp>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -57,6 +58,7 @@ rt::SceneDescription parse(const Case& c) {
 struct Work {
     double tests_per_ray = 0.0;  // bound and object tests of the spacetime mode
     int hits = 0;
+    double ns_per_ray = 0.0;     // spacetime first hits, timed apart; printed, never asserted
 };
 
 // The box an object occupies at one instant (nothing for unbounded ones).
@@ -110,6 +112,7 @@ Work check_case(const Case& c) {
         return glm::normalize(v);
     };
     Work result;
+    std::vector<rt::Ray4> rays;
     const int count = rays_per_case();
     for (int i = 0; i < count; ++i) {
         const double t = (i % 11 == 0) ? t0 : uniform(t0, t1);
@@ -158,6 +161,7 @@ Work check_case(const Case& c) {
             }
         }
         const rt::Ray4 ray{rt::Event(origin, t), rt::Event(d, 0.0)};
+        rays.push_back(ray);
         const auto expected = brute->first_hit(ray, 0.0, kInf, a);
         const auto got = spacetime->first_hit(ray, 0.0, kInf, b);
         const auto got_frames = frames->first_hit(ray, 0.0, kInf, f);
@@ -179,6 +183,12 @@ Work check_case(const Case& c) {
     }
     result.tests_per_ray =
         double(b.counters.bound_tests + b.counters.object_tests) / double(count);
+    if (std::getenv("HEXANT_STRESS_VERBOSE")) {
+        const auto start = std::chrono::steady_clock::now();
+        for (const rt::Ray4& ray : rays) (void)spacetime->first_hit(ray, 0.0, kInf, b);
+        result.ns_per_ray = std::chrono::duration<double, std::nano>(
+                                std::chrono::steady_clock::now() - start).count() / double(count);
+    }
 
     // A small render: nothing NaN or Inf reaches a pixel.
     tr::RenderSettings settings;
@@ -220,9 +230,9 @@ double tame_work() {
 void run(const Case& c) {
     const Work w = check_case(c);
     if (std::getenv("HEXANT_STRESS_VERBOSE"))
-        std::printf("%s: %d of %d rays hit, %.2f tests per ray (tame %.2f)\n",
+        std::printf("%s: %d of %d rays hit, %.2f tests per ray (tame %.2f), %.0f ns per ray\n",
                     Catch::getResultCapture().getCurrentTestName().c_str(), w.hits,
-                    rays_per_case(), w.tests_per_ray, tame_work());
+                    rays_per_case(), w.tests_per_ray, tame_work(), w.ns_per_ray);
     INFO("tests per ray " << w.tests_per_ray << ", tame " << tame_work() << ", hits " << w.hits);
     CHECK(w.hits > 0);
     CHECK(w.tests_per_ray <= kWorkFactor * tame_work());
@@ -232,6 +242,9 @@ void run(const Case& c) {
 
 TEST_CASE("the tame scene", "[stress]") {
     const Work w = check_case(kTame);
+    if (std::getenv("HEXANT_STRESS_VERBOSE"))
+        std::printf("the tame scene: %d of %d rays hit, %.2f tests per ray, %.0f ns per ray\n",
+                    w.hits, rays_per_case(), w.tests_per_ray, w.ns_per_ray);
     CHECK(w.hits > 0);
     CHECK(w.tests_per_ray > 0.0);
 }
