@@ -1,6 +1,9 @@
 #include "app/command_line.hpp"
 
+#include <ostream>
 #include <stdexcept>
+
+#include "language/scene_error.hpp"
 
 namespace hexant::app {
 
@@ -96,6 +99,18 @@ ResolvedScene resolve(const SceneArguments& arguments) {
         throw std::runtime_error("the final frame comes before the initial frame");
     if (a.shutter < 0 || a.shutter > 1) throw std::runtime_error("--shutter must lie in [0, 1]");
     return r;
+}
+
+int run_reporting_errors(std::ostream& err, const std::function<int()>& body) {
+    try {
+        return body();
+    } catch (const language::SceneError& e) {
+        err << e.formatted();
+        return 1;
+    } catch (const std::exception& e) {
+        err << "hexant: error: " << e.what() << "\n";
+        return 1;
+    }
 }
 
 }  // namespace hexant::app

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
+#include <iosfwd>
 #include <optional>
 #include <string>
 #include <vector>
@@ -47,5 +49,9 @@ ResolvedScene resolve(const SceneArguments& arguments);
 // options replace the current ones, its warnings are added.
 void apply_ini_file(const std::filesystem::path& ini, ResolvedScene& resolved,
                     const std::string& section = {});
+
+// Runs a subcommand's body; a scene error is printed with its place and
+// context, any other error as "hexant: error: ...", and either returns 1.
+int run_reporting_errors(std::ostream& err, const std::function<int()>& body);
 
 }  // namespace hexant::app

@@ -14,7 +14,6 @@
 
 #include "app/log_log_plot.hpp"
 #include "language/interpreter.hpp"
-#include "language/scene_error.hpp"
 #include "tracer/image_compare.hpp"
 #include "tracer/image_output.hpp"
 #include "tracer/renderer.hpp"
@@ -95,10 +94,12 @@ struct Point {
 // frame's share: spacetime builds one hierarchy for all the animation's
 // frames, frames mode builds one per frame.
 Point measure(const runtime::SceneDescription& scene, tracer::Mode mode, int spp, int frame,
-              const ErrorTimeArguments& args, const fs::path& image) {
+              const ErrorTimeArguments& args, const fs::path& image,
+              std::uint32_t sample_seed = 0) {
     tracer::RenderSettings settings;
     settings.mode = mode;
     settings.samples_per_pixel = spp;
+    settings.sample_seed = sample_seed;
     settings.threads = args.threads;
     settings.build.max_depth = args.max_depth;
     tracer::Renderer renderer(scene, settings);
@@ -155,7 +156,7 @@ void add_error_time_arguments(CLI::App& command, ErrorTimeArguments& a) {
 }
 
 int run_error_time(const ErrorTimeArguments& args, std::ostream& out, std::ostream& err) {
-    try {
+    return run_reporting_errors(err, [&] {
         const ResolvedScene resolved = resolve(args.scene);
         for (const auto& warning : resolved.warnings) err << warning << "\n";
         const runtime::SceneDescription scene =
@@ -185,13 +186,8 @@ int run_error_time(const ErrorTimeArguments& args, std::ostream& out, std::ostre
         } else {
             out << "reference: rendering frame " << frame << " at " << reference_spp
                 << " samples per pixel ..." << std::flush;
-            tracer::RenderSettings settings;
-            settings.samples_per_pixel = reference_spp;
-            settings.sample_seed = kReferenceSeed;
-            settings.threads = args.threads;
-            settings.build.max_depth = args.max_depth;
-            tracer::Renderer renderer(scene, settings);
-            tracer::write_image(renderer.render_frame(frame), reference);
+            measure(scene, tracer::Mode::Spacetime, reference_spp, frame, args, reference,
+                    kReferenceSeed);
             out << " " << reference.string() << "\n";
         }
 
@@ -263,13 +259,7 @@ int run_error_time(const ErrorTimeArguments& args, std::ostream& out, std::ostre
         }
         out << "csv: " << csv.string() << "\nplot: " << svg.string() << "\n";
         return 0;
-    } catch (const language::SceneError& e) {
-        err << e.formatted();
-        return 1;
-    } catch (const std::exception& e) {
-        err << "hexant: error: " << e.what() << "\n";
-        return 1;
-    }
+    });
 }
 
 }  // namespace hexant::app

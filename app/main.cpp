@@ -46,7 +46,7 @@ int main(int argc, char** argv) {
         return app::run_error_time(error_time_arguments, std::cout, std::cerr);
 
     const app::SceneArguments& arguments = check->parsed() ? check_arguments : dump_arguments;
-    try {
+    return app::run_reporting_errors(std::cerr, [&] {
         app::ResolvedScene resolved = app::resolve(arguments);
         for (const auto& warning : resolved.warnings) std::cerr << warning << "\n";
         const runtime::SceneDescription scene =
@@ -57,11 +57,5 @@ int main(int argc, char** argv) {
             app::dump_scene(scene, resolved.at_clock.value_or(scene.animation.time_begin()), std::cout);
         }
         return 0;
-    } catch (const language::SceneError& e) {
-        std::cerr << e.formatted();
-        return 1;
-    } catch (const std::exception& e) {
-        std::cerr << "hexant: error: " << e.what() << "\n";
-        return 1;
-    }
+    });
 }

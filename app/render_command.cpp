@@ -9,7 +9,6 @@
 #include <unistd.h>
 
 #include "language/interpreter.hpp"
-#include "language/scene_error.hpp"
 #include "runtime/object_error.hpp"
 #include "tracer/image_output.hpp"
 #include "tracer/renderer.hpp"
@@ -179,7 +178,7 @@ void add_render_arguments(CLI::App& command, RenderArguments& a) {
 }
 
 int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err) {
-    try {
+    return run_reporting_errors(err, [&] {
         ResolvedScene resolved = resolve(args.scene);
         for (const auto& warning : resolved.warnings) err << warning << "\n";
         const runtime::SceneDescription scene =
@@ -224,13 +223,7 @@ int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err
         if (args.stats || args.compare) print_stats(out, columns);
         if (args.stats_json) write_stats_json(*args.stats_json, columns);
         return 0;
-    } catch (const language::SceneError& e) {
-        err << e.formatted();
-        return 1;
-    } catch (const std::exception& e) {
-        err << "hexant: error: " << e.what() << "\n";
-        return 1;
-    }
+    });
 }
 
 }  // namespace hexant::app

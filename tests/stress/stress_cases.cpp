@@ -111,6 +111,13 @@ Work check_case(const Case& c) {
         while (glm::dot(v, v) > 1.0 || glm::dot(v, v) < 1e-6);
         return glm::normalize(v);
     };
+    // A random direction parallel to the plane normal to `axis`.
+    const auto in_plane = [&](int axis) {
+        glm::dvec3 d = unit();
+        d[axis] = 0.0;
+        if (glm::length(d) < 1e-6) d[(axis + 1) % 3] = 1.0;
+        return glm::normalize(d);
+    };
     Work result;
     std::vector<rt::Ray4> rays;
     const int count = rays_per_case();
@@ -139,26 +146,17 @@ Work check_case(const Case& c) {
                 origin = aim;
                 d = unit();
                 break;
-            case 2: {  // along a face or through a corner, parallel to an axis plane
-                const int axis = i % 3;
-                aim[axis] = (i / 4) % 2 ? lo[axis] : hi[axis];
-                d = unit();
-                d[axis] = 0.0;
-                if (glm::length(d) < 1e-6) d[(axis + 1) % 3] = 1.0;
-                d = glm::normalize(d);
+            case 2:  // along a face or through a corner, parallel to an axis plane
+                aim[i % 3] = (i / 4) % 2 ? lo[i % 3] : hi[i % 3];
+                d = in_plane(i % 3);
                 origin = aim - 3.0 * reach * d;
                 break;
-            }
-            default: {  // in a cell wall of the first three levels
-                const int axis = i % 3;
-                aim[axis] = root.lo[axis] + (root.hi[axis] - root.lo[axis]) * double(1 + i % 7) / 8.0;
-                d = unit();
-                d[axis] = 0.0;
-                if (glm::length(d) < 1e-6) d[(axis + 1) % 3] = 1.0;
-                d = glm::normalize(d);
+            default:  // in a cell wall of the first three levels
+                aim[i % 3] = root.lo[i % 3] +
+                             (root.hi[i % 3] - root.lo[i % 3]) * double(1 + i % 7) / 8.0;
+                d = in_plane(i % 3);
                 origin = aim - 3.0 * reach * d;
                 break;
-            }
         }
         const rt::Ray4 ray{rt::Event(origin, t), rt::Event(d, 0.0)};
         rays.push_back(ray);
