@@ -251,6 +251,40 @@ std::array<N, 3> from_local(const std::array<N, 3>& q, const DeformationFrame<M>
     return p;
 }
 
+namespace deformation_detail {
+
+// One row of a frame times a box: the terms of the double code, but a zero
+// entry skipped and a unit one exact, as most frames are axis-aligned (a
+// twist about y has entries 0 and 1 only). Still an enclosure, and tighter.
+inline Interval frame_product(const std::array<Interval, 3>& p, double m0, double m1, double m2) {
+    const double m[3] = {m0, m1, m2};
+    Interval sum(0.0);
+    for (int j = 0; j < 3; ++j) {
+        if (m[j] == 0.0) continue;
+        const Interval term = m[j] == 1.0 ? p[j] : m[j] == -1.0 ? -p[j] : interval_detail::scaled(p[j], m[j]);
+        sum = sum + term;
+    }
+    return sum;
+}
+
+}  // namespace deformation_detail
+
+inline std::array<Interval, 3> to_local(const std::array<Interval, 3>& p,
+                                        const DeformationFrame<double>& f) {
+    using deformation_detail::frame_product;
+    return {frame_product(p, f.axis[0], f.axis[1], f.axis[2]),
+            frame_product(p, f.spine[0], f.spine[1], f.spine[2]),
+            frame_product(p, f.cross[0], f.cross[1], f.cross[2])};
+}
+
+inline std::array<Interval, 3> from_local(const std::array<Interval, 3>& q,
+                                          const DeformationFrame<double>& f) {
+    using deformation_detail::frame_product;
+    std::array<Interval, 3> p;
+    for (int i = 0; i < 3; ++i) p[i] = frame_product(q, f.axis[i], f.spine[i], f.cross[i]);
+    return p;
+}
+
 // The maps in local coordinates (a, s, c).
 
 template <class N>
@@ -270,6 +304,44 @@ std::array<N, 3> untwist_local(const std::array<N, 3>& q, const N& degrees_per_u
     const N angle = degrees_per_unit * N(deformation_detail::kDegree) * q[0];
     const N cs = cos(angle), sn = sin(angle);
     return {q[0], q[1] * cs + q[2] * sn, q[2] * cs - q[1] * sn};
+}
+
+namespace deformation_detail {
+
+// The double rotation's |result| exceeds the exact radius by the sine's and
+// cosine's errors (kLibmUlps each) and the rounding of two products and a
+// sum; this many ulps of the radius cover all of it with room to spare.
+inline constexpr int kRotationUlps = 4 * interval_detail::kLibmUlps + 16;
+
+// A rotation keeps each point's distance from the axis, so the turned
+// section lies within [-r, r] on both section axes, r the largest distance
+// over the box. The interval products treat the angle and the point as
+// independent and lose that: an arc's box comes out up to sqrt(2) wider
+// than its radius, and a stiff twist's pieces would meet a surface they
+// never come near. Cutting to the radius keeps the enclosure and restores it.
+inline std::array<Interval, 3> within_radius(const std::array<Interval, 3>& turned,
+                                             const std::array<Interval, 3>& q) {
+    using interval_detail::next_up;
+    constexpr double kGrowth = 1.0 + (kRotationUlps + 4) * 0x1p-52;
+    const double s = q[1].magnitude(), c = q[2].magnitude();
+    // One multiplication by (1 + n ulps), rounded up, in place of n steps.
+    const double r = next_up(next_up(std::sqrt(next_up(s * s + c * c))) * kGrowth);
+    if (!std::isfinite(r)) return turned;
+    const Interval disc{-r, r};
+    const Interval s2 = intersect(turned[1], disc), c2 = intersect(turned[2], disc);
+    return {turned[0], s2.is_empty() ? turned[1] : s2, c2.is_empty() ? turned[2] : c2};
+}
+
+}  // namespace deformation_detail
+
+inline std::array<Interval, 3> twist_local(const std::array<Interval, 3>& q,
+                                           const Interval& degrees_per_unit) {
+    return deformation_detail::within_radius(twist_local<Interval>(q, degrees_per_unit), q);
+}
+
+inline std::array<Interval, 3> untwist_local(const std::array<Interval, 3>& q,
+                                             const Interval& degrees_per_unit) {
+    return deformation_detail::within_radius(untwist_local<Interval>(q, degrees_per_unit), q);
 }
 
 template <class N>

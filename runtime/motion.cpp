@@ -280,6 +280,10 @@ Motion::Motion(const Transform& transform) {
     }
 
     if (!outputs.empty()) tape_ = std::make_shared<const TimeTape>(TimeTape::compile(outputs));
+    finish_stages();
+}
+
+void Motion::finish_stages() {
     fixed_affine_ = affine_ && !tape_;
     if (fixed_affine_ && !stages_.empty()) {
         // Constant and affine: the stages merged into one (only Fixed stages
@@ -287,6 +291,52 @@ Motion::Motion(const Transform& transform) {
         forward_ = stages_.front().forward;
         backward_ = stages_.front().backward;
     }
+}
+
+void Motion::append_fixed(const AffineMap<double>& forward, const AffineMap<double>& backward) {
+    if (!stages_.empty() && stages_.back().kind == StageKind::Fixed) {
+        Stage& last = stages_.back();
+        last.forward = forward * last.forward;
+        last.backward = last.backward * backward;
+    } else {
+        Stage stage;
+        stage.forward = forward;
+        stage.backward = backward;
+        stages_.push_back(stage);
+    }
+    identity_ = identity_ && to_glm(stages_.back().forward) == glm::dmat4(1.0);
+}
+
+Motion Motion::at_instant(double t) const {
+    if (!tape_) return *this;
+    const MotionEvaluator<double> e(*this, t);
+    Motion frozen;
+    for (const Stage& stage : stages_) {
+        switch (stage.kind) {
+            case StageKind::Fixed: frozen.append_fixed(stage.forward, stage.backward); break;
+            case StageKind::Moving:
+                frozen.append_fixed(e.stage_map(stage, false), e.stage_map(stage, true));
+                break;
+            default: {
+                const double amount = e.value(stage.amount);
+                // A twist, taper or bend by 0 is the identity (deformation.hpp).
+                if (amount == 0.0) break;
+                Stage fixed = stage;
+                fixed.amount = Parameter{amount, -1};
+                if (!stage.fixed_frame) {
+                    fixed.frame = deformation_frame(std::array<double, 3>{
+                        e.value(stage.axis[0]), e.value(stage.axis[1]), e.value(stage.axis[2])});
+                    fixed.fixed_frame = true;
+                }
+                frozen.stages_.push_back(fixed);
+                frozen.affine_ = false;
+                frozen.identity_ = false;
+                break;
+            }
+        }
+    }
+    frozen.finish_stages();
+    return frozen;
 }
 
 template <class N>

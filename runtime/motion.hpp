@@ -40,6 +40,13 @@ class Motion {
     bool is_affine() const { return affine_; }
     bool is_identity() const { return identity_; }
 
+    // The motion frozen at one instant: every amount a constant, each moving
+    // stage one matrix, and a deformation whose amount is 0 at t (a twist
+    // starting from none, say) left out, so that what is affine at t is
+    // affine. For a ray at one instant this is the same map with nothing
+    // evaluated per point but the maps themselves.
+    Motion at_instant(double t) const;
+
     // Object to world at t, and back; only when is_affine().
     glm::dmat4 matrix_at(double t) const;
     glm::dmat4 inverse_at(double t) const;
@@ -114,6 +121,11 @@ class Motion {
 
     template <class N>
     friend struct MotionEvaluator;
+
+    // Appends a constant affine stage, merged with a constant stage before it.
+    void append_fixed(const AffineMap<double>& forward, const AffineMap<double>& backward);
+    // Sets fixed_affine_, forward_ and backward_ once the stages are complete.
+    void finish_stages();
 
     template <class N>
     std::array<N, 3> to_world_general(const std::array<N, 3>& p, const N& t) const;

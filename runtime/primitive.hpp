@@ -93,8 +93,16 @@ public:
         if (!(s_min < s_max)) return std::nullopt;
         const bool one_instant = ray.direction.w == 0.0 || !moves_;
         if (motion_.is_affine() && (one_instant || kUnbounded))
-            return intersect_affine(ray, s_min, s_max);
-        return intersect_curved(ray, s_min, s_max);
+            return intersect_affine(ray, s_min, s_max, motion_);
+        if (one_instant && !motion_.is_static()) {
+            // A ray at one instant sees the motion frozen there: no time
+            // function is evaluated per piece of the curved search, and a
+            // deformation that is none at this instant costs nothing.
+            const Motion frozen = motion_.at_instant(ray.origin.w);
+            if (frozen.is_affine()) return intersect_affine(ray, s_min, s_max, frozen);
+            return intersect_curved(ray, s_min, s_max, frozen);
+        }
+        return intersect_curved(ray, s_min, s_max, motion_);
     }
 
     SurfacePoint complete(const Ray4& ray, const ObjectHit& hit) const override {
@@ -201,14 +209,16 @@ private:
         return hit;
     }
 
-    std::optional<ObjectHit> intersect_affine(const Ray4& ray, double s_min, double s_max) const {
+    // `motion` is motion_, or motion_ frozen at the ray's instant.
+    std::optional<ObjectHit> intersect_affine(const Ray4& ray, double s_min, double s_max,
+                                              const Motion& motion) const {
         const double t = ray.origin.w;
         geometry::Ray3 local{glm::dvec3(ray.origin), glm::dvec3(ray.direction)};
         const auto find = [&]() {
             return static_geometry_ ? geometry::intersect(*static_geometry_, local, s_min, s_max)
                                     : geometry::intersect(model_.at(t), local, s_min, s_max);
         };
-        if (motion_.is_identity()) {
+        if (motion.is_identity()) {
             const auto surface = find();
             if (!surface) return std::nullopt;
             return make_hit(ray, surface->s, *surface,
@@ -216,7 +226,7 @@ private:
         }
         // The ray is at one instant (or the object does not move): one
         // placement serves the ray and the hit.
-        const Motion::Placement placement = motion_.placement_at(t);
+        const Motion::Placement placement = motion.placement_at(t);
         local.origin = glm::dvec3(placement.to_object * glm::dvec4(local.origin, 1.0));
         local.direction = glm::dmat3(placement.to_object) * local.direction;
         const auto surface = find();
@@ -228,7 +238,8 @@ private:
 
     // The ray's image in object space is a curve: the deformation bends it,
     // or the ray's time runs along it through a moving frame.
-    std::optional<ObjectHit> intersect_curved(const Ray4& ray, double s_min, double s_max) const {
+    std::optional<ObjectHit> intersect_curved(const Ray4& ray, double s_min, double s_max,
+                                              const Motion& motion) const {
         const glm::dvec3 o(ray.origin), d(ray.direction);
         const double ow = ray.origin.w, dw = ray.direction.w;
         const auto time_over = [&](const Interval& s) {
@@ -254,11 +265,11 @@ private:
             const std::array<Interval, 3> world{Interval(o.x) + s * Interval(d.x),
                                                 Interval(o.y) + s * Interval(d.y),
                                                 Interval(o.z) + s * Interval(d.z)};
-            const auto q = motion_.template to_object<Interval>(world, time_over(s));
+            const auto q = motion.template to_object<Interval>(world, time_over(s));
             return geometry::Box3{{q[0].lo, q[1].lo, q[2].lo}, {q[0].hi, q[1].hi, q[2].hi}};
         };
         const auto point_at = [&](double s) {
-            const auto q = motion_.template to_object<double>(
+            const auto q = motion.template to_object<double>(
                 {o.x + s * d.x, o.y + s * d.y, o.z + s * d.z}, ow + s * dw);
             return glm::dvec3(q[0], q[1], q[2]);
         };
@@ -279,8 +290,10 @@ private:
         };
         const auto found = first_hit_on_curve(a, b, size, box_over, point_at, may_meet, chord_hit);
         if (!found || !(found->s > s_min && found->s < s_max)) return std::nullopt;
-        return make_hit(ray, found->s, found->surface,
-                        [this](const glm::dvec3& p, double t) { return to_world(p, t); });
+        return make_hit(ray, found->s, found->surface, [&](const glm::dvec3& p, double t) {
+            const auto q = motion.template to_world<double>({p.x, p.y, p.z}, t);
+            return glm::dvec3(q[0], q[1], q[2]);
+        });
     }
 
     Model model_;

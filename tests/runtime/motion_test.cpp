@@ -220,6 +220,63 @@ TEST_CASE("motion: deformations are undone by their inverses and their Jacobians
     }
 }
 
+TEST_CASE("motion: frozen at an instant it is the same map, and a deformation of 0 is left out",
+          "[motion]") {
+    Random r(12);
+    for (int trial = 0; trial < 200; ++trial) {
+        Transform transform;
+        transform.append(random_step(r, true));
+        // Twist amount 720 (clock - 0.5): none at clock 0.5.
+        transform.append(step(TransformKind::Twist, r.uniform(-1, 1), 1.0, r.uniform(-1, 1),
+                              clock_times(720.0, -360.0)));
+        transform.append(random_step(r, true));
+        const Motion motion(transform);
+        const double t = trial % 4 == 0 ? 0.5 : r.uniform(0.0, 1.0);
+        const Motion frozen = motion.at_instant(t);
+        REQUIRE(frozen.is_static());
+        CHECK(frozen.is_affine() == (t == 0.5));
+        for (int k = 0; k < 20; ++k) {
+            const std::array<double, 3> p{r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)};
+            const auto a = motion.to_world(p, t), b = frozen.to_world(p, 0.0);
+            const auto back = frozen.to_object(b, 0.0);
+            for (int i = 0; i < 3; ++i) {
+                const double scale = 1.0 + std::fabs(a[i]);
+                REQUIRE(std::fabs(a[i] - b[i]) <= 1e-12 * scale);
+                REQUIRE(std::fabs(back[i] - p[i]) <= 1e-9);
+            }
+        }
+    }
+}
+
+TEST_CASE("motion: a twist's interval image holds every point and stays within its radius",
+          "[motion]") {
+    // Turning keeps a point's distance from the axis; the interval twist
+    // keeps it too, so that a stiff twist's short arcs near a surface do not
+    // come out wider than the arc's radius.
+    Random r(13);
+    for (int trial = 0; trial < 300; ++trial) {
+        Transform transform;
+        transform.append(step(TransformKind::Twist, 0.0, 1.0, 0.0,
+                              TimeFunction(r.uniform(-8640.0, 8640.0))));
+        const Motion motion(transform);
+        const double radius = r.uniform(0.1, 2.0), angle = r.uniform(0.0, 6.3);
+        const double y = r.uniform(-1.0, 1.0), h = r.uniform(0.0, 0.05);
+        const glm::dvec3 c(radius * std::cos(angle), y, radius * std::sin(angle));
+        const IntervalVec3 box{Interval(c.x - h * std::fabs(std::sin(angle)), c.x),
+                               Interval(y, y + h), Interval(c.z)};
+        const auto image = motion.to_object<Interval>(box, Interval(0.0));
+        const double reach = std::sqrt(std::max(c.x * c.x, box[0].lo * box[0].lo) + c.z * c.z);
+        CHECK(image[0].magnitude() <= reach * (1.0 + 1e-13));
+        CHECK(image[2].magnitude() <= reach * (1.0 + 1e-13));
+        for (int k = 0; k < 50; ++k) {
+            const std::array<double, 3> p{r.uniform(box[0].lo, box[0].hi),
+                                          r.uniform(box[1].lo, box[1].hi), c.z};
+            REQUIRE(holds(image, motion.to_object(p, 0.0)));
+            REQUIRE(holds(motion.to_world<Interval>(box, Interval(0.0)), motion.to_world(p, 0.0)));
+        }
+    }
+}
+
 TEST_CASE("motion: an inverse deformation step inverts the deformation", "[motion]") {
     Transform forward;
     forward.append(step(TransformKind::Twist, 0.0, 1.0, 0.0, 90.0));

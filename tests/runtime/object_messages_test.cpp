@@ -279,6 +279,29 @@ TEST_CASE("only deformed objects and time-travelling rays enter the curved-path 
     CHECK(rt::curved_path_solves() == before + 2);
 }
 
+TEST_CASE("a deformation that is none at the ray's instant costs a straight-ray test",
+          "[object]") {
+    // The twist starts from nothing at clock 0: a ray at that instant meets
+    // a plain box, found by the straight-ray routine (a ray lying in a face
+    // plane once cost the curved search tens of thousands of pieces there).
+    const Parsed twisting = parse("box { <-0.3, 0, -0.3>, <0.3, 2, 0.3> twist y, 360 * 12 * clock }\n");
+    const Parsed plain = parse("box { <-0.3, 0, -0.3>, <0.3, 2, 0.3> }\n");
+    const auto& object = *twisting.objects.front();
+    Random random(3);
+    const std::uint64_t before = rt::curved_path_solves();
+    for (int i = 0; i < 200; ++i) {
+        const glm::dvec3 d = random.unit_vector();
+        const rt::Ray4 r = ray(glm::dvec3(0, 1, 0) - 5.0 * d + 0.3 * random.unit_vector(), d, 0.0);
+        const auto got = object.intersect(r, 0.0, kInf);
+        const auto expected = plain.objects.front()->intersect(r, 0.0, kInf);
+        REQUIRE(bool(got) == bool(expected));
+        if (got) CHECK(got->s == expected->s);
+    }
+    CHECK(rt::curved_path_solves() == before);
+    CHECK(object.intersect(ray({0, 1, -5}, {0.05, 0, 1}, 0.5), 0.0, kInf));  // twisted by now
+    CHECK(rt::curved_path_solves() == before + 1);
+}
+
 TEST_CASE("secondary rays offset from a hit do not find the surface they leave", "[object]") {
     // Reflected rays leave a convex solid and must not meet it again at any
     // distance; a far placement and a fast motion make the hit point's
