@@ -20,6 +20,7 @@
 
 #include "language/interpreter.hpp"
 #include "runtime/object_factory.hpp"
+#include "runtime/work_counts.hpp"
 #include "tracer/ray_query.hpp"
 #include "tracer/renderer.hpp"
 
@@ -59,6 +60,7 @@ struct Work {
     double tests_per_ray = 0.0;  // bound and object tests of the spacetime mode
     int hits = 0;
     double ns_per_ray = 0.0;     // spacetime first hits, timed apart; printed, never asserted
+    double maps_per_ray = 0.0;   // points and boxes through a deformation in that timed pass
 };
 
 // The box an object occupies at one instant (nothing for unbounded ones).
@@ -182,10 +184,12 @@ Work check_case(const Case& c) {
     result.tests_per_ray =
         double(b.counters.bound_tests + b.counters.object_tests) / double(count);
     if (std::getenv("HEXANT_STRESS_VERBOSE")) {
+        const std::uint64_t maps = rt::this_thread_work.deformation_maps;
         const auto start = std::chrono::steady_clock::now();
         for (const rt::Ray4& ray : rays) (void)spacetime->first_hit(ray, 0.0, kInf, b);
         result.ns_per_ray = std::chrono::duration<double, std::nano>(
                                 std::chrono::steady_clock::now() - start).count() / double(count);
+        result.maps_per_ray = double(rt::this_thread_work.deformation_maps - maps) / double(count);
     }
 
     // A small render: nothing NaN or Inf reaches a pixel.
@@ -228,9 +232,10 @@ double tame_work() {
 void run(const Case& c) {
     const Work w = check_case(c);
     if (std::getenv("HEXANT_STRESS_VERBOSE"))
-        std::printf("%s: %d of %d rays hit, %.2f tests per ray (tame %.2f), %.0f ns per ray\n",
+        std::printf("%s: %d of %d rays hit, %.2f tests per ray (tame %.2f), %.0f ns per ray, "
+                    "%.1f deformation maps per ray\n",
                     Catch::getResultCapture().getCurrentTestName().c_str(), w.hits,
-                    rays_per_case(), w.tests_per_ray, tame_work(), w.ns_per_ray);
+                    rays_per_case(), w.tests_per_ray, tame_work(), w.ns_per_ray, w.maps_per_ray);
     INFO("tests per ray " << w.tests_per_ray << ", tame " << tame_work() << ", hits " << w.hits);
     CHECK(w.hits > 0);
     CHECK(w.tests_per_ray <= kWorkFactor * tame_work());
