@@ -3,6 +3,7 @@
 #include "app/render_command.hpp"
 
 #include <catch2/catch.hpp>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -13,8 +14,13 @@ using hexant::app::run_render;
 
 namespace {
 
+// A folder per test case: ctest runs the cases as parallel processes, and
+// cases sharing one scene file overwrote each other's scene mid-run.
 fs::path scene_file(const std::string& text) {
-    const fs::path folder = fs::temp_directory_path() / "hexant_render_command_test";
+    std::string name = Catch::getResultCapture().getCurrentTestName();
+    for (char& c : name)
+        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+    const fs::path folder = fs::temp_directory_path() / "hexant_render_command_test" / name;
     fs::create_directories(folder);
     const fs::path path = folder / "scene.pov";
     std::ofstream(path) << text;
