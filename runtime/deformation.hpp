@@ -251,37 +251,18 @@ std::array<N, 3> from_local(const std::array<N, 3>& q, const DeformationFrame<M>
     return p;
 }
 
-namespace deformation_detail {
-
-// One row of a frame times a box: the terms of the double code, but a zero
-// entry skipped and a unit one exact, as most frames are axis-aligned (a
-// twist about y has entries 0 and 1 only). Still an enclosure, and tighter.
-inline Interval frame_product(const std::array<Interval, 3>& p, double m0, double m1, double m2) {
-    const double m[3] = {m0, m1, m2};
-    Interval sum(0.0);
-    for (int j = 0; j < 3; ++j) {
-        if (m[j] == 0.0) continue;
-        const Interval term = m[j] == 1.0 ? p[j] : m[j] == -1.0 ? -p[j] : interval_detail::scaled(p[j], m[j]);
-        sum = sum + term;
-    }
-    return sum;
-}
-
-}  // namespace deformation_detail
-
+// Frames are most often axis-aligned: their zero products are skipped.
 inline std::array<Interval, 3> to_local(const std::array<Interval, 3>& p,
                                         const DeformationFrame<double>& f) {
-    using deformation_detail::frame_product;
-    return {frame_product(p, f.axis[0], f.axis[1], f.axis[2]),
-            frame_product(p, f.spine[0], f.spine[1], f.spine[2]),
-            frame_product(p, f.cross[0], f.cross[1], f.cross[2])};
+    return {sparse_dot(f.axis[0], f.axis[1], f.axis[2], p),
+            sparse_dot(f.spine[0], f.spine[1], f.spine[2], p),
+            sparse_dot(f.cross[0], f.cross[1], f.cross[2], p)};
 }
 
 inline std::array<Interval, 3> from_local(const std::array<Interval, 3>& q,
                                           const DeformationFrame<double>& f) {
-    using deformation_detail::frame_product;
     std::array<Interval, 3> p;
-    for (int i = 0; i < 3; ++i) p[i] = frame_product(q, f.axis[i], f.spine[i], f.cross[i]);
+    for (int i = 0; i < 3; ++i) p[i] = sparse_dot(f.axis[i], f.spine[i], f.cross[i], q);
     return p;
 }
 

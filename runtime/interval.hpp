@@ -24,6 +24,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -166,6 +167,22 @@ inline bool is_nonzero_point(const Interval& a) {
 }
 
 }  // namespace interval_detail
+
+// m0 p0 + m1 p1 + m2 p2 in the order the double code forms it, with the term
+// of a zero entry left out and that of a unit entry exact (as they are in
+// the double code): most placements and frames are sparse, a translation or
+// an axis-aligned frame, and skipping their zero products halves the cost
+// of turning a box.
+inline Interval sparse_dot(double m0, double m1, double m2, const std::array<Interval, 3>& p) {
+    const double m[3] = {m0, m1, m2};
+    Interval sum(0.0);
+    for (int j = 0; j < 3; ++j) {
+        if (m[j] == 0.0) continue;
+        const Interval term = m[j] == 1.0 ? p[j] : m[j] == -1.0 ? -p[j] : interval_detail::scaled(p[j], m[j]);
+        sum = sum + term;
+    }
+    return sum;
+}
 
 inline Interval operator*(const Interval& a, const Interval& b) {
     using namespace interval_detail;

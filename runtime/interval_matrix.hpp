@@ -10,6 +10,7 @@
 #pragma once
 
 #include <array>
+#include <type_traits>
 
 #include <glm/mat4x4.hpp>
 
@@ -52,8 +53,14 @@ struct AffineMap {
     template <class P>
     std::array<P, 3> apply(const std::array<P, 3>& p) const {
         std::array<P, 3> r;
-        for (int i = 0; i < 3; ++i)
-            r[i] = P(m[i][0]) * p[0] + P(m[i][1]) * p[1] + P(m[i][2]) * p[2] + P(m[i][3]);
+        for (int i = 0; i < 3; ++i) {
+            if constexpr (std::is_same_v<Number, double> && std::is_same_v<P, Interval>) {
+                r[i] = sparse_dot(m[i][0], m[i][1], m[i][2], p);
+                if (m[i][3] != 0.0) r[i] = r[i] + Interval(m[i][3]);
+            } else {
+                r[i] = P(m[i][0]) * p[0] + P(m[i][1]) * p[1] + P(m[i][2]) * p[2] + P(m[i][3]);
+            }
+        }
         return r;
     }
 

@@ -1,6 +1,8 @@
 #include "runtime/work_counts.hpp"
 #include "runtime/motion.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include <glm/matrix.hpp>
@@ -367,6 +369,71 @@ template std::array<Interval, 3> Motion::to_object_general(const std::array<Inte
                                                            const Interval&) const;
 template std::array<Dual, 3> Motion::to_object_general(const std::array<Dual, 3>&,
                                                        const Dual&) const;
+
+namespace {
+
+// How far a section box (s, c) reaches from the axis, and how near it comes,
+// rounded outward.
+double section_far(const IntervalVec3& local) {
+    using interval_detail::next_up;
+    const double s = local[1].magnitude(), c = local[2].magnitude();
+    return next_up(std::sqrt(next_up(next_up(s * s) + next_up(c * c))));
+}
+double section_near(const IntervalVec3& local) {
+    using interval_detail::next_down;
+    const auto near = [](const Interval& x) {
+        return x.contains_zero() ? 0.0 : std::min(std::fabs(x.lo), std::fabs(x.hi));
+    };
+    const double s = near(local[1]), c = near(local[2]);
+    return std::max(0.0, next_down(std::sqrt(next_down(next_down(s * s) + next_down(c * c)))));
+}
+
+}  // namespace
+
+std::vector<double> Motion::twist_reaches(const IntervalVec3& object_box, const Interval& t) const {
+    std::vector<double> reaches;
+    const bool any = std::any_of(stages_.begin(), stages_.end(), [](const Stage& stage) {
+        return stage.kind == StageKind::Twist && stage.fixed_frame;
+    });
+    if (!any) return reaches;
+    // The double maps turn a point by a sine and a cosine off by kLibmUlps
+    // each, round two products and a sum, and round the frame's projections
+    // (a few ulps of the point's largest coordinate): the margin covers that
+    // drift of a point's distance from the axis, so that the exact curve and
+    // the double one agree on what is beyond reach.
+    constexpr double kDrift = (deformation_detail::kRotationUlps + 16) * 0x1p-52;
+    const MotionEvaluator<Interval> e(*this, t);
+    IntervalVec3 box = object_box;
+    for (const Stage& stage : stages_) {
+        double reach = interval_detail::kInf;
+        if (stage.kind == StageKind::Twist && stage.fixed_frame) {
+            const IntervalVec3 local = to_local(box, stage.frame);
+            const double far = section_far(local);
+            const double largest = std::max({local[0].magnitude(), local[1].magnitude(),
+                                             local[2].magnitude()});
+            if (std::isfinite(far) && std::isfinite(largest))
+                reach = interval_detail::next_up(far + kDrift * (far + largest));
+        }
+        reaches.push_back(reach);
+        box = e.through(stage, box, false);
+    }
+    return reaches;
+}
+
+std::optional<IntervalVec3> Motion::to_object_within(const IntervalVec3& p, const Interval& t,
+                                                     const std::vector<double>& reaches) const {
+    if (reaches.size() != stages_.size()) return to_object(p, t);
+    const MotionEvaluator<Interval> e(*this, t);
+    IntervalVec3 q = p;
+    for (std::size_t k = stages_.size(); k-- > 0;) {
+        const Stage& stage = stages_[k];
+        if (stage.kind == StageKind::Twist && stage.fixed_frame &&
+            section_near(to_local(q, stage.frame)) > reaches[k])
+            return std::nullopt;
+        q = e.through(stage, q, true);
+    }
+    return q;
+}
 
 glm::dmat4 Motion::matrix_at(double t) const {
     if (fixed_affine_) return to_glm(forward_);

@@ -13,6 +13,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <glm/mat3x3.hpp>
@@ -84,6 +85,19 @@ class Motion {
         const auto r = to_object(std::array<double, 3>{p.x, p.y, p.z}, t);
         return {r[0], r[1], r[2]};
     }
+
+    // A twist keeps every point's distance from its axis. For each stage,
+    // how far from that twist's axis the points of object_box can be when
+    // they reach it, at any time in t (rounded up past the double maps'
+    // drift); infinity for stages that are not twists about a fixed axis.
+    // Empty when the motion has no such twist.
+    std::vector<double> twist_reaches(const IntervalVec3& object_box, const Interval& t) const;
+    // to_object for a box, or nothing when the box lies beyond a twist's
+    // reach (twist_reaches of a box holding the object): then no point of
+    // the object maps into it, which the box alone, turned into object
+    // space, cannot show (a stiff twist's box comes out around the axis).
+    std::optional<IntervalVec3> to_object_within(const IntervalVec3& p, const Interval& t,
+                                                 const std::vector<double>& reaches) const;
 
     // A box holding the images of all points of object_box at all times in
     // t. For deformations the box is also cut into a few pieces, and the

@@ -261,12 +261,18 @@ private:
         std::optional<Geometry> fixed_geometry;
         if (fixed) fixed_geometry = static_geometry_ ? *static_geometry_ : model_.at(ow);
 
+        // A twisted object's surface stays within some distance of the
+        // twist's axis: a piece of the path beyond it is dropped at once
+        // (its box, turned into object space, would come out around the axis).
+        const std::vector<double> reaches = motion.twist_reaches(object_box, ray_time);
         const auto box_over = [&](const Interval& s) {
             const std::array<Interval, 3> world{Interval(o.x) + s * Interval(d.x),
                                                 Interval(o.y) + s * Interval(d.y),
                                                 Interval(o.z) + s * Interval(d.z)};
-            const auto q = motion.template to_object<Interval>(world, time_over(s));
-            return geometry::Box3{{q[0].lo, q[1].lo, q[2].lo}, {q[0].hi, q[1].hi, q[2].hi}};
+            const auto q = motion.to_object_within(world, time_over(s), reaches);
+            if (!q) return geometry::Box3::nowhere();
+            const auto& r = *q;
+            return geometry::Box3{{r[0].lo, r[1].lo, r[2].lo}, {r[0].hi, r[1].hi, r[2].hi}};
         };
         const auto point_at = [&](double s) {
             const auto q = motion.template to_object<double>(
@@ -274,6 +280,7 @@ private:
             return glm::dvec3(q[0], q[1], q[2]);
         };
         const auto may_meet = [&](const geometry::Box3& box, const Interval& s) {
+            if (box.is_nowhere()) return false;
             if (fixed) return geometry::surface_may_meet(*fixed_geometry, box);
             // The surface at the piece's middle time, and the box widened by
             // how far the surface moves during the piece.

@@ -10,6 +10,8 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
+
 #include <glm/glm.hpp>
 
 namespace hexant::runtime::geometry {
@@ -21,6 +23,17 @@ struct Ray3 {
 // Axis-aligned and closed: lo <= hi in every coordinate.
 struct Box3 {
     glm::dvec3 lo, hi;
+
+    // The box of no point at all (not a box with NaN ends, which must read
+    // as "anywhere"): what a search uses for a piece it has ruled out.
+    static Box3 nowhere() {
+        constexpr double inf = std::numeric_limits<double>::infinity();
+        return {glm::dvec3(inf), glm::dvec3(-inf)};
+    }
+    bool is_nowhere() const {
+        constexpr double inf = std::numeric_limits<double>::infinity();
+        return lo.x == inf && hi.x == -inf;
+    }
 };
 
 struct SurfaceHit {
