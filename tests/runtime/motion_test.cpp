@@ -277,6 +277,58 @@ TEST_CASE("motion: a twist's interval image holds every point and stays within i
     }
 }
 
+TEST_CASE("motion: a box beyond a twist's reach holds no image of the object", "[motion]") {
+    // The reach is the farthest the object gets from the twist's axis; a
+    // world box wholly farther out is dropped without being turned back.
+    Random r(14);
+    const IntervalVec3 object{Interval(-0.5, 0.5), Interval(0.0, 1.0), Interval(-0.3, 0.3)};
+    for (int trial = 0; trial < 100; ++trial) {
+        Transform transform;
+        if (trial % 2) transform.append(random_step(r, false));
+        transform.append(step(TransformKind::Twist, r.uniform(-0.3, 0.3), 1.0, r.uniform(-0.3, 0.3),
+                              TimeFunction(r.uniform(-8640.0, 8640.0))));
+        transform.append(random_step(r, false));
+        const Motion motion(transform);
+        const auto reaches = motion.twist_reaches(object, Interval(0.0));
+        REQUIRE(reaches.size() >= 2);
+        int dropped = 0;
+        for (int k = 0; k < 200; ++k) {
+            // World boxes around images of object points, pushed outward.
+            const std::array<double, 3> p{r.uniform(-0.5, 0.5), r.uniform(0.0, 1.0),
+                                          r.uniform(-0.3, 0.3)};
+            const auto w = motion.to_world(p, 0.0);
+            const double h = r.uniform(0.0, 0.2), push = k % 4 == 0 ? 0.0 : r.uniform(0.0, 2.0);
+            const IntervalVec3 box{Interval(w[0] + push, w[0] + push + h), Interval(w[1] - h, w[1]),
+                                   Interval(w[2] + push - h, w[2] + push)};
+            const auto within = motion.to_object_within(box, Interval(0.0), reaches);
+            // A box holding an image is never dropped.
+            if (push == 0.0) REQUIRE(within);
+            if (within) {
+                const auto plain = motion.to_object(box, Interval(0.0));
+                for (int i = 0; i < 3; ++i) {
+                    CHECK(within->at(i).lo == plain[i].lo);
+                    CHECK(within->at(i).hi == plain[i].hi);
+                }
+                continue;
+            }
+            ++dropped;
+            // No point of the object maps into a dropped box.
+            int inside = 0;
+            for (int j = 0; j < 2000; ++j) {
+                const std::array<double, 3> q{r.uniform(-0.5, 0.5), r.uniform(0.0, 1.0),
+                                              r.uniform(-0.3, 0.3)};
+                if (holds(box, motion.to_world(q, 0.0))) ++inside;
+            }
+            REQUIRE(inside == 0);
+        }
+        CHECK(dropped > 0);
+    }
+    // Without a twist there is nothing to reach.
+    Transform plain;
+    plain.append(step(TransformKind::Bend, 0.0, 1.0, 0.0, TimeFunction(30.0)));
+    CHECK(Motion(plain).twist_reaches(object, Interval(0.0)).empty());
+}
+
 TEST_CASE("motion: an inverse deformation step inverts the deformation", "[motion]") {
     Transform forward;
     forward.append(step(TransformKind::Twist, 0.0, 1.0, 0.0, 90.0));
