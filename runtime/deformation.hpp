@@ -383,6 +383,36 @@ std::array<N, 3> bend_local(const std::array<N, 3>& q, const N& degrees_per_unit
 //   s = (1 - rho) / k = (2 s' - k (a'^2 + s'^2)) / (1 + rho),
 //   a = θ / k = a' / (rho S(θ)),
 // the last form free of k while rho S(θ) is not small.
+namespace deformation_detail {
+
+// The bend's angle atan2(ka, d), with a zero ka always +0: beyond the centre
+// of curvature (d < 0) the angle jumps from pi to -pi across ka = 0, and a
+// path lying exactly in that plane (a ray in the plane of a bent object's
+// end) must not straddle the jump on the sign of a zero, or every piece of
+// it would span both branches and be refined to single ulps.
+inline double bend_angle(double ka, double d) {
+    return std::atan2(ka + 0.0, d);  // -0 + 0 is +0
+}
+inline Dual bend_angle(const Dual& ka, const Dual& d) {
+    using std::atan2;
+    return atan2(Dual(ka.v + 0.0, ka.d), d);
+}
+// On ka >= 0 (zero read as +0) the angle is continuous off the origin, so
+// its extremes lie at corners even where the box touches the cut.
+inline Interval bend_angle(const Interval& ka, const Interval& d) {
+    using interval_detail::down;
+    using interval_detail::up;
+    if (!(ka.lo == 0.0 && d.hi < 0.0)) return atan2(ka, d);
+    const double a1 = std::atan2(0.0, d.lo), a2 = std::atan2(0.0, d.hi);
+    const double a3 = std::atan2(ka.hi, d.lo), a4 = std::atan2(ka.hi, d.hi);
+    const double lo = std::min(std::min(a1, a2), std::min(a3, a4));
+    const double hi = std::max(std::max(a1, a2), std::max(a3, a4));
+    return {std::max(0.0, down(lo, interval_detail::kLibmUlps)),
+            std::min(interval_detail::next_up(kPi), up(hi, interval_detail::kLibmUlps))};
+}
+
+}  // namespace deformation_detail
+
 template <class N>
 std::array<N, 3> unbend_local(const std::array<N, 3>& q, const N& degrees_per_unit) {
     using namespace deformation_detail;
@@ -392,7 +422,7 @@ std::array<N, 3> unbend_local(const std::array<N, 3>& q, const N& degrees_per_un
     const N ka = k * q[0];
     const N d = N(1.0) - k * q[1];
     const N rho = sqrt(ka * ka + d * d);
-    const N theta = atan2(ka, d);
+    const N theta = deformation_detail::bend_angle(ka, d);
     const N s = (N(2.0) * q[1] - k * (q[0] * q[0] + q[1] * q[1])) / (N(1.0) + rho);
     const N divisor = rho * sinc(theta);
     N a;

@@ -12,6 +12,7 @@
 #include "runtime/curved_path_root.hpp"
 #include "runtime/geometry/offset_ray.hpp"
 #include "runtime/object_error.hpp"
+#include "runtime/work_counts.hpp"
 
 using namespace object_test;
 
@@ -300,6 +301,24 @@ TEST_CASE("a deformation that is none at the ray's instant costs a straight-ray 
     CHECK(rt::curved_path_solves() == before);
     CHECK(object.intersect(ray({0, 1, -5}, {0.05, 0, 1}, 0.5), 0.0, kInf));  // twisted by now
     CHECK(rt::curved_path_solves() == before + 1);
+}
+
+TEST_CASE("a ray in the plane of a bent object's end is not refined ulp by ulp", "[object]") {
+    // Beyond the centre of curvature the inverse bend's angle jumps from pi
+    // to -pi across that plane; a ray lying in it once straddled the jump on
+    // the sign of a zero, every piece spanning both branches, and the search
+    // ran into its limit of pieces. Counted in deformation maps.
+    const Parsed bent = parse("cylinder { 0, 2 * y, 0.3 bend y, 98 translate -x * 1.5 }\n");
+    const auto& object = *bent.objects.front();
+    Random random(5);
+    for (int i = 0; i < 20; ++i) {
+        const double angle = random.uniform(-0.6, 0.6);
+        const glm::dvec3 d(std::cos(angle), 0.0, std::sin(angle));
+        const glm::dvec3 aim(-1.5 + random.uniform(-0.2, 0.2), 0.0, 0.6 + random.uniform(0.0, 0.4));
+        const std::uint64_t before = rt::this_thread_work.deformation_maps;
+        (void)object.intersect(ray(aim - 5.0 * d, d), 0.0, kInf);
+        CHECK(rt::this_thread_work.deformation_maps - before < 20000);
+    }
 }
 
 TEST_CASE("secondary rays offset from a hit do not find the surface they leave", "[object]") {
