@@ -45,6 +45,14 @@ inline std::uint64_t curved_path_solves() {
     return g_curved_path_solves.load(std::memory_order_relaxed);
 }
 
+// How many searches gave up at kCurvedPathMaxPieces (and answered "miss"):
+// the stress suite requires none.
+inline std::atomic<std::uint64_t> g_curved_path_give_ups{0};
+
+inline std::uint64_t curved_path_give_ups() {
+    return g_curved_path_give_ups.load(std::memory_order_relaxed);
+}
+
 // box_over(Interval s) -> geometry::Box3 holding the path over s;
 // point_at(double s) -> glm::dvec3 on the path;
 // may_meet(Box3, Interval s) -> bool, false only if the surface has no point
@@ -87,6 +95,7 @@ std::optional<CurvedPathHit> first_hit_on_curve(double s_min, double s_max, doub
             if (s > s_min && s < s_max) return CurvedPathHit{s, *hit};
         }
     }
+    if (top > 0) g_curved_path_give_ups.fetch_add(1, std::memory_order_relaxed);
     return std::nullopt;
 }
 

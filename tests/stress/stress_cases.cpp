@@ -1,7 +1,8 @@
 // The stress suite (label `stress`): scenes and rays that break careless
 // tracers. For each case the spacetime hierarchy (and the per-frame one)
 // must find exactly the hits brute force finds: the same rays hit, at the
-// same depth to a relative 1e-9, with finite normals; a small render has no
+// same depth to a relative 1e-9, with finite normals; no curved-path search
+// (deformed objects) gives up at its limit of pieces; a small render has no
 // NaN or Inf pixel; and the work per ray (bound and object tests, counted,
 // never timed) stays within a stated factor of a tame scene's.
 //
@@ -19,6 +20,7 @@
 #include <vector>
 
 #include "language/interpreter.hpp"
+#include "runtime/curved_path_root.hpp"
 #include "runtime/object_factory.hpp"
 #include "runtime/work_counts.hpp"
 #include "tracer/ray_query.hpp"
@@ -122,6 +124,7 @@ Work check_case(const Case& c) {
     };
     Work result;
     std::vector<rt::Ray4> rays;
+    const std::uint64_t give_ups = rt::curved_path_give_ups();
     const int count = rays_per_case();
     for (int i = 0; i < count; ++i) {
         const double t = (i % 11 == 0) ? t0 : uniform(t0, t1);
@@ -181,6 +184,8 @@ Work check_case(const Case& c) {
         REQUIRE(std::isfinite(p.geometric_normal.x + p.geometric_normal.y + p.geometric_normal.z));
         REQUIRE(std::isfinite(p.shading_normal.x + p.shading_normal.y + p.shading_normal.z));
     }
+    // No curved-path search gave up at its limit of pieces (a miss by fiat).
+    CHECK(rt::curved_path_give_ups() == give_ups);
     result.tests_per_ray =
         double(b.counters.bound_tests + b.counters.object_tests) / double(count);
     if (std::getenv("HEXANT_STRESS_VERBOSE")) {
