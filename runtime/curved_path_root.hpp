@@ -29,8 +29,10 @@ struct CurvedPathHit {
 
 // Stops halving when a piece's box is this small against the object's size:
 // a relative width, so it holds for objects of any scale. The chord then
-// misses the curve by about (curvature * piece length^2), far below 1e-12 of
-// the size for any deformation the map's limits allow.
+// misses the curve by about curvature * width^2 / 8: 1e-13 of the size for a
+// path bent on the object's own scale, but about 1e-9 for a twist of 24 turns
+// per unit (curvature ~1e4 / size), which is what the dense-sampling test of
+// stiff twists (tests/runtime/object_intersect_test.cpp, to 1e-8) allows.
 inline constexpr double kCurvedPathRelativeWidth = 1e-6;
 // A hard limit on pieces examined, so a pathological path cannot hang the
 // tracer; reaching it means a miss (counted by the caller's tests).
