@@ -126,7 +126,7 @@ inline Interval sinc(const Interval& x) {
     using namespace deformation_detail;
     using interval_detail::down;
     using interval_detail::up;
-    const double near = x.contains_zero() ? 0.0 : std::min(std::fabs(x.lo), std::fabs(x.hi));
+    const double near = x.mignitude();
     const double far = x.magnitude();
     const double hi = near <= kPi ? up(sinc(near), kSincUlps) : up(1.0 / near, 2);
     double lo = far <= kPi ? down(sinc(far), kSincUlps) : kSincMinimum;
@@ -294,6 +294,19 @@ namespace deformation_detail {
 // sum; this many ulps of the radius cover all of it with room to spare.
 inline constexpr int kRotationUlps = 4 * interval_detail::kLibmUlps + 16;
 
+// The distances from the axis of the points of a box in local coordinates
+// (a, s, c): sqrt(s^2 + c^2) over the box, rounded outward.
+inline Interval section_radius(const std::array<Interval, 3>& q) {
+    using interval_detail::next_down;
+    using interval_detail::next_up;
+    const double s_far = q[1].magnitude(), c_far = q[2].magnitude();
+    const double s_near = q[1].mignitude(), c_near = q[2].mignitude();
+    const double far = next_up(std::sqrt(next_up(next_up(s_far * s_far) + next_up(c_far * c_far))));
+    const double near =
+        next_down(std::sqrt(next_down(next_down(s_near * s_near) + next_down(c_near * c_near))));
+    return {std::max(0.0, near), far};
+}
+
 // A rotation keeps each point's distance from the axis, so the turned
 // section lies within [-r, r] on both section axes, r the largest distance
 // over the box. The interval products treat the angle and the point as
@@ -304,9 +317,8 @@ inline std::array<Interval, 3> within_radius(const std::array<Interval, 3>& turn
                                              const std::array<Interval, 3>& q) {
     using interval_detail::next_up;
     constexpr double kGrowth = 1.0 + (kRotationUlps + 4) * 0x1p-52;
-    const double s = q[1].magnitude(), c = q[2].magnitude();
     // One multiplication by (1 + n ulps), rounded up, in place of n steps.
-    const double r = next_up(next_up(std::sqrt(next_up(s * s + c * c))) * kGrowth);
+    const double r = next_up(section_radius(q).hi * kGrowth);
     if (!std::isfinite(r)) return turned;
     const Interval disc{-r, r};
     const Interval s2 = intersect(turned[1], disc), c2 = intersect(turned[2], disc);

@@ -95,6 +95,10 @@ struct Interval {
         return std::clamp(m, lo, hi);
     }
     double magnitude() const { return std::max(std::fabs(lo), std::fabs(hi)); }
+    // The smallest |x| over the interval (0 when it holds 0).
+    double mignitude() const {
+        return contains_zero() ? 0.0 : std::min(std::fabs(lo), std::fabs(hi));
+    }
     bool contains(double v) const { return lo <= v && v <= hi; }
     bool contains_zero() const { return lo <= 0.0 && 0.0 <= hi; }
     bool is_point() const { return lo == hi; }

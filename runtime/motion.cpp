@@ -370,26 +370,6 @@ template std::array<Interval, 3> Motion::to_object_general(const std::array<Inte
 template std::array<Dual, 3> Motion::to_object_general(const std::array<Dual, 3>&,
                                                        const Dual&) const;
 
-namespace {
-
-// How far a section box (s, c) reaches from the axis, and how near it comes,
-// rounded outward.
-double section_far(const IntervalVec3& local) {
-    using interval_detail::next_up;
-    const double s = local[1].magnitude(), c = local[2].magnitude();
-    return next_up(std::sqrt(next_up(next_up(s * s) + next_up(c * c))));
-}
-double section_near(const IntervalVec3& local) {
-    using interval_detail::next_down;
-    const auto near = [](const Interval& x) {
-        return x.contains_zero() ? 0.0 : std::min(std::fabs(x.lo), std::fabs(x.hi));
-    };
-    const double s = near(local[1]), c = near(local[2]);
-    return std::max(0.0, next_down(std::sqrt(next_down(next_down(s * s) + next_down(c * c)))));
-}
-
-}  // namespace
-
 std::vector<double> Motion::twist_reaches(const IntervalVec3& object_box, const Interval& t) const {
     std::vector<double> reaches;
     const bool any = std::any_of(stages_.begin(), stages_.end(), [](const Stage& stage) {
@@ -408,7 +388,7 @@ std::vector<double> Motion::twist_reaches(const IntervalVec3& object_box, const 
         double reach = interval_detail::kInf;
         if (stage.kind == StageKind::Twist && stage.fixed_frame) {
             const IntervalVec3 local = to_local(box, stage.frame);
-            const double far = section_far(local);
+            const double far = deformation_detail::section_radius(local).hi;
             const double largest = std::max({local[0].magnitude(), local[1].magnitude(),
                                              local[2].magnitude()});
             if (std::isfinite(far) && std::isfinite(largest))
@@ -428,7 +408,7 @@ std::optional<IntervalVec3> Motion::to_object_within(const IntervalVec3& p, cons
     for (std::size_t k = stages_.size(); k-- > 0;) {
         const Stage& stage = stages_[k];
         if (stage.kind == StageKind::Twist && stage.fixed_frame &&
-            section_near(to_local(q, stage.frame)) > reaches[k])
+            deformation_detail::section_radius(to_local(q, stage.frame)).lo > reaches[k])
             return std::nullopt;
         q = e.through(stage, q, true);
     }
