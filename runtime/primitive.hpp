@@ -61,7 +61,10 @@ public:
                     objects::to_interval_box(geometry::object_bounds(*static_geometry_));
         }
         if constexpr (!kUnbounded)
-            if (!moves_) static_world_box_ = world_box_over(Interval(0.0));
+            if (!moves_) {
+                static_world_box_ = world_box_over(Interval(0.0));
+                static_reaches_ = motion_.twist_reaches(static_object_box_, Interval(0.0));
+            }
     }
 
     bool bounded() const override { return !kUnbounded; }
@@ -264,7 +267,10 @@ private:
         // A twisted object's surface stays within some distance of the
         // twist's axis: a piece of the path beyond it is dropped at once
         // (its box, turned into object space, would come out around the axis).
-        const std::vector<double> reaches = motion.twist_reaches(object_box, ray_time);
+        // (Fixed for an object that never changes: computed once, then.)
+        std::vector<double> changing_reaches;
+        if (moves_) changing_reaches = motion.twist_reaches(object_box, ray_time);
+        const std::vector<double>& reaches = moves_ ? changing_reaches : static_reaches_;
         const auto box_over = [&](const Interval& s) {
             const std::array<Interval, 3> world{Interval(o.x) + s * Interval(d.x),
                                                 Interval(o.y) + s * Interval(d.y),
@@ -311,6 +317,7 @@ private:
     std::optional<Geometry> static_geometry_;
     objects::IntervalBox static_object_box_{};
     objects::IntervalBox static_world_box_{};
+    std::vector<double> static_reaches_;  // motion_.twist_reaches of an object that never changes
 };
 
 }  // namespace hexant::runtime
