@@ -17,6 +17,7 @@
 #include "tracer/image_compare.hpp"
 #include "tracer/image_output.hpp"
 #include "tracer/renderer.hpp"
+#include "tracer/whole_file.hpp"
 
 namespace hexant::app {
 
@@ -213,14 +214,14 @@ int run_error_time(const ErrorTimeArguments& args, std::ostream& out, std::ostre
 
         const fs::path csv = dir / "error_time.csv";
         {
-            std::ofstream file(csv);
-            file << "mode,spp,seconds,build_seconds,render_seconds,rays,rmse,relative_mse\n"
-                 << std::setprecision(9);
+            std::ostringstream table;
+            table << "mode,spp,seconds,build_seconds,render_seconds,rays,rmse,relative_mse\n"
+                  << std::setprecision(9);
             for (const Point& p : points)
-                file << tracer::mode_name(p.mode) << ',' << p.spp << ',' << p.seconds << ','
-                     << p.build_seconds << ',' << p.render_seconds << ',' << p.rays << ','
-                     << p.error.rmse << ',' << p.error.relative_mse << '\n';
-            if (!file) throw std::runtime_error(csv.string() + ": cannot write");
+                table << tracer::mode_name(p.mode) << ',' << p.spp << ',' << p.seconds << ','
+                      << p.build_seconds << ',' << p.render_seconds << ',' << p.rays << ','
+                      << p.error.rmse << ',' << p.error.relative_mse << '\n';
+            tracer::write_text_file(csv, table.str());
         }
         LogLogPlot plot;
         plot.title = resolved.scene.stem().string() + ", frame " + std::to_string(frame) +
@@ -234,11 +235,7 @@ int run_error_time(const ErrorTimeArguments& args, std::ostream& out, std::ostre
             plot.curves.push_back(std::move(curve));
         }
         const fs::path svg = dir / "error_time.svg";
-        {
-            std::ofstream file(svg);
-            file << to_svg(plot);
-            if (!file) throw std::runtime_error(svg.string() + ": cannot write");
-        }
+        tracer::write_text_file(svg, to_svg(plot));
 
         // Time to reach the same error: at each error the first mode
         // reached, how long each other mode needs (interpolated).

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -12,6 +11,7 @@
 #include "runtime/object_error.hpp"
 #include "tracer/image_output.hpp"
 #include "tracer/renderer.hpp"
+#include "tracer/whole_file.hpp"
 
 namespace hexant::app {
 
@@ -118,9 +118,7 @@ void write_stats_json(const std::string& path,
         json << "}" << (i + 1 < columns.size() ? "," : "") << "\n";
     }
     json << "}\n";
-    std::ofstream file(path);
-    file << json.str();
-    if (!file) throw std::runtime_error(path + ": cannot write the statistics");
+    tracer::write_text_file(path, json.str());
 }
 
 // One full render in one mode; frames go to files as they finish.

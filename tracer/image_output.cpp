@@ -6,6 +6,8 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include "tracer/whole_file.hpp"
+
 namespace hexant::tracer {
 
 namespace fs = std::filesystem;
@@ -41,22 +43,6 @@ std::vector<unsigned char> srgb_pixels(const Image& image) {
     return out;
 }
 
-// Opens `out` on a temporary name beside `path`; returns that name.
-fs::path temporary_beside(const fs::path& path) {
-    if (path.has_parent_path()) fs::create_directories(path.parent_path());
-    return path.parent_path() / ("." + path.filename().string() + ".partial");
-}
-
-void finish(const fs::path& temporary, const fs::path& path) {
-    std::error_code error;
-    fs::rename(temporary, path, error);
-    if (error) {
-        fs::remove(temporary);
-        throw std::runtime_error(path.string() + ": cannot rename the finished file: " +
-                                 error.message());
-    }
-}
-
 }  // namespace
 
 void write_image(const Image& image, const fs::path& path) {
@@ -83,7 +69,7 @@ void write_image(const Image& image, const fs::path& path) {
         fs::remove(temporary);
         throw std::runtime_error(path.string() + ": writing failed: " + out->geterror());
     }
-    finish(temporary, path);
+    replace_with(temporary, path);
 }
 
 // A full grid when one is nearly square (32 frames: 8 by 4, not 6 by 6 with
@@ -137,7 +123,7 @@ void write_animation(const std::vector<Image>& frames, const fs::path& path, dou
         fs::remove(temporary);
         throw std::runtime_error(path.string() + ": writing failed: " + out->geterror());
     }
-    finish(temporary, path);
+    replace_with(temporary, path);
 }
 
 }  // namespace hexant::tracer

@@ -10,6 +10,7 @@
 #include "language/interpreter.hpp"
 #include "tracer/image_output.hpp"
 #include "tracer/renderer.hpp"
+#include "tracer/whole_file.hpp"
 
 namespace tr = hexant::tracer;
 namespace fs = std::filesystem;
@@ -156,4 +157,25 @@ TEST_CASE("frames are written whole where the pattern says", "[tracer][render]")
     CHECK(tr::to_srgb8(1.0) == 255);
     CHECK(tr::to_srgb8(0.5) == 188);
     fs::remove_all(folder);
+}
+
+TEST_CASE("text files are written whole or not at all", "[tracer][render]") {
+    const fs::path folder = fs::temp_directory_path() / "hexant_whole_file_test";
+    fs::remove_all(folder);
+    tr::write_text_file(folder / "a/table.csv", "x,y\n1,2\n");
+    std::ifstream in(folder / "a/table.csv");
+    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    CHECK(text == "x,y\n1,2\n");
+    // Replacing a file replaces it whole.
+    tr::write_text_file(folder / "a/table.csv", "z\n");
+    std::ifstream again(folder / "a/table.csv");
+    CHECK(std::string{std::istreambuf_iterator<char>(again), std::istreambuf_iterator<char>()} ==
+          "z\n");
+    // A place that cannot take the file (a folder of that name) is an error
+    // naming it, and leaves no partial file behind.
+    fs::create_directories(folder / "taken");
+    fs::create_directories(folder / "taken/inside");
+    CHECK_THROWS_WITH(tr::write_text_file(folder / "taken", "x"), Catch::Contains("taken"));
+    for (const auto& entry : fs::recursive_directory_iterator(folder))
+        CHECK(entry.path().string().find(".partial") == std::string::npos);
 }
