@@ -27,6 +27,19 @@ fs::path scene_file(const std::string& text) {
     return path;
 }
 
+// An empty output folder beside the test case's scene.
+fs::path fresh_output(const fs::path& scene) {
+    const fs::path out = scene.parent_path() / "out";
+    fs::remove_all(out);
+    return out;
+}
+
+// A sphere moving along x as the clock runs, lit and seen from the front.
+std::string moving_sphere(const std::string& centre) {
+    return "camera { location <0, 0, -5> look_at 0 }\nlight_source { <0, 5, -5>, rgb 1 }\n"
+           "sphere { " + centre + ", 1 pigment { rgb 1 } }\n";
+}
+
 RenderArguments arguments_for(const fs::path& scene, const fs::path& out) {
     RenderArguments a;
     a.scene.files = {scene.string()};
@@ -40,11 +53,8 @@ RenderArguments arguments_for(const fs::path& scene, const fs::path& out) {
 }  // namespace
 
 TEST_CASE("render writes the frames, the contact sheet and the table rows", "[app][render]") {
-    const fs::path scene = scene_file(
-        "camera { location <0, 0, -5> look_at 0 }\nlight_source { <0, 5, -5>, rgb 1 }\n"
-        "sphere { <clock, 0, 0>, 1 pigment { rgb 1 } }\n");
-    const fs::path out = scene.parent_path() / "out";
-    fs::remove_all(out);
+    const fs::path scene = scene_file(moving_sphere("<clock, 0, 0>"));
+    const fs::path out = fresh_output(scene);
     RenderArguments a = arguments_for(scene, out);
     a.frames = "2:3";
     a.contact_sheet = (out / "sheet.png").string();
@@ -70,11 +80,8 @@ TEST_CASE("render writes the frames, the contact sheet and the table rows", "[ap
 }
 
 TEST_CASE("render takes a list of frames", "[app][render]") {
-    const fs::path scene = scene_file(
-        "camera { location <0, 0, -5> look_at 0 }\nlight_source { <0, 5, -5>, rgb 1 }\n"
-        "sphere { <clock, 0, 0>, 1 pigment { rgb 1 } }\n");
-    const fs::path out = scene.parent_path() / "list";
-    fs::remove_all(out);
+    const fs::path scene = scene_file(moving_sphere("<clock, 0, 0>"));
+    const fs::path out = fresh_output(scene);
     RenderArguments a = arguments_for(scene, out);
     a.scene.frame_count = 5;
     a.frames = "4,1,4:5";
@@ -96,8 +103,7 @@ TEST_CASE("render takes a list of frames", "[app][render]") {
 
 TEST_CASE("render reports bad requests clearly and writes nothing", "[app][render]") {
     const fs::path scene = scene_file("sphere { 0, 1 }\n");
-    const fs::path out = scene.parent_path() / "bad";
-    fs::remove_all(out);
+    const fs::path out = fresh_output(scene);
     std::ostringstream o, e;
     RenderArguments a = arguments_for(scene, out);
     a.frames = "2:9";
@@ -123,11 +129,8 @@ TEST_CASE("render reports bad requests clearly and writes nothing", "[app][rende
 }
 
 TEST_CASE("render --seed gives an independent estimate of the same frame", "[app][render]") {
-    const fs::path scene = scene_file(
-        "camera { location <0, 0, -5> look_at 0 }\nlight_source { <0, 5, -5>, rgb 1 }\n"
-        "sphere { <2 * clock, 0, 0>, 1 pigment { rgb 1 } }\n");
-    const fs::path out = scene.parent_path() / "seeds";
-    fs::remove_all(out);
+    const fs::path scene = scene_file(moving_sphere("<2 * clock, 0, 0>"));
+    const fs::path out = fresh_output(scene);
     const auto render = [&](unsigned seed, const std::string& name) {
         RenderArguments a = arguments_for(scene, out);
         a.frames = "2";

@@ -316,20 +316,20 @@ sphere { <0, -1, 0>, 0.5 }
 )"});
 }
 
-TEST_CASE("a zero-length shutter", "[stress]") {
-    Case c{R"(
+// A sliding sphere and a turning box, for the extreme shutters.
+const char* const kShutterObjects = R"(
 sphere { <-1, 0, 0>, 0.5 translate x * 2 * clock }
 box { <0, 0, 0>, <1, 1, 1> rotate y * 360 * clock }
-)"};
+)";
+
+TEST_CASE("a zero-length shutter", "[stress]") {
+    Case c{kShutterObjects};
     c.shutter = 0.0;
     run(c);
 }
 
 TEST_CASE("a shutter as long as the whole animation", "[stress]") {
-    Case c{R"(
-sphere { <-1, 0, 0>, 0.5 translate x * 2 * clock }
-box { <0, 0, 0>, <1, 1, 1> rotate y * 360 * clock }
-)"};
+    Case c{kShutterObjects};
     c.frames = 2;
     c.cyclic = true;
     c.shutter = 2.0;  // frame 1 opens at 0 and closes at 1
