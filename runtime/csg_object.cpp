@@ -1,6 +1,7 @@
 #include "runtime/csg_object.hpp"
 
 #include <algorithm>
+#include <optional>
 
 namespace hexant::runtime {
 
@@ -57,6 +58,32 @@ void CsgObject::bound(const Box4& region, std::vector<SlabBound>& out) const {
             children_.front()->bound(region, out);
             return;
     }
+}
+
+Box4 CsgObject::box_over(const Interval& t) const {
+    if (children_.empty()) return Box4::empty();
+    switch (kind_) {
+        case Csg::Kind::Union:
+        case Csg::Kind::Merge: {
+            Box4 box = Box4::empty();
+            for (const auto& c : children_) box.extend(c->box_over(t));
+            return box;
+        }
+        case Csg::Kind::Intersection: {
+            // Inside every child's solid, and a bounded solid lies inside
+            // the box of its surface.
+            std::optional<Box4> box;
+            for (const auto& c : children_) {
+                if (!c->bounded()) continue;
+                const Box4 b = c->box_over(t);
+                box = box ? box->intersection(b) : b;
+            }
+            return box ? *box : Box4::empty();
+        }
+        case Csg::Kind::Difference:
+            return children_.front()->box_over(t);
+    }
+    return Box4::empty();
 }
 
 bool CsgObject::keeps(std::size_t index, const Event& event) const {

@@ -20,6 +20,10 @@ public:
     // intersection with the smallest bounded child's; a difference with its
     // first child's: every surface event of the result lies in those.
     void bound(const Box4& region, std::vector<SlabBound>& out) const override;
+    // The same rule for boxes: a union's is the hull of its children's; an
+    // intersection's the common part of its bounded children's; a
+    // difference's its first child's.
+    Box4 box_over(const Interval& t) const override;
     std::optional<ObjectHit> intersect(const Ray4& ray, double s_min,
                                        double s_max) const override;
     SurfacePoint complete(const Ray4& ray, const ObjectHit& hit) const override;

@@ -59,9 +59,24 @@ public:
     // object whose surface has no event in the region may append nothing.
     virtual void bound(const Box4& region, std::vector<SlabBound>& out) const = 0;
 
+    // A box around every surface event of the object at times in `t`: its
+    // space part holds the surface at every instant of t, its time part is
+    // t. Conservative always (interval evaluation), tight when t is short;
+    // empty when the object has no surface then. The hierarchy caches these
+    // over pieces of time (tracer/.., runtime/time_sweep.hpp) and clips them
+    // to its cells; bound() answers the same question for one region.
+    virtual Box4 box_over(const Interval& t) const = 0;
+
     // The first surface event along `ray` with s_min < s < s_max.
     virtual std::optional<ObjectHit> intersect(const Ray4& ray, double s_min,
                                                double s_max) const = 0;
+
+    // Is there a surface event along `ray` with s_min < s < s_max? The
+    // any-hit question of shadow rays (pbrt's IntersectP): an object may
+    // answer it without forming the hit.
+    virtual bool occluded(const Ray4& ray, double s_min, double s_max) const {
+        return intersect(ray, s_min, s_max).has_value();
+    }
 
     // Normals, texture coordinates and material at a hit this object returned.
     virtual SurfacePoint complete(const Ray4& ray, const ObjectHit& hit) const = 0;

@@ -91,6 +91,16 @@ public:
         append_swept_bounds(pieces, region, out);
     }
 
+    Box4 box_over(const Interval& t) const override {
+        if constexpr (kUnbounded) return Box4::empty();
+        if (t.is_empty()) return Box4::empty();
+        const objects::IntervalBox world = moves_ ? world_box_over(t) : static_world_box_;
+        Box4 box;
+        box.lo = Event(world[0].lo, world[1].lo, world[2].lo, t.lo);
+        box.hi = Event(world[0].hi, world[1].hi, world[2].hi, t.hi);
+        return box;
+    }
+
     std::optional<ObjectHit> intersect(const Ray4& ray, double s_min,
                                        double s_max) const override {
         if (!(s_min < s_max)) return std::nullopt;

@@ -1,0 +1,89 @@
+// An intelligent object's sweep: what it occupies over time, computed once
+// so that the hierarchy's cells clip cached boxes instead of evaluating
+// motion again for every cell (the paper's future work: "objects cache
+// their swept bounds").
+//
+// The time range is cut into 2^depth equal pieces, and each piece keeps a
+// box around the object's surface at every instant of it (box_over, by
+// interval evaluation: conservative). The depth is the object's own: a piece
+// is halved while its box is more than kSweptBoundGrowth times the size of
+// the box at its middle instant (the object swept far or turned during it),
+// up to a limit, so a static object keeps one piece, a slow one a few, and a
+// small fast one the limit.
+//
+// Storage: the box over the whole range in doubles, and each piece as six
+// 16-bit steps of that box, rounded outward (a piece's lower ends to a step
+// at or below them, upper ends at or above, checked on the decoded values,
+// so the rounding of encoding and decoding cannot cut anything off): 12
+// bytes per piece, whatever the scene's scale.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "runtime/intelligent_object.hpp"
+#include "runtime/spacetime.hpp"
+
+namespace hexant::runtime {
+
+// The end of piece `index` of 2^level equal pieces of `range`: range.lo +
+// width * (index / 2^level), the same double for every (level, index) that
+// names the same fraction, so that cuts made at different levels meet
+// exactly. index == 2^level gives range.hi itself.
+inline double dyadic_time(const Interval& range, int level, std::uint64_t index) {
+    const std::uint64_t n = std::uint64_t(1) << level;
+    if (index == 0) return range.lo;
+    if (index >= n) return range.hi;
+    return range.lo + (range.hi - range.lo) * (double(index) / double(n));
+}
+
+class TimeSweep {
+public:
+    TimeSweep() = default;
+
+    // The sweep of `object` over `time` (finite, lo <= hi), with at most
+    // 2^max_depth pieces (max_depth in [0, 20]).
+    static TimeSweep of(const IntelligentObject& object, const Interval& time, int max_depth);
+
+    const Interval& time() const { return time_; }
+    int depth() const { return depth_; }
+    std::size_t piece_count() const { return std::size_t(1) << depth_; }
+    // The box over the whole time range (empty if the object has no surface).
+    const Box4& whole() const { return whole_; }
+    bool empty() const { return whole_.is_empty(); }
+
+    // A box holding the object at every instant of t, from the pieces that
+    // meet t (the whole sweep's box in space where t spans it all); its time
+    // part is t clipped to time(). Empty where t misses time().
+    Box4 box_over(const Interval& t) const;
+
+    // The box over piece `index` of 2^level equal pieces of time(), cut as
+    // dyadic_time() cuts them: the union of the sweep's pieces inside it,
+    // or the one piece it lies in. Its time part is that piece of time.
+    // Exact and cheap when the hierarchy's cells are cut the same way.
+    Box4 box_over_dyadic(int level, std::uint64_t index) const;
+
+    // Piece i's time interval and box (space part; empty if the object has
+    // no surface then).
+    Interval piece_time(std::size_t i) const;
+    Box4 piece(std::size_t i) const;
+    // The pieces that meet t: [first, last], or first > last for none.
+    void pieces_meeting(const Interval& t, std::size_t& first, std::size_t& last) const;
+
+    // Heap and inline bytes this sweep takes.
+    std::size_t bytes() const { return sizeof(*this) + steps_.capacity() * sizeof(std::uint16_t); }
+
+private:
+    double boundary(std::size_t i) const;
+    double decode(int axis, std::uint16_t q) const;
+    void encode(std::size_t i, const Box4& box);
+
+    Interval time_{0.0, 0.0};
+    int depth_ = 0;
+    double step_[3] = {0.0, 0.0, 0.0};  // one 16-bit step of whole_, per axis
+    Box4 whole_;
+    std::vector<std::uint16_t> steps_;  // 6 per piece (lo xyz, hi xyz); none at depth 0
+};
+
+}  // namespace hexant::runtime
