@@ -11,13 +11,6 @@ namespace hexant::runtime::geometry {
 
 namespace {
 
-struct PolygonPlane {
-    glm::dvec3 origin;  // P_0
-    glm::dvec3 normal;  // unit
-    glm::dvec3 e1, e2;  // in-plane unit axes for uv
-    int kx, ky;         // the two axes kept when projecting to 2D
-};
-
 bool polygon_plane(const PolygonGeometry& polygon, PolygonPlane& plane) {
     const std::vector<glm::dvec3>& p = polygon.points;
     if (p.size() < 3) return false;
@@ -57,13 +50,38 @@ bool polygon_plane(const PolygonGeometry& polygon, PolygonPlane& plane) {
     return true;
 }
 
+Box3 bounds_of(const std::vector<glm::dvec3>& points) {
+    if (points.empty()) return {glm::dvec3(0.0), glm::dvec3(0.0)};
+    Box3 b{points[0], points[0]};
+    for (const glm::dvec3& q : points) {
+        b.lo = glm::min(b.lo, q);
+        b.hi = glm::max(b.hi, q);
+    }
+    return b;
+}
+
 }  // namespace
+
+PolygonGeometry& prepare_polygon(PolygonGeometry& polygon) {
+    PolygonGeometry::Prepared p;
+    p.has_plane = polygon_plane(polygon, p.plane);
+    p.bounds = bounds_of(polygon.points);
+    polygon.prepared = p;
+    return polygon;
+}
 
 std::optional<SurfaceHit> intersect(const PolygonGeometry& polygon, const Ray3& ray, double s_min,
                                     double s_max) {
     PolygonPlane plane;
-    if (!polygon_plane(polygon, plane)) return std::nullopt;
-    const Box3 bounds = object_bounds(polygon);
+    Box3 bounds;
+    if (polygon.prepared) {
+        if (!polygon.prepared->has_plane) return std::nullopt;
+        plane = polygon.prepared->plane;
+        bounds = polygon.prepared->bounds;
+    } else {
+        if (!polygon_plane(polygon, plane)) return std::nullopt;
+        bounds = object_bounds(polygon);
+    }
     const auto local = local_ray(ray, centre(bounds), half_diagonal(bounds));
     if (!local) return std::nullopt;
     const double along = glm::dot(local->unit, plane.normal);
@@ -110,18 +128,17 @@ bool inside(const PolygonGeometry&, glm::dvec3) {
 }
 
 Box3 object_bounds(const PolygonGeometry& polygon) {
-    if (polygon.points.empty()) return {glm::dvec3(0.0), glm::dvec3(0.0)};
-    Box3 b{polygon.points[0], polygon.points[0]};
-    for (const glm::dvec3& q : polygon.points) {
-        b.lo = glm::min(b.lo, q);
-        b.hi = glm::max(b.hi, q);
-    }
-    return b;
+    return polygon.prepared ? polygon.prepared->bounds : bounds_of(polygon.points);
 }
 
 bool surface_may_meet(const PolygonGeometry& polygon, const Box3& box) {
     PolygonPlane plane;
-    if (!polygon_plane(polygon, plane)) return false;
+    if (polygon.prepared) {
+        if (!polygon.prepared->has_plane) return false;
+        plane = polygon.prepared->plane;
+    } else if (!polygon_plane(polygon, plane)) {
+        return false;
+    }
     const Box3 bounds = object_bounds(polygon);
     const double slack = meet_slack(box, std::max(max_abs(bounds.lo), max_abs(bounds.hi)));
     const Box3 wide = widened(box, slack);

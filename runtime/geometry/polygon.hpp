@@ -29,9 +29,30 @@
 
 namespace hexant::runtime::geometry {
 
+// The polygon's plane (see above) and the 2D axes kept when projecting.
+struct PolygonPlane {
+    glm::dvec3 origin;  // P_0
+    glm::dvec3 normal;  // unit
+    glm::dvec3 e1, e2;  // in-plane unit axes for uv
+    int kx, ky;         // the two axes kept when projecting to 2D
+};
+
 struct PolygonGeometry {
     std::vector<glm::dvec3> points;
+
+    // What every intersection needs and the points alone fix: filled by
+    // prepare_polygon() for a polygon intersected many times (the model
+    // does it); computed per call when absent.
+    struct Prepared {
+        bool has_plane = false;
+        PolygonPlane plane{};
+        Box3 bounds{};
+    };
+    std::optional<Prepared> prepared = std::nullopt;
 };
+
+// Fills polygon.prepared from its points (call again after changing them).
+PolygonGeometry& prepare_polygon(PolygonGeometry& polygon);
 
 std::optional<SurfaceHit> intersect(const PolygonGeometry& polygon, const Ray3& ray, double s_min,
                                     double s_max);

@@ -27,7 +27,7 @@ public:
         Geometry g;
         g.points.reserve(points_.size());
         for (const auto& p : points_) g.points.push_back(p.at(t));
-        return g;
+        return geometry::prepare_polygon(g);
     }
     IntervalBox box_over(const Interval& t) const {
         IntervalBox box = empty_interval_box();
