@@ -102,13 +102,17 @@ Point measure(const runtime::SceneDescription& scene, tracer::Mode mode, int spp
     settings.samples_per_pixel = spp;
     settings.sample_seed = sample_seed;
     settings.threads = args.threads;
-    settings.build.max_depth = args.max_depth;
+    settings.build = args.hierarchy.options();
     tracer::Renderer renderer(scene, settings);
     tracer::write_image(renderer.render_frame(frame), image);
     const tracer::Counters& c = renderer.counters();
     const int frames = scene.animation.final_frame - scene.animation.initial_frame + 1;
-    const double build_share =
-        mode == tracer::Mode::Spacetime ? c.build_seconds / std::max(1, frames) : c.build_seconds;
+    // An eager spacetime build serves every frame: the frame's share is a
+    // part of it. A lazy one built only what this frame's rays reached, and
+    // a frame-by-frame one only this frame's: charged whole.
+    const bool shared = mode == tracer::Mode::Spacetime &&
+                        settings.build.build == tracer::BuildKind::Eager;
+    const double build_share = shared ? c.build_seconds / std::max(1, frames) : c.build_seconds;
     return {mode, spp, build_share + c.render_seconds, build_share, c.render_seconds, c.rays(), {}};
 }
 
@@ -152,8 +156,7 @@ void add_error_time_arguments(CLI::App& command, ErrorTimeArguments& a) {
                        "Folder for the CSV, the plot, the images and the cached reference "
                        "(default out/SCENE/error-time)");
     command.add_option("--threads", a.threads, "Worker threads (default: all cores)");
-    command.add_option("--max-depth", a.max_depth, "Hierarchy depth limit (default 5)")
-        ->check(CLI::Range(0, 12));
+    add_hierarchy_arguments(command, a.hierarchy);
 }
 
 int run_error_time(const ErrorTimeArguments& args, std::ostream& out, std::ostream& err) {

@@ -11,6 +11,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/command_line.hpp"
+#include "app/hierarchy_arguments.hpp"
 
 namespace hexant::app {
 
@@ -22,7 +23,7 @@ struct ErrorTimeArguments {
     int reference_spp = 0;  // 0: 4 times the largest of spp_list
     std::optional<std::string> output_dir;  // default out/SCENE/error-time
     int threads = 0;
-    int max_depth = 5;
+    HierarchyArguments hierarchy;
 };
 
 void add_error_time_arguments(CLI::App& command, ErrorTimeArguments& arguments);

@@ -74,8 +74,16 @@ const Row kRows[] = {
     {"objects", [](const Counters& c) { return double(c.objects); }, 0},
     {"bounds built", [](const Counters& c) { return double(c.bounds_built); }, 0},
     {"hierarchy cells", [](const Counters& c) { return double(c.cells); }, 0},
+    {"cells of a full build", [](const Counters& c) { return double(c.cells_full); }, 0},
+    {"box nodes", [](const Counters& c) { return double(c.box_nodes); }, 0},
+    {"linear-motion nodes", [](const Counters& c) { return double(c.motion_nodes); }, 0},
+    {"12-slab nodes", [](const Counters& c) { return double(c.slab_nodes); }, 0},
+    {"time nodes", [](const Counters& c) { return double(c.time_nodes); }, 0},
+    {"object references", [](const Counters& c) { return double(c.object_refs); }, 0},
+    {"node tests", [](const Counters& c) { return double(c.node_tests); }, 0},
     {"ray/bound tests", [](const Counters& c) { return double(c.bound_tests); }, 0},
     {"ray/object tests", [](const Counters& c) { return double(c.object_tests); }, 0},
+    {"node tests per ray", [](const Counters& c) { return per_ray(c.node_tests, c); }, 2},
     {"ray/bound tests per ray", [](const Counters& c) { return per_ray(c.bound_tests, c); }, 2},
     {"ray/object tests per ray", [](const Counters& c) { return per_ray(c.object_tests, c); }, 2},
     {"time splits", [](const Counters& c) { return double(c.time_splits); }, 0},
@@ -132,8 +140,8 @@ Counters render_mode(const runtime::SceneDescription& scene, const RenderArgumen
     settings.jitter = !args.no_jitter;
     settings.sample_seed = args.seed;
     settings.threads = args.threads;
-    settings.build.max_depth = args.max_depth;
-    settings.build.boxes_in_space = !args.frames_slab_bounds;
+    settings.build = args.hierarchy.options();
+    settings.build.count_full = args.stats || args.compare || args.stats_json.has_value();
     settings.progress = isatty(STDERR_FILENO);
     tracer::Renderer renderer(scene, settings);
     for (const int frame : frames) {
@@ -142,6 +150,7 @@ Counters render_mode(const runtime::SceneDescription& scene, const RenderArgumen
         if (keep) keep->push_back(std::move(image));
     }
     if (settings.progress) std::cerr << "\r" << std::string(40, ' ') << "\r";
+    if (settings.build.count_full) renderer.count_full_hierarchy();
     return renderer.counters();
 }
 
@@ -168,11 +177,7 @@ void add_render_arguments(CLI::App& command, RenderArguments& a) {
     command.add_flag("--compare", a.compare,
                      "Render in spacetime and frames modes and print both columns and their ratio");
     command.add_option("--threads", a.threads, "Worker threads (default: all cores)");
-    command.add_option("--max-depth", a.max_depth, "Hierarchy depth limit (default 5)")
-        ->check(CLI::Range(0, 12));
-    command.add_flag("--frames-slab-bounds", a.frames_slab_bounds,
-                     "In frames mode, keep each object's 12-slab bound instead of widening it to "
-                     "a box (the same builder as spacetime, in 3D)");
+    add_hierarchy_arguments(command, a.hierarchy);
 }
 
 int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err) {

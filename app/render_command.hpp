@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/command_line.hpp"
+#include "app/hierarchy_arguments.hpp"
 
 namespace hexant::app {
 
@@ -24,8 +25,7 @@ struct RenderArguments {
     bool stats = false;
     bool compare = false;
     int threads = 0;
-    int max_depth = 5;
-    bool frames_slab_bounds = false;  // frames mode: keep 12-slab bounds instead of boxes
+    HierarchyArguments hierarchy;
 };
 
 void add_render_arguments(CLI::App& command, RenderArguments& arguments);

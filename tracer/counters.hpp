@@ -14,8 +14,15 @@ struct Counters {
     std::uint64_t refracted_rays = 0;
     // Hierarchy.
     std::uint64_t bounds_built = 0;  // object bound() answers while building
-    std::uint64_t cells = 0;         // cells kept in the hierarchies
-    std::uint64_t bound_tests = 0;   // ray / 12-slab bound tests
+    std::uint64_t cells = 0;         // cells built (a lazy build: those rays reached)
+    std::uint64_t cells_full = 0;    // cells a full build makes (counted on request)
+    std::uint64_t node_tests = 0;    // nodes tested (each tests its children's bounds at once)
+    // Nodes built by the style of their children's bounds (cell.hpp), time
+    // nodes, and references to objects at the bottom (an object in several
+    // cells counts once in each).
+    std::uint64_t box_nodes = 0, motion_nodes = 0, slab_nodes = 0, time_nodes = 0;
+    std::uint64_t object_refs = 0;
+    std::uint64_t bound_tests = 0;   // ray / bound tests (children's bounds in the nodes tested)
     std::uint64_t object_tests = 0;  // ray / object intersections (at the ray's time)
     std::uint64_t mailbox_hits = 0;  // object tests saved by the mailbox
     // Paying only for what a scene uses: these stay 0 where it uses nothing.
@@ -36,6 +43,13 @@ struct Counters {
         refracted_rays += o.refracted_rays;
         bounds_built += o.bounds_built;
         cells += o.cells;
+        cells_full += o.cells_full;
+        node_tests += o.node_tests;
+        box_nodes += o.box_nodes;
+        motion_nodes += o.motion_nodes;
+        slab_nodes += o.slab_nodes;
+        time_nodes += o.time_nodes;
+        object_refs += o.object_refs;
         bound_tests += o.bound_tests;
         object_tests += o.object_tests;
         mailbox_hits += o.mailbox_hits;

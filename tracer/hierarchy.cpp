@@ -1,187 +1,661 @@
 #include "tracer/hierarchy.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
-#include <optional>
+#include <cmath>
+#include <stdexcept>
+#include <string>
 
+#include <tbb/parallel_for.h>
+
+#include "runtime/slab_bound.hpp"
 #include "runtime/work_counts.hpp"
+#include "tracer/bound_rounding.hpp"
+#include "tracer/linear_bound.hpp"
+#include "tracer/split_criterion.hpp"
 
 namespace hexant::tracer {
 
+using runtime::Box4;
+using runtime::Interval;
+
+Criterion parse_criterion(const std::string& name) {
+    if (name == "cost") return Criterion::Cost;
+    if (name == "paper") return Criterion::Paper;
+    throw std::invalid_argument("unknown split criterion '" + name + "' (cost or paper)");
+}
+
+BuildKind parse_build_kind(const std::string& name) {
+    if (name == "lazy") return BuildKind::Lazy;
+    if (name == "eager") return BuildKind::Eager;
+    throw std::invalid_argument("unknown build '" + name + "' (lazy or eager)");
+}
+
+BoundStyle parse_bound_style(const std::string& name) {
+    if (name == "auto") return BoundStyle::Auto;
+    if (name == "box") return BoundStyle::Box;
+    if (name == "linear") return BoundStyle::Linear;
+    if (name == "slabs") return BoundStyle::Slabs;
+    throw std::invalid_argument("unknown bound style '" + name + "' (auto, box, linear or slabs)");
+}
+
+SweptObjects SweptObjects::of(std::span<const runtime::IntelligentObject* const> objects,
+                              const Interval& time) {
+    SweptObjects set;
+    set.objects.assign(objects.begin(), objects.end());
+    set.time = time;
+    std::size_t moving = 0;
+    for (const auto* o : objects) moving += o->moves() ? 1 : 0;
+    int depth = kMaxSweepDepth;
+    while (depth > 0 && moving * (std::size_t(1) << depth) > kSweepPieceBudget) --depth;
+    set.sweeps.resize(objects.size());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, objects.size(), 64),
+                      [&](const tbb::blocked_range<std::size_t>& r) {
+                          for (std::size_t i = r.begin(); i < r.end(); ++i)
+                              set.sweeps[i] = runtime::TimeSweep::of(*objects[i], time, depth);
+                      });
+    return set;
+}
+
+std::size_t SweptObjects::bytes() const {
+    std::size_t total = objects.capacity() * sizeof(void*);
+    for (const auto& s : sweeps) total += s.bytes();
+    return total;
+}
+
 namespace {
 
-using runtime::Box4;
-using runtime::IntelligentObject;
-using runtime::SlabBound;
+// Bounds are fitted to this many equal pieces (bins) of a node's time.
+constexpr int kFitLevels = 3;
+constexpr int kFitBins = 1 << kFitLevels;
+static_assert(kFitBins <= kMaxBins);
 
-// A cell under construction; cells are laid out in the final array only
-// once their children are known, so that children stay consecutive.
-struct Node {
-    Box4 region;
-    SlabBound bound = SlabBound::empty();
-    std::vector<Node> children;
-    std::vector<std::uint32_t> objects;  // leaves only
+Box4 octant(const Box4& region, int o) {
+    Box4 c = region.child(o);
+    c.lo.w = region.lo.w;
+    c.hi.w = region.hi.w;
+    return c;
+}
+
+// A child of a node under construction: what it refers to, and boxes of
+// its contents over bins of the node's time (for its bound).
+struct Child {
+    NodeRef ref;
+    TimeBins bins;
 };
 
-class Builder {
-public:
-    Builder(std::span<const IntelligentObject* const> objects, const BuildOptions& options,
-            Counters& counters)
-        : objects_(objects), options_(options), counters_(counters) {}
-
-    // The node for `region`, or nothing when no candidate meets it.
-    std::optional<Node> build(const Box4& region, const std::vector<std::uint32_t>& candidates,
-                              int depth) {
-        Node node;
-        node.region = region;
-        std::vector<std::uint32_t> inside;
-        std::vector<SlabBound> answers;
-        for (const std::uint32_t index : candidates) {
-            answers.clear();
-            objects_[index]->bound(region, answers);
-            ++counters_.bounds_built;
-            bool meets = false;
-            for (SlabBound b : answers) {
-                if (options_.split == SplitMode::Space && options_.boxes_in_space) {
-                    // The baseline's static bound: the box the object spans
-                    // over the whole shutter interval.
-                    b = SlabBound::of_box(b.box());
-                }
-                b.clip(region);
-                if (b.is_empty()) continue;
-                node.bound.add(b);
-                meets = true;
-            }
-            if (meets) inside.push_back(index);
-        }
-        if (inside.empty()) return std::nullopt;
-        depth_ = std::max(depth_, depth);
-
-        const Split split = depth < options_.max_depth ? choose_split(region, inside) : Split{};
-        if (split.space || split.time) {
-            for (const Box4& part : parts(region, split)) {
-                if (auto child = build(part, inside, depth + 1))
-                    node.children.push_back(std::move(*child));
-            }
-            if (node.children.size() == 1) return std::move(node.children.front());
-            if (!node.children.empty()) {
-                node.bound = SlabBound::empty();
-                for (const Node& child : node.children) node.bound.add(child.bound);
-                return node;
-            }
-        }
-        node.objects = std::move(inside);
-        return node;
-    }
-
-    int depth() const { return depth_; }
-
-private:
-    struct Split {
-        bool space = false, time = false;
-    };
-
-    // The paper's criterion says whether to split; what moves says along
-    // which axes. Halving time helps only where something moves (a static
-    // scene builds no time splits); halving space only where there is more
-    // than one object to separate or the objects leave much of the cell
-    // empty (a lone object's own bound is already as tight as its cell's).
-    Split choose_split(const Box4& region, const std::vector<std::uint32_t>& inside) const {
-        bool moving = false;
-        for (const std::uint32_t index : inside) moving = moving || objects_[index]->moves();
-        Split split;
-        split.time = moving && options_.split == SplitMode::Spacetime;
-        if (inside.size() > options_.max_objects) {
-            split.space = true;
-        } else if (inside.size() > 1) {
-            double filled = 0.0;
-            for (const std::uint32_t index : inside) filled += objects_[index]->occupancy(region);
-            split.space = filled < options_.max_occupancy;
-        }
-        // With nothing to separate in space, a moving object's swept bound
-        // still tightens when its time is halved.
-        return split;
-    }
-
-    static std::vector<Box4> parts(const Box4& region, Split split) {
-        std::vector<Box4> out;
-        const int count = split.space ? 8 : 1;
-        for (int c = 0; c < count; ++c) {
-            for (int half = 0; half < (split.time ? 2 : 1); ++half) {
-                Box4 part = region.child(c | (half << 3));
-                if (!split.time) {
-                    part.lo.w = region.lo.w;
-                    part.hi.w = region.hi.w;
-                }
-                if (!split.space) {
-                    for (int i = 0; i < 3; ++i) {
-                        part.lo[i] = region.lo[i];
-                        part.hi[i] = region.hi[i];
-                    }
-                }
-                out.push_back(part);
-            }
-        }
-        return out;
-    }
-
-    std::span<const IntelligentObject* const> objects_;
-    const BuildOptions& options_;
-    Counters& counters_;
-    int depth_ = 0;
-};
+void fill_empty(float* lo, float* hi, int i) {
+    lo[i] = std::numeric_limits<float>::infinity();
+    hi[i] = -std::numeric_limits<float>::infinity();
+}
 
 }  // namespace
 
-Hierarchy Hierarchy::build(std::span<const IntelligentObject* const> objects, const Box4& root,
-                           const BuildOptions& options, Counters& counters) {
-    const auto start = std::chrono::steady_clock::now();
-    const std::uint64_t deformation_maps = runtime::this_thread_work.deformation_maps;
-    Hierarchy h;
-    std::vector<std::uint32_t> all(objects.size());
-    for (std::uint32_t i = 0; i < all.size(); ++i) all[i] = i;
-    Builder builder(objects, options, counters);
-    std::optional<Node> top = builder.build(root, all, 0);
-    if (top) {
-        // Breadth-first layout: each node's children are consecutive.
-        std::vector<const Node*> order{&*top};
-        h.cells_.push_back(Cell{top->region, top->bound});
-        for (std::size_t i = 0; i < order.size(); ++i) {
-            const Node& node = *order[i];
-            Cell& cell = h.cells_[i];
-            if (node.children.empty()) {
-                cell.first_object = static_cast<std::uint32_t>(h.object_refs_.size());
-                cell.object_count = static_cast<std::uint32_t>(node.objects.size());
-                h.object_refs_.insert(h.object_refs_.end(), node.objects.begin(),
-                                      node.objects.end());
-                continue;
+// A cell's time. In spacetime mode the root's time is the sweeps' own and
+// every cell's is a dyadic piece of it (`level`, `index`), cut with the
+// same arithmetic as the sweeps' pieces (runtime::dyadic_time), so that an
+// object's box over a cell's time is an exact union of its cached pieces.
+// The baseline's frames are not dyadic pieces of the animation: level -1,
+// and the sweeps answer for any interval.
+struct Hierarchy::CellTime {
+    Interval t;
+    int level = -1;
+    std::uint64_t index = 0;
+
+    // Piece p of 2^k equal pieces of this time.
+    CellTime part(int k, std::uint64_t p, const Interval& whole) const {
+        if (k == 0) return *this;
+        CellTime c;
+        const std::uint64_t n = std::uint64_t(1) << k;
+        if (level >= 0) {
+            c.level = level + k;
+            c.index = (index << k) + p;
+            c.t = Interval(runtime::dyadic_time(whole, c.level, c.index),
+                           runtime::dyadic_time(whole, c.level, c.index + 1));
+        } else {
+            const double lo = p == 0 ? t.lo : t.lo + (t.hi - t.lo) * (double(p) / double(n));
+            const double hi = p + 1 == n ? t.hi : t.lo + (t.hi - t.lo) * (double(p + 1) / double(n));
+            c.t = Interval(lo, hi);
+        }
+        return c;
+    }
+};
+
+class Hierarchy::Builder {
+public:
+    Builder(const Hierarchy& h) : h_(h), objects_(h.objects_), options_(h.options_) {}
+
+    // The node of the cell `region` (whose time is `time`) holding
+    // `objects` (each meets it).
+    NodeRef build(const Box4& region, const CellTime& time, std::vector<std::uint32_t> objects,
+                  int depth, Counters& counters) const {
+        ++counters.cells;
+        h_.cells_built_.fetch_add(1, std::memory_order_relaxed);
+        if (objects.empty()) return {};
+        const Split split =
+            depth < options_.depth_limit() ? choose(region, time, objects, counters) : Split::Leaf;
+        switch (split) {
+            case Split::Leaf: return leaf(region, time, objects, counters);
+            case Split::Space: return space_node(region, time, objects, depth, counters);
+            case Split::Time:
+            case Split::Both: return time_node(region, time, objects, depth, split, counters);
+        }
+        return {};
+    }
+
+private:
+    bool space_only() const { return options_.split == SplitMode::Space; }
+
+    // Bounds are fitted to this many bins of a node's time (one for the
+    // baseline, whose bounds are boxes over a frame's shutter).
+    int fit_levels() const { return space_only() ? 0 : kFitLevels; }
+
+    // Object i's box over a piece of time, clipped to the region.
+    Box4 object_over(std::uint32_t i, const CellTime& piece, const Box4& region) const {
+        const runtime::TimeSweep& sweep = objects_.sweeps[i];
+        const Box4 box = piece.level >= 0 ? sweep.box_over_dyadic(piece.level, piece.index)
+                                          : sweep.box_over(piece.t);
+        return box.intersection(region);
+    }
+
+    // Object i over 2^k equal pieces of the cell's time, clipped to it.
+    TimeBins object_bins(std::uint32_t i, const Box4& region, const CellTime& time, int k) const {
+        TimeBins bins;
+        bins.count = 1 << k;
+        for (int b = 0; b < bins.count; ++b)
+            bins.bin[b] = object_over(i, time.part(k, std::uint64_t(b), objects_.time), region);
+        return bins;
+    }
+
+    Split choose(const Box4& region, const CellTime& time, const std::vector<std::uint32_t>& objects,
+                 Counters& counters) const {
+        counters.bounds_built += objects.size();
+        if (options_.criterion == Criterion::Paper) {
+            PaperSummary s;
+            s.objects = objects.size();
+            for (const std::uint32_t i : objects) s.moving = s.moving || objects_.objects[i]->moves();
+            if (paper_needs_occupancy(s, options_.max_objects))
+                for (const std::uint32_t i : objects)
+                    s.occupancy += objects_.objects[i]->occupancy(region);
+            return paper_split(s, options_.max_objects, options_.max_occupancy, space_only());
+        }
+        return cost_split(cost_summary(region, time, objects), options_.object_cost, space_only());
+    }
+
+    // One pass over the cell's objects: each object's sweep over 2^L equal
+    // pieces of the cell's time, clipped to the cell, merged pairwise up to
+    // the whole time; the halves and quarters also clipped to the octants.
+    // Where the cell's bounds may be linear-motion boxes, an object's bound
+    // over the cell's whole time (for a leaf, or an octant) is priced at
+    // its fitted box's area, not its halves' boxes. (The frame-by-frame
+    // baseline's cells have one piece of time: every level is that piece.)
+    CostSummary cost_summary(const Box4& region, const CellTime& time,
+                             const std::vector<std::uint32_t>& objects) const {
+        CostSummary s;
+        s.objects = objects.size();
+        const int levels = space_only() ? 0 : time_levels(time, objects);
+        s.time_levels = levels;
+        const auto level = [&](int k) { return std::min(k, levels); };
+        const int halves = level(1), quarters = level(2), fits = level(kFitLevels);
+        // (Only where the sweeps resolve the cell's time into its bins: a
+        // line fitted to one or two pieces is no tighter than their boxes.)
+        const bool linear = !space_only() && levels >= kFitLevels &&
+                            (options_.bounds == BoundStyle::Auto ||
+                             options_.bounds == BoundStyle::Linear);
+        std::array<Box4, 8> octants;
+        for (int o = 0; o < 8; ++o) octants[o] = octant(region, o);
+        // The union of everything per piece, at every level.
+        std::vector<std::vector<Box4>> cell(levels + 1);
+        for (int k = 0; k <= levels; ++k) cell[k].assign(std::size_t(1) << k, Box4::empty());
+        std::array<std::vector<Box4>, 8> octant_halves, octant_quarters;
+        for (int o = 0; o < 8; ++o) {
+            octant_halves[o].assign(std::size_t(1) << halves, Box4::empty());
+            octant_quarters[o].assign(std::size_t(1) << quarters, Box4::empty());
+        }
+        std::vector<Box4> pieces;
+        for (const std::uint32_t i : objects) {
+            const std::size_t n = std::size_t(1) << levels;
+            pieces.resize(n);
+            for (std::size_t p = 0; p < n; ++p)
+                pieces[p] = object_over(i, time.part(levels, p, objects_.time), region);
+            // How much tighter than its halves' boxes a fitted linear-motion
+            // box holds this object over the whole cell time.
+            double fit_share = 1.0;
+            double halves_area = 0.0;
+            bool in_half[2] = {false, false}, in_octant[8] = {}, in_octant_half[8][2] = {};
+            for (int k = levels; k >= 0; --k) {
+                const std::size_t count = std::size_t(1) << k;
+                const double share = 1.0 / double(count);
+                double level_area = 0.0;
+                for (std::size_t p = 0; p < count; ++p) {
+                    level_area += surface_area(pieces[p]) * share;
+                    cell[k][p].extend(pieces[p]);
+                }
+                s.time_objects[k] += level_area;
+                if (k == fits && linear && fits > 0) {
+                    TimeBins bins;
+                    bins.count = int(count);
+                    for (std::size_t p = 0; p < count; ++p) bins.bin[p] = pieces[p];
+                    fit_share = fit_linear(bins).mean_area();
+                }
+                if (k == halves) {
+                    halves_area = level_area;
+                    if (linear && fits > 0 && halves_area > 0.0)
+                        fit_share = std::clamp(fit_share / halves_area, 0.0, 1.0);
+                    else
+                        fit_share = 1.0;
+                    s.object_cell += level_area * fit_share;
+                }
+                if (k == halves || k == quarters) {
+                    for (std::size_t p = 0; p < count; ++p) {
+                        if (pieces[p].is_empty()) continue;
+                        for (int o = 0; o < 8; ++o) {
+                            const Box4 part = pieces[p].intersection(octants[o]);
+                            if (part.is_empty()) continue;
+                            const double area = surface_area(part) * share;
+                            if (k == halves) {
+                                s.object_octant[o] += area * fit_share;
+                                octant_halves[o][p].extend(part);
+                                in_octant[o] = true;
+                            }
+                            if (k == quarters) {
+                                s.object_octant_half[o][p * 2 / count] += area;
+                                octant_quarters[o][p].extend(part);
+                                in_octant_half[o][p * 2 / count] = true;
+                            }
+                        }
+                    }
+                }
+                if (k == quarters)
+                    for (std::size_t p = 0; p < count; ++p) {
+                        s.object_half[p * 2 / count] += surface_area(pieces[p]) * share;
+                        if (!pieces[p].is_empty()) in_half[p * 2 / count] = true;
+                    }
+                // Up a level: the union of each pair.
+                for (std::size_t p = 0; 2 * p + 1 < count; ++p) {
+                    Box4 merged = pieces[2 * p];
+                    merged.extend(pieces[2 * p + 1]);
+                    pieces[p] = merged;
+                }
             }
-            cell.first_child = static_cast<std::uint32_t>(h.cells_.size());
-            cell.child_count = static_cast<std::uint32_t>(node.children.size());
-            cell.splits_time_only = std::all_of(
-                node.children.begin(), node.children.end(), [&](const Node& child) {
-                    for (int k = 0; k < 3; ++k)
-                        if (child.region.lo[k] != node.region.lo[k] ||
-                            child.region.hi[k] != node.region.hi[k])
-                            return false;
-                    return true;
-                });
-            if (node.children.front().region.hi.w != node.region.hi.w ||
-                node.children.front().region.lo.w != node.region.lo.w ||
-                node.children.back().region.hi.w != node.region.hi.w)
-                ++counters.time_splits;
-            for (const Node& child : node.children) {
-                order.push_back(&child);
-                h.cells_.push_back(Cell{child.region, child.bound});
+            for (int h = 0; h < 2; ++h) {
+                s.count_half[h] += in_half[h];
+                for (int o = 0; o < 8; ++o) s.count_octant_half[o][h] += in_octant_half[o][h];
+            }
+            for (int o = 0; o < 8; ++o) s.count_octant[o] += in_octant[o];
+        }
+        for (int k = 0; k <= levels; ++k) {
+            const double share = 1.0 / double(cell[k].size());
+            for (const Box4& b : cell[k]) s.time_cell[k] += surface_area(b) * share;
+        }
+        s.cell = s.time_cell[halves];
+        {
+            const double share = 1.0 / double(cell[quarters].size());
+            for (std::size_t p = 0; p < cell[quarters].size(); ++p)
+                s.half[p * 2 / cell[quarters].size()] += surface_area(cell[quarters][p]) * share;
+        }
+        for (int o = 0; o < 8; ++o) {
+            const double hs = 1.0 / double(octant_halves[o].size());
+            for (const Box4& b : octant_halves[o]) s.octant[o] += surface_area(b) * hs;
+            const double qs = 1.0 / double(octant_quarters[o].size());
+            for (std::size_t p = 0; p < octant_quarters[o].size(); ++p)
+                s.octant_half[o][p * 2 / octant_quarters[o].size()] +=
+                    surface_area(octant_quarters[o][p]) * qs;
+        }
+        return s;
+    }
+
+    // How many halvings of the cell's time the cost criterion looks at:
+    // down to the finest pieces its objects' sweeps keep (finer ones repeat
+    // them), at least to quarters, at most CostSummary::kMaxTimeLevels; none
+    // for a cell no longer than those pieces (its halves' boxes would be
+    // its own).
+    int time_levels(const CellTime& time, const std::vector<std::uint32_t>& objects) const {
+        const double span = time.t.width();
+        double finest = span;
+        for (const std::uint32_t i : objects) {
+            const auto& sweep = objects_.sweeps[i];
+            finest = std::min(finest, sweep.time().width() / double(sweep.piece_count()));
+        }
+        if (!(span > finest)) return 0;
+        int levels = 2;
+        while (levels < CostSummary::kMaxTimeLevels && finest > 0.0 &&
+               span / double(std::size_t(1) << levels) > finest)
+            ++levels;
+        return levels;
+    }
+
+    // A child cell: built now (eager) or when a ray first reaches it.
+    NodeRef child_cell(const Box4& region, const CellTime& time, std::vector<std::uint32_t> objects,
+                       int depth, Counters& counters) const {
+        if (options_.build == BuildKind::Eager)
+            return build(region, time, std::move(objects), depth, counters);
+        PendingCell* p = h_.arena_.own<PendingCell>();
+        p->region = region;
+        p->time_level = time.level;
+        p->time_index = time.index;
+        p->objects = std::move(objects);
+        p->depth = depth;
+        return NodeRef::node(RefKind::Pending, p);
+    }
+
+    // The cell's two time halves, each a child cell (Split::Time) or the
+    // node of its octants (Split::Both).
+    NodeRef time_node(const Box4& region, const CellTime& time,
+                      const std::vector<std::uint32_t>& objects, int depth, Split split,
+                      Counters& counters) const {
+        ++counters.time_splits;
+        ++counters.time_nodes;
+        TimeNode* node = h_.arena_.make<TimeNode>();
+        std::array<CellTime, 2> times{time.part(1, 0, objects_.time), time.part(1, 1, objects_.time)};
+        node->t0 = time.t.lo;
+        node->split = times[0].t.hi;
+        node->t1 = time.t.hi;
+        std::array<Box4, 2> halves{region, region};
+        std::array<std::vector<std::uint32_t>, 2> lists;
+        for (int h = 0; h < 2; ++h) {
+            halves[h].lo.w = times[h].t.lo;
+            halves[h].hi.w = times[h].t.hi;
+        }
+        for (const std::uint32_t i : objects)
+            for (int h = 0; h < 2; ++h)
+                if (!object_over(i, times[h], halves[h]).is_empty()) lists[h].push_back(i);
+        const auto make_half = [&](int h, Counters& c) {
+            if (lists[h].empty()) return NodeRef{};
+            if (split == Split::Both) return space_node(halves[h], times[h], lists[h], depth, c);
+            return child_cell(halves[h], times[h], std::move(lists[h]), depth + 1, c);
+        };
+        if (options_.build == BuildKind::Eager && split == Split::Time) {
+            std::array<Counters, 2> each;
+            tbb::parallel_for(0, 2, [&](int h) { node->child[h] = make_half(h, each[h]); });
+            counters += each[0];
+            counters += each[1];
+        } else {
+            // (Split::Both builds its octants in parallel inside.)
+            node->child[0] = make_half(0, counters);
+            node->child[1] = make_half(1, counters);
+        }
+        return NodeRef::node(RefKind::TimeNode, node);
+    }
+
+    // The region's octants as the children of one node (those its objects
+    // meet), each bounded by what its objects occupy inside it.
+    NodeRef space_node(const Box4& region, const CellTime& time,
+                       const std::vector<std::uint32_t>& objects, int depth,
+                       Counters& counters) const {
+        std::array<Box4, 8> octants;
+        for (int o = 0; o < 8; ++o) octants[o] = octant(region, o);
+        std::array<std::vector<std::uint32_t>, 8> lists;
+        std::array<TimeBins, 8> bins;
+        const int k = fit_levels();
+        for (auto& b : bins) b = TimeBins::empty(1 << k);
+        for (const std::uint32_t i : objects) {
+            const TimeBins mine = object_bins(i, region, time, k);
+            for (int o = 0; o < 8; ++o) {
+                bool meets = false;
+                for (int b = 0; b < mine.count; ++b) {
+                    const Box4 part = mine.bin[b].intersection(octants[o]);
+                    if (part.is_empty()) continue;
+                    bins[o].bin[b].extend(part);
+                    meets = true;
+                }
+                if (meets) lists[o].push_back(i);
             }
         }
+        std::vector<int> used;
+        for (int o = 0; o < 8; ++o)
+            if (!lists[o].empty()) used.push_back(o);
+        std::vector<Child> children(used.size());
+        const auto make = [&](std::size_t c, Counters& counts) {
+            const int o = used[c];
+            children[c].ref = child_cell(octants[o], time, std::move(lists[o]), depth + 1, counts);
+            children[c].bins = bins[o];
+        };
+        if (options_.build == BuildKind::Eager && used.size() > 1) {
+            tbb::enumerable_thread_specific<Counters> each;
+            tbb::parallel_for(std::size_t(0), used.size(), [&](std::size_t c) { make(c, each.local()); });
+            for (const Counters& c : each) counters += c;
+        } else {
+            for (std::size_t c = 0; c < used.size(); ++c) make(c, counters);
+        }
+        // A lone child needs no node: the bound that led here holds it.
+        if (children.size() == 1) return children.front().ref;
+        return bound_node(time.t, children, counters);
     }
-    h.depth_ = builder.depth();
-    counters.cells += h.cells_.size();
-    counters.deformation_maps += runtime::this_thread_work.deformation_maps - deformation_maps;
+
+    // A cell at the bottom: its objects as children, each bounded inside it.
+    NodeRef leaf(const Box4& region, const CellTime& time, const std::vector<std::uint32_t>& objects,
+                 Counters& counters) const {
+        std::vector<Child> children;
+        children.reserve(objects.size());
+        for (const std::uint32_t i : objects) {
+            Child c{NodeRef::object(i), object_bins(i, region, time, fit_levels())};
+            if (!c.bins.is_empty()) children.push_back(c);
+        }
+        if (children.empty()) return {};
+        counters.object_refs += children.size();
+        return group(time.t, children, counters);
+    }
+
+    // More objects than a node holds: groups of neighbours (by the middle
+    // of their boxes along the widest spread), a node each.
+    NodeRef group(const Interval& time, std::vector<Child>& children, Counters& counters) const {
+        if (children.size() <= std::size_t(kNodeWidth)) return bound_node(time, children, counters);
+        Box4 spread = Box4::empty();
+        std::vector<std::pair<double, std::size_t>> keys(children.size());
+        for (const Child& c : children) spread.extend(c.bins.hull().center());
+        const glm::dvec4 e = spread.extent();
+        const int axis = e.x >= e.y && e.x >= e.z ? 0 : e.y >= e.z ? 1 : 2;
+        for (std::size_t i = 0; i < children.size(); ++i)
+            keys[i] = {children[i].bins.hull().center()[axis], i};
+        std::sort(keys.begin(), keys.end());
+        const std::size_t groups =
+            std::min<std::size_t>(kNodeWidth, (children.size() + kNodeWidth - 1) / kNodeWidth);
+        std::vector<Child> grouped;
+        for (std::size_t g = 0; g < groups; ++g) {
+            const std::size_t begin = g * children.size() / groups;
+            const std::size_t end = (g + 1) * children.size() / groups;
+            std::vector<Child> members;
+            Child merged{{}, TimeBins::empty(children.front().bins.count)};
+            for (std::size_t k = begin; k < end; ++k) {
+                members.push_back(children[keys[k].second]);
+                merged.bins.add(members.back().bins);
+            }
+            merged.ref = group(time, members, counters);
+            grouped.push_back(merged);
+        }
+        return bound_node(time, grouped, counters);
+    }
+
+    // One node over `time` holding the children's bounds, in the style the
+    // options ask for (Auto: a linear-motion box where it saves area).
+    NodeRef bound_node(const Interval& time, const std::vector<Child>& children,
+                       Counters& counters) const {
+        BoundStyle style = options_.bounds;
+        if (space_only() && style == BoundStyle::Linear) style = BoundStyle::Box;
+        std::vector<LinearBox> fits;
+        if (style == BoundStyle::Auto) {
+            style = BoundStyle::Box;
+            if (!space_only() && moves_within(children)) {
+                double boxes = 0.0, lines = 0.0;
+                fits.reserve(children.size());
+                for (const Child& c : children) {
+                    fits.push_back(fit_linear(c.bins));
+                    boxes += surface_area(c.bins.hull());
+                    lines += fits.back().mean_area();
+                }
+                // A motion node tests in about 1.25 times a box node's time.
+                if (lines < 0.8 * boxes) style = BoundStyle::Linear;
+            }
+        }
+        switch (style) {
+            case BoundStyle::Linear: ++counters.motion_nodes; return motion_node(time, children, fits);
+            case BoundStyle::Slabs: ++counters.slab_nodes; return slab_node(time, children);
+            default: ++counters.box_nodes; return box_node(time, children);
+        }
+    }
+
+    // Does anything change from bin to bin?
+    static bool moves_within(const std::vector<Child>& children) {
+        for (const Child& c : children)
+            for (int b = 1; b < c.bins.count; ++b)
+                if (c.bins.bin[b].lo.x != c.bins.bin[0].lo.x || c.bins.bin[b].hi.x != c.bins.bin[0].hi.x ||
+                    c.bins.bin[b].lo.y != c.bins.bin[0].lo.y || c.bins.bin[b].hi.y != c.bins.bin[0].hi.y ||
+                    c.bins.bin[b].lo.z != c.bins.bin[0].lo.z || c.bins.bin[b].hi.z != c.bins.bin[0].hi.z)
+                    return true;
+        return false;
+    }
+
+    NodeRef box_node(const Interval& time, const std::vector<Child>& children) const {
+        BoxNode* node = h_.arena_.make<BoxNode>();
+        node->children = std::uint32_t(children.size());
+        node->t0 = time.lo;
+        node->t1 = time.hi;
+        for (int i = 0; i < kNodeWidth; ++i) {
+            for (int k = 0; k < 3; ++k) fill_empty(node->lo[k], node->hi[k], i);
+            if (i >= int(children.size())) continue;
+            node->child[i] = children[i].ref;
+            const Box4 hull = children[i].bins.hull();
+            if (hull.is_empty()) continue;
+            for (int k = 0; k < 3; ++k) {
+                node->lo[k][i] = float_down(hull.lo[k]);
+                node->hi[k][i] = float_up(hull.hi[k]);
+            }
+        }
+        return NodeRef::node(RefKind::BoxNode, node);
+    }
+
+    // `fits`: the children's fitted boxes if already made, else empty.
+    NodeRef motion_node(const Interval& time, const std::vector<Child>& children,
+                        const std::vector<LinearBox>& fits) const {
+        MotionNode* node = h_.arena_.make<MotionNode>();
+        node->children = std::uint32_t(children.size());
+        node->t0 = time.lo;
+        node->t1 = time.hi;
+        node->inverse_span = time.hi > time.lo ? 1.0 / (time.hi - time.lo) : 0.0;
+        if (!std::isfinite(node->inverse_span)) node->inverse_span = 0.0;
+        // A node over one instant has u = 0 always: its ends are the start
+        // values, with no change to evaluate.
+        const bool instant = node->inverse_span == 0.0;
+        for (int i = 0; i < kNodeWidth; ++i) {
+            for (int k = 0; k < 3; ++k) {
+                fill_empty(node->lo[k], node->hi[k], i);
+                node->dlo[k][i] = node->dhi[k][i] = 0.0f;
+            }
+            if (i >= int(children.size())) continue;
+            node->child[i] = children[i].ref;
+            const LinearBox fit = fits.empty() ? fit_linear(children[i].bins) : fits[i];
+            if (fit.empty) continue;
+            for (int k = 0; k < 3; ++k) {
+                const LinearEnd lo = linear_end(fit.lo0[k], instant ? fit.lo0[k] : fit.lo1[k], false);
+                const LinearEnd hi = linear_end(fit.hi0[k], instant ? fit.hi0[k] : fit.hi1[k], true);
+                node->lo[k][i] = lo.start;
+                node->dlo[k][i] = lo.change;
+                node->hi[k][i] = hi.start;
+                node->dhi[k][i] = hi.change;
+            }
+        }
+        return NodeRef::node(RefKind::MotionNode, node);
+    }
+
+    NodeRef slab_node(const Interval& time, const std::vector<Child>& children) const {
+        SlabNode* node = h_.arena_.make<SlabNode>();
+        node->children = std::uint32_t(children.size());
+        node->t0 = time.lo;
+        node->t1 = time.hi;
+        const double t_max = std::max(std::fabs(time.lo), std::fabs(time.hi));
+        for (int i = 0; i < kNodeWidth; ++i) {
+            for (int k = 0; k < SlabNode::kSlabs; ++k) fill_empty(node->lo[k], node->hi[k], i);
+            if (i >= int(children.size())) continue;
+            node->child[i] = children[i].ref;
+            runtime::SlabBound b = runtime::SlabBound::empty();
+            for (int bin = 0; bin < children[i].bins.count; ++bin) b.add(children[i].bins.bin[bin]);
+            if (b.is_empty()) continue;
+            for (int k = 0; k < 3; ++k) {
+                node->lo[k][i] = float_down(b.lo[k]);
+                node->hi[k][i] = float_up(b.hi[k]);
+            }
+            for (int m = 0; m < 8; ++m) {
+                node->lo[3 + m][i] = slab_end(b.lo[4 + m], t_max, false);
+                node->hi[3 + m][i] = slab_end(b.hi[4 + m], t_max, true);
+            }
+        }
+        return NodeRef::node(RefKind::SlabNode, node);
+    }
+
+    const Hierarchy& h_;
+    const SweptObjects& objects_;
+    const BuildOptions& options_;
+};
+
+Hierarchy::Hierarchy(const SweptObjects& objects, const Box4& root, const BuildOptions& options,
+                     Counters& counters)
+    : objects_(objects), options_(options), region_(root),
+      builder_(std::make_unique<Builder>(*this)) {
+    const auto start = std::chrono::steady_clock::now();
+    const std::uint64_t maps = runtime::this_thread_work.deformation_maps;
+    std::vector<std::uint32_t> all;
+    all.reserve(objects.objects.size());
+    for (std::uint32_t i = 0; i < objects.objects.size(); ++i)
+        if (!objects.sweeps[i].box_over(root.time()).intersection(root).is_empty()) all.push_back(i);
+    CellTime time;
+    time.t = root.time();
+    // Spacetime mode: the root's time is the sweeps', cut the same way.
+    if (root.lo.w == objects.time.lo && root.hi.w == objects.time.hi) time.level = 0;
+    root_ = builder_->build(root, time, std::move(all), 0, counters);
     counters.build_seconds +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return h;
+    // The root is entered by every ray: never leave it pending (expand()
+    // counts its own time).
+    while (root_.kind() == RefKind::Pending) root_ = expand(&root_, root_, counters);
+    counters.deformation_maps += runtime::this_thread_work.deformation_maps - maps;
+}
+
+Hierarchy::~Hierarchy() = default;
+
+NodeRef Hierarchy::expand(NodeRef* slot, NodeRef pending, Counters& counters) const {
+    PendingCell* p = pending.as<PendingCell>();
+    std::call_once(p->once, [&] {
+        const auto start = std::chrono::steady_clock::now();
+        CellTime time;
+        time.t = p->region.time();
+        time.level = p->time_level;
+        time.index = p->time_index;
+        p->built = builder_->build(p->region, time, std::move(p->objects), p->depth, counters);
+        p->objects = {};
+        counters.build_seconds +=
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    });
+    NodeRef::store(slot, p->built);
+    return p->built;
+}
+
+void Hierarchy::count_full(Counters& counters) const {
+    Counters extra;
+    const auto visit = [&](auto&& self, NodeRef* slot) -> void {
+        NodeRef ref = NodeRef::load(slot);
+        if (ref.kind() == RefKind::Pending) ref = expand(slot, ref, extra);
+        switch (ref.kind()) {
+            case RefKind::BoxNode:
+                for (auto& c : ref.as<BoxNode>()->child) self(self, &c);
+                break;
+            case RefKind::MotionNode:
+                for (auto& c : ref.as<MotionNode>()->child) self(self, &c);
+                break;
+            case RefKind::SlabNode:
+                for (auto& c : ref.as<SlabNode>()->child) self(self, &c);
+                break;
+            case RefKind::TimeNode:
+                for (auto& c : ref.as<TimeNode>()->child) self(self, &c);
+                break;
+            default:
+                break;
+        }
+    };
+    NodeRef root = root_;
+    visit(visit, &root);
+    counters.cells_full += cells_built_.load();
 }
 
 }  // namespace hexant::tracer

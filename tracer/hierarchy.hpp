@@ -1,81 +1,157 @@
-// Glassner's hybrid hierarchy: space (and time) subdivision down, bounding
-// volumes up.
+// Glassner's hybrid hierarchy over spacetime: space (and time) subdivision
+// down, bounding volumes up (DESIGN.md, tracer/).
 //
-// Down: a cell (a 4D box) splits into 16 equal children, halving x, y, z and
-// t, while the paper's criterion holds: more than `max_objects` objects meet
-// the cell; or, with that many or fewer (but more than one), they fill less
-// than `max_occupancy` of its volume; and never below `max_depth`. Time is
-// halved only where something in the cell moves (8 spatial children
-// otherwise), and a cell with one moving object halves its time only (2
-// children): splitting space around a lone object cannot tighten its bound,
-// splitting the time it sweeps can.
-// Up: a leaf's bound is the union of its objects' 12-slab bounds inside the
-// cell (each object clips to the region it is asked about); an inner cell's
-// is the union of its children's. A cell with one child is replaced by it.
+// Down: a cell (a 4D box) is halved in time, in space (eight octants), in
+// both, or not at all, as the split criterion says:
+//  - Criterion::Paper, the paper's: more than `max_objects` objects, or more
+//    than one filling less than `max_occupancy` of the cell, split it, to
+//    `max_depth` (default 5); halving time only where something moves, and a
+//    lone moving object's cell halves time alone.
+//  - Criterion::Cost: a surface-area heuristic extended to time (Woop, Afra
+//    and Benthin's STBVH, HPG 2017): the expected cost of a ray at a random
+//    instant meeting the cell, for each of the four choices, from the areas
+//    its contents' boxes present over quarters of its time; the cheapest
+//    wins (split_criterion.hpp).
+// Up: each child's bound is what its contents occupy inside it (their
+// cached sweeps clipped to the child), fitted as a box, a linear-motion box
+// or a 12-slab bound (cell.hpp). At the bottom a cell's objects are the
+// children of a node, each with its own bound inside the cell, so a ray
+// tests an object only where it meets that object's own bound.
+//
+// Lazily, as the paper's future work proposes: with BuildKind::Lazy a cell's
+// children are built the first time a ray reaches it (any thread; exactly
+// once), so a frame pays only for the cells its rays enter. BuildKind::Eager
+// builds everything at once, in parallel.
 //
 // The frame-by-frame baseline uses the same builder with SplitMode::Space:
-// the root's time range is one frame's shutter interval, cells split 8 ways
-// in x, y, z only, and every object bound is widened to the box it spans
-// over the whole interval (static 3D slabs, as the paper's baseline).
+// the root's time is one frame's shutter, cells split in space only, and
+// every bound is a box over that whole interval, as the paper's baseline.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
+#include <memory>
+#include <mutex>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "runtime/intelligent_object.hpp"
-#include "runtime/slab_bound.hpp"
 #include "runtime/spacetime.hpp"
+#include "runtime/time_sweep.hpp"
+#include "tracer/cell.hpp"
 #include "tracer/counters.hpp"
+#include "tracer/node_arena.hpp"
 
 namespace hexant::tracer {
 
 enum class SplitMode { Spacetime, Space };
+enum class Criterion { Cost, Paper };
+enum class BuildKind { Lazy, Eager };
+// Auto: per node, a linear-motion box where it is clearly tighter than a
+// box (what it saves in area outweighs its dearer test), else a box.
+enum class BoundStyle { Auto, Box, Linear, Slabs };
 
 struct BuildOptions {
     SplitMode split = SplitMode::Spacetime;
-    int max_depth = 5;
+    Criterion criterion = Criterion::Cost;
+    BuildKind build = BuildKind::Lazy;
+    BoundStyle bounds = BoundStyle::Auto;
+    // Depth limit; 0 or less: the criterion's own (paper 5, cost 24).
+    int max_depth = 0;
+    // The paper's criterion.
     std::size_t max_objects = 3;
     double max_occupancy = 0.3;
-    // SplitMode::Space only: widen each object's bound to its box, as the
-    // paper's baseline. With false the builder keeps the 12-slab bounds and,
-    // on a static scene, builds exactly the spacetime mode's hierarchy (the
-    // "same hierarchy in 3D" that shows what the fourth dimension costs).
-    bool boxes_in_space = true;
+    // The cost criterion's prices, in units of one node test (eight bounds
+    // at once): an object test.
+    double object_cost = 3.0;
+    // Statistics: count the cells a full build would make (counters.cells_full),
+    // building what a lazy build left, after each hierarchy's use.
+    bool count_full = false;
+
+    // At most kMaxDepth, which bounds the traversal's stack.
+    int depth_limit() const {
+        const int d = max_depth > 0 ? max_depth : criterion == Criterion::Paper ? 5 : 24;
+        return d < kMaxDepth ? d : kMaxDepth;
+    }
+    static constexpr int kMaxDepth = 32;
 };
 
-struct Cell {
-    runtime::Box4 region;       // the part of spacetime this cell owns
-    runtime::SlabBound bound;   // what its objects occupy inside region
-    std::uint32_t first_child = 0, child_count = 0;    // children are consecutive
-    std::uint32_t first_object = 0, object_count = 0;  // a leaf's object indices
-    // The children halve time only (same space as this cell): a ray at one
-    // instant meets exactly one of them, whose bound is tighter than this
-    // cell's, so the walk goes straight to it.
-    bool splits_time_only = false;
-    bool is_leaf() const { return child_count == 0; }
+// "paper"/"cost", "lazy"/"eager", "auto"/"box"/"linear"/"slabs";
+// std::invalid_argument otherwise.
+Criterion parse_criterion(const std::string& name);
+BuildKind parse_build_kind(const std::string& name);
+BoundStyle parse_bound_style(const std::string& name);
+
+// The bounded objects and their sweeps (runtime/time_sweep.hpp), computed
+// once over `time` and shared by every hierarchy built over part of it.
+struct SweptObjects {
+    std::vector<const runtime::IntelligentObject*> objects;
+    std::vector<runtime::TimeSweep> sweeps;
+    runtime::Interval time;
+
+    // Sweeps for all objects in parallel, with at most 2^depth pieces each,
+    // where depth = min(kMaxSweepDepth, log2(kSweepPieceBudget / moving
+    // objects)): memory stays linear in the objects and does not grow with
+    // the frame count.
+    static SweptObjects of(std::span<const runtime::IntelligentObject* const> objects,
+                           const runtime::Interval& time);
+    std::size_t bytes() const;
+};
+
+inline constexpr int kMaxSweepDepth = 8;
+inline constexpr std::size_t kSweepPieceBudget = std::size_t(1) << 22;
+
+// A cell whose node is not built yet.
+struct PendingCell {
+    runtime::Box4 region;
+    int time_level = -1;  // its time as a dyadic piece of the sweeps' (Hierarchy::CellTime)
+    std::uint64_t time_index = 0;
+    std::vector<std::uint32_t> objects;
+    int depth = 0;
+    std::once_flag once;
+    NodeRef built;
 };
 
 class Hierarchy {
 public:
-    // objects[i] must be bounded. An empty hierarchy has no cells.
-    static Hierarchy build(std::span<const runtime::IntelligentObject* const> objects,
-                           const runtime::Box4& root, const BuildOptions& options,
-                           Counters& counters);
+    // Builds the root cell's node over `root` (eager: the whole hierarchy).
+    // The objects must outlive the hierarchy.
+    Hierarchy(const SweptObjects& objects, const runtime::Box4& root, const BuildOptions& options,
+              Counters& counters);
+    ~Hierarchy();
+    Hierarchy(const Hierarchy&) = delete;
+    Hierarchy& operator=(const Hierarchy&) = delete;
 
-    bool empty() const { return cells_.empty(); }
-    const Cell& root() const { return cells_.front(); }
-    const std::vector<Cell>& cells() const { return cells_; }
-    // Object indices of a leaf.
-    std::span<const std::uint32_t> objects_of(const Cell& leaf) const {
-        return {object_refs_.data() + leaf.first_object, leaf.object_count};
-    }
-    int depth() const { return depth_; }
+    bool empty() const { return root_.empty(); }
+    NodeRef root() const { return root_; }
+    const runtime::Box4& region() const { return region_; }
+    const SweptObjects& objects() const { return objects_; }
+    const BuildOptions& options() const { return options_; }
+
+    // The node a pending child stands for, built now if no thread has yet;
+    // the slot that held it then holds the node. Thread-safe.
+    NodeRef expand(NodeRef* slot, NodeRef pending, Counters& counters) const;
+
+    // Builds every pending cell (one thread), counting them in
+    // counters.cells_full beside those built already: what a full build
+    // makes. For statistics only, after rendering.
+    void count_full(Counters& counters) const;
+
+    // Node memory in bytes.
+    std::size_t bytes() const { return arena_.bytes(); }
 
 private:
-    std::vector<Cell> cells_;
-    std::vector<std::uint32_t> object_refs_;
-    int depth_ = 0;
+    class Builder;
+    struct CellTime;
+
+    const SweptObjects& objects_;
+    BuildOptions options_;
+    runtime::Box4 region_;
+    mutable NodeArena arena_;
+    mutable std::atomic<std::uint64_t> cells_built_{0};
+    std::unique_ptr<Builder> builder_;
+    NodeRef root_;
 };
 
 }  // namespace hexant::tracer

@@ -42,6 +42,9 @@ public:
     Image render_frame(int frame);
 
     const Counters& counters() const { return counters_; }
+    // Statistics: the cells a full build of the hierarchy in use makes
+    // (counters().cells_full; RayQuery::count_full_hierarchy).
+    void count_full_hierarchy() { query_->count_full_hierarchy(counters_); }
     const runtime::Box4& root() const { return root_; }
 
 private:

@@ -1,0 +1,42 @@
+#include "app/hierarchy_arguments.hpp"
+
+#include <stdexcept>
+
+namespace hexant::app {
+
+tracer::BuildOptions HierarchyArguments::options() const {
+    tracer::BuildOptions o;
+    try {
+        o.criterion = tracer::parse_criterion(split);
+        o.build = tracer::parse_build_kind(build);
+        o.bounds = tracer::parse_bound_style(bounds);
+    } catch (const std::invalid_argument& e) {
+        throw std::runtime_error(std::string("--split/--build/--bounds: ") + e.what());
+    }
+    if (frames_slab_bounds) {
+        if (o.bounds != tracer::BoundStyle::Auto && o.bounds != tracer::BoundStyle::Slabs)
+            throw std::runtime_error("--frames-slab-bounds contradicts --bounds " + bounds);
+        o.bounds = tracer::BoundStyle::Slabs;
+    }
+    o.max_depth = max_depth;
+    return o;
+}
+
+void add_hierarchy_arguments(CLI::App& command, HierarchyArguments& a) {
+    command.add_option("--split", a.split,
+                       "When a cell splits: cost (default; a surface-area heuristic over space "
+                       "and time) or paper (the paper's object count and density)");
+    command.add_option("--build", a.build,
+                       "lazy (default: cells are built when a ray first reaches them) or eager "
+                       "(the whole hierarchy at once)");
+    command.add_option("--bounds", a.bounds,
+                       "The style of the cells' bounds: auto (default: a linear-motion box where "
+                       "it is tighter, else a box), box, linear or slabs (the 12-slab bound)");
+    command.add_option("--max-depth", a.max_depth,
+                       "Hierarchy depth limit (default: 5 with --split paper, 24 with cost)")
+        ->check(CLI::Range(0, tracer::BuildOptions::kMaxDepth));
+    command.add_flag("--frames-slab-bounds", a.frames_slab_bounds,
+                     "The same as --bounds slabs (kept for the frame-by-frame baseline)");
+}
+
+}  // namespace hexant::app

@@ -1,0 +1,127 @@
+#include "tracer/linear_bound.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace hexant::tracer {
+
+namespace {
+
+struct Point {
+    double u, v;
+};
+
+// The line (value at u = 0, value at u = 1) at or below every point, whose
+// value at the middle of the points' span is largest: the edge of the
+// lower convex hull over that middle (Andrew's monotone chain). The points
+// come sorted by u.
+std::pair<double, double> line_below(const Point* p, int n) {
+    if (n == 1) return {p[0].v, p[0].v};
+    Point hull[kMaxBins + 1];
+    int h = 0;
+    for (int i = 0; i < n; ++i) {
+        // Pop while the last two and p[i] do not turn left (counter-clockwise).
+        while (h >= 2) {
+            const Point& a = hull[h - 2];
+            const Point& b = hull[h - 1];
+            const double cross = (b.u - a.u) * (p[i].v - a.v) - (b.v - a.v) * (p[i].u - a.u);
+            if (cross > 0.0) break;
+            --h;
+        }
+        hull[h++] = p[i];
+    }
+    const double middle = 0.5 * (p[0].u + p[n - 1].u);
+    int e = 0;
+    while (e + 2 < h && hull[e + 1].u < middle) ++e;
+    double slope = 0.0;
+    if (h >= 2) slope = (hull[e + 1].v - hull[e].v) / (hull[e + 1].u - hull[e].u);
+    if (!std::isfinite(slope)) slope = 0.0;
+    double a0 = hull[e].v - slope * hull[e].u;
+    // Whatever the rounding above, no point may lie below the line.
+    double worst = 0.0;
+    for (int i = 0; i < n; ++i) worst = std::max(worst, (a0 + slope * p[i].u) - p[i].v);
+    a0 -= worst;
+    double a1 = a0 + slope;
+    // The line is checked at the points only in exact arithmetic; a final
+    // check of the two ends keeps it below in doubles too.
+    for (int i = 0; i < n; ++i) {
+        const double at = a0 + (a1 - a0) * p[i].u;
+        if (at > p[i].v) {
+            a0 -= at - p[i].v;
+            a1 -= at - p[i].v;
+        }
+    }
+    return {a0, a1};
+}
+
+double area_of_extents(double x, double y, double z) {
+    return 2.0 * (x * y + y * z + z * x);
+}
+
+}  // namespace
+
+double surface_area(const runtime::Box4& box) {
+    if (box.is_empty()) return 0.0;
+    const glm::dvec4 e = box.hi - box.lo;
+    return area_of_extents(e.x, e.y, e.z);
+}
+
+double TimeBins::mean_area() const {
+    if (count == 0) return 0.0;
+    double sum = 0.0;
+    for (int i = 0; i < count; ++i) sum += surface_area(bin[i]);
+    return sum / count;
+}
+
+double LinearBox::mean_area() const {
+    if (empty) return 0.0;
+    // Extents e(u) = e0 + u de; the mean of 2 sum e_i(u) e_j(u) over u in
+    // [0, 1] is 2 sum (e0_i e0_j + (e0_i de_j + de_i e0_j) / 2 + de_i de_j / 3).
+    const glm::dvec3 e0 = hi0 - lo0, de = (hi1 - lo1) - e0;
+    double sum = 0.0;
+    for (int i = 0; i < 3; ++i) {
+        const int j = (i + 1) % 3;
+        sum += e0[i] * e0[j] + 0.5 * (e0[i] * de[j] + de[i] * e0[j]) + de[i] * de[j] / 3.0;
+    }
+    return std::max(0.0, 2.0 * sum);
+}
+
+LinearBox fit_linear(const TimeBins& bins) {
+    LinearBox box;
+    const int n = bins.count;
+    if (n <= 0 || bins.is_empty()) return box;
+    box.empty = false;
+    for (int k = 0; k < 3; ++k) {
+        for (const bool upper : {false, true}) {
+            // One point per bin boundary touching a non-empty bin: the
+            // outermost end of its neighbours (mirrored for the upper end).
+            Point points[kMaxBins + 1];
+            int count = 0;
+            for (int j = 0; j <= n; ++j) {
+                double v = std::numeric_limits<double>::infinity();
+                for (const int b : {j - 1, j}) {
+                    if (b < 0 || b >= n || bins.bin[b].is_empty()) continue;
+                    v = std::min(v, upper ? -bins.bin[b].hi[k] : bins.bin[b].lo[k]);
+                }
+                if (v != std::numeric_limits<double>::infinity())
+                    points[count++] = {double(j) / double(n), v};
+            }
+            // An infinite end (an object without a finite box) stays infinite.
+            bool finite = true;
+            for (int i = 0; i < count; ++i) finite = finite && std::isfinite(points[i].v);
+            std::pair<double, double> line{-std::numeric_limits<double>::infinity(),
+                                           -std::numeric_limits<double>::infinity()};
+            if (finite) line = line_below(points, count);
+            if (upper) {
+                box.hi0[k] = -line.first;
+                box.hi1[k] = -line.second;
+            } else {
+                box.lo0[k] = line.first;
+                box.lo1[k] = line.second;
+            }
+        }
+    }
+    return box;
+}
+
+}  // namespace hexant::tracer

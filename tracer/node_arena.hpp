@@ -1,0 +1,83 @@
+// Where a hierarchy's nodes live: 64-byte aligned blocks that never move,
+// one run of blocks per thread, so that a parallel or lazy build allocates
+// without a lock. Everything is freed with the arena. Nodes are plain data;
+// the pending cells of a lazy build (which own vectors) are kept apart and
+// destroyed properly.
+#pragma once
+
+#include <cstddef>
+#include <cstdlib>
+#include <memory>
+#include <new>
+#include <vector>
+
+#include <tbb/enumerable_thread_specific.h>
+
+namespace hexant::tracer {
+
+class NodeArena {
+public:
+    NodeArena() = default;
+    NodeArena(const NodeArena&) = delete;
+    NodeArena& operator=(const NodeArena&) = delete;
+    ~NodeArena() {
+        for (auto& blocks : blocks_)
+            for (void* b : blocks.list) std::free(b);
+    }
+
+    // Zeroed, 64-byte aligned storage for one T (a plain node type).
+    template <class T>
+    T* make() {
+        static_assert(alignof(T) <= kAlign && std::is_trivially_destructible_v<T>);
+        void* p = allocate(sizeof(T));
+        return new (p) T{};
+    }
+
+    // Owned objects with destructors (a lazy build's pending cells).
+    template <class T, class... Args>
+    T* own(Args&&... args) {
+        auto& list = owned_.local();
+        list.push_back(std::make_shared<T>(std::forward<Args>(args)...));
+        return static_cast<T*>(list.back().get());
+    }
+
+    // Bytes held in node blocks (what the hierarchy costs in memory).
+    std::size_t bytes() const {
+        std::size_t total = 0;
+        for (const auto& blocks : blocks_) total += blocks.list.size() * kBlock;
+        return total;
+    }
+
+private:
+    static constexpr std::size_t kAlign = 64;
+    static constexpr std::size_t kBlock = 64 * 1024;
+    struct Blocks {
+        std::vector<void*> list;
+        std::size_t used = kBlock;  // of the last block
+    };
+
+    void* allocate(std::size_t bytes) {
+        bytes = (bytes + kAlign - 1) / kAlign * kAlign;
+        Blocks& b = blocks_.local();
+        if (bytes > kBlock) {  // never for nodes; kept correct anyway
+            void* p = std::aligned_alloc(kAlign, bytes);
+            if (!p) throw std::bad_alloc();
+            b.list.insert(b.list.begin(), p);
+            return p;
+        }
+        if (b.used + bytes > kBlock) {
+            void* p = std::aligned_alloc(kAlign, kBlock);
+            if (!p) throw std::bad_alloc();
+            b.list.push_back(p);
+            b.used = 0;
+        }
+        void* p = static_cast<char*>(b.list.back()) + b.used;
+        b.used += bytes;
+        return p;
+    }
+
+    tbb::enumerable_thread_specific<Blocks> blocks_;
+    tbb::enumerable_thread_specific<std::vector<std::shared_ptr<void>>> owned_;
+};
+
+}  // namespace hexant::tracer

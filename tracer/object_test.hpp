@@ -1,0 +1,52 @@
+// An object met by a ray during a walk: tested once per ray over the ray's
+// whole segment (mailbox.hpp), counted, and, for shadow rays, asked only
+// whether it occludes (IntelligentObject::occluded).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+
+#include "runtime/intelligent_object.hpp"
+#include "tracer/thread_state.hpp"
+
+namespace hexant::tracer {
+
+struct ObjectTest {
+    const runtime::Ray4& ray;
+    double s_min, s_max;  // the whole segment, whatever the walk has found
+    ThreadState& state;
+
+    // Object `index` (its mailbox slot): a nearer hit than best_s replaces
+    // best. Returns whether it did.
+    bool nearest(std::uint32_t index, const runtime::IntelligentObject& object,
+                 std::optional<runtime::ObjectHit>& best, double& best_s) const {
+        std::int32_t slot = state.mailbox.find(index);
+        if (slot == Mailbox::kUntested) {
+            ++state.counters.object_tests;
+            slot = state.mailbox.keep(index, object.intersect(ray, s_min, s_max));
+        } else {
+            ++state.counters.mailbox_hits;
+        }
+        if (slot < 0) return false;
+        const runtime::ObjectHit& hit = state.mailbox.hit(slot);
+        if (!(hit.s < best_s)) return false;
+        best = hit;
+        best_s = hit.s;
+        return true;
+    }
+
+    // Does object `index` cast a shadow on the segment?
+    bool occludes(std::uint32_t index, const runtime::IntelligentObject& object) const {
+        if (!object.casts_shadow()) return false;
+        if (state.mailbox.find(index) != Mailbox::kUntested) {
+            ++state.counters.mailbox_hits;
+            return false;  // tested on this ray already: it did not occlude
+        }
+        ++state.counters.object_tests;
+        if (object.occluded(ray, s_min, s_max)) return true;
+        state.mailbox.keep(index, std::nullopt);
+        return false;
+    }
+};
+
+}  // namespace hexant::tracer
