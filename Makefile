@@ -7,7 +7,7 @@ PACKAGES := build-essential cmake pkg-config tao-pegtl-dev libglm-dev catch2 lib
             libopenimageio-dev libtbb-dev libhwy-dev
 JOBS := $(shell nproc 2>/dev/null || echo 2)
 
-.PHONY: run test golden build deps clean
+.PHONY: run test golden bench build deps clean
 
 run: build
 	./build/hexant render examples/atom.pov examples/atom.ini \
@@ -20,6 +20,24 @@ test: build
 # hand after a change that is meant to change the images, then look at them.
 golden: build
 	cmake --build build --target update_golden
+
+# The peer benchmark against Embree 3 (tests/bench/embree_peer.cpp): Embree
+# is needed for it alone, so it is installed here and not by `deps`; prints
+# hexant's and Embree's times and errors on atom and bounce (a few minutes).
+bench: deps
+	@dpkg-query -W -f='$${Status}' libembree-dev 2>/dev/null | grep -q "install ok installed" || { \
+	  if [ "$$(id -u)" = 0 ]; then \
+	    echo "Installing: libembree-dev"; \
+	    apt-get update && DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends libembree-dev; \
+	  else \
+	    echo "The benchmark needs this Debian package. Run:"; \
+	    echo "  sudo apt-get install -y libembree-dev"; \
+	    exit 1; \
+	  fi; \
+	}
+	cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+	cmake --build build --target hexant_embree_peer -j$(JOBS)
+	./build/tests/bench/hexant_embree_peer
 
 build: deps
 	cmake -S . -B build -DCMAKE_BUILD_TYPE=Release

@@ -5,6 +5,8 @@
 #include <iomanip>
 #include <iostream>
 #include <sstream>
+#include <cstdio>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include "language/interpreter.hpp"
@@ -88,9 +90,16 @@ const Row kRows[] = {
     {"ray/object tests per ray", [](const Counters& c) { return per_ray(c.object_tests, c); }, 2},
     {"time splits", [](const Counters& c) { return double(c.time_splits); }, 0},
     {"deformation maps", [](const Counters& c) { return double(c.deformation_maps); }, 0},
+    {"node memory (MB)", [](const Counters& c) { return double(c.node_bytes) / (1 << 20); }, 1},
+    {"sweep memory (MB)", [](const Counters& c) { return double(c.sweep_bytes) / (1 << 20); }, 1},
+    {"memory at start (MB)", [](const Counters& c) { return c.memory_start_mb; }, 1},
+    {"peak memory (MB)", [](const Counters& c) { return c.memory_peak_mb; }, 1},
     {"build time (s)", [](const Counters& c) { return c.build_seconds; }, 3},
+    {"lazy build in render (s)", [](const Counters& c) { return c.lazy_build_seconds; }, 3},
     {"render time (s)", [](const Counters& c) { return c.render_seconds; }, 3},
     {"total time (s)", [](const Counters& c) { return c.build_seconds + c.render_seconds; }, 3},
+    {"rays per second (M)", [](const Counters& c) {
+         return c.render_seconds > 0.0 ? double(c.rays()) / c.render_seconds * 1e-6 : 0.0; }, 2},
 };
 
 void print_stats(std::ostream& out, const std::vector<std::pair<std::string, Counters>>& columns) {
@@ -129,6 +138,22 @@ void write_stats_json(const std::string& path,
     tracer::write_text_file(path, json.str());
 }
 
+// The process's resident memory now, and its peak so far (Linux).
+double resident_mb() {
+    long pages = 0, resident = 0;
+    if (FILE* f = std::fopen("/proc/self/statm", "r")) {
+        if (std::fscanf(f, "%ld %ld", &pages, &resident) != 2) resident = 0;
+        std::fclose(f);
+    }
+    return double(resident) * double(sysconf(_SC_PAGESIZE)) / (1 << 20);
+}
+
+double peak_resident_mb() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return double(usage.ru_maxrss) / 1024.0;  // kilobytes on Linux
+}
+
 // One full render in one mode; frames go to files as they finish.
 Counters render_mode(const runtime::SceneDescription& scene, const RenderArguments& args,
                      tracer::Mode mode, const std::string& pattern,
@@ -143,6 +168,7 @@ Counters render_mode(const runtime::SceneDescription& scene, const RenderArgumen
     settings.build = args.hierarchy.options();
     settings.build.count_full = args.stats || args.compare || args.stats_json.has_value();
     settings.progress = isatty(STDERR_FILENO);
+    const double start_mb = resident_mb();
     tracer::Renderer renderer(scene, settings);
     for (const int frame : frames) {
         tracer::Image image = renderer.render_frame(frame);
@@ -150,8 +176,12 @@ Counters render_mode(const runtime::SceneDescription& scene, const RenderArgumen
         if (keep) keep->push_back(std::move(image));
     }
     if (settings.progress) std::cerr << "\r" << std::string(40, ' ') << "\r";
+    renderer.measure_memory();
     if (settings.build.count_full) renderer.count_full_hierarchy();
-    return renderer.counters();
+    Counters c = renderer.counters();
+    c.memory_start_mb = start_mb;
+    c.memory_peak_mb = peak_resident_mb();
+    return c;
 }
 
 }  // namespace

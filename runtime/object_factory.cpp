@@ -95,11 +95,37 @@ IntelligentObjectPtr build(const ObjectRecord& record, const Inherited& parent) 
         record.shape);
 }
 
+// A union's children become objects of their own, with what the union
+// hands down; anything else is one object.
+void build_split(const ObjectRecord& record, const Inherited& parent,
+                 std::vector<IntelligentObjectPtr>& out) {
+    const auto* csg = std::get_if<Csg>(&record.shape);
+    if (!csg || csg->kind != Csg::Kind::Union || record.inverse) {
+        out.push_back(build(record, parent));
+        return;
+    }
+    Inherited down = parent;
+    down.to_world = record.transform;
+    down.to_world.append(parent.to_world);
+    if (record.texture) {
+        down.texture = *record.texture;
+        down.texture->transform.append(parent.to_world);
+    }
+    if (record.interior) down.interior = record.interior;
+    down.no_shadow = record.no_shadow || parent.no_shadow;
+    for (const auto& child : csg->children) build_split(*child, down, out);
+}
+
 }  // namespace
 
 IntelligentObjectPtr make_intelligent_object(const ObjectRecord& record,
                                              const Texture& default_texture) {
     return build(record, Inherited{Transform{}, default_texture, std::nullopt, false});
+}
+
+void make_intelligent_objects(const ObjectRecord& record, const Texture& default_texture,
+                              std::vector<IntelligentObjectPtr>& out) {
+    build_split(record, Inherited{Transform{}, default_texture, std::nullopt, false}, out);
 }
 
 }  // namespace hexant::runtime

@@ -16,4 +16,15 @@ namespace hexant::runtime {
 IntelligentObjectPtr make_intelligent_object(const ObjectRecord& record,
                                              const Texture& default_texture = Texture{});
 
+// The same, with a union's children as objects of their own, recursively
+// (POV-Ray's split_union, on by default for unions): the hierarchy then
+// bounds and separates them like any objects, rather than testing a whole
+// union whenever a ray meets its bound. A union is kept whole where
+// splitting would change it: `inverse` (its inside matters to no parent
+// here, but its flipped normals must stay flipped together) and merge,
+// intersection and difference (their surfaces depend on each other).
+// Appends to `out`.
+void make_intelligent_objects(const ObjectRecord& record, const Texture& default_texture,
+                              std::vector<IntelligentObjectPtr>& out);
+
 }  // namespace hexant::runtime

@@ -35,6 +35,7 @@ public:
     }
     std::size_t object_count() const override { return objects_.size(); }
     void count_full_hierarchy(Counters&) const override {}
+    void measure_memory(Counters&) const override {}
 
 private:
     ObjectSet objects_;

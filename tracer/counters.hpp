@@ -2,6 +2,7 @@
 // paper's Tables 1 and 2.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 
 namespace hexant::tracer {
@@ -29,8 +30,19 @@ struct Counters {
     std::uint64_t objects = 0;           // intelligent objects built from the scene
     std::uint64_t time_splits = 0;       // cells whose children halve time
     std::uint64_t deformation_maps = 0;  // runtime::WorkCounts, while building and tracing
+    // Wall time: building before the frames (sweeps, the root; everything
+    // when eager) and rendering them. A lazy build's cells are built during
+    // the render, by the threads that reach them: their time is inside
+    // render_seconds, and lazy_build_seconds sums it over the threads.
     double build_seconds = 0.0;
     double render_seconds = 0.0;
+    double lazy_build_seconds = 0.0;
+    // Memory: the hierarchy's nodes and the objects' sweeps when last
+    // measured (RayQuery::memory), and the process's resident memory before
+    // the render began and at its peak (the app fills these in; the peak
+    // is the process's, earlier renders in it included).
+    std::uint64_t node_bytes = 0, sweep_bytes = 0;
+    double memory_start_mb = 0.0, memory_peak_mb = 0.0;
 
     std::uint64_t rays() const {
         return primary_rays + shadow_rays + reflected_rays + refracted_rays;
@@ -58,6 +70,11 @@ struct Counters {
         deformation_maps += o.deformation_maps;
         build_seconds += o.build_seconds;
         render_seconds += o.render_seconds;
+        lazy_build_seconds += o.lazy_build_seconds;
+        node_bytes = std::max(node_bytes, o.node_bytes);
+        sweep_bytes = std::max(sweep_bytes, o.sweep_bytes);
+        memory_start_mb = std::max(memory_start_mb, o.memory_start_mb);
+        memory_peak_mb = std::max(memory_peak_mb, o.memory_peak_mb);
         return *this;
     }
 };

@@ -59,6 +59,11 @@ public:
         if (hierarchy_) hierarchy_->count_full(counters);
     }
 
+    void measure_memory(Counters& counters) const override {
+        counters.node_bytes = (hierarchy_ ? hierarchy_->bytes() : 0);
+        counters.sweep_bytes = swept_.bytes();
+    }
+
 private:
     ObjectSet objects_;
     Box4 animation_;

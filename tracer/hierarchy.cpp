@@ -134,7 +134,7 @@ public:
         h_.cells_built_.fetch_add(1, std::memory_order_relaxed);
         if (objects.empty()) return {};
         const Split split =
-            depth < options_.depth_limit() ? choose(region, time, objects, counters) : Split::Leaf;
+            depth < options_.depth_limit() ? choose(region, time, objects, depth, counters) : Split::Leaf;
         switch (split) {
             case Split::Leaf: return leaf(region, time, objects, counters);
             case Split::Space: return space_node(region, time, objects, depth, counters);
@@ -169,7 +169,7 @@ private:
     }
 
     Split choose(const Box4& region, const CellTime& time, const std::vector<std::uint32_t>& objects,
-                 Counters& counters) const {
+                 int depth, Counters& counters) const {
         counters.bounds_built += objects.size();
         if (options_.criterion == Criterion::Paper) {
             PaperSummary s;
@@ -180,7 +180,24 @@ private:
                     s.occupancy += objects_.objects[i]->occupancy(region);
             return paper_split(s, options_.max_objects, options_.max_occupancy, space_only());
         }
-        return cost_split(cost_summary(region, time, objects), options_.object_cost, space_only());
+        const CostSummary summary = cost_summary(region, time, objects);
+        // The root is built first, alone: every other cell reads this.
+        if (depth == 0) h_.root_area_ = summary.cell;
+        CostPrices prices;
+        prices.object = options_.object_cost;
+        if (options_.rays_per_frame > 0.0 && h_.root_area_ > 0.0) {
+            prices.build = options_.build_cost;
+            // Frames' worth of rays in the cell's time: its length in frames,
+            // or, shorter than a frame, its share of one shutter (all of it
+            // for a zero shutter: an instant holds a whole frame's rays).
+            const double w = time.t.width();
+            double frames = 1.0;
+            if (options_.frame_interval > 0.0) frames = w / options_.frame_interval;
+            if (options_.shutter_time > 0.0) frames = std::max(frames, std::min(1.0, w / options_.shutter_time));
+            else frames = std::max(frames, 1.0);
+            prices.rays = options_.rays_per_frame * frames * summary.cell / h_.root_area_;
+        }
+        return cost_split(summary, prices, space_only());
     }
 
     // One pass over the cell's objects: each object's sweep over 2^L equal
@@ -606,9 +623,12 @@ Hierarchy::Hierarchy(const SweptObjects& objects, const Box4& root, const BuildO
     root_ = builder_->build(root, time, std::move(all), 0, counters);
     counters.build_seconds +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    // The root is entered by every ray: never leave it pending (expand()
-    // counts its own time).
-    while (root_.kind() == RefKind::Pending) root_ = expand(&root_, root_, counters);
+    // The root is entered by every ray: never leave it pending.
+    Counters first;
+    while (root_.kind() == RefKind::Pending) root_ = expand(&root_, root_, first);
+    first.build_seconds += first.lazy_build_seconds;
+    first.lazy_build_seconds = 0.0;
+    counters += first;
     counters.deformation_maps += runtime::this_thread_work.deformation_maps - maps;
 }
 
@@ -624,7 +644,7 @@ NodeRef Hierarchy::expand(NodeRef* slot, NodeRef pending, Counters& counters) co
         time.index = p->time_index;
         p->built = builder_->build(p->region, time, std::move(p->objects), p->depth, counters);
         p->objects = {};
-        counters.build_seconds +=
+        counters.lazy_build_seconds +=
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     });
     NodeRef::store(slot, p->built);

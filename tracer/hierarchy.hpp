@@ -63,8 +63,16 @@ struct BuildOptions {
     std::size_t max_objects = 3;
     double max_occupancy = 0.3;
     // The cost criterion's prices, in units of one node test (eight bounds
-    // at once): an object test.
+    // at once): an object test, and splitting a cell, per object in it
+    // (split_criterion.hpp, CostPrices).
     double object_cost = 3.0;
+    double build_cost = 100.0;
+    // The rays a frame traces (0: unknown, and splits are free), the time
+    // between frames and how long each frame's shutter is open: a cell gets
+    // the rays of the shutter time it spans, in its share of the root's area.
+    double rays_per_frame = 0.0;
+    double frame_interval = 0.0;
+    double shutter_time = 0.0;
     // Statistics: count the cells a full build would make (counters.cells_full),
     // building what a lazy build left, after each hierarchy's use.
     bool count_full = false;
@@ -130,7 +138,8 @@ public:
     const BuildOptions& options() const { return options_; }
 
     // The node a pending child stands for, built now if no thread has yet;
-    // the slot that held it then holds the node. Thread-safe.
+    // the slot that held it then holds the node. Thread-safe. Its time goes
+    // to counters.lazy_build_seconds.
     NodeRef expand(NodeRef* slot, NodeRef pending, Counters& counters) const;
 
     // Builds every pending cell (one thread), counting them in
@@ -150,6 +159,7 @@ private:
     runtime::Box4 region_;
     mutable NodeArena arena_;
     mutable std::atomic<std::uint64_t> cells_built_{0};
+    mutable double root_area_ = 0.0;  // the root cell's time-averaged area (cost criterion)
     std::unique_ptr<Builder> builder_;
     NodeRef root_;
 };

@@ -62,6 +62,9 @@ public:
     // counters.cells_full; the frame-by-frame mode counts each earlier
     // frame's as it replaces it.
     virtual void count_full_hierarchy(Counters& counters) const = 0;
+    // Records the bytes the hierarchy in use and the sweeps take now in
+    // counters.node_bytes and counters.sweep_bytes.
+    virtual void measure_memory(Counters& counters) const = 0;
 };
 
 // `animation` is the root's spacetime box (objects, lights and eye over the

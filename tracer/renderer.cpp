@@ -59,13 +59,25 @@ Box4 animation_root(const runtime::SceneDescription& scene, const ObjectSet& obj
 Renderer::Renderer(const runtime::SceneDescription& scene, const RenderSettings& settings)
     : scene_(scene), settings_(settings) {
     for (const auto& record : scene.objects)
-        objects_.push_back(runtime::make_intelligent_object(*record, scene.default_texture));
+        runtime::make_intelligent_objects(*record, scene.default_texture, objects_);
     counters_.objects = objects_.size();
     const ObjectSet set = ObjectSet::of(objects_);
     const std::uint64_t maps = runtime::this_thread_work.deformation_maps;
     root_ = animation_root(scene, set);
     counters_.deformation_maps += runtime::this_thread_work.deformation_maps - maps;
-    query_ = make_ray_query(settings.mode, set, root_, settings.build, counters_);
+    // What the cost criterion weighs a split against: the rays of a frame
+    // (primary, and a shadow ray per light that casts shadows; reflections
+    // and refractions are not foreseen).
+    BuildOptions build = settings.build;
+    if (build.rays_per_frame == 0.0) {
+        double lights = 0.0;
+        for (const auto& light : scene.lights) lights += light.shadowless ? 0.0 : 1.0;
+        build.rays_per_frame = double(scene.animation.width) * scene.animation.height *
+                               std::max(1, settings.samples_per_pixel) * (1.0 + lights);
+        build.frame_interval = scene.animation.clock_delta();
+        build.shutter_time = scene.animation.shutter * scene.animation.clock_delta();
+    }
+    query_ = make_ray_query(settings.mode, set, root_, build, counters_);
     shader_ = std::make_unique<Shader>(scene, *query_);
 }
 

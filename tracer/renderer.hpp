@@ -45,6 +45,8 @@ public:
     // Statistics: the cells a full build of the hierarchy in use makes
     // (counters().cells_full; RayQuery::count_full_hierarchy).
     void count_full_hierarchy() { query_->count_full_hierarchy(counters_); }
+    // Records the memory the hierarchy and sweeps take now (Counters).
+    void measure_memory() { query_->measure_memory(counters_); }
     const runtime::Box4& root() const { return root_; }
 
 private:

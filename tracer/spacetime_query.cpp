@@ -50,6 +50,11 @@ public:
         hierarchy_.count_full(counters);
     }
 
+    void measure_memory(Counters& counters) const override {
+        counters.node_bytes = hierarchy_.bytes();
+        counters.sweep_bytes = swept_.bytes();
+    }
+
 private:
     ObjectSet objects_;
     SweptObjects swept_;

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstddef>
+#include <limits>
 
 namespace hexant::tracer {
 
@@ -71,11 +72,26 @@ struct CostSummary {
 // nothing (the ray's instant picks the half). Time looks ahead: halving it
 // is worth it when cutting it into 2^k pieces pays for some k (the next
 // levels then decide again). Leaf when nothing is cheaper.
-Split cost_split(const CostSummary& s, double object_cost, bool space_only);
+//
+// A split also costs its building: `build` node tests per object reference
+// its children hold (the work of clipping sweeps into them, and the memory
+// they take). The choice minimises (cost per ray) * rays + build * references,
+// with `rays` the rays expected to meet the cell; with rays infinite, the
+// plain heuristic. So a cell few rays reach stays a leaf, an animation of
+// few rays builds a shallow hierarchy, and of two splits that save alike
+// the one that copies fewer objects (time halves copy every object) wins.
+struct CostPrices {
+    double object = 3.0;  // an object test, in node tests
+    double build = 0.0;   // node tests per object to split a cell
+    double rays = std::numeric_limits<double>::infinity();
+};
+Split cost_split(const CostSummary& s, const CostPrices& prices, bool space_only);
 
-// The expected cost of each choice, for the statistics and the tests.
+// The expected cost per ray of each choice, and the object references its
+// children hold (what building it costs), for the statistics and the tests.
 struct SplitCosts {
     double leaf, time, space, both;
+    double time_refs = 0.0, space_refs = 0.0, both_refs = 0.0;
 };
 SplitCosts split_costs(const CostSummary& s, double object_cost);
 
