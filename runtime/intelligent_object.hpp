@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <glm/vec2.hpp>
+#include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 
 #include "runtime/material_sample.hpp"
@@ -31,6 +32,11 @@ struct ObjectHit {
     glm::dvec3 object_shading_normal{};
     glm::dvec2 uv{};
     int part = 0;  // which face, cap or side (per shape kind)
+    // The object-to-world map's linear part at the hit's time, when the
+    // intersection had it at hand (a moving undeformed object), so that
+    // complete() does not evaluate the motion again.
+    glm::dmat3 to_world_linear{1.0};
+    bool has_linear = false;
     // The normal points into the solid the scene sees (a difference's cut,
     // an `inverse` object): complete() turns it around.
     bool flipped = false;

@@ -120,9 +120,9 @@ public:
 
     SurfacePoint complete(const Ray4& ray, const ObjectHit& hit) const override {
         const double t = hit.event.w;
-        const glm::dmat3 linear = motion_.is_affine()
-                                      ? glm::dmat3(motion_.matrix_at(t))
-                                      : motion_.jacobian_at(hit.object_point, t);
+        const glm::dmat3 linear = hit.has_linear         ? hit.to_world_linear
+                                  : motion_.is_affine() ? glm::dmat3(motion_.matrix_at(t))
+                                                        : motion_.jacobian_at(hit.object_point, t);
         glm::dvec3 facing = -glm::dvec3(ray.direction);
         const double length = glm::length(facing);
         facing = length > 0.0 && std::isfinite(length) ? facing / length : glm::dvec3(0, 1, 0);
@@ -244,9 +244,14 @@ private:
         local.direction = glm::dmat3(placement.to_object) * local.direction;
         const auto surface = find();
         if (!surface) return std::nullopt;
-        return make_hit(ray, surface->s, *surface, [&](const glm::dvec3& p, double) {
+        ObjectHit hit = make_hit(ray, surface->s, *surface, [&](const glm::dvec3& p, double) {
             return glm::dvec3(placement.to_world * glm::dvec4(p, 1.0));
         });
+        if (!motion.is_static()) {
+            hit.to_world_linear = glm::dmat3(placement.to_world);
+            hit.has_linear = true;
+        }
+        return hit;
     }
 
     // The ray's image in object space is a curve: the deformation bends it,

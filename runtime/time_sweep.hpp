@@ -38,13 +38,26 @@ inline double dyadic_time(const Interval& range, int level, std::uint64_t index)
     return range.lo + (range.hi - range.lo) * (double(index) / double(n));
 }
 
+// What finer pieces are worth: each halving costs an evaluation of the
+// object's box per new piece, and saves object tests for the rays that
+// would have met the wider boxes. A piece's rays are estimated as
+// ray_density * (its box's surface area) * (its time), the rays of an
+// animation spreading evenly over the scene's area and time.
+struct SweepPricing {
+    double ray_density = 0.0;       // rays per unit of area and of time; 0: free
+    double evaluation_cost = 100.0; // one box evaluation, in node tests
+    double object_cost = 3.0;       // one object test, in node tests
+};
+
 class TimeSweep {
 public:
     TimeSweep() = default;
 
     // The sweep of `object` over `time` (finite, lo <= hi), with at most
-    // 2^max_depth pieces (max_depth in [0, 20]).
-    static TimeSweep of(const IntelligentObject& object, const Interval& time, int max_depth);
+    // 2^max_depth pieces (max_depth in [0, 20]). With pricing, pieces are
+    // halved only while the object tests saved pay for the evaluations.
+    static TimeSweep of(const IntelligentObject& object, const Interval& time, int max_depth,
+                        const SweepPricing& pricing = {});
 
     const Interval& time() const { return time_; }
     int depth() const { return depth_; }

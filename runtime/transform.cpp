@@ -30,10 +30,7 @@ glm::dmat4 axis_rotation(int axis, double degrees) {
 
 bool TransformStep::depends_on_time() const {
     if (vector.depends_on_time() || amount.depends_on_time()) return true;
-    if (kind == TransformKind::Matrix)
-        for (const auto& f : matrix)
-            if (f.depends_on_time()) return true;
-    return false;
+    return kind == TransformKind::Matrix && matrix.depends_on_time();
 }
 
 glm::dmat4 TransformStep::matrix_at(double t) const {

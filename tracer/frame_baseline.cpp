@@ -22,7 +22,7 @@ public:
                   Counters& counters)
         : objects_(std::move(objects)), animation_(animation), options_(options) {
         const auto start = std::chrono::steady_clock::now();
-        swept_ = SweptObjects::of(objects_.bounded, animation.time());
+        swept_ = SweptObjects::of(objects_.bounded, animation, options);
         counters.build_seconds +=
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }

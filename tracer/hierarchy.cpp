@@ -41,10 +41,21 @@ BoundStyle parse_bound_style(const std::string& name) {
 }
 
 SweptObjects SweptObjects::of(std::span<const runtime::IntelligentObject* const> objects,
-                              const Interval& time) {
+                              const Box4& scene, const BuildOptions& options) {
     SweptObjects set;
     set.objects.assign(objects.begin(), objects.end());
+    const Interval time = scene.time();
     set.time = time;
+    runtime::SweepPricing pricing;
+    pricing.object_cost = options.moving_object_cost;  // only moving objects are cut
+    // The rays spread over the objects' own extent (a camera looks at
+    // them), not over the eye and lights the root also holds.
+    Box4 extent = Box4::empty();
+    for (const auto* o : objects) extent.extend(o->box_over(time).intersection(scene));
+    const double area = surface_area(extent);
+    if (options.rays_per_frame > 0.0 && options.frame_interval > 0.0 && area > 0.0 &&
+        std::isfinite(area) && options.build_cost > 0.0)
+        pricing.ray_density = options.rays_per_frame / options.frame_interval / area;
     std::size_t moving = 0;
     for (const auto* o : objects) moving += o->moves() ? 1 : 0;
     int depth = kMaxSweepDepth;
@@ -53,7 +64,8 @@ SweptObjects SweptObjects::of(std::span<const runtime::IntelligentObject* const>
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, objects.size(), 64),
                       [&](const tbb::blocked_range<std::size_t>& r) {
                           for (std::size_t i = r.begin(); i < r.end(); ++i)
-                              set.sweeps[i] = runtime::TimeSweep::of(*objects[i], time, depth);
+                              set.sweeps[i] =
+                                  runtime::TimeSweep::of(*objects[i], time, depth, pricing);
                       });
     return set;
 }
@@ -232,6 +244,10 @@ private:
         }
         std::vector<Box4> pieces;
         for (const std::uint32_t i : objects) {
+            // A moving object's test costs more (its placement at the ray's
+            // time): its areas weigh more, relative to a still object's.
+            const double weight =
+                objects_.objects[i]->moves() ? options_.moving_object_cost / options_.object_cost : 1.0;
             const std::size_t n = std::size_t(1) << levels;
             pieces.resize(n);
             for (std::size_t p = 0; p < n; ++p)
@@ -246,7 +262,7 @@ private:
                 const double share = 1.0 / double(count);
                 double level_area = 0.0;
                 for (std::size_t p = 0; p < count; ++p) {
-                    level_area += surface_area(pieces[p]) * share;
+                    level_area += surface_area(pieces[p]) * share * weight;
                     cell[k][p].extend(pieces[p]);
                 }
                 s.time_objects[k] += level_area;
@@ -254,7 +270,7 @@ private:
                     TimeBins bins;
                     bins.count = int(count);
                     for (std::size_t p = 0; p < count; ++p) bins.bin[p] = pieces[p];
-                    fit_share = fit_linear(bins).mean_area();
+                    fit_share = fit_linear(bins).mean_area() * weight;
                 }
                 if (k == halves) {
                     halves_area = level_area;
@@ -270,7 +286,7 @@ private:
                         for (int o = 0; o < 8; ++o) {
                             const Box4 part = pieces[p].intersection(octants[o]);
                             if (part.is_empty()) continue;
-                            const double area = surface_area(part) * share;
+                            const double area = surface_area(part) * share * weight;
                             if (k == halves) {
                                 s.object_octant[o] += area * fit_share;
                                 octant_halves[o][p].extend(part);
@@ -286,7 +302,7 @@ private:
                 }
                 if (k == quarters)
                     for (std::size_t p = 0; p < count; ++p) {
-                        s.object_half[p * 2 / count] += surface_area(pieces[p]) * share;
+                        s.object_half[p * 2 / count] += surface_area(pieces[p]) * share * weight;
                         if (!pieces[p].is_empty()) in_half[p * 2 / count] = true;
                     }
                 // Up a level: the union of each pair.
@@ -455,34 +471,120 @@ private:
         return group(time.t, children, counters);
     }
 
-    // More objects than a node holds: groups of neighbours (by the middle
-    // of their boxes along the widest spread), a node each.
+    // More objects than a node holds: a small bounding volume hierarchy
+    // over them, eight-wide. The cluster with the largest area times count
+    // is cut in two where the surface-area heuristic says (sixteen bins of
+    // box centres along their widest spread, as binned SAH builders do),
+    // until there are eight; each cluster of several becomes a node below.
     NodeRef group(const Interval& time, std::vector<Child>& children, Counters& counters) const {
         if (children.size() <= std::size_t(kNodeWidth)) return bound_node(time, children, counters);
-        Box4 spread = Box4::empty();
-        std::vector<std::pair<double, std::size_t>> keys(children.size());
-        for (const Child& c : children) spread.extend(c.bins.hull().center());
-        const glm::dvec4 e = spread.extent();
-        const int axis = e.x >= e.y && e.x >= e.z ? 0 : e.y >= e.z ? 1 : 2;
-        for (std::size_t i = 0; i < children.size(); ++i)
-            keys[i] = {children[i].bins.hull().center()[axis], i};
-        std::sort(keys.begin(), keys.end());
-        const std::size_t groups =
-            std::min<std::size_t>(kNodeWidth, (children.size() + kNodeWidth - 1) / kNodeWidth);
+        struct Item {
+            Box4 box;
+            glm::dvec3 centre;
+            std::size_t index;
+        };
+        std::vector<Item> items(children.size());
+        for (std::size_t i = 0; i < children.size(); ++i) {
+            items[i].box = children[i].bins.hull();
+            items[i].centre = glm::dvec3(items[i].box.center());
+            items[i].index = i;
+        }
+        struct Cluster {
+            std::size_t begin, end;  // in items
+            double weight;           // area times count: what splitting it may save
+        };
+        const auto weigh = [&](std::size_t begin, std::size_t end) {
+            Box4 b = Box4::empty();
+            for (std::size_t k = begin; k < end; ++k) b.extend(items[k].box);
+            return Cluster{begin, end, surface_area(b) * double(end - begin)};
+        };
+        std::vector<Cluster> clusters{weigh(0, items.size())};
+        while (clusters.size() < std::size_t(kNodeWidth)) {
+            std::size_t pick = clusters.size();
+            for (std::size_t c = 0; c < clusters.size(); ++c)
+                if (clusters[c].end - clusters[c].begin > 1 &&
+                    (pick == clusters.size() || clusters[c].weight > clusters[pick].weight))
+                    pick = c;
+            if (pick == clusters.size()) break;
+            const Cluster c = clusters[pick];
+            const std::size_t middle = sah_cut(items.begin() + c.begin, items.begin() + c.end) + c.begin;
+            clusters[pick] = weigh(c.begin, middle);
+            clusters.push_back(weigh(middle, c.end));
+        }
         std::vector<Child> grouped;
-        for (std::size_t g = 0; g < groups; ++g) {
-            const std::size_t begin = g * children.size() / groups;
-            const std::size_t end = (g + 1) * children.size() / groups;
+        for (const Cluster& c : clusters) {
+            if (c.end - c.begin == 1) {
+                grouped.push_back(children[items[c.begin].index]);
+                continue;
+            }
             std::vector<Child> members;
             Child merged{{}, TimeBins::empty(children.front().bins.count)};
-            for (std::size_t k = begin; k < end; ++k) {
-                members.push_back(children[keys[k].second]);
+            for (std::size_t k = c.begin; k < c.end; ++k) {
+                members.push_back(children[items[k].index]);
                 merged.bins.add(members.back().bins);
             }
             merged.ref = group(time, members, counters);
             grouped.push_back(merged);
         }
         return bound_node(time, grouped, counters);
+    }
+
+    // Reorders [first, last) (items with .box and .centre) into two runs
+    // and returns the length of the first: the cut with the least
+    // area-times-count over sixteen bins of the centres along their widest
+    // spread; the median when the centres coincide or no cut helps.
+    template <class It>
+    static std::size_t sah_cut(It first, It last) {
+        const std::size_t n = std::size_t(last - first);
+        Box4 spread = Box4::empty();
+        for (It i = first; i != last; ++i) spread.extend(runtime::Event(i->centre, 0.0));
+        const glm::dvec4 e = spread.extent();
+        const int axis = e.x >= e.y && e.x >= e.z ? 0 : e.y >= e.z ? 1 : 2;
+        const double lo = spread.lo[axis], width = e[axis];
+        const auto median = [&] {
+            std::nth_element(first, first + n / 2, last,
+                             [axis](const auto& a, const auto& b) { return a.centre[axis] < b.centre[axis]; });
+            return n / 2;
+        };
+        if (!(width > 0.0) || !std::isfinite(width)) return median();
+        constexpr int kBins = 16;
+        std::array<Box4, kBins> box;
+        std::array<std::size_t, kBins> count{};
+        box.fill(Box4::empty());
+        const auto bin_of = [&](const auto& item) {
+            return std::clamp(int((item.centre[axis] - lo) / width * kBins), 0, kBins - 1);
+        };
+        for (It i = first; i != last; ++i) {
+            const int b = bin_of(*i);
+            box[b].extend(i->box);
+            ++count[b];
+        }
+        // Areas of everything left of each cut, then right of it.
+        std::array<double, kBins> left_cost{};
+        Box4 acc = Box4::empty();
+        std::size_t acc_count = 0;
+        for (int b = 0; b < kBins - 1; ++b) {
+            acc.extend(box[b]);
+            acc_count += count[b];
+            left_cost[b] = surface_area(acc) * double(acc_count);
+        }
+        acc = Box4::empty();
+        acc_count = 0;
+        int best = -1;
+        double best_cost = std::numeric_limits<double>::infinity();
+        for (int b = kBins - 1; b > 0; --b) {
+            acc.extend(box[b]);
+            acc_count += count[b];
+            const double cost = left_cost[b - 1] + surface_area(acc) * double(acc_count);
+            if (acc_count < n && acc_count > 0 && cost < best_cost) {
+                best_cost = cost;
+                best = b;
+            }
+        }
+        if (best < 0) return median();
+        const It middle = std::partition(first, last, [&](const auto& item) { return bin_of(item) < best; });
+        const std::size_t left = std::size_t(middle - first);
+        return left == 0 || left == n ? median() : left;
     }
 
     // One node over `time` holding the children's bounds, in the style the

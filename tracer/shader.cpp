@@ -75,7 +75,9 @@ glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, ThreadSta
                 continue;
         }
         const glm::dvec3 light_colour = rgb(light.colour, time);
-        glm::dvec3 lit = m.diffuse * std::pow(cosine, m.brilliance) * m.colour * opaque;
+        // (POV-Ray's default brilliance 1 needs no pow.)
+        const double shade = m.brilliance == 1.0 ? cosine : std::pow(cosine, m.brilliance);
+        glm::dvec3 lit = m.diffuse * shade * m.colour * opaque;
         // POV-Ray's shadowless lights are fill lights: no highlights.
         if (m.phong > 0.0 && !light.shadowless) {
             const glm::dvec3 reflected = d - 2.0 * glm::dot(d, n) * n;

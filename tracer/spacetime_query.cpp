@@ -14,9 +14,10 @@ using runtime::Box4;
 using runtime::ObjectHit;
 using runtime::Ray4;
 
-SweptObjects timed_sweeps(const ObjectSet& objects, const Box4& animation, Counters& counters) {
+SweptObjects timed_sweeps(const ObjectSet& objects, const Box4& animation,
+                          const BuildOptions& options, Counters& counters) {
     const auto start = std::chrono::steady_clock::now();
-    SweptObjects swept = SweptObjects::of(objects.bounded, animation.time());
+    SweptObjects swept = SweptObjects::of(objects.bounded, animation, options);
     counters.build_seconds +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return swept;
@@ -26,7 +27,7 @@ class SpacetimeQuery final : public RayQuery {
 public:
     SpacetimeQuery(ObjectSet objects, const Box4& animation, const BuildOptions& options,
                    Counters& counters)
-        : objects_(std::move(objects)), swept_(timed_sweeps(objects_, animation, counters)),
+        : objects_(std::move(objects)), swept_(timed_sweeps(objects_, animation, options, counters)),
           hierarchy_(swept_, hierarchy_root(swept_, animation, options), options, counters) {}
 
     void prepare_frame(double, double, Counters&) override {}

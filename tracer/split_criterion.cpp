@@ -25,12 +25,14 @@ Split paper_split(const PaperSummary& s, std::size_t max_objects, double max_occ
 
 namespace {
 
-// The node tests a leaf of n objects costs: one, and one per group of a
-// node's width beyond it (the cell's own leaf only: children are priced as
-// leaves of one node, since they will be split further where that pays,
-// as SAH builders price them).
+// The node tests a leaf of n objects costs (the cell's own leaf only:
+// children are priced as leaves of one node, since they will be split
+// further where that pays, as SAH builders price them).
 double leaf_nodes(std::size_t n) {
-    return 1.0 + (n > std::size_t(kNodeWidth) ? std::ceil(double(n) / kNodeWidth) : 0.0);
+    if (n <= std::size_t(kNodeWidth)) return 1.0;
+    // The objects' own small hierarchy (hierarchy.cpp, group): about two
+    // node tests per level of eight.
+    return 1.0 + 2.0 * std::log(double(n) / kNodeWidth) / std::log(double(kNodeWidth));
 }
 
 // The halving of time priced as one level, or as k levels when that is

@@ -24,11 +24,12 @@ hexant::runtime::SceneDescription parse(const std::string& text, int frames = 2)
 
 // The counters of rendering every frame of the scene in one mode.
 tr::Counters counters_of(const hexant::runtime::SceneDescription& scene, tr::Mode mode,
-                         tr::BuildKind build = tr::BuildKind::Lazy, bool priced = true) {
+                         tr::BuildKind build = tr::BuildKind::Lazy,
+                         tr::Criterion criterion = tr::Criterion::Cost) {
     tr::RenderSettings settings;
     settings.mode = mode;
     settings.build.build = build;
-    if (!priced) settings.build.build_cost = 0.0;
+    settings.build.criterion = criterion;
     settings.samples_per_pixel = 2;
     tr::Renderer renderer(scene, settings);
     for (int k = scene.animation.initial_frame; k <= scene.animation.final_frame; ++k)
@@ -55,13 +56,15 @@ box { <-4, -0.2, -2>, <4, 0, 3> pigment { rgb 0.5 } }
 TEST_CASE("a static scene builds no time splits and the same hierarchy as in 3D",
           "[tracer][pay]") {
     const auto scene = parse(kCamera + kStaticObjects, 2);
-    // Built whole, so that the cells are counted alike, and without pricing
-    // the build against the rays (a hierarchy over two frames expects twice
-    // a frame's rays, and rightly splits more).
+    // Built whole, so that the cells are counted alike, by the paper's rule,
+    // which cuts thirteen objects into cells whatever the rays (the cost
+    // criterion prices a hierarchy over two frames against twice a frame's
+    // rays, and rightly builds it otherwise).
     const tr::Counters spacetime =
-        counters_of(scene, tr::Mode::Spacetime, tr::BuildKind::Eager, false);
+        counters_of(scene, tr::Mode::Spacetime, tr::BuildKind::Eager, tr::Criterion::Paper);
     // The same builder in 3D, once per frame.
-    const tr::Counters frames = counters_of(scene, tr::Mode::Frames, tr::BuildKind::Eager, false);
+    const tr::Counters frames =
+        counters_of(scene, tr::Mode::Frames, tr::BuildKind::Eager, tr::Criterion::Paper);
     CHECK(spacetime.time_splits == 0);
     CHECK(frames.time_splits == 0);
     // The same hierarchy, built once instead of once per frame: nothing

@@ -12,9 +12,12 @@ namespace tr = hexant::tracer;
 
 namespace {
 
-// n objects, each of area `each` over the cell's time, in a cell of area 1;
-// its octants and halves hold them as `spread` says.
-tr::CostSummary summary(std::size_t n, double each) {
+// n objects, each of area `each` over the cell's time, in a cell of area 1.
+// `octant_share`: the objects' areas summed inside one octant, as a share
+// of their areas in the whole cell (small objects each in one octant:
+// 1/8; a long diagonal object whose pieces hug it: less than 1/8 of its
+// box's area in each octant; a box filling the cell: 1/4).
+tr::CostSummary summary(std::size_t n, double each, double octant_share = 1.0 / 8.0) {
     tr::CostSummary s;
     s.objects = n;
     s.cell = 1.0;
@@ -26,12 +29,12 @@ tr::CostSummary summary(std::size_t n, double each) {
     }
     for (int o = 0; o < 8; ++o) {
         s.octant[o] = 0.25;  // each octant's bound a quarter of the cell's area
-        s.object_octant[o] = s.object_cell / 8.0;
-        s.count_octant[o] = n / 8;
+        s.object_octant[o] = octant_share * s.object_cell;
+        s.count_octant[o] = n;
         for (int h = 0; h < 2; ++h) {
             s.octant_half[o][h] = 0.125;
-            s.object_octant_half[o][h] = s.object_cell / 16.0;
-            s.count_octant_half[o][h] = n / 8;
+            s.object_octant_half[o][h] = 0.5 * octant_share * s.object_cell;
+            s.count_octant_half[o][h] = n;
         }
     }
     s.time_levels = 0;
@@ -58,22 +61,24 @@ TEST_CASE("the paper's criterion: count, then density; time only where something
     CHECK(tr::paper_needs_occupancy(s, 3));
 }
 
-TEST_CASE("the cost criterion separates many objects, keeps few, and weighs the build against "
-          "the rays", "[tracer][split]") {
+TEST_CASE("the cost criterion cuts objects whose boxes it tightens, keeps the rest together, and "
+          "weighs the build against the rays", "[tracer][split]") {
     tr::CostPrices free;
-    // 64 objects spread over the octants: splitting space pays.
-    CHECK(tr::cost_split(summary(64, 0.05), free, false) == tr::Split::Space);
-    // One object: nothing to separate.
-    CHECK(tr::cost_split(summary(1, 0.5), free, false) == tr::Split::Leaf);
-    // The same 64 objects when few rays will ever meet the cell: not worth
-    // building (64 * 1.25 references at 100 node tests each, against a
-    // saving of a few node tests per ray).
+    // 16 long diagonal objects across the cell: their pieces in the octants
+    // hug them (a fortieth of each box's area per octant): splitting pays.
+    CHECK(tr::cost_split(summary(16, 0.8, 1.0 / 40.0), free, false) == tr::Split::Space);
+    // 16 boxes that fill the cell: cutting them only copies them (their
+    // pieces' areas add up to more than theirs), and each is tested once
+    // per ray anyway (the mailbox): a leaf.
+    CHECK(tr::cost_split(summary(16, 0.8, 1.0 / 4.0), free, false) == tr::Split::Leaf);
+    // The diagonal ones when few rays will ever meet the cell: not worth
+    // building (8 * 16 references at 100 node tests each).
     tr::CostPrices priced;
     priced.build = 100.0;
     priced.rays = 10.0;
-    CHECK(tr::cost_split(summary(64, 0.05), priced, false) == tr::Split::Leaf);
+    CHECK(tr::cost_split(summary(16, 0.8, 1.0 / 40.0), priced, false) == tr::Split::Leaf);
     priced.rays = 1e6;
-    CHECK(tr::cost_split(summary(64, 0.05), priced, false) == tr::Split::Space);
+    CHECK(tr::cost_split(summary(16, 0.8, 1.0 / 40.0), priced, false) == tr::Split::Space);
 }
 
 TEST_CASE("the cost criterion looks several halvings ahead in time", "[tracer][split]") {
