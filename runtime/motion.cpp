@@ -70,7 +70,7 @@ constexpr std::size_t kStackAmounts = 48;
 template <class N>
 struct MotionEvaluator {
     const Motion& motion;
-    std::array<N, kStackAmounts> stack{};
+    std::array<N, kStackAmounts> stack;  // written by the tape before it is read
     std::vector<N> heap;
     N* amounts = nullptr;
 
@@ -124,6 +124,18 @@ struct MotionEvaluator {
             default: break;
         }
         throw std::logic_error("Motion: a deformation step in an affine stage");
+    }
+
+    // m = (the stage's map) * m, forward only: a moving stage's steps
+    // applied to m in place, a constant one multiplied in. The point, the
+    // interval and the placement evaluations all compose this way, in this
+    // order, so that the interval one encloses the others exactly.
+    void compose(const Motion::Stage& stage, AffineMap<N>& m) const {
+        if (stage.kind == Motion::StageKind::Fixed) {
+            m = AffineMap<N>::from(stage.forward) * m;
+            return;
+        }
+        for (const auto& s : stage.steps) apply_step(s, false, m);
     }
 
     // A moving stage's map: its steps in order (or undone in reverse order).
@@ -420,8 +432,7 @@ glm::dmat4 Motion::matrix_at(double t) const {
     if (!affine_) throw std::logic_error("Motion::matrix_at on a deformed object");
     const MotionEvaluator<double> e(*this, t);
     AffineMap<double> m = AffineMap<double>::identity();
-    for (const Stage& stage : stages_)
-        m = (stage.kind == StageKind::Fixed ? stage.forward : e.stage_map(stage, false)) * m;
+    for (const Stage& stage : stages_) e.compose(stage, m);
     return to_glm(m);
 }
 
@@ -440,9 +451,7 @@ Motion::Placement Motion::placement_at(double t) const {
     if (!affine_) throw std::logic_error("Motion::placement_at on a deformed object");
     const MotionEvaluator<double> e(*this, t);
     AffineMap<double> forward = AffineMap<double>::identity();
-    for (const Stage& stage : stages_)
-        forward = (stage.kind == StageKind::Fixed ? stage.forward : e.stage_map(stage, false)) *
-                  forward;
+    for (const Stage& stage : stages_) e.compose(stage, forward);
     // The inverse from the matrix itself (its adjugate over its
     // determinant), not from the steps again: a moving object pays one
     // evaluation of its sines and cosines per ray, not two. Each entry is
@@ -456,10 +465,7 @@ IntervalAffine Motion::matrix_over(const Interval& t) const {
     if (!affine_) throw std::logic_error("Motion::matrix_over on a deformed object");
     const MotionEvaluator<Interval> e(*this, t);
     IntervalAffine m = IntervalAffine::identity();
-    for (const Stage& stage : stages_)
-        m = (stage.kind == StageKind::Fixed ? IntervalAffine::from(stage.forward)
-                                            : e.stage_map(stage, false)) *
-            m;
+    for (const Stage& stage : stages_) e.compose(stage, m);
     return m;
 }
 

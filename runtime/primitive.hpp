@@ -129,12 +129,20 @@ public:
         SurfacePoint p;
         p.event = hit.event;
         p.geometric_normal = transform_normal(linear, hit.object_normal, facing);
-        p.shading_normal = transform_normal(linear, hit.object_shading_normal, p.geometric_normal);
+        // (Only a smooth triangle's shading normal differs from its own.)
+        p.shading_normal = hit.object_shading_normal == hit.object_normal
+                               ? p.geometric_normal
+                               : transform_normal(linear, hit.object_shading_normal, p.geometric_normal);
         if (hit.flipped) {
             p.geometric_normal = -p.geometric_normal;
             p.shading_normal = -p.shading_normal;
         }
-        p.uv = hit.uv;
+        // A model may leave its texture coordinates to be formed here, for
+        // the one hit that is shaded.
+        if constexpr (requires { Model::uv(hit.object_normal); })
+            p.uv = Model::uv(hit.object_normal);
+        else
+            p.uv = hit.uv;
         p.material = texture_.at(glm::dvec3(hit.event), t);
         return p;
     }

@@ -62,7 +62,8 @@ glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, ThreadSta
 
     const glm::dvec3 start = runtime::geometry::offset_ray(point, geometric);
     for (const Light& light : lights_) {
-        glm::dvec3 to_light = light.position_at(time) - point;
+        const glm::dvec3 light_position = light.position_at(time);
+        glm::dvec3 to_light = light_position - point;
         const double distance = glm::length(to_light);
         if (!(distance > 0.0)) continue;
         to_light /= distance;
@@ -71,7 +72,7 @@ glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, ThreadSta
         if (!light.shadowless) {
             ++state.counters.shadow_rays;
             const Ray4 shadow{Event(start, time), Event(to_light, 0.0)};
-            if (query_.occluded(shadow, 0.0, glm::length(light.position_at(time) - start), state))
+            if (query_.occluded(shadow, 0.0, glm::length(light_position - start), state))
                 continue;
         }
         const glm::dvec3 light_colour = rgb(light.colour, time);

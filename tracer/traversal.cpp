@@ -98,8 +98,10 @@ bool TraversalRay::prepare(const Ray4& ray, bool with_diagonals) {
         const double e = error * std::fabs(inv) * (1.0 + 0x1p-20);
         (j < 3 ? box : slab) = std::max(j < 3 ? box : slab, e);
     }
-    epsilon_box = float_up(2.0 * box);
-    epsilon_slab = float_up(2.0 * std::max(box, slab));
+    // Rounded up by the factor, not by nextafter: the conversion to float
+    // loses at most 2^-24 of it.
+    epsilon_box = static_cast<float>(2.0 * box * (1.0 + 0x1p-20));
+    epsilon_slab = static_cast<float>(2.0 * std::max(box, slab) * (1.0 + 0x1p-20));
     if (!std::isfinite(epsilon_box) || !std::isfinite(epsilon_slab)) return false;
     half_time = static_cast<float>(0.5 * time);
     return true;

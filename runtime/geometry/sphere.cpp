@@ -13,6 +13,8 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
+}  // namespace
+
 glm::dvec2 sphere_uv(const glm::dvec3& n) {
     double u = std::atan2(n.z, n.x) / (2.0 * kPi);
     if (u < 0.0) u += 1.0;
@@ -20,8 +22,6 @@ glm::dvec2 sphere_uv(const glm::dvec3& n) {
     const double v = 0.5 + std::asin(std::clamp(n.y, -1.0, 1.0)) / kPi;
     return {u, v};
 }
-
-}  // namespace
 
 std::optional<SurfaceHit> intersect(const SphereGeometry& sphere, const Ray3& ray, double s_min,
                                     double s_max) {
@@ -50,7 +50,7 @@ std::optional<SurfaceHit> intersect(const SphereGeometry& sphere, const Ray3& ra
         const double len = safe_length(radial);
         hit.normal = len > 0.0 ? radial / len : glm::dvec3(0.0, 1.0, 0.0);
         hit.shading_normal = hit.normal;
-        hit.uv = sphere_uv(hit.normal);
+        hit.uv = glm::dvec2(0.0);  // sphere_uv(normal), when the hit is shaded
         hit.part = 0;
         hit.point = local->at(t);
         if (is_finite(hit)) return hit;

@@ -24,6 +24,9 @@ public:
     double surface_motion(const Interval& t, const Geometry& mid) const {
         return deviation(center_, t, mid.center) + deviation(radius_, t, mid.radius);
     }
+    // Texture coordinates of a hit, from its object-space normal (the
+    // routine leaves them to this: runtime/geometry/sphere.hpp).
+    static glm::dvec2 uv(const glm::dvec3& object_normal) { return geometry::sphere_uv(object_normal); }
     static double volume(const Geometry& g) {
         return g.radius > 0.0 ? 4.0 / 3.0 * std::numbers::pi * g.radius * g.radius * g.radius
                               : 0.0;
