@@ -103,16 +103,14 @@ Point measure(const runtime::SceneDescription& scene, tracer::Mode mode, int spp
     settings.sample_seed = sample_seed;
     settings.threads = args.threads;
     settings.build = args.hierarchy.options();
+    settings.first_frame = settings.last_frame = frame;
     tracer::Renderer renderer(scene, settings);
     tracer::write_image(renderer.render_frame(frame), image);
     const tracer::Counters& c = renderer.counters();
-    const int frames = scene.animation.final_frame - scene.animation.initial_frame + 1;
-    // An eager spacetime build serves every frame: the frame's share is a
-    // part of it. A lazy one built only what this frame's rays reached, and
-    // a frame-by-frame one only this frame's: charged whole.
-    const bool shared = mode == tracer::Mode::Spacetime &&
-                        settings.build.build == tracer::BuildKind::Eager;
-    const double build_share = shared ? c.build_seconds / std::max(1, frames) : c.build_seconds;
+    // The renderer builds for this frame's time only (RenderSettings'
+    // first and last frame), in either mode: its build is the frame's own,
+    // charged whole.
+    const double build_share = c.build_seconds;
     return {mode, spp, build_share + c.render_seconds, build_share, c.render_seconds, c.rays(), {}};
 }
 

@@ -166,6 +166,8 @@ Counters render_mode(const runtime::SceneDescription& scene, const RenderArgumen
     settings.sample_seed = args.seed;
     settings.threads = args.threads;
     settings.build = args.hierarchy.options();
+    settings.first_frame = frames.front();
+    settings.last_frame = frames.back();
     settings.build.count_full = args.stats || args.compare || args.stats_json.has_value();
     settings.progress = isatty(STDERR_FILENO);
     const double start_mb = resident_mb();

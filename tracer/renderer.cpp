@@ -5,6 +5,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
+#include <string>
 
 #include <glm/geometric.hpp>
 #include <tbb/blocked_range2d.h>
@@ -23,16 +25,20 @@ namespace {
 using runtime::Box4;
 using runtime::Event;
 
-// The root cell: the objects' extent over the animation, the eye and the
-// lights at every frame's opening and closing.
-Box4 animation_root(const runtime::SceneDescription& scene, const ObjectSet& objects) {
+// The root cell: the objects' extent over frames first..last (their
+// shutters' span), the eye and the lights at each of those frames' opening
+// and closing.
+Box4 animation_root(const runtime::SceneDescription& scene, const ObjectSet& objects, int first,
+                    int last) {
     const auto& a = scene.animation;
-    Box4 root = enclosing_box(objects, a.time_begin(), a.time_end());
+    const double begin = a.clock_of_frame(first);
+    const double end = a.clock_of_frame(last) + a.shutter * a.clock_delta();
+    Box4 root = enclosing_box(objects, begin, end);
     const auto add = [&](const glm::dvec3& p) {
-        root.extend(Event(p, a.time_begin()));
-        root.extend(Event(p, a.time_end()));
+        root.extend(Event(p, begin));
+        root.extend(Event(p, end));
     };
-    for (int f = a.initial_frame; f <= a.final_frame; ++f) {
+    for (int f = first; f <= last; ++f) {
         const double open = a.clock_of_frame(f);
         for (const double t : {open, open + a.shutter * a.clock_delta()}) {
             add(scene.camera.evaluate(t).location);
@@ -57,13 +63,19 @@ Box4 animation_root(const runtime::SceneDescription& scene, const ObjectSet& obj
 }  // namespace
 
 Renderer::Renderer(const runtime::SceneDescription& scene, const RenderSettings& settings)
-    : scene_(scene), settings_(settings) {
+    : scene_(scene), settings_(settings),
+      first_frame_(settings.first_frame > 0 ? settings.first_frame : scene.animation.initial_frame),
+      last_frame_(settings.last_frame > 0 ? settings.last_frame : scene.animation.final_frame) {
+    if (first_frame_ < scene.animation.initial_frame || last_frame_ > scene.animation.final_frame ||
+        first_frame_ > last_frame_)
+        throw std::out_of_range("frames " + std::to_string(first_frame_) + " to " +
+                                std::to_string(last_frame_) + " are not all in the animation");
     for (const auto& record : scene.objects)
         runtime::make_intelligent_objects(*record, scene.default_texture, objects_);
     counters_.objects = objects_.size();
     const ObjectSet set = ObjectSet::of(objects_);
     const std::uint64_t maps = runtime::this_thread_work.deformation_maps;
-    root_ = animation_root(scene, set);
+    root_ = animation_root(scene, set, first_frame_, last_frame_);
     counters_.deformation_maps += runtime::this_thread_work.deformation_maps - maps;
     // What the cost criterion weighs a split against: the rays of a frame
     // (primary, and a shadow ray per light that casts shadows; reflections
@@ -84,6 +96,10 @@ Renderer::Renderer(const runtime::SceneDescription& scene, const RenderSettings&
 Renderer::~Renderer() = default;
 
 Image Renderer::render_frame(int frame) {
+    if (frame < first_frame_ || frame > last_frame_)
+        throw std::out_of_range("frame " + std::to_string(frame) + " is not among the frames " +
+                                std::to_string(first_frame_) + " to " +
+                                std::to_string(last_frame_) + " this renderer was built for");
     const auto& a = scene_.animation;
     const double open = a.clock_of_frame(frame);
     const double length = a.shutter * a.clock_delta();

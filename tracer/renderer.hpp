@@ -29,6 +29,11 @@ struct RenderSettings {
     BuildOptions build;
     int threads = 0;        // 0: as many as the machine has
     bool progress = false;  // a progress line on stderr
+    // The frames that will be rendered, first and last (0: the animation's
+    // own). The spacetime hierarchy spans their time only: rendering one
+    // frame of a long animation builds for that frame's time, not for the
+    // whole animation. render_frame() refuses frames outside.
+    int first_frame = 0, last_frame = 0;
 };
 
 class Renderer {
@@ -38,7 +43,8 @@ public:
     Renderer(const runtime::SceneDescription& scene, const RenderSettings& settings);
     ~Renderer();
 
-    // Frame numbers as the animation counts them (initial_frame ..).
+    // Frame numbers as the animation counts them (initial_frame ..), within
+    // the settings' first and last frame; std::out_of_range otherwise.
     Image render_frame(int frame);
 
     const Counters& counters() const { return counters_; }
@@ -54,6 +60,7 @@ private:
     RenderSettings settings_;
     std::vector<runtime::IntelligentObjectPtr> objects_;
     runtime::Box4 root_;
+    int first_frame_, last_frame_;
     Counters counters_;
     std::unique_ptr<RayQuery> query_;
     std::unique_ptr<Shader> shader_;

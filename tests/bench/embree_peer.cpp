@@ -804,6 +804,8 @@ Row run_hexant(const Job& job, tracer::Mode mode, int spp, int first, int last, 
     settings.mode = mode;
     settings.samples_per_pixel = spp;
     settings.threads = threads;
+    settings.first_frame = first;  // the hierarchy spans these frames' time
+    settings.last_frame = last;
     tracer::Renderer renderer(job.scene, settings);
     for (int f = first; f <= last; ++f) {
         tracer::Image image = renderer.render_frame(f);
@@ -878,7 +880,7 @@ void time_to_error(const Job& job, const PeerScene& peer, RTCDevice device,
                 job.name.c_str(), job.error_frame, job.scene.animation.width,
                 job.scene.animation.height, job.reference_spp);
     std::printf(
-        "  hexant spacetime: a new Renderer per count, build (lazy: charged whole) + render;\n"
+        "  hexant spacetime: a new Renderer per count, over that frame's time: build + render;\n"
         "  embree K=%d: that frame's scene build + render.\n",
         kSegments);
     std::printf("  %5s %18s %12s %16s %12s\n", "spp", "hexant spacetime s", "RMSE",
@@ -960,6 +962,7 @@ void run_job(const Job& job, const Options& options, RTCDevice device, int threa
         settings.samples_per_pixel = job.reference_spp;
         settings.sample_seed = 1;  // independent of the measured renders' samples
         settings.threads = threads;
+        settings.first_frame = settings.last_frame = job.error_frame;
         tracer::Renderer renderer(job.scene, settings);
         reference = renderer.render_frame(job.error_frame);
     }
@@ -1041,8 +1044,8 @@ int run(const Options& options) {
         "%s", options.quick ? "mode      --quick (a smoke test: the figures mean nothing)\n" : "");
     std::printf(
         "legend    hexant spacetime/frames: hexant's Renderer (Owen-scrambled Sobol' samples over\n"
-        "          pixel and shutter); build s = its counters' build time (sweeps and lazy cells,\n"
-        "          summed over threads), render s = its frames' render time.\n"
+        "          pixel and shutter); build s = its build before the frames (sweeps, the root;\n"
+        "          a lazy build's cells are built inside the render), render s = its frames'.\n"
         "          embree K=n: one Embree scene per frame, spheres on n linear motion segments\n"
         "          through hexant's exact motion at n+1 instants; stratified jitter (sqrt(spp)^2\n"
         "          grid, else N rooks) with an independent uniform time per sample (PCG32 by "

@@ -177,3 +177,19 @@ TEST_CASE("threads racing through a cold lazy hierarchy find what one thread fin
         CHECK(wrong.load() == 0);
     }
 }
+
+TEST_CASE("a renderer built for some frames' time gives the whole animation's images, and "
+          "refuses other frames", "[tracer][build]") {
+    const auto scene = example("atom", 32);
+    tr::RenderSettings whole;
+    whole.samples_per_pixel = 2;
+    tr::RenderSettings one = whole;
+    one.first_frame = one.last_frame = 22;
+    tr::Renderer all_frames(scene, whole), frame_22(scene, one);
+    CHECK(differing(frame_22.render_frame(22), all_frames.render_frame(22)) == 0);
+    CHECK_THROWS_AS(frame_22.render_frame(23), std::out_of_range);
+    tr::RenderSettings outside = whole;
+    outside.first_frame = 60;
+    outside.last_frame = 65;  // atom has 64
+    CHECK_THROWS_AS(tr::Renderer(scene, outside), std::out_of_range);
+}
