@@ -478,27 +478,37 @@ private:
     // until there are eight; each cluster of several becomes a node below.
     NodeRef group(const Interval& time, std::vector<Child>& children, Counters& counters) const {
         if (children.size() <= std::size_t(kNodeWidth)) return bound_node(time, children, counters);
-        struct Item {
-            Box4 box;
-            glm::dvec3 centre;
-            std::size_t index;
-        };
         std::vector<Item> items(children.size());
         for (std::size_t i = 0; i < children.size(); ++i) {
             items[i].box = children[i].bins.hull();
             items[i].centre = glm::dvec3(items[i].box.center());
             items[i].index = i;
         }
+        return group_range(time, children, items, 0, items.size(), counters);
+    }
+
+    struct Item {
+        Box4 box;
+        glm::dvec3 centre;
+        std::size_t index;  // into the children
+    };
+
+    // The node over items [begin, end) (more than a node's width); the
+    // items are reordered in place, the children only read (each copied
+    // once, into the node that holds it).
+    NodeRef group_range(const Interval& time, const std::vector<Child>& children,
+                        std::vector<Item>& items, std::size_t begin, std::size_t end,
+                        Counters& counters) const {
         struct Cluster {
             std::size_t begin, end;  // in items
             double weight;           // area times count: what splitting it may save
         };
-        const auto weigh = [&](std::size_t begin, std::size_t end) {
-            Box4 b = Box4::empty();
-            for (std::size_t k = begin; k < end; ++k) b.extend(items[k].box);
-            return Cluster{begin, end, surface_area(b) * double(end - begin)};
+        const auto weigh = [&](std::size_t b, std::size_t e) {
+            Box4 box = Box4::empty();
+            for (std::size_t k = b; k < e; ++k) box.extend(items[k].box);
+            return Cluster{b, e, surface_area(box) * double(e - b)};
         };
-        std::vector<Cluster> clusters{weigh(0, items.size())};
+        std::vector<Cluster> clusters{weigh(begin, end)};
         while (clusters.size() < std::size_t(kNodeWidth)) {
             std::size_t pick = clusters.size();
             for (std::size_t c = 0; c < clusters.size(); ++c)
@@ -512,18 +522,22 @@ private:
             clusters.push_back(weigh(middle, c.end));
         }
         std::vector<Child> grouped;
+        grouped.reserve(clusters.size());
         for (const Cluster& c : clusters) {
             if (c.end - c.begin == 1) {
                 grouped.push_back(children[items[c.begin].index]);
                 continue;
             }
-            std::vector<Child> members;
             Child merged{{}, TimeBins::empty(children.front().bins.count)};
-            for (std::size_t k = c.begin; k < c.end; ++k) {
-                members.push_back(children[items[k].index]);
-                merged.bins.add(members.back().bins);
+            for (std::size_t k = c.begin; k < c.end; ++k) merged.bins.add(children[items[k].index].bins);
+            if (c.end - c.begin <= std::size_t(kNodeWidth)) {
+                std::vector<Child> members;
+                members.reserve(c.end - c.begin);
+                for (std::size_t k = c.begin; k < c.end; ++k) members.push_back(children[items[k].index]);
+                merged.ref = bound_node(time, members, counters);
+            } else {
+                merged.ref = group_range(time, children, items, c.begin, c.end, counters);
             }
-            merged.ref = group(time, members, counters);
             grouped.push_back(merged);
         }
         return bound_node(time, grouped, counters);
