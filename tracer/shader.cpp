@@ -26,16 +26,29 @@ constexpr double kBailout = 1.0 / 255.0;
 }  // namespace
 
 glm::dvec3 Shader::Light::position_at(double t) const {
+    if (still_position) return fixed_position;
     const glm::dvec3 p = position(t);
     if (transform.empty()) return p;
     return glm::dvec3(transform.matrix_at(t) * glm::dvec4(p, 1.0));
 }
 
+glm::dvec3 Shader::Light::colour_at(double t) const {
+    return still_colour ? fixed_colour : rgb(colour, t);
+}
+
 Shader::Shader(const runtime::SceneDescription& scene, const RayQuery& query)
     : query_(query), background_(scene.background), ambient_light_(scene.global.ambient_light),
       max_trace_level_(std::max(1, scene.global.max_trace_level)) {
-    for (const auto& l : scene.lights)
-        lights_.push_back({l.position, l.transform, l.colour, l.shadowless});
+    for (const auto& l : scene.lights) {
+        Light light{l.position, l.transform, l.colour, l.shadowless};
+        light.fixed_position = light.position_at(0.0);
+        light.still_position = !l.position.depends_on_time() && !l.transform.depends_on_time();
+        light.fixed_colour = rgb(l.colour, 0.0);
+        light.still_colour = !l.colour.depends_on_time();
+        lights_.push_back(light);
+    }
+    still_ambient_ = !ambient_light_.depends_on_time();
+    fixed_ambient_ = rgb(ambient_light_, 0.0);
 }
 
 glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, ThreadState& state) const {
@@ -58,7 +71,8 @@ glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, ThreadSta
     if (glm::dot(n, d) > 0.0) n = geometric;  // an interpolated normal facing away
 
     const double opaque = std::clamp(1.0 - m.filter - m.transmit, 0.0, 1.0);
-    glm::dvec3 colour = m.colour * (m.ambient * rgb(ambient_light_, time) + m.emission) * opaque;
+    const glm::dvec3 ambient = still_ambient_ ? fixed_ambient_ : rgb(ambient_light_, time);
+    glm::dvec3 colour = m.colour * (m.ambient * ambient + m.emission) * opaque;
 
     const glm::dvec3 start = runtime::geometry::offset_ray(point, geometric);
     for (const Light& light : lights_) {
@@ -75,7 +89,7 @@ glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, ThreadSta
             if (query_.occluded(shadow, 0.0, glm::length(light_position - start), state))
                 continue;
         }
-        const glm::dvec3 light_colour = rgb(light.colour, time);
+        const glm::dvec3 light_colour = light.colour_at(time);
         // (POV-Ray's default brilliance 1 needs no pow.)
         const double shade = m.brilliance == 1.0 ? cosine : std::pow(cosine, m.brilliance);
         glm::dvec3 lit = m.diffuse * shade * m.colour * opaque;

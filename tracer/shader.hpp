@@ -26,12 +26,17 @@ public:
     }
 
 private:
+    // A light as the shader reads it: a still light's position and colour
+    // evaluated once, a moving one's at each hit's time.
     struct Light {
         runtime::Vector3Function position;
         runtime::Transform transform;
         runtime::ColourFunction colour;
         bool shadowless = false;
+        bool still_position = false, still_colour = false;
+        glm::dvec3 fixed_position{0.0}, fixed_colour{0.0};
         glm::dvec3 position_at(double t) const;
+        glm::dvec3 colour_at(double t) const;
     };
 
     glm::dvec3 radiance(const runtime::Ray4& ray, int depth, double weight,
@@ -41,6 +46,8 @@ private:
     std::vector<Light> lights_;
     runtime::ColourFunction background_;
     runtime::ColourFunction ambient_light_;
+    bool still_ambient_ = false;
+    glm::dvec3 fixed_ambient_{0.0};
     int max_trace_level_;
 };
 

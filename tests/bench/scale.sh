@@ -9,6 +9,7 @@
 #
 #   sh tests/bench/scale.sh                     # everything (the 10^5 runs take minutes)
 #   SCALE_N="1000 10000" SCALE_FRAMES=16 sh tests/bench/scale.sh
+#   SCALE_RUNS="spacetime/lazy frames/lazy" ...  # only these mode/build pairs
 #
 # Times are wall-clock on whatever machine runs it: quote them with the
 # date, machine and commit printed at the top, never as limits.
@@ -18,6 +19,7 @@ hexant=${HEXANT:-build/hexant}
 sizes=${SCALE_N:-"1000 10000 100000"}
 frame_counts=${SCALE_FRAMES:-"16 64"}
 spp=${SCALE_SPP:-4}
+runs=${SCALE_RUNS:-"spacetime/lazy spacetime/eager frames/lazy"}
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 
@@ -36,8 +38,8 @@ printf '%7s %6s %-16s %9s %9s %9s %9s %10s %8s %8s %8s %8s %8s\n' \
     N frames mode build_s render_s cells full_cells obj_refs nodes_MB sweep_MB start_MB peak_MB Mrays/s
 for frames in $frame_counts; do
     for n in $sizes; do
-        for run in "spacetime lazy" "spacetime eager" "frames lazy"; do
-            set -- $run
+        for run in $runs; do
+            set -- $(echo "$run" | tr / ' ')
             json="$out/$1-$2-$n-$frames.json"
             "$hexant" render examples/swarm.pov examples/swarm.ini --declare "N=$n" \
                 --frame-count "$frames" --spp "$spp" --mode "$1" --build "$2" \
