@@ -146,36 +146,54 @@ TimeSweep TimeSweep::of(const IntelligentObject& object, const Interval& time, i
     sweep.time_ = time;
     std::vector<Box4> level{object.box_over(time)};
     int depth = 0;
-    // Halve every piece while any piece swept much more than the object's
-    // size at its middle instant (see swept_bound.hpp for the factor).
-    while (depth < max_depth && object.moves() && time.lo < time.hi) {
-        sweep.depth_ = depth;
-        bool refine = false;
-        // Tests saved by halving: about the share of each swept piece's
-        // area that exceeds the object's own, for the rays that meet it.
-        double saved = 0.0;
-        for (std::size_t i = 0; i < level.size(); ++i) {
-            const Interval t = sweep.piece_time(i);
-            const double mid = t.mid();
-            if (!(t.lo < mid && mid < t.hi)) continue;
-            const double swept = largest_extent(level[i]);
-            const double instant = largest_extent(object.box_over(Interval(mid)));
-            if (!(swept > kSweptBoundGrowth * instant)) continue;
-            refine = true;
-            if (!(pricing.ray_density > 0.0)) break;
-            const glm::dvec4 e = level[i].extent();
-            const double area = 2.0 * (e.x * e.y + e.y * e.z + e.z * e.x);
-            saved += pricing.ray_density * area * t.width() * 0.5 * (1.0 - instant / swept);
+    if (object.moves() && time.lo < time.hi && max_depth > 0 && !level.front().is_empty()) {
+        // How finely to cut: the object's size at one instant, and its
+        // speed measured over three short probes (start, middle, end); a
+        // piece should sweep at most (kSweptBoundGrowth - 1) sizes.
+        const double width = time.hi - time.lo;
+        const double size = largest_extent(object.box_over(Interval(time.mid())));
+        const double probe = width / double(std::size_t(1) << max_depth);
+        double speed = 0.0;
+        for (const double start : {time.lo, time.mid() - 0.5 * probe, time.hi - probe}) {
+            const double swept = largest_extent(object.box_over(Interval(start, start + probe)));
+            speed = std::max(speed, (swept - size) / probe);
         }
-        if (refine && pricing.ray_density > 0.0 &&
-            saved * pricing.object_cost < pricing.evaluation_cost * double(2 * level.size()))
-            refine = false;
-        if (!refine) break;
-        ++depth;
-        sweep.depth_ = depth;
-        std::vector<Box4> finer(level.size() * 2);
-        for (std::size_t i = 0; i < finer.size(); ++i) finer[i] = object.box_over(sweep.piece_time(i));
-        level = std::move(finer);
+        const double pieces = speed * width / ((kSweptBoundGrowth - 1.0) * std::max(size, 1e-300));
+        while (depth < max_depth && (!std::isfinite(pieces) || double(std::size_t(1) << depth) < pieces))
+            ++depth;
+        if (depth > 0) {
+            sweep.depth_ = depth;
+            level.resize(std::size_t(1) << depth);
+            for (std::size_t i = 0; i < level.size(); ++i) level[i] = object.box_over(sweep.piece_time(i));
+        }
+        // Then back up, merging pairs (their union holds both), while the
+        // coarser pieces are already within the growth of the object's
+        // size, or the object tests the finer ones save, for the rays
+        // expected to meet them, do not pay for evaluating them.
+        while (depth > 0) {
+            std::vector<Box4> coarser(level.size() / 2);
+            for (std::size_t i = 0; i < coarser.size(); ++i) {
+                coarser[i] = level[2 * i];
+                coarser[i].extend(level[2 * i + 1]);
+            }
+            bool needed = false;
+            double saved = 0.0;
+            const double piece_width = width / double(coarser.size());
+            for (const Box4& b : coarser) {
+                const double swept = largest_extent(b);
+                if (!(swept > kSweptBoundGrowth * size)) continue;
+                needed = true;
+                const glm::dvec4 e = b.extent();
+                const double area = 2.0 * (e.x * e.y + e.y * e.z + e.z * e.x);
+                saved += pricing.ray_density * area * piece_width * 0.5 * (1.0 - size / swept);
+            }
+            if (needed && (!(pricing.ray_density > 0.0) ||
+                           saved * pricing.object_cost >= pricing.evaluation_cost * double(level.size())))
+                break;
+            level = std::move(coarser);
+            --depth;
+            sweep.depth_ = depth;
+        }
     }
     sweep.depth_ = depth;
     sweep.whole_ = Box4::empty();

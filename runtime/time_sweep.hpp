@@ -5,11 +5,16 @@
 //
 // The time range is cut into 2^depth equal pieces, and each piece keeps a
 // box around the object's surface at every instant of it (box_over, by
-// interval evaluation: conservative). The depth is the object's own: a piece
-// is halved while its box is more than kSweptBoundGrowth times the size of
-// the box at its middle instant (the object swept far or turned during it),
-// up to a limit, so a static object keeps one piece, a slow one a few, and a
-// small fast one the limit.
+// interval evaluation: conservative). The depth is the object's own: its
+// speed, probed over three short pieces of time, says how many pieces keep
+// each within kSweptBoundGrowth of the object's size (up to a limit); those
+// are evaluated, and pairs are merged back (their union holds both) while
+// the coarser pieces are already that tight, or while the finer ones save
+// fewer object tests than their evaluation costs. So a static object keeps
+// one piece, a slow one a few, a small fast one the limit, and each object
+// costs one evaluation per piece at the depth its speed asks for (halving
+// level by level cost twice that). A motion that is fast only between the
+// probes gets fewer pieces than it could use: looser, never wrong.
 //
 // Storage: the box over the whole range in doubles, and each piece as six
 // 16-bit steps of that box, rounded outward (a piece's lower ends to a step
