@@ -19,6 +19,7 @@
 #include <glm/mat4x4.hpp>
 
 #include "runtime/curved_path_root.hpp"
+#include "runtime/geometry/offset_ray.hpp"
 #include "runtime/intelligent_object.hpp"
 #include "runtime/motion.hpp"
 #include "runtime/normal_transform.hpp"
@@ -128,6 +129,7 @@ public:
         facing = length > 0.0 && std::isfinite(length) ? facing / length : glm::dvec3(0, 1, 0);
         SurfacePoint p;
         p.event = hit.event;
+        p.error = hit.error;
         p.geometric_normal = transform_normal(linear, hit.object_normal, facing);
         // (Only a smooth triangle's shading normal differs from its own.)
         p.shading_normal = hit.object_shading_normal == hit.object_normal
@@ -242,8 +244,10 @@ private:
         if (motion.is_identity()) {
             const auto surface = find();
             if (!surface) return std::nullopt;
-            return make_hit(ray, surface->s, *surface,
-                            [](const glm::dvec3& p, double) { return p; });
+            ObjectHit hit = make_hit(ray, surface->s, *surface,
+                                     [](const glm::dvec3& p, double) { return p; });
+            hit.error = surface->error;
+            return hit;
         }
         // The ray is at one instant (or the object does not move): one
         // placement serves the ray and the hit.
@@ -255,6 +259,8 @@ private:
         ObjectHit hit = make_hit(ray, surface->s, *surface, [&](const glm::dvec3& p, double) {
             return glm::dvec3(placement.to_world * glm::dvec4(p, 1.0));
         });
+        if (surface->error != glm::dvec3(0.0))
+            hit.error = geometry::mapped_error(placement.to_world, surface->point, surface->error);
         if (!motion.is_static()) {
             hit.to_world_linear = glm::dmat3(placement.to_world);
             hit.has_linear = true;

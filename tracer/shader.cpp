@@ -74,7 +74,7 @@ glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, ThreadSta
     const glm::dvec3 ambient = still_ambient_ ? fixed_ambient_ : rgb(ambient_light_, time);
     glm::dvec3 colour = m.colour * (m.ambient * ambient + m.emission) * opaque;
 
-    const glm::dvec3 start = runtime::geometry::offset_ray(point, geometric);
+    const glm::dvec3 start = runtime::geometry::offset_ray(point, p.error, geometric);
     for (const Light& light : lights_) {
         const glm::dvec3 light_position = light.position_at(time);
         glm::dvec3 to_light = light_position - point;
@@ -123,7 +123,7 @@ glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, ThreadSta
         const double k = 1.0 - eta * eta * (1.0 - c * c);
         glm::dvec3 out = k >= 0.0 ? eta * d + (eta * c - std::sqrt(k)) * geometric
                                   : d + 2.0 * c * geometric;  // total internal reflection
-        const glm::dvec3 from = k >= 0.0 ? runtime::geometry::offset_ray(point, -geometric) : start;
+        const glm::dvec3 from = k >= 0.0 ? runtime::geometry::offset_ray(point, p.error, -geometric) : start;
         ++state.counters.refracted_rays;
         const Ray4 next{Event(from, time), Event(out, 0.0)};
         const glm::dvec3 behind = radiance(next, depth + 1, weight * through, state);

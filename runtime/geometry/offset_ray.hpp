@@ -22,12 +22,23 @@
 //   (256 ulps of 1/32 in double is 2^-49).
 // The normal must face the side the new ray leaves toward: the geometric
 // normal for reflection, its negation for transmission.
+//
+// That step covers the error of the point relative to its own coordinates.
+// A hit's error also grows with the shape's coordinates (a sphere of radius
+// 1e5 touching y = 0 has its top's y off by about 1e-11, where ulps of y are
+// far smaller): the three-argument offset_ray first moves the point past
+// the hit's own error bound along the normal (pbrt-v4's OffsetRayOrigin:
+// the bound's projection on |n|, each coordinate rounded away from the
+// point), then takes the step above.
 #pragma once
 
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <glm/glm.hpp>
+
+#include "runtime/geometry/ray3.hpp"
 
 namespace hexant::runtime::geometry {
 
@@ -56,6 +67,46 @@ inline glm::dvec3 offset_ray(const glm::dvec3& p, const glm::dvec3& n) {
         out[k] = std::isfinite(moved) ? moved : p[k];
     }
     return out;
+}
+
+// The error bound of the image of a point known to within `error` under an
+// affine map (glm's column-major 4x4, last row 0 0 0 1), after pbrt-v4's
+// transform of a Point3fi: the input's error goes through |M|, and the
+// three products and three sums of each row round within gamma(3) of the
+// magnitudes they add. gamma(6) is taken for that part, so that the
+// rounding of the map's inverse (computed from the same matrix: a few ulps
+// for a well-conditioned map) is covered when a secondary ray is taken back
+// into the shape's space.
+inline glm::dvec3 mapped_error(const glm::dmat4& m, const glm::dvec3& p, const glm::dvec3& error) {
+    glm::dvec3 out;
+    for (int i = 0; i < 3; ++i) {
+        double carried = 0.0, magnitude = std::fabs(m[3][i]);
+        for (int j = 0; j < 3; ++j) {
+            carried += std::fabs(m[j][i]) * error[j];
+            magnitude += std::fabs(m[j][i] * p[j]);
+        }
+        out[i] = carried + rounding_gamma(6) * magnitude;
+    }
+    return out;
+}
+
+// The start of a secondary ray leaving a hit at p, known to within `error`
+// (SurfacePoint::error), toward the side n faces. An error that is not
+// finite (a hit near the top of the double range) is left to the ulp step.
+inline glm::dvec3 offset_ray(const glm::dvec3& p, const glm::dvec3& error, const glm::dvec3& n) {
+    const double d = glm::dot(glm::abs(n), error);
+    if (!(d > 0.0) || !std::isfinite(d)) return offset_ray(p, n);
+    glm::dvec3 moved = p + d * n;
+    // Round each moved coordinate away from p: the sum may have rounded
+    // back toward the surface.
+    for (int k = 0; k < 3; ++k) {
+        if (n[k] > 0.0)
+            moved[k] = std::nextafter(moved[k], std::numeric_limits<double>::infinity());
+        else if (n[k] < 0.0)
+            moved[k] = std::nextafter(moved[k], -std::numeric_limits<double>::infinity());
+        if (!std::isfinite(moved[k])) moved[k] = p[k];
+    }
+    return offset_ray(moved, n);
 }
 
 }  // namespace hexant::runtime::geometry

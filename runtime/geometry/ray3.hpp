@@ -51,7 +51,21 @@ struct SurfaceHit {
     // where origin + s * direction is only good to ulps of the origin. Use it
     // (with offset_ray) to start secondary rays.
     glm::dvec3 point{0.0};
+    // A bound on each coordinate's distance of `point` from the exact
+    // surface, in the shape's space, from the routine's own arithmetic and
+    // the magnitudes of its inputs (pbrt-v4's pError; gamma(n) below). Zero
+    // where a routine gives none: offset_ray then steps by ulps of the
+    // point alone.
+    glm::dvec3 error{0.0};
 };
+
+// gamma(n) = n u / (1 - n u), u = 2^-53: the relative error bound of n
+// rounded operations in double (Higham, "Accuracy and Stability of
+// Numerical Algorithms", 3.1; pbrt-v4's gamma).
+constexpr double rounding_gamma(int n) {
+    constexpr double u = 0x1p-53;
+    return n * u / (1.0 - n * u);
+}
 
 inline bool is_finite(const glm::dvec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);

@@ -1,5 +1,6 @@
 #include "runtime/geometry/triangle.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -44,6 +45,34 @@ std::optional<BarycentricHit> intersect_barycentric(const glm::dvec3& p1, const 
     if (det == 0.0 || !std::isfinite(det)) return std::nullopt;
     const double az = sz * a[kz], bz = sz * b[kz], cz = sz * c[kz];
     const double t = (eu * az + ev * bz + ew * cz) / det;
+    // A hit within t's own rounding error of the origin may be the surface
+    // the ray leaves (a shadow ray from a floor whose vertices are far
+    // larger than the step off it): its sign is not known, so it is no hit
+    // (after pbrt-v4's Triangle::Intersect, "conservatively greater than
+    // zero"). The bound: t = sum e_i z_i / sum e_i is the z's average by
+    // the edge functions' weights, so an error de in each e_i moves t by at
+    // most 3 de (spread of the z's) / |det| (t lies among the z's), and the
+    // z's own rounding and the products' and sums' move it by gamma(3) of
+    // the largest z each. de is pbrt's bound for the sheared coordinates'
+    // products (the fused edge functions here round less). pbrt bounds the
+    // weights' errors by the largest z instead of the spread, which rejects
+    // a small triangle's honest hit from far away; the spread does not.
+    // Twice the sum covers second-order terms.
+    if (s_min >= 0.0) {
+        using std::fabs;
+        const double max_z = std::max({fabs(az), fabs(bz), fabs(cz)});
+        const double spread_z = std::max({az, bz, cz}) - std::min({az, bz, cz});
+        const double max_x = std::max({fabs(ax), fabs(bx), fabs(cx)});
+        const double max_y = std::max({fabs(ay), fabs(by), fabs(cy)});
+        const double delta_x = rounding_gamma(5) * (max_x + max_z);
+        const double delta_y = rounding_gamma(5) * (max_y + max_z);
+        const double delta_e =
+            2.0 * (rounding_gamma(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
+        const double sum_e = fabs(eu) + fabs(ev) + fabs(ew);
+        const double delta_t =
+            2.0 * (2.0 * rounding_gamma(3) * max_z * sum_e + 3.0 * delta_e * spread_z) / fabs(det);
+        if (!(t > delta_t)) return std::nullopt;
+    }
     const double s = std::ldexp(t, -exponent);
     if (!(s > s_min && s < s_max)) return std::nullopt;
     const double inv = 1.0 / det;
@@ -65,6 +94,7 @@ std::optional<SurfaceHit> intersect(const TriangleGeometry& triangle, const Ray3
     hit.uv = {bary->b2, bary->b3};
     hit.part = 0;
     hit.point = bary->b1 * triangle.p1 + bary->b2 * triangle.p2 + bary->b3 * triangle.p3;
+    hit.error = barycentric_error(*bary, triangle.p1, triangle.p2, triangle.p3);
     if (!is_finite(hit)) return std::nullopt;
     return hit;
 }

@@ -40,6 +40,15 @@ struct BarycentricHit {
 std::optional<BarycentricHit> intersect_barycentric(const glm::dvec3& p1, const glm::dvec3& p2,
                                                     const glm::dvec3& p3, const Ray3& ray,
                                                     double s_min, double s_max);
+// The error bound of the point b1 p1 + b2 p2 + b3 p3 formed from a hit's
+// weights: gamma(7) of the summed magnitudes per coordinate (pbrt-v4,
+// Triangle::InteractionFromIntersection: the weights' own rounding and the
+// three products and two sums).
+inline glm::dvec3 barycentric_error(const BarycentricHit& hit, const glm::dvec3& p1,
+                                    const glm::dvec3& p2, const glm::dvec3& p3) {
+    return rounding_gamma(7) *
+           (glm::abs(hit.b1 * p1) + glm::abs(hit.b2 * p2) + glm::abs(hit.b3 * p3));
+}
 // Separating-axis test (Akenine-Moller 2001) on the box widened by rounding.
 bool triangle_may_meet(const glm::dvec3& p1, const glm::dvec3& p2, const glm::dvec3& p3,
                        const Box3& box);
