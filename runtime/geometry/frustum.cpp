@@ -114,6 +114,12 @@ std::optional<SurfaceHit> intersect_frustum(const Frustum& fr, const Ray3& ray, 
         if (!(hit.s > s_min && hit.s < s_max)) continue;
         hit.part = c.part;
         hit.point = local->at(c.t);
+        // The offset from the base (rounded to ulps of the origin and the
+        // base), the quadratic's root (a few ulps of the frustum's size and
+        // that offset) and origin + t u (ulps of the point): gamma(16) of
+        // those magnitudes bounds the point's distance from the surface.
+        hit.error = rounding_gamma(16) *
+                    (glm::abs(hit.point) + glm::abs(fr.base) + glm::abs(fr.cap) + 2.0 * size);
         if (c.part == 0) {
             // The gradient of |q| - r(h): the radial unit vector tilted by the slope.
             const glm::dvec3 radial_unit = safe_unit(c.radial, basis.t1);

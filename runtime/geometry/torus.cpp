@@ -288,6 +288,11 @@ std::optional<SurfaceHit> intersect(const TorusGeometry& torus, const Ray3& ray,
         SurfaceHit hit;
         hit.s = s;
         hit.point = local->at(*t);
+        // The root is found to about 16 ulps of outer + |t| (the search's
+        // own floor above) and the point formed from an origin within a few
+        // outer radii: gamma(32) of the point's and the torus's magnitude
+        // bounds its distance from the surface.
+        hit.error = rounding_gamma(32) * (glm::abs(hit.point) + outer);
         const glm::dvec3& p = hit.point;
         // From the nearest point of the core circle to the hit point: e (the
         // accurate rho - R) along the radial direction, and the height.

@@ -173,3 +173,26 @@ TEST_CASE("the modes agree on a moving floor of huge triangles", "[robust]") {
         }
     }
 }
+
+TEST_CASE("big grounds of every kind do not shadow themselves", "[robust]") {
+    for (const double r : {10.0, 1e3, 1e6, 1e8}) {
+        const std::string rs = number(r);
+        const std::string grounds[] = {
+            "box { <-" + rs + ", -" + rs + ", -" + rs + ">, <" + rs + ", 0, " + rs + ">",
+            "box { -1, 1 scale " + rs + " translate <0, -" + rs + ", 0>",
+            "cylinder { <-" + rs + ", -" + rs + ", 0>, <" + rs + ", -" + rs + ", 0>, " + rs,
+            "cone { <-" + rs + ", -" + rs + ", 0>, " + rs + ", <" + rs + ", -" + rs + ", 0>, " + rs,
+            "disc { 0, y, " + rs,
+            "plane { y, 0 scale " + rs,
+            "torus { " + number(2 * r) + ", " + rs + " translate <0, -" + rs + ", " + number(2 * r) + ">",
+            "prism { -" + rs + ", 0, 4, <-" + rs + ", -" + rs + ">, <" + rs + ", -" + rs + ">, <0, " + rs + ">, <-" + rs + ", -" + rs + ">",
+        };
+        for (const std::string& ground : grounds) {
+            INFO(ground);
+            check_no_self_shadow("camera { location <0, 2, -6> look_at <0, 0.5, 0> angle 45 }\n"
+                                 "LIGHT\n"
+                                 "background { rgb <0.15, 0.2, 0.35> }\n" +
+                                 ground + " pigment { rgb <0.75, 0.7, 0.6> } }\n");
+        }
+    }
+}
