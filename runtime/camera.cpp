@@ -104,14 +104,19 @@ CameraFrame CameraRecord::evaluate(double t) const {
         const double right_length = glm::length(cam.right);
         const double handedness = glm::dot(glm::cross(cam.up, cam.direction), cam.right);
 
+        // POV-Ray refuses a look_at closer than 1e-5 to the location (its
+        // squared distance under EPSILON); hexant only one that is not
+        // apart at all, so that a scene modelled at any scale (a world of
+        // micrometres) keeps its camera. The sky test is relative to the
+        // sky's length for the same reason.
         glm::dvec3 direction = look_at - cam.location;
-        if (glm::dot(direction, direction) < kEpsilon)
+        const double distance = glm::length(direction);
+        if (!(distance > 0.0) || !std::isfinite(distance))
             throw std::domain_error("camera: location and look_at point must be different");
-        direction = glm::normalize(direction);
+        direction /= distance;
 
         glm::dvec3 right = glm::cross(cam.sky, direction);
-        if (std::fabs(right.x) < kEpsilon && std::fabs(right.y) < kEpsilon &&
-            std::fabs(right.z) < kEpsilon)
+        if (!(glm::length(right) > kEpsilon * glm::length(cam.sky)))
             right = cam.right;  // sky parallel to the view: keep the old right
         right = glm::normalize(right);
 

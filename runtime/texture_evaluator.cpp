@@ -52,7 +52,16 @@ TextureEvaluator::TextureEvaluator(const Texture& texture, const std::optional<I
 }
 
 int checker_index(const glm::dvec3& p) {
-    const double sum = std::floor(p.x) + std::floor(p.y) + std::floor(p.z);
+    // POV-Ray 3.7's rule for a point on a cell's boundary (CheckerPattern::
+    // Evaluate in source/core/material/pattern.cpp): each coordinate is
+    // floored after adding EPSILON = 1e-10 (configcore.h), so a face lying
+    // on a boundary in pattern space (a plane at an integer height, the
+    // common idiom) takes the upper cell whichever way its points rounded.
+    // The margin is in the pattern's own units (one cell), so it holds at
+    // every world scale the pattern is scaled with.
+    constexpr double kBoundary = 1.0e-10;
+    const double sum = std::floor(p.x + kBoundary) + std::floor(p.y + kBoundary) +
+                       std::floor(p.z + kBoundary);
     // fmod of an integer-valued double is exact; no int overflow far away.
     return std::fabs(std::fmod(sum, 2.0)) == 1.0 ? 1 : 0;
 }
