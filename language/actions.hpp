@@ -460,10 +460,16 @@ HEXANT_ACTION(rotate_step) {
 };
 HEXANT_ACTION(scale_step) {
     HEXANT_APPLY {
-        const auto v = to_vector3(st.pop(), "scale's factors");
-        for (const auto& c : v.c)
-            if (c.is_constant() && c.constant() == 0.0)
-                throw ValueError("scale by zero (POV-Ray also refuses it)");
+        auto v = to_vector3(st.pop(), "scale's factors");
+        // POV-Ray 3.7 warns and scales by 1 instead (parser_expressions.cpp);
+        // a factor that only passes through 0 is handled where it is
+        // evaluated (runtime/motion.cpp, scale_factor).
+        static const char* const kAxis[] = {"X", "Y", "Z"};
+        for (int i = 0; i < 3; ++i)
+            if (v.c[i].is_constant() && v.c[i].constant() == 0.0) {
+                st.warn(in.position(), std::string("scale ") + kAxis[i] + " by 0.0: changed to 1.0, as POV-Ray does");
+                v.c[i] = runtime::TimeFunction(1.0);
+            }
         st.apply_transform(make_step(TransformKind::Scale, v), in.position());
     }
 };

@@ -33,6 +33,21 @@ AffineMap<N> axis_rotation(int axis, const N& degrees) {
     return m;
 }
 
+// A scale factor as POV-Ray uses it: exactly 0 becomes 1 (POV-Ray 3.7
+// warns "Scale X by 0.0. Changed to 1.0" and renders; parser_expressions.cpp).
+// A factor that moves through 0 is therefore 1 at that one instant, as a
+// frame POV-Ray renders there shows it, and itself at every other; the
+// interval form holds both (its factors, and 1 where 0 is among them).
+inline double scale_factor(double v) {
+    return v == 0.0 ? 1.0 : v;
+}
+inline Interval scale_factor(const Interval& v) {
+    return v.lo <= 0.0 && v.hi >= 0.0 ? hull(v, Interval(1.0)) : v;
+}
+inline Dual scale_factor(const Dual& v) {
+    return v.v == 0.0 ? Dual(1.0, 0.0) : v;
+}
+
 // The inverse of a general affine map by its adjugate; a singular map (a
 // scene's `matrix` with a zero determinant) divides by zero, which the
 // interval type turns into entire() and doubles into Inf, kept out of the
@@ -105,7 +120,10 @@ struct MotionEvaluator {
             }
             case TransformKind::Scale: {
                 const auto v = vector(s);
-                for (int i = 0; i < 3; ++i) m.m[i][i] = inverse ? N(1.0) / v[i] : v[i];
+                for (int i = 0; i < 3; ++i) {
+                    const N f = scale_factor(v[i]);
+                    m.m[i][i] = inverse ? N(1.0) / f : f;
+                }
                 return m;
             }
             case TransformKind::Rotate: {
@@ -166,7 +184,7 @@ struct MotionEvaluator {
                 return;
             case TransformKind::Scale:
                 for (int i = 0; i < 3; ++i) {
-                    const N v = value(s.p[i]);
+                    const N v = scale_factor(value(s.p[i]));
                     const N f = inverse ? N(1.0) / v : v;
                     for (int j = 0; j < 4; ++j) m.m[i][j] = f * m.m[i][j];
                 }

@@ -43,6 +43,9 @@ glm::dmat4 TransformStep::matrix_at(double t) const {
         }
         case TransformKind::Scale: {
             glm::dvec3 v = vector(t);
+            // POV-Ray's rule for a factor of exactly 0 (motion.cpp, scale_factor).
+            for (int i = 0; i < 3; ++i)
+                if (v[i] == 0.0) v[i] = 1.0;
             m = glm::scale(glm::dmat4(1.0), inverse ? 1.0 / v : v);
             return m;
         }

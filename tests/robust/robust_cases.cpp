@@ -240,3 +240,43 @@ TEST_CASE("a checkered plane on a cell boundary renders alike at every world sca
         }
     }
 }
+
+// A scale of exactly 0, as POV-Ray 3.7 takes it: a constant factor 0 is
+// warned about and becomes 1; a factor that passes through 0 is 1 at that
+// instant (a frame POV-Ray renders there shows the object so) and itself at
+// every other. Here the factor 2 clock - 1 is -1, 0 and 1 at the three
+// frames' instants (shutter closed): each frame shows the plain sphere
+// (a sphere mirrored in y is itself), in every mode.
+TEST_CASE("a scale through zero keeps the object at every instant", "[robust]") {
+    const std::string lights = "camera { location <0, 1, -5> look_at 0 }\n"
+                               "light_source { <-3, 5, -4>, rgb 1 }\n";
+    const auto frames_of = [&](const std::string& object, tr::Mode mode) {
+        hexant::language::ParseOptions options;
+        options.animation.width = 48;
+        options.animation.height = 32;
+        options.animation.initial_frame = 1;
+        options.animation.final_frame = 3;
+        options.animation.shutter = 0.0;
+        const auto scene = hexant::language::parse_scene_text(lights + object, "robust.pov", options);
+        tr::RenderSettings settings;
+        settings.mode = mode;
+        tr::Renderer renderer(scene, settings);
+        std::vector<tr::Image> images;
+        for (int k = 1; k <= 3; ++k) images.push_back(renderer.render_frame(k));
+        return images;
+    };
+    const auto plain = frames_of("sphere { 0, 1 pigment { rgb 0.8 } }\n", tr::Mode::Spacetime);
+    for (const tr::Mode mode : {tr::Mode::Spacetime, tr::Mode::Frames, tr::Mode::Brute}) {
+        const auto moving =
+            frames_of("sphere { 0, 1 pigment { rgb 0.8 } scale <1, 2 * clock - 1, 1> }\n", mode);
+        const auto constant = frames_of("sphere { 0, 1 pigment { rgb 0.8 } scale <1, 0, 1> }\n", mode);
+        for (int k = 0; k < 3; ++k) {
+            INFO("frame " << k + 1 << ", mode " << int(mode));
+            // Tolerance 1e-6: the mirrored sphere's normals and points are
+            // the plain one's up to rounding; a missing or flattened sphere
+            // differs by the whole of its shading.
+            CHECK(differing(plain[k], moving[k], 1e-6) == 0);
+            CHECK(differing(plain[k], constant[k], 1e-6) == 0);
+        }
+    }
+}

@@ -1,2 +1,0 @@
-// error: 2:15: scale by zero
-sphere { 0, 1 scale 0 }
