@@ -186,12 +186,12 @@ HEXANT_ACTION(builtin_constant_name) {
         else if (w == "v") st.push(make_vector({0.0, 1.0}));
         else if (w == "image_width") f(a.width);
         else if (w == "image_height") f(a.height);
-        else if (w == "clock") st.push(Value{a.is_animation() ? TimeFunction::clock() : TimeFunction(a.initial_clock)});
+        else if (w == "clock") st.push(Value{a.clock_runs() ? TimeFunction::clock() : TimeFunction(a.initial_clock)});
         else if (w == "clock_delta") f(a.clock_delta());
-        else if (w == "clock_on") f(a.is_animation() ? 1.0 : 0.0);
+        else if (w == "clock_on") f(a.clock_runs() ? 1.0 : 0.0);
         // In a still, POV-Ray reads these four (and frame_number) as 0.
-        else if (w == "initial_clock") f(a.is_animation() ? a.initial_clock : 0.0);
-        else if (w == "final_clock") f(a.is_animation() ? a.final_clock : 0.0);
+        else if (w == "initial_clock") f(a.clock_runs() ? a.initial_clock : 0.0);
+        else if (w == "final_clock") f(a.clock_runs() ? a.final_clock : 0.0);
         else if (w == "initial_frame") f(a.is_animation() ? a.initial_frame : 0.0);
         else if (w == "final_frame") f(a.is_animation() ? a.final_frame : 0.0);
         else if (w == "version") f(st.version);

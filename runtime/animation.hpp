@@ -18,6 +18,9 @@ struct Animation {
 
     int frame_count() const { return final_frame - initial_frame + 1; }
     bool is_animation() const { return final_frame != initial_frame; }
+    // Whether `clock` moves during the rendering: an animation, or one
+    // cyclic frame whose shutter spans the cycle (clock_delta).
+    bool clock_runs() const { return is_animation() || cyclic; }
     // The clock step between frames.
     double clock_delta() const;
     // The clock value of frame k (the shutter's opening).

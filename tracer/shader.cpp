@@ -60,15 +60,15 @@ glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, ThreadSta
     const glm::dvec3 d = glm::normalize(glm::dvec3(ray.direction));
     const glm::dvec3 point(p.event);
     const double time = p.event.w;
-    // Lighting uses the normal on the viewer's side, as POV-Ray does.
+    // Lighting uses the normal on the viewer's side, as POV-Ray does: each
+    // normal turned to face the ray by its own sign (POV-Ray's trace.cpp
+    // flips the shading normal it lights with, a smooth triangle's
+    // interpolated one included, whichever way the triangle winds).
     glm::dvec3 n = p.shading_normal;
     glm::dvec3 geometric = p.geometric_normal;
     const bool back = glm::dot(geometric, d) > 0.0;
-    if (back) {
-        n = -n;
-        geometric = -geometric;
-    }
-    if (glm::dot(n, d) > 0.0) n = geometric;  // an interpolated normal facing away
+    if (back) geometric = -geometric;
+    if (glm::dot(n, d) > 0.0) n = -n;
 
     const double opaque = std::clamp(1.0 - m.filter - m.transmit, 0.0, 1.0);
     const glm::dvec3 ambient = still_ambient_ ? fixed_ambient_ : rgb(ambient_light_, time);

@@ -219,6 +219,16 @@ TEST_CASE("clock is a symbol in an animation and a number in a still", "[evaluat
     const auto s = run("sphere { x * clock, 1 }", still);
     CHECK(shape<hexant::runtime::Sphere>(s.scene, 0).center.c[0].constant() == 0.25);
 
+    // One cyclic frame over clock 0..1 (--frame-count 1 --cyclic --clock
+    // 0:1): its shutter spans the cycle, so clock moves there too.
+    ParseOptions cycle;
+    cycle.animation.initial_clock = 0.0;
+    cycle.animation.final_clock = 1.0;
+    cycle.animation.cyclic = true;
+    const auto c = run("sphere { x * clock, 1 }", cycle);
+    CHECK(shape<hexant::runtime::Sphere>(c.scene, 0).center.depends_on_time());
+    CHECK(c.scene.animation.time_end() == Approx(c.scene.animation.shutter));
+
     for (const char* needs_a_number :
          {"#if (clock > 0.5) #end", "#while (clock < 2) #end", "#declare A = array[2] {1, 2}; #declare B = A[clock];",
           "#declare S = str(clock, 0, 2);", "#for (I, 0, clock) #end", "#switch (clock) #end"}) {

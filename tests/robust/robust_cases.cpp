@@ -280,3 +280,28 @@ TEST_CASE("a scale through zero keeps the object at every instant", "[robust]") 
         }
     }
 }
+
+// POV-Ray lights a smooth triangle with its interpolated normal turned to
+// face the ray by its own sign, whichever way the triangle winds (trace.cpp);
+// hexant once fell back to the flat normal when the vertex normals faced
+// away from the winding. So negating every vertex normal changes nothing.
+// Tolerance 1e-6: the two renders differ only in the signs of the normals.
+TEST_CASE("a smooth triangle shades alike whichever way its normals point", "[robust]") {
+    const auto scene = [](double sign) {
+        const auto n = [&](const char* v) { return "<" + std::string(v) + "> * " + number(sign); };
+        return "camera { location <0, 3, -4> look_at 0 }\n"
+               "light_source { <-2, 6, -3>, rgb 1 }\n"
+               "smooth_triangle { <-2, 0, -1>, " + n("0.6, 1, 0") + ", <2, 0, -1>, " + n("-0.6, 1, 0") +
+               ", <0, 0, 2>, " + n("0, 1, -0.5") + " pigment { rgb 0.8 } finish { phong 0.5 } }\n";
+    };
+    const tr::Image up = render(scene(1.0), tr::Mode::Spacetime);
+    const tr::Image down = render(scene(-1.0), tr::Mode::Spacetime);
+    CHECK(differing(up, down, 1e-6) == 0);
+    // The shading does follow the normals: a flat triangle differs.
+    const tr::Image flat = render("camera { location <0, 3, -4> look_at 0 }\n"
+                                  "light_source { <-2, 6, -3>, rgb 1 }\n"
+                                  "triangle { <-2, 0, -1>, <2, 0, -1>, <0, 0, 2> pigment { rgb 0.8 }"
+                                  " finish { phong 0.5 } }\n",
+                                  tr::Mode::Spacetime);
+    CHECK(differing(up, flat, 1e-3) > 100);
+}

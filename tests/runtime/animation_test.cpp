@@ -81,7 +81,12 @@ TEST_CASE("a single frame has clock_delta 0", "[animation]") {
     const Animation single = make(1, 1, 0, 1, false);
     CHECK_FALSE(single.is_animation());
     CHECK(single.clock_delta() == 0.0);
-    CHECK(make(1, 1, 0, 1, true).clock_delta() == 0.0);
+    // Cyclic, one frame: the step is (B - A) / 1 (README, --cyclic), so the
+    // frame's shutter spans the whole cycle from clock A.
+    const Animation cycle = make(1, 1, 0, 1, true);
+    CHECK(cycle.clock_delta() == 1.0);
+    CHECK(cycle.clock_of_frame(1) == 0.0);
+    CHECK(cycle.time_end() == Approx(cycle.shutter));
     // POV-Ray's single frame uses the +K clock; hexant keeps it in
     // initial_clock.
     const Animation at_quarter = make(1, 1, 0.25, 0.25, false);
