@@ -75,6 +75,7 @@ HEXANT_ERROR(reflection_value, "expected a value in reflection { }");
 HEXANT_ERROR(ior_value, "expected a value after ior");
 HEXANT_ERROR(shape_arguments, "expected the object's parameters");
 HEXANT_ERROR(shape_argument, "expected a parameter");
+HEXANT_ERROR(first_shape_argument, "expected a parameter");
 HEXANT_ERROR(object_close, "expected '}' or a modifier that belongs in this object");
 HEXANT_ERROR(object_base, "expected an object or a declared object's name");
 HEXANT_ERROR(light_arguments, "expected the light's position and colour");

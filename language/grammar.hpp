@@ -591,9 +591,27 @@ struct shape_argument : p::seq<sum> {};
 struct macro_ahead_item {};
 HEXANT_CUSTOM_RULE(macro_ahead_rule, macro_ahead);
 struct macro_ahead : macro_ahead_rule<macro_ahead_item> {};
+// A conditional directive among the arguments (POV-Ray reads directives
+// anywhere): `#if`, `#ifdef` or `#ifndef` whose condition is followed by a
+// value, as in smooth_triangle { #if (Flip) <0,0,0>, -y, ... #else ... #end }
+// or cylinder { 0, #if (A) x #else y #end, 1 }. It is told from a directive
+// among the modifiers (sphere { 0, 1 #if (A) translate x #end }) by the
+// first word or character after the condition, before anything runs: the
+// interpreter runs directives as it reads, so they cannot be tried twice
+// (Interpreter::argument_directive_ahead says which words are values).
+struct argument_directive_ahead_item {};
+HEXANT_CUSTOM_RULE(argument_directive_ahead_rule, argument_directive_ahead);
+struct argument_directive_ahead : argument_directive_ahead_rule<argument_directive_ahead_item> {};
+struct shape_argument_item;
+struct argument_directive : p::seq<argument_directive_ahead, directive<shape_argument_item>> {};
+// What a directive's branch among the arguments holds: arguments, commas
+// and further such directives.
+struct shape_argument_item
+    : p::sor<argument_directive, comma, p::seq<p::not_at<macro_ahead>, shape_argument>> {};
+struct first_shape_argument : p::sor<argument_directive, shape_argument> {};
 struct shape_arguments
-    : p::seq<frame_open, shape_argument,
-             p::star<p::sor<p::seq<comma, p::must<shape_argument>>,
+    : p::seq<frame_open, first_shape_argument,
+             p::star<p::sor<argument_directive, p::seq<comma, p::must<first_shape_argument>>,
                             p::seq<p::not_at<macro_ahead>, shape_argument>>>> {};
 
 template <typename Keyword>
@@ -863,7 +881,10 @@ HEXANT_CUSTOM_ANALYZE(include_directive);
 HEXANT_CUSTOM_ANALYZE(macro_definition_rule);
 HEXANT_CUSTOM_ANALYZE(declared_value_rule);
 #undef HEXANT_CUSTOM_ANALYZE
-// macro_ahead only looks.
+// macro_ahead and argument_directive_ahead only look.
 template <typename Name, typename Item>
 struct analyze_traits<Name, hexant::language::grammar::macro_ahead_rule<Item>> : analyze_opt_traits<> {};
+template <typename Name, typename Item>
+struct analyze_traits<Name, hexant::language::grammar::argument_directive_ahead_rule<Item>>
+    : analyze_opt_traits<> {};
 }  // namespace tao::pegtl

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstring>
 #include <algorithm>
 #include <deque>
 #include <filesystem>
@@ -150,6 +151,50 @@ public:
         if (q == b) return false;
         const Value* v = lookup(std::string(b, q));
         return v != nullptr && v->is<std::shared_ptr<const Macro>>();
+    }
+
+    // Whether a conditional directive whose branch starts with a value comes
+    // next (grammar.hpp, argument_directive_ahead); consumes nothing. A value
+    // starts with '<', a digit, a sign, '.', '(' or '"', a reserved word
+    // that names a value or calls a function (x, pi, clock, vrotate(...)),
+    // or a declared name that is not a macro; anything else (translate,
+    // pigment, a macro call) starts the modifiers.
+    template <typename Item, template <typename...> class Action,
+              template <typename...> class Control, typename ParseInput>
+    bool argument_directive_ahead(ParseInput& in) {
+        using opener = p::seq<p::one<'#'>, grammar::skip::blanks,
+                              p::sor<TAO_PEGTL_KEYWORD("ifdef"), TAO_PEGTL_KEYWORD("ifndef"),
+                                     TAO_PEGTL_KEYWORD("if")>,
+                              grammar::skip::separators, grammar::skip::parenthesized,
+                              grammar::skip::separators>;
+        p::memory_input<> look(in.current(), in.end(), "");
+        try {
+            if (!p::parse<opener>(look)) return false;
+        } catch (const p::parse_error&) {
+            return false;  // an unclosed condition: the directive reports it
+        }
+        const char* q = look.current();
+        if (q == in.end()) return false;
+        if (std::strchr("<.-+(\"", *q) != nullptr || std::isdigit(static_cast<unsigned char>(*q)))
+            return true;
+        const char* b = q;
+        while (q != in.end() && (std::isalnum(static_cast<unsigned char>(*q)) || *q == '_')) ++q;
+        if (q == b) return false;
+        const std::string word(b, q);
+        if (grammar::is_reserved_word(word)) {
+            static const char* const kValueWords[] = {
+                "x", "y", "z", "t", "u", "v", "pi", "tau", "clock", "clock_delta", "clock_on",
+                "frame_number", "initial_clock", "final_clock", "initial_frame", "final_frame",
+                "image_width", "image_height", "true", "false", "yes", "no", "on", "off",
+                "version", "rgb", "rgbf", "rgbt", "rgbft", "color", "colour", "red", "green",
+                "blue"};
+            for (const char* w : kValueWords)
+                if (word == w) return true;
+            while (q != in.end() && (*q == ' ' || *q == '\t')) ++q;
+            return q != in.end() && *q == '(';  // a function: sin(...), vrotate(...)
+        }
+        const Value* v = lookup(word);
+        return v == nullptr || !v->is<std::shared_ptr<const Macro>>();
     }
 
     // Reads a whole file's items with the given rule (the main scene, an include).

@@ -80,6 +80,34 @@ TEST_CASE("directives run as the scene is read", "[evaluator]") {
     CHECK(debug("#declare V = 9; " + s) == "many");
 }
 
+// POV-Ray reads directives anywhere; among a shape's parameters a
+// conditional directive whose branch starts with a value supplies
+// parameters, while one whose branch starts with a modifier (or a macro
+// call) is read among the modifiers as before.
+TEST_CASE("conditional directives among a shape's parameters", "[evaluator]") {
+    const auto r = run("#declare Flip = 1; #declare A = 0; #declare Corner = <0, 2, 0>;\n"
+                       "#macro Move() translate z #end\n"
+                       "smooth_triangle {\n"
+                       "  #if (Flip) <0,0,0>, -y, <1,0,0>, -y, <0,1,0>, -y\n"
+                       "  #else <0,0,0>, y, <1,0,0>, y, <0,1,0>, y #end\n"
+                       "}\n"
+                       "sphere { #ifndef (Undefined) Corner #end, #if (A) 3 #else 0.5 #end\n"
+                       "  #if (1) translate x #end #if (1) Move() #end }\n"
+                       "cylinder { 0, #if (A) x #else vrotate(y, 90 * z) #end, 1 }\n");
+    REQUIRE(r.scene.objects.size() == 3);
+    const auto& triangle = shape<hexant::runtime::SmoothTriangle>(r.scene, 0);
+    CHECK(triangle.normals[0](0.0).y == -1.0);
+    CHECK(triangle.points[2](0.0).y == 1.0);
+    const auto& sphere = shape<hexant::runtime::Sphere>(r.scene, 1);
+    CHECK(sphere.center(0.0).y == 2.0);
+    CHECK(sphere.radius(0.0) == 0.5);
+    const glm::dmat4 m = r.scene.objects[1]->transform.matrix_at(0.0);
+    CHECK(m[3][0] == 1.0);  // translate x, then the macro's translate z
+    CHECK(m[3][2] == 1.0);
+    const auto& cylinder = shape<hexant::runtime::Cylinder>(r.scene, 2);
+    CHECK(cylinder.cap(0.0).x == Approx(-1.0));
+}
+
 TEST_CASE("macros: values, objects, modifiers, locals and references", "[evaluator]") {
     CHECK(debug("#macro Sq(X) (X * X) #end #debug str(Sq(3) + 1, 0, 0)") == "10");
     CHECK(debug("#macro Pick(A, B) #if (A > B) A #else B #end #end #debug str(Pick(2, 7), 0, 0)") == "7");
