@@ -332,10 +332,31 @@ private:
         };
         const auto found = first_hit_on_curve(a, b, size, box_over, point_at, may_meet, chord_hit);
         if (!found || !(found->s > s_min && found->s < s_max)) return std::nullopt;
-        return make_hit(ray, found->s, found->surface, [&](const glm::dvec3& p, double t) {
+        ObjectHit hit = make_hit(ray, found->s, found->surface, [&](const glm::dvec3& p, double t) {
             const auto q = motion.template to_world<double>({p.x, p.y, p.z}, t);
             return glm::dvec3(q[0], q[1], q[2]);
         });
+        // The point lies on the surface (a chord's hit) to the shape's own
+        // error; the deformation and placement carry it by their Jacobian
+        // and round their sines, cosines and products within some ulps of
+        // the magnitudes they add: the point's, the Jacobian's image of the
+        // object point's, and the rest (the placement's translation). gamma(32)
+        // covers the deformations' rotations (a few ulps each, deformation.hpp)
+        // and the way back into the shape's space of a secondary ray.
+        const glm::dvec3 p = found->surface.point;
+        const glm::dvec3 w(hit.event);
+        const glm::dmat3 jacobian = motion.jacobian_at(p, hit.event.w);
+        const glm::dvec3 image = jacobian * p;
+        for (int i = 0; i < 3; ++i) {
+            double carried = 0.0, magnitude = std::fabs(w[i]) + std::fabs(w[i] - image[i]);
+            for (int j = 0; j < 3; ++j) {
+                carried += std::fabs(jacobian[j][i]) * found->surface.error[j];
+                magnitude += std::fabs(jacobian[j][i] * p[j]);
+            }
+            hit.error[i] = carried + geometry::rounding_gamma(32) * magnitude;
+        }
+        if (!geometry::is_finite(hit.error)) hit.error = glm::dvec3(0.0);
+        return hit;
     }
 
     Model model_;
