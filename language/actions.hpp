@@ -8,6 +8,7 @@
 
 #include "language/grammar.hpp"
 #include "language/interpreter_state.hpp"
+#include "language/checked_integer.hpp"
 #include "language/value_ops.hpp"
 
 namespace hexant::language {
@@ -282,10 +283,8 @@ inline std::size_t element_index(const Array& array, const std::vector<double>& 
                          " dimension(s) but " + std::to_string(indices.size()) + " index(es) were given");
     std::size_t flat = 0;
     for (std::size_t d = 0; d < indices.size(); ++d) {
-        const double i = std::floor(indices[d]);
-        if (i < 0 || i >= array.dimensions[d])
-            throw ValueError("array index " + std::to_string(static_cast<long long>(i)) +
-                             " is out of range 0.." + std::to_string(array.dimensions[d] - 1));
+        const long long i = checked_integer(std::floor(indices[d]), "an array index", 0,
+                                            array.dimensions[d] - 1);
         flat = flat * static_cast<std::size_t>(array.dimensions[d]) + static_cast<std::size_t>(i);
     }
     return flat;
@@ -301,13 +300,11 @@ HEXANT_ACTION(index_suffix) {
         if (array->dimensions.size() > 1) {
             // A[i] of a many-dimensional array: the sub-array.
             const int rows = array->dimensions[0];
-            if (index < 0 || index >= rows)
-                throw ValueError("array index " + std::to_string(static_cast<long long>(index)) +
-                                 " is out of range 0.." + std::to_string(rows - 1));
+            const long long row = checked_integer(std::floor(index), "an array index", 0, rows - 1);
             auto sub = std::make_shared<Array>();
             sub->dimensions.assign(array->dimensions.begin() + 1, array->dimensions.end());
             const std::size_t stride = array->elements.size() / static_cast<std::size_t>(rows);
-            const std::size_t start = static_cast<std::size_t>(index) * stride;
+            const std::size_t start = static_cast<std::size_t>(row) * stride;
             sub->elements.assign(array->elements.begin() + static_cast<std::ptrdiff_t>(start),
                                  array->elements.begin() + static_cast<std::ptrdiff_t>(start + stride));
             st.push(Value{sub});
@@ -978,7 +975,16 @@ HEXANT_ACTION(global_setting) {
         Value v = st.pop();
         const std::string name = st.pop_name();
         if (name == "assumed_gamma") st.scene.global.assumed_gamma = to_constant(v, name);
-        else if (name == "max_trace_level") st.scene.global.max_trace_level = static_cast<int>(to_constant(v, name));
+        else if (name == "max_trace_level") {
+            // As POV-Ray 3.7 (parser.cpp): at least 1, and above its limit
+            // of 256 a warning and 256.
+            long long level = checked_integer(to_constant(v, name), name, -kMaxExactInteger, kMaxExactInteger);
+            if (level > 256) {
+                st.warn(in.position(), "max_trace_level " + std::to_string(level) + " is above the limit: 256 used");
+                level = 256;
+            }
+            st.scene.global.max_trace_level = static_cast<int>(std::max(1LL, level));
+        }
         else st.scene.global.ambient_light = to_colour(v, name);
     }
 };
@@ -1001,8 +1007,8 @@ HEXANT_ACTION(array_dimensions) {
         auto array = std::make_shared<Array>();
         std::size_t total = 1;
         for (auto& s : sizes) {
-            const double n = to_constant(s, "an array size");
-            if (n < 1 || n > 1e8) throw ValueError("an array size must be from 1 to 10^8");
+            const long long n = checked_integer(to_constant(s, "an array size"), "an array size", 1,
+                                                100'000'000);
             array->dimensions.push_back(static_cast<int>(n));
             total *= static_cast<std::size_t>(n);
             if (total > 100'000'000) throw ValueError("this array would hold more than 10^8 elements");

@@ -6,6 +6,7 @@
 #include <functional>
 #include <map>
 
+#include "language/checked_integer.hpp"
 #include "language/value_ops.hpp"
 
 namespace hexant::language {
@@ -43,6 +44,17 @@ TimeFunction arg_float(const std::string& name, const Args& args, std::size_t i)
 }
 double arg_constant(const std::string& name, const Args& args, std::size_t i) {
     return to_constant(args[i], "argument " + std::to_string(i + 1) + " of " + name + "()");
+}
+// The widths and precisions str() and vstr() accept: far beyond any use
+// (POV-Ray formats into a fixed buffer), small enough that a typo such as
+// 1e300 is an error rather than a string of that length.
+constexpr long long kMaxWidth = 10'000;
+constexpr long long kMaxPrecision = 100;
+// An operand of bitwise_and/or/xor: an integer a double holds exactly.
+long long bitwise_operand(const std::string& name, const Args& args, std::size_t i) {
+    return checked_integer(arg_constant(name, args, i),
+                           "argument " + std::to_string(i + 1) + " of " + name + "()",
+                           -kMaxExactInteger, kMaxExactInteger);
 }
 runtime::Vector3Function arg_vector(const std::string& name, const Args& args, std::size_t i) {
     return to_vector3(args[i], "argument " + std::to_string(i + 1) + " of " + name + "()");
@@ -227,18 +239,18 @@ const std::map<std::string, Builtin>& table() {
          [](const std::string& n, const Args& a, RandomStreams&) {
              expect_count(n, a, 3, 3);
              return Value{format_number(arg_constant(n, a, 0),
-                                        static_cast<int>(arg_constant(n, a, 1)),
-                                        static_cast<int>(arg_constant(n, a, 2)))};
+                                        static_cast<int>(checked_integer(arg_constant(n, a, 1), "str()'s length", -kMaxWidth, kMaxWidth)),
+                                        static_cast<int>(checked_integer(arg_constant(n, a, 2), "str()'s precision", -1, kMaxPrecision)))};
          }},
         {"vstr",
          [](const std::string& n, const Args& a, RandomStreams&) {
              expect_count(n, a, 5, 5);
              // POV-Ray's order: vstr(components, vector, separator, length, precision)
-             const int dims = static_cast<int>(arg_constant(n, a, 0));
+             const int dims = static_cast<int>(checked_integer(arg_constant(n, a, 0), "vstr()'s component count", -kMaxExactInteger, kMaxExactInteger));
              const Vector v = to_vector(a[1], "argument 2 of vstr()");
              const std::string& sep = arg_string(n, a, 2);
-             const int len = static_cast<int>(arg_constant(n, a, 3));
-             const int prec = static_cast<int>(arg_constant(n, a, 4));
+             const int len = static_cast<int>(checked_integer(arg_constant(n, a, 3), "vstr()'s length", -kMaxWidth, kMaxWidth));
+             const int prec = static_cast<int>(checked_integer(arg_constant(n, a, 4), "vstr()'s precision", -1, kMaxPrecision));
              std::string out;
              for (int i = 0; i < std::clamp(dims, 1, 5); ++i) {
                  if (i) out += sep;
@@ -258,8 +270,7 @@ const std::map<std::string, Builtin>& table() {
         {"chr",
          [](const std::string& n, const Args& a, RandomStreams&) {
              expect_count(n, a, 1, 1);
-             const double c = arg_constant(n, a, 0);
-             if (c < 1 || c > 127) throw ValueError("chr() needs a character code from 1 to 127");
+             const long long c = checked_integer(arg_constant(n, a, 0), "chr()'s character code", 1, 127);
              return Value{std::string(1, static_cast<char>(c))};
          }},
         {"asc",
@@ -277,9 +288,9 @@ const std::map<std::string, Builtin>& table() {
          [](const std::string& n, const Args& a, RandomStreams&) {
              expect_count(n, a, 3, 3);
              const std::string& s = arg_string(n, a, 0);
-             const double p = arg_constant(n, a, 1), l = arg_constant(n, a, 2);
-             if (p < 1 || l < 0 || p - 1 + l > static_cast<double>(s.size()))
-                 throw ValueError("substr() reaches outside the string");
+             const long long size = static_cast<long long>(s.size());
+             const long long p = checked_integer(arg_constant(n, a, 1), "substr()'s start", 1, size + 1);
+             const long long l = checked_integer(arg_constant(n, a, 2), "substr()'s length", 0, size + 1 - p);
              return Value{s.substr(static_cast<std::size_t>(p - 1), static_cast<std::size_t>(l))};
          }},
         {"strupr",
@@ -320,9 +331,10 @@ const std::map<std::string, Builtin>& table() {
              if (!a[0].is<std::shared_ptr<Array>>())
                  throw ValueError("dimension_size() needs an array, not a " + type_name(a[0]));
              const auto& dims = a[0].as<std::shared_ptr<Array>>()->dimensions;
-             const double d = arg_constant(n, a, 1);
-             if (d < 1 || d > static_cast<double>(dims.size()))
-                 return Value{TimeFunction(0.0)};
+             // POV-Ray gives 0 for a dimension the array does not have.
+             const long long d = checked_integer(arg_constant(n, a, 1), "dimension_size()'s dimension",
+                                                 -kMaxExactInteger, kMaxExactInteger);
+             if (d < 1 || d > static_cast<long long>(dims.size())) return Value{TimeFunction(0.0)};
              return Value{TimeFunction(static_cast<double>(dims[static_cast<std::size_t>(d) - 1]))};
          }},
         {"seed",
@@ -334,30 +346,30 @@ const std::map<std::string, Builtin>& table() {
         {"rand",
          [](const std::string& n, const Args& a, RandomStreams& r) {
              expect_count(n, a, 1, 1);
-             const double s = arg_constant(n, a, 0);
-             if (s < 0 || s >= static_cast<double>(r.streams.size()))
-                 throw ValueError("rand() needs a stream made by seed()");
+             if (r.streams.empty()) throw ValueError("rand() needs a stream made by seed(), and none was made");
+             const long long s = checked_integer(arg_constant(n, a, 0), "rand()'s stream (made by seed())", 0,
+                                                 static_cast<long long>(r.streams.size()) - 1);
              return Value{TimeFunction(r.streams[static_cast<std::size_t>(s)].next())};
          }},
         {"bitwise_and",
          [](const std::string& n, const Args& a, RandomStreams&) {
              expect_count(n, a, 2, 1000);
-             long long r = static_cast<long long>(arg_constant(n, a, 0));
-             for (std::size_t i = 1; i < a.size(); ++i) r &= static_cast<long long>(arg_constant(n, a, i));
+             long long r = bitwise_operand(n, a, 0);
+             for (std::size_t i = 1; i < a.size(); ++i) r &= bitwise_operand(n, a, i);
              return Value{TimeFunction(static_cast<double>(r))};
          }},
         {"bitwise_or",
          [](const std::string& n, const Args& a, RandomStreams&) {
              expect_count(n, a, 2, 1000);
-             long long r = static_cast<long long>(arg_constant(n, a, 0));
-             for (std::size_t i = 1; i < a.size(); ++i) r |= static_cast<long long>(arg_constant(n, a, i));
+             long long r = bitwise_operand(n, a, 0);
+             for (std::size_t i = 1; i < a.size(); ++i) r |= bitwise_operand(n, a, i);
              return Value{TimeFunction(static_cast<double>(r))};
          }},
         {"bitwise_xor",
          [](const std::string& n, const Args& a, RandomStreams&) {
              expect_count(n, a, 2, 1000);
-             long long r = static_cast<long long>(arg_constant(n, a, 0));
-             for (std::size_t i = 1; i < a.size(); ++i) r ^= static_cast<long long>(arg_constant(n, a, i));
+             long long r = bitwise_operand(n, a, 0);
+             for (std::size_t i = 1; i < a.size(); ++i) r ^= bitwise_operand(n, a, i);
              return Value{TimeFunction(static_cast<double>(r))};
          }},
     };

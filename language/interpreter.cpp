@@ -2,6 +2,8 @@
 // points that run the grammar over a scene file.
 #include "language/interpreter.hpp"
 
+#include "language/checked_integer.hpp"
+
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -275,10 +277,10 @@ runtime::ObjectRecord make_shape(const std::string& kind, std::vector<Value>& ar
         record.shape = runtime::Plane{vec(0, "normal"), num(1, "distance")};
     } else if (kind == "polygon") {
         if (args.empty()) need(1, 1, "a point count and the points");
-        const double n = to_constant(args[0], "polygon's point count");
-        if (n < 3) throw ValueError("a polygon needs at least 3 points");
+        const long long n = checked_integer(to_constant(args[0], "polygon's point count"),
+                                            "polygon's point count", 3, 100'000'000);
         if (args.size() != static_cast<std::size_t>(n) + 1)
-            throw ValueError("polygon says it has " + std::to_string(static_cast<int>(n)) +
+            throw ValueError("polygon says it has " + std::to_string(n) +
                              " points but lists " + std::to_string(args.size() - 1));
         runtime::Polygon polygon;
         for (std::size_t i = 1; i < args.size(); ++i) {
@@ -314,10 +316,10 @@ runtime::ObjectRecord make_shape(const std::string& kind, std::vector<Value>& ar
         prism.height2 = num(1, "second height");
         const bool supported = st.prism_spline == "linear_spline" && st.prism_sweep == "linear_sweep";
         if (supported) {
-            const double n = to_constant(args[2], "prism's point count");
-            if (n < 3) throw ValueError("a prism needs at least 3 points");
+            const long long n = checked_integer(to_constant(args[2], "prism's point count"),
+                                                "prism's point count", 3, 100'000'000);
             if (args.size() != static_cast<std::size_t>(n) + 3)
-                throw ValueError("prism says it has " + std::to_string(static_cast<int>(n)) +
+                throw ValueError("prism says it has " + std::to_string(n) +
                                  " points but lists " + std::to_string(args.size() - 3));
             for (std::size_t i = 3; i < args.size(); ++i)
                 prism.points.push_back(to_vector2(args[i], "a prism point"));
