@@ -23,8 +23,11 @@ void add_scene_arguments(CLI::App& command, SceneArguments& a) {
     command.add_option("-L,--include-path", a.include_paths,
                        "Folder searched for #include after the scene's own (POV-Ray's +L)");
     command.add_option("--declare", a.declares, "NAME=VALUE, as POV-Ray's Declare=");
+    // A range, so that "-1" (which an unsigned conversion wraps to 2^64 - 1)
+    // is refused rather than taken as no limit at all.
     command.add_option("--max-loop-iterations", a.max_loop_iterations,
-                       "Stop a #while or #for after this many iterations (default 10^7)");
+                       "Stop a #while or #for after this many iterations (default 10^7)")
+        ->check(CLI::Range(std::size_t(1), std::size_t(1'000'000'000'000)));
 }
 
 void apply_ini_file(const std::filesystem::path& ini, ResolvedScene& resolved,

@@ -104,3 +104,17 @@ TEST_CASE("bad .ini values and flags are errors naming the place", "[app][ini]")
     bad_declare.declares = {"NoValue"};
     REQUIRE_THROWS_WITH(hexant::app::resolve(bad_declare), Catch::Contains("NAME=VALUE"));
 }
+
+TEST_CASE("the loop limit flag takes 1 to 10^12, never a wrapped -1", "[app]") {
+    const auto parse = [](const std::string& flags) {
+        CLI::App app;
+        hexant::app::SceneArguments arguments;
+        hexant::app::add_scene_arguments(app, arguments);
+        app.parse("scene.pov " + flags, false);
+        return arguments;
+    };
+    CHECK(*parse("--max-loop-iterations 1000").max_loop_iterations == 1000);
+    CHECK_THROWS(parse("--max-loop-iterations -1"));
+    CHECK_THROWS(parse("--max-loop-iterations 0"));
+    CHECK_THROWS(parse("--max-loop-iterations 1e13"));
+}
