@@ -1,5 +1,6 @@
 #include "app/command_line.hpp"
 
+#include <cmath>
 #include <ostream>
 #include <stdexcept>
 
@@ -100,7 +101,11 @@ ResolvedScene resolve(const SceneArguments& arguments) {
     if (a.width < 1 || a.height < 1) throw std::runtime_error("the image size must be at least 1 by 1");
     if (a.final_frame < a.initial_frame)
         throw std::runtime_error("the final frame comes before the initial frame");
-    if (a.shutter < 0 || a.shutter > 1) throw std::runtime_error("--shutter must lie in [0, 1]");
+    // Written so that NaN fails too (every comparison with NaN is false).
+    if (!(a.shutter >= 0 && a.shutter <= 1)) throw std::runtime_error("--shutter must lie in [0, 1]");
+    if (!std::isfinite(a.initial_clock) || !std::isfinite(a.final_clock) ||
+        (r.at_clock && !std::isfinite(*r.at_clock)))
+        throw std::runtime_error("the clock (--clock, Initial_Clock, Final_Clock) must be finite numbers");
     return r;
 }
 

@@ -1,6 +1,7 @@
 // The command line's shape: POV-Ray .ini files apply in order, then flags.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -99,6 +100,16 @@ TEST_CASE("bad .ini values and flags are errors naming the place", "[app][ini]")
     bad_clock.files = {"a.pov"};
     bad_clock.clock_range = "0:x";
     REQUIRE_THROWS_WITH(hexant::app::resolve(bad_clock), Catch::Contains("--clock"));
+    for (const char* clock : {"nan:1", "0:inf", "nan"}) {
+        hexant::app::SceneArguments nan_clock;
+        nan_clock.files = {"a.pov"};
+        nan_clock.clock_range = clock;
+        REQUIRE_THROWS_WITH(hexant::app::resolve(nan_clock), Catch::Contains("finite"));
+    }
+    hexant::app::SceneArguments nan_shutter;
+    nan_shutter.files = {"a.pov"};
+    nan_shutter.shutter = std::nan("");
+    REQUIRE_THROWS_WITH(hexant::app::resolve(nan_shutter), Catch::Contains("--shutter"));
     hexant::app::SceneArguments bad_declare;
     bad_declare.files = {"a.pov"};
     bad_declare.declares = {"NoValue"};
