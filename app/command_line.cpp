@@ -8,6 +8,10 @@
 
 namespace hexant::app {
 
+namespace {
+constexpr long long kMaxFrames = 1'000'000;
+}  // namespace
+
 void add_scene_arguments(CLI::App& command, SceneArguments& a) {
     command.add_option("files", a.files, "The scene (.pov) and POV-Ray .ini files, in order")
         ->required();
@@ -101,6 +105,14 @@ ResolvedScene resolve(const SceneArguments& arguments) {
     if (a.width < 1 || a.height < 1) throw std::runtime_error("the image size must be at least 1 by 1");
     if (a.final_frame < a.initial_frame)
         throw std::runtime_error("the final frame comes before the initial frame");
+    // Frames are counted in int and each frame's eye and lights are placed
+    // up front: a count near 2^31 overflowed the loop over frames and took
+    // seconds before the first pixel. 10^6 frames is over eleven hours of
+    // film at 24 per second.
+    if (static_cast<long long>(a.final_frame) - a.initial_frame >= kMaxFrames)
+        throw std::runtime_error("an animation of more than " + std::to_string(kMaxFrames) +
+                                 " frames (frames " + std::to_string(a.initial_frame) + " to " +
+                                 std::to_string(a.final_frame) + ")");
     // Written so that NaN fails too (every comparison with NaN is false).
     if (!(a.shutter >= 0 && a.shutter <= 1)) throw std::runtime_error("--shutter must lie in [0, 1]");
     if (!std::isfinite(a.initial_clock) || !std::isfinite(a.final_clock) ||

@@ -106,6 +106,12 @@ TEST_CASE("bad .ini values and flags are errors naming the place", "[app][ini]")
         nan_clock.clock_range = clock;
         REQUIRE_THROWS_WITH(hexant::app::resolve(nan_clock), Catch::Contains("finite"));
     }
+    hexant::app::SceneArguments too_many_frames;
+    too_many_frames.files = {"a.pov"};
+    too_many_frames.frame_count = 2147483647;
+    REQUIRE_THROWS_WITH(hexant::app::resolve(too_many_frames), Catch::Contains("more than 1000000 frames"));
+    too_many_frames.frame_count = 1'000'000;
+    CHECK(hexant::app::resolve(too_many_frames).options.animation.final_frame == 1'000'000);
     hexant::app::SceneArguments nan_shutter;
     nan_shutter.files = {"a.pov"};
     nan_shutter.shutter = std::nan("");
