@@ -40,10 +40,10 @@ struct ObjectHit {
     // The normal points into the solid the scene sees (a difference's cut,
     // an `inverse` object): complete() turns it around.
     bool flipped = false;
-    // A bound on each world coordinate's distance of event's point from the
-    // exact surface (SurfaceHit::error carried through the placement); zero
-    // where none is known.
-    glm::dvec3 error{0.0};
+    // SurfaceHit::error: a bound on object_point's distance from the exact
+    // surface, in the primitive's space (zero where none is known);
+    // complete() carries it into the world.
+    glm::dvec3 object_error{0.0};
 };
 
 // What complete() returns: world-space normals at the hit's time, texture
@@ -54,7 +54,7 @@ struct SurfacePoint {
     glm::dvec3 shading_normal{};    // unit; faces the same side as geometric_normal
     glm::dvec2 uv{};
     MaterialSample material;
-    glm::dvec3 error{0.0};  // ObjectHit::error: what a secondary ray must clear
+    glm::dvec3 error{0.0};  // world bound of event's error (geometry::world_error): what a secondary ray must clear
 };
 
 class IntelligentObject {

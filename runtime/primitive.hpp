@@ -129,7 +129,10 @@ public:
         facing = length > 0.0 && std::isfinite(length) ? facing / length : glm::dvec3(0, 1, 0);
         SurfacePoint p;
         p.event = hit.event;
-        p.error = hit.error;
+        // The point's error in the world, for the one hit that is shaded.
+        if (hit.object_error != glm::dvec3(0.0))
+            p.error = geometry::world_error(linear, hit.object_point, glm::dvec3(hit.event),
+                                            hit.object_error);
         p.geometric_normal = transform_normal(linear, hit.object_normal, facing);
         // (Only a smooth triangle's shading normal differs from its own.)
         p.shading_normal = hit.object_shading_normal == hit.object_normal
@@ -224,6 +227,7 @@ private:
         hit.event = Event(to_world_at(surface.point, t), t);
         hit.object = this;
         hit.object_point = surface.point;
+        hit.object_error = surface.error;
         hit.object_normal = surface.normal;
         hit.object_shading_normal = surface.shading_normal;
         hit.uv = surface.uv;
@@ -244,10 +248,8 @@ private:
         if (motion.is_identity()) {
             const auto surface = find();
             if (!surface) return std::nullopt;
-            ObjectHit hit = make_hit(ray, surface->s, *surface,
-                                     [](const glm::dvec3& p, double) { return p; });
-            hit.error = surface->error;
-            return hit;
+            return make_hit(ray, surface->s, *surface,
+                            [](const glm::dvec3& p, double) { return p; });
         }
         // The ray is at one instant (or the object does not move): one
         // placement serves the ray and the hit.
@@ -259,8 +261,6 @@ private:
         ObjectHit hit = make_hit(ray, surface->s, *surface, [&](const glm::dvec3& p, double) {
             return glm::dvec3(placement.to_world * glm::dvec4(p, 1.0));
         });
-        if (surface->error != glm::dvec3(0.0))
-            hit.error = geometry::mapped_error(placement.to_world, surface->point, surface->error);
         if (!motion.is_static()) {
             hit.to_world_linear = glm::dmat3(placement.to_world);
             hit.has_linear = true;
@@ -332,31 +332,10 @@ private:
         };
         const auto found = first_hit_on_curve(a, b, size, box_over, point_at, may_meet, chord_hit);
         if (!found || !(found->s > s_min && found->s < s_max)) return std::nullopt;
-        ObjectHit hit = make_hit(ray, found->s, found->surface, [&](const glm::dvec3& p, double t) {
+        return make_hit(ray, found->s, found->surface, [&](const glm::dvec3& p, double t) {
             const auto q = motion.template to_world<double>({p.x, p.y, p.z}, t);
             return glm::dvec3(q[0], q[1], q[2]);
         });
-        // The point lies on the surface (a chord's hit) to the shape's own
-        // error; the deformation and placement carry it by their Jacobian
-        // and round their sines, cosines and products within some ulps of
-        // the magnitudes they add: the point's, the Jacobian's image of the
-        // object point's, and the rest (the placement's translation). gamma(32)
-        // covers the deformations' rotations (a few ulps each, deformation.hpp)
-        // and the way back into the shape's space of a secondary ray.
-        const glm::dvec3 p = found->surface.point;
-        const glm::dvec3 w(hit.event);
-        const glm::dmat3 jacobian = motion.jacobian_at(p, hit.event.w);
-        const glm::dvec3 image = jacobian * p;
-        for (int i = 0; i < 3; ++i) {
-            double carried = 0.0, magnitude = std::fabs(w[i]) + std::fabs(w[i] - image[i]);
-            for (int j = 0; j < 3; ++j) {
-                carried += std::fabs(jacobian[j][i]) * found->surface.error[j];
-                magnitude += std::fabs(jacobian[j][i] * p[j]);
-            }
-            hit.error[i] = carried + geometry::rounding_gamma(32) * magnitude;
-        }
-        if (!geometry::is_finite(hit.error)) hit.error = glm::dvec3(0.0);
-        return hit;
     }
 
     Model model_;

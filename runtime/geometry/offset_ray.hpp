@@ -69,25 +69,29 @@ inline glm::dvec3 offset_ray(const glm::dvec3& p, const glm::dvec3& n) {
     return out;
 }
 
-// The error bound of the image of a point known to within `error` under an
-// affine map (glm's column-major 4x4, last row 0 0 0 1), after pbrt-v4's
-// transform of a Point3fi: the input's error goes through |M|, and the
-// three products and three sums of each row round within gamma(3) of the
-// magnitudes they add. gamma(6) is taken for that part, so that the
-// rounding of the map's inverse (computed from the same matrix: a few ulps
-// for a well-conditioned map) is covered when a secondary ray is taken back
-// into the shape's space.
-inline glm::dvec3 mapped_error(const glm::dmat4& m, const glm::dvec3& p, const glm::dvec3& error) {
+// The error bound of a hit's world point `world`, the image of the shape's
+// point p (known to within `error`) under a map whose linear part at p is
+// `linear` (glm's column-major 3x3: the placement's, or a deformation's
+// Jacobian), after pbrt-v4's transform of a Point3fi: the input's error
+// goes through |linear|, and the map rounds within some ulps of the
+// magnitudes it adds (|linear| |p| and the rest, world - linear p: the
+// translation). gamma(32) covers a placement's products and sums, a
+// deformation's sines and cosines (a few ulps each, deformation.hpp) and
+// the way back into the shape's space of a secondary ray, for a
+// well-conditioned map. Formed once per shaded hit (Primitive::complete).
+inline glm::dvec3 world_error(const glm::dmat3& linear, const glm::dvec3& p, const glm::dvec3& world,
+                              const glm::dvec3& error) {
+    const glm::dvec3 image = linear * p;
     glm::dvec3 out;
     for (int i = 0; i < 3; ++i) {
-        double carried = 0.0, magnitude = std::fabs(m[3][i]);
+        double carried = 0.0, magnitude = std::fabs(world[i]) + std::fabs(world[i] - image[i]);
         for (int j = 0; j < 3; ++j) {
-            carried += std::fabs(m[j][i]) * error[j];
-            magnitude += std::fabs(m[j][i] * p[j]);
+            carried += std::fabs(linear[j][i]) * error[j];
+            magnitude += std::fabs(linear[j][i] * p[j]);
         }
-        out[i] = carried + rounding_gamma(6) * magnitude;
+        out[i] = carried + rounding_gamma(32) * magnitude;
     }
-    return out;
+    return is_finite(out) ? out : glm::dvec3(0.0);
 }
 
 // The start of a secondary ray leaving a hit at p, known to within `error`

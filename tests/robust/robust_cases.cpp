@@ -84,6 +84,19 @@ void check_no_self_shadow(const std::string& scene) {
 
 }  // namespace
 
+namespace {
+
+// A ground (an object's text up to its closing brace) under the camera and
+// the light of case 18, for check_no_self_shadow.
+std::string ground_scene(const std::string& ground) {
+    return "camera { location <0, 2, -6> look_at <0, 0.5, 0> angle 45 }\n"
+           "LIGHT\n"
+           "background { rgb <0.15, 0.2, 0.35> }\n" +
+           ground + " pigment { rgb <0.75, 0.7, 0.6> } }\n";
+}
+
+}  // namespace
+
 TEST_CASE("a big sphere used as the ground does not shadow itself", "[robust]") {
     for (const double r : {10.0, 1e3, 1e5, 1e6, 1e8}) {
         const std::string rs = number(r);
@@ -98,10 +111,7 @@ TEST_CASE("a big sphere used as the ground does not shadow itself", "[robust]") 
         };
         for (const std::string& sphere : spheres) {
             INFO(sphere);
-            check_no_self_shadow("camera { location <0, 2, -6> look_at <0, 0.5, 0> angle 45 }\n"
-                                 "LIGHT\n"
-                                 "background { rgb <0.15, 0.2, 0.35> }\n" +
-                                 sphere + " pigment { rgb <0.75, 0.7, 0.6> } }\n");
+            check_no_self_shadow(ground_scene(sphere));
         }
     }
 }
@@ -193,10 +203,7 @@ TEST_CASE("big grounds of every kind do not shadow themselves", "[robust]") {
         };
         for (const std::string& ground : grounds) {
             INFO(ground);
-            check_no_self_shadow("camera { location <0, 2, -6> look_at <0, 0.5, 0> angle 45 }\n"
-                                 "LIGHT\n"
-                                 "background { rgb <0.15, 0.2, 0.35> }\n" +
-                                 ground + " pigment { rgb <0.75, 0.7, 0.6> } }\n");
+            check_no_self_shadow(ground_scene(ground));
         }
     }
 }
