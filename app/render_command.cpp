@@ -95,11 +95,15 @@ const Row kRows[] = {
     {"memory at start (MB)", [](const Counters& c) { return c.memory_start_mb; }, 1},
     {"peak memory (MB)", [](const Counters& c) { return c.memory_peak_mb; }, 1},
     {"build time (s)", [](const Counters& c) { return c.build_seconds; }, 3},
+    {"sweep time (s)", [](const Counters& c) { return c.sweep_seconds; }, 3},
     {"lazy build in render (s)", [](const Counters& c) { return c.lazy_build_seconds; }, 3},
     {"render time (s)", [](const Counters& c) { return c.render_seconds; }, 3},
     {"total time (s)", [](const Counters& c) { return c.build_seconds + c.render_seconds; }, 3},
-    {"rays per second (M)", [](const Counters& c) {
-         return c.render_seconds > 0.0 ? double(c.rays()) / c.render_seconds * 1e-6 : 0.0; }, 2},
+    {"rays per second (M)",
+     [](const Counters& c) {
+         return c.render_seconds > 0.0 ? double(c.rays()) / c.render_seconds * 1e-6 : 0.0;
+     },
+     2},
 };
 
 void print_stats(std::ostream& out, const std::vector<std::pair<std::string, Counters>>& columns) {

@@ -86,6 +86,44 @@ Box4 CsgObject::box_over(const Interval& t) const {
     return Box4::empty();
 }
 
+// Chords follow the children that hold the surface: every child for a
+// union or merge, the bounded ones for an intersection (its surface lies in
+// each bounded child's solid, and the children's bounds hold their whole
+// object boxes), the first for a difference. Their placed boxes are
+// unioned and their bounds take the largest, so each child's points stay
+// inside.
+std::vector<const IntelligentObject*> CsgObject::chord_children() const {
+    std::vector<const IntelligentObject*> out;
+    for (const auto& c : children_) {
+        if (kind_ == Csg::Kind::Intersection && !c->bounded()) continue;
+        out.push_back(c.get());
+        if (kind_ == Csg::Kind::Difference) break;
+    }
+    return out;
+}
+
+std::optional<IntelligentObject::ChordBound> CsgObject::chord_bound_over(const Interval& t) const {
+    const auto children = chord_children();
+    if (children.empty()) return std::nullopt;
+    ChordBound all;
+    for (const IntelligentObject* c : children) {
+        const auto b = c->chord_bound_over(t);
+        if (!b) {
+            if (c->moves() || !c->bounded()) return std::nullopt;
+            continue;  // a still child: its placed box is its box, margin 0
+        }
+        all.acceleration = glm::max(all.acceleration, b->acceleration);
+        all.margin = glm::max(all.margin, b->margin);
+    }
+    return all;
+}
+
+Box4 CsgObject::placed_box_at(double t) const {
+    Box4 box = Box4::empty();
+    for (const IntelligentObject* c : chord_children()) box.extend(c->placed_box_at(t));
+    return box;
+}
+
 bool CsgObject::keeps(std::size_t index, const Event& event) const {
     switch (kind_) {
         case Csg::Kind::Union:

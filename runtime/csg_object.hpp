@@ -24,6 +24,8 @@ public:
     // intersection's the common part of its bounded children's; a
     // difference's its first child's.
     Box4 box_over(const Interval& t) const override;
+    std::optional<ChordBound> chord_bound_over(const Interval& t) const override;
+    Box4 placed_box_at(double t) const override;
     std::optional<ObjectHit> intersect(const Ray4& ray, double s_min,
                                        double s_max) const override;
     SurfacePoint complete(const Ray4& ray, const ObjectHit& hit) const override;
@@ -38,12 +40,14 @@ public:
     const std::vector<IntelligentObjectPtr>& children() const { return children_; }
 
 private:
-    // Is a hit on child `index` a surface of the combined solid?
-    bool keeps(std::size_t index, const Event& event) const;
+  // The children whose placed boxes and chord bounds hold the surface.
+  std::vector<const IntelligentObject*> chord_children() const;
+  // Is a hit on child `index` a surface of the combined solid?
+  bool keeps(std::size_t index, const Event& event) const;
 
-    Csg::Kind kind_;
-    std::vector<IntelligentObjectPtr> children_;
-    bool inverse_;
+  Csg::Kind kind_;
+  std::vector<IntelligentObjectPtr> children_;
+  bool inverse_;
 };
 
 }  // namespace hexant::runtime

@@ -78,6 +78,27 @@ public:
     // to its cells; bound() answers the same question for one region.
     virtual Box4 box_over(const Interval& t) const = 0;
 
+    // For sweeps by chords (runtime/time_sweep.hpp): over t, per world axis,
+    // a bound on the second time derivative of the position of every point
+    // the object's surface may occupy (`acceleration`), and `margin`, which
+    // covers how far the exact positions at any instant may lie outside
+    // placed_box_at() there, plus how far the double placement the tracer
+    // uses may stray from the exact one. Then a line between placed boxes at
+    // t0 and t1, moved out by (t1 - t0)^2 / 8 * acceleration + margin, holds
+    // the surface at every instant between. Nothing where no such bound is
+    // known (deformations, jumps or kinks in the motion, a changing shape).
+    struct ChordBound {
+        glm::dvec3 acceleration{0.0};
+        glm::dvec3 margin{0.0};
+    };
+    virtual std::optional<ChordBound> chord_bound_over(const Interval&) const {
+        return std::nullopt;
+    }
+    // A box around the surface at instant t as the double placement puts
+    // it (the ends of the chords above); box_over(t) where there is no
+    // cheaper answer.
+    virtual Box4 placed_box_at(double t) const { return box_over(Interval(t)); }
+
     // The first surface event along `ray` with s_min < s < s_max.
     virtual std::optional<ObjectHit> intersect(const Ray4& ray, double s_min,
                                                double s_max) const = 0;

@@ -47,6 +47,11 @@ inline Interval scale_factor(const Interval& v) {
 inline Dual scale_factor(const Dual& v) {
     return v.v == 0.0 ? Dual(1.0, 0.0) : v;
 }
+// A factor that may pass through 0 jumps there: no linear form.
+inline IntervalJet scale_factor(const IntervalJet& v) {
+    if (v.v.lo - v.r <= 0.0 && v.v.hi + v.r >= 0.0) return IntervalJet::unknown(scale_factor(v.v));
+    return v;
+}
 
 // The inverse of a general affine map by its adjugate; a singular map (a
 // scene's `matrix` with a zero determinant) divides by zero, which the
@@ -71,6 +76,42 @@ AffineMap<N> inverse_of(const AffineMap<N>& a) {
     for (int i = 0; i < 3; ++i)
         r.m[i][3] = -(r.m[i][0] * m[0][3] + r.m[i][1] * m[1][3] + r.m[i][2] * m[2][3]);
     return r;
+}
+
+// k x for a constant k, as the product N(k) * x, without a general product
+// where the number type has a cheaper exact-constant form.
+template <class N>
+N times_constant(double k, const N& x) {
+    return N(k) * x;
+}
+inline Interval times_constant(double k, const Interval& x) {
+    if (k == 0.0) return Interval(0.0);
+    if (k == 1.0) return x;
+    if (k == -1.0) return -x;
+    return interval_detail::scaled(x, k);
+}
+inline IntervalJet times_constant(double k, const IntervalJet& x) {
+    return scaled(x, k);
+}
+
+// a * b for a constant map a: the same sums in the same order as
+// AffineMap<N>::from(a) * b, each product by a constant entry formed as one.
+template <class N>
+AffineMap<N> fixed_times(const AffineMap<double>& a, const AffineMap<N>& b) {
+    if constexpr (std::is_same_v<N, double> || std::is_same_v<N, Dual>) {
+        return AffineMap<N>::from(a) * b;
+    } else {
+        AffineMap<N> r;
+        for (int i = 0; i < 3; ++i) {
+            for (int j = 0; j < 4; ++j) {
+                r.m[i][j] = times_constant(a.m[i][0], b.m[0][j]) +
+                            times_constant(a.m[i][1], b.m[1][j]) +
+                            times_constant(a.m[i][2], b.m[2][j]);
+                if (j == 3) r.m[i][j] = r.m[i][j] + N(a.m[i][3]);
+            }
+        }
+        return r;
+    }
 }
 
 // At most this many time-dependent amounts live on the stack per call;
@@ -150,7 +191,7 @@ struct MotionEvaluator {
     // order, so that the interval one encloses the others exactly.
     void compose(const Motion::Stage& stage, AffineMap<N>& m) const {
         if (stage.kind == Motion::StageKind::Fixed) {
-            m = AffineMap<N>::from(stage.forward) * m;
+            m = fixed_times(stage.forward, m);
             return;
         }
         for (const auto& s : stage.steps) apply_step(s, false, m);
@@ -483,6 +524,15 @@ IntervalAffine Motion::matrix_over(const Interval& t) const {
     if (!affine_) throw std::logic_error("Motion::matrix_over on a deformed object");
     const MotionEvaluator<Interval> e(*this, t);
     IntervalAffine m = IntervalAffine::identity();
+    for (const Stage& stage : stages_) e.compose(stage, m);
+    return m;
+}
+
+AffineMap<IntervalJet> Motion::matrix_jet_over(const Interval& t) const {
+    if (fixed_affine_) return AffineMap<IntervalJet>::from(forward_);
+    if (!affine_) throw std::logic_error("Motion::matrix_jet_over on a deformed object");
+    const MotionEvaluator<IntervalJet> e(*this, IntervalJet::variable(t));
+    AffineMap<IntervalJet> m = AffineMap<IntervalJet>::identity();
     for (const Stage& stage : stages_) e.compose(stage, m);
     return m;
 }

@@ -12,17 +12,17 @@
 
 #include <array>
 #include <cstdint>
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
 #include <memory>
 #include <optional>
 #include <vector>
 
-#include <glm/mat3x3.hpp>
-#include <glm/mat4x4.hpp>
-#include <glm/vec3.hpp>
-
 #include "runtime/deformation.hpp"
 #include "runtime/dual.hpp"
 #include "runtime/interval.hpp"
+#include "runtime/interval_jet.hpp"
 #include "runtime/interval_matrix.hpp"
 #include "runtime/transform.hpp"
 
@@ -62,6 +62,10 @@ class Motion {
     // is_affine(). Rotations use interval sines and cosines of the interval
     // angle, so a short interval gives a thin enclosure.
     IntervalAffine matrix_over(const Interval& t) const;
+    // The same entries as interval jets over t (interval_jet.hpp): ranges,
+    // first and second derivatives' ranges and the double evaluation's
+    // rounding radii, for sweeps by chords; only when is_affine().
+    AffineMap<IntervalJet> matrix_jet_over(const Interval& t) const;
 
     // Object to world and back, for N = double, Interval (enclosing every
     // value over the boxes p and t) and Dual (p and t carrying derivatives

@@ -11,12 +11,12 @@
 #pragma once
 
 #include <algorithm>
-#include <optional>
-#include <utility>
-
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
+#include <limits>
+#include <optional>
+#include <utility>
 
 #include "runtime/curved_path_root.hpp"
 #include "runtime/geometry/offset_ray.hpp"
@@ -100,6 +100,47 @@ public:
         box.lo = Event(world[0].lo, world[1].lo, world[2].lo, t.lo);
         box.hi = Event(world[0].hi, world[1].hi, world[2].hi, t.hi);
         return box;
+    }
+
+    // For a rigid shape on an affine motion: the motion's second derivative
+    // over t (interval jets, interval_jet.hpp) applied to the object's box,
+    // x'' = M''(t) (p, 1); the margin is twice the matrix entries' rounding
+    // radii times |p| (the exact ends against the double placed boxes, and
+    // the double placement at t against the exact one) plus the rounding of
+    // the product M (p, 1) itself.
+    std::optional<ChordBound> chord_bound_over(const Interval& t) const override {
+        if constexpr (kUnbounded) return std::nullopt;
+        if (!moves_ || !model_.is_static() || !motion_.is_affine() || !(t.lo <= t.hi))
+            return std::nullopt;
+        const AffineMap<IntervalJet> m = motion_.matrix_jet_over(t);
+        const objects::IntervalBox& p = static_object_box_;
+        constexpr double kProductRounding = 4.0 * std::numeric_limits<double>::epsilon();
+        ChordBound bound;
+        for (int i = 0; i < 3; ++i) {
+            if (!m.m[i][3].smooth()) return std::nullopt;
+            Interval second = m.m[i][3].dd;
+            double radius = m.m[i][3].r, magnitude = m.m[i][3].v.magnitude();
+            for (int j = 0; j < 3; ++j) {
+                if (!m.m[i][j].smooth()) return std::nullopt;
+                second = second + m.m[i][j].dd * p[j];
+                radius += m.m[i][j].r * p[j].magnitude();
+                magnitude += m.m[i][j].v.magnitude() * p[j].magnitude();
+            }
+            bound.acceleration[i] = second.magnitude();
+            bound.margin[i] = interval_detail::up(2.0 * radius + kProductRounding * magnitude, 4);
+            if (!std::isfinite(bound.acceleration[i]) || !std::isfinite(bound.margin[i]))
+                return std::nullopt;
+        }
+        return bound;
+    }
+
+    Box4 placed_box_at(double t) const override {
+        if constexpr (kUnbounded) return Box4::empty();
+        if (!moves_ || !model_.is_static() || !motion_.is_affine()) return box_over(Interval(t));
+        const objects::IntervalBox world =
+            AffineMap<double>::from(motion_.matrix_at(t)).apply(static_object_box_);
+        return {Event(world[0].lo, world[1].lo, world[2].lo, t),
+                Event(world[0].hi, world[1].hi, world[2].hi, t)};
     }
 
     std::optional<ObjectHit> intersect(const Ray4& ray, double s_min,

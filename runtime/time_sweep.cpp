@@ -33,47 +33,63 @@ double TimeSweep::decode(int axis, std::uint16_t q) const {
     return std::min(whole_.lo[axis] + double(q) * step_[axis], whole_.hi[axis]);
 }
 
-void TimeSweep::encode(std::size_t i, const Box4& box) {
-    std::uint16_t* q = &steps_[6 * i];
-    if (box.is_empty()) {
-        for (int k = 0; k < 3; ++k) q[k] = kTop, q[3 + k] = 0;  // lo > hi: no surface
+// A step at or below v (v inside whole_), checked on the decoded value.
+std::uint16_t TimeSweep::encode_down(int k, double v) const {
+    const double extent = whole_.hi[k] - whole_.lo[k];
+    if (!(extent > 0.0) || !std::isfinite(extent)) return 0;
+    int q = std::clamp(int(std::floor((v - whole_.lo[k]) * (double(kTop) / extent))), 0, int(kTop));
+    while (q > 0 && decode(k, std::uint16_t(q)) > v) --q;
+    return std::uint16_t(q);
+}
+
+std::uint16_t TimeSweep::encode_up(int k, double v) const {
+    const double extent = whole_.hi[k] - whole_.lo[k];
+    if (!(extent > 0.0) || !std::isfinite(extent)) return kTop;
+    int q = std::clamp(int(std::ceil((v - whole_.lo[k]) * (double(kTop) / extent))), 0, int(kTop));
+    while (q < int(kTop) && decode(k, std::uint16_t(q)) < v) ++q;
+    return std::uint16_t(q);
+}
+
+void TimeSweep::encode(std::size_t i, const MovingBox& box) {
+    std::uint16_t* q = &steps_[12 * i];
+    if (box.empty || box.hull().is_empty()) {
+        for (int k = 0; k < 3; ++k) q[k] = q[3 + k] = kTop, q[6 + k] = q[9 + k] = 0;  // no surface
         return;
     }
     for (int k = 0; k < 3; ++k) {
-        const double extent = whole_.hi[k] - whole_.lo[k];
-        int lo = 0, hi = kTop;
-        if (extent > 0.0 && std::isfinite(extent)) {
-            const double scale = double(kTop) / extent;
-            lo = std::clamp(int(std::floor((box.lo[k] - whole_.lo[k]) * scale)), 0, int(kTop));
-            hi = std::clamp(int(std::ceil((box.hi[k] - whole_.lo[k]) * scale)), 0, int(kTop));
-        }
-        // Outward on the values decode() gives back, whatever the rounding.
-        while (lo > 0 && decode(k, std::uint16_t(lo)) > box.lo[k]) --lo;
-        while (hi < int(kTop) && decode(k, std::uint16_t(hi)) < box.hi[k]) ++hi;
-        if (lo > hi) lo = 0, hi = kTop;  // only if decode were not monotone
-        q[k] = std::uint16_t(lo);
-        q[3 + k] = std::uint16_t(hi);
+        q[k] = encode_down(k, box.lo0[k]);
+        q[3 + k] = encode_down(k, box.lo1[k]);
+        q[6 + k] = encode_up(k, box.hi0[k]);
+        q[9 + k] = encode_up(k, box.hi1[k]);
     }
+}
+
+MovingBox TimeSweep::moving_piece(std::size_t i) const {
+    const Interval t = piece_time(i);
+    if (steps_.empty()) return MovingBox::constant(whole_, t);
+    const std::uint16_t* q = &steps_[12 * i];
+    MovingBox m;
+    m.time = t;
+    if (q[0] > q[6] && q[3] > q[9]) return m;  // no surface (lo > hi at both ends)
+    m.empty = false;
+    for (int k = 0; k < 3; ++k) {
+        m.lo0[k] = decode(k, q[k]);
+        m.lo1[k] = decode(k, q[3 + k]);
+        m.hi0[k] = decode(k, q[6 + k]);
+        m.hi1[k] = decode(k, q[9 + k]);
+    }
+    return m;
 }
 
 Box4 TimeSweep::piece(std::size_t i) const {
     const Interval t = piece_time(i);
-    if (depth_ == 0) {
+    if (steps_.empty()) {
         Box4 b = whole_;
         b.lo.w = t.lo;
         b.hi.w = t.hi;
         return b;
     }
-    const std::uint16_t* q = &steps_[6 * i];
-    if (q[0] > q[3]) return Box4::empty();
-    Box4 b;
-    for (int k = 0; k < 3; ++k) {
-        b.lo[k] = decode(k, q[k]);
-        b.hi[k] = decode(k, q[3 + k]);
-    }
-    b.lo.w = t.lo;
-    b.hi.w = t.hi;
-    return b;
+    return moving_piece(i).hull();
 }
 
 void TimeSweep::pieces_meeting(const Interval& t, std::size_t& first, std::size_t& last) const {
@@ -105,10 +121,11 @@ Box4 TimeSweep::box_over_dyadic(int level, std::uint64_t index) const {
     const Interval t(dyadic_time(time_, level, index), dyadic_time(time_, level, index + 1));
     if (empty()) return Box4::empty();
     Box4 box = Box4::empty();
-    if (depth_ == 0) {
+    if (steps_.empty()) {
         box = whole_;
     } else if (level >= depth_) {
-        box = piece(std::size_t(index >> (level - depth_)));
+        // A part of one piece: its moving box over that part.
+        box = moving_piece(std::size_t(index >> (level - depth_))).box_over(t);
     } else {
         const std::size_t count = std::size_t(1) << (depth_ - level);
         const std::size_t first = std::size_t(index) * count;
@@ -124,18 +141,168 @@ Box4 TimeSweep::box_over(const Interval& t) const {
     const Interval clipped(std::max(t.lo, time_.lo), std::min(t.hi, time_.hi));
     if (empty() || clipped.is_empty()) return Box4::empty();
     Box4 box = Box4::empty();
-    if (depth_ == 0) {
+    if (steps_.empty()) {
         box = whole_;
     } else {
         std::size_t first, last;
         pieces_meeting(clipped, first, last);
-        for (std::size_t i = first; i <= last && first <= last; ++i) box.extend(piece(i));
+        for (std::size_t i = first; i <= last && first <= last; ++i)
+            box.extend(moving_piece(i).box_over(clipped));
         if (box.is_empty()) return box;
     }
     box.lo.w = clipped.lo;
     box.hi.w = clipped.hi;
     return box;
 }
+
+namespace {
+
+// The largest extent of a moving box at any instant of its piece (its
+// widths are linear in time: largest at an end).
+double largest_instant_extent(const MovingBox& m) {
+    if (m.empty) return 0.0;
+    double e = 0.0;
+    for (int k = 0; k < 3; ++k) e = std::max({e, m.hi0[k] - m.lo0[k], m.hi1[k] - m.lo1[k]});
+    return e;
+}
+
+// One moving box over two consecutive pieces a, b (a's end is b's start):
+// per side the line through the outer ends, moved outward by what the
+// inner ends need (the sides are lines, so the three ends decide).
+MovingBox merged(const MovingBox& a, const MovingBox& b) {
+    if (a.empty || b.empty) {
+        Box4 both = a.hull();
+        both.extend(b.hull());
+        return MovingBox::constant(both, Interval(a.time.lo, b.time.hi));
+    }
+    MovingBox m;
+    m.time = Interval(a.time.lo, b.time.hi);
+    m.empty = false;
+    const double span = m.time.hi - m.time.lo;
+    const double u = span > 0.0 ? (a.time.hi - a.time.lo) / span : 0.5;
+    for (int k = 0; k < 3; ++k) {
+        m.lo0[k] = a.lo0[k];
+        m.lo1[k] = b.lo1[k];
+        const double lo_mid = std::min(a.lo1[k], b.lo0[k]);
+        const double lo_line = m.lo0[k] + u * (m.lo1[k] - m.lo0[k]);
+        const double lo_shift = std::max(0.0, lo_line - lo_mid);
+        m.hi0[k] = a.hi0[k];
+        m.hi1[k] = b.hi1[k];
+        const double hi_mid = std::max(a.hi1[k], b.hi0[k]);
+        const double hi_line = m.hi0[k] + u * (m.hi1[k] - m.hi0[k]);
+        const double hi_shift = std::max(0.0, hi_mid - hi_line);
+        // The shift, and the interpolation's rounding, paid outward.
+        const double lo_slack =
+            MovingBox::kSlack *
+            std::max({std::fabs(m.lo0[k]), std::fabs(m.lo1[k]), std::fabs(lo_mid)});
+        const double hi_slack =
+            MovingBox::kSlack *
+            std::max({std::fabs(m.hi0[k]), std::fabs(m.hi1[k]), std::fabs(hi_mid)});
+        m.lo0[k] -= lo_shift + lo_slack;
+        m.lo1[k] -= lo_shift + lo_slack;
+        m.hi0[k] += hi_shift + hi_slack;
+        m.hi1[k] += hi_shift + hi_slack;
+    }
+    // Never looser than the two pieces' boxes held still.
+    Box4 both = a.hull();
+    both.extend(b.hull());
+    m.tighten(MovingBox::constant(both, m.time));
+    return m;
+}
+
+}  // namespace
+
+namespace {
+
+// Pieces by chords (IntelligentObject::chord_bound_over): halve while a
+// piece's box at some instant exceeds the growth over the object's size
+// and, with pricing, the object tests saved pay for the new ends. Each
+// piece is the line between the placed boxes at its ends, moved out by the
+// chord's error (its length squared / 8 times the acceleration bound) and
+// the margin; one jet over the whole range bounds the acceleration (a jet
+// per coarse piece would be tighter where the motion is uneven, and costs
+// as much as forty ends). Returns the depth and fills `level`.
+int chord_pieces(const IntelligentObject& object, const Interval& time, int max_depth,
+                 const SweepPricing& pricing, const IntelligentObject::ChordBound& whole,
+                 double size, std::vector<MovingBox>& level) {
+    const double width = time.hi - time.lo;
+    const double a = std::max({whole.acceleration.x, whole.acceleration.y, whole.acceleration.z});
+    const double m = std::max({whole.margin.x, whole.margin.y, whole.margin.z});
+    const double allowed = 0.5 * (kSweptBoundGrowth - 1.0) * size - m;
+    const auto chord_error = [&](int d) {
+        const double w = width / double(std::size_t(1) << d);
+        return w * w * 0.125 * a;
+    };
+    int depth = 0;
+    while (depth < max_depth && !(chord_error(depth) <= allowed)) {
+        if (pricing.ray_density > 0.0) {
+            // A box of the object's size, widened on every side.
+            const auto area = [&](double e) {
+                return 6.0 * (size + 2.0 * (e + m)) * (size + 2.0 * (e + m));
+            };
+            const double saved = pricing.ray_density * width *
+                                 (area(chord_error(depth)) - area(chord_error(depth + 1)));
+            if (saved * pricing.object_cost < pricing.point_cost * double(std::size_t(1) << depth))
+                break;
+        }
+        ++depth;
+    }
+    const std::size_t n = std::size_t(1) << depth;
+    std::vector<Box4> ends(n + 1);
+    for (std::size_t i = 0; i <= n; ++i)
+        ends[i] = object.placed_box_at(dyadic_time(time, depth, i));
+    level.assign(n, MovingBox{});
+    for (std::size_t i = 0; i < n; ++i) {
+        const Interval t(dyadic_time(time, depth, i), dyadic_time(time, depth, i + 1));
+        const IntelligentObject::ChordBound& b = whole;
+        MovingBox& piece = level[i];
+        piece.time = t;
+        if (ends[i].is_empty() || ends[i + 1].is_empty()) {
+            piece = MovingBox::constant(object.box_over(t), t);
+            continue;
+        }
+        piece.empty = false;
+        // The piece's length rounded up (t.hi - t.lo exactly is at most it).
+        const double w = interval_detail::next_up(t.hi - t.lo);
+        for (int k = 0; k < 3; ++k) {
+            const double out =
+                interval_detail::up(w * w * 0.125 * b.acceleration[k] + b.margin[k], 4);
+            piece.lo0[k] = interval_detail::next_down(ends[i].lo[k] - out);
+            piece.lo1[k] = interval_detail::next_down(ends[i + 1].lo[k] - out);
+            piece.hi0[k] = interval_detail::next_up(ends[i].hi[k] + out);
+            piece.hi1[k] = interval_detail::next_up(ends[i + 1].hi[k] + out);
+        }
+    }
+    return depth;
+}
+
+// Pieces by interval boxes over each piece: as many as keep a piece's box
+// within the growth of the object's size, judged from its speed over three
+// short probes (start, middle, end). Returns the depth and fills `level`.
+int box_pieces(const IntelligentObject& object, const Interval& time, int max_depth, double size,
+               std::vector<MovingBox>& level) {
+    const double width = time.hi - time.lo;
+    const double probe = width / double(std::size_t(1) << max_depth);
+    double speed = 0.0;
+    for (const double start : {time.lo, time.mid() - 0.5 * probe, time.hi - probe}) {
+        const double swept = largest_extent(object.box_over(Interval(start, start + probe)));
+        speed = std::max(speed, (swept - size) / probe);
+    }
+    const double pieces = speed * width / ((kSweptBoundGrowth - 1.0) * size);
+    int depth = 0;
+    while (depth < max_depth &&
+           (!std::isfinite(pieces) || double(std::size_t(1) << depth) < pieces))
+        ++depth;
+    if (depth == 0) return 0;
+    level.resize(std::size_t(1) << depth);
+    for (std::size_t i = 0; i < level.size(); ++i) {
+        const Interval t(dyadic_time(time, depth, i), dyadic_time(time, depth, i + 1));
+        level[i] = MovingBox::constant(object.box_over(t), t);
+    }
+    return depth;
+}
+
+}  // namespace
 
 TimeSweep TimeSweep::of(const IntelligentObject& object, const Interval& time, int max_depth,
                         const SweepPricing& pricing) {
@@ -144,46 +311,32 @@ TimeSweep TimeSweep::of(const IntelligentObject& object, const Interval& time, i
     max_depth = std::clamp(max_depth, 0, 20);
     TimeSweep sweep;
     sweep.time_ = time;
-    std::vector<Box4> level{object.box_over(time)};
+    const Box4 whole_box = object.box_over(time);
+    std::vector<MovingBox> level{MovingBox::constant(whole_box, time)};
     int depth = 0;
-    if (object.moves() && time.lo < time.hi && max_depth > 0 && !level.front().is_empty()) {
-        // How finely to cut: the object's size at one instant, and its
-        // speed measured over three short probes (start, middle, end); a
-        // piece should sweep at most (kSweptBoundGrowth - 1) sizes.
+    if (object.moves() && time.lo < time.hi && max_depth > 0 && !whole_box.is_empty()) {
         const double width = time.hi - time.lo;
-        const double size = largest_extent(object.box_over(Interval(time.mid())));
-        const double probe = width / double(std::size_t(1) << max_depth);
-        double speed = 0.0;
-        for (const double start : {time.lo, time.mid() - 0.5 * probe, time.hi - probe}) {
-            const double swept = largest_extent(object.box_over(Interval(start, start + probe)));
-            speed = std::max(speed, (swept - size) / probe);
-        }
-        const double pieces = speed * width / ((kSweptBoundGrowth - 1.0) * std::max(size, 1e-300));
-        while (depth < max_depth && (!std::isfinite(pieces) || double(std::size_t(1) << depth) < pieces))
-            ++depth;
-        if (depth > 0) {
-            sweep.depth_ = depth;
-            level.resize(std::size_t(1) << depth);
-            for (std::size_t i = 0; i < level.size(); ++i) level[i] = object.box_over(sweep.piece_time(i));
-        }
-        // Then back up, merging pairs (their union holds both), while the
-        // coarser pieces are already within the growth of the object's
-        // size, or the object tests the finer ones save, for the rays
-        // expected to meet them, do not pay for evaluating them.
+        const double size = std::max(largest_extent(object.placed_box_at(time.mid())), 1e-300);
+        if (const auto chord = object.chord_bound_over(time))
+            depth = chord_pieces(object, time, max_depth, pricing, *chord, size, level);
+        else
+            depth = box_pieces(object, time, max_depth, size, level);
+        // Then back up, merging pairs, while the coarser pieces are already
+        // within the growth of the object's size, or the object tests the
+        // finer ones save, for the rays expected to meet them, do not pay
+        // for evaluating them.
         while (depth > 0) {
-            std::vector<Box4> coarser(level.size() / 2);
-            for (std::size_t i = 0; i < coarser.size(); ++i) {
-                coarser[i] = level[2 * i];
-                coarser[i].extend(level[2 * i + 1]);
-            }
+            std::vector<MovingBox> coarser(level.size() / 2);
+            for (std::size_t i = 0; i < coarser.size(); ++i)
+                coarser[i] = merged(level[2 * i], level[2 * i + 1]);
             bool needed = false;
             double saved = 0.0;
             const double piece_width = width / double(coarser.size());
-            for (const Box4& b : coarser) {
-                const double swept = largest_extent(b);
+            for (const MovingBox& b : coarser) {
+                const double swept = largest_instant_extent(b);
                 if (!(swept > kSweptBoundGrowth * size)) continue;
                 needed = true;
-                const glm::dvec4 e = b.extent();
+                const glm::dvec4 e = b.box_over(Interval(b.time.mid())).extent();
                 const double area = 2.0 * (e.x * e.y + e.y * e.z + e.z * e.x);
                 saved += pricing.ray_density * area * piece_width * 0.5 * (1.0 - size / swept);
             }
@@ -192,12 +345,15 @@ TimeSweep TimeSweep::of(const IntelligentObject& object, const Interval& time, i
                 break;
             level = std::move(coarser);
             --depth;
-            sweep.depth_ = depth;
         }
     }
     sweep.depth_ = depth;
     sweep.whole_ = Box4::empty();
-    for (const Box4& b : level) sweep.whole_.extend(b);
+    bool still = true;
+    for (const MovingBox& b : level) {
+        sweep.whole_.extend(b.hull());
+        if (!b.empty && (b.lo0 != b.lo1 || b.hi0 != b.hi1)) still = false;
+    }
     if (sweep.whole_.is_empty()) {
         sweep.depth_ = 0;
         return sweep;
@@ -205,8 +361,9 @@ TimeSweep TimeSweep::of(const IntelligentObject& object, const Interval& time, i
     sweep.whole_.lo.w = time.lo;
     sweep.whole_.hi.w = time.hi;
     for (int k = 0; k < 3; ++k) sweep.step_[k] = (sweep.whole_.hi[k] - sweep.whole_.lo[k]) / double(kTop);
-    if (depth > 0) {
-        sweep.steps_.resize(6 * level.size());
+    // One box held still over the whole time needs no pieces.
+    if (depth > 0 || !still) {
+        sweep.steps_.resize(12 * level.size());
         for (std::size_t i = 0; i < level.size(); ++i) sweep.encode(i, level[i]);
     }
     return sweep;

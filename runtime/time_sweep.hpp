@@ -4,22 +4,31 @@
 // their swept bounds").
 //
 // The time range is cut into 2^depth equal pieces, and each piece keeps a
-// box around the object's surface at every instant of it (box_over, by
-// interval evaluation: conservative). The depth is the object's own: its
-// speed, probed over three short pieces of time, says how many pieces keep
-// each within kSweptBoundGrowth of the object's size (up to a limit); those
-// are evaluated, and pairs are merged back (their union holds both) while
-// the coarser pieces are already that tight, or while the finer ones save
-// fewer object tests than their evaluation costs. So a static object keeps
-// one piece, a slow one a few, a small fast one the limit, and each object
-// costs one evaluation per piece at the depth its speed asks for (halving
-// level by level cost twice that). A motion that is fast only between the
-// probes gets fewer pieces than it could use: looser, never wrong.
+// box whose sides move linearly over it (moving_box.hpp). Where the object
+// bounds its motion's second derivative (chord_bound_over: a rigid shape
+// on an affine motion without jumps or kinks), a piece is the chord between
+// the object's placed boxes at the piece's ends (double placements, cheap),
+// moved out by the chord's error, length^2 / 8 times that bound, and the
+// rounding margin: a box at each instant wider than the object by the
+// square of the piece's length, where a box over the whole piece is wider
+// by its length times the speed. Elsewhere a piece is an interval box over
+// the piece, held still. Both are conservative.
 //
-// Storage: the box over the whole range in doubles, and each piece as six
-// 16-bit steps of that box, rounded outward (a piece's lower ends to a step
+// The depth is the object's own: for chords, the fewest pieces whose error
+// keeps the box at every instant within kSweptBoundGrowth of the object's
+// size, or fewer where the object tests saved do not pay for the ends (one
+// jet over the whole range bounds the acceleration); for boxes, as many as the speed measured over
+// three short probes asks for. Then pairs are merged back while the coarser pieces are already that
+// tight, or the finer ones save fewer object tests than they cost. So a static object keeps one
+// piece, a slow one a few, a small fast one more, up to a limit. A motion that is fast only between
+// the probes gets fewer box pieces than it could use: looser, never wrong.
+//
+// Storage: the box over the whole range in doubles, and each piece as the
+// four ends of its moving sides (lower and upper, at the piece's start and
+// end), each a 16-bit step of that box rounded outward (lower ends to a step
 // at or below them, upper ends at or above, checked on the decoded values,
-// so the rounding of encoding and decoding cannot cut anything off): 12
+// so the rounding of encoding and decoding cannot cut anything off; a line
+// between outward ends lies outside the line between the true ends): 24
 // bytes per piece, whatever the scene's scale.
 #pragma once
 
@@ -28,6 +37,7 @@
 #include <vector>
 
 #include "runtime/intelligent_object.hpp"
+#include "runtime/moving_box.hpp"
 #include "runtime/spacetime.hpp"
 
 namespace hexant::runtime {
@@ -50,7 +60,8 @@ inline double dyadic_time(const Interval& range, int level, std::uint64_t index)
 // animation spreading evenly over the scene's area and time.
 struct SweepPricing {
     double ray_density = 0.0;       // rays per unit of area and of time; 0: free
-    double evaluation_cost = 100.0; // one box evaluation, in node tests
+    double evaluation_cost = 100.0;  // one box evaluation (interval), in node tests
+    double point_cost = 20.0;        // one placed box at an instant (doubles), in node tests
     double object_cost = 3.0;       // one object test, in node tests
 };
 
@@ -82,9 +93,10 @@ public:
     // Exact and cheap when the hierarchy's cells are cut the same way.
     Box4 box_over_dyadic(int level, std::uint64_t index) const;
 
-    // Piece i's time interval and box (space part; empty if the object has
-    // no surface then).
+    // Piece i's time interval, its moving box, and the box over all of it
+    // (empty if the object has no surface then).
     Interval piece_time(std::size_t i) const;
+    MovingBox moving_piece(std::size_t i) const;
     Box4 piece(std::size_t i) const;
     // The pieces that meet t: [first, last], or first > last for none.
     void pieces_meeting(const Interval& t, std::size_t& first, std::size_t& last) const;
@@ -95,13 +107,16 @@ public:
 private:
     double boundary(std::size_t i) const;
     double decode(int axis, std::uint16_t q) const;
-    void encode(std::size_t i, const Box4& box);
+    std::uint16_t encode_down(int axis, double v) const;
+    std::uint16_t encode_up(int axis, double v) const;
+    void encode(std::size_t i, const MovingBox& box);
 
     Interval time_{0.0, 0.0};
     int depth_ = 0;
     double step_[3] = {0.0, 0.0, 0.0};  // one 16-bit step of whole_, per axis
     Box4 whole_;
-    std::vector<std::uint16_t> steps_;  // 6 per piece (lo xyz, hi xyz); none at depth 0
+    // 12 per piece (lo0 xyz, lo1 xyz, hi0 xyz, hi1 xyz); none at depth 0.
+    std::vector<std::uint16_t> steps_;
 };
 
 }  // namespace hexant::runtime

@@ -128,6 +128,16 @@ Dual TimeTape::spline_value(const Instruction& in, const Dual& p) const {
     return {spline_value(in, p.v), p.d == 0.0 ? 0.0 : derivative * p.d};
 }
 
+// A spline's pieces meet with kinks (and held values jump): its range only,
+// with no linear form.
+IntervalJet TimeTape::spline_value(const Instruction& in, const IntervalJet& p) const {
+    const Interval range = spline_value(in, p.v);
+    if (p.d.lo == 0.0 && p.d.hi == 0.0 && p.r == 0.0 && p.v.is_point())
+        return {range, Interval(0.0), Interval(0.0),
+                range.width()};  // both values lie in the range
+    return IntervalJet::unknown(range);
+}
+
 template <class Number>
 void TimeTape::evaluate(Number t, Number* outputs, Number* scratch) const {
     const std::size_t n = code_.size();
@@ -165,8 +175,10 @@ void TimeTape::evaluate(Number t, Number* outputs) const {
 template void TimeTape::evaluate<double>(double, double*, double*) const;
 template void TimeTape::evaluate<Interval>(Interval, Interval*, Interval*) const;
 template void TimeTape::evaluate<Dual>(Dual, Dual*, Dual*) const;
+template void TimeTape::evaluate<IntervalJet>(IntervalJet, IntervalJet*, IntervalJet*) const;
 template void TimeTape::evaluate<double>(double, double*) const;
 template void TimeTape::evaluate<Interval>(Interval, Interval*) const;
 template void TimeTape::evaluate<Dual>(Dual, Dual*) const;
+template void TimeTape::evaluate<IntervalJet>(IntervalJet, IntervalJet*) const;
 
 }  // namespace hexant::runtime

@@ -6,7 +6,10 @@
 // One tape, three evaluators, chosen by the number type:
 //   double   - the point value, equal bit for bit to TimeFunction(t);
 //   Interval - a range that holds the point value for every t in the interval;
-//   Dual     - the point value and its derivative in t.
+//   Dual     - the point value and its derivative in t;
+//   IntervalJet - over an interval of times, the range, the first two
+//              derivatives' ranges and the double evaluation's rounding
+//              radius (interval_jet.hpp), for sweeps that follow the motion.
 // Both branches of select and ?: are computed (no jumps); at a point that
 // changes nothing, since operations have no side effects.
 #pragma once
@@ -18,6 +21,7 @@
 
 #include "runtime/dual.hpp"
 #include "runtime/interval.hpp"
+#include "runtime/interval_jet.hpp"
 #include "runtime/spline.hpp"
 #include "runtime/spline_bounds.hpp"
 #include "runtime/time_function.hpp"
@@ -60,6 +64,7 @@ class TimeTape {
     double spline_value(const Instruction& in, double p) const;
     Interval spline_value(const Instruction& in, const Interval& p) const;
     Dual spline_value(const Instruction& in, const Dual& p) const;
+    IntervalJet spline_value(const Instruction& in, const IntervalJet& p) const;
 
     std::vector<Instruction> code_;
     std::vector<std::uint32_t> outputs_;
@@ -71,8 +76,10 @@ class TimeTape {
 extern template void TimeTape::evaluate<double>(double, double*, double*) const;
 extern template void TimeTape::evaluate<Interval>(Interval, Interval*, Interval*) const;
 extern template void TimeTape::evaluate<Dual>(Dual, Dual*, Dual*) const;
+extern template void TimeTape::evaluate<IntervalJet>(IntervalJet, IntervalJet*, IntervalJet*) const;
 extern template void TimeTape::evaluate<double>(double, double*) const;
 extern template void TimeTape::evaluate<Interval>(Interval, Interval*) const;
 extern template void TimeTape::evaluate<Dual>(Dual, Dual*) const;
+extern template void TimeTape::evaluate<IntervalJet>(IntervalJet, IntervalJet*) const;
 
 }  // namespace hexant::runtime

@@ -35,6 +35,7 @@ struct Counters {
     // the render, by the threads that reach them: their time is inside
     // render_seconds, and lazy_build_seconds sums it over the threads.
     double build_seconds = 0.0;
+    double sweep_seconds = 0.0;  // the part of build_seconds spent on the objects' sweeps
     double render_seconds = 0.0;
     double lazy_build_seconds = 0.0;
     // Memory: the hierarchy's nodes and the objects' sweeps when last
@@ -69,6 +70,7 @@ struct Counters {
         time_splits += o.time_splits;
         deformation_maps += o.deformation_maps;
         build_seconds += o.build_seconds;
+        sweep_seconds += o.sweep_seconds;
         render_seconds += o.render_seconds;
         lazy_build_seconds += o.lazy_build_seconds;
         node_bytes = std::max(node_bytes, o.node_bytes);

@@ -23,8 +23,10 @@ public:
         : objects_(std::move(objects)), animation_(animation), options_(options) {
         const auto start = std::chrono::steady_clock::now();
         swept_ = SweptObjects::of(objects_.bounded, animation, options);
-        counters.build_seconds +=
+        const double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        counters.build_seconds += seconds;
+        counters.sweep_seconds += seconds;
     }
 
     void prepare_frame(double t0, double t1, Counters& counters) override {

@@ -18,8 +18,10 @@ SweptObjects timed_sweeps(const ObjectSet& objects, const Box4& animation,
                           const BuildOptions& options, Counters& counters) {
     const auto start = std::chrono::steady_clock::now();
     SweptObjects swept = SweptObjects::of(objects.bounded, animation, options);
-    counters.build_seconds +=
+    const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    counters.build_seconds += seconds;
+    counters.sweep_seconds += seconds;
     return swept;
 }
 

@@ -105,6 +105,7 @@ struct BenchVariant {
 const BenchVariant kVariants[] = {
     {"static", "rotate <20, 30, 40>"},
     {"moving", "translate <0.3, 0, 0> rotate <0, 360 * clock, 0> translate <0, 0.2 * clock, 0>"},
+    {"orbit", "translate <5, 0, 0> rotate y * (37 + 1440 * clock) rotate <30, 0, -50>"},
     {"deformed", "twist <0, 1, 0>, 180"},
 };
 
@@ -117,8 +118,8 @@ int main(int argc, char** argv) {
 
     std::printf("hexant_object_bench: %d rays/regions, median of %d passes\n", options.rays,
                 options.repeats);
-    std::printf("%-16s %-9s %14s %12s %10s\n", "kind", "variant", "ns/intersect", "ns/bound",
-                "hit rate");
+    std::printf("%-16s %-9s %14s %12s %10s %12s %12s\n", "kind", "variant", "ns/intersect",
+                "ns/bound", "hit rate", "ns/box_over", "ns/placed");
 
     std::vector<KindScene> kinds = kind_scenes();
     kinds.push_back({"plane", "<0.2, 1, 0.1>, 0.1", ""});
@@ -152,13 +153,34 @@ int main(int argc, char** argv) {
                     g_sink = g_sink + double(n);
                 });
             }
+            // The sweep's evaluations (runtime/time_sweep.hpp): the box over
+            // 1/64 of the animation (interval), and a placed box at one
+            // instant (a chord's end, doubles).
+            double box_ns = 0.0, moving_ns = 0.0;
+            if (object.bounded()) {
+                constexpr int kPieces = 64;
+                const auto piece = [](int i) {
+                    return rt::Interval(i / double(kPieces), (i + 1) / double(kPieces));
+                };
+                box_ns = median_ns(options.repeats, kPieces, [&] {
+                    double sum = 0.0;
+                    for (int i = 0; i < kPieces; ++i) sum += object.box_over(piece(i)).hi.x;
+                    g_sink = g_sink + sum;
+                });
+                moving_ns = median_ns(options.repeats, kPieces, [&] {
+                    double sum = 0.0;
+                    for (int i = 0; i < kPieces; ++i) sum += object.placed_box_at(piece(i).lo).hi.x;
+                    g_sink = g_sink + sum;
+                });
+            }
             char bound_text[32];
             if (object.bounded())
                 std::snprintf(bound_text, sizeof bound_text, "%12.1f", bound_ns);
             else
                 std::snprintf(bound_text, sizeof bound_text, "%12s", "unbounded");
-            std::printf("%-16s %-9s %14.1f %s %9.0f%%\n", kind.keyword.c_str(), variant.name,
-                        intersect_ns, bound_text, 100.0 * hits / options.rays);
+            std::printf("%-16s %-9s %14.1f %s %9.0f%% %12.1f %12.1f\n", kind.keyword.c_str(),
+                        variant.name, intersect_ns, bound_text, 100.0 * hits / options.rays, box_ns,
+                        moving_ns);
         }
     }
 

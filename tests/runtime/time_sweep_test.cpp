@@ -1,0 +1,188 @@
+// Property tests of an object's sweep (runtime/time_sweep.hpp): for every
+// object kind and every motion variant of object_test_support.hpp (static,
+// translation, fast rotation, spline path, moving parameters, twist, taper,
+// bend, stiff twist) and two more (an orbit like examples/swarm.pov's, and
+// motions with a kink and a jump, which have no chord bound), random
+// surface events at random instants must lie inside the sweep's box over
+// that instant and inside its box over the dyadic piece of time holding it,
+// at every depth, with and without pricing. And the chords must be what
+// they are for: far tighter at an instant than boxes over the same pieces.
+//
+// The surface events come from the independent reference in
+// object_test_support.hpp; 10^4 events per variant in the suite
+// (HEXANT_PROPERTY_SAMPLES sets it).
+#include "runtime/time_sweep.hpp"
+
+#include <catch2/catch.hpp>
+#include <string>
+#include <vector>
+
+#include "object_test_support.hpp"
+#include "runtime/swept_bound.hpp"
+
+using namespace object_test;
+
+namespace {
+
+// As in object_bound_property_test.cpp: the reference reaches an event by
+// other roundings, within 1e-13 of its magnitude; 1e-12 leaves a factor of
+// ten, while a hole in a bound is many orders larger.
+constexpr double kRelativeSlack = 1e-12;
+
+bool holds(const rt::Box4& box, const rt::Event& e) {
+    const double magnitude = std::max({std::fabs(e.x), std::fabs(e.y), std::fabs(e.z), 1.0});
+    const double slack = kRelativeSlack * magnitude;
+    for (int k = 0; k < 3; ++k)
+        if (!(e[k] >= box.lo[k] - slack && e[k] <= box.hi[k] + slack)) return false;
+    return true;
+}
+
+std::vector<Variant> sweep_variants() {
+    std::vector<Variant> list = variants();
+    list.push_back({"orbit", "rotate y * (37 + 1440 * clock) rotate <-60, 0, 25>"});
+    list.push_back({"kink", "translate <abs(clock - 0.5) * 3, 0, 0>"});
+    list.push_back({"jump", "translate <(clock < 0.4 ? 0 : 2), clock, 0>"});
+    return list;
+}
+
+void check_kind(const KindScene& kind) {
+    const long wanted = std::max(1000L, property_samples() / 10);
+    Random random(std::hash<std::string>{}(kind.keyword) + 7);
+    for (const Variant& variant : sweep_variants()) {
+        // The orbit's sphere sits off its axis, as a swarm's does.
+        const std::string parameters = variant.moving_parameters ? kind.moving : kind.fixed;
+        const std::string prefix =
+            std::string(variant.name) == "orbit" ? "translate <3, 0, 0> " : "";
+        const std::string sdl = std::string(kPath) + kind.keyword + " { " + parameters + " " +
+                                prefix + variant.transform + " }\n";
+        const Parsed parsed = parse(sdl);
+        REQUIRE(parsed.objects.size() == 1);
+        const rt::IntelligentObject& object = *parsed.objects.front();
+        const rt::ObjectRecord& record = *parsed.scene.objects.front();
+        const rt::Interval time(0.0, 1.0);
+        for (const int depth : {0, 3, 8}) {
+            for (const bool priced : {false, true}) {
+                INFO(kind.keyword << ", " << variant.name << ", depth " << depth
+                                  << (priced ? ", priced" : "") << ": " << sdl);
+                rt::SweepPricing pricing;
+                if (priced) pricing.ray_density = 1e4;
+                const rt::TimeSweep sweep = rt::TimeSweep::of(object, time, depth, pricing);
+                REQUIRE_FALSE(sweep.empty());
+                for (long n = 0; n < wanted; ++n) {
+                    const double t = random.uniform(0.0, 1.0);
+                    const rt::Event e = sample_surface_event(record, t, random);
+                    const rt::Box4 at = sweep.box_over(rt::Interval(t));
+                    const int level = random.integer(0, 10);
+                    const auto index =
+                        std::uint64_t(std::min(std::ldexp(t, level), std::ldexp(1.0, level) - 1));
+                    const rt::Box4 piece = sweep.box_over_dyadic(level, index);
+                    if (!holds(at, e) || !holds(piece, e) || !holds(sweep.whole(), e)) {
+                        INFO("t " << t << " event " << e.x << ' ' << e.y << ' ' << e.z << " level "
+                                  << level);
+                        FAIL("a surface event outside the sweep");
+                    }
+                }
+            }
+        }
+    }
+}
+
+double widest(const rt::Box4& b) {
+    return std::max({b.hi.x - b.lo.x, b.hi.y - b.lo.y, b.hi.z - b.lo.z});
+}
+
+}  // namespace
+
+TEST_CASE("a sweep holds the surface: sphere, box, cylinder, torus", "[sweep][property]") {
+    check_kind(kind_scene("sphere"));
+    check_kind(kind_scene("box"));
+    check_kind(kind_scene("cylinder"));
+    check_kind(kind_scene("torus"));
+}
+
+TEST_CASE("a sweep holds the surface: triangle, polygon, disc, prism", "[sweep][property]") {
+    check_kind(kind_scene("triangle"));
+    check_kind(kind_scene("polygon"));
+    check_kind(kind_scene("disc"));
+    check_kind(kind_scene("prism"));
+}
+
+TEST_CASE("a sweep holds a CSG's surface, chords through its children", "[sweep][property]") {
+    Random random(1988);
+    for (const char* kind : {"union", "intersection", "difference"}) {
+        const std::string sdl =
+            std::string(kind) +
+            " { sphere { <0, 0, 0>, 1 } box { <-0.5, -2, -0.5>, <0.5, 2, 0.5> "
+            "rotate x * 720 * clock } translate <3, 0, 0> rotate y * 1080 * clock }\n";
+        INFO(sdl);
+        const Parsed parsed = parse(sdl);
+        const rt::IntelligentObject& object = *parsed.objects.front();
+        REQUIRE(object.chord_bound_over(rt::Interval(0.0, 1.0)).has_value());
+        const rt::TimeSweep sweep = rt::TimeSweep::of(object, rt::Interval(0.0, 1.0), 8);
+        // The children's surfaces hold the CSG's: sample each child's.
+        const rt::ObjectRecord& csg = *parsed.scene.objects.front();
+        for (std::size_t c = 0; c < 2; ++c) {
+            const rt::ObjectRecord& child = *std::get<rt::Csg>(csg.shape).children[c];
+            for (int n = 0; n < 20000; ++n) {
+                const double t = random.uniform(0.0, 1.0);
+                const rt::Event local = sample_surface_event(child, t, random);
+                const rt::Event e(reference_to_world(csg.transform, glm::dvec3(local), t), t);
+                if (std::string(kind) == "difference" && c == 1)
+                    continue;  // only A's surface bounds A - B
+                if (!holds(sweep.box_over(rt::Interval(t)), e)) {
+                    INFO("child " << c << " t " << t);
+                    FAIL("a child's surface event outside the sweep");
+                }
+            }
+        }
+    }
+}
+
+TEST_CASE("chords follow a fast orbit far closer than boxes over the same pieces", "[sweep]") {
+    // A sphere of diameter 0.2 at distance 5, four turns over [0, 1].
+    const Parsed parsed =
+        parse("sphere { <5, 0, 0>, 0.1 rotate y * 1440 * clock rotate <30, 0, 20> }\n");
+    const rt::IntelligentObject& object = *parsed.objects.front();
+    const auto chord = object.chord_bound_over(rt::Interval(0.0, 1.0));
+    REQUIRE(chord.has_value());
+    // |x''| = w^2 R = (8 pi)^2 5 ~ 3158 per axis at most.
+    CHECK(std::max({chord->acceleration.x, chord->acceleration.y, chord->acceleration.z}) <
+          2.0 * 3158.3);
+    CHECK(std::max({chord->margin.x, chord->margin.y, chord->margin.z}) < 1e-12);
+    const rt::TimeSweep sweep = rt::TimeSweep::of(object, rt::Interval(0.0, 1.0), 8);
+    const int depth = sweep.depth();
+    CHECK(depth > 0);
+    double chord_width = 0.0, box_width = 0.0, growth = 0.0;
+    for (int i = 0; i < 100; ++i) {
+        const double t = (i + 0.5) / 100.0;
+        const double at = widest(sweep.box_over(rt::Interval(t)));
+        chord_width = std::max(chord_width, at);
+        growth = std::max(growth, at / widest(object.placed_box_at(t)));
+        const std::uint64_t index = std::uint64_t(std::ldexp(t, depth));
+        box_width =
+            std::max(box_width,
+                     widest(object.box_over(rt::Interval(std::ldexp(double(index), -depth),
+                                                         std::ldexp(double(index + 1), -depth)))));
+    }
+    // Within the growth the sweep aims at (kSweptBoundGrowth times the box
+    // at that instant, the object's box placed as the tracer places it),
+    // where boxes over the same pieces are several times wider.
+    CHECK(growth <= rt::kSweptBoundGrowth * 1.0001);
+    CHECK(box_width > 3.0 * chord_width);
+}
+
+TEST_CASE("no chord bound across a kink, a jump or a deformation", "[sweep]") {
+    for (const char* transform :
+         {"translate <abs(clock - 0.5), 0, 0>", "translate <(clock < 0.4 ? 0 : 2), 0, 0>",
+          "twist <0, 1, 0>, 90 * clock", "scale <1, clock, 1>"}) {
+        INFO(transform);
+        const Parsed parsed = parse(std::string("sphere { <1, 0, 0>, 0.5 ") + transform + " }\n");
+        CHECK_FALSE(parsed.objects.front()->chord_bound_over(rt::Interval(0.0, 1.0)).has_value());
+    }
+    // Away from the kink and the jump the motion is smooth again.
+    const Parsed kink = parse("sphere { <1, 0, 0>, 0.5 translate <abs(clock - 0.5), 0, 0> }\n");
+    CHECK(kink.objects.front()->chord_bound_over(rt::Interval(0.6, 1.0)).has_value());
+    const Parsed jump =
+        parse("sphere { <1, 0, 0>, 0.5 translate <(clock < 0.4 ? 0 : 2), 0, 0> }\n");
+    CHECK(jump.objects.front()->chord_bound_over(rt::Interval(0.5, 1.0)).has_value());
+}
