@@ -78,6 +78,9 @@ std::size_t SweptObjects::bytes() const {
 
 namespace {
 
+// Work on fewer objects than this stays on one thread.
+constexpr std::size_t kParallelGrain = 1024;
+
 // Bounds are fitted to this many equal pieces (bins) of a node's time.
 constexpr int kFitLevels = 3;
 constexpr int kFitBins = 1 << kFitLevels;
@@ -460,12 +463,17 @@ private:
     // A cell at the bottom: its objects as children, each bounded inside it.
     NodeRef leaf(const Box4& region, const CellTime& time, const std::vector<std::uint32_t>& objects,
                  Counters& counters) const {
+        std::vector<Child> all(objects.size());
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, objects.size(), kParallelGrain),
+                          [&](const tbb::blocked_range<std::size_t>& r) {
+                              for (std::size_t k = r.begin(); k < r.end(); ++k)
+                                  all[k] = {NodeRef::object(objects[k]),
+                                            object_bins(objects[k], region, time, fit_levels())};
+                          });
         std::vector<Child> children;
-        children.reserve(objects.size());
-        for (const std::uint32_t i : objects) {
-            Child c{NodeRef::object(i), object_bins(i, region, time, fit_levels())};
+        children.reserve(all.size());
+        for (const Child& c : all)
             if (!c.bins.is_empty()) children.push_back(c);
-        }
         if (children.empty()) return {};
         counters.object_refs += children.size();
         return group(time.t, children, counters);
@@ -521,25 +529,35 @@ private:
             clusters[pick] = weigh(c.begin, middle);
             clusters.push_back(weigh(middle, c.end));
         }
-        std::vector<Child> grouped;
-        grouped.reserve(clusters.size());
-        for (const Cluster& c : clusters) {
+        // The clusters' nodes, built side by side where they are large (they
+        // own disjoint runs of the items).
+        std::vector<Child> grouped(clusters.size());
+        std::vector<Counters> each(clusters.size());
+        const auto make = [&](std::size_t n) {
+            const Cluster& c = clusters[n];
             if (c.end - c.begin == 1) {
-                grouped.push_back(children[items[c.begin].index]);
-                continue;
+                grouped[n] = children[items[c.begin].index];
+                return;
             }
             Child merged{{}, TimeBins::empty(children.front().bins.count)};
-            for (std::size_t k = c.begin; k < c.end; ++k) merged.bins.add(children[items[k].index].bins);
+            for (std::size_t k = c.begin; k < c.end; ++k)
+                merged.bins.add(children[items[k].index].bins);
             if (c.end - c.begin <= std::size_t(kNodeWidth)) {
                 std::vector<Child> members;
                 members.reserve(c.end - c.begin);
-                for (std::size_t k = c.begin; k < c.end; ++k) members.push_back(children[items[k].index]);
-                merged.ref = bound_node(time, members, counters);
+                for (std::size_t k = c.begin; k < c.end; ++k)
+                    members.push_back(children[items[k].index]);
+                merged.ref = bound_node(time, members, each[n]);
             } else {
-                merged.ref = group_range(time, children, items, c.begin, c.end, counters);
+                merged.ref = group_range(time, children, items, c.begin, c.end, each[n]);
             }
-            grouped.push_back(merged);
-        }
+            grouped[n] = merged;
+        };
+        if (end - begin >= kParallelGrain)
+            tbb::parallel_for(std::size_t(0), clusters.size(), make);
+        else
+            for (std::size_t n = 0; n < clusters.size(); ++n) make(n);
+        for (const Counters& c : each) counters += c;
         return bound_node(time, grouped, counters);
     }
 
@@ -752,7 +770,7 @@ Hierarchy::~Hierarchy() = default;
 
 NodeRef Hierarchy::expand(NodeRef* slot, NodeRef pending, Counters& counters) const {
     PendingCell* p = pending.as<PendingCell>();
-    std::call_once(p->once, [&] {
+    tbb::collaborative_call_once(p->once, [&] {
         const auto start = std::chrono::steady_clock::now();
         CellTime time;
         time.t = p->region.time();

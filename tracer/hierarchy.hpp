@@ -28,6 +28,8 @@
 // every bound is a box over that whole interval, as the paper's baseline.
 #pragma once
 
+#include <tbb/collaborative_call_once.h>
+
 #include <atomic>
 #include <cstdint>
 #include <memory>
@@ -123,7 +125,7 @@ struct PendingCell {
     std::uint64_t time_index = 0;
     std::vector<std::uint32_t> objects;
     int depth = 0;
-    std::once_flag once;
+    tbb::collaborative_once_flag once;  // threads that wait help build
     NodeRef built;
 };
 
