@@ -137,6 +137,36 @@ Box4 TimeSweep::box_over_dyadic(int level, std::uint64_t index) const {
     return box;
 }
 
+void TimeSweep::boxes_over_dyadic(int level, std::uint64_t first, std::size_t count,
+                                  const IntelligentObject& object, Box4* out) const {
+    for (std::size_t k = 0; k < count; ++k) out[k] = box_over_dyadic(level, first + k);
+    if (!chord_ || level <= depth_ || empty() || count == 0) return;
+    // The chord's error over one piece of this level (its length rounded up).
+    const double length = interval_detail::next_up(dyadic_time(time_, level, first + 1) -
+                                                   dyadic_time(time_, level, first));
+    double out_by[3];
+    for (int a = 0; a < 3; ++a)
+        out_by[a] = interval_detail::up(
+            length * length * 0.125 * chord_->acceleration[a] + chord_->margin[a], 4);
+    Box4 start = object.placed_box_at(dyadic_time(time_, level, first));
+    for (std::size_t k = 0; k < count; ++k) {
+        const Box4 end = object.placed_box_at(dyadic_time(time_, level, first + k + 1));
+        if (!start.is_empty() && !end.is_empty() && !out[k].is_empty()) {
+            Box4 chord = start;
+            chord.extend(end);
+            for (int a = 0; a < 3; ++a) {
+                chord.lo[a] = interval_detail::next_down(chord.lo[a] - out_by[a]);
+                chord.hi[a] = interval_detail::next_up(chord.hi[a] + out_by[a]);
+            }
+            chord.lo.w = out[k].lo.w;
+            chord.hi.w = out[k].hi.w;
+            const Box4 both = chord.intersection(out[k]);
+            if (!both.is_empty()) out[k] = both;
+        }
+        start = end;
+    }
+}
+
 Box4 TimeSweep::box_over(const Interval& t) const {
     const Interval clipped(std::max(t.lo, time_.lo), std::min(t.hi, time_.hi));
     if (empty() || clipped.is_empty()) return Box4::empty();
@@ -221,10 +251,11 @@ namespace {
 // chord's error (its length squared / 8 times the acceleration bound) and
 // the margin; one jet over the whole range bounds the acceleration (a jet
 // per coarse piece would be tighter where the motion is uneven, and costs
-// as much as forty ends). Returns the depth and fills `level`.
+// as much as forty ends). Returns the depth and fills `level`; `capped`
+// when max_depth stopped it.
 int chord_pieces(const IntelligentObject& object, const Interval& time, int max_depth,
                  const SweepPricing& pricing, const IntelligentObject::ChordBound& whole,
-                 double size, std::vector<MovingBox>& level) {
+                 double size, std::vector<MovingBox>& level, bool& capped) {
     const double width = time.hi - time.lo;
     const double a = std::max({whole.acceleration.x, whole.acceleration.y, whole.acceleration.z});
     const double m = std::max({whole.margin.x, whole.margin.y, whole.margin.z});
@@ -247,6 +278,9 @@ int chord_pieces(const IntelligentObject& object, const Interval& time, int max_
         }
         ++depth;
     }
+    // Stopped by the depth limit (memory), not by tightness or price: finer
+    // pieces would still pay, so the sweep refines on request.
+    capped = depth == max_depth && !(chord_error(depth) <= allowed);
     const std::size_t n = std::size_t(1) << depth;
     std::vector<Box4> ends(n + 1);
     for (std::size_t i = 0; i <= n; ++i)
@@ -317,9 +351,11 @@ TimeSweep TimeSweep::of(const IntelligentObject& object, const Interval& time, i
     if (object.moves() && time.lo < time.hi && max_depth > 0 && !whole_box.is_empty()) {
         const double width = time.hi - time.lo;
         const double size = std::max(largest_extent(object.placed_box_at(time.mid())), 1e-300);
-        if (const auto chord = object.chord_bound_over(time))
-            depth = chord_pieces(object, time, max_depth, pricing, *chord, size, level);
-        else
+        if (const auto chord = object.chord_bound_over(time)) {
+            bool capped = false;
+            depth = chord_pieces(object, time, max_depth, pricing, *chord, size, level, capped);
+            if (capped) sweep.chord_ = *chord;
+        } else
             depth = box_pieces(object, time, max_depth, size, level);
         // Then back up, merging pairs, while the coarser pieces are already
         // within the growth of the object's size, or the object tests the

@@ -34,6 +34,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "runtime/intelligent_object.hpp"
@@ -93,6 +94,18 @@ public:
     // Exact and cheap when the hierarchy's cells are cut the same way.
     Box4 box_over_dyadic(int level, std::uint64_t index) const;
 
+    // As box_over_dyadic for pieces first .. first + count - 1 of level
+    // `level`, into out[0 .. count). Where the level is finer than the
+    // sweep's pieces and the sweep was made by chords, each box is refined
+    // from `object` (the object the sweep is of): the chord over that finer
+    // piece, from placed boxes at its ends (shared by neighbours, count + 1
+    // placements), clipped to the cached piece's part. The paper's star
+    // cluster: the cache answers coarse questions, the object fine ones.
+    void boxes_over_dyadic(int level, std::uint64_t first, std::size_t count,
+                           const IntelligentObject& object, Box4* out) const;
+    // Can boxes_over_dyadic refine below the cached pieces?
+    bool refines() const { return chord_.has_value(); }
+
     // Piece i's time interval, its moving box, and the box over all of it
     // (empty if the object has no surface then).
     Interval piece_time(std::size_t i) const;
@@ -115,6 +128,8 @@ private:
     int depth_ = 0;
     double step_[3] = {0.0, 0.0, 0.0};  // one 16-bit step of whole_, per axis
     Box4 whole_;
+    // The chord bound over the whole time, for sweeps made by chords.
+    std::optional<IntelligentObject::ChordBound> chord_;
     // 12 per piece (lo0 xyz, lo1 xyz, hi0 xyz, hi1 xyz); none at depth 0.
     std::vector<std::uint16_t> steps_;
 };

@@ -174,12 +174,28 @@ private:
         return box.intersection(region);
     }
 
+    // Object i over 2^k equal pieces of the cell's time, clipped to the
+    // region, into out[0 .. 2^k): looked up in its sweep, or refined by the
+    // object where the pieces are finer than the sweep's
+    // (TimeSweep::boxes_over_dyadic).
+    void object_pieces(std::uint32_t i, const Box4& region, const CellTime& time, int k,
+                       Box4* out) const {
+        const std::size_t n = std::size_t(1) << k;
+        if (time.level >= 0) {
+            objects_.sweeps[i].boxes_over_dyadic(time.level + k, time.index << k, n,
+                                                 *objects_.objects[i], out);
+            for (std::size_t p = 0; p < n; ++p) out[p] = out[p].intersection(region);
+            return;
+        }
+        for (std::size_t p = 0; p < n; ++p)
+            out[p] = object_over(i, time.part(k, p, objects_.time), region);
+    }
+
     // Object i over 2^k equal pieces of the cell's time, clipped to it.
     TimeBins object_bins(std::uint32_t i, const Box4& region, const CellTime& time, int k) const {
         TimeBins bins;
         bins.count = 1 << k;
-        for (int b = 0; b < bins.count; ++b)
-            bins.bin[b] = object_over(i, time.part(k, std::uint64_t(b), objects_.time), region);
+        object_pieces(i, region, time, k, bins.bin.data());
         return bins;
     }
 
@@ -253,8 +269,7 @@ private:
                 objects_.objects[i]->moves() ? options_.moving_object_cost / options_.object_cost : 1.0;
             const std::size_t n = std::size_t(1) << levels;
             pieces.resize(n);
-            for (std::size_t p = 0; p < n; ++p)
-                pieces[p] = object_over(i, time.part(levels, p, objects_.time), region);
+            object_pieces(i, region, time, levels, pieces.data());
             // How much tighter than its halves' boxes a fitted linear-motion
             // box holds this object over the whole cell time.
             double fit_share = 1.0;
@@ -347,14 +362,21 @@ private:
     // them), at least to quarters, at most CostSummary::kMaxTimeLevels; none
     // for a cell no longer than those pieces (its halves' boxes would be
     // its own).
+    //
+    // A cell inside one piece of the sweeps looks at eighths of its time
+    // when some of its objects' sweeps refine (chords: finer pieces are
+    // new answers, at a placement per end), down to 1/64 of a piece.
     int time_levels(const CellTime& time, const std::vector<std::uint32_t>& objects) const {
         const double span = time.t.width();
         double finest = span;
+        bool refine = false;
         for (const std::uint32_t i : objects) {
             const auto& sweep = objects_.sweeps[i];
-            finest = std::min(finest, sweep.time().width() / double(sweep.piece_count()));
+            const double piece = sweep.time().width() / double(sweep.piece_count());
+            finest = std::min(finest, piece);
+            if (sweep.refines() && span <= piece && span > piece / 64.0) refine = true;
         }
-        if (!(span > finest)) return 0;
+        if (!(span > finest)) return refine && time.level >= 0 ? kFitLevels : 0;
         int levels = 2;
         while (levels < CostSummary::kMaxTimeLevels && finest > 0.0 &&
                span / double(std::size_t(1) << levels) > finest)
