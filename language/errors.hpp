@@ -4,10 +4,10 @@
 #pragma once
 
 #include <string>
-
 #include <tao/pegtl.hpp>
 
 #include "language/grammar.hpp"
+#include "language/nesting_guard.hpp"
 
 namespace hexant::language {
 
@@ -132,8 +132,28 @@ std::string found_text(const ParseInput& in) {
     return " but found '" + std::string(b, q) + "'";
 }
 
+// The rules each level of nesting passes through: where the reader checks
+// its stack (nesting_guard.hpp).
+template <typename Rule>
+inline constexpr bool kNests =
+    std::is_same_v<Rule, grammar::unary> || std::is_same_v<Rule, grammar::vector_literal> ||
+    std::is_same_v<Rule, grammar::block_comment_body> ||
+    std::is_same_v<Rule, grammar::skip::nested> || std::is_same_v<Rule, grammar::skip::braced> ||
+    std::is_same_v<Rule, grammar::skip::parenthesized> ||
+    std::is_same_v<Rule, grammar::object_value> || std::is_same_v<Rule, grammar::csg_block> ||
+    std::is_same_v<Rule, grammar::scene_item> || std::is_same_v<Rule, grammar::hash>;
+
 template <typename Rule>
 struct control : tao::pegtl::must_if<error_messages, tao::pegtl::normal, true>::control<Rule> {
+    using base = typename tao::pegtl::must_if<error_messages, tao::pegtl::normal,
+                                              true>::template control<Rule>;
+
+    template <typename ParseInput, typename... States>
+    static void start(const ParseInput& in, States&&... states) {
+        if constexpr (kNests<Rule>) NestingGuard::check(in);
+        base::start(in, states...);
+    }
+
     template <typename ParseInput, typename... States>
     [[noreturn]] static void raise(const ParseInput& in, States&&...) {
         static_assert(error_messages::message<Rule> != nullptr,

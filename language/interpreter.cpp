@@ -337,6 +337,7 @@ namespace {
 
 runtime::SceneDescription parse(const std::string& text, const std::string& name,
                                 const std::filesystem::path& folder, const ParseOptions& options) {
+    const NestingGuard nesting;  // the reader's stack is measured from here
     runtime::SceneDescription scene;
     scene.animation = options.animation;
     Interpreter interpreter(options, scene, folder);

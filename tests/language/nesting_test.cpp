@@ -1,0 +1,76 @@
+// Deep nesting is an error at its place, never a crash (issue 17): scenes a
+// generator could write, each far deeper than the reader's stack allows,
+// and the same constructs at depths real scenes use, which still read.
+#include <catch2/catch.hpp>
+#include <sstream>
+#include <string>
+
+#include "language/interpreter.hpp"
+
+using hexant::language::ParseOptions;
+using hexant::language::SceneError;
+
+namespace {
+
+std::string repeat(const std::string& s, int n) {
+    std::string out;
+    out.reserve(s.size() * std::size_t(n));
+    for (int i = 0; i < n; ++i) out += s;
+    return out;
+}
+
+// Reads the scene; returns the error's message, or "" when it reads.
+std::string read(const std::string& text) {
+    std::ostringstream messages;
+    ParseOptions options;
+    options.messages = &messages;
+    try {
+        hexant::language::parse_scene_text(text, "deep.pov", options);
+    } catch (const SceneError& e) {
+        return e.message();
+    }
+    return "";
+}
+
+struct Deep {
+    const char* what;
+    std::string open, middle, close;
+};
+
+}  // namespace
+
+TEST_CASE("nesting beyond the reader's stack is an error, not a crash", "[language][nesting]") {
+    const Deep cases[] = {
+        {"parentheses", "#declare X = ", "1", ";"}, {"vectors", "#declare V = ", "1", ";"},
+        {"unary minus", "#declare X = ", "1", ";"}, {"comments", "", "", ""},
+        {"#if", "", "sphere { 0, 1 }", ""},         {"skipped #while", "#if (0) ", "", " #end"},
+        {"unions", "", "sphere { 0, 1 }", ""},
+    };
+    for (const Deep& d : cases) {
+        const std::string what = d.what;
+        const int n = 200000;
+        std::string text;
+        if (what == "parentheses")
+            text = d.open + repeat("(", n) + d.middle + repeat(")", n) + d.close;
+        if (what == "vectors")
+            text = d.open + repeat("<", n) + d.middle + repeat(",0,0>", n) + d.close;
+        if (what == "unary minus") text = d.open + repeat("-", n) + d.middle + d.close;
+        if (what == "comments") text = repeat("/*", n) + repeat("*/", n) + " sphere { 0, 1 }";
+        if (what == "#if") text = repeat("#if (1) ", n) + d.middle + repeat(" #end", n);
+        if (what == "skipped #while")
+            text = d.open + repeat("#while (1) ", n) + repeat(" #end", n) + d.close;
+        if (what == "unions") text = repeat("union { ", n) + d.middle + repeat(" }", n);
+        INFO(what);
+        const std::string message = read(text);
+        CHECK(message.find("nested too deeply") != std::string::npos);
+    }
+}
+
+TEST_CASE("nesting as deep as real scenes go still reads", "[language][nesting]") {
+    CHECK(read("#declare X = " + repeat("(", 500) + "1" + repeat(")", 500) + ";") == "");
+    CHECK(read("#declare X = " + repeat("-", 500) + "1;") == "");
+    CHECK(read(repeat("/*", 200) + repeat("*/", 200) + " sphere { 0, 1 }") == "");
+    CHECK(read(repeat("#if (1) ", 200) + "sphere { 0, 1 }" + repeat(" #end", 200)) == "");
+    CHECK(read(repeat("union { ", 200) + "sphere { 0, 1 } sphere { 1, 1 }" + repeat(" }", 200)) ==
+          "");
+}
