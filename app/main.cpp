@@ -1,9 +1,8 @@
 // hexant: renders animations written in a POV-Ray-style scene language with
 // Glassner's spacetime ray tracing. Each subcommand takes
 //   hexant SUBCOMMAND SCENE.pov [FILE.ini ...] [flags]
-#include <iostream>
-
 #include <CLI/CLI.hpp>
+#include <iostream>
 
 #include "app/command_line.hpp"
 #include "app/error_time_command.hpp"
@@ -11,9 +10,12 @@
 #include "app/scene_dump.hpp"
 #include "app/scene_summary.hpp"
 #include "language/interpreter.hpp"
+#include "tracer/whole_file.hpp"
 
 int main(int argc, char** argv) {
     using namespace hexant;
+    // An interrupted run leaves no half-written file behind.
+    tracer::install_cleanup_on_signals();
     CLI::App program{"hexant: spacetime ray tracing of POV-Ray-style animated scenes"};
     program.require_subcommand(1);
 

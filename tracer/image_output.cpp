@@ -1,10 +1,11 @@
 #include "tracer/image_output.hpp"
 
+#include <OpenImageIO/imageio.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
-
-#include <OpenImageIO/imageio.h>
 
 #include "tracer/whole_file.hpp"
 
@@ -45,31 +46,80 @@ std::vector<unsigned char> srgb_pixels(const Image& image) {
 
 }  // namespace
 
+namespace {
+
+// Reads the written file back whole: a write that failed quietly (a full
+// disk under a library that does not check fwrite) leaves a file that does
+// not read. With `expected`, its pixels must also be exactly those written.
+bool reads_back(const fs::path& file, int width, int height, int subimages, OIIO::TypeDesc type,
+                const void* expected, std::size_t expected_bytes, std::string& reason) {
+    // The reader's first line says why (a library may add several).
+    const auto first_line = [](std::string text) { return text.substr(0, text.find('\n')); };
+    auto in = OIIO::ImageInput::open(file.string());
+    if (!in) {
+        reason = "it does not read back: " + first_line(OIIO::geterror());
+        return false;
+    }
+    for (int s = 0; s < subimages; ++s) {
+        if (s > 0 && !in->seek_subimage(s, 0)) {
+            reason = "frame " + std::to_string(s + 1) + " is missing";
+            return false;
+        }
+        const OIIO::ImageSpec& spec = in->spec();
+        if (spec.width != width || spec.height != height) {
+            reason = "it reads back with the wrong size";
+            return false;
+        }
+        std::vector<unsigned char> data(std::size_t(width) * std::size_t(height) *
+                                        std::size_t(spec.nchannels) * type.size());
+        if (!in->read_image(0, 0, 0, spec.nchannels, type, data.data())) {
+            reason = "it does not read back whole, is the disk full? " + first_line(in->geterror());
+            return false;
+        }
+        if (expected && (spec.nchannels != 3 || data.size() != expected_bytes ||
+                         std::memcmp(data.data(), expected, expected_bytes) != 0)) {
+            reason = "it reads back different from what was written";
+            return false;
+        }
+    }
+    return true;
+}
+
+}  // namespace
+
 void write_image(const Image& image, const fs::path& path) {
     auto out = OIIO::ImageOutput::create(path.string());
     if (!out)
         throw std::runtime_error(path.string() + ": no image format for this name (" +
                                  OIIO::geterror() + ")");
-    const fs::path temporary = temporary_beside(path);
+    TemporaryFile temporary(path);
     const bool linear = is_float_format(path);
-    OIIO::ImageSpec spec(image.width, image.height, 3,
-                         linear ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
+    const OIIO::TypeDesc type = linear ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8;
+    OIIO::ImageSpec spec(image.width, image.height, 3, type);
     spec.attribute("oiio:ColorSpace", linear ? "Linear" : "sRGB");
-    if (!out->open(temporary.string(), spec))
+    if (!out->open(temporary.name().string(), spec))
         throw std::runtime_error(path.string() + ": cannot write: " + out->geterror());
-    bool ok;
+    std::vector<unsigned char> bytes;
+    const void* data = nullptr;
+    std::size_t size = 0;
     if (linear) {
-        ok = out->write_image(OIIO::TypeDesc::FLOAT, image.rgb.data());
+        data = image.rgb.data();
+        size = image.rgb.size() * sizeof(float);
     } else {
-        const auto pixels = srgb_pixels(image);
-        ok = out->write_image(OIIO::TypeDesc::UINT8, pixels.data());
+        bytes = srgb_pixels(image);
+        data = bytes.data();
+        size = bytes.size();
     }
+    bool ok = out->write_image(type, data);
     ok = out->close() && ok;
-    if (!ok) {
-        fs::remove(temporary);
-        throw std::runtime_error(path.string() + ": writing failed: " + out->geterror());
-    }
-    replace_with(temporary, path);
+    if (!ok) throw std::runtime_error(path.string() + ": writing failed: " + out->geterror());
+    // Half-precision formats (.hdr) do not give back the floats written.
+    const bool exact = !linear || path.extension() == ".exr" || path.extension() == ".EXR";
+    std::string reason;
+    if (!reads_back(temporary.name(), image.width, image.height, 1, type, exact ? data : nullptr,
+                    size, reason))
+        throw std::runtime_error(path.string() + ": writing failed (" + reason + ")");
+    temporary.commit();
 }
 
 // A full grid when one is nearly square (32 frames: 8 by 4, not 6 by 6 with
@@ -101,7 +151,7 @@ void write_animation(const std::vector<Image>& frames, const fs::path& path, dou
     auto out = OIIO::ImageOutput::create(path.string());
     if (!out || !out->supports("multiimage"))
         throw std::runtime_error(path.string() + ": this format cannot hold an animation");
-    const fs::path temporary = temporary_beside(path);
+    TemporaryFile temporary(path);
     std::vector<OIIO::ImageSpec> specs;
     for (const Image& f : frames) {
         OIIO::ImageSpec spec(f.width, f.height, 3, OIIO::TypeDesc::UINT8);
@@ -110,20 +160,23 @@ void write_animation(const std::vector<Image>& frames, const fs::path& path, dou
         spec.attribute("oiio:LoopCount", 0);
         specs.push_back(spec);
     }
-    if (!out->open(temporary.string(), int(specs.size()), specs.data()))
+    if (!out->open(temporary.name().string(), int(specs.size()), specs.data()))
         throw std::runtime_error(path.string() + ": cannot write: " + out->geterror());
     bool ok = true;
     for (std::size_t i = 0; i < frames.size() && ok; ++i) {
-        if (i > 0) ok = out->open(temporary.string(), specs[i], OIIO::ImageOutput::AppendSubimage);
+        if (i > 0)
+            ok = out->open(temporary.name().string(), specs[i], OIIO::ImageOutput::AppendSubimage);
         const auto pixels = srgb_pixels(frames[i]);
         ok = ok && out->write_image(OIIO::TypeDesc::UINT8, pixels.data());
     }
     ok = out->close() && ok;
-    if (!ok) {
-        fs::remove(temporary);
-        throw std::runtime_error(path.string() + ": writing failed: " + out->geterror());
-    }
-    replace_with(temporary, path);
+    if (!ok) throw std::runtime_error(path.string() + ": writing failed: " + out->geterror());
+    // Its colours are quantized (GIF): read back whole, not compared.
+    std::string reason;
+    if (!reads_back(temporary.name(), frames.front().width, frames.front().height,
+                    int(frames.size()), OIIO::TypeDesc::UINT8, nullptr, 0, reason))
+        throw std::runtime_error(path.string() + ": writing failed (" + reason + ")");
+    temporary.commit();
 }
 
 }  // namespace hexant::tracer

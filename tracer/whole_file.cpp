@@ -1,6 +1,12 @@
 #include "tracer/whole_file.hpp"
 
-#include <fstream>
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <csignal>
+#include <cstring>
 #include <stdexcept>
 #include <system_error>
 
@@ -8,34 +14,130 @@ namespace hexant::tracer {
 
 namespace fs = std::filesystem;
 
-fs::path temporary_beside(const fs::path& path) {
-    if (path.has_parent_path()) fs::create_directories(path.parent_path());
-    return path.parent_path() / ("." + path.filename().string() + ".partial");
+namespace {
+
+// The temporaries being written, for the signal handler: fixed slots of
+// fixed-size names (a handler may not allocate), claimed and released with
+// atomics. More temporaries at once than slots (frames are written one at
+// a time per thread) are still removed on failure, only not on a signal.
+constexpr int kSlots = 64;
+constexpr std::size_t kNameBytes = 4096;
+struct Slot {
+    std::atomic<int> state{0};  // 0 free, 1 being filled, 2 registered
+    char name[kNameBytes];
+};
+Slot g_slots[kSlots];
+
+int register_temporary(const fs::path& temporary) {
+    const std::string name = temporary.string();
+    if (name.size() + 1 > kNameBytes) return -1;
+    for (int i = 0; i < kSlots; ++i) {
+        int expected = 0;
+        if (!g_slots[i].state.compare_exchange_strong(expected, 1)) continue;
+        std::memcpy(g_slots[i].name, name.c_str(), name.size() + 1);
+        g_slots[i].state.store(2, std::memory_order_release);
+        return i;
+    }
+    return -1;
 }
 
-void replace_with(const fs::path& temporary, const fs::path& path) {
-    std::error_code error;
-    fs::rename(temporary, path, error);
-    if (error) {
-        fs::remove(temporary);
-        throw std::runtime_error(path.string() + ": cannot rename the finished file: " +
-                                 error.message());
+void release(int slot) {
+    if (slot >= 0) g_slots[slot].state.store(0, std::memory_order_release);
+}
+
+// fsync on a path (a file or a folder); errno's reason on failure.
+std::string sync_path(const fs::path& path, int flags) {
+    const int fd = ::open(path.c_str(), flags | O_CLOEXEC);
+    if (fd < 0) return std::strerror(errno);
+    std::string reason;
+    if (::fsync(fd) != 0 && errno != EINVAL && errno != EROFS) reason = std::strerror(errno);
+    if (::close(fd) != 0 && reason.empty()) reason = std::strerror(errno);
+    return reason;
+}
+
+extern "C" void on_fatal_signal(int signal) {
+    remove_registered_temporaries();
+    std::signal(signal, SIG_DFL);
+    std::raise(signal);
+}
+
+}  // namespace
+
+void remove_registered_temporaries() {
+    for (Slot& slot : g_slots)
+        if (slot.state.load(std::memory_order_acquire) == 2) ::unlink(slot.name);
+}
+
+void install_cleanup_on_signals() {
+    static std::atomic<bool> installed{false};
+    if (installed.exchange(true)) return;
+    for (const int s : {SIGINT, SIGTERM, SIGHUP}) {
+        struct sigaction action {};
+        action.sa_handler = on_fatal_signal;
+        sigemptyset(&action.sa_mask);
+        ::sigaction(s, &action, nullptr);
     }
+    // Past a file size limit a write fails (EFBIG, reported with the file)
+    // instead of killing the process.
+    std::signal(SIGXFSZ, SIG_IGN);
+}
+
+TemporaryFile::TemporaryFile(const fs::path& path) : path_(path) {
+    if (path.has_parent_path()) fs::create_directories(path.parent_path());
+    temporary_ = path.parent_path() / ("." + path.filename().string() + ".partial");
+    slot_ = register_temporary(temporary_);
+}
+
+TemporaryFile::~TemporaryFile() {
+    if (!committed_) {
+        std::error_code ignored;
+        fs::remove(temporary_, ignored);
+    }
+    release(slot_);
+}
+
+void TemporaryFile::commit() {
+    const auto fail = [&](const std::string& what) {
+        std::error_code ignored;
+        fs::remove(temporary_, ignored);
+        throw std::runtime_error(path_.string() + ": " + what);
+    };
+    // Written data that did not fit (a full disk) shows here at the latest.
+    if (const std::string reason = sync_path(temporary_, O_RDONLY); !reason.empty())
+        fail("writing failed: " + reason);
+    std::error_code error;
+    fs::rename(temporary_, path_, error);
+    if (error) fail("cannot rename the finished file: " + error.message());
+    committed_ = true;
+    const fs::path folder = path_.has_parent_path() ? path_.parent_path() : fs::path(".");
+    if (const std::string reason = sync_path(folder, O_RDONLY | O_DIRECTORY); !reason.empty())
+        throw std::runtime_error(path_.string() +
+                                 ": written, but its folder could not be flushed: " + reason);
 }
 
 void write_text_file(const fs::path& path, const std::string& text) {
-    const fs::path temporary = temporary_beside(path);
+    TemporaryFile temporary(path);
     {
-        std::ofstream file(temporary, std::ios::binary);
-        file << text;
-        file.flush();
-        if (!file) {
-            file.close();
-            fs::remove(temporary);
-            throw std::runtime_error(path.string() + ": cannot write");
+        const int fd =
+            ::open(temporary.name().c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+        if (fd < 0)
+            throw std::runtime_error(path.string() + ": cannot write: " + std::strerror(errno));
+        std::size_t done = 0;
+        std::string reason;
+        while (done < text.size()) {
+            const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+            if (n < 0) {
+                if (errno == EINTR) continue;
+                reason = std::strerror(errno);
+                break;
+            }
+            done += std::size_t(n);
         }
+        if (::close(fd) != 0 && reason.empty()) reason = std::strerror(errno);
+        if (!reason.empty())
+            throw std::runtime_error(path.string() + ": writing failed: " + reason);
     }
-    replace_with(temporary, path);
+    temporary.commit();
 }
 
 }  // namespace hexant::tracer

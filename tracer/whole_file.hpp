@@ -1,7 +1,11 @@
 // Files written whole or not at all: each goes under a temporary name beside
-// its place and is renamed over it once complete, so an interrupted or
-// failing run never leaves a half-written file under the real name (frames,
-// statistics, benchmark tables and plots alike).
+// its place, is flushed to the disk (fsync) and checked, and is renamed over
+// its place once complete (then the folder is flushed too), so a failing
+// run (a full disk, a file size limit, an I/O error) never leaves a
+// half-written file under the real name, and says why. A run stopped by
+// SIGINT, SIGTERM or SIGHUP removes the temporaries it was writing before
+// it dies (install_cleanup_on_signals), so none is left behind either.
+// Frames, statistics, benchmark tables and plots alike.
 #pragma once
 
 #include <filesystem>
@@ -9,14 +13,39 @@
 
 namespace hexant::tracer {
 
-// The temporary name beside `path` (".NAME.partial"); creates the folder.
-std::filesystem::path temporary_beside(const std::filesystem::path& path);
+// A temporary file being written: named beside `path` (".NAME.partial",
+// the folder created), registered for removal on a signal, and removed
+// when the object goes away unless commit() renamed it over `path`.
+class TemporaryFile {
+  public:
+    explicit TemporaryFile(const std::filesystem::path& path);
+    ~TemporaryFile();
+    TemporaryFile(const TemporaryFile&) = delete;
+    TemporaryFile& operator=(const TemporaryFile&) = delete;
 
-// Renames the finished temporary over `path`; removes it and throws
-// std::runtime_error naming `path` when that fails.
-void replace_with(const std::filesystem::path& temporary, const std::filesystem::path& path);
+    const std::filesystem::path& name() const { return temporary_; }
+
+    // Flushes the temporary to the disk, renames it over the path and
+    // flushes the folder; throws std::runtime_error naming the path and
+    // the system's reason (the temporary is removed).
+    void commit();
+
+  private:
+    std::filesystem::path path_, temporary_;
+    int slot_ = -1;  // in the signal handler's list
+    bool committed_ = false;
+};
 
 // Writes `text` to `path` whole; throws std::runtime_error naming the file.
 void write_text_file(const std::filesystem::path& path, const std::string& text);
+
+// From now on SIGINT, SIGTERM and SIGHUP remove every temporary being
+// written, then end the process as the signal would have. Once per process
+// (the app calls it); harmless to repeat.
+void install_cleanup_on_signals();
+
+// What the signal handler does, callable directly (tests): removes every
+// registered temporary. Async-signal-safe.
+void remove_registered_temporaries();
 
 }  // namespace hexant::tracer

@@ -1,0 +1,121 @@
+// Files are written whole or not at all (issue 17): past a file size limit
+// (what a full disk looks like to a writer) an image or a text file is an
+// error naming the file and the system's reason, with nothing left under
+// its name and no temporary; a run killed by a signal removes the
+// temporaries it was writing.
+#include "tracer/whole_file.hpp"
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <catch2/catch.hpp>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "tracer/image_output.hpp"
+
+namespace fs = std::filesystem;
+namespace tr = hexant::tracer;
+
+namespace {
+
+// A file size limit for this process while it lives (writes past it fail
+// with EFBIG; SIGXFSZ ignored, as hexant does).
+class FileSizeLimit {
+  public:
+    explicit FileSizeLimit(rlim_t bytes) {
+        getrlimit(RLIMIT_FSIZE, &saved_);
+        previous_ = std::signal(SIGXFSZ, SIG_IGN);
+        rlimit limit = saved_;
+        limit.rlim_cur = bytes;
+        setrlimit(RLIMIT_FSIZE, &limit);
+    }
+    ~FileSizeLimit() {
+        setrlimit(RLIMIT_FSIZE, &saved_);
+        std::signal(SIGXFSZ, previous_);
+    }
+
+  private:
+    rlimit saved_{};
+    void (*previous_)(int) = nullptr;
+};
+
+// Noise compresses badly: a 256 by 256 PNG of it is about 190 KB.
+tr::Image noise(int size) {
+    tr::Image image(size, size);
+    unsigned state = 1;
+    for (float& v : image.rgb) {
+        state = state * 1103515245u + 12345u;
+        v = float((state >> 8) & 0xffff) / 65535.0f;
+    }
+    return image;
+}
+
+}  // namespace
+
+TEST_CASE("a write that cannot finish fails with its reason and leaves nothing",
+          "[tracer][files]") {
+    const fs::path folder = fs::temp_directory_path() / "hexant_file_limit_test";
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    const tr::Image image = noise(256);
+    for (const char* name : {"frame.png", "frame.exr", "frame.tif"}) {
+        INFO(name);
+        {
+            const FileSizeLimit limit(16 * 1024);
+            CHECK_THROWS_WITH(tr::write_image(image, folder / name),
+                              Catch::Contains(name) && Catch::Contains("writing failed"));
+        }
+        CHECK(fs::is_empty(folder));
+        // Without the limit the same write succeeds, whole.
+        tr::write_image(image, folder / name);
+        CHECK(fs::file_size(folder / name) > 16 * 1024);
+        fs::remove(folder / name);
+    }
+    {
+        const FileSizeLimit limit(1024);
+        CHECK_THROWS_WITH(tr::write_text_file(folder / "stats.json", std::string(100000, 'x')),
+                          Catch::Contains("stats.json") && Catch::Contains("File too large"));
+        std::vector<tr::Image> frames(4, noise(64));
+        CHECK_THROWS_WITH(tr::write_animation(frames, folder / "movie.gif", 12.0),
+                          Catch::Contains("movie.gif"));
+    }
+    CHECK(fs::is_empty(folder));
+    fs::remove_all(folder);
+}
+
+TEST_CASE("a run ended by a signal removes the temporaries it was writing", "[tracer][files]") {
+    const fs::path folder = fs::temp_directory_path() / "hexant_signal_test";
+    fs::remove_all(folder);
+    tr::install_cleanup_on_signals();
+    {
+        tr::TemporaryFile file(folder / "frame.png");
+        std::ofstream(file.name()) << "half a frame";
+        REQUIRE(fs::exists(file.name()));
+        // A child inherits the list and the handler, and dies of SIGTERM
+        // as it would have: the temporary is gone.
+        const pid_t child = fork();
+        if (child == 0) {
+            std::raise(SIGTERM);
+            _exit(0);  // not reached
+        }
+        int status = 0;
+        REQUIRE(waitpid(child, &status, 0) == child);
+        CHECK(WIFSIGNALED(status));
+        CHECK(WTERMSIG(status) == SIGTERM);
+        CHECK_FALSE(fs::exists(file.name()));
+        CHECK_FALSE(fs::exists(folder / "frame.png"));
+    }
+    // Committed, the file is in its place and no longer the handler's.
+    {
+        tr::TemporaryFile file(folder / "kept.txt");
+        std::ofstream(file.name()) << "whole";
+        file.commit();
+        tr::remove_registered_temporaries();
+        CHECK(fs::exists(folder / "kept.txt"));
+    }
+    fs::remove_all(folder);
+}
