@@ -137,8 +137,15 @@ public:
     Box4 placed_box_at(double t) const override {
         if constexpr (kUnbounded) return Box4::empty();
         if (!moves_ || !model_.is_static() || !motion_.is_affine()) return box_over(Interval(t));
-        const objects::IntervalBox world =
-            AffineMap<double>::from(motion_.matrix_at(t)).apply(static_object_box_);
+        const AffineMap<double> map = AffineMap<double>::from(motion_.matrix_at(t));
+        objects::IntervalBox world;
+        // A model may know its own shape's box under a map (a sphere's is
+        // tighter than its object box's image, which a turn makes up to
+        // sqrt(3) times wider).
+        if constexpr (requires { Model::placed_box(*static_geometry_, map); })
+            world = Model::placed_box(*static_geometry_, map);
+        else
+            world = map.apply(static_object_box_);
         return {Event(world[0].lo, world[1].lo, world[2].lo, t),
                 Event(world[0].hi, world[1].hi, world[2].hi, t)};
     }
