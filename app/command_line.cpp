@@ -27,7 +27,12 @@ void add_scene_arguments(CLI::App& command, SceneArguments& a) {
                        "Fraction of each frame's clock step the shutter is open (default 1)");
     command.add_option("-L,--include-path", a.include_paths,
                        "Folder searched for #include after the scene's own (POV-Ray's +L)");
-    command.add_option("--declare", a.declares, "NAME=VALUE, as POV-Ray's Declare=");
+    command.add_option("--allow-read", a.read_paths,
+                       "Folder #include may also read from (POV-Ray's Read_Paths); otherwise only "
+                       "the scene's folder, -L folders and the include folders");
+    command.add_option("--declare", a.declares,
+                       "NAME=VALUE, as POV-Ray's Declare=: a number, a vector <a, b, c> or a "
+                       "\"string\"");
     // A range, so that "-1" (which an unsigned conversion wraps to 2^64 - 1)
     // is refused rather than taken as no limit at all.
     command.add_option("--max-loop-iterations", a.max_loop_iterations,
@@ -93,6 +98,7 @@ ResolvedScene resolve(const SceneArguments& arguments) {
     if (arguments.cyclic) a.cyclic = true;
     if (arguments.shutter) a.shutter = *arguments.shutter;
     for (const auto& path : arguments.include_paths) r.options.include_paths.emplace_back(path);
+    for (const auto& path : arguments.read_paths) r.options.read_paths.emplace_back(path);
     for (const auto& d : arguments.declares) {
         const auto eq = d.find('=');
         if (eq == std::string::npos || eq == 0)

@@ -25,6 +25,7 @@ struct SceneArguments {
     bool cyclic = false;
     std::optional<double> shutter;
     std::vector<std::string> include_paths;
+    std::vector<std::string> read_paths;
     std::vector<std::string> declares;  // NAME=VALUE
     std::optional<std::size_t> max_loop_iterations;
 };

@@ -2,13 +2,13 @@
 // points that run the grammar over a scene file.
 #include "language/interpreter.hpp"
 
-#include "language/checked_integer.hpp"
-
 #include <fstream>
 #include <iostream>
+#include <regex>
 #include <sstream>
 
 #include "language/actions.hpp"
+#include "language/checked_integer.hpp"
 #include "language/interpreter_state.hpp"
 
 #ifndef HEXANT_BUNDLED_INCLUDE_DIR
@@ -174,24 +174,72 @@ bool Interpreter::undefine(const std::string& name) {
     return false;
 }
 
+namespace {
+
+// POV-Ray's own include folder (Debian's povray-includes), readable too.
+const char* const kPovRayIncludeDir = "/usr/share/povray-3.7/include";
+
+// Is `file` inside `folder` (both canonical)?
+bool inside(const std::filesystem::path& file, const std::filesystem::path& folder) {
+    auto f = file.begin();
+    for (auto d = folder.begin(); d != folder.end(); ++d, ++f) {
+        if (d->empty()) continue;  // a trailing separator
+        if (f == file.end() || *f != *d) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
 std::filesystem::path Interpreter::resolve_include(const std::string& name,
                                                    const p::position& where) const {
     namespace fs = std::filesystem;
     const fs::path file(name);
-    if (file.is_absolute()) {
-        if (fs::exists(file)) return file;
-        fail(where, "include file '" + name + "' not found");
-    }
     std::vector<fs::path> folders{scene_folder_};
     folders.insert(folders.end(), options.include_paths.begin(), options.include_paths.end());
     folders.push_back(bundled_include_dir());
-    for (const auto& folder : folders) {
-        const fs::path candidate = folder / file;
-        if (fs::is_regular_file(candidate)) return candidate;
+    fs::path found;
+    std::error_code error;
+    if (file.is_absolute()) {
+        if (fs::exists(file, error)) found = file;
+    } else {
+        for (const auto& folder : folders) {
+            const fs::path candidate = folder / file;
+            if (fs::exists(candidate, error)) {
+                found = candidate;
+                break;
+            }
+        }
     }
-    std::string searched;
-    for (const auto& folder : folders) searched += (searched.empty() ? "" : ", ") + folder.string();
-    fail(where, "include file '" + name + "' not found (searched " + searched + ")");
+    if (found.empty()) {
+        if (file.is_absolute()) fail(where, "include file '" + name + "' not found");
+        std::string searched;
+        for (const auto& folder : folders)
+            searched += (searched.empty() ? "" : ", ") + folder.string();
+        fail(where, "include file '" + name + "' not found (searched " + searched + ")");
+    }
+    // Confinement, on the file as it really is (`..` and symbolic links
+    // resolved): a regular file inside a folder a scene may read. The
+    // messages never show the file's contents.
+    const fs::path real = fs::canonical(found, error);
+    if (error) fail(where, "include file '" + name + "' cannot be read: " + error.message());
+    if (!fs::is_regular_file(real, error))
+        fail(where, "include file '" + name +
+                        "' is not a regular file (a device, FIFO or folder "
+                        "cannot be included)");
+    std::vector<fs::path> allowed = folders;
+    allowed.push_back(kPovRayIncludeDir);
+    allowed.insert(allowed.end(), options.read_paths.begin(), options.read_paths.end());
+    for (const fs::path system : {"/proc", "/sys", "/dev"})
+        if (inside(real, system))
+            fail(where, "include file '" + name + "' is a system file: refused");
+    for (const auto& folder : allowed) {
+        const fs::path root = fs::weakly_canonical(folder.empty() ? fs::path(".") : folder, error);
+        if (!error && inside(real, root)) return real;
+    }
+    fail(where, "include file '" + name +
+                    "' is outside the folders a scene may read (its own "
+                    "folder, the -L folders and the include folders; --allow-read DIR adds one)");
 }
 
 // ------------------------------------------------------------------ objects
@@ -335,6 +383,23 @@ runtime::ObjectRecord make_shape(const std::string& kind, std::vector<Value>& ar
 
 namespace {
 
+// A Declare= value is a value, never scene text (a ';' or '#' would splice
+// directives into the scene): a number, a vector of numbers or a string
+// without quotes inside. POV-Ray 3.7 itself takes a float only.
+void check_declare(const std::string& key, const std::string& value) {
+    static const std::regex name("[A-Za-z_][A-Za-z0-9_]*");
+    static const std::string number = R"([+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?)";
+    static const std::regex accepted("\\s*(" + number + "|<\\s*" + number + "(\\s*,\\s*" + number +
+                                     ")*\\s*>|\"[^\"\\\\\\n]*\")\\s*");
+    if (!std::regex_match(key, name))
+        throw SceneError("the name must be an identifier", ErrorPlace{"--declare " + key, 0, 0, "", ""});
+    if (!std::regex_match(value, accepted))
+        throw SceneError("the value '" + value +
+                             "' must be a number, a vector of numbers <a, b, c> or a \"string\" "
+                             "(it is never read as scene text)",
+                         ErrorPlace{"--declare " + key, 0, 0, "", ""});
+}
+
 runtime::SceneDescription parse(const std::string& text, const std::string& name,
                                 const std::filesystem::path& folder, const ParseOptions& options) {
     const NestingGuard nesting;  // the reader's stack is measured from here
@@ -343,6 +408,7 @@ runtime::SceneDescription parse(const std::string& text, const std::string& name
     Interpreter interpreter(options, scene, folder);
     // Declare= / --declare: each value is read as an expression.
     for (const auto& [key, value] : options.declares) {
+        check_declare(key, value);
         const std::string source = "#declare " + key + " = " + value + ";";
         interpreter.read_file<grammar::scene_item, action, control>("--declare " + key, source);
     }

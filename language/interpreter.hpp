@@ -17,7 +17,12 @@ struct ParseOptions {
     runtime::Animation animation;  // image size and the clock mapping
     // Searched after the scene's own folder, in order (POV-Ray's +L).
     std::vector<std::filesystem::path> include_paths;
-    // NAME=VALUE pairs (POV-Ray's Declare=); VALUE is read as an expression.
+    // Folders #include may also read from (POV-Ray's Read_Paths), beside the
+    // scene's folder, the include paths and the include folders of hexant
+    // and POV-Ray.
+    std::vector<std::filesystem::path> read_paths;
+    // NAME=VALUE pairs (POV-Ray's Declare=); VALUE is a number, a vector of
+    // numbers or a string, never scene text.
     std::vector<std::pair<std::string, std::string>> declares;
     // Where #debug and #warning text goes (stderr when null).
     std::ostream* messages = nullptr;

@@ -7,6 +7,7 @@ namespace hexant::language {
 namespace {
 
 std::string header(const ErrorPlace& place) {
+    if (place.line == 0) return place.file;  // a place outside any file (the command line)
     return place.file + ":" + std::to_string(place.line) + ":" + std::to_string(place.column);
 }
 
