@@ -487,12 +487,16 @@ std::optional<IntervalVec3> Motion::to_object_within(const IntervalVec3& p, cons
 }
 
 glm::dmat4 Motion::matrix_at(double t) const {
-    if (fixed_affine_) return to_glm(forward_);
-    if (!affine_) throw std::logic_error("Motion::matrix_at on a deformed object");
+    return to_glm(map_at(t));
+}
+
+AffineMap<double> Motion::map_at(double t) const {
+    if (fixed_affine_) return forward_;
+    if (!affine_) throw std::logic_error("Motion::map_at on a deformed object");
     const MotionEvaluator<double> e(*this, t);
     AffineMap<double> m = AffineMap<double>::identity();
     for (const Stage& stage : stages_) e.compose(stage, m);
-    return to_glm(m);
+    return m;
 }
 
 glm::dmat4 Motion::inverse_at(double t) const {

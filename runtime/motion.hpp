@@ -50,6 +50,9 @@ class Motion {
 
     // Object to world at t, and back; only when is_affine().
     glm::dmat4 matrix_at(double t) const;
+    // The same map as a 3x4 matrix, without glm's 4x4 on the way (the
+    // sweeps' placed boxes take one per piece end).
+    AffineMap<double> map_at(double t) const;
     glm::dmat4 inverse_at(double t) const;
     // Both at once, from one evaluation of the time functions (a moving
     // object's intersection needs the inverse for the ray and the matrix

@@ -137,7 +137,7 @@ public:
     Box4 placed_box_at(double t) const override {
         if constexpr (kUnbounded) return Box4::empty();
         if (!moves_ || !model_.is_static() || !motion_.is_affine()) return box_over(Interval(t));
-        const AffineMap<double> map = AffineMap<double>::from(motion_.matrix_at(t));
+        const AffineMap<double> map = motion_.map_at(t);
         objects::IntervalBox world;
         // A model may know its own shape's box under a map (a sphere's is
         // tighter than its object box's image, which a turn makes up to
