@@ -66,20 +66,6 @@ struct MovingBox {
     // The box over the whole piece.
     Box4 hull() const { return box_over(time); }
 
-    // Holds both (same time): the lower of the lower lines at each end is a
-    // line below both, and the higher of the upper ones above both.
-    void extend(const MovingBox& o) {
-        if (o.empty) return;
-        if (empty) {
-            *this = o;
-            return;
-        }
-        lo0 = glm::min(lo0, o.lo0);
-        lo1 = glm::min(lo1, o.lo1);
-        hi0 = glm::max(hi0, o.hi0);
-        hi1 = glm::max(hi1, o.hi1);
-    }
-
     // Per side, the tighter of this box's line and o's (same time, both
     // holding the same thing): the one nearer the inside at mid-time.
     void tighten(const MovingBox& o) {

@@ -360,7 +360,11 @@ TimeSweep TimeSweep::of(const IntelligentObject& object, const Interval& time, i
         // Then back up, merging pairs, while the coarser pieces are already
         // within the growth of the object's size, or the object tests the
         // finer ones save, for the rays expected to meet them, do not pay
-        // for evaluating them.
+        // for them. Chord pieces too are priced at an interval evaluation
+        // here, not at a placement: finer pieces also make the hierarchy
+        // split time finer (swarm 10^4 priced at a placement: 4.2 object
+        // tests per ray instead of 7.5, but twice the references, 439 MB
+        // instead of 321 at peak and the same render time).
         while (depth > 0) {
             std::vector<MovingBox> coarser(level.size() / 2);
             for (std::size_t i = 0; i < coarser.size(); ++i)

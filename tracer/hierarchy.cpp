@@ -485,17 +485,16 @@ private:
     // A cell at the bottom: its objects as children, each bounded inside it.
     NodeRef leaf(const Box4& region, const CellTime& time, const std::vector<std::uint32_t>& objects,
                  Counters& counters) const {
-        std::vector<Child> all(objects.size());
+        std::vector<Child> children(objects.size());
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, objects.size(), kParallelGrain),
                           [&](const tbb::blocked_range<std::size_t>& r) {
                               for (std::size_t k = r.begin(); k < r.end(); ++k)
-                                  all[k] = {NodeRef::object(objects[k]),
-                                            object_bins(objects[k], region, time, fit_levels())};
+                                  children[k] = {
+                                      NodeRef::object(objects[k]),
+                                      object_bins(objects[k], region, time, fit_levels())};
                           });
-        std::vector<Child> children;
-        children.reserve(all.size());
-        for (const Child& c : all)
-            if (!c.bins.is_empty()) children.push_back(c);
+        // Objects the cell's bins miss (in place: no second copy of a large leaf).
+        std::erase_if(children, [](const Child& c) { return c.bins.is_empty(); });
         if (children.empty()) return {};
         counters.object_refs += children.size();
         return group(time.t, children, counters);

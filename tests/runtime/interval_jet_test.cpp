@@ -47,20 +47,6 @@ N orbit(const N& t) {
     return cos(angle) * N(5.0) * N(0.866) - sin(angle) * N(0.3);
 }
 
-long double ld_value(int which, long double t) {
-    switch (which) {
-        case 0:
-            return wave(t);
-        case 1:
-            return ratio(t);
-        case 2:
-            return root(t);
-        case 3:
-            return power(t);
-        default:
-            return orbit(t);
-    }
-}
 template <class N>
 N value(int which, const N& t) {
     switch (which) {
@@ -98,7 +84,7 @@ TEST_CASE("an interval jet holds the value, both derivatives and the rounding", 
                 const double x = t.lo + (t.hi - t.lo) * unit(random);
                 const double v = value(which, x);
                 CHECK(within(v, jet.v, 0.0));
-                const double exact = double(ld_value(which, (long double)x));
+                const double exact = double(value(which, (long double)x));
                 // long double's own error is about 2^-11 of double's.
                 CHECK(std::fabs(v - exact) <=
                       jet.r + 1e-3 * std::fabs(jet.r) + 1e-18 * std::fabs(exact));
