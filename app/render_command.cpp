@@ -183,10 +183,12 @@ Counters render_mode(const runtime::SceneDescription& scene, const RenderArgumen
     }
     if (settings.progress) std::cerr << "\r" << std::string(40, ' ') << "\r";
     renderer.measure_memory();
+    // The render's peak, before counting a full build adds its own.
+    const double peak_mb = peak_resident_mb();
     if (settings.build.count_full) renderer.count_full_hierarchy();
     Counters c = renderer.counters();
     c.memory_start_mb = start_mb;
-    c.memory_peak_mb = peak_resident_mb();
+    c.memory_peak_mb = peak_mb;
     return c;
 }
 

@@ -103,8 +103,8 @@ struct alignas(64) SlabNode {
 };
 
 // A cell whose children halve its time: child[0] holds [t0, split],
-// child[1] [split, t1]. A ray at one instant goes straight to its half;
-// no bound is tested.
+// child[1] [split, t1]. A ray at one instant goes straight to its half
+// (an instant on the split: the later one); no bound is tested.
 struct alignas(64) TimeNode {
     double t0, split, t1;
     NodeRef child[2];

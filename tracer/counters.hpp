@@ -38,10 +38,11 @@ struct Counters {
     double sweep_seconds = 0.0;  // the part of build_seconds spent on the objects' sweeps
     double render_seconds = 0.0;
     double lazy_build_seconds = 0.0;
-    // Memory: the hierarchy's nodes and the objects' sweeps when last
-    // measured (RayQuery::memory), and the process's resident memory before
-    // the render began and at its peak (the app fills these in; the peak
-    // is the process's, earlier renders in it included).
+    // Memory: the most the hierarchy's nodes held at once and the objects'
+    // sweeps (RayQuery::measure_memory), and the process's resident memory
+    // before the render began and at its peak (the app fills these in; the
+    // peak is the process's, earlier renders in it included, before the
+    // statistics' count of a full build).
     std::uint64_t node_bytes = 0, sweep_bytes = 0;
     double memory_start_mb = 0.0, memory_peak_mb = 0.0;
 

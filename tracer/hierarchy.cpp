@@ -143,18 +143,18 @@ public:
 
     // The node of the cell `region` (whose time is `time`) holding
     // `objects` (each meets it).
-    NodeRef build(const Box4& region, const CellTime& time, std::vector<std::uint32_t> objects,
-                  int depth, Counters& counters) const {
+    NodeRef build(NodeArena& arena, const Box4& region, const CellTime& time,
+                  std::vector<std::uint32_t> objects, int depth, Counters& counters) const {
         ++counters.cells;
-        h_.cells_built_.fetch_add(1, std::memory_order_relaxed);
+        arena.count_cell();
         if (objects.empty()) return {};
         const Split split =
             depth < options_.depth_limit() ? choose(region, time, objects, depth, counters) : Split::Leaf;
         switch (split) {
-            case Split::Leaf: return leaf(region, time, objects, counters);
-            case Split::Space: return space_node(region, time, objects, depth, counters);
+            case Split::Leaf: return leaf(arena, region, time, objects, counters);
+            case Split::Space: return space_node(arena, region, time, objects, depth, counters);
             case Split::Time:
-            case Split::Both: return time_node(region, time, objects, depth, split, counters);
+            case Split::Both: return time_node(arena, region, time, objects, depth, split, counters);
         }
         return {};
     }
@@ -385,11 +385,17 @@ private:
     }
 
     // A child cell: built now (eager) or when a ray first reaches it.
-    NodeRef child_cell(const Box4& region, const CellTime& time, std::vector<std::uint32_t> objects,
-                       int depth, Counters& counters) const {
+    NodeRef child_cell(NodeArena& arena, const Box4& region, const CellTime& time,
+                       std::vector<std::uint32_t> objects, int depth, Counters& counters) const {
         if (options_.build == BuildKind::Eager)
-            return build(region, time, std::move(objects), depth, counters);
-        PendingCell* p = h_.arena_.own<PendingCell>();
+            return build(arena, region, time, std::move(objects), depth, counters);
+        PendingCell* p = arena.own<PendingCell>();
+        p->arena = &arena;
+        // The first cell no longer than a frame below the part that stays:
+        // its subtree gets an arena of its own, freed when the frames have
+        // passed its time (Hierarchy::release_outside).
+        p->slab_root = &arena == &h_.arena_ && !space_only() && options_.frame_interval > 0.0 &&
+                       time.t.width() <= options_.frame_interval;
         p->region = region;
         p->time_level = time.level;
         p->time_index = time.index;
@@ -400,12 +406,12 @@ private:
 
     // The cell's two time halves, each a child cell (Split::Time) or the
     // node of its octants (Split::Both).
-    NodeRef time_node(const Box4& region, const CellTime& time,
+    NodeRef time_node(NodeArena& arena, const Box4& region, const CellTime& time,
                       const std::vector<std::uint32_t>& objects, int depth, Split split,
                       Counters& counters) const {
         ++counters.time_splits;
         ++counters.time_nodes;
-        TimeNode* node = h_.arena_.make<TimeNode>();
+        TimeNode* node = arena.make<TimeNode>();
         std::array<CellTime, 2> times{time.part(1, 0, objects_.time), time.part(1, 1, objects_.time)};
         node->t0 = time.t.lo;
         node->split = times[0].t.hi;
@@ -421,8 +427,8 @@ private:
                 if (!object_over(i, times[h], halves[h]).is_empty()) lists[h].push_back(i);
         const auto make_half = [&](int h, Counters& c) {
             if (lists[h].empty()) return NodeRef{};
-            if (split == Split::Both) return space_node(halves[h], times[h], lists[h], depth, c);
-            return child_cell(halves[h], times[h], std::move(lists[h]), depth + 1, c);
+            if (split == Split::Both) return space_node(arena, halves[h], times[h], lists[h], depth, c);
+            return child_cell(arena, halves[h], times[h], std::move(lists[h]), depth + 1, c);
         };
         if (options_.build == BuildKind::Eager && split == Split::Time) {
             std::array<Counters, 2> each;
@@ -439,7 +445,7 @@ private:
 
     // The region's octants as the children of one node (those its objects
     // meet), each bounded by what its objects occupy inside it.
-    NodeRef space_node(const Box4& region, const CellTime& time,
+    NodeRef space_node(NodeArena& arena, const Box4& region, const CellTime& time,
                        const std::vector<std::uint32_t>& objects, int depth,
                        Counters& counters) const {
         std::array<Box4, 8> octants;
@@ -467,7 +473,7 @@ private:
         std::vector<Child> children(used.size());
         const auto make = [&](std::size_t c, Counters& counts) {
             const int o = used[c];
-            children[c].ref = child_cell(octants[o], time, std::move(lists[o]), depth + 1, counts);
+            children[c].ref = child_cell(arena, octants[o], time, std::move(lists[o]), depth + 1, counts);
             children[c].bins = bins[o];
         };
         if (options_.build == BuildKind::Eager && used.size() > 1) {
@@ -479,12 +485,12 @@ private:
         }
         // A lone child needs no node: the bound that led here holds it.
         if (children.size() == 1) return children.front().ref;
-        return bound_node(time.t, children, counters);
+        return bound_node(arena, time.t, children, counters);
     }
 
     // A cell at the bottom: its objects as children, each bounded inside it.
-    NodeRef leaf(const Box4& region, const CellTime& time, const std::vector<std::uint32_t>& objects,
-                 Counters& counters) const {
+    NodeRef leaf(NodeArena& arena, const Box4& region, const CellTime& time,
+                 const std::vector<std::uint32_t>& objects, Counters& counters) const {
         std::vector<Child> children(objects.size());
         tbb::parallel_for(tbb::blocked_range<std::size_t>(0, objects.size(), kParallelGrain),
                           [&](const tbb::blocked_range<std::size_t>& r) {
@@ -497,7 +503,7 @@ private:
         std::erase_if(children, [](const Child& c) { return c.bins.is_empty(); });
         if (children.empty()) return {};
         counters.object_refs += children.size();
-        return group(time.t, children, counters);
+        return group(arena, time.t, children, counters);
     }
 
     // More objects than a node holds: a small bounding volume hierarchy
@@ -505,15 +511,16 @@ private:
     // is cut in two where the surface-area heuristic says (sixteen bins of
     // box centres along their widest spread, as binned SAH builders do),
     // until there are eight; each cluster of several becomes a node below.
-    NodeRef group(const Interval& time, std::vector<Child>& children, Counters& counters) const {
-        if (children.size() <= std::size_t(kNodeWidth)) return bound_node(time, children, counters);
+    NodeRef group(NodeArena& arena, const Interval& time, std::vector<Child>& children,
+                  Counters& counters) const {
+        if (children.size() <= std::size_t(kNodeWidth)) return bound_node(arena, time, children, counters);
         std::vector<Item> items(children.size());
         for (std::size_t i = 0; i < children.size(); ++i) {
             items[i].box = children[i].bins.hull();
             items[i].centre = glm::dvec3(items[i].box.center());
             items[i].index = i;
         }
-        return group_range(time, children, items, 0, items.size(), counters);
+        return group_range(arena, time, children, items, 0, items.size(), counters);
     }
 
     struct Item {
@@ -525,7 +532,7 @@ private:
     // The node over items [begin, end) (more than a node's width); the
     // items are reordered in place, the children only read (each copied
     // once, into the node that holds it).
-    NodeRef group_range(const Interval& time, const std::vector<Child>& children,
+    NodeRef group_range(NodeArena& arena, const Interval& time, const std::vector<Child>& children,
                         std::vector<Item>& items, std::size_t begin, std::size_t end,
                         Counters& counters) const {
         struct Cluster {
@@ -568,9 +575,9 @@ private:
                 members.reserve(c.end - c.begin);
                 for (std::size_t k = c.begin; k < c.end; ++k)
                     members.push_back(children[items[k].index]);
-                merged.ref = bound_node(time, members, each[n]);
+                merged.ref = bound_node(arena, time, members, each[n]);
             } else {
-                merged.ref = group_range(time, children, items, c.begin, c.end, each[n]);
+                merged.ref = group_range(arena, time, children, items, c.begin, c.end, each[n]);
             }
             grouped[n] = merged;
         };
@@ -579,7 +586,7 @@ private:
         else
             for (std::size_t n = 0; n < clusters.size(); ++n) make(n);
         for (const Counters& c : each) counters += c;
-        return bound_node(time, grouped, counters);
+        return bound_node(arena, time, grouped, counters);
     }
 
     // Reorders [first, last) (items with .box and .centre) into two runs
@@ -642,7 +649,7 @@ private:
 
     // One node over `time` holding the children's bounds, in the style the
     // options ask for (Auto: a linear-motion box where it saves area).
-    NodeRef bound_node(const Interval& time, const std::vector<Child>& children,
+    NodeRef bound_node(NodeArena& arena, const Interval& time, const std::vector<Child>& children,
                        Counters& counters) const {
         BoundStyle style = options_.bounds;
         if (space_only() && style == BoundStyle::Linear) style = BoundStyle::Box;
@@ -662,9 +669,11 @@ private:
             }
         }
         switch (style) {
-            case BoundStyle::Linear: ++counters.motion_nodes; return motion_node(time, children, fits);
-            case BoundStyle::Slabs: ++counters.slab_nodes; return slab_node(time, children);
-            default: ++counters.box_nodes; return box_node(time, children);
+            case BoundStyle::Linear:
+                ++counters.motion_nodes;
+                return motion_node(arena, time, children, fits);
+            case BoundStyle::Slabs: ++counters.slab_nodes; return slab_node(arena, time, children);
+            default: ++counters.box_nodes; return box_node(arena, time, children);
         }
     }
 
@@ -679,8 +688,8 @@ private:
         return false;
     }
 
-    NodeRef box_node(const Interval& time, const std::vector<Child>& children) const {
-        BoxNode* node = h_.arena_.make<BoxNode>();
+    NodeRef box_node(NodeArena& arena, const Interval& time, const std::vector<Child>& children) const {
+        BoxNode* node = arena.make<BoxNode>();
         node->children = std::uint32_t(children.size());
         node->t0 = time.lo;
         node->t1 = time.hi;
@@ -699,9 +708,9 @@ private:
     }
 
     // `fits`: the children's fitted boxes if already made, else empty.
-    NodeRef motion_node(const Interval& time, const std::vector<Child>& children,
+    NodeRef motion_node(NodeArena& arena, const Interval& time, const std::vector<Child>& children,
                         const std::vector<LinearBox>& fits) const {
-        MotionNode* node = h_.arena_.make<MotionNode>();
+        MotionNode* node = arena.make<MotionNode>();
         node->children = std::uint32_t(children.size());
         node->t0 = time.lo;
         node->t1 = time.hi;
@@ -731,8 +740,8 @@ private:
         return NodeRef::node(RefKind::MotionNode, node);
     }
 
-    NodeRef slab_node(const Interval& time, const std::vector<Child>& children) const {
-        SlabNode* node = h_.arena_.make<SlabNode>();
+    NodeRef slab_node(NodeArena& arena, const Interval& time, const std::vector<Child>& children) const {
+        SlabNode* node = arena.make<SlabNode>();
         node->children = std::uint32_t(children.size());
         node->t0 = time.lo;
         node->t1 = time.hi;
@@ -775,7 +784,7 @@ Hierarchy::Hierarchy(const SweptObjects& objects, const Box4& root, const BuildO
     time.t = root.time();
     // Spacetime mode: the root's time is the sweeps', cut the same way.
     if (root.lo.w == objects.time.lo && root.hi.w == objects.time.hi) time.level = 0;
-    root_ = builder_->build(root, time, std::move(all), 0, counters);
+    root_ = builder_->build(arena_, root, time, std::move(all), 0, counters);
     counters.build_seconds +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     // The root is entered by every ray: never leave it pending.
@@ -797,8 +806,17 @@ NodeRef Hierarchy::expand(NodeRef* slot, NodeRef pending, Counters& counters) co
         time.t = p->region.time();
         time.level = p->time_level;
         time.index = p->time_index;
-        p->built = builder_->build(p->region, time, std::move(p->objects), p->depth, counters);
-        p->objects = {};
+        if (p->slab_root) {
+            // Its own arena, and its objects kept for a build after a release.
+            p->own = std::make_unique<NodeArena>();
+            p->built = builder_->build(*p->own, p->region, time, p->objects, p->depth, counters);
+            const std::lock_guard<std::mutex> lock(slabs_mutex_);
+            live_slabs_.push_back({slot, p});
+        } else {
+            p->built = builder_->build(p->arena ? *p->arena : arena_, p->region, time,
+                                       std::move(p->objects), p->depth, counters);
+            p->objects = {};
+        }
         counters.lazy_build_seconds +=
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     });
@@ -806,11 +824,55 @@ NodeRef Hierarchy::expand(NodeRef* slot, NodeRef pending, Counters& counters) co
     return p->built;
 }
 
+void Hierarchy::release(const LiveSlab& slab) const {
+    PendingCell* p = slab.cell;
+    NodeRef::store(slab.slot, NodeRef::node(RefKind::Pending, p));
+    p->built = {};
+    p->own.reset();  // its nodes, and the pending cells below it
+    // A fresh flag: the next ray to reach it builds it again.
+    p->once.~collaborative_once_flag();
+    new (&p->once) tbb::collaborative_once_flag();
+}
+
+void Hierarchy::release_outside(double t0, double t1) {
+    const std::lock_guard<std::mutex> lock(slabs_mutex_);
+    std::size_t held = arena_.bytes();
+    for (const LiveSlab& s : live_slabs_) held += s.cell->own->bytes();
+    peak_bytes_ = std::max(peak_bytes_, held);
+    // A ray at the time a slab ends goes to the later half (traversal_simd.cpp),
+    // so a slab ending where [t0, t1] begins is outside it.
+    std::erase_if(live_slabs_, [&](const LiveSlab& s) {
+        const bool outside = s.cell->region.hi.w <= t0 || s.cell->region.lo.w > t1;
+        if (outside) release(s);
+        return outside;
+    });
+}
+
+std::size_t Hierarchy::bytes() const {
+    const std::lock_guard<std::mutex> lock(slabs_mutex_);
+    std::size_t held = arena_.bytes();
+    for (const LiveSlab& s : live_slabs_) held += s.cell->own->bytes();
+    return held;
+}
+
+std::size_t Hierarchy::peak_bytes() const {
+    const std::size_t now = bytes();
+    const std::lock_guard<std::mutex> lock(slabs_mutex_);
+    return std::max(peak_bytes_, now);
+}
+
 void Hierarchy::count_full(Counters& counters) const {
     Counters extra;
+    // Cells in the lasting part, and in each slab counted once, however
+    // often a render built it again.
+    std::uint64_t slab_cells = 0;
     const auto visit = [&](auto&& self, NodeRef* slot) -> void {
         NodeRef ref = NodeRef::load(slot);
-        if (ref.kind() == RefKind::Pending) ref = expand(slot, ref, extra);
+        PendingCell* slab = nullptr;
+        if (ref.kind() == RefKind::Pending) {
+            if (ref.as<PendingCell>()->slab_root) slab = ref.as<PendingCell>();
+            ref = expand(slot, ref, extra);
+        }
         switch (ref.kind()) {
             case RefKind::BoxNode:
                 for (auto& c : ref.as<BoxNode>()->child) self(self, &c);
@@ -827,10 +889,25 @@ void Hierarchy::count_full(Counters& counters) const {
             default:
                 break;
         }
+        if (slab) {
+            // Counted: let it go again, so that counting holds one slab at a time.
+            slab_cells += slab->own->cells();
+            const std::lock_guard<std::mutex> lock(slabs_mutex_);
+            peak_bytes_ = std::max(peak_bytes_, arena_.bytes() + slab->own->bytes());
+            std::erase_if(live_slabs_, [&](const LiveSlab& s) {
+                if (s.cell != slab) return false;
+                release(s);
+                return true;
+            });
+        }
     };
     NodeRef root = root_;
     visit(visit, &root);
-    counters.cells_full += cells_built_.load();
+    {
+        const std::lock_guard<std::mutex> lock(slabs_mutex_);
+        for (const LiveSlab& s : live_slabs_) slab_cells += s.cell->own->cells();
+    }
+    counters.cells_full += arena_.cells() + slab_cells;
 }
 
 }  // namespace hexant::tracer

@@ -127,6 +127,14 @@ struct PendingCell {
     int depth = 0;
     tbb::collaborative_once_flag once;  // threads that wait help build
     NodeRef built;
+    // Where the cell's nodes go: the arena of the subtree it is in.
+    NodeArena* arena = nullptr;
+    // A slab root is the first cell no longer than a frame below the
+    // hierarchy's lasting part: its subtree lives in an arena of its own
+    // (`own`), which Hierarchy::release_outside frees when the frames no
+    // longer need its time; it keeps its objects to be built again.
+    bool slab_root = false;
+    std::unique_ptr<NodeArena> own;
 };
 
 class Hierarchy {
@@ -152,11 +160,21 @@ public:
 
     // Builds every pending cell (one thread), counting them in
     // counters.cells_full beside those built already: what a full build
-    // makes. For statistics only, after rendering.
+    // makes. For statistics only, after rendering; the slabs it builds are
+    // released again as it goes, so that it needs no more memory than a
+    // frame does.
     void count_full(Counters& counters) const;
 
-    // Node memory in bytes.
-    std::size_t bytes() const { return arena_.bytes(); }
+    // Frees the subtrees of the slab roots (PendingCell::slab_root) whose
+    // time lies outside [t0, t1], turning them back into pending cells: a
+    // ray that reaches one later builds it again. Memory then stays what
+    // the frames in use need, not what the whole animation does. Not
+    // thread-safe: call it between frames, with no ray in flight.
+    void release_outside(double t0, double t1);
+
+    // Node memory in bytes: now, and the most held at once so far.
+    std::size_t bytes() const;
+    std::size_t peak_bytes() const;
 
 private:
     class Builder;
@@ -165,8 +183,16 @@ private:
     const SweptObjects& objects_;
     BuildOptions options_;
     runtime::Box4 region_;
-    mutable NodeArena arena_;
-    mutable std::atomic<std::uint64_t> cells_built_{0};
+    mutable NodeArena arena_;  // the lasting part: everything above the slab roots
+    // The slab roots built now, and the slots that hold their nodes.
+    struct LiveSlab {
+        NodeRef* slot;
+        PendingCell* cell;
+    };
+    mutable std::mutex slabs_mutex_;
+    mutable std::vector<LiveSlab> live_slabs_;
+    mutable std::size_t peak_bytes_ = 0;
+    void release(const LiveSlab& slab) const;
     mutable double root_area_ = 0.0;  // the root cell's time-averaged area (cost criterion)
     std::unique_ptr<Builder> builder_;
     NodeRef root_;

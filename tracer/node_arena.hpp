@@ -1,11 +1,14 @@
 // Where a hierarchy's nodes live: 64-byte aligned blocks that never move,
 // one run of blocks per thread, so that a parallel or lazy build allocates
-// without a lock. Everything is freed with the arena. Nodes are plain data;
+// without a lock. Everything is freed with the arena (a hierarchy has one
+// for its lasting part and one per slab it holds: hierarchy.hpp). Nodes are plain data;
 // the pending cells of a lazy build (which own vectors) are kept apart and
 // destroyed properly.
 #pragma once
 
+#include <atomic>
 #include <cstddef>
+#include <cstdint>
 #include <cstdlib>
 #include <memory>
 #include <new>
@@ -40,6 +43,10 @@ public:
         list.push_back(std::make_shared<T>(std::forward<Args>(args)...));
         return static_cast<T*>(list.back().get());
     }
+
+    // The cells built into this arena (for statistics: a full build's count).
+    void count_cell() { cells_.fetch_add(1, std::memory_order_relaxed); }
+    std::uint64_t cells() const { return cells_.load(std::memory_order_relaxed); }
 
     // Bytes held in node blocks (what the hierarchy costs in memory).
     std::size_t bytes() const {
@@ -77,6 +84,7 @@ private:
     }
 
     tbb::enumerable_thread_specific<Blocks> blocks_;
+    std::atomic<std::uint64_t> cells_{0};
     tbb::enumerable_thread_specific<std::vector<std::shared_ptr<void>>> owned_;
 };
 

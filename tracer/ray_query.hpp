@@ -45,8 +45,9 @@ class RayQuery {
 public:
     virtual ~RayQuery() = default;
     // Make ready for rays with times in [t0, t1] (one frame's shutter):
-    // the frame-by-frame mode builds that frame's hierarchy here; the others
-    // have nothing to do.
+    // the frame-by-frame mode builds that frame's hierarchy here; spacetime
+    // mode lets go of the slabs of time outside it; brute force has
+    // nothing to do.
     virtual void prepare_frame(double t0, double t1, Counters& counters) = 0;
     // The nearest surface event with s_min < s < s_max.
     virtual std::optional<runtime::ObjectHit> first_hit(const runtime::Ray4& ray, double s_min,
@@ -62,8 +63,9 @@ public:
     // counters.cells_full; the frame-by-frame mode counts each earlier
     // frame's as it replaces it.
     virtual void count_full_hierarchy(Counters& counters) const = 0;
-    // Records the bytes the hierarchy in use and the sweeps take now in
-    // counters.node_bytes and counters.sweep_bytes.
+    // Records in counters.node_bytes the bytes of hierarchy nodes (spacetime:
+    // the most held at once so far; frames: the last frame's hierarchy) and
+    // in counters.sweep_bytes the sweeps'.
     virtual void measure_memory(Counters& counters) const = 0;
 };
 

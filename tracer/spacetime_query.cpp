@@ -32,7 +32,11 @@ public:
         : objects_(std::move(objects)), swept_(timed_sweeps(objects_, animation, options, counters)),
           hierarchy_(swept_, hierarchy_root(swept_, animation, options), options, counters) {}
 
-    void prepare_frame(double, double, Counters&) override {}
+    // The slabs of frames done (or not yet begun) are let go: memory holds
+    // what this frame's rays need, whatever the animation's length.
+    void prepare_frame(double t0, double t1, Counters&) override {
+        hierarchy_.release_outside(t0, t1);
+    }
 
     std::optional<ObjectHit> first_hit(const Ray4& ray, double s_min, double s_max,
                                        ThreadState& state) const override {
@@ -54,7 +58,7 @@ public:
     }
 
     void measure_memory(Counters& counters) const override {
-        counters.node_bytes = hierarchy_.bytes();
+        counters.node_bytes = hierarchy_.peak_bytes();
         counters.sweep_bytes = swept_.bytes();
     }
 

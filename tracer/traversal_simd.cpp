@@ -97,10 +97,12 @@ public:
         for (;;) {
             NodeRef ref = NodeRef::load(slot);
             // Runs of time nodes: the ray's instant picks each half without
-            // a branch to mispredict.
+            // a branch to mispredict. An instant on the split goes to the
+            // later half: a frame that opens there never needs the earlier
+            // one (Hierarchy::release_outside lets it go).
             while (ref.kind() == RefKind::TimeNode) {
                 TimeNode* node = ref.as<TimeNode>();
-                slot = &node->child[r_.time > node->split];
+                slot = &node->child[r_.time >= node->split];
                 ref = NodeRef::load(slot);
             }
             bool descend = false;

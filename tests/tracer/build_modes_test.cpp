@@ -193,3 +193,36 @@ TEST_CASE("a renderer built for some frames' time gives the whole animation's im
     outside.last_frame = 65;  // atom has 64
     CHECK_THROWS_AS(tr::Renderer(scene, outside), std::out_of_range);
 }
+
+TEST_CASE("a lazy hierarchy lets go of the slabs of frames done: memory stays a frame's, the "
+          "images stay the same, in any order of frames", "[tracer][lazy]") {
+    // Enough spheres that nodes fill many of the arena's 64 KB blocks.
+    const auto scene = example("swarm", 32, {"N=1500"});
+    tr::RenderSettings settings;
+    settings.samples_per_pixel = 2;
+    settings.build = options(tr::Criterion::Cost, tr::BuildKind::Eager, tr::BoundStyle::Auto);
+    settings.build.count_full = true;
+    tr::Renderer eager(scene, settings);
+    settings.build.build = tr::BuildKind::Lazy;
+    tr::Renderer lazy(scene, settings);
+    const int frames = scene.animation.final_frame;
+    REQUIRE(frames >= 8);
+    // In order, then back to frames let go of (built again when reached).
+    std::vector<int> order;
+    for (int f = 1; f <= frames; ++f) order.push_back(f);
+    for (const int f : {3, 1, frames, 3}) order.push_back(f);
+    for (const int f : order) {
+        INFO("frame " << f);
+        CHECK(differing(lazy.render_frame(f), eager.render_frame(f)) == 0);
+    }
+    eager.measure_memory();
+    lazy.measure_memory();
+    // The most a lazy hierarchy held at once: about a frame's slabs (two at
+    // a frame's start, the next not yet let go of) out of the animation's.
+    INFO("lazy " << lazy.counters().node_bytes << " B, eager " << eager.counters().node_bytes << " B");
+    CHECK(lazy.counters().node_bytes * 4 < eager.counters().node_bytes);
+    // A full build counts each slab once, however often it was built.
+    eager.count_full_hierarchy();
+    lazy.count_full_hierarchy();
+    CHECK(lazy.counters().cells_full == eager.counters().cells_full);
+}
