@@ -23,7 +23,11 @@ TextureEvaluator::CompiledColour TextureEvaluator::compile(const ColourFunction&
 }
 
 TextureEvaluator::TextureEvaluator(const Texture& texture, const std::optional<Interior>& interior)
-    : pattern_(texture.pigment.pattern), pattern_to_world_(pattern_transform(texture)),
+    : pattern_(texture.pigment.pattern),
+      // Only a pattern reads its placement: a plain colour keeps none (a
+      // moving object's motion compiled again is most of a kilobyte).
+      pattern_to_world_(pattern_ == Pigment::Pattern::Checker ? Motion(pattern_transform(texture))
+                                                              : Motion()),
       ambient_(texture.finish.ambient), diffuse_(texture.finish.diffuse),
       brilliance_(texture.finish.brilliance), phong_(texture.finish.phong),
       phong_size_(texture.finish.phong_size), specular_(texture.finish.specular),
