@@ -159,10 +159,13 @@ double peak_resident_mb() {
 }
 
 // One full render in one mode; frames go to files as they finish.
-Counters render_mode(const runtime::SceneDescription& scene, const RenderArguments& args,
+// With last_use, the scene's object records are freed once the renderer
+// has made its intelligent objects of them (about 2 KB a parsed object: a
+// scene of 10^5 spheres renders in 200 MB less).
+Counters render_mode(runtime::SceneDescription& scene, const RenderArguments& args,
                      tracer::Mode mode, const std::string& pattern,
                      const std::vector<int>& frames, bool write,
-                     std::vector<tracer::Image>* keep) {
+                     std::vector<tracer::Image>* keep, bool last_use) {
     tracer::RenderSettings settings;
     settings.mode = mode;
     settings.samples_per_pixel = args.samples_per_pixel;
@@ -176,6 +179,10 @@ Counters render_mode(const runtime::SceneDescription& scene, const RenderArgumen
     settings.progress = isatty(STDERR_FILENO);
     const double start_mb = resident_mb();
     tracer::Renderer renderer(scene, settings);
+    if (last_use) {
+        scene.objects.clear();
+        scene.objects.shrink_to_fit();
+    }
     for (const int frame : frames) {
         tracer::Image image = renderer.render_frame(frame);
         if (write) tracer::write_image(image, tracer::frame_path(pattern, frame));
@@ -222,7 +229,7 @@ int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err
     return run_reporting_errors(err, [&] {
         ResolvedScene resolved = resolve(args.scene);
         for (const auto& warning : resolved.warnings) err << warning << "\n";
-        const runtime::SceneDescription scene =
+        runtime::SceneDescription scene =
             language::parse_scene_file(resolved.scene, resolved.options);
         const std::vector<int> selected = frame_selection(args.frames, scene.animation);
         const std::string pattern =
@@ -237,11 +244,11 @@ int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err
         const tracer::Mode mode = args.compare ? tracer::Mode::Spacetime : tracer::parse_mode(args.mode);
         columns.emplace_back(tracer::mode_name(mode),
                              render_mode(scene, args, mode, pattern, selected, true,
-                                         keep_frames ? &frames : nullptr));
+                                         keep_frames ? &frames : nullptr, !args.compare));
         if (args.compare)  // the paper's order: frame by frame, then spacetime
             columns.emplace(columns.begin(), "frames",
                             render_mode(scene, args, tracer::Mode::Frames, pattern, selected, false,
-                                        nullptr));
+                                        nullptr, true));
         const int first = selected.front(), last = selected.back();
         const bool contiguous = last - first + 1 == static_cast<int>(selected.size());
         out << "frames ";
