@@ -144,8 +144,10 @@ public:
                 }
                 case RefKind::TimeNode: {
                     TimeNode* node = ref.as<TimeNode>();
+                    // An instant on the split takes the later half, as
+                    // the SIMD walk does (both halves hold it).
                     for (int c = 1; c >= 0; --c) {
-                        if (instant_ && (c == 0 ? ray_.origin.w > node->split
+                        if (instant_ && (c == 0 ? ray_.origin.w >= node->split
                                                 : ray_.origin.w < node->split))
                             continue;
                         stack.push_back({&node->child[c], e.enter});
