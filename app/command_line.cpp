@@ -1,16 +1,13 @@
 #include "app/command_line.hpp"
 
 #include <cmath>
+#include <new>
 #include <ostream>
 #include <stdexcept>
 
 #include "language/scene_error.hpp"
 
 namespace hexant::app {
-
-namespace {
-constexpr long long kMaxFrames = 1'000'000;
-}  // namespace
 
 void add_scene_arguments(CLI::App& command, SceneArguments& a) {
     command.add_option("files", a.files, "The scene (.pov) and POV-Ray .ini files, in order")
@@ -33,11 +30,34 @@ void add_scene_arguments(CLI::App& command, SceneArguments& a) {
     command.add_option("--declare", a.declares,
                        "NAME=VALUE, as POV-Ray's Declare=: a number, a vector <a, b, c> or a "
                        "\"string\"");
-    // A range, so that "-1" (which an unsigned conversion wraps to 2^64 - 1)
-    // is refused rather than taken as no limit at all.
+    // The limits (language/limits.hpp). Each is a range, so that "-1"
+    // (which an unsigned conversion wraps to 2^64 - 1) is refused rather
+    // than taken as no limit at all.
     command.add_option("--max-loop-iterations", a.max_loop_iterations,
                        "Stop a #while or #for after this many iterations (default 10^7)")
         ->check(CLI::Range(std::size_t(1), std::size_t(1'000'000'000'000)));
+    command.add_option("--max-iterations", a.max_iterations,
+                       "Stop the scene after this many loop iterations and macro calls in all "
+                       "(default 10^8)")
+        ->check(CLI::Range(std::size_t(1), std::size_t(1'000'000'000'000)));
+    command.add_option("--max-macro-depth", a.max_macro_depth,
+                       "Macro calls nested at most this deep (default 200)")
+        ->check(CLI::Range(1, 100'000));
+    command.add_option("--max-include-depth", a.max_include_depth,
+                       "#include nested at most this deep (default 100)")
+        ->check(CLI::Range(1, 10'000));
+    command.add_option("--max-string-length", a.max_string_length,
+                       "Characters of one string (default 16777216, 16 Mi)")
+        ->check(CLI::Range(std::size_t(1), std::size_t(1) << 40));
+    command.add_option("--max-array-memory", a.max_array_memory_mib,
+                       "MiB the scene's arrays may hold at once (default 2048)")
+        ->check(CLI::Range(std::size_t(1), std::size_t(1) << 30));
+    command.add_option("--max-frames", a.max_frames,
+                       "Frames an animation may have (default 10^6)")
+        ->check(CLI::Range(1LL, 2'000'000'000LL));
+    command.add_option("--max-pixels", a.max_pixels,
+                       "Pixels (width times height) an image may have (default 10^8)")
+        ->check(CLI::Range(1LL, 1LL << 40));
 }
 
 void apply_ini_file(const std::filesystem::path& ini, ResolvedScene& resolved,
@@ -105,20 +125,36 @@ ResolvedScene resolve(const SceneArguments& arguments) {
             throw std::runtime_error("--declare needs NAME=VALUE, not '" + d + "'");
         r.options.declares.emplace_back(d.substr(0, eq), d.substr(eq + 1));
     }
-    if (arguments.max_loop_iterations) r.options.max_loop_iterations = *arguments.max_loop_iterations;
+    auto& limits = r.options.limits;
+    if (arguments.max_loop_iterations) limits.loop_iterations = *arguments.max_loop_iterations;
+    if (arguments.max_iterations) limits.total_iterations = *arguments.max_iterations;
+    if (arguments.max_macro_depth) limits.macro_depth = *arguments.max_macro_depth;
+    if (arguments.max_include_depth) limits.include_depth = *arguments.max_include_depth;
+    if (arguments.max_string_length) limits.string_length = *arguments.max_string_length;
+    if (arguments.max_array_memory_mib) limits.array_memory = *arguments.max_array_memory_mib << 20;
+    if (arguments.max_frames) limits.frames = *arguments.max_frames;
+    if (arguments.max_pixels) limits.image_pixels = *arguments.max_pixels;
     // A single clock value on a still is POV-Ray's +K: the still's clock.
     if (r.at_clock && !a.is_animation()) a.initial_clock = *r.at_clock;
     if (a.width < 1 || a.height < 1) throw std::runtime_error("the image size must be at least 1 by 1");
+    // Checked here, before any pixel is allocated: -W 100000 -H 100000
+    // ended in std::bad_alloc with no word of why.
+    if (static_cast<long long>(a.width) * a.height > limits.image_pixels)
+        throw std::runtime_error("an image of " + std::to_string(a.width) + " by " +
+                                 std::to_string(a.height) + " pixels is more than the limit of " +
+                                 std::to_string(limits.image_pixels) +
+                                 " pixels (--max-pixels N raises it)");
     if (a.final_frame < a.initial_frame)
         throw std::runtime_error("the final frame comes before the initial frame");
     // Frames are counted in int and each frame's eye and lights are placed
     // up front: a count near 2^31 overflowed the loop over frames and took
-    // seconds before the first pixel. 10^6 frames is over eleven hours of
-    // film at 24 per second.
-    if (static_cast<long long>(a.final_frame) - a.initial_frame >= kMaxFrames)
-        throw std::runtime_error("an animation of more than " + std::to_string(kMaxFrames) +
+    // seconds before the first pixel. Computed in long long: the count of
+    // frames INT_MIN to INT_MAX does not fit an int.
+    if (static_cast<long long>(a.final_frame) - a.initial_frame >= limits.frames)
+        throw std::runtime_error("an animation of more than " + std::to_string(limits.frames) +
                                  " frames (frames " + std::to_string(a.initial_frame) + " to " +
-                                 std::to_string(a.final_frame) + ")");
+                                 std::to_string(a.final_frame) +
+                                 "; --max-frames N raises the limit)");
     // Written so that NaN fails too (every comparison with NaN is false).
     if (!(a.shutter >= 0 && a.shutter <= 1)) throw std::runtime_error("--shutter must lie in [0, 1]");
     if (!std::isfinite(a.initial_clock) || !std::isfinite(a.final_clock) ||
@@ -132,6 +168,10 @@ int run_reporting_errors(std::ostream& err, const std::function<int()>& body) {
         return body();
     } catch (const language::SceneError& e) {
         err << e.formatted();
+        return 1;
+    } catch (const std::bad_alloc&) {
+        // A stage that does not name itself (app/out_of_memory.hpp).
+        err << "hexant: error: out of memory (std::bad_alloc)\n";
         return 1;
     } catch (const std::exception& e) {
         err << "hexant: error: " << e.what() << "\n";

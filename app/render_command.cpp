@@ -9,6 +9,7 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include "app/out_of_memory.hpp"
 #include "language/interpreter.hpp"
 #include "runtime/object_error.hpp"
 #include "tracer/image_output.hpp"
@@ -178,13 +179,19 @@ Counters render_mode(runtime::SceneDescription& scene, const RenderArguments& ar
     settings.build.count_full = args.stats || args.compare || args.stats_json.has_value();
     settings.progress = isatty(STDERR_FILENO);
     const double start_mb = resident_mb();
-    tracer::Renderer renderer(scene, settings);
+    const std::string size =
+        std::to_string(scene.animation.width) + " by " + std::to_string(scene.animation.height);
+    tracer::Renderer renderer = naming_out_of_memory("setting up the render", [&] {
+        return tracer::Renderer(scene, settings);
+    });
     if (last_use) {
         scene.objects.clear();
         scene.objects.shrink_to_fit();
     }
     for (const int frame : frames) {
-        tracer::Image image = renderer.render_frame(frame);
+        tracer::Image image = naming_out_of_memory(
+            "rendering frame " + std::to_string(frame) + " (" + size + " pixels)",
+            [&] { return renderer.render_frame(frame); });
         if (write) tracer::write_image(image, tracer::frame_path(pattern, frame));
         if (keep) keep->push_back(std::move(image));
     }
@@ -261,7 +268,9 @@ int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err
                 << tracer::frame_path(pattern, last) << "\n";
         }
         if (args.contact_sheet) {
-            tracer::write_image(tracer::contact_sheet(frames), *args.contact_sheet);
+            tracer::write_image(naming_out_of_memory("making the contact sheet",
+                                                     [&] { return tracer::contact_sheet(frames); }),
+                                *args.contact_sheet);
             out << "contact sheet: " << *args.contact_sheet << "\n";
         }
         if (args.animation) {

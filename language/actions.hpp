@@ -99,6 +99,8 @@ HEXANT_SHAPE_KEYWORD(kw_prism);
             throw unsupported_use(e.what(), in.position());       \
         } catch (const ValueError& e) {                           \
             Interpreter::fail(in.position(), e.what());           \
+        } catch (const std::bad_alloc&) {                         \
+            Interpreter::fail(in.position(), kOutOfMemory);       \
         }                                                         \
     }                                                             \
     template <typename ActionInput>                               \
@@ -159,7 +161,18 @@ HEXANT_ACTION(function_call) {
         (void)in;
         std::vector<Value> args = st.close_frame();
         const std::string name = st.pop_name();
-        st.push(call_builtin(name, args, st.random));
+        // concat() is checked before it is built: a string doubled each time
+        // would otherwise reach the allocator's limit first.
+        if (name == "concat") {
+            std::size_t length = 0;
+            for (const auto& a : args)
+                if (a.is<std::string>()) length += a.as<std::string>().size();
+            st.check_string_length(length, "concat()'s result");
+        }
+        Value result = call_builtin(name, args, st.random);
+        if (result.is<std::string>())
+            st.check_string_length(result.as<std::string>().size(), name + "()'s result");
+        st.push(std::move(result));
     }
 };
 
@@ -302,8 +315,10 @@ HEXANT_ACTION(index_suffix) {
             const int rows = array->dimensions[0];
             const long long row = checked_integer(std::floor(index), "an array index", 0, rows - 1);
             auto sub = std::make_shared<Array>();
+            sub->charge.attach(st.array_memory());
             sub->dimensions.assign(array->dimensions.begin() + 1, array->dimensions.end());
             const std::size_t stride = array->elements.size() / static_cast<std::size_t>(rows);
+            sub->charge.add(stride * kArraySlotBytes);
             const std::size_t start = static_cast<std::size_t>(row) * stride;
             sub->elements.assign(array->elements.begin() + static_cast<std::ptrdiff_t>(start),
                                  array->elements.begin() + static_cast<std::ptrdiff_t>(start + stride));
@@ -1005,14 +1020,18 @@ HEXANT_ACTION(array_dimensions) {
         (void)in;
         std::vector<Value> sizes = st.close_frame();
         auto array = std::make_shared<Array>();
+        array->charge.attach(st.array_memory());
         std::size_t total = 1;
         for (auto& s : sizes) {
+            // int dimensions; the memory limit below is the one that binds.
             const long long n = checked_integer(to_constant(s, "an array size"), "an array size", 1,
-                                                100'000'000);
+                                                kMaxArrayElements);
             array->dimensions.push_back(static_cast<int>(n));
             total *= static_cast<std::size_t>(n);
-            if (total > 100'000'000) throw ValueError("this array would hold more than 10^8 elements");
+            if (total > static_cast<std::size_t>(kMaxArrayElements))
+                throw ValueError("this array would hold more than 2^31 - 1 elements");
         }
+        array->charge.add(total * kArraySlotBytes);
         array->elements.resize(total);
         st.push(Value{array});
     }
@@ -1022,7 +1041,11 @@ HEXANT_ACTION(array_initializer) {
         (void)in;
         std::vector<Value> items = st.close_frame();
         auto list = std::make_shared<Array>();  // no dimensions: an initializer list
-        for (auto& item : items) list->elements.emplace_back(std::make_shared<Value>(std::move(item)));
+        list->charge.attach(st.array_memory());
+        for (auto& item : items) {
+            list->charge.add(kArraySlotBytes + element_bytes(item));
+            list->elements.emplace_back(std::make_shared<Value>(std::move(item)));
+        }
         st.push(Value{list});
     }
 };

@@ -21,8 +21,19 @@ std::filesystem::path bundled_include_dir() { return HEXANT_BUNDLED_INCLUDE_DIR;
 
 Interpreter::Interpreter(const ParseOptions& options_in, runtime::SceneDescription& scene_in,
                          std::filesystem::path scene_folder)
-    : scene(scene_in), options(options_in), scene_folder_(std::move(scene_folder)) {
+    : scene(scene_in),
+      options(options_in),
+      scene_folder_(std::move(scene_folder)),
+      array_memory_(std::make_shared<MemoryBudget>(options_in.limits.array_memory)) {
     scopes_.emplace_back();  // the global table
+}
+
+void Interpreter::check_string_length(std::size_t length, const std::string& what) const {
+    if (length > options.limits.string_length)
+        throw ValueError(what + " would be " + std::to_string(length) +
+                         " characters long, more than the limit of " +
+                         std::to_string(options.limits.string_length) +
+                         " (--max-string-length N raises it)");
 }
 
 // ------------------------------------------------------------------ sources and errors
@@ -162,7 +173,10 @@ void Interpreter::assign_element(const std::string& name, const std::vector<Valu
     std::vector<double> at;
     try {
         for (const auto& i : indices) at.push_back(to_constant(i, "an array index"));
-        array.elements[element_index(array, at)] = std::make_shared<Value>(std::move(value));
+        auto& slot = array.elements[element_index(array, at)];
+        array.charge.add(element_bytes(value));
+        if (slot) array.charge.remove(element_bytes(**slot));
+        slot = std::make_shared<Value>(std::move(value));
     } catch (const ValueError& e) {
         fail(where, e.what());
     }
@@ -297,6 +311,7 @@ void fill_array(Array& array, const Array& list, std::size_t dimension, std::siz
             fill_array(array, *v.as<std::shared_ptr<Array>>(), dimension + 1, next);
         } else {
             if (is_list) throw ValueError("the array has fewer dimensions than this { } list");
+            array.charge.add(element_bytes(v));
             array.elements[next++] = std::make_shared<Value>(v);
         }
     }

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "language/limits.hpp"
 #include "language/scene_error.hpp"
 #include "runtime/scene.hpp"
 
@@ -27,9 +28,7 @@ struct ParseOptions {
     // Where #debug and #warning text goes (stderr when null).
     std::ostream* messages = nullptr;
     // Stated limits that stop runaway scenes with a clear error.
-    std::size_t max_loop_iterations = 10'000'000;
-    int max_macro_depth = 200;
-    int max_include_depth = 100;
+    Limits limits;
 };
 
 // Throws SceneError for any problem in the scene.

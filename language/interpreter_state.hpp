@@ -13,6 +13,8 @@
 #include <deque>
 #include <filesystem>
 #include <fstream>
+#include <memory>
+#include <new>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -50,6 +52,10 @@ struct MaterialBuilder {
 using Block = std::variant<runtime::ObjectRecord, runtime::LightRecord, runtime::CameraRecord,
                            runtime::Texture, runtime::Pigment, runtime::Finish, runtime::Interior,
                            runtime::Transform, SplineBuilder, MaterialBuilder>;
+
+// What a std::bad_alloc while reading becomes, at its place.
+inline constexpr const char* kOutOfMemory =
+    "out of memory here: the scene asks for more memory than the machine gives (std::bad_alloc)";
 
 // A parse error that is the use of something hexant lacks (see UnsupportedError).
 struct unsupported_use : p::parse_error {
@@ -204,6 +210,23 @@ public:
 
     std::filesystem::path resolve_include(const std::string& name, const p::position& where) const;
 
+    // The arrays' memory (Limits::array_memory): every array of this
+    // reading is charged to it.
+    const std::shared_ptr<MemoryBudget>& array_memory() const { return array_memory_; }
+    // A string about to be made of `length` characters, against
+    // Limits::string_length; throws ValueError naming `what`.
+    void check_string_length(std::size_t length, const std::string& what) const;
+
+    // One loop iteration or macro call, against Limits::total_iterations:
+    // the budget of the whole reading, across nested loops and macros.
+    void count_step(const p::position& where) {
+        if (++steps_ > options.limits.total_iterations)
+            fail(where, "the scene ran more than " +
+                            std::to_string(options.limits.total_iterations) +
+                            " loop iterations and macro calls in all; stopping here "
+                            "(--max-iterations N raises the limit)");
+    }
+
 private:
     template <typename Rule, template <typename...> class Action,
               template <typename...> class Control, typename ParseInput>
@@ -249,6 +272,8 @@ private:
     std::filesystem::path scene_folder_;
     int macro_depth_ = 0;
     int include_depth_ = 0;
+    std::size_t steps_ = 0;
+    std::shared_ptr<MemoryBudget> array_memory_;
 };
 
 // ------------------------------------------------------------------ templates
@@ -417,10 +442,12 @@ bool Interpreter::run_while(ParseInput& in) {
     for (std::size_t count = 0;; ++count) {
         in.iterator() = start;
         const bool go = runtime::pov_true(condition<Action, Control>(in, "#while"));
-        if (go && count >= options.max_loop_iterations)
+        if (go && count >= options.limits.loop_iterations)
             fail(opened, "#while loop ran more than " +
-                             std::to_string(options.max_loop_iterations) +
-                             " times; stopping (is its condition ever false?)");
+                             std::to_string(options.limits.loop_iterations) +
+                             " times; stopping (is its condition ever false? "
+                             "--max-loop-iterations N raises the limit)");
+        if (go) count_step(opened);
         const auto at = in.position();
         const Divider d = go ? run_body<Item, Action, Control>(in) : skip_body<Control>(in);
         if (d != Divider::End) unclosed(opened, "#while", d, in);
@@ -450,9 +477,11 @@ bool Interpreter::run_for(ParseInput& in) {
     std::size_t count = 0;
     double v = from;
     for (; step > 0 ? v <= to + runtime::kPovEpsilon : v >= to - runtime::kPovEpsilon; v += step) {
-        if (++count > options.max_loop_iterations)
+        if (++count > options.limits.loop_iterations)
             fail(opened, "#for loop ran more than " +
-                             std::to_string(options.max_loop_iterations) + " times; stopping");
+                             std::to_string(options.limits.loop_iterations) +
+                             " times; stopping (--max-loop-iterations N raises the limit)");
+        count_step(opened);
         declare(variable, Value{TimeFunction(v)}, true);
         in.iterator() = start;
         const Divider d = run_body<Item, Action, Control>(in);
@@ -595,10 +624,12 @@ bool Interpreter::call_macro(ParseInput& in) {
         fail(call_place, "macro '" + name + "' takes " + std::to_string(macro->parameters.size()) +
                              " argument" + (macro->parameters.size() == 1 ? "" : "s") + ", not " +
                              std::to_string(args.size()));
-    if (macro_depth_ >= options.max_macro_depth)
+    if (macro_depth_ >= options.limits.macro_depth)
         fail(call_place, "macro calls nested more than " +
-                             std::to_string(options.max_macro_depth) +
-                             " deep; stopping (runaway recursion?)");
+                             std::to_string(options.limits.macro_depth) +
+                             " deep; stopping (runaway recursion? --max-macro-depth N raises the "
+                             "limit)");
+    count_step(call_place);
     scopes_.emplace_back();
     for (std::size_t i = 0; i < args.size(); ++i)
         scopes_.back()[macro->parameters[i]] = std::move(args[i]);
@@ -681,9 +712,10 @@ bool Interpreter::run_include(ParseInput& in) {
     } catch (const ValueError& e) {
         fail(opened, e.what());
     }
-    if (include_depth_ >= options.max_include_depth)
-        fail(opened, "#include nested more than " + std::to_string(options.max_include_depth) +
-                         " deep; stopping (does a file include itself?)");
+    if (include_depth_ >= options.limits.include_depth)
+        fail(opened, "#include nested more than " + std::to_string(options.limits.include_depth) +
+                         " deep; stopping (does a file include itself? --max-include-depth N "
+                         "raises the limit)");
     const std::filesystem::path path = resolve_include(file, opened);
     std::ifstream stream(path, std::ios::binary);
     if (!stream) fail(opened, "cannot read include file '" + path.string() + "'");
@@ -715,6 +747,10 @@ void Interpreter::read_file(const std::string& name, const std::string& text) {
                      p::apply_mode::action, p::rewind_mode::dontcare, Action, Control>(in, *this);
     } catch (const p::parse_error& error) {
         throw to_scene_error(error);
+    } catch (const std::bad_alloc&) {
+        // An allocation outside any action (a directive's own work): the
+        // place is where the reading of this file had got to.
+        throw to_scene_error(p::parse_error(kOutOfMemory, in.position()));
     }
 }
 

@@ -11,6 +11,7 @@
 
 #include <tao/pegtl/position.hpp>
 
+#include "language/memory_budget.hpp"
 #include "runtime/camera.hpp"
 #include "runtime/light.hpp"
 #include "runtime/material.hpp"
@@ -48,6 +49,7 @@ struct Value;
 struct Array {
     std::vector<int> dimensions;
     std::vector<std::optional<std::shared_ptr<Value>>> elements;  // row-major
+    MemoryCharge charge;  // its slots and the values set in them
 };
 
 struct Value {
@@ -72,6 +74,17 @@ struct Value {
         return std::get<T>(v);
     }
 };
+
+// What Array::charge counts (language/memory_budget.hpp): a slot, and a
+// value set in one (the shared value, its control block, a string's
+// characters; an array set in one carries its own charge).
+inline constexpr std::size_t kArraySlotBytes = sizeof(std::optional<std::shared_ptr<Value>>);
+inline std::size_t element_bytes(const Value& value) {
+    return sizeof(Value) + 2 * sizeof(void*) +
+           (value.is<std::string>() ? value.as<std::string>().size() : 0);
+}
+// Dimensions are int; the memory limit is the one that binds first.
+inline constexpr long long kMaxArrayElements = 2147483647;
 
 // "float", "vector", "object" ... for messages.
 std::string type_name(const Value& value);

@@ -135,3 +135,48 @@ TEST_CASE("the loop limit flag takes 1 to 10^12, never a wrapped -1", "[app]") {
     CHECK_THROWS(parse("--max-loop-iterations 0"));
     CHECK_THROWS(parse("--max-loop-iterations 1e13"));
 }
+
+TEST_CASE("every limit has a flag, and frames and pixels are checked before any work",
+          "[app][limits]") {
+    const auto parse = [](const std::string& flags) {
+        CLI::App app;
+        hexant::app::SceneArguments arguments;
+        hexant::app::add_scene_arguments(app, arguments);
+        app.parse("scene.pov " + flags, false);
+        return arguments;
+    };
+    const auto limits = hexant::app::resolve(parse(
+        "--max-iterations 7 --max-macro-depth 8 --max-include-depth 9 --max-string-length 10 "
+        "--max-array-memory 11 --max-frames 12 --max-pixels 130000 --max-loop-iterations 14"))
+                            .options.limits;
+    CHECK(limits.total_iterations == 7);
+    CHECK(limits.macro_depth == 8);
+    CHECK(limits.include_depth == 9);
+    CHECK(limits.string_length == 10);
+    CHECK(limits.array_memory == std::size_t(11) << 20);
+    CHECK(limits.frames == 12);
+    CHECK(limits.image_pixels == 130000);
+    CHECK(limits.loop_iterations == 14);
+    for (const char* wrapped : {"--max-iterations -1", "--max-string-length -1",
+                                "--max-array-memory -1", "--max-frames 0", "--max-pixels 0",
+                                "--max-macro-depth -1"})
+        CHECK_THROWS(parse(wrapped));
+
+    // -W 100000 -H 100000 ended in std::bad_alloc; now it is refused by name.
+    REQUIRE_THROWS_WITH(hexant::app::resolve(parse("-W 100000 -H 100000")),
+                        Catch::Contains("100000 by 100000 pixels") &&
+                            Catch::Contains("--max-pixels"));
+    CHECK_NOTHROW(hexant::app::resolve(parse("-W 10000 -H 10000")));
+    CHECK_NOTHROW(hexant::app::resolve(parse("-W 100000 -H 100000 --max-pixels 10000000000")));
+    // --frame-count 2147483647 overflowed an int loop over frames.
+    REQUIRE_THROWS_WITH(hexant::app::resolve(parse("--frame-count 2147483647")),
+                        Catch::Contains("more than 1000000 frames") &&
+                            Catch::Contains("--max-frames"));
+    CHECK_THROWS(hexant::app::resolve(parse("--frame-count 13 --max-frames 12")));
+    CHECK_NOTHROW(hexant::app::resolve(parse("--frame-count 12 --max-frames 12")));
+    // From an .ini file too: the whole range of int.
+    const auto ini = write("frames.ini", "Initial_Frame=-2147483648\nFinal_Frame=2147483647\n");
+    hexant::app::SceneArguments from_ini;
+    from_ini.files = {"a.pov", ini.string()};
+    CHECK_THROWS_WITH(hexant::app::resolve(from_ini), Catch::Contains("frames -2147483648 to"));
+}

@@ -125,9 +125,9 @@ TEST_CASE("macros: values, objects, modifiers, locals and references", "[evaluat
 
 TEST_CASE("runaway loops and recursion stop at the stated limits", "[evaluator]") {
     ParseOptions options;
-    options.max_loop_iterations = 1000;
+    options.limits.loop_iterations = 1000;
     CHECK(std::string(error_of("#while (1) #end", options).message()).find("1000") != std::string::npos);
-    options.max_macro_depth = 20;
+    options.limits.macro_depth = 20;
     CHECK(std::string(error_of("#macro R() R() #end R()", options).message()).find("20 deep") !=
           std::string::npos);
 }

@@ -1,0 +1,40 @@
+// Every limit that stops a runaway or hostile scene, in one place, with its
+// default. A scene that passes one gets an error at the place it did so
+// (file:line:col, exit 1); the command line raises each (README, "Limits").
+// POV-Ray itself has few of these: a runaway #while there runs until it is
+// killed, and an array or string grows until the allocation fails.
+#pragma once
+
+#include <cstddef>
+
+namespace hexant::language {
+
+struct Limits {
+    // Iterations of one #while or #for.
+    std::size_t loop_iterations = 10'000'000;
+    // Loop iterations and macro calls of the whole reading together (nested
+    // loops multiply: two nested loops of 10^5 each stay under the per-loop
+    // limit but take 10^10 steps). 10^8 trivial iterations take about a
+    // minute.
+    std::size_t total_iterations = 100'000'000;
+    // Macro calls inside macro calls, and #include inside #include.
+    int macro_depth = 200;
+    int include_depth = 100;
+    // Characters of one string (concat() doubling a string reached the
+    // allocator's limit in 30 steps).
+    std::size_t string_length = 16u << 20;
+    // Bytes held by the scene's arrays at once: their slots, the values set
+    // in them and those values' strings (an array at the former 10^8 element
+    // limit took 4.8 GB). Counted per copy: an array is a value in SDL.
+    std::size_t array_memory = std::size_t(2) << 30;
+    // Frames of an animation (10^6 is eleven hours of film at 24 per
+    // second); frames are counted in int and each frame's eye and lights
+    // are placed up front.
+    long long frames = 1'000'000;
+    // Pixels of one image (width times height): an image keeps 12 bytes a
+    // pixel in float RGB, and the file's writer and a kept frame copies it
+    // (-W 100000 -H 100000 ended in std::bad_alloc).
+    long long image_pixels = 100'000'000;
+};
+
+}  // namespace hexant::language

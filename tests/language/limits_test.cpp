@@ -1,0 +1,143 @@
+// Each limit of language/limits.hpp: a scene that passes it stops with an
+// error at the place it did so, and one just inside it reads.
+#include <catch2/catch.hpp>
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <sstream>
+
+#include "language/interpreter.hpp"
+
+using hexant::language::ParseOptions;
+using hexant::language::SceneError;
+
+namespace {
+
+// The error of `text`, or a failed test when it reads.
+SceneError error_of(const std::string& text, const ParseOptions& given) {
+    ParseOptions options = given;
+    std::ostringstream messages;
+    options.messages = &messages;
+    try {
+        hexant::language::parse_scene_text(text, "limits.pov", options);
+    } catch (const SceneError& e) {
+        return e;
+    }
+    FAIL("expected an error");
+    throw;
+}
+
+void reads(const std::string& text, const ParseOptions& given) {
+    ParseOptions options = given;
+    std::ostringstream messages;
+    options.messages = &messages;
+    CHECK_NOTHROW(hexant::language::parse_scene_text(text, "limits.pov", options));
+}
+
+bool contains(const SceneError& e, const std::string& part) {
+    return e.message().find(part) != std::string::npos;
+}
+
+}  // namespace
+
+TEST_CASE("the total iteration budget spans nested loops and macro calls", "[limits]") {
+    ParseOptions options;
+    options.limits.loop_iterations = 100;  // each loop alone stays inside it
+    options.limits.total_iterations = 1000;
+    const std::string nested = "#declare I = 0;\n#while (I < 40)\n  #declare J = 0;\n"
+                               "  #while (J < 40) #declare J = J + 1; #end\n"
+                               "  #declare I = I + 1;\n#end\n";
+    const SceneError e = error_of(nested, options);
+    CHECK(contains(e, "more than 1000 loop iterations and macro calls"));
+    CHECK(contains(e, "--max-iterations"));
+    CHECK(e.places().front().line == 4);  // the inner loop's #while
+    CHECK(e.places().front().column == 3);
+    options.limits.total_iterations = 40 * 41 + 40;  // every step of it, the last false tests free
+    reads(nested, options);
+
+    // Macro calls count too: a loop of calls.
+    options.limits.total_iterations = 50;
+    const SceneError m = error_of("#macro M() #end\n#for (I, 1, 30) M() #end\n", options);
+    CHECK(contains(m, "macro calls in all"));
+    CHECK(m.places().front().line == 2);
+}
+
+TEST_CASE("a string longer than the limit stops where it would be made", "[limits]") {
+    ParseOptions options;
+    options.limits.string_length = 1000;
+    const SceneError e = error_of("#declare S = \"abcdefgh\";\n#while (1)\n"
+                                  "  #declare S = concat(S, S);\n#end\n",
+                                  options);
+    CHECK(contains(e, "concat()'s result would be 1024 characters long"));
+    CHECK(contains(e, "--max-string-length"));
+    CHECK(e.places().front().line == 3);
+    reads("#declare S = concat(\"" + std::string(500, 'a') + "\", \"" + std::string(500, 'b') + "\");",
+          options);
+    // Any function's string: vstr of a long separator.
+    const SceneError v = error_of("#declare S = vstr(5, <1,2,3,4,5>, \"" + std::string(300, '-') +
+                                      "\", 0, 0);",
+                                  options);
+    CHECK(contains(v, "vstr()'s result"));
+}
+
+TEST_CASE("the arrays' memory is held against its limit, and given back", "[limits]") {
+    ParseOptions options;
+    options.limits.array_memory = 1 << 20;  // 1 MiB: 43,690 slots of 24 bytes
+    const SceneError e = error_of("#declare A = array[10]\n#declare B = array[100000]\n", options);
+    CHECK(contains(e, "more than 1.0 MiB"));
+    CHECK(contains(e, "--max-array-memory"));
+    CHECK(e.places().front().line == 2);
+    // An array rebuilt in a loop holds what one declaration does (the new
+    // array, its copy into the name, the old one) however many times it runs.
+    reads("#for (I, 1, 100) #declare A = array[10000]; #end\n", options);
+    // Values set in an array count: strings of 1000 characters.
+    options.limits.array_memory = 200'000;
+    const SceneError s = error_of("#declare A = array[1000]\n#for (I, 0, 999)\n"
+                                  "  #declare A[I] = str(I, 1000, 0);\n#end\n",
+                                  options);
+    CHECK(contains(s, "arrays would hold more than"));
+    CHECK(s.places().front().line == 3);
+}
+
+TEST_CASE("include and macro depths stop at their limits", "[limits]") {
+    ParseOptions options;
+    options.limits.macro_depth = 10;
+    const SceneError m = error_of("#macro R(N) R(N + 1) #end\nR(0)\n", options);
+    CHECK(contains(m, "nested more than 10 deep"));
+    CHECK(contains(m, "--max-macro-depth"));
+}
+
+TEST_CASE("running out of memory while reading is an error at the place", "[limits]") {
+    // A limit raised past what the process may have: the allocation fails
+    // and the reader names the place instead of ending in std::terminate.
+    // In a child whose address space is capped at 1 GiB, so that the test
+    // asks for no more than that whatever the machine.
+    const pid_t child = fork();
+    REQUIRE(child >= 0);
+    if (child == 0) {
+        rlimit cap{rlim_t(1) << 30, rlim_t(1) << 30};
+        if (setrlimit(RLIMIT_AS, &cap) != 0) _exit(3);
+        ParseOptions options;
+        options.limits.array_memory = std::size_t(1) << 40;
+        std::ostringstream messages;
+        options.messages = &messages;
+        try {
+            hexant::language::parse_scene_text("#declare A = 1;\n#declare B = array[100000000]\n",
+                                               "limits.pov", options);
+        } catch (const SceneError& e) {
+            _exit(e.message().find("out of memory here") != std::string::npos &&
+                          e.places().front().line == 2
+                      ? 0
+                      : 2);
+        } catch (...) {
+            _exit(4);
+        }
+        _exit(5);
+    }
+    int status = 0;
+    REQUIRE(waitpid(child, &status, 0) == child);
+    REQUIRE(WIFEXITED(status));
+    CHECK(WEXITSTATUS(status) == 0);
+}
