@@ -160,6 +160,10 @@ ResolvedScene resolve(const SceneArguments& arguments) {
     if (!std::isfinite(a.initial_clock) || !std::isfinite(a.final_clock) ||
         (r.at_clock && !std::isfinite(*r.at_clock)))
         throw std::runtime_error("the clock (--clock, Initial_Clock, Final_Clock) must be finite numbers");
+    // Finite ends can still be too far apart for a double (-1e308:1e308).
+    if (!std::isfinite(a.clock_delta()) || !std::isfinite(a.time_end()))
+        throw std::runtime_error("the clock's range (--clock, Initial_Clock, Final_Clock) overflows "
+                                 "the doubles");
     return r;
 }
 

@@ -10,6 +10,7 @@
 #include "language/interpreter_state.hpp"
 #include "language/checked_integer.hpp"
 #include "language/value_ops.hpp"
+#include "runtime/parameter_check.hpp"
 
 namespace hexant::language {
 
@@ -979,7 +980,12 @@ HEXANT_ACTION(camera_block) {
     }
 };
 HEXANT_ACTION(scene_camera) {
-    HEXANT_APPLY { (void)in; st.scene.camera = st.pop().as<runtime::CameraRecord>(); }
+    HEXANT_APPLY {
+        (void)in;
+        st.scene.camera = st.pop().as<runtime::CameraRecord>();
+        if (auto problem = runtime::bad_parameter(st.scene.camera, st.scene.animation))
+            throw ValueError(*problem);
+    }
 };
 HEXANT_ACTION(background_colour) {
     HEXANT_APPLY { (void)in; st.scene.background = to_colour(st.pop(), "the background"); }
@@ -1123,6 +1129,8 @@ HEXANT_ACTION(scene_object) {
     HEXANT_APPLY {
         Value v = st.pop();
         if (v.is<runtime::LightRecord>()) {
+            if (auto problem = runtime::bad_parameter(v.as<runtime::LightRecord>(), st.scene.animation))
+                throw ValueError(*problem);
             st.scene.lights.push_back(v.as<runtime::LightRecord>());
         } else if (v.is<runtime::ObjectPtr>()) {
             st.add_object(v.as<runtime::ObjectPtr>(), in.position());

@@ -2,6 +2,8 @@
 // points that run the grammar over a scene file.
 #include "language/interpreter.hpp"
 
+#include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <regex>
@@ -10,6 +12,7 @@
 #include "language/actions.hpp"
 #include "language/checked_integer.hpp"
 #include "language/interpreter_state.hpp"
+#include "runtime/parameter_check.hpp"
 
 #ifndef HEXANT_BUNDLED_INCLUDE_DIR
 #define HEXANT_BUNDLED_INCLUDE_DIR "language/include"
@@ -51,6 +54,25 @@ ErrorPlace Interpreter::place(const p::position& position, std::string note) con
         const std::string& text = it->second;
         std::size_t begin = std::min(position.byte, text.size());
         while (begin > 0 && text[begin - 1] != '\n') --begin;
+        std::size_t end = begin;
+        while (end < text.size() && text[end] != '\n' && text[end] != '\r') ++end;
+        place.source_line = text.substr(begin, end - begin);
+        break;
+    }
+    return place;
+}
+
+ErrorPlace Interpreter::place(const runtime::SourcePlace& where, std::string note) const {
+    ErrorPlace place{where.file, where.line, where.column, {}, std::move(note)};
+    for (auto it = sources_.rbegin(); it != sources_.rend(); ++it) {
+        if (it->first != where.file) continue;
+        const std::string& text = it->second;
+        std::size_t begin = 0;
+        for (std::size_t line = 1; line < where.line && begin != std::string::npos; ++line) {
+            begin = text.find('\n', begin);
+            if (begin != std::string::npos) ++begin;
+        }
+        if (begin == std::string::npos) break;
         std::size_t end = begin;
         while (end < text.size() && text[end] != '\n' && text[end] != '\r') ++end;
         place.source_line = text.substr(begin, end - begin);
@@ -286,12 +308,29 @@ void collect_lights(const runtime::ObjectRecord& object, const runtime::Transfor
 
 }  // namespace
 
+void Interpreter::check_parameters(const runtime::ObjectRecord& object,
+                                   const p::position& where) const {
+    std::optional<std::string> problem = runtime::bad_parameter(object, scene.animation);
+    for (std::size_t i = 0; !problem && i < object.lights.size(); ++i)
+        problem = runtime::bad_parameter(object.lights[i], scene.animation);
+    if (problem) {
+        if (object.place.file.empty()) fail(where, *problem);
+        SceneError error(*problem, place(object.place));
+        if (object.place.file != where.source || object.place.line != where.line)
+            error.add_context(place(where, "in the object added to the scene here"));
+        throw error;
+    }
+    if (const auto* csg = std::get_if<runtime::Csg>(&object.shape))
+        for (const auto& child : csg->children) check_parameters(*child, where);
+}
+
 void Interpreter::add_object(const runtime::ObjectPtr& object, const p::position& where) {
     try {
         check_patterns(*object);
     } catch (const ValueError& e) {
         fail(where, e.what());
     }
+    check_parameters(*object, where);
     collect_lights(*object, runtime::Transform{}, scene.lights);
     scene.objects.push_back(object);
 }
@@ -413,6 +452,15 @@ void check_declare(const std::string& key, const std::string& value) {
                              "' must be a number, a vector of numbers <a, b, c> or a \"string\" "
                              "(it is never read as scene text)",
                          ErrorPlace{"--declare " + key, 0, 0, "", ""});
+    // A number past the doubles (1e999) reads as an infinity.
+    if (value.find('"') == std::string::npos) {
+        static const std::regex each(number);
+        for (auto it = std::sregex_iterator(value.begin(), value.end(), each);
+             it != std::sregex_iterator(); ++it)
+            if (!std::isfinite(std::strtod(it->str().c_str(), nullptr)))
+                throw SceneError("the number " + it->str() + " is beyond the doubles (infinite)",
+                                 ErrorPlace{"--declare " + key, 0, 0, "", ""});
+    }
 }
 
 runtime::SceneDescription parse(const std::string& text, const std::string& name,

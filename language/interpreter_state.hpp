@@ -74,6 +74,8 @@ public:
     // Keeps the text for the whole reading (macros point into it).
     const std::string& add_source(const std::string& name, std::string text);
     ErrorPlace place(const p::position& position, std::string note = {}) const;
+    // A record's place (the line found by its number).
+    ErrorPlace place(const runtime::SourcePlace& where, std::string note = {}) const;
     SceneError to_scene_error(const p::parse_error& e) const;
     [[noreturn]] static void fail(const p::position& position, const std::string& message) {
         throw p::parse_error(message, position);
@@ -108,6 +110,11 @@ public:
     // A finished top-level object joins the scene; its lights join the
     // scene's lights, and a pattern hexant lacks is an error here, where used.
     void add_object(const runtime::ObjectPtr& object, const p::position& where);
+    // Throws SceneError at the object's place (or its part's) when a
+    // parameter is NaN, infinite or degenerate at some instant of the
+    // animation (runtime/parameter_check.hpp); `where` is the item that
+    // added it to the scene.
+    void check_parameters(const runtime::ObjectRecord& object, const p::position& where) const;
 
     // ---- what the scene fills in
     runtime::SceneDescription& scene;

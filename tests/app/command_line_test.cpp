@@ -180,3 +180,19 @@ TEST_CASE("every limit has a flag, and frames and pixels are checked before any 
     from_ini.files = {"a.pov", ini.string()};
     CHECK_THROWS_WITH(hexant::app::resolve(from_ini), Catch::Contains("frames -2147483648 to"));
 }
+
+TEST_CASE("command-line numbers are finite: the clock and the shutter", "[app][parameters]") {
+    const auto parse = [](const std::string& flags) {
+        CLI::App app;
+        hexant::app::SceneArguments arguments;
+        hexant::app::add_scene_arguments(app, arguments);
+        app.parse("scene.pov " + flags, false);
+        return hexant::app::resolve(arguments);
+    };
+    CHECK_THROWS_WITH(parse("--clock nan:1"), Catch::Contains("finite"));
+    CHECK_THROWS_WITH(parse("--clock 0:inf --frame-count 2"), Catch::Contains("finite"));
+    CHECK_THROWS_WITH(parse("--clock nan"), Catch::Contains("finite"));
+    CHECK_THROWS_WITH(parse("--shutter nan"), Catch::Contains("[0, 1]"));
+    CHECK_THROWS_WITH(parse("--clock -1e308:1e308 --frame-count 2"), Catch::Contains("overflows"));
+    CHECK_NOTHROW(parse("--clock -1e300:1e300 --frame-count 2"));
+}
