@@ -7,7 +7,7 @@ PACKAGES := build-essential cmake pkg-config tao-pegtl-dev libglm-dev catch2 lib
             libopenimageio-dev libtbb-dev libhwy-dev
 JOBS := $(shell nproc 2>/dev/null || echo 2)
 
-.PHONY: run test golden bench build deps clean
+.PHONY: run test golden bench fuzz build deps clean
 
 run: build
 	./build/hexant render examples/atom.pov examples/atom.ini \
@@ -38,6 +38,20 @@ bench: deps
 	cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 	cmake --build build --target hexant_embree_peer -j$(JOBS)
 	./build/tests/bench/hexant_embree_peer
+
+# libFuzzer over reading a scene and rendering an 8 by 8 frame, with
+# AddressSanitizer and UndefinedBehaviorSanitizer (tests/fuzz/; README.md,
+# "Fuzzing"): needs clang, so it is not part of `make test`. Builds into
+# build-fuzz and fuzzes for FUZZ_SECONDS; a crash fails with its input
+# saved as build-fuzz/tests/fuzz/crash-*.
+FUZZ_SECONDS ?= 600
+fuzz: deps
+	@command -v clang++ >/dev/null 2>&1 || { \
+	  echo "make fuzz needs clang. Run:"; echo "  sudo apt-get install -y clang"; exit 1; }
+	CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	  -DHEXANT_FUZZ=ON -DHEXANT_FUZZ_SECONDS=$(FUZZ_SECONDS)
+	cmake --build build-fuzz --target hexant_fuzz -j$(JOBS)
+	cd build-fuzz && ctest -L fuzz --output-on-failure
 
 build: deps
 	cmake -S . -B build -DCMAKE_BUILD_TYPE=Release

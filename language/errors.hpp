@@ -137,7 +137,6 @@ std::string found_text(const ParseInput& in) {
 template <typename Rule>
 inline constexpr bool kNests =
     std::is_same_v<Rule, grammar::unary> || std::is_same_v<Rule, grammar::vector_literal> ||
-    std::is_same_v<Rule, grammar::block_comment_body> ||
     std::is_same_v<Rule, grammar::skip::nested> || std::is_same_v<Rule, grammar::skip::braced> ||
     std::is_same_v<Rule, grammar::skip::parenthesized> ||
     std::is_same_v<Rule, grammar::object_value> || std::is_same_v<Rule, grammar::csg_block> ||

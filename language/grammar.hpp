@@ -13,6 +13,7 @@
 
 #include <cctype>
 #include <string_view>
+#include <vector>
 
 #include <tao/pegtl.hpp>
 #include <tao/pegtl/contrib/analyze_traits.hpp>
@@ -24,11 +25,45 @@ namespace p = tao::pegtl;
 // ---------------------------------------------------------------- lexical
 
 struct line_comment : p::seq<p::two<'/'>, p::until<p::eolf>> {};
-// Block comments nest. One without its end is an error reported at its '/*'.
-struct block_comment;
-struct block_comment_body
-    : p::seq<p::string<'/', '*'>, p::until<p::string<'*', '/'>, p::sor<block_comment, p::any>>> {};
+// Block comments nest. One without its end is an error reported at the
+// innermost '/*' still open, as the recursive rule this replaces did. Read
+// with a count of depth, not recursion: the reader skips blanks with
+// PEGTL's plain control in places (after a directive's keyword), where no
+// nesting guard runs, and 100,000 nested comments there overflowed the
+// stack (found by the fuzzer).
 struct unterminated_comment : p::success {};
+struct block_comment_body {
+    using rule_t = block_comment_body;
+    using subs_t = p::empty_list;
+    template <p::apply_mode, p::rewind_mode, template <typename...> class Action,
+              template <typename...> class Control, typename ParseInput, typename... States>
+    static bool match(ParseInput& in, States&&... st) {
+        const char* const b = in.current();
+        const char* const e = in.end();
+        if (e - b < 2 || b[0] != '/' || b[1] != '*') return false;
+        std::vector<const char*> open{b};  // the openers not yet closed
+        const char* q = b + 2;
+        while (q + 1 < e) {
+            if (q[0] == '/' && q[1] == '*') {
+                open.push_back(q);
+                q += 2;
+            } else if (q[0] == '*' && q[1] == '/') {
+                q += 2;
+                open.pop_back();
+                if (open.empty()) {
+                    in.bump(static_cast<std::size_t>(q - b));
+                    return true;
+                }
+            } else {
+                ++q;
+            }
+        }
+        if (open.size() == 1) return false;  // block_comment reports it at its '/*'
+        in.bump(static_cast<std::size_t>(open.back() - b));
+        Control<unterminated_comment>::raise(static_cast<const ParseInput&>(in), st...);
+        return false;
+    }
+};
 struct block_comment
     : p::sor<block_comment_body, p::seq<p::at<p::string<'/', '*'>>, p::raise<unterminated_comment>>> {};
 struct separator : p::sor<p::space, line_comment, block_comment> {};
@@ -868,6 +903,8 @@ struct scene_file : p::seq<ws, p::star<scene_item>, p::must<scene_end>> {};
 namespace tao::pegtl {
 template <typename Name>
 struct analyze_traits<Name, hexant::language::grammar::name> : analyze_any_traits<> {};
+template <typename Name>
+struct analyze_traits<Name, hexant::language::grammar::block_comment_body> : analyze_any_traits<> {};
 #define HEXANT_CUSTOM_ANALYZE(rule)                                                         \
     template <typename Name, typename Item>                                                \
     struct analyze_traits<Name, hexant::language::grammar::rule<Item>> : analyze_any_traits<> {}

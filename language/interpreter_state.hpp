@@ -182,7 +182,9 @@ public:
                               grammar::skip::separators>;
         p::memory_input<> look(in.current(), in.end(), "");
         try {
-            if (!p::parse<opener>(look)) return false;
+            // Through the nesting guard (control): thousands of parentheses
+            // in a condition would otherwise overflow the stack here.
+            if (!p::parse<opener, p::nothing, control>(look)) return false;
         } catch (const p::parse_error&) {
             return false;  // an unclosed condition: the directive reports it
         }

@@ -1,0 +1,4 @@
+// error: 3:45: expected '}'
+// povray: line 3: Parse Error: No matching } in 'pigment', color keyword 'rgb' found instead
+sphere { 0, 1 pigment { checker rgb 1, rgb 0, rgb 0.5 } }
+

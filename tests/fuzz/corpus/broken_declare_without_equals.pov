@@ -1,0 +1,3 @@
+// error: 2:12: expected '='
+#declare X 1;
+

@@ -1,0 +1,2 @@
+// error: 2:1: include file 'no_such_file.inc' not found
+

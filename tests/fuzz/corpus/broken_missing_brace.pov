@@ -1,0 +1,4 @@
+// error: 4:1: expected '}'
+sphere { <0, 0, 0>, 1
+  pigment { rgb 1 }
+

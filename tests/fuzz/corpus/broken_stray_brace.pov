@@ -1,0 +1,4 @@
+// error: 3:1: found '}'
+sphere { 0, 1 }
+}
+

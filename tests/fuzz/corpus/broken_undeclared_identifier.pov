@@ -1,0 +1,3 @@
+// error: 2:13: undeclared identifier 'Radius'
+sphere { 0, Radius }
+

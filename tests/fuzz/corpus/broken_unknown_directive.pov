@@ -1,0 +1,3 @@
+// error: 2:2: unknown directive '#frobnicate'
+#frobnicate 3
+

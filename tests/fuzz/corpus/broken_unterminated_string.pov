@@ -1,0 +1,4 @@
+// error: 2:18: unterminated string
+#declare A = "abc
+sphere { 0, 1 }
+
