@@ -836,9 +836,7 @@ void Hierarchy::release(const LiveSlab& slab) const {
 
 void Hierarchy::release_outside(double t0, double t1) {
     const std::lock_guard<std::mutex> lock(slabs_mutex_);
-    std::size_t held = arena_.bytes();
-    for (const LiveSlab& s : live_slabs_) held += s.cell->own->bytes();
-    peak_bytes_ = std::max(peak_bytes_, held);
+    peak_bytes_ = std::max(peak_bytes_, held_bytes());
     // A ray at the time a slab ends goes to the later half (traversal_simd.cpp),
     // so a slab ending where [t0, t1] begins is outside it.
     std::erase_if(live_slabs_, [&](const LiveSlab& s) {
@@ -848,17 +846,20 @@ void Hierarchy::release_outside(double t0, double t1) {
     });
 }
 
-std::size_t Hierarchy::bytes() const {
-    const std::lock_guard<std::mutex> lock(slabs_mutex_);
+std::size_t Hierarchy::held_bytes() const {
     std::size_t held = arena_.bytes();
     for (const LiveSlab& s : live_slabs_) held += s.cell->own->bytes();
     return held;
 }
 
-std::size_t Hierarchy::peak_bytes() const {
-    const std::size_t now = bytes();
+std::size_t Hierarchy::bytes() const {
     const std::lock_guard<std::mutex> lock(slabs_mutex_);
-    return std::max(peak_bytes_, now);
+    return held_bytes();
+}
+
+std::size_t Hierarchy::peak_bytes() const {
+    const std::lock_guard<std::mutex> lock(slabs_mutex_);
+    return std::max(peak_bytes_, held_bytes());
 }
 
 void Hierarchy::count_full(Counters& counters) const {
@@ -893,7 +894,7 @@ void Hierarchy::count_full(Counters& counters) const {
             // Counted: let it go again, so that counting holds one slab at a time.
             slab_cells += slab->own->cells();
             const std::lock_guard<std::mutex> lock(slabs_mutex_);
-            peak_bytes_ = std::max(peak_bytes_, arena_.bytes() + slab->own->bytes());
+            peak_bytes_ = std::max(peak_bytes_, held_bytes());
             std::erase_if(live_slabs_, [&](const LiveSlab& s) {
                 if (s.cell != slab) return false;
                 release(s);

@@ -193,6 +193,8 @@ private:
     mutable std::vector<LiveSlab> live_slabs_;
     mutable std::size_t peak_bytes_ = 0;
     void release(const LiveSlab& slab) const;
+    // The lasting part's bytes and every live slab's; slabs_mutex_ held.
+    std::size_t held_bytes() const;
     mutable double root_area_ = 0.0;  // the root cell's time-averaged area (cost criterion)
     std::unique_ptr<Builder> builder_;
     NodeRef root_;
