@@ -221,7 +221,7 @@ void add_render_arguments(CLI::App& command, RenderArguments& a) {
     command.add_option("--frames", a.frames, "A:B renders frames A to B of the animation; a comma list (1,17,33 or 1:4,9) renders those");
     command.add_option("-o,--output", a.output,
                        "Frame file pattern; #### becomes the frame number (default "
-                       "out/SCENE/frame_####.png; .exr writes linear float)");
+                       "out/SCENE/frame_####.png): .png is 8-bit sRGB, .exr linear float");
     command.add_option("--contact-sheet", a.contact_sheet, "Also write the frames as one grid image");
     command.add_option("--animation", a.animation, "Also write an animated GIF of the frames");
     command.add_flag("--stats", a.stats, "Print the paper's table rows for the run");
@@ -245,6 +245,10 @@ int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err
         if (selected.size() > 1 && pattern.find('#') == std::string::npos)
             throw std::runtime_error("-o " + pattern +
                                      ": several frames need a #### in the name for the number");
+        // A name of no format is refused before any frame is rendered.
+        tracer::check_image_name(pattern);
+        if (args.contact_sheet) tracer::check_image_name(*args.contact_sheet);
+        if (args.animation) tracer::check_animation_name(*args.animation);
         const bool keep_frames = args.contact_sheet || args.animation;
         std::vector<tracer::Image> frames;
         std::vector<std::pair<std::string, Counters>> columns;

@@ -2,12 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
-
 #include "tracer/image.hpp"
+#include "tracer/image_format.hpp"
 #include "tracer/image_output.hpp"
 
 namespace hexant::tracer {
@@ -15,84 +14,92 @@ namespace {
 
 namespace fs = std::filesystem;
 
-OIIO::ImageBuf read(const fs::path& path, ImageSpace space = ImageSpace::Stored) {
-    OIIO::ImageBuf image(path.string());
-    if (!image.read(0, 0, true, OIIO::TypeDesc::FLOAT))
-        throw std::runtime_error(path.string() + ": cannot read image: " + image.geterror());
-    if (space == ImageSpace::Linear &&
-        image.spec().get_string_attribute("oiio:ColorSpace") == "sRGB") {
-        OIIO::ImageBuf linear = OIIO::ImageBufAlgo::colorconvert(image, "sRGB", "linear");
-        if (linear.has_error())
-            throw std::runtime_error(path.string() + ": cannot decode sRGB: " + linear.geterror());
-        return linear;
+// sRGB's decoding (IEC 61966-2-1), the inverse of to_srgb8's encoding.
+float srgb_to_linear(float v) {
+    return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
+}
+
+StoredImage read(const fs::path& path, ImageSpace space = ImageSpace::Stored) {
+    StoredImage image = read_stored_image(path);
+    if (space == ImageSpace::Linear && !image.linear) {
+        // Colour channels only: an alpha channel is not encoded.
+        for (std::size_t i = 0; i < image.values.size(); ++i)
+            if (int(i % std::size_t(image.channels)) < 3)
+                image.values[i] = srgb_to_linear(image.values[i]);
+        image.linear = true;
     }
     return image;
 }
 
-void check_same_shape(const OIIO::ImageBuf& a, const fs::path& pa, const OIIO::ImageBuf& b,
+void check_same_shape(const StoredImage& a, const fs::path& pa, const StoredImage& b,
                       const fs::path& pb) {
-    const auto& sa = a.spec();
-    const auto& sb = b.spec();
-    if (sa.width != sb.width || sa.height != sb.height || sa.nchannels != sb.nchannels)
-        throw std::runtime_error(pa.string() + " is " + std::to_string(sa.width) + "x" +
-                                 std::to_string(sa.height) + "x" + std::to_string(sa.nchannels) +
-                                 " but " + pb.string() + " is " + std::to_string(sb.width) + "x" +
-                                 std::to_string(sb.height) + "x" + std::to_string(sb.nchannels));
+    if (a.width != b.width || a.height != b.height || a.channels != b.channels)
+        throw std::runtime_error(pa.string() + " is " + std::to_string(a.width) + "x" +
+                                 std::to_string(a.height) + "x" + std::to_string(a.channels) +
+                                 " but " + pb.string() + " is " + std::to_string(b.width) + "x" +
+                                 std::to_string(b.height) + "x" + std::to_string(b.channels));
 }
 
 }  // namespace
 
 ImageDifference compare_images(const fs::path& a, const fs::path& b, double fail_threshold,
                                double warn_threshold, ImageSpace space) {
-    const OIIO::ImageBuf ia = read(a, space), ib = read(b, space);
+    const StoredImage ia = read(a, space), ib = read(b, space);
     check_same_shape(ia, a, ib, b);
-    const OIIO::ImageBufAlgo::CompareResults r = OIIO::ImageBufAlgo::compare(
-        ia, ib, static_cast<float>(fail_threshold), static_cast<float>(warn_threshold));
-    // r.error is also set when pixels exceed failthresh; only a message
-    // means the comparison itself went wrong.
-    if (const std::string message = OIIO::geterror(); r.error && !message.empty())
-        throw std::runtime_error(a.string() + " against " + b.string() + ": " + message);
     ImageDifference d;
-    d.mean = r.meanerror;
-    d.rms = r.rms_error;
-    d.max = r.maxerror;
-    d.max_x = r.maxx;
-    d.max_y = r.maxy;
-    d.pixels = std::size_t(ia.spec().width) * std::size_t(ia.spec().height);
-    d.failing = r.nfail;
-    d.warning = r.nwarn;
+    d.pixels = std::size_t(ia.width) * std::size_t(ia.height);
+    const std::size_t channels = std::size_t(ia.channels);
+    double sum = 0.0, squares = 0.0;
+    for (std::size_t p = 0; p < d.pixels; ++p) {
+        bool fails = false, warns = false;
+        for (std::size_t c = 0; c < channels; ++c) {
+            const double e = std::abs(double(ia.values[p * channels + c]) -
+                                      double(ib.values[p * channels + c]));
+            sum += e;
+            squares += e * e;
+            // A NaN on either side counts as the worst difference.
+            if (!(e <= d.max)) {
+                d.max = std::isnan(e) ? std::numeric_limits<double>::infinity() : e;
+                d.max_x = int(p % std::size_t(ia.width));
+                d.max_y = int(p / std::size_t(ia.width));
+            }
+            fails = fails || !(e <= fail_threshold);
+            warns = warns || !(e <= warn_threshold);
+        }
+        d.failing += fails;
+        d.warning += warns;
+    }
+    const double values = double(d.pixels * channels);
+    d.mean = values > 0 ? sum / values : 0.0;
+    d.rms = values > 0 ? std::sqrt(squares / values) : 0.0;
     return d;
 }
 
 ImageError image_error(const fs::path& image, const fs::path& reference, double epsilon) {
-    namespace algo = OIIO::ImageBufAlgo;
-    const OIIO::ImageBuf a = read(image, ImageSpace::Linear);
-    const OIIO::ImageBuf r = read(reference, ImageSpace::Linear);
+    const StoredImage a = read(image, ImageSpace::Linear);
+    const StoredImage r = read(reference, ImageSpace::Linear);
     check_same_shape(a, image, r, reference);
-    const OIIO::ImageBuf difference = algo::sub(a, r);
-    const OIIO::ImageBuf squared = algo::mul(difference, difference);
-    const OIIO::ImageBuf relative =
-        algo::div(squared, algo::add(algo::mul(r, r), static_cast<float>(epsilon)));
-    const auto mean_of = [](const OIIO::ImageBuf& buffer) {
-        const algo::PixelStats stats = algo::computePixelStats(buffer);
-        double sum = 0.0;
-        for (const double v : stats.avg) sum += v;
-        return stats.avg.empty() ? 0.0 : sum / double(stats.avg.size());
-    };
-    return {std::sqrt(mean_of(squared)), mean_of(relative)};
+    double squares = 0.0, relative = 0.0;
+    for (std::size_t i = 0; i < a.values.size(); ++i) {
+        const double e = double(a.values[i]) - double(r.values[i]);
+        const double ref = r.values[i];
+        squares += e * e;
+        relative += e * e / (ref * ref + epsilon);
+    }
+    const double n = double(std::max<std::size_t>(a.values.size(), 1));
+    return {std::sqrt(squares / n), relative / n};
 }
 
 void write_difference_image(const fs::path& a, const fs::path& b, const fs::path& out,
                             double gain) {
-    const OIIO::ImageBuf ia = read(a), ib = read(b);
+    const StoredImage ia = read(a), ib = read(b);
     check_same_shape(ia, a, ib, b);
-    const OIIO::ImageBuf difference =
-        OIIO::ImageBufAlgo::mul(OIIO::ImageBufAlgo::absdiff(ia, ib), static_cast<float>(gain));
-    Image image(difference.spec().width, difference.spec().height);
-    const int channels = std::min(difference.spec().nchannels, 3);
-    for (OIIO::ImageBuf::ConstIterator<float> p(difference); !p.done(); ++p)
-        for (int c = 0; c < 3; ++c)
-            image.rgb[(std::size_t(p.y()) * image.width + p.x()) * 3 + c] = p[std::min(c, channels - 1)];
+    Image image(ia.width, ia.height);
+    const std::size_t channels = std::size_t(ia.channels);
+    for (std::size_t p = 0; p < std::size_t(ia.width) * std::size_t(ia.height); ++p)
+        for (std::size_t c = 0; c < 3; ++c)
+            image.rgb[p * 3 + c] = float(
+                gain * std::abs(double(ia.values[p * channels + c]) - double(ib.values[p * channels + c])));
     write_image(image, out);
 }
 

@@ -1,5 +1,6 @@
-// Two image files compared pixel by pixel (OpenImageIO's
-// ImageBufAlgo::compare), for golden-image tests and error measurements.
+// Two image files compared pixel by pixel (the measures of OpenImageIO's
+// ImageBufAlgo::compare and idiff), for golden-image tests and error
+// measurements.
 #pragma once
 
 #include <cstddef>

@@ -1,12 +1,12 @@
 #include "tracer/image_output.hpp"
 
-#include <OpenImageIO/imageio.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
 
+#include "tracer/gif_animation.hpp"
+#include "tracer/image_format.hpp"
 #include "tracer/whole_file.hpp"
 
 namespace hexant::tracer {
@@ -32,93 +32,64 @@ unsigned char to_srgb8(double linear) {
 
 namespace {
 
-bool is_float_format(const fs::path& path) {
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    return ext == ".exr" || ext == ".hdr";
-}
-
 std::vector<unsigned char> srgb_pixels(const Image& image) {
     std::vector<unsigned char> out(image.rgb.size());
     for (std::size_t i = 0; i < out.size(); ++i) out[i] = to_srgb8(image.rgb[i]);
     return out;
 }
 
-}  // namespace
-
-namespace {
-
 // Reads the written file back whole: a write that failed quietly (a full
-// disk under a library that does not check fwrite) leaves a file that does
-// not read. With `expected`, its pixels must also be exactly those written.
-bool reads_back(const fs::path& file, int width, int height, int subimages, OIIO::TypeDesc type,
-                const void* expected, std::size_t expected_bytes, std::string& reason) {
-    // The reader's first line says why (a library may add several).
-    const auto first_line = [](std::string text) { return text.substr(0, text.find('\n')); };
-    auto in = OIIO::ImageInput::open(file.string());
-    if (!in) {
-        reason = "it does not read back: " + first_line(OIIO::geterror());
-        return false;
+// disk under a library that does not check every write) leaves a file that
+// does not read, or reads different. Throws with the reason.
+void check_reads_back(const ImageFormat& format, const fs::path& file, const Image& image,
+                      const std::vector<unsigned char>& bytes) {
+    StoredImage back;
+    try {
+        back = format.read(file);
+    } catch (const std::exception& e) {
+        throw std::runtime_error(std::string("it does not read back whole, is the disk full? ") +
+                                 e.what());
     }
-    for (int s = 0; s < subimages; ++s) {
-        if (s > 0 && !in->seek_subimage(s, 0)) {
-            reason = "frame " + std::to_string(s + 1) + " is missing";
-            return false;
-        }
-        const OIIO::ImageSpec& spec = in->spec();
-        if (spec.width != width || spec.height != height) {
-            reason = "it reads back with the wrong size";
-            return false;
-        }
-        std::vector<unsigned char> data(std::size_t(width) * std::size_t(height) *
-                                        std::size_t(spec.nchannels) * type.size());
-        if (!in->read_image(0, 0, 0, spec.nchannels, type, data.data())) {
-            reason = "it does not read back whole, is the disk full? " + first_line(in->geterror());
-            return false;
-        }
-        if (expected && (spec.nchannels != 3 || data.size() != expected_bytes ||
-                         std::memcmp(data.data(), expected, expected_bytes) != 0)) {
-            reason = "it reads back different from what was written";
-            return false;
-        }
-    }
-    return true;
+    if (back.width != image.width || back.height != image.height || back.channels != 3)
+        throw std::runtime_error("it reads back with the wrong size");
+    bool same = true;
+    if (format.linear)
+        same = back.values == image.rgb;
+    else
+        for (std::size_t i = 0; i < bytes.size() && same; ++i)
+            same = std::lround(back.values[i] * 255.0f) == bytes[i];
+    if (!same) throw std::runtime_error("it reads back different from what was written");
 }
 
 }  // namespace
 
+const ImageFormat& check_image_name(const fs::path& path) {
+    const ImageFormat* format = image_format_for(path);
+    if (!format)
+        throw std::runtime_error(path.string() + ": no image format for this name (hexant writes " +
+                                 image_format_extensions() + ")");
+    return *format;
+}
+
+void check_animation_name(const fs::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (ext != ".gif") throw std::runtime_error(path.string() + ": an animation is written as .gif");
+}
+
 void write_image(const Image& image, const fs::path& path) {
-    auto out = OIIO::ImageOutput::create(path.string());
-    if (!out)
-        throw std::runtime_error(path.string() + ": no image format for this name (" +
-                                 OIIO::geterror() + ")");
+    const ImageFormat* format = &check_image_name(path);
     TemporaryFile temporary(path);
-    const bool linear = is_float_format(path);
-    const OIIO::TypeDesc type = linear ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8;
-    OIIO::ImageSpec spec(image.width, image.height, 3, type);
-    spec.attribute("oiio:ColorSpace", linear ? "Linear" : "sRGB");
-    if (!out->open(temporary.name().string(), spec))
-        throw std::runtime_error(path.string() + ": cannot write: " + out->geterror());
     std::vector<unsigned char> bytes;
-    const void* data = nullptr;
-    std::size_t size = 0;
-    if (linear) {
-        data = image.rgb.data();
-        size = image.rgb.size() * sizeof(float);
-    } else {
-        bytes = srgb_pixels(image);
-        data = bytes.data();
-        size = bytes.size();
+    if (!format->linear) bytes = srgb_pixels(image);
+    try {
+        format->write(temporary.name(), image.width, image.height,
+                      format->linear ? static_cast<const void*>(image.rgb.data()) : bytes.data());
+        check_reads_back(*format, temporary.name(), image, bytes);
+    } catch (const std::runtime_error& e) {
+        throw std::runtime_error(path.string() + ": writing failed (" + e.what() + ")");
     }
-    bool ok = out->write_image(type, data);
-    ok = out->close() && ok;
-    if (!ok) throw std::runtime_error(path.string() + ": writing failed: " + out->geterror());
-    // Half-precision formats (.hdr) do not give back the floats written.
-    const bool exact = !linear || path.extension() == ".exr" || path.extension() == ".EXR";
-    std::string reason;
-    if (!reads_back(temporary.name(), image.width, image.height, 1, type, exact ? data : nullptr,
-                    size, reason))
-        throw std::runtime_error(path.string() + ": writing failed (" + reason + ")");
     temporary.commit();
 }
 
@@ -147,35 +118,24 @@ Image contact_sheet(const std::vector<Image>& frames, int columns) {
 }
 
 void write_animation(const std::vector<Image>& frames, const fs::path& path, double fps) {
+    check_animation_name(path);
     if (frames.empty()) return;
-    auto out = OIIO::ImageOutput::create(path.string());
-    if (!out || !out->supports("multiimage"))
-        throw std::runtime_error(path.string() + ": this format cannot hold an animation");
-    TemporaryFile temporary(path);
-    std::vector<OIIO::ImageSpec> specs;
+    const int width = frames.front().width, height = frames.front().height;
+    std::vector<std::vector<unsigned char>> pixels;
     for (const Image& f : frames) {
-        OIIO::ImageSpec spec(f.width, f.height, 3, OIIO::TypeDesc::UINT8);
-        spec.attribute("FramesPerSecond", OIIO::TypeDesc::TypeRational,
-                       std::vector<int>{int(std::lround(fps)), 1}.data());
-        spec.attribute("oiio:LoopCount", 0);
-        specs.push_back(spec);
+        if (f.width != width || f.height != height)
+            throw std::runtime_error(path.string() + ": the frames differ in size");
+        pixels.push_back(srgb_pixels(f));
     }
-    if (!out->open(temporary.name().string(), int(specs.size()), specs.data()))
-        throw std::runtime_error(path.string() + ": cannot write: " + out->geterror());
-    bool ok = true;
-    for (std::size_t i = 0; i < frames.size() && ok; ++i) {
-        if (i > 0)
-            ok = out->open(temporary.name().string(), specs[i], OIIO::ImageOutput::AppendSubimage);
-        const auto pixels = srgb_pixels(frames[i]);
-        ok = ok && out->write_image(OIIO::TypeDesc::UINT8, pixels.data());
+    TemporaryFile temporary(path);
+    try {
+        write_gif_animation(temporary.name(), width, height, pixels, fps);
+        // Its colours are quantized: read back whole, not compared.
+        if (count_gif_frames(temporary.name(), width, height) != int(frames.size()))
+            throw std::runtime_error("frames are missing when it is read back");
+    } catch (const std::runtime_error& e) {
+        throw std::runtime_error(path.string() + ": writing failed (" + e.what() + ")");
     }
-    ok = out->close() && ok;
-    if (!ok) throw std::runtime_error(path.string() + ": writing failed: " + out->geterror());
-    // Its colours are quantized (GIF): read back whole, not compared.
-    std::string reason;
-    if (!reads_back(temporary.name(), frames.front().width, frames.front().height,
-                    int(frames.size()), OIIO::TypeDesc::UINT8, nullptr, 0, reason))
-        throw std::runtime_error(path.string() + ": writing failed (" + reason + ")");
     temporary.commit();
 }
 

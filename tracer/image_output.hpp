@@ -1,5 +1,5 @@
-// Frames to files through OpenImageIO: PNG (and other 8-bit formats) in
-// sRGB, EXR as linear float. Every file is written under a temporary name in
+// Frames to files: PNG in 8-bit sRGB, EXR as linear float (image_format.hpp),
+// animations as GIF. Every file is written under a temporary name in
 // its folder and renamed when complete, so a reader never sees half a frame
 // and an interrupted run leaves the finished frames as they were.
 #pragma once
@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "tracer/image.hpp"
+#include "tracer/image_format.hpp"
 
 namespace hexant::tracer {
 
@@ -17,7 +18,15 @@ namespace hexant::tracer {
 // a pattern without '#' is returned as it is.
 std::string frame_path(const std::string& pattern, int frame);
 
-// Throws std::runtime_error naming the file on failure.
+// The format a frame's name asks for (its extension); throws
+// std::runtime_error naming the file when there is none, so that a command
+// can refuse a name before it renders anything.
+const ImageFormat& check_image_name(const std::filesystem::path& path);
+// Throws std::runtime_error naming the file unless it is a .gif.
+void check_animation_name(const std::filesystem::path& path);
+
+// The format is the name's extension (image_format_for). Throws
+// std::runtime_error naming the file on failure, or for a name of no format.
 void write_image(const Image& image, const std::filesystem::path& path);
 
 // The frames as a grid read like a book: left to right, top to bottom;
@@ -25,7 +34,8 @@ void write_image(const Image& image, const std::filesystem::path& path);
 // by 4), else the smallest square grid.
 Image contact_sheet(const std::vector<Image>& frames, int columns = 0);
 
-// An animated file (GIF) of the frames at `fps`.
+// An animated GIF of the frames at `fps`; throws std::runtime_error naming
+// the file for another name, frames of different sizes, or a failed write.
 void write_animation(const std::vector<Image>& frames, const std::filesystem::path& path,
                      double fps = 24.0);
 

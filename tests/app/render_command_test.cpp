@@ -119,6 +119,17 @@ TEST_CASE("render reports bad requests clearly and writes nothing", "[app][rende
     e.str("");
     CHECK(run_render(a, o, e) != 0);
     CHECK(e.str().find("fast") != std::string::npos);
+    // A name of no image format is refused before the first frame.
+    a = arguments_for(scene, out);
+    a.output = (out / "f_##.tif").string();
+    e.str("");
+    CHECK(run_render(a, o, e) != 0);
+    CHECK(e.str().find("f_##.tif: no image format") != std::string::npos);
+    a = arguments_for(scene, out);
+    a.animation = (out / "movie.mp4").string();
+    e.str("");
+    CHECK(run_render(a, o, e) != 0);
+    CHECK(e.str().find("movie.mp4: an animation is written as .gif") != std::string::npos);
     // A scene error names its place.
     const fs::path broken = scene_file("sphere { 0, 1 \n");
     a = arguments_for(broken, out);

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include <OpenImageIO/imageio.h>
+#include "tracer/image_format.hpp"
 
 namespace {
 
@@ -23,13 +23,11 @@ struct Pixels {
 };
 
 Pixels read_png(const fs::path& path) {
-    auto in = OIIO::ImageInput::open(path.string());
-    REQUIRE(in);
-    const OIIO::ImageSpec& spec = in->spec();
-    Pixels p{spec.width, spec.height,
-             std::vector<unsigned char>(std::size_t(spec.width) * spec.height * 3)};
-    REQUIRE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, p.rgb.data()));
-    in->close();
+    const hexant::tracer::StoredImage in = hexant::tracer::read_stored_image(path);
+    REQUIRE(in.channels == 3);
+    Pixels p{in.width, in.height, std::vector<unsigned char>(in.values.size())};
+    for (std::size_t i = 0; i < in.values.size(); ++i)
+        p.rgb[i] = static_cast<unsigned char>(std::lround(in.values[i] * 255.0f));
     return p;
 }
 

@@ -62,7 +62,7 @@ TEST_CASE("a write that cannot finish fails with its reason and leaves nothing",
     fs::remove_all(folder);
     fs::create_directories(folder);
     const tr::Image image = noise(256);
-    for (const char* name : {"frame.png", "frame.exr", "frame.tif"}) {
+    for (const char* name : {"frame.png", "frame.exr"}) {
         INFO(name);
         {
             const FileSizeLimit limit(16 * 1024);

@@ -1,0 +1,63 @@
+#include "tracer/image_format.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <stdexcept>
+
+#include "tracer/image_formats/exr_format.hpp"
+#include "tracer/image_formats/png_format.hpp"
+
+namespace hexant::tracer {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// The registration: a new format is its own file and one line here.
+constexpr std::array<const ImageFormat*, 2> kFormats{&kPngFormat, &kExrFormat};
+
+}  // namespace
+
+const ImageFormat* image_format_for(const fs::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    for (const ImageFormat* format : kFormats)
+        if (ext == format->extension) return format;
+    return nullptr;
+}
+
+std::string image_format_extensions() {
+    std::string names;
+    for (const ImageFormat* format : kFormats)
+        names += (names.empty() ? "" : ", ") + std::string(format->extension);
+    return names;
+}
+
+StoredImage read_stored_image(const fs::path& path) {
+    std::array<unsigned char, 8> head{};
+    std::size_t got = 0;
+    {
+        std::ifstream in(path, std::ios::binary);
+        if (!in)
+            throw std::runtime_error(path.string() + ": cannot read image: " + std::strerror(errno));
+        in.read(reinterpret_cast<char*>(head.data()), head.size());
+        got = static_cast<std::size_t>(in.gcount());
+    }
+    for (const ImageFormat* format : kFormats)
+        if (format->recognizes(head.data(), got)) {
+            try {
+                return format->read(path);
+            } catch (const std::runtime_error& e) {
+                throw std::runtime_error(path.string() + ": cannot read " + format->name +
+                                         " image: " + e.what());
+            }
+        }
+    throw std::runtime_error(path.string() + ": cannot read image: not a " +
+                             image_format_extensions() + " file");
+}
+
+}  // namespace hexant::tracer

@@ -1,0 +1,50 @@
+// Image files as hexant reads and writes them, one format per file under
+// image_formats/ and one line in image_format.cpp's table: PNG (8-bit sRGB,
+// libpng) and OpenEXR (linear float, the OpenEXR library). Each is linked
+// directly rather than through OpenImageIO, whose plugins and their
+// libraries cost every process about 120 MB of resident memory and half a
+// second before main() (README "Scale", issue 21).
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace hexant::tracer {
+
+// An image as its file holds it, channel values interleaved, rows top to
+// bottom: `linear` values are linear light (EXR); otherwise they are the
+// file's encoding scaled to [0, 1] (an 8-bit PNG's byte / 255, sRGB).
+// `channels` is 3 (RGB) or 4 (RGBA; gray and palette files are expanded).
+struct StoredImage {
+    int width = 0, height = 0, channels = 0;
+    bool linear = false;
+    std::vector<float> values;
+};
+
+// One file format. `write` writes `width` x `height` RGB pixels: bytes in
+// sRGB for an 8-bit format, floats in linear light for a `linear` one; both
+// throw std::runtime_error with the reason (not the path: the caller names
+// the file it meant, not the temporary it wrote).
+struct ImageFormat {
+    const char* name;       // "PNG"
+    const char* extension;  // ".png", lower case
+    bool linear;            // stores linear float
+    void (*write)(const std::filesystem::path& file, int width, int height, const void* pixels);
+    StoredImage (*read)(const std::filesystem::path& file);
+    bool (*recognizes)(const unsigned char* head, std::size_t bytes);  // the file's magic
+};
+
+// The format a file name asks for, by its extension (any case); nullptr for
+// an unknown one.
+const ImageFormat* image_format_for(const std::filesystem::path& path);
+
+// The extensions hexant writes, for messages: ".png, .exr".
+std::string image_format_extensions();
+
+// Reads an image, its format told by its first bytes (not its name); throws
+// std::runtime_error naming the file when it cannot be opened, is of no
+// format hexant reads, or is damaged.
+StoredImage read_stored_image(const std::filesystem::path& path);
+
+}  // namespace hexant::tracer

@@ -1,0 +1,111 @@
+#include "tracer/image_formats/png_format.hpp"
+
+#include <png.h>
+
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+namespace hexant::tracer {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Larger images are refused before memory is taken for them (hexant's own
+// --max-pixels is 10^8).
+constexpr png_uint_32 kMaxSide = 1u << 20;
+constexpr std::size_t kMaxPixels = std::size_t(1) << 30;
+
+void write_png(const fs::path& file, int width, int height, const void* pixels) {
+    png_image image;
+    std::memset(&image, 0, sizeof image);
+    image.version = PNG_IMAGE_VERSION;
+    image.width = static_cast<png_uint_32>(width);
+    image.height = static_cast<png_uint_32>(height);
+    image.format = PNG_FORMAT_RGB;  // 8-bit, sRGB
+    // The simplified API checks fflush, ferror and fclose: a full disk is
+    // an error here, not a short file.
+    const int ok = png_image_write_to_file(&image, file.c_str(), 0, pixels, 0, nullptr);
+    const std::string message = image.message;
+    png_image_free(&image);
+    if (!ok) throw std::runtime_error(message.empty() ? "libpng failed" : message);
+}
+
+// libpng reports an error by longjmp to the reader's setjmp; its message is
+// kept first.
+void on_error(png_structp png, png_const_charp message) {
+    *static_cast<std::string*>(png_get_error_ptr(png)) = message;
+    png_longjmp(png, 1);
+}
+void on_warning(png_structp, png_const_charp) {}
+
+struct Reader {
+    png_structp png = nullptr;
+    png_infop info = nullptr;
+    ~Reader() { png_destroy_read_struct(&png, info ? &info : nullptr, nullptr); }
+};
+
+// Everything libpng may leave by longjmp is in here, with no object of this
+// frame that has a destructor or changes after setjmp: what it fills lives
+// in the caller.
+bool read_rows(std::FILE* file, const Reader& r, std::vector<unsigned char>& bytes,
+               std::vector<png_bytep>& rows, StoredImage& out, int& depth) {
+    if (setjmp(png_jmpbuf(r.png))) return false;
+    png_init_io(r.png, file);
+    png_set_user_limits(r.png, kMaxSide, kMaxSide);
+    png_read_info(r.png, r.info);
+    png_set_expand(r.png);       // palette to RGB, low-bit gray to 8 bits, tRNS to alpha
+    png_set_gray_to_rgb(r.png);  // gray as RGB, so every image has 3 or 4 channels
+    png_read_update_info(r.png, r.info);
+    out.width = static_cast<int>(png_get_image_width(r.png, r.info));
+    out.height = static_cast<int>(png_get_image_height(r.png, r.info));
+    out.channels = png_get_channels(r.png, r.info);
+    depth = png_get_bit_depth(r.png, r.info);
+    if (std::size_t(out.width) * std::size_t(out.height) > kMaxPixels)
+        png_error(r.png, "image too large");
+    const std::size_t row_bytes = png_get_rowbytes(r.png, r.info);
+    bytes.resize(row_bytes * std::size_t(out.height));
+    rows.resize(std::size_t(out.height));
+    for (std::size_t y = 0; y < rows.size(); ++y) rows[y] = bytes.data() + y * row_bytes;
+    png_read_image(r.png, rows.data());
+    png_read_end(r.png, nullptr);
+    return true;
+}
+
+StoredImage read_png(const fs::path& file) {
+    const std::unique_ptr<std::FILE, int (*)(std::FILE*)> stream(std::fopen(file.c_str(), "rb"),
+                                                                 &std::fclose);
+    if (!stream) throw std::runtime_error(std::strerror(errno));
+    std::string message;
+    Reader r;
+    r.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &message, on_error, on_warning);
+    if (r.png) r.info = png_create_info_struct(r.png);
+    if (!r.info) throw std::runtime_error("libpng cannot start");
+    std::vector<unsigned char> bytes;
+    std::vector<png_bytep> rows;
+    StoredImage out;
+    int depth = 8;
+    if (!read_rows(stream.get(), r, bytes, rows, out, depth)) throw std::runtime_error(message);
+    out.linear = false;
+    out.values.resize(std::size_t(out.width) * std::size_t(out.height) * std::size_t(out.channels));
+    if (depth == 16)  // big-endian samples
+        for (std::size_t i = 0; i < out.values.size(); ++i)
+            out.values[i] = float((unsigned(bytes[2 * i]) << 8 | bytes[2 * i + 1]) / 65535.0);
+    else
+        for (std::size_t i = 0; i < out.values.size(); ++i)
+            out.values[i] = float(bytes[i] / 255.0);
+    return out;
+}
+
+bool is_png(const unsigned char* head, std::size_t bytes) {
+    return bytes >= 8 && png_sig_cmp(head, 0, 8) == 0;
+}
+
+}  // namespace
+
+const ImageFormat kPngFormat{"PNG", ".png", false, write_png, read_png, is_png};
+
+}  // namespace hexant::tracer

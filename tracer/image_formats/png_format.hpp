@@ -1,0 +1,12 @@
+// PNG through libpng: written as 8-bit sRGB RGB (with its sRGB chunk), read
+// in any of PNG's colour types and depths (palette and gray expanded to
+// RGB, 16-bit kept exact).
+#pragma once
+
+#include "tracer/image_format.hpp"
+
+namespace hexant::tracer {
+
+extern const ImageFormat kPngFormat;
+
+}  // namespace hexant::tracer
