@@ -160,9 +160,10 @@ double peak_resident_mb() {
 }
 
 // One full render in one mode; frames go to files as they finish.
-// With last_use, the scene's object records are freed once the renderer
-// has made its intelligent objects of them (about 2 KB a parsed object: a
-// scene of 10^5 spheres renders in 200 MB less).
+// With last_use, each of the scene's object records is freed as soon as the
+// renderer has made its intelligent objects of it (about 2 KB a parsed
+// object, as much as the object: records and objects are never all held
+// at once).
 Counters render_mode(runtime::SceneDescription& scene, const RenderArguments& args,
                      tracer::Mode mode, const std::string& pattern,
                      const std::vector<int>& frames, bool write,
@@ -182,12 +183,9 @@ Counters render_mode(runtime::SceneDescription& scene, const RenderArguments& ar
     const std::string size =
         std::to_string(scene.animation.width) + " by " + std::to_string(scene.animation.height);
     tracer::Renderer renderer = naming_out_of_memory("setting up the render", [&] {
-        return tracer::Renderer(scene, settings);
+        return last_use ? tracer::Renderer(scene, settings, tracer::Renderer::ReleaseRecords{})
+                        : tracer::Renderer(scene, settings);
     });
-    if (last_use) {
-        scene.objects.clear();
-        scene.objects.shrink_to_fit();
-    }
     for (const int frame : frames) {
         tracer::Image image = naming_out_of_memory(
             "rendering frame " + std::to_string(frame) + " (" + size + " pixels)",

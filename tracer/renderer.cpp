@@ -63,6 +63,14 @@ Box4 animation_root(const runtime::SceneDescription& scene, const ObjectSet& obj
 }  // namespace
 
 Renderer::Renderer(const runtime::SceneDescription& scene, const RenderSettings& settings)
+    : Renderer(scene, settings, nullptr) {}
+
+Renderer::Renderer(runtime::SceneDescription& scene, const RenderSettings& settings,
+                   ReleaseRecords)
+    : Renderer(scene, settings, &scene.objects) {}
+
+Renderer::Renderer(const runtime::SceneDescription& scene, const RenderSettings& settings,
+                   Records* release)
     : scene_(scene), settings_(settings),
       first_frame_(settings.first_frame > 0 ? settings.first_frame : scene.animation.initial_frame),
       last_frame_(settings.last_frame > 0 ? settings.last_frame : scene.animation.final_frame) {
@@ -70,8 +78,19 @@ Renderer::Renderer(const runtime::SceneDescription& scene, const RenderSettings&
         first_frame_ > last_frame_)
         throw std::out_of_range("frames " + std::to_string(first_frame_) + " to " +
                                 std::to_string(last_frame_) + " are not all in the animation");
-    for (const auto& record : scene.objects)
-        runtime::make_intelligent_objects(*record, scene.default_texture, objects_);
+    if (release) {
+        // Each record goes as soon as its objects are made: the heap it
+        // leaves is what the next objects reuse.
+        for (auto& record : *release) {
+            runtime::make_intelligent_objects(*record, scene.default_texture, objects_);
+            record.reset();
+        }
+        release->clear();
+        release->shrink_to_fit();
+    } else {
+        for (const auto& record : scene.objects)
+            runtime::make_intelligent_objects(*record, scene.default_texture, objects_);
+    }
     counters_.objects = objects_.size();
     const ObjectSet set = ObjectSet::of(objects_);
     const std::uint64_t maps = runtime::this_thread_work.deformation_maps;

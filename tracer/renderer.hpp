@@ -41,6 +41,12 @@ public:
     // Builds the objects (the scene's records into intelligent objects) and,
     // in spacetime mode, the one hierarchy over the whole animation.
     Renderer(const runtime::SceneDescription& scene, const RenderSettings& settings);
+    // The same, letting go of each object record (scene.objects ends empty)
+    // as soon as its intelligent objects are made, so that the records and
+    // the objects are never all held at once: a parsed sphere's record is
+    // about 2 KB, its intelligent object about as much.
+    struct ReleaseRecords {};
+    Renderer(runtime::SceneDescription& scene, const RenderSettings& settings, ReleaseRecords);
     ~Renderer();
 
     // Frame numbers as the animation counts them (initial_frame ..), within
@@ -56,6 +62,10 @@ public:
     const runtime::Box4& root() const { return root_; }
 
 private:
+    using Records = std::vector<std::shared_ptr<const runtime::ObjectRecord>>;
+    Renderer(const runtime::SceneDescription& scene, const RenderSettings& settings,
+             Records* release);
+
     const runtime::SceneDescription& scene_;
     RenderSettings settings_;
     std::vector<runtime::IntelligentObjectPtr> objects_;
