@@ -51,7 +51,7 @@ TEST_CASE("an .ini file sets POV-Ray's animation options and names the scene", "
     CHECK(r.warnings[0].find("anim.ini:12") != std::string::npos);
 }
 
-TEST_CASE(".ini switches and later files override earlier ones; flags override all", "[app][ini]") {
+TEST_CASE(".ini switches and later files override earlier ones, flags override all", "[app][ini]") {
     const auto first = write("first.ini", "+W100\n+H50\n+KFI1\n+KFF10\n+KI0\n+KF1\n");
     const auto second = write("second.ini", "Width=200\n-KC\n");
     hexant::app::SceneArguments arguments;

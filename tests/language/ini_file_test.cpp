@@ -49,7 +49,7 @@ TEST_CASE("ini: keys in any case, comments, blanks and quotes", "[language][ini]
     CHECK(s.warnings.empty());
 }
 
-TEST_CASE("ini: an option not given stays empty; the last of one given twice wins", "[language][ini]") {
+TEST_CASE("ini: an option not given stays empty, the last of one given twice wins", "[language][ini]") {
     const auto s = parse("Width=10\nWidth=20\n");
     CHECK(s.width == 20);
     CHECK_FALSE(s.height);
@@ -159,7 +159,7 @@ TEST_CASE("ini: settings replace what they set, and paths and declarations appen
     CHECK(scene == fs::path("folder") / "other.pov");
 }
 
-TEST_CASE("ini: a file on disk; relative paths from its folder", "[language][ini]") {
+TEST_CASE("ini: a file on disk, relative paths from its folder", "[language][ini]") {
     const fs::path folder = fs::temp_directory_path() / "hexant_ini_file_test";
     fs::create_directories(folder);
     const fs::path file = folder / "anim.ini";

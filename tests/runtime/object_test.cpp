@@ -23,7 +23,7 @@ std::shared_ptr<rt::ObjectRecord> object(rt::Shape shape) {
 
 }  // namespace
 
-TEST_CASE("shape names are POV-Ray's keywords; a CSG is named by its kind", "[runtime][object]") {
+TEST_CASE("shape names are POV-Ray's keywords, a CSG is named by its kind", "[runtime][object]") {
     CHECK(std::string(rt::shape_name(rt::Sphere{})) == "sphere");
     CHECK(std::string(rt::shape_name(rt::SmoothTriangle{})) == "smooth_triangle");
     CHECK(std::string(rt::shape_name(rt::Prism{})) == "prism");

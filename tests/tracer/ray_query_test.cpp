@@ -214,7 +214,7 @@ TEST_CASE("each object is tested at most once per ray however many cells hold it
     CHECK(state.counters.mailbox_hits > 0);
 }
 
-TEST_CASE("a static scene builds no time splits; a moving one does", "[tracer]") {
+TEST_CASE("a static scene builds no time splits, a moving one does", "[tracer]") {
     const auto counts = [](const std::string& sdl, tr::Criterion criterion) {
         const Parsed parsed = parse(sdl);
         const auto set = tr::ObjectSet::of(parsed.objects);
@@ -225,21 +225,27 @@ TEST_CASE("a static scene builds no time splits; a moving one does", "[tracer]")
         tr::make_ray_query(tr::Mode::Spacetime, set, root_box(set), options, counters);
         return counters;
     };
-    // Enough objects that separating them pays under either criterion.
+    // Enough objects that separating them pays under either criterion. They
+    // turn (a translation is followed exactly by linear-motion bounds, so
+    // the cost criterion rightly cuts no time for it).
     std::string still, moving;
     for (int i = 0; i < 40; ++i) {
         char line[160];
         std::snprintf(line, sizeof line, "sphere { <%d, %d, %d>, 0.3 }\n", i % 8, i / 8, i % 3);
         still += line;
         std::snprintf(line, sizeof line,
-                      "sphere { <%d, %d, %d>, 0.3 translate <8 * clock, 0, 0> }\n", i % 8, i / 8,
-                      i % 3);
+                      "sphere { <%d, %d, %d>, 0.3 translate <8, 0, 0> rotate y * 360 * clock }\n",
+                      i % 8, i / 8, i % 3);
         moving += line;
     }
     for (const auto criterion : {tr::Criterion::Cost, tr::Criterion::Paper}) {
         INFO("criterion " << int(criterion));
         const tr::Counters s = counts(still, criterion), m = counts(moving, criterion);
-        CHECK(s.cells > 1);  // it does subdivide space
+        // The paper's criterion subdivides space; the cost criterion may
+        // keep 40 objects in one cell, whose leaf is an eight-wide SAH
+        // hierarchy over them.
+        if (criterion == tr::Criterion::Paper) CHECK(s.cells > 1);
+        CHECK(s.object_refs >= 40);
         CHECK(s.time_splits == 0);
         CHECK(m.time_splits > 0);
     }

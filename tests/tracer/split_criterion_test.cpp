@@ -43,7 +43,7 @@ tr::CostSummary summary(std::size_t n, double each, double octant_share = 1.0 / 
 
 }  // namespace
 
-TEST_CASE("the paper's criterion: count, then density; time only where something moves",
+TEST_CASE("the paper's criterion: count, then density, time only where something moves",
           "[tracer][split]") {
     tr::PaperSummary s;
     s.objects = 4;
