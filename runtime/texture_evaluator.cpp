@@ -1,6 +1,9 @@
 #include "runtime/texture_evaluator.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <map>
+#include <mutex>
 
 #include "runtime/object_error.hpp"
 
@@ -22,17 +25,52 @@ TextureEvaluator::CompiledColour TextureEvaluator::compile(const ColourFunction&
     return out;
 }
 
+std::shared_ptr<const TextureEvaluator::CompiledFinish> TextureEvaluator::compile(
+    const Finish& f, const std::optional<Interior>& interior) {
+    const auto make = [&] {
+        return std::make_shared<const CompiledFinish>(CompiledFinish{
+            CompiledScalar(f.ambient), CompiledScalar(f.diffuse), CompiledScalar(f.brilliance),
+            CompiledScalar(f.phong), CompiledScalar(f.phong_size), CompiledScalar(f.specular),
+            CompiledScalar(f.roughness), CompiledScalar(f.emission),
+            interior ? CompiledScalar(interior->ior) : CompiledScalar(1.0),
+            {CompiledScalar(f.reflection.c[0]), CompiledScalar(f.reflection.c[1]),
+             CompiledScalar(f.reflection.c[2])}});
+    };
+    using Key = std::array<double, 12>;
+    Key key{};
+    std::size_t n = 0;
+    for (const TimeFunction* value :
+         {&f.ambient, &f.diffuse, &f.brilliance, &f.phong, &f.phong_size, &f.specular,
+          &f.roughness, &f.emission, &f.reflection.c[0], &f.reflection.c[1], &f.reflection.c[2]}) {
+        if (!value->is_constant()) return make();
+        key[n++] = value->constant();
+    }
+    if (interior && !interior->ior.is_constant()) return make();
+    key[n] = interior ? interior->ior.constant() : 1.0;
+    // Finishes of constants, shared while some texture holds them. Objects
+    // are made on several threads at once in tests, so the table is locked
+    // (once per object, while the scene is being set up).
+    static std::mutex mutex;
+    static std::map<Key, std::weak_ptr<const CompiledFinish>> shared;
+    const std::lock_guard lock(mutex);
+    auto& slot = shared[key];
+    if (auto kept = slot.lock()) return kept;
+    static std::size_t prune_at = 64;
+    if (shared.size() > prune_at) {  // forget finishes no texture holds any more
+        std::erase_if(shared, [](const auto& entry) { return entry.second.expired(); });
+        prune_at = std::max<std::size_t>(64, 2 * shared.size());  // amortized: linear in all
+    }
+    auto made = make();
+    shared[key] = made;
+    return made;
+}
+
 TextureEvaluator::TextureEvaluator(const Texture& texture, const std::optional<Interior>& interior)
     : pattern_(texture.pigment.pattern),
-      // Only a pattern reads its placement: a plain colour keeps none (a
-      // moving object's motion compiled again is most of a kilobyte).
-      pattern_to_world_(pattern_ == Pigment::Pattern::Checker ? Motion(pattern_transform(texture))
-                                                              : Motion()),
-      ambient_(texture.finish.ambient), diffuse_(texture.finish.diffuse),
-      brilliance_(texture.finish.brilliance), phong_(texture.finish.phong),
-      phong_size_(texture.finish.phong_size), specular_(texture.finish.specular),
-      roughness_(texture.finish.roughness), emission_(texture.finish.emission),
-      ior_(interior ? CompiledScalar(interior->ior) : CompiledScalar(1.0)) {
+      pattern_to_world_(pattern_ == Pigment::Pattern::Checker
+                            ? std::make_shared<const Motion>(pattern_transform(texture))
+                            : nullptr),
+      finish_(compile(texture.finish, interior)) {
     if (pattern_ == Pigment::Pattern::Unsupported)
         throw ObjectError(texture.pigment.unsupported_place,
                           "pigment pattern '" + texture.pigment.unsupported_name +
@@ -44,7 +82,6 @@ TextureEvaluator::TextureEvaluator(const Texture& texture, const std::optional<I
         colours_.push_back(compile(colour));
         depends_on_time_ = depends_on_time_ || colour.depends_on_time();
     }
-    for (int i = 0; i < 3; ++i) reflection_[i] = CompiledScalar(texture.finish.reflection.c[i]);
     const Finish& f = texture.finish;
     for (const TimeFunction* value :
          {&f.ambient, &f.diffuse, &f.brilliance, &f.phong, &f.phong_size, &f.specular,
@@ -52,7 +89,7 @@ TextureEvaluator::TextureEvaluator(const Texture& texture, const std::optional<I
         depends_on_time_ = depends_on_time_ || value->depends_on_time();
     if (interior) depends_on_time_ = depends_on_time_ || interior->ior.depends_on_time();
     if (pattern_ == Pigment::Pattern::Checker)
-        depends_on_time_ = depends_on_time_ || !pattern_to_world_.is_static();
+        depends_on_time_ = depends_on_time_ || !pattern_to_world_->is_static();
 }
 
 int checker_index(const glm::dvec3& p) {
@@ -73,7 +110,7 @@ int checker_index(const glm::dvec3& p) {
 MaterialSample TextureEvaluator::at(const glm::dvec3& world_point, double t) const {
     std::size_t which = 0;
     if (pattern_ == Pigment::Pattern::Checker) {
-        const auto p = pattern_to_world_.to_object<double>({world_point.x, world_point.y,
+        const auto p = pattern_to_world_->to_object<double>({world_point.x, world_point.y,
                                                             world_point.z}, t);
         which = static_cast<std::size_t>(checker_index({p[0], p[1], p[2]}));
     }
@@ -82,16 +119,17 @@ MaterialSample TextureEvaluator::at(const glm::dvec3& world_point, double t) con
     m.colour = {colour.c[0].at(t), colour.c[1].at(t), colour.c[2].at(t)};
     m.filter = colour.c[3].at(t);
     m.transmit = colour.c[4].at(t);
-    m.ambient = ambient_.at(t);
-    m.diffuse = diffuse_.at(t);
-    m.brilliance = brilliance_.at(t);
-    m.phong = phong_.at(t);
-    m.phong_size = phong_size_.at(t);
-    m.specular = specular_.at(t);
-    m.roughness = roughness_.at(t);
-    m.reflection = {reflection_[0].at(t), reflection_[1].at(t), reflection_[2].at(t)};
-    m.emission = emission_.at(t);
-    m.ior = ior_.at(t);
+    const CompiledFinish& f = *finish_;
+    m.ambient = f.ambient.at(t);
+    m.diffuse = f.diffuse.at(t);
+    m.brilliance = f.brilliance.at(t);
+    m.phong = f.phong.at(t);
+    m.phong_size = f.phong_size.at(t);
+    m.specular = f.specular.at(t);
+    m.roughness = f.roughness.at(t);
+    m.reflection = {f.reflection[0].at(t), f.reflection[1].at(t), f.reflection[2].at(t)};
+    m.emission = f.emission.at(t);
+    m.ior = f.ior.at(t);
     return m;
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -32,13 +33,24 @@ private:
     };
     static CompiledColour compile(const ColourFunction& colour);
 
+    // The finish and the interior's ior. A finish of constants is shared by
+    // every texture that has the same numbers (a scene of 10^5 spheres
+    // that differ in colour keeps one), so an object pays a pointer for it.
+    struct CompiledFinish {
+        CompiledScalar ambient, diffuse, brilliance, phong, phong_size, specular, roughness,
+            emission, ior;
+        std::array<CompiledScalar, 3> reflection;
+    };
+    static std::shared_ptr<const CompiledFinish> compile(const Finish& finish,
+                                                         const std::optional<Interior>& interior);
+
     Pigment::Pattern pattern_;
-    std::vector<CompiledColour> colours_;
-    Motion pattern_to_world_;  // the pigment's transform, then the texture's
-    CompiledScalar ambient_, diffuse_, brilliance_, phong_, phong_size_, specular_, roughness_,
-        emission_, ior_;
-    std::array<CompiledScalar, 3> reflection_;
     bool depends_on_time_ = false;
+    std::vector<CompiledColour> colours_;
+    // The pigment's transform, then the texture's: only a pattern reads
+    // its placement; a plain colour keeps none.
+    std::shared_ptr<const Motion> pattern_to_world_;
+    std::shared_ptr<const CompiledFinish> finish_;
 };
 
 // POV-Ray's checker: which of the two colours a pattern point takes, by the
