@@ -193,9 +193,10 @@ private:
 
     // Object i over 2^k equal pieces of the cell's time, clipped to it.
     TimeBins object_bins(std::uint32_t i, const Box4& region, const CellTime& time, int k) const {
-        TimeBins bins;
-        bins.count = 1 << k;
-        object_pieces(i, region, time, k, bins.bin.data());
+        std::array<Box4, kMaxBins> pieces;
+        object_pieces(i, region, time, k, pieces.data());
+        TimeBins bins = TimeBins::empty(1 << k);
+        for (int p = 0; p < bins.count; ++p) bins.bin[p] = BinBox::of(pieces[p]);
         return bins;
     }
 
@@ -287,7 +288,7 @@ private:
                 if (k == fits && linear && fits > 0) {
                     TimeBins bins;
                     bins.count = int(count);
-                    for (std::size_t p = 0; p < count; ++p) bins.bin[p] = pieces[p];
+                    for (std::size_t p = 0; p < count; ++p) bins.bin[p] = BinBox::of(pieces[p]);
                     fit_share = fit_linear(bins).mean_area() * weight;
                 }
                 if (k == halves) {
@@ -459,7 +460,7 @@ private:
             for (int o = 0; o < 8; ++o) {
                 bool meets = false;
                 for (int b = 0; b < mine.count; ++b) {
-                    const Box4 part = mine.bin[b].intersection(octants[o]);
+                    const BinBox part = mine.bin[b].clipped(octants[o]);
                     if (part.is_empty()) continue;
                     bins[o].bin[b].extend(part);
                     meets = true;
@@ -516,7 +517,7 @@ private:
         if (children.size() <= std::size_t(kNodeWidth)) return bound_node(arena, time, children, counters);
         std::vector<Item> items(children.size());
         for (std::size_t i = 0; i < children.size(); ++i) {
-            items[i].box = children[i].bins.hull();
+            items[i].box = children[i].bins.hull(time);
             items[i].centre = glm::dvec3(items[i].box.center());
             items[i].index = i;
         }
@@ -661,7 +662,7 @@ private:
                 fits.reserve(children.size());
                 for (const Child& c : children) {
                     fits.push_back(fit_linear(c.bins));
-                    boxes += surface_area(c.bins.hull());
+                    boxes += surface_area(c.bins.hull(time));
                     lines += fits.back().mean_area();
                 }
                 // A motion node tests in about 1.25 times a box node's time.
@@ -681,9 +682,7 @@ private:
     static bool moves_within(const std::vector<Child>& children) {
         for (const Child& c : children)
             for (int b = 1; b < c.bins.count; ++b)
-                if (c.bins.bin[b].lo.x != c.bins.bin[0].lo.x || c.bins.bin[b].hi.x != c.bins.bin[0].hi.x ||
-                    c.bins.bin[b].lo.y != c.bins.bin[0].lo.y || c.bins.bin[b].hi.y != c.bins.bin[0].hi.y ||
-                    c.bins.bin[b].lo.z != c.bins.bin[0].lo.z || c.bins.bin[b].hi.z != c.bins.bin[0].hi.z)
+                if (c.bins.bin[b] != c.bins.bin[0])
                     return true;
         return false;
     }
@@ -697,7 +696,7 @@ private:
             for (int k = 0; k < 3; ++k) fill_empty(node->lo[k], node->hi[k], i);
             if (i >= int(children.size())) continue;
             node->child[i] = children[i].ref;
-            const Box4 hull = children[i].bins.hull();
+            const Box4 hull = children[i].bins.hull(time);
             if (hull.is_empty()) continue;
             for (int k = 0; k < 3; ++k) {
                 node->lo[k][i] = float_down(hull.lo[k]);
@@ -751,7 +750,16 @@ private:
             if (i >= int(children.size())) continue;
             node->child[i] = children[i].ref;
             runtime::SlabBound b = runtime::SlabBound::empty();
-            for (int bin = 0; bin < children[i].bins.count; ++bin) b.add(children[i].bins.bin[bin]);
+            const int n = children[i].bins.count;
+            for (int bin = 0; bin < n; ++bin) {
+                // The bin's piece of the node's time, widened by an ulp each
+                // way: a box claimed over a little more time still holds.
+                const double lo = bin == 0 ? time.lo : time.lo + time.width() * (double(bin) / n);
+                const double hi = bin + 1 == n ? time.hi : time.lo + time.width() * (double(bin + 1) / n);
+                b.add(children[i].bins.bin[bin].box(
+                    Interval(std::nextafter(lo, -std::numeric_limits<double>::infinity()),
+                             std::nextafter(hi, std::numeric_limits<double>::infinity()))));
+            }
             if (b.is_empty()) continue;
             for (int k = 0; k < 3; ++k) {
                 node->lo[k][i] = float_down(b.lo[k]);

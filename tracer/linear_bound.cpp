@@ -1,5 +1,7 @@
 #include "tracer/linear_bound.hpp"
 
+#include "tracer/bound_rounding.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -66,10 +68,38 @@ double surface_area(const runtime::Box4& box) {
     return area_of_extents(e.x, e.y, e.z);
 }
 
+BinBox BinBox::of(const runtime::Box4& box) {
+    BinBox b;
+    if (box.is_empty()) return b;
+    for (int k = 0; k < 3; ++k) {
+        b.lo[k] = float_down(box.lo[k]);
+        b.hi[k] = float_up(box.hi[k]);
+    }
+    return b;
+}
+
+BinBox BinBox::clipped(const runtime::Box4& region) const {
+    BinBox b = *this;
+    for (int k = 0; k < 3; ++k) {
+        b.lo[k] = std::max(lo[k], float_down(region.lo[k]));
+        b.hi[k] = std::min(hi[k], float_up(region.hi[k]));
+    }
+    return b.is_empty() ? BinBox{} : b;
+}
+
+runtime::Box4 BinBox::box(const runtime::Interval& t) const {
+    if (is_empty()) return runtime::Box4::empty();
+    return {runtime::Event(lo[0], lo[1], lo[2], t.lo), runtime::Event(hi[0], hi[1], hi[2], t.hi)};
+}
+
 double TimeBins::mean_area() const {
     if (count == 0) return 0.0;
     double sum = 0.0;
-    for (int i = 0; i < count; ++i) sum += surface_area(bin[i]);
+    for (int i = 0; i < count; ++i)
+        if (!bin[i].is_empty())
+            sum += area_of_extents(double(bin[i].hi[0]) - bin[i].lo[0],
+                                   double(bin[i].hi[1]) - bin[i].lo[1],
+                                   double(bin[i].hi[2]) - bin[i].lo[2]);
     return sum / count;
 }
 
@@ -101,7 +131,7 @@ LinearBox fit_linear(const TimeBins& bins) {
                 double v = std::numeric_limits<double>::infinity();
                 for (const int b : {j - 1, j}) {
                     if (b < 0 || b >= n || bins.bin[b].is_empty()) continue;
-                    v = std::min(v, upper ? -bins.bin[b].hi[k] : bins.bin[b].lo[k]);
+                    v = std::min(v, upper ? -double(bins.bin[b].hi[k]) : double(bins.bin[b].lo[k]));
                 }
                 if (v != std::numeric_limits<double>::infinity())
                     points[count++] = {double(j) / double(n), v};

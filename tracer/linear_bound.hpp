@@ -8,7 +8,9 @@
 // construction. Doubles throughout; bound_rounding.hpp stores the result.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <limits>
 #include <glm/vec3.hpp>
 
 #include "runtime/spacetime.hpp"
@@ -17,16 +19,43 @@ namespace hexant::tracer {
 
 inline constexpr int kMaxBins = 8;
 
-// Boxes over `count` equal pieces of a time range (space parts of Box4s;
-// an empty bin holds nothing then).
+// One bin's box: the space part of a Box4 in single precision, rounded
+// outward (float_down, float_up), so it holds whatever the doubles held.
+// 24 bytes where a Box4 takes 64: a leaf of 10^5 objects, each with eight
+// bins, keeps them in 20 MB instead of 52 while it is built. The nodes
+// store floats anyway; a bin's time is its piece of the node's time.
+struct BinBox {
+    std::array<float, 3> lo{kFloatInf, kFloatInf, kFloatInf};
+    std::array<float, 3> hi{-kFloatInf, -kFloatInf, -kFloatInf};
+
+    static BinBox of(const runtime::Box4& box);  // empty if the box is
+    bool is_empty() const { return !(lo[0] <= hi[0] && lo[1] <= hi[1] && lo[2] <= hi[2]); }
+    void extend(const BinBox& o) {
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = std::min(lo[k], o.lo[k]);
+            hi[k] = std::max(hi[k], o.hi[k]);
+        }
+    }
+    // The part inside the region's space (rounded outward: it may keep a
+    // sliver of the region's float rounding, never lose a point).
+    BinBox clipped(const runtime::Box4& region) const;
+    // Back in doubles, over time t.
+    runtime::Box4 box(const runtime::Interval& t) const;
+    bool operator==(const BinBox&) const = default;
+
+  private:
+    static constexpr float kFloatInf = std::numeric_limits<float>::infinity();
+};
+
+// Boxes over `count` equal pieces of a time range (an empty bin holds
+// nothing then).
 struct TimeBins {
     int count = 0;
-    std::array<runtime::Box4, kMaxBins> bin;
+    std::array<BinBox, kMaxBins> bin;
 
     static TimeBins empty(int count) {
         TimeBins b;
         b.count = count;
-        for (int i = 0; i < count; ++i) b.bin[i] = runtime::Box4::empty();
         return b;
     }
     bool is_empty() const {
@@ -37,11 +66,11 @@ struct TimeBins {
     void add(const TimeBins& o) {
         for (int i = 0; i < count; ++i) bin[i].extend(o.bin[i]);
     }
-    // The box over all bins (space part).
-    runtime::Box4 hull() const {
-        runtime::Box4 h = runtime::Box4::empty();
+    // The box over all bins, over time t (the bins' whole time).
+    runtime::Box4 hull(const runtime::Interval& t) const {
+        BinBox h;
         for (int i = 0; i < count; ++i) h.extend(bin[i]);
-        return h;
+        return h.box(t);
     }
     // The mean over the bins of their boxes' surface areas (0 for empty
     // bins): an estimate of the area a ray at a random instant sees.
