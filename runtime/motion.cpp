@@ -145,8 +145,9 @@ struct MotionEvaluator {
     N value(const Motion::Parameter& p) const {
         return p.slot < 0 ? N(p.constant) : amounts[p.slot];
     }
+    N amount(const Motion::Step& s, int i) const { return value(motion.amount_of(s, i)); }
     std::array<N, 3> vector(const Motion::Step& s) const {
-        return {value(s.p[0]), value(s.p[1]), value(s.p[2])};
+        return {amount(s, 0), amount(s, 1), amount(s, 2)};
     }
 
     // One affine step's map (or its inverse).
@@ -177,7 +178,7 @@ struct MotionEvaluator {
                 // POV-Ray's row i (glm's column i) is the image of axis i;
                 // row 3 the translation.
                 for (int i = 0; i < 4; ++i)
-                    for (int j = 0; j < 3; ++j) m.m[j][i] = value(s.p[i * 3 + j]);
+                    for (int j = 0; j < 3; ++j) m.m[j][i] = amount(s, i * 3 + j);
                 return inverse ? inverse_of(m) : m;
             }
             default: break;
@@ -191,20 +192,22 @@ struct MotionEvaluator {
     // order, so that the interval one encloses the others exactly.
     void compose(const Motion::Stage& stage, AffineMap<N>& m) const {
         if (stage.kind == Motion::StageKind::Fixed) {
-            m = fixed_times(stage.forward, m);
+            m = fixed_times(motion.fixed_of(stage).forward, m);
             return;
         }
-        for (const auto& s : stage.steps) apply_step(s, false, m);
+        for (const auto* s = motion.steps_begin(stage); s != motion.steps_end(stage); ++s)
+            apply_step(*s, false, m);
     }
 
     // A moving stage's map: its steps in order (or undone in reverse order).
     AffineMap<N> stage_map(const Motion::Stage& stage, bool invert) const {
         AffineMap<N> m = AffineMap<N>::identity();
+        const Motion::Step* first = motion.steps_begin(stage);
+        const Motion::Step* last = motion.steps_end(stage);
         if (!invert) {
-            for (const auto& s : stage.steps) apply_step(s, false, m);
+            for (const auto* s = first; s != last; ++s) apply_step(*s, false, m);
         } else {
-            for (auto it = stage.steps.rbegin(); it != stage.steps.rend(); ++it)
-                apply_step(*it, true, m);
+            for (const auto* s = last; s != first;) apply_step(*--s, true, m);
         }
         return m;
     }
@@ -219,22 +222,24 @@ struct MotionEvaluator {
         switch (s.kind) {
             case TransformKind::Translate:
                 for (int i = 0; i < 3; ++i) {
-                    const N v = value(s.p[i]);
+                    const N v = amount(s, i);
                     m.m[i][3] = m.m[i][3] + (inverse ? -v : v);
                 }
                 return;
             case TransformKind::Scale:
                 for (int i = 0; i < 3; ++i) {
-                    const N v = scale_factor(value(s.p[i]));
+                    const N v = scale_factor(amount(s, i));
                     const N f = inverse ? N(1.0) / v : v;
                     for (int j = 0; j < 4; ++j) m.m[i][j] = f * m.m[i][j];
                 }
                 return;
             case TransformKind::Rotate:
                 if (!inverse) {
-                    for (int axis = 0; axis < 3; ++axis) rotate_rows(axis, s.p[axis], false, m);
+                    for (int axis = 0; axis < 3; ++axis)
+                        rotate_rows(axis, motion.amount_of(s, axis), false, m);
                 } else {
-                    for (int axis = 2; axis >= 0; --axis) rotate_rows(axis, s.p[axis], true, m);
+                    for (int axis = 2; axis >= 0; --axis)
+                        rotate_rows(axis, motion.amount_of(s, axis), true, m);
                 }
                 return;
             default:
@@ -263,9 +268,10 @@ struct MotionEvaluator {
     std::array<N, 3> deform(const Motion::Stage& stage, const std::array<N, 3>& p,
                             bool invert) const {
         ++this_thread_work.deformation_maps;
-        const N amount = value(stage.amount);
-        if (stage.fixed_frame) return deform_in(stage.kind, stage.frame, p, amount, invert != stage.inverse);
-        const std::array<N, 3> axis{value(stage.axis[0]), value(stage.axis[1]), value(stage.axis[2])};
+        const Motion::Deformation& d = motion.deformation_of(stage);
+        const N amount = value(d.amount);
+        if (stage.fixed_frame) return deform_in(stage.kind, d.frame, p, amount, invert != stage.inverse);
+        const std::array<N, 3> axis{value(d.axis[0]), value(d.axis[1]), value(d.axis[2])};
         return deform_in(stage.kind, deformation_frame(axis), p, amount, invert != stage.inverse);
     }
 
@@ -285,7 +291,8 @@ struct MotionEvaluator {
                              bool invert) const {
         switch (stage.kind) {
             case Motion::StageKind::Fixed:
-                return invert ? stage.backward.apply(p) : stage.forward.apply(p);
+                return invert ? motion.fixed_of(stage).backward.apply(p)
+                              : motion.fixed_of(stage).forward.apply(p);
             case Motion::StageKind::Moving: return stage_map(stage, invert).apply(p);
             default: return deform(stage, p, invert);
         }
@@ -333,10 +340,13 @@ Motion::Motion(const Transform& transform) {
                          : step.kind == TransformKind::Taper ? StageKind::Taper
                                                              : StageKind::Bend;
             stage.inverse = step.inverse;
-            for (int i = 0; i < 3; ++i) stage.axis[i] = parameter(step.vector.c[i]);
-            stage.amount = parameter(step.amount);
+            Deformation d;
+            for (int i = 0; i < 3; ++i) d.axis[i] = parameter(step.vector.c[i]);
+            d.amount = parameter(step.amount);
             stage.fixed_frame = !step.vector.depends_on_time();
-            if (stage.fixed_frame) stage.frame = deformation_frame(step.vector(0.0));
+            if (stage.fixed_frame) d.frame = deformation_frame(step.vector(0.0));
+            stage.index = static_cast<std::uint32_t>(deformations_.size());
+            deformations_.push_back(d);
             stages_.push_back(stage);
             affine_ = false;
             identity_ = false;
@@ -346,35 +356,47 @@ Motion::Motion(const Transform& transform) {
             // A constant step joins a preceding constant stage.
             const AffineMap<double> m = AffineMap<double>::from(step.matrix_at(0.0));
             if (stages_.empty() || stages_.back().kind != StageKind::Fixed) {
-                stages_.push_back(Stage{});
+                Stage stage;
+                stage.index = static_cast<std::uint32_t>(fixed_.size());
+                fixed_.emplace_back();
+                stages_.push_back(stage);
             }
-            Stage& stage = stages_.back();
-            stage.forward = m * stage.forward;
-            stage.backward = to_glm(stage.forward) == glm::dmat4(1.0)
-                                 ? AffineMap<double>::identity()
-                                 : AffineMap<double>::from(glm::inverse(to_glm(stage.forward)));
-            identity_ = identity_ && to_glm(stage.forward) == glm::dmat4(1.0);
+            FixedMaps& maps = fixed_[stages_.back().index];
+            maps.forward = m * maps.forward;
+            maps.backward = to_glm(maps.forward) == glm::dmat4(1.0)
+                                ? AffineMap<double>::identity()
+                                : AffineMap<double>::from(glm::inverse(to_glm(maps.forward)));
+            identity_ = identity_ && to_glm(maps.forward) == glm::dmat4(1.0);
             continue;
         }
         Step s;
         s.kind = step.kind;
         s.inverse = step.inverse;
+        s.first = static_cast<std::uint32_t>(parameters_.size());
         if (step.kind == TransformKind::Matrix) {
-            for (int i = 0; i < 12; ++i) s.p[i] = parameter(step.matrix[i]);
+            for (int i = 0; i < 12; ++i) parameters_.push_back(parameter(step.matrix[i]));
         } else {
-            for (int i = 0; i < 3; ++i) s.p[i] = parameter(step.vector.c[i]);
+            for (int i = 0; i < 3; ++i) parameters_.push_back(parameter(step.vector.c[i]));
         }
+        // A moving stage's steps are consecutive: it is the last stage.
         if (stages_.empty() || stages_.back().kind != StageKind::Moving) {
             Stage stage;
             stage.kind = StageKind::Moving;
+            stage.index = static_cast<std::uint32_t>(steps_.size());
             stages_.push_back(stage);
         }
-        stages_.back().steps.push_back(s);
+        steps_.push_back(s);
+        ++stages_.back().count;
         identity_ = false;
     }
 
     if (!outputs.empty()) tape_ = std::make_shared<const TimeTape>(TimeTape::compile(outputs));
     finish_stages();
+    stages_.shrink_to_fit();
+    fixed_.shrink_to_fit();
+    steps_.shrink_to_fit();
+    parameters_.shrink_to_fit();
+    deformations_.shrink_to_fit();
 }
 
 void Motion::finish_stages() {
@@ -382,23 +404,23 @@ void Motion::finish_stages() {
     if (fixed_affine_ && !stages_.empty()) {
         // Constant and affine: the stages merged into one (only Fixed stages
         // exist, and consecutive ones were merged).
-        forward_ = stages_.front().forward;
-        backward_ = stages_.front().backward;
+        forward_ = fixed_of(stages_.front()).forward;
+        backward_ = fixed_of(stages_.front()).backward;
     }
 }
 
 void Motion::append_fixed(const AffineMap<double>& forward, const AffineMap<double>& backward) {
     if (!stages_.empty() && stages_.back().kind == StageKind::Fixed) {
-        Stage& last = stages_.back();
+        FixedMaps& last = fixed_[stages_.back().index];
         last.forward = forward * last.forward;
         last.backward = last.backward * backward;
     } else {
         Stage stage;
-        stage.forward = forward;
-        stage.backward = backward;
+        stage.index = static_cast<std::uint32_t>(fixed_.size());
+        fixed_.push_back({forward, backward});
         stages_.push_back(stage);
     }
-    identity_ = identity_ && to_glm(stages_.back().forward) == glm::dmat4(1.0);
+    identity_ = identity_ && to_glm(fixed_of(stages_.back()).forward) == glm::dmat4(1.0);
 }
 
 Motion Motion::at_instant(double t) const {
@@ -407,22 +429,27 @@ Motion Motion::at_instant(double t) const {
     Motion frozen;
     for (const Stage& stage : stages_) {
         switch (stage.kind) {
-            case StageKind::Fixed: frozen.append_fixed(stage.forward, stage.backward); break;
+            case StageKind::Fixed:
+                frozen.append_fixed(fixed_of(stage).forward, fixed_of(stage).backward);
+                break;
             case StageKind::Moving:
                 frozen.append_fixed(e.stage_map(stage, false), e.stage_map(stage, true));
                 break;
             default: {
-                const double amount = e.value(stage.amount);
+                const Deformation& d = deformation_of(stage);
+                const double amount = e.value(d.amount);
                 // A twist, taper or bend by 0 is the identity (deformation.hpp).
                 if (amount == 0.0) break;
-                Stage fixed = stage;
+                Deformation fixed = d;
                 fixed.amount = Parameter{amount, -1};
-                if (!stage.fixed_frame) {
+                if (!stage.fixed_frame)
                     fixed.frame = deformation_frame(std::array<double, 3>{
-                        e.value(stage.axis[0]), e.value(stage.axis[1]), e.value(stage.axis[2])});
-                    fixed.fixed_frame = true;
-                }
-                frozen.stages_.push_back(fixed);
+                        e.value(d.axis[0]), e.value(d.axis[1]), e.value(d.axis[2])});
+                Stage frozen_stage = stage;
+                frozen_stage.fixed_frame = true;
+                frozen_stage.index = static_cast<std::uint32_t>(frozen.deformations_.size());
+                frozen.deformations_.push_back(fixed);
+                frozen.stages_.push_back(frozen_stage);
                 frozen.affine_ = false;
                 frozen.identity_ = false;
                 break;
@@ -479,7 +506,7 @@ std::vector<double> Motion::twist_reaches(const IntervalVec3& object_box, const 
     for (const Stage& stage : stages_) {
         double reach = interval_detail::kInf;
         if (stage.kind == StageKind::Twist && stage.fixed_frame) {
-            const IntervalVec3 local = to_local(box, stage.frame);
+            const IntervalVec3 local = to_local(box, deformation_of(stage).frame);
             const double far = deformation_detail::section_radius(local).hi;
             const double largest = std::max({local[0].magnitude(), local[1].magnitude(),
                                              local[2].magnitude()});
@@ -500,7 +527,8 @@ std::optional<IntervalVec3> Motion::to_object_within(const IntervalVec3& p, cons
     for (std::size_t k = stages_.size(); k-- > 0;) {
         const Stage& stage = stages_[k];
         if (stage.kind == StageKind::Twist && stage.fixed_frame &&
-            deformation_detail::section_radius(to_local(q, stage.frame)).lo > reaches[k])
+            deformation_detail::section_radius(to_local(q, deformation_of(stage).frame)).lo >
+                reaches[k])
             return std::nullopt;
         q = e.through(stage, q, true);
     }
@@ -526,7 +554,7 @@ glm::dmat4 Motion::inverse_at(double t) const {
     const MotionEvaluator<double> e(*this, t);
     AffineMap<double> m = AffineMap<double>::identity();
     for (auto it = stages_.rbegin(); it != stages_.rend(); ++it)
-        m = (it->kind == StageKind::Fixed ? it->backward : e.stage_map(*it, true)) * m;
+        m = (it->kind == StageKind::Fixed ? fixed_of(*it).backward : e.stage_map(*it, true)) * m;
     return to_glm(m);
 }
 
@@ -598,16 +626,16 @@ glm::dmat3 Motion::jacobian_at(const glm::dvec3& object_point, double t) const {
     for (const Stage& stage : stages_) {
         glm::dmat3 step(1.0);
         if (stage.kind == StageKind::Fixed) {
-            step = glm::dmat3(to_glm(stage.forward));
+            step = glm::dmat3(to_glm(fixed_of(stage).forward));
         } else if (stage.kind == StageKind::Moving) {
             step = glm::dmat3(to_glm(e.stage_map(stage, false)));
         } else {
-            const double amount = e.value(stage.amount);
+            const Deformation& d = deformation_of(stage);
+            const double amount = e.value(d.amount);
             const DeformationFrame<double> frame =
-                stage.fixed_frame ? stage.frame
+                stage.fixed_frame ? d.frame
                                   : deformation_frame(std::array<double, 3>{
-                                        e.value(stage.axis[0]), e.value(stage.axis[1]),
-                                        e.value(stage.axis[2])});
+                                        e.value(d.axis[0]), e.value(d.axis[1]), e.value(d.axis[2])});
             // An inverse stage's Jacobian is the inverse of the forward one
             // at the stage's output, its preimage.
             const std::array<double, 3> at = stage.inverse ? e.through(stage, p, false) : p;

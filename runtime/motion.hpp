@@ -122,23 +122,40 @@ class Motion {
         double constant = 0.0;
         int slot = -1;
     };
+    // A moving affine step; its amounts are parameters_[first ..] (three,
+    // a vector's; twelve for a Matrix).
     struct Step {
         TransformKind kind = TransformKind::Translate;
         bool inverse = false;
-        std::array<Parameter, 12> p;  // vector in p[0..2]; Matrix uses all twelve
+        std::uint32_t first = 0;
     };
     enum class StageKind : std::uint8_t { Fixed, Moving, Twist, Taper, Bend };
+    // A stage names its data in the motion's own arrays, by kind: a Fixed
+    // one fixed_[index]; a Moving one steps_[index, index + count); a
+    // deformation deformations_[index]. Kept apart, a moving sphere's
+    // motion is about 350 bytes where stages holding every kind's fields
+    // took about 1,050 (README "Scale").
+    struct FixedMaps {
+        AffineMap<double> forward = AffineMap<double>::identity();
+        AffineMap<double> backward = AffineMap<double>::identity();
+    };
+    struct Deformation {
+        std::array<Parameter, 3> axis;
+        Parameter amount;
+        DeformationFrame<double> frame;  // when the stage's fixed_frame
+    };
     struct Stage {
         StageKind kind = StageKind::Fixed;
-        AffineMap<double> forward = AffineMap<double>::identity();   // Fixed
-        AffineMap<double> backward = AffineMap<double>::identity();  // Fixed
-        std::vector<Step> steps;                                     // Moving
-        std::array<Parameter, 3> axis;                               // deformations ...
-        Parameter amount;
-        bool inverse = false;
-        bool fixed_frame = true;  // the axis is constant and `frame` holds its frame
-        DeformationFrame<double> frame;
+        bool inverse = false;     // deformations
+        bool fixed_frame = true;  // deformations: the axis is constant, its frame kept
+        std::uint32_t index = 0;
+        std::uint32_t count = 0;  // Moving: its steps
     };
+    const FixedMaps& fixed_of(const Stage& s) const { return fixed_[s.index]; }
+    const Deformation& deformation_of(const Stage& s) const { return deformations_[s.index]; }
+    const Step* steps_begin(const Stage& s) const { return steps_.data() + s.index; }
+    const Step* steps_end(const Stage& s) const { return steps_.data() + s.index + s.count; }
+    const Parameter& amount_of(const Step& s, int i) const { return parameters_[s.first + i]; }
 
     template <class N>
     friend struct MotionEvaluator;
@@ -159,6 +176,10 @@ class Motion {
     AffineMap<double> forward_ = AffineMap<double>::identity();
     AffineMap<double> backward_ = AffineMap<double>::identity();
     std::vector<Stage> stages_;
+    std::vector<FixedMaps> fixed_;
+    std::vector<Step> steps_;
+    std::vector<Parameter> parameters_;
+    std::vector<Deformation> deformations_;
     std::shared_ptr<const TimeTape> tape_;  // every time-dependent amount; null when static
 };
 
