@@ -2,6 +2,7 @@
 
 #include <png.h>
 
+#include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <memory>
@@ -27,11 +28,17 @@ void write_png(const fs::path& file, int width, int height, const void* pixels) 
     image.height = static_cast<png_uint_32>(height);
     image.format = PNG_FORMAT_RGB;  // 8-bit, sRGB
     // The simplified API checks fflush, ferror and fclose: a full disk is
-    // an error here, not a short file.
+    // an error here, not a short file. libpng says only "Write Error"; the
+    // system's reason is in errno.
+    errno = 0;
     const int ok = png_image_write_to_file(&image, file.c_str(), 0, pixels, 0, nullptr);
-    const std::string message = image.message;
+    const int system_error = errno;
+    std::string message = image.message;
     png_image_free(&image);
-    if (!ok) throw std::runtime_error(message.empty() ? "libpng failed" : message);
+    if (ok) return;
+    if (message.empty()) message = "libpng failed";
+    if (system_error != 0) message += std::string(": ") + std::strerror(system_error);
+    throw std::runtime_error(message);
 }
 
 // libpng reports an error by longjmp to the reader's setjmp; its message is
