@@ -100,6 +100,8 @@ HEXANT_SHAPE_KEYWORD(kw_prism);
             throw unsupported_use(e.what(), in.position());       \
         } catch (const ValueError& e) {                           \
             Interpreter::fail(in.position(), e.what());           \
+        } catch (const runtime::TimeFunctionTooDeep& e) {         \
+            Interpreter::fail(in.position(), e.what());           \
         } catch (const std::bad_alloc&) {                         \
             Interpreter::fail(in.position(), kOutOfMemory);       \
         }                                                         \

@@ -1,6 +1,8 @@
 #include "runtime/time_function.hpp"
 
+#include <algorithm>
 #include <sstream>
+#include <string>
 
 #include "runtime/spline.hpp"
 #include "runtime/time_ops.hpp"
@@ -63,6 +65,24 @@ const char* name(TimeOp op) {
 TimeFunction::TimeFunction(double value) : value_(value) {}
 TimeFunction::TimeFunction(std::shared_ptr<const Node> node) : node_(std::move(node)) {}
 
+TimeFunctionTooDeep::TimeFunctionTooDeep()
+    : std::runtime_error("a function of clock nested more than " +
+                         std::to_string(kMaxTimeFunctionDepth) +
+                         " operations deep (built up step by step, in a loop?)") {}
+
+namespace {
+
+// The node's depth from its arguments'; refuses one past the limit.
+void set_depth(TimeFunction::Node& node) {
+    int deepest = 0;
+    for (const TimeFunction& a : node.args)
+        if (const TimeFunction::Node* n = a.node()) deepest = std::max(deepest, n->depth);
+    if (deepest >= kMaxTimeFunctionDepth) throw TimeFunctionTooDeep();
+    node.depth = deepest + 1;
+}
+
+}  // namespace
+
 TimeFunction TimeFunction::clock() {
     auto node = std::make_shared<Node>();
     node->op = TimeOp::Clock;
@@ -74,6 +94,7 @@ TimeFunction TimeFunction::apply(TimeOp op, const TimeFunction& a) {
     auto node = std::make_shared<Node>();
     node->op = op;
     node->args[0] = a;
+    set_depth(*node);
     return TimeFunction(std::move(node));
 }
 
@@ -84,6 +105,7 @@ TimeFunction TimeFunction::apply(TimeOp op, const TimeFunction& a, const TimeFun
     node->op = op;
     node->args[0] = a;
     node->args[1] = b;
+    set_depth(*node);
     return TimeFunction(std::move(node));
 }
 
@@ -97,6 +119,7 @@ TimeFunction TimeFunction::apply(TimeOp op, const TimeFunction& a, const TimeFun
     auto node = std::make_shared<Node>();
     node->op = op;
     node->args = {a, b, c};
+    set_depth(*node);
     return TimeFunction(std::move(node));
 }
 
@@ -108,6 +131,7 @@ TimeFunction TimeFunction::spline_component(std::shared_ptr<const Spline> spline
     node->args[0] = t;
     node->spline = std::move(spline);
     node->component = component;
+    set_depth(*node);
     return TimeFunction(std::move(node));
 }
 

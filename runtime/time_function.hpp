@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <stdexcept>
 #include <memory>
 #include <string>
 
@@ -106,6 +107,18 @@ struct TimeFunction::Node {
     std::array<TimeFunction, 3> args;
     std::shared_ptr<const Spline> spline;  // for SplineComponent
     int component = 0;                     // for SplineComponent
+    int depth = 1;                         // of the tree below: 1 + its deepest argument's
+};
+
+// Functions of time are trees, and reading, compiling, printing and freeing
+// them recurse down the tree: one nested deeper than this (an expression of
+// clock built up step by step, `#declare X = X + clock` in a loop of 10^5
+// iterations, say) is refused where it is made, before any of them could
+// run out of stack: at this depth, reading, checking, dumping and rendering
+// a scene stay within a 1 MB stack (tried with ulimit -s 1024).
+inline constexpr int kMaxTimeFunctionDepth = 10000;
+struct TimeFunctionTooDeep : std::runtime_error {
+    TimeFunctionTooDeep();
 };
 
 TimeFunction operator+(const TimeFunction& a, const TimeFunction& b);

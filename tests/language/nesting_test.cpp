@@ -6,6 +6,7 @@
 #include <string>
 
 #include "language/interpreter.hpp"
+#include "runtime/time_function.hpp"
 
 using hexant::language::ParseOptions;
 using hexant::language::SceneError;
@@ -19,11 +20,13 @@ std::string repeat(const std::string& s, int n) {
     return out;
 }
 
-// Reads the scene; returns the error's message, or "" when it reads.
+// Reads the scene (as an animation of 4 frames: clock runs); returns the
+// error's message, or "" when it reads.
 std::string read(const std::string& text) {
     std::ostringstream messages;
     ParseOptions options;
     options.messages = &messages;
+    options.animation.final_frame = 4;
     try {
         hexant::language::parse_scene_text(text, "deep.pov", options);
     } catch (const SceneError& e) {
@@ -87,4 +90,28 @@ TEST_CASE("nesting as deep as real scenes go still reads", "[language][nesting]"
     CHECK(read(repeat("#if (1) ", 200) + "sphere { 0, 1 }" + repeat(" #end", 200)) == "");
     CHECK(read(repeat("union { ", 200) + "sphere { 0, 1 } sphere { 1, 1 }" + repeat(" }", 200)) ==
           "");
+}
+
+TEST_CASE("a function of clock built up too deep is an error where it is made, not a crash",
+          "[language][nesting]") {
+    const auto loop = [](int n) {
+        return "#declare X = clock; #declare I = 0;\n#while (I < " + std::to_string(n) +
+               ")\n  #declare X = X + clock * 0.5;\n  #declare I = I + 1;\n#end\n"
+               "sphere { <X, 0, 0>, 1 }\n";
+    };
+    // Freeing, compiling or printing 300,000 nested operations overflowed
+    // the stack; the limit stops it at the expression, its line named.
+    ParseOptions options;
+    options.animation.final_frame = 4;
+    try {
+        hexant::language::parse_scene_text(loop(300000), "deep.pov", options);
+        FAIL("read without an error");
+    } catch (const SceneError& e) {
+        INFO(e.formatted());
+        CHECK(e.message().find("nested more than 10000 operations deep") != std::string::npos);
+        CHECK(e.formatted().find("deep.pov:3:") != std::string::npos);
+    }
+    // Just under the limit it reads (and hexant renders it, with a 1 MB
+    // stack too: README "Nesting").
+    CHECK(read(loop(hexant::runtime::kMaxTimeFunctionDepth - 10)) == "");
 }
