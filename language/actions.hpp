@@ -449,12 +449,15 @@ HEXANT_ACTION(unknown_directive) {
 
 HEXANT_ACTION(default_item) {
     HEXANT_APPLY {
-        (void)in;
         Value v = st.pop();
         auto& texture = st.scene.default_texture;
         if (v.is<runtime::Texture>()) texture = v.as<runtime::Texture>();
         else if (v.is<runtime::Pigment>()) texture.pigment = v.as<runtime::Pigment>();
         else if (v.is<runtime::Finish>()) texture.finish = v.as<runtime::Finish>();
+        // Checked here, at the #default: the objects that take it are
+        // checked for their own parameters only.
+        if (auto problem = runtime::bad_parameter(texture, "the #default", st.scene.animation))
+            Interpreter::fail(in.position(), *problem);
     }
 };
 

@@ -196,6 +196,11 @@ std::optional<std::string> bad_parameter(const ObjectRecord& object, const Anima
     return std::nullopt;
 }
 
+std::optional<std::string> bad_parameter(const Texture& texture, const std::string& whose,
+                                         const Animation& animation) {
+    return check(texture, whose, Span(animation));
+}
+
 std::optional<std::string> bad_parameter(const LightRecord& light, const Animation& animation) {
     const Span span(animation);
     if (auto p = check(light.position.c, "the light's position", span)) return p;

@@ -23,6 +23,10 @@ namespace hexant::runtime {
 // children: each has its own place).
 std::optional<std::string> bad_parameter(const ObjectRecord& object, const Animation& animation);
 std::optional<std::string> bad_parameter(const LightRecord& light, const Animation& animation);
+// A texture on its own (the #default one): `whose` begins the message
+// ("the #default texture's").
+std::optional<std::string> bad_parameter(const Texture& texture, const std::string& whose,
+                                         const Animation& animation);
 // Also its geometry at each frame's clock: the angle's range, a zero
 // direction, look_at at the location (and, by interval search, at any
 // instant where the two meet exactly).

@@ -75,6 +75,12 @@ TEST_CASE("NaN and infinite colours, finishes and lights are errors", "[paramete
                Contains("finish's phong is infinite"));
     CHECK_THAT(message_at("\nlight_source { <0, 5, 0>, rgb 1e300 * 1e300 }", 2, 1),
                Contains("the light's colour is infinite"));
+    // The #default texture, which the objects that take it do not check.
+    CHECK_THAT(message_at("#default { finish { ambient 1 / (clock - 0.5) } }\nsphere { 0, 1 }", 1,
+                          12, animation()),
+               Contains("the #default finish's ambient is infinite at clock = 0.5"));
+    CHECK_THAT(message_at("#default { pigment { rgb sqrt(-1) } }", 1, 12),
+               Contains("the #default pigment's colour is NaN"));
 }
 
 TEST_CASE("a camera with no direction, or looking at its own location, is an error",
