@@ -50,7 +50,7 @@ void add_scene_arguments(CLI::App& command, SceneArguments& a) {
                        "Characters of one string (default 16777216, 16 Mi)")
         ->check(CLI::Range(std::size_t(1), std::size_t(1) << 40));
     command.add_option("--max-array-memory", a.max_array_memory_mib,
-                       "MiB the scene's arrays may hold at once (default 2048)")
+                       "MiB the scene's arrays and its variables' strings may hold at once (default 2048)")
         ->check(CLI::Range(std::size_t(1), std::size_t(1) << 30));
     command.add_option("--max-frames", a.max_frames,
                        "Frames an animation may have (default 10^6)")

@@ -169,9 +169,23 @@ void Interpreter::apply_deformation(runtime::TransformStep step, const p::positi
 const Value* Interpreter::lookup(const std::string& name) const {
     for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it) {
         auto found = it->find(name);
-        if (found != it->end()) return &found->second;
+        if (found != it->end()) return &found->second.value;
     }
     return nullptr;
+}
+
+void Interpreter::set_variable(Scope& scope, const std::string& name, Value value) {
+    const std::size_t bytes = value.is<std::string>() ? value.as<std::string>().size() : 0;
+    auto [slot, added] = scope.try_emplace(name);
+    Variable& variable = slot->second;
+    variable.charge.attach(array_memory_);
+    try {
+        variable.charge.set(bytes);
+    } catch (const ValueError&) {
+        if (added) scope.erase(slot);  // past the budget: no variable made
+        throw;
+    }
+    variable.value = std::move(value);
 }
 
 void Interpreter::declare(const std::string& name, Value value, bool local) {
@@ -179,7 +193,7 @@ void Interpreter::declare(const std::string& name, Value value, bool local) {
     // local (a macro's parameter, say); otherwise it is global.
     if (!local && scopes_.size() > 1 && scopes_.back().count(name)) local = true;
     auto& table = local ? scopes_.back() : scopes_.front();
-    table[name] = std::move(value);
+    set_variable(table, name, std::move(value));
 }
 
 void Interpreter::assign_element(const std::string& name, const std::vector<Value>& indices,
@@ -187,7 +201,7 @@ void Interpreter::assign_element(const std::string& name, const std::vector<Valu
     Value* target = nullptr;
     for (auto it = scopes_.rbegin(); it != scopes_.rend() && !target; ++it) {
         auto found = it->find(name);
-        if (found != it->end()) target = &found->second;
+        if (found != it->end()) target = &found->second.value;
     }
     if (!target) fail(where, "undeclared array '" + name + "'");
     if (!target->is<std::shared_ptr<Array>>()) fail(where, "'" + name + "' is not an array");

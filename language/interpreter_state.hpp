@@ -274,7 +274,17 @@ private:
                                const ParseInput& in);
 
     std::deque<std::pair<std::string, std::string>> sources_;
-    std::vector<std::unordered_map<std::string, Value>> scopes_;
+    // A variable: its value, and what its string's characters are charged
+    // to the memory budget (array_memory_; an array charges itself).
+    struct Variable {
+        Value value;
+        MemoryCharge charge;
+    };
+    using Scope = std::unordered_map<std::string, Variable>;
+    // Sets the scope's variable `name` to `value`, charging a string's
+    // characters; throws ValueError past the budget, changing nothing.
+    void set_variable(Scope& scope, const std::string& name, Value value);
+    std::vector<Scope> scopes_;
     std::vector<Value> stack_;
     std::vector<std::size_t> frames_;
     std::vector<std::string> names_;
@@ -640,8 +650,13 @@ bool Interpreter::call_macro(ParseInput& in) {
                              "limit)");
     count_step(call_place);
     scopes_.emplace_back();
-    for (std::size_t i = 0; i < args.size(); ++i)
-        scopes_.back()[macro->parameters[i]] = std::move(args[i]);
+    try {
+        for (std::size_t i = 0; i < args.size(); ++i)
+            set_variable(scopes_.back(), macro->parameters[i], std::move(args[i]));
+    } catch (const ValueError& e) {
+        scopes_.pop_back();
+        fail(call_place, e.what());
+    }
     ++macro_depth_;
     const std::size_t before = depth();
     const auto& at = macro->body_position;
@@ -670,7 +685,12 @@ bool Interpreter::call_macro(ParseInput& in) {
         for (std::size_t level = scopes_.size() - 1; level-- > 0;) {
             auto target = scopes_[level].find(references[i]);
             if (target != scopes_[level].end()) {
-                target->second = found->second;
+                try {
+                    set_variable(scopes_[level], references[i], found->second.value);
+                } catch (const ValueError& e) {
+                    scopes_.pop_back();
+                    fail(call_place, e.what());
+                }
                 break;
             }
         }

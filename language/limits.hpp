@@ -25,7 +25,9 @@ struct Limits {
     std::size_t string_length = 16u << 20;
     // Bytes held by the scene's arrays at once: their slots, the values set
     // in them and those values' strings (an array at the former 10^8 element
-    // limit took 4.8 GB). Counted per copy: an array is a value in SDL.
+    // limit took 4.8 GB), and the strings its variables hold (a thousand
+    // names of 16 Mi characters each would take 16 GB). Counted per copy:
+    // an array is a value in SDL.
     std::size_t array_memory = std::size_t(2) << 30;
     // Frames of an animation (10^6 is eleven hours of film at 24 per
     // second); frames are counted in int and each frame's eye and lights

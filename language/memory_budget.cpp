@@ -14,7 +14,7 @@ void MemoryBudget::charge(std::size_t bytes) {
             std::snprintf(text, sizeof text, "%.1f", static_cast<double>(b) / (1 << 20));
             return std::string(text);
         };
-        throw ValueError("the scene's arrays would hold more than " + mb(limit_) +
+        throw ValueError("the scene's arrays and strings would hold more than " + mb(limit_) +
                          " MiB (they hold " + mb(held_) + " MiB, and this needs " + mb(bytes) +
                          " MiB more); --max-array-memory MIB raises the limit");
     }

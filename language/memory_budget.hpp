@@ -1,7 +1,8 @@
-// The bytes a scene's arrays hold, against Limits::array_memory. An array
-// carries a MemoryCharge: what it was charged is given back when it goes,
-// so the count is of what is held at once, not of all that was ever made
-// (a loop that rebuilds an array keeps one copy's worth).
+// The bytes a scene's arrays and its variables' strings hold, against
+// Limits::array_memory. An array, and a variable, carries a MemoryCharge:
+// what it was charged is given back when it goes, so the count is of what
+// is held at once, not of all that was ever made (a loop that rebuilds an
+// array keeps one copy's worth).
 #pragma once
 
 #include <cstddef>
@@ -43,6 +44,15 @@ class MemoryCharge {
     void add(std::size_t bytes) {
         if (budget_) budget_->charge(bytes);
         bytes_ += bytes;
+    }
+    // Charges `bytes` in place of what it held (throws as add, changing
+    // nothing; the new is charged before the old is given back).
+    void set(std::size_t bytes) {
+        if (budget_) {
+            budget_->charge(bytes);
+            budget_->release(bytes_);
+        }
+        bytes_ = bytes;
     }
     void remove(std::size_t bytes) noexcept {
         if (bytes > bytes_) bytes = bytes_;

@@ -97,8 +97,32 @@ TEST_CASE("the arrays' memory is held against its limit, and given back", "[limi
     const SceneError s = error_of("#declare A = array[1000]\n#for (I, 0, 999)\n"
                                   "  #declare A[I] = str(I, 1000, 0);\n#end\n",
                                   options);
-    CHECK(contains(s, "arrays would hold more than"));
+    CHECK(contains(s, "arrays and strings would hold more than"));
     CHECK(s.places().front().line == 3);
+}
+
+TEST_CASE("strings held in variables count against the same memory, and are given back",
+          "[limits]") {
+    ParseOptions options;
+    options.limits.array_memory = 1 << 20;
+    // S: 163,840 characters (ten, doubled fourteen times).
+    const std::string s = "#declare S = \"0123456789\";\n"
+                          "#for (K, 1, 14) #declare S = concat(S, S); #end\n";
+    // S and five copies hold 983,040 bytes; the sixth copy passes 1 MiB.
+    const SceneError e = error_of(s + "#declare S1 = S;\n#declare S2 = S;\n#declare S3 = S;\n"
+                                      "#declare S4 = S;\n#declare S5 = S;\n#declare S6 = S;\n",
+                                  options);
+    CHECK(contains(e, "arrays and strings would hold more than 1.0 MiB"));
+    CHECK(e.places().front().line == 8);
+    // One name set again and again holds one string's worth; #undef and a
+    // macro's end give theirs back; a macro's string parameter and locals
+    // count while it runs.
+    reads(s + "#for (I, 1, 100) #declare T = concat(S, str(I, 0, 0)); #end\n", options);
+    reads(s + "#for (I, 1, 100) #declare T = concat(S, S, S); #undef T #end\n", options);
+    reads(s + "#macro M(A) #local L = concat(A, A); #end\n#for (I, 1, 100) M(S) #end\n", options);
+    CHECK(contains(error_of(s + "#macro M(A) #local L = concat(A, A, A, A, A, A); #end\nM(S)\n",
+                            options),
+                   "arrays and strings would hold more than 1.0 MiB"));
 }
 
 TEST_CASE("include and macro depths stop at their limits", "[limits]") {
