@@ -12,6 +12,7 @@
 #include "app/out_of_memory.hpp"
 #include "language/interpreter.hpp"
 #include "runtime/object_error.hpp"
+#include "tracer/gif_animation.hpp"
 #include "tracer/image_output.hpp"
 #include "tracer/renderer.hpp"
 #include "tracer/whole_file.hpp"
@@ -247,6 +248,30 @@ int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err
         tracer::check_image_name(pattern);
         if (args.contact_sheet) tracer::check_image_name(*args.contact_sheet);
         if (args.animation) tracer::check_animation_name(*args.animation);
+        if (args.animation && std::max(scene.animation.width, scene.animation.height) >
+                                  tracer::kGifMaxSide)
+            throw std::runtime_error(*args.animation + ": a GIF is at most " +
+                                     std::to_string(tracer::kGifMaxSide) +
+                                     " pixels a side; the frames are " +
+                                     std::to_string(scene.animation.width) + " by " +
+                                     std::to_string(scene.animation.height));
+        // No output may be written over another (a contact sheet named as a
+        // frame would replace that frame; a sheet and an animation never
+        // share a name: .png or .exr against .gif).
+        {
+            const auto same = [](const std::string& a, const std::string& b) {
+                return std::filesystem::absolute(a).lexically_normal() ==
+                       std::filesystem::absolute(b).lexically_normal();
+            };
+            std::vector<std::pair<std::string, std::string>> extra;
+            if (args.contact_sheet) extra.emplace_back("--contact-sheet", *args.contact_sheet);
+            if (args.animation) extra.emplace_back("--animation", *args.animation);
+            for (const auto& [flag, name] : extra)
+                for (const int frame : selected)
+                    if (same(name, tracer::frame_path(pattern, frame)))
+                        throw std::runtime_error(name + ": " + flag + " names frame " +
+                                                 std::to_string(frame) + "'s file");
+        }
         const bool keep_frames = args.contact_sheet || args.animation;
         std::vector<tracer::Image> frames;
         std::vector<std::pair<std::string, Counters>> columns;

@@ -132,17 +132,26 @@ struct ShapeWriter {
     }
 };
 
-void dump_object(const runtime::ObjectRecord& object, const std::string& name, double t,
+// An object and its CSG children, depth first, with a stack of its own:
+// records nest up to runtime::kMaxObjectDepth deep, more than the thread's
+// stack holds frames of this.
+void dump_object(const runtime::ObjectRecord& top, const std::string& top_name, double t,
                  std::ostream& out) {
-    out << name << " " << std::visit(ShapeWriter{t}, object.shape) << " "
-        << transform(object.transform, t);
-    if (object.texture) out << " " << texture(*object.texture, t);
-    if (object.interior) out << " ior=" << number(object.interior->ior(t));
-    out << " no_shadow=" << object.no_shadow << " hollow=" << object.hollow
-        << " inverse=" << object.inverse << "\n";
-    if (const auto* csg = std::get_if<runtime::Csg>(&object.shape))
-        for (std::size_t i = 0; i < csg->children.size(); ++i)
-            dump_object(*csg->children[i], name.substr(0, name.size() - 1) + "." + std::to_string(i) + "]", t, out);
+    std::vector<std::pair<const runtime::ObjectRecord*, std::string>> pending{{&top, top_name}};
+    while (!pending.empty()) {
+        const auto [object, name] = std::move(pending.back());
+        pending.pop_back();
+        out << name << " " << std::visit(ShapeWriter{t}, object->shape) << " "
+            << transform(object->transform, t);
+        if (object->texture) out << " " << texture(*object->texture, t);
+        if (object->interior) out << " ior=" << number(object->interior->ior(t));
+        out << " no_shadow=" << object->no_shadow << " hollow=" << object->hollow
+            << " inverse=" << object->inverse << "\n";
+        if (const auto* csg = std::get_if<runtime::Csg>(&object->shape))
+            for (std::size_t i = csg->children.size(); i-- > 0;)
+                pending.emplace_back(csg->children[i].get(), name.substr(0, name.size() - 1) + "." +
+                                                                 std::to_string(i) + "]");
+    }
 }
 
 }  // namespace

@@ -772,7 +772,6 @@ HEXANT_ACTION(prism_option) {
 // Finishes the object on top of the block stack and pushes it as a value.
 struct finish_object {
     HEXANT_APPLY {
-        (void)in;
         Block b = std::move(st.blocks.back());
         st.blocks.pop_back();
         if (auto* light = std::get_if<runtime::LightRecord>(&b)) {
@@ -784,6 +783,17 @@ struct finish_object {
             // A prism of a kind hexant lacks: usable only where nothing uses it.
             st.push(Value{Unevaluated{"prism with " + st.prism_sweep + " and " + st.prism_spline, in.position()}});
             return;
+        }
+        if (const auto* csg = std::get_if<runtime::Csg>(&record.shape)) {
+            record.depth = 1;
+            for (const auto& child : csg->children)
+                record.depth = std::max(record.depth, child->depth + 1);
+            if (record.depth > runtime::kMaxObjectDepth)
+                Interpreter::fail(in.position(),
+                                  "objects nested more than " +
+                                      std::to_string(runtime::kMaxObjectDepth) +
+                                      " deep (a union built up in a loop? a union of the "
+                                      "objects side by side, or an array of them, does not nest)");
         }
         st.push(Value{runtime::ObjectPtr(std::make_shared<runtime::ObjectRecord>(std::move(record)))});
     }

@@ -15,6 +15,12 @@
 
 namespace hexant::runtime {
 
+// How deep object records may nest (a union built up in a loop, `#declare
+// O = union { object { O } sphere { ... } }`, nests one level a turn): at
+// this depth reading, checking and rendering stay within the main thread's
+// 8 MB stack; 15,000 levels overflowed it.
+inline constexpr int kMaxObjectDepth = 10000;
+
 struct ObjectRecord {
     Shape shape;
     Transform transform;  // object space to the parent's space
@@ -23,6 +29,10 @@ struct ObjectRecord {
     bool no_shadow = false;
     bool hollow = false;
     bool inverse = false;  // inside and outside swapped (CSG)
+    // Objects nested in it and itself: 1, or 1 + its deepest CSG child's.
+    // Everything that walks a record's children recurses, so the language
+    // refuses records deeper than kMaxObjectDepth where they are made.
+    int depth = 1;
     // Light sources written inside a CSG move with it.
     std::vector<LightRecord> lights;
     SourcePlace place;  // where the object was written

@@ -8,6 +8,9 @@
 
 namespace hexant::tracer {
 
+// A GIF's sides are 16-bit numbers.
+inline constexpr int kGifMaxSide = 65535;
+
 // `frames` are sRGB bytes, RGB, `width` x `height` each. Throws
 // std::runtime_error with the reason.
 void write_gif_animation(const std::filesystem::path& file, int width, int height,

@@ -83,8 +83,20 @@ void install_cleanup_on_signals() {
 }
 
 TemporaryFile::TemporaryFile(const fs::path& path) : path_(path) {
-    if (path.has_parent_path()) fs::create_directories(path.parent_path());
-    temporary_ = path.parent_path() / ("." + path.filename().string() + ".partial");
+    if (path.has_parent_path()) {
+        std::error_code error;
+        fs::create_directories(path.parent_path(), error);
+        if (error)
+            throw std::runtime_error(path.string() + ": cannot make its folder " +
+                                     path.parent_path().string() + ": " + error.message());
+    }
+    // The process's number keeps two runs writing the same file apart (each
+    // renames its own whole file); the name is cut so that the temporary
+    // stays within a file name's 255 bytes whenever the name itself does.
+    const std::string suffix = "." + std::to_string(::getpid()) + ".partial";
+    std::string name = path.filename().string();
+    if (name.size() + suffix.size() + 1 > 255) name.resize(255 - suffix.size() - 1);
+    temporary_ = path.parent_path() / ("." + name + suffix);
     slot_ = register_temporary(temporary_);
 }
 

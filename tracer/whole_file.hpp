@@ -13,8 +13,8 @@
 
 namespace hexant::tracer {
 
-// A temporary file being written: named beside `path` (".NAME.partial",
-// the folder created), registered for removal on a signal, and removed
+// A temporary file being written: named beside `path` (".NAME.PID.partial",
+// the folder created; NAME cut to fit 255 bytes), registered for removal on a signal, and removed
 // when the object goes away unless commit() renamed it over `path`.
 class TemporaryFile {
   public:

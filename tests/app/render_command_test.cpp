@@ -130,6 +130,21 @@ TEST_CASE("render reports bad requests clearly and writes nothing", "[app][rende
     e.str("");
     CHECK(run_render(a, o, e) != 0);
     CHECK(e.str().find("movie.mp4: an animation is written as .gif") != std::string::npos);
+    // Outputs that would overwrite each other, and a GIF too wide for its
+    // 16-bit sides, are refused before the first frame too.
+    a = arguments_for(scene, out);
+    a.output = (out / "f_##.png").string();
+    a.contact_sheet = (out / "f_01.png").string();
+    e.str("");
+    CHECK(run_render(a, o, e) != 0);
+    CHECK(e.str().find("f_01.png: --contact-sheet names frame 1's file") != std::string::npos);
+    a = arguments_for(scene, out);
+    a.scene.width = 70000;
+    a.scene.height = 1;
+    a.animation = (out / "wide.gif").string();
+    e.str("");
+    CHECK(run_render(a, o, e) != 0);
+    CHECK(e.str().find("a GIF is at most 65535 pixels a side") != std::string::npos);
     // A scene error names its place.
     const fs::path broken = scene_file("sphere { 0, 1 \n");
     a = arguments_for(broken, out);

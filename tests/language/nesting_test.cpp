@@ -6,6 +6,7 @@
 #include <string>
 
 #include "language/interpreter.hpp"
+#include "runtime/object.hpp"
 #include "runtime/time_function.hpp"
 
 using hexant::language::ParseOptions;
@@ -114,4 +115,22 @@ TEST_CASE("a function of clock built up too deep is an error where it is made, n
     // Just under the limit it reads (and hexant renders it, with a 1 MB
     // stack too: README "Nesting").
     CHECK(read(loop(hexant::runtime::kMaxTimeFunctionDepth - 10)) == "");
+}
+
+TEST_CASE("objects built up too deep are an error where they are made, not a crash",
+          "[language][nesting]") {
+    const auto loop = [](int n) {
+        return "#declare O = sphere { 0, 1 };\n#for (I, 1, " + std::to_string(n) +
+               ")\n  #declare O = union { object { O } };\n#end\nobject { O }\n";
+    };
+    // 15,000 levels overflowed the stack gathering the lights of the scene.
+    try {
+        hexant::language::parse_scene_text(loop(15000), "deep.pov", ParseOptions{});
+        FAIL("read without an error");
+    } catch (const SceneError& e) {
+        INFO(e.formatted());
+        CHECK(e.message().find("objects nested more than 10000 deep") != std::string::npos);
+        CHECK(e.formatted().find("deep.pov:3:") != std::string::npos);
+    }
+    CHECK(read(loop(hexant::runtime::kMaxObjectDepth - 10)) == "");
 }

@@ -87,6 +87,23 @@ TEST_CASE("a write that cannot finish fails with its reason and leaves nothing",
     fs::remove_all(folder);
 }
 
+TEST_CASE("a file name as long as the system allows is written, its temporary cut to fit",
+          "[tracer][files]") {
+    const fs::path folder = fs::temp_directory_path() / "hexant_long_name_test";
+    fs::remove_all(folder);
+    const fs::path file = folder / (std::string(246, 'b') + ".png");  // 250 bytes
+    tr::write_image(noise(8), file);
+    CHECK(fs::file_size(file) > 0);
+    tr::write_text_file(folder / (std::string(250, 's') + ".txt"), "whole");
+    std::size_t entries = 0;
+    for (const auto& entry : fs::directory_iterator(folder)) {
+        CHECK(entry.path().filename().string().find(".partial") == std::string::npos);
+        ++entries;
+    }
+    CHECK(entries == 2);
+    fs::remove_all(folder);
+}
+
 TEST_CASE("a run ended by a signal removes the temporaries it was writing", "[tracer][files]") {
     const fs::path folder = fs::temp_directory_path() / "hexant_signal_test";
     fs::remove_all(folder);

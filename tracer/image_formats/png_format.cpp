@@ -37,7 +37,8 @@ void write_png(const fs::path& file, int width, int height, const void* pixels) 
     png_image_free(&image);
     if (ok) return;
     if (message.empty()) message = "libpng failed";
-    if (system_error != 0) message += std::string(": ") + std::strerror(system_error);
+    const std::string reason = system_error != 0 ? std::strerror(system_error) : "";
+    if (!reason.empty() && message.find(reason) == std::string::npos) message += ": " + reason;
     throw std::runtime_error(message);
 }
 
