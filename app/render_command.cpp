@@ -48,7 +48,10 @@ std::vector<int> frame_selection(const std::optional<std::string>& text,
             throw std::runtime_error("--frames: expected A:B, A or a comma list of those, got '" +
                                      *text + "'");
         }
-        if (first > last || first < a.initial_frame || last > a.final_frame)
+        if (first > last)
+            throw std::runtime_error("--frames " + *text + ": " + std::to_string(first) + ":" +
+                                     std::to_string(last) + " runs backwards (A:B needs A <= B)");
+        if (first < a.initial_frame || last > a.final_frame)
             throw std::runtime_error("--frames " + *text + ": the animation has frames " +
                                      std::to_string(a.initial_frame) + " to " +
                                      std::to_string(a.final_frame));
@@ -241,6 +244,14 @@ int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err
         const std::string pattern =
             args.output ? *args.output
                         : "out/" + resolved.scene.stem().string() + "/frame_####.png";
+        // One run of '#' is the frame number; a second would stay in the
+        // name as it is, which no one means.
+        if (const auto first = pattern.find('#'); first != std::string::npos) {
+            const auto after = pattern.find_first_not_of('#', first);
+            if (after != std::string::npos && pattern.find('#', after) != std::string::npos)
+                throw std::runtime_error("-o " + pattern +
+                                         ": one run of # is the frame number; this has more");
+        }
         if (selected.size() > 1 && pattern.find('#') == std::string::npos)
             throw std::runtime_error("-o " + pattern +
                                      ": several frames need a #### in the name for the number");

@@ -31,7 +31,16 @@ std::string SceneError::formatted() const {
     std::ostringstream out;
     out << header(places_.front()) << ": error: " << message_ << "\n";
     caret(out, places_.front());
+    // A runaway recursion reaches its error through thousands of calls: the
+    // first and last few say where it went; the middle repeats them.
+    constexpr std::size_t kShown = 10;
     for (std::size_t i = 1; i < places_.size(); ++i) {
+        if (places_.size() > 2 * kShown + 1 && i == kShown + 1) {
+            const std::size_t skipped = places_.size() - 1 - 2 * kShown;
+            out << "... " << skipped << " more places like these ...\n";
+            i += skipped - 1;
+            continue;
+        }
         out << header(places_[i]) << ": note: " << places_[i].note << "\n";
         caret(out, places_[i]);
     }

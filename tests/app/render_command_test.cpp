@@ -99,6 +99,10 @@ TEST_CASE("render takes a list of frames", "[app][render]") {
         CHECK(run_render(a, o, e) != 0);
         CHECK(e.str().find("--frames") != std::string::npos);
     }
+    a.frames = "3:1";
+    e.str("");
+    CHECK(run_render(a, o, e) != 0);
+    CHECK(e.str().find("3:1 runs backwards") != std::string::npos);
 }
 
 TEST_CASE("render reports bad requests clearly and writes nothing", "[app][render]") {
@@ -114,6 +118,10 @@ TEST_CASE("render reports bad requests clearly and writes nothing", "[app][rende
     e.str("");
     CHECK(run_render(a, o, e) != 0);
     CHECK(e.str().find("####") != std::string::npos);
+    a.output = (out / "a_##_b_####.png").string();
+    e.str("");
+    CHECK(run_render(a, o, e) != 0);
+    CHECK(e.str().find("one run of # is the frame number") != std::string::npos);
     a = arguments_for(scene, out);
     a.mode = "fast";
     e.str("");

@@ -131,6 +131,15 @@ TEST_CASE("include and macro depths stop at their limits", "[limits]") {
     const SceneError m = error_of("#macro R(N) R(N + 1) #end\nR(0)\n", options);
     CHECK(contains(m, "nested more than 10 deep"));
     CHECK(contains(m, "--max-macro-depth"));
+    // The report shows the first and last ten calls, not all of them.
+    options.limits.macro_depth = 60;
+    const std::string report =
+        error_of("#macro R(N) R(N + 1) #end\nR(0)\n", options).formatted();
+    CHECK(report.find("... 40 more places like these ...") != std::string::npos);
+    std::size_t notes = 0;
+    for (auto at = report.find(": note:"); at != std::string::npos; at = report.find(": note:", at + 1))
+        ++notes;
+    CHECK(notes == 20);
 }
 
 TEST_CASE("running out of memory while reading is an error at the place", "[limits]") {
