@@ -102,6 +102,8 @@ HEXANT_SHAPE_KEYWORD(kw_prism);
             Interpreter::fail(in.position(), e.what());           \
         } catch (const runtime::TimeFunctionTooDeep& e) {         \
             Interpreter::fail(in.position(), e.what());           \
+        } catch (const runtime::TransformTooLong& e) {            \
+            Interpreter::fail(in.position(), e.what());           \
         } catch (const std::bad_alloc&) {                         \
             Interpreter::fail(in.position(), kOutOfMemory);       \
         }                                                         \

@@ -1,5 +1,7 @@
 #include "runtime/transform.hpp"
 
+#include <string>
+
 #include <cmath>
 #include <stdexcept>
 
@@ -66,8 +68,41 @@ glm::dmat4 TransformStep::matrix_at(double t) const {
     throw std::logic_error("a deformation has no matrix");
 }
 
+TransformTooLong::TransformTooLong()
+    : std::runtime_error("a transform of more than " + std::to_string(kMaxTransformSteps) +
+                         " steps that depend on clock (built up in a loop?)") {}
+
+namespace {
+
+bool is_constant_affine(const TransformStep& step) {
+    return !step.is_deformation() && !step.depends_on_time();
+}
+
+}  // namespace
+
+void Transform::append(TransformStep step) {
+    if (steps_.size() >= kListedSteps && is_constant_affine(step) &&
+        is_constant_affine(steps_.back())) {
+        // One matrix: the new step after the old (column vectors, glm).
+        const glm::dmat4 m = step.matrix_at(0.0) * steps_.back().matrix_at(0.0);
+        TransformStep joined;
+        joined.kind = TransformKind::Matrix;
+        for (int i = 0; i < 4; ++i)
+            for (int j = 0; j < 3; ++j) joined.matrix[i * 3 + j] = m[i][j];
+        steps_.back() = std::move(joined);
+        return;
+    }
+    if (steps_.size() >= kMaxTransformSteps) throw TransformTooLong();
+    steps_.push_back(std::move(step));
+}
+
 void Transform::append(const Transform& other) {
-    steps_.insert(steps_.end(), other.steps_.begin(), other.steps_.end());
+    if (&other == this) {
+        const Transform copy = other;
+        append(copy);
+        return;
+    }
+    for (const TransformStep& step : other.steps_) append(step);
 }
 
 Transform Transform::inverse() const {

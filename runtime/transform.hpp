@@ -6,6 +6,7 @@
 
 #include <array>
 #include <memory>
+#include <stdexcept>
 #include <vector>
 
 #include <glm/mat4x4.hpp>
@@ -74,9 +75,25 @@ struct TransformStep {
     glm::dmat4 matrix_at(double t) const;
 };
 
+// A transform keeps the steps as written, up to kListedSteps of them (what
+// `hexant dump` lists, and what its time functions need); past that, a
+// constant step joins a constant step before it as one matrix, as POV-Ray
+// keeps every transform as one matrix: a turtle's transform built up in a
+// loop, `#declare T = transform { T translate ... }`, then costs the same
+// at every turn (its steps were copied each turn: 10^4 turns took 11 s).
+// Steps that depend on time cannot join; a transform of more than
+// kMaxTransformSteps steps is refused (TransformTooLong) where it is made
+// (such a chain is still copied at each turn: 2,000 turns take about half
+// a second, 10,000 took 12 s; and every ray would evaluate each step).
+inline constexpr std::size_t kListedSteps = 16;
+inline constexpr std::size_t kMaxTransformSteps = 2000;
+struct TransformTooLong : std::runtime_error {
+    TransformTooLong();
+};
+
 class Transform {
 public:
-    void append(TransformStep step) { steps_.push_back(std::move(step)); }
+    void append(TransformStep step);
     void append(const Transform& other);
     // The transform that undoes this one: the steps reversed, each inverted.
     Transform inverse() const;

@@ -9,6 +9,9 @@
 #include <sstream>
 
 #include "language/interpreter.hpp"
+#include "runtime/transform.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
 
 using hexant::language::ParseOptions;
 using hexant::language::SceneError;
@@ -173,4 +176,36 @@ TEST_CASE("running out of memory while reading is an error at the place", "[limi
     REQUIRE(waitpid(child, &status, 0) == child);
     REQUIRE(WIFEXITED(status));
     CHECK(WEXITSTATUS(status) == 0);
+}
+
+TEST_CASE("a transform built up in a loop costs the same at every turn, or stops at its limit",
+          "[limits]") {
+    // Constant steps past the listed ones join as one matrix: 20,000 turns
+    // keep a short transform (each turn copied all of it before: quadratic).
+    const std::string turtle =
+        "#declare T = transform { translate 0 };\n"
+        "#for (I, 1, 20000) #declare T = transform { T translate <0.0001, 0, 0> rotate y * 0.01 }; #end\n"
+        "sphere { 0, 1 transform T }\n";
+    ParseOptions options;
+    const auto scene = hexant::language::parse_scene_text(turtle, "turtle.pov", options);
+    const auto& steps = scene.objects.front()->transform.steps();
+    CHECK(steps.size() <= hexant::runtime::kListedSteps);
+    // The same map as the steps one by one: 20,000 turns of 0.01 degrees
+    // about y, each after a step along x.
+    glm::dmat4 expected(1.0);
+    for (int i = 0; i < 20000; ++i) {
+        expected = glm::translate(glm::dmat4(1.0), glm::dvec3(0.0001, 0, 0)) * expected;
+        expected = glm::rotate(glm::dmat4(1.0), glm::radians(0.01), glm::dvec3(0, 1, 0)) * expected;
+    }
+    const glm::dmat4 got = scene.objects.front()->transform.matrix_at(0.0);
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) CHECK(got[i][j] == Approx(expected[i][j]).margin(1e-9));
+    // Steps of clock cannot join: past the limit, an error at the place.
+    options.animation.final_frame = 4;
+    const SceneError e = error_of(
+        "#declare T = transform { translate 0 };\n"
+        "#for (I, 1, 3000) #declare T = transform { T translate <clock * 0.0001, 0, 0> }; #end\n",
+        options);
+    CHECK(contains(e, "a transform of more than 2000 steps that depend on clock"));
+    CHECK(e.places().front().line == 2);
 }
