@@ -87,7 +87,8 @@ HEXANT_SHAPE_KEYWORD(kw_torus);
 HEXANT_SHAPE_KEYWORD(kw_prism);
 #undef HEXANT_SHAPE_KEYWORD
 
-// A ValueError from the value operations becomes an error at the rule's place.
+// A ValueError from the value operations, or a runtime::LimitError,
+// becomes an error at the rule's place.
 #define HEXANT_ACTION(rule) \
     template <>             \
     struct action<g::rule>
@@ -100,9 +101,7 @@ HEXANT_SHAPE_KEYWORD(kw_prism);
             throw unsupported_use(e.what(), in.position());       \
         } catch (const ValueError& e) {                           \
             Interpreter::fail(in.position(), e.what());           \
-        } catch (const runtime::TimeFunctionTooDeep& e) {         \
-            Interpreter::fail(in.position(), e.what());           \
-        } catch (const runtime::TransformTooLong& e) {            \
+        } catch (const runtime::LimitError& e) {                  \
             Interpreter::fail(in.position(), e.what());           \
         } catch (const std::bad_alloc&) {                         \
             Interpreter::fail(in.position(), kOutOfMemory);       \

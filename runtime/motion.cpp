@@ -299,33 +299,12 @@ struct MotionEvaluator {
     }
 };
 
-namespace {
-
-// 0 * g, the product the language makes for a vector's zero components
-// times a function of time (`rotate y * 360 * clock` is <0 * f, f, 0 * f>).
-bool is_zero_product(const TimeFunction& f) {
-    const TimeFunction::Node* n = f.node();
-    if (!n || n->op != TimeOp::Multiply) return false;
-    const auto zero = [](const TimeFunction& a) { return a.is_constant() && a.constant() == 0.0; };
-    return zero(n->args[0]) || zero(n->args[1]);
-}
-
-}  // namespace
-
 Motion::Motion(const Transform& transform) {
     std::vector<TimeFunction> outputs;
     auto parameter = [&](const TimeFunction& f) {
         Parameter p;
         if (f.is_constant()) {
             p.constant = f.constant();
-        } else if (is_zero_product(f)) {
-            // 0 * g is 0 wherever g is finite, and the language has checked
-            // every transform's amounts finite over the animation's time
-            // (runtime/parameter_check.hpp): `rotate y * f` then turns about
-            // y alone, as `rotate <0, f, 0>` does, with one sine and cosine
-            // per placement instead of three, and the same matrix (a turn
-            // by a zero angle is the identity exactly).
-            p.constant = 0.0;
         } else {
             p.slot = static_cast<int>(outputs.size());
             outputs.push_back(f);

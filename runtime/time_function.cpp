@@ -66,7 +66,7 @@ TimeFunction::TimeFunction(double value) : value_(value) {}
 TimeFunction::TimeFunction(std::shared_ptr<const Node> node) : node_(std::move(node)) {}
 
 TimeFunctionTooDeep::TimeFunctionTooDeep()
-    : std::runtime_error("a function of clock nested more than " +
+    : LimitError("a function of clock nested more than " +
                          std::to_string(kMaxTimeFunctionDepth) +
                          " operations deep (built up step by step, in a loop?)") {}
 
@@ -101,6 +101,14 @@ TimeFunction TimeFunction::apply(TimeOp op, const TimeFunction& a) {
 TimeFunction TimeFunction::apply(TimeOp op, const TimeFunction& a, const TimeFunction& b) {
     if (a.is_constant() && b.is_constant())
         return TimeFunction(apply_op(op, a.constant(), b.constant()));
+    // 0 * g is 0: the language makes it for every zero component of a
+    // vector times a function of time (`rotate y * 360 * clock` is
+    // <0 * f, f, 0 * f>), and a zero is what the scene means there, a constant
+    // that costs no evaluation, not a function of time. (Where g is not
+    // finite POV-Ray's product is NaN; g's own uses are checked there.)
+    if (op == TimeOp::Multiply && ((a.is_constant() && a.constant() == 0.0) ||
+                                   (b.is_constant() && b.constant() == 0.0)))
+        return TimeFunction(0.0);
     auto node = std::make_shared<Node>();
     node->op = op;
     node->args[0] = a;

@@ -7,9 +7,10 @@
 #pragma once
 
 #include <array>
-#include <stdexcept>
 #include <memory>
 #include <string>
+
+#include "runtime/limit_error.hpp"
 
 namespace hexant::runtime {
 
@@ -117,7 +118,7 @@ struct TimeFunction::Node {
 // run out of stack: at this depth, reading, checking, dumping and rendering
 // a scene stay within a 1 MB stack (tried with ulimit -s 1024).
 inline constexpr int kMaxTimeFunctionDepth = 10000;
-struct TimeFunctionTooDeep : std::runtime_error {
+struct TimeFunctionTooDeep : LimitError {
     TimeFunctionTooDeep();
 };
 

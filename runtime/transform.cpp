@@ -69,7 +69,7 @@ glm::dmat4 TransformStep::matrix_at(double t) const {
 }
 
 TransformTooLong::TransformTooLong()
-    : std::runtime_error("a transform of more than " + std::to_string(kMaxTransformSteps) +
+    : LimitError("a transform of more than " + std::to_string(kMaxTransformSteps) +
                          " steps that depend on clock (built up in a loop?)") {}
 
 namespace {

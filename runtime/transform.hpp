@@ -11,6 +11,7 @@
 
 #include <glm/mat4x4.hpp>
 
+#include "runtime/limit_error.hpp"
 #include "runtime/vector_function.hpp"
 
 namespace hexant::runtime {
@@ -87,7 +88,7 @@ struct TransformStep {
 // a second, 10,000 took 12 s; and every ray would evaluate each step).
 inline constexpr std::size_t kListedSteps = 16;
 inline constexpr std::size_t kMaxTransformSteps = 2000;
-struct TransformTooLong : std::runtime_error {
+struct TransformTooLong : LimitError {
     TransformTooLong();
 };
 

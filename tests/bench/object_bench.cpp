@@ -106,8 +106,9 @@ const BenchVariant kVariants[] = {
     {"static", "rotate <20, 30, 40>"},
     {"moving", "translate <0.3, 0, 0> rotate <0, 360 * clock, 0> translate <0, 0.2 * clock, 0>"},
     {"orbit", "translate <5, 0, 0> rotate y * (37 + 1440 * clock) rotate <30, 0, -50>"},
-    // The same orbit written as a vector: `y * f` makes 0 * f in x and z,
-    // which Motion folds to 0 (motion.cpp), so the two rows should agree.
+    // The same orbit with its angles written as a vector. `y * f` above
+    // makes 0 * f in x and z, which time functions fold to 0
+    // (time_function.cpp), so the two rows should agree.
     {"orbit-vec", "translate <5, 0, 0> rotate <0, 37 + 1440 * clock, 0> rotate <30, 0, -50>"},
     {"deformed", "twist <0, 1, 0>, 180"},
 };

@@ -85,6 +85,17 @@ TEST_CASE("constant conditions pick their branch at once", "[time]") {
     CHECK(TimeFunction::apply(TimeOp::Select, -1.0, 3.0, t).constant() == 3.0);
 }
 
+TEST_CASE("a product with a constant zero is the constant zero", "[time]") {
+    // `y * clock` is <0 * clock, clock, 0 * clock>: its zero components are
+    // no functions of time (a motion then evaluates one angle, not three).
+    const TimeFunction f = TimeFunction::clock() + 1.0;
+    CHECK((TimeFunction(0.0) * f).is_constant());
+    CHECK((f * TimeFunction(0.0)).is_constant());
+    CHECK((f * TimeFunction(0.0)).constant() == 0.0);
+    CHECK_FALSE((TimeFunction(1e-300) * f).is_constant());
+    CHECK_FALSE((TimeFunction(0.0) / f).is_constant());  // 0 / 0 is not 0
+}
+
 TEST_CASE("time functions read back as text", "[time]") {
     const TimeFunction f = TimeFunction::clock() * 360.0;
     CHECK(f.to_string().find("clock") != std::string::npos);
