@@ -46,37 +46,45 @@ const std::string& Interpreter::add_source(const std::string& name, std::string 
     return sources_.back().second;
 }
 
+namespace {
+
+// The newest source of that name (an include read twice is kept twice).
+const std::string* newest_source(const std::deque<std::pair<std::string, std::string>>& sources,
+                                 const std::string& name) {
+    for (auto it = sources.rbegin(); it != sources.rend(); ++it)
+        if (it->first == name) return &it->second;
+    return nullptr;
+}
+
+// The line of `text` that starts at `begin`, without its end of line.
+std::string line_from(const std::string& text, std::size_t begin) {
+    std::size_t end = begin;
+    while (end < text.size() && text[end] != '\n' && text[end] != '\r') ++end;
+    return text.substr(begin, end - begin);
+}
+
+}  // namespace
+
 ErrorPlace Interpreter::place(const p::position& position, std::string note) const {
     ErrorPlace place{position.source, position.line, position.column, {}, std::move(note)};
-    // The newest source of that name holds the position.
-    for (auto it = sources_.rbegin(); it != sources_.rend(); ++it) {
-        if (it->first != position.source) continue;
-        const std::string& text = it->second;
-        std::size_t begin = std::min(position.byte, text.size());
-        while (begin > 0 && text[begin - 1] != '\n') --begin;
-        std::size_t end = begin;
-        while (end < text.size() && text[end] != '\n' && text[end] != '\r') ++end;
-        place.source_line = text.substr(begin, end - begin);
-        break;
+    if (const std::string* text = newest_source(sources_, position.source)) {
+        std::size_t begin = std::min(position.byte, text->size());
+        while (begin > 0 && (*text)[begin - 1] != '\n') --begin;
+        place.source_line = line_from(*text, begin);
     }
     return place;
 }
 
 ErrorPlace Interpreter::place(const runtime::SourcePlace& where, std::string note) const {
     ErrorPlace place{where.file, where.line, where.column, {}, std::move(note)};
-    for (auto it = sources_.rbegin(); it != sources_.rend(); ++it) {
-        if (it->first != where.file) continue;
-        const std::string& text = it->second;
+    if (const std::string* text = newest_source(sources_, where.file)) {
+        // Found by its number: a record keeps its line, not its byte.
         std::size_t begin = 0;
         for (std::size_t line = 1; line < where.line && begin != std::string::npos; ++line) {
-            begin = text.find('\n', begin);
+            begin = text->find('\n', begin);
             if (begin != std::string::npos) ++begin;
         }
-        if (begin == std::string::npos) break;
-        std::size_t end = begin;
-        while (end < text.size() && text[end] != '\n' && text[end] != '\r') ++end;
-        place.source_line = text.substr(begin, end - begin);
-        break;
+        if (begin != std::string::npos) place.source_line = line_from(*text, begin);
     }
     return place;
 }
