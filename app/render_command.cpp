@@ -234,6 +234,40 @@ void add_render_arguments(CLI::App& command, RenderArguments& a) {
     add_hierarchy_arguments(command, a.hierarchy);
 }
 
+namespace {
+
+// Every name the run will write, checked before any frame is rendered: the
+// frame pattern (frame_path's rules), each name's format, a GIF's 16-bit
+// sides, and no output named as another (a contact sheet named as a frame
+// would replace it; a sheet and an animation never share a name: .png or
+// .exr against .gif).
+void check_outputs(const RenderArguments& args, const std::string& pattern,
+                   const std::vector<int>& selected, const runtime::Animation& animation) {
+    tracer::check_frame_pattern(pattern, selected.size());
+    tracer::check_image_name(pattern);
+    if (args.contact_sheet) tracer::check_image_name(*args.contact_sheet);
+    if (args.animation) tracer::check_animation_name(*args.animation);
+    if (args.animation && std::max(animation.width, animation.height) > tracer::kGifMaxSide)
+        throw std::runtime_error(*args.animation + ": a GIF is at most " +
+                                 std::to_string(tracer::kGifMaxSide) +
+                                 " pixels a side; the frames are " + std::to_string(animation.width) +
+                                 " by " + std::to_string(animation.height));
+    const auto same = [](const std::string& a, const std::string& b) {
+        return std::filesystem::absolute(a).lexically_normal() ==
+               std::filesystem::absolute(b).lexically_normal();
+    };
+    std::vector<std::pair<std::string, std::string>> extra;
+    if (args.contact_sheet) extra.emplace_back("--contact-sheet", *args.contact_sheet);
+    if (args.animation) extra.emplace_back("--animation", *args.animation);
+    for (const auto& [flag, name] : extra)
+        for (const int frame : selected)
+            if (same(name, tracer::frame_path(pattern, frame)))
+                throw std::runtime_error(name + ": " + flag + " names frame " +
+                                         std::to_string(frame) + "'s file");
+}
+
+}  // namespace
+
 int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err) {
     return run_reporting_errors(err, [&] {
         ResolvedScene resolved = resolve(args.scene);
@@ -244,45 +278,7 @@ int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err
         const std::string pattern =
             args.output ? *args.output
                         : "out/" + resolved.scene.stem().string() + "/frame_####.png";
-        // One run of '#' is the frame number; a second would stay in the
-        // name as it is, which no one means.
-        if (const auto first = pattern.find('#'); first != std::string::npos) {
-            const auto after = pattern.find_first_not_of('#', first);
-            if (after != std::string::npos && pattern.find('#', after) != std::string::npos)
-                throw std::runtime_error("-o " + pattern +
-                                         ": one run of # is the frame number; this has more");
-        }
-        if (selected.size() > 1 && pattern.find('#') == std::string::npos)
-            throw std::runtime_error("-o " + pattern +
-                                     ": several frames need a #### in the name for the number");
-        // A name of no format is refused before any frame is rendered.
-        tracer::check_image_name(pattern);
-        if (args.contact_sheet) tracer::check_image_name(*args.contact_sheet);
-        if (args.animation) tracer::check_animation_name(*args.animation);
-        if (args.animation && std::max(scene.animation.width, scene.animation.height) >
-                                  tracer::kGifMaxSide)
-            throw std::runtime_error(*args.animation + ": a GIF is at most " +
-                                     std::to_string(tracer::kGifMaxSide) +
-                                     " pixels a side; the frames are " +
-                                     std::to_string(scene.animation.width) + " by " +
-                                     std::to_string(scene.animation.height));
-        // No output may be written over another (a contact sheet named as a
-        // frame would replace that frame; a sheet and an animation never
-        // share a name: .png or .exr against .gif).
-        {
-            const auto same = [](const std::string& a, const std::string& b) {
-                return std::filesystem::absolute(a).lexically_normal() ==
-                       std::filesystem::absolute(b).lexically_normal();
-            };
-            std::vector<std::pair<std::string, std::string>> extra;
-            if (args.contact_sheet) extra.emplace_back("--contact-sheet", *args.contact_sheet);
-            if (args.animation) extra.emplace_back("--animation", *args.animation);
-            for (const auto& [flag, name] : extra)
-                for (const int frame : selected)
-                    if (same(name, tracer::frame_path(pattern, frame)))
-                        throw std::runtime_error(name + ": " + flag + " names frame " +
-                                                 std::to_string(frame) + "'s file");
-        }
+        check_outputs(args, pattern, selected, scene.animation);
         const bool keep_frames = args.contact_sheet || args.animation;
         std::vector<tracer::Image> frames;
         std::vector<std::pair<std::string, Counters>> columns;

@@ -1,6 +1,7 @@
 #include "tracer/image_format.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <array>
 #include <cerrno>
 #include <cstring>
@@ -21,10 +22,15 @@ constexpr std::array<const ImageFormat*, 2> kFormats{&kPngFormat, &kExrFormat};
 
 }  // namespace
 
-const ImageFormat* image_format_for(const fs::path& path) {
+std::string lower_case_extension(const fs::path& path) {
     std::string ext = path.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext;
+}
+
+const ImageFormat* image_format_for(const fs::path& path) {
+    const std::string ext = lower_case_extension(path);
     for (const ImageFormat* format : kFormats)
         if (ext == format->extension) return format;
     return nullptr;

@@ -35,6 +35,9 @@ struct ImageFormat {
     bool (*recognizes)(const unsigned char* head, std::size_t bytes);  // the file's magic
 };
 
+// A name's extension in lower case (".PNG" and ".png" ask for one format).
+std::string lower_case_extension(const std::filesystem::path& path);
+
 // The format a file name asks for, by its extension (any case); nullptr for
 // an unknown one.
 const ImageFormat* image_format_for(const std::filesystem::path& path);

@@ -24,6 +24,19 @@ std::string frame_path(const std::string& pattern, int frame) {
     return pattern.substr(0, first) + number + pattern.substr(last);
 }
 
+void check_frame_pattern(const std::string& pattern, std::size_t frames) {
+    const auto first = pattern.find('#');
+    if (first == std::string::npos) {
+        if (frames > 1)
+            throw std::runtime_error("-o " + pattern +
+                                     ": several frames need a #### in the name for the number");
+        return;
+    }
+    const auto after = pattern.find_first_not_of('#', first);
+    if (after != std::string::npos && pattern.find('#', after) != std::string::npos)
+        throw std::runtime_error("-o " + pattern + ": one run of # is the frame number; this has more");
+}
+
 unsigned char to_srgb8(double linear) {
     const double c = std::clamp(linear, 0.0, 1.0);
     const double s = c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
@@ -72,10 +85,7 @@ const ImageFormat& check_image_name(const fs::path& path) {
 }
 
 void check_animation_name(const fs::path& path) {
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    if (ext != ".gif") throw std::runtime_error(path.string() + ": an animation is written as .gif");
+    if (lower_case_extension(path) != ".gif") throw std::runtime_error(path.string() + ": an animation is written as .gif");
 }
 
 void write_image(const Image& image, const fs::path& path) {
