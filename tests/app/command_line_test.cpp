@@ -23,6 +23,17 @@ fs::path write(const std::string& name, const std::string& text) {
     return path;
 }
 
+// The scene arguments a command line gives (after the scene's name).
+hexant::app::SceneArguments parse(const std::string& flags) {
+    CLI::App app;
+    hexant::app::SceneArguments arguments;
+    hexant::app::add_scene_arguments(app, arguments);
+    app.parse("scene.pov " + flags, false);
+    return arguments;
+}
+
+auto resolved(const std::string& flags) { return hexant::app::resolve(parse(flags)); }
+
 }  // namespace
 
 TEST_CASE("an .ini file sets POV-Ray's animation options and names the scene", "[app][ini]") {
@@ -123,13 +134,6 @@ TEST_CASE("bad .ini values and flags are errors naming the place", "[app][ini]")
 }
 
 TEST_CASE("the loop limit flag takes 1 to 10^12, never a wrapped -1", "[app]") {
-    const auto parse = [](const std::string& flags) {
-        CLI::App app;
-        hexant::app::SceneArguments arguments;
-        hexant::app::add_scene_arguments(app, arguments);
-        app.parse("scene.pov " + flags, false);
-        return arguments;
-    };
     CHECK(*parse("--max-loop-iterations 1000").max_loop_iterations == 1000);
     CHECK_THROWS(parse("--max-loop-iterations -1"));
     CHECK_THROWS(parse("--max-loop-iterations 0"));
@@ -138,17 +142,11 @@ TEST_CASE("the loop limit flag takes 1 to 10^12, never a wrapped -1", "[app]") {
 
 TEST_CASE("every limit has a flag, and frames and pixels are checked before any work",
           "[app][limits]") {
-    const auto parse = [](const std::string& flags) {
-        CLI::App app;
-        hexant::app::SceneArguments arguments;
-        hexant::app::add_scene_arguments(app, arguments);
-        app.parse("scene.pov " + flags, false);
-        return arguments;
-    };
-    const auto limits = hexant::app::resolve(parse(
-        "--max-iterations 7 --max-macro-depth 8 --max-include-depth 9 --max-string-length 10 "
-        "--max-array-memory 11 --max-frames 12 --max-pixels 130000 --max-loop-iterations 14"))
-                            .options.limits;
+    const auto limits =
+        resolved("--max-iterations 7 --max-macro-depth 8 --max-include-depth 9 "
+                 "--max-string-length 10 --max-array-memory 11 --max-frames 12 "
+                 "--max-pixels 130000 --max-loop-iterations 14")
+            .options.limits;
     CHECK(limits.total_iterations == 7);
     CHECK(limits.macro_depth == 8);
     CHECK(limits.include_depth == 9);
@@ -163,17 +161,17 @@ TEST_CASE("every limit has a flag, and frames and pixels are checked before any 
         CHECK_THROWS(parse(wrapped));
 
     // -W 100000 -H 100000 ended in std::bad_alloc; now it is refused by name.
-    REQUIRE_THROWS_WITH(hexant::app::resolve(parse("-W 100000 -H 100000")),
+    REQUIRE_THROWS_WITH(resolved("-W 100000 -H 100000"),
                         Catch::Contains("100000 by 100000 pixels") &&
                             Catch::Contains("--max-pixels"));
-    CHECK_NOTHROW(hexant::app::resolve(parse("-W 10000 -H 10000")));
-    CHECK_NOTHROW(hexant::app::resolve(parse("-W 100000 -H 100000 --max-pixels 10000000000")));
+    CHECK_NOTHROW(resolved("-W 10000 -H 10000"));
+    CHECK_NOTHROW(resolved("-W 100000 -H 100000 --max-pixels 10000000000"));
     // --frame-count 2147483647 overflowed an int loop over frames.
-    REQUIRE_THROWS_WITH(hexant::app::resolve(parse("--frame-count 2147483647")),
+    REQUIRE_THROWS_WITH(resolved("--frame-count 2147483647"),
                         Catch::Contains("more than 1000000 frames") &&
                             Catch::Contains("--max-frames"));
-    CHECK_THROWS(hexant::app::resolve(parse("--frame-count 13 --max-frames 12")));
-    CHECK_NOTHROW(hexant::app::resolve(parse("--frame-count 12 --max-frames 12")));
+    CHECK_THROWS(resolved("--frame-count 13 --max-frames 12"));
+    CHECK_NOTHROW(resolved("--frame-count 12 --max-frames 12"));
     // From an .ini file too: the whole range of int.
     const auto ini = write("frames.ini", "Initial_Frame=-2147483648\nFinal_Frame=2147483647\n");
     hexant::app::SceneArguments from_ini;
@@ -182,17 +180,10 @@ TEST_CASE("every limit has a flag, and frames and pixels are checked before any 
 }
 
 TEST_CASE("command-line numbers are finite: the clock and the shutter", "[app][parameters]") {
-    const auto parse = [](const std::string& flags) {
-        CLI::App app;
-        hexant::app::SceneArguments arguments;
-        hexant::app::add_scene_arguments(app, arguments);
-        app.parse("scene.pov " + flags, false);
-        return hexant::app::resolve(arguments);
-    };
-    CHECK_THROWS_WITH(parse("--clock nan:1"), Catch::Contains("finite"));
-    CHECK_THROWS_WITH(parse("--clock 0:inf --frame-count 2"), Catch::Contains("finite"));
-    CHECK_THROWS_WITH(parse("--clock nan"), Catch::Contains("finite"));
-    CHECK_THROWS_WITH(parse("--shutter nan"), Catch::Contains("[0, 1]"));
-    CHECK_THROWS_WITH(parse("--clock -1e308:1e308 --frame-count 2"), Catch::Contains("overflows"));
-    CHECK_NOTHROW(parse("--clock -1e300:1e300 --frame-count 2"));
+    CHECK_THROWS_WITH(resolved("--clock nan:1"), Catch::Contains("finite"));
+    CHECK_THROWS_WITH(resolved("--clock 0:inf --frame-count 2"), Catch::Contains("finite"));
+    CHECK_THROWS_WITH(resolved("--clock nan"), Catch::Contains("finite"));
+    CHECK_THROWS_WITH(resolved("--shutter nan"), Catch::Contains("[0, 1]"));
+    CHECK_THROWS_WITH(resolved("--clock -1e308:1e308 --frame-count 2"), Catch::Contains("overflows"));
+    CHECK_NOTHROW(resolved("--clock -1e300:1e300 --frame-count 2"));
 }

@@ -108,57 +108,42 @@ TEST_CASE("render takes a list of frames", "[app][render]") {
 TEST_CASE("render reports bad requests clearly and writes nothing", "[app][render]") {
     const fs::path scene = scene_file("sphere { 0, 1 }\n");
     const fs::path out = fresh_output(scene);
-    std::ostringstream o, e;
-    RenderArguments a = arguments_for(scene, out);
-    a.frames = "2:9";
-    CHECK(run_render(a, o, e) != 0);
-    CHECK(e.str().find("--frames 2:9") != std::string::npos);
-    a = arguments_for(scene, out);
-    a.output = (out / "same_name.png").string();
-    e.str("");
-    CHECK(run_render(a, o, e) != 0);
-    CHECK(e.str().find("####") != std::string::npos);
-    a.output = (out / "a_##_b_####.png").string();
-    e.str("");
-    CHECK(run_render(a, o, e) != 0);
-    CHECK(e.str().find("one run of # is the frame number") != std::string::npos);
-    a = arguments_for(scene, out);
-    a.mode = "fast";
-    e.str("");
-    CHECK(run_render(a, o, e) != 0);
-    CHECK(e.str().find("fast") != std::string::npos);
+    // A request changed from the defaults fails, its error saying `says`.
+    const auto refused = [&](const fs::path& file, const auto& change, const std::string& says) {
+        RenderArguments a = arguments_for(file, out);
+        change(a);
+        std::ostringstream o, e;
+        CHECK(run_render(a, o, e) != 0);
+        INFO(e.str());
+        CHECK(e.str().find(says) != std::string::npos);
+    };
+    refused(scene, [](RenderArguments& a) { a.frames = "2:9"; }, "--frames 2:9");
+    refused(scene, [&](RenderArguments& a) { a.output = (out / "same_name.png").string(); }, "####");
+    refused(scene, [&](RenderArguments& a) { a.output = (out / "a_##_b_####.png").string(); },
+            "one run of # is the frame number");
+    refused(scene, [](RenderArguments& a) { a.mode = "fast"; }, "fast");
     // A name of no image format is refused before the first frame.
-    a = arguments_for(scene, out);
-    a.output = (out / "f_##.tif").string();
-    e.str("");
-    CHECK(run_render(a, o, e) != 0);
-    CHECK(e.str().find("f_##.tif: no image format") != std::string::npos);
-    a = arguments_for(scene, out);
-    a.animation = (out / "movie.mp4").string();
-    e.str("");
-    CHECK(run_render(a, o, e) != 0);
-    CHECK(e.str().find("movie.mp4: an animation is written as .gif") != std::string::npos);
+    refused(scene, [&](RenderArguments& a) { a.output = (out / "f_##.tif").string(); },
+            "f_##.tif: no image format");
+    refused(scene, [&](RenderArguments& a) { a.animation = (out / "movie.mp4").string(); },
+            "movie.mp4: an animation is written as .gif");
     // Outputs that would overwrite each other, and a GIF too wide for its
     // 16-bit sides, are refused before the first frame too.
-    a = arguments_for(scene, out);
-    a.output = (out / "f_##.png").string();
-    a.contact_sheet = (out / "f_01.png").string();
-    e.str("");
-    CHECK(run_render(a, o, e) != 0);
-    CHECK(e.str().find("f_01.png: --contact-sheet names frame 1's file") != std::string::npos);
-    a = arguments_for(scene, out);
-    a.scene.width = 70000;
-    a.scene.height = 1;
-    a.animation = (out / "wide.gif").string();
-    e.str("");
-    CHECK(run_render(a, o, e) != 0);
-    CHECK(e.str().find("a GIF is at most 65535 pixels a side") != std::string::npos);
+    refused(scene,
+            [&](RenderArguments& a) {
+                a.output = (out / "f_##.png").string();
+                a.contact_sheet = (out / "f_01.png").string();
+            },
+            "f_01.png: --contact-sheet names frame 1's file");
+    refused(scene,
+            [&](RenderArguments& a) {
+                a.scene.width = 70000;
+                a.scene.height = 1;
+                a.animation = (out / "wide.gif").string();
+            },
+            "a GIF is at most 65535 pixels a side");
     // A scene error names its place.
-    const fs::path broken = scene_file("sphere { 0, 1 \n");
-    a = arguments_for(broken, out);
-    e.str("");
-    CHECK(run_render(a, o, e) != 0);
-    CHECK(e.str().find("scene.pov:") != std::string::npos);
+    refused(scene_file("sphere { 0, 1 \n"), [](RenderArguments&) {}, "scene.pov:");
     CHECK_FALSE(fs::exists(out));
 }
 

@@ -10,11 +10,13 @@
 #include <sstream>
 
 #include "language/interpreter.hpp"
+#include "scene_text.hpp"
 
 namespace fs = std::filesystem;
 using hexant::language::ParseOptions;
 using hexant::language::SceneError;
 using hexant::runtime::SceneDescription;
+using hexant::test::error_of;
 
 namespace {
 
@@ -33,18 +35,6 @@ Run run(const std::string& text, ParseOptions options = {}) {
 
 std::string debug(const std::string& text, ParseOptions options = {}) {
     return run(text, options).debug;
-}
-
-SceneError error_of(const std::string& text, ParseOptions options = {}) {
-    std::ostringstream messages;
-    options.messages = &messages;
-    try {
-        hexant::language::parse_scene_text(text, "test.pov", options);
-    } catch (const SceneError& e) {
-        return e;
-    }
-    FAIL("expected an error");
-    throw;
 }
 
 ParseOptions animation() {

@@ -10,34 +10,16 @@
 
 #include "language/interpreter.hpp"
 #include "runtime/transform.hpp"
+#include "scene_text.hpp"
 
 #include <glm/gtc/matrix_transform.hpp>
 
 using hexant::language::ParseOptions;
 using hexant::language::SceneError;
+using hexant::test::error_of;
+using hexant::test::reads;
 
 namespace {
-
-// The error of `text`, or a failed test when it reads.
-SceneError error_of(const std::string& text, const ParseOptions& given) {
-    ParseOptions options = given;
-    std::ostringstream messages;
-    options.messages = &messages;
-    try {
-        hexant::language::parse_scene_text(text, "limits.pov", options);
-    } catch (const SceneError& e) {
-        return e;
-    }
-    FAIL("expected an error");
-    throw;
-}
-
-void reads(const std::string& text, const ParseOptions& given) {
-    ParseOptions options = given;
-    std::ostringstream messages;
-    options.messages = &messages;
-    CHECK_NOTHROW(hexant::language::parse_scene_text(text, "limits.pov", options));
-}
 
 bool contains(const SceneError& e, const std::string& part) {
     return e.message().find(part) != std::string::npos;

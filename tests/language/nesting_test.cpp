@@ -8,6 +8,7 @@
 #include "language/interpreter.hpp"
 #include "runtime/object.hpp"
 #include "runtime/time_function.hpp"
+#include "scene_text.hpp"
 
 using hexant::language::ParseOptions;
 using hexant::language::SceneError;
@@ -21,19 +22,17 @@ std::string repeat(const std::string& s, int n) {
     return out;
 }
 
-// Reads the scene (as an animation of 4 frames: clock runs); returns the
-// error's message, or "" when it reads.
-std::string read(const std::string& text) {
-    std::ostringstream messages;
+// An animation of 4 frames: clock runs.
+ParseOptions animation() {
     ParseOptions options;
-    options.messages = &messages;
     options.animation.final_frame = 4;
-    try {
-        hexant::language::parse_scene_text(text, "deep.pov", options);
-    } catch (const SceneError& e) {
-        return e.message();
-    }
-    return "";
+    return options;
+}
+
+// Reads the scene; returns the error's message, or "" when it reads.
+std::string read(const std::string& text) {
+    const auto e = hexant::test::read_error(text, animation(), "deep.pov");
+    return e ? e->message() : "";
 }
 
 struct Deep {
@@ -102,16 +101,10 @@ TEST_CASE("a function of clock built up too deep is an error where it is made, n
     };
     // Freeing, compiling or printing 300,000 nested operations overflowed
     // the stack; the limit stops it at the expression, its line named.
-    ParseOptions options;
-    options.animation.final_frame = 4;
-    try {
-        hexant::language::parse_scene_text(loop(300000), "deep.pov", options);
-        FAIL("read without an error");
-    } catch (const SceneError& e) {
-        INFO(e.formatted());
-        CHECK(e.message().find("nested more than 10000 operations deep") != std::string::npos);
-        CHECK(e.formatted().find("deep.pov:3:") != std::string::npos);
-    }
+    const SceneError e = hexant::test::error_of(loop(300000), animation(), "deep.pov");
+    INFO(e.formatted());
+    CHECK(e.message().find("nested more than 10000 operations deep") != std::string::npos);
+    CHECK(e.formatted().find("deep.pov:3:") != std::string::npos);
     // Just under the limit it reads (and hexant renders it, with a 1 MB
     // stack too: README "Nesting").
     CHECK(read(loop(hexant::runtime::kMaxTimeFunctionDepth - 10)) == "");
@@ -124,13 +117,9 @@ TEST_CASE("objects built up too deep are an error where they are made, not a cra
                ")\n  #declare O = union { object { O } };\n#end\nobject { O }\n";
     };
     // 15,000 levels overflowed the stack gathering the lights of the scene.
-    try {
-        hexant::language::parse_scene_text(loop(15000), "deep.pov", ParseOptions{});
-        FAIL("read without an error");
-    } catch (const SceneError& e) {
-        INFO(e.formatted());
-        CHECK(e.message().find("objects nested more than 10000 deep") != std::string::npos);
-        CHECK(e.formatted().find("deep.pov:3:") != std::string::npos);
-    }
+    const SceneError e = hexant::test::error_of(loop(15000), {}, "deep.pov");
+    INFO(e.formatted());
+    CHECK(e.message().find("objects nested more than 10000 deep") != std::string::npos);
+    CHECK(e.formatted().find("deep.pov:3:") != std::string::npos);
     CHECK(read(loop(hexant::runtime::kMaxObjectDepth - 10)) == "");
 }

@@ -6,9 +6,11 @@
 #include <sstream>
 
 #include "language/interpreter.hpp"
+#include "scene_text.hpp"
 
 using hexant::language::ParseOptions;
 using hexant::language::SceneError;
+using hexant::test::read_error;
 
 namespace {
 
@@ -18,21 +20,10 @@ ParseOptions animation() {
     return options;
 }
 
-std::optional<SceneError> error_of(const std::string& text, ParseOptions options = {}) {
-    std::ostringstream messages;
-    options.messages = &messages;
-    try {
-        hexant::language::parse_scene_text(text, "params.pov", options);
-    } catch (const SceneError& e) {
-        return e;
-    }
-    return std::nullopt;
-}
-
 // The message of the error `text` gives, at line:column.
 std::string message_at(const std::string& text, std::size_t line, std::size_t column,
                        ParseOptions options = {}) {
-    const auto e = error_of(text, options);
+    const auto e = read_error(text, options);
     REQUIRE(e);
     INFO(e->formatted());
     CHECK(e->places().front().line == line);
@@ -64,7 +55,7 @@ TEST_CASE("NaN, infinite and singular transforms are errors", "[parameters]") {
     CHECK_THAT(message_at("sphere { 0, 1 scale 1e200 scale 1e200 }", 1, 1),
                Contains("transform is infinite"));
     // scale 0 stays POV-Ray's warning and 1.
-    CHECK_FALSE(error_of("sphere { 0, 1 scale <0, 1, 1> }"));
+    CHECK_FALSE(read_error("sphere { 0, 1 scale <0, 1, 1> }"));
 }
 
 TEST_CASE("NaN and infinite colours, finishes and lights are errors", "[parameters]") {
@@ -106,19 +97,19 @@ TEST_CASE("a parameter of clock is checked over the animation's time, at the fir
                Contains("translate is infinite at clock = 0.25"));
     // Outside the animation's time it is no error: clock runs 0 to 1.1 here (the
     // last frame's shutter closes at 1.1).
-    CHECK_FALSE(error_of("sphere { 0, sqrt(2 - clock) }", animation()));
+    CHECK_FALSE(read_error("sphere { 0, sqrt(2 - clock) }", animation()));
     // Intervals that only might be infinite: each point is 1.
-    CHECK_FALSE(error_of("sphere { 0, 1 / (clock - clock + 1) }", animation()));
+    CHECK_FALSE(read_error("sphere { 0, 1 / (clock - clock + 1) }", animation()));
     // A declared object that is never used is not checked (nor costs anything).
-    CHECK_FALSE(error_of("#declare B = sphere { 0, sqrt(-1) }"));
+    CHECK_FALSE(read_error("#declare B = sphere { 0, sqrt(-1) }"));
 }
 
 TEST_CASE("a --declare number beyond the doubles is an error, not an infinity", "[parameters]") {
     ParseOptions options;
     options.declares = {{"Far", "<1, 1e999, 0>"}};
-    const auto e = error_of("sphere { 0, 1 }", options);
+    const auto e = read_error("sphere { 0, 1 }", options);
     REQUIRE(e);
     CHECK_THAT(e->message(), Catch::Contains("1e999"));
     options.declares = {{"Near", "1e300"}};
-    CHECK_FALSE(error_of("sphere { 0, 1 }", options));
+    CHECK_FALSE(read_error("sphere { 0, 1 }", options));
 }

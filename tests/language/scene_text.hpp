@@ -1,0 +1,42 @@
+// Reading scene text in the language tests: the error a text gives, or
+// that it reads. Its #debug and #warning output is kept out of the test's.
+#pragma once
+
+#include <catch2/catch.hpp>
+#include <optional>
+#include <sstream>
+#include <string>
+
+#include "language/interpreter.hpp"
+
+namespace hexant::test {
+
+// The error reading `text` (as the file `name`) gives, or nothing.
+inline std::optional<language::SceneError> read_error(const std::string& text,
+                                                      language::ParseOptions options = {},
+                                                      const std::string& name = "test.pov") {
+    std::ostringstream messages;
+    options.messages = &messages;
+    try {
+        language::parse_scene_text(text, name, options);
+    } catch (const language::SceneError& e) {
+        return e;
+    }
+    return std::nullopt;
+}
+
+// The error of `text`; a failed test when it reads.
+inline language::SceneError error_of(const std::string& text, language::ParseOptions options = {},
+                                     const std::string& name = "test.pov") {
+    auto e = read_error(text, std::move(options), name);
+    if (!e) FAIL("expected an error");
+    return *e;
+}
+
+// A failed test, with the error, unless `text` reads.
+inline void reads(const std::string& text, language::ParseOptions options = {}) {
+    const auto e = read_error(text, std::move(options));
+    if (e) FAIL(e->formatted());
+}
+
+}  // namespace hexant::test
