@@ -130,7 +130,9 @@ struct MotionEvaluator {
     std::vector<N> heap;
     N* amounts = nullptr;
 
-    MotionEvaluator(const Motion& m, const N& t) : motion(m) {
+    N time;  // what the lines are evaluated at
+
+    MotionEvaluator(const Motion& m, const N& t) : motion(m), time(t) {
         if (!m.tape_) return;
         const std::size_t count = m.tape_->output_count();
         if (count <= kStackAmounts) {
@@ -143,7 +145,7 @@ struct MotionEvaluator {
     }
 
     N value(const Motion::Parameter& p) const {
-        return p.slot < 0 ? N(p.constant) : amounts[p.slot];
+        return p.slot < 0 ? p.line.at(time) : amounts[p.slot];
     }
     N amount(const Motion::Step& s, int i) const { return value(motion.amount_of(s, i)); }
     std::array<N, 3> vector(const Motion::Step& s) const {
@@ -253,7 +255,7 @@ struct MotionEvaluator {
     void rotate_rows(int axis, const Motion::Parameter& p, bool negate, AffineMap<N>& m) const {
         using std::cos;
         using std::sin;
-        if (p.slot < 0 && p.constant == 0.0) return;  // the identity, exactly
+        if (p.is_constant() && p.line.constant_value() == 0.0) return;  // the identity, exactly
         const N degrees = negate ? -value(p) : value(p);
         const N angle = degrees * N(kDegree);
         const N sn = sin(angle), cs = cos(angle);
@@ -303,11 +305,13 @@ Motion::Motion(const Transform& transform) {
     std::vector<TimeFunction> outputs;
     auto parameter = [&](const TimeFunction& f) {
         Parameter p;
-        if (f.is_constant()) {
-            p.constant = f.constant();
+        if (const auto line = ClockLine::of(f)) {
+            p.line = *line;
+            moving_ = moving_ || !line->is_constant();
         } else {
             p.slot = static_cast<int>(outputs.size());
             outputs.push_back(f);
+            moving_ = true;
         }
         return p;
     };
@@ -379,7 +383,7 @@ Motion::Motion(const Transform& transform) {
 }
 
 void Motion::finish_stages() {
-    fixed_affine_ = affine_ && !tape_;
+    fixed_affine_ = affine_ && !moving_;
     if (fixed_affine_ && !stages_.empty()) {
         // Constant and affine: the stages merged into one (only Fixed stages
         // exist, and consecutive ones were merged).
@@ -403,7 +407,7 @@ void Motion::append_fixed(const AffineMap<double>& forward, const AffineMap<doub
 }
 
 Motion Motion::at_instant(double t) const {
-    if (!tape_) return *this;
+    if (!moving_) return *this;
     const MotionEvaluator<double> e(*this, t);
     Motion frozen;
     for (const Stage& stage : stages_) {
@@ -420,7 +424,7 @@ Motion Motion::at_instant(double t) const {
                 // A twist, taper or bend by 0 is the identity (deformation.hpp).
                 if (amount == 0.0) break;
                 Deformation fixed = d;
-                fixed.amount = Parameter{amount, -1};
+                fixed.amount = Parameter{ClockLine::constant(amount), -1};
                 if (!stage.fixed_frame)
                     fixed.frame = deformation_frame(std::array<double, 3>{
                         e.value(d.axis[0]), e.value(d.axis[1]), e.value(d.axis[2])});

@@ -19,6 +19,7 @@
 #include <optional>
 #include <vector>
 
+#include "runtime/clock_line.hpp"
 #include "runtime/deformation.hpp"
 #include "runtime/dual.hpp"
 #include "runtime/interval.hpp"
@@ -36,7 +37,7 @@ class Motion {
     explicit Motion(const Transform& transform);
 
     // Nothing depends on time.
-    bool is_static() const { return tape_ == nullptr; }
+    bool is_static() const { return !moving_; }
     // No deformation: one matrix at each time.
     bool is_affine() const { return affine_; }
     bool is_identity() const { return identity_; }
@@ -117,10 +118,12 @@ class Motion {
     glm::dmat3 jacobian_at(const glm::dvec3& object_point, double t) const;
 
   private:
-    // A step's amount: a constant, or output `slot` of the tape.
+    // A step's amount: a constant or a line in clock (clock_line.hpp),
+    // which needs no tape, or else output `slot` of the tape.
     struct Parameter {
-        double constant = 0.0;
+        ClockLine line;
         int slot = -1;
+        bool is_constant() const { return slot < 0 && line.is_constant(); }
     };
     // A moving affine step; its amounts are parameters_[first ..] (three,
     // a vector's; twelve for a Matrix).
@@ -170,6 +173,7 @@ class Motion {
     template <class N>
     std::array<N, 3> to_object_general(const std::array<N, 3>& p, const N& t) const;
 
+    bool moving_ = false;       // some amount depends on time (a line or the tape)
     bool fixed_affine_ = true;  // constant and affine: forward_ and backward_ are the map
     bool affine_ = true;
     bool identity_ = true;
@@ -180,7 +184,7 @@ class Motion {
     std::vector<Step> steps_;
     std::vector<Parameter> parameters_;
     std::vector<Deformation> deformations_;
-    std::shared_ptr<const TimeTape> tape_;  // every time-dependent amount; null when static
+    std::shared_ptr<const TimeTape> tape_;  // the amounts that are not lines; often null
 };
 
 extern template std::array<double, 3> Motion::to_world_general(const std::array<double, 3>&,
