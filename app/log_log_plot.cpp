@@ -49,8 +49,11 @@ std::string to_svg(const LogLogPlot& plot) {
                 y_lo = std::min(y_lo, y), y_hi = std::max(y_hi, y);
             }
     if (!(x_lo <= x_hi)) x_lo = 1, x_hi = 10, y_lo = 1, y_hi = 10;
-    const auto [xa, xb] = decades(x_lo, x_hi);
-    const auto [ya, yb] = decades(y_lo, y_hi);
+    // Plain names, not structured bindings: lambdas capture these (clang
+    // before 16, which the fuzz build uses, cannot capture a binding).
+    const std::pair<double, double> x_decades = decades(x_lo, x_hi), y_decades = decades(y_lo, y_hi);
+    const double xa = x_decades.first, xb = x_decades.second;
+    const double ya = y_decades.first, yb = y_decades.second;
     const double plot_w = kWidth - kLeft - kRight, plot_h = kHeight - kTop - kBottom;
     const auto px = [&](double x) { return kLeft + (std::log10(x) - xa) / (xb - xa) * plot_w; };
     const auto py = [&](double y) { return kTop + (yb - std::log10(y)) / (yb - ya) * plot_h; };

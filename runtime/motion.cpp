@@ -384,12 +384,9 @@ Motion::Motion(const Transform& transform) {
 
 void Motion::finish_stages() {
     fixed_affine_ = affine_ && !moving_;
-    if (fixed_affine_ && !stages_.empty()) {
-        // Constant and affine: the stages merged into one (only Fixed stages
-        // exist, and consecutive ones were merged).
-        forward_ = fixed_of(stages_.front()).forward;
-        backward_ = fixed_of(stages_.front()).backward;
-    }
+    // Constant and affine: only Fixed stages exist, and consecutive ones
+    // were merged, so there is at most one (fixed_map()).
+    if (fixed_affine_ && fixed_.size() > 1) throw std::logic_error("Motion: unmerged fixed stages");
 }
 
 void Motion::append_fixed(const AffineMap<double>& forward, const AffineMap<double>& backward) {
@@ -523,7 +520,7 @@ glm::dmat4 Motion::matrix_at(double t) const {
 }
 
 AffineMap<double> Motion::map_at(double t) const {
-    if (fixed_affine_) return forward_;
+    if (fixed_affine_) return fixed_map().forward;
     if (!affine_) throw std::logic_error("Motion::map_at on a deformed object");
     const MotionEvaluator<double> e(*this, t);
     AffineMap<double> m = AffineMap<double>::identity();
@@ -532,7 +529,7 @@ AffineMap<double> Motion::map_at(double t) const {
 }
 
 glm::dmat4 Motion::inverse_at(double t) const {
-    if (fixed_affine_) return to_glm(backward_);
+    if (fixed_affine_) return to_glm(fixed_map().backward);
     if (!affine_) throw std::logic_error("Motion::inverse_at on a deformed object");
     const MotionEvaluator<double> e(*this, t);
     AffineMap<double> m = AffineMap<double>::identity();
@@ -542,7 +539,7 @@ glm::dmat4 Motion::inverse_at(double t) const {
 }
 
 Motion::Placement Motion::placement_at(double t) const {
-    if (fixed_affine_) return {to_glm(forward_), to_glm(backward_)};
+    if (fixed_affine_) return {to_glm(fixed_map().forward), to_glm(fixed_map().backward)};
     if (!affine_) throw std::logic_error("Motion::placement_at on a deformed object");
     const MotionEvaluator<double> e(*this, t);
     AffineMap<double> forward = AffineMap<double>::identity();
@@ -556,7 +553,7 @@ Motion::Placement Motion::placement_at(double t) const {
 }
 
 IntervalAffine Motion::matrix_over(const Interval& t) const {
-    if (fixed_affine_) return IntervalAffine::from(forward_);
+    if (fixed_affine_) return IntervalAffine::from(fixed_map().forward);
     if (!affine_) throw std::logic_error("Motion::matrix_over on a deformed object");
     const MotionEvaluator<Interval> e(*this, t);
     IntervalAffine m = IntervalAffine::identity();
@@ -565,7 +562,7 @@ IntervalAffine Motion::matrix_over(const Interval& t) const {
 }
 
 AffineMap<IntervalJet> Motion::matrix_jet_over(const Interval& t) const {
-    if (fixed_affine_) return AffineMap<IntervalJet>::from(forward_);
+    if (fixed_affine_) return AffineMap<IntervalJet>::from(fixed_map().forward);
     if (!affine_) throw std::logic_error("Motion::matrix_jet_over on a deformed object");
     const MotionEvaluator<IntervalJet> e(*this, IntervalJet::variable(t));
     AffineMap<IntervalJet> m = AffineMap<IntervalJet>::identity();
@@ -574,7 +571,7 @@ AffineMap<IntervalJet> Motion::matrix_jet_over(const Interval& t) const {
 }
 
 IntervalVec3 Motion::world_box(const IntervalVec3& object_box, const Interval& t) const {
-    if (fixed_affine_) return forward_.apply(object_box);
+    if (fixed_affine_) return fixed_map().forward.apply(object_box);
     if (affine_) return matrix_over(t).apply(object_box);
     // Interval evaluation of a deformation over a wide box overestimates
     // (the dependency problem grows with the box); the images of the eight
@@ -602,7 +599,7 @@ IntervalVec3 Motion::world_box(const IntervalVec3& object_box, const Interval& t
 }
 
 glm::dmat3 Motion::jacobian_at(const glm::dvec3& object_point, double t) const {
-    if (fixed_affine_) return glm::dmat3(to_glm(forward_));
+    if (fixed_affine_) return glm::dmat3(to_glm(fixed_map().forward));
     const MotionEvaluator<double> e(*this, t);
     glm::dmat3 j(1.0);
     std::array<double, 3> p{object_point.x, object_point.y, object_point.z};

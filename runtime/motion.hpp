@@ -77,12 +77,12 @@ class Motion {
     // exactly where the deformations are one to one (see deformation.hpp).
     template <class N>
     std::array<N, 3> to_world(const std::array<N, 3>& p, const N& t) const {
-        if (fixed_affine_) return forward_.apply(p);
+        if (fixed_affine_) return fixed_map().forward.apply(p);
         return to_world_general(p, t);
     }
     template <class N>
     std::array<N, 3> to_object(const std::array<N, 3>& p, const N& t) const {
-        if (fixed_affine_) return backward_.apply(p);
+        if (fixed_affine_) return fixed_map().backward.apply(p);
         return to_object_general(p, t);
     }
     glm::dvec3 to_world(const glm::dvec3& p, double t) const {
@@ -155,6 +155,13 @@ class Motion {
         std::uint32_t count = 0;  // Moving: its steps
     };
     const FixedMaps& fixed_of(const Stage& s) const { return fixed_[s.index]; }
+    // A constant affine motion's map: its one Fixed stage's (consecutive
+    // constant steps merge into one), or the identity. Not a copy kept
+    // beside the stages: a moving object would carry its 192 bytes unused.
+    const FixedMaps& fixed_map() const {
+        static const FixedMaps identity;
+        return fixed_.empty() ? identity : fixed_.front();
+    }
     const Deformation& deformation_of(const Stage& s) const { return deformations_[s.index]; }
     const Step* steps_begin(const Stage& s) const { return steps_.data() + s.index; }
     const Step* steps_end(const Stage& s) const { return steps_.data() + s.index + s.count; }
@@ -165,7 +172,7 @@ class Motion {
 
     // Appends a constant affine stage, merged with a constant stage before it.
     void append_fixed(const AffineMap<double>& forward, const AffineMap<double>& backward);
-    // Sets fixed_affine_, forward_ and backward_ once the stages are complete.
+    // Sets fixed_affine_ once the stages are complete.
     void finish_stages();
 
     template <class N>
@@ -174,11 +181,9 @@ class Motion {
     std::array<N, 3> to_object_general(const std::array<N, 3>& p, const N& t) const;
 
     bool moving_ = false;       // some amount depends on time (a line or the tape)
-    bool fixed_affine_ = true;  // constant and affine: forward_ and backward_ are the map
+    bool fixed_affine_ = true;  // constant and affine: fixed_map() is the map
     bool affine_ = true;
     bool identity_ = true;
-    AffineMap<double> forward_ = AffineMap<double>::identity();
-    AffineMap<double> backward_ = AffineMap<double>::identity();
     std::vector<Stage> stages_;
     std::vector<FixedMaps> fixed_;
     std::vector<Step> steps_;

@@ -331,7 +331,7 @@ TEST_CASE("polygon: aimed rays on tilted outlines at every scale, may-meet",
                 }
                 if (edge < 1e-4) continue;
                 SurfaceSample s{place.at(q), normal};
-                s.edge_distance = edge * scale;
+                s.edge_distance = edge * place.scale;
                 return s;
             }
         };

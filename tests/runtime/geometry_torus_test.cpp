@@ -161,8 +161,8 @@ TEST_CASE("torus: no sign change of D along a ray is skipped", "[runtime][geomet
             auto D = [&](double s) {
                 const glm::dvec3 p = ray.origin + s * ray.direction;
                 const long double x = p.x, y = p.y, z = p.z;
-                const long double e = std::sqrt(x * x + z * z) - R;
-                return e * e + y * y - (long double)r * r;
+                const long double e = std::sqrt(x * x + z * z) - g.major;
+                return e * e + y * y - (long double)g.minor * g.minor;
             };
             long double previous = D(0.0);
             for (int k = 1; k <= kSamples; ++k) {

@@ -99,7 +99,7 @@ Work check_case(const Case& c) {
     const auto set = tr::ObjectSet::of(objects);
     const double t0 = scene.animation.time_begin(), t1 = scene.animation.time_end();
     const rt::Box4 root = tr::enclosing_box(set, t0, t1);
-    tr::Counters build, work;
+    tr::Counters build;
     auto brute = tr::make_ray_query(tr::Mode::Brute, set, root, {}, build);
     auto spacetime = tr::make_ray_query(tr::Mode::Spacetime, set, root, {}, build);
     auto frames = tr::make_ray_query(tr::Mode::Frames, set, root, {}, build);
