@@ -304,46 +304,75 @@ std::filesystem::path Interpreter::resolve_include(const std::string& name,
 
 namespace {
 
-void check_patterns(const runtime::ObjectRecord& object) {
-    if (object.texture && object.texture->pigment.pattern == runtime::Pigment::Pattern::Unsupported) {
-        const auto& pigment = object.texture->pigment;
-        throw ValueError("pigment pattern '" + pigment.unsupported_name + "' (written at " +
-                         pigment.unsupported_place.to_string() + ") is not supported by hexant");
+// The walks below over an object and the objects nested in it keep their
+// own stack, not the thread's: a record may nest kMaxObjectDepth deep, and
+// a frame per level overflowed the main thread's 8 MB under AddressSanitizer
+// (whose frames are several times larger).
+
+// Calls visit(record) for the object and every object nested in it.
+template <class Visit>
+void for_each_nested(const runtime::ObjectRecord& object, Visit visit) {
+    std::vector<const runtime::ObjectRecord*> pending{&object};
+    while (!pending.empty()) {
+        const runtime::ObjectRecord* record = pending.back();
+        pending.pop_back();
+        visit(*record);
+        if (const auto* csg = std::get_if<runtime::Csg>(&record->shape))
+            for (auto it = csg->children.rbegin(); it != csg->children.rend(); ++it)
+                pending.push_back(it->get());  // reversed: children visited in order
     }
-    if (const auto* csg = std::get_if<runtime::Csg>(&object.shape))
-        for (const auto& child : csg->children) check_patterns(*child);
+}
+
+void check_patterns(const runtime::ObjectRecord& object) {
+    for_each_nested(object, [](const runtime::ObjectRecord& record) {
+        if (record.texture &&
+            record.texture->pigment.pattern == runtime::Pigment::Pattern::Unsupported) {
+            const auto& pigment = record.texture->pigment;
+            throw ValueError("pigment pattern '" + pigment.unsupported_name + "' (written at " +
+                             pigment.unsupported_place.to_string() +
+                             ") is not supported by hexant");
+        }
+    });
 }
 
 // Lights inside CSGs move with them: hand them to the scene with the
 // transforms of every object around them.
-void collect_lights(const runtime::ObjectRecord& object, const runtime::Transform& outer,
-                    std::vector<runtime::LightRecord>& lights) {
-    runtime::Transform here = object.transform;
-    here.append(outer);
-    for (auto light : object.lights) {
-        light.transform.append(here);
-        lights.push_back(std::move(light));
+void collect_lights(const runtime::ObjectRecord& object, std::vector<runtime::LightRecord>& lights) {
+    struct Pending {
+        const runtime::ObjectRecord* record;
+        runtime::Transform outer;  // of the objects around it
+    };
+    std::vector<Pending> pending{{&object, runtime::Transform{}}};
+    while (!pending.empty()) {
+        const Pending p = std::move(pending.back());
+        pending.pop_back();
+        runtime::Transform here = p.record->transform;
+        here.append(p.outer);
+        for (auto light : p.record->lights) {
+            light.transform.append(here);
+            lights.push_back(std::move(light));
+        }
+        if (const auto* csg = std::get_if<runtime::Csg>(&p.record->shape))
+            for (auto it = csg->children.rbegin(); it != csg->children.rend(); ++it)
+                pending.push_back({it->get(), here});
     }
-    if (const auto* csg = std::get_if<runtime::Csg>(&object.shape))
-        for (const auto& child : csg->children) collect_lights(*child, here, lights);
 }
 
 }  // namespace
 
 void Interpreter::check_parameters(const runtime::ObjectRecord& object,
                                    const p::position& where) const {
-    std::optional<std::string> problem = runtime::bad_parameter(object, scene.animation);
-    for (std::size_t i = 0; !problem && i < object.lights.size(); ++i)
-        problem = runtime::bad_parameter(object.lights[i], scene.animation);
-    if (problem) {
-        if (object.place.file.empty()) fail(where, *problem);
-        SceneError error(*problem, place(object.place));
-        if (object.place.file != where.source || object.place.line != where.line)
+    for_each_nested(object, [&](const runtime::ObjectRecord& record) {
+        std::optional<std::string> problem = runtime::bad_parameter(record, scene.animation);
+        for (std::size_t i = 0; !problem && i < record.lights.size(); ++i)
+            problem = runtime::bad_parameter(record.lights[i], scene.animation);
+        if (!problem) return;
+        if (record.place.file.empty()) fail(where, *problem);
+        SceneError error(*problem, place(record.place));
+        if (record.place.file != where.source || record.place.line != where.line)
             error.add_context(place(where, "in the object added to the scene here"));
         throw error;
-    }
-    if (const auto* csg = std::get_if<runtime::Csg>(&object.shape))
-        for (const auto& child : csg->children) check_parameters(*child, where);
+    });
 }
 
 void Interpreter::add_object(const runtime::ObjectPtr& object, const p::position& where) {
@@ -353,7 +382,7 @@ void Interpreter::add_object(const runtime::ObjectPtr& object, const p::position
         fail(where, e.what());
     }
     check_parameters(*object, where);
-    collect_lights(*object, runtime::Transform{}, scene.lights);
+    collect_lights(*object, scene.lights);
     scene.objects.push_back(object);
 }
 

@@ -282,11 +282,15 @@ TEST_CASE("motion: a box beyond a twist's reach holds no image of the object", "
     // world box wholly farther out is dropped without being turned back.
     Random r(14);
     const IntervalVec3 object{Interval(-0.5, 0.5), Interval(0.0, 1.0), Interval(-0.3, 0.3)};
+    int trials_dropping = 0;
     for (int trial = 0; trial < 100; ++trial) {
         Transform transform;
         if (trial % 2) transform.append(random_step(r, false));
-        transform.append(step(TransformKind::Twist, r.uniform(-0.3, 0.3), 1.0, r.uniform(-0.3, 0.3),
-                              TimeFunction(r.uniform(-8640.0, 8640.0))));
+        // Drawn one by one: the order of a call's arguments is the
+        // compiler's (gcc and clang differ), the draws' order must not be.
+        const double axis_x = r.uniform(-0.3, 0.3), axis_z = r.uniform(-0.3, 0.3);
+        const double degrees = r.uniform(-8640.0, 8640.0);
+        transform.append(step(TransformKind::Twist, axis_x, 1.0, axis_z, TimeFunction(degrees)));
         transform.append(random_step(r, false));
         const Motion motion(transform);
         const auto reaches = motion.twist_reaches(object, Interval(0.0));
@@ -321,8 +325,12 @@ TEST_CASE("motion: a box beyond a twist's reach holds no image of the object", "
             }
             REQUIRE(inside == 0);
         }
-        CHECK(dropped > 0);
+        if (dropped > 0) ++trials_dropping;
     }
+    // The reach drops boxes at all: in nearly every trial some of the
+    // pushed boxes lie beyond it (a twist whose reach takes in every
+    // pushed box may drop none).
+    CHECK(trials_dropping >= 90);
     // Without a twist there is nothing to reach.
     Transform plain;
     plain.append(step(TransformKind::Bend, 0.0, 1.0, 0.0, TimeFunction(30.0)));
