@@ -33,11 +33,24 @@ double TimeSweep::decode(int axis, std::uint16_t q) const {
     return std::min(whole_.lo[axis] + double(q) * step_[axis], whole_.hi[axis]);
 }
 
+namespace {
+
+// A count of steps as an int in [0, kTop], clamped while still a double: a
+// tiny extent makes the scale infinite, and 0 times it (v at the low end)
+// is NaN, which no int holds (undefined behaviour, found by UBSan on a floor
+// of huge triangles); NaN gives `otherwise`, the conservative end.
+int steps_at(double steps, int otherwise) {
+    if (std::isnan(steps)) return otherwise;
+    return int(std::clamp(steps, 0.0, double(kTop)));
+}
+
+}  // namespace
+
 // A step at or below v (v inside whole_), checked on the decoded value.
 std::uint16_t TimeSweep::encode_down(int k, double v) const {
     const double extent = whole_.hi[k] - whole_.lo[k];
     if (!(extent > 0.0) || !std::isfinite(extent)) return 0;
-    int q = std::clamp(int(std::floor((v - whole_.lo[k]) * (double(kTop) / extent))), 0, int(kTop));
+    int q = steps_at(std::floor((v - whole_.lo[k]) * (double(kTop) / extent)), 0);
     while (q > 0 && decode(k, std::uint16_t(q)) > v) --q;
     return std::uint16_t(q);
 }
@@ -45,7 +58,7 @@ std::uint16_t TimeSweep::encode_down(int k, double v) const {
 std::uint16_t TimeSweep::encode_up(int k, double v) const {
     const double extent = whole_.hi[k] - whole_.lo[k];
     if (!(extent > 0.0) || !std::isfinite(extent)) return kTop;
-    int q = std::clamp(int(std::ceil((v - whole_.lo[k]) * (double(kTop) / extent))), 0, int(kTop));
+    int q = steps_at(std::ceil((v - whole_.lo[k]) * (double(kTop) / extent)), int(kTop));
     while (q < int(kTop) && decode(k, std::uint16_t(q)) < v) ++q;
     return std::uint16_t(q);
 }
