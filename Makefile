@@ -54,8 +54,8 @@ fuzz: deps
 	cd build-fuzz && ctest -L fuzz --output-on-failure
 
 # The whole test suite under AddressSanitizer and UndefinedBehaviorSanitizer,
-# in the fuzz build's folder (clang; README.md, "Tests"): about 25 minutes to
-# build and an hour to run on 2 cores. Any report ends its test as a failure.
+# in the fuzz build's folder (clang; README.md, "Tests"): about 15 minutes to
+# build and 25 to run on a shared 2-core machine. Any report fails its test.
 sanitize: deps
 	@command -v clang++ >/dev/null 2>&1 || { \
 	  echo "make sanitize needs clang. Run:"; echo "  sudo apt-get install -y clang"; exit 1; }
