@@ -340,16 +340,18 @@ void check_patterns(const runtime::ObjectRecord& object) {
 void collect_lights(const runtime::ObjectRecord& object, std::vector<runtime::LightRecord>& lights) {
     struct Pending {
         const runtime::ObjectRecord* record;
-        runtime::Transform outer;  // of the objects around it
+        // The transform of the objects around it, shared by its siblings: a
+        // union of 10^5 objects holds one copy, not one per child.
+        std::shared_ptr<const runtime::Transform> outer;
     };
-    std::vector<Pending> pending{{&object, runtime::Transform{}}};
+    std::vector<Pending> pending{{&object, std::make_shared<const runtime::Transform>()}};
     while (!pending.empty()) {
         const Pending p = std::move(pending.back());
         pending.pop_back();
-        runtime::Transform here = p.record->transform;
-        here.append(p.outer);
+        auto here = std::make_shared<runtime::Transform>(p.record->transform);
+        here->append(*p.outer);
         for (auto light : p.record->lights) {
-            light.transform.append(here);
+            light.transform.append(*here);
             lights.push_back(std::move(light));
         }
         if (const auto* csg = std::get_if<runtime::Csg>(&p.record->shape))

@@ -382,6 +382,8 @@ Motion::Motion(const Transform& transform) {
     deformations_.shrink_to_fit();
 }
 
+const Motion::FixedMaps Motion::kIdentityMaps{};
+
 void Motion::finish_stages() {
     fixed_affine_ = affine_ && !moving_;
     // Constant and affine: only Fixed stages exist, and consecutive ones

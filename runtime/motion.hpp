@@ -159,10 +159,10 @@ class Motion {
     // A constant affine motion's map: its one Fixed stage's (consecutive
     // constant steps merge into one), or the identity. Not a copy kept
     // beside the stages: a moving object would carry its 192 bytes unused.
-    const FixedMaps& fixed_map() const {
-        static const FixedMaps identity;
-        return fixed_.empty() ? identity : fixed_.front();
-    }
+    const FixedMaps& fixed_map() const { return fixed_.empty() ? kIdentityMaps : fixed_.front(); }
+    // A namespace-lifetime constant, not a function's static: to_world and
+    // to_object read it per ray, and a local static pays a guard check.
+    static const FixedMaps kIdentityMaps;
     const Deformation& deformation_of(const Stage& s) const { return deformations_[s.index]; }
     const Step* steps_begin(const Stage& s) const { return steps_.data() + s.index; }
     const Step* steps_end(const Stage& s) const { return steps_.data() + s.index + s.count; }

@@ -1,9 +1,8 @@
 #include "runtime/transform.hpp"
 
-#include <string>
-
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/matrix.hpp>

@@ -77,7 +77,8 @@ bool write_blocks(GifFileType* gif, int width, int height,
 void write_gif_animation(const fs::path& file, int width, int height,
                          const std::vector<std::vector<unsigned char>>& frames, double fps) {
     if (width > kGifMaxSide || height > kGifMaxSide)
-        throw std::runtime_error("a GIF is at most 65535 pixels a side");
+        throw std::runtime_error("a GIF is at most " + std::to_string(kGifMaxSide) +
+                                 " pixels a side");
     // Opened here rather than by EGifOpenFileName, which makes the file
     // readable by its owner only; frames are 0666 less the umask, as fopen's.
     const int descriptor = ::open(file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);

@@ -5,11 +5,10 @@
 #include "runtime/clock_line.hpp"
 
 #include <catch2/catch.hpp>
-#include <cmath>
-#include <cstring>
 #include <vector>
 
 #include "runtime/time_tape.hpp"
+#include "same_bits.hpp"
 
 using hexant::runtime::ClockLine;
 using hexant::runtime::Dual;
@@ -18,13 +17,10 @@ using hexant::runtime::IntervalJet;
 using hexant::runtime::TimeFunction;
 using hexant::runtime::TimeOp;
 using hexant::runtime::TimeTape;
+using hexant::test::same_bits;
 
 namespace {
 
-bool same(double a, double b) {
-    return (std::isnan(a) && std::isnan(b)) || std::memcmp(&a, &b, sizeof a) == 0;
-}
-bool same(const Interval& a, const Interval& b) { return same(a.lo, b.lo) && same(a.hi, b.hi); }
 
 template <class N>
 N on_tape(const TimeTape& tape, const N& t) {
@@ -63,20 +59,20 @@ TEST_CASE("a line in clock evaluates as its tape does, bit for bit", "[clock_lin
         const TimeTape tape = TimeTape::compile({f});
         for (const double x : {0.0, -0.0, 0.25, 1.0 / 3.0, 1.0, -7.5, 1e-310, 1e308}) {
             INFO("t = " << x);
-            CHECK(same(line->at(x), f(x)));
-            CHECK(same(line->at(x), on_tape(tape, x)));
+            CHECK(same_bits(line->at(x), f(x)));
+            CHECK(same_bits(line->at(x), on_tape(tape, x)));
             const Dual dl = line->at(Dual::variable(x)), dt = on_tape(tape, Dual::variable(x));
-            CHECK(same(dl.v, dt.v));
-            CHECK(same(dl.d, dt.d));
+            CHECK(same_bits(dl.v, dt.v));
+            CHECK(same_bits(dl.d, dt.d));
         }
         for (const Interval& x : {Interval(0.0, 1.0), Interval(0.25, 0.5), Interval(-3.0, 1e-3)}) {
-            CHECK(same(line->at(x), on_tape(tape, x)));
+            CHECK(same_bits(line->at(x), on_tape(tape, x)));
             const IntervalJet jl = line->at(IntervalJet::variable(x));
             const IntervalJet jt = on_tape(tape, IntervalJet::variable(x));
-            CHECK(same(jl.v, jt.v));
-            CHECK(same(jl.d, jt.d));
-            CHECK(same(jl.dd, jt.dd));
-            CHECK(same(jl.r, jt.r));
+            CHECK(same_bits(jl.v, jt.v));
+            CHECK(same_bits(jl.d, jt.d));
+            CHECK(same_bits(jl.dd, jt.dd));
+            CHECK(same_bits(jl.r, jt.r));
         }
     }
 }

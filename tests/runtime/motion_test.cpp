@@ -328,9 +328,10 @@ TEST_CASE("motion: a box beyond a twist's reach holds no image of the object", "
         if (dropped > 0) ++trials_dropping;
     }
     // The reach drops boxes at all: in nearly every trial some of the
-    // pushed boxes lie beyond it (a twist whose reach takes in every
-    // pushed box may drop none).
-    CHECK(trials_dropping >= 90);
+    // pushed boxes lie beyond it. A twist whose reach takes in every pushed
+    // box drops none, rightly: one trial in a hundred here, with gcc's draws
+    // and with clang's alike (99 drop); 95 leaves room for that and no more.
+    CHECK(trials_dropping >= 95);
     // Without a twist there is nothing to reach.
     Transform plain;
     plain.append(step(TransformKind::Bend, 0.0, 1.0, 0.0, TimeFunction(30.0)));

@@ -7,7 +7,6 @@
 
 #include <catch2/catch.hpp>
 #include <cmath>
-#include <cstring>
 #include <memory>
 #include <random>
 #include <vector>
@@ -19,6 +18,7 @@
 #include "runtime/time_function.hpp"
 #include "runtime/time_ops.hpp"
 #include "runtime/time_ops_generic.hpp"
+#include "same_bits.hpp"
 
 using hexant::runtime::arity;
 using hexant::runtime::CompiledScalar;
@@ -30,12 +30,9 @@ using hexant::runtime::SplineKind;
 using hexant::runtime::TimeFunction;
 using hexant::runtime::TimeOp;
 using hexant::runtime::TimeTape;
+using hexant::test::same_bits;
 
 namespace {
-
-bool same(double a, double b) {
-    return (std::isnan(a) && std::isnan(b)) || std::memcmp(&a, &b, sizeof a) == 0;
-}
 
 // Random DAGs: each new node applies a random operation to earlier nodes,
 // recent ones more often (depth) but any of them (sharing). Arguments of
@@ -156,7 +153,7 @@ TEST_CASE("a tape at a point equals the time function exactly", "[runtime][time]
             tape.evaluate(Dual::variable(t), dual);
             for (std::size_t i = 0; i < functions.size(); ++i) {
                 const double want = functions[i](t);
-                if (!same(out[i], want) || !same(dual[i].v, want)) {
+                if (!same_bits(out[i], want) || !same_bits(dual[i].v, want)) {
                     INFO(functions[i].to_string() << " at " << t);
                     CHECK(out[i] == want);
                     CHECK(dual[i].v == want);
@@ -300,8 +297,8 @@ TEST_CASE("every operation over intervals and duals, one at a time", "[runtime][
                     INFO("over [" << a << ", " << a + w << "] -> " << range << " at " << time);
                     CHECK(range.contains(v));
                 }
-                CHECK(same(compiled.with_derivative(time).v, v));
-                CHECK(same(compiled.at(time), v));
+                CHECK(same_bits(compiled.with_derivative(time).v, v));
+                CHECK(same_bits(compiled.at(time), v));
             }
         }
     }
