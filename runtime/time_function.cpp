@@ -1,6 +1,8 @@
 #include "runtime/time_function.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <stdexcept>
 #include <sstream>
 #include <string>
 
@@ -62,8 +64,53 @@ const char* name(TimeOp op) {
     return "?";
 }
 
-TimeFunction::TimeFunction(double value) : value_(value) {}
-TimeFunction::TimeFunction(std::shared_ptr<const Node> node) : node_(std::move(node)) {}
+static_assert(sizeof(TimeFunction) == 8);
+static_assert(sizeof(void*) == 8, "a node's pointer is boxed in a double's 64 bits");
+
+TimeFunction::TimeFunction(double value) : bits_(std::bit_cast<std::uint64_t>(value)) {
+    if ((bits_ >> 48) == kNodeTag) bits_ = std::bit_cast<std::uint64_t>(std::nan(""));
+}
+
+TimeFunction::TimeFunction(const Node* node) : bits_(reinterpret_cast<std::uintptr_t>(node)) {
+    // User-space addresses fit in 48 bits on x86-64 and AArch64 (4-level
+    // page tables); a tagged pointer (HWASan, MTE) does not, and is refused
+    // rather than lost.
+    if ((bits_ >> 48) != 0) {
+        delete node;
+        throw std::logic_error("TimeFunction: a node's address does not fit in 48 bits");
+    }
+    node->references.fetch_add(1, std::memory_order_relaxed);
+    bits_ |= kNodeTag << 48;
+}
+
+TimeFunction::TimeFunction(const TimeFunction& other) noexcept : bits_(other.bits_) {
+    if (const Node* n = node()) n->references.fetch_add(1, std::memory_order_relaxed);
+}
+
+TimeFunction& TimeFunction::operator=(const TimeFunction& other) noexcept {
+    const std::uint64_t bits = other.bits_;  // before release(): other may be *this
+    if (const Node* n = other.node()) n->references.fetch_add(1, std::memory_order_relaxed);
+    release();
+    bits_ = bits;
+    return *this;
+}
+
+TimeFunction& TimeFunction::operator=(TimeFunction&& other) noexcept {
+    if (this != &other) {
+        release();
+        bits_ = other.bits_;
+        other.bits_ = 0;
+    }
+    return *this;
+}
+
+void TimeFunction::release() noexcept {
+    // As shared_ptr counts: the last owner's decrement acquires the others'
+    // writes before the node is freed.
+    if (const Node* n = node())
+        if (n->references.fetch_sub(1, std::memory_order_acq_rel) == 1) delete n;
+    bits_ = 0;
+}
 
 TimeFunctionTooDeep::TimeFunctionTooDeep()
     : LimitError("a function of clock nested more than " +
@@ -84,18 +131,22 @@ void set_depth(TimeFunction::Node& node) {
 }  // namespace
 
 TimeFunction TimeFunction::clock() {
-    auto node = std::make_shared<Node>();
-    node->op = TimeOp::Clock;
-    return TimeFunction(std::move(node));
+    // One node for every use of clock (one per moving object in a loop).
+    static const TimeFunction the_clock = [] {
+        auto node = std::make_unique<Node>();
+        node->op = TimeOp::Clock;
+        return TimeFunction(node.release());
+    }();
+    return the_clock;
 }
 
 TimeFunction TimeFunction::apply(TimeOp op, const TimeFunction& a) {
     if (a.is_constant()) return TimeFunction(apply_op(op, a.constant()));
-    auto node = std::make_shared<Node>();
+    auto node = std::make_unique<Node>();
     node->op = op;
     node->args[0] = a;
     set_depth(*node);
-    return TimeFunction(std::move(node));
+    return TimeFunction(node.release());
 }
 
 TimeFunction TimeFunction::apply(TimeOp op, const TimeFunction& a, const TimeFunction& b) {
@@ -109,12 +160,12 @@ TimeFunction TimeFunction::apply(TimeOp op, const TimeFunction& a, const TimeFun
     if (op == TimeOp::Multiply && ((a.is_constant() && a.constant() == 0.0) ||
                                    (b.is_constant() && b.constant() == 0.0)))
         return TimeFunction(0.0);
-    auto node = std::make_shared<Node>();
+    auto node = std::make_unique<Node>();
     node->op = op;
     node->args[0] = a;
     node->args[1] = b;
     set_depth(*node);
-    return TimeFunction(std::move(node));
+    return TimeFunction(node.release());
 }
 
 TimeFunction TimeFunction::apply(TimeOp op, const TimeFunction& a, const TimeFunction& b,
@@ -124,28 +175,28 @@ TimeFunction TimeFunction::apply(TimeOp op, const TimeFunction& a, const TimeFun
     // A constant condition picks its branch now, even if the branches vary.
     if (a.is_constant() && op == TimeOp::Select) return a.constant() < 0.0 ? b : c;
     if (a.is_constant() && op == TimeOp::Conditional) return pov_true(a.constant()) ? b : c;
-    auto node = std::make_shared<Node>();
+    auto node = std::make_unique<Node>();
     node->op = op;
     node->args = {a, b, c};
     set_depth(*node);
-    return TimeFunction(std::move(node));
+    return TimeFunction(node.release());
 }
 
 TimeFunction TimeFunction::spline_component(std::shared_ptr<const Spline> spline, int component,
                                             const TimeFunction& t) {
     if (t.is_constant()) return TimeFunction(spline->evaluate(t.constant())[component]);
-    auto node = std::make_shared<Node>();
+    auto node = std::make_unique<Node>();
     node->op = TimeOp::SplineComponent;
     node->args[0] = t;
     node->spline = std::move(spline);
     node->component = component;
     set_depth(*node);
-    return TimeFunction(std::move(node));
+    return TimeFunction(node.release());
 }
 
 double TimeFunction::operator()(double t) const {
-    if (!node_) return value_;
-    const Node& n = *node_;
+    if (is_constant()) return constant();
+    const Node& n = *node();
     switch (n.op) {
         case TimeOp::Clock: return t;
         case TimeOp::SplineComponent: return n.spline->evaluate(n.args[0](t))[n.component];
@@ -165,11 +216,11 @@ double TimeFunction::operator()(double t) const {
 
 std::string TimeFunction::to_string() const {
     std::ostringstream out;
-    if (!node_) {
-        out << value_;
+    if (is_constant()) {
+        out << constant();
         return out.str();
     }
-    const Node& n = *node_;
+    const Node& n = *node();
     switch (n.op) {
         case TimeOp::Clock: return "clock";
         case TimeOp::Negate: return "-" + n.args[0].to_string();

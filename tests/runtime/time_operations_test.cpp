@@ -2,7 +2,10 @@
 // functions of clock, and POV-Ray's meaning of each operator.
 #include <catch2/catch.hpp>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
 #include "runtime/spline.hpp"
 #include "runtime/time_function.hpp"
@@ -111,4 +114,44 @@ TEST_CASE("a spline of clock evaluates the spline at each time", "[time]") {
     CHECK(y.depends_on_time());
     CHECK(y(1.0) == Approx(15.0));
     CHECK(TimeFunction::spline_component(spline, 0, 0.5).constant() == Approx(1.0));
+}
+
+// A time function is a double or a node boxed in a NaN (time_function.hpp):
+// every double must come back as itself, a NaN whose bits read as a boxed
+// node must stay a constant, and copies must share and free nodes rightly
+// (the sanitized suite, `make sanitize`, checks the freeing).
+TEST_CASE("a time function holds any double, and counts its node's owners", "[time]") {
+    const double values[] = {0.0, -0.0, 1.5, -1e308, 5e-324, HUGE_VAL, -HUGE_VAL};
+    for (const double v : values) {
+        const TimeFunction f(v);
+        REQUIRE(f.is_constant());
+        CHECK(std::bit_cast<std::uint64_t>(f.constant()) == std::bit_cast<std::uint64_t>(v));
+    }
+    // A signalling NaN with the node's tag and a plausible address in its
+    // payload, and the quiet NaN arithmetic makes.
+    for (const std::uint64_t bits : {std::uint64_t(0x7FF4000012345678), std::uint64_t(0x7FF4000000000000),
+                                     std::bit_cast<std::uint64_t>(std::sqrt(-1.0))}) {
+        const TimeFunction f(std::bit_cast<double>(bits));
+        CHECK(f.is_constant());
+        CHECK(f.node() == nullptr);
+        CHECK(std::isnan(f.constant()));
+        CHECK(std::isnan(f(0.5)));
+    }
+
+    const TimeFunction moving = TimeFunction::clock() * 2.0 + 1.0;
+    REQUIRE(moving.depends_on_time());
+    std::vector<TimeFunction> copies(100, moving);
+    for (const auto& c : copies) CHECK(c.node() == moving.node());
+    TimeFunction assigned = 3.0;
+    assigned = copies.back();
+    copies.clear();  // the node outlives the copies that went
+    CHECK(assigned(0.25) == 1.5);
+    assigned = assigned;  // NOLINT: self-assignment keeps the node
+    CHECK(assigned(0.25) == 1.5);
+    TimeFunction moved = std::move(assigned);
+    CHECK(moved(1.0) == 3.0);
+    CHECK(assigned.is_constant());  // NOLINT: a moved-from function is the constant 0
+    CHECK(assigned.constant() == 0.0);
+    // Every use of clock is one node.
+    CHECK(TimeFunction::clock().node() == TimeFunction::clock().node());
 }
