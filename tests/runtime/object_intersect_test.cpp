@@ -17,6 +17,7 @@
 #include <string>
 
 #include "object_test_support.hpp"
+#include "runtime/curved_path_root.hpp"
 
 using namespace object_test;
 
@@ -425,4 +426,43 @@ TEST_CASE("rays of extreme magnitudes never bring out NaN or Inf", "[object][int
             }
         }
     }
+}
+
+// A twist of 1e18 degrees a unit: every piece of a ray's curved image in
+// object space has the whole swept ring as its box, down to the doubles'
+// resolution, so the bisection cannot converge (curved_path_root.hpp). It
+// must give up after kCurvedPathMaxUnresolved such pieces, not examine the
+// 65,536 of the hard limit (a fuzzer's input took 17 ms a ray); a twist of
+// 30 turns a unit, the stiffest the dense-sampling test above checks, must
+// never give up.
+TEST_CASE("a twist too stiff to resolve gives up at once, a stiff one never", "[object]") {
+    const auto pieces_per_solve = [](const std::string& sdl, std::uint64_t& give_ups) {
+        const Parsed parsed = parse(sdl);
+        const rt::IntelligentObject& object = *parsed.objects.front();
+        const std::uint64_t solves0 = rt::curved_path_solves(), pieces0 = rt::curved_path_pieces(),
+                            give_ups0 = rt::curved_path_give_ups();
+        for (int i = 0; i < 20; ++i) {
+            // Rays through the column's middle, from the side, at several heights.
+            const glm::dvec3 origin(-4.0, -0.6 + 0.06 * i, 0.05);
+            const rt::Ray4 ray = ray_at_instant(origin, glm::dvec3(1.0, 0.0, 0.0), 0.25);
+            const auto hit = object.intersect(ray, 0.0, std::numeric_limits<double>::infinity());
+            if (hit) check_hit_is_sane(object, ray, *hit, 0.0, std::numeric_limits<double>::infinity());
+        }
+        give_ups = rt::curved_path_give_ups() - give_ups0;
+        const std::uint64_t solves = rt::curved_path_solves() - solves0;
+        REQUIRE(solves > 0);
+        return double(rt::curved_path_pieces() - pieces0) / double(solves);
+    };
+    std::uint64_t give_ups = 0;
+    const double unresolved =
+        pieces_per_solve("box { <-0.5, -0.8, -0.3>, <0.5, 0.8, 0.3> twist <0, 1, 0>, 1e18 }", give_ups);
+    CHECK(give_ups > 0);
+    // The unresolved pieces and the halvings down to them (about 50 for a
+    // path of unit length), each with its sibling.
+    CHECK(unresolved < 400.0);
+    const double stiff =
+        pieces_per_solve("box { <-0.5, -0.8, -0.3>, <0.5, 0.8, 0.3> twist <0, 1, 0>, 10800 }", give_ups);
+    CHECK(give_ups == 0);
+    INFO("pieces per solve: unresolvable " << unresolved << ", 30 turns a unit " << stiff);
+    CHECK(stiff > 0.0);
 }
