@@ -11,6 +11,8 @@
 // token.
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <cctype>
 #include <string_view>
 #include <vector>
@@ -86,6 +88,32 @@ struct rangle : punct<'>'> {};
 
 #define HEXANT_KEYWORD(rule, text) \
     struct rule : p::seq<TAO_PEGTL_KEYWORD(text), ws> {}
+
+// One whole word of Words::list (sorted; a word is letters, digits and
+// '_'), read once and found by binary search. A p::sor of N keywords
+// compares the input with each in turn, and every primary of an expression
+// tries the built-in functions' and constants' names before it is a
+// number or a name: a scene of 10^5 objects spent a quarter of its parse
+// in those comparisons. The words are reserved (keywords.cpp).
+template <class Words>
+struct one_word_of {
+    using rule_t = one_word_of;
+    using subs_t = p::empty_list;
+    static_assert(std::is_sorted(Words::list.begin(), Words::list.end()));
+    template <p::apply_mode, p::rewind_mode, template <typename...> class Action,
+              template <typename...> class Control, typename ParseInput, typename... States>
+    static bool match(ParseInput& in, States&...) {
+        const char* b = in.current();
+        const char* e = in.end();
+        const char* q = b;
+        while (q != e && (std::isalnum(static_cast<unsigned char>(*q)) || *q == '_')) ++q;
+        const std::string_view word(b, static_cast<std::size_t>(q - b));
+        if (word.empty() || !std::binary_search(Words::list.begin(), Words::list.end(), word))
+            return false;
+        in.bump_in_this_line(word.size());
+        return true;
+    }
+};
 
 // A name that is not one of hexant's keywords. Matched by a custom rule
 // because the set of keywords is a table (keywords.cpp), not a grammar.
@@ -180,26 +208,16 @@ struct vector_literal
              p::star<comma, p::must<vector_component>>, p::must<vector_close>> {};
 
 // Built-in functions; the name picks the implementation (builtins.cpp).
-struct function_name
-    : p::sor<TAO_PEGTL_KEYWORD("abs"), TAO_PEGTL_KEYWORD("sin"), TAO_PEGTL_KEYWORD("cos"),
-             TAO_PEGTL_KEYWORD("tan"), TAO_PEGTL_KEYWORD("asin"), TAO_PEGTL_KEYWORD("acos"),
-             TAO_PEGTL_KEYWORD("atan2"), TAO_PEGTL_KEYWORD("atan"), TAO_PEGTL_KEYWORD("sqrt"),
-             TAO_PEGTL_KEYWORD("pow"), TAO_PEGTL_KEYWORD("exp"), TAO_PEGTL_KEYWORD("log"),
-             TAO_PEGTL_KEYWORD("ln"), TAO_PEGTL_KEYWORD("min"), TAO_PEGTL_KEYWORD("max"),
-             TAO_PEGTL_KEYWORD("mod"), TAO_PEGTL_KEYWORD("div"), TAO_PEGTL_KEYWORD("int"),
-             TAO_PEGTL_KEYWORD("floor"), TAO_PEGTL_KEYWORD("ceil"), TAO_PEGTL_KEYWORD("radians"),
-             TAO_PEGTL_KEYWORD("degrees"), TAO_PEGTL_KEYWORD("select"),
-             TAO_PEGTL_KEYWORD("vlength"), TAO_PEGTL_KEYWORD("vnormalize"),
-             TAO_PEGTL_KEYWORD("vcross"), TAO_PEGTL_KEYWORD("vdot"), TAO_PEGTL_KEYWORD("vrotate"),
-             TAO_PEGTL_KEYWORD("vaxis_rotate"), TAO_PEGTL_KEYWORD("vstr"),
-             TAO_PEGTL_KEYWORD("str"), TAO_PEGTL_KEYWORD("concat"), TAO_PEGTL_KEYWORD("chr"),
-             TAO_PEGTL_KEYWORD("asc"), TAO_PEGTL_KEYWORD("strlen"), TAO_PEGTL_KEYWORD("substr"),
-             TAO_PEGTL_KEYWORD("strupr"), TAO_PEGTL_KEYWORD("strlwr"), TAO_PEGTL_KEYWORD("val"),
-             TAO_PEGTL_KEYWORD("dimension_size"), TAO_PEGTL_KEYWORD("dimensions"),
-             TAO_PEGTL_KEYWORD("seed"), TAO_PEGTL_KEYWORD("rand"), TAO_PEGTL_KEYWORD("sinh"),
-             TAO_PEGTL_KEYWORD("cosh"), TAO_PEGTL_KEYWORD("tanh"), TAO_PEGTL_KEYWORD("bitwise_and"),
-             TAO_PEGTL_KEYWORD("bitwise_or"), TAO_PEGTL_KEYWORD("bitwise_xor"),
-             TAO_PEGTL_KEYWORD("file_exists")> {};
+struct function_words {
+    static constexpr std::array<std::string_view, 50> list = {
+        "abs", "acos", "asc", "asin", "atan", "atan2", "bitwise_and", "bitwise_or", "bitwise_xor",
+        "ceil", "chr", "concat", "cos", "cosh", "degrees", "dimension_size", "dimensions", "div",
+        "exp", "file_exists", "floor", "int", "ln", "log", "max", "min", "mod", "pow", "radians",
+        "rand", "seed", "select", "sin", "sinh", "sqrt", "str", "strlen", "strlwr", "strupr",
+        "substr", "tan", "tanh", "val", "vaxis_rotate", "vcross", "vdot", "vlength", "vnormalize",
+        "vrotate", "vstr"};
+};
+struct function_name : one_word_of<function_words> {};
 struct call_open : lparen {};
 struct call_close : rparen {};
 struct call_argument : p::seq<value> {};
@@ -214,30 +232,29 @@ struct defined_name : identifier {};
 struct defined_call
     : p::seq<kw_defined, p::must<lparen>, p::must<defined_name>, p::must<paren_close>> {};
 
-struct builtin_constant_name
-    : p::sor<TAO_PEGTL_KEYWORD("pi"), TAO_PEGTL_KEYWORD("tau"), TAO_PEGTL_KEYWORD("true"),
-             TAO_PEGTL_KEYWORD("false"), TAO_PEGTL_KEYWORD("yes"), TAO_PEGTL_KEYWORD("no"),
-             TAO_PEGTL_KEYWORD("on"), TAO_PEGTL_KEYWORD("off"), TAO_PEGTL_KEYWORD("x"),
-             TAO_PEGTL_KEYWORD("y"), TAO_PEGTL_KEYWORD("z"), TAO_PEGTL_KEYWORD("t"),
-             TAO_PEGTL_KEYWORD("u"), TAO_PEGTL_KEYWORD("v"), TAO_PEGTL_KEYWORD("image_width"),
-             TAO_PEGTL_KEYWORD("image_height"), TAO_PEGTL_KEYWORD("clock_delta"),
-             TAO_PEGTL_KEYWORD("clock_on"), TAO_PEGTL_KEYWORD("clock"),
-             TAO_PEGTL_KEYWORD("frame_number"), TAO_PEGTL_KEYWORD("initial_clock"),
-             TAO_PEGTL_KEYWORD("final_clock"), TAO_PEGTL_KEYWORD("initial_frame"),
-             TAO_PEGTL_KEYWORD("final_frame"), TAO_PEGTL_KEYWORD("version")> {};
+struct builtin_constant_words {
+    static constexpr std::array<std::string_view, 25> list = {
+        "clock", "clock_delta", "clock_on", "false", "final_clock", "final_frame", "frame_number",
+        "image_height", "image_width", "initial_clock", "initial_frame", "no", "off", "on", "pi",
+        "t", "tau", "true", "u", "v", "version", "x", "y", "yes", "z"};
+};
+struct builtin_constant_name : one_word_of<builtin_constant_words> {};
 struct builtin_constant : p::seq<builtin_constant_name, ws> {};
 
 // Colours: rgb <..>, rgbf, rgbt, rgbft, srgb..., and `color red 1 green .5`.
-struct colour_model
-    : p::sor<TAO_PEGTL_KEYWORD("rgbft"), TAO_PEGTL_KEYWORD("rgbf"), TAO_PEGTL_KEYWORD("rgbt"),
-             TAO_PEGTL_KEYWORD("rgb"), TAO_PEGTL_KEYWORD("srgbft"), TAO_PEGTL_KEYWORD("srgbf"),
-             TAO_PEGTL_KEYWORD("srgbt"), TAO_PEGTL_KEYWORD("srgb")> {};
+struct colour_model_words {
+    static constexpr std::array<std::string_view, 8> list = {
+        "rgb", "rgbf", "rgbft", "rgbt", "srgb", "srgbf", "srgbft", "srgbt"};
+};
+struct colour_model : one_word_of<colour_model_words> {};
 // POV-Ray's rgb takes a whole sum: rgb <.1,.2,.3> + .5 leaves filter at 0.
 struct colour_model_argument : p::seq<sum> {};
 struct colour_model_literal : p::seq<colour_model, ws, p::must<colour_model_argument>> {};
-struct colour_component_name
-    : p::sor<TAO_PEGTL_KEYWORD("red"), TAO_PEGTL_KEYWORD("green"), TAO_PEGTL_KEYWORD("blue"),
-             TAO_PEGTL_KEYWORD("filter"), TAO_PEGTL_KEYWORD("transmit")> {};
+struct colour_component_words {
+    static constexpr std::array<std::string_view, 5> list = {
+        "blue", "filter", "green", "red", "transmit"};
+};
+struct colour_component_name : one_word_of<colour_component_words> {};
 struct colour_component_value : p::seq<unary> {};
 struct colour_component_setting
     : p::seq<colour_component_name, ws, p::must<colour_component_value>> {};
@@ -734,23 +751,15 @@ struct light_block
 
 // Object kinds POV-Ray has and hexant does not: kept as source, an error
 // only where used. Also `function { }` and the *_map blocks.
-struct unsupported_kind
-    : p::sor<TAO_PEGTL_KEYWORD("function"), TAO_PEGTL_KEYWORD("isosurface"),
-             TAO_PEGTL_KEYWORD("blob"), TAO_PEGTL_KEYWORD("mesh2"), TAO_PEGTL_KEYWORD("mesh"),
-             TAO_PEGTL_KEYWORD("height_field"), TAO_PEGTL_KEYWORD("lathe"), TAO_PEGTL_KEYWORD("sor"),
-             TAO_PEGTL_KEYWORD("sphere_sweep"), TAO_PEGTL_KEYWORD("superellipsoid"),
-             TAO_PEGTL_KEYWORD("text"), TAO_PEGTL_KEYWORD("julia_fractal"),
-             TAO_PEGTL_KEYWORD("parametric"), TAO_PEGTL_KEYWORD("poly"),
-             TAO_PEGTL_KEYWORD("polynomial"), TAO_PEGTL_KEYWORD("cubic"),
-             TAO_PEGTL_KEYWORD("quartic"), TAO_PEGTL_KEYWORD("quadric"),
-             TAO_PEGTL_KEYWORD("bicubic_patch"), TAO_PEGTL_KEYWORD("ovus"),
-             TAO_PEGTL_KEYWORD("lemon"), TAO_PEGTL_KEYWORD("color_map"),
-             TAO_PEGTL_KEYWORD("colour_map"), TAO_PEGTL_KEYWORD("pigment_map"),
-             TAO_PEGTL_KEYWORD("normal_map"), TAO_PEGTL_KEYWORD("texture_map"),
-             TAO_PEGTL_KEYWORD("slope_map"), TAO_PEGTL_KEYWORD("density_map"),
-             TAO_PEGTL_KEYWORD("density"), TAO_PEGTL_KEYWORD("media"),
-             TAO_PEGTL_KEYWORD("photons"), TAO_PEGTL_KEYWORD("rainbow"),
-             TAO_PEGTL_KEYWORD("sky_sphere"), TAO_PEGTL_KEYWORD("fog")> {};
+struct unsupported_kind_words {
+    static constexpr std::array<std::string_view, 34> list = {
+        "bicubic_patch", "blob", "color_map", "colour_map", "cubic", "density", "density_map",
+        "fog", "function", "height_field", "isosurface", "julia_fractal", "lathe", "lemon",
+        "media", "mesh", "mesh2", "normal_map", "ovus", "parametric", "photons", "pigment_map",
+        "poly", "polynomial", "quadric", "quartic", "rainbow", "sky_sphere", "slope_map", "sor",
+        "sphere_sweep", "superellipsoid", "text", "texture_map"};
+};
+struct unsupported_kind : one_word_of<unsupported_kind_words> {};
 struct unsupported_block
     : p::seq<unsupported_kind, ws, p::opt<skip::parenthesized, ws>, p::must<skipped_block>, ws> {};
 
@@ -905,6 +914,8 @@ template <typename Name>
 struct analyze_traits<Name, hexant::language::grammar::name> : analyze_any_traits<> {};
 template <typename Name>
 struct analyze_traits<Name, hexant::language::grammar::block_comment_body> : analyze_any_traits<> {};
+template <typename Name, typename Words>
+struct analyze_traits<Name, hexant::language::grammar::one_word_of<Words>> : analyze_any_traits<> {};
 #define HEXANT_CUSTOM_ANALYZE(rule)                                                         \
     template <typename Name, typename Item>                                                \
     struct analyze_traits<Name, hexant::language::grammar::rule<Item>> : analyze_any_traits<> {}

@@ -55,9 +55,38 @@ TEST_CASE("every keyword of the grammar is a reserved word", "[grammar]") {
         INFO((*it)[1].str());
         CHECK(g::is_reserved_word((*it)[1].str()));
     }
-    CHECK(count > 200);
+    // The tables of words matched by lookup (one_word_of).
+    const auto check_table = [&](const auto& list) {
+        for (const std::string_view word : list) {
+            INFO(word);
+            CHECK(g::is_reserved_word(word));
+            ++count;
+        }
+    };
+    check_table(g::function_words::list);
+    check_table(g::builtin_constant_words::list);
+    check_table(g::colour_model_words::list);
+    check_table(g::colour_component_words::list);
+    check_table(g::unsupported_kind_words::list);
+    CHECK(count > 300);
     CHECK_FALSE(g::is_reserved_word("Radius"));
     CHECK_FALSE(g::is_reserved_word("sphere_2"));
+}
+
+TEST_CASE("a word of a table matches whole, or not at all", "[grammar]") {
+    for (const char* word : {"sin", "atan", "atan2", "vaxis_rotate", "file_exists", "abs"}) {
+        INFO(word);
+        CHECK(whole<g::function_name>(word));
+    }
+    for (const char* text : {"sinx", "atan3", "Sin", "sin_", "s", "", "2sin", "_abs"}) {
+        INFO(text);
+        CHECK_FALSE(whole<g::function_name>(text));
+    }
+    CHECK(whole<g::builtin_constant_name>("clock"));
+    CHECK(whole<g::builtin_constant_name>("clock_delta"));
+    CHECK_FALSE(whole<g::builtin_constant_name>("clocks"));
+    CHECK(whole<g::colour_model>("srgbft"));
+    CHECK_FALSE(whole<g::colour_model>("rgba"));
 }
 
 TEST_CASE("blanks and comments, nested block comments included", "[grammar]") {
