@@ -226,3 +226,20 @@ TEST_CASE("a lazy hierarchy lets go of the slabs of frames done: memory stays a 
     lazy.count_full_hierarchy();
     CHECK(lazy.counters().cells_full == eager.counters().cells_full);
 }
+
+// Cells of more objects than the cost criterion prices one by one
+// (kCostSample, tracer/hierarchy.cpp) are priced from a sample: the cells
+// built may differ, the image may not.
+TEST_CASE("a swarm priced from a sample makes the same images, lazy or eager, either criterion",
+          "[tracer][build]") {
+    const auto scene = example("swarm", 40, {"N=6000"});
+    REQUIRE(scene.objects.size() > 4096);
+    const tr::Image reference =
+        render(scene, options(tr::Criterion::Cost, tr::BuildKind::Lazy, tr::BoundStyle::Auto), 5, 2);
+    for (const auto criterion : {tr::Criterion::Cost, tr::Criterion::Paper})
+        for (const auto build : {tr::BuildKind::Lazy, tr::BuildKind::Eager}) {
+            INFO("criterion " << int(criterion) << " build " << int(build));
+            CHECK(differing(render(scene, options(criterion, build, tr::BoundStyle::Auto), 5, 2),
+                            reference) == 0);
+        }
+}
