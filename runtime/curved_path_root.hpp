@@ -37,6 +37,11 @@ inline constexpr double kCurvedPathRelativeWidth = 1e-6;
 // A hard limit on pieces examined, so a pathological path cannot hang the
 // tracer; reaching it means a miss (counted by the caller's tests).
 inline constexpr int kCurvedPathMaxPieces = 1 << 16;
+// The limit in force: kCurvedPathMaxPieces, or lower where a caller asks.
+// The fuzzer lowers it as it lowers the language's loop limits (tests/fuzz/):
+// a search that meets the limit is bounded work, not a hang, but an 8 by 8
+// frame of such searches took over 20 s under the sanitizers.
+inline std::atomic<int> g_curved_path_max_pieces{kCurvedPathMaxPieces};
 // A piece halved down to the doubles' resolution whose box is still wider
 // than the stop width is unresolved: the enclosure did not converge there.
 // A bend's inverse leaves a few such pieces near a root, where the other
@@ -57,8 +62,8 @@ inline std::uint64_t curved_path_solves() {
     return g_curved_path_solves.load(std::memory_order_relaxed);
 }
 
-// How many searches gave up at kCurvedPathMaxPieces or
-// kCurvedPathMaxUnresolved (and answered "miss"): the stress suite requires none.
+// How many searches gave up at the piece limit or kCurvedPathMaxUnresolved
+// (and answered "miss"): the stress suite requires none.
 inline std::atomic<std::uint64_t> g_curved_path_give_ups{0};
 
 inline std::uint64_t curved_path_give_ups() {
@@ -88,11 +93,12 @@ std::optional<CurvedPathHit> first_hit_on_curve(double s_min, double s_max, doub
     std::pair<double, double> stack[256];
     int top = 0;
     stack[top++] = {s_min, s_max};
+    const int max_pieces = g_curved_path_max_pieces.load(std::memory_order_relaxed);
     int examined = 0, unresolved = 0;
     bool gave_up = false;
     std::optional<CurvedPathHit> found;
     while (top > 0) {
-        if (examined == kCurvedPathMaxPieces) {
+        if (examined >= max_pieces) {
             gave_up = true;
             break;
         }
