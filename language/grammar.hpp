@@ -89,6 +89,13 @@ struct rangle : punct<'>'> {};
 #define HEXANT_KEYWORD(rule, text) \
     struct rule : p::seq<TAO_PEGTL_KEYWORD(text), ws> {}
 
+// The end of the run of letters, digits and '_' that starts at b (b itself
+// if there is none): a word, as names and keywords are read.
+inline const char* word_end(const char* b, const char* e) {
+    while (b != e && (std::isalnum(static_cast<unsigned char>(*b)) || *b == '_')) ++b;
+    return b;
+}
+
 // One whole word of Words::list (sorted; a word is letters, digits and
 // '_'), read once and found by binary search. A p::sor of N keywords
 // compares the input with each in turn, and every primary of an expression
@@ -105,9 +112,7 @@ struct one_word_of {
     static bool match(ParseInput& in, States&...) {
         const char* b = in.current();
         const char* e = in.end();
-        const char* q = b;
-        while (q != e && (std::isalnum(static_cast<unsigned char>(*q)) || *q == '_')) ++q;
-        const std::string_view word(b, static_cast<std::size_t>(q - b));
+        const std::string_view word(b, static_cast<std::size_t>(word_end(b, e) - b));
         if (word.empty() || !std::binary_search(Words::list.begin(), Words::list.end(), word))
             return false;
         in.bump_in_this_line(word.size());
@@ -126,11 +131,8 @@ struct name {
     static bool match(ParseInput& in, States&...) {
         const char* b = in.current();
         const char* e = in.end();
-        auto is_first = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; };
-        auto is_other = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
-        if (b == e || !is_first(*b)) return false;
-        const char* q = b + 1;
-        while (q != e && is_other(*q)) ++q;
+        if (b == e || !(std::isalpha(static_cast<unsigned char>(*b)) || *b == '_')) return false;
+        const char* q = word_end(b, e);
         if (is_reserved_word(std::string_view(b, static_cast<std::size_t>(q - b)))) return false;
         in.bump_in_this_line(static_cast<std::size_t>(q - b));
         return true;
