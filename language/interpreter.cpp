@@ -41,20 +41,30 @@ void Interpreter::check_string_length(std::size_t length, const std::string& wha
 
 // ------------------------------------------------------------------ sources and errors
 
-const std::string& Interpreter::add_source(const std::string& name, std::string text) {
-    sources_.emplace_back(name, std::move(text));
-    return sources_.back().second;
-}
-
 namespace {
 
-// The newest source of that name (an include read twice is kept twice).
+// The newest source of that name (an include read twice is kept twice if
+// its text changed in between).
 const std::string* newest_source(const std::deque<std::pair<std::string, std::string>>& sources,
                                  const std::string& name) {
     for (auto it = sources.rbegin(); it != sources.rend(); ++it)
         if (it->first == name) return &it->second;
     return nullptr;
 }
+
+}  // namespace
+
+const std::string& Interpreter::add_source(const std::string& name, std::string text) {
+    // A file included again with the same text shares the kept copy (an
+    // #include inside a loop kept one copy a turn). Macros declared in it
+    // point into the copy, which is never changed.
+    if (const std::string* kept = newest_source(sources_, name); kept != nullptr && *kept == text)
+        return *kept;
+    sources_.emplace_back(name, std::move(text));
+    return sources_.back().second;
+}
+
+namespace {
 
 // The line of `text` that starts at `begin`, without its end of line.
 std::string line_from(const std::string& text, std::size_t begin) {

@@ -236,6 +236,17 @@ public:
                             "(--max-iterations N raises the limit)");
     }
 
+    // Text about to be read, or just read again (a file, a loop's turn, a
+    // macro's body), against Limits::text_read; throws at `where` past it.
+    void count_text(std::size_t bytes, const p::position& where) {
+        text_read_ += bytes;
+        if (text_read_ > options.limits.text_read)
+            fail(where, "the scene's reading went over more than " +
+                            std::to_string(options.limits.text_read) +
+                            " bytes of text (each loop turn and macro call reads its body "
+                            "again); stopping here (--max-text-read N raises the limit)");
+    }
+
 private:
     template <typename Rule, template <typename...> class Action,
               template <typename...> class Control, typename ParseInput>
@@ -292,6 +303,7 @@ private:
     int macro_depth_ = 0;
     int include_depth_ = 0;
     std::size_t steps_ = 0;
+    std::size_t text_read_ = 0;
     std::shared_ptr<MemoryBudget> array_memory_;
 };
 
@@ -471,6 +483,7 @@ bool Interpreter::run_while(ParseInput& in) {
         const Divider d = go ? run_body<Item, Action, Control>(in) : skip_body<Control>(in);
         if (d != Divider::End) unclosed(opened, "#while", d, in);
         if (!go) return true;
+        count_text(static_cast<std::size_t>(in.current() - start.data), opened);
     }
 }
 
@@ -505,6 +518,7 @@ bool Interpreter::run_for(ParseInput& in) {
         in.iterator() = start;
         const Divider d = run_body<Item, Action, Control>(in);
         if (d != Divider::End) unclosed(opened, "#for", d, in);
+        count_text(static_cast<std::size_t>(in.current() - start.data), opened);
     }
     // As in POV-Ray, the variable is left one step past the end.
     declare(variable, Value{TimeFunction(v)}, true);
@@ -649,6 +663,7 @@ bool Interpreter::call_macro(ParseInput& in) {
                              " deep; stopping (runaway recursion? --max-macro-depth N raises the "
                              "limit)");
     count_step(call_place);
+    count_text(static_cast<std::size_t>(macro->body_end - macro->body_begin), call_place);
     scopes_.emplace_back();
     try {
         for (std::size_t i = 0; i < args.size(); ++i)
@@ -749,6 +764,7 @@ bool Interpreter::run_include(ParseInput& in) {
     std::ifstream stream(path, std::ios::binary);
     if (!stream) fail(opened, "cannot read include file '" + path.string() + "'");
     std::string text((std::istreambuf_iterator<char>(stream)), std::istreambuf_iterator<char>());
+    count_text(text.size(), opened);
     ++include_depth_;
     scopes_.emplace_back();
     try {

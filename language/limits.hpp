@@ -17,6 +17,14 @@ struct Limits {
     // limit but take 10^10 steps). 10^8 trivial iterations take about a
     // minute.
     std::size_t total_iterations = 100'000'000;
+    // Bytes of scene text the reader goes over: every file once per
+    // #include, a loop's body once per turn and a macro's body once per
+    // call. Iterations alone do not bound the work: a loop whose 50 KB body
+    // is stepped over (a #switch matching no case) takes 1.7 ms a turn, so
+    // 10^7 turns would take four hours (found by the fuzzer). That body is
+    // 1 GiB in 10 s (111 MB/s stepped over), and 1 GiB leaves room for 10^6
+    // turns of a 1 KB body.
+    std::size_t text_read = std::size_t(1) << 30;
     // Macro calls inside macro calls, and #include inside #include.
     int macro_depth = 200;
     int include_depth = 100;

@@ -1,5 +1,6 @@
 #include "language/scene_error.hpp"
 
+#include <algorithm>
 #include <sstream>
 
 namespace hexant::language {
@@ -12,11 +13,22 @@ std::string header(const ErrorPlace& place) {
 }
 
 // The source line with a caret under the column (tabs kept so it lines up).
+// A long line (a generated scene's can be megabytes) is shown as the
+// kShownWidth bytes around the column, cut ends marked "...".
 void caret(std::ostringstream& out, const ErrorPlace& place) {
     if (place.line == 0) return;  // no place in a file (e.g. an unreadable scene)
-    out << "    " << place.source_line << "\n    ";
-    for (std::size_t i = 1; i < place.column && i <= place.source_line.size(); ++i)
-        out << (place.source_line[i - 1] == '\t' ? '\t' : ' ');
+    constexpr std::size_t kShownWidth = 160;
+    const std::string& line = place.source_line;
+    const std::size_t column = std::max<std::size_t>(place.column, 1);
+    std::size_t first = 0;  // the first byte shown
+    if (line.size() > kShownWidth && column > kShownWidth / 2)
+        first = std::min(column - 1 - kShownWidth / 2, line.size() - kShownWidth);
+    const std::string shown = line.substr(first, kShownWidth);
+    const char* const before = first > 0 ? "..." : "";
+    out << "    " << before << shown << (first + shown.size() < line.size() ? "..." : "") << "\n    "
+        << before;
+    for (std::size_t i = first + 1; i < column && i <= first + shown.size(); ++i)
+        out << (line[i - 1] == '\t' ? '\t' : ' ');
     out << "^\n";
 }
 

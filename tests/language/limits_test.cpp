@@ -6,6 +6,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <filesystem>
+#include <fstream>
 #include <sstream>
 
 #include "language/interpreter.hpp"
@@ -19,6 +21,7 @@ using hexant::language::ParseOptions;
 using hexant::language::SceneError;
 using hexant::test::error_of;
 using hexant::test::reads;
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -48,6 +51,57 @@ TEST_CASE("the total iteration budget spans nested loops and macro calls", "[lim
     const SceneError m = error_of("#macro M() #end\n#for (I, 1, 30) M() #end\n", options);
     CHECK(contains(m, "macro calls in all"));
     CHECK(m.places().front().line == 2);
+}
+
+TEST_CASE("the text read is bounded: a loop's turns, macro calls and includes read again",
+          "[limits]") {
+    // The fuzzer's find (tests/scenes/fuzz_found/switch_skip_hang.pov): a
+    // loop that never ends, each turn stepping over a long body, stayed
+    // under the iteration limits for hours. Here a 10 KB body.
+    // (A loop's body starts after the blanks and comments that follow its
+    // header, hence the #declare first.)
+    const std::string body = "#declare X = 0; /*" + std::string(10'000, '.') + "*/";
+    ParseOptions options;
+    options.limits.text_read = 1'000'000;
+    const SceneError w = error_of("#declare I = 0;\n#while (1)\n  #switch (I) #case (1) " + body +
+                                      " #end\n#end\n",
+                                  options);
+    CHECK(contains(w, "more than 1000000 bytes of text"));
+    CHECK(contains(w, "--max-text-read"));
+    CHECK(w.places().front().line == 2);  // the loop that read it again
+    // A for loop and macro calls count the same way; 90 turns of the body
+    // fit, 110 do not.
+    reads("#for (I, 1, 90) " + body + " #end", options);
+    const SceneError f = error_of("#for (I, 1, 110) " + body + " #end", options);
+    CHECK(contains(f, "bytes of text"));
+    // Its report shows 160 bytes of the 10 KB line from the place, not all.
+    const std::string report = f.formatted();
+    CHECK(report.size() < 600);
+    CHECK(report.find("\n    #for (I, 1, 110) #declare X = 0; /*....") != std::string::npos);
+    CHECK(report.find("....\n    ^\n") != std::string::npos);
+    // In the middle of a long line, the caret still points at the place.
+    hexant::language::ErrorPlace middle{"long.pov", 1, 5001, std::string(10'000, 'a'), {}};
+    middle.source_line[5000] = 'X';
+    const std::string shown = SceneError("bad", middle).formatted();
+    CHECK(shown.find("\n    ..." + std::string(80, 'a') + "X" + std::string(79, 'a') + "...\n    ..." +
+                     std::string(80, ' ') + "^\n") != std::string::npos);
+    const std::string macro = "#macro M() " + body + " #end\n";
+    reads(macro + "#for (I, 1, 90) M() #end", options);  // the turns are short, the calls long
+    const SceneError m = error_of(macro + "#for (I, 1, 110) M() #end", options);
+    CHECK(contains(m, "bytes of text"));
+
+    // An include counts its file each time it is read.
+    const fs::path folder = fs::temp_directory_path() / "hexant_text_read_test";
+    fs::create_directories(folder);
+    std::ofstream(folder / "long.inc") << body;
+    std::ofstream(folder / "twice.pov") << "#for (I, 1, 90) #include \"long.inc\" #end\n";
+    std::ofstream(folder / "many.pov") << "#for (I, 1, 110) #include \"long.inc\" #end\n";
+    std::ostringstream messages;
+    options.messages = &messages;
+    CHECK_NOTHROW(hexant::language::parse_scene_file(folder / "twice.pov", options));
+    CHECK_THROWS_WITH(hexant::language::parse_scene_file(folder / "many.pov", options),
+                      Catch::Contains("bytes of text"));
+    fs::remove_all(folder);
 }
 
 TEST_CASE("a string longer than the limit stops where it would be made", "[limits]") {
