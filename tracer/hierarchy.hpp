@@ -116,7 +116,11 @@ struct SweptObjects {
 };
 
 inline constexpr int kMaxSweepDepth = 8;
-inline constexpr std::size_t kSweepPieceBudget = std::size_t(1) << 22;
+// 2^21 pieces, 48 MB: it binds past 8,192 moving objects. At 10^5 swarm
+// spheres (16 pieces each instead of 32) the same cells, tests and images,
+// 27 MB less; at 2^20 (8 pieces) the cost criterion, pricing upper cells
+// from looser boxes, chose cells that tested 3.5 times the objects.
+inline constexpr std::size_t kSweepPieceBudget = std::size_t(1) << 21;
 
 // A cell whose node is not built yet.
 struct PendingCell {

@@ -68,6 +68,12 @@ double surface_area(const runtime::Box4& box) {
     return area_of_extents(e.x, e.y, e.z);
 }
 
+double surface_area(const BinBox& box) {
+    if (box.is_empty()) return 0.0;
+    return area_of_extents(double(box.hi[0]) - box.lo[0], double(box.hi[1]) - box.lo[1],
+                           double(box.hi[2]) - box.lo[2]);
+}
+
 BinBox BinBox::of(const runtime::Box4& box) {
     BinBox b;
     if (box.is_empty()) return b;

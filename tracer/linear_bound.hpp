@@ -66,12 +66,14 @@ struct TimeBins {
     void add(const TimeBins& o) {
         for (int i = 0; i < count; ++i) bin[i].extend(o.bin[i]);
     }
-    // The box over all bins, over time t (the bins' whole time).
-    runtime::Box4 hull(const runtime::Interval& t) const {
+    // The box over all bins (their space part).
+    BinBox hull() const {
         BinBox h;
         for (int i = 0; i < count; ++i) h.extend(bin[i]);
-        return h.box(t);
+        return h;
     }
+    // The same over time t (the bins' whole time).
+    runtime::Box4 hull(const runtime::Interval& t) const { return hull().box(t); }
     // The mean over the bins of their boxes' surface areas (0 for empty
     // bins): an estimate of the area a ray at a random instant sees.
     double mean_area() const;
@@ -90,5 +92,6 @@ LinearBox fit_linear(const TimeBins& bins);
 
 // Surface area of a box's space part (0 for an empty box).
 double surface_area(const runtime::Box4& box);
+double surface_area(const BinBox& box);  // of its space part; 0 if empty
 
 }  // namespace hexant::tracer
