@@ -122,12 +122,17 @@ inline constexpr int kMaxSweepDepth = 8;
 // from looser boxes, chose cells that tested 3.5 times the objects.
 inline constexpr std::size_t kSweepPieceBudget = std::size_t(1) << 21;
 
+// The objects a cell holds (indices into SweptObjects). Shared: a cell
+// halved in time mostly hands all of its objects to both halves, and 64
+// pending slabs of 10^5 objects each kept a copy (25 MB).
+using ObjectList = std::shared_ptr<const std::vector<std::uint32_t>>;
+
 // A cell whose node is not built yet.
 struct PendingCell {
     runtime::Box4 region;
     int time_level = -1;  // its time as a dyadic piece of the sweeps' (Hierarchy::CellTime)
     std::uint64_t time_index = 0;
-    std::vector<std::uint32_t> objects;
+    ObjectList objects;
     int depth = 0;
     tbb::collaborative_once_flag once;  // threads that wait help build
     NodeRef built;
