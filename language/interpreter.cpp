@@ -67,10 +67,10 @@ const std::string& Interpreter::add_source(const std::string& name, std::string 
 namespace {
 
 // The line of `text` that starts at `begin`, without its end of line.
-std::string line_from(const std::string& text, std::size_t begin) {
+std::string_view line_from(const std::string& text, std::size_t begin) {
     std::size_t end = begin;
     while (end < text.size() && text[end] != '\n' && text[end] != '\r') ++end;
-    return text.substr(begin, end - begin);
+    return std::string_view(text).substr(begin, end - begin);
 }
 
 }  // namespace
@@ -80,7 +80,7 @@ ErrorPlace Interpreter::place(const p::position& position, std::string note) con
     if (const std::string* text = newest_source(sources_, position.source)) {
         std::size_t begin = std::min(position.byte, text->size());
         while (begin > 0 && (*text)[begin - 1] != '\n') --begin;
-        place.source_line = line_from(*text, begin);
+        place.set_source_line(line_from(*text, begin));
     }
     return place;
 }
@@ -94,7 +94,7 @@ ErrorPlace Interpreter::place(const runtime::SourcePlace& where, std::string not
             begin = text->find('\n', begin);
             if (begin != std::string::npos) ++begin;
         }
-        if (begin != std::string::npos) place.source_line = line_from(*text, begin);
+        if (begin != std::string::npos) place.set_source_line(line_from(*text, begin));
     }
     return place;
 }

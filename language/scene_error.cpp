@@ -12,27 +12,41 @@ std::string header(const ErrorPlace& place) {
     return place.file + ":" + std::to_string(place.line) + ":" + std::to_string(place.column);
 }
 
-// The source line with a caret under the column (tabs kept so it lines up).
-// A long line (a generated scene's can be megabytes) is shown as the
-// kShownWidth bytes around the column, cut ends marked "...".
+// The first byte of a line of `size` bytes to show so that `column` (1 is
+// the first byte) lies in the kShownWidth shown: the line's start, or a
+// window with the column near its middle.
+std::size_t shown_first(std::size_t size, std::size_t column) {
+    constexpr std::size_t w = ErrorPlace::kShownWidth;
+    if (size <= w || column <= w / 2) return 0;
+    return std::min(column - 1 - w / 2, size - w);
+}
+
+// The source line with a caret under the column (tabs kept so it lines up),
+// cut ends marked "...".
 void caret(std::ostringstream& out, const ErrorPlace& place) {
     if (place.line == 0) return;  // no place in a file (e.g. an unreadable scene)
-    constexpr std::size_t kShownWidth = 160;
     const std::string& line = place.source_line;
-    const std::size_t column = std::max<std::size_t>(place.column, 1);
-    std::size_t first = 0;  // the first byte shown
-    if (line.size() > kShownWidth && column > kShownWidth / 2)
-        first = std::min(column - 1 - kShownWidth / 2, line.size() - kShownWidth);
-    const std::string shown = line.substr(first, kShownWidth);
-    const char* const before = first > 0 ? "..." : "";
-    out << "    " << before << shown << (first + shown.size() < line.size() ? "..." : "") << "\n    "
-        << before;
+    // The column within source_line (1 its first byte).
+    const std::size_t column =
+        place.column > place.source_first ? place.column - place.source_first : 1;
+    const std::size_t first = shown_first(line.size(), column);
+    const std::string shown = line.substr(first, ErrorPlace::kShownWidth);
+    const char* const before = place.source_first + first > 0 ? "..." : "";
+    const bool cut = place.source_cut || first + shown.size() < line.size();
+    out << "    " << before << shown << (cut ? "..." : "") << "\n    " << before;
     for (std::size_t i = first + 1; i < column && i <= first + shown.size(); ++i)
         out << (line[i - 1] == '\t' ? '\t' : ' ');
     out << "^\n";
 }
 
 }  // namespace
+
+void ErrorPlace::set_source_line(std::string_view whole_line) {
+    const std::size_t first = shown_first(whole_line.size(), std::max<std::size_t>(column, 1));
+    source_line = std::string(whole_line.substr(first, kShownWidth));
+    source_first = first;
+    source_cut = first + source_line.size() < whole_line.size();
+}
 
 SceneError::SceneError(std::string message, ErrorPlace place)
     : std::runtime_error(header(place) + ": " + message), message_(std::move(message)) {

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace hexant::language {
@@ -15,8 +16,16 @@ struct ErrorPlace {
     std::string file;
     std::size_t line = 0;
     std::size_t column = 0;
-    std::string source_line;  // the text of that line, for the caret
+    std::string source_line;  // the text of that line (or of its part around the column), for the caret
     std::string note;         // for the chain: "in macro 'M' called here"
+    std::size_t source_first = 0;  // the byte of the line where source_line starts
+    bool source_cut = false;       // the line goes on past source_line
+
+    // Keeps `whole_line`, or of a long one (a generated scene's can be
+    // megabytes, and a runaway recursion makes hundreds of places on it)
+    // the kShownWidth bytes around the column.
+    void set_source_line(std::string_view whole_line);
+    static constexpr std::size_t kShownWidth = 160;
 };
 
 class SceneError : public std::runtime_error {

@@ -85,6 +85,17 @@ TEST_CASE("the text read is bounded: a loop's turns, macro calls and includes re
     const std::string shown = SceneError("bad", middle).formatted();
     CHECK(shown.find("\n    ..." + std::string(80, 'a') + "X" + std::string(79, 'a') + "...\n    ..." +
                      std::string(80, ' ') + "^\n") != std::string::npos);
+    // A place keeps only that part of its line (a runaway recursion makes
+    // hundreds of places on one line), and reports the same; at the line's
+    // start and end too.
+    for (const std::size_t column : {std::size_t(1), std::size_t(3), std::size_t(5001), std::size_t(9990),
+                                     std::size_t(10'001)}) {
+        hexant::language::ErrorPlace whole = middle, kept = middle;
+        whole.column = kept.column = column;
+        kept.set_source_line(middle.source_line);
+        CHECK(kept.source_line.size() == 160);
+        CHECK(SceneError("bad", kept).formatted() == SceneError("bad", whole).formatted());
+    }
     const std::string macro = "#macro M() " + body + " #end\n";
     reads(macro + "#for (I, 1, 90) M() #end", options);  // the turns are short, the calls long
     const SceneError m = error_of(macro + "#for (I, 1, 110) M() #end", options);
