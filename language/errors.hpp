@@ -122,6 +122,12 @@ std::string found_text(const ParseInput& in) {
     const char* e = in.end();
     if (b == e) return " but found the end of the file";
     if (*b == '\n' || *b == '\r') return " but found the end of the line";
+    if (const unsigned char c = static_cast<unsigned char>(*b); (c < 0x20 && c != '\t') || c == 0x7F) {
+        // A control character (a NUL, an escape) named, not printed: it
+        // would cut the message short or reach the terminal.
+        static const char* const kHex = "0123456789ABCDEF";
+        return std::string(" but found the control character 0x") + kHex[c >> 4] + kHex[c & 15];
+    }
     const char* q = b;
     if (*q == '#') ++q;  // a directive: show its name
     auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };

@@ -66,10 +66,13 @@ const std::string& Interpreter::add_source(const std::string& name, std::string 
 
 namespace {
 
-// The line of `text` that starts at `begin`, without its end of line.
+// The line of `text` that starts at `begin`, without its end of line: up
+// to a '\n', less a '\r' before it. A bare '\r' ends no line, as the
+// reader counts lines (PEGTL's lf_crlf).
 std::string_view line_from(const std::string& text, std::size_t begin) {
     std::size_t end = begin;
-    while (end < text.size() && text[end] != '\n' && text[end] != '\r') ++end;
+    while (end < text.size() && text[end] != '\n') ++end;
+    if (end > begin && text[end - 1] == '\r') --end;
     return std::string_view(text).substr(begin, end - begin);
 }
 
@@ -546,8 +549,21 @@ runtime::SceneDescription parse(const std::string& text, const std::string& name
 
 runtime::SceneDescription parse_scene_file(const std::filesystem::path& path,
                                            const ParseOptions& options) {
+    const ErrorPlace at{path.string(), 0, 0, {}, {}};
+    // As an #include: a regular file only (`hexant check /dev/zero` read
+    // until memory ran out), and no larger than the text a reading may go
+    // over.
+    std::error_code error;
+    if (std::filesystem::exists(path, error) && !std::filesystem::is_regular_file(path, error))
+        throw SceneError("the scene is not a regular file (a device, FIFO or folder cannot be read)", at);
+    if (const auto size = std::filesystem::file_size(path, error);
+        !error && size > options.limits.text_read)
+        throw SceneError("the scene file has " + std::to_string(size) + " bytes, more than the " +
+                             std::to_string(options.limits.text_read) +
+                             " bytes of text a reading may go over (--max-text-read N raises the limit)",
+                         at);
     std::ifstream stream(path, std::ios::binary);
-    if (!stream) throw SceneError("cannot read the scene file", ErrorPlace{path.string(), 0, 0, {}, {}});
+    if (!stream) throw SceneError("cannot read the scene file", at);
     std::string text((std::istreambuf_iterator<char>(stream)), std::istreambuf_iterator<char>());
     const auto folder = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
     return parse(text, path.string(), folder, options);

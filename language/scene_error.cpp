@@ -12,40 +12,61 @@ std::string header(const ErrorPlace& place) {
     return place.file + ":" + std::to_string(place.line) + ":" + std::to_string(place.column);
 }
 
-// The first byte of a line of `size` bytes to show so that `column` (1 is
-// the first byte) lies in the kShownWidth shown: the line's start, or a
-// window with the column near its middle.
-std::size_t shown_first(std::size_t size, std::size_t column) {
+bool continuation(char c) { return (static_cast<unsigned char>(c) & 0xC0) == 0x80; }
+
+// The first byte of `line` to show so that `column` (1 is the first byte)
+// lies in the kShownWidth shown: the line's start, or a window with the
+// column near its middle; never inside a UTF-8 character.
+std::size_t shown_first(std::string_view line, std::size_t column) {
     constexpr std::size_t w = ErrorPlace::kShownWidth;
-    if (size <= w || column <= w / 2) return 0;
-    return std::min(column - 1 - w / 2, size - w);
+    if (line.size() <= w || column <= w / 2) return 0;
+    std::size_t first = std::min(column - 1 - w / 2, line.size() - w);
+    while (first < line.size() && continuation(line[first])) ++first;
+    return first;
 }
 
-// The source line with a caret under the column (tabs kept so it lines up),
-// cut ends marked "...".
+// The end of the window from `first`: at most kShownWidth bytes, never
+// inside a UTF-8 character.
+std::size_t shown_end(std::string_view line, std::size_t first) {
+    std::size_t end = std::min(line.size(), first + ErrorPlace::kShownWidth);
+    while (end > first && end < line.size() && continuation(line[end])) --end;
+    return end;
+}
+
+// The source line with a caret under the column (tabs kept so it lines up,
+// one space a character, not a byte), cut ends marked "..." and control
+// characters (a bare carriage return, a NUL, an escape) shown as '?', so
+// that nothing in a scene can move the terminal's cursor or colour it.
 void caret(std::ostringstream& out, const ErrorPlace& place) {
     if (place.line == 0) return;  // no place in a file (e.g. an unreadable scene)
-    const std::string& line = place.source_line;
+    const std::string_view line = place.source_line;
     // The column within source_line (1 its first byte).
     const std::size_t column =
         place.column > place.source_first ? place.column - place.source_first : 1;
-    const std::size_t first = shown_first(line.size(), column);
-    const std::string shown = line.substr(first, ErrorPlace::kShownWidth);
+    const std::size_t first = shown_first(line, column);
+    const std::size_t end = shown_end(line, first);
     const char* const before = place.source_first + first > 0 ? "..." : "";
-    const bool cut = place.source_cut || first + shown.size() < line.size();
-    out << "    " << before << shown << (cut ? "..." : "") << "\n    " << before;
-    for (std::size_t i = first + 1; i < column && i <= first + shown.size(); ++i)
+    out << "    " << before;
+    for (std::size_t i = first; i < end; ++i) {
+        const unsigned char c = static_cast<unsigned char>(line[i]);
+        out << ((c < 0x20 && c != '\t') || c == 0x7F ? '?' : line[i]);
+    }
+    out << (place.source_cut || end < line.size() ? "..." : "") << "\n    " << before;
+    for (std::size_t i = first + 1; i < column && i <= end; ++i) {
+        if (continuation(line[i - 1])) continue;
         out << (line[i - 1] == '\t' ? '\t' : ' ');
+    }
     out << "^\n";
 }
 
 }  // namespace
 
 void ErrorPlace::set_source_line(std::string_view whole_line) {
-    const std::size_t first = shown_first(whole_line.size(), std::max<std::size_t>(column, 1));
-    source_line = std::string(whole_line.substr(first, kShownWidth));
+    const std::size_t first = shown_first(whole_line, std::max<std::size_t>(column, 1));
+    const std::size_t end = shown_end(whole_line, first);
+    source_line = std::string(whole_line.substr(first, end - first));
     source_first = first;
-    source_cut = first + source_line.size() < whole_line.size();
+    source_cut = end < whole_line.size();
 }
 
 SceneError::SceneError(std::string message, ErrorPlace place)

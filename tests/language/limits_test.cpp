@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -112,6 +113,52 @@ TEST_CASE("the text read is bounded: a loop's turns, macro calls and includes re
     CHECK_NOTHROW(hexant::language::parse_scene_file(folder / "twice.pov", options));
     CHECK_THROWS_WITH(hexant::language::parse_scene_file(folder / "many.pov", options),
                       Catch::Contains("bytes of text"));
+    fs::remove_all(folder);
+}
+
+TEST_CASE("an error's source line is shown as the terminal should see it", "[limits]") {
+    // One space a character under the line, not a byte: the caret under BAD.
+    const std::string u8 = error_of("#declare S = \"h\xC3\xA9llo w\xC3\xB6rld\";  BAD\n").formatted();
+    CHECK(u8.find("\n    " + std::string(29, ' ') + "^\n") != std::string::npos);
+    // Control characters (a bare carriage return, an escape, a NUL) are
+    // shown as '?', and a NUL in the way is named, not printed.
+    const std::string ctrl = error_of("sphere{0,1}\rBAD \x1b[31m\n").formatted();
+    CHECK(ctrl.find('\x1b') == std::string::npos);
+    CHECK(ctrl.find('\r') == std::string::npos);
+    CHECK(ctrl.find("    sphere{0,1}?BAD ?[31m\n") != std::string::npos);
+    const SceneError nul = error_of(std::string("sphere{0,1}\n\0\0", 15));
+    CHECK(contains(nul, "found the control character 0x00"));
+    CHECK(std::string(nul.what()).find("0x00") != std::string::npos);  // not cut at the NUL
+    // A long line cut around the place is cut between characters.
+    std::string line;
+    for (int i = 0; i < 100; ++i) line += "#declare S = \"\xC3\xA9\xE6\x97\xA5\";\n";
+    std::string one_line = line;
+    std::replace(one_line.begin(), one_line.end(), '\n', ' ');
+    const std::string cut = error_of(one_line + " BAD").formatted();
+    const std::size_t shown = cut.find("\n    ...");
+    REQUIRE(shown != std::string::npos);
+    const std::size_t shown_end = cut.find('\n', shown + 1);
+    const std::string excerpt = cut.substr(shown + 8, shown_end - shown - 8);
+    CHECK((static_cast<unsigned char>(excerpt.front()) & 0xC0) != 0x80);  // starts on a character
+    CHECK(excerpt.find(" BAD") != std::string::npos);
+}
+
+TEST_CASE("the scene file itself: a regular file, within the text a reading may go over",
+          "[limits]") {
+    ParseOptions options;
+    std::ostringstream messages;
+    options.messages = &messages;
+    if (fs::exists("/dev/zero"))
+        CHECK_THROWS_WITH(hexant::language::parse_scene_file("/dev/zero", options),
+                          Catch::Contains("not a regular file"));
+    const fs::path folder = fs::temp_directory_path() / "hexant_scene_size_test";
+    fs::create_directories(folder);
+    std::ofstream(folder / "big.pov") << "// " << std::string(5000, '.') << "\n";
+    options.limits.text_read = 4000;
+    CHECK_THROWS_WITH(hexant::language::parse_scene_file(folder / "big.pov", options),
+                      Catch::Contains("more than the 4000 bytes"));
+    options.limits.text_read = 6000;
+    CHECK_NOTHROW(hexant::language::parse_scene_file(folder / "big.pov", options));
     fs::remove_all(folder);
 }
 
