@@ -262,6 +262,49 @@ bool inside(const std::filesystem::path& file, const std::filesystem::path& fold
 
 }  // namespace
 
+namespace {
+
+// The text of a scene or include file, checked before it is read: a
+// regular file (`hexant check /dev/zero` read until memory ran out), of at
+// most max_bytes (what is left of Limits::text_read). Throws ValueError
+// saying what is wrong with it.
+std::string read_source_text(const std::filesystem::path& path, std::size_t max_bytes) {
+    namespace fs = std::filesystem;
+    std::error_code error;
+    // Not through a symbolic link's name: what it points at.
+    if (!fs::is_regular_file(path, error))
+        throw ValueError(fs::exists(path, error)
+                             ? "it is not a regular file (a device, FIFO or folder cannot be read)"
+                             : "it does not exist");
+    const auto size = fs::file_size(path, error);
+    if (error) throw ValueError("cannot read it: " + error.message());
+    if (size > max_bytes)
+        throw ValueError("its " + std::to_string(size) +
+                         " bytes would take the scene's reading over its limit of text, " +
+                         std::to_string(max_bytes) + " bytes left (--max-text-read N raises the limit)");
+    std::ifstream stream(path, std::ios::binary);
+    if (!stream) throw ValueError("cannot read it");
+    std::string text(size, '\0');
+    stream.read(text.data(), static_cast<std::streamsize>(size));
+    // A file that shrank while read keeps what was there; one that grew is
+    // read up to the size checked.
+    text.resize(static_cast<std::size_t>(stream.gcount()));
+    return text;
+}
+
+}  // namespace
+
+std::string Interpreter::read_include(const std::filesystem::path& path, const p::position& where) {
+    std::string text;
+    try {
+        text = read_source_text(path, options.limits.text_read - std::min(text_read_, options.limits.text_read));
+    } catch (const ValueError& e) {
+        fail(where, "include file '" + path.string() + "': " + e.what());
+    }
+    count_text(text.size(), where);
+    return text;
+}
+
 std::filesystem::path Interpreter::resolve_include(const std::string& name,
                                                    const p::position& where) const {
     namespace fs = std::filesystem;
@@ -549,22 +592,13 @@ runtime::SceneDescription parse(const std::string& text, const std::string& name
 
 runtime::SceneDescription parse_scene_file(const std::filesystem::path& path,
                                            const ParseOptions& options) {
-    const ErrorPlace at{path.string(), 0, 0, {}, {}};
-    // As an #include: a regular file only (`hexant check /dev/zero` read
-    // until memory ran out), and no larger than the text a reading may go
-    // over.
-    std::error_code error;
-    if (std::filesystem::exists(path, error) && !std::filesystem::is_regular_file(path, error))
-        throw SceneError("the scene is not a regular file (a device, FIFO or folder cannot be read)", at);
-    if (const auto size = std::filesystem::file_size(path, error);
-        !error && size > options.limits.text_read)
-        throw SceneError("the scene file has " + std::to_string(size) + " bytes, more than the " +
-                             std::to_string(options.limits.text_read) +
-                             " bytes of text a reading may go over (--max-text-read N raises the limit)",
-                         at);
-    std::ifstream stream(path, std::ios::binary);
-    if (!stream) throw SceneError("cannot read the scene file", at);
-    std::string text((std::istreambuf_iterator<char>(stream)), std::istreambuf_iterator<char>());
+    std::string text;
+    try {
+        text = read_source_text(path, options.limits.text_read);
+    } catch (const ValueError& e) {
+        throw SceneError(std::string("cannot read the scene file: ") + e.what(),
+                         ErrorPlace{path.string(), 0, 0, {}, {}});
+    }
     const auto folder = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
     return parse(text, path.string(), folder, options);
 }

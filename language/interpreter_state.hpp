@@ -218,6 +218,9 @@ public:
     void read_file(const std::string& name, const std::string& text);
 
     std::filesystem::path resolve_include(const std::string& name, const p::position& where) const;
+    // The text of the include file at `path` (resolve_include's), counted
+    // against Limits::text_read before it is read (read_source_text).
+    std::string read_include(const std::filesystem::path& path, const p::position& where);
 
     // The arrays' memory (Limits::array_memory): every array of this
     // reading is charged to it.
@@ -761,10 +764,7 @@ bool Interpreter::run_include(ParseInput& in) {
                          " deep; stopping (does a file include itself? --max-include-depth N "
                          "raises the limit)");
     const std::filesystem::path path = resolve_include(file, opened);
-    std::ifstream stream(path, std::ios::binary);
-    if (!stream) fail(opened, "cannot read include file '" + path.string() + "'");
-    std::string text((std::istreambuf_iterator<char>(stream)), std::istreambuf_iterator<char>());
-    count_text(text.size(), opened);
+    const std::string text = read_include(path, opened);
     ++include_depth_;
     scopes_.emplace_back();
     try {

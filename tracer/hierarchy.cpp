@@ -535,7 +535,7 @@ private:
     }
 
     // A cell at the bottom: its objects as children, each bounded inside it.
-    // While it is built a leaf of n objects holds n items of 140 bytes,
+    // While it is built a leaf of n objects holds n items of 128 bytes,
     // each object's bins packed beside its box (packed_bins.hpp); it held
     // 304 bytes an object (the bins in floats, and a 96-byte item), 30 MB
     // for a leaf of 10^5 objects, and the two threads build two at once.
@@ -549,8 +549,6 @@ private:
                                   const TimeBins bins = object_bins(objects[i], region, time, k);
                                   const BinBox hull = bins.hull();
                                   items[i].box = hull;
-                                  for (int a = 0; a < 3; ++a)
-                                      items[i].centre[a] = 0.5f * hull.lo[a] + 0.5f * hull.hi[a];
                                   items[i].object = objects[i];
                                   items[i].bins = PackedBins::pack(bins, hull);
                               }
@@ -564,14 +562,39 @@ private:
     }
 
     // An object of a leaf being grouped: the box over its bins (for the
-    // surface-area heuristic, and the frame its bins are packed in), the
-    // centre of that box, and its bins.
+    // surface-area heuristic, and the frame its bins are packed in), and its
+    // bins.
     struct Item {
         BinBox box;
-        std::array<float, 3> centre;
         std::uint32_t object;
         PackedBins bins;
     };
+    // The centre of an item's box along `axis`, where the cuts sort it.
+    static float centre(const Item& item, int axis) {
+        return 0.5f * item.box.lo[axis] + 0.5f * item.box.hi[axis];
+    }
+    // Where the centres of [first, last) spread widest: the axis, and the
+    // spread's low end and width along it.
+    struct Spread {
+        int axis;
+        double lo, width;
+    };
+    template <class It>
+    static Spread centre_spread(It first, It last) {
+        glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
+        for (It i = first; i != last; ++i)
+            for (int a = 0; a < 3; ++a) {
+                lo[a] = std::min(lo[a], double(centre(*i, a)));
+                hi[a] = std::max(hi[a], double(centre(*i, a)));
+            }
+        const glm::dvec3 e = hi - lo;
+        const int axis = e.x >= e.y && e.x >= e.z ? 0 : e.y >= e.z ? 1 : 2;
+        return {axis, lo[axis], e[axis]};
+    }
+    // Orders items by their centres along `axis`.
+    static auto by_centre(int axis) {
+        return [axis](const Item& a, const Item& b) { return centre(a, axis) < centre(b, axis); };
+    }
     // What the grouping of one leaf shares.
     struct Leaf {
         NodeArena& arena;
@@ -622,7 +645,8 @@ private:
             // runs of the centres in order along their widest spread (binary
             // cuts left the lowest nodes 60% full: 23,000 nodes for a leaf of
             // 10^5 objects where 14,300 hold them).
-            sort_along_widest(items.begin() + begin, items.begin() + end);
+            std::sort(items.begin() + begin, items.begin() + end,
+                      by_centre(centre_spread(items.begin() + begin, items.begin() + end).axis));
             const std::size_t runs = (n + kNodeWidth - 1) / kNodeWidth;
             for (std::size_t r = 0; r < runs; ++r)
                 clusters.push_back({begin + n * r / runs, begin + n * (r + 1) / runs, 0.0});
@@ -659,38 +683,19 @@ private:
         return merged;
     }
 
-    // Sorts [first, last) by the centres along their widest spread.
-    template <class It>
-    static void sort_along_widest(It first, It last) {
-        std::array<float, 3> lo, hi;
-        lo.fill(std::numeric_limits<float>::infinity());
-        hi.fill(-std::numeric_limits<float>::infinity());
-        for (It i = first; i != last; ++i)
-            for (int a = 0; a < 3; ++a) {
-                lo[a] = std::min(lo[a], i->centre[a]);
-                hi[a] = std::max(hi[a], i->centre[a]);
-            }
-        const float ex = hi[0] - lo[0], ey = hi[1] - lo[1], ez = hi[2] - lo[2];
-        const int axis = ex >= ey && ex >= ez ? 0 : ey >= ez ? 1 : 2;
-        std::sort(first, last, [axis](const auto& a, const auto& b) { return a.centre[axis] < b.centre[axis]; });
-    }
-
-    // Reorders [first, last) (items with .box and .centre) into two runs
+    // Reorders [first, last) (items) into two runs
     // and returns the length of the first: the cut with the least
     // area-times-count over sixteen bins of the centres along their widest
     // spread; the median when the centres coincide or no cut helps.
     template <class It>
     static std::size_t sah_cut(It first, It last) {
         const std::size_t n = std::size_t(last - first);
-        Box4 spread = Box4::empty();
-        for (It i = first; i != last; ++i)
-            spread.extend(runtime::Event(glm::dvec3(i->centre[0], i->centre[1], i->centre[2]), 0.0));
-        const glm::dvec4 e = spread.extent();
-        const int axis = e.x >= e.y && e.x >= e.z ? 0 : e.y >= e.z ? 1 : 2;
-        const double lo = spread.lo[axis], width = e[axis];
+        // (Named, not a structured binding: clang before 16 cannot capture one.)
+        const Spread spread = centre_spread(first, last);
+        const int axis = spread.axis;
+        const double lo = spread.lo, width = spread.width;
         const auto median = [&] {
-            std::nth_element(first, first + n / 2, last,
-                             [axis](const auto& a, const auto& b) { return a.centre[axis] < b.centre[axis]; });
+            std::nth_element(first, first + n / 2, last, by_centre(axis));
             return n / 2;
         };
         if (!(width > 0.0) || !std::isfinite(width)) return median();
@@ -698,7 +703,7 @@ private:
         std::array<BinBox, kBins> box;
         std::array<std::size_t, kBins> count{};
         const auto bin_of = [&](const auto& item) {
-            return std::clamp(int((item.centre[axis] - lo) / width * kBins), 0, kBins - 1);
+            return std::clamp(int((centre(item, axis) - lo) / width * kBins), 0, kBins - 1);
         };
         for (It i = first; i != last; ++i) {
             const int b = bin_of(*i);

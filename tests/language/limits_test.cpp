@@ -111,8 +111,10 @@ TEST_CASE("the text read is bounded: a loop's turns, macro calls and includes re
     std::ostringstream messages;
     options.messages = &messages;
     CHECK_NOTHROW(hexant::language::parse_scene_file(folder / "twice.pov", options));
+    // Refused before it is read: the limit is checked against its size.
     CHECK_THROWS_WITH(hexant::language::parse_scene_file(folder / "many.pov", options),
-                      Catch::Contains("bytes of text"));
+                      Catch::Contains("long.inc': its 10020 bytes would take the scene's reading over "
+                                      "its limit of text"));
     fs::remove_all(folder);
 }
 
@@ -156,7 +158,7 @@ TEST_CASE("the scene file itself: a regular file, within the text a reading may 
     std::ofstream(folder / "big.pov") << "// " << std::string(5000, '.') << "\n";
     options.limits.text_read = 4000;
     CHECK_THROWS_WITH(hexant::language::parse_scene_file(folder / "big.pov", options),
-                      Catch::Contains("more than the 4000 bytes"));
+                      Catch::Contains("5004 bytes would take the scene's reading over its limit of text, 4000 bytes left"));
     options.limits.text_read = 6000;
     CHECK_NOTHROW(hexant::language::parse_scene_file(folder / "big.pov", options));
     fs::remove_all(folder);
