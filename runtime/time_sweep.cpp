@@ -12,6 +12,15 @@ namespace {
 
 constexpr std::uint16_t kTop = 65535;
 
+// The float at or above x (+infinity past the floats' range or for NaN,
+// which makes a chord's box infinite: the cached piece is kept).
+float float_up(double x) {
+    if (!(x <= double(std::numeric_limits<float>::max()))) return std::numeric_limits<float>::infinity();
+    float f = float(x);
+    if (double(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+    return f;
+}
+
 double largest_extent(const Box4& b) {
     if (b.is_empty()) return 0.0;
     return std::max({b.hi.x - b.lo.x, b.hi.y - b.lo.y, b.hi.z - b.lo.z});
@@ -27,10 +36,28 @@ Interval TimeSweep::piece_time(std::size_t i) const {
     return {boundary(i), boundary(i + 1)};
 }
 
+Box4 TimeSweep::whole() const {
+    if (empty()) return Box4::empty();
+    return {Event(lo_, time_.lo), Event(hi_, time_.hi)};
+}
+
+std::size_t TimeSweep::step_count() const {
+    const std::size_t n = piece_count();
+    switch (layout_) {
+        case Layout::Whole: return 0;
+        case Layout::Still: return 6 * n;
+        case Layout::Shared: return 6 * (n + 1);
+        case Layout::Separate: return 12 * n;
+    }
+    return 0;
+}
+
 double TimeSweep::decode(int axis, std::uint16_t q) const {
-    if (q == 0) return whole_.lo[axis];
-    if (q == kTop) return whole_.hi[axis];
-    return std::min(whole_.lo[axis] + double(q) * step_[axis], whole_.hi[axis]);
+    if (q == 0) return lo_[axis];
+    if (q == kTop) return hi_[axis];
+    // One step is the extent / kTop, computed the same way at every call.
+    const double step = (hi_[axis] - lo_[axis]) / double(kTop);
+    return std::min(lo_[axis] + double(q) * step, hi_[axis]);
 }
 
 namespace {
@@ -46,58 +73,120 @@ int steps_at(double steps, int otherwise) {
 
 }  // namespace
 
-// A step at or below v (v inside whole_), checked on the decoded value.
+// A step at or below v (v inside the whole box), checked on the decoded value.
 std::uint16_t TimeSweep::encode_down(int k, double v) const {
-    const double extent = whole_.hi[k] - whole_.lo[k];
+    const double extent = hi_[k] - lo_[k];
     if (!(extent > 0.0) || !std::isfinite(extent)) return 0;
-    int q = steps_at(std::floor((v - whole_.lo[k]) * (double(kTop) / extent)), 0);
+    int q = steps_at(std::floor((v - lo_[k]) * (double(kTop) / extent)), 0);
     while (q > 0 && decode(k, std::uint16_t(q)) > v) --q;
     return std::uint16_t(q);
 }
 
 std::uint16_t TimeSweep::encode_up(int k, double v) const {
-    const double extent = whole_.hi[k] - whole_.lo[k];
+    const double extent = hi_[k] - lo_[k];
     if (!(extent > 0.0) || !std::isfinite(extent)) return kTop;
-    int q = steps_at(std::ceil((v - whole_.lo[k]) * (double(kTop) / extent)), int(kTop));
+    int q = steps_at(std::ceil((v - lo_[k]) * (double(kTop) / extent)), int(kTop));
     while (q < int(kTop) && decode(k, std::uint16_t(q)) < v) ++q;
     return std::uint16_t(q);
 }
 
-void TimeSweep::encode(std::size_t i, const MovingBox& box) {
-    std::uint16_t* q = &steps_[12 * i];
-    if (box.empty || box.hull().is_empty()) {
-        for (int k = 0; k < 3; ++k) q[k] = q[3 + k] = kTop, q[6 + k] = q[9 + k] = 0;  // no surface
+void TimeSweep::encode_box(std::uint16_t* q, const glm::dvec3& lo, const glm::dvec3& hi) const {
+    if (!(lo.x <= hi.x && lo.y <= hi.y && lo.z <= hi.z)) {
+        for (int k = 0; k < 3; ++k) q[k] = kTop, q[3 + k] = 0;  // no surface
         return;
     }
     for (int k = 0; k < 3; ++k) {
-        q[k] = encode_down(k, box.lo0[k]);
-        q[3 + k] = encode_down(k, box.lo1[k]);
-        q[6 + k] = encode_up(k, box.hi0[k]);
-        q[9 + k] = encode_up(k, box.hi1[k]);
+        q[k] = encode_down(k, lo[k]);
+        q[3 + k] = encode_up(k, hi[k]);
+    }
+}
+
+void TimeSweep::encode_pieces(const std::vector<MovingBox>& level) {
+    const std::size_t n = level.size();
+    bool still = true, some_empty = false;
+    for (const MovingBox& b : level) {
+        if (b.empty || b.hull().is_empty())
+            some_empty = true;
+        else if (b.lo0 != b.lo1 || b.hi0 != b.hi1)
+            still = false;
+    }
+    // One box held still over the whole time needs no pieces.
+    layout_ = depth_ == 0 && still ? Layout::Whole
+              : still              ? Layout::Still
+              : some_empty         ? Layout::Separate
+                                   : Layout::Shared;
+    if (layout_ == Layout::Whole) return;
+    steps_ = std::make_unique<std::uint16_t[]>(step_count());
+    std::uint16_t* q = steps_.get();
+    const glm::dvec3 none_lo(std::numeric_limits<double>::infinity()), none_hi(-none_lo);
+    switch (layout_) {
+        case Layout::Still:
+            for (const MovingBox& b : level) {
+                const bool none = b.empty || b.hull().is_empty();
+                encode_box(q, none ? none_lo : b.lo0, none ? none_hi : b.hi0);
+                q += 6;
+            }
+            break;
+        case Layout::Shared:
+            // The box at cut i holds the ends of both pieces that meet there.
+            for (std::size_t i = 0; i <= n; ++i) {
+                const MovingBox& before = level[i > 0 ? i - 1 : 0];
+                const MovingBox& after = level[i < n ? i : n - 1];
+                const glm::dvec3 lo = i == 0   ? after.lo0
+                                      : i == n ? before.lo1
+                                               : glm::min(before.lo1, after.lo0);
+                const glm::dvec3 hi = i == 0   ? after.hi0
+                                      : i == n ? before.hi1
+                                               : glm::max(before.hi1, after.hi0);
+                encode_box(q, lo, hi);
+                q += 6;
+            }
+            break;
+        case Layout::Separate:
+            for (const MovingBox& b : level) {
+                if (b.empty || b.hull().is_empty()) {
+                    encode_box(q, none_lo, none_hi);
+                    encode_box(q + 6, none_lo, none_hi);
+                } else {
+                    encode_box(q, b.lo0, b.hi0);
+                    encode_box(q + 6, b.lo1, b.hi1);
+                }
+                q += 12;
+            }
+            break;
+        case Layout::Whole: break;
     }
 }
 
 MovingBox TimeSweep::moving_piece(std::size_t i) const {
     const Interval t = piece_time(i);
-    if (steps_.empty()) return MovingBox::constant(whole_, t);
-    const std::uint16_t* q = &steps_[12 * i];
+    if (layout_ == Layout::Whole) return MovingBox::constant(whole(), t);
+    // The steps of the piece's start and end boxes (lo xyz, hi xyz each).
+    const std::uint16_t* start = nullptr;
+    const std::uint16_t* end = nullptr;
+    switch (layout_) {
+        case Layout::Still: start = end = &steps_[6 * i]; break;
+        case Layout::Shared: start = &steps_[6 * i], end = start + 6; break;
+        case Layout::Separate: start = &steps_[12 * i], end = start + 6; break;
+        case Layout::Whole: break;
+    }
     MovingBox m;
     m.time = t;
-    if (q[0] > q[6] && q[3] > q[9]) return m;  // no surface (lo > hi at both ends)
+    if (start[0] > start[3] && end[0] > end[3]) return m;  // no surface (lo > hi at both ends)
     m.empty = false;
     for (int k = 0; k < 3; ++k) {
-        m.lo0[k] = decode(k, q[k]);
-        m.lo1[k] = decode(k, q[3 + k]);
-        m.hi0[k] = decode(k, q[6 + k]);
-        m.hi1[k] = decode(k, q[9 + k]);
+        m.lo0[k] = decode(k, start[k]);
+        m.lo1[k] = decode(k, end[k]);
+        m.hi0[k] = decode(k, start[3 + k]);
+        m.hi1[k] = decode(k, end[3 + k]);
     }
     return m;
 }
 
 Box4 TimeSweep::piece(std::size_t i) const {
     const Interval t = piece_time(i);
-    if (steps_.empty()) {
-        Box4 b = whole_;
+    if (layout_ == Layout::Whole) {
+        Box4 b = whole();
         b.lo.w = t.lo;
         b.hi.w = t.hi;
         return b;
@@ -134,8 +223,8 @@ Box4 TimeSweep::box_over_dyadic(int level, std::uint64_t index) const {
     const Interval t(dyadic_time(time_, level, index), dyadic_time(time_, level, index + 1));
     if (empty()) return Box4::empty();
     Box4 box = Box4::empty();
-    if (steps_.empty()) {
-        box = whole_;
+    if (layout_ == Layout::Whole) {
+        box = whole();
     } else if (level >= depth_) {
         // A part of one piece: its moving box over that part.
         box = moving_piece(std::size_t(index >> (level - depth_))).box_over(t);
@@ -153,14 +242,14 @@ Box4 TimeSweep::box_over_dyadic(int level, std::uint64_t index) const {
 void TimeSweep::boxes_over_dyadic(int level, std::uint64_t first, std::size_t count,
                                   const IntelligentObject& object, Box4* out) const {
     for (std::size_t k = 0; k < count; ++k) out[k] = box_over_dyadic(level, first + k);
-    if (!chord_ || level <= depth_ || empty() || count == 0) return;
+    if (!refines_ || level <= depth_ || empty() || count == 0) return;
     // The chord's error over one piece of this level (its length rounded up).
     const double length = interval_detail::next_up(dyadic_time(time_, level, first + 1) -
                                                    dyadic_time(time_, level, first));
     double out_by[3];
     for (int a = 0; a < 3; ++a)
         out_by[a] = interval_detail::up(
-            length * length * 0.125 * chord_->acceleration[a] + chord_->margin[a], 4);
+            length * length * 0.125 * double(acceleration_[a]) + double(margin_[a]), 4);
     Box4 start = object.placed_box_at(dyadic_time(time_, level, first));
     for (std::size_t k = 0; k < count; ++k) {
         const Box4 end = object.placed_box_at(dyadic_time(time_, level, first + k + 1));
@@ -184,8 +273,8 @@ Box4 TimeSweep::box_over(const Interval& t) const {
     const Interval clipped(std::max(t.lo, time_.lo), std::min(t.hi, time_.hi));
     if (empty() || clipped.is_empty()) return Box4::empty();
     Box4 box = Box4::empty();
-    if (steps_.empty()) {
-        box = whole_;
+    if (layout_ == Layout::Whole) {
+        box = whole();
     } else {
         std::size_t first, last;
         pieces_meeting(clipped, first, last);
@@ -367,7 +456,13 @@ TimeSweep TimeSweep::of(const IntelligentObject& object, const Interval& time, i
         if (const auto chord = object.chord_bound_over(time)) {
             bool capped = false;
             depth = chord_pieces(object, time, max_depth, pricing, *chord, size, level, capped);
-            if (capped) sweep.chord_ = *chord;
+            if (capped) {
+                sweep.refines_ = true;
+                for (int k = 0; k < 3; ++k) {
+                    sweep.acceleration_[k] = float_up(chord->acceleration[k]);
+                    sweep.margin_[k] = float_up(chord->margin[k]);
+                }
+            }
         } else
             depth = box_pieces(object, time, max_depth, size, level);
         // Then back up, merging pairs, while the coarser pieces are already
@@ -400,25 +495,17 @@ TimeSweep TimeSweep::of(const IntelligentObject& object, const Interval& time, i
             --depth;
         }
     }
-    sweep.depth_ = depth;
-    sweep.whole_ = Box4::empty();
-    bool still = true;
-    for (const MovingBox& b : level) {
-        sweep.whole_.extend(b.hull());
-        if (!b.empty && (b.lo0 != b.lo1 || b.hi0 != b.hi1)) still = false;
-    }
-    if (sweep.whole_.is_empty()) {
+    sweep.depth_ = std::uint8_t(depth);
+    Box4 whole = Box4::empty();
+    for (const MovingBox& b : level) whole.extend(b.hull());
+    if (whole.is_empty()) {
         sweep.depth_ = 0;
+        sweep.refines_ = false;
         return sweep;
     }
-    sweep.whole_.lo.w = time.lo;
-    sweep.whole_.hi.w = time.hi;
-    for (int k = 0; k < 3; ++k) sweep.step_[k] = (sweep.whole_.hi[k] - sweep.whole_.lo[k]) / double(kTop);
-    // One box held still over the whole time needs no pieces.
-    if (depth > 0 || !still) {
-        sweep.steps_.resize(12 * level.size());
-        for (std::size_t i = 0; i < level.size(); ++i) sweep.encode(i, level[i]);
-    }
+    sweep.lo_ = glm::dvec3(whole.lo);
+    sweep.hi_ = glm::dvec3(whole.hi);
+    sweep.encode_pieces(level);
     return sweep;
 }
 

@@ -23,18 +23,30 @@
 // piece, a slow one a few, a small fast one more, up to a limit. A motion that is fast only between
 // the probes gets fewer box pieces than it could use: looser, never wrong.
 //
-// Storage: the box over the whole range in doubles, and each piece as the
-// four ends of its moving sides (lower and upper, at the piece's start and
-// end), each a 16-bit step of that box rounded outward (lower ends to a step
-// at or below them, upper ends at or above, checked on the decoded values,
-// so the rounding of encoding and decoding cannot cut anything off; a line
-// between outward ends lies outside the line between the true ends): 24
-// bytes per piece, whatever the scene's scale.
+// Storage: the box over the whole range in doubles, and the pieces as
+// 16-bit steps of that box rounded outward (lower ends to a step at or
+// below them, upper ends at or above, checked on the decoded values, so the
+// rounding of encoding and decoding cannot cut anything off; a line between
+// outward ends lies outside the line between the true ends), in one of
+// three layouts, whatever the scene's scale:
+//   - still: each piece a box held still, 12 bytes a piece (the boxes of
+//     box pieces);
+//   - shared ends: the box at each of the 2^depth + 1 cuts, each piece the
+//     box moving linearly between its two cuts', 12 bytes a piece and one
+//     more (chords: neighbouring chords meet at the same placed box, so
+//     sharing loses nothing; where merging left two ends apart, the cut
+//     keeps the outer of the two, looser, never wrong);
+//   - separate ends: the four ends of each piece's moving sides, 24 bytes a
+//     piece, where a piece has no surface (its neighbours' ends cannot be
+//     shared through it).
+// The chord bound, kept where the sweep refines, is in floats rounded up.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
-#include <optional>
+#include <glm/vec3.hpp>
+#include <limits>
+#include <memory>
 #include <vector>
 
 #include "runtime/intelligent_object.hpp"
@@ -80,8 +92,8 @@ public:
     int depth() const { return depth_; }
     std::size_t piece_count() const { return std::size_t(1) << depth_; }
     // The box over the whole time range (empty if the object has no surface).
-    const Box4& whole() const { return whole_; }
-    bool empty() const { return whole_.is_empty(); }
+    Box4 whole() const;
+    bool empty() const { return !(lo_.x <= hi_.x && lo_.y <= hi_.y && lo_.z <= hi_.z); }
 
     // A box holding the object at every instant of t, from the pieces that
     // meet t (the whole sweep's box in space where t spans it all); its time
@@ -104,7 +116,7 @@ public:
     void boxes_over_dyadic(int level, std::uint64_t first, std::size_t count,
                            const IntelligentObject& object, Box4* out) const;
     // Can boxes_over_dyadic refine below the cached pieces?
-    bool refines() const { return chord_.has_value(); }
+    bool refines() const { return refines_; }
 
     // Piece i's time interval, its moving box, and the box over all of it
     // (empty if the object has no surface then).
@@ -115,23 +127,36 @@ public:
     void pieces_meeting(const Interval& t, std::size_t& first, std::size_t& last) const;
 
     // Heap and inline bytes this sweep takes.
-    std::size_t bytes() const { return sizeof(*this) + steps_.capacity() * sizeof(std::uint16_t); }
+    std::size_t bytes() const { return sizeof(*this) + step_count() * sizeof(std::uint16_t); }
 
 private:
+    // How the pieces are kept (the storage note above); Whole: one box held
+    // still over the whole time, no pieces.
+    enum class Layout : std::uint8_t { Whole, Still, Shared, Separate };
+
     double boundary(std::size_t i) const;
+    std::size_t step_count() const;
     double decode(int axis, std::uint16_t q) const;
     std::uint16_t encode_down(int axis, double v) const;
     std::uint16_t encode_up(int axis, double v) const;
-    void encode(std::size_t i, const MovingBox& box);
+    // Six steps of a box: lo xyz rounded down, hi xyz up (an empty box, no
+    // surface: lo at the top step, hi at the bottom).
+    void encode_box(std::uint16_t* q, const glm::dvec3& lo, const glm::dvec3& hi) const;
+    void encode_pieces(const std::vector<MovingBox>& level);
 
     Interval time_{0.0, 0.0};
-    int depth_ = 0;
-    double step_[3] = {0.0, 0.0, 0.0};  // one 16-bit step of whole_, per axis
-    Box4 whole_;
-    // The chord bound over the whole time, for sweeps made by chords.
-    std::optional<IntelligentObject::ChordBound> chord_;
-    // 12 per piece (lo0 xyz, lo1 xyz, hi0 xyz, hi1 xyz); none at depth 0.
-    std::vector<std::uint16_t> steps_;
+    // The box over the whole time (empty: lo > hi).
+    glm::dvec3 lo_{std::numeric_limits<double>::infinity()};
+    glm::dvec3 hi_{-std::numeric_limits<double>::infinity()};
+    // The chord bound over the whole time, rounded up to floats, where the
+    // sweep refines (IntelligentObject::chord_bound_over).
+    float acceleration_[3] = {0.0f, 0.0f, 0.0f};
+    float margin_[3] = {0.0f, 0.0f, 0.0f};
+    // The pieces' steps, step_count() of them, in the layout's order.
+    std::unique_ptr<std::uint16_t[]> steps_;
+    std::uint8_t depth_ = 0;
+    Layout layout_ = Layout::Whole;
+    bool refines_ = false;
 };
 
 }  // namespace hexant::runtime

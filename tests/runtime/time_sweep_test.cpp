@@ -228,3 +228,44 @@ TEST_CASE("a sweep the depth limit kept coarse refines finer pieces from the obj
         }
     }
 }
+
+TEST_CASE("a sweep keeps 12 bytes a piece: chords share their ends, still pieces their sides",
+          "[sweep]") {
+    const std::size_t header = sizeof(rt::TimeSweep);
+    // An orbit swept by chords: 2^depth pieces, 2^depth + 1 shared ends of
+    // six 16-bit steps each.
+    const Parsed orbit =
+        parse("sphere { <5, 0, 0>, 0.1 rotate y * 1440 * clock rotate <30, 0, 20> }\n");
+    const rt::TimeSweep chords = rt::TimeSweep::of(*orbit.objects.front(), rt::Interval(0.0, 1.0), 4);
+    REQUIRE(chords.depth() == 4);
+    CHECK(chords.bytes() == header + 12 * (16 + 1));
+    // A deformed object has no chord bound: its pieces are boxes held
+    // still, six steps each.
+    const Parsed twisted = parse("sphere { <1, 0, 0>, 0.5 translate <4 * clock, 0, 0> "
+                                 "twist <0, 1, 0>, 90 * clock }\n");
+    const rt::TimeSweep boxes =
+        rt::TimeSweep::of(*twisted.objects.front(), rt::Interval(0.0, 1.0), 3);
+    REQUIRE(boxes.depth() > 0);
+    CHECK(boxes.bytes() == header + 12 * boxes.piece_count());
+    // A still object keeps its box alone.
+    const Parsed still = parse("sphere { <1, 0, 0>, 0.5 }\n");
+    CHECK(rt::TimeSweep::of(*still.objects.front(), rt::Interval(0.0, 1.0), 8).bytes() == header);
+    // Sharing the ends loses nothing for chords: at each cut the box is the
+    // object's placed box there, moved out by the chord's error, to within
+    // the 16-bit steps' rounding (the neighbours' ends were that same box).
+    const rt::IntelligentObject& object = *orbit.objects.front();
+    const auto bound = object.chord_bound_over(rt::Interval(0.0, 1.0));
+    REQUIRE(bound.has_value());
+    const rt::Box4 whole = chords.whole();
+    for (std::size_t i = 0; i <= chords.piece_count(); ++i) {
+        const double cut = std::ldexp(double(i), -4);
+        const rt::Box4 at = chords.box_over(rt::Interval(cut));
+        const rt::Box4 placed = object.placed_box_at(cut);
+        for (int k = 0; k < 3; ++k) {
+            const double out = (1.0 / 256.0) * 0.125 * bound->acceleration[k] + bound->margin[k];
+            const double step = 2.0 * (whole.hi[k] - whole.lo[k]) / 65535.0;
+            CHECK(at.lo[k] >= placed.lo[k] - out * (1.0 + 1e-9) - step);
+            CHECK(at.hi[k] <= placed.hi[k] + out * (1.0 + 1e-9) + step);
+        }
+    }
+}
