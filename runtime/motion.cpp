@@ -3,7 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <limits>
 #include <stdexcept>
+#include <type_traits>
 
 #include <glm/matrix.hpp>
 
@@ -302,6 +305,7 @@ struct MotionEvaluator {
 };
 
 Motion::Motion(const Transform& transform) {
+    Arrays a;
     std::vector<TimeFunction> outputs;
     auto parameter = [&](const TimeFunction& f) {
         Parameter p;
@@ -328,9 +332,9 @@ Motion::Motion(const Transform& transform) {
             d.amount = parameter(step.amount);
             stage.fixed_frame = !step.vector.depends_on_time();
             if (stage.fixed_frame) d.frame = deformation_frame(step.vector(0.0));
-            stage.index = static_cast<std::uint32_t>(deformations_.size());
-            deformations_.push_back(d);
-            stages_.push_back(stage);
+            stage.index = static_cast<std::uint32_t>(a.deformations.size());
+            a.deformations.push_back(d);
+            a.stages.push_back(stage);
             affine_ = false;
             identity_ = false;
             continue;
@@ -338,13 +342,13 @@ Motion::Motion(const Transform& transform) {
         if (!step.depends_on_time()) {
             // A constant step joins a preceding constant stage.
             const AffineMap<double> m = AffineMap<double>::from(step.matrix_at(0.0));
-            if (stages_.empty() || stages_.back().kind != StageKind::Fixed) {
+            if (a.stages.empty() || a.stages.back().kind != StageKind::Fixed) {
                 Stage stage;
-                stage.index = static_cast<std::uint32_t>(fixed_.size());
-                fixed_.emplace_back();
-                stages_.push_back(stage);
+                stage.index = static_cast<std::uint32_t>(a.fixed.size());
+                a.fixed.emplace_back();
+                a.stages.push_back(stage);
             }
-            FixedMaps& maps = fixed_[stages_.back().index];
+            FixedMaps& maps = a.fixed[a.stages.back().index];
             maps.forward = m * maps.forward;
             maps.backward = to_glm(maps.forward) == glm::dmat4(1.0)
                                 ? AffineMap<double>::identity()
@@ -355,67 +359,118 @@ Motion::Motion(const Transform& transform) {
         Step s;
         s.kind = step.kind;
         s.inverse = step.inverse;
-        s.first = static_cast<std::uint32_t>(parameters_.size());
+        s.first = static_cast<std::uint32_t>(a.parameters.size());
         if (step.kind == TransformKind::Matrix) {
-            for (int i = 0; i < 12; ++i) parameters_.push_back(parameter(step.matrix[i]));
+            for (int i = 0; i < 12; ++i) a.parameters.push_back(parameter(step.matrix[i]));
         } else {
-            for (int i = 0; i < 3; ++i) parameters_.push_back(parameter(step.vector.c[i]));
+            for (int i = 0; i < 3; ++i) a.parameters.push_back(parameter(step.vector.c[i]));
         }
         // A moving stage's steps are consecutive: it is the last stage.
-        if (stages_.empty() || stages_.back().kind != StageKind::Moving) {
+        if (a.stages.empty() || a.stages.back().kind != StageKind::Moving) {
             Stage stage;
             stage.kind = StageKind::Moving;
-            stage.index = static_cast<std::uint32_t>(steps_.size());
-            stages_.push_back(stage);
+            stage.index = static_cast<std::uint32_t>(a.steps.size());
+            a.stages.push_back(stage);
         }
-        steps_.push_back(s);
-        ++stages_.back().count;
+        a.steps.push_back(s);
+        ++a.stages.back().count;
         identity_ = false;
     }
 
     if (!outputs.empty()) tape_ = std::make_shared<const TimeTape>(TimeTape::compile(outputs));
-    finish_stages();
-    stages_.shrink_to_fit();
-    fixed_.shrink_to_fit();
-    steps_.shrink_to_fit();
-    parameters_.shrink_to_fit();
-    deformations_.shrink_to_fit();
+    finish_stages(a);
 }
 
 const Motion::FixedMaps Motion::kIdentityMaps{};
 
-void Motion::finish_stages() {
+namespace {
+
+template <class T>
+std::uint32_t count_of(const std::vector<T>& v) {
+    if (v.size() > std::numeric_limits<std::uint32_t>::max())
+        throw std::length_error("Motion: more than 2^32 - 1 steps");
+    return static_cast<std::uint32_t>(v.size());
+}
+
+template <class T>
+void copy_into(std::byte* block, std::size_t offset, const std::vector<T>& v) {
+    if (!v.empty()) std::memcpy(block + offset, v.data(), v.size() * sizeof(T));
+}
+
+}  // namespace
+
+void Motion::finish_stages(const Arrays& a) {
+    // The block holds its arrays as raw bytes: each type must be plain data.
+    static_assert(std::is_trivially_copyable_v<FixedMaps> &&
+                  std::is_trivially_copyable_v<Deformation> &&
+                  std::is_trivially_copyable_v<Parameter> && std::is_trivially_copyable_v<Stage> &&
+                  std::is_trivially_copyable_v<Step>);
+    fixed_count_ = count_of(a.fixed);
+    deformation_count_ = count_of(a.deformations);
+    parameter_count_ = count_of(a.parameters);
+    stage_count_ = count_of(a.stages);
+    step_count_ = count_of(a.steps);
+    block_.reset();
+    if (const std::size_t bytes = block_bytes(); bytes > 0) {
+        block_ = std::make_unique_for_overwrite<std::byte[]>(bytes);
+        copy_into(block_.get(), 0, a.fixed);
+        copy_into(block_.get(), deformations_offset(), a.deformations);
+        copy_into(block_.get(), parameters_offset(), a.parameters);
+        copy_into(block_.get(), stages_offset(), a.stages);
+        copy_into(block_.get(), steps_offset(), a.steps);
+    }
     fixed_affine_ = affine_ && !moving_;
     // Constant and affine: only Fixed stages exist, and consecutive ones
     // were merged, so there is at most one (fixed_map()).
-    if (fixed_affine_ && fixed_.size() > 1) throw std::logic_error("Motion: unmerged fixed stages");
+    if (fixed_affine_ && fixed_count_ > 1) throw std::logic_error("Motion: unmerged fixed stages");
 }
 
-void Motion::append_fixed(const AffineMap<double>& forward, const AffineMap<double>& backward) {
-    if (!stages_.empty() && stages_.back().kind == StageKind::Fixed) {
-        FixedMaps& last = fixed_[stages_.back().index];
+Motion::Motion(const Motion& o)
+    : moving_(o.moving_), fixed_affine_(o.fixed_affine_), affine_(o.affine_),
+      identity_(o.identity_), stage_count_(o.stage_count_), fixed_count_(o.fixed_count_),
+      step_count_(o.step_count_), parameter_count_(o.parameter_count_),
+      deformation_count_(o.deformation_count_), tape_(o.tape_) {
+    if (o.block_) {
+        block_ = std::make_unique_for_overwrite<std::byte[]>(o.block_bytes());
+        std::memcpy(block_.get(), o.block_.get(), o.block_bytes());
+    }
+}
+
+Motion& Motion::operator=(const Motion& o) {
+    if (this != &o) {
+        Motion copy(o);
+        *this = std::move(copy);
+    }
+    return *this;
+}
+
+void Motion::append_fixed(Arrays& a, const AffineMap<double>& forward,
+                          const AffineMap<double>& backward) {
+    if (!a.stages.empty() && a.stages.back().kind == StageKind::Fixed) {
+        FixedMaps& last = a.fixed[a.stages.back().index];
         last.forward = forward * last.forward;
         last.backward = last.backward * backward;
     } else {
         Stage stage;
-        stage.index = static_cast<std::uint32_t>(fixed_.size());
-        fixed_.push_back({forward, backward});
-        stages_.push_back(stage);
+        stage.index = static_cast<std::uint32_t>(a.fixed.size());
+        a.fixed.push_back({forward, backward});
+        a.stages.push_back(stage);
     }
-    identity_ = identity_ && to_glm(fixed_of(stages_.back()).forward) == glm::dmat4(1.0);
+    identity_ = identity_ && to_glm(a.fixed[a.stages.back().index].forward) == glm::dmat4(1.0);
 }
 
 Motion Motion::at_instant(double t) const {
     if (!moving_) return *this;
     const MotionEvaluator<double> e(*this, t);
     Motion frozen;
-    for (const Stage& stage : stages_) {
+    Arrays a;
+    for (const Stage& stage : stages()) {
         switch (stage.kind) {
             case StageKind::Fixed:
-                frozen.append_fixed(fixed_of(stage).forward, fixed_of(stage).backward);
+                frozen.append_fixed(a, fixed_of(stage).forward, fixed_of(stage).backward);
                 break;
             case StageKind::Moving:
-                frozen.append_fixed(e.stage_map(stage, false), e.stage_map(stage, true));
+                frozen.append_fixed(a, e.stage_map(stage, false), e.stage_map(stage, true));
                 break;
             default: {
                 const Deformation& d = deformation_of(stage);
@@ -429,16 +484,16 @@ Motion Motion::at_instant(double t) const {
                         e.value(d.axis[0]), e.value(d.axis[1]), e.value(d.axis[2])});
                 Stage frozen_stage = stage;
                 frozen_stage.fixed_frame = true;
-                frozen_stage.index = static_cast<std::uint32_t>(frozen.deformations_.size());
-                frozen.deformations_.push_back(fixed);
-                frozen.stages_.push_back(frozen_stage);
+                frozen_stage.index = static_cast<std::uint32_t>(a.deformations.size());
+                a.deformations.push_back(fixed);
+                a.stages.push_back(frozen_stage);
                 frozen.affine_ = false;
                 frozen.identity_ = false;
                 break;
             }
         }
     }
-    frozen.finish_stages();
+    frozen.finish_stages(a);
     return frozen;
 }
 
@@ -446,7 +501,7 @@ template <class N>
 std::array<N, 3> Motion::to_world_general(const std::array<N, 3>& p, const N& t) const {
     const MotionEvaluator<N> e(*this, t);
     std::array<N, 3> q = p;
-    for (const Stage& stage : stages_) q = e.through(stage, q, false);
+    for (const Stage& stage : stages()) q = e.through(stage, q, false);
     return q;
 }
 
@@ -454,7 +509,7 @@ template <class N>
 std::array<N, 3> Motion::to_object_general(const std::array<N, 3>& p, const N& t) const {
     const MotionEvaluator<N> e(*this, t);
     std::array<N, 3> q = p;
-    for (auto it = stages_.rbegin(); it != stages_.rend(); ++it) q = e.through(*it, q, true);
+    for (auto it = stages().rbegin(); it != stages().rend(); ++it) q = e.through(*it, q, true);
     return q;
 }
 
@@ -473,7 +528,7 @@ template std::array<Dual, 3> Motion::to_object_general(const std::array<Dual, 3>
 
 std::vector<double> Motion::twist_reaches(const IntervalVec3& object_box, const Interval& t) const {
     std::vector<double> reaches;
-    const bool any = std::any_of(stages_.begin(), stages_.end(), [](const Stage& stage) {
+    const bool any = std::any_of(stages().begin(), stages().end(), [](const Stage& stage) {
         return stage.kind == StageKind::Twist && stage.fixed_frame;
     });
     if (!any) return reaches;
@@ -485,7 +540,7 @@ std::vector<double> Motion::twist_reaches(const IntervalVec3& object_box, const 
     constexpr double kDrift = (deformation_detail::kRotationUlps + 16) * 0x1p-52;
     const MotionEvaluator<Interval> e(*this, t);
     IntervalVec3 box = object_box;
-    for (const Stage& stage : stages_) {
+    for (const Stage& stage : stages()) {
         double reach = interval_detail::kInf;
         if (stage.kind == StageKind::Twist && stage.fixed_frame) {
             const IntervalVec3 local = to_local(box, deformation_of(stage).frame);
@@ -503,11 +558,11 @@ std::vector<double> Motion::twist_reaches(const IntervalVec3& object_box, const 
 
 std::optional<IntervalVec3> Motion::to_object_within(const IntervalVec3& p, const Interval& t,
                                                      const std::vector<double>& reaches) const {
-    if (reaches.size() != stages_.size()) return to_object(p, t);
+    if (reaches.size() != stage_count_) return to_object(p, t);
     const MotionEvaluator<Interval> e(*this, t);
     IntervalVec3 q = p;
-    for (std::size_t k = stages_.size(); k-- > 0;) {
-        const Stage& stage = stages_[k];
+    for (std::size_t k = stage_count_; k-- > 0;) {
+        const Stage& stage = stages()[k];
         if (stage.kind == StageKind::Twist && stage.fixed_frame &&
             deformation_detail::section_radius(to_local(q, deformation_of(stage).frame)).lo >
                 reaches[k])
@@ -526,7 +581,7 @@ AffineMap<double> Motion::map_at(double t) const {
     if (!affine_) throw std::logic_error("Motion::map_at on a deformed object");
     const MotionEvaluator<double> e(*this, t);
     AffineMap<double> m = AffineMap<double>::identity();
-    for (const Stage& stage : stages_) e.compose(stage, m);
+    for (const Stage& stage : stages()) e.compose(stage, m);
     return m;
 }
 
@@ -535,7 +590,7 @@ glm::dmat4 Motion::inverse_at(double t) const {
     if (!affine_) throw std::logic_error("Motion::inverse_at on a deformed object");
     const MotionEvaluator<double> e(*this, t);
     AffineMap<double> m = AffineMap<double>::identity();
-    for (auto it = stages_.rbegin(); it != stages_.rend(); ++it)
+    for (auto it = stages().rbegin(); it != stages().rend(); ++it)
         m = (it->kind == StageKind::Fixed ? fixed_of(*it).backward : e.stage_map(*it, true)) * m;
     return to_glm(m);
 }
@@ -545,7 +600,7 @@ Motion::Placement Motion::placement_at(double t) const {
     if (!affine_) throw std::logic_error("Motion::placement_at on a deformed object");
     const MotionEvaluator<double> e(*this, t);
     AffineMap<double> forward = AffineMap<double>::identity();
-    for (const Stage& stage : stages_) e.compose(stage, forward);
+    for (const Stage& stage : stages()) e.compose(stage, forward);
     // The inverse from the matrix itself (its adjugate over its
     // determinant), not from the steps again: a moving object pays one
     // evaluation of its sines and cosines per ray, not two. Each entry is
@@ -559,7 +614,7 @@ IntervalAffine Motion::matrix_over(const Interval& t) const {
     if (!affine_) throw std::logic_error("Motion::matrix_over on a deformed object");
     const MotionEvaluator<Interval> e(*this, t);
     IntervalAffine m = IntervalAffine::identity();
-    for (const Stage& stage : stages_) e.compose(stage, m);
+    for (const Stage& stage : stages()) e.compose(stage, m);
     return m;
 }
 
@@ -568,7 +623,7 @@ AffineMap<IntervalJet> Motion::matrix_jet_over(const Interval& t) const {
     if (!affine_) throw std::logic_error("Motion::matrix_jet_over on a deformed object");
     const MotionEvaluator<IntervalJet> e(*this, IntervalJet::variable(t));
     AffineMap<IntervalJet> m = AffineMap<IntervalJet>::identity();
-    for (const Stage& stage : stages_) e.compose(stage, m);
+    for (const Stage& stage : stages()) e.compose(stage, m);
     return m;
 }
 
@@ -605,7 +660,7 @@ glm::dmat3 Motion::jacobian_at(const glm::dvec3& object_point, double t) const {
     const MotionEvaluator<double> e(*this, t);
     glm::dmat3 j(1.0);
     std::array<double, 3> p{object_point.x, object_point.y, object_point.z};
-    for (const Stage& stage : stages_) {
+    for (const Stage& stage : stages()) {
         glm::dmat3 step(1.0);
         if (stage.kind == StageKind::Fixed) {
             step = glm::dmat3(to_glm(fixed_of(stage).forward));

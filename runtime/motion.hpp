@@ -17,6 +17,7 @@
 #include <glm/vec3.hpp>
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "runtime/clock_line.hpp"
@@ -35,6 +36,11 @@ class Motion {
   public:
     Motion() = default;  // the identity
     explicit Motion(const Transform& transform);
+    Motion(const Motion& other);
+    Motion(Motion&&) noexcept = default;
+    Motion& operator=(const Motion& other);
+    Motion& operator=(Motion&&) noexcept = default;
+    ~Motion() = default;
 
     // Nothing depends on time.
     bool is_static() const { return !moving_; }
@@ -125,7 +131,7 @@ class Motion {
         int slot = -1;
         bool is_constant() const { return slot < 0 && line.is_constant(); }
     };
-    // A moving affine step; its amounts are parameters_[first ..] (three,
+    // A moving affine step; its amounts are parameters()[first ..] (three,
     // a vector's; twelve for a Matrix).
     struct Step {
         TransformKind kind = TransformKind::Translate;
@@ -134,11 +140,11 @@ class Motion {
     };
     enum class StageKind : std::uint8_t { Fixed, Moving, Twist, Taper, Bend };
     // A stage names its data in the motion's own arrays, by kind: a Fixed
-    // one fixed_[index]; a Moving one steps_[index, index + count); a
-    // deformation deformations_[index]. Kept apart, a moving sphere's
-    // motion is about 470 bytes (144 in the object, 324 in its arrays)
-    // where stages holding every kind's fields took about 1,050 (README
-    // "Scale").
+    // one fixed()[index]; a Moving one steps()[index, index + count); a
+    // deformation deformations()[index]. Kept apart, and the five arrays in
+    // one block, a moving sphere's motion is about 360 bytes (48 in the
+    // object, 312 in its block) where stages holding every kind's fields
+    // took about 1,050 and five separate arrays about 470 (README "Scale").
     struct FixedMaps {
         AffineMap<double> forward = AffineMap<double>::identity();
         AffineMap<double> backward = AffineMap<double>::identity();
@@ -155,26 +161,61 @@ class Motion {
         std::uint32_t index = 0;
         std::uint32_t count = 0;  // Moving: its steps
     };
-    const FixedMaps& fixed_of(const Stage& s) const { return fixed_[s.index]; }
+    // The arrays while a motion is made; pack() then puts them in one block.
+    struct Arrays {
+        std::vector<Stage> stages;
+        std::vector<FixedMaps> fixed;
+        std::vector<Step> steps;
+        std::vector<Parameter> parameters;
+        std::vector<Deformation> deformations;
+    };
+    // The block's parts, in this order (the widest alignment first): fixed
+    // maps, deformations, parameters, stages, steps.
+    std::size_t deformations_offset() const { return fixed_count_ * sizeof(FixedMaps); }
+    std::size_t parameters_offset() const {
+        return deformations_offset() + deformation_count_ * sizeof(Deformation);
+    }
+    std::size_t stages_offset() const {
+        return parameters_offset() + parameter_count_ * sizeof(Parameter);
+    }
+    std::size_t steps_offset() const { return stages_offset() + stage_count_ * sizeof(Stage); }
+    std::size_t block_bytes() const { return steps_offset() + step_count_ * sizeof(Step); }
+    template <class T>
+    std::span<const T> part(std::size_t offset, std::uint32_t count) const {
+        return {reinterpret_cast<const T*>(block_.get() + offset), count};
+    }
+    std::span<const FixedMaps> fixed() const { return part<FixedMaps>(0, fixed_count_); }
+    std::span<const Deformation> deformations() const {
+        return part<Deformation>(deformations_offset(), deformation_count_);
+    }
+    std::span<const Parameter> parameters() const {
+        return part<Parameter>(parameters_offset(), parameter_count_);
+    }
+    std::span<const Stage> stages() const { return part<Stage>(stages_offset(), stage_count_); }
+    std::span<const Step> steps() const { return part<Step>(steps_offset(), step_count_); }
+
+    const FixedMaps& fixed_of(const Stage& s) const { return fixed()[s.index]; }
     // A constant affine motion's map: its one Fixed stage's (consecutive
     // constant steps merge into one), or the identity. Not a copy kept
     // beside the stages: a moving object would carry its 192 bytes unused.
-    const FixedMaps& fixed_map() const { return fixed_.empty() ? kIdentityMaps : fixed_.front(); }
+    const FixedMaps& fixed_map() const { return fixed_count_ == 0 ? kIdentityMaps : fixed()[0]; }
     // A namespace-lifetime constant, not a function's static: to_world and
     // to_object read it per ray, and a local static pays a guard check.
     static const FixedMaps kIdentityMaps;
-    const Deformation& deformation_of(const Stage& s) const { return deformations_[s.index]; }
-    const Step* steps_begin(const Stage& s) const { return steps_.data() + s.index; }
-    const Step* steps_end(const Stage& s) const { return steps_.data() + s.index + s.count; }
-    const Parameter& amount_of(const Step& s, int i) const { return parameters_[s.first + i]; }
+    const Deformation& deformation_of(const Stage& s) const { return deformations()[s.index]; }
+    const Step* steps_begin(const Stage& s) const { return steps().data() + s.index; }
+    const Step* steps_end(const Stage& s) const { return steps().data() + s.index + s.count; }
+    const Parameter& amount_of(const Step& s, int i) const { return parameters()[s.first + i]; }
 
     template <class N>
     friend struct MotionEvaluator;
 
-    // Appends a constant affine stage, merged with a constant stage before it.
-    void append_fixed(const AffineMap<double>& forward, const AffineMap<double>& backward);
-    // Sets fixed_affine_ once the stages are complete.
-    void finish_stages();
+    // Appends a constant affine stage to `a`, merged with a constant stage
+    // before it.
+    void append_fixed(Arrays& a, const AffineMap<double>& forward,
+                      const AffineMap<double>& backward);
+    // Moves the arrays into the block and sets fixed_affine_.
+    void finish_stages(const Arrays& a);
 
     template <class N>
     std::array<N, 3> to_world_general(const std::array<N, 3>& p, const N& t) const;
@@ -185,11 +226,9 @@ class Motion {
     bool fixed_affine_ = true;  // constant and affine: fixed_map() is the map
     bool affine_ = true;
     bool identity_ = true;
-    std::vector<Stage> stages_;
-    std::vector<FixedMaps> fixed_;
-    std::vector<Step> steps_;
-    std::vector<Parameter> parameters_;
-    std::vector<Deformation> deformations_;
+    std::uint32_t stage_count_ = 0, fixed_count_ = 0, step_count_ = 0, parameter_count_ = 0,
+                  deformation_count_ = 0;
+    std::unique_ptr<std::byte[]> block_;    // the five arrays (their offsets above); null if none
     std::shared_ptr<const TimeTape> tape_;  // the amounts that are not lines; often null
 };
 
