@@ -4,6 +4,11 @@
 // for its lasting part and one per slab it holds: hierarchy.hpp). Nodes are plain data;
 // the pending cells of a lazy build (which own vectors) are kept apart and
 // destroyed properly.
+//
+// The blocks are mapped from the system (mmap), not taken from the heap:
+// a slab let go returns its nodes' memory at once, where heap blocks stayed
+// among the smaller allocations made since and the heap grew as slabs came
+// and went (swarm 10^5, 16 frames: 10 MB more at the peak, README "Scale").
 #pragma once
 
 #include <atomic>
@@ -12,6 +17,7 @@
 #include <cstdlib>
 #include <memory>
 #include <new>
+#include <sys/mman.h>
 #include <vector>
 
 #include <tbb/enumerable_thread_specific.h>
@@ -25,13 +31,14 @@ public:
     NodeArena& operator=(const NodeArena&) = delete;
     ~NodeArena() {
         for (auto& blocks : blocks_)
-            for (void* b : blocks.list) std::free(b);
+            for (void* b : blocks.list) munmap(b, kBlock);
     }
 
     // Zeroed, 64-byte aligned storage for one T (a plain node type).
     template <class T>
     T* make() {
-        static_assert(alignof(T) <= kAlign && std::is_trivially_destructible_v<T>);
+        static_assert(alignof(T) <= kAlign && sizeof(T) <= kBlock &&
+                      std::is_trivially_destructible_v<T>);
         void* p = allocate(sizeof(T));
         return new (p) T{};
     }
@@ -66,15 +73,11 @@ private:
     void* allocate(std::size_t bytes) {
         bytes = (bytes + kAlign - 1) / kAlign * kAlign;
         Blocks& b = blocks_.local();
-        if (bytes > kBlock) {  // never for nodes; kept correct anyway
-            void* p = std::aligned_alloc(kAlign, bytes);
-            if (!p) throw std::bad_alloc();
-            b.list.insert(b.list.begin(), p);
-            return p;
-        }
         if (b.used + bytes > kBlock) {
-            void* p = std::aligned_alloc(kAlign, kBlock);
-            if (!p) throw std::bad_alloc();
+            b.list.reserve(b.list.size() + 1);  // so that a mapped block is always recorded
+            // Page-aligned (so 64-byte aligned) and zeroed.
+            void* p = mmap(nullptr, kBlock, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+            if (p == MAP_FAILED) throw std::bad_alloc();
             b.list.push_back(p);
             b.used = 0;
         }
