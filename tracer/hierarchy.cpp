@@ -900,27 +900,51 @@ Hierarchy::~Hierarchy() = default;
 NodeRef Hierarchy::expand(NodeRef* slot, NodeRef pending, Counters& counters) const {
     PendingCell* p = pending.as<PendingCell>();
     tbb::collaborative_call_once(p->once, [&] {
-        const auto start = std::chrono::steady_clock::now();
-        CellTime time;
-        time.t = p->region.time();
-        time.level = p->time_level;
-        time.index = p->time_index;
-        if (p->slab_root) {
-            // Its own arena, and its objects kept for a build after a release.
-            p->own = std::make_unique<NodeArena>();
-            p->built = builder_->build(*p->own, p->region, time, p->objects, p->depth, counters);
-            const std::lock_guard<std::mutex> lock(slabs_mutex_);
-            live_slabs_.push_back({slot, p});
-        } else {
-            p->built = builder_->build(p->arena ? *p->arena : arena_, p->region, time, p->objects,
-                                       p->depth, counters);
-            p->objects.reset();
-        }
-        counters.lazy_build_seconds +=
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        p->slot = slot;
+        build_pending(p, counters);
     });
     NodeRef::store(slot, p->built);
     return p->built;
+}
+
+void Hierarchy::build_pending(PendingCell* p, Counters& counters) const {
+    const bool large = p->objects && p->objects->size() >= options_.large_build;
+    if (large) {
+        PendingCell* other = nullptr;
+        while (!large_build_.compare_exchange_weak(other, p, std::memory_order_acq_rel)) {
+            // Help the large cell being built until it is done. Its build is
+            // under way, so this waits for it (and would build it only if
+            // that build had failed and its flag been reset).
+            if (other && other != p)
+                tbb::collaborative_call_once(other->once, [&] { build_pending(other, counters); });
+            other = nullptr;
+        }
+    }
+    struct Done {
+        const Hierarchy& h;
+        bool large;
+        ~Done() {
+            if (large) h.large_build_.store(nullptr, std::memory_order_release);
+        }
+    } done{*this, large};
+    const auto start = std::chrono::steady_clock::now();
+    CellTime time;
+    time.t = p->region.time();
+    time.level = p->time_level;
+    time.index = p->time_index;
+    if (p->slab_root) {
+        // Its own arena, and its objects kept for a build after a release.
+        p->own = std::make_unique<NodeArena>();
+        p->built = builder_->build(*p->own, p->region, time, p->objects, p->depth, counters);
+        const std::lock_guard<std::mutex> lock(slabs_mutex_);
+        live_slabs_.push_back({p->slot, p});
+    } else {
+        p->built = builder_->build(p->arena ? *p->arena : arena_, p->region, time, p->objects,
+                                   p->depth, counters);
+        p->objects.reset();
+    }
+    counters.lazy_build_seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 void Hierarchy::release(const LiveSlab& slab) const {
