@@ -7,6 +7,7 @@
 #include <limits>
 #include <stdexcept>
 #include <type_traits>
+#include <utility>
 
 #include <glm/matrix.hpp>
 
@@ -434,6 +435,33 @@ Motion::Motion(const Motion& o)
         block_ = std::make_unique_for_overwrite<std::byte[]>(o.block_bytes());
         std::memcpy(block_.get(), o.block_.get(), o.block_bytes());
     }
+}
+
+Motion::Motion(Motion&& o) noexcept
+    : moving_(std::exchange(o.moving_, false)), fixed_affine_(std::exchange(o.fixed_affine_, true)),
+      affine_(std::exchange(o.affine_, true)), identity_(std::exchange(o.identity_, true)),
+      stage_count_(std::exchange(o.stage_count_, 0)), fixed_count_(std::exchange(o.fixed_count_, 0)),
+      step_count_(std::exchange(o.step_count_, 0)),
+      parameter_count_(std::exchange(o.parameter_count_, 0)),
+      deformation_count_(std::exchange(o.deformation_count_, 0)), block_(std::move(o.block_)),
+      tape_(std::move(o.tape_)) {}
+
+Motion& Motion::operator=(Motion&& o) noexcept {
+    if (this != &o) {
+        Motion moved(std::move(o));
+        std::swap(moving_, moved.moving_);
+        std::swap(fixed_affine_, moved.fixed_affine_);
+        std::swap(affine_, moved.affine_);
+        std::swap(identity_, moved.identity_);
+        std::swap(stage_count_, moved.stage_count_);
+        std::swap(fixed_count_, moved.fixed_count_);
+        std::swap(step_count_, moved.step_count_);
+        std::swap(parameter_count_, moved.parameter_count_);
+        std::swap(deformation_count_, moved.deformation_count_);
+        std::swap(block_, moved.block_);
+        std::swap(tape_, moved.tape_);
+    }
+    return *this;
 }
 
 Motion& Motion::operator=(const Motion& o) {

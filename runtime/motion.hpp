@@ -37,9 +37,10 @@ class Motion {
     Motion() = default;  // the identity
     explicit Motion(const Transform& transform);
     Motion(const Motion& other);
-    Motion(Motion&&) noexcept = default;
+    // A motion moved from is the identity (its block went with the move).
+    Motion(Motion&& other) noexcept;
     Motion& operator=(const Motion& other);
-    Motion& operator=(Motion&&) noexcept = default;
+    Motion& operator=(Motion&& other) noexcept;
     ~Motion() = default;
 
     // Nothing depends on time.

@@ -16,6 +16,8 @@ constexpr std::uint16_t kTop = 65535;
 // which makes a chord's box infinite: the cached piece is kept).
 float float_up(double x) {
     if (!(x <= double(std::numeric_limits<float>::max()))) return std::numeric_limits<float>::infinity();
+    // Below the floats' range (a conversion there is undefined): the lowest float is above x.
+    if (x < -double(std::numeric_limits<float>::max())) return -std::numeric_limits<float>::max();
     float f = float(x);
     if (double(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
     return f;

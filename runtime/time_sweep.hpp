@@ -47,6 +47,7 @@
 #include <glm/vec3.hpp>
 #include <limits>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "runtime/intelligent_object.hpp"
@@ -81,6 +82,24 @@ struct SweepPricing {
 class TimeSweep {
 public:
     TimeSweep() = default;
+    // A sweep moved from is empty (its pieces went with the move).
+    TimeSweep(TimeSweep&& other) noexcept { *this = std::move(other); }
+    TimeSweep& operator=(TimeSweep&& other) noexcept {
+        if (this != &other) {
+            time_ = other.time_;
+            lo_ = std::exchange(other.lo_, glm::dvec3(std::numeric_limits<double>::infinity()));
+            hi_ = std::exchange(other.hi_, glm::dvec3(-std::numeric_limits<double>::infinity()));
+            for (int k = 0; k < 3; ++k) {
+                acceleration_[k] = other.acceleration_[k];
+                margin_[k] = other.margin_[k];
+            }
+            steps_ = std::move(other.steps_);
+            depth_ = std::exchange(other.depth_, std::uint8_t(0));
+            layout_ = std::exchange(other.layout_, Layout::Whole);
+            refines_ = std::exchange(other.refines_, false);
+        }
+        return *this;
+    }
 
     // The sweep of `object` over `time` (finite, lo <= hi), with at most
     // 2^max_depth pieces (max_depth in [0, 20]). With pricing, pieces are

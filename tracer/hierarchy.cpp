@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 #include <tbb/parallel_for.h>
 
@@ -443,6 +444,7 @@ private:
         p->region = region;
         p->time_level = time.level;
         p->time_index = time.index;
+        p->object_count = objects ? objects->size() : 0;
         p->objects = std::move(objects);
         p->depth = depth;
         return NodeRef::node(RefKind::Pending, p);
@@ -899,6 +901,32 @@ Hierarchy::~Hierarchy() = default;
 
 NodeRef Hierarchy::expand(NodeRef* slot, NodeRef pending, Counters& counters) const {
     PendingCell* p = pending.as<PendingCell>();
+    // One large cell at a time: this one is reserved before its build
+    // begins, and while another is reserved, that one is helped first.
+    // Every wait is outside any cell's once flag, as when two threads reach
+    // one cell (a wait on another flag from inside one deadlocked in
+    // oneTBB: the helpers of the outer cell held the arena's only worker).
+    struct Reservation {
+        const Hierarchy& h;
+        bool held = false;
+        ~Reservation() {
+            if (held) h.large_build_.store(nullptr, std::memory_order_release);
+        }
+    } reservation{*this};
+    if (p->object_count >= options_.large_build) {
+        for (;;) {
+            PendingCell* other = nullptr;
+            if (large_build_.compare_exchange_strong(other, p, std::memory_order_acq_rel)) {
+                reservation.held = true;
+                break;
+            }
+            if (other == p) break;  // reserved by a thread about to build it: help it
+            // Under way (or about to be): wait for it, helping. It would be
+            // built here only had its build failed and its flag been reset.
+            tbb::collaborative_call_once(other->once, [&] { build_pending(other, counters); });
+            if (large_build_.load(std::memory_order_acquire) == other) std::this_thread::yield();
+        }
+    }
     tbb::collaborative_call_once(p->once, [&] {
         p->slot = slot;
         build_pending(p, counters);
@@ -908,25 +936,6 @@ NodeRef Hierarchy::expand(NodeRef* slot, NodeRef pending, Counters& counters) co
 }
 
 void Hierarchy::build_pending(PendingCell* p, Counters& counters) const {
-    const bool large = p->objects && p->objects->size() >= options_.large_build;
-    if (large) {
-        PendingCell* other = nullptr;
-        while (!large_build_.compare_exchange_weak(other, p, std::memory_order_acq_rel)) {
-            // Help the large cell being built until it is done. Its build is
-            // under way, so this waits for it (and would build it only if
-            // that build had failed and its flag been reset).
-            if (other && other != p)
-                tbb::collaborative_call_once(other->once, [&] { build_pending(other, counters); });
-            other = nullptr;
-        }
-    }
-    struct Done {
-        const Hierarchy& h;
-        bool large;
-        ~Done() {
-            if (large) h.large_build_.store(nullptr, std::memory_order_release);
-        }
-    } done{*this, large};
     const auto start = std::chrono::steady_clock::now();
     CellTime time;
     time.t = p->region.time();

@@ -81,7 +81,7 @@ struct BuildOptions {
     // A lazy build's cells of this many objects or more are built one at a
     // time, the threads that reach another helping the one under way
     // (Hierarchy::build_pending): the memory a build holds while it runs
-    // is then one large cell's, not one per thread.
+    // is then one large cell's, not one per thread. 0 or 1: every cell.
     std::size_t large_build = std::size_t(1) << 14;
     // Statistics: count the cells a full build would make (counters.cells_full),
     // building what a lazy build left, after each hierarchy's use.
@@ -151,6 +151,8 @@ struct PendingCell {
     std::unique_ptr<NodeArena> own;
     // The slot that holds it, set when its build begins (Hierarchy::expand).
     NodeRef* slot = nullptr;
+    // Its objects' count, kept: `objects` is let go once a cell is built.
+    std::size_t object_count = 0;
 };
 
 class Hierarchy {
@@ -209,13 +211,11 @@ private:
     mutable std::vector<LiveSlab> live_slabs_;
     mutable std::size_t peak_bytes_ = 0;
     void release(const LiveSlab& slab) const;
-    // Builds a pending cell (inside its once flag). A cell of
-    // options_.large_build objects or more first waits for the large cell
-    // being built, helping it: threads then build one large cell together
-    // instead of one each at once, so that a build's transient memory
-    // (about 130 bytes an object) is one cell's (swarm 10^5: 12.8 MB less
-    // at the peak). It cannot deadlock: a build never waits for a cell
-    // below it, and collaborative_call_once isolates the work it waits on.
+    // Builds a pending cell (inside its once flag). Cells of
+    // options_.large_build objects or more are built one at a time
+    // (Hierarchy::expand reserves large_build_ first): threads build one
+    // large cell together rather than one each, so that a build's
+    // transient memory (about 130 bytes an object) is one cell's.
     void build_pending(PendingCell* p, Counters& counters) const;
     mutable std::atomic<PendingCell*> large_build_{nullptr};
     // The lasting part's bytes and every live slab's; slabs_mutex_ held.

@@ -11,6 +11,7 @@
 // and went (swarm 10^5, 16 frames: 10 MB more at the peak, README "Scale").
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
@@ -74,7 +75,8 @@ private:
         bytes = (bytes + kAlign - 1) / kAlign * kAlign;
         Blocks& b = blocks_.local();
         if (b.used + bytes > kBlock) {
-            b.list.reserve(b.list.size() + 1);  // so that a mapped block is always recorded
+            // Room first, so that a mapped block is always recorded.
+            if (b.list.size() == b.list.capacity()) b.list.reserve(std::max<std::size_t>(8, 2 * b.list.size()));
             // Page-aligned (so 64-byte aligned) and zeroed.
             void* p = mmap(nullptr, kBlock, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
             if (p == MAP_FAILED) throw std::bad_alloc();

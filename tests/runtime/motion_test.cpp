@@ -359,7 +359,8 @@ TEST_CASE("motion: an inverse deformation step inverts the deformation", "[motio
     CHECK(std::fabs(q.x) < 1e-15);
 }
 
-TEST_CASE("motion: a copy is the same map and outlives its original, and so does a moved one",
+TEST_CASE("motion: a copy is the same map and outlives its original, a moved one keeps it and "
+          "leaves the identity",
           "[motion]") {
     // The stages, maps, steps, amounts and deformations live in one block
     // the motion owns: a copy must own its own (under AddressSanitizer a
@@ -389,5 +390,11 @@ TEST_CASE("motion: a copy is the same map and outlives its original, and so does
         }
         Motion moved(std::move(copy));
         REQUIRE(moved.to_world(p, t)[0] == expected[0]);
+        // The motion moved from is the identity, safe to use again.
+        REQUIRE(copy.is_identity());  // NOLINT(bugprone-use-after-move)
+        REQUIRE(copy.to_world(p, t) == p);
+        assigned = std::move(moved);
+        REQUIRE(assigned.to_world(p, t)[0] == expected[0]);
+        REQUIRE(moved.is_identity());  // NOLINT(bugprone-use-after-move)
     }
 }

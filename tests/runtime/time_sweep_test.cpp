@@ -247,6 +247,12 @@ TEST_CASE("a sweep keeps 12 bytes a piece: chords share their ends, still pieces
         rt::TimeSweep::of(*twisted.objects.front(), rt::Interval(0.0, 1.0), 3);
     REQUIRE(boxes.depth() > 0);
     CHECK(boxes.bytes() == header + 12 * boxes.piece_count());
+    // A sweep moved from is empty, and its pieces went with it.
+    rt::TimeSweep taken = rt::TimeSweep::of(*orbit.objects.front(), rt::Interval(0.0, 1.0), 4);
+    const rt::TimeSweep moved = std::move(taken);
+    CHECK(moved.bytes() == chords.bytes());
+    CHECK(taken.empty());  // NOLINT(bugprone-use-after-move)
+    CHECK(taken.box_over(rt::Interval(0.5)).is_empty());
     // A still object keeps its box alone.
     const Parsed still = parse("sphere { <1, 0, 0>, 0.5 }\n");
     CHECK(rt::TimeSweep::of(*still.objects.front(), rt::Interval(0.0, 1.0), 8).bytes() == header);

@@ -112,8 +112,8 @@ TEST_CASE("a cold lazy hierarchy built by many threads at once gives one thread'
         INFO("run " << run);
         tr::BuildOptions lazy = options(run % 2 ? tr::Criterion::Paper : tr::Criterion::Cost,
                                         tr::BuildKind::Lazy, tr::BoundStyle::Auto);
-        // Every other pair of runs builds each cell as a large one: one at a
-        // time, the threads that reach another waiting for it and helping.
+        // Every other pair of runs treats each cell as a large one: a thread
+        // that reaches one while another is under way helps that one first.
         if (run % 4 >= 2) lazy.large_build = 1;
         CHECK(differing(render(scene, lazy, 3, 2, 8), reference) == 0);
     }
@@ -158,7 +158,7 @@ TEST_CASE("threads racing through a cold lazy hierarchy find what one thread fin
     for (int run = 0; run < 6; ++run) {
         tr::BuildOptions lazy;
         lazy.criterion = run % 2 ? tr::Criterion::Paper : tr::Criterion::Cost;
-        if (run >= 2) lazy.large_build = 1;  // every cell built one at a time
+        if (run >= 2) lazy.large_build = 1;  // every cell a large one (Hierarchy::expand)
         const auto query = tr::make_ray_query(tr::Mode::Spacetime, set, root, lazy, counters);
         std::atomic<int> wrong{0};
         std::vector<std::thread> threads;
