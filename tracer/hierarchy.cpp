@@ -572,8 +572,12 @@ private:
         PackedBins bins;
     };
     // The centre of an item's box along `axis`, where the cuts sort it.
+    // Never NaN: a box unbounded both ways ([-inf, inf]) has centre 0, so
+    // that the cuts' order is a strict weak one and a bin index is never a
+    // NaN cast to int (fuzz_found/unbounded_centre.pov, UBSan).
     static float centre(const Item& item, int axis) {
-        return 0.5f * item.box.lo[axis] + 0.5f * item.box.hi[axis];
+        const float c = 0.5f * item.box.lo[axis] + 0.5f * item.box.hi[axis];
+        return c == c ? c : 0.0f;
     }
     // Where the centres of [first, last) spread widest: the axis, and the
     // spread's low end and width along it.
