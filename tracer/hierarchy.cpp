@@ -6,7 +6,6 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
-#include <thread>
 
 #include <tbb/parallel_for.h>
 
@@ -914,7 +913,9 @@ NodeRef Hierarchy::expand(NodeRef* slot, NodeRef pending, Counters& counters) co
         const Hierarchy& h;
         bool held = false;
         ~Reservation() {
-            if (held) h.large_build_.store(nullptr, std::memory_order_release);
+            if (!held) return;
+            h.large_build_.store(nullptr, std::memory_order_release);
+            h.large_build_.notify_all();
         }
     } reservation{*this};
     if (p->object_count >= options_.large_build) {
@@ -928,7 +929,8 @@ NodeRef Hierarchy::expand(NodeRef* slot, NodeRef pending, Counters& counters) co
             // Under way (or about to be): wait for it, helping. It would be
             // built here only had its build failed and its flag been reset.
             tbb::collaborative_call_once(other->once, [&] { build_pending(other, counters); });
-            if (large_build_.load(std::memory_order_acquire) == other) std::this_thread::yield();
+            // Its reservation ends just after its flag: wait for that, not spin.
+            large_build_.wait(other, std::memory_order_acquire);
         }
     }
     tbb::collaborative_call_once(p->once, [&] {
