@@ -40,6 +40,10 @@ void add_scene_arguments(CLI::App& command, SceneArguments& a) {
                        "Stop the scene after this many loop iterations and macro calls in all "
                        "(default 10^8)")
         ->check(CLI::Range(std::size_t(1), std::size_t(1'000'000'000'000)));
+    command.add_option("--max-time-pieces", a.max_time_pieces,
+                       "Pieces of time a condition that depends on clock may split the "
+                       "animation into (default 10^4)")
+        ->check(CLI::Range(std::size_t(1), std::size_t(1'000'000'000)));
     command.add_option("--max-text-read", a.max_text_read,
                        "Bytes of scene text read in all, each loop turn and macro call reading "
                        "its body again (default 1073741824, 1 GiB)")
@@ -132,6 +136,7 @@ ResolvedScene resolve(const SceneArguments& arguments) {
     auto& limits = r.options.limits;
     if (arguments.max_loop_iterations) limits.loop_iterations = *arguments.max_loop_iterations;
     if (arguments.max_iterations) limits.total_iterations = *arguments.max_iterations;
+    if (arguments.max_time_pieces) limits.time_pieces = *arguments.max_time_pieces;
     if (arguments.max_text_read) limits.text_read = *arguments.max_text_read;
     if (arguments.max_macro_depth) limits.macro_depth = *arguments.max_macro_depth;
     if (arguments.max_include_depth) limits.include_depth = *arguments.max_include_depth;

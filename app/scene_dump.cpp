@@ -141,6 +141,8 @@ void dump_object(const runtime::ObjectRecord& top, const std::string& top_name, 
     while (!pending.empty()) {
         const auto [object, name] = std::move(pending.back());
         pending.pop_back();
+        // What exists at t only (runtime::Lifetime).
+        if (!object->lifetime.contains(t)) continue;
         out << name << " " << std::visit(ShapeWriter{t}, object->shape) << " "
             << transform(object->transform, t);
         if (object->texture) out << " " << texture(*object->texture, t);
@@ -164,6 +166,7 @@ void dump_scene(const runtime::SceneDescription& scene, double t, std::ostream& 
     out << "background colour=" << colour(scene.background, t) << "\n";
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
         const auto& light = scene.lights[i];
+        if (!light.lifetime.contains(t)) continue;
         const glm::dvec4 p = light.transform.has_deformation()
                                  ? glm::dvec4(light.position(t), 1.0)
                                  : light.transform.matrix_at(t) * glm::dvec4(light.position(t), 1.0);

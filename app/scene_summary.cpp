@@ -28,6 +28,7 @@ std::string timing(const runtime::ObjectRecord& object) {
     for (const auto& p : parts) s += (s.empty() ? "" : ", ") + p;
     s = parts.empty() ? "static" : s + (parts.size() == 1 ? " depends" : " depend") + " on time";
     if (object.transform.has_deformation()) s += "; deformed";
+    if (!object.lifetime.is_always()) s += "; exists " + object.lifetime.to_string();
     return s;
 }
 
@@ -43,8 +44,14 @@ void summarize_scene(const runtime::SceneDescription& scene, std::ostream& out) 
         << (scene.camera.depends_on_time() ? ", moves with time" : ", static") << "\n";
     out << scene.lights.size() << " light" << (scene.lights.size() == 1 ? "" : "s") << "\n";
     for (std::size_t i = 0; i < scene.lights.size(); ++i)
-        out << "  light " << i << ": " << (scene.lights[i].depends_on_time() ? "moves with time" : "static")
-            << (scene.lights[i].shadowless ? ", shadowless" : "") << "\n";
+        out << "  light " << i << ": "
+            << (scene.lights[i].position.depends_on_time() || scene.lights[i].colour.depends_on_time() ||
+                        scene.lights[i].transform.depends_on_time()
+                    ? "moves with time"
+                    : "static")
+            << (scene.lights[i].shadowless ? ", shadowless" : "")
+            << (scene.lights[i].lifetime.is_always() ? "" : ", shines " + scene.lights[i].lifetime.to_string())
+            << "\n";
     out << scene.objects.size() << " object" << (scene.objects.size() == 1 ? "" : "s") << "\n";
     std::size_t moving = 0;
     for (std::size_t i = 0; i < scene.objects.size(); ++i) {
@@ -52,6 +59,20 @@ void summarize_scene(const runtime::SceneDescription& scene, std::ostream& out) 
         if (object.depends_on_time()) ++moving;
         out << "  object " << i << ": " << runtime::shape_name(object.shape) << " at "
             << object.place.to_string() << ", " << timing(object) << "\n";
+    }
+    for (const auto& split : scene.time_splits) {
+        out << "branch at " << split.where.to_string() << " on clock: ";
+        if (split.instants.empty()) out << "the same all the time\n";
+        else {
+            out << "switches at";
+            // (Every digit: an instant sits between two neighbouring doubles.)
+            char buffer[32];
+            for (const double t : split.instants) {
+                std::snprintf(buffer, sizeof buffer, "%.17g", t);
+                out << " " << buffer;
+            }
+            out << "\n";
+        }
     }
     out << moving << " of " << scene.objects.size() << " objects depend on time";
     if (!scene.warnings.empty()) out << "; " << scene.warnings.size() << " warning(s)";

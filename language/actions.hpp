@@ -214,12 +214,25 @@ HEXANT_ACTION(builtin_constant_name) {
         else if (w == "final_frame") f(a.is_animation() ? a.final_frame : 0.0);
         else if (w == "version") f(st.version);
         else if (w == "frame_number") {
-            // The frame whose shutter holds the time: constant within a frame.
+            // The frame whose shutter holds the time: constant within a
+            // frame, and switching exactly at each frame's clock as the
+            // renderer computes it (Animation::clock_of_frame: c0 + n *
+            // delta, the same operations here), so that a branch on it
+            // splits time at the frames' first instants. The quotient may
+            // be a frame off next to a boundary; the comparisons with the
+            // frame's own clock and the next one's correct it.
             if (!a.is_animation() || a.clock_delta() == 0.0) {
                 f(a.is_animation() ? a.initial_frame : 0.0);
             } else {
-                const TimeFunction steps = (TimeFunction::clock() - a.initial_clock) / a.clock_delta();
-                st.push(Value{TimeFunction::apply(TimeOp::Floor, steps + 1e-9) + double(a.initial_frame)});
+                const TimeFunction t = TimeFunction::clock();
+                const double delta = a.clock_delta();
+                const TimeFunction n = TimeFunction::apply(TimeOp::Floor, (t - a.initial_clock) / delta);
+                const TimeFunction start = a.initial_clock + n * delta;
+                const TimeFunction next = a.initial_clock + (n + 1.0) * delta;
+                const TimeFunction exact = n + TimeFunction::apply(TimeOp::GreaterEqual, t, next) -
+                                           TimeFunction::apply(TimeOp::Less, t, start);
+                st.push(Value{TimeFunction::apply(TimeOp::Min, exact + double(a.initial_frame),
+                                                  double(a.final_frame))});
             }
         }
     }
@@ -450,6 +463,7 @@ HEXANT_ACTION(unknown_directive) {
 
 HEXANT_ACTION(default_item) {
     HEXANT_APPLY {
+        st.require_whole_time(in.position(), "#default");
         Value v = st.pop();
         auto& texture = st.scene.default_texture;
         if (v.is<runtime::Texture>()) texture = v.as<runtime::Texture>();
@@ -775,11 +789,14 @@ struct finish_object {
     HEXANT_APPLY {
         Block b = std::move(st.blocks.back());
         st.blocks.pop_back();
+        // Made under clock-dependent branches: it exists while they hold.
         if (auto* light = std::get_if<runtime::LightRecord>(&b)) {
+            light->lifetime = light->lifetime.intersect(st.domain);
             st.push(Value{std::move(*light)});
             return;
         }
         auto& record = std::get<runtime::ObjectRecord>(b);
+        record.lifetime = record.lifetime.intersect(st.domain);
         if (const auto* prism = std::get_if<runtime::Prism>(&record.shape); prism && prism->points.empty()) {
             // A prism of a kind hexant lacks: usable only where nothing uses it.
             st.push(Value{Unevaluated{"prism with " + st.prism_sweep + " and " + st.prism_spline, in.position()}});
@@ -997,18 +1014,20 @@ HEXANT_ACTION(camera_block) {
 };
 HEXANT_ACTION(scene_camera) {
     HEXANT_APPLY {
-        (void)in;
+        st.require_whole_time(in.position(), "the camera");
         st.scene.camera = st.pop().as<runtime::CameraRecord>();
         if (auto problem = runtime::bad_parameter(st.scene.camera, st.scene.animation))
             throw ValueError(*problem);
     }
 };
 HEXANT_ACTION(background_colour) {
-    HEXANT_APPLY { (void)in; st.scene.background = to_colour(st.pop(), "the background"); }
+    HEXANT_APPLY {
+        st.require_whole_time(in.position(), "the background");
+        st.scene.background = to_colour(st.pop(), "the background"); }
 };
 HEXANT_ACTION(global_setting) {
     HEXANT_APPLY {
-        (void)in;
+        st.require_whole_time(in.position(), "a global setting");
         Value v = st.pop();
         const std::string name = st.pop_name();
         if (name == "assumed_gamma") st.scene.global.assumed_gamma = to_constant(v, name);

@@ -195,7 +195,129 @@ const Value* Interpreter::lookup(const std::string& name) const {
     return nullptr;
 }
 
+void Interpreter::log_change(const Scope& scope, const std::string& name) {
+    if (branch_logs_.empty() || restoring_) return;
+    BranchLog& log = branch_logs_.back();
+    const std::size_t index = static_cast<std::size_t>(&scope - scopes_.data());
+    if (index >= log.scopes) return;  // a scope of this side's own (a macro's)
+    VariableKey key{index, name};
+    if (log.before.count(key)) return;
+    log.before.emplace(key, variable_at(key));
+}
+
+std::optional<Value> Interpreter::variable_at(const VariableKey& key) const {
+    if (key.first >= scopes_.size()) return std::nullopt;
+    const Scope& scope = scopes_[key.first];
+    const auto found = scope.find(key.second);
+    if (found == scope.end()) return std::nullopt;
+    return found->second.value;
+}
+
+void Interpreter::set_variable_at(const VariableKey& key, const std::optional<Value>& value) {
+    Scope& scope = scopes_[key.first];
+    if (value) {
+        set_variable(scope, key.second, *value);
+    } else {
+        log_change(scope, key.second);
+        scope.erase(key.second);
+    }
+}
+
+namespace {
+
+// Everything about an object block but its CSG members and lights: what a
+// side of a time split may not change (not yet piecewise in time).
+bool same_but_members(const runtime::ObjectRecord& a, const runtime::ObjectRecord& b) {
+    const auto* ca = std::get_if<runtime::Csg>(&a.shape);
+    const auto* cb = std::get_if<runtime::Csg>(&b.shape);
+    if (a.shape.index() != b.shape.index() || (ca && ca->kind != cb->kind)) return false;
+    return a.transform.steps().size() == b.transform.steps().size() &&
+           a.texture.has_value() == b.texture.has_value() &&
+           a.interior.has_value() == b.interior.has_value() && a.no_shadow == b.no_shadow &&
+           a.hollow == b.hollow && a.inverse == b.inverse;
+}
+
+}  // namespace
+
+void Interpreter::merge_time_sides(const p::position& at, const TimeFunction& c,
+                                   std::optional<TimeSide> (&sides)[2],
+                                   const std::optional<runtime::ObjectRecord>& top_before) {
+    try {
+        // The variables either side changed.
+        std::map<VariableKey, bool> changed;
+        for (const auto& s : sides)
+            if (s)
+                for (const auto& entry : s->after) changed[entry.first] = true;
+        for (const auto& [key, unused] : changed) {
+            (void)unused;
+            const std::optional<Value> before = variable_at(key);
+            std::optional<Value> values[2];
+            for (int side = 0; side < 2; ++side) {
+                if (!sides[side]) continue;
+                const auto found = sides[side]->after.find(key);
+                values[side] = found != sides[side]->after.end() ? found->second : before;
+            }
+            std::optional<Value> merged;
+            if (!sides[1]) merged = values[0];
+            else if (!sides[0]) merged = values[1];
+            else
+                merged = merge_sides(key.second, c, values[0], sides[0]->when, values[1], sides[1]->when);
+            set_variable_at(key, merged);
+        }
+        // The values they left (a macro's result): one each, side by side.
+        if (sides[0] && sides[1] && sides[0]->pushed.size() != sides[1]->pushed.size())
+            throw ValueError("the two sides of this clock-dependent branch give " +
+                             std::to_string(sides[0]->pushed.size()) + " and " +
+                             std::to_string(sides[1]->pushed.size()) +
+                             " values; each side must give as many");
+        const std::size_t count = sides[0] ? sides[0]->pushed.size() : sides[1] ? sides[1]->pushed.size() : 0;
+        for (std::size_t i = 0; i < count; ++i) {
+            if (!sides[1]) push(sides[0]->pushed[i]);
+            else if (!sides[0]) push(sides[1]->pushed[i]);
+            else
+                push(*merge_sides("the value given", c, sides[0]->pushed[i], sides[0]->when,
+                                  sides[1]->pushed[i], sides[1]->when));
+        }
+        // The object around the branch: the CSG members and lights each side
+        // added (each living on its side's pieces, finish_object), and
+        // nothing else changed.
+        if (top_before) {
+            runtime::ObjectRecord merged = *top_before;
+            auto* members = std::get_if<runtime::Csg>(&merged.shape);
+            const std::size_t base_members =
+                members ? std::get<runtime::Csg>(top_before->shape).children.size() : 0;
+            for (const auto& s : sides) {
+                if (!s || !s->top) continue;
+                if (!same_but_members(*s->top, *top_before))
+                    throw ValueError("this clock-dependent branch changes the object around it "
+                                     "(a transform, texture or flag); hexant makes the CSG "
+                                     "members it adds piecewise in time, not yet the object's "
+                                     "own modifiers (put the branch in the value they use)");
+                if (const auto* csg = std::get_if<runtime::Csg>(&s->top->shape))
+                    members->children.insert(members->children.end(),
+                                             csg->children.begin() + static_cast<std::ptrdiff_t>(base_members),
+                                             csg->children.end());
+                merged.lights.insert(merged.lights.end(),
+                                     s->top->lights.begin() +
+                                         static_cast<std::ptrdiff_t>(top_before->lights.size()),
+                                     s->top->lights.end());
+            }
+            blocks.back() = std::move(merged);
+        }
+    } catch (const ValueError& e) {
+        fail(at, e.what());
+    }
+}
+
+void Interpreter::require_whole_time(const p::position& where, const char* what) const {
+    if (domain.is_always()) return;
+    fail(where, std::string(what) +
+                    " is set under a branch whose condition depends on clock; hexant makes "
+                    "objects, lights, floats and vectors piecewise in time, not yet this");
+}
+
 void Interpreter::set_variable(Scope& scope, const std::string& name, Value value) {
+    log_change(scope, name);
     const std::size_t bytes = value.is<std::string>() ? value.as<std::string>().size() : 0;
     auto [slot, added] = scope.try_emplace(name);
     Variable& variable = slot->second;
@@ -225,6 +347,12 @@ void Interpreter::assign_element(const std::string& name, const std::vector<Valu
         if (found != it->end()) target = &found->second.value;
     }
     if (!target) fail(where, "undeclared array '" + name + "'");
+    // (An array is shared, not copied, by the sides of a time split: an
+    // element set on one side would be seen on the other.)
+    if (!branch_logs_.empty())
+        fail(where, "an array element set under a branch whose condition depends on clock; "
+                    "hexant cannot yet make an array piecewise in time (declare a float or "
+                    "vector under the branch instead)");
     if (!target->is<std::shared_ptr<Array>>()) fail(where, "'" + name + "' is not an array");
     auto& array = *target->as<std::shared_ptr<Array>>();
     std::vector<double> at;
@@ -241,7 +369,11 @@ void Interpreter::assign_element(const std::string& name, const std::vector<Valu
 
 bool Interpreter::undefine(const std::string& name) {
     for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it)
-        if (it->erase(name)) return true;
+        if (it->count(name)) {
+            log_change(*it, name);
+            it->erase(name);
+            return true;
+        }
     return false;
 }
 

@@ -13,6 +13,7 @@
 #include <deque>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <new>
 #include <optional>
@@ -29,8 +30,10 @@
 #include "language/grammar.hpp"
 #include "language/interpreter.hpp"
 #include "language/value.hpp"
+#include "language/time_branch.hpp"
 #include "language/value_ops.hpp"
 #include "runtime/scene.hpp"
+#include "runtime/switching_instants.hpp"
 
 namespace hexant::language {
 
@@ -115,6 +118,20 @@ public:
     // animation (runtime/parameter_check.hpp); `where` is the item that
     // added it to the scene.
     void check_parameters(const runtime::ObjectRecord& object, const p::position& where) const;
+
+    // ---- time (language/time_branch.hpp)
+    // The time the text being read runs for: always, or the pieces where
+    // the clock-dependent branches around it hold. Objects and lights made
+    // now exist only then.
+    runtime::Lifetime domain;
+    // The animation's time, from the first frame's shutter opening to the
+    // last one's closing.
+    runtime::Interval animation_time() const {
+        return {scene.animation.time_begin(), scene.animation.time_end()};
+    }
+    // Refuses, at `where`, something that cannot yet change with a
+    // clock-dependent branch (`what`: "the camera", ...) when read under one.
+    void require_whole_time(const p::position& where, const char* what) const;
 
     // ---- what the scene fills in
     runtime::SceneDescription& scene;
@@ -271,6 +288,25 @@ private:
     template <template <typename...> class Action, template <typename...> class Control,
               typename ParseInput>
     double condition(ParseInput& in, const char* directive);
+    // A condition that may depend on clock.
+    template <template <typename...> class Action, template <typename...> class Control,
+              typename ParseInput>
+    TimeFunction timed_condition(ParseInput& in, const char* directive);
+    // An #if's (or #elseif's) bodies after its condition `c`, read at `at`.
+    template <typename Item, template <typename...> class Action,
+              template <typename...> class Control, typename ParseInput>
+    void if_chain(ParseInput& in, const p::position& opened, const p::position& at,
+                  const TimeFunction& c);
+    // The same for a condition known to be `taken` over the whole domain.
+    template <typename Item, template <typename...> class Action,
+              template <typename...> class Control, typename ParseInput>
+    void if_rest(ParseInput& in, const p::position& opened, bool taken);
+    // Splits the domain by the truth of `c` and calls read(taken) for each
+    // side that has time, from the input's present place, with the domain
+    // restricted to that side; then merges the variables the sides set
+    // (time_branch.hpp). Errors name `at`.
+    template <typename ParseInput, typename Read>
+    void split_time(ParseInput& in, const p::position& at, const TimeFunction& c, Read read);
     template <typename Item, template <typename...> class Action,
               template <typename...> class Control, typename ParseInput>
     Divider run_body(ParseInput& in) {
@@ -299,6 +335,33 @@ private:
     // characters; throws ValueError past the budget, changing nothing.
     void set_variable(Scope& scope, const std::string& name, Value value);
     std::vector<Scope> scopes_;
+    // While one side of a time split is read: the variables of the scopes
+    // older than the split that it changed, with what they held before
+    // (none: undefined), so that the next side starts from the same state.
+    using VariableKey = std::pair<std::size_t, std::string>;  // scope, name
+    struct BranchLog {
+        std::size_t scopes = 0;  // scopes_.size() when the side began
+        std::map<VariableKey, std::optional<Value>> before;
+    };
+    std::vector<BranchLog> branch_logs_;
+    bool restoring_ = false;  // writing back a log: not itself logged
+    void log_change(const Scope& scope, const std::string& name);
+    std::optional<Value> variable_at(const VariableKey& key) const;
+    void set_variable_at(const VariableKey& key, const std::optional<Value>& value);
+    // One side of a time split, read: its pieces, the variables it changed
+    // (as they were when it ended), the values it left on the stack and the
+    // object block around it as it left it.
+    struct TimeSide {
+        runtime::Lifetime when;
+        std::map<VariableKey, std::optional<Value>> after;
+        std::vector<Value> pushed;
+        std::optional<runtime::ObjectRecord> top;
+    };
+    // After both sides of a split on `c` (read at `at`): their variables,
+    // values and the block's CSG members made piecewise (time_branch.hpp).
+    void merge_time_sides(const p::position& at, const TimeFunction& c,
+                          std::optional<TimeSide> (&sides)[2],
+                          const std::optional<runtime::ObjectRecord>& top_before);
     std::vector<Value> stack_;
     std::vector<std::size_t> frames_;
     std::vector<std::string> names_;
@@ -407,17 +470,43 @@ double Interpreter::condition(ParseInput& in, const char* directive) {
     }
 }
 
+template <template <typename...> class Action, template <typename...> class Control,
+          typename ParseInput>
+TimeFunction Interpreter::timed_condition(ParseInput& in, const char* directive) {
+    const auto position = in.position();
+    read<grammar::condition, Action, Control>(in);
+    try {
+        return to_float(pop(), std::string("the condition of ") + directive);
+    } catch (const ValueError& e) {
+        fail(position, e.what());
+    }
+}
+
 template <typename Item, template <typename...> class Action,
           template <typename...> class Control, typename ParseInput>
 bool Interpreter::run_if(ParseInput& in) {
     const auto opened = directive_position(in);
     if (!keyword(in, "if")) return false;
-    bool taken = runtime::pov_true(condition<Action, Control>(in, "#if"));
+    const auto at = in.position();
+    if_chain<Item, Action, Control>(in, opened, at, timed_condition<Action, Control>(in, "#if"));
+    return true;
+}
+
+template <typename Item, template <typename...> class Action,
+          template <typename...> class Control, typename ParseInput>
+void Interpreter::if_chain(ParseInput& in, const p::position& opened, const p::position& at,
+                           const TimeFunction& c) {
+    if (c.is_constant()) return if_rest<Item, Action, Control>(in, opened, runtime::pov_true(c.constant()));
+    split_time(in, at, c, [&](bool taken) { if_rest<Item, Action, Control>(in, opened, taken); });
+}
+
+template <typename Item, template <typename...> class Action,
+          template <typename...> class Control, typename ParseInput>
+void Interpreter::if_rest(ParseInput& in, const p::position& opened, bool taken) {
     bool seen_else = false;
     for (;;) {
-        const auto at = in.position();
         const Divider d = taken ? run_body<Item, Action, Control>(in) : skip_body<Control>(in);
-        if (d == Divider::End) return true;
+        if (d == Divider::End) return;
         if (taken) {
             // The rest, up to #end, is skipped whatever it holds.
             if (d != Divider::Else && d != Divider::Elseif) unclosed(opened, "#if", d, in);
@@ -427,7 +516,7 @@ bool Interpreter::run_if(ParseInput& in) {
                 rest = skip_body<Control>(in);
             } while (rest == Divider::Else || rest == Divider::Elseif);
             if (rest != Divider::End) unclosed(opened, "#if", rest, in);
-            return true;
+            return;
         }
         if (d == Divider::Else) {
             if (seen_else) unclosed(opened, "#if", d, in);
@@ -436,14 +525,102 @@ bool Interpreter::run_if(ParseInput& in) {
             // After #else only #end may follow.
             const Divider last = run_body<Item, Action, Control>(in);
             if (last != Divider::End) unclosed(opened, "#if", last, in);
-            return true;
+            return;
         }
         if (d == Divider::Elseif) {
-            taken = runtime::pov_true(condition<Action, Control>(in, "#elseif"));
+            const auto at = in.position();
+            const TimeFunction c = timed_condition<Action, Control>(in, "#elseif");
+            // The rest of the chain splits the time this side holds.
+            if (!c.is_constant()) return if_chain<Item, Action, Control>(in, opened, at, c);
+            taken = runtime::pov_true(c.constant());
             continue;
         }
         unclosed(opened, "#if", d, in);
     }
+}
+
+template <typename ParseInput, typename Read>
+void Interpreter::split_time(ParseInput& in, const p::position& at, const TimeFunction& c, Read read) {
+    // Each split re-reads its text once a side and nests the next inside
+    // it: bounded like macro calls (a chain of #elseif each on clock).
+    if (branch_logs_.size() >= static_cast<std::size_t>(options.limits.macro_depth))
+        fail(at, "clock-dependent branches nested more than " +
+                     std::to_string(options.limits.macro_depth) +
+                     " deep (--max-macro-depth N raises the limit)");
+    runtime::TruthPieces pieces;
+    try {
+        pieces = runtime::split_by_truth(c, domain.within(animation_time()), options.limits.time_pieces);
+    } catch (const runtime::LimitError& e) {
+        fail(at, e.what());
+    }
+    scene.time_splits.push_back({{at.source, at.line, at.column}, pieces.instants});
+    const auto start = in.iterator();
+    const runtime::Lifetime outer = domain;
+    // What a side may change besides variables: values it leaves on the
+    // stack (an #if inside a macro that returns a value), and the object
+    // being built around it (CSG members it adds).
+    const std::size_t stack_base = stack_.size();
+    const std::size_t block_count = blocks.size();
+    std::optional<runtime::ObjectRecord> top_before;
+    if (!blocks.empty()) {
+        if (!std::holds_alternative<runtime::ObjectRecord>(blocks.back()))
+            fail(at, "a branch whose condition depends on clock inside this block; hexant makes "
+                     "objects, their CSG members, floats and vectors piecewise in time, not yet "
+                     "what this block holds");
+        top_before = std::get<runtime::ObjectRecord>(blocks.back());
+    }
+    std::optional<TimeSide> sides[2];  // [0]: where c holds
+    auto end = start;
+    const auto restore = [&] {
+        BranchLog log = std::move(branch_logs_.back());
+        branch_logs_.pop_back();
+        TimeSide side;
+        restoring_ = true;
+        for (auto& [key, before] : log.before) {
+            side.after[key] = variable_at(key);
+            set_variable_at(key, before);
+        }
+        restoring_ = false;
+        if (stack_.size() >= stack_base) {
+            side.pushed.assign(std::make_move_iterator(stack_.begin() + static_cast<std::ptrdiff_t>(stack_base)),
+                               std::make_move_iterator(stack_.end()));
+        }
+        const bool balanced = stack_.size() >= stack_base && blocks.size() == block_count;
+        stack_.resize(std::min(stack_.size(), stack_base));
+        if (blocks.size() == block_count && top_before) {
+            side.top = std::move(std::get<runtime::ObjectRecord>(blocks.back()));
+            blocks.back() = *top_before;
+        }
+        return std::pair{std::move(side), balanced};
+    };
+    for (int side = 0; side < 2; ++side) {
+        const runtime::Lifetime& when = side == 0 ? pieces.when_true : pieces.when_false;
+        if (when.is_never()) continue;
+        in.iterator() = start;
+        // (A condition true, or false, over all of the domain: no split.)
+        const bool whole = (side == 0 ? pieces.when_false : pieces.when_true).is_never();
+        domain = whole ? outer : when;
+        branch_logs_.push_back({scopes_.size(), {}});
+        try {
+            read(side == 0);
+        } catch (...) {
+            domain = outer;
+            (void)restore();
+            throw;
+        }
+        auto [done, balanced] = restore();
+        if (!balanced) {
+            domain = outer;
+            fail(at, "a branch whose condition depends on clock that uses values from before it "
+                     "or leaves a block open; hexant cannot yet make that piecewise in time");
+        }
+        done.when = when;
+        sides[side] = std::move(done);
+        end = in.iterator();
+    }
+    domain = outer;
+    in.iterator() = end;
+    merge_time_sides(at, c, sides, top_before);
 }
 
 template <typename Item, template <typename...> class Action,

@@ -45,6 +45,10 @@ struct Limits {
     // pixel in float RGB, and the file's writer and a kept frame copies it
     // (-W 100000 -H 100000 ended in std::bad_alloc).
     long long image_pixels = 100'000'000;
+    // Pieces of time a clock-dependent branch splits the animation into,
+    // per condition (#if (sin(1 / (clock - 0.5)) > 0) would split it
+    // without end): each piece runs the branch's text again.
+    std::size_t time_pieces = 10'000;
 };
 
 }  // namespace hexant::language

@@ -1,6 +1,7 @@
 // A light source record after POV-Ray's light_source.
 #pragma once
 
+#include "runtime/lifetime.hpp"
 #include "runtime/transform.hpp"
 #include "runtime/vector_function.hpp"
 
@@ -15,8 +16,11 @@ struct LightRecord {
     Vector3Function point_at{};
     TimeFunction radius = 30.0, falloff = 45.0, tightness = 0.0;
     Transform transform;
+    // When it shines: always, or the pieces of time of the clock-dependent
+    // branches it was made under.
+    Lifetime lifetime;
 
-    bool depends_on_time() const { return position.depends_on_time() || colour.depends_on_time() ||
+    bool depends_on_time() const { return !lifetime.is_always() || position.depends_on_time() || colour.depends_on_time() ||
                                           transform.depends_on_time(); }
 };
 

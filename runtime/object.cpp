@@ -106,8 +106,8 @@ bool ObjectRecord::texture_depends_on_time() const {
 }
 
 bool ObjectRecord::depends_on_time() const {
-    return shape_depends_on_time() || transform.depends_on_time() || texture_depends_on_time() ||
-           (interior && varies(interior->ior));
+    return !lifetime.is_always() || shape_depends_on_time() || transform.depends_on_time() ||
+           texture_depends_on_time() || (interior && varies(interior->ior));
 }
 
 }  // namespace hexant::runtime

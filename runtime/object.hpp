@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "runtime/lifetime.hpp"
 #include "runtime/light.hpp"
 #include "runtime/material.hpp"
 #include "runtime/shapes.hpp"
@@ -33,6 +34,10 @@ struct ObjectRecord {
     // Everything that walks a record's children recurses, so the language
     // refuses records deeper than kMaxObjectDepth where they are made.
     int depth = 1;
+    // When it exists: always, or the pieces of time of the clock-dependent
+    // branches it was made under (language/time_domain.hpp). Its CSG
+    // children exist within it.
+    Lifetime lifetime;
     // Light sources written inside a CSG move with it.
     std::vector<LightRecord> lights;
     SourcePlace place;  // where the object was written

@@ -18,6 +18,7 @@
 #include "runtime/objects/sphere_model.hpp"
 #include "runtime/objects/torus_model.hpp"
 #include "runtime/objects/triangle_model.hpp"
+#include "runtime/lifetime_object.hpp"
 #include "runtime/primitive.hpp"
 
 namespace hexant::runtime {
@@ -31,6 +32,11 @@ struct Inherited {
     std::optional<Interior> interior;
     bool no_shadow = false;
     int csg_depth = 0;  // CSG objects around this one (unions split apart do not count)
+    // The lifetime of unions split apart around it (a group kept whole
+    // carries its own, runtime/lifetime_object.hpp).
+    Lifetime lifetime;
+    // Is it a member of an intersection (LifetimeObject's inside_when_absent)?
+    bool in_intersection = false;
 };
 
 // The tracer tests a CSG's children recursively for every ray, on threads
@@ -45,7 +51,18 @@ IntelligentObjectPtr make_primitive(const Shape& shape, const Transform& to_worl
     return std::make_unique<Primitive<Model>>(Model(shape), to_world, std::move(texture), options);
 }
 
+IntelligentObjectPtr build_object(const ObjectRecord& record, const Inherited& parent);
+
+// The object, and where it lives only part of the time, wrapped in its
+// lifetime.
 IntelligentObjectPtr build(const ObjectRecord& record, const Inherited& parent) {
+    IntelligentObjectPtr object = build_object(record, parent);
+    const Lifetime lifetime = record.lifetime.intersect(parent.lifetime);
+    if (lifetime.is_always()) return object;
+    return std::make_unique<LifetimeObject>(std::move(object), lifetime, parent.in_intersection);
+}
+
+IntelligentObjectPtr build_object(const ObjectRecord& record, const Inherited& parent) {
     Transform to_world = record.transform;
     to_world.append(parent.to_world);
     std::optional<Texture> texture = parent.texture;
@@ -62,7 +79,8 @@ IntelligentObjectPtr build(const ObjectRecord& record, const Inherited& parent) 
             throw ObjectError(record.place, "CSG nested more than " + std::to_string(kMaxCsgDepth) +
                                                 " levels deep (intersection, difference or merge "
                                                 "inside one another)");
-        const Inherited down{to_world, texture, interior, no_shadow, parent.csg_depth + 1};
+        const Inherited down{to_world, texture, interior, no_shadow, parent.csg_depth + 1,
+                             Lifetime::always(), csg->kind == Csg::Kind::Intersection};
         std::vector<IntelligentObjectPtr> children;
         children.reserve(csg->children.size());
         for (const auto& child : csg->children) children.push_back(build(*child, down));
@@ -125,6 +143,7 @@ void build_split(const ObjectRecord& record, const Inherited& parent,
     }
     if (record.interior) down.interior = record.interior;
     down.no_shadow = record.no_shadow || parent.no_shadow;
+    down.lifetime = record.lifetime.intersect(parent.lifetime);
     for (const auto& child : csg->children) build_split(*child, down, out);
 }
 

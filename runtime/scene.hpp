@@ -9,6 +9,7 @@
 #include "runtime/camera.hpp"
 #include "runtime/light.hpp"
 #include "runtime/object.hpp"
+#include "runtime/source_place.hpp"
 
 namespace hexant::runtime {
 
@@ -16,6 +17,13 @@ struct GlobalSettings {
     double assumed_gamma = 1.0;
     int max_trace_level = 5;
     ColourFunction ambient_light{{1.0, 1.0, 1.0, 0.0, 0.0}};
+};
+
+// A branch whose condition depends on clock, as the language split it:
+// where its condition was written and the instants where it switches.
+struct TimeSplit {
+    SourcePlace where;
+    std::vector<double> instants;
 };
 
 struct SceneDescription {
@@ -28,6 +36,7 @@ struct SceneDescription {
     Texture default_texture;
     Animation animation;
     std::vector<std::string> warnings;
+    std::vector<TimeSplit> time_splits;
 };
 
 }  // namespace hexant::runtime

@@ -59,6 +59,9 @@ inline Interval negate_truth(const Interval& t) {
 // std::fmod(a, b): exact, with a's sign and less than |b| in size. When the
 // quotient's integer part is the same everywhere it is a - q b exactly.
 inline Interval fmod(const Interval& a, const Interval& b) {
+    // Two points: std::fmod is exact (a quotient rounded outward would
+    // straddle an integer when a / b is one: mod(2, 2) was [0, 2]).
+    if (a.is_point() && b.is_point()) return Interval(std::fmod(a.lo, b.lo));
     const double m = b.magnitude();
     Interval r{a.lo >= 0.0 ? 0.0 : -std::min(-a.lo, m), a.hi <= 0.0 ? 0.0 : std::min(a.hi, m)};
     const Interval q = trunc(a / b);
@@ -67,6 +70,14 @@ inline Interval fmod(const Interval& a, const Interval& b) {
         if (!exact.is_empty()) r = exact;
     }
     return r;
+}
+
+// trunc(a / b), as the point evaluator computes it. Two points give its
+// double (a quotient rounded outward straddled the integer when a / b is
+// one: div(4, 2) was [1, 2], which left a condition on it undecided).
+inline Interval int_div(const Interval& a, const Interval& b) {
+    if (a.is_point() && b.is_point()) return Interval(std::trunc(a.lo / b.lo));
+    return trunc(a / b);
 }
 
 inline Interval srgb_decode(const Interval& c) {
@@ -147,7 +158,7 @@ inline Interval apply_op(TimeOp op, const Interval& a, const Interval& b = 0.0,
         case TimeOp::Mod:
             return d::fmod(a, b);
         case TimeOp::IntDiv:
-            return trunc(a / b);
+            return d::int_div(a, b);
         case TimeOp::Less:
             return d::less(a, b);
         case TimeOp::LessEqual:

@@ -40,7 +40,7 @@ Shader::Shader(const runtime::SceneDescription& scene, const RayQuery& query)
     : query_(query), background_(scene.background), ambient_light_(scene.global.ambient_light),
       max_trace_level_(std::max(1, scene.global.max_trace_level)) {
     for (const auto& l : scene.lights) {
-        Light light{l.position, l.transform, l.colour, l.shadowless};
+        Light light{l.position, l.transform, l.colour, l.shadowless, l.lifetime};
         light.fixed_position = light.position_at(0.0);
         light.still_position = !l.position.depends_on_time() && !l.transform.depends_on_time();
         light.fixed_colour = rgb(l.colour, 0.0);
@@ -76,6 +76,7 @@ glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, ThreadSta
 
     const glm::dvec3 start = runtime::geometry::offset_ray(point, p.error, geometric);
     for (const Light& light : lights_) {
+        if (!light.lifetime.is_always() && !light.lifetime.contains(time)) continue;
         const glm::dvec3 light_position = light.position_at(time);
         glm::dvec3 to_light = light_position - point;
         const double distance = glm::length(to_light);

@@ -33,6 +33,7 @@ private:
         runtime::Transform transform;
         runtime::ColourFunction colour;
         bool shadowless = false;
+        runtime::Lifetime lifetime;  // when it shines
         bool still_position = false, still_colour = false;
         glm::dvec3 fixed_position{0.0}, fixed_colour{0.0};
         glm::dvec3 position_at(double t) const;

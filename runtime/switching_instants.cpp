@@ -1,0 +1,114 @@
+#include "runtime/switching_instants.hpp"
+
+#include <string>
+#include <utility>
+
+#include "runtime/time_ops.hpp"
+#include "runtime/time_tape.hpp"
+
+namespace hexant::runtime {
+
+namespace {
+
+class Splitter {
+public:
+    Splitter(const TimeFunction& condition, std::size_t max_pieces)
+        : tape_(TimeTape::compile({condition})),
+          intervals_(tape_.size()),
+          points_(tape_.size()),
+          max_pieces_(max_pieces),
+          // About 2 x 64 halvings isolate one switch to neighbouring doubles
+          // (a piece undecided on both sides of it costs twice); a margin of
+          // four over that.
+          max_evaluations_(512 * (max_pieces + 1)) {}
+
+    void split(Interval t) {
+        if (++evaluations_ > max_evaluations_)
+            throw LimitError("a condition that depends on clock could not be split into pieces of "
+                             "constant truth within " + std::to_string(max_evaluations_) +
+                             " evaluations (does it change without end, or at every instant?)");
+        const int d = decide(t);
+        if (d >= 0) return push(t, d == 1);
+        using interval_detail::next_up;
+        // Three doubles or fewer: each decided by itself.
+        if (next_up(next_up(t.lo)) >= t.hi) {
+            for (double v = t.lo; v <= t.hi; v = next_up(v)) push(Interval(v, v), truth_at(v));
+            return;
+        }
+        const double m = t.mid();
+        split({t.lo, m});
+        split({next_up(m), t.hi});
+    }
+
+    // Ends the domain's interval: the next one does not continue this one.
+    void break_run() { open_ = false; }
+
+    TruthPieces result() {
+        TruthPieces r;
+        std::vector<Interval> yes, no;
+        for (const auto& [piece, truth] : pieces_) (truth ? yes : no).push_back(piece);
+        r.when_true = Lifetime::of(std::move(yes));
+        r.when_false = Lifetime::of(std::move(no));
+        r.instants = std::move(instants_);
+        return r;
+    }
+
+private:
+    // 1: true over all of t, 0: false over all of t, -1: undecided.
+    int decide(const Interval& t) {
+        Interval v;
+        tape_.evaluate(t, &v, intervals_.data());
+        if (v.lo > kPovEpsilon || v.hi < -kPovEpsilon) return 1;
+        if (-kPovEpsilon <= v.lo && v.hi <= kPovEpsilon) return 0;
+        return -1;
+    }
+    bool truth_at(double t) {
+        double v;
+        tape_.evaluate(t, &v, points_.data());
+        return pov_true(v);
+    }
+    void push(const Interval& t, bool truth) {
+        if (open_ && !pieces_.empty() && pieces_.back().second == truth) {
+            pieces_.back().first.hi = t.hi;
+            return;
+        }
+        if (open_ && !pieces_.empty()) instants_.push_back(t.lo);
+        open_ = true;
+        pieces_.push_back({t, truth});
+        if (instants_.size() > max_pieces_)
+            throw LimitError("a condition that depends on clock changes more than " +
+                             std::to_string(max_pieces_) +
+                             " times over the animation (--max-time-pieces N raises the limit)");
+    }
+
+    TimeTape tape_;
+    std::vector<Interval> intervals_;
+    std::vector<double> points_;
+    std::size_t max_pieces_;
+    std::size_t max_evaluations_;
+    std::size_t evaluations_ = 0;
+    bool open_ = false;
+    std::vector<std::pair<Interval, bool>> pieces_;
+    std::vector<double> instants_;
+};
+
+}  // namespace
+
+TruthPieces split_by_truth(const TimeFunction& condition, const std::vector<Interval>& domain,
+                           std::size_t max_pieces) {
+    if (condition.is_constant()) {
+        TruthPieces r;
+        (pov_true(condition.constant()) ? r.when_true : r.when_false) = Lifetime::of(domain);
+        (pov_true(condition.constant()) ? r.when_false : r.when_true) = Lifetime::never();
+        return r;
+    }
+    Splitter splitter(condition, max_pieces);
+    for (const Interval& t : domain) {
+        if (t.is_empty()) continue;
+        splitter.split(t);
+        splitter.break_run();
+    }
+    return splitter.result();
+}
+
+}  // namespace hexant::runtime

@@ -1,0 +1,44 @@
+// Where a condition that depends on `clock` changes its truth: the
+// switching instants of a branch (#if, #while, #switch on a function of
+// time), found exactly.
+//
+// The condition's interval evaluation (time_tape.hpp, outward rounded)
+// decides a piece of time whole when its range is all true (|c| > 1e-10,
+// POV-Ray's truth) or all false; an undecided piece is halved, down to
+// neighbouring doubles, where the point evaluator decides each instant. So
+// a switch is placed between two neighbouring doubles, exactly where the
+// double evaluation of the condition changes its answer: for a continuous
+// condition the root of (left - right) to full precision, for a step
+// (int, floor, mod, frame_number) its jump, with no sampling. The interval
+// evaluator holds the point evaluator's value for every t of the piece,
+// so a piece decided whole is decided right at every double in it.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "runtime/interval.hpp"
+#include "runtime/lifetime.hpp"
+#include "runtime/limit_error.hpp"
+#include "runtime/time_function.hpp"
+
+namespace hexant::runtime {
+
+struct TruthPieces {
+    Lifetime when_true;
+    Lifetime when_false;
+    // Where the truth changes: the first double of each piece after the
+    // first, within each interval of the domain.
+    std::vector<double> instants;
+};
+
+// Splits `domain` (closed, finite intervals of time) by the truth of
+// `condition`. Throws LimitError when the condition changes more than
+// `max_pieces` times, or when pieces cannot be decided within a work
+// budget proportional to it (a condition that flickers without end,
+// sin(1 / (clock - 0.5)) > 0, or one the interval evaluation cannot
+// resolve).
+TruthPieces split_by_truth(const TimeFunction& condition, const std::vector<Interval>& domain,
+                           std::size_t max_pieces);
+
+}  // namespace hexant::runtime

@@ -1,0 +1,249 @@
+// Branches whose condition depends on clock (language/time_branch.hpp): the
+// interpreter reads each side on its own pieces of time. Objects made on a
+// side live only then, switching between two neighbouring doubles where
+// the condition's point value changes; variables set on the sides become
+// piecewise in time; what cannot yet be piecewise is an error at its place.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <string>
+
+#include "language/interpreter.hpp"
+#include "runtime/interval.hpp"
+#include "scene_text.hpp"
+
+using hexant::language::ParseOptions;
+using hexant::runtime::SceneDescription;
+using hexant::test::error_of;
+
+namespace rt = hexant::runtime;
+
+namespace {
+
+// Frames 1 to 8 over clock 0 to 1 (the shutter of the last one ends at 8/7).
+ParseOptions animation() {
+    ParseOptions options;
+    options.animation.initial_frame = 1;
+    options.animation.final_frame = 8;
+    return options;
+}
+
+SceneDescription read(const std::string& text, ParseOptions options = animation()) {
+    return hexant::language::parse_scene_text(text, "test.pov", options);
+}
+
+double before(double t) { return rt::interval_detail::next_down(t); }
+
+const rt::Sphere& sphere(const SceneDescription& scene, std::size_t i) {
+    return std::get<rt::Sphere>(scene.objects.at(i)->shape);
+}
+
+}  // namespace
+
+TEST_CASE("#if on clock: each side's objects live on its pieces, switching at the root",
+          "[language][time]") {
+    const auto scene = read(R"(
+#if (clock * 10 > 3.1415)
+  sphere { 0, 1 }
+  #declare R = 0.3 + clock;
+#else
+  box { 0, 1 }
+  #declare R = 0.2;
+#end
+sphere { y, R }
+)");
+    REQUIRE(scene.objects.size() == 3);
+    REQUIRE(scene.time_splits.size() == 1);
+    REQUIRE(scene.time_splits[0].instants.size() == 1);
+    const double s = scene.time_splits[0].instants[0];
+    CHECK(std::fabs(s - 0.31415) < 1e-15);
+    // The switch sits between two neighbouring doubles.
+    CHECK(s * 10 > 3.1415);
+    CHECK_FALSE(before(s) * 10 > 3.1415);
+    const rt::Lifetime& after = scene.objects[0]->lifetime;
+    const rt::Lifetime& until = scene.objects[1]->lifetime;
+    CHECK(after.contains(s));
+    CHECK_FALSE(after.contains(before(s)));
+    CHECK(until.contains(before(s)));
+    CHECK_FALSE(until.contains(s));
+    CHECK(until.contains(0.0));
+    CHECK(after.contains(scene.animation.time_end()));
+    // The object after the branch exists always, and its radius is each
+    // side's own.
+    CHECK(scene.objects[2]->lifetime.is_always());
+    CHECK(sphere(scene, 2).radius(0.1) == 0.2);
+    CHECK(sphere(scene, 2).radius(before(s)) == 0.2);
+    CHECK(sphere(scene, 2).radius(0.5) == 0.3 + 0.5);
+    CHECK(sphere(scene, 2).radius(s) == 0.3 + s);
+}
+
+TEST_CASE("#elseif chains split what the earlier conditions leave", "[language][time]") {
+    const auto scene = read(R"(
+#if (clock < 0.25)
+  sphere { 0, 1 }
+#elseif (clock < 0.5)
+  sphere { 0, 2 }
+#else
+  sphere { 0, 3 }
+#end
+)");
+    REQUIRE(scene.objects.size() == 3);
+    for (const double t : {0.0, 0.1, before(0.25), 0.25, 0.3, before(0.5), 0.5, 0.9, 1.1}) {
+        int alive = 0;
+        for (const auto& object : scene.objects) alive += object->lifetime.contains(t);
+        INFO("t = " << t);
+        CHECK(alive == 1);  // exactly one at every instant
+    }
+    CHECK(scene.objects[0]->lifetime.contains(before(0.25)));
+    CHECK(scene.objects[1]->lifetime.contains(0.25));
+    CHECK(scene.objects[1]->lifetime.contains(before(0.5)));
+    CHECK(scene.objects[2]->lifetime.contains(0.5));
+}
+
+TEST_CASE("a macro that picks its formula by time returns a piecewise value", "[language][time]") {
+    // ../shared/cases/01: a bounce whose height is one formula going up and
+    // another coming down.
+    const auto scene = read(R"(
+#macro Height(T)
+  #if (T < 0.5)
+    #local H = 4 * T;
+  #else
+    #local H = 4 * (1 - T);
+  #end
+  H
+#end
+sphere { <0, Height(clock), 0>, 0.5 }
+)");
+    REQUIRE(scene.objects.size() == 1);
+    CHECK(scene.objects[0]->lifetime.is_always());
+    const auto& centre = sphere(scene, 0).center;
+    CHECK(centre(0.25).y == 1.0);
+    CHECK(centre(0.75).y == 1.0);
+    CHECK(centre(0.5).y == 2.0);
+    CHECK(centre(before(0.5)).y == 4 * before(0.5));
+}
+
+TEST_CASE("nested clock-dependent #if, and #if inside a loop", "[language][time]") {
+    const auto scene = read(R"(
+#for (I, 0, 3)
+  #if (clock > I / 8)
+    #if (clock < I / 8 + 0.5)
+      sphere { <I, 0, 0>, 0.4 }
+    #end
+  #end
+#end
+)");
+    // Sphere I lives on (I/8, I/8 + 0.5): they appear one by one.
+    REQUIRE(scene.objects.size() == 4);
+    for (int i = 0; i < 4; ++i) {
+        const double from = i / 8.0;
+        INFO("sphere " << i);
+        CHECK_FALSE(scene.objects[i]->lifetime.contains(from));
+        CHECK(scene.objects[i]->lifetime.contains(rt::interval_detail::next_up(from)));
+        CHECK(scene.objects[i]->lifetime.contains(before(from + 0.5)));
+        CHECK_FALSE(scene.objects[i]->lifetime.contains(from + 0.5));
+    }
+}
+
+TEST_CASE("a switch on a vector's length: vlength(C) != 0", "[language][time]") {
+    // ../shared/cases/04: a direction that vanishes once.
+    const auto scene = read(R"(
+#declare C = <clock - 0.5, 0, 0>;
+#if (vlength(C) != 0)
+  sphere { 0, 1 }
+#end
+)");
+    REQUIRE(scene.objects.size() == 1);
+    const rt::Lifetime& l = scene.objects[0]->lifetime;
+    CHECK(l.contains(0.5 - 2e-10));
+    CHECK_FALSE(l.contains(0.5));
+    CHECK(l.contains(0.5 + 2e-10));
+    REQUIRE(scene.time_splits.size() == 1);
+    CHECK(scene.time_splits[0].instants.size() == 2);
+}
+
+TEST_CASE("a static scene and one without clock in its conditions split nothing", "[language][time]") {
+    const auto scene = read(R"(
+#declare A = clock;
+#if (1 > 0) sphere { <A, 0, 0>, 1 } #end
+#if (clock_delta > 0) box { 0, 1 } #end
+)");
+    CHECK(scene.time_splits.empty());
+    for (const auto& object : scene.objects) CHECK(object->lifetime.is_always());
+}
+
+TEST_CASE("what cannot yet be piecewise in time is an error at the branch", "[language][time]") {
+    // A string set differently on the two sides.
+    const auto e = error_of(R"(
+#if (clock > 0.5)
+  #declare S = "late";
+#else
+  #declare S = "early";
+#end
+)", animation());
+    CHECK(e.formatted().find("test.pov:2:5") != std::string::npos);
+    CHECK(e.formatted().find("piecewise") != std::string::npos);
+    // A camera chosen by a clock-dependent branch (issue 18 still to do).
+    const auto camera = error_of("#if (clock > 0.5) camera { location -5*z } #end\n", animation());
+    CHECK(camera.formatted().find("camera") != std::string::npos);
+    // A condition that flickers without end stops at the limit, at its place.
+    const auto flicker = error_of("#if (sin(1 / (clock - 0.5)) > 0) sphere { 0, 1 } #end\n", animation());
+    CHECK(flicker.formatted().find("test.pov:1:5") != std::string::npos);
+    // Strings the same on both sides are fine.
+    hexant::test::reads("#if (clock > 0.5) #declare S = \"x\"; #else #declare S = \"x\"; #end\n",
+                        animation());
+}
+
+TEST_CASE("frame_number switches exactly at each frame's clock", "[language][time]") {
+    // ../shared/cases/06: a countdown whose tens digit goes once the count
+    // is below 10 (a sphere stands in for the text).
+    for (const int frames : {8, 10, 30}) {
+        ParseOptions options = animation();
+        options.animation.final_frame = frames;
+        const auto scene = read(R"(
+#declare Count = 12 - frame_number;
+union {
+  #if (Count > 9) sphere { 0, 1 } #end
+  box { 0, 1 }
+}
+)", options);
+        INFO(frames << " frames");
+        REQUIRE(scene.time_splits.size() == 1);
+        REQUIRE(scene.time_splits[0].instants.size() == 1);
+        // Frames 1 and 2 have Count > 9: the tens go at frame 3's clock.
+        CHECK(scene.time_splits[0].instants[0] == scene.animation.clock_of_frame(3));
+        const auto& members = std::get<rt::Csg>(scene.objects.at(0)->shape).children;
+        REQUIRE(members.size() == 2);
+        CHECK(members[0]->lifetime.contains(before(scene.animation.clock_of_frame(3))));
+        CHECK_FALSE(members[0]->lifetime.contains(scene.animation.clock_of_frame(3)));
+        CHECK(members[1]->lifetime.is_always());
+        // And frame_number is each frame's own at its clock and just before
+        // the next one.
+        const auto frame = read("#declare F = frame_number; sphere { 0, F }", options);
+        for (int k = 1; k <= frames; ++k) {
+            const double t = frame.animation.clock_of_frame(k);
+            CHECK(sphere(frame, 0).radius(t) == k);
+            if (k < frames) CHECK(sphere(frame, 0).radius(before(frame.animation.clock_of_frame(k + 1))) == k);
+        }
+    }
+}
+
+TEST_CASE("an #if in a macro that gives a value gives a piecewise value", "[language][time]") {
+    // ../shared/cases/01: the macro's body is the #if; each side leaves
+    // one value.
+    const auto scene = read(R"(
+#macro Hop(T)
+  #if (T < 0.5)
+    (cos(pi*T))
+  #else
+    (-cos(pi*T))
+  #end
+#end
+sphere { <0, Hop(clock), 0>, 0.2 }
+)");
+    const auto& centre = sphere(scene, 0).center;
+    CHECK(centre(0.0).y == 1.0);
+    CHECK(centre(0.25).y == std::cos(M_PI * 0.25));
+    CHECK(centre(0.75).y == -std::cos(M_PI * 0.75));
+    CHECK(centre(1.0).y == -std::cos(M_PI));
+}
