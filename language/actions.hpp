@@ -2,7 +2,9 @@
 // the grammar. They work on the Interpreter's value stack and block stack.
 #pragma once
 
+#include <iomanip>
 #include <iostream>
+#include <sstream>
 
 #include <tao/pegtl.hpp>
 
@@ -174,6 +176,17 @@ HEXANT_ACTION(function_call) {
             st.check_string_length(length, "concat()'s result");
         }
         Value result = call_builtin(name, args, st.random);
+        if (name == "vnormalize")
+            if (const auto zero = vnormalize_zero_at(args, st.animation_time())) {
+                std::ostringstream note;
+                note << "vnormalize() of a zero-length vector gives <0, 0, 0>, as in POV-Ray";
+                bool timed = false;
+                const Vector v = to_vector(args.at(0), "the argument of vnormalize()");
+                for (int i = 0; i < v.size; ++i) timed = timed || v.c[i].depends_on_time();
+                if (timed)
+                    note << " (at clock " << std::setprecision(17) << *zero << " and wherever else it is zero)";
+                st.warn(in.position(), note.str());
+            }
         if (result.is<std::string>())
             st.check_string_length(result.as<std::string>().size(), name + "()'s result");
         st.push(std::move(result));

@@ -8,6 +8,7 @@
 
 #include "language/checked_integer.hpp"
 #include "language/value_ops.hpp"
+#include "runtime/switching_instants.hpp"
 
 namespace hexant::language {
 
@@ -197,9 +198,15 @@ const std::map<std::string, Builtin>& table() {
              expect_count(n, a, 1, 1);
              const auto v = arg_vector(n, a, 0);
              const TimeFunction l = length(v);
-             if (l.is_constant() && l.constant() == 0.0)
-                 throw ValueError("vnormalize() of a zero-length vector");
-             return vec3(v.c[0] / l, v.c[1] / l, v.c[2] / l);
+             // POV-Ray's rule: a zero-length vector gives <0, 0, 0> (with
+             // a warning, vnormalize_zero_at), at every instant it is zero.
+             if (l.is_constant() && l.constant() == 0.0) return vec3(0.0, 0.0, 0.0);
+             if (l.is_constant()) return vec3(v.c[0] / l, v.c[1] / l, v.c[2] / l);
+             const TimeFunction nonzero = TimeFunction::apply(TimeOp::Greater, l, 0.0);
+             const auto part = [&](const TimeFunction& c) {
+                 return TimeFunction::apply(TimeOp::Conditional, nonzero, c / l, 0.0);
+             };
+             return vec3(part(v.c[0]), part(v.c[1]), part(v.c[2]));
          }},
         {"vdot",
          [](const std::string& n, const Args& a, RandomStreams&) {
@@ -383,6 +390,23 @@ Value call_builtin(const std::string& name, const std::vector<Value>& args, Rand
     auto it = functions.find(name);
     if (it == functions.end()) throw ValueError("unknown function " + name + "()");
     return it->second(name, args, random);
+}
+
+std::optional<double> vnormalize_zero_at(const std::vector<Value>& args,
+                                         const runtime::Interval& time) {
+    if (args.size() != 1) return std::nullopt;
+    const TimeFunction l = length(arg_vector("vnormalize", args, 0));
+    if (l.is_constant()) return l.constant() == 0.0 ? std::optional<double>(time.lo) : std::nullopt;
+    // Its zeros, exactly (runtime/switching_instants.hpp); a length that
+    // comes and goes too often is reported at the start.
+    try {
+        const auto pieces = runtime::split_by_truth(TimeFunction::apply(TimeOp::Greater, l, 0.0),
+                                                    {time}, 10'000);
+        if (pieces.when_false.is_never()) return std::nullopt;
+        return pieces.when_false.pieces().front().lo;
+    } catch (const runtime::LimitError&) {
+        return time.lo;
+    }
 }
 
 }  // namespace hexant::language

@@ -297,6 +297,16 @@ private:
               template <typename...> class Control, typename ParseInput>
     void if_chain(ParseInput& in, const p::position& opened, const p::position& at,
                   const TimeFunction& c);
+    // A #while's turns from `count` on, its condition at `start`.
+    template <typename Item, template <typename...> class Action,
+              template <typename...> class Control, typename ParseInput, typename Iterator>
+    void while_from(ParseInput& in, const p::position& opened, const Iterator& start,
+                    std::size_t count);
+    // A #switch on `value` from the divider `d` on.
+    template <typename Item, template <typename...> class Action,
+              template <typename...> class Control, typename ParseInput>
+    void switch_from(ParseInput& in, const p::position& opened, const TimeFunction& value,
+                     Divider d, bool matched, bool executing);
     // The same for a condition known to be `taken` over the whole domain.
     template <typename Item, template <typename...> class Action,
               template <typename...> class Control, typename ParseInput>
@@ -649,21 +659,40 @@ template <typename Item, template <typename...> class Action,
 bool Interpreter::run_while(ParseInput& in) {
     const auto opened = directive_position(in);
     if (!keyword(in, "while")) return false;
-    const auto start = in.iterator();
-    for (std::size_t count = 0;; ++count) {
+    const auto start = in.iterator();  // (a copy: the input moves on)
+    while_from<Item, Action, Control>(in, opened, start, 0);
+    return true;
+}
+
+template <typename Item, template <typename...> class Action,
+          template <typename...> class Control, typename ParseInput, typename Iterator>
+void Interpreter::while_from(ParseInput& in, const p::position& opened, const Iterator& start,
+                             std::size_t count) {
+    for (;; ++count) {
         in.iterator() = start;
-        const bool go = runtime::pov_true(condition<Action, Control>(in, "#while"));
-        if (go && count >= options.limits.loop_iterations)
-            fail(opened, "#while loop ran more than " +
-                             std::to_string(options.limits.loop_iterations) +
-                             " times; stopping (is its condition ever false? "
-                             "--max-loop-iterations N raises the limit)");
-        if (go) count_step(opened);
         const auto at = in.position();
-        const Divider d = go ? run_body<Item, Action, Control>(in) : skip_body<Control>(in);
-        if (d != Divider::End) unclosed(opened, "#while", d, in);
-        if (!go) return true;
-        count_text(static_cast<std::size_t>(in.current() - start.data), opened);
+        const TimeFunction c = timed_condition<Action, Control>(in, "#while");
+        // A condition on clock: the loop goes on only on the pieces where
+        // it holds, turn by turn (objects that appear one by one).
+        const auto turn = [&](bool go) {
+            if (go && count >= options.limits.loop_iterations)
+                fail(opened, "#while loop ran more than " +
+                                 std::to_string(options.limits.loop_iterations) +
+                                 " times; stopping (is its condition ever false? "
+                                 "--max-loop-iterations N raises the limit)");
+            if (go) count_step(opened);
+            const Divider d = go ? run_body<Item, Action, Control>(in) : skip_body<Control>(in);
+            if (d != Divider::End) unclosed(opened, "#while", d, in);
+            if (go) count_text(static_cast<std::size_t>(in.current() - start.data), opened);
+            return go;
+        };
+        if (!c.is_constant()) {
+            split_time(in, at, c, [&](bool go) {
+                if (turn(go)) while_from<Item, Action, Control>(in, opened, start, count + 1);
+            });
+            return;
+        }
+        if (!turn(runtime::pov_true(c.constant()))) return;
     }
 }
 
@@ -714,33 +743,50 @@ template <typename Item, template <typename...> class Action,
 bool Interpreter::run_switch(ParseInput& in) {
     const auto opened = directive_position(in);
     if (!keyword(in, "switch")) return false;
-    const double value = condition<Action, Control>(in, "#switch");
-    bool matched = false;
-    bool executing = false;
-    Divider d = skip_body<Control>(in);
+    const TimeFunction value = timed_condition<Action, Control>(in, "#switch");
+    switch_from<Item, Action, Control>(in, opened, value, skip_body<Control>(in), false, false);
+    return true;
+}
+
+template <typename Item, template <typename...> class Action,
+          template <typename...> class Control, typename ParseInput>
+void Interpreter::switch_from(ParseInput& in, const p::position& opened, const TimeFunction& value,
+                              Divider d, bool matched, bool executing) {
     for (;;) {
         const auto at = in.position();
         switch (d) {
             case Divider::Case:
             case Divider::Range: {
-                bool hit;
+                TimeFunction hit;
                 if (d == Divider::Case) {
-                    hit = std::fabs(condition<Action, Control>(in, "#case") - value) <
-                          runtime::kPovEpsilon;
+                    // POV-Ray's: |value - case| < epsilon.
+                    hit = TimeFunction::apply(runtime::TimeOp::Equal, value,
+                                              timed_condition<Action, Control>(in, "#case"));
                 } else {
                     open_frame();
                     read<grammar::range_header, Action, Control>(in);
                     auto r = close_frame();
-                    double lo, hi;
                     try {
-                        lo = to_constant(r[0], "the low end of #range");
-                        hi = to_constant(r[1], "the high end of #range");
+                        const TimeFunction lo = to_float(r[0], "the low end of #range");
+                        const TimeFunction hi = to_float(r[1], "the high end of #range");
+                        hit = TimeFunction::apply(runtime::TimeOp::And,
+                                                  TimeFunction::apply(runtime::TimeOp::GreaterEqual, value, lo),
+                                                  TimeFunction::apply(runtime::TimeOp::LessEqual, value, hi));
                     } catch (const ValueError& e) {
                         fail(at, e.what());
                     }
-                    hit = value >= lo && value <= hi;
                 }
-                executing = hit || executing;
+                // A clause that matches part of the time (once none before
+                // it runs): the rest of the #switch once for each side.
+                if (!executing && !hit.is_constant()) {
+                    split_time(in, at, hit, [&](bool taken) {
+                        const Divider next =
+                            taken ? run_body<Item, Action, Control>(in) : skip_body<Control>(in);
+                        switch_from<Item, Action, Control>(in, opened, value, next, matched || taken, taken);
+                    });
+                    return;
+                }
+                executing = executing || runtime::pov_true(hit.constant());
                 if (executing) matched = true;
                 d = executing ? run_body<Item, Action, Control>(in) : skip_body<Control>(in);
                 break;
@@ -756,11 +802,11 @@ bool Interpreter::run_switch(ParseInput& in) {
                         d = skip_body<Control>(in);
                     } while (d != Divider::End && d != Divider::None);
                     if (d != Divider::End) unclosed(opened, "#switch", d, in);
-                    return true;
+                    return;
                 }
                 d = skip_body<Control>(in);
                 break;
-            case Divider::End: return true;
+            case Divider::End: return;
             default: unclosed(opened, "#switch", d, in);
         }
     }

@@ -247,3 +247,70 @@ sphere { <0, Hop(clock), 0>, 0.2 }
     CHECK(centre(0.75).y == -std::cos(M_PI * 0.75));
     CHECK(centre(1.0).y == -std::cos(M_PI));
 }
+
+TEST_CASE("#while on clock: objects that appear one by one", "[language][time]") {
+    const auto scene = read(R"(
+#declare I = 0;
+#while (I < clock * 8)
+  sphere { <I, 0, 0>, 0.4 }
+  #declare I = I + 1;
+#end
+sphere { <0, 5, 0>, I }
+)");
+    // Sphere I exists once 8 clock > I: after I / 8 (to 8/7, the end of
+    // the last frame's shutter: I up to 9).
+    REQUIRE(scene.objects.size() == 11);
+    for (int i = 0; i < 10; ++i) {
+        INFO("sphere " << i);
+        const double from = i / 8.0;
+        CHECK_FALSE(scene.objects[i]->lifetime.contains(from));
+        CHECK(scene.objects[i]->lifetime.contains(rt::interval_detail::next_up(from)));
+        CHECK(scene.objects[i]->lifetime.contains(scene.animation.time_end()));
+    }
+    // The count after the loop is piecewise too: ceil(8 clock).
+    for (const double t : {0.0, 0.1, 0.3, 0.5, 0.99})
+        CHECK(sphere(scene, 10).radius(t) == std::ceil(8 * t));
+}
+
+TEST_CASE("#switch on clock: #range, #case and #else each on their pieces", "[language][time]") {
+    const auto scene = read(R"(
+#switch (clock)
+  #range (0, 0.25) sphere { 0, 1 } #break
+  #case (0.5) box { 0, 1 } #break
+  #else cylinder { 0, y, 1 }
+#end
+)");
+    REQUIRE(scene.objects.size() == 3);
+    const auto alive = [&](double t) {
+        std::string which;
+        for (const auto& object : scene.objects)
+            if (object->lifetime.contains(t)) which += rt::shape_name(object->shape);
+        return which;
+    };
+    CHECK(alive(0.0) == "sphere");
+    CHECK(alive(0.25) == "sphere");
+    CHECK(alive(rt::interval_detail::next_up(0.25)) == "cylinder");
+    CHECK(alive(0.5) == "box");
+    CHECK(alive(0.5 + 2e-10) == "cylinder");
+    CHECK(alive(1.0) == "cylinder");
+}
+
+TEST_CASE("vnormalize of a zero vector gives <0, 0, 0> with a warning, known or on clock",
+          "[language][time]") {
+    // ../shared/cases/03: POV-Ray warns and gives <0, 0, 0>; hexant stopped
+    // on a known zero and made a silent NaN of one on clock.
+    const auto still = read("sphere { vnormalize(<0, 0, 0>), 1 }\n");
+    CHECK(sphere(still, 0).center(0.0) == glm::dvec3(0.0));
+    REQUIRE(still.warnings.size() == 1);
+    CHECK(still.warnings[0].find("zero-length") != std::string::npos);
+
+    const auto moving = read("sphere { vnormalize(<clock - 0.5, 0, 0>), 1 }\n");
+    const auto& centre = sphere(moving, 0).center;
+    CHECK(centre(0.25) == glm::dvec3(-1.0, 0.0, 0.0));
+    CHECK(centre(0.75) == glm::dvec3(1.0, 0.0, 0.0));
+    CHECK(centre(0.5) == glm::dvec3(0.0));  // not NaN
+    REQUIRE(moving.warnings.size() == 1);
+    CHECK(moving.warnings[0].find("at clock 0.5") != std::string::npos);
+    // Never zero: no warning.
+    CHECK(read("sphere { vnormalize(<clock + 1, 0, 0>), 1 }\n").warnings.empty());
+}
