@@ -241,8 +241,39 @@ bool same_but_members(const runtime::ObjectRecord& a, const runtime::ObjectRecor
 
 void Interpreter::merge_time_sides(const p::position& at, const TimeFunction& c,
                                    std::optional<TimeSide> (&sides)[2],
-                                   const std::optional<runtime::ObjectRecord>& top_before) {
+                                   const std::optional<runtime::ObjectRecord>& top_before,
+                                   const runtime::CameraRecord& camera_before,
+                                   const runtime::ColourFunction& background_before) {
     try {
+        // The camera: each side's on its own pieces, ahead of what held
+        // before (which still holds outside this split's time).
+        if ((sides[0] && sides[0]->camera) || (sides[1] && sides[1]->camera)) {
+            runtime::CameraRecord merged = camera_before;
+            std::vector<runtime::CameraRecord::Piece> fresh;
+            for (const auto& s : sides) {
+                if (!s) continue;
+                const runtime::CameraRecord& camera = s->camera ? *s->camera : camera_before;
+                for (const auto& piece : camera.pieces) fresh.push_back({piece.when.intersect(s->when), piece.items});
+                fresh.push_back({s->when, camera.items});
+            }
+            fresh.insert(fresh.end(), camera_before.pieces.begin(), camera_before.pieces.end());
+            merged.pieces = std::move(fresh);
+            scene.camera = std::move(merged);
+            ++camera_sets;
+        }
+        // The background: `c ? one : other`, component by component.
+        if ((sides[0] && sides[0]->background) || (sides[1] && sides[1]->background)) {
+            runtime::ColourFunction colour[2];
+            for (int side = 0; side < 2; ++side)
+                colour[side] = sides[side] && sides[side]->background ? *sides[side]->background : background_before;
+            if (!sides[1]) scene.background = colour[0];
+            else if (!sides[0]) scene.background = colour[1];
+            else
+                for (int i = 0; i < 5; ++i)
+                    scene.background.c[i] =
+                        TimeFunction::apply(runtime::TimeOp::Conditional, c, colour[0].c[i], colour[1].c[i]);
+            ++background_sets;
+        }
         // The variables either side changed.
         std::map<VariableKey, bool> changed;
         for (const auto& s : sides)

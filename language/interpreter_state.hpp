@@ -20,6 +20,7 @@
 #include <ostream>
 #include <string>
 #include <unordered_map>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -129,6 +130,9 @@ public:
     runtime::Interval animation_time() const {
         return {scene.animation.time_begin(), scene.animation.time_end()};
     }
+    // How many times the camera and the background were set: a side of a
+    // time split that sets one makes it piecewise.
+    std::size_t camera_sets = 0, background_sets = 0;
     // Refuses, at `where`, something that cannot yet change with a
     // clock-dependent branch (`what`: "the camera", ...) when read under one.
     void require_whole_time(const p::position& where, const char* what) const;
@@ -366,12 +370,16 @@ private:
         std::map<VariableKey, std::optional<Value>> after;
         std::vector<Value> pushed;
         std::optional<runtime::ObjectRecord> top;
+        std::optional<runtime::CameraRecord> camera;        // when it set one
+        std::optional<runtime::ColourFunction> background;  // when it set one
     };
     // After both sides of a split on `c` (read at `at`): their variables,
     // values and the block's CSG members made piecewise (time_branch.hpp).
     void merge_time_sides(const p::position& at, const TimeFunction& c,
                           std::optional<TimeSide> (&sides)[2],
-                          const std::optional<runtime::ObjectRecord>& top_before);
+                          const std::optional<runtime::ObjectRecord>& top_before,
+                          const runtime::CameraRecord& camera_before,
+                          const runtime::ColourFunction& background_before);
     std::vector<Value> stack_;
     std::vector<std::size_t> frames_;
     std::vector<std::string> names_;
@@ -570,6 +578,9 @@ void Interpreter::split_time(ParseInput& in, const p::position& at, const TimeFu
     // stack (an #if inside a macro that returns a value), and the object
     // being built around it (CSG members it adds).
     const std::size_t stack_base = stack_.size();
+    const runtime::CameraRecord camera_before = scene.camera;
+    const runtime::ColourFunction background_before = scene.background;
+    const std::size_t camera_count = camera_sets, background_count = background_sets;
     const std::size_t block_count = blocks.size();
     std::optional<runtime::ObjectRecord> top_before;
     if (!blocks.empty()) {
@@ -591,6 +602,11 @@ void Interpreter::split_time(ParseInput& in, const p::position& at, const TimeFu
             set_variable_at(key, before);
         }
         restoring_ = false;
+        if (camera_sets != camera_count) side.camera = std::exchange(scene.camera, camera_before);
+        if (background_sets != background_count)
+            side.background = std::exchange(scene.background, background_before);
+        camera_sets = camera_count;
+        background_sets = background_count;
         if (stack_.size() >= stack_base) {
             side.pushed.assign(std::make_move_iterator(stack_.begin() + static_cast<std::ptrdiff_t>(stack_base)),
                                std::make_move_iterator(stack_.end()));
@@ -630,7 +646,7 @@ void Interpreter::split_time(ParseInput& in, const p::position& at, const TimeFu
     }
     domain = outer;
     in.iterator() = end;
-    merge_time_sides(at, c, sides, top_before);
+    merge_time_sides(at, c, sides, top_before, camera_before, background_before);
 }
 
 template <typename Item, template <typename...> class Action,

@@ -39,6 +39,7 @@ constexpr double kPi = 3.14159265358979323846;
 }  // namespace
 
 bool CameraRecord::depends_on_time() const {
+    if (!pieces.empty()) return true;
     for (const CameraItem& item : items) {
         switch (item.kind) {
             case CameraItem::Kind::Angle:
@@ -56,6 +57,12 @@ bool CameraRecord::depends_on_time() const {
 }
 
 CameraFrame CameraRecord::evaluate(double t) const {
+    for (const Piece& piece : pieces)
+        if (piece.when.contains(t)) return evaluate_items(piece.items, t);
+    return evaluate_items(items, t);
+}
+
+CameraFrame CameraRecord::evaluate_items(const std::vector<CameraItem>& items, double t) {
     CameraFrame cam;  // POV-Ray's defaults
     bool has_look_at = false, has_angle = false;
     glm::dvec3 look_at{0, 0, 1};

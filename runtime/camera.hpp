@@ -8,6 +8,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "runtime/lifetime.hpp"
 #include "runtime/transform.hpp"
 #include "runtime/vector_function.hpp"
 
@@ -34,11 +35,22 @@ struct CameraFrame {
 
 struct CameraRecord {
     std::vector<CameraItem> items;
+    // A camera chosen by branches on clock (language/time_branch.hpp): the
+    // items of each piece of time, the first piece that holds t winning;
+    // `items` where none does.
+    struct Piece {
+        Lifetime when;
+        std::vector<CameraItem> items;
+    };
+    std::vector<Piece> pieces;
 
     bool depends_on_time() const;
     // The camera at time t. POV-Ray does not change `right` to match the
     // image's aspect ratio, and neither does hexant.
     CameraFrame evaluate(double t) const;
+
+private:
+    static CameraFrame evaluate_items(const std::vector<CameraItem>& items, double t);
 };
 
 }  // namespace hexant::runtime

@@ -183,9 +183,11 @@ TEST_CASE("what cannot yet be piecewise in time is an error at the branch", "[la
 )", animation());
     CHECK(e.formatted().find("test.pov:2:5") != std::string::npos);
     CHECK(e.formatted().find("piecewise") != std::string::npos);
-    // A camera chosen by a clock-dependent branch (issue 18 still to do).
-    const auto camera = error_of("#if (clock > 0.5) camera { location -5*z } #end\n", animation());
-    CHECK(camera.formatted().find("camera") != std::string::npos);
+    // A texture set differently on the two sides.
+    const auto texture = error_of(
+        "#if (clock > 0.5) #declare T = pigment { rgb 1 }; #else #declare T = pigment { rgb 0 }; #end\n",
+        animation());
+    CHECK(texture.formatted().find("test.pov:1:5") != std::string::npos);
     // A condition that flickers without end stops at the limit, at its place.
     const auto flicker = error_of("#if (sin(1 / (clock - 0.5)) > 0) sphere { 0, 1 } #end\n", animation());
     CHECK(flicker.formatted().find("test.pov:1:5") != std::string::npos);
@@ -313,4 +315,24 @@ TEST_CASE("vnormalize of a zero vector gives <0, 0, 0> with a warning, known or 
     CHECK(moving.warnings[0].find("at clock 0.5") != std::string::npos);
     // Never zero: no warning.
     CHECK(read("sphere { vnormalize(<clock + 1, 0, 0>), 1 }\n").warnings.empty());
+}
+
+TEST_CASE("a camera and a background chosen by branches on clock", "[language][time]") {
+    const auto scene = read(R"(
+camera { location <0, 0, -9> look_at 0 }
+#if (clock < 0.5)
+  camera { location <0, 0, -5> look_at 0 }
+#elseif (clock < 0.75)
+  camera { location <0, 0, 5> look_at 0 }
+#end
+#if (clock > 0.5) background { rgb 1 } #end
+)");
+    CHECK(scene.camera.depends_on_time());
+    CHECK(scene.camera.evaluate(0.25).location == glm::dvec3(0, 0, -5));
+    CHECK(scene.camera.evaluate(before(0.5)).location == glm::dvec3(0, 0, -5));
+    CHECK(scene.camera.evaluate(0.5).location == glm::dvec3(0, 0, 5));
+    CHECK(scene.camera.evaluate(0.75).location == glm::dvec3(0, 0, -9));  // the first camera again
+    CHECK(scene.background(0.25)[0] == 0.0);
+    CHECK(scene.background(0.5)[0] == 0.0);
+    CHECK(scene.background(0.75)[0] == 1.0);
 }
