@@ -120,3 +120,25 @@ TEST_CASE("declarations a scene never uses are never built", "[tracer][pay]") {
     const tr::Counters c = counters_of(scene, tr::Mode::Spacetime);
     CHECK(c.objects == 2);
 }
+
+TEST_CASE("branches that do not split time cost nothing", "[tracer][pay]") {
+    // A branch on a constant, and one on clock that holds all the time: the
+    // same objects, none with a lifetime, so the same hierarchy and tests
+    // as the scene written without them (a split's pieces cost only where
+    // an object lives part of the time: tests/tracer/lifetime_render_test).
+    const tr::Counters plain = counters_of(parse(kCamera + kStaticObjects), tr::Mode::Spacetime);
+    const tr::Counters constant =
+        counters_of(parse(kCamera + "#if (1 > 0)\n" + kStaticObjects + "#end\n"), tr::Mode::Spacetime);
+    const tr::Counters always =
+        counters_of(parse(kCamera + "#if (clock > -1)\n" + kStaticObjects + "#end\n"), tr::Mode::Spacetime);
+    for (const tr::Counters* c : {&constant, &always}) {
+        CHECK(c->time_splits == plain.time_splits);
+        CHECK(c->cells == plain.cells);
+        CHECK(c->node_tests == plain.node_tests);
+        CHECK(c->bound_tests == plain.bound_tests);
+        CHECK(c->object_tests == plain.object_tests);
+    }
+    // A branch that does split: its objects live part of the time.
+    const auto split = parse(kCamera + "#if (clock > 0.5)\n" + kStaticObjects + "#end\n");
+    for (const auto& object : split.objects) CHECK_FALSE(object->lifetime.is_always());
+}
