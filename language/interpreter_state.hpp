@@ -306,6 +306,12 @@ private:
               template <typename...> class Control, typename ParseInput, typename Iterator>
     void while_from(ParseInput& in, const p::position& opened, const Iterator& start,
                     std::size_t count);
+    // A #for's turns from `v` on (`count` done), its body at `start`.
+    template <typename Item, template <typename...> class Action,
+              template <typename...> class Control, typename ParseInput, typename Iterator>
+    void for_from(ParseInput& in, const p::position& opened, const Iterator& start,
+                  const std::string& variable, double v, double step, const TimeFunction& to,
+                  std::size_t count);
     // A #switch on `value` from the divider `d` on.
     template <typename Item, template <typename...> class Action,
               template <typename...> class Control, typename ParseInput>
@@ -721,37 +727,63 @@ bool Interpreter::run_for(ParseInput& in) {
     read<grammar::for_header, Action, Control>(in);
     std::vector<Value> bounds = close_frame();
     const std::string variable = pop_name();
-    double from, to, step = 1.0;
+    double from, step = 1.0;
+    TimeFunction to;
     try {
         from = to_constant(bounds[0], "the start of #for");
-        to = to_constant(bounds[1], "the end of #for");
+        to = to_float(bounds[1], "the end of #for");
         if (bounds.size() > 2) step = to_constant(bounds[2], "the step of #for");
     } catch (const ValueError& e) {
         fail(opened, e.what());
     }
     if (step == 0.0) fail(opened, "#for with a step of 0 would never end");
     const auto start = in.iterator();
-    std::size_t count = 0;
-    double v = from;
-    for (; step > 0 ? v <= to + runtime::kPovEpsilon : v >= to - runtime::kPovEpsilon; v += step) {
-        if (++count > options.limits.loop_iterations)
-            fail(opened, "#for loop ran more than " +
-                             std::to_string(options.limits.loop_iterations) +
-                             " times; stopping (--max-loop-iterations N raises the limit)");
-        count_step(opened);
-        declare(variable, Value{TimeFunction(v)}, true);
-        in.iterator() = start;
-        const Divider d = run_body<Item, Action, Control>(in);
-        if (d != Divider::End) unclosed(opened, "#for", d, in);
-        count_text(static_cast<std::size_t>(in.current() - start.data), opened);
-    }
-    // As in POV-Ray, the variable is left one step past the end.
-    declare(variable, Value{TimeFunction(v)}, true);
-    if (count == 0) {
-        const Divider d = skip_body<Control>(in);
-        if (d != Divider::End) unclosed(opened, "#for", d, in);
-    }
+    for_from<Item, Action, Control>(in, opened, start, variable, from, step, to, 0);
     return true;
+}
+
+template <typename Item, template <typename...> class Action,
+          template <typename...> class Control, typename ParseInput, typename Iterator>
+void Interpreter::for_from(ParseInput& in, const p::position& opened, const Iterator& start,
+                           const std::string& variable, double v, double step, const TimeFunction& to,
+                           std::size_t count) {
+    for (;; v += step) {
+        // Goes on while v <= to (or >= for a negative step), within
+        // POV-Ray's epsilon; an end on clock splits time turn by turn, as
+        // a #while on clock does.
+        const TimeFunction go =
+            step > 0 ? TimeFunction::apply(runtime::TimeOp::LessEqual, v, to + runtime::kPovEpsilon)
+                     : TimeFunction::apply(runtime::TimeOp::GreaterEqual, v, to - runtime::kPovEpsilon);
+        const auto turn = [&](bool on) {
+            // As in POV-Ray, the variable is left one step past the end.
+            declare(variable, Value{TimeFunction(v)}, true);
+            if (!on) {
+                if (count == 0) {
+                    const Divider d = skip_body<Control>(in);
+                    if (d != Divider::End) unclosed(opened, "#for", d, in);
+                }
+                return false;
+            }
+            if (count + 1 > options.limits.loop_iterations)
+                fail(opened, "#for loop ran more than " +
+                                 std::to_string(options.limits.loop_iterations) +
+                                 " times; stopping (--max-loop-iterations N raises the limit)");
+            count_step(opened);
+            in.iterator() = start;
+            const Divider d = run_body<Item, Action, Control>(in);
+            if (d != Divider::End) unclosed(opened, "#for", d, in);
+            count_text(static_cast<std::size_t>(in.current() - start.data), opened);
+            return true;
+        };
+        if (!go.is_constant()) {
+            split_time(in, opened, go, [&](bool on) {
+                if (turn(on)) for_from<Item, Action, Control>(in, opened, start, variable, v + step, step, to, count + 1);
+            });
+            return;
+        }
+        if (!turn(runtime::pov_true(go.constant()))) return;
+        ++count;
+    }
 }
 
 template <typename Item, template <typename...> class Action,

@@ -336,3 +336,32 @@ camera { location <0, 0, -9> look_at 0 }
     CHECK(scene.background(0.5)[0] == 0.0);
     CHECK(scene.background(0.75)[0] == 1.0);
 }
+
+TEST_CASE("#for to a clock-dependent end, in a macro, with an #if on clock inside", "[language][time]") {
+    const auto scene = read(R"(
+#macro Row(N)
+  #for (I, 1, N)
+    #if (clock < 0.75)
+      sphere { <I, 0, 0>, 0.3 }
+    #end
+  #end
+#end
+Row(clock * 4)
+)");
+    // Sphere I lives while I <= 4 clock (within POV-Ray's epsilon, 1e-10)
+    // and clock < 0.75: from I/4 to 0.75; spheres 1 and 2, and 3 for the
+    // 2.5e-11 before 0.75 where 3 <= 4 clock + 1e-10.
+    REQUIRE(scene.objects.size() == 3);
+    const rt::Lifetime& third = scene.objects[2]->lifetime;
+    CHECK(third.contains(before(0.75)));
+    CHECK(third.contains(0.75 - 2e-11));
+    CHECK_FALSE(third.contains(0.75 - 3e-11));
+    for (int i = 1; i <= 2; ++i) {
+        INFO("sphere " << i);
+        const rt::Lifetime& l = scene.objects[i - 1]->lifetime;
+        CHECK(l.contains(i / 4.0));
+        CHECK_FALSE(l.contains(i / 4.0 - 1e-9));
+        CHECK(l.contains(before(0.75)));
+        CHECK_FALSE(l.contains(0.75));
+    }
+}
