@@ -333,13 +333,58 @@ inline std::size_t element_index(const Array& array, const std::vector<double>& 
     return flat;
 }
 
+// A[index] where the index depends on clock: the element of each piece of
+// time where floor(index) is one number (runtime::split_by_value), made
+// piecewise as a branch's sides are (time_branch.hpp: floats and vectors
+// as `floor(index) = k ? A[k] : ...`, objects each living on its pieces).
+inline Value element_by_clock(const Array& array, const TimeFunction& index, Interpreter& st) {
+    if (array.dimensions.size() != 1)
+        throw ValueError("an index that depends on clock into an array of " +
+                         std::to_string(array.dimensions.size()) +
+                         " dimensions; hexant picks elements by clock from one-dimensional arrays only");
+    const TimeFunction step = TimeFunction::apply(TimeOp::Floor, index);
+    std::vector<runtime::ValuePiece> pieces;
+    try {
+        pieces = runtime::split_by_value(step, st.domain.within(st.animation_time()),
+                                         st.options.limits.time_pieces);
+    } catch (const runtime::LimitError& e) {
+        throw ValueError(std::string("an array index: ") + e.what());
+    }
+    std::map<double, std::vector<runtime::Interval>> by_value;
+    for (const auto& piece : pieces) by_value[piece.value].push_back(piece.time);
+    std::optional<Value> result;
+    std::vector<runtime::Interval> result_times;
+    for (const auto& [k, times] : by_value) {
+        const std::size_t i = element_index(array, {k});
+        if (!array.elements[i])
+            throw ValueError("array element " + std::to_string(i) + " is used (by clock) before it is set");
+        const Value& element = **array.elements[i];
+        const runtime::Lifetime when = runtime::Lifetime::of(times);
+        if (!result) {
+            result = by_value.size() == 1 ? element : during(element, when);
+        } else {
+            result = merge_sides("the element picked by clock",
+                                 TimeFunction::apply(TimeOp::Equal, step, k), element, when, result,
+                                 runtime::Lifetime::of(result_times));
+        }
+        result_times.insert(result_times.end(), times.begin(), times.end());
+    }
+    if (!result) throw ValueError("an array index that depends on clock, over no time");
+    return *result;
+}
+
 HEXANT_ACTION(index_suffix) {
     HEXANT_APPLY {
         (void)in;
-        const double index = to_constant(st.pop(), "an array index");
+        const TimeFunction index_f = to_float(st.pop(), "an array index");
         Value a = st.pop();
         if (!a.is<std::shared_ptr<Array>>()) throw ValueError("'[ ]' needs an array, not a " + type_name(a));
         auto array = a.as<std::shared_ptr<Array>>();
+        if (index_f.depends_on_time()) {
+            st.push(element_by_clock(*array, index_f, st));
+            return;
+        }
+        const double index = index_f.constant();
         if (array->dimensions.size() > 1) {
             // A[i] of a many-dimensional array: the sub-array.
             const int rows = array->dimensions[0];

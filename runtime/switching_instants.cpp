@@ -1,5 +1,6 @@
 #include "runtime/switching_instants.hpp"
 
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -10,10 +11,13 @@ namespace hexant::runtime {
 
 namespace {
 
+// Splits time into pieces where a label is constant: the condition's truth
+// (truth mode), or the function's value (a step function).
 class Splitter {
 public:
-    Splitter(const TimeFunction& condition, std::size_t max_pieces)
-        : tape_(TimeTape::compile({condition})),
+    Splitter(const TimeFunction& condition, std::size_t max_pieces, bool truth)
+        : truth_(truth),
+          tape_(TimeTape::compile({condition})),
           intervals_(tape_.size()),
           points_(tape_.size()),
           max_pieces_(max_pieces),
@@ -24,15 +28,15 @@ public:
 
     void split(Interval t) {
         if (++evaluations_ > max_evaluations_)
-            throw LimitError("a condition that depends on clock could not be split into pieces of "
-                             "constant truth within " + std::to_string(max_evaluations_) +
+            throw LimitError(std::string(truth_ ? "a condition" : "a value") +
+                             " that depends on clock could not be split into pieces of "
+                             "constant value within " + std::to_string(max_evaluations_) +
                              " evaluations (does it change without end, or at every instant?)");
-        const int d = decide(t);
-        if (d >= 0) return push(t, d == 1);
+        if (const auto label = decide(t)) return push(t, *label);
         using interval_detail::next_up;
         // Three doubles or fewer: each decided by itself.
         if (next_up(next_up(t.lo)) >= t.hi) {
-            for (double v = t.lo; v <= t.hi; v = next_up(v)) push(Interval(v, v), truth_at(v));
+            for (double v = t.lo; v <= t.hi; v = next_up(v)) push(Interval(v, v), label_at(v));
             return;
         }
         const double m = t.mid();
@@ -43,44 +47,52 @@ public:
     // Ends the domain's interval: the next one does not continue this one.
     void break_run() { open_ = false; }
 
-    TruthPieces result() {
+    TruthPieces truth_result() {
         TruthPieces r;
         std::vector<Interval> yes, no;
-        for (const auto& [piece, truth] : pieces_) (truth ? yes : no).push_back(piece);
+        for (const auto& [piece, truth] : pieces_) (truth != 0.0 ? yes : no).push_back(piece);
         r.when_true = Lifetime::of(std::move(yes));
         r.when_false = Lifetime::of(std::move(no));
         r.instants = std::move(instants_);
         return r;
     }
+    std::vector<ValuePiece> value_result() {
+        std::vector<ValuePiece> r;
+        for (const auto& [piece, value] : pieces_) r.push_back({piece, value});
+        return r;
+    }
 
 private:
-    // 1: true over all of t, 0: false over all of t, -1: undecided.
-    int decide(const Interval& t) {
+    // The label over all of t (truth: 1 or 0), or none: undecided.
+    std::optional<double> decide(const Interval& t) {
         Interval v;
         tape_.evaluate(t, &v, intervals_.data());
-        if (v.lo > kPovEpsilon || v.hi < -kPovEpsilon) return 1;
-        if (-kPovEpsilon <= v.lo && v.hi <= kPovEpsilon) return 0;
-        return -1;
+        if (!truth_) return v.is_point() ? std::optional<double>(v.lo) : std::nullopt;
+        if (v.lo > kPovEpsilon || v.hi < -kPovEpsilon) return 1.0;
+        if (-kPovEpsilon <= v.lo && v.hi <= kPovEpsilon) return 0.0;
+        return std::nullopt;
     }
-    bool truth_at(double t) {
+    double label_at(double t) {
         double v;
         tape_.evaluate(t, &v, points_.data());
-        return pov_true(v);
+        return truth_ ? (pov_true(v) ? 1.0 : 0.0) : v;
     }
-    void push(const Interval& t, bool truth) {
-        if (open_ && !pieces_.empty() && pieces_.back().second == truth) {
+    void push(const Interval& t, double label) {
+        if (open_ && !pieces_.empty() && pieces_.back().second == label) {
             pieces_.back().first.hi = t.hi;
             return;
         }
         if (open_ && !pieces_.empty()) instants_.push_back(t.lo);
         open_ = true;
-        pieces_.push_back({t, truth});
+        pieces_.push_back({t, label});
         if (instants_.size() > max_pieces_)
-            throw LimitError("a condition that depends on clock changes more than " +
+            throw LimitError(std::string(truth_ ? "a condition" : "a value") +
+                             " that depends on clock changes more than " +
                              std::to_string(max_pieces_) +
                              " times over the animation (--max-time-pieces N raises the limit)");
     }
 
+    bool truth_;
     TimeTape tape_;
     std::vector<Interval> intervals_;
     std::vector<double> points_;
@@ -88,7 +100,7 @@ private:
     std::size_t max_evaluations_;
     std::size_t evaluations_ = 0;
     bool open_ = false;
-    std::vector<std::pair<Interval, bool>> pieces_;
+    std::vector<std::pair<Interval, double>> pieces_;
     std::vector<double> instants_;
 };
 
@@ -102,13 +114,30 @@ TruthPieces split_by_truth(const TimeFunction& condition, const std::vector<Inte
         (pov_true(condition.constant()) ? r.when_false : r.when_true) = Lifetime::never();
         return r;
     }
-    Splitter splitter(condition, max_pieces);
+    Splitter splitter(condition, max_pieces, true);
     for (const Interval& t : domain) {
         if (t.is_empty()) continue;
         splitter.split(t);
         splitter.break_run();
     }
-    return splitter.result();
+    return splitter.truth_result();
+}
+
+std::vector<ValuePiece> split_by_value(const TimeFunction& f, const std::vector<Interval>& domain,
+                                       std::size_t max_pieces) {
+    if (f.is_constant()) {
+        std::vector<ValuePiece> r;
+        for (const Interval& t : domain)
+            if (!t.is_empty()) r.push_back({t, f.constant()});
+        return r;
+    }
+    Splitter splitter(f, max_pieces, false);
+    for (const Interval& t : domain) {
+        if (t.is_empty()) continue;
+        splitter.split(t);
+        splitter.break_run();
+    }
+    return splitter.value_result();
 }
 
 }  // namespace hexant::runtime

@@ -41,4 +41,15 @@ struct TruthPieces {
 TruthPieces split_by_truth(const TimeFunction& condition, const std::vector<Interval>& domain,
                            std::size_t max_pieces);
 
+// The pieces of `domain` over which a step function of time (the floor of
+// an array index, frame_number) is constant, in order, each with its
+// value; split as split_by_truth splits (where the interval evaluation is
+// one number, the piece is decided). Throws LimitError likewise.
+struct ValuePiece {
+    Interval time;
+    double value;
+};
+std::vector<ValuePiece> split_by_value(const TimeFunction& f, const std::vector<Interval>& domain,
+                                       std::size_t max_pieces);
+
 }  // namespace hexant::runtime

@@ -365,3 +365,33 @@ Row(clock * 4)
         CHECK_FALSE(l.contains(0.75));
     }
 }
+
+TEST_CASE("an array read at an index on clock gives each piece's element", "[language][time]") {
+    const auto scene = read(R"(
+#declare Sizes = array[4] { 0.1, 0.2, 0.3, 0.4 }
+sphere { 0, Sizes[min(clock * 4, 3)] }
+#declare Shapes = array[2] { sphere { 0, 1 }, box { 0, 1 } }
+object { Shapes[min(clock * 2, 1)] }
+)");
+    REQUIRE(scene.objects.size() == 2);
+    CHECK(sphere(scene, 0).radius(0.1) == 0.1);
+    CHECK(sphere(scene, 0).radius(before(0.25)) == 0.1);
+    CHECK(sphere(scene, 0).radius(0.25) == 0.2);
+    CHECK(sphere(scene, 0).radius(0.6) == 0.3);
+    CHECK(sphere(scene, 0).radius(1.1) == 0.4);
+    // The objects: each living on its pieces.
+    const auto& both = std::get<rt::Csg>(scene.objects[1]->shape).children;
+    REQUIRE(both.size() == 2);
+    const auto alive = [&](double t) {
+        std::string which;
+        for (const auto& o : both)
+            if (o->lifetime.contains(t)) which += rt::shape_name(o->shape);
+        return which;
+    };
+    CHECK(alive(0.2) == "sphere");
+    CHECK(alive(before(0.5)) == "sphere");
+    CHECK(alive(0.5) == "box");
+    // Out of range at some clock: an error at its place.
+    const auto e = error_of("#declare A = array[2] { 1, 2 }\nsphere { 0, A[clock * 4] }\n", animation());
+    CHECK(e.formatted().find("test.pov:2:") != std::string::npos);
+}
