@@ -62,8 +62,7 @@ void summarize_scene(const runtime::SceneDescription& scene, std::ostream& out) 
     }
     for (const auto& split : scene.time_splits) {
         out << "branch at " << split.where.to_string() << " on clock: ";
-        if (split.instants.empty()) out << "the same all the time\n";
-        else {
+        {
             out << "switches at";
             // (Every digit: an instant sits between two neighbouring doubles.)
             char buffer[32];

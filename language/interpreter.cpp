@@ -340,6 +340,20 @@ void Interpreter::merge_time_sides(const p::position& at, const TimeFunction& c,
     }
 }
 
+runtime::TruthPieces Interpreter::split_domain(const TimeFunction& c, const p::position& at) {
+    runtime::TruthPieces pieces;
+    try {
+        pieces = runtime::split_by_truth(c, domain.within(animation_time()), options.limits.time_pieces);
+    } catch (const runtime::LimitError& e) {
+        fail(at, e.what());
+    }
+    // (Reported where it does split: a #while on clock that holds from its
+    // second turn on would list every turn.)
+    if (!pieces.instants.empty())
+        scene.time_splits.push_back({{at.source, at.line, at.column}, pieces.instants});
+    return pieces;
+}
+
 void Interpreter::require_whole_time(const p::position& where, const char* what) const {
     if (domain.is_always()) return;
     fail(where, std::string(what) +

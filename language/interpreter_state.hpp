@@ -128,7 +128,9 @@ public:
     // The animation's time, from the first frame's shutter opening to the
     // last one's closing.
     runtime::Interval animation_time() const {
-        return {scene.animation.time_begin(), scene.animation.time_end()};
+        // (A clock that runs backwards, --clock 1:0, spans the same time.)
+        const double a = scene.animation.time_begin(), b = scene.animation.time_end();
+        return {std::min(a, b), std::max(a, b)};
     }
     // How many times the camera and the background were set: a side of a
     // time split that sets one makes it piecewise.
@@ -326,7 +328,18 @@ private:
     // restricted to that side; then merges the variables the sides set
     // (time_branch.hpp). Errors name `at`.
     template <typename ParseInput, typename Read>
-    void split_time(ParseInput& in, const p::position& at, const TimeFunction& c, Read read);
+    void split_time(ParseInput& in, const p::position& at, const TimeFunction& c,
+                    const runtime::TruthPieces& pieces, Read read);
+    // The domain split by the truth of `c` (recorded for `hexant check`);
+    // errors name `at`.
+    runtime::TruthPieces split_domain(const TimeFunction& c, const p::position& at);
+    // The truth of `c` when it is the same over the whole domain (no split
+    // needed: nothing nests), else none.
+    static std::optional<bool> whole_truth(const runtime::TruthPieces& pieces) {
+        if (pieces.when_false.is_never()) return true;
+        if (pieces.when_true.is_never()) return false;
+        return std::nullopt;
+    }
     template <typename Item, template <typename...> class Action,
               template <typename...> class Control, typename ParseInput>
     Divider run_body(ParseInput& in) {
@@ -521,7 +534,9 @@ template <typename Item, template <typename...> class Action,
 void Interpreter::if_chain(ParseInput& in, const p::position& opened, const p::position& at,
                            const TimeFunction& c) {
     if (c.is_constant()) return if_rest<Item, Action, Control>(in, opened, runtime::pov_true(c.constant()));
-    split_time(in, at, c, [&](bool taken) { if_rest<Item, Action, Control>(in, opened, taken); });
+    const runtime::TruthPieces pieces = split_domain(c, at);
+    if (const auto whole = whole_truth(pieces)) return if_rest<Item, Action, Control>(in, opened, *whole);
+    split_time(in, at, c, pieces, [&](bool taken) { if_rest<Item, Action, Control>(in, opened, taken); });
 }
 
 template <typename Item, template <typename...> class Action,
@@ -564,20 +579,14 @@ void Interpreter::if_rest(ParseInput& in, const p::position& opened, bool taken)
 }
 
 template <typename ParseInput, typename Read>
-void Interpreter::split_time(ParseInput& in, const p::position& at, const TimeFunction& c, Read read) {
+void Interpreter::split_time(ParseInput& in, const p::position& at, const TimeFunction& c,
+                             const runtime::TruthPieces& pieces, Read read) {
     // Each split re-reads its text once a side and nests the next inside
     // it: bounded like macro calls (a chain of #elseif each on clock).
     if (branch_logs_.size() >= static_cast<std::size_t>(options.limits.macro_depth))
         fail(at, "clock-dependent branches nested more than " +
                      std::to_string(options.limits.macro_depth) +
                      " deep (--max-macro-depth N raises the limit)");
-    runtime::TruthPieces pieces;
-    try {
-        pieces = runtime::split_by_truth(c, domain.within(animation_time()), options.limits.time_pieces);
-    } catch (const runtime::LimitError& e) {
-        fail(at, e.what());
-    }
-    scene.time_splits.push_back({{at.source, at.line, at.column}, pieces.instants});
     const auto start = in.iterator();
     const runtime::Lifetime outer = domain;
     // What a side may change besides variables: values it leaves on the
@@ -708,13 +717,21 @@ void Interpreter::while_from(ParseInput& in, const p::position& opened, const It
             if (go) count_text(static_cast<std::size_t>(in.current() - start.data), opened);
             return go;
         };
-        if (!c.is_constant()) {
-            split_time(in, at, c, [&](bool go) {
-                if (turn(go)) while_from<Item, Action, Control>(in, opened, start, count + 1);
-            });
-            return;
+        bool go;
+        if (c.is_constant()) {
+            go = runtime::pov_true(c.constant());
+        } else {
+            const runtime::TruthPieces pieces = split_domain(c, at);
+            if (const auto whole = whole_truth(pieces)) {
+                go = *whole;  // the same all the domain's time: a plain turn
+            } else {
+                split_time(in, at, c, pieces, [&](bool on) {
+                    if (turn(on)) while_from<Item, Action, Control>(in, opened, start, count + 1);
+                });
+                return;
+            }
         }
-        if (!turn(runtime::pov_true(c.constant()))) return;
+        if (!turn(go)) return;
     }
 }
 
@@ -775,13 +792,23 @@ void Interpreter::for_from(ParseInput& in, const p::position& opened, const Iter
             count_text(static_cast<std::size_t>(in.current() - start.data), opened);
             return true;
         };
-        if (!go.is_constant()) {
-            split_time(in, opened, go, [&](bool on) {
-                if (turn(on)) for_from<Item, Action, Control>(in, opened, start, variable, v + step, step, to, count + 1);
-            });
-            return;
+        bool on;
+        if (go.is_constant()) {
+            on = runtime::pov_true(go.constant());
+        } else {
+            const runtime::TruthPieces pieces = split_domain(go, opened);
+            if (const auto whole = whole_truth(pieces)) {
+                on = *whole;
+            } else {
+                split_time(in, opened, go, pieces, [&](bool more) {
+                    if (turn(more))
+                        for_from<Item, Action, Control>(in, opened, start, variable, v + step, step, to,
+                                                        count + 1);
+                });
+                return;
+            }
         }
-        if (!turn(runtime::pov_true(go.constant()))) return;
+        if (!turn(on)) return;
         ++count;
     }
 }
@@ -826,15 +853,19 @@ void Interpreter::switch_from(ParseInput& in, const p::position& opened, const T
                 }
                 // A clause that matches part of the time (once none before
                 // it runs): the rest of the #switch once for each side.
-                if (!executing && !hit.is_constant()) {
-                    split_time(in, at, hit, [&](bool taken) {
+                std::optional<bool> decided;
+                runtime::TruthPieces pieces;
+                if (hit.is_constant()) decided = runtime::pov_true(hit.constant());
+                else if (!executing) decided = whole_truth(pieces = split_domain(hit, at));
+                if (!executing && !decided) {
+                    split_time(in, at, hit, pieces, [&](bool taken) {
                         const Divider next =
                             taken ? run_body<Item, Action, Control>(in) : skip_body<Control>(in);
                         switch_from<Item, Action, Control>(in, opened, value, next, matched || taken, taken);
                     });
                     return;
                 }
-                executing = executing || runtime::pov_true(hit.constant());
+                executing = executing || decided.value_or(false);
                 if (executing) matched = true;
                 d = executing ? run_body<Item, Action, Control>(in) : skip_body<Control>(in);
                 break;

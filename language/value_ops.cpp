@@ -185,7 +185,8 @@ double to_constant(const Value& v, const std::string& what) {
     const TimeFunction f = to_float(v, what);
     if (!f.is_constant())
         throw ValueError(what + " depends on clock; it must be known while the scene is read "
-                                "(hexant splits no control flow by time yet)");
+                                "(hexant splits time on conditions, a #for's end and an index "
+                                "read, not yet on this)");
     return f.constant();
 }
 

@@ -52,6 +52,32 @@ IntelligentObjectPtr make_primitive(const Shape& shape, const Transform& to_worl
 }
 
 IntelligentObjectPtr build_object(const ObjectRecord& record, const Inherited& parent);
+IntelligentObjectPtr build(const ObjectRecord& record, const Inherited& parent);
+
+// A difference whose first member lives part of the time (made under a
+// branch on clock): POV-Ray takes the later members away from the first
+// member there is, so where the first written is absent the next present
+// one is the base. One difference per base, each living where its base is
+// the first present, side by side in a union (they never overlap in time).
+IntelligentObjectPtr build_difference_by_base(const Csg& csg, const Inherited& down, bool inverse) {
+    std::vector<IntelligentObjectPtr> parts;
+    Lifetime none_before = Lifetime::always();  // where every member so far is absent
+    for (std::size_t k = 0; k < csg.children.size(); ++k) {
+        const Lifetime& life = csg.children[k]->lifetime;
+        const Lifetime base = life.intersect(none_before);
+        if (!base.is_never()) {
+            std::vector<IntelligentObjectPtr> members;
+            for (std::size_t j = k; j < csg.children.size(); ++j) members.push_back(build(*csg.children[j], down));
+            auto part = std::make_unique<CsgObject>(Csg::Kind::Difference, std::move(members), inverse);
+            if (base.is_always()) parts.push_back(std::move(part));
+            else parts.push_back(std::make_unique<LifetimeObject>(std::move(part), base, false));
+        }
+        if (life.is_always()) break;
+        none_before = none_before.intersect(life.complement_within(Interval::entire()));
+        if (none_before.is_never()) break;
+    }
+    return std::make_unique<CsgObject>(Csg::Kind::Union, std::move(parts), false);
+}
 
 // The object, and where it lives only part of the time, wrapped in its
 // lifetime.
@@ -81,6 +107,9 @@ IntelligentObjectPtr build_object(const ObjectRecord& record, const Inherited& p
                                                 "inside one another)");
         const Inherited down{to_world, texture, interior, no_shadow, parent.csg_depth + 1,
                              Lifetime::always(), csg->kind == Csg::Kind::Intersection};
+        if (csg->kind == Csg::Kind::Difference && !csg->children.empty() &&
+            !csg->children.front()->lifetime.is_always())
+            return build_difference_by_base(*csg, down, record.inverse);
         std::vector<IntelligentObjectPtr> children;
         children.reserve(csg->children.size());
         for (const auto& child : csg->children) children.push_back(build(*child, down));

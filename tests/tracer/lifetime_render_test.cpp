@@ -117,3 +117,31 @@ intersection {
     CHECK(without.at(cx, below).x == 1.0f);
     CHECK(with_box.at(cx, with_box.height / 4).x == 1.0f);
 }
+
+TEST_CASE("a difference whose first member is absent takes the rest from the next one",
+          "[tracer][lifetime]") {
+    // POV-Ray's difference { sphere } is the sphere: while the box does not
+    // exist (clock <= 0.5) the sphere is the base; after, the box minus the
+    // sphere. Frames 1 and 2 at shutter 0: clock 0 and 1.
+    const std::string text = R"(
+camera { location <0, 0, -5> look_at 0 }
+difference {
+  #if (clock > 0.5) box { <-2, -2, -0.5>, <2, 2, 0.5> } #end
+  sphere { <0, 0, -0.5>, 0.7 }
+  pigment { rgb 1 } finish { ambient 1 diffuse 0 }
+}
+)";
+    auto scene = parse(text);
+    scene.animation.shutter = 0.0;
+    tr::RenderSettings settings;
+    settings.samples_per_pixel = 1;
+    tr::Renderer renderer(scene, settings);
+    const tr::Image sphere_only = renderer.render_frame(1);
+    const tr::Image box_less_sphere = renderer.render_frame(2);
+    const int cx = sphere_only.width / 2, cy = sphere_only.height / 2;
+    CHECK(sphere_only.at(cx, cy).x == 1.0f);         // the sphere
+    CHECK(sphere_only.at(cx / 2, cy).x == 0.0f);     // nothing else
+    CHECK(box_less_sphere.at(cx / 2, cy).x == 1.0f); // the box
+    CHECK(box_less_sphere.at(cx, cy).x == 1.0f);     // the hole's floor, inside the box
+    CHECK(render(scene, tr::Mode::Brute, 2).rgb == render(scene, tr::Mode::Spacetime, 2).rgb);
+}
