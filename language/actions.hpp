@@ -196,7 +196,9 @@ HEXANT_ACTION(function_call) {
 HEXANT_ACTION(defined_call) {
     HEXANT_APPLY {
         (void)in;
-        st.push(Value{TimeFunction(st.lookup(st.pop_name()) ? 1.0 : 0.0)});
+        // (Declared part of the time: 1 on those pieces, language/time_branch.hpp.)
+        const runtime::Lifetime* when = st.declared_when(st.pop_name());
+        st.push(Value{when ? indicator(*when) : TimeFunction(0.0)});
     }
 };
 
@@ -296,6 +298,7 @@ HEXANT_ACTION(reference) {
         const std::string name = word(in);
         const Value* v = st.lookup(name);
         if (v == nullptr) throw ValueError("undeclared identifier '" + name + "'");
+        st.check_declared(name);
         if (v->is<Unevaluated>()) {
             const auto& u = v->as<Unevaluated>();
             throw UnsupportedError("'" + name + "' is a " + u.what + " (declared at " + u.where.source + ":" +

@@ -195,6 +195,30 @@ const Value* Interpreter::lookup(const std::string& name) const {
     return nullptr;
 }
 
+const runtime::Lifetime* Interpreter::declared_when(const std::string& name) const {
+    for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it) {
+        auto found = it->find(name);
+        if (found != it->end()) return &found->second.defined;
+    }
+    return nullptr;
+}
+
+void Interpreter::check_declared(const std::string& name) const {
+    const runtime::Lifetime* when = declared_when(name);
+    if (when == nullptr || when->is_always()) return;
+    for (const runtime::Interval& piece : domain.within(animation_time()))
+        if (!when->holds_all(piece)) {
+            // The first instant of the piece it does not hold.
+            const runtime::Lifetime gaps = when->complement_within(piece);
+            const double t = gaps.pieces().empty() ? piece.lo : gaps.pieces().front().lo;
+            std::ostringstream message;
+            message.precision(17);
+            message << "'" << name << "' is not declared at clock " << t
+                    << ": it is declared only on some pieces of time (under a branch on clock)";
+            throw ValueError(message.str());
+        }
+}
+
 void Interpreter::log_change(const Scope& scope, const std::string& name) {
     if (branch_logs_.empty() || restoring_) return;
     BranchLog& log = branch_logs_.back();
@@ -205,18 +229,19 @@ void Interpreter::log_change(const Scope& scope, const std::string& name) {
     log.before.emplace(key, variable_at(key));
 }
 
-std::optional<Value> Interpreter::variable_at(const VariableKey& key) const {
+std::optional<Interpreter::Held> Interpreter::variable_at(const VariableKey& key) const {
     if (key.first >= scopes_.size()) return std::nullopt;
     const Scope& scope = scopes_[key.first];
     const auto found = scope.find(key.second);
     if (found == scope.end()) return std::nullopt;
-    return found->second.value;
+    return Held{found->second.value, found->second.defined};
 }
 
-void Interpreter::set_variable_at(const VariableKey& key, const std::optional<Value>& value) {
+void Interpreter::set_variable_at(const VariableKey& key, const std::optional<Held>& held) {
     Scope& scope = scopes_[key.first];
-    if (value) {
-        set_variable(scope, key.second, *value);
+    if (held) {
+        set_variable(scope, key.second, held->value);
+        scope[key.second].defined = held->defined;
     } else {
         log_change(scope, key.second);
         scope.erase(key.second);
@@ -281,18 +306,32 @@ void Interpreter::merge_time_sides(const p::position& at, const TimeFunction& c,
                 for (const auto& entry : s->after) changed[entry.first] = true;
         for (const auto& [key, unused] : changed) {
             (void)unused;
-            const std::optional<Value> before = variable_at(key);
-            std::optional<Value> values[2];
+            const std::optional<Held> before = variable_at(key);
+            std::optional<Held> values[2];
             for (int side = 0; side < 2; ++side) {
                 if (!sides[side]) continue;
                 const auto found = sides[side]->after.find(key);
                 values[side] = found != sides[side]->after.end() ? found->second : before;
             }
-            std::optional<Value> merged;
+            std::optional<Held> merged;
             if (!sides[1]) merged = values[0];
             else if (!sides[0]) merged = values[1];
-            else
-                merged = merge_sides(key.second, c, values[0], sides[0]->when, values[1], sides[1]->when);
+            else if (values[0] || values[1]) {
+                // Declared where either side has it, on that side's pieces.
+                std::vector<runtime::Interval> declared;
+                std::optional<Value> value[2];
+                for (int side = 0; side < 2; ++side) {
+                    if (!values[side]) continue;
+                    value[side] = values[side]->value;
+                    for (const auto& piece :
+                         values[side]->defined.intersect(sides[side]->when).within(animation_time()))
+                        declared.push_back(piece);
+                }
+                runtime::Lifetime defined = runtime::Lifetime::of(std::move(declared));
+                if (defined.holds_all(animation_time())) defined = runtime::Lifetime::always();
+                merged = Held{*merge_sides(key.second, c, value[0], sides[0]->when, value[1], sides[1]->when),
+                              std::move(defined)};
+            }
             set_variable_at(key, merged);
         }
         // The values they left (a macro's result): one each, side by side.
@@ -374,6 +413,7 @@ void Interpreter::set_variable(Scope& scope, const std::string& name, Value valu
         throw;
     }
     variable.value = std::move(value);
+    variable.defined = runtime::Lifetime::always();  // declared now
 }
 
 void Interpreter::declare(const std::string& name, Value value, bool local) {

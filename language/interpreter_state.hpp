@@ -106,6 +106,13 @@ public:
 
     // ---- symbols
     const Value* lookup(const std::string& name) const;
+    // When `name` is declared (always, or some pieces of time: see
+    // Variable::defined); null when it is not declared at all.
+    const runtime::Lifetime* declared_when(const std::string& name) const;
+    // Throws ValueError when `name`, declared only part of the time, is used
+    // where the domain reaches beyond that time (POV-Ray stops there on an
+    // undeclared identifier).
+    void check_declared(const std::string& name) const;
     void declare(const std::string& name, Value value, bool local);
     void assign_element(const std::string& name, const std::vector<Value>& indices, Value value,
                         const p::position& where);
@@ -362,6 +369,9 @@ private:
     struct Variable {
         Value value;
         MemoryCharge charge;
+        // When it is declared: always, or (set or #undef-ed on one side of
+        // a branch on clock only) the pieces of time where it is.
+        runtime::Lifetime defined;
     };
     using Scope = std::unordered_map<std::string, Variable>;
     // Sets the scope's variable `name` to `value`, charging a string's
@@ -372,21 +382,25 @@ private:
     // older than the split that it changed, with what they held before
     // (none: undefined), so that the next side starts from the same state.
     using VariableKey = std::pair<std::size_t, std::string>;  // scope, name
+    struct Held {  // a variable's value and when it is declared
+        Value value;
+        runtime::Lifetime defined;
+    };
     struct BranchLog {
         std::size_t scopes = 0;  // scopes_.size() when the side began
-        std::map<VariableKey, std::optional<Value>> before;
+        std::map<VariableKey, std::optional<Held>> before;
     };
     std::vector<BranchLog> branch_logs_;
     bool restoring_ = false;  // writing back a log: not itself logged
     void log_change(const Scope& scope, const std::string& name);
-    std::optional<Value> variable_at(const VariableKey& key) const;
-    void set_variable_at(const VariableKey& key, const std::optional<Value>& value);
+    std::optional<Held> variable_at(const VariableKey& key) const;
+    void set_variable_at(const VariableKey& key, const std::optional<Held>& held);
     // One side of a time split, read: its pieces, the variables it changed
     // (as they were when it ended), the values it left on the stack and the
     // object block around it as it left it.
     struct TimeSide {
         runtime::Lifetime when;
-        std::map<VariableKey, std::optional<Value>> after;
+        std::map<VariableKey, std::optional<Held>> after;
         std::vector<Value> pushed;
         std::optional<runtime::ObjectRecord> top;
         std::optional<runtime::CameraRecord> camera;        // when it set one
@@ -675,13 +689,23 @@ bool Interpreter::run_ifdef(ParseInput& in) {
     read<grammar::lparen, Action, Control>(in);
     const std::string id = identifier(in, "a name in #ifdef ( )");
     read<grammar::condition_close, Action, Control>(in);
-    const bool taken = (lookup(id) != nullptr) != negate;
-    const auto at = in.position();
-    Divider d = taken ? run_body<Item, Action, Control>(in) : skip_body<Control>(in);
-    if (d == Divider::Else) {
-        d = taken ? skip_body<Control>(in) : run_body<Item, Action, Control>(in);
+    const auto rest = [&](bool taken) {
+        Divider d = taken ? run_body<Item, Action, Control>(in) : skip_body<Control>(in);
+        if (d == Divider::Else) d = taken ? skip_body<Control>(in) : run_body<Item, Action, Control>(in);
+        if (d != Divider::End) unclosed(opened, name, d, in);
+    };
+    const runtime::Lifetime* when = declared_when(id);
+    if (when == nullptr || when->is_always()) {
+        rest((when != nullptr) != negate);
+        return true;
     }
-    if (d != Divider::End) unclosed(opened, name, d, in);
+    // Declared part of the time: a branch on the time it is declared.
+    TimeFunction c = indicator(*when);
+    if (negate) c = TimeFunction::apply(runtime::TimeOp::Not, c);
+    const auto at = in.position();
+    const runtime::TruthPieces pieces = split_domain(c, at);
+    if (const auto whole = whole_truth(pieces)) rest(*whole);
+    else split_time(in, at, c, pieces, rest);
     return true;
 }
 

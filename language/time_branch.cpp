@@ -1,10 +1,13 @@
 #include "language/time_branch.hpp"
 
 #include <memory>
+#include <vector>
 
 #include "language/value_ops.hpp"
 
 namespace hexant::language {
+
+using runtime::TimeOp;
 
 namespace {
 
@@ -18,6 +21,26 @@ bool same_function(const TimeFunction& a, const TimeFunction& b) {
 }
 
 }  // namespace
+
+namespace {
+
+TimeFunction any_of(const std::vector<runtime::Interval>& pieces, std::size_t first, std::size_t last) {
+    if (last - first == 1) {
+        const TimeFunction t = TimeFunction::clock();
+        return TimeFunction::apply(TimeOp::And, TimeFunction::apply(TimeOp::GreaterEqual, t, pieces[first].lo),
+                                   TimeFunction::apply(TimeOp::LessEqual, t, pieces[first].hi));
+    }
+    const std::size_t middle = first + (last - first) / 2;
+    return TimeFunction::apply(TimeOp::Or, any_of(pieces, first, middle), any_of(pieces, middle, last));
+}
+
+}  // namespace
+
+TimeFunction indicator(const runtime::Lifetime& when) {
+    if (when.is_always()) return 1.0;
+    if (when.is_never()) return 0.0;
+    return any_of(when.pieces(), 0, when.pieces().size());
+}
 
 bool same_value(const Value& a, const Value& b) {
     if (a.v.index() != b.v.index()) return false;

@@ -23,6 +23,12 @@
 
 namespace hexant::language {
 
+// A function of time that is 1 where `when` holds and 0 elsewhere, exactly
+// at every double (comparisons of clock with the pieces' ends, in a
+// balanced tree of `|`). For #ifdef and defined() of a name declared part
+// of the time.
+TimeFunction indicator(const runtime::Lifetime& when);
+
 // Are a and b the same value without looking inside (the same constant,
 // the same node of a time function, the same shared object)? False when
 // unsure.

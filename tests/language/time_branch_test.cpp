@@ -395,3 +395,35 @@ object { Shapes[min(clock * 2, 1)] }
     const auto e = error_of("#declare A = array[2] { 1, 2 }\nsphere { 0, A[clock * 4] }\n", animation());
     CHECK(e.formatted().find("test.pov:2:") != std::string::npos);
 }
+
+TEST_CASE("a name declared on one side only is declared only on its pieces", "[language][time]") {
+    // Used where it is not declared: the error POV-Ray gives at that clock,
+    // naming it.
+    const auto e = error_of("#if (clock > 0.5) #declare V = <1, 2, 3>; #end\nsphere { V, 1 }\n", animation());
+    CHECK(e.formatted().find("test.pov:2:10") != std::string::npos);
+    CHECK(e.formatted().find("not declared at clock 0") != std::string::npos);
+    // Used only where it is: fine.
+    hexant::test::reads("#if (clock > 0.5) #declare V = 2; #end\n#if (clock > 0.6) sphere { 0, V } #end\n",
+                        animation());
+    // #ifdef, #ifndef and defined() split on where it is declared; #undef on
+    // one side undeclares it there only.
+    const auto scene = read(R"(
+#declare V = 1;
+#if (clock > 0.5) #undef V #end
+#ifdef (V) sphere { 0, V } #end
+#ifndef (V) box { -1, 1 } #end
+#if (defined(V)) cylinder { 0, y, 1 } #end
+#ifndef (V) #declare V = 7; #end
+sphere { 0, V }
+)");
+    REQUIRE(scene.objects.size() == 4);
+    CHECK(scene.objects[0]->lifetime.contains(0.5));
+    CHECK_FALSE(scene.objects[0]->lifetime.contains(0.6));
+    CHECK_FALSE(scene.objects[1]->lifetime.contains(0.5));
+    CHECK(scene.objects[1]->lifetime.contains(0.6));
+    CHECK(scene.objects[2]->lifetime == scene.objects[0]->lifetime);
+    // Declared again where it was not: 1 before, 7 after.
+    CHECK(scene.objects[3]->lifetime.is_always());
+    CHECK(sphere(scene, 3).radius(0.5) == 1.0);
+    CHECK(sphere(scene, 3).radius(0.6) == 7.0);
+}
