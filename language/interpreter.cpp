@@ -329,7 +329,7 @@ void Interpreter::merge_time_sides(const p::position& at, const TimeFunction& c,
                 }
                 runtime::Lifetime defined = runtime::Lifetime::of(std::move(declared));
                 if (defined.holds_all(animation_time())) defined = runtime::Lifetime::always();
-                merged = Held{*merge_sides(key.second, c, value[0], sides[0]->when, value[1], sides[1]->when),
+                merged = Held{*merge_sides("'" + key.second + "'", c, value[0], sides[0]->when, value[1], sides[1]->when),
                               std::move(defined)};
             }
             set_variable_at(key, merged);
@@ -345,7 +345,7 @@ void Interpreter::merge_time_sides(const p::position& at, const TimeFunction& c,
             if (!sides[1]) push(sides[0]->pushed[i]);
             else if (!sides[0]) push(sides[1]->pushed[i]);
             else
-                push(*merge_sides("the value given", c, sides[0]->pushed[i], sides[0]->when,
+                push(*merge_sides("the value this branch gives", c, sides[0]->pushed[i], sides[0]->when,
                                   sides[1]->pushed[i], sides[1]->when));
         }
         // The object around the branch: the CSG members and lights each side

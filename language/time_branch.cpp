@@ -107,9 +107,12 @@ std::optional<Value> merge_sides(const std::string& name, const TimeFunction& co
         both.shape = std::move(csg);
         return Value{runtime::ObjectPtr(std::make_shared<runtime::ObjectRecord>(std::move(both)))};
     }
-    throw ValueError("'" + name + "' is set to a " + type_name(a) + " on one side of this clock-dependent " +
-                     "branch and to a different " + type_name(b) +
-                     " on the other; hexant makes floats, vectors and objects piecewise in time, "
+    const auto a_or_an = [](const std::string& kind) {
+        return (std::string("aeiou").find(kind.front()) != std::string::npos ? "an " : "a ") + kind;
+    };
+    const std::string other = a.v.index() == b.v.index() ? "a different " + type_name(b) : a_or_an(type_name(b));
+    throw ValueError(name + " is " + a_or_an(type_name(a)) + " on one side of this clock-dependent branch and " +
+                     other + " on the other; hexant makes floats, vectors and objects piecewise in time, "
                      "not yet other kinds of value");
 }
 

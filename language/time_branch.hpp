@@ -38,7 +38,7 @@ bool same_value(const Value& a, const Value& b);
 // that lifetime; any other value unchanged.
 Value during(const Value& value, const runtime::Lifetime& when);
 
-// The variable `name` after a split on `condition`: `when_true` on the side
+// The variable `name` (as messages name it: "'V'") after a split on `condition`: `when_true` on the side
 // where it held, `when_false` on the other (none: not defined there).
 // Throws ValueError for a kind of value hexant cannot make piecewise in
 // time (a string, a texture, an array ...) where the sides differ.

@@ -226,7 +226,14 @@ inline Interval operator*(const Interval& a, const Interval& b) {
     // NaN products are skipped: 0 * inf at an end means the limit of finite
     // products, which the other three corners already bound.
     const double p1 = a.lo * b.lo, p2 = a.lo * b.hi, p3 = a.hi * b.lo, p4 = a.hi * b.hi;
-    return {next_down(min4(p1, p2, p3, p4)), next_up(max4(p1, p2, p3, p4))};
+    Interval r{next_down(min4(p1, p2, p3, p4)), next_up(max4(p1, p2, p3, p4))};
+    // The sign is exact: a product of two non-negative (or two
+    // non-positive) intervals is never below 0, however it rounds (a
+    // square that underflows to 0 was stepped to -5e-324, which left
+    // `clock * clock > 0` undecided near 0 at every size of piece).
+    if ((a.lo >= 0.0 && b.lo >= 0.0) || (a.hi <= 0.0 && b.hi <= 0.0)) r.lo = std::max(r.lo, 0.0);
+    else if ((a.lo >= 0.0 && b.hi <= 0.0) || (a.hi <= 0.0 && b.lo >= 0.0)) r.hi = std::min(r.hi, 0.0);
+    return r;
 }
 
 inline Interval operator/(const Interval& a, const Interval& b) {

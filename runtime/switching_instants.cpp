@@ -1,5 +1,6 @@
 #include "runtime/switching_instants.hpp"
 
+#include <cstdio>
 #include <optional>
 #include <string>
 #include <utility>
@@ -27,11 +28,20 @@ public:
           max_evaluations_(512 * (max_pieces + 1)) {}
 
     void split(Interval t) {
-        if (++evaluations_ > max_evaluations_)
+        if (++evaluations_ > max_evaluations_) {
+            // Where it was still undecided: the interval evaluation could
+            // not tell the value there from the threshold (it changes
+            // without end there, or stays within rounding of changing:
+            // clock * clock > 0 near 0, where the square underflows).
+            char where[64];
+            std::snprintf(where, sizeof where, "%.17g", t.lo);
             throw LimitError(std::string(truth_ ? "a condition" : "a value") +
                              " that depends on clock could not be split into pieces of "
                              "constant value within " + std::to_string(max_evaluations_) +
-                             " evaluations (does it change without end, or at every instant?)");
+                             " evaluations: near clock " + where +
+                             " it changes without end, or stays within rounding of changing "
+                             "(write it so that it is clearly one side there)");
+        }
         if (const auto label = decide(t)) return push(t, *label);
         using interval_detail::next_up;
         // Three doubles or fewer: each decided by itself.
