@@ -5,8 +5,8 @@
 // rounded value at any point lies between the rounded values at the ends).
 //
 // Rounding: the basic operations and sqrt are correctly rounded (IEEE 754),
-// so their ends are stepped one ulp outward (the sum or difference of two
-// points only where inexact: point_sum). The libm functions (sin, cos,
+// so their ends are stepped one ulp outward (a time function's sum or
+// difference of two points only where inexact: point_sum). The libm functions (sin, cos,
 // tan, asin, acos, atan, atan2, exp, log, log10, pow) are within 1 ulp on
 // glibc x86_64 (2 for log10; glibc manual, "Known Maximum Errors in Math
 // Functions"); a point value inside may be off by that much the other way, so
@@ -140,8 +140,10 @@ namespace interval_detail {
 // upper one when <= 0; a NaN error steps both). Stepping exact sums widened
 // integers: floor(...) + 1 over a piece inside one frame was [3 - ulp, 3 +
 // ulp], which left `frame_number < 3` undecided at every size of piece
-// (runtime/switching_instants.hpp). Only points: the check costs about a
-// fifth of the sweeps' time where every sum is checked (10^5 objects).
+// (runtime/switching_instants.hpp). Used by the time functions' Add and
+// Subtract (time_ops_generic.hpp), not by operator+: checking every sum
+// cost about a fifth of the sweeps' time (TwoSum on all, 10^5 objects) and
+// a few percent of a deformed scene's render (the check on points).
 inline Interval point_sum(double a, double b) {
     const double s = a + b;
     const double e = sum_error(a, b, s);
@@ -158,13 +160,11 @@ inline Interval operator+(const Interval& a, const Interval& b) {
     // Adding an exact zero is exact (sparse matrices add many).
     if (b.lo == 0.0 && b.hi == 0.0) return a;
     if (a.lo == 0.0 && a.hi == 0.0) return b;
-    if (a.is_point() && b.is_point()) return point_sum(a.lo, b.lo);
     return {next_down(a.lo + b.lo), next_up(a.hi + b.hi)};
 }
 
 inline Interval operator-(const Interval& a, const Interval& b) {
     using namespace interval_detail;
-    if (a.is_point() && b.is_point()) return point_sum(a.lo, -b.lo);
     return {next_down(a.lo - b.hi), next_up(a.hi - b.lo)};
 }
 
@@ -226,14 +226,7 @@ inline Interval operator*(const Interval& a, const Interval& b) {
     // NaN products are skipped: 0 * inf at an end means the limit of finite
     // products, which the other three corners already bound.
     const double p1 = a.lo * b.lo, p2 = a.lo * b.hi, p3 = a.hi * b.lo, p4 = a.hi * b.hi;
-    Interval r{next_down(min4(p1, p2, p3, p4)), next_up(max4(p1, p2, p3, p4))};
-    // The sign is exact: a product of two non-negative (or two
-    // non-positive) intervals is never below 0, however it rounds (a
-    // square that underflows to 0 was stepped to -5e-324, which left
-    // `clock * clock > 0` undecided near 0 at every size of piece).
-    if ((a.lo >= 0.0 && b.lo >= 0.0) || (a.hi <= 0.0 && b.hi <= 0.0)) r.lo = std::max(r.lo, 0.0);
-    else if ((a.lo >= 0.0 && b.hi <= 0.0) || (a.hi <= 0.0 && b.lo >= 0.0)) r.hi = std::min(r.hi, 0.0);
-    return r;
+    return {next_down(min4(p1, p2, p3, p4)), next_up(max4(p1, p2, p3, p4))};
 }
 
 inline Interval operator/(const Interval& a, const Interval& b) {
