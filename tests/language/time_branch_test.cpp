@@ -427,3 +427,48 @@ sphere { 0, V }
     CHECK(sphere(scene, 3).radius(0.5) == 1.0);
     CHECK(sphere(scene, 3).radius(0.6) == 7.0);
 }
+
+TEST_CASE("an #if on clock inside a #while on clock inside a macro", "[language][time]") {
+    // Posts that rise one by one (the #while on clock), each lit red once
+    // it is past its own instant (the #if on clock), made by a macro.
+    const auto scene = read(R"(
+#macro Posts(Rate)
+  #local I = 0;
+  #while (I < clock * Rate)
+    #if (sin(2 * pi * clock) > 0.5)
+      sphere { <I, 1, 0>, 0.2 }
+    #else
+      box { <I, 0, 0>, <I + 0.5, 0.5, 0.5> }
+    #end
+    #local I = I + 1;
+  #end
+#end
+Posts(4)
+)");
+    // Post I appears once 4 clock > I; each is a sphere while sin(2 pi clock)
+    // > 0.5 (1/12 to 5/12) and a box otherwise.
+    const double a = 1.0 / 12.0, b = 5.0 / 12.0;
+    for (const auto& object : scene.objects) {
+        const std::string kind = rt::shape_name(object->shape);
+        const auto& pieces = object->lifetime.pieces();
+        REQUIRE_FALSE(pieces.empty());
+        for (const auto& piece : pieces) {
+            const double mid = piece.mid();
+            INFO(kind << " on [" << piece.lo << ", " << piece.hi << "]");
+            CHECK((std::sin(2 * M_PI * mid) > 0.5) == (kind == "sphere"));
+        }
+    }
+    // The sphere of post 0 starts exactly where sin(2 pi clock) > 0.5 does.
+    bool found = false;
+    for (const auto& object : scene.objects)
+        if (std::string(rt::shape_name(object->shape)) == "sphere" && object->lifetime.contains(0.2)) {
+            const double start = object->lifetime.pieces().front().lo;
+            CHECK(std::fabs(start - a) < 1e-15);
+            CHECK(std::sin(2 * M_PI * start) > 0.5);
+            CHECK_FALSE(std::sin(2 * M_PI * before(start)) > 0.5);
+            CHECK(std::fabs(object->lifetime.pieces().front().hi - b) < 1e-15);
+            found = true;
+            break;
+        }
+    CHECK(found);
+}
