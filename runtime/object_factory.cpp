@@ -180,12 +180,14 @@ void build_split(const ObjectRecord& record, const Inherited& parent,
 
 IntelligentObjectPtr make_intelligent_object(const ObjectRecord& record,
                                              const Texture& default_texture) {
-    return build(record, Inherited{Transform{}, default_texture, std::nullopt, false});
+    const Inherited top{Transform{}, default_texture, std::nullopt, false, 0, Lifetime::always(), false};
+    return build(record, top);
 }
 
 void make_intelligent_objects(const ObjectRecord& record, const Texture& default_texture,
                               std::vector<IntelligentObjectPtr>& out) {
-    build_split(record, Inherited{Transform{}, default_texture, std::nullopt, false}, out);
+    const Inherited top{Transform{}, default_texture, std::nullopt, false, 0, Lifetime::always(), false};
+    build_split(record, top, out);
 }
 
 }  // namespace hexant::runtime
