@@ -4,12 +4,10 @@
 #include <cmath>
 #include <stdexcept>
 #include <sstream>
-#include <vector>
 #include <string>
 
 #include "runtime/spline.hpp"
 #include "runtime/time_ops.hpp"
-#include "runtime/time_tape.hpp"
 
 namespace hexant::runtime {
 
@@ -199,19 +197,6 @@ TimeFunction TimeFunction::spline_component(std::shared_ptr<const Spline> spline
 double TimeFunction::operator()(double t) const {
     if (is_constant()) return constant();
     const Node& n = *node();
-    // A deep function may reach its shared parts along very many paths
-    // (V = V * 0.5 + V * 0.25, turned in a loop, doubles them each turn):
-    // walked as a tree it took exponential time (hexant dump, 36 s at 30
-    // turns). Past this depth it is compiled to a tape, which computes each
-    // shared node once and gives the same double (time_tape.hpp).
-    constexpr int kTreeDepth = 32;
-    if (n.depth > kTreeDepth) {
-        const TimeTape tape = TimeTape::compile({*this});
-        std::vector<double> scratch(tape.size());
-        double value = 0.0;
-        tape.evaluate(t, &value, scratch.data());
-        return value;
-    }
     switch (n.op) {
         case TimeOp::Clock: return t;
         case TimeOp::SplineComponent: return n.spline->evaluate(n.args[0](t))[n.component];

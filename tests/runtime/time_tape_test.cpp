@@ -358,18 +358,3 @@ TEST_CASE("compiled functions skip the tape when constant", "[runtime][time]") {
     CHECK(still.is_constant());
     CHECK(still.at(0.0) == glm::dvec3(1, 2, 3));
 }
-
-TEST_CASE("a deep function with shared parts evaluates in time linear in its nodes",
-          "[runtime][tape]") {
-    // V = V * 0.5 + V * 0.25 + 0.1, 60 times: 2^60 paths to clock, 180
-    // nodes. Walked as a tree this would not finish (hexant dump took 36 s
-    // at 30 turns); past depth 32 the point evaluator uses a tape.
-    using hexant::runtime::TimeFunction;
-    TimeFunction v = TimeFunction::clock();
-    double expected = 0.31;
-    for (int i = 0; i < 60; ++i) {
-        v = v * 0.5 + v * 0.25 + 0.1;
-        expected = expected * 0.5 + expected * 0.25 + 0.1;
-    }
-    CHECK(v(0.31) == expected);
-}
