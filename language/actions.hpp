@@ -899,7 +899,7 @@ HEXANT_ACTION(csg_open) {
 HEXANT_ACTION(csg_child) {
     HEXANT_APPLY {
         Value v = st.pop();
-        auto& record = st.block<runtime::ObjectRecord>(in.position(), "an object");
+        auto& record = st.member_block(in.position());
         if (v.is<runtime::LightRecord>()) {
             record.lights.push_back(v.as<runtime::LightRecord>());
             return;

@@ -250,8 +250,9 @@ void Interpreter::set_variable_at(const VariableKey& key, const std::optional<He
 
 namespace {
 
-// Everything about an object block but its CSG members and lights: what a
-// side of a time split may not change (not yet piecewise in time).
+// What block() does not count (Interpreter::watched_edits_): the kind of
+// shape and the transform (apply_transform edits the block directly). A
+// side of a time split may change neither (not yet piecewise in time).
 bool same_but_members(const runtime::ObjectRecord& a, const runtime::ObjectRecord& b) {
     const auto* ca = std::get_if<runtime::Csg>(&a.shape);
     const auto* cb = std::get_if<runtime::Csg>(&b.shape);
@@ -358,7 +359,7 @@ void Interpreter::merge_time_sides(const p::position& at, const TimeFunction& c,
                 members ? std::get<runtime::Csg>(top_before->shape).children.size() : 0;
             for (const auto& s : sides) {
                 if (!s || !s->top) continue;
-                if (!same_but_members(*s->top, *top_before))
+                if (s->top_edited || !same_but_members(*s->top, *top_before))
                     throw ValueError("this clock-dependent branch changes the object around it "
                                      "(a transform, texture or flag); hexant makes the CSG "
                                      "members it adds piecewise in time, not yet the object's "

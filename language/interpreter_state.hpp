@@ -101,6 +101,16 @@ public:
     std::vector<Block> blocks;
     template <typename T>
     T& block(const p::position& where, const char* what);
+    // The object block a CSG member or light joins: block() without
+    // counting an edit (members added under a time split live on its
+    // pieces; other edits there are refused, split_time).
+    runtime::ObjectRecord& member_block(const p::position& where) {
+        const std::size_t watched = watched_block_;
+        watched_block_ = 0;
+        runtime::ObjectRecord& record = block<runtime::ObjectRecord>(where, "an object");
+        watched_block_ = watched;
+        return record;
+    }
     void apply_transform(runtime::TransformStep step, const p::position& where);
     void apply_deformation(runtime::TransformStep step, const p::position& where);
 
@@ -392,6 +402,9 @@ private:
     };
     std::vector<BranchLog> branch_logs_;
     bool restoring_ = false;  // writing back a log: not itself logged
+    // The depth of the object block a side of a time split reads inside
+    // (0: none), and how many times block() handed it out for an edit.
+    std::size_t watched_block_ = 0, watched_edits_ = 0;
     void log_change(const Scope& scope, const std::string& name);
     std::optional<Held> variable_at(const VariableKey& key) const;
     void set_variable_at(const VariableKey& key, const std::optional<Held>& held);
@@ -403,6 +416,7 @@ private:
         std::map<VariableKey, std::optional<Held>> after;
         std::vector<Value> pushed;
         std::optional<runtime::ObjectRecord> top;
+        bool top_edited = false;  // beyond adding members
         std::optional<runtime::CameraRecord> camera;        // when it set one
         std::optional<runtime::ColourFunction> background;  // when it set one
     };
@@ -430,6 +444,8 @@ template <typename T>
 T& Interpreter::block(const p::position& where, const char* what) {
     if (blocks.empty() || !std::holds_alternative<T>(blocks.back()))
         fail(where, std::string(what) + " does not belong here");
+    // (A side of a time split editing the object around it: split_time.)
+    if (blocks.size() == watched_block_) ++watched_edits_;
     return std::get<T>(blocks.back());
 }
 
@@ -656,14 +672,23 @@ void Interpreter::split_time(ParseInput& in, const p::position& at, const TimeFu
         const bool whole = (side == 0 ? pieces.when_false : pieces.when_true).is_never();
         domain = whole ? outer : when;
         branch_logs_.push_back({scopes_.size(), {}});
+        const std::size_t watched = watched_block_, edits = watched_edits_;
+        watched_block_ = top_before ? block_count : 0;
+        watched_edits_ = 0;
         try {
             read(side == 0);
         } catch (...) {
             domain = outer;
+            watched_block_ = watched;
+            watched_edits_ = edits;
             (void)restore();
             throw;
         }
+        const bool edited = watched_edits_ > 0;
+        watched_block_ = watched;
+        watched_edits_ = edits + (edited ? 1 : 0);
         auto [done, balanced] = restore();
+        done.top_edited = edited;
         if (!balanced) {
             domain = outer;
             fail(at, "a branch whose condition depends on clock that uses values from before it "

@@ -60,8 +60,14 @@ public:
         split({next_up(m), t.hi});
     }
 
-    // Ends the domain's interval: the next one does not continue this one.
-    void break_run() { open_ = false; }
+    // Each interval of the domain in turn (one does not continue the last).
+    void split_all(const std::vector<Interval>& domain) {
+        for (const Interval& t : domain) {
+            if (t.is_empty()) continue;
+            split(t);
+            open_ = false;
+        }
+    }
 
     TruthPieces truth_result() {
         TruthPieces r;
@@ -131,11 +137,7 @@ TruthPieces split_by_truth(const TimeFunction& condition, const std::vector<Inte
         return r;
     }
     Splitter splitter(condition, max_pieces, true);
-    for (const Interval& t : domain) {
-        if (t.is_empty()) continue;
-        splitter.split(t);
-        splitter.break_run();
-    }
+    splitter.split_all(domain);
     return splitter.truth_result();
 }
 
@@ -148,11 +150,7 @@ std::vector<ValuePiece> split_by_value(const TimeFunction& f, const std::vector<
         return r;
     }
     Splitter splitter(f, max_pieces, false);
-    for (const Interval& t : domain) {
-        if (t.is_empty()) continue;
-        splitter.split(t);
-        splitter.break_run();
-    }
+    splitter.split_all(domain);
     return splitter.value_result();
 }
 

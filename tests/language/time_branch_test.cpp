@@ -183,6 +183,12 @@ TEST_CASE("what cannot yet be piecewise in time is an error at the branch", "[la
 )", animation());
     CHECK(e.formatted().find("test.pov:2:5") != std::string::npos);
     CHECK(e.formatted().find("piecewise") != std::string::npos);
+    // The object's own texture replaced under a branch inside its block
+    // (it was kept from before the branch, silently, when the block had
+    // one already): refused at the branch.
+    const auto own = error_of("sphere { 0, 1 pigment { rgb 1 } #if (clock > 0.5) pigment { rgb 0 } #end }\n",
+                              animation());
+    CHECK(own.formatted().find("test.pov:1:37") != std::string::npos);
     // A texture set differently on the two sides.
     const auto texture = error_of(
         "#if (clock > 0.5) #declare T = pigment { rgb 1 }; #else #declare T = pigment { rgb 0 }; #end\n",

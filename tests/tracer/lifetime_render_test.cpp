@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "language/interpreter.hpp"
 #include "tracer/renderer.hpp"
@@ -29,6 +30,18 @@ tr::Image render(const hexant::runtime::SceneDescription& scene, tr::Mode mode, 
     settings.samples_per_pixel = spp;
     tr::Renderer renderer(scene, settings);
     return renderer.render_frame(1);
+}
+
+// Frames 1 and 2 of `text` at shutter 0 (clock 0 and clock 1), one sample
+// at each pixel.
+std::pair<tr::Image, tr::Image> first_and_last(const std::string& text) {
+    auto scene = parse(text);
+    scene.animation.shutter = 0.0;
+    tr::RenderSettings settings;
+    settings.samples_per_pixel = 1;
+    tr::Renderer renderer(scene, settings);
+    tr::Image first = renderer.render_frame(1);
+    return {std::move(first), renderer.render_frame(2)};
 }
 
 // A white square (ambient 1, nothing else) filling the view while clock >
@@ -104,13 +117,7 @@ intersection {
   pigment { rgb 1 } finish { ambient 1 diffuse 0 }
 }
 )";
-    auto scene = parse(text);
-    scene.animation.shutter = 0.0;
-    tr::RenderSettings settings;
-    settings.samples_per_pixel = 1;
-    tr::Renderer renderer(scene, settings);
-    const tr::Image with_box = renderer.render_frame(1);
-    const tr::Image without = renderer.render_frame(2);
+    const auto [with_box, without] = first_and_last(text);
     const int cx = with_box.width / 2;
     const int below = with_box.height * 3 / 4;  // below the centre: the lower half
     CHECK(with_box.at(cx, below).x == 0.0f);
@@ -131,13 +138,9 @@ difference {
   pigment { rgb 1 } finish { ambient 1 diffuse 0 }
 }
 )";
+    const auto [sphere_only, box_less_sphere] = first_and_last(text);
     auto scene = parse(text);
     scene.animation.shutter = 0.0;
-    tr::RenderSettings settings;
-    settings.samples_per_pixel = 1;
-    tr::Renderer renderer(scene, settings);
-    const tr::Image sphere_only = renderer.render_frame(1);
-    const tr::Image box_less_sphere = renderer.render_frame(2);
     const int cx = sphere_only.width / 2, cy = sphere_only.height / 2;
     CHECK(sphere_only.at(cx, cy).x == 1.0f);         // the sphere
     CHECK(sphere_only.at(cx / 2, cy).x == 0.0f);     // nothing else
