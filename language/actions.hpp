@@ -11,6 +11,7 @@
 #include "language/grammar.hpp"
 #include "language/interpreter_state.hpp"
 #include "language/checked_integer.hpp"
+#include "language/timed_call.hpp"
 #include "language/value_ops.hpp"
 #include "runtime/parameter_check.hpp"
 
@@ -171,11 +172,17 @@ HEXANT_ACTION(function_call) {
         // would otherwise reach the allocator's limit first.
         if (name == "concat") {
             std::size_t length = 0;
-            for (const auto& a : args)
+            for (const auto& a : args) {
                 if (a.is<std::string>()) length += a.as<std::string>().size();
+                if (a.is<TimedString>()) length += a.as<TimedString>().longest();
+            }
             st.check_string_length(length, "concat()'s result");
         }
-        Value result = call_builtin(name, args, st.random);
+        // (A string function of arguments that depend on clock: once a
+        // piece of time, language/timed_call.hpp.)
+        std::optional<Value> timed = call_over_time(name, args, st.domain.within(st.animation_time()),
+                                                    st.options.limits.time_pieces, st.random);
+        Value result = timed ? std::move(*timed) : call_builtin(name, args, st.random);
         if (name == "vnormalize")
             if (const auto zero = vnormalize_zero_at(args, st.animation_time())) {
                 std::ostringstream note;
@@ -189,6 +196,8 @@ HEXANT_ACTION(function_call) {
             }
         if (result.is<std::string>())
             st.check_string_length(result.as<std::string>().size(), name + "()'s result");
+        if (result.is<TimedString>())
+            st.check_string_length(result.as<TimedString>().longest(), name + "()'s result");
         st.push(std::move(result));
     }
 };
@@ -495,16 +504,27 @@ HEXANT_ACTION(version_value) {
     HEXANT_APPLY { (void)in; st.version = to_constant(st.pop(), "#version"); }
 };
 
+// A message's text that depends on clock: each piece's text, after the
+// time it is said for (POV-Ray says it once a frame, at that frame's clock).
+inline std::string message_text(const Value& value, const char* what) {
+    if (!value.is<TimedString>()) return to_string_value(value, what);
+    std::ostringstream out;
+    out << std::setprecision(17);
+    for (const auto& piece : value.as<TimedString>().pieces)
+        out << "[clock " << piece.time.lo << " to " << piece.time.hi << "] " << piece.text;
+    return out.str();
+}
+
 HEXANT_ACTION(debug_directive) {
-    HEXANT_APPLY { (void)in; st.messages() << to_string_value(st.pop(), "#debug's text"); }
+    HEXANT_APPLY { (void)in; st.messages() << message_text(st.pop(), "#debug's text"); }
 };
 
 HEXANT_ACTION(warning_directive) {
-    HEXANT_APPLY { st.warn(in.position(), to_string_value(st.pop(), "#warning's text")); }
+    HEXANT_APPLY { st.warn(in.position(), message_text(st.pop(), "#warning's text")); }
 };
 
 HEXANT_ACTION(error_directive) {
-    HEXANT_APPLY { Interpreter::fail(in.position(), "#error: " + to_string_value(st.pop(), "#error's text")); }
+    HEXANT_APPLY { Interpreter::fail(in.position(), "#error: " + message_text(st.pop(), "#error's text")); }
 };
 
 HEXANT_ACTION(unsupported_directive) {

@@ -314,6 +314,12 @@ const std::map<std::string, Builtin>& table() {
              for (auto& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
              return Value{s};
          }},
+        {"strcmp",
+         [](const std::string& n, const Args& a, RandomStreams&) {
+             expect_count(n, a, 2, 2);
+             const int c = arg_string(n, a, 0).compare(arg_string(n, a, 1));
+             return Value{TimeFunction(c < 0 ? -1.0 : c > 0 ? 1.0 : 0.0)};
+         }},
         {"val",
          [](const std::string& n, const Args& a, RandomStreams&) {
              expect_count(n, a, 1, 1);

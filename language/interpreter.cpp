@@ -403,7 +403,7 @@ void Interpreter::require_whole_time(const p::position& where, const char* what)
 
 void Interpreter::set_variable(Scope& scope, const std::string& name, Value value) {
     log_change(scope, name);
-    const std::size_t bytes = value.is<std::string>() ? value.as<std::string>().size() : 0;
+    const std::size_t bytes = string_bytes(value);
     auto [slot, added] = scope.try_emplace(name);
     Variable& variable = slot->second;
     variable.charge.attach(array_memory_);

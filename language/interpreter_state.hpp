@@ -185,6 +185,13 @@ public:
     template <typename Item, template <typename...> class Action,
               template <typename...> class Control, typename ParseInput>
     bool run_include(ParseInput& in);
+    // #include of a name that depends on clock (language/timed_string.hpp).
+    template <typename Item, template <typename...> class Action,
+              template <typename...> class Control, typename ParseInput>
+    void include_by_clock(ParseInput& in, const p::position& opened, const TimedString& name);
+    template <typename Item, template <typename...> class Action,
+              template <typename...> class Control>
+    void include_file(const p::position& opened, const std::string& file);
     template <typename Item, template <typename...> class Action,
               template <typename...> class Control, typename ParseInput>
     bool define_macro(ParseInput& in);
@@ -1104,12 +1111,57 @@ bool Interpreter::run_include(ParseInput& in) {
     const auto opened = directive_position(in);
     if (!keyword(in, "include")) return false;
     read<grammar::include_name, Action, Control>(in);
+    const Value name = pop();
+    if (name.is<TimedString>()) {
+        include_by_clock<Item, Action, Control>(in, opened, name.as<TimedString>());
+        return true;
+    }
     std::string file;
     try {
-        file = to_string_value(pop(), "the name after #include");
+        file = to_string_value(name, "the name after #include");
     } catch (const ValueError& e) {
         fail(opened, e.what());
     }
+    include_file<Item, Action, Control>(opened, file);
+    return true;
+}
+
+template <typename Item, template <typename...> class Action,
+          template <typename...> class Control, typename ParseInput>
+void Interpreter::include_by_clock(ParseInput& in, const p::position& opened, const TimedString& name) {
+    // Each file read for the time its name holds, as the sides of a branch
+    // on clock: the first name against the rest, then the rest in turn.
+    std::vector<double> instants;  // for `hexant check`, as split_domain records them
+    for (std::size_t i = 1; i < name.pieces.size(); ++i)
+        if (domain.contains(name.pieces[i].time.lo)) instants.push_back(name.pieces[i].time.lo);
+    if (!instants.empty()) scene.time_splits.push_back({{opened.source, opened.line, opened.column}, instants});
+    std::vector<std::pair<std::string, runtime::Lifetime>> files;
+    for (auto& [file, when] : name.by_text()) {
+        runtime::Lifetime here = runtime::Lifetime::of(when.within(animation_time())).intersect(domain);
+        if (!here.is_never()) files.push_back({file, std::move(here)});
+    }
+    const auto from = [&](const auto& self, std::size_t k) -> void {
+        if (k + 1 >= files.size()) {
+            if (k < files.size()) include_file<Item, Action, Control>(opened, files[k].first);
+            return;
+        }
+        runtime::TruthPieces pieces;
+        pieces.when_true = files[k].second;
+        std::vector<runtime::Interval> rest;
+        for (std::size_t j = k + 1; j < files.size(); ++j)
+            rest.insert(rest.end(), files[j].second.pieces().begin(), files[j].second.pieces().end());
+        pieces.when_false = runtime::Lifetime::of(std::move(rest));
+        split_time(in, opened, indicator(pieces.when_true), pieces, [&](bool first) {
+            if (first) include_file<Item, Action, Control>(opened, files[k].first);
+            else self(self, k + 1);
+        });
+    };
+    from(from, 0);
+}
+
+template <typename Item, template <typename...> class Action,
+          template <typename...> class Control>
+void Interpreter::include_file(const p::position& opened, const std::string& file) {
     if (include_depth_ >= options.limits.include_depth)
         fail(opened, "#include nested more than " + std::to_string(options.limits.include_depth) +
                          " deep; stopping (does a file include itself? --max-include-depth N "
@@ -1126,7 +1178,6 @@ bool Interpreter::run_include(ParseInput& in) {
     }
     scopes_.pop_back();
     --include_depth_;
-    return true;
 }
 
 template <typename Items, template <typename...> class Action,

@@ -10,7 +10,7 @@
 namespace hexant::language::grammar {
 
 namespace {
-constexpr std::array<std::string_view, 314> kReserved = {
+constexpr std::array<std::string_view, 315> kReserved = {
     "abs",
     "acos",
     "adaptive",
@@ -272,6 +272,7 @@ constexpr std::array<std::string_view, 314> kReserved = {
     "srgbt",
     "statistics",
     "str",
+    "strcmp",
     "strlen",
     "strlwr",
     "strupr",

@@ -1,5 +1,7 @@
 #include "language/time_branch.hpp"
 
+#include <algorithm>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -53,6 +55,7 @@ bool same_value(const Value& a, const Value& b) {
         return true;
     }
     if (a.is<std::string>()) return a.as<std::string>() == b.as<std::string>();
+    if (a.is<TimedString>()) return a.as<TimedString>() == b.as<TimedString>();
     if (a.is<runtime::ObjectPtr>()) return a.as<runtime::ObjectPtr>() == b.as<runtime::ObjectPtr>();
     if (a.is<std::shared_ptr<Array>>()) return a.as<std::shared_ptr<Array>>() == b.as<std::shared_ptr<Array>>();
     if (a.is<std::shared_ptr<const runtime::Spline>>())
@@ -94,6 +97,17 @@ std::optional<Value> merge_sides(const std::string& name, const TimeFunction& co
     if (same_value(a, b)) return a;
     const bool numbers = (a.is<TimeFunction>() || a.is<Vector>()) && (b.is<TimeFunction>() || b.is<Vector>());
     if (numbers) return conditional(Value{condition}, a, b);
+    const auto is_string = [](const Value& v) { return v.is<std::string>() || v.is<TimedString>(); };
+    if (is_string(a) && is_string(b)) {
+        // Each side's text on its own pieces (the sides' pieces are
+        // disjoint, both within the time being read).
+        const runtime::Interval any(-std::numeric_limits<double>::max(), std::numeric_limits<double>::max());
+        std::vector<TimedString::Piece> pieces = string_pieces(a, true_pieces, any);
+        for (auto& piece : string_pieces(b, false_pieces, any)) pieces.push_back(std::move(piece));
+        std::sort(pieces.begin(), pieces.end(),
+                  [](const TimedString::Piece& x, const TimedString::Piece& y) { return x.time.lo < y.time.lo; });
+        return timed_string(std::move(pieces));
+    }
     if (a.is<runtime::ObjectPtr>() && b.is<runtime::ObjectPtr>()) {
         // Both, each while its side holds: one of them at any instant.
         runtime::ObjectRecord both;
@@ -112,8 +126,8 @@ std::optional<Value> merge_sides(const std::string& name, const TimeFunction& co
     };
     const std::string other = a.v.index() == b.v.index() ? "a different " + type_name(b) : a_or_an(type_name(b));
     throw ValueError(name + " is " + a_or_an(type_name(a)) + " on one side of this clock-dependent branch and " +
-                     other + " on the other; hexant makes floats, vectors and objects piecewise in time, "
-                     "not yet other kinds of value");
+                     other + " on the other; hexant makes floats, vectors, strings and objects piecewise "
+                     "in time, not yet other kinds of value");
 }
 
 }  // namespace hexant::language

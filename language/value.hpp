@@ -12,6 +12,7 @@
 #include <tao/pegtl/position.hpp>
 
 #include "language/memory_budget.hpp"
+#include "language/timed_string.hpp"
 #include "runtime/camera.hpp"
 #include "runtime/light.hpp"
 #include "runtime/material.hpp"
@@ -54,7 +55,7 @@ struct Array {
 
 struct Value {
     using Variant =
-        std::variant<TimeFunction, Vector, std::string, runtime::ObjectPtr, runtime::LightRecord,
+        std::variant<TimeFunction, Vector, std::string, TimedString, runtime::ObjectPtr, runtime::LightRecord,
                      runtime::CameraRecord, runtime::Texture, runtime::Pigment, runtime::Finish,
                      runtime::Interior, runtime::Transform, std::shared_ptr<Array>,
                      std::shared_ptr<const runtime::Spline>, std::shared_ptr<const Macro>,
@@ -79,9 +80,15 @@ struct Value {
 // value set in one (the shared value, its control block, a string's
 // characters; an array set in one carries its own charge).
 inline constexpr std::size_t kArraySlotBytes = sizeof(std::optional<std::shared_ptr<Value>>);
+inline std::size_t string_bytes(const Value& value) {
+    if (value.is<std::string>()) return value.as<std::string>().size();
+    if (!value.is<TimedString>()) return 0;
+    std::size_t n = 0;
+    for (const auto& piece : value.as<TimedString>().pieces) n += sizeof piece + piece.text.size();
+    return n;
+}
 inline std::size_t element_bytes(const Value& value) {
-    return sizeof(Value) + 2 * sizeof(void*) +
-           (value.is<std::string>() ? value.as<std::string>().size() : 0);
+    return sizeof(Value) + 2 * sizeof(void*) + string_bytes(value);
 }
 // Dimensions are int; the memory limit is the one that binds first.
 inline constexpr long long kMaxArrayElements = 2147483647;

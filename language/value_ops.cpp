@@ -13,6 +13,7 @@ std::string type_name(const Value& value) {
             return v.size == 5 ? "colour" : std::to_string(v.size) + "-component vector";
         }
         std::string operator()(const std::string&) const { return "string"; }
+        std::string operator()(const TimedString&) const { return "string that depends on clock"; }
         std::string operator()(const runtime::ObjectPtr&) const { return "object"; }
         std::string operator()(const runtime::LightRecord&) const { return "light_source"; }
         std::string operator()(const runtime::CameraRecord&) const { return "camera"; }
@@ -178,6 +179,9 @@ runtime::ColourFunction to_colour(const Value& v, const std::string& what) {
 
 const std::string& to_string_value(const Value& v, const std::string& what) {
     if (v.is<std::string>()) return v.as<std::string>();
+    if (v.is<TimedString>())
+        throw ValueError(what + " depends on clock (" + v.as<TimedString>().describe() +
+                         "); hexant needs one string here");
     throw ValueError(what + " must be a string, not a " + type_name(v));
 }
 

@@ -15,6 +15,8 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
+#include <string>
 #include <vector>
 
 #include "runtime/interval.hpp"
@@ -51,5 +53,21 @@ struct ValuePiece {
 };
 std::vector<ValuePiece> split_by_value(const TimeFunction& f, const std::vector<Interval>& domain,
                                        std::size_t max_pieces);
+
+// The pieces of `domain` over which key(i, f_i(t)) is the same for every
+// function f_i: where a value that needs one concrete number (str()'s
+// argument, formatted to its precision; chr()'s code) keeps its key. A
+// piece is decided where, for each function, the two ends of its interval
+// range have the same key; so each key must be monotone in the value (every
+// value between two with the same key has it too: rounding to a precision,
+// floor). The pieces are in order; any instant of a piece has the piece's
+// keys. Throws LimitError as split_by_value does.
+using KeyOf = std::function<std::string(std::size_t which, double value)>;
+struct KeyPiece {
+    Interval time;
+};
+std::vector<KeyPiece> split_by_key(const std::vector<TimeFunction>& functions,
+                                   const std::vector<Interval>& domain, std::size_t max_pieces,
+                                   const KeyOf& key);
 
 }  // namespace hexant::runtime

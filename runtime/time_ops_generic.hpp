@@ -139,15 +139,13 @@ inline Interval apply_op(TimeOp op, const Interval& a, const Interval& b = 0.0,
             return ceil(a);
         case TimeOp::SrgbDecode:
             return d::srgb_decode(a);
-        // (Two points: exact where the sum is, interval.hpp point_sum.)
+        // (Each end stepped only where inexact: interval.hpp tight_sum.)
         case TimeOp::Add:
-            if (a.is_point() && b.is_point()) return interval_detail::point_sum(a.lo, b.lo);
-            return a + b;
+            return interval_detail::tight_sum(a, b);
         case TimeOp::Subtract:
-            if (a.is_point() && b.is_point()) return interval_detail::point_sum(a.lo, -b.lo);
-            return a - b;
+            return interval_detail::tight_sum(a, -b);
         case TimeOp::Multiply:
-            return a * b;
+            return interval_detail::tight_product(a, b);
         case TimeOp::Divide:
             return a / b;
         case TimeOp::Pow:

@@ -248,11 +248,11 @@ TEST_CASE("clock is a symbol in an animation and a number in a still", "[evaluat
     CHECK(c.scene.animation.time_end() == Approx(c.scene.animation.shutter));
 
     // (#if, #elseif, #while, #switch, a #for's end and an index read on clock
-    // split time:
-    // tests/language/time_branch_test.cpp.)
+    // split time: tests/language/time_branch_test.cpp; str() and the string
+    // functions: timed_string_test.cpp.)
     for (const char* needs_a_number :
-         {"#declare A = array[2] {1, 2}; #declare A[clock] = 3;",
-          "#declare S = str(clock, 0, 2);", "#for (I, clock, 1) #end"}) {
+         {"#declare A = array[2] {1, 2}; #declare A[clock] = 3;", "#declare S = seed(clock);",
+          "#for (I, clock, 1) #end"}) {
         INFO(needs_a_number);
         CHECK(std::string(error_of(needs_a_number, animation()).message()).find("depends on clock") !=
               std::string::npos);

@@ -11,6 +11,14 @@
 
 namespace hexant::test {
 
+// Frames 1 to 8 over clock 0 to 1 (the shutter of the last one ends at 8/7).
+inline language::ParseOptions animation() {
+    language::ParseOptions options;
+    options.animation.initial_frame = 1;
+    options.animation.final_frame = 8;
+    return options;
+}
+
 // The error reading `text` (as the file `name`) gives, or nothing.
 inline std::optional<language::SceneError> read_error(const std::string& text,
                                                       language::ParseOptions options = {},

@@ -133,9 +133,18 @@ std::vector<Recorded> recorded() {
 
 }  // namespace
 
+namespace {
+// A camera of these items, over all of time (no pieces).
+CameraRecord camera_of(std::vector<CameraItem> items) {
+    CameraRecord record;
+    record.items = std::move(items);
+    return record;
+}
+}  // namespace
+
 TEST_CASE("camera rays match POV-Ray 3.7's 3x3 renders", "[camera]") {
     for (const Recorded& r : recorded()) {
-        CameraRecord record{r.items};
+        CameraRecord record = camera_of(r.items);
         const CameraFrame cam = record.evaluate(0.0);
         INFO("camera { " << r.camera << " }");
         CHECK(glm::length(cam.location - r.location) < 1e-9);
@@ -162,16 +171,16 @@ TEST_CASE("camera defaults are POV-Ray's", "[camera]") {
 }
 
 TEST_CASE("angle sets direction's length to |right| / (2 tan(angle / 2))", "[camera]") {
-    const CameraFrame cam = CameraRecord{{dir({0, 0, 5}), right({2, 0, 0}), angle(90)}}.evaluate(0.0);
+    const CameraFrame cam = camera_of({dir({0, 0, 5}), right({2, 0, 0}), angle(90)}).evaluate(0.0);
     CHECK(cam.direction.x == 0);
     CHECK(cam.direction.z == Approx(1.0));
-    const CameraFrame wide = CameraRecord{{angle(60)}}.evaluate(0.0);
+    const CameraFrame wide = camera_of({angle(60)}).evaluate(0.0);
     CHECK(wide.direction.z == Approx(1.33 / (2 * std::tan(3.14159265358979323846 / 6))));
 }
 
 TEST_CASE("look_at keeps the lengths and the handedness", "[camera]") {
     const CameraFrame cam =
-        CameraRecord{{dir({0, 0, 2}), right({-3, 0, 0}), up({0, 0.5, 0}), loc({1, 1, 1}), look({1, 1, 5})}}
+        camera_of({dir({0, 0, 2}), right({-3, 0, 0}), up({0, 0.5, 0}), loc({1, 1, 1}), look({1, 1, 5})})
             .evaluate(0.0);
     CHECK(glm::length(cam.direction - glm::dvec3(0, 0, 2)) < 1e-12);
     CHECK(glm::length(cam.right - glm::dvec3(-3, 0, 0)) < 1e-12);
@@ -179,16 +188,16 @@ TEST_CASE("look_at keeps the lengths and the handedness", "[camera]") {
 }
 
 TEST_CASE("the last of a repeated camera item wins", "[camera]") {
-    const CameraFrame cam = CameraRecord{{loc({1, 2, 3}), loc({4, 5, 6})}}.evaluate(0.0);
+    const CameraFrame cam = camera_of({loc({1, 2, 3}), loc({4, 5, 6})}).evaluate(0.0);
     CHECK(cam.location == glm::dvec3(4, 5, 6));
 }
 
 TEST_CASE("a camera driven by clock is evaluated at each time", "[camera]") {
     CameraItem moving = loc({0, 0, -5});
     moving.vector.c[0] = TimeFunction::apply(TimeOp::Multiply, TimeFunction(4.0), TimeFunction::clock());
-    CameraRecord record{{moving, look({0, 0, 0})}};
+    CameraRecord record = camera_of({moving, look({0, 0, 0})});
     CHECK(record.depends_on_time());
-    CHECK_FALSE(CameraRecord{{loc({0, 0, -5}), look({0, 0, 0})}}.depends_on_time());
+    CHECK_FALSE(camera_of({loc({0, 0, -5}), look({0, 0, 0})}).depends_on_time());
     const CameraFrame at_half = record.evaluate(0.5);
     CHECK(at_half.location == glm::dvec3(2, 0, -5));
     const glm::dvec3 d = glm::normalize(at_half.direction);
@@ -196,5 +205,5 @@ TEST_CASE("a camera driven by clock is evaluated at each time", "[camera]") {
 }
 
 TEST_CASE("location equal to look_at is an error", "[camera]") {
-    CHECK_THROWS(CameraRecord{{loc({1, 1, 1}), look({1, 1, 1})}}.evaluate(0.0));
+    CHECK_THROWS(camera_of({loc({1, 1, 1}), look({1, 1, 1})}).evaluate(0.0));
 }

@@ -107,6 +107,33 @@ TEST_CASE("a step function switches at its jumps exactly", "[runtime][switching]
     check_exact(half, q, range);
 }
 
+TEST_CASE("a step near clock 0, where doubles are dense, is decided", "[runtime][switching]") {
+    // int(2 + 3 * clock) from 0: the sum is within an ulp of 2 for some
+    // 2^60 doubles below 1e-16; its ends are exact there (interval.hpp
+    // tight_sum, tight_product), so the piece is decided whole instead of
+    // halved without end.
+    const TimeFunction step = TimeFunction::apply(TimeOp::Int, 2.0 + t * 3.0);
+    const auto pieces = rt::split_by_value(step, {{0.0, 1.0}}, 10000);
+    REQUIRE(pieces.size() == 4);
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+        CHECK(pieces[i].value == 2.0 + static_cast<double>(i));
+        CHECK(step(pieces[i].time.lo) == pieces[i].value);
+        CHECK(step(pieces[i].time.hi) == pieces[i].value);
+        if (i > 0) CHECK(step(before(pieces[i].time.lo)) == pieces[i - 1].value);
+    }
+    // Keys of several functions at once (str()'s text, chr()'s code).
+    const rt::KeyOf key = [](std::size_t which, double v) {
+        return which == 0 ? std::to_string(static_cast<long long>(std::floor(v * 2)))
+                          : std::to_string(static_cast<long long>(std::trunc(v)));
+    };
+    const auto keyed = rt::split_by_key({t, 2.0 + t * 3.0}, {{0.0, 0.9}}, 10000, key);
+    // Cuts at 1/3, 1/2 and 2/3 (doubles next to them).
+    REQUIRE(keyed.size() == 4);
+    CHECK(keyed[2].time.lo == 0.5);
+    CHECK(std::trunc(2.0 + keyed[1].time.lo * 3.0) == 3.0);
+    CHECK(std::trunc(2.0 + before(keyed[1].time.lo) * 3.0) == 2.0);
+}
+
 TEST_CASE("a split covers its domain, pieces in several intervals", "[runtime][switching]") {
     const TimeFunction c = TimeFunction::apply(TimeOp::Less, t, 0.6);
     const std::vector<rt::Interval> domain{{0.0, 0.2}, {0.5, 0.7}};

@@ -12,3 +12,10 @@ camera { location <0, 2, -10> + x * clock look_at 0 }
 light_source { <10, 10, -10> * (1 + clock), rgb 1 }
 // MegaPOV's motion_blur { } reads as a plain group: the blur is hexant's anyway.
 motion_blur { sphere { x * clock, 0.3 } }
+// Strings on clock: a counter's digits and a label, piecewise in time.
+#declare Label = concat("frame ", str(frame_number, -3, 0), " at ", str(clock, 0, 1));
+#if (strlen(Label) > 15 & strcmp(substr(Label, 7, 3), "004") >= 0)
+  sphere { <0, 3, 0>, 0.2 }
+#end
+#declare Code = chr(asc("A") + int(clock * 4));
+#debug concat(Code, "\n")
