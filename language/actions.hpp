@@ -253,8 +253,14 @@ HEXANT_ACTION(builtin_constant_name) {
                 const TimeFunction n = TimeFunction::apply(TimeOp::Floor, (t - a.initial_clock) / delta);
                 const TimeFunction start = a.initial_clock + n * delta;
                 const TimeFunction next = a.initial_clock + (n + 1.0) * delta;
-                const TimeFunction exact = n + TimeFunction::apply(TimeOp::GreaterEqual, t, next) -
-                                           TimeFunction::apply(TimeOp::Less, t, start);
+                // (A clock running backwards, delta < 0: a frame holds the
+                // times from its clock down to the next one's.)
+                const bool forward = delta > 0.0;
+                const TimeFunction past_next =
+                    TimeFunction::apply(forward ? TimeOp::GreaterEqual : TimeOp::LessEqual, t, next);
+                const TimeFunction before_start =
+                    TimeFunction::apply(forward ? TimeOp::Less : TimeOp::Greater, t, start);
+                const TimeFunction exact = n + past_next - before_start;
                 st.push(Value{TimeFunction::apply(TimeOp::Min, exact + double(a.initial_frame),
                                                   double(a.final_frame))});
             }
@@ -510,8 +516,11 @@ inline std::string message_text(const Value& value, const char* what) {
     if (!value.is<TimedString>()) return to_string_value(value, what);
     std::ostringstream out;
     out << std::setprecision(17);
-    for (const auto& piece : value.as<TimedString>().pieces)
+    for (const auto& piece : value.as<TimedString>().pieces) {
         out << "[clock " << piece.time.lo << " to " << piece.time.hi << "] " << piece.text;
+        // (One line a piece, whether or not the text ends its line.)
+        if (piece.text.empty() || piece.text.back() != '\n') out << '\n';
+    }
     return out.str();
 }
 

@@ -15,15 +15,25 @@ namespace hexant::language {
 using runtime::TimeOp;
 
 std::string format_number(double value, int length, int precision) {
-    char buffer[512];
+    // POV-Ray 3.7's Parse_Str: "%f" with the width (zero-padded when
+    // negative) and, when not negative, the precision ("%f" alone prints 6
+    // places); "%g" instead when "%f" would not fit its 255 characters
+    // (1e300 to 2 places).
     const bool zero_pad = length < 0;
     const int width = std::min(std::abs(length), 200);
-    if (precision < 0)
-        std::snprintf(buffer, sizeof buffer, zero_pad ? "%0*g" : "%*g", width, value);
-    else
-        std::snprintf(buffer, sizeof buffer, zero_pad ? "%0*.*f" : "%*.*f", width,
-                      std::min(precision, 100), value);
-    return buffer;
+    const auto print = [&](char conversion) {
+        char format[16];
+        std::snprintf(format, sizeof format, "%%%s*%s%c", zero_pad ? "0" : "", precision >= 0 ? ".*" : "",
+                      conversion);
+        char buffer[1024];
+        const int n = precision >= 0
+                          ? std::snprintf(buffer, sizeof buffer, format, width, std::min(precision, 100), value)
+                          : std::snprintf(buffer, sizeof buffer, format, width, value);
+        return std::pair<std::string, int>(buffer, n);
+    };
+    auto [text, n] = print('f');
+    if (n < 0 || n >= 255) text = print('g').first;
+    return text;
 }
 
 namespace {
@@ -247,7 +257,7 @@ const std::map<std::string, Builtin>& table() {
              expect_count(n, a, 3, 3);
              return Value{format_number(arg_constant(n, a, 0),
                                         static_cast<int>(checked_integer(arg_constant(n, a, 1), "str()'s length", -kMaxWidth, kMaxWidth)),
-                                        static_cast<int>(checked_integer(arg_constant(n, a, 2), "str()'s precision", -1, kMaxPrecision)))};
+                                        static_cast<int>(checked_integer(arg_constant(n, a, 2), "str()'s precision", -kMaxWidth, kMaxPrecision)))};
          }},
         {"vstr",
          [](const std::string& n, const Args& a, RandomStreams&) {
@@ -257,7 +267,7 @@ const std::map<std::string, Builtin>& table() {
              const Vector v = to_vector(a[1], "argument 2 of vstr()");
              const std::string& sep = arg_string(n, a, 2);
              const int len = static_cast<int>(checked_integer(arg_constant(n, a, 3), "vstr()'s length", -kMaxWidth, kMaxWidth));
-             const int prec = static_cast<int>(checked_integer(arg_constant(n, a, 4), "vstr()'s precision", -1, kMaxPrecision));
+             const int prec = static_cast<int>(checked_integer(arg_constant(n, a, 4), "vstr()'s precision", -kMaxWidth, kMaxPrecision));
              std::string out;
              for (int i = 0; i < std::clamp(dims, 1, 5); ++i) {
                  if (i) out += sep;
@@ -317,8 +327,14 @@ const std::map<std::string, Builtin>& table() {
         {"strcmp",
          [](const std::string& n, const Args& a, RandomStreams&) {
              expect_count(n, a, 2, 2);
-             const int c = arg_string(n, a, 0).compare(arg_string(n, a, 1));
-             return Value{TimeFunction(c < 0 ? -1.0 : c > 0 ? 1.0 : 0.0)};
+             // POV-Ray's UCS2_strcmp: the difference of the first characters
+             // that differ (the end of a string counting as 0).
+             const std::string &x = arg_string(n, a, 0), &y = arg_string(n, a, 1);
+             for (std::size_t i = 0;; ++i) {
+                 const int cx = i < x.size() ? static_cast<unsigned char>(x[i]) : 0;
+                 const int cy = i < y.size() ? static_cast<unsigned char>(y[i]) : 0;
+                 if (cx != cy || cx == 0) return Value{TimeFunction(static_cast<double>(cx - cy))};
+             }
          }},
         {"val",
          [](const std::string& n, const Args& a, RandomStreams&) {

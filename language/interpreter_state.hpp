@@ -13,11 +13,13 @@
 #include <deque>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <map>
 #include <memory>
 #include <new>
 #include <optional>
 #include <ostream>
+#include <sstream>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -146,7 +148,15 @@ public:
     // last one's closing.
     runtime::Interval animation_time() const {
         // (A clock that runs backwards, --clock 1:0, spans the same time.)
-        const double a = scene.animation.time_begin(), b = scene.animation.time_end();
+        const double a = scene.animation.time_begin();
+        double b = scene.animation.time_end();
+        // The last shutter's closing instant is not in the animation: a
+        // sample's time is below 1 of the shutter (2^-32 short at most), so
+        // no sample reaches it, and POV-Ray's last frame is at its opening.
+        // Without it, what the scene makes only there (a file named for
+        // the frame after the last) is not needed. A shutter of 0 (and a
+        // still) has its instants only.
+        if (scene.animation.shutter > 0.0 && b != a) b = b > a ? runtime::interval_detail::next_down(b) : runtime::interval_detail::next_up(b);
         return {std::min(a, b), std::max(a, b)};
     }
     // How many times the camera and the background were set: a side of a
@@ -684,6 +694,21 @@ void Interpreter::split_time(ParseInput& in, const p::position& at, const TimeFu
         watched_edits_ = 0;
         try {
             read(side == 0);
+        } catch (const p::parse_error& e) {
+            // Where in time the error is: from this side's first instant
+            // (POV-Ray stops at that clock's frame).
+            std::ostringstream note;
+            note << std::setprecision(17) << e.message() << " (at clock " << when.pieces().front().lo
+                 << ", on a side of the branch on clock at line " << at.line << ")";
+            domain = outer;
+            watched_block_ = watched;
+            watched_edits_ = edits;
+            (void)restore();
+            if (e.message().find(" (at clock ") != std::string_view::npos) throw;  // said once, innermost
+            p::parse_error amended(note.str(), e.positions().front());
+            for (std::size_t i = 1; i < e.positions().size(); ++i)
+                amended.add_position(p::position(e.positions()[i]));
+            throw amended;
         } catch (...) {
             domain = outer;
             watched_block_ = watched;
@@ -734,10 +759,10 @@ bool Interpreter::run_ifdef(ParseInput& in) {
     // Declared part of the time: a branch on the time it is declared.
     TimeFunction c = indicator(*when);
     if (negate) c = TimeFunction::apply(runtime::TimeOp::Not, c);
-    const auto at = in.position();
-    const runtime::TruthPieces pieces = split_domain(c, at);
+    // (The split is the directive's, as an #if's is.)
+    const runtime::TruthPieces pieces = split_domain(c, opened);
     if (const auto whole = whole_truth(pieces)) rest(*whole);
-    else split_time(in, at, c, pieces, rest);
+    else split_time(in, opened, c, pieces, rest);
     return true;
 }
 

@@ -124,10 +124,13 @@ std::optional<Value> merge_sides(const std::string& name, const TimeFunction& co
     const auto a_or_an = [](const std::string& kind) {
         return (std::string("aeiou").find(kind.front()) != std::string::npos ? "an " : "a ") + kind;
     };
-    const std::string other = a.v.index() == b.v.index() ? "a different " + type_name(b) : a_or_an(type_name(b));
-    throw ValueError(name + " is " + a_or_an(type_name(a)) + " on one side of this clock-dependent branch and " +
-                     other + " on the other; hexant makes floats, vectors, strings and objects piecewise "
-                     "in time, not yet other kinds of value");
+    if (a.v.index() != b.v.index() && !(is_string(a) && is_string(b)))
+        throw ValueError(name + " is " + a_or_an(type_name(a)) + " on one side of this clock-dependent "
+                         "branch and " + a_or_an(type_name(b)) + " on the other; a name keeps one kind "
+                         "of value across a branch on clock");
+    throw ValueError(name + " is a different " + type_name(a) + " on each side of this clock-dependent "
+                     "branch; hexant makes floats, vectors, strings and objects piecewise in time, not "
+                     "yet " + type_name(a) + "s");
 }
 
 }  // namespace hexant::language

@@ -90,7 +90,7 @@ std::optional<Value> call_over_time(const std::string& name, const std::vector<V
     if (precision_arg < args.size() && args[precision_arg].is<TimeFunction>() &&
         args[precision_arg].as<TimeFunction>().is_constant()) {
         const double p = args[precision_arg].as<TimeFunction>().constant();
-        if (p >= -1 && p <= 100) precision = static_cast<int>(p);
+        if (p >= -1.0e4 && p <= 100) precision = static_cast<int>(p);
     }
     const runtime::KeyOf key = [&](std::size_t which, double v) {
         switch (leaves[which].read) {
@@ -134,6 +134,10 @@ std::optional<Value> call_over_time(const std::string& name, const std::vector<V
                              " times over the animation (--max-time-pieces N raises the limit)");
     }
 
+    // The arguments each call reads, strings on clock replaced piece by
+    // piece (copying them whole for every piece was quadratic).
+    std::vector<Value> base = args;
+    for (const std::size_t i : strings) base[i] = Value{std::string()};
     std::vector<Interval> times;
     std::vector<Value> results;
     for (const Part& part : parts) {
@@ -145,7 +149,7 @@ std::optional<Value> call_over_time(const std::string& name, const std::vector<V
         }
         for (const auto& piece : pieces) {
             // Any instant of the piece reads the same: its start.
-            std::vector<Value> concrete = args;
+            std::vector<Value> concrete = base;
             for (std::size_t s = 0; s < strings.size(); ++s) concrete[strings[s]] = Value{part.texts[s]};
             for (const Leaf& leaf : leaves) {
                 const double v = leaf.f(piece.time.lo);

@@ -216,16 +216,13 @@ inline Interval operator*(const Interval& a, const Interval& b) {
 namespace interval_detail {
 
 // a + b and a * b with each end stepped outward only where it is inexact:
-// the ends of a sum by TwoSum, as point_sum; a product's corner with a zero
-// factor is exactly zero. For the time functions (time_ops_generic.hpp):
-// near clock 0, where doubles are dense, 2 + 3 * [0, m] stepped at every
-// end was [2 - ulp, ...] for every m below 1e-16, so `int(2 + 3 * clock)`
-// stayed undecided over some 2^60 doubles and the splitting of time ran
-// out of work (runtime/switching_instants.hpp); and stepping exact sums
-// widened integers, floor(...) + 1 over a piece inside one frame was
-// [3 - ulp, 3 + ulp], leaving `frame_number < 3` undecided at every size of
-// piece. Not used by operator+ and operator*: checking every sum cost about
-// a fifth of the sweeps' time (TwoSum on all, 10^5 objects).
+// the ends of a sum by TwoSum; a product's corner with a zero factor is
+// exactly zero. For the time functions (time_ops_generic.hpp), whose
+// bounds it keeps tight where they are exact: stepping exact sums widened
+// integers (floor(...) + 1 over a piece inside one frame was [3 - ulp,
+// 3 + ulp]) and 2 + 3 * [0, m] was [2 - ulp, ...] for every m below 1e-16.
+// Not used by operator+ and operator*: checking every sum cost about a
+// fifth of the sweeps' time (TwoSum on all, 10^5 objects).
 inline Interval tight_sum(const Interval& a, const Interval& b) {
     if (b.lo == 0.0 && b.hi == 0.0) return a;
     if (a.lo == 0.0 && a.hi == 0.0) return b;

@@ -26,8 +26,9 @@ public:
     Splitter(const std::vector<TimeFunction>& functions, std::size_t max_pieces, Labeller labeller)
         : labeller_(std::move(labeller)),
           tape_(TimeTape::compile(functions)),
-          intervals_(tape_.size()),
+          ranges_scratch_(tape_.size()),
           points_(tape_.size()),
+          point_ranges_(functions.size()),
           ranges_(functions.size()),
           values_(functions.size()),
           max_pieces_(max_pieces),
@@ -56,7 +57,9 @@ public:
                              " it changes without end, or stays within rounding of changing "
                              "(write it so that it is clearly one side there)");
         }
-        tape_.evaluate(t, ranges_.data(), intervals_.data());
+        // The point evaluation's possible values over t (point_range.hpp).
+        tape_.evaluate(PointRange(t), point_ranges_.data(), ranges_scratch_.data());
+        for (std::size_t i = 0; i < ranges_.size(); ++i) ranges_[i] = point_ranges_[i].v;
         if (auto label = labeller_.decide(ranges_)) return push(t, std::move(*label));
         using interval_detail::next_up;
         // Three doubles or fewer: each decided by itself.
@@ -101,8 +104,9 @@ private:
 
     Labeller labeller_;
     TimeTape tape_;
-    std::vector<Interval> intervals_;
+    std::vector<PointRange> ranges_scratch_;
     std::vector<double> points_;
+    std::vector<PointRange> point_ranges_;
     std::vector<Interval> ranges_;
     std::vector<double> values_;
     std::size_t max_pieces_;

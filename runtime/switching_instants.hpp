@@ -2,16 +2,18 @@
 // switching instants of a branch (#if, #while, #switch on a function of
 // time), found exactly.
 //
-// The condition's interval evaluation (time_tape.hpp, outward rounded)
-// decides a piece of time whole when its range is all true (|c| > 1e-10,
-// POV-Ray's truth) or all false; an undecided piece is halved, down to
-// neighbouring doubles, where the point evaluator decides each instant. So
-// a switch is placed between two neighbouring doubles, exactly where the
-// double evaluation of the condition changes its answer: for a continuous
-// condition the root of (left - right) to full precision, for a step
-// (int, floor, mod, frame_number) its jump, with no sampling. The interval
-// evaluator holds the point evaluator's value for every t of the piece,
-// so a piece decided whole is decided right at every double in it.
+// The range of the condition's point values over a piece of time
+// (runtime/point_range.hpp: an interval evaluation whose sums and products
+// round to nearest, the rest outward) decides the piece whole when it is
+// all true (|c| > 1e-10, POV-Ray's truth) or all false; an undecided piece
+// is halved, down to neighbouring doubles, where the point evaluator
+// decides each instant. So a switch is placed between two neighbouring
+// doubles, exactly where the double evaluation of the condition changes
+// its answer: for a continuous condition the root of (left - right) to
+// full precision, for a step (int, floor, mod, frame_number) its jump,
+// with no sampling. The range holds the point evaluator's value for every
+// t of the piece, so a piece decided whole is decided right at every
+// double in it.
 #pragma once
 
 #include <cstddef>

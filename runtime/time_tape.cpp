@@ -172,7 +172,12 @@ void TimeTape::evaluate(Number t, Number* outputs) const {
     }
 }
 
+PointRange TimeTape::spline_value(const Instruction& in, const PointRange& p) const {
+    return PointRange(spline_value(in, p.v));
+}
+
 template void TimeTape::evaluate<double>(double, double*, double*) const;
+template void TimeTape::evaluate<PointRange>(PointRange, PointRange*, PointRange*) const;
 template void TimeTape::evaluate<Interval>(Interval, Interval*, Interval*) const;
 template void TimeTape::evaluate<Dual>(Dual, Dual*, Dual*) const;
 template void TimeTape::evaluate<IntervalJet>(IntervalJet, IntervalJet*, IntervalJet*) const;

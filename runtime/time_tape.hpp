@@ -22,6 +22,7 @@
 #include "runtime/dual.hpp"
 #include "runtime/interval.hpp"
 #include "runtime/interval_jet.hpp"
+#include "runtime/point_range.hpp"
 #include "runtime/spline.hpp"
 #include "runtime/spline_bounds.hpp"
 #include "runtime/time_function.hpp"
@@ -65,6 +66,7 @@ class TimeTape {
     Interval spline_value(const Instruction& in, const Interval& p) const;
     Dual spline_value(const Instruction& in, const Dual& p) const;
     IntervalJet spline_value(const Instruction& in, const IntervalJet& p) const;
+    PointRange spline_value(const Instruction& in, const PointRange& p) const;
 
     std::vector<Instruction> code_;
     std::vector<std::uint32_t> outputs_;
@@ -74,6 +76,7 @@ class TimeTape {
 
 // Defined in time_tape.cpp for these three number types.
 extern template void TimeTape::evaluate<double>(double, double*, double*) const;
+extern template void TimeTape::evaluate<PointRange>(PointRange, PointRange*, PointRange*) const;
 extern template void TimeTape::evaluate<Interval>(Interval, Interval*, Interval*) const;
 extern template void TimeTape::evaluate<Dual>(Dual, Dual*, Dual*) const;
 extern template void TimeTape::evaluate<IntervalJet>(IntervalJet, IntervalJet*, IntervalJet*) const;

@@ -31,8 +31,11 @@ using runtime::Event;
 Box4 animation_root(const runtime::SceneDescription& scene, const ObjectSet& objects, int first,
                     int last) {
     const auto& a = scene.animation;
-    const double begin = a.clock_of_frame(first);
-    const double end = a.clock_of_frame(last) + a.shutter * a.clock_delta();
+    // (A clock that runs backwards, --clock 2:1, spans the same time the
+    // other way: the root's time is its smaller end to its larger.)
+    const double from = a.clock_of_frame(first);
+    const double to = a.clock_of_frame(last) + a.shutter * a.clock_delta();
+    const double begin = std::min(from, to), end = std::max(from, to);
     Box4 root = enclosing_box(objects, begin, end);
     const auto add = [&](const glm::dvec3& p) {
         root.extend(Event(p, begin));
@@ -105,8 +108,8 @@ Renderer::Renderer(const runtime::SceneDescription& scene, const RenderSettings&
         for (const auto& light : scene.lights) lights += light.shadowless ? 0.0 : 1.0;
         build.rays_per_frame = double(scene.animation.width) * scene.animation.height *
                                std::max(1, settings.samples_per_pixel) * (1.0 + lights);
-        build.frame_interval = scene.animation.clock_delta();
-        build.shutter_time = scene.animation.shutter * scene.animation.clock_delta();
+        build.frame_interval = std::fabs(scene.animation.clock_delta());
+        build.shutter_time = std::fabs(scene.animation.shutter * scene.animation.clock_delta());
     }
     query_ = make_ray_query(settings.mode, set, root_, build, counters_);
     shader_ = std::make_unique<Shader>(scene, *query_);
@@ -122,7 +125,7 @@ Image Renderer::render_frame(int frame) {
     const auto& a = scene_.animation;
     const double open = a.clock_of_frame(frame);
     const double length = a.shutter * a.clock_delta();
-    query_->prepare_frame(open, open + length, counters_);
+    query_->prepare_frame(std::min(open, open + length), std::max(open, open + length), counters_);
 
     const int width = a.width, height = a.height;
     const int spp = std::max(1, settings_.samples_per_pixel);

@@ -27,6 +27,12 @@ namespace rt = hexant::runtime;
 
 namespace {
 
+SceneDescription read_with(const std::string& text, ParseOptions options) {
+    std::ostringstream ignored;
+    options.messages = &ignored;
+    return hexant::language::parse_scene_text(text, "test.pov", options);
+}
+
 SceneDescription read(const std::string& text, std::ostringstream* messages = nullptr) {
     ParseOptions options = animation();
     std::ostringstream ignored;
@@ -157,3 +163,36 @@ TEST_CASE("strings on clock: the piece limit and where one string is needed", "[
     const auto font = error_of("#declare S = str(clock, 0, 1); #version S;\n", animation());
     CHECK(font.formatted().find("test.pov:1:") != std::string::npos);
 }
+
+TEST_CASE("frame_number of a clock that runs backwards, and the last shutter closing", "[language][time]") {
+    ParseOptions options = animation();
+    options.animation.final_frame = 3;
+    options.animation.initial_clock = 2.0;
+    options.animation.final_clock = 1.0;
+    const auto scene = read_with("#if (frame_number = 2) sphere { 0, 1 } #end\n", options);
+    // Frame 2 opens at clock 1.5 and runs down to frame 3's 1: (1, 1.5].
+    REQUIRE(scene.objects.size() == 1);
+    const rt::Lifetime& two = scene.objects[0]->lifetime;
+    CHECK(two.contains(1.5));
+    CHECK_FALSE(two.contains(after(1.5)));
+    CHECK(two.contains(after(1.0)));
+    CHECK_FALSE(two.contains(1.0));
+    // The animation's time ends before the last shutter closes (no sample
+    // is there): a string of the frame after the last is never made.
+    std::ostringstream messages;
+    const auto last = read("#debug str(int(clock * 7), 0, 0)\n", &messages);
+    CHECK(messages.str().find("] 8") == std::string::npos);
+    CHECK(messages.str().find("] 7") != std::string::npos);
+}
+
+TEST_CASE("str() with a negative precision and strcmp() as POV-Ray gives them", "[language][time]") {
+    std::ostringstream messages;
+    read("#debug concat(str(1/3, 0, -2), \"|\", str(2, 5, -1), \"|\", str(strcmp(\"a\", \"c\"), 0, 0), \"|\",\n"
+         "             str(strcmp(\"abc\", \"ab\"), 0, 0), \"|\", str(strcmp(\"ab\", \"ab\"), 0, 0), \"\\n\")\n",
+         &messages);
+    // POV-Ray's Parse_Str prints "%f" (six places) for any negative
+    // precision; UCS2_strcmp gives the difference of the first characters
+    // that differ.
+    CHECK(messages.str() == "0.333333|2.000000|-2|99|0\n");
+}
+

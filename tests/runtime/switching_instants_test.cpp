@@ -121,6 +121,16 @@ TEST_CASE("a step near clock 0, where doubles are dense, is decided", "[runtime]
         CHECK(step(pieces[i].time.hi) == pieces[i].value);
         if (i > 0) CHECK(step(before(pieces[i].time.lo)) == pieces[i - 1].value);
     }
+    // 10 - 10 * clock is exactly 10 in doubles for clock below about
+    // 9e-17, and below 10 in reals: the range of point values
+    // (point_range.hpp) decides the first piece, [0, 8.9e-17].
+    const TimeFunction down = TimeFunction::apply(TimeOp::Int, 10.0 - t * 10.0);
+    const auto countdown = rt::split_by_value(down, {{0.0, 1.0}}, 10000);
+    REQUIRE(countdown.size() == 11);
+    CHECK(countdown[0].value == 10.0);
+    CHECK(countdown[0].time.hi < 1e-16);
+    CHECK(down(countdown[0].time.hi) == 10.0);
+    CHECK(down(countdown[1].time.lo) == 9.0);
     // Keys of several functions at once (str()'s text, chr()'s code).
     const rt::KeyOf key = [](std::size_t which, double v) {
         return which == 0 ? std::to_string(static_cast<long long>(std::floor(v * 2)))

@@ -79,6 +79,26 @@ TEST_CASE("spacetime, frames and brute force render the same images", "[tracer][
     }
 }
 
+TEST_CASE("a clock that runs backwards renders the same in the three modes", "[tracer][render]") {
+    // --clock 1:0: the frames' shutters run from each clock down to the
+    // next; the hierarchy spans the same time the other way (it spanned
+    // none, and spacetime and frames modes drew nothing).
+    hexant::language::ParseOptions options;
+    options.animation.width = 40;
+    options.animation.height = 30;
+    options.animation.initial_frame = 1;
+    options.animation.final_frame = 4;
+    options.animation.initial_clock = 1.0;
+    options.animation.final_clock = 0.0;
+    const auto scene = hexant::language::parse_scene_text(kScene, "render-test.pov", options);
+    const tr::Image brute = render(scene, tr::Mode::Brute, 2);
+    CHECK(largest_difference(render(scene, tr::Mode::Spacetime, 2), brute) == 0.0);
+    CHECK(largest_difference(render(scene, tr::Mode::Frames, 2), brute) == 0.0);
+    double sum = 0.0;
+    for (float v : brute.rgb) sum += v;
+    CHECK(sum > 0.1 * brute.rgb.size());
+}
+
 TEST_CASE("the image does not depend on the thread count", "[tracer][render]") {
     const auto scene = parse_scene();
     const tr::Image one = render(scene, tr::Mode::Spacetime, 2, 1);
