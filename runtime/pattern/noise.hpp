@@ -1,0 +1,45 @@
+// POV-Ray 3.7's solid noise, as its patterns and turbulence read it
+// (source/backend/texture/texture.cpp: Noise, DNoise, Turbulence,
+// DTurbulence, cycloidal, Triangle_Wave), so that a pattern built on it
+// gives POV-Ray's value at every point, to rounding. The lattice hash and
+// the Perlin gradients are made by POV-Ray's own generator; the gradient
+// table was recorded from POV-Ray's output (noise_table.cpp).
+#pragma once
+
+#include <glm/vec3.hpp>
+
+namespace hexant::runtime::pattern {
+
+// global_settings { noise_generator N }: 1 the original (clamped to
+// [0, 1]), 2 range-corrected (POV-Ray 3.7's default), 3 Perlin's improved
+// solid noise.
+inline constexpr int kDefaultNoiseGenerator = 2;
+
+// The scalar noise at p: in [0, 1].
+double noise(const glm::dvec3& p, int generator);
+// The vector noise at p (each component about in [-1, 1]); POV-Ray has
+// one generator for it.
+glm::dvec3 dnoise(const glm::dvec3& p);
+
+// Fractal sums of octaves: octave i (from 1) reads the noise at
+// p * lambda^(i-1), weighted omega^(i-1). Octaves are 1 to 10 (POV-Ray
+// clamps them so when it reads them).
+struct Octaves {
+    int octaves = 6;
+    double omega = 0.5;
+    double lambda = 2.0;
+};
+// Octaves from a scene's numbers as POV-Ray keeps them: the count
+// truncated and clamped to 1..10, omega and lambda stored in single
+// precision (its TURB record's SNGL fields; an omega of 0.6 is
+// 0.60000002384 there, which moves four octaves of turbulence by 1e-8).
+Octaves octaves_of(double octaves, double omega, double lambda);
+double turbulence(const glm::dvec3& p, const Octaves& o, int generator);
+glm::dvec3 dturbulence(const glm::dvec3& p, const Octaves& o);
+
+// sin(2 pi v) as POV-Ray computes it for its waves (the fraction rounded
+// through 50000ths); and the triangle wave: 0 at integers, 1 halfway.
+double cycloidal(double v);
+double triangle_wave(double v);
+
+}  // namespace hexant::runtime::pattern
