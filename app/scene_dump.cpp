@@ -62,8 +62,10 @@ std::string texture(const runtime::Texture& texture, double t) {
     const auto& p = texture.pigment;
     switch (p.pattern) {
         case runtime::Pigment::Pattern::Solid: s = "pigment=solid" + colour(p.colours[0], t); break;
-        case runtime::Pigment::Pattern::Checker:
-            s = "pigment=checker" + colour(p.colours[0], t) + colour(p.colours[1], t);
+        case runtime::Pigment::Pattern::Patterned:
+            // The kind, then its map's entries at t (value and colour).
+            s = "pigment=" + std::string(p.patterned.kind->name);
+            for (const auto& e : p.colour_map.entries) s += " " + number(e.value(t)) + colour(e.colour, t);
             break;
         case runtime::Pigment::Pattern::Unsupported: s = "pigment=" + p.unsupported_name; break;
     }

@@ -52,6 +52,10 @@ HEXANT_NAME_ACTION(declare_name);
 HEXANT_NAME_ACTION(for_variable);
 HEXANT_NAME_ACTION(deformation_name);
 HEXANT_NAME_ACTION(unsupported_pattern_name);
+HEXANT_NAME_ACTION(pattern_name);
+HEXANT_NAME_ACTION(pattern_setting_name);
+HEXANT_NAME_ACTION(pattern_wave_name);
+HEXANT_NAME_ACTION(warp_setting_name);
 HEXANT_NAME_ACTION(finish_setting_name);
 HEXANT_NAME_ACTION(csg_kind);
 HEXANT_NAME_ACTION(object_flag_name);
@@ -663,24 +667,203 @@ HEXANT_ACTION(pigment_base) {
         if (v.is<runtime::Pigment>()) {
             pigment = v.as<runtime::Pigment>();
         } else {
-            pigment = runtime::Pigment{};
+            pigment = runtime::Pigment();
             pigment.colours = {to_colour(v, "a pigment")};
         }
     }
 };
-HEXANT_ACTION(checker_pattern) {
+// ---- patterns (runtime/pattern/pattern.hpp)
+
+HEXANT_ACTION(pattern_kind) {
     HEXANT_APPLY {
-        std::vector<Value> colours = st.close_frame();
-        auto& pigment = st.block<runtime::Pigment>(in.position(), "checker");
-        pigment.pattern = runtime::Pigment::Pattern::Checker;
-        if (colours.empty()) {
-            // POV-Ray's default checker colours: blue and green.
-            pigment.colours = {runtime::ColourFunction{{0.0, 0.0, 1.0, 0.0, 0.0}},
-                               runtime::ColourFunction{{0.0, 1.0, 0.0, 0.0, 0.0}}};
-        } else {
-            pigment.colours = {to_colour(colours[0], "checker's first colour"),
-                               to_colour(colours[1], "checker's second colour")};
+        std::vector<Value> args = st.close_frame();
+        const std::string name = st.pop_name();
+        auto& pigment = st.block<runtime::Pigment>(in.position(), "a pattern");
+        const runtime::pattern::Kind* kind = runtime::pattern::find_kind(name);
+        if (kind == nullptr) throw ValueError("no pattern " + name);
+        pigment.pattern = runtime::Pigment::Pattern::Patterned;
+        pigment.patterned = runtime::pattern::Pattern::of(*kind);
+        pigment.colour_map = {};
+        using A = runtime::pattern::Kind::Argument;
+        const auto count = [&](std::size_t lo, std::size_t hi, const char* what) {
+            if (args.size() < lo || args.size() > hi)
+                throw ValueError(name + " takes " + what + ", not " + std::to_string(args.size()) + " values");
+        };
+        switch (kind->argument) {
+            case A::None: count(0, 0, "no value after it"); break;
+            case A::Vector: {
+                count(1, 1, "one vector (its direction)");
+                // POV-Ray normalizes the direction.
+                const runtime::Vector3Function v = to_vector3(args[0], name + "'s direction");
+                const TimeFunction length = TimeFunction::apply(
+                    TimeOp::Sqrt, v.c[0] * v.c[0] + v.c[1] * v.c[1] + v.c[2] * v.c[2]);
+                if (length.is_constant() && length.constant() == 0.0)
+                    throw ValueError(name + "'s direction is the zero vector");
+                for (int i = 0; i < 3; ++i) pigment.patterned.vector.c[i] = v.c[i] / length;
+                break;
+            }
+            case A::Number:
+                count(1, 1, "one number");
+                // (POV-Ray keeps the arms and the iterations as integers.)
+                pigment.patterned.number[0] =
+                    TimeFunction::apply(TimeOp::Int, to_float(args[0], name + "'s number"));
+                break;
+            case A::Colours: {
+                count(0, static_cast<std::size_t>(kind->colours),
+                      kind->colours == 2 ? "at most 2 colours" : "at most 3 colours");
+                // A blend list: colour i at value i, the kind's default
+                // where none is given.
+                for (std::size_t i = 0; i < static_cast<std::size_t>(kind->colours); ++i) {
+                    runtime::ColourMapEntry e;
+                    e.value = static_cast<double>(i);
+                    if (i < args.size()) {
+                        e.colour = to_colour(args[i], name + "'s colour " + std::to_string(i + 1));
+                    } else {
+                        const auto& d = kind->default_map[i].colour;
+                        e.colour = runtime::ColourFunction{{d[0], d[1], d[2], d[3], d[4]}};
+                    }
+                    pigment.colour_map.entries.push_back(std::move(e));
+                }
+                break;
+            }
         }
+    }
+};
+
+HEXANT_ACTION(pattern_setting) {
+    HEXANT_APPLY {
+        Value v = st.pop();
+        const std::string name = st.pop_name();
+        auto& pigment = st.block<runtime::Pigment>(in.position(), name.c_str());
+        runtime::pattern::Pattern& pattern = pigment.patterned;
+        const std::string kind = pattern.kind ? std::string(pattern.kind->name) : "";
+        const auto only = [&](const char* for_kind) {
+            if (kind != for_kind) throw ValueError(name + " belongs to " + for_kind + ", not to " +
+                                                   (kind.empty() ? std::string("a plain colour") : kind));
+        };
+        // Classic turbulence, made by the first of its settings (POV-Ray's Check_Turb).
+        const auto turbulence = [&]() -> runtime::pattern::Turbulence& {
+            if (!pattern.turbulence) pattern.turbulence.emplace();
+            return *pattern.turbulence;
+        };
+        if (name == "frequency") pattern.frequency = to_float(v, "frequency");
+        else if (name == "phase") pattern.phase = to_float(v, "phase");
+        else if (name == "turbulence") turbulence().amount = to_vector3(v, "turbulence");
+        else if (name == "octaves") turbulence().octaves = to_float(v, "octaves");
+        else if (name == "omega") turbulence().omega = to_float(v, "omega");
+        else if (name == "lambda") turbulence().lambda = to_float(v, "lambda");
+        else if (name == "mortar") { only("brick"); pattern.number[0] = to_float(v, "mortar"); }
+        else if (name == "brick_size") {
+            only("brick");
+            const runtime::Vector3Function size = to_vector3(v, "brick_size");
+            pattern.vector = size;
+        }
+        else if (name == "control0") { only("quilted"); pattern.number[0] = to_float(v, "control0"); }
+        else if (name == "control1") { only("quilted"); pattern.number[1] = to_float(v, "control1"); }
+        else if (name == "agate_turb") { only("agate"); pattern.number[0] = to_float(v, "agate_turb"); }
+        else if (name == "noise_generator") {
+            pattern.noise_generator =
+                static_cast<int>(checked_integer(to_constant(v, "noise_generator"), "noise_generator", 1, 3));
+        }
+    }
+};
+
+HEXANT_ACTION(pattern_wave) {
+    HEXANT_APPLY {
+        std::vector<Value> args = st.close_frame();
+        const std::string name = st.pop_name();
+        auto& pattern = st.block<runtime::Pigment>(in.position(), name.c_str()).patterned;
+        using W = runtime::pattern::Wave;
+        if (name != "poly_wave" && !args.empty()) throw ValueError(name + " takes no value");
+        pattern.wave = name == "ramp_wave"       ? W::Ramp
+                       : name == "sine_wave"     ? W::Sine
+                       : name == "triangle_wave" ? W::Triangle
+                       : name == "scallop_wave"  ? W::Scallop
+                       : name == "cubic_wave"    ? W::Cubic
+                                                 : W::Poly;
+        if (name == "poly_wave") pattern.exponent = args.empty() ? TimeFunction(1.0) : to_float(args[0], "poly_wave");
+    }
+};
+
+HEXANT_ACTION(warp_open) {
+    HEXANT_APPLY {
+        // The transforms written so far come before this warp (applied
+        // after it, world to pattern): they become a step of their own.
+        auto& pigment = st.block<runtime::Pigment>(in.position(), "warp");
+        if (!pigment.transform.empty()) {
+            runtime::pattern::Warp step;
+            step.transform = pigment.transform;
+            pigment.patterned.warps.push_back(std::move(step));
+            pigment.transform = {};
+        }
+        pigment.patterned.warps.push_back(runtime::pattern::Warp{});
+    }
+};
+HEXANT_ACTION(warp_turbulence) {
+    HEXANT_APPLY {
+        Value v = st.pop();
+        auto& pigment = st.block<runtime::Pigment>(in.position(), "warp");
+        pigment.patterned.warps.back().turbulence.amount = to_vector3(v, "warp's turbulence");
+    }
+};
+HEXANT_ACTION(warp_setting) {
+    HEXANT_APPLY {
+        Value v = st.pop();
+        const std::string name = st.pop_name();
+        auto& turbulence = st.block<runtime::Pigment>(in.position(), "warp").patterned.warps.back().turbulence;
+        if (name == "octaves") turbulence.octaves = to_float(v, "octaves");
+        else if (name == "omega") turbulence.omega = to_float(v, "omega");
+        else turbulence.lambda = to_float(v, "lambda");
+    }
+};
+
+HEXANT_ACTION(colour_map_open) {
+    HEXANT_APPLY { (void)in; st.blocks.emplace_back(std::in_place_type<runtime::ColourMap>); }
+};
+HEXANT_ACTION(colour_map_base) {
+    HEXANT_APPLY {
+        Value v = st.pop();
+        if (!v.is<runtime::ColourMap>()) throw ValueError("color_map { } starts with a color_map, not a " + type_name(v));
+        st.block<runtime::ColourMap>(in.position(), "a color_map") = v.as<runtime::ColourMap>();
+    }
+};
+HEXANT_ACTION(colour_map_entry) {
+    HEXANT_APPLY {
+        std::vector<Value> items = st.close_frame();
+        auto& map = st.block<runtime::ColourMap>(in.position(), "a color_map entry");
+        // [value colour], or POV-Ray's older [value1, value2 colour1 colour2].
+        if (items.size() == 2) {
+            map.entries.push_back({to_float(items[0], "a color_map entry's value"),
+                                   to_colour(items[1], "a color_map entry's colour")});
+        } else if (items.size() == 4) {
+            map.entries.push_back({to_float(items[0], "a color_map entry's first value"),
+                                   to_colour(items[2], "a color_map entry's first colour")});
+            map.entries.push_back({to_float(items[1], "a color_map entry's second value"),
+                                   to_colour(items[3], "a color_map entry's second colour")});
+        } else {
+            throw ValueError("a color_map entry is [value colour] (or [value1, value2 colour1 colour2]), not " +
+                             std::to_string(items.size()) + " values");
+        }
+        if (map.entries.size() > 256) throw ValueError("a color_map has at most 256 entries, as in POV-Ray");
+    }
+};
+HEXANT_ACTION(colour_map_block) {
+    HEXANT_APPLY {
+        auto& map = st.block<runtime::ColourMap>(in.position(), "a color_map");
+        if (map.entries.empty()) throw ValueError("a color_map needs at least one entry");
+        Value v{std::move(map)};
+        st.blocks.pop_back();
+        st.push(std::move(v));
+    }
+};
+HEXANT_ACTION(pigment_colour_map) {
+    HEXANT_APPLY {
+        Value v = st.pop();
+        auto& pigment = st.block<runtime::Pigment>(in.position(), "color_map");
+        if (pigment.patterned.kind && pigment.patterned.kind->argument == runtime::pattern::Kind::Argument::Colours)
+            throw ValueError(std::string("a color_map cannot go with ") + std::string(pigment.patterned.kind->name) +
+                             " (its colours follow its name), as in POV-Ray");
+        pigment.colour_map = v.as<runtime::ColourMap>();
     }
 };
 HEXANT_ACTION(unsupported_pattern) {

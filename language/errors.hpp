@@ -68,7 +68,13 @@ HEXANT_ERROR(transform_argument, "expected '{' or a declared transform after tra
 HEXANT_ERROR(transform_block, "expected '{' after transform");
 HEXANT_ERROR(deformation_axis, "expected an axis vector after the deformation");
 HEXANT_ERROR(deformation_amount, "expected an amount after the deformation's axis");
-HEXANT_ERROR(checker_colour, "expected a second colour for checker");
+HEXANT_ERROR(pattern_setting_value, "expected a value after the pattern modifier");
+HEXANT_ERROR(warp_turbulence_keyword,
+             "expected turbulence in warp { } (hexant's warps are turbulence; repeat, black_hole "
+             "and the mapping warps are not supported)");
+HEXANT_ERROR(warp_turbulence, "expected the turbulence's amount (a vector or a number)");
+HEXANT_ERROR(colour_map_item, "expected a value and a colour in the colour map's entry");
+HEXANT_ERROR(rbracket, "expected ']'");
 HEXANT_ERROR(finish_setting_value, "expected a value after the finish setting");
 HEXANT_ERROR(reflection_amount, "expected a value or '{' after reflection");
 HEXANT_ERROR(reflection_value, "expected a value in reflection { }");

@@ -205,9 +205,14 @@ struct paren_expression : p::seq<lparen, p::must<paren_content>, p::must<paren_c
 struct vector_open : langle {};
 struct vector_close : rangle {};
 struct vector_component : p::seq<sum> {};
+// As POV-Ray reads vectors: the commas between components may be left out
+// (woods.inc writes `< -1 0 0 >`; `<1 -1>` is then 1 - 1, in POV-Ray too)
+// and a comma may end the list (`rgb <0.2, 0.1, 0.5,>`).
 struct vector_literal
     : p::seq<vector_open, frame_open, p::must<vector_component>,
-             p::star<comma, p::must<vector_component>>, p::must<vector_close>> {};
+             p::star<p::sor<p::seq<comma, p::not_at<vector_close>, p::must<vector_component>>,
+                            vector_component>>,
+             p::opt<comma>, p::must<vector_close>> {};
 
 // Built-in functions; the name picks the implementation (builtins.cpp).
 struct function_words {
@@ -523,40 +528,80 @@ HEXANT_KEYWORD(kw_texture, "texture");
 HEXANT_KEYWORD(kw_normal, "normal");
 HEXANT_KEYWORD(kw_interior, "interior");
 HEXANT_KEYWORD(kw_material, "material");
-HEXANT_KEYWORD(kw_checker, "checker");
 
 // Patterns POV-Ray has and hexant does not: parsed, kept by name, an error
 // only where a scene uses them.
 struct unsupported_pattern_name
-    : p::sor<TAO_PEGTL_KEYWORD("agate"), TAO_PEGTL_KEYWORD("average"),
-             TAO_PEGTL_KEYWORD("boxed"), TAO_PEGTL_KEYWORD("bozo"), TAO_PEGTL_KEYWORD("brick"),
-             TAO_PEGTL_KEYWORD("bumps"), TAO_PEGTL_KEYWORD("cells"), TAO_PEGTL_KEYWORD("crackle"),
-             TAO_PEGTL_KEYWORD("cylindrical"), TAO_PEGTL_KEYWORD("dents"),
-             TAO_PEGTL_KEYWORD("facets"), TAO_PEGTL_KEYWORD("gradient"),
-             TAO_PEGTL_KEYWORD("granite"), TAO_PEGTL_KEYWORD("hexagon"),
-             TAO_PEGTL_KEYWORD("leopard"), TAO_PEGTL_KEYWORD("marble"), TAO_PEGTL_KEYWORD("onion"),
-             TAO_PEGTL_KEYWORD("planar"), TAO_PEGTL_KEYWORD("quilted"), TAO_PEGTL_KEYWORD("radial"),
-             TAO_PEGTL_KEYWORD("ripples"), TAO_PEGTL_KEYWORD("spherical"),
-             TAO_PEGTL_KEYWORD("spiral1"), TAO_PEGTL_KEYWORD("spiral2"),
-             TAO_PEGTL_KEYWORD("spotted"), TAO_PEGTL_KEYWORD("waves"), TAO_PEGTL_KEYWORD("wood"),
-             TAO_PEGTL_KEYWORD("wrinkles"), TAO_PEGTL_KEYWORD("image_map"),
-             TAO_PEGTL_KEYWORD("color_map"), TAO_PEGTL_KEYWORD("colour_map"),
-             TAO_PEGTL_KEYWORD("pigment_map"), TAO_PEGTL_KEYWORD("function"),
-             TAO_PEGTL_KEYWORD("julia"), TAO_PEGTL_KEYWORD("mandel"), TAO_PEGTL_KEYWORD("pavement"),
+    : p::sor<TAO_PEGTL_KEYWORD("average"), TAO_PEGTL_KEYWORD("boxed"), TAO_PEGTL_KEYWORD("cells"),
+             TAO_PEGTL_KEYWORD("crackle"), TAO_PEGTL_KEYWORD("cylindrical"),
+             TAO_PEGTL_KEYWORD("facets"), TAO_PEGTL_KEYWORD("planar"), TAO_PEGTL_KEYWORD("spherical"),
+             TAO_PEGTL_KEYWORD("image_map"), TAO_PEGTL_KEYWORD("pigment_map"),
+             TAO_PEGTL_KEYWORD("function"), TAO_PEGTL_KEYWORD("julia"), TAO_PEGTL_KEYWORD("pavement"),
              TAO_PEGTL_KEYWORD("tiling"), TAO_PEGTL_KEYWORD("cubic"), TAO_PEGTL_KEYWORD("object"),
              TAO_PEGTL_KEYWORD("slope"), TAO_PEGTL_KEYWORD("aoi"), TAO_PEGTL_KEYWORD("density_file"),
              TAO_PEGTL_KEYWORD("image_pattern"), TAO_PEGTL_KEYWORD("uv_mapping"),
              TAO_PEGTL_KEYWORD("wave")> {};
 struct unsupported_pattern : p::seq<unsupported_pattern_name, skip::until_rbrace> {};
 
-struct checker_colour : p::seq<sum> {};
-struct checker_pattern
-    : p::seq<kw_checker, frame_open, p::opt<checker_colour, p::opt<comma>, p::must<checker_colour>>> {};
+// The patterns hexant has (runtime/pattern/registry.cpp, the same names),
+// each followed by what its kind takes: a vector (gradient), a number
+// (spiral1, spiral2, mandel) or a list of colours (checker, brick,
+// hexagon).
+struct pattern_words {
+    static constexpr std::array<std::string_view, 22> list = {
+        "agate", "bozo", "brick", "bumps", "checker", "dents", "gradient", "granite",
+        "hexagon", "leopard", "mandel", "marble", "onion", "quilted", "radial", "ripples",
+        "spiral1", "spiral2", "spotted", "waves", "wood", "wrinkles"};
+};
+struct pattern_name : one_word_of<pattern_words> {};
+struct pattern_argument : p::seq<sum> {};
+struct pattern_kind
+    : p::seq<pattern_name, ws, frame_open,
+             p::opt<pattern_argument, p::star<p::opt<comma>, pattern_argument>>> {};
+// The pattern modifiers (POV-Ray's Parse_Pattern), each with one value.
+struct pattern_setting_name
+    : p::sor<TAO_PEGTL_KEYWORD("frequency"), TAO_PEGTL_KEYWORD("phase"),
+             TAO_PEGTL_KEYWORD("turbulence"), TAO_PEGTL_KEYWORD("octaves"),
+             TAO_PEGTL_KEYWORD("omega"), TAO_PEGTL_KEYWORD("lambda"), TAO_PEGTL_KEYWORD("mortar"),
+             TAO_PEGTL_KEYWORD("brick_size"), TAO_PEGTL_KEYWORD("control0"),
+             TAO_PEGTL_KEYWORD("control1"), TAO_PEGTL_KEYWORD("agate_turb"),
+             TAO_PEGTL_KEYWORD("noise_generator")> {};
+struct pattern_setting_value : p::seq<expression> {};
+struct pattern_setting : p::seq<pattern_setting_name, ws, p::must<pattern_setting_value>> {};
+struct pattern_wave_name
+    : p::sor<TAO_PEGTL_KEYWORD("ramp_wave"), TAO_PEGTL_KEYWORD("sine_wave"),
+             TAO_PEGTL_KEYWORD("triangle_wave"), TAO_PEGTL_KEYWORD("scallop_wave"),
+             TAO_PEGTL_KEYWORD("cubic_wave"), TAO_PEGTL_KEYWORD("poly_wave")> {};
+struct pattern_wave : p::seq<pattern_wave_name, ws, frame_open, p::opt<pattern_argument>> {};
+// warp { turbulence <x, y, z> [octaves N] [omega W] [lambda L] }
+struct warp_turbulence_keyword : TAO_PEGTL_KEYWORD("turbulence") {};
+struct warp_setting_name
+    : p::sor<TAO_PEGTL_KEYWORD("octaves"), TAO_PEGTL_KEYWORD("omega"), TAO_PEGTL_KEYWORD("lambda")> {};
+struct warp_setting : p::seq<warp_setting_name, ws, p::must<pattern_setting_value>> {};
+struct warp_open : p::seq<TAO_PEGTL_KEYWORD("warp"), ws, p::must<lbrace>> {};
+struct warp_turbulence : p::seq<pattern_setting_value> {};
+struct warp_block
+    : p::seq<warp_open, p::must<warp_turbulence_keyword>, ws, p::must<warp_turbulence>,
+             p::star<warp_setting>, p::must<rbrace>> {};
+
+// color_map { [value colour] ... }, or a declared one; POV-Ray's older
+// [value1, value2 colour1 colour2] too.
+struct colour_map_open
+    : p::seq<p::sor<TAO_PEGTL_KEYWORD("color_map"), TAO_PEGTL_KEYWORD("colour_map")>, ws, p::must<lbrace>> {};
+struct colour_map_base : p::seq<expression> {};
+struct colour_map_item : p::seq<sum> {};
+struct colour_map_entry
+    : p::seq<lbracket, frame_open, p::must<colour_map_item>,
+             p::star<p::opt<comma>, colour_map_item>, p::must<rbracket>> {};
+struct colour_map_block
+    : p::seq<colour_map_open, p::opt<colour_map_base>, p::star<colour_map_entry>, p::must<rbrace>> {};
+struct pigment_colour_map : p::seq<colour_map_block> {};
+
 struct pigment_open : p::seq<kw_pigment, p::must<lbrace>> {};
-struct pigment_base : p::seq<p::not_at<kw_checker>, expression> {};
+struct pigment_base : p::seq<p::not_at<pattern_name>, expression> {};
 struct pigment_item
-    : p::sor<directive<pigment_item>, macro_call<pigment_item>, checker_pattern,
-             unsupported_pattern, transformation> {};
+    : p::sor<directive<pigment_item>, macro_call<pigment_item>, pattern_kind, pattern_setting,
+             pattern_wave, warp_block, pigment_colour_map, unsupported_pattern, transformation> {};
 struct pigment_block
     : p::seq<pigment_open, p::opt<pigment_base>, p::star<pigment_item>, p::must<rbrace>> {};
 
@@ -896,7 +941,7 @@ struct material_value : p::seq<material_block> {};
 struct texture_value : p::seq<texture_block, p::star<texture_layer>> {};
 
 struct value
-    : p::sor<object_value, camera_block, texture_value, pigment_block, finish_block,
+    : p::sor<object_value, camera_block, texture_value, pigment_block, colour_map_block, finish_block,
              interior_block, material_value, transform_value, array_value, spline_block,
              unsupported_block, expression> {};
 

@@ -56,7 +56,8 @@ struct MaterialBuilder {
 
 // A block under construction: `sphere { ... }`, `texture { ... }` ...
 using Block = std::variant<runtime::ObjectRecord, runtime::LightRecord, runtime::CameraRecord,
-                           runtime::Texture, runtime::Pigment, runtime::Finish, runtime::Interior,
+                           runtime::Texture, runtime::Pigment, runtime::ColourMap, runtime::Finish,
+                           runtime::Interior,
                            runtime::Transform, SplineBuilder, MaterialBuilder>;
 
 // What a std::bad_alloc while reading becomes, at its place.

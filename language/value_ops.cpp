@@ -19,6 +19,7 @@ std::string type_name(const Value& value) {
         std::string operator()(const runtime::CameraRecord&) const { return "camera"; }
         std::string operator()(const runtime::Texture&) const { return "texture"; }
         std::string operator()(const runtime::Pigment&) const { return "pigment"; }
+        std::string operator()(const runtime::ColourMap&) const { return "color_map"; }
         std::string operator()(const runtime::Finish&) const { return "finish"; }
         std::string operator()(const runtime::Interior&) const { return "interior"; }
         std::string operator()(const runtime::Transform&) const { return "transform"; }

@@ -96,13 +96,11 @@ bool ObjectRecord::shape_depends_on_time() const { return !timed_parameters().em
 
 bool ObjectRecord::texture_depends_on_time() const {
     if (!texture) return false;
-    for (const auto& c : texture->pigment.colours)
-        if (c.depends_on_time()) return true;
+    if (texture->pigment.depends_on_time()) return true;
     const Finish& f = texture->finish;
     return varies(f.ambient) || varies(f.diffuse) || varies(f.brilliance) || varies(f.phong) ||
            varies(f.phong_size) || varies(f.specular) || varies(f.roughness) ||
-           f.reflection.depends_on_time() || texture->transform.depends_on_time() ||
-           texture->pigment.transform.depends_on_time();
+           f.reflection.depends_on_time() || texture->transform.depends_on_time();
 }
 
 bool ObjectRecord::depends_on_time() const {

@@ -100,6 +100,8 @@ Problem check(const Transform& transform, const std::string& whose, const Span& 
 Problem check(const Texture& texture, const std::string& whose, const Span& span) {
     for (const auto& colour : texture.pigment.colours)
         if (auto p = check(colour.c, whose + " pigment's colour", span)) return p;
+    for (const auto& entry : texture.pigment.colour_map.entries)
+        if (auto p = check(entry.colour.c, whose + " colour map's colour", span)) return p;
     if (auto p = check(texture.pigment.transform, whose + " pigment's", span)) return p;
     const Finish& f = texture.finish;
     const std::pair<const TimeFunction*, const char*> values[] = {

@@ -65,22 +65,65 @@ std::shared_ptr<const TextureEvaluator::CompiledFinish> TextureEvaluator::compil
     return made;
 }
 
+TextureEvaluator::CompiledTurbulence TextureEvaluator::compile(const pattern::Turbulence& t) {
+    return {{CompiledScalar(t.amount.c[0]), CompiledScalar(t.amount.c[1]), CompiledScalar(t.amount.c[2])},
+            CompiledScalar(t.octaves),
+            CompiledScalar(t.omega),
+            CompiledScalar(t.lambda)};
+}
+
+pattern::Octaves TextureEvaluator::CompiledTurbulence::at(double t) const {
+    return pattern::octaves_of(octaves.at(t), omega.at(t), lambda.at(t));
+}
+
 TextureEvaluator::TextureEvaluator(const Texture& texture, const std::optional<Interior>& interior)
     : pattern_(texture.pigment.pattern),
-      pattern_to_world_(pattern_ == Pigment::Pattern::Checker
+      pattern_to_world_(pattern_ == Pigment::Pattern::Patterned
                             ? std::make_shared<const Motion>(pattern_transform(texture))
                             : nullptr),
       finish_(compile(texture.finish, interior)) {
+    const Pigment& pigment = texture.pigment;
     if (pattern_ == Pigment::Pattern::Unsupported)
-        throw ObjectError(texture.pigment.unsupported_place,
-                          "pigment pattern '" + texture.pigment.unsupported_name +
+        throw ObjectError(pigment.unsupported_place,
+                          "pigment pattern '" + pigment.unsupported_name +
                               "' is not supported by hexant's tracer");
-    const std::size_t needed = pattern_ == Pigment::Pattern::Checker ? 2 : 1;
-    if (texture.pigment.colours.size() < needed)
-        throw std::logic_error("TextureEvaluator: pigment without its colours");
-    for (const auto& colour : texture.pigment.colours) {
-        colours_.push_back(compile(colour));
-        depends_on_time_ = depends_on_time_ || colour.depends_on_time();
+    if (pattern_ == Pigment::Pattern::Solid) {
+        if (pigment.colours.empty()) throw std::logic_error("TextureEvaluator: a solid pigment without its colour");
+        colours_.push_back(compile(pigment.colours.front()));
+        depends_on_time_ = pigment.colours.front().depends_on_time();
+    } else {
+        const pattern::Pattern& source = pigment.patterned;
+        if (source.kind == nullptr) throw std::logic_error("TextureEvaluator: a pattern without its kind");
+        auto p = std::make_unique<CompiledPattern>();
+        p->kind = source.kind;
+        for (int i = 0; i < 3; ++i) p->vector[static_cast<std::size_t>(i)] = CompiledScalar(source.vector.c[i]);
+        for (std::size_t i = 0; i < 2; ++i) p->number[i] = CompiledScalar(source.number[i]);
+        if (source.turbulence) p->turbulence = compile(*source.turbulence);
+        p->frequency = CompiledScalar(source.frequency);
+        p->phase = CompiledScalar(source.phase);
+        p->exponent = CompiledScalar(source.exponent);
+        p->wave = source.wave;
+        if (source.noise_generator != 0) p->noise_generator = source.noise_generator;
+        for (const pattern::Warp& w : source.warps) {
+            CompiledWarp c;
+            if (w.transform) c.transform = std::make_shared<const Motion>(*w.transform);
+            else c.turbulence = compile(w.turbulence);
+            p->warps.push_back(std::move(c));
+        }
+        const ColourMap& map = pigment.colour_map;
+        if (map.entries.empty()) {
+            p->fixed_map = source.kind->default_map;
+        } else if (!map.depends_on_time()) {
+            for (const auto& e : map.entries) {
+                pattern::MapEntry fixed{e.value.constant(), {}};
+                for (std::size_t i = 0; i < 5; ++i) fixed.colour[i] = e.colour.c[i].constant();
+                p->fixed_map.push_back(fixed);
+            }
+        } else {
+            for (const auto& e : map.entries) p->map.push_back({CompiledScalar(e.value), compile(e.colour)});
+        }
+        pattern_data_ = std::move(p);
+        depends_on_time_ = pigment.depends_on_time() || !pattern_to_world_->is_static();
     }
     const Finish& f = texture.finish;
     for (const TimeFunction* value :
@@ -88,37 +131,61 @@ TextureEvaluator::TextureEvaluator(const Texture& texture, const std::optional<I
           &f.roughness, &f.emission, &f.reflection.c[0], &f.reflection.c[1], &f.reflection.c[2]})
         depends_on_time_ = depends_on_time_ || value->depends_on_time();
     if (interior) depends_on_time_ = depends_on_time_ || interior->ior.depends_on_time();
-    if (pattern_ == Pigment::Pattern::Checker)
-        depends_on_time_ = depends_on_time_ || !pattern_to_world_->is_static();
 }
 
-int checker_index(const glm::dvec3& p) {
-    // POV-Ray 3.7's rule for a point on a cell's boundary (CheckerPattern::
-    // Evaluate in source/core/material/pattern.cpp): each coordinate is
-    // floored after adding EPSILON = 1e-10 (configcore.h), so a face lying
-    // on a boundary in pattern space (a plane at an integer height, the
-    // common idiom) takes the upper cell whichever way its points rounded.
-    // The margin is in the pattern's own units (one cell), so it holds at
-    // every world scale the pattern is scaled with.
-    constexpr double kBoundary = 1.0e-10;
-    const double sum = std::floor(p.x + kBoundary) + std::floor(p.y + kBoundary) +
-                       std::floor(p.z + kBoundary);
-    // fmod of an integer-valued double is exact; no int overflow far away.
-    return std::fabs(std::fmod(sum, 2.0)) == 1.0 ? 1 : 0;
+std::array<double, 5> TextureEvaluator::pattern_colour(const glm::dvec3& world_point, double t) const {
+    const CompiledPattern& p = *pattern_data_;
+    // World to pattern space (POV-Ray's Warp_EPoint): the last transforms
+    // first, then each earlier step, last written first; classic
+    // turbulence last of all, unless the kind reads it itself.
+    const auto q = pattern_to_world_->to_object<double>({world_point.x, world_point.y, world_point.z}, t);
+    glm::dvec3 point(q[0], q[1], q[2]);
+    for (auto w = p.warps.rbegin(); w != p.warps.rend(); ++w) {
+        if (w->transform) {
+            const auto r = w->transform->to_object<double>({point.x, point.y, point.z}, t);
+            point = {r[0], r[1], r[2]};
+        } else {
+            const CompiledTurbulence& turb = w->turbulence;
+            point = pattern::apply_turbulence(
+                point, {turb.amount[0].at(t), turb.amount[1].at(t), turb.amount[2].at(t)}, turb.at(t));
+        }
+    }
+    pattern::Values v;
+    v.vector = {p.vector[0].at(t), p.vector[1].at(t), p.vector[2].at(t)};
+    v.number = {p.number[0].at(t), p.number[1].at(t)};
+    v.frequency = p.frequency.at(t);
+    v.phase = p.phase.at(t);
+    v.noise_generator = p.noise_generator;
+    if (p.turbulence) {
+        v.has_turbulence = true;
+        v.turbulence = {p.turbulence->amount[0].at(t), p.turbulence->amount[1].at(t),
+                        p.turbulence->amount[2].at(t)};
+        v.octaves = p.turbulence->at(t);
+        if (!p.kind->own_turbulence) point = pattern::apply_turbulence(point, v.turbulence, v.octaves);
+    }
+    const double value = pattern::evaluate(*p.kind, point, v, p.wave, p.exponent.at(t));
+    if (p.map.empty()) return pattern::map_colour(p.fixed_map, value);
+    std::vector<pattern::MapEntry> map;
+    map.reserve(p.map.size());
+    for (const auto& [at, colour] : p.map)
+        map.push_back({at.at(t), {colour.c[0].at(t), colour.c[1].at(t), colour.c[2].at(t), colour.c[3].at(t),
+                                  colour.c[4].at(t)}});
+    return pattern::map_colour(map, value);
 }
 
 MaterialSample TextureEvaluator::at(const glm::dvec3& world_point, double t) const {
-    std::size_t which = 0;
-    if (pattern_ == Pigment::Pattern::Checker) {
-        const auto p = pattern_to_world_->to_object<double>({world_point.x, world_point.y,
-                                                            world_point.z}, t);
-        which = static_cast<std::size_t>(checker_index({p[0], p[1], p[2]}));
-    }
-    const CompiledColour& colour = colours_[which];
     MaterialSample m;
-    m.colour = {colour.c[0].at(t), colour.c[1].at(t), colour.c[2].at(t)};
-    m.filter = colour.c[3].at(t);
-    m.transmit = colour.c[4].at(t);
+    if (pattern_ == Pigment::Pattern::Patterned) {
+        const auto c = pattern_colour(world_point, t);
+        m.colour = {c[0], c[1], c[2]};
+        m.filter = c[3];
+        m.transmit = c[4];
+    } else {
+        const CompiledColour& colour = colours_.front();
+        m.colour = {colour.c[0].at(t), colour.c[1].at(t), colour.c[2].at(t)};
+        m.filter = colour.c[3].at(t);
+        m.transmit = colour.c[4].at(t);
+    }
     const CompiledFinish& f = *finish_;
     m.ambient = f.ambient.at(t);
     m.diffuse = f.diffuse.at(t);

@@ -44,20 +44,40 @@ private:
     static std::shared_ptr<const CompiledFinish> compile(const Finish& finish,
                                                          const std::optional<Interior>& interior);
 
+    // A pattern's parameters, compiled (runtime/pattern/pattern.hpp).
+    struct CompiledTurbulence {
+        std::array<CompiledScalar, 3> amount;
+        CompiledScalar octaves, omega, lambda;
+        pattern::Octaves at(double t) const;
+    };
+    struct CompiledWarp {
+        std::shared_ptr<const Motion> transform;  // else turbulence
+        CompiledTurbulence turbulence;
+    };
+    struct CompiledPattern {
+        const pattern::Kind* kind = nullptr;
+        std::array<CompiledScalar, 3> vector;
+        std::array<CompiledScalar, 2> number;
+        std::optional<CompiledTurbulence> turbulence;
+        CompiledScalar frequency, phase, exponent;
+        pattern::Wave wave = pattern::Wave::Ramp;
+        int noise_generator = pattern::kDefaultNoiseGenerator;
+        std::vector<CompiledWarp> warps;  // in the order written
+        // The map: fixed when nothing in it moves, else compiled.
+        std::vector<pattern::MapEntry> fixed_map;
+        std::vector<std::pair<CompiledScalar, CompiledColour>> map;
+    };
+    static CompiledTurbulence compile(const pattern::Turbulence& turbulence);
+    std::array<double, 5> pattern_colour(const glm::dvec3& world_point, double t) const;
+
     Pigment::Pattern pattern_;
     bool depends_on_time_ = false;
     std::vector<CompiledColour> colours_;
-    // The pigment's transform, then the texture's: only a pattern reads
-    // its placement; a plain colour keeps none.
+    // The pigment's last transforms, then the texture's: only a pattern
+    // reads its placement; a plain colour keeps none.
     std::shared_ptr<const Motion> pattern_to_world_;
+    std::shared_ptr<const CompiledPattern> pattern_data_;  // shared by copies
     std::shared_ptr<const CompiledFinish> finish_;
 };
-
-// POV-Ray's checker: which of the two colours a pattern point takes, by the
-// parity of floor(x) + floor(y) + floor(z). POV-Ray 3.7's renders show no
-// offset of the square edges (a 1e-3 offset, as older sources have, flips
-// the pixels whose hits lie within 1e-3 of an edge; see
-// tests/tracer/pov_reference).
-int checker_index(const glm::dvec3& pattern_point);
 
 }  // namespace hexant::runtime

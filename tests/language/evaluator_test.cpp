@@ -209,7 +209,8 @@ TEST_CASE("each scene item makes its record", "[evaluator]") {
     CHECK(shape<hexant::runtime::Csg>(s, 6).kind == hexant::runtime::Csg::Kind::Difference);
     const auto& last = *s.objects[7];
     REQUIRE(last.texture);
-    CHECK(last.texture->pigment.pattern == hexant::runtime::Pigment::Pattern::Checker);
+    CHECK(last.texture->pigment.pattern == hexant::runtime::Pigment::Pattern::Patterned);
+    CHECK(last.texture->pigment.patterned.kind->name == "checker");
     CHECK(last.texture->finish.phong.constant() == 0.5);
     CHECK(last.texture->finish.reflection.c[0].constant() == 0.25);
     CHECK(last.interior->ior.constant() == 1.5);
@@ -261,11 +262,11 @@ TEST_CASE("clock is a symbol in an animation and a number in a still", "[evaluat
 
 TEST_CASE("what a scene declares but never uses cannot fail", "[evaluator]") {
     const auto r = run("#declare F = function(x) { x }\n#declare G = F(2);\n"
-                       "#declare P = pigment { marble }\n#declare I = isosurface { function { x } }\n"
+                       "#declare P = pigment { crackle }\n#declare I = isosurface { function { x } }\n"
                        "#declare T = texture { pigment { rgb 1 } } texture { pigment { rgbt 1 } }\n"
                        "sphere { 0, 1 }\n");
     CHECK(r.scene.objects.size() == 1);
-    const auto used = error_of("#declare P = pigment { marble }\nsphere { 0, 1 pigment { P } }\n");
+    const auto used = error_of("#declare P = pigment { crackle }\nsphere { 0, 1 pigment { P } }\n");
     CHECK(used.places()[0].line == 2);
     CHECK(used.message().find("test.pov:1:") != std::string::npos);  // where it was written
     CHECK(error_of("#declare I = isosurface { function { x } }\nobject { I }\n").places()[0].line == 2);

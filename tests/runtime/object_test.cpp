@@ -70,7 +70,12 @@ TEST_CASE("each part of an object that may depend on time", "[runtime][object]")
         texture.finish.reflection.c[1] = symbolic_clock();
         plane->texture = texture;
         CHECK(plane->depends_on_time());
+        // (A pattern's transform: a plain colour does not read its own.)
         texture = rt::Texture{};
+        texture.pigment.pattern = rt::Pigment::Pattern::Patterned;
+        texture.pigment.patterned = rt::pattern::Pattern::of(*rt::pattern::find_kind("checker"));
+        plane->texture = texture;
+        CHECK_FALSE(plane->depends_on_time());
         rt::TransformStep scale{};
         scale.kind = rt::TransformKind::Scale;
         scale.vector = vec(symbolic_clock() + 1.0, 1.0, 1.0);

@@ -1,3 +1,3 @@
-// error: 3:1: pigment pattern 'marble' (written at
-#declare Stone = pigment { marble }
+// error: 3:1: pigment pattern 'crackle' (written at
+#declare Stone = pigment { crackle }
 sphere { 0, 1 pigment { Stone } }

@@ -20,3 +20,7 @@ cone { <0, 0, 0> 1 <0, 2, 0> 0 }
 #declare sphere_radius = 0.5;        // keywords are lower case; this is a name
 #declare Sphere = sphere { 0, sphere_radius }
 object { Sphere }
+// Vectors as POV-Ray reads them: commas left out, and a trailing comma.
+#declare Spaced = < -1 2 3 >;
+#declare Trailing = rgb <0.2, 0.1, 0.5,>;
+#if (Spaced.x != -1 | Spaced.z != 3 | Trailing.blue != 0.5) #error "vector commas misread" #end

@@ -1,0 +1,17 @@
+#include "runtime/material.hpp"
+
+namespace hexant::runtime {
+
+bool ColourMap::depends_on_time() const {
+    for (const auto& e : entries)
+        if (e.value.depends_on_time() || e.colour.depends_on_time()) return true;
+    return false;
+}
+
+bool Pigment::depends_on_time() const {
+    if (pattern == Pattern::Solid) return colours.front().depends_on_time();
+    if (pattern == Pattern::Unsupported) return false;
+    return patterned.depends_on_time() || colour_map.depends_on_time() || transform.depends_on_time();
+}
+
+}  // namespace hexant::runtime
