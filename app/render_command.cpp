@@ -174,7 +174,7 @@ Counters render_mode(runtime::SceneDescription& scene, const RenderArguments& ar
                      std::vector<tracer::Image>* keep, bool last_use) {
     tracer::RenderSettings settings;
     settings.mode = mode;
-    settings.samples_per_pixel = args.samples_per_pixel;
+    settings.samples_per_pixel = args.samples_per_pixel.value_or(scene.global.motion_blur_samples.value_or(1));
     settings.jitter = !args.no_jitter;
     settings.sample_seed = args.seed;
     settings.threads = args.threads;
@@ -268,12 +268,30 @@ void check_outputs(const RenderArguments& args, const std::string& pattern,
 
 }  // namespace
 
+void apply_scene_defaults(const RenderArguments& args, runtime::SceneDescription& scene, std::ostream& err) {
+    const auto& g = scene.global;
+    if (!g.motion_blur_samples) return;
+    // MegaPOV's motion_blur SAMPLES, TIME: TIME is how long (in clock
+    // units) the shutter is open; hexant's --shutter is that over the
+    // clock step between frames.
+    err << "note: MegaPOV's motion_blur " << *g.motion_blur_samples << ", " << *g.motion_blur_time
+        << ": hexant blurs every render;";
+    if (!args.samples_per_pixel) err << " --spp " << *g.motion_blur_samples;
+    const double step = std::fabs(scene.animation.clock_delta());
+    if (!args.scene.shutter && scene.animation.clock_runs() && step > 0.0 && std::isfinite(step)) {
+        scene.animation.shutter = std::clamp(*g.motion_blur_time / step, 0.0, 1.0);
+        err << " --shutter " << scene.animation.shutter;
+    }
+    err << " by default\n";
+}
+
 int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err) {
     return run_reporting_errors(err, [&] {
         ResolvedScene resolved = resolve(args.scene);
         for (const auto& warning : resolved.warnings) err << warning << "\n";
         runtime::SceneDescription scene =
             language::parse_scene_file(resolved.scene, resolved.options);
+        apply_scene_defaults(args, scene, err);
         const std::vector<int> selected = frame_selection(args.frames, scene.animation);
         const std::string pattern =
             args.output ? *args.output

@@ -16,7 +16,7 @@ namespace hexant::app {
 struct RenderArguments {
     SceneArguments scene;
     std::string mode = "spacetime";
-    int samples_per_pixel = 1;
+    std::optional<int> samples_per_pixel;  // default: the scene's (MegaPOV's motion_blur), else 1
     bool no_jitter = false;
     unsigned seed = 0;
     std::optional<std::string> frames;  // A:B

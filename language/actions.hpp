@@ -1300,6 +1300,19 @@ HEXANT_ACTION(background_colour) {
         ++st.background_sets;
         st.scene.background = to_colour(st.pop(), "the background"); }
 };
+HEXANT_ACTION(global_motion_blur) {
+    HEXANT_APPLY {
+        st.require_whole_time(in.position(), "a global setting");
+        std::vector<Value> items = st.close_frame();
+        auto& g = st.scene.global;
+        g.motion_blur_samples = static_cast<int>(
+            checked_integer(to_constant(items.at(0), "motion_blur's samples"), "motion_blur's samples", 1, 1 << 20));
+        g.motion_blur_time = to_constant(items.at(1), "motion_blur's time");
+        if (!(*g.motion_blur_time >= 0.0) || !std::isfinite(*g.motion_blur_time))
+            throw ValueError("motion_blur's time must be a finite number of clock units, at least 0");
+    }
+};
+
 HEXANT_ACTION(global_setting) {
     HEXANT_APPLY {
         st.require_whole_time(in.position(), "a global setting");

@@ -891,8 +891,13 @@ struct global_charset : p::seq<TAO_PEGTL_KEYWORD("charset"), ws, p::must<charset
 struct global_ignored_name : p::seq<p::identifier, ws> {};
 struct global_ignored_setting
     : p::seq<global_ignored_name, frame_open, p::sor<p::seq<skip::braced, ws>, expression>> {};
+// MegaPOV's motion_blur SAMPLES, TIME (../shared/cases/17).
+struct global_motion_blur
+    : p::seq<TAO_PEGTL_KEYWORD("motion_blur"), ws, frame_open, p::must<global_setting_value>, p::opt<comma>,
+             p::must<global_setting_value>> {};
 struct global_item
-    : p::sor<directive<global_item>, global_setting, global_charset, global_ignored_setting> {};
+    : p::sor<directive<global_item>, global_setting, global_charset, global_motion_blur,
+             global_ignored_setting> {};
 struct global_settings_block
     : p::seq<kw_global_settings, p::must<lbrace>, p::star<global_item>, p::must<rbrace>> {};
 

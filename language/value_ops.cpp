@@ -155,8 +155,9 @@ Vector to_vector(const Value& v, const std::string& what) {
 
 runtime::Vector3Function to_vector3(const Value& v, const std::string& what) {
     const Vector vec = to_vector(v, what);
-    if (vec.size < 3 && !v.is<TimeFunction>())
-        throw ValueError(what + " must be a 3-component vector, not a " + type_name(v));
+    // A 2-component vector gets z = 0, as POV-Ray's Parse_Vector pads it
+    // (fractalzoom.pov translates its pigment by <x, y>).
+    if (vec.size == 2) return runtime::Vector3Function{{vec.c[0], vec.c[1], 0.0}};
     return runtime::Vector3Function{{vec.c[0], vec.c[1], vec.c[2]}};
 }
 

@@ -17,6 +17,11 @@ struct GlobalSettings {
     double assumed_gamma = 1.0;
     int max_trace_level = 5;
     ColourFunction ambient_light{{1.0, 1.0, 1.0, 0.0, 0.0}};
+    // MegaPOV's global_settings { motion_blur SAMPLES, TIME }: hexant blurs
+    // every render, so these are only defaults for --spp and --shutter
+    // (TIME, in clock units, over the clock step; app/render_command.cpp).
+    std::optional<int> motion_blur_samples;
+    std::optional<double> motion_blur_time;
 };
 
 // A branch whose condition depends on clock, as the language split it:

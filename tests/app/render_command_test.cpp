@@ -166,3 +166,31 @@ TEST_CASE("render --seed gives an independent estimate of the same frame", "[app
     CHECK(first == again);  // deterministic
     CHECK(first != other);  // other samples where the sphere blurs
 }
+
+TEST_CASE("MegaPOV's motion_blur sets the defaults of --spp and --shutter, and says so", "[app][render]") {
+    // ../shared/cases/17: global_settings { motion_blur SAMPLES, TIME }.
+    // Three frames over clock 0 to 1 step by 0.5: TIME 0.1 is a shutter
+    // of 0.2 of the step; the flags given win.
+    const fs::path scene = scene_file("global_settings { motion_blur 8, 0.1 }\n" + moving_sphere("<2 * clock, 0, 0>"));
+    const fs::path out = fresh_output(scene);
+    RenderArguments a = arguments_for(scene, out);
+    a.frames = "1";
+    std::ostringstream o, e;
+    REQUIRE(run_render(a, o, e) == 0);
+    CHECK(e.str().find("MegaPOV's motion_blur 8, 0.1") != std::string::npos);
+    CHECK(e.str().find("--spp 8 --shutter 0.2 by default") != std::string::npos);
+    // The same frame with those flags given is the same image.
+    RenderArguments b = arguments_for(scene, out);
+    b.frames = "1";
+    b.samples_per_pixel = 8;
+    b.scene.shutter = 0.2;
+    b.output = (out / "g_##.png").string();
+    std::ostringstream o2, e2;
+    REQUIRE(run_render(b, o2, e2) == 0);
+    const auto bytes = [](const fs::path& p) {
+        std::ifstream in(p, std::ios::binary);
+        return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    };
+    CHECK(bytes(out / "f_01.png") == bytes(out / "g_01.png"));
+    CHECK(e2.str().find("--spp") == std::string::npos);
+}
