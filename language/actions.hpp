@@ -1300,6 +1300,44 @@ HEXANT_ACTION(background_colour) {
         ++st.background_sets;
         st.scene.background = to_colour(st.pop(), "the background"); }
 };
+HEXANT_ACTION(sky_sphere_open) {
+    HEXANT_APPLY { (void)in; st.blocks.emplace_back(std::in_place_type<runtime::SkySphere>); }
+};
+HEXANT_ACTION(sky_sphere_base) {
+    HEXANT_APPLY {
+        Value v = st.pop();
+        if (!v.is<runtime::SkySphere>()) throw ValueError("sky_sphere { } starts with a sky_sphere, not a " + type_name(v));
+        st.block<runtime::SkySphere>(in.position(), "a sky_sphere") = v.as<runtime::SkySphere>();
+    }
+};
+HEXANT_ACTION(sky_sphere_pigment) {
+    HEXANT_APPLY {
+        Value v = st.pop();
+        st.block<runtime::SkySphere>(in.position(), "a pigment").pigments.push_back(v.as<runtime::Pigment>());
+    }
+};
+HEXANT_ACTION(sky_sphere_emission) {
+    HEXANT_APPLY {
+        Value v = st.pop();
+        st.block<runtime::SkySphere>(in.position(), "emission").emission = to_colour(v, "emission");
+    }
+};
+HEXANT_ACTION(sky_sphere_block) {
+    HEXANT_APPLY {
+        auto& sky = st.block<runtime::SkySphere>(in.position(), "a sky_sphere");
+        if (sky.pigments.empty()) throw ValueError("a sky_sphere needs a pigment (POV-Ray: empty sky_sphere statement)");
+        Value v{std::move(sky)};
+        st.blocks.pop_back();
+        st.push(std::move(v));
+    }
+};
+HEXANT_ACTION(scene_sky_sphere) {
+    HEXANT_APPLY {
+        st.require_whole_time(in.position(), "a sky_sphere");
+        st.scene.sky_sphere = st.pop().as<runtime::SkySphere>();
+    }
+};
+
 HEXANT_ACTION(global_motion_blur) {
     HEXANT_APPLY {
         st.require_whole_time(in.position(), "a global setting");

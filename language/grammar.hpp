@@ -532,9 +532,8 @@ HEXANT_KEYWORD(kw_material, "material");
 // Patterns POV-Ray has and hexant does not: parsed, kept by name, an error
 // only where a scene uses them.
 struct unsupported_pattern_name
-    : p::sor<TAO_PEGTL_KEYWORD("average"), TAO_PEGTL_KEYWORD("boxed"), TAO_PEGTL_KEYWORD("cells"),
-             TAO_PEGTL_KEYWORD("crackle"), TAO_PEGTL_KEYWORD("cylindrical"),
-             TAO_PEGTL_KEYWORD("facets"), TAO_PEGTL_KEYWORD("planar"), TAO_PEGTL_KEYWORD("spherical"),
+    : p::sor<TAO_PEGTL_KEYWORD("average"), TAO_PEGTL_KEYWORD("cells"),
+             TAO_PEGTL_KEYWORD("crackle"), TAO_PEGTL_KEYWORD("facets"),
              TAO_PEGTL_KEYWORD("image_map"), TAO_PEGTL_KEYWORD("pigment_map"),
              TAO_PEGTL_KEYWORD("function"), TAO_PEGTL_KEYWORD("julia"), TAO_PEGTL_KEYWORD("pavement"),
              TAO_PEGTL_KEYWORD("tiling"), TAO_PEGTL_KEYWORD("cubic"), TAO_PEGTL_KEYWORD("object"),
@@ -548,10 +547,11 @@ struct unsupported_pattern : p::seq<unsupported_pattern_name, skip::until_rbrace
 // (spiral1, spiral2, mandel) or a list of colours (checker, brick,
 // hexagon).
 struct pattern_words {
-    static constexpr std::array<std::string_view, 22> list = {
-        "agate", "bozo", "brick", "bumps", "checker", "dents", "gradient", "granite",
-        "hexagon", "leopard", "mandel", "marble", "onion", "quilted", "radial", "ripples",
-        "spiral1", "spiral2", "spotted", "waves", "wood", "wrinkles"};
+    static constexpr std::array<std::string_view, 26> list = {
+        "agate", "boxed", "bozo", "brick", "bumps", "checker", "cylindrical", "dents",
+        "gradient", "granite", "hexagon", "leopard", "mandel", "marble", "onion", "planar",
+        "quilted", "radial", "ripples", "spherical", "spiral1", "spiral2", "spotted", "waves",
+        "wood", "wrinkles"};
 };
 struct pattern_name : one_word_of<pattern_words> {};
 struct pattern_argument : p::seq<sum> {};
@@ -805,11 +805,11 @@ struct light_block
 // Object kinds POV-Ray has and hexant does not: kept as source, an error
 // only where used. Also `function { }` and the *_map blocks.
 struct unsupported_kind_words {
-    static constexpr std::array<std::string_view, 34> list = {
+    static constexpr std::array<std::string_view, 33> list = {
         "bicubic_patch", "blob", "color_map", "colour_map", "cubic", "density", "density_map",
         "fog", "function", "height_field", "isosurface", "julia_fractal", "lathe", "lemon",
         "media", "mesh", "mesh2", "normal_map", "ovus", "parametric", "photons", "pigment_map",
-        "poly", "polynomial", "quadric", "quartic", "rainbow", "sky_sphere", "slope_map", "sor",
+        "poly", "polynomial", "quadric", "quartic", "rainbow", "slope_map", "sor",
         "sphere_sweep", "superellipsoid", "text", "texture_map"};
 };
 struct unsupported_kind : one_word_of<unsupported_kind_words> {};
@@ -879,6 +879,17 @@ struct background_colour : p::seq<expression> {};
 struct background_block
     : p::seq<kw_background, p::must<lbrace>, p::must<background_colour>, p::must<rbrace>> {};
 
+// sky_sphere { [a declared one] pigment { } ... [emission COLOUR] transforms }
+struct sky_sphere_open : p::seq<TAO_PEGTL_KEYWORD("sky_sphere"), ws, p::must<lbrace>> {};
+struct sky_sphere_base : p::seq<expression> {};
+struct sky_sphere_pigment : p::seq<pigment_block> {};
+struct sky_sphere_emission : p::seq<TAO_PEGTL_KEYWORD("emission"), ws, p::must<pattern_setting_value>> {};
+struct sky_sphere_item
+    : p::sor<directive<sky_sphere_item>, macro_call<sky_sphere_item>, sky_sphere_pigment,
+             sky_sphere_emission, transformation> {};
+struct sky_sphere_block
+    : p::seq<sky_sphere_open, p::opt<sky_sphere_base>, p::star<sky_sphere_item>, p::must<rbrace>> {};
+
 HEXANT_KEYWORD(kw_global_settings, "global_settings");
 struct global_setting_name
     : p::sor<TAO_PEGTL_KEYWORD("assumed_gamma"), TAO_PEGTL_KEYWORD("max_trace_level"),
@@ -946,7 +957,8 @@ struct material_value : p::seq<material_block> {};
 struct texture_value : p::seq<texture_block, p::star<texture_layer>> {};
 
 struct value
-    : p::sor<object_value, camera_block, texture_value, pigment_block, colour_map_block, finish_block,
+    : p::sor<object_value, camera_block, texture_value, pigment_block, colour_map_block, sky_sphere_block,
+             finish_block,
              interior_block, material_value, transform_value, array_value, spline_block,
              unsupported_block, expression> {};
 
@@ -958,9 +970,10 @@ struct value_item : p::sor<directive<value_item>, value> {};
 struct scene_object : p::seq<object_value> {};
 struct scene_unsupported : p::seq<unsupported_block> {};
 struct scene_camera : p::seq<camera_block> {};
+struct scene_sky_sphere : p::seq<sky_sphere_block> {};
 struct scene_item
     : p::sor<directive<scene_item>, macro_call<scene_item>, scene_object, scene_camera,
-             background_block, global_settings_block, scene_unsupported, semicolon> {};
+             background_block, scene_sky_sphere, global_settings_block, scene_unsupported, semicolon> {};
 struct scene_end : p::eof {};
 struct scene_file : p::seq<ws, p::star<scene_item>, p::must<scene_end>> {};
 

@@ -56,7 +56,7 @@ struct MaterialBuilder {
 
 // A block under construction: `sphere { ... }`, `texture { ... }` ...
 using Block = std::variant<runtime::ObjectRecord, runtime::LightRecord, runtime::CameraRecord,
-                           runtime::Texture, runtime::Pigment, runtime::ColourMap, runtime::Finish,
+                           runtime::Texture, runtime::Pigment, runtime::ColourMap, runtime::SkySphere, runtime::Finish,
                            runtime::Interior,
                            runtime::Transform, SplineBuilder, MaterialBuilder>;
 

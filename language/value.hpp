@@ -17,6 +17,7 @@
 #include "runtime/light.hpp"
 #include "runtime/material.hpp"
 #include "runtime/object.hpp"
+#include "runtime/sky_sphere.hpp"
 #include "runtime/spline.hpp"
 #include "runtime/transform.hpp"
 
@@ -56,7 +57,7 @@ struct Array {
 struct Value {
     using Variant =
         std::variant<TimeFunction, Vector, std::string, TimedString, runtime::ObjectPtr, runtime::LightRecord,
-                     runtime::CameraRecord, runtime::Texture, runtime::Pigment, runtime::ColourMap, runtime::Finish,
+                     runtime::CameraRecord, runtime::Texture, runtime::Pigment, runtime::ColourMap, runtime::SkySphere, runtime::Finish,
                      runtime::Interior, runtime::Transform, std::shared_ptr<Array>,
                      std::shared_ptr<const runtime::Spline>, std::shared_ptr<const Macro>,
                      Unevaluated>;

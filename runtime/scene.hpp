@@ -8,6 +8,7 @@
 #include "runtime/animation.hpp"
 #include "runtime/camera.hpp"
 #include "runtime/light.hpp"
+#include "runtime/sky_sphere.hpp"
 #include "runtime/object.hpp"
 #include "runtime/source_place.hpp"
 
@@ -36,6 +37,7 @@ struct SceneDescription {
     std::vector<LightRecord> lights;
     std::vector<ObjectPtr> objects;
     ColourFunction background{};  // black
+    std::optional<SkySphere> sky_sphere;  // over the background
     GlobalSettings global;
     // The texture of objects that have none of their own (#default).
     Texture default_texture;

@@ -49,12 +49,41 @@ Shader::Shader(const runtime::SceneDescription& scene, const RayQuery& query)
     }
     still_ambient_ = !ambient_light_.depends_on_time();
     fixed_ambient_ = rgb(ambient_light_, 0.0);
+    if (scene.sky_sphere) {
+        // A pigment is evaluated at the direction taken through the sky's
+        // transform: a texture whose transform is the sky's.
+        for (auto p = scene.sky_sphere->pigments.rbegin(); p != scene.sky_sphere->pigments.rend(); ++p) {
+            runtime::Texture layer;
+            layer.pigment = *p;
+            layer.transform = scene.sky_sphere->transform;
+            sky_layers_.emplace_back(layer, std::nullopt);
+        }
+        sky_emission_ = scene.sky_sphere->emission;
+    }
+}
+
+glm::dvec3 Shader::sky(const glm::dvec3& direction, double t) const {
+    const glm::dvec3 background = rgb(background_, t);
+    if (sky_layers_.empty()) return background;
+    // POV-Ray 3.7's ComputeSky: each layer adds its colour times its
+    // opacity (1 - filter - transmit) and what the layers above let
+    // through, and lets through its colour times filter, plus transmit;
+    // the background is one more layer, opaque.
+    glm::dvec3 colour(0.0), through(1.0);
+    const glm::dvec3 emission = rgb(sky_emission_, t);
+    for (const auto& layer : sky_layers_) {
+        const runtime::MaterialSample m = layer.at(direction, t);
+        const double opacity = 1.0 - m.filter - m.transmit;
+        colour += m.colour * opacity * through * emission;
+        through *= m.colour * m.filter + glm::dvec3(m.transmit);
+    }
+    return colour + background * through;
 }
 
 glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, ThreadState& state) const {
     const double t = ray.origin.w;
     const auto hit = query_.first_hit(ray, 0.0, std::numeric_limits<double>::infinity(), state);
-    if (!hit) return rgb(background_, t);
+    if (!hit) return sky(glm::normalize(glm::dvec3(ray.direction)), t);
     const runtime::SurfacePoint p = hit->object->complete(ray, *hit);
     const runtime::MaterialSample& m = p.material;
     const glm::dvec3 d = glm::normalize(glm::dvec3(ray.direction));

@@ -10,6 +10,7 @@
 #include <glm/vec3.hpp>
 
 #include "runtime/scene.hpp"
+#include "runtime/texture_evaluator.hpp"
 #include "runtime/spacetime.hpp"
 #include "tracer/ray_query.hpp"
 
@@ -42,10 +43,15 @@ private:
 
     glm::dvec3 radiance(const runtime::Ray4& ray, int depth, double weight,
                         ThreadState& state) const;
+    // What a ray that hits nothing sees: the sky sphere over the background.
+    glm::dvec3 sky(const glm::dvec3& direction, double t) const;
 
     const RayQuery& query_;
     std::vector<Light> lights_;
     runtime::ColourFunction background_;
+    // The sky sphere's pigments, the last written first (on top).
+    std::vector<runtime::TextureEvaluator> sky_layers_;
+    runtime::ColourFunction sky_emission_;
     runtime::ColourFunction ambient_light_;
     bool still_ambient_ = false;
     glm::dvec3 fixed_ambient_{0.0};

@@ -13,6 +13,10 @@ double wrinkles_value(const glm::dvec3& p, const Values& v);
 double granite_value(const glm::dvec3& p, const Values& v);
 double agate_value(const glm::dvec3& p, const Values& v);
 // shape_patterns.cpp
+double planar_value(const glm::dvec3& p, const Values& v);
+double spherical_value(const glm::dvec3& p, const Values& v);
+double cylindrical_value(const glm::dvec3& p, const Values& v);
+double boxed_value(const glm::dvec3& p, const Values& v);
 double gradient_value(const glm::dvec3& p, const Values& v);
 double onion_value(const glm::dvec3& p, const Values& v);
 double radial_value(const glm::dvec3& p, const Values& v);

@@ -1,8 +1,10 @@
-// Patterns of shapes in space (POV-Ray 3.7's pattern.cpp): gradient,
+// Patterns of shapes in space (POV-Ray 3.7's pattern.cpp): planar,
+// spherical, cylindrical and boxed (1 at the centre to 0 at 1), gradient,
 // onion, radial, leopard, quilted, the spirals, marble and wood (bands
 // bent by their own turbulence), waves and ripples (ten wave sources).
 #include "runtime/pattern/families.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -58,6 +60,24 @@ double distance_or_one(const glm::dvec3& p, const glm::dvec3& q) {
 }
 
 }  // namespace
+
+namespace {
+// POV-Ray's CLIP_DENSITY: 1 at the centre falling to 0 at distance 1, 0
+// beyond.
+double density(double r) { return r < 0.0 ? 1.0 : r > 1.0 ? 0.0 : 1.0 - r; }
+}  // namespace
+
+double planar_value(const glm::dvec3& p, const Values&) { return density(std::fabs(p.y)); }
+
+double spherical_value(const glm::dvec3& p, const Values&) {
+    return density(std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z));
+}
+
+double cylindrical_value(const glm::dvec3& p, const Values&) { return density(std::sqrt(p.x * p.x + p.z * p.z)); }
+
+double boxed_value(const glm::dvec3& p, const Values&) {
+    return density(std::max(std::fabs(p.x), std::max(std::fabs(p.y), std::fabs(p.z))));
+}
 
 double gradient_value(const glm::dvec3& p, const Values& v) {
     const double r = p.x * v.vector.x + p.y * v.vector.y + p.z * v.vector.z;

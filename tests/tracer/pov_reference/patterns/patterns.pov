@@ -34,6 +34,10 @@ camera { location <0, 0, -4> look_at <0, 0, 0> angle 60 }
     #case (21) wrinkles scale 0.5 color_map { Map } #break
     #case (22) bozo warp { turbulence 0.5 octaves 4 omega 0.6 lambda 2.5 } scale 0.5 scallop_wave color_map { Map } #break
     #case (23) gradient y poly_wave 2 phase 0.3 color_map { [0, 0.5 color rgb 0 color rgb 1] [0.5, 1 color rgb <1, 0, 0> color rgb <0, 0, 1>] } #break
+    #case (24) planar scale 2 color_map { Map } #break
+    #case (25) spherical scale 2 translate x color_map { Map } #break
+    #case (26) cylindrical scale 1.5 color_map { Map } #break
+    #case (27) boxed scale 1.5 rotate <20, 30, 0> color_map { Map } #break
   #end
   phase 0.5 * clock
   rotate z * 20 * clock
