@@ -56,6 +56,7 @@ HEXANT_NAME_ACTION(pattern_name);
 HEXANT_NAME_ACTION(pattern_setting_name);
 HEXANT_NAME_ACTION(pattern_wave_name);
 HEXANT_NAME_ACTION(warp_setting_name);
+HEXANT_NAME_ACTION(normal_setting_name);
 HEXANT_NAME_ACTION(finish_setting_name);
 HEXANT_NAME_ACTION(csg_kind);
 HEXANT_NAME_ACTION(object_flag_name);
@@ -672,25 +673,49 @@ HEXANT_ACTION(pigment_base) {
         }
     }
 };
-// ---- patterns (runtime/pattern/pattern.hpp)
+// ---- patterns (runtime/pattern/pattern.hpp), in a pigment or a normal
+
+// The pattern being written: a pigment's or a normal's.
+struct PatternSlot {
+    runtime::pattern::Pattern& pattern;
+    runtime::Transform& transform;
+    runtime::Pigment* pigment;  // null in a normal
+    runtime::Normal* normal;    // null in a pigment
+};
+inline PatternSlot pattern_slot(Interpreter& st, const p::position& at, const char* what) {
+    if (!st.blocks.empty() && std::holds_alternative<runtime::Normal>(st.blocks.back())) {
+        auto& n = st.block<runtime::Normal>(at, what);
+        return {n.patterned, n.transform, nullptr, &n};
+    }
+    auto& pigment = st.block<runtime::Pigment>(at, what);
+    return {pigment.patterned, pigment.transform, &pigment, nullptr};
+}
 
 HEXANT_ACTION(pattern_kind) {
     HEXANT_APPLY {
         std::vector<Value> args = st.close_frame();
         const std::string name = st.pop_name();
-        auto& pigment = st.block<runtime::Pigment>(in.position(), "a pattern");
+        const PatternSlot slot = pattern_slot(st, in.position(), "a pattern");
         const runtime::pattern::Kind* kind = runtime::pattern::find_kind(name);
         if (kind == nullptr) throw ValueError("no pattern " + name);
-        pigment.pattern = runtime::Pigment::Pattern::Patterned;
-        pigment.patterned = runtime::pattern::Pattern::of(*kind);
-        pigment.colour_map = {};
+        slot.pattern = runtime::pattern::Pattern::of(*kind);
+        if (slot.pigment) {
+            slot.pigment->pattern = runtime::Pigment::Pattern::Patterned;
+            slot.pigment->colour_map = {};
+        }
         using A = runtime::pattern::Kind::Argument;
+        // In a normal, one more number may follow: the amount (bump_size).
+        const std::size_t own = kind->argument == A::Vector || kind->argument == A::Number ? 1 : 0;
+        if (slot.normal && args.size() == own + 1) {
+            slot.normal->amount = to_float(args.back(), name + "'s amount");
+            args.pop_back();
+        }
         const auto count = [&](std::size_t lo, std::size_t hi, const char* what) {
             if (args.size() < lo || args.size() > hi)
                 throw ValueError(name + " takes " + what + ", not " + std::to_string(args.size()) + " values");
         };
         switch (kind->argument) {
-            case A::None: count(0, 0, "no value after it"); break;
+            case A::None: count(0, 0, slot.normal ? "at most an amount" : "no value after it"); break;
             case A::Vector: {
                 count(1, 1, "one vector (its direction)");
                 // POV-Ray normalizes the direction.
@@ -699,16 +724,19 @@ HEXANT_ACTION(pattern_kind) {
                     TimeOp::Sqrt, v.c[0] * v.c[0] + v.c[1] * v.c[1] + v.c[2] * v.c[2]);
                 if (length.is_constant() && length.constant() == 0.0)
                     throw ValueError(name + "'s direction is the zero vector");
-                for (int i = 0; i < 3; ++i) pigment.patterned.vector.c[i] = v.c[i] / length;
+                for (int i = 0; i < 3; ++i) slot.pattern.vector.c[i] = v.c[i] / length;
                 break;
             }
             case A::Number:
                 count(1, 1, "one number");
                 // (POV-Ray keeps the arms and the iterations as integers.)
-                pigment.patterned.number[0] =
-                    TimeFunction::apply(TimeOp::Int, to_float(args[0], name + "'s number"));
+                slot.pattern.number[0] = TimeFunction::apply(TimeOp::Int, to_float(args[0], name + "'s number"));
                 break;
             case A::Colours: {
+                if (slot.normal) {
+                    count(0, 0, "at most an amount in a normal (a list of normals is not supported)");
+                    break;
+                }
                 count(0, static_cast<std::size_t>(kind->colours),
                       kind->colours == 2 ? "at most 2 colours" : "at most 3 colours");
                 // A blend list: colour i at value i, the kind's default
@@ -722,7 +750,7 @@ HEXANT_ACTION(pattern_kind) {
                         const auto& d = kind->default_map[i].colour;
                         e.colour = runtime::ColourFunction{{d[0], d[1], d[2], d[3], d[4]}};
                     }
-                    pigment.colour_map.entries.push_back(std::move(e));
+                    slot.pigment->colour_map.entries.push_back(std::move(e));
                 }
                 break;
             }
@@ -734,8 +762,8 @@ HEXANT_ACTION(pattern_setting) {
     HEXANT_APPLY {
         Value v = st.pop();
         const std::string name = st.pop_name();
-        auto& pigment = st.block<runtime::Pigment>(in.position(), name.c_str());
-        runtime::pattern::Pattern& pattern = pigment.patterned;
+        const PatternSlot slot = pattern_slot(st, in.position(), name.c_str());
+        runtime::pattern::Pattern& pattern = slot.pattern;
         const std::string kind = pattern.kind ? std::string(pattern.kind->name) : "";
         const auto only = [&](const char* for_kind) {
             if (kind != for_kind) throw ValueError(name + " belongs to " + for_kind + ", not to " +
@@ -753,11 +781,7 @@ HEXANT_ACTION(pattern_setting) {
         else if (name == "omega") turbulence().omega = to_float(v, "omega");
         else if (name == "lambda") turbulence().lambda = to_float(v, "lambda");
         else if (name == "mortar") { only("brick"); pattern.number[0] = to_float(v, "mortar"); }
-        else if (name == "brick_size") {
-            only("brick");
-            const runtime::Vector3Function size = to_vector3(v, "brick_size");
-            pattern.vector = size;
-        }
+        else if (name == "brick_size") { only("brick"); pattern.vector = to_vector3(v, "brick_size"); }
         else if (name == "control0") { only("quilted"); pattern.number[0] = to_float(v, "control0"); }
         else if (name == "control1") { only("quilted"); pattern.number[1] = to_float(v, "control1"); }
         else if (name == "agate_turb") { only("agate"); pattern.number[0] = to_float(v, "agate_turb"); }
@@ -772,7 +796,7 @@ HEXANT_ACTION(pattern_wave) {
     HEXANT_APPLY {
         std::vector<Value> args = st.close_frame();
         const std::string name = st.pop_name();
-        auto& pattern = st.block<runtime::Pigment>(in.position(), name.c_str()).patterned;
+        runtime::pattern::Pattern& pattern = pattern_slot(st, in.position(), name.c_str()).pattern;
         using W = runtime::pattern::Wave;
         if (name != "poly_wave" && !args.empty()) throw ValueError(name + " takes no value");
         pattern.wave = name == "ramp_wave"       ? W::Ramp
@@ -789,31 +813,74 @@ HEXANT_ACTION(warp_open) {
     HEXANT_APPLY {
         // The transforms written so far come before this warp (applied
         // after it, world to pattern): they become a step of their own.
-        auto& pigment = st.block<runtime::Pigment>(in.position(), "warp");
-        if (!pigment.transform.empty()) {
+        const PatternSlot slot = pattern_slot(st, in.position(), "warp");
+        if (!slot.transform.empty()) {
             runtime::pattern::Warp step;
-            step.transform = pigment.transform;
-            pigment.patterned.warps.push_back(std::move(step));
-            pigment.transform = {};
+            step.transform = slot.transform;
+            slot.pattern.warps.push_back(std::move(step));
+            slot.transform = {};
         }
-        pigment.patterned.warps.push_back(runtime::pattern::Warp{});
+        slot.pattern.warps.push_back(runtime::pattern::Warp{});
     }
 };
 HEXANT_ACTION(warp_turbulence) {
     HEXANT_APPLY {
         Value v = st.pop();
-        auto& pigment = st.block<runtime::Pigment>(in.position(), "warp");
-        pigment.patterned.warps.back().turbulence.amount = to_vector3(v, "warp's turbulence");
+        pattern_slot(st, in.position(), "warp").pattern.warps.back().turbulence.amount =
+            to_vector3(v, "warp's turbulence");
     }
 };
 HEXANT_ACTION(warp_setting) {
     HEXANT_APPLY {
         Value v = st.pop();
         const std::string name = st.pop_name();
-        auto& turbulence = st.block<runtime::Pigment>(in.position(), "warp").patterned.warps.back().turbulence;
+        auto& turbulence = pattern_slot(st, in.position(), "warp").pattern.warps.back().turbulence;
         if (name == "octaves") turbulence.octaves = to_float(v, "octaves");
         else if (name == "omega") turbulence.omega = to_float(v, "omega");
         else turbulence.lambda = to_float(v, "lambda");
+    }
+};
+
+// ---- normal { }
+HEXANT_ACTION(normal_open) {
+    HEXANT_APPLY { (void)in; st.blocks.emplace_back(std::in_place_type<runtime::Normal>); }
+};
+HEXANT_ACTION(normal_base) {
+    HEXANT_APPLY {
+        Value v = st.pop();
+        if (!v.is<runtime::Normal>()) throw ValueError("normal { } starts with a normal, not a " + type_name(v));
+        st.block<runtime::Normal>(in.position(), "a normal") = v.as<runtime::Normal>();
+    }
+};
+HEXANT_ACTION(normal_setting) {
+    HEXANT_APPLY {
+        Value v = st.pop();
+        const std::string name = st.pop_name();
+        auto& normal = st.block<runtime::Normal>(in.position(), name.c_str());
+        if (name == "bump_size") normal.amount = to_float(v, "bump_size");
+        else normal.accuracy = to_float(v, "accuracy");
+    }
+};
+HEXANT_ACTION(normal_no_bump_scale) {
+    HEXANT_APPLY { st.block<runtime::Normal>(in.position(), "no_bump_scale").no_bump_scale = true; }
+};
+HEXANT_ACTION(normal_block) {
+    HEXANT_APPLY {
+        auto& normal = st.block<runtime::Normal>(in.position(), "a normal");
+        if (normal.patterned.kind == nullptr && normal.unsupported_name.empty())
+            throw ValueError("a normal needs a pattern (POV-Ray: no normal type given)");
+        Value v{std::move(normal)};
+        st.blocks.pop_back();
+        st.push(std::move(v));
+    }
+};
+HEXANT_ACTION(texture_normal) {
+    HEXANT_APPLY { Value v = st.pop(); st.block<runtime::Texture>(in.position(), "normal").normal = v.as<runtime::Normal>(); }
+};
+HEXANT_ACTION(camera_normal) {
+    HEXANT_APPLY {
+        Value v = st.pop();
+        st.block<runtime::CameraRecord>(in.position(), "normal").normal = v.as<runtime::Normal>();
     }
 };
 
@@ -868,6 +935,12 @@ HEXANT_ACTION(pigment_colour_map) {
 };
 HEXANT_ACTION(unsupported_pattern) {
     HEXANT_APPLY {
+        if (!st.blocks.empty() && std::holds_alternative<runtime::Normal>(st.blocks.back())) {
+            auto& normal = st.block<runtime::Normal>(in.position(), "a pattern");
+            normal.unsupported_name = st.pop_name();
+            normal.unsupported_place = {in.position().source, in.position().line, in.position().column};
+            return;
+        }
         auto& pigment = st.block<runtime::Pigment>(in.position(), "a pattern");
         pigment.pattern = runtime::Pigment::Pattern::Unsupported;
         pigment.unsupported_name = st.pop_name();
@@ -981,12 +1054,6 @@ HEXANT_ACTION(texture_pigment) {
 };
 HEXANT_ACTION(texture_finish) {
     HEXANT_APPLY { Value v = st.pop(); st.block<runtime::Texture>(in.position(), "finish").finish = v.as<runtime::Finish>(); }
-};
-HEXANT_ACTION(normal_block) {
-    HEXANT_APPLY {
-        if (!st.warned_normal) st.warn(in.position(), "normal { } is read and ignored: hexant does not perturb normals");
-        st.warned_normal = true;
-    }
 };
 HEXANT_ACTION(texture_block) {
     HEXANT_APPLY {
@@ -1152,6 +1219,9 @@ HEXANT_ACTION(object_texture) {
 };
 HEXANT_ACTION(object_pigment) {
     HEXANT_APPLY { Value v = st.pop(); object_texture(st, in.position()).pigment = v.as<runtime::Pigment>(); }
+};
+HEXANT_ACTION(object_normal) {
+    HEXANT_APPLY { Value v = st.pop(); object_texture(st, in.position()).normal = v.as<runtime::Normal>(); }
 };
 HEXANT_ACTION(object_finish) {
     HEXANT_APPLY { Value v = st.pop(); object_texture(st, in.position()).finish = v.as<runtime::Finish>(); }

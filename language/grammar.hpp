@@ -539,7 +539,8 @@ struct unsupported_pattern_name
              TAO_PEGTL_KEYWORD("tiling"), TAO_PEGTL_KEYWORD("cubic"), TAO_PEGTL_KEYWORD("object"),
              TAO_PEGTL_KEYWORD("slope"), TAO_PEGTL_KEYWORD("aoi"), TAO_PEGTL_KEYWORD("density_file"),
              TAO_PEGTL_KEYWORD("image_pattern"), TAO_PEGTL_KEYWORD("uv_mapping"),
-             TAO_PEGTL_KEYWORD("wave")> {};
+             TAO_PEGTL_KEYWORD("normal_map"), TAO_PEGTL_KEYWORD("slope_map"),
+             TAO_PEGTL_KEYWORD("bump_map"), TAO_PEGTL_KEYWORD("wave")> {};
 struct unsupported_pattern : p::seq<unsupported_pattern_name, skip::until_rbrace> {};
 
 // The patterns hexant has (runtime/pattern/registry.cpp, the same names),
@@ -641,8 +642,20 @@ struct finish_item
 struct finish_block
     : p::seq<finish_open, p::opt<finish_base>, p::star<finish_item>, p::must<rbrace>> {};
 
-// normal { } changes shading only; hexant reads it and ignores it.
-struct normal_block : p::seq<kw_normal, p::must<skipped_block>, ws> {};
+// normal { PATTERN [AMOUNT] modifiers }, or a declared one: the same
+// pattern rules as a pigment's, with bump_size, accuracy, no_bump_scale.
+struct normal_open : p::seq<kw_normal, p::must<lbrace>> {};
+struct normal_base : p::seq<p::not_at<pattern_name>, expression> {};
+struct normal_setting_name : p::sor<TAO_PEGTL_KEYWORD("bump_size"), TAO_PEGTL_KEYWORD("accuracy")> {};
+struct normal_setting : p::seq<normal_setting_name, ws, p::must<pattern_setting_value>> {};
+struct normal_no_bump_scale : p::seq<TAO_PEGTL_KEYWORD("no_bump_scale"), ws> {};
+struct normal_item
+    : p::sor<directive<normal_item>, macro_call<normal_item>, pattern_kind, pattern_setting, pattern_wave,
+             warp_block, normal_setting, normal_no_bump_scale, unsupported_pattern, transformation> {};
+struct normal_block : p::seq<normal_open, p::opt<normal_base>, p::star<normal_item>, p::must<rbrace>> {};
+struct texture_normal : p::seq<normal_block> {};
+struct object_normal : p::seq<normal_block> {};
+struct camera_normal : p::seq<normal_block> {};
 
 struct interior_open : p::seq<kw_interior, p::must<lbrace>> {};
 struct interior_base : p::seq<expression> {};
@@ -667,7 +680,7 @@ struct texture_pigment : p::seq<pigment_block> {};
 struct texture_finish : p::seq<finish_block> {};
 struct texture_item
     : p::sor<directive<texture_item>, macro_call<texture_item>, texture_pigment, texture_finish,
-             normal_block, transformation> {};
+             texture_normal, transformation> {};
 struct texture_block
     : p::seq<texture_open, p::opt<texture_base>, p::star<texture_item>, p::must<rbrace>> {};
 
@@ -843,7 +856,7 @@ struct object_ignored_block
              ws, p::must<skipped_block>, ws> {};
 struct object_modifier
     : p::sor<directive<object_modifier>, macro_call<object_modifier>, transformation,
-             deformation, object_texture, object_pigment, object_finish, normal_block,
+             deformation, object_texture, object_pigment, object_finish, object_normal,
              object_interior, object_material, object_flag, object_ignored_block> {};
 
 // ---------------------------------------------------------------- scene items
@@ -870,7 +883,7 @@ struct camera_ignored_setting
              ws, p::must<ignored_value>, p::opt<comma, ignored_value>> {};
 struct camera_item
     : p::sor<directive<camera_item>, macro_call<camera_item>, camera_perspective, camera_setting,
-             camera_ignored_setting, transformation, camera_unsupported_type> {};
+             camera_ignored_setting, camera_normal, transformation, camera_unsupported_type> {};
 struct camera_block
     : p::seq<camera_open, p::opt<camera_base>, p::star<camera_item>, p::must<rbrace>> {};
 
@@ -957,8 +970,8 @@ struct material_value : p::seq<material_block> {};
 struct texture_value : p::seq<texture_block, p::star<texture_layer>> {};
 
 struct value
-    : p::sor<object_value, camera_block, texture_value, pigment_block, colour_map_block, sky_sphere_block,
-             finish_block,
+    : p::sor<object_value, camera_block, texture_value, pigment_block, normal_block, colour_map_block,
+             sky_sphere_block, finish_block,
              interior_block, material_value, transform_value, array_value, spline_block,
              unsupported_block, expression> {};
 

@@ -170,6 +170,8 @@ void Interpreter::apply_transform(runtime::TransformStep step, const p::position
         texture->transform.append(std::move(step));
     } else if (auto* pigment = std::get_if<runtime::Pigment>(&b)) {
         pigment->transform.append(std::move(step));
+    } else if (auto* normal = std::get_if<runtime::Normal>(&b)) {
+        normal->transform.append(std::move(step));
     } else if (auto* sky = std::get_if<runtime::SkySphere>(&b)) {
         sky->transform.append(std::move(step));
     } else if (auto* transform = std::get_if<runtime::Transform>(&b)) {

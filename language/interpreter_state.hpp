@@ -56,7 +56,8 @@ struct MaterialBuilder {
 
 // A block under construction: `sphere { ... }`, `texture { ... }` ...
 using Block = std::variant<runtime::ObjectRecord, runtime::LightRecord, runtime::CameraRecord,
-                           runtime::Texture, runtime::Pigment, runtime::ColourMap, runtime::SkySphere, runtime::Finish,
+                           runtime::Texture, runtime::Pigment, runtime::Normal, runtime::ColourMap, runtime::SkySphere,
+                           runtime::Finish,
                            runtime::Interior,
                            runtime::Transform, SplineBuilder, MaterialBuilder>;
 
@@ -174,7 +175,6 @@ public:
     double version = 3.7;
     // prism { ... } options read before its arguments
     std::string prism_spline = "linear_spline", prism_sweep = "linear_sweep";
-    bool warned_normal = false;
     runtime::SourcePlace shape_place;  // where the shape being read was written
 
     // ---- directives, called by the custom rules in grammar.hpp

@@ -10,8 +10,9 @@
 namespace hexant::language::grammar {
 
 namespace {
-constexpr std::array<std::string_view, 334> kReserved = {
+constexpr std::array<std::string_view, 338> kReserved = {
     "abs",
+    "accuracy",
     "acos",
     "adaptive",
     "agate",
@@ -47,6 +48,8 @@ constexpr std::array<std::string_view, 334> kReserved = {
     "brick",
     "brick_size",
     "brilliance",
+    "bump_map",
+    "bump_size",
     "bumps",
     "camera",
     "case",
@@ -192,6 +195,7 @@ constexpr std::array<std::string_view, 334> kReserved = {
     "motion_blur",
     "natural_spline",
     "no",
+    "no_bump_scale",
     "no_image",
     "no_radiosity",
     "no_reflection",

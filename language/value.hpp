@@ -57,7 +57,7 @@ struct Array {
 struct Value {
     using Variant =
         std::variant<TimeFunction, Vector, std::string, TimedString, runtime::ObjectPtr, runtime::LightRecord,
-                     runtime::CameraRecord, runtime::Texture, runtime::Pigment, runtime::ColourMap, runtime::SkySphere, runtime::Finish,
+                     runtime::CameraRecord, runtime::Texture, runtime::Pigment, runtime::Normal, runtime::ColourMap, runtime::SkySphere, runtime::Finish,
                      runtime::Interior, runtime::Transform, std::shared_ptr<Array>,
                      std::shared_ptr<const runtime::Spline>, std::shared_ptr<const Macro>,
                      Unevaluated>;

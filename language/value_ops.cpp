@@ -20,6 +20,7 @@ std::string type_name(const Value& value) {
         std::string operator()(const runtime::Texture&) const { return "texture"; }
         std::string operator()(const runtime::Pigment&) const { return "pigment"; }
         std::string operator()(const runtime::ColourMap&) const { return "color_map"; }
+        std::string operator()(const runtime::Normal&) const { return "normal"; }
         std::string operator()(const runtime::SkySphere&) const { return "sky_sphere"; }
         std::string operator()(const runtime::Finish&) const { return "finish"; }
         std::string operator()(const runtime::Interior&) const { return "interior"; }

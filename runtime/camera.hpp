@@ -4,11 +4,13 @@
 // as written, each possibly a function of time, and evaluates them at t.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
 #include "runtime/lifetime.hpp"
+#include "runtime/material.hpp"
 #include "runtime/transform.hpp"
 #include "runtime/vector_function.hpp"
 
@@ -43,6 +45,10 @@ struct CameraRecord {
         std::vector<CameraItem> items;
     };
     std::vector<Piece> pieces;
+    // normal { } in the camera: each ray's direction perturbed by the
+    // pattern at its point on the screen (x, y from -0.5 to 0.5, z 0), as
+    // POV-Ray's TracePixel::CreateCameraRay does.
+    std::optional<Normal> normal;
 
     bool depends_on_time() const;
     // The camera at time t. POV-Ray does not change `right` to match the

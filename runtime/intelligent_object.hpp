@@ -48,12 +48,17 @@ struct ObjectHit {
 
 // What complete() returns: world-space normals at the hit's time, texture
 // coordinates and the material evaluated at the hit's time and place.
+class TextureEvaluator;
+
 struct SurfacePoint {
     Event event{};
     glm::dvec3 geometric_normal{};  // unit; for solids outward, for flat shapes their own side
     glm::dvec3 shading_normal{};    // unit; faces the same side as geometric_normal
     glm::dvec2 uv{};
     MaterialSample material;
+    // The texture, when it perturbs the shading normal (normal { }): the
+    // shader asks it after turning the normal to face the ray.
+    const TextureEvaluator* texture = nullptr;
     glm::dvec3 error{0.0};  // world bound of event's error (geometry::world_error): what a secondary ray must clear
 };
 

@@ -14,4 +14,9 @@ bool Pigment::depends_on_time() const {
     return patterned.depends_on_time() || colour_map.depends_on_time() || transform.depends_on_time();
 }
 
+bool Normal::depends_on_time() const {
+    return patterned.depends_on_time() || amount.depends_on_time() || accuracy.depends_on_time() ||
+           transform.depends_on_time();
+}
+
 }  // namespace hexant::runtime

@@ -64,11 +64,30 @@ struct Interior {
     TimeFunction ior = 1.0;
 };
 
+// normal { PATTERN [AMOUNT] ... }: the shading normal perturbed by a
+// pattern (POV-Ray's Perturb_Normal): bumps, dents, ripples, waves,
+// wrinkles and quilted by their own functions, any other pattern by its
+// slope, sampled `accuracy` apart.
+struct Normal {
+    pattern::Pattern patterned;
+    TimeFunction amount = 0.5;     // bump_size
+    TimeFunction accuracy = 0.02;  // POV-Ray's Delta
+    bool no_bump_scale = false;
+    // The transforms after the pattern's last warp: pattern space to
+    // object space (as Pigment::transform).
+    Transform transform;
+    // A pattern hexant lacks here (facets, normal_map ...): named, and
+    // where it was written, for the error where it is used.
+    std::string unsupported_name;
+    SourcePlace unsupported_place;
+    bool depends_on_time() const;
+};
+
 struct Texture {
     Pigment pigment;
+    std::optional<Normal> normal;
     Finish finish;
     Transform transform;  // texture space to object space
-    bool has_normal = false;  // a `normal { }` was given; hexant ignores it
 };
 
 }  // namespace hexant::runtime

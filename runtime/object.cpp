@@ -97,6 +97,7 @@ bool ObjectRecord::shape_depends_on_time() const { return !timed_parameters().em
 bool ObjectRecord::texture_depends_on_time() const {
     if (!texture) return false;
     if (texture->pigment.depends_on_time()) return true;
+    if (texture->normal && texture->normal->depends_on_time()) return true;
     const Finish& f = texture->finish;
     return varies(f.ambient) || varies(f.diffuse) || varies(f.brilliance) || varies(f.phong) ||
            varies(f.phong_size) || varies(f.specular) || varies(f.roughness) ||

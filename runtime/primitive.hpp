@@ -198,6 +198,7 @@ public:
         else
             p.uv = hit.uv;
         p.material = texture_.at(glm::dvec3(hit.event), t);
+        if (texture_.has_normal()) p.texture = &texture_;
         return p;
     }
 

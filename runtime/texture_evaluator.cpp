@@ -5,15 +5,19 @@
 #include <map>
 #include <mutex>
 
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
 #include "runtime/object_error.hpp"
 
 namespace hexant::runtime {
 
 namespace {
 
-Transform pattern_transform(const Texture& texture) {
-    Transform t = texture.pigment.transform;
-    t.append(texture.transform);
+// The transforms after a pattern's last warp, then the texture's.
+Transform head_transform(const Transform& last, const Transform& texture) {
+    Transform t = last;
+    t.append(texture);
     return t;
 }
 
@@ -76,12 +80,65 @@ pattern::Octaves TextureEvaluator::CompiledTurbulence::at(double t) const {
     return pattern::octaves_of(octaves.at(t), omega.at(t), lambda.at(t));
 }
 
+TextureEvaluator::CompiledPattern::CompiledPattern(const pattern::Pattern& source, const Transform& last,
+                                                   const Transform& texture)
+    : kind(source.kind), head(std::make_shared<const Motion>(head_transform(last, texture))) {
+    if (kind == nullptr) throw std::logic_error("TextureEvaluator: a pattern without its kind");
+    for (int i = 0; i < 3; ++i) vector[static_cast<std::size_t>(i)] = CompiledScalar(source.vector.c[i]);
+    for (std::size_t i = 0; i < 2; ++i) number[i] = CompiledScalar(source.number[i]);
+    if (source.turbulence) turbulence = compile(*source.turbulence);
+    frequency = CompiledScalar(source.frequency);
+    phase = CompiledScalar(source.phase);
+    exponent = CompiledScalar(source.exponent);
+    wave = source.wave;
+    if (source.noise_generator != 0) noise_generator = source.noise_generator;
+    for (const pattern::Warp& w : source.warps) {
+        CompiledWarp c;
+        if (w.transform) c.transform = std::make_shared<const Motion>(*w.transform);
+        else c.turbulence = compile(w.turbulence);
+        warps.push_back(std::move(c));
+    }
+}
+
+pattern::Values TextureEvaluator::CompiledPattern::values(double t) const {
+    // (POV-Ray keeps frequency, phase and the kinds' numbers in single
+    // precision: pattern::single.)
+    pattern::Values v;
+    v.vector = {vector[0].at(t), vector[1].at(t), vector[2].at(t)};
+    v.number = {pattern::single(number[0].at(t)), pattern::single(number[1].at(t))};
+    v.frequency = pattern::single(frequency.at(t));
+    v.phase = pattern::single(phase.at(t));
+    v.noise_generator = noise_generator;
+    if (turbulence) {
+        v.has_turbulence = true;
+        v.turbulence = {turbulence->amount[0].at(t), turbulence->amount[1].at(t), turbulence->amount[2].at(t)};
+        v.octaves = turbulence->at(t);
+    }
+    return v;
+}
+
+glm::dvec3 TextureEvaluator::CompiledPattern::point(const glm::dvec3& world, double t,
+                                                    const pattern::Values& v) const {
+    const auto q = head->to_object<double>({world.x, world.y, world.z}, t);
+    glm::dvec3 p(q[0], q[1], q[2]);
+    for (auto w = warps.rbegin(); w != warps.rend(); ++w) {
+        if (w->transform) {
+            const auto r = w->transform->to_object<double>({p.x, p.y, p.z}, t);
+            p = {r[0], r[1], r[2]};
+        } else {
+            const CompiledTurbulence& turb = w->turbulence;
+            p = pattern::apply_turbulence(p, {turb.amount[0].at(t), turb.amount[1].at(t), turb.amount[2].at(t)},
+                                          turb.at(t));
+        }
+    }
+    if (v.has_turbulence && !kind->own_turbulence) p = pattern::apply_turbulence(p, v.turbulence, v.octaves);
+    return p;
+}
+
+bool TextureEvaluator::CompiledPattern::depends_on_time() const { return !head->is_static(); }
+
 TextureEvaluator::TextureEvaluator(const Texture& texture, const std::optional<Interior>& interior)
-    : pattern_(texture.pigment.pattern),
-      pattern_to_world_(pattern_ == Pigment::Pattern::Patterned
-                            ? std::make_shared<const Motion>(pattern_transform(texture))
-                            : nullptr),
-      finish_(compile(texture.finish, interior)) {
+    : pattern_(texture.pigment.pattern), finish_(compile(texture.finish, interior)) {
     const Pigment& pigment = texture.pigment;
     if (pattern_ == Pigment::Pattern::Unsupported)
         throw ObjectError(pigment.unsupported_place,
@@ -92,38 +149,33 @@ TextureEvaluator::TextureEvaluator(const Texture& texture, const std::optional<I
         colours_.push_back(compile(pigment.colours.front()));
         depends_on_time_ = pigment.colours.front().depends_on_time();
     } else {
-        const pattern::Pattern& source = pigment.patterned;
-        if (source.kind == nullptr) throw std::logic_error("TextureEvaluator: a pattern without its kind");
-        auto p = std::make_unique<CompiledPattern>();
-        p->kind = source.kind;
-        for (int i = 0; i < 3; ++i) p->vector[static_cast<std::size_t>(i)] = CompiledScalar(source.vector.c[i]);
-        for (std::size_t i = 0; i < 2; ++i) p->number[i] = CompiledScalar(source.number[i]);
-        if (source.turbulence) p->turbulence = compile(*source.turbulence);
-        p->frequency = CompiledScalar(source.frequency);
-        p->phase = CompiledScalar(source.phase);
-        p->exponent = CompiledScalar(source.exponent);
-        p->wave = source.wave;
-        if (source.noise_generator != 0) p->noise_generator = source.noise_generator;
-        for (const pattern::Warp& w : source.warps) {
-            CompiledWarp c;
-            if (w.transform) c.transform = std::make_shared<const Motion>(*w.transform);
-            else c.turbulence = compile(w.turbulence);
-            p->warps.push_back(std::move(c));
-        }
+        auto p = std::make_shared<CompiledPigment>(
+            CompiledPigment{CompiledPattern(pigment.patterned, pigment.transform, texture.transform), {}, {}});
         const ColourMap& map = pigment.colour_map;
         if (map.entries.empty()) {
-            p->fixed_map = source.kind->default_map;
+            p->fixed_map = pigment.patterned.kind->default_map;
         } else if (!map.depends_on_time()) {
             for (const auto& e : map.entries) {
-                pattern::MapEntry fixed{e.value.constant(), {}};
+                pattern::MapEntry fixed{pattern::single(e.value.constant()), {}};
                 for (std::size_t i = 0; i < 5; ++i) fixed.colour[i] = e.colour.c[i].constant();
                 p->fixed_map.push_back(fixed);
             }
         } else {
             for (const auto& e : map.entries) p->map.push_back({CompiledScalar(e.value), compile(e.colour)});
         }
-        pattern_data_ = std::move(p);
-        depends_on_time_ = pigment.depends_on_time() || !pattern_to_world_->is_static();
+        depends_on_time_ = pigment.depends_on_time() || p->pattern.depends_on_time();
+        pigment_ = std::move(p);
+    }
+    if (texture.normal) {
+        const Normal& n = *texture.normal;
+        if (!n.unsupported_name.empty())
+            throw ObjectError(n.unsupported_place,
+                              "normal pattern '" + n.unsupported_name + "' is not supported by hexant's tracer");
+        if (n.patterned.kind == nullptr) throw std::logic_error("TextureEvaluator: a normal without its pattern");
+        normal_ = std::make_shared<const CompiledNormal>(
+            CompiledNormal{CompiledPattern(n.patterned, n.transform, texture.transform), CompiledScalar(n.amount),
+                           CompiledScalar(n.accuracy), n.no_bump_scale});
+        depends_on_time_ = depends_on_time_ || n.depends_on_time() || normal_->pattern.depends_on_time();
     }
     const Finish& f = texture.finish;
     for (const TimeFunction* value :
@@ -134,43 +186,61 @@ TextureEvaluator::TextureEvaluator(const Texture& texture, const std::optional<I
 }
 
 std::array<double, 5> TextureEvaluator::pattern_colour(const glm::dvec3& world_point, double t) const {
-    const CompiledPattern& p = *pattern_data_;
-    // World to pattern space (POV-Ray's Warp_EPoint): the last transforms
-    // first, then each earlier step, last written first; classic
-    // turbulence last of all, unless the kind reads it itself.
-    const auto q = pattern_to_world_->to_object<double>({world_point.x, world_point.y, world_point.z}, t);
-    glm::dvec3 point(q[0], q[1], q[2]);
-    for (auto w = p.warps.rbegin(); w != p.warps.rend(); ++w) {
-        if (w->transform) {
-            const auto r = w->transform->to_object<double>({point.x, point.y, point.z}, t);
-            point = {r[0], r[1], r[2]};
-        } else {
-            const CompiledTurbulence& turb = w->turbulence;
-            point = pattern::apply_turbulence(
-                point, {turb.amount[0].at(t), turb.amount[1].at(t), turb.amount[2].at(t)}, turb.at(t));
-        }
-    }
-    pattern::Values v;
-    v.vector = {p.vector[0].at(t), p.vector[1].at(t), p.vector[2].at(t)};
-    v.number = {p.number[0].at(t), p.number[1].at(t)};
-    v.frequency = p.frequency.at(t);
-    v.phase = p.phase.at(t);
-    v.noise_generator = p.noise_generator;
-    if (p.turbulence) {
-        v.has_turbulence = true;
-        v.turbulence = {p.turbulence->amount[0].at(t), p.turbulence->amount[1].at(t),
-                        p.turbulence->amount[2].at(t)};
-        v.octaves = p.turbulence->at(t);
-        if (!p.kind->own_turbulence) point = pattern::apply_turbulence(point, v.turbulence, v.octaves);
-    }
-    const double value = pattern::evaluate(*p.kind, point, v, p.wave, p.exponent.at(t));
+    const CompiledPigment& p = *pigment_;
+    const pattern::Values v = p.pattern.values(t);
+    const glm::dvec3 point = p.pattern.point(world_point, t, v);
+    const double value =
+        pattern::evaluate(*p.pattern.kind, point, v, p.pattern.wave, pattern::single(p.pattern.exponent.at(t)));
     if (p.map.empty()) return pattern::map_colour(p.fixed_map, value);
     std::vector<pattern::MapEntry> map;
     map.reserve(p.map.size());
     for (const auto& [at, colour] : p.map)
-        map.push_back({at.at(t), {colour.c[0].at(t), colour.c[1].at(t), colour.c[2].at(t), colour.c[3].at(t),
-                                  colour.c[4].at(t)}});
+        map.push_back({pattern::single(at.at(t)), {colour.c[0].at(t), colour.c[1].at(t), colour.c[2].at(t),
+                                                   colour.c[3].at(t), colour.c[4].at(t)}});
     return pattern::map_colour(map, value);
+}
+
+glm::dvec3 TextureEvaluator::perturb(const glm::dvec3& normal, const glm::dvec3& world_point, double t) const {
+    if (!normal_) return normal;
+    const CompiledNormal& n = *normal_;
+    const CompiledPattern& p = n.pattern;
+    const pattern::Values v = p.values(t);
+    const glm::dvec3 point = p.point(world_point, t, v);
+    // Into pattern space: a normal goes by the transpose of each linear
+    // map, world to pattern, in the order the point went (POV-Ray's
+    // MInvTransNormal); back by their inverse transposes, in reverse.
+    const auto unit = [&](const glm::dvec3& x) {
+        const double l = glm::length(x);
+        return n.no_bump_scale || !(l > 0.0) || !std::isfinite(l) ? x : x / l;
+    };
+    std::vector<glm::dmat3> maps;  // pattern-to-world linear parts, head first
+    const auto head_q = p.head->to_object<double>({world_point.x, world_point.y, world_point.z}, t);
+    maps.push_back(p.head->jacobian_at({head_q[0], head_q[1], head_q[2]}, t));
+    glm::dvec3 at(head_q[0], head_q[1], head_q[2]);
+    for (auto w = p.warps.rbegin(); w != p.warps.rend(); ++w) {
+        if (!w->transform) continue;
+        const auto r = w->transform->to_object<double>({at.x, at.y, at.z}, t);
+        at = {r[0], r[1], r[2]};
+        maps.push_back(w->transform->jacobian_at(at, t));
+    }
+    glm::dvec3 pn = unit(normal);
+    for (const glm::dmat3& m : maps) pn = glm::transpose(m) * pn;
+    pn = unit(pn);
+    const double amount = pattern::single(n.amount.at(t));
+    glm::dvec3 bumped;
+    if (p.kind->normal != nullptr) {
+        bumped = p.kind->normal(point, v, amount, pn);
+    } else {
+        const double delta = pattern::single(n.accuracy.at(t));
+        bumped = pattern::slope_normal(*p.kind, point, v, p.wave, pattern::single(p.exponent.at(t)), amount,
+                                       delta, pn);
+    }
+    glm::dvec3 out = unit(bumped);
+    for (auto m = maps.rbegin(); m != maps.rend(); ++m) out = glm::transpose(glm::inverse(*m)) * out;
+    const double l = glm::length(out);
+    // (A bump that cancels the normal, or a flat map: the normal unchanged.)
+    if (!(l > 0.0) || !std::isfinite(l)) return normal;
+    return out / l;
 }
 
 MaterialSample TextureEvaluator::at(const glm::dvec3& world_point, double t) const {

@@ -27,6 +27,15 @@ public:
     MaterialSample at(const glm::dvec3& world_point, double t) const;
     bool depends_on_time() const { return depends_on_time_; }
 
+    // Whether the texture perturbs the shading normal (normal { }).
+    bool has_normal() const { return normal_ != nullptr; }
+    // The unit shading normal `normal` (unit, world, already turned to face
+    // the viewer, as POV-Ray perturbs it) perturbed at `world_point` and
+    // time t: taken into the normal pattern's space, bumped, taken back
+    // (POV-Ray's Warp_Normal, Perturb_Normal, UnWarp_Normal). A bump that
+    // cancels the normal leaves it as it was.
+    glm::dvec3 perturb(const glm::dvec3& normal, const glm::dvec3& world_point, double t) const;
+
 private:
     struct CompiledColour {
         std::array<CompiledScalar, 5> c;
@@ -56,6 +65,8 @@ private:
     };
     struct CompiledPattern {
         const pattern::Kind* kind = nullptr;
+        // Its last transforms, then the texture's: pattern space to world.
+        std::shared_ptr<const Motion> head;
         std::array<CompiledScalar, 3> vector;
         std::array<CompiledScalar, 2> number;
         std::optional<CompiledTurbulence> turbulence;
@@ -63,9 +74,27 @@ private:
         pattern::Wave wave = pattern::Wave::Ramp;
         int noise_generator = pattern::kDefaultNoiseGenerator;
         std::vector<CompiledWarp> warps;  // in the order written
+
+        CompiledPattern(const pattern::Pattern& source, const Transform& last, const Transform& texture);
+        bool depends_on_time() const;
+        // The parameters at t.
+        pattern::Values values(double t) const;
+        // The world point in pattern space (POV-Ray's Warp_EPoint): the
+        // last transforms first, then each earlier step, last written
+        // first; classic turbulence last of all, unless the kind reads it
+        // itself.
+        glm::dvec3 point(const glm::dvec3& world, double t, const pattern::Values& v) const;
+    };
+    struct CompiledPigment {
+        CompiledPattern pattern;
         // The map: fixed when nothing in it moves, else compiled.
         std::vector<pattern::MapEntry> fixed_map;
         std::vector<std::pair<CompiledScalar, CompiledColour>> map;
+    };
+    struct CompiledNormal {
+        CompiledPattern pattern;
+        CompiledScalar amount, accuracy;
+        bool no_bump_scale = false;
     };
     static CompiledTurbulence compile(const pattern::Turbulence& turbulence);
     std::array<double, 5> pattern_colour(const glm::dvec3& world_point, double t) const;
@@ -73,10 +102,8 @@ private:
     Pigment::Pattern pattern_;
     bool depends_on_time_ = false;
     std::vector<CompiledColour> colours_;
-    // The pigment's last transforms, then the texture's: only a pattern
-    // reads its placement; a plain colour keeps none.
-    std::shared_ptr<const Motion> pattern_to_world_;
-    std::shared_ptr<const CompiledPattern> pattern_data_;  // shared by copies
+    std::shared_ptr<const CompiledPigment> pigment_;  // shared by copies
+    std::shared_ptr<const CompiledNormal> normal_;
     std::shared_ptr<const CompiledFinish> finish_;
 };
 

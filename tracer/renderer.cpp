@@ -113,6 +113,11 @@ Renderer::Renderer(const runtime::SceneDescription& scene, const RenderSettings&
     }
     query_ = make_ray_query(settings.mode, set, root_, build, counters_);
     shader_ = std::make_unique<Shader>(scene, *query_);
+    if (scene.camera.normal) {
+        runtime::Texture screen;
+        screen.normal = *scene.camera.normal;
+        camera_normal_.emplace(screen, std::nullopt);
+    }
 }
 
 Renderer::~Renderer() = default;
@@ -164,8 +169,10 @@ Image Renderer::render_frame(int frame) {
                         // 0.5 (top) to -0.5; left-handed.
                         const double u = (x + s.x) / width - 0.5;
                         const double v = 0.5 - (y + s.y) / height;
-                        const glm::dvec3 d =
-                            glm::normalize(camera.direction + u * camera.right + v * camera.up);
+                        glm::dvec3 d = glm::normalize(camera.direction + u * camera.right + v * camera.up);
+                        // (A camera's normal { } bends each ray by the pattern at
+                        // its point on the screen.)
+                        if (camera_normal_) d = camera_normal_->perturb(d, {u, v, 0.0}, t);
                         const runtime::Ray4 ray{Event(camera.location, t), Event(d, 0.0)};
                         sum += shader_->trace(ray, state);
                     }

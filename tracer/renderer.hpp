@@ -8,10 +8,12 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "runtime/intelligent_object.hpp"
 #include "runtime/scene.hpp"
+#include "runtime/texture_evaluator.hpp"
 #include "tracer/counters.hpp"
 #include "tracer/image.hpp"
 #include "tracer/ray_query.hpp"
@@ -74,6 +76,8 @@ private:
     Counters counters_;
     std::unique_ptr<RayQuery> query_;
     std::unique_ptr<Shader> shader_;
+    // The camera's normal { }, when it has one (runtime/camera.hpp).
+    std::optional<runtime::TextureEvaluator> camera_normal_;
 };
 
 }  // namespace hexant::tracer

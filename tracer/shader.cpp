@@ -98,6 +98,9 @@ glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, ThreadSta
     const bool back = glm::dot(geometric, d) > 0.0;
     if (back) geometric = -geometric;
     if (glm::dot(n, d) > 0.0) n = -n;
+    // normal { }: perturbed after the turn, as POV-Ray perturbs the
+    // viewer-facing normal.
+    if (p.texture != nullptr) n = p.texture->perturb(n, point, time);
 
     const double opaque = std::clamp(1.0 - m.filter - m.transmit, 0.0, 1.0);
     const glm::dvec3 ambient = still_ambient_ ? fixed_ambient_ : rgb(ambient_light_, time);

@@ -2,6 +2,8 @@
 // its name and defaults.
 #pragma once
 
+#include <cstddef>
+
 #include "runtime/pattern/pattern.hpp"
 
 namespace hexant::runtime::pattern {
@@ -34,5 +36,20 @@ double brick_value(const glm::dvec3& p, const Values& v);
 double hexagon_value(const glm::dvec3& p, const Values& v);
 // fractal_patterns.cpp
 double mandel_value(const glm::dvec3& p, const Values& v);
+// normal_patterns.cpp: the normal-only patterns' perturbations
+glm::dvec3 bumps_normal(const glm::dvec3& p, const Values& v, double amount, const glm::dvec3& n);
+glm::dvec3 dents_normal(const glm::dvec3& p, const Values& v, double amount, const glm::dvec3& n);
+glm::dvec3 wrinkles_normal(const glm::dvec3& p, const Values& v, double amount, const glm::dvec3& n);
+glm::dvec3 quilted_normal(const glm::dvec3& p, const Values& v, double amount, const glm::dvec3& n);
+glm::dvec3 ripples_normal(const glm::dvec3& p, const Values& v, double amount, const glm::dvec3& n);
+glm::dvec3 waves_normal(const glm::dvec3& p, const Values& v, double amount, const glm::dvec3& n);
+
+// Shared by shape_patterns.cpp and normal_patterns.cpp: the ten wave
+// sources of waves and ripples (POV-Ray's Initialize_Waves), and quilted's
+// cubic.
+inline constexpr std::size_t kWaveSources = 10;
+const glm::dvec3& wave_source(std::size_t i);
+double wave_frequency(std::size_t i);
+double quilt_shape(double t, double control0, double control1);
 
 }  // namespace hexant::runtime::pattern

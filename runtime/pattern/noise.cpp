@@ -239,16 +239,13 @@ glm::dvec3 dnoise(const glm::dvec3& p) {
     return r;
 }
 
-namespace {
-// v rounded to single precision. Through a volatile: GCC 12.2 at -O2
-// vectorizes two neighbouring double -> float -> double round trips into
-// nothing (the pair came back unrounded; tests/runtime/pattern_noise_test
-// caught it).
 double single(double v) {
+    // Through a volatile: GCC 12.2 at -O2 vectorizes two neighbouring
+    // double -> float -> double round trips into nothing (the pair came
+    // back unrounded; tests/runtime/pattern_noise_test caught it).
     volatile float f = static_cast<float>(v);
     return f;
 }
-}  // namespace
 
 Octaves octaves_of(double octaves, double omega, double lambda) {
     Octaves o;

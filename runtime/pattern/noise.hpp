@@ -29,6 +29,12 @@ struct Octaves {
     double omega = 0.5;
     double lambda = 2.0;
 };
+// v rounded to single precision, as POV-Ray 3.7 stores a pattern's
+// frequency, phase, wave exponent, mortar, controls, agate_turb, colour
+// map values, a normal's amount and accuracy (SNGL fields in its frame.h):
+// a phase of 0.3 is 0.30000001192 there.
+double single(double v);
+
 // Octaves from a scene's numbers as POV-Ray keeps them: the count
 // truncated and clamped to 1..10, omega and lambda stored in single
 // precision (its TURB record's SNGL fields; an omega of 0.6 is

@@ -60,6 +60,11 @@ struct Values {
 };
 
 using Function = double (*)(const glm::dvec3& point, const Values& values);
+// A normal-only pattern's perturbation (bumps, dents, ripples, waves,
+// wrinkles, quilted in a normal { }): `normal` (pattern space) plus its
+// bump of size `amount` at `point` (POV-Ray's normal.cpp).
+using NormalFunction = glm::dvec3 (*)(const glm::dvec3& point, const Values& values, double amount,
+                                      const glm::dvec3& normal);
 
 // A colour map's entry: at `value`, this colour (r, g, b, filter, transmit).
 struct MapEntry {
@@ -83,6 +88,8 @@ struct Kind {
     // Its numbers' defaults (Values::number) and vector's (brick_size).
     std::array<double, 2> number{};
     glm::dvec3 vector{0.0};
+    // In a normal { }: its own perturbation, else the slope of its value.
+    NormalFunction normal = nullptr;
 };
 
 // The kind named `name`, or null.
@@ -112,6 +119,14 @@ struct Pattern {
 // turbulence), through frequency, phase and the wave (Evaluate_TPat).
 double evaluate(const Kind& kind, const glm::dvec3& point, const Values& values, Wave wave,
                 double exponent);
+
+// A normal perturbed by the slope of the pattern's value (POV-Ray's
+// Perturb_Normal for patterns without a normal function of their own): the
+// value at four points `delta` from `point` along a tetrahedron's
+// directions, weighted by amount * -5 * 0.02 / delta. `normal` and the
+// result are in pattern space.
+glm::dvec3 slope_normal(const Kind& kind, const glm::dvec3& point, const Values& values, Wave wave,
+                        double exponent, double amount, double delta, const glm::dvec3& normal);
 
 // Classic turbulence applied to a point, as Warp_EPoint does it.
 glm::dvec3 apply_turbulence(const glm::dvec3& point, const glm::dvec3& amount, const Octaves& o);

@@ -36,11 +36,11 @@ double spiral_angle(double x, double y, double r) {
 // noise at (i, 0, 0), frequencies from POV-Ray's generator
 // (Initialize_Waves).
 struct WaveSources {
-    std::array<glm::dvec3, 10> at;
-    std::array<double, 10> frequency;
+    std::array<glm::dvec3, kWaveSources> at;
+    std::array<double, kWaveSources> frequency;
     WaveSources() {
         std::uint32_t r = static_cast<std::uint32_t>(-560851967);
-        for (int i = 0; i < 10; ++i) {
+        for (int i = 0; i < static_cast<int>(kWaveSources); ++i) {
             at[static_cast<std::size_t>(i)] = glm::normalize(dnoise({static_cast<double>(i), 0.0, 0.0}));
             r = r * 1812433253u + 12345u;
             frequency[static_cast<std::size_t>(i)] =
@@ -52,6 +52,20 @@ const WaveSources& sources() {
     static const WaveSources s;
     return s;
 }
+
+}  // namespace
+
+const glm::dvec3& wave_source(std::size_t i) { return sources().at[i]; }
+double wave_frequency(std::size_t i) { return sources().frequency[i]; }
+
+double quilt_shape(double t, double control0, double control1) {
+    // A cubic from 0 to 1 with control points control0 and control1,
+    // scaled by 1 / sqrt(3/4) (quilt_cubic).
+    const double it = 1.0 - t, it2 = it * it, t2 = t * t, t3 = t * t2;
+    return (t3 + 3.0 * t * it2 * control0 + 3.0 * t2 * it * control1) * 1.15470053837925152902;
+}
+
+namespace {
 
 double distance_or_one(const glm::dvec3& p, const glm::dvec3& q) {
     const glm::dvec3 d = p - q;
@@ -100,11 +114,7 @@ double leopard_value(const glm::dvec3& p, const Values&) {
 
 double quilted_value(const glm::dvec3& p, const Values& v) {
     glm::dvec3 q(p.x - std::floor(p.x) - 0.5, p.y - std::floor(p.y) - 0.5, p.z - std::floor(p.z) - 0.5);
-    double t = std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z);
-    // A cubic from 0 to 1 with control points control0 and control1,
-    // scaled by 1 / sqrt(3/4) (quilt_cubic).
-    const double it = 1.0 - t, it2 = it * it, t2 = t * t, t3 = t * t2;
-    t = (t3 + 3.0 * t * it2 * v.number[0] + 3.0 * t2 * it * v.number[1]) * 1.15470053837925152902;
+    const double t = quilt_shape(std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z), v.number[0], v.number[1]);
     q *= t;
     return (std::fabs(q.x) + std::fabs(q.y) + std::fabs(q.z)) / 3.0;
 }
@@ -139,7 +149,7 @@ double wood_value(const glm::dvec3& p, const Values& v) {
 double waves_value(const glm::dvec3& p, const Values& v) {
     const WaveSources& s = sources();
     double sum = 0.0;
-    for (std::size_t i = 0; i < 10; ++i) {
+    for (std::size_t i = 0; i < kWaveSources; ++i) {
         const double index = distance_or_one(p, s.at[i]) * v.frequency * s.frequency[i] + v.phase;
         sum += cycloidal(index) / s.frequency[i];
     }
@@ -149,7 +159,7 @@ double waves_value(const glm::dvec3& p, const Values& v) {
 double ripples_value(const glm::dvec3& p, const Values& v) {
     const WaveSources& s = sources();
     double sum = 0.0;
-    for (std::size_t i = 0; i < 10; ++i) sum += cycloidal(distance_or_one(p, s.at[i]) * v.frequency + v.phase);
+    for (std::size_t i = 0; i < kWaveSources; ++i) sum += cycloidal(distance_or_one(p, s.at[i]) * v.frequency + v.phase);
     return 0.5 * (1.0 + (sum / 10.0));
 }
 
