@@ -98,9 +98,17 @@ TextureEvaluator::CompiledPattern::CompiledPattern(const pattern::Pattern& sourc
         else c.turbulence = compile(w.turbulence);
         warps.push_back(std::move(c));
     }
+    const bool still = !source.vector.depends_on_time() && !source.number[0].depends_on_time() &&
+                       !source.number[1].depends_on_time() && !source.frequency.depends_on_time() &&
+                       !source.phase.depends_on_time() && !source.exponent.depends_on_time() &&
+                       !(source.turbulence && source.turbulence->depends_on_time());
+    if (still) {
+        fixed = values_at(0.0);
+        fixed_exponent = pattern::single(exponent.at(0.0));
+    }
 }
 
-pattern::Values TextureEvaluator::CompiledPattern::values(double t) const {
+pattern::Values TextureEvaluator::CompiledPattern::values_at(double t) const {
     // (POV-Ray keeps frequency, phase and the kinds' numbers in single
     // precision: pattern::single.)
     pattern::Values v;
@@ -190,7 +198,7 @@ std::array<double, 5> TextureEvaluator::pattern_colour(const glm::dvec3& world_p
     const pattern::Values v = p.pattern.values(t);
     const glm::dvec3 point = p.pattern.point(world_point, t, v);
     const double value =
-        pattern::evaluate(*p.pattern.kind, point, v, p.pattern.wave, pattern::single(p.pattern.exponent.at(t)));
+        pattern::evaluate(*p.pattern.kind, point, v, p.pattern.wave, p.pattern.exponent_at(t));
     if (p.map.empty()) return pattern::map_colour(p.fixed_map, value);
     std::vector<pattern::MapEntry> map;
     map.reserve(p.map.size());
@@ -213,18 +221,29 @@ glm::dvec3 TextureEvaluator::perturb(const glm::dvec3& normal, const glm::dvec3&
         const double l = glm::length(x);
         return n.no_bump_scale || !(l > 0.0) || !std::isfinite(l) ? x : x / l;
     };
-    std::vector<glm::dmat3> maps;  // pattern-to-world linear parts, head first
+    // The pattern-to-world linear parts, head first (on the stack for the
+    // usual few; a longer warp list in a vector).
+    constexpr std::size_t kOnStack = 8;
+    glm::dmat3 stack[kOnStack];
+    std::vector<glm::dmat3> heap;
+    std::size_t count = 0;
+    const auto keep = [&](const glm::dmat3& m) {
+        if (count < kOnStack) stack[count] = m;
+        else heap.push_back(m);
+        ++count;
+    };
+    const auto map = [&](std::size_t i) -> const glm::dmat3& { return i < kOnStack ? stack[i] : heap[i - kOnStack]; };
     const auto head_q = p.head->to_object<double>({world_point.x, world_point.y, world_point.z}, t);
-    maps.push_back(p.head->jacobian_at({head_q[0], head_q[1], head_q[2]}, t));
+    keep(p.head->jacobian_at({head_q[0], head_q[1], head_q[2]}, t));
     glm::dvec3 at(head_q[0], head_q[1], head_q[2]);
     for (auto w = p.warps.rbegin(); w != p.warps.rend(); ++w) {
         if (!w->transform) continue;
         const auto r = w->transform->to_object<double>({at.x, at.y, at.z}, t);
         at = {r[0], r[1], r[2]};
-        maps.push_back(w->transform->jacobian_at(at, t));
+        keep(w->transform->jacobian_at(at, t));
     }
     glm::dvec3 pn = unit(normal);
-    for (const glm::dmat3& m : maps) pn = glm::transpose(m) * pn;
+    for (std::size_t i = 0; i < count; ++i) pn = glm::transpose(map(i)) * pn;
     pn = unit(pn);
     const double amount = pattern::single(n.amount.at(t));
     glm::dvec3 bumped;
@@ -232,11 +251,11 @@ glm::dvec3 TextureEvaluator::perturb(const glm::dvec3& normal, const glm::dvec3&
         bumped = p.kind->normal(point, v, amount, pn);
     } else {
         const double delta = pattern::single(n.accuracy.at(t));
-        bumped = pattern::slope_normal(*p.kind, point, v, p.wave, pattern::single(p.exponent.at(t)), amount,
+        bumped = pattern::slope_normal(*p.kind, point, v, p.wave, p.exponent_at(t), amount,
                                        delta, pn);
     }
     glm::dvec3 out = unit(bumped);
-    for (auto m = maps.rbegin(); m != maps.rend(); ++m) out = glm::transpose(glm::inverse(*m)) * out;
+    for (std::size_t i = count; i-- > 0;) out = glm::transpose(glm::inverse(map(i))) * out;
     const double l = glm::length(out);
     // (A bump that cancels the normal, or a flat map: the normal unchanged.)
     if (!(l > 0.0) || !std::isfinite(l)) return normal;

@@ -74,11 +74,19 @@ private:
         pattern::Wave wave = pattern::Wave::Ramp;
         int noise_generator = pattern::kDefaultNoiseGenerator;
         std::vector<CompiledWarp> warps;  // in the order written
+        // The parameters, when none moves: a still pattern pays nothing per
+        // hit for time.
+        std::optional<pattern::Values> fixed;
+        double fixed_exponent = 1.0;
 
         CompiledPattern(const pattern::Pattern& source, const Transform& last, const Transform& texture);
         bool depends_on_time() const;
         // The parameters at t.
-        pattern::Values values(double t) const;
+        pattern::Values values(double t) const { return fixed ? *fixed : values_at(t); }
+        pattern::Values values_at(double t) const;
+        double exponent_at(double t) const {
+            return fixed ? fixed_exponent : pattern::single(exponent.at(t));
+        }
         // The world point in pattern space (POV-Ray's Warp_EPoint): the
         // last transforms first, then each earlier step, last written
         // first; classic turbulence last of all, unless the kind reads it
