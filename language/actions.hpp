@@ -57,6 +57,7 @@ HEXANT_NAME_ACTION(pattern_setting_name);
 HEXANT_NAME_ACTION(pattern_wave_name);
 HEXANT_NAME_ACTION(warp_setting_name);
 HEXANT_NAME_ACTION(normal_setting_name);
+HEXANT_NAME_ACTION(fog_setting_name);
 HEXANT_NAME_ACTION(finish_setting_name);
 HEXANT_NAME_ACTION(csg_kind);
 HEXANT_NAME_ACTION(object_flag_name);
@@ -1405,6 +1406,57 @@ HEXANT_ACTION(scene_sky_sphere) {
     HEXANT_APPLY {
         st.require_whole_time(in.position(), "a sky_sphere");
         st.scene.sky_sphere = st.pop().as<runtime::SkySphere>();
+    }
+};
+
+HEXANT_ACTION(fog_open) {
+    HEXANT_APPLY {
+        st.require_whole_time(in.position(), "a fog");
+        st.blocks.emplace_back(std::in_place_type<runtime::Fog>);
+    }
+};
+HEXANT_ACTION(fog_setting) {
+    HEXANT_APPLY {
+        Value v = st.pop();
+        const std::string name = st.pop_name();
+        auto& fog = st.block<runtime::Fog>(in.position(), name.c_str());
+        const auto turbulence = [&]() -> runtime::pattern::Turbulence& {
+            if (!fog.turbulence) fog.turbulence.emplace();
+            return *fog.turbulence;
+        };
+        if (name == "distance") fog.distance = to_float(v, "distance");
+        else if (name == "fog_type") {
+            fog.type = static_cast<int>(checked_integer(to_constant(v, "fog_type"), "fog_type", 1, 2));
+        }
+        else if (name == "fog_alt") fog.alt = to_float(v, "fog_alt");
+        else if (name == "fog_offset") fog.offset = to_float(v, "fog_offset");
+        else if (name == "turb_depth") fog.turb_depth = to_float(v, "turb_depth");
+        else if (name == "up") fog.up = to_vector3(v, "up");
+        else if (name == "turbulence") turbulence().amount = to_vector3(v, "turbulence");
+        else if (name == "octaves") turbulence().octaves = to_float(v, "octaves");
+        else if (name == "omega") turbulence().omega = to_float(v, "omega");
+        else turbulence().lambda = to_float(v, "lambda");
+    }
+};
+HEXANT_ACTION(fog_colour) {
+    HEXANT_APPLY {
+        Value v = st.pop();
+        auto& fog = st.block<runtime::Fog>(in.position(), "a fog's colour");
+        // A bare number is the distance, as POV-Ray reads it (with its
+        // warning to write `distance`).
+        if (v.is<TimeFunction>()) {
+            st.warn(in.position(), "a number in fog { } is its distance: write `distance` (as POV-Ray warns)");
+            fog.distance = v.as<TimeFunction>();
+        } else {
+            fog.colour = to_colour(v, "a fog's colour");
+        }
+    }
+};
+HEXANT_ACTION(fog_block) {
+    HEXANT_APPLY {
+        (void)in;
+        st.scene.fogs.push_back(std::move(std::get<runtime::Fog>(st.blocks.back())));
+        st.blocks.pop_back();
     }
 };
 

@@ -818,9 +818,9 @@ struct light_block
 // Object kinds POV-Ray has and hexant does not: kept as source, an error
 // only where used. Also `function { }` and the *_map blocks.
 struct unsupported_kind_words {
-    static constexpr std::array<std::string_view, 33> list = {
+    static constexpr std::array<std::string_view, 32> list = {
         "bicubic_patch", "blob", "color_map", "colour_map", "cubic", "density", "density_map",
-        "fog", "function", "height_field", "isosurface", "julia_fractal", "lathe", "lemon",
+        "function", "height_field", "isosurface", "julia_fractal", "lathe", "lemon",
         "media", "mesh", "mesh2", "normal_map", "ovus", "parametric", "photons", "pigment_map",
         "poly", "polynomial", "quadric", "quartic", "rainbow", "slope_map", "sor",
         "sphere_sweep", "superellipsoid", "text", "texture_map"};
@@ -902,6 +902,20 @@ struct sky_sphere_item
              sky_sphere_emission, transformation> {};
 struct sky_sphere_block
     : p::seq<sky_sphere_open, p::opt<sky_sphere_base>, p::star<sky_sphere_item>, p::must<rbrace>> {};
+
+// fog { [COLOUR] distance D fog_type 1|2 fog_offset fog_alt up turbulence
+// octaves omega lambda turb_depth rotate scale }
+struct fog_open : p::seq<TAO_PEGTL_KEYWORD("fog"), ws, p::must<lbrace>> {};
+struct fog_setting_name
+    : p::sor<TAO_PEGTL_KEYWORD("distance"), TAO_PEGTL_KEYWORD("fog_type"), TAO_PEGTL_KEYWORD("fog_alt"),
+             TAO_PEGTL_KEYWORD("fog_offset"), TAO_PEGTL_KEYWORD("turb_depth"), TAO_PEGTL_KEYWORD("up"),
+             TAO_PEGTL_KEYWORD("turbulence"), TAO_PEGTL_KEYWORD("octaves"), TAO_PEGTL_KEYWORD("omega"),
+             TAO_PEGTL_KEYWORD("lambda")> {};
+struct fog_setting : p::seq<fog_setting_name, ws, p::must<pattern_setting_value>> {};
+struct fog_colour : p::seq<expression> {};
+struct fog_item
+    : p::sor<directive<fog_item>, macro_call<fog_item>, fog_setting, transformation, fog_colour> {};
+struct fog_block : p::seq<fog_open, p::star<fog_item>, p::must<rbrace>> {};
 
 HEXANT_KEYWORD(kw_global_settings, "global_settings");
 struct global_setting_name
@@ -986,7 +1000,8 @@ struct scene_camera : p::seq<camera_block> {};
 struct scene_sky_sphere : p::seq<sky_sphere_block> {};
 struct scene_item
     : p::sor<directive<scene_item>, macro_call<scene_item>, scene_object, scene_camera,
-             background_block, scene_sky_sphere, global_settings_block, scene_unsupported, semicolon> {};
+             background_block, scene_sky_sphere, fog_block, global_settings_block, scene_unsupported,
+             semicolon> {};
 struct scene_end : p::eof {};
 struct scene_file : p::seq<ws, p::star<scene_item>, p::must<scene_end>> {};
 

@@ -172,6 +172,10 @@ void Interpreter::apply_transform(runtime::TransformStep step, const p::position
         pigment->transform.append(std::move(step));
     } else if (auto* normal = std::get_if<runtime::Normal>(&b)) {
         normal->transform.append(std::move(step));
+    } else if (auto* fog = std::get_if<runtime::Fog>(&b)) {
+        // (POV-Ray turns a fog's up vector; a translation does not move it.)
+        if (step.kind == runtime::TransformKind::Translate) return;
+        fog->up_transform.append(std::move(step));
     } else if (auto* sky = std::get_if<runtime::SkySphere>(&b)) {
         sky->transform.append(std::move(step));
     } else if (auto* transform = std::get_if<runtime::Transform>(&b)) {

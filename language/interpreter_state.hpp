@@ -57,7 +57,7 @@ struct MaterialBuilder {
 // A block under construction: `sphere { ... }`, `texture { ... }` ...
 using Block = std::variant<runtime::ObjectRecord, runtime::LightRecord, runtime::CameraRecord,
                            runtime::Texture, runtime::Pigment, runtime::Normal, runtime::ColourMap, runtime::SkySphere,
-                           runtime::Finish,
+                           runtime::Fog, runtime::Finish,
                            runtime::Interior,
                            runtime::Transform, SplineBuilder, MaterialBuilder>;
 

@@ -10,7 +10,7 @@
 namespace hexant::language::grammar {
 
 namespace {
-constexpr std::array<std::string_view, 338> kReserved = {
+constexpr std::array<std::string_view, 343> kReserved = {
     "abs",
     "accuracy",
     "acos",
@@ -102,6 +102,7 @@ constexpr std::array<std::string_view, 338> kReserved = {
     "disc",
     "dispersion",
     "dispersion_samples",
+    "distance",
     "div",
     "double_illumination",
     "else",
@@ -128,6 +129,9 @@ constexpr std::array<std::string_view, 338> kReserved = {
     "floor",
     "focal_point",
     "fog",
+    "fog_alt",
+    "fog_offset",
+    "fog_type",
     "fopen",
     "for",
     "frame_number",
@@ -318,6 +322,7 @@ constexpr std::array<std::string_view, 338> kReserved = {
     "triangle",
     "triangle_wave",
     "true",
+    "turb_depth",
     "turbulence",
     "twist",
     "u",

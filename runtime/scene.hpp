@@ -7,6 +7,7 @@
 
 #include "runtime/animation.hpp"
 #include "runtime/camera.hpp"
+#include "runtime/fog.hpp"
 #include "runtime/light.hpp"
 #include "runtime/sky_sphere.hpp"
 #include "runtime/object.hpp"
@@ -38,6 +39,7 @@ struct SceneDescription {
     std::vector<ObjectPtr> objects;
     ColourFunction background{};  // black
     std::optional<SkySphere> sky_sphere;  // over the background
+    std::vector<Fog> fogs;
     GlobalSettings global;
     // The texture of objects that have none of their own (#default).
     Texture default_texture;

@@ -60,6 +60,52 @@ Shader::Shader(const runtime::SceneDescription& scene, const RayQuery& query)
         }
         sky_emission_ = scene.sky_sphere->emission;
     }
+    fogs_ = scene.fogs;
+}
+
+glm::dvec3 Shader::fogged(const glm::dvec3& colour, const Ray4& ray, double depth) const {
+    // POV-Ray 3.7's ComputeFog: each fog attenuates by att (at least its
+    // transmit), filtered by its colour, and adds (1 - att) of its colour.
+    glm::dvec3 sum_att(1.0), sum_col(0.0);
+    const double t = ray.origin.w;
+    const glm::dvec3 origin(ray.origin), direction(ray.direction);
+    for (const runtime::Fog& fog : fogs_) {
+        const double distance = fog.distance(t);
+        if (!(std::fabs(distance) > 1.0e-10)) continue;  // POV-Ray's EPSILON
+        double width = depth;
+        const auto c = fog.colour;
+        const double r = c.c[0](t), g = c.c[1](t), b = c.c[2](t), filter = c.c[3](t), transmit = c.c[4](t);
+        double density = 1.0;
+        glm::dvec3 middle = origin + direction * (width / 2.0);
+        if (fog.type == 2) {
+            glm::dvec3 up(fog.up.c[0](t), fog.up.c[1](t), fog.up.c[2](t));
+            if (!fog.up_transform.empty()) up = glm::dmat3(fog.up_transform.matrix_at(t)) * up;
+            up = glm::normalize(up);
+            const glm::dvec3 p1 = origin, p2 = origin + direction * width;
+            const double alt = fog.alt(t), offset = fog.offset(t);
+            const double start = (glm::dot(p1, up) - offset) / alt, end = (glm::dot(p2, up) - offset) / alt;
+            // Density 1 below the offset, 1 / (1 + y^2) above: its mean
+            // along the ray from the integral atan(y).
+            if (start <= 0.0) density = end <= 0.0 ? 1.0 : (std::atan(end) - start) / (end - start);
+            else if (end <= 0.0) density = (std::atan(start) - end) / (start - end);
+            else if (std::fabs(start - end) > 1.0e-10) density = (std::atan(start) - std::atan(end)) / (start - end);
+            else density = 1.0 / (start * start + 1.0);
+            middle = (p1 + p2) * 0.5;
+        }
+        if (fog.turbulence) {
+            const runtime::pattern::Turbulence& turb = *fog.turbulence;
+            const glm::dvec3 p = middle * glm::dvec3(turb.amount.c[0](t), turb.amount.c[1](t), turb.amount.c[2](t));
+            const double k = std::exp(-width / distance);
+            const auto octaves = runtime::pattern::octaves_of(turb.octaves(t), turb.omega(t), turb.lambda(t));
+            width *= 1.0 - k * std::min(1.0, runtime::pattern::turbulence(p, octaves, runtime::pattern::kDefaultNoiseGenerator) *
+                                                 fog.turb_depth(t));
+        }
+        double att = std::exp(-width * density / distance);
+        if (att < transmit) att = transmit;
+        sum_att *= att * ((1.0 - filter) + filter * glm::dvec3(r, g, b));
+        sum_col += (1.0 - att) * glm::dvec3(r, g, b);
+    }
+    return sum_col + sum_att * colour;
 }
 
 glm::dvec3 Shader::sky(const glm::dvec3& direction, double t) const {
@@ -83,7 +129,11 @@ glm::dvec3 Shader::sky(const glm::dvec3& direction, double t) const {
 glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, ThreadState& state) const {
     const double t = ray.origin.w;
     const auto hit = query_.first_hit(ray, 0.0, std::numeric_limits<double>::infinity(), state);
-    if (!hit) return sky(glm::normalize(glm::dvec3(ray.direction)), t);
+    // (A ray that hits nothing goes POV-Ray's BOUND_HUGE, 2e10, through fog.)
+    if (!hit) {
+        const glm::dvec3 seen = sky(glm::normalize(glm::dvec3(ray.direction)), t);
+        return fogs_.empty() ? seen : fogged(seen, ray, 2.0e10);
+    }
     const runtime::SurfacePoint p = hit->object->complete(ray, *hit);
     const runtime::MaterialSample& m = p.material;
     const glm::dvec3 d = glm::normalize(glm::dvec3(ray.direction));
@@ -140,7 +190,13 @@ glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, ThreadSta
         colour += lit * light_colour;
     }
 
-    if (depth >= max_trace_level_) return colour;
+    // Fog lies along the way here when the ray came through the open (not
+    // from inside a solid: POV-Ray fogs only rays outside non-hollow
+    // objects).
+    const auto through_fog = [&](const glm::dvec3& c) {
+        return fogs_.empty() || back ? c : fogged(c, ray, glm::distance(point, glm::dvec3(ray.origin)));
+    };
+    if (depth >= max_trace_level_) return through_fog(colour);
     const double reflect_weight = std::max({m.reflection.x, m.reflection.y, m.reflection.z});
     if (reflect_weight * weight > kBailout) {
         ++state.counters.reflected_rays;
@@ -162,7 +218,7 @@ glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, ThreadSta
         const glm::dvec3 behind = radiance(next, depth + 1, weight * through, state);
         colour += behind * (m.filter * m.colour + glm::dvec3(m.transmit));
     }
-    return colour;
+    return through_fog(colour);
 }
 
 }  // namespace hexant::tracer

@@ -45,6 +45,9 @@ private:
                         ThreadState& state) const;
     // What a ray that hits nothing sees: the sky sphere over the background.
     glm::dvec3 sky(const glm::dvec3& direction, double t) const;
+    // `colour` seen through the scene's fogs along `depth` of a ray in the
+    // open (runtime/fog.hpp).
+    glm::dvec3 fogged(const glm::dvec3& colour, const runtime::Ray4& ray, double depth) const;
 
     const RayQuery& query_;
     std::vector<Light> lights_;
@@ -52,6 +55,7 @@ private:
     // The sky sphere's pigments, the last written first (on top).
     std::vector<runtime::TextureEvaluator> sky_layers_;
     runtime::ColourFunction sky_emission_;
+    std::vector<runtime::Fog> fogs_;
     runtime::ColourFunction ambient_light_;
     bool still_ambient_ = false;
     glm::dvec3 fixed_ambient_{0.0};
