@@ -1283,7 +1283,8 @@ HEXANT_ACTION(light_flag) {
         auto& light = st.block<runtime::LightRecord>(in.position(), w.c_str());
         if (w == "shadowless") light.shadowless = true;
         else if (w == "spotlight") light.spotlight = true;
-        else if (w == "cylinder" || w == "parallel")
+        else if (w == "parallel") light.parallel = true;
+        else if (w == "cylinder")
             st.warn(in.position(), w + " lights are rendered as point lights");
     }
 };

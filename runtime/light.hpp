@@ -13,7 +13,11 @@ struct LightRecord {
     bool shadowless = false;
     bool spotlight = false;   // parsed; rendered as a point light for now
     bool area_light = false;  // parsed; rendered as a point light for now
-    Vector3Function point_at{};
+    // parallel: its rays all run from `position` toward `point_at`, and a
+    // shadow reaches back to the plane through `position` across them
+    // (POV-Ray's ComputeOneWhiteLightRay).
+    bool parallel = false;
+    Vector3Function point_at{{0.0, 0.0, 1.0}};  // POV-Ray's default
     TimeFunction radius = 30.0, falloff = 45.0, tightness = 0.0;
     Transform transform;
     // When it shines: always, or the pieces of time of the clock-dependent

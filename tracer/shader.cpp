@@ -32,6 +32,14 @@ glm::dvec3 Shader::Light::position_at(double t) const {
     return glm::dvec3(transform.matrix_at(t) * glm::dvec4(p, 1.0));
 }
 
+glm::dvec3 Shader::Light::direction_at(double t) const {
+    glm::dvec3 target(point_at.c[0](t), point_at.c[1](t), point_at.c[2](t));
+    if (!transform.empty()) target = glm::dvec3(transform.matrix_at(t) * glm::dvec4(target, 1.0));
+    const glm::dvec3 d = target - position_at(t);
+    const double l = glm::length(d);
+    return l > 0.0 ? d / l : glm::dvec3(0.0, -1.0, 0.0);
+}
+
 glm::dvec3 Shader::Light::colour_at(double t) const {
     return still_colour ? fixed_colour : rgb(colour, t);
 }
@@ -40,7 +48,7 @@ Shader::Shader(const runtime::SceneDescription& scene, const RayQuery& query)
     : query_(query), background_(scene.background), ambient_light_(scene.global.ambient_light),
       max_trace_level_(std::max(1, scene.global.max_trace_level)) {
     for (const auto& l : scene.lights) {
-        Light light{l.position, l.transform, l.colour, l.shadowless, l.lifetime};
+        Light light{l.position, l.transform, l.colour, l.shadowless, l.lifetime, l.parallel, l.point_at};
         light.fixed_position = light.position_at(0.0);
         light.still_position = !l.position.depends_on_time() && !l.transform.depends_on_time();
         light.fixed_colour = rgb(l.colour, 0.0);
@@ -161,16 +169,23 @@ glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, ThreadSta
         if (!light.lifetime.is_always() && !light.lifetime.contains(time)) continue;
         const glm::dvec3 light_position = light.position_at(time);
         glm::dvec3 to_light = light_position - point;
-        const double distance = glm::length(to_light);
+        double distance = glm::length(to_light);
         if (!(distance > 0.0)) continue;
         to_light /= distance;
+        // How far a shadow ray from `start` looks for occluders.
+        double reach = glm::length(light_position - start);
+        if (light.parallel) {
+            // Along the light's own direction, back to the plane through it.
+            const glm::dvec3 direction = light.direction_at(time);
+            reach = glm::dot(light_position - start, -direction);
+            to_light = -direction;
+        }
         const double cosine = glm::dot(n, to_light);
         if (cosine <= 0.0) continue;
-        if (!light.shadowless) {
+        if (!light.shadowless && reach > 0.0) {
             ++state.counters.shadow_rays;
             const Ray4 shadow{Event(start, time), Event(to_light, 0.0)};
-            if (query_.occluded(shadow, 0.0, glm::length(light_position - start), state))
-                continue;
+            if (query_.occluded(shadow, 0.0, reach, state)) continue;
         }
         const glm::dvec3 light_colour = light.colour_at(time);
         // (POV-Ray's default brilliance 1 needs no pow.)

@@ -35,6 +35,10 @@ private:
         runtime::ColourFunction colour;
         bool shadowless = false;
         runtime::Lifetime lifetime;  // when it shines
+        bool parallel = false;
+        runtime::Vector3Function point_at;
+        // A parallel light's direction (unit, from it toward point_at).
+        glm::dvec3 direction_at(double t) const;
         bool still_position = false, still_colour = false;
         glm::dvec3 fixed_position{0.0}, fixed_colour{0.0};
         glm::dvec3 position_at(double t) const;
