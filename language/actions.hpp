@@ -885,6 +885,29 @@ HEXANT_ACTION(camera_normal) {
     }
 };
 
+HEXANT_ACTION(pigment_map_open) {
+    HEXANT_APPLY {
+        auto& pigment = st.block<runtime::Pigment>(in.position(), "pigment_map");
+        if (pigment.patterned.kind && pigment.patterned.kind->argument == runtime::pattern::Kind::Argument::Colours)
+            throw ValueError(std::string("a pigment_map cannot go with ") + std::string(pigment.patterned.kind->name) +
+                             ", as in POV-Ray");
+        pigment.pigment_map.clear();
+    }
+};
+HEXANT_ACTION(pigment_map_pigment_open) {
+    HEXANT_APPLY { (void)in; st.blocks.emplace_back(std::in_place_type<runtime::Pigment>); }
+};
+HEXANT_ACTION(pigment_map_entry) {
+    HEXANT_APPLY {
+        auto entry = std::make_shared<runtime::Pigment>(st.block<runtime::Pigment>(in.position(), "a pigment_map entry"));
+        st.blocks.pop_back();
+        const TimeFunction value = to_float(st.pop(), "a pigment_map entry's value");
+        auto& outer = st.block<runtime::Pigment>(in.position(), "a pigment_map entry");
+        outer.pigment_map.push_back({value, std::move(entry)});
+        if (outer.pigment_map.size() > 256) throw ValueError("a pigment_map has at most 256 entries, as in POV-Ray");
+    }
+};
+
 HEXANT_ACTION(colour_map_open) {
     HEXANT_APPLY { (void)in; st.blocks.emplace_back(std::in_place_type<runtime::ColourMap>); }
 };

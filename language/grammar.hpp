@@ -534,7 +534,7 @@ HEXANT_KEYWORD(kw_material, "material");
 struct unsupported_pattern_name
     : p::sor<TAO_PEGTL_KEYWORD("average"), TAO_PEGTL_KEYWORD("cells"),
              TAO_PEGTL_KEYWORD("crackle"), TAO_PEGTL_KEYWORD("facets"),
-             TAO_PEGTL_KEYWORD("image_map"), TAO_PEGTL_KEYWORD("pigment_map"),
+             TAO_PEGTL_KEYWORD("image_map"),
              TAO_PEGTL_KEYWORD("function"), TAO_PEGTL_KEYWORD("julia"), TAO_PEGTL_KEYWORD("pavement"),
              TAO_PEGTL_KEYWORD("tiling"), TAO_PEGTL_KEYWORD("cubic"), TAO_PEGTL_KEYWORD("object"),
              TAO_PEGTL_KEYWORD("slope"), TAO_PEGTL_KEYWORD("aoi"), TAO_PEGTL_KEYWORD("density_file"),
@@ -600,9 +600,20 @@ struct pigment_colour_map : p::seq<colour_map_block> {};
 
 struct pigment_open : p::seq<kw_pigment, p::must<lbrace>> {};
 struct pigment_base : p::seq<p::not_at<pattern_name>, expression> {};
+struct pigment_item;
+// pigment_map { [value PIGMENT_BODY] ... }: each entry a pigment's inside
+// (a declared pigment, a colour, or a pattern with its modifiers).
+struct pigment_map_value : p::seq<sum> {};
+struct pigment_map_pigment_open : p::success {};
+struct pigment_map_entry
+    : p::seq<lbracket, p::must<pigment_map_value>, p::opt<comma>, pigment_map_pigment_open,
+             p::opt<pigment_base>, p::star<pigment_item>, p::must<rbracket>> {};
+struct pigment_map_open : p::seq<TAO_PEGTL_KEYWORD("pigment_map"), ws, p::must<lbrace>> {};
+struct pigment_map_block : p::seq<pigment_map_open, p::star<pigment_map_entry>, p::must<rbrace>> {};
 struct pigment_item
     : p::sor<directive<pigment_item>, macro_call<pigment_item>, pattern_kind, pattern_setting,
-             pattern_wave, warp_block, pigment_colour_map, unsupported_pattern, transformation> {};
+             pattern_wave, warp_block, pigment_colour_map, pigment_map_block, unsupported_pattern,
+             transformation> {};
 struct pigment_block
     : p::seq<pigment_open, p::opt<pigment_base>, p::star<pigment_item>, p::must<rbrace>> {};
 

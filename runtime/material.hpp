@@ -26,6 +26,14 @@ struct ColourMap {
     bool depends_on_time() const;
 };
 
+struct Pigment;
+// A pigment_map's entry: at `value`, this pigment (evaluated in the space
+// of the pattern around it).
+struct PigmentMapEntry {
+    TimeFunction value;
+    std::shared_ptr<const Pigment> pigment;
+};
+
 struct Pigment {
     enum class Pattern { Solid, Patterned, Unsupported };
     Pattern pattern = Pattern::Solid;
@@ -36,6 +44,9 @@ struct Pigment {
     // list (checker's two) is its map, at values 0, 1, 2.
     pattern::Pattern patterned;
     ColourMap colour_map;
+    // pigment_map { [value pigment] ... }: blends of whole pigments in
+    // place of colours (when not empty, the colour map is not used).
+    std::vector<PigmentMapEntry> pigment_map;
     // The transforms written after the pattern's last warp (all of them,
     // without warps): pattern space to object space.
     Transform transform;

@@ -157,21 +157,8 @@ TextureEvaluator::TextureEvaluator(const Texture& texture, const std::optional<I
         colours_.push_back(compile(pigment.colours.front()));
         depends_on_time_ = pigment.colours.front().depends_on_time();
     } else {
-        auto p = std::make_shared<CompiledPigment>(
-            CompiledPigment{CompiledPattern(pigment.patterned, pigment.transform, texture.transform), {}, {}});
-        const ColourMap& map = pigment.colour_map;
-        if (map.entries.empty()) {
-            p->fixed_map = pigment.patterned.kind->default_map;
-        } else if (!map.depends_on_time()) {
-            for (const auto& e : map.entries) {
-                pattern::MapEntry fixed{pattern::single(e.value.constant()), {}};
-                for (std::size_t i = 0; i < 5; ++i) fixed.colour[i] = e.colour.c[i].constant();
-                p->fixed_map.push_back(fixed);
-            }
-        } else {
-            for (const auto& e : map.entries) p->map.push_back({CompiledScalar(e.value), compile(e.colour)});
-        }
-        depends_on_time_ = pigment.depends_on_time() || p->pattern.depends_on_time();
+        auto p = std::make_shared<const CompiledPigment>(pigment, texture.transform);
+        depends_on_time_ = pigment.depends_on_time() || p->pattern->depends_on_time();
         pigment_ = std::move(p);
     }
     if (texture.normal) {
@@ -193,19 +180,72 @@ TextureEvaluator::TextureEvaluator(const Texture& texture, const std::optional<I
     if (interior) depends_on_time_ = depends_on_time_ || interior->ior.depends_on_time();
 }
 
-std::array<double, 5> TextureEvaluator::pattern_colour(const glm::dvec3& world_point, double t) const {
-    const CompiledPigment& p = *pigment_;
-    const pattern::Values v = p.pattern.values(t);
-    const glm::dvec3 point = p.pattern.point(world_point, t, v);
-    const double value =
-        pattern::evaluate(*p.pattern.kind, point, v, p.pattern.wave, p.pattern.exponent_at(t));
-    if (p.map.empty()) return pattern::map_colour(p.fixed_map, value);
-    std::vector<pattern::MapEntry> map;
-    map.reserve(p.map.size());
-    for (const auto& [at, colour] : p.map)
-        map.push_back({pattern::single(at.at(t)), {colour.c[0].at(t), colour.c[1].at(t), colour.c[2].at(t),
-                                                   colour.c[3].at(t), colour.c[4].at(t)}});
-    return pattern::map_colour(map, value);
+TextureEvaluator::CompiledPigment::CompiledPigment(const Pigment& pigment, const Transform& texture) {
+    if (pigment.pattern == Pigment::Pattern::Unsupported)
+        throw ObjectError(pigment.unsupported_place,
+                          "pigment pattern '" + pigment.unsupported_name + "' is not supported by hexant's tracer");
+    if (pigment.pattern == Pigment::Pattern::Solid) {
+        if (pigment.colours.empty()) throw std::logic_error("TextureEvaluator: a solid pigment without its colour");
+        solid = compile(pigment.colours.front());
+        return;
+    }
+    pattern.emplace(pigment.patterned, pigment.transform, texture);
+    if (!pigment.pigment_map.empty()) {
+        // (Each in the space of this pattern: no texture transform of its own.)
+        for (const auto& e : pigment.pigment_map)
+            pigments.push_back({CompiledScalar(e.value), std::make_shared<const CompiledPigment>(*e.pigment, Transform{})});
+        return;
+    }
+    const ColourMap& map = pigment.colour_map;
+    if (map.entries.empty()) {
+        fixed_map = pigment.patterned.kind->default_map;
+    } else if (!map.depends_on_time()) {
+        for (const auto& e : map.entries) {
+            pattern::MapEntry entry{pattern::single(e.value.constant()), {}};
+            for (std::size_t i = 0; i < 5; ++i) entry.colour[i] = e.colour.c[i].constant();
+            fixed_map.push_back(entry);
+        }
+    } else {
+        for (const auto& e : map.entries) this->map.push_back({CompiledScalar(e.value), compile(e.colour)});
+    }
+}
+
+std::array<double, 5> TextureEvaluator::CompiledPigment::colour(const glm::dvec3& where, double t) const {
+    if (solid) return {solid->c[0].at(t), solid->c[1].at(t), solid->c[2].at(t), solid->c[3].at(t), solid->c[4].at(t)};
+    const CompiledPattern& p = *pattern;
+    const pattern::Values v = p.values(t);
+    const glm::dvec3 point = p.point(where, t, v);
+    const double value = pattern::evaluate(*p.kind, point, v, p.wave, p.exponent_at(t));
+    if (!pigments.empty()) {
+        // POV-Ray's Compute_Pigment with a pigment map: the neighbouring
+        // entries' pigments at this pattern's point, blended linearly.
+        std::vector<pattern::MapEntry> at;  // values only: which entries
+        at.reserve(pigments.size());
+        for (const auto& [entry_value, unused] : pigments) at.push_back({pattern::single(entry_value.at(t)), {}});
+        std::size_t cur = 0, prev = 0;
+        if (value >= at.back().value) {
+            prev = cur = at.size() - 1;
+        } else {
+            while (value > at[cur].value) prev = cur++;
+        }
+        if (value == at[cur].value) prev = cur;
+        // (A sub-pigment sees the point warped by this pattern, but not
+        // moved by turbulence that marble and wood read themselves.)
+        const auto c = pigments[cur].second->colour(point, t);
+        if (prev == cur) return c;
+        const auto b = pigments[prev].second->colour(point, t);
+        const double f = (value - at[prev].value) / (at[cur].value - at[prev].value);
+        std::array<double, 5> out;
+        for (std::size_t i = 0; i < 5; ++i) out[i] = b[i] + f * (c[i] - b[i]);
+        return out;
+    }
+    if (map.empty()) return pattern::map_colour(fixed_map, value);
+    std::vector<pattern::MapEntry> entries;
+    entries.reserve(map.size());
+    for (const auto& [entry_value, colour] : map)
+        entries.push_back({pattern::single(entry_value.at(t)), {colour.c[0].at(t), colour.c[1].at(t), colour.c[2].at(t),
+                                                                colour.c[3].at(t), colour.c[4].at(t)}});
+    return pattern::map_colour(entries, value);
 }
 
 glm::dvec3 TextureEvaluator::perturb(const glm::dvec3& normal, const glm::dvec3& world_point, double t) const {
@@ -265,7 +305,7 @@ glm::dvec3 TextureEvaluator::perturb(const glm::dvec3& normal, const glm::dvec3&
 MaterialSample TextureEvaluator::at(const glm::dvec3& world_point, double t) const {
     MaterialSample m;
     if (pattern_ == Pigment::Pattern::Patterned) {
-        const auto c = pattern_colour(world_point, t);
+        const auto c = pigment_->colour(world_point, t);
         m.colour = {c[0], c[1], c[2]};
         m.filter = c[3];
         m.transmit = c[4];

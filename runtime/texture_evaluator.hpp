@@ -93,11 +93,20 @@ private:
         // itself.
         glm::dvec3 point(const glm::dvec3& world, double t, const pattern::Values& v) const;
     };
+    // A pigment: a colour, or a pattern through a colour map or a
+    // pigment map of pigments (each evaluated in this pattern's space).
     struct CompiledPigment {
-        CompiledPattern pattern;
-        // The map: fixed when nothing in it moves, else compiled.
+        std::optional<CompiledColour> solid;
+        std::optional<CompiledPattern> pattern;
+        // The colour map: fixed when nothing in it moves, else compiled.
         std::vector<pattern::MapEntry> fixed_map;
         std::vector<std::pair<CompiledScalar, CompiledColour>> map;
+        std::vector<std::pair<CompiledScalar, std::shared_ptr<const CompiledPigment>>> pigments;
+
+        CompiledPigment(const Pigment& pigment, const Transform& texture);
+        // The colour at `point` (in the space around it: the world for a
+        // texture's pigment), rgb, filter, transmit.
+        std::array<double, 5> colour(const glm::dvec3& point, double t) const;
     };
     struct CompiledNormal {
         CompiledPattern pattern;
@@ -105,7 +114,6 @@ private:
         bool no_bump_scale = false;
     };
     static CompiledTurbulence compile(const pattern::Turbulence& turbulence);
-    std::array<double, 5> pattern_colour(const glm::dvec3& world_point, double t) const;
 
     Pigment::Pattern pattern_;
     bool depends_on_time_ = false;

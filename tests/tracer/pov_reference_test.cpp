@@ -228,3 +228,15 @@ TEST_CASE("a parallel light agrees with POV-Ray 3.7's", "[tracer][pov]") {
                               read_png(kFolder / "lights" / ("parallel_" + std::string(clock) + ".png"))));
     }
 }
+
+TEST_CASE("a pigment_map agrees with POV-Ray 3.7's", "[tracer][pov][pattern]") {
+    // patterns/pigment_map.pov: pigments (declared, a colour, patterns of
+    // their own) blended by gradient and by marble, in the outer pattern's
+    // warped space, at clock 0 and 0.5. Same tolerance (exact when written).
+    for (const char* clock : {"0", "0.5"}) {
+        INFO("pigment_map at clock " << clock);
+        check_agreement(agree(render(kFolder / "patterns" / "pigment_map.pov", "--clock " + std::string(clock),
+                                     "hexant_pov_pigment_map", 0, "-W 64 -H 48"),
+                              read_png(kFolder / "patterns" / ("pigment_map_" + std::string(clock) + ".png"))));
+    }
+}
