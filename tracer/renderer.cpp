@@ -136,6 +136,7 @@ Image Renderer::render_frame(int frame) {
     const int spp = std::max(1, settings_.samples_per_pixel);
     Image image(width, height);
     const bool moving_camera = scene_.camera.depends_on_time();
+    const double working_gamma = scene_.global.assumed_gamma;
     const runtime::CameraFrame fixed_camera = scene_.camera.evaluate(open);
     const std::size_t object_count = query_->object_count();
     tbb::enumerable_thread_specific<ThreadState> states(
@@ -176,7 +177,14 @@ Image Renderer::render_frame(int frame) {
                         const runtime::Ray4 ray{Event(camera.location, t), Event(d, 0.0)};
                         sum += shader_->trace(ray, state);
                     }
-                    image.set(x, y, sum / double(spp));
+                    glm::dvec3 pixel = sum / double(spp);
+                    // assumed_gamma G: the scene's colours and all the
+                    // shading are in a space of gamma G; the pixel leaves it
+                    // (POV-Ray 3.7 decodes the working gamma before it
+                    // encodes the file's).
+                    if (working_gamma != 1.0)
+                        for (int c = 0; c < 3; ++c) pixel[c] = std::pow(std::max(pixel[c], 0.0), working_gamma);
+                    image.set(x, y, pixel);
                 }
             }
             state.counters.deformation_maps += runtime::this_thread_work.deformation_maps - maps;
