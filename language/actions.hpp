@@ -659,8 +659,24 @@ HEXANT_ACTION(deformation) {
 
 // ------------------------------------------------------------ textures
 
+// The pigment or normal an object, a texture or the camera already has:
+// a second pigment { } there modifies it (POV-Ray parses into the one it
+// has), it does not start over.
+inline const runtime::Texture* texture_being_written(const Interpreter& st) {
+    if (st.blocks.empty()) return nullptr;
+    if (const auto* t = std::get_if<runtime::Texture>(&st.blocks.back())) return t;
+    if (const auto* o = std::get_if<runtime::ObjectRecord>(&st.blocks.back()))
+        return o->texture ? &*o->texture : nullptr;
+    return nullptr;
+}
+
 HEXANT_ACTION(pigment_open) {
-    HEXANT_APPLY { (void)in; st.blocks.emplace_back(std::in_place_type<runtime::Pigment>); }
+    HEXANT_APPLY {
+        (void)in;
+        const runtime::Texture* texture = texture_being_written(st);
+        runtime::Pigment start = texture ? texture->pigment : runtime::Pigment();
+        st.blocks.emplace_back(std::move(start));
+    }
 };
 HEXANT_ACTION(pigment_base) {
     HEXANT_APPLY {
@@ -700,6 +716,9 @@ HEXANT_ACTION(pattern_kind) {
         const runtime::pattern::Kind* kind = runtime::pattern::find_kind(name);
         if (kind == nullptr) throw ValueError("no pattern " + name);
         slot.pattern = runtime::pattern::Pattern::of(*kind);
+        // (The scene's noise generator, global_settings { noise_generator }.)
+        slot.pattern.noise_generator = st.scene.global.noise_generator;
+        ++st.patterns_written;
         if (slot.pigment) {
             slot.pigment->pattern = runtime::Pigment::Pattern::Patterned;
             slot.pigment->colour_map = {};
@@ -844,7 +863,14 @@ HEXANT_ACTION(warp_setting) {
 
 // ---- normal { }
 HEXANT_ACTION(normal_open) {
-    HEXANT_APPLY { (void)in; st.blocks.emplace_back(std::in_place_type<runtime::Normal>); }
+    HEXANT_APPLY {
+        (void)in;
+        std::optional<runtime::Normal> start;
+        if (const runtime::Texture* texture = texture_being_written(st)) start = texture->normal;
+        else if (!st.blocks.empty())
+            if (const auto* camera = std::get_if<runtime::CameraRecord>(&st.blocks.back())) start = camera->normal;
+        st.blocks.emplace_back(start ? std::move(*start) : runtime::Normal());
+    }
 };
 HEXANT_ACTION(normal_base) {
     HEXANT_APPLY {
@@ -881,6 +907,7 @@ HEXANT_ACTION(texture_normal) {
 HEXANT_ACTION(camera_normal) {
     HEXANT_APPLY {
         Value v = st.pop();
+        check_normal(v.as<runtime::Normal>());
         st.block<runtime::CameraRecord>(in.position(), "normal").normal = v.as<runtime::Normal>();
     }
 };
@@ -1238,8 +1265,35 @@ inline runtime::Texture& object_texture(Interpreter& st, const p::position& wher
     return *record.texture;
 }
 
+// Whether a texture's pigment may let what is under it show (a filter or
+// transmit that is not a constant 0 anywhere in it).
+inline bool may_show_through(const runtime::Pigment& p) {
+    const auto clear = [](const runtime::ColourFunction& c) {
+        return c.c[3].is_constant() && c.c[3].constant() == 0.0 && c.c[4].is_constant() && c.c[4].constant() == 0.0;
+    };
+    if (p.pattern == runtime::Pigment::Pattern::Solid) return !clear(p.colours.front());
+    if (p.pattern != runtime::Pigment::Pattern::Patterned) return false;
+    for (const auto& e : p.colour_map.entries)
+        if (!clear(e.colour)) return true;
+    for (const auto& e : p.pigment_map)
+        if (may_show_through(*e.pigment)) return true;
+    return false;
+}
+
 HEXANT_ACTION(object_texture) {
-    HEXANT_APPLY { Value v = st.pop(); object_texture(st, in.position()) = v.as<runtime::Texture>(); }
+    HEXANT_APPLY {
+        Value v = st.pop();
+        auto& record = st.block<runtime::ObjectRecord>(in.position(), "a texture");
+        const auto& texture = v.as<runtime::Texture>();
+        // A texture on an object that has one is a layer on top in
+        // POV-Ray: the same image as a replacement while the top is
+        // opaque; one the lower layer shows through is not supported yet.
+        if (record.texture && may_show_through(texture.pigment))
+            throw ValueError("a second texture on this object is a layer over the first in POV-Ray, and this one "
+                             "lets it show through (filter or transmit): layered textures are not supported by "
+                             "hexant yet");
+        object_texture(st, in.position()) = texture;
+    }
 };
 HEXANT_ACTION(object_pigment) {
     HEXANT_APPLY { Value v = st.pop(); object_texture(st, in.position()).pigment = v.as<runtime::Pigment>(); }
@@ -1429,7 +1483,9 @@ HEXANT_ACTION(sky_sphere_block) {
 HEXANT_ACTION(scene_sky_sphere) {
     HEXANT_APPLY {
         st.require_whole_time(in.position(), "a sky_sphere");
-        st.scene.sky_sphere = st.pop().as<runtime::SkySphere>();
+        runtime::SkySphere sky = st.pop().as<runtime::SkySphere>();
+        for (const auto& pigment : sky.pigments) check_pigment(pigment);
+        st.scene.sky_sphere = std::move(sky);
     }
 };
 
@@ -1503,6 +1559,13 @@ HEXANT_ACTION(global_setting) {
         Value v = st.pop();
         const std::string name = st.pop_name();
         if (name == "assumed_gamma") st.scene.global.assumed_gamma = to_constant(v, name);
+        else if (name == "noise_generator") {
+            st.scene.global.noise_generator =
+                static_cast<int>(checked_integer(to_constant(v, name), name, 1, 3));
+            if (st.patterns_written > 0)
+                st.warn(in.position(), "global noise_generator after patterns: hexant applies it to the patterns "
+                                       "written after it (POV-Ray to all; put global_settings first)");
+        }
         else if (name == "max_trace_level") {
             // As POV-Ray 3.7 (parser.cpp): at least 1, and above its limit
             // of 256 a warning and 256.

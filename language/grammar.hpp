@@ -589,13 +589,18 @@ struct warp_block
 // [value1, value2 colour1 colour2] too.
 struct colour_map_open
     : p::seq<p::sor<TAO_PEGTL_KEYWORD("color_map"), TAO_PEGTL_KEYWORD("colour_map")>, ws, p::must<lbrace>> {};
-struct colour_map_base : p::seq<expression> {};
+// (A name followed by '(' is a macro writing the entries, not a declared map.)
+struct colour_map_base : p::seq<p::not_at<p::identifier, ws, lparen>, expression> {};
 struct colour_map_item : p::seq<sum> {};
 struct colour_map_entry
     : p::seq<lbracket, frame_open, p::must<colour_map_item>,
              p::star<p::opt<comma>, colour_map_item>, p::must<rbracket>> {};
+// (Directives and macros may write the entries: #for, #if, a macro that
+// expands to [v colour].)
+struct colour_map_element
+    : p::sor<directive<colour_map_element>, macro_call<colour_map_element>, colour_map_entry> {};
 struct colour_map_block
-    : p::seq<colour_map_open, p::opt<colour_map_base>, p::star<colour_map_entry>, p::must<rbrace>> {};
+    : p::seq<colour_map_open, p::opt<colour_map_base>, p::star<colour_map_element>, p::must<rbrace>> {};
 struct pigment_colour_map : p::seq<colour_map_block> {};
 
 struct pigment_open : p::seq<kw_pigment, p::must<lbrace>> {};
@@ -609,7 +614,9 @@ struct pigment_map_entry
     : p::seq<lbracket, p::must<pigment_map_value>, p::opt<comma>, pigment_map_pigment_open,
              p::opt<pigment_base>, p::star<pigment_item>, p::must<rbracket>> {};
 struct pigment_map_open : p::seq<TAO_PEGTL_KEYWORD("pigment_map"), ws, p::must<lbrace>> {};
-struct pigment_map_block : p::seq<pigment_map_open, p::star<pigment_map_entry>, p::must<rbrace>> {};
+struct pigment_map_element
+    : p::sor<directive<pigment_map_element>, macro_call<pigment_map_element>, pigment_map_entry> {};
+struct pigment_map_block : p::seq<pigment_map_open, p::star<pigment_map_element>, p::must<rbrace>> {};
 struct pigment_item
     : p::sor<directive<pigment_item>, macro_call<pigment_item>, pattern_kind, pattern_setting,
              pattern_wave, warp_block, pigment_colour_map, pigment_map_block, unsupported_pattern,
@@ -931,7 +938,7 @@ struct fog_block : p::seq<fog_open, p::star<fog_item>, p::must<rbrace>> {};
 HEXANT_KEYWORD(kw_global_settings, "global_settings");
 struct global_setting_name
     : p::sor<TAO_PEGTL_KEYWORD("assumed_gamma"), TAO_PEGTL_KEYWORD("max_trace_level"),
-             TAO_PEGTL_KEYWORD("ambient_light")> {};
+             TAO_PEGTL_KEYWORD("ambient_light"), TAO_PEGTL_KEYWORD("noise_generator")> {};
 struct global_setting_value : p::seq<expression> {};
 struct global_setting : p::seq<global_setting_name, ws, p::must<global_setting_value>> {};
 struct charset_name : p::identifier {};

@@ -605,15 +605,29 @@ void for_each_nested(const runtime::ObjectRecord& object, Visit visit) {
     }
 }
 
+}  // namespace
+
+// A pattern hexant lacks, in a pigment (its pigment map's too) or a
+// normal: the error where the scene uses it (check says it, not only render).
+void check_pigment(const runtime::Pigment& pigment) {
+    if (pigment.pattern == runtime::Pigment::Pattern::Unsupported)
+        throw ValueError("pigment pattern '" + pigment.unsupported_name + "' (written at " +
+                         pigment.unsupported_place.to_string() + ") is not supported by hexant");
+    for (const auto& entry : pigment.pigment_map) check_pigment(*entry.pigment);
+}
+void check_normal(const std::optional<runtime::Normal>& normal) {
+    if (normal && !normal->unsupported_name.empty())
+        throw ValueError("normal pattern '" + normal->unsupported_name + "' (written at " +
+                         normal->unsupported_place.to_string() + ") is not supported by hexant");
+}
+
+namespace {
+
 void check_patterns(const runtime::ObjectRecord& object) {
     for_each_nested(object, [](const runtime::ObjectRecord& record) {
-        if (record.texture &&
-            record.texture->pigment.pattern == runtime::Pigment::Pattern::Unsupported) {
-            const auto& pigment = record.texture->pigment;
-            throw ValueError("pigment pattern '" + pigment.unsupported_name + "' (written at " +
-                             pigment.unsupported_place.to_string() +
-                             ") is not supported by hexant");
-        }
+        if (!record.texture) return;
+        check_pigment(record.texture->pigment);
+        check_normal(record.texture->normal);
     });
 }
 

@@ -73,6 +73,11 @@ struct unsupported_use : p::parse_error {
 // The block-structure directives that end or divide a directive's body.
 enum class Divider { None, Else, Elseif, End, Case, Range, Break };
 
+// A pattern hexant lacks in a pigment (its pigment map's too) or a normal:
+// a ValueError naming where it was written (interpreter.cpp).
+void check_pigment(const runtime::Pigment& pigment);
+void check_normal(const std::optional<runtime::Normal>& normal);
+
 class Interpreter {
 public:
     Interpreter(const ParseOptions& options, runtime::SceneDescription& scene,
@@ -175,6 +180,8 @@ public:
     double version = 3.7;
     // prism { ... } options read before its arguments
     std::string prism_spline = "linear_spline", prism_sweep = "linear_sweep";
+    // Patterns read so far (a global noise_generator after them is warned).
+    std::size_t patterns_written = 0;
     runtime::SourcePlace shape_place;  // where the shape being read was written
 
     // ---- directives, called by the custom rules in grammar.hpp

@@ -22,6 +22,9 @@ struct GlobalSettings {
     // MegaPOV's global_settings { motion_blur SAMPLES, TIME }: hexant blurs
     // every render, so these are only defaults for --spp and --shutter
     // (TIME, in clock units, over the clock step; app/render_command.cpp).
+    // noise_generator 1 to 3 for every pattern that names none (POV-Ray's
+    // default 2); hexant applies it to the patterns written after it.
+    int noise_generator = 2;
     std::optional<int> motion_blur_samples;
     std::optional<double> motion_blur_time;
 };

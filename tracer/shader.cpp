@@ -69,6 +69,7 @@ Shader::Shader(const runtime::SceneDescription& scene, const RayQuery& query)
         sky_emission_ = scene.sky_sphere->emission;
     }
     fogs_ = scene.fogs;
+    noise_generator_ = scene.global.noise_generator;
 }
 
 glm::dvec3 Shader::fogged(const glm::dvec3& colour, const Ray4& ray, double depth) const {
@@ -105,7 +106,7 @@ glm::dvec3 Shader::fogged(const glm::dvec3& colour, const Ray4& ray, double dept
             const glm::dvec3 p = middle * glm::dvec3(turb.amount.c[0](t), turb.amount.c[1](t), turb.amount.c[2](t));
             const double k = std::exp(-width / distance);
             const auto octaves = runtime::pattern::octaves_of(turb.octaves(t), turb.omega(t), turb.lambda(t));
-            width *= 1.0 - k * std::min(1.0, runtime::pattern::turbulence(p, octaves, runtime::pattern::kDefaultNoiseGenerator) *
+            width *= 1.0 - k * std::min(1.0, runtime::pattern::turbulence(p, octaves, noise_generator_) *
                                                  fog.turb_depth(t));
         }
         double att = std::exp(-width * density / distance);

@@ -60,6 +60,7 @@ private:
     std::vector<runtime::TextureEvaluator> sky_layers_;
     runtime::ColourFunction sky_emission_;
     std::vector<runtime::Fog> fogs_;
+    int noise_generator_ = 2;  // global_settings { noise_generator } (fog turbulence)
     runtime::ColourFunction ambient_light_;
     bool still_ambient_ = false;
     glm::dvec3 fixed_ambient_{0.0};
