@@ -57,18 +57,41 @@ std::string transform(const runtime::Transform& transform, double t) {
     return s;
 }
 
-std::string texture(const runtime::Texture& texture, double t) {
-    std::string s;
-    const auto& p = texture.pigment;
+// A pattern's modifiers at t: frequency, phase, turbulence, its warps
+// (turbulence amounts) and transforms counted.
+std::string modifiers(const runtime::pattern::Pattern& p, double t) {
+    std::string s = " frequency=" + number(p.frequency(t)) + " phase=" + number(p.phase(t));
+    if (p.turbulence)
+        s += " turbulence=<" + number(p.turbulence->amount.c[0](t)) + ", " + number(p.turbulence->amount.c[1](t)) +
+             ", " + number(p.turbulence->amount.c[2](t)) + ">";
+    if (!p.warps.empty()) s += " warps=" + std::to_string(p.warps.size());
+    return s;
+}
+
+std::string pigment(const runtime::Pigment& p, double t) {
     switch (p.pattern) {
-        case runtime::Pigment::Pattern::Solid: s = "pigment=solid" + colour(p.colours[0], t); break;
-        case runtime::Pigment::Pattern::Patterned:
-            // The kind, then its map's entries at t (value and colour).
-            s = "pigment=" + std::string(p.patterned.kind->name);
+        case runtime::Pigment::Pattern::Solid: return "solid" + colour(p.colours[0], t);
+        case runtime::Pigment::Pattern::Patterned: {
+            // The kind, its modifiers, then its map's entries at t (value and
+            // colour, or value and pigment).
+            std::string s = std::string(p.patterned.kind->name) + modifiers(p.patterned, t);
             for (const auto& e : p.colour_map.entries) s += " " + number(e.value(t)) + colour(e.colour, t);
-            break;
-        case runtime::Pigment::Pattern::Unsupported: s = "pigment=" + p.unsupported_name; break;
+            for (const auto& e : p.pigment_map) s += " " + number(e.value(t)) + "[" + pigment(*e.pigment, t) + "]";
+            return s;
+        }
+        case runtime::Pigment::Pattern::Unsupported: return p.unsupported_name;
     }
+    return "";
+}
+
+std::string normal(const runtime::Normal& n, double t) {
+    if (!n.unsupported_name.empty()) return n.unsupported_name;
+    return std::string(n.patterned.kind->name) + " amount=" + number(n.amount(t)) + modifiers(n.patterned, t);
+}
+
+std::string texture(const runtime::Texture& texture, double t) {
+    std::string s = "pigment=" + pigment(texture.pigment, t);
+    if (texture.normal) s += " normal=" + normal(*texture.normal, t);
     const auto& f = texture.finish;
     s += " finish=ambient:" + number(f.ambient(t)) + ",diffuse:" + number(f.diffuse(t)) +
          ",brilliance:" + number(f.brilliance(t)) + ",phong:" + number(f.phong(t)) +
@@ -165,7 +188,16 @@ void dump_scene(const runtime::SceneDescription& scene, double t, std::ostream& 
     out << "camera location=" << vector(camera.location) << " direction=" << vector(camera.direction)
         << " right=" << vector(camera.right) << " up=" << vector(camera.up)
         << " sky=" << vector(camera.sky) << "\n";
+    if (scene.camera.normal) out << "camera normal=" << normal(*scene.camera.normal, t) << "\n";
     out << "background colour=" << colour(scene.background, t) << "\n";
+    if (scene.sky_sphere) {
+        out << "sky_sphere emission=" << colour(scene.sky_sphere->emission, t);
+        for (const auto& p : scene.sky_sphere->pigments) out << " pigment=" << pigment(p, t);
+        out << "\n";
+    }
+    for (const auto& fog : scene.fogs)
+        out << "fog type=" << fog.type << " distance=" << number(fog.distance(t)) << " colour=" << colour(fog.colour, t)
+            << "\n";
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
         const auto& light = scene.lights[i];
         if (!light.lifetime.contains(t)) continue;
@@ -173,7 +205,11 @@ void dump_scene(const runtime::SceneDescription& scene, double t, std::ostream& 
                                  ? glm::dvec4(light.position(t), 1.0)
                                  : light.transform.matrix_at(t) * glm::dvec4(light.position(t), 1.0);
         out << "light[" << i << "] position=" << vector(glm::dvec3(p)) << " colour="
-            << colour(light.colour, t) << " shadowless=" << light.shadowless << "\n";
+            << colour(light.colour, t) << " shadowless=" << light.shadowless;
+        if (light.parallel)
+            out << " parallel point_at=<" << number(light.point_at.c[0](t)) << ", " << number(light.point_at.c[1](t))
+                << ", " << number(light.point_at.c[2](t)) << ">";
+        out << "\n";
     }
     for (std::size_t i = 0; i < scene.objects.size(); ++i)
         dump_object(*scene.objects[i], "object[" + std::to_string(i) + "]", t, out);

@@ -176,3 +176,32 @@ TEST_CASE("dump: a deformed object lists its steps instead of a matrix", "[app][
                       "matrix^-1([0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11]);bend(axis=<1, 0, 0>,amount=30) " +
                           kFlags);
 }
+
+TEST_CASE("dump: a pattern's kind and modifiers, normals, the sky, fog and a parallel light", "[app][dump]") {
+    rt::SceneDescription scene;
+    auto o = object(rt::Sphere{{{0.0, 0.0, 0.0}}, 1.0});
+    rt::Texture texture;
+    texture.pigment.pattern = rt::Pigment::Pattern::Patterned;
+    texture.pigment.patterned = rt::pattern::Pattern::of(*rt::pattern::find_kind("bozo"));
+    texture.pigment.patterned.phase = symbolic_clock();
+    texture.normal.emplace();
+    texture.normal->patterned = rt::pattern::Pattern::of(*rt::pattern::find_kind("bumps"));
+    o->texture = texture;
+    scene.objects.push_back(o);
+    rt::Fog fog;
+    fog.distance = 5.0;
+    scene.fogs.push_back(fog);
+    rt::LightRecord light;
+    light.parallel = true;
+    scene.lights.push_back(light);
+    const auto lines = dump(scene, 0.25);
+    const auto has = [&](const std::string& text) {
+        for (const auto& l : lines)
+            if (l.find(text) != std::string::npos) return true;
+        return false;
+    };
+    CHECK(has("pigment=bozo frequency=1 phase=0.25"));
+    CHECK(has("normal=bumps amount=0.5"));
+    CHECK(has("fog type=1 distance=5"));
+    CHECK(has("parallel point_at=<0, 0, 1>"));
+}
