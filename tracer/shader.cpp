@@ -37,7 +37,9 @@ glm::dvec3 Shader::Light::direction_at(double t) const {
     if (!transform.empty()) target = glm::dvec3(transform.matrix_at(t) * glm::dvec4(target, 1.0));
     const glm::dvec3 d = target - position_at(t);
     const double l = glm::length(d);
-    return l > 0.0 ? d / l : glm::dvec3(0.0, -1.0, 0.0);
+    // (point_at at the light itself: POV-Ray's direction is zero, and the
+    // light lights nothing.)
+    return l > 0.0 ? d / l : glm::dvec3(0.0);
 }
 
 glm::dvec3 Shader::Light::colour_at(double t) const {

@@ -37,7 +37,8 @@ private:
         runtime::Lifetime lifetime;  // when it shines
         bool parallel = false;
         runtime::Vector3Function point_at;
-        // A parallel light's direction (unit, from it toward point_at).
+        // A parallel light's direction (unit, from it toward point_at; zero
+        // when point_at is the light's own place).
         glm::dvec3 direction_at(double t) const;
         bool still_position = false, still_colour = false;
         glm::dvec3 fixed_position{0.0}, fixed_colour{0.0};
