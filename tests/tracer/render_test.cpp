@@ -199,3 +199,24 @@ TEST_CASE("text files are written whole or not at all", "[tracer][render]") {
     for (const auto& entry : fs::recursive_directory_iterator(folder))
         CHECK(entry.path().string().find(".partial") == std::string::npos);
 }
+
+TEST_CASE("a parallel light pointed at itself lights nothing, as in POV-Ray", "[tracer][render]") {
+    // Its direction (point_at - location) is zero: no surface faces it.
+    // (With point_at elsewhere the same ball is lit: the check is not
+    // blind.)
+    const auto lit = [](const std::string& point_at) {
+        hexant::language::ParseOptions options;
+        options.animation.width = 8;
+        options.animation.height = 6;
+        const auto scene = hexant::language::parse_scene_text(
+            "camera { location <0, 2, -4> look_at 0 }\n"
+            "light_source { <0, 5, 0>, rgb 1 parallel point_at " + point_at + " }\n"
+            "sphere { 0, 1 pigment { rgb 1 } finish { ambient 0 } }\n",
+            "parallel.pov", options);
+        double sum = 0.0;
+        for (float v : render(scene, tr::Mode::Spacetime, 1).rgb) sum += v;
+        return sum;
+    };
+    CHECK(lit("<0, 5, 0>") == 0.0);
+    CHECK(lit("<0, 0, 0>") > 1.0);
+}
