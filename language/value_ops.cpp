@@ -213,11 +213,9 @@ Value colour_model(const std::string& model, const Value& v) {
         if (t) r.c[4] = x;
     } else if (v.is<Vector>()) {
         const Vector& in = v.as<Vector>();
-        const int need = 3 + (f ? 1 : 0) + (t ? 1 : 0);
-        if (in.size < 3)
-            throw ValueError(model + " needs " + std::to_string(need) + " components, not a " +
-                             type_name(v));
-        for (int i = 0; i < 3; ++i) r.c[i] = in.c[i];
+        // A 2-component vector's blue is 0, as POV-Ray pads a shorter
+        // vector in a colour (rgb <1, 0.5> is rgb <1, 0.5, 0>).
+        for (int i = 0; i < 3; ++i) r.c[i] = i < in.size ? in.c[i] : TimeFunction(0.0);
         int next = 3;
         if (f && next < in.size) r.c[3] = in.c[next++];
         if (t && next < in.size) r.c[4] = in.c[next++];

@@ -24,3 +24,6 @@ object { Sphere }
 #declare Spaced = < -1 2 3 >;
 #declare Trailing = rgb <0.2, 0.1, 0.5,>;
 #if (Spaced.x != -1 | Spaced.z != 3 | Trailing.blue != 0.5) #error "vector commas misread" #end
+// A 2-component colour is padded with 0, as POV-Ray pads it.
+#declare Short = rgb <1, 0.5>;
+#if (Short.blue != 0 | Short.green != 0.5) #error "a short colour misread" #end
