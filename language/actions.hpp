@@ -805,6 +805,9 @@ HEXANT_ACTION(pattern_setting) {
         else if (name == "control0") { only("quilted"); pattern.number[0] = to_float(v, "control0"); }
         else if (name == "control1") { only("quilted"); pattern.number[1] = to_float(v, "control1"); }
         else if (name == "agate_turb") { only("agate"); pattern.number[0] = to_float(v, "agate_turb"); }
+        else if (name == "metric") { only("crackle"); pattern.number[0] = to_float(v, "metric"); }
+        else if (name == "offset") { only("crackle"); pattern.number[1] = to_float(v, "offset"); }
+        else if (name == "form") { only("crackle"); pattern.vector = to_vector3(v, "form"); }
         else if (name == "noise_generator") {
             pattern.noise_generator =
                 static_cast<int>(checked_integer(to_constant(v, "noise_generator"), "noise_generator", 1, 3));

@@ -533,7 +533,7 @@ HEXANT_KEYWORD(kw_material, "material");
 // only where a scene uses them.
 struct unsupported_pattern_name
     : p::sor<TAO_PEGTL_KEYWORD("average"), TAO_PEGTL_KEYWORD("cells"),
-             TAO_PEGTL_KEYWORD("crackle"), TAO_PEGTL_KEYWORD("facets"),
+             TAO_PEGTL_KEYWORD("facets"),
              TAO_PEGTL_KEYWORD("image_map"),
              TAO_PEGTL_KEYWORD("function"), TAO_PEGTL_KEYWORD("julia"), TAO_PEGTL_KEYWORD("pavement"),
              TAO_PEGTL_KEYWORD("tiling"), TAO_PEGTL_KEYWORD("cubic"), TAO_PEGTL_KEYWORD("object"),
@@ -548,8 +548,8 @@ struct unsupported_pattern : p::seq<unsupported_pattern_name, skip::until_rbrace
 // (spiral1, spiral2, mandel) or a list of colours (checker, brick,
 // hexagon).
 struct pattern_words {
-    static constexpr std::array<std::string_view, 26> list = {
-        "agate", "boxed", "bozo", "brick", "bumps", "checker", "cylindrical", "dents",
+    static constexpr std::array<std::string_view, 27> list = {
+        "agate", "boxed", "bozo", "brick", "bumps", "checker", "crackle", "cylindrical", "dents",
         "gradient", "granite", "hexagon", "leopard", "mandel", "marble", "onion", "planar",
         "quilted", "radial", "ripples", "spherical", "spiral1", "spiral2", "spotted", "waves",
         "wood", "wrinkles"};
@@ -566,7 +566,8 @@ struct pattern_setting_name
              TAO_PEGTL_KEYWORD("omega"), TAO_PEGTL_KEYWORD("lambda"), TAO_PEGTL_KEYWORD("mortar"),
              TAO_PEGTL_KEYWORD("brick_size"), TAO_PEGTL_KEYWORD("control0"),
              TAO_PEGTL_KEYWORD("control1"), TAO_PEGTL_KEYWORD("agate_turb"),
-             TAO_PEGTL_KEYWORD("noise_generator")> {};
+             TAO_PEGTL_KEYWORD("noise_generator"), TAO_PEGTL_KEYWORD("metric"),
+             TAO_PEGTL_KEYWORD("form"), TAO_PEGTL_KEYWORD("offset")> {};
 struct pattern_setting_value : p::seq<expression> {};
 struct pattern_setting : p::seq<pattern_setting_name, ws, p::must<pattern_setting_value>> {};
 struct pattern_wave_name

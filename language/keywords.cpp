@@ -10,7 +10,7 @@
 namespace hexant::language::grammar {
 
 namespace {
-constexpr std::array<std::string_view, 343> kReserved = {
+constexpr std::array<std::string_view, 346> kReserved = {
     "abs",
     "accuracy",
     "acos",
@@ -134,6 +134,7 @@ constexpr std::array<std::string_view, 343> kReserved = {
     "fog_type",
     "fopen",
     "for",
+    "form",
     "frame_number",
     "frequency",
     "fresnel",
@@ -193,6 +194,7 @@ constexpr std::array<std::string_view, 343> kReserved = {
     "mesh",
     "mesh2",
     "metallic",
+    "metric",
     "min",
     "mod",
     "mortar",
@@ -210,6 +212,7 @@ constexpr std::array<std::string_view, 343> kReserved = {
     "object",
     "octaves",
     "off",
+    "offset",
     "omega",
     "omnimax",
     "on",

@@ -113,7 +113,8 @@ pattern::Values TextureEvaluator::CompiledPattern::values_at(double t) const {
     // precision: pattern::single.)
     pattern::Values v;
     v.vector = {vector[0].at(t), vector[1].at(t), vector[2].at(t)};
-    v.number = {pattern::single(number[0].at(t)), pattern::single(number[1].at(t))};
+    v.number = {number[0].at(t), number[1].at(t)};
+    if (kind->single_numbers) v.number = {pattern::single(v.number[0]), pattern::single(v.number[1])};
     v.frequency = pattern::single(frequency.at(t));
     v.phase = pattern::single(phase.at(t));
     v.noise_generator = noise_generator;

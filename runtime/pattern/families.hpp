@@ -34,6 +34,8 @@ double ripples_value(const glm::dvec3& p, const Values& v);
 double checker_value(const glm::dvec3& p, const Values& v);
 double brick_value(const glm::dvec3& p, const Values& v);
 double hexagon_value(const glm::dvec3& p, const Values& v);
+// crackle.cpp
+double crackle_value(const glm::dvec3& p, const Values& v);
 // fractal_patterns.cpp
 double mandel_value(const glm::dvec3& p, const Values& v);
 // normal_patterns.cpp: the normal-only patterns' perturbations

@@ -287,6 +287,12 @@ glm::dvec3 dturbulence(const glm::dvec3& p, const Octaves& o) {
     return result;
 }
 
+int lattice_hash3(int a, int b, int c) {
+    const auto& h = tables().hash;
+    return h[static_cast<std::size_t>(h[static_cast<std::size_t>(h[static_cast<std::size_t>(a & 0xFFF)] ^ (b & 0xFFF))] ^
+                                      (c & 0xFFF))];
+}
+
 double cycloidal(double v) {
     if (v >= 0.0) return std::sin((v - std::floor(v)) * 50000.0 / 50000.0 * kTwoPi);
     return 0.0 - std::sin((0.0 - (v + std::floor(0.0 - v))) * 50000.0 / 50000.0 * kTwoPi);

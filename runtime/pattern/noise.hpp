@@ -43,6 +43,9 @@ Octaves octaves_of(double octaves, double omega, double lambda);
 double turbulence(const glm::dvec3& p, const Octaves& o, int generator);
 glm::dvec3 dturbulence(const glm::dvec3& p, const Octaves& o);
 
+// POV-Ray's Hash3d: the lattice hash of three integers (each taken & 0xFFF).
+int lattice_hash3(int a, int b, int c);
+
 // sin(2 pi v) as POV-Ray computes it for its waves (the fraction rounded
 // through 50000ths); and the triangle wave: 0 at integers, 1 halfway.
 double cycloidal(double v);

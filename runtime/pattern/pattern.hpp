@@ -90,6 +90,9 @@ struct Kind {
     glm::dvec3 vector{0.0};
     // In a normal { }: its own perturbation, else the slope of its value.
     NormalFunction normal = nullptr;
+    // POV-Ray keeps the kinds' numbers in single precision, but crackle's
+    // metric and offset in double.
+    bool single_numbers = true;
 };
 
 // The kind named `name`, or null.

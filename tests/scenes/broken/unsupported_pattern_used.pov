@@ -1,3 +1,3 @@
-// error: 3:1: pigment pattern 'crackle' (written at
-#declare Stone = pigment { crackle }
+// error: 3:1: pigment pattern 'cells' (written at
+#declare Stone = pigment { cells }
 sphere { 0, 1 pigment { Stone } }
