@@ -532,8 +532,7 @@ HEXANT_KEYWORD(kw_material, "material");
 // Patterns POV-Ray has and hexant does not: parsed, kept by name, an error
 // only where a scene uses them.
 struct unsupported_pattern_name
-    : p::sor<TAO_PEGTL_KEYWORD("average"), TAO_PEGTL_KEYWORD("cells"),
-             TAO_PEGTL_KEYWORD("facets"),
+    : p::sor<TAO_PEGTL_KEYWORD("average"), TAO_PEGTL_KEYWORD("facets"),
              TAO_PEGTL_KEYWORD("image_map"),
              TAO_PEGTL_KEYWORD("function"), TAO_PEGTL_KEYWORD("julia"), TAO_PEGTL_KEYWORD("pavement"),
              TAO_PEGTL_KEYWORD("tiling"), TAO_PEGTL_KEYWORD("cubic"), TAO_PEGTL_KEYWORD("object"),
@@ -548,8 +547,8 @@ struct unsupported_pattern : p::seq<unsupported_pattern_name, skip::until_rbrace
 // (spiral1, spiral2, mandel) or a list of colours (checker, brick,
 // hexagon).
 struct pattern_words {
-    static constexpr std::array<std::string_view, 27> list = {
-        "agate", "boxed", "bozo", "brick", "bumps", "checker", "crackle", "cylindrical", "dents",
+    static constexpr std::array<std::string_view, 28> list = {
+        "agate", "boxed", "bozo", "brick", "bumps", "cells", "checker", "crackle", "cylindrical", "dents",
         "gradient", "granite", "hexagon", "leopard", "mandel", "marble", "onion", "planar",
         "quilted", "radial", "ripples", "spherical", "spiral1", "spiral2", "spotted", "waves",
         "wood", "wrinkles"};

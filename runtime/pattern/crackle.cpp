@@ -1,4 +1,5 @@
-// crackle (POV-Ray 3.7's crackle_pattern): cells around random points, one
+// cells and crackle (POV-Ray 3.7's cells_pattern, crackle_pattern): a
+// random value a unit cube; and cells around random points, one
 // in each unit cube, the value a weighted sum (form) of the distances
 // (metric) to the nearest three. The points are POV-Ray's: each cube's is
 // its corner plus three entries of PatternRands, a table of 32,768 doubles
@@ -41,6 +42,16 @@ const std::vector<std::array<int, 3>>& neighbours() {
 }
 
 }  // namespace
+
+double cells_value(const glm::dvec3& p, const Values&) {
+    // One random value a unit cube (POV-Ray's cells_pattern).
+    constexpr double kPovEpsilon = 1.0e-10;
+    const double fx = std::floor(p.x + kPovEpsilon), fy = std::floor(p.y + kPovEpsilon),
+                 fz = std::floor(p.z + kPovEpsilon);
+    if (!(std::fabs(fx) < 1.0e9 && std::fabs(fy) < 1.0e9 && std::fabs(fz) < 1.0e9)) return 0.0;
+    const int seed = lattice_hash3(static_cast<int>(fx), static_cast<int>(fy), static_cast<int>(fz));
+    return std::min(pattern_rands()[static_cast<std::size_t>(seed)], 1.0);
+}
 
 double crackle_value(const glm::dvec3& p, const Values& v) {
     constexpr double kPovEpsilon = 1.0e-10;

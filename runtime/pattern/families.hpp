@@ -35,6 +35,7 @@ double checker_value(const glm::dvec3& p, const Values& v);
 double brick_value(const glm::dvec3& p, const Values& v);
 double hexagon_value(const glm::dvec3& p, const Values& v);
 // crackle.cpp
+double cells_value(const glm::dvec3& p, const Values& v);
 double crackle_value(const glm::dvec3& p, const Values& v);
 // fractal_patterns.cpp
 double mandel_value(const glm::dvec3& p, const Values& v);

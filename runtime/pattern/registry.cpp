@@ -41,6 +41,7 @@ const std::vector<Kind>& kinds() {
         {"bozo", noise_value, A::None, 0, Wave::Ramp, true, false, kBozo},
         {"brick", brick_value, A::Colours, 2, Wave::Ramp, false, false, kBrick, {kMortar, 0.0}, {8.0, 3.0, 4.5}},
         {"bumps", noise_value, A::None, 0, Wave::Ramp, true, false, kGray, {}, {}, bumps_normal},
+        {"cells", cells_value, A::None, 0, Wave::Ramp, true, false, kGray},
         {"checker", checker_value, A::Colours, 2, Wave::Ramp, false, false, kChecker},
         {"crackle", crackle_value, A::None, 0, Wave::Ramp, true, false, kGray, {2.0, 0.0}, {-1.0, 1.0, 0.0}, nullptr,
          false},

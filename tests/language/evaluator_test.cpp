@@ -262,11 +262,11 @@ TEST_CASE("clock is a symbol in an animation and a number in a still", "[evaluat
 
 TEST_CASE("what a scene declares but never uses cannot fail", "[evaluator]") {
     const auto r = run("#declare F = function(x) { x }\n#declare G = F(2);\n"
-                       "#declare P = pigment { cells }\n#declare I = isosurface { function { x } }\n"
+                       "#declare P = pigment { julia <0.3, 0.2> 20 }\n#declare I = isosurface { function { x } }\n"
                        "#declare T = texture { pigment { rgb 1 } } texture { pigment { rgbt 1 } }\n"
                        "sphere { 0, 1 }\n");
     CHECK(r.scene.objects.size() == 1);
-    const auto used = error_of("#declare P = pigment { cells }\nsphere { 0, 1 pigment { P } }\n");
+    const auto used = error_of("#declare P = pigment { julia <0.3, 0.2> 20 }\nsphere { 0, 1 pigment { P } }\n");
     CHECK(used.places()[0].line == 2);
     CHECK(used.message().find("test.pov:1:") != std::string::npos);  // where it was written
     CHECK(error_of("#declare I = isosurface { function { x } }\nobject { I }\n").places()[0].line == 2);

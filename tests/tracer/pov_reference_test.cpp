@@ -231,7 +231,7 @@ TEST_CASE("a parallel light agrees with POV-Ray 3.7's", "[tracer][pov]") {
 
 TEST_CASE("crackle agrees with POV-Ray 3.7's", "[tracer][pov][pattern]") {
     // patterns/crackle.pov: the default form and metric, metric 1 with form,
-    // offset and turbulence, metric 3, at clock 0 and 0.5. The random
+    // offset and turbulence, metric 3, and cells, at clock 0 and 0.5. The random
     // points are POV-Ray's (Boost's mt19937 table through the lattice
     // hash): a different generator would move every cell. Same tolerance
     // (exact when this was written).

@@ -1,3 +1,3 @@
-// error: 3:1: pigment pattern 'cells' (written at
-#declare Stone = pigment { cells }
+// error: 3:1: pigment pattern 'julia' (written at
+#declare Stone = pigment { julia }
 sphere { 0, 1 pigment { Stone } }
