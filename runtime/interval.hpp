@@ -5,8 +5,9 @@
 // rounded value at any point lies between the rounded values at the ends).
 //
 // Rounding: the basic operations and sqrt are correctly rounded (IEEE 754),
-// so their ends are stepped one ulp outward (a time function's sums and
-// products only where inexact: tight_sum, tight_product). The libm functions (sin, cos,
+// so their ends are stepped one ulp outward. (Where time is split on a
+// condition, runtime/point_range.hpp rounds sums and products to nearest:
+// it bounds the point evaluator's values only.) The libm functions (sin, cos,
 // tan, asin, acos, atan, atan2, exp, log, log10, pow) are within 1 ulp on
 // glibc x86_64 (2 for log10; glibc manual, "Known Maximum Errors in Math
 // Functions"); a point value inside may be off by that much the other way, so
@@ -213,45 +214,6 @@ inline Interval operator*(const Interval& a, const Interval& b) {
     return {next_down(min4(p1, p2, p3, p4)), next_up(max4(p1, p2, p3, p4))};
 }
 
-namespace interval_detail {
-
-// a + b and a * b with each end stepped outward only where it is inexact:
-// the ends of a sum by TwoSum; a product's corner with a zero factor is
-// exactly zero. For the time functions (time_ops_generic.hpp), whose
-// bounds it keeps tight where they are exact: stepping exact sums widened
-// integers (floor(...) + 1 over a piece inside one frame was [3 - ulp,
-// 3 + ulp]) and 2 + 3 * [0, m] was [2 - ulp, ...] for every m below 1e-16.
-// Not used by operator+ and operator*: checking every sum cost about a
-// fifth of the sweeps' time (TwoSum on all, 10^5 objects).
-inline Interval tight_sum(const Interval& a, const Interval& b) {
-    if (b.lo == 0.0 && b.hi == 0.0) return a;
-    if (a.lo == 0.0 && a.hi == 0.0) return b;
-    const double lo = a.lo + b.lo, hi = a.hi + b.hi;
-    return {sum_error(a.lo, b.lo, lo) >= 0.0 ? lo : next_down(lo),
-            sum_error(a.hi, b.hi, hi) <= 0.0 ? hi : next_up(hi)};
-}
-
-inline double product_down(double x, double y) {
-    const double p = x * y;
-    return x == 0.0 || y == 0.0 ? p : next_down(p);
-}
-inline double product_up(double x, double y) {
-    const double p = x * y;
-    return x == 0.0 || y == 0.0 ? p : next_up(p);
-}
-
-inline Interval tight_product(const Interval& a, const Interval& b) {
-    if ((b.lo == 0.0 && b.hi == 0.0) || (a.lo == 0.0 && a.hi == 0.0)) return Interval(0.0);
-    if (b.lo == 1.0 && b.hi == 1.0) return a;
-    if (a.lo == 1.0 && a.hi == 1.0) return b;
-    // (NaN corners, 0 * inf, are skipped as operator* skips them.)
-    return {min4(product_down(a.lo, b.lo), product_down(a.lo, b.hi), product_down(a.hi, b.lo),
-                 product_down(a.hi, b.hi)),
-            max4(product_up(a.lo, b.lo), product_up(a.lo, b.hi), product_up(a.hi, b.lo),
-                 product_up(a.hi, b.hi))};
-}
-
-}  // namespace interval_detail
 
 inline Interval operator/(const Interval& a, const Interval& b) {
     using namespace interval_detail;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <mutex>
+#include <type_traits>
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
@@ -126,14 +127,18 @@ pattern::Values TextureEvaluator::CompiledPattern::values_at(double t) const {
     return v;
 }
 
-glm::dvec3 TextureEvaluator::CompiledPattern::point(const glm::dvec3& world, double t,
-                                                    const pattern::Values& v) const {
+template <class OnMap>
+glm::dvec3 TextureEvaluator::CompiledPattern::walk(const glm::dvec3& world, double t, const pattern::Values& v,
+                                                   OnMap on_map) const {
     const auto q = head->to_object<double>({world.x, world.y, world.z}, t);
     glm::dvec3 p(q[0], q[1], q[2]);
+    constexpr bool maps = !std::is_same_v<OnMap, NoMaps>;
+    if constexpr (maps) on_map(head->jacobian_at(p, t));
     for (auto w = warps.rbegin(); w != warps.rend(); ++w) {
         if (w->transform) {
             const auto r = w->transform->to_object<double>({p.x, p.y, p.z}, t);
             p = {r[0], r[1], r[2]};
+            if constexpr (maps) on_map(w->transform->jacobian_at(p, t));
         } else {
             const CompiledTurbulence& turb = w->turbulence;
             p = pattern::apply_turbulence(p, {turb.amount[0].at(t), turb.amount[1].at(t), turb.amount[2].at(t)},
@@ -220,22 +225,21 @@ std::array<double, 5> TextureEvaluator::CompiledPigment::colour(const glm::dvec3
     if (!pigments.empty()) {
         // POV-Ray's Compute_Pigment with a pigment map: the neighbouring
         // entries' pigments at this pattern's point, blended linearly.
-        std::vector<pattern::MapEntry> at;  // values only: which entries
-        at.reserve(pigments.size());
-        for (const auto& [entry_value, unused] : pigments) at.push_back({pattern::single(entry_value.at(t)), {}});
+        // (Search_Blend_Map over the entries' values, read as it goes.)
+        const auto at = [&](std::size_t i) { return pattern::single(pigments[i].first.at(t)); };
         std::size_t cur = 0, prev = 0;
-        if (value >= at.back().value) {
-            prev = cur = at.size() - 1;
+        if (value >= at(pigments.size() - 1)) {
+            prev = cur = pigments.size() - 1;
         } else {
-            while (value > at[cur].value) prev = cur++;
+            while (value > at(cur)) prev = cur++;
         }
-        if (value == at[cur].value) prev = cur;
+        if (value == at(cur)) prev = cur;
         // (A sub-pigment sees the point warped by this pattern, but not
         // moved by turbulence that marble and wood read themselves.)
         const auto c = pigments[cur].second->colour(point, t);
         if (prev == cur) return c;
         const auto b = pigments[prev].second->colour(point, t);
-        const double f = (value - at[prev].value) / (at[cur].value - at[prev].value);
+        const double f = (value - at(prev)) / (at(cur) - at(prev));
         std::array<double, 5> out;
         for (std::size_t i = 0; i < 5; ++i) out[i] = b[i] + f * (c[i] - b[i]);
         return out;
@@ -254,7 +258,6 @@ glm::dvec3 TextureEvaluator::perturb(const glm::dvec3& normal, const glm::dvec3&
     const CompiledNormal& n = *normal_;
     const CompiledPattern& p = n.pattern;
     const pattern::Values v = p.values(t);
-    const glm::dvec3 point = p.point(world_point, t, v);
     // Into pattern space: a normal goes by the transpose of each linear
     // map, world to pattern, in the order the point went (POV-Ray's
     // MInvTransNormal); back by their inverse transposes, in reverse.
@@ -263,26 +266,17 @@ glm::dvec3 TextureEvaluator::perturb(const glm::dvec3& normal, const glm::dvec3&
         return n.no_bump_scale || !(l > 0.0) || !std::isfinite(l) ? x : x / l;
     };
     // The pattern-to-world linear parts, head first (on the stack for the
-    // usual few; a longer warp list in a vector).
+    // usual few; a longer warp list in a vector), gathered on the way in.
     constexpr std::size_t kOnStack = 8;
     glm::dmat3 stack[kOnStack];
     std::vector<glm::dmat3> heap;
     std::size_t count = 0;
-    const auto keep = [&](const glm::dmat3& m) {
+    const auto map = [&](std::size_t i) -> const glm::dmat3& { return i < kOnStack ? stack[i] : heap[i - kOnStack]; };
+    const glm::dvec3 point = p.walk(world_point, t, v, [&](const glm::dmat3& m) {
         if (count < kOnStack) stack[count] = m;
         else heap.push_back(m);
         ++count;
-    };
-    const auto map = [&](std::size_t i) -> const glm::dmat3& { return i < kOnStack ? stack[i] : heap[i - kOnStack]; };
-    const auto head_q = p.head->to_object<double>({world_point.x, world_point.y, world_point.z}, t);
-    keep(p.head->jacobian_at({head_q[0], head_q[1], head_q[2]}, t));
-    glm::dvec3 at(head_q[0], head_q[1], head_q[2]);
-    for (auto w = p.warps.rbegin(); w != p.warps.rend(); ++w) {
-        if (!w->transform) continue;
-        const auto r = w->transform->to_object<double>({at.x, at.y, at.z}, t);
-        at = {r[0], r[1], r[2]};
-        keep(w->transform->jacobian_at(at, t));
-    }
+    });
     glm::dvec3 pn = unit(normal);
     for (std::size_t i = 0; i < count; ++i) pn = glm::transpose(map(i)) * pn;
     pn = unit(pn);

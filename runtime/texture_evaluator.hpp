@@ -91,7 +91,14 @@ private:
         // last transforms first, then each earlier step, last written
         // first; classic turbulence last of all, unless the kind reads it
         // itself.
-        glm::dvec3 point(const glm::dvec3& world, double t, const pattern::Values& v) const;
+        glm::dvec3 point(const glm::dvec3& world, double t, const pattern::Values& v) const {
+            return walk(world, t, v, NoMaps{});
+        }
+        struct NoMaps {};  // (a pigment's point: no Jacobians computed)
+        // The same, handing each transform's pattern-to-world linear part
+        // (head first) to on_map: what a normal goes through.
+        template <class OnMap>
+        glm::dvec3 walk(const glm::dvec3& world, double t, const pattern::Values& v, OnMap on_map) const;
     };
     // A pigment: a colour, or a pattern through a colour map or a
     // pigment map of pigments (each evaluated in this pattern's space).

@@ -84,7 +84,7 @@ glm::dvec3 Shader::fogged(const glm::dvec3& colour, const Ray4& ray, double dept
         const double distance = fog.distance(t);
         if (!(std::fabs(distance) > 1.0e-10)) continue;  // POV-Ray's EPSILON
         double width = depth;
-        const auto c = fog.colour;
+        const auto& c = fog.colour;
         const double r = c.c[0](t), g = c.c[1](t), b = c.c[2](t), filter = c.c[3](t), transmit = c.c[4](t);
         double density = 1.0;
         glm::dvec3 middle = origin + direction * (width / 2.0);

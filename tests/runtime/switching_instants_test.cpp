@@ -109,9 +109,9 @@ TEST_CASE("a step function switches at its jumps exactly", "[runtime][switching]
 
 TEST_CASE("a step near clock 0, where doubles are dense, is decided", "[runtime][switching]") {
     // int(2 + 3 * clock) from 0: the sum is within an ulp of 2 for some
-    // 2^60 doubles below 1e-16; its ends are exact there (interval.hpp
-    // tight_sum, tight_product), so the piece is decided whole instead of
-    // halved without end.
+    // 2^60 doubles below 1e-16; the range of point values there is exactly
+    // 2 (point_range.hpp), so the piece is decided whole instead of halved
+    // without end.
     const TimeFunction step = TimeFunction::apply(TimeOp::Int, 2.0 + t * 3.0);
     const auto pieces = rt::split_by_value(step, {{0.0, 1.0}}, 10000);
     REQUIRE(pieces.size() == 4);

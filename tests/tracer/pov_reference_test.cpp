@@ -90,6 +90,18 @@ Pixels render(const fs::path& scene, const std::string& flags, const std::string
     return read_png(out);
 }
 
+// A 64 by 48 still of `folder/name.pov` at each clock (plus `flags`) against
+// POV-Ray's `folder/name_<clock>.png`, with the still's tolerance.
+void check_stills(const std::string& folder, const std::string& name, std::initializer_list<const char*> clocks,
+                  const std::string& flags = "") {
+    for (const char* clock : clocks) {
+        INFO(name << " at clock " << clock);
+        check_agreement(agree(render(kFolder / folder / (name + ".pov"), "--clock " + std::string(clock) + flags,
+                                     "hexant_pov_" + name, 0, "-W 64 -H 48"),
+                              read_png(kFolder / folder / (name + "_" + clock + ".png"))));
+    }
+}
+
 }  // namespace
 
 TEST_CASE("a still agrees with POV-Ray 3.7's render of it pixel by pixel", "[tracer][pov]") {
@@ -151,12 +163,7 @@ TEST_CASE("a sky_sphere over the background agrees with POV-Ray 3.7's", "[tracer
     // clouds that let it and the background through by filter and
     // transmit), emission and a turn, at clock 0 and 0.5. Same tolerance
     // as the still (both agreed exactly when this was written).
-    for (const char* clock : {"0", "0.5"}) {
-        INFO("sky at clock " << clock);
-        check_agreement(agree(render(kFolder / "sky" / "sky.pov", "--clock " + std::string(clock), "hexant_pov_sky", 0,
-                                     "-W 64 -H 48"),
-                              read_png(kFolder / "sky" / ("sky_" + std::string(clock) + ".png"))));
-    }
+    check_stills("sky", "sky", {"0", "0.5"});
 }
 
 TEST_CASE("a checker face on a cell boundary takes POV-Ray's side (../shared/cases/13)", "[tracer][pov][pattern]") {
@@ -221,12 +228,7 @@ TEST_CASE("a parallel light agrees with POV-Ray 3.7's", "[tracer][pov]") {
     // along point_at - location, shadows back to the plane through it, a
     // ball above that plane casting none) beside a point light. The same
     // tolerance as the still's (both agreed exactly when this was written).
-    for (const char* clock : {"0", "0.5"}) {
-        INFO("parallel at clock " << clock);
-        check_agreement(agree(render(kFolder / "lights" / "parallel.pov", "--clock " + std::string(clock),
-                                     "hexant_pov_parallel", 0, "-W 64 -H 48"),
-                              read_png(kFolder / "lights" / ("parallel_" + std::string(clock) + ".png"))));
-    }
+    check_stills("lights", "parallel", {"0", "0.5"});
 }
 
 TEST_CASE("crackle agrees with POV-Ray 3.7's", "[tracer][pov][pattern]") {
@@ -235,24 +237,14 @@ TEST_CASE("crackle agrees with POV-Ray 3.7's", "[tracer][pov][pattern]") {
     // points are POV-Ray's (Boost's mt19937 table through the lattice
     // hash): a different generator would move every cell. Same tolerance
     // (exact when this was written).
-    for (const char* clock : {"0", "0.5"}) {
-        INFO("crackle at clock " << clock);
-        check_agreement(agree(render(kFolder / "patterns" / "crackle.pov", "--clock " + std::string(clock),
-                                     "hexant_pov_crackle", 0, "-W 64 -H 48"),
-                              read_png(kFolder / "patterns" / ("crackle_" + std::string(clock) + ".png"))));
-    }
+    check_stills("patterns", "crackle", {"0", "0.5"});
 }
 
 TEST_CASE("a pigment_map agrees with POV-Ray 3.7's", "[tracer][pov][pattern]") {
     // patterns/pigment_map.pov: pigments (declared, a colour, patterns of
     // their own) blended by gradient and by marble, in the outer pattern's
     // warped space, at clock 0 and 0.5. Same tolerance (exact when written).
-    for (const char* clock : {"0", "0.5"}) {
-        INFO("pigment_map at clock " << clock);
-        check_agreement(agree(render(kFolder / "patterns" / "pigment_map.pov", "--clock " + std::string(clock),
-                                     "hexant_pov_pigment_map", 0, "-W 64 -H 48"),
-                              read_png(kFolder / "patterns" / ("pigment_map_" + std::string(clock) + ".png"))));
-    }
+    check_stills("patterns", "pigment_map", {"0", "0.5"});
 }
 
 TEST_CASE("assumed_gamma 2.2 agrees with POV-Ray 3.7", "[tracer][pov]") {
@@ -261,6 +253,5 @@ TEST_CASE("assumed_gamma 2.2 agrees with POV-Ray 3.7", "[tracer][pov]") {
     // pixel before it encodes the file's sRGB. Same tolerance (exact when
     // this was written; before, hexant ignored assumed_gamma and was off by
     // 70 steps on average).
-    check_agreement(agree(render(kFolder / "lights" / "gamma.pov", "--clock 0", "hexant_pov_gamma", 0, "-W 64 -H 48"),
-                          read_png(kFolder / "lights" / "gamma_0.png")));
+    check_stills("lights", "gamma", {"0"});
 }
