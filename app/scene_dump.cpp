@@ -86,10 +86,34 @@ std::string pigment(const runtime::Pigment& p, double t) {
 
 std::string normal(const runtime::Normal& n, double t) {
     if (!n.unsupported_name.empty()) return n.unsupported_name;
-    return std::string(n.patterned.kind->name) + " amount=" + number(n.amount(t)) + modifiers(n.patterned, t);
+    std::string s = std::string(n.patterned.kind->name) + " amount=" + number(n.amount(t)) + modifiers(n.patterned, t);
+    // A normal map's entries (value and normal), a slope map's (value,
+    // height, slope).
+    for (const auto& e : n.normal_map) s += " " + number(e.value(t)) + "[" + normal(*e.normal, t) + "]";
+    for (const auto& e : n.slope_map)
+        s += " " + number(e.value(t)) + "<" + number(e.height(t)) + ", " + number(e.slope(t)) + ">";
+    return s;
 }
 
-std::string texture(const runtime::Texture& texture, double t) {
+std::string layer(const runtime::Texture& texture, double t);
+
+// A texture at t: its one layer, or its layers top first, or its pattern
+// and texture map.
+std::string texture(const runtime::Texture& x, double t) {
+    if (x.is_patterned()) {
+        // The pattern, then its map's entries (value and texture).
+        std::string s = "texture_map=" + std::string(x.patterned.kind->name) + modifiers(x.patterned, t);
+        for (const auto& e : x.texture_map) s += " " + number(e.value(t)) + "[" + texture(*e.texture, t) + "]";
+        return s;
+    }
+    std::string s = layer(x, t);
+    // The layers under it, top first.
+    for (const auto& under : x.below) s += " under [" + layer(under, t) + "]";
+    return s;
+}
+
+// A plain texture's pigment, normal and finish at t.
+std::string layer(const runtime::Texture& texture, double t) {
     std::string s = "pigment=" + pigment(texture.pigment, t);
     if (texture.normal) s += " normal=" + normal(*texture.normal, t);
     const auto& f = texture.finish;

@@ -692,27 +692,34 @@ HEXANT_ACTION(pigment_base) {
 };
 // ---- patterns (runtime/pattern/pattern.hpp), in a pigment or a normal
 
-// The pattern being written: a pigment's or a normal's.
+// The pattern being written: a pigment's, a normal's or a texture's.
 struct PatternSlot {
     runtime::pattern::Pattern& pattern;
     runtime::Transform& transform;
-    runtime::Pigment* pigment;  // null in a normal
-    runtime::Normal* normal;    // null in a pigment
+    runtime::Pigment* pigment = nullptr;  // (one of the three)
+    runtime::Normal* normal = nullptr;
+    runtime::Texture* texture = nullptr;
 };
-inline PatternSlot pattern_slot(Interpreter& st, const p::position& at, const char* what) {
-    if (!st.blocks.empty() && std::holds_alternative<runtime::Normal>(st.blocks.back())) {
-        auto& n = st.block<runtime::Normal>(at, what);
-        return {n.patterned, n.transform, nullptr, &n};
+// (`starts` for the pattern's name itself: in a texture, a modifier comes
+// after it.)
+inline PatternSlot pattern_slot(Interpreter& st, const p::position& at, const char* what, bool starts = false) {
+    if (!st.blocks.empty()) {
+        if (auto* n = std::get_if<runtime::Normal>(&st.blocks.back())) return {n->patterned, n->transform, nullptr, n};
+        if (auto* t = std::get_if<runtime::Texture>(&st.blocks.back())) {
+            if (t->patterned.kind == nullptr && !starts)
+                throw ValueError(std::string(what) + " in a texture follows a pattern (texture { PATTERN texture_map { } })");
+            return {t->patterned, t->transform, nullptr, nullptr, t};
+        }
     }
     auto& pigment = st.block<runtime::Pigment>(at, what);
-    return {pigment.patterned, pigment.transform, &pigment, nullptr};
+    return {pigment.patterned, pigment.transform, &pigment};
 }
 
 HEXANT_ACTION(pattern_kind) {
     HEXANT_APPLY {
         std::vector<Value> args = st.close_frame();
         const std::string name = st.pop_name();
-        const PatternSlot slot = pattern_slot(st, in.position(), "a pattern");
+        const PatternSlot slot = pattern_slot(st, in.position(), "a pattern", true);
         const runtime::pattern::Kind* kind = runtime::pattern::find_kind(name);
         if (kind == nullptr) throw ValueError("no pattern " + name);
         slot.pattern = runtime::pattern::Pattern::of(*kind);
@@ -722,6 +729,13 @@ HEXANT_ACTION(pattern_kind) {
         if (slot.pigment) {
             slot.pigment->pattern = runtime::Pigment::Pattern::Patterned;
             slot.pigment->colour_map = {};
+        }
+        if (slot.texture) {
+            // (POV-Ray: a texture is plain or patterned; a pattern after
+            // its layers or in a declared plain one starts it over.)
+            if (!slot.texture->below.empty())
+                throw ValueError("a layered texture cannot take a pattern (" + name + ")");
+            slot.texture->texture_map.clear();
         }
         using A = runtime::pattern::Kind::Argument;
         // In a normal, one more number may follow: the amount (bump_size).
@@ -753,8 +767,14 @@ HEXANT_ACTION(pattern_kind) {
                 slot.pattern.number[0] = TimeFunction::apply(TimeOp::Int, to_float(args[0], name + "'s number"));
                 break;
             case A::Colours: {
+                // (In a normal or a texture, the normals or textures follow
+                // as blocks.)
                 if (slot.normal) {
-                    count(0, 0, "at most an amount in a normal (a list of normals is not supported)");
+                    count(0, 0, "at most an amount in a normal");
+                    break;
+                }
+                if (slot.texture) {
+                    count(0, 0, "its textures as texture { } blocks");
                     break;
                 }
                 count(0, static_cast<std::size_t>(kind->colours),
@@ -915,6 +935,155 @@ HEXANT_ACTION(camera_normal) {
     }
 };
 
+// A texture's pattern has its map (POV-Ray: "Patterned texture must have
+// texture_map"), a block pattern all its textures.
+inline void check_patterned_texture(const runtime::Texture& t) {
+    if (t.patterned.kind == nullptr) return;
+    if (t.texture_map.empty())
+        throw ValueError("a texture with a pattern (" + std::string(t.patterned.kind->name) +
+                         ") needs a texture_map, as in POV-Ray");
+    using A = runtime::pattern::Kind::Argument;
+    if (t.patterned.kind->argument == A::Colours &&
+        t.texture_map.size() < static_cast<std::size_t>(t.patterned.kind->colours))
+        throw ValueError(std::string(t.patterned.kind->name) + " in a texture needs " +
+                         std::to_string(t.patterned.kind->colours) + " textures, not " +
+                         std::to_string(t.texture_map.size()));
+}
+
+// `top` layered over `under` (POV-Ray's Link_Textures): top's layers, then
+// under's. Nothing is layered over or under a patterned texture.
+inline runtime::Texture layered(runtime::Texture top, runtime::Texture under) {
+    if (under.is_patterned())
+        throw ValueError("a texture cannot be layered over a patterned one (texture_map), as in POV-Ray");
+    if (top.is_patterned())
+        throw ValueError("a patterned texture (texture_map) cannot be layered over another, as in POV-Ray");
+    std::vector<runtime::Texture> lower = std::move(under.below);
+    under.below.clear();
+    top.below.push_back(std::move(under));
+    for (auto& layer : lower) top.below.push_back(std::move(layer));
+    return top;
+}
+
+// ---- maps of pigments, normals and textures, and block patterns' lists
+
+// A map entry's block closed (a pigment, normal or texture): it and the
+// value written before it become an entry of the map of the block around
+// it, at most 256 as in POV-Ray.
+template <class Record, class Entry>
+void close_map_entry(Interpreter& st, const p::position& at, const std::string& map,
+                     std::vector<Entry> Record::*entries) {
+    const std::string what = "a " + map + " entry";
+    auto entry = std::make_shared<Record>(std::move(st.block<Record>(at, what.c_str())));
+    st.blocks.pop_back();
+    const TimeFunction value = to_float(st.pop(), what + "'s value");
+    auto& outer = st.block<Record>(at, what.c_str());
+    (outer.*entries).push_back({value, std::move(entry)});
+    if ((outer.*entries).size() > 256) throw ValueError("a " + map + " has at most 256 entries, as in POV-Ray");
+}
+
+// A normal or texture for a block pattern (checker normal { } normal { }):
+// its map's entries at 0, 1, 2 (POV-Ray's Parse_Blend_List).
+template <class Entry, class Item>
+void add_to_block_list(std::vector<Entry>& map, const runtime::pattern::Pattern& pattern, Item item,
+                       const char* what) {
+    using A = runtime::pattern::Kind::Argument;
+    if (pattern.kind == nullptr || pattern.kind->argument != A::Colours)
+        throw ValueError(std::string("a ") + what + " inside a " + what +
+                         " follows a block pattern (checker, brick, hexagon) as one of its " + what + "s");
+    if (map.size() >= static_cast<std::size_t>(pattern.kind->colours))
+        throw ValueError(std::string(pattern.kind->name) + " takes at most " + std::to_string(pattern.kind->colours) +
+                         " " + what + "s");
+    map.push_back({static_cast<double>(map.size()), std::move(item)});
+}
+// A map's pattern must be one that gives values (POV-Ray refuses the block
+// patterns with a map).
+inline void check_map_pattern(const runtime::pattern::Pattern& pattern, const char* map) {
+    if (pattern.kind && pattern.kind->argument == runtime::pattern::Kind::Argument::Colours)
+        throw ValueError(std::string("a ") + map + " cannot go with " + std::string(pattern.kind->name) +
+                         ", as in POV-Ray");
+}
+
+HEXANT_ACTION(normal_map_open) {
+    HEXANT_APPLY {
+        auto& normal = st.block<runtime::Normal>(in.position(), "normal_map");
+        check_map_pattern(normal.patterned, "normal_map");
+        normal.normal_map.clear();
+    }
+};
+HEXANT_ACTION(normal_map_normal_open) {
+    HEXANT_APPLY { (void)in; st.blocks.emplace_back(std::in_place_type<runtime::Normal>); }
+};
+HEXANT_ACTION(normal_map_entry) {
+    HEXANT_APPLY {
+        auto& written = st.block<runtime::Normal>(in.position(), "a normal_map entry");
+        if (written.patterned.kind == nullptr && written.unsupported_name.empty())
+            throw ValueError("a normal_map entry needs a pattern (POV-Ray: no normal type given)");
+        close_map_entry(st, in.position(), "normal_map", &runtime::Normal::normal_map);
+    }
+};
+HEXANT_ACTION(normal_list_normal) {
+    HEXANT_APPLY {
+        auto entry = std::make_shared<runtime::Normal>(st.pop().as<runtime::Normal>());
+        auto& outer = st.block<runtime::Normal>(in.position(), "a normal");
+        add_to_block_list(outer.normal_map, outer.patterned, std::shared_ptr<const runtime::Normal>(std::move(entry)),
+                          "normal");
+    }
+};
+HEXANT_ACTION(slope_map_open) {
+    HEXANT_APPLY {
+        auto& normal = st.block<runtime::Normal>(in.position(), "slope_map");
+        check_map_pattern(normal.patterned, "slope_map");
+        normal.slope_map.clear();
+    }
+};
+HEXANT_ACTION(slope_map_entry) {
+    HEXANT_APPLY {
+        std::vector<Value> items = st.close_frame();
+        // [value <height, slope>] (a 2-vector; a bare pair of numbers too).
+        runtime::SlopeMapEntry e;
+        if (items.size() == 2) {
+            e.value = to_float(items[0], "a slope_map entry's value");
+            const runtime::Vector3Function hs = to_vector3(items[1], "a slope_map entry's <height, slope>");
+            e.height = hs.c[0];
+            e.slope = hs.c[1];
+        } else {
+            throw ValueError("a slope_map entry is [value <height, slope>], not " + std::to_string(items.size()) +
+                             " values");
+        }
+        auto& normal = st.block<runtime::Normal>(in.position(), "a slope_map entry");
+        normal.slope_map.push_back(std::move(e));
+        if (normal.slope_map.size() > 256) throw ValueError("a slope_map has at most 256 entries, as in POV-Ray");
+    }
+};
+
+HEXANT_ACTION(texture_map_open) {
+    HEXANT_APPLY {
+        auto& texture = st.block<runtime::Texture>(in.position(), "texture_map");
+        if (texture.patterned.kind == nullptr)
+            throw ValueError("a texture_map follows its pattern (texture { PATTERN texture_map { } })");
+        check_map_pattern(texture.patterned, "texture_map");
+        texture.texture_map.clear();
+    }
+};
+HEXANT_ACTION(texture_map_texture_open) {
+    HEXANT_APPLY { (void)in; st.blocks.emplace_back(std::in_place_type<runtime::Texture>); }
+};
+HEXANT_ACTION(texture_map_entry) {
+    HEXANT_APPLY {
+        auto& written = st.block<runtime::Texture>(in.position(), "a texture_map entry");
+        check_patterned_texture(written);
+        close_map_entry(st, in.position(), "texture_map", &runtime::Texture::texture_map);
+    }
+};
+HEXANT_ACTION(texture_list_texture) {
+    HEXANT_APPLY {
+        auto entry = std::make_shared<runtime::Texture>(st.pop().as<runtime::Texture>());
+        auto& outer = st.block<runtime::Texture>(in.position(), "a texture");
+        add_to_block_list(outer.texture_map, outer.patterned,
+                          std::shared_ptr<const runtime::Texture>(std::move(entry)), "texture");
+    }
+};
+
 HEXANT_ACTION(pigment_map_open) {
     HEXANT_APPLY {
         auto& pigment = st.block<runtime::Pigment>(in.position(), "pigment_map");
@@ -929,12 +1098,7 @@ HEXANT_ACTION(pigment_map_pigment_open) {
 };
 HEXANT_ACTION(pigment_map_entry) {
     HEXANT_APPLY {
-        auto entry = std::make_shared<runtime::Pigment>(st.block<runtime::Pigment>(in.position(), "a pigment_map entry"));
-        st.blocks.pop_back();
-        const TimeFunction value = to_float(st.pop(), "a pigment_map entry's value");
-        auto& outer = st.block<runtime::Pigment>(in.position(), "a pigment_map entry");
-        outer.pigment_map.push_back({value, std::move(entry)});
-        if (outer.pigment_map.size() > 256) throw ValueError("a pigment_map has at most 256 entries, as in POV-Ray");
+        close_map_entry(st, in.position(), "pigment_map", &runtime::Pigment::pigment_map);
     }
 };
 
@@ -1112,6 +1276,7 @@ HEXANT_ACTION(texture_finish) {
 HEXANT_ACTION(texture_block) {
     HEXANT_APPLY {
         (void)in;
+        check_patterned_texture(std::get<runtime::Texture>(st.blocks.back()));
         Value v{std::get<runtime::Texture>(st.blocks.back())};
         st.blocks.pop_back();
         st.push(std::move(v));
@@ -1119,9 +1284,11 @@ HEXANT_ACTION(texture_block) {
 };
 HEXANT_ACTION(texture_layer) {
     HEXANT_APPLY {
-        // Layered textures are kept as source: an error only where used.
-        st.pop();
-        if (!st.top().is<Unevaluated>()) st.top() = Value{Unevaluated{"layered texture", in.position()}};
+        // texture { A } texture { B }: B on top of A.
+        (void)in;
+        runtime::Texture top = st.pop().as<runtime::Texture>();
+        if (st.top().is<Unevaluated>()) return;
+        st.top() = Value{layered(std::move(top), st.top().as<runtime::Texture>())};
     }
 };
 HEXANT_ACTION(material_value) {
@@ -1137,7 +1304,12 @@ HEXANT_ACTION(material_base) {
     HEXANT_APPLY { (void)st; throw ValueError("declared materials are not supported; declare its texture and interior"); (void)in; }
 };
 HEXANT_ACTION(material_texture) {
-    HEXANT_APPLY { Value v = st.pop(); st.block<MaterialBuilder>(in.position(), "texture").texture = v.as<runtime::Texture>(); }
+    HEXANT_APPLY {
+        Value v = st.pop();
+        auto& material = st.block<MaterialBuilder>(in.position(), "texture");
+        auto texture = v.as<runtime::Texture>();
+        material.texture = material.texture ? layered(std::move(texture), std::move(*material.texture)) : std::move(texture);
+    }
 };
 HEXANT_ACTION(material_interior) {
     HEXANT_APPLY { Value v = st.pop(); st.block<MaterialBuilder>(in.position(), "interior").interior = v.as<runtime::Interior>(); }
@@ -1265,37 +1437,19 @@ HEXANT_ACTION(object_base) {
 inline runtime::Texture& object_texture(Interpreter& st, const p::position& where) {
     auto& record = st.block<runtime::ObjectRecord>(where, "a texture");
     if (!record.texture) record.texture = runtime::Texture{};
+    if (record.texture->is_patterned())
+        throw ValueError("a pigment, normal or finish cannot be added to a patterned texture (texture_map), as in "
+                         "POV-Ray");
     return *record.texture;
-}
-
-// Whether a texture's pigment may let what is under it show (a filter or
-// transmit that is not a constant 0 anywhere in it).
-inline bool may_show_through(const runtime::Pigment& p) {
-    const auto clear = [](const runtime::ColourFunction& c) {
-        return c.c[3].is_constant() && c.c[3].constant() == 0.0 && c.c[4].is_constant() && c.c[4].constant() == 0.0;
-    };
-    if (p.pattern == runtime::Pigment::Pattern::Solid) return !clear(p.colours.front());
-    if (p.pattern != runtime::Pigment::Pattern::Patterned) return false;
-    for (const auto& e : p.colour_map.entries)
-        if (!clear(e.colour)) return true;
-    for (const auto& e : p.pigment_map)
-        if (may_show_through(*e.pigment)) return true;
-    return false;
 }
 
 HEXANT_ACTION(object_texture) {
     HEXANT_APPLY {
         Value v = st.pop();
         auto& record = st.block<runtime::ObjectRecord>(in.position(), "a texture");
-        const auto& texture = v.as<runtime::Texture>();
-        // A texture on an object that has one is a layer on top in
-        // POV-Ray: the same image as a replacement while the top is
-        // opaque; one the lower layer shows through is not supported yet.
-        if (record.texture && may_show_through(texture.pigment))
-            throw ValueError("a second texture on this object is a layer over the first in POV-Ray, and this one "
-                             "lets it show through (filter or transmit): layered textures are not supported by "
-                             "hexant yet");
-        object_texture(st, in.position()) = texture;
+        auto texture = v.as<runtime::Texture>();
+        // A texture on an object that has one is a layer on top, as in POV-Ray.
+        record.texture = record.texture ? layered(std::move(texture), std::move(*record.texture)) : std::move(texture);
     }
 };
 HEXANT_ACTION(object_pigment) {

@@ -538,7 +538,6 @@ struct unsupported_pattern_name
              TAO_PEGTL_KEYWORD("tiling"), TAO_PEGTL_KEYWORD("cubic"), TAO_PEGTL_KEYWORD("object"),
              TAO_PEGTL_KEYWORD("slope"), TAO_PEGTL_KEYWORD("aoi"), TAO_PEGTL_KEYWORD("density_file"),
              TAO_PEGTL_KEYWORD("image_pattern"), TAO_PEGTL_KEYWORD("uv_mapping"),
-             TAO_PEGTL_KEYWORD("normal_map"), TAO_PEGTL_KEYWORD("slope_map"),
              TAO_PEGTL_KEYWORD("bump_map"), TAO_PEGTL_KEYWORD("wave")> {};
 struct unsupported_pattern : p::seq<unsupported_pattern_name, skip::until_rbrace> {};
 
@@ -667,9 +666,33 @@ struct normal_base : p::seq<p::not_at<pattern_name>, expression> {};
 struct normal_setting_name : p::sor<TAO_PEGTL_KEYWORD("bump_size"), TAO_PEGTL_KEYWORD("accuracy")> {};
 struct normal_setting : p::seq<normal_setting_name, ws, p::must<pattern_setting_value>> {};
 struct normal_no_bump_scale : p::seq<TAO_PEGTL_KEYWORD("no_bump_scale"), ws> {};
+struct normal_item;
+// normal_map { [value NORMAL_BODY] ... }: each entry a normal's inside.
+struct normal_map_value : p::seq<sum> {};
+struct normal_map_normal_open : p::success {};
+struct normal_map_entry
+    : p::seq<lbracket, p::must<normal_map_value>, p::opt<comma>, normal_map_normal_open, p::opt<normal_base>,
+             p::star<normal_item>, p::must<rbracket>> {};
+struct normal_map_open : p::seq<TAO_PEGTL_KEYWORD("normal_map"), ws, p::must<lbrace>> {};
+struct normal_map_element
+    : p::sor<directive<normal_map_element>, macro_call<normal_map_element>, normal_map_entry> {};
+struct normal_map_block : p::seq<normal_map_open, p::star<normal_map_element>, p::must<rbrace>> {};
+// slope_map { [value <height, slope>] ... }
+struct slope_map_item : p::seq<sum> {};
+struct slope_map_entry
+    : p::seq<lbracket, frame_open, p::must<slope_map_item>, p::opt<comma>, p::must<slope_map_item>,
+             p::must<rbracket>> {};
+struct slope_map_open : p::seq<TAO_PEGTL_KEYWORD("slope_map"), ws, p::must<lbrace>> {};
+struct slope_map_element
+    : p::sor<directive<slope_map_element>, macro_call<slope_map_element>, slope_map_entry> {};
+struct slope_map_block : p::seq<slope_map_open, p::star<slope_map_element>, p::must<rbrace>> {};
+struct normal_block;
+// A block pattern's normals: checker normal { } normal { }.
+struct normal_list_normal : p::seq<normal_block, p::opt<comma>> {};
 struct normal_item
     : p::sor<directive<normal_item>, macro_call<normal_item>, pattern_kind, pattern_setting, pattern_wave,
-             warp_block, normal_setting, normal_no_bump_scale, unsupported_pattern, transformation> {};
+             warp_block, normal_setting, normal_no_bump_scale, normal_map_block, slope_map_block,
+             normal_list_normal, unsupported_pattern, transformation> {};
 struct normal_block : p::seq<normal_open, p::opt<normal_base>, p::star<normal_item>, p::must<rbrace>> {};
 struct texture_normal : p::seq<normal_block> {};
 struct object_normal : p::seq<normal_block> {};
@@ -693,12 +716,28 @@ struct interior_block
     : p::seq<interior_open, p::opt<interior_base>, p::star<interior_item>, p::must<rbrace>> {};
 
 struct texture_open : p::seq<kw_texture, p::must<lbrace>> {};
-struct texture_base : p::seq<expression> {};
+struct texture_base : p::seq<p::not_at<pattern_name>, expression> {};
 struct texture_pigment : p::seq<pigment_block> {};
 struct texture_finish : p::seq<finish_block> {};
+struct texture_item;
+// texture_map { [value TEXTURE_BODY] ... }: each entry a texture's inside.
+struct texture_map_value : p::seq<sum> {};
+struct texture_map_texture_open : p::success {};
+struct texture_map_entry
+    : p::seq<lbracket, p::must<texture_map_value>, p::opt<comma>, texture_map_texture_open,
+             p::opt<texture_base>, p::star<texture_item>, p::must<rbracket>> {};
+struct texture_map_open : p::seq<TAO_PEGTL_KEYWORD("texture_map"), ws, p::must<lbrace>> {};
+struct texture_map_element
+    : p::sor<directive<texture_map_element>, macro_call<texture_map_element>, texture_map_entry> {};
+struct texture_map_block : p::seq<texture_map_open, p::star<texture_map_element>, p::must<rbrace>> {};
+struct texture_block;
+// A block pattern's textures: checker texture { } texture { }.
+struct texture_list_texture : p::seq<texture_block, p::opt<comma>> {};
+// A patterned texture: a pattern and its modifiers, then its map.
 struct texture_item
     : p::sor<directive<texture_item>, macro_call<texture_item>, texture_pigment, texture_finish,
-             texture_normal, transformation> {};
+             texture_normal, pattern_kind, pattern_setting, pattern_wave, warp_block, texture_map_block,
+             texture_list_texture, transformation> {};
 struct texture_block
     : p::seq<texture_open, p::opt<texture_base>, p::star<texture_item>, p::must<rbrace>> {};
 

@@ -157,7 +157,7 @@ void Interpreter::apply_transform(runtime::TransformStep step, const p::position
     Block& b = blocks.back();
     if (auto* object = std::get_if<runtime::ObjectRecord>(&b)) {
         // As in POV-Ray, an object's texture moves with it.
-        if (object->texture) object->texture->transform.append(step);
+        if (object->texture) object->texture->transform_by(step);
         object->transform.append(std::move(step));
     } else if (auto* light = std::get_if<runtime::LightRecord>(&b)) {
         light->transform.append(std::move(step));
@@ -167,7 +167,7 @@ void Interpreter::apply_transform(runtime::TransformStep step, const p::position
         item.step = std::move(step);
         camera->items.push_back(std::move(item));
     } else if (auto* texture = std::get_if<runtime::Texture>(&b)) {
-        texture->transform.append(std::move(step));
+        texture->transform_by(step);
     } else if (auto* pigment = std::get_if<runtime::Pigment>(&b)) {
         pigment->transform.append(std::move(step));
     } else if (auto* normal = std::get_if<runtime::Normal>(&b)) {
@@ -181,7 +181,7 @@ void Interpreter::apply_transform(runtime::TransformStep step, const p::position
     } else if (auto* transform = std::get_if<runtime::Transform>(&b)) {
         transform->append(std::move(step));
     } else if (auto* material = std::get_if<MaterialBuilder>(&b)) {
-        if (material->texture) material->texture->transform.append(std::move(step));
+        if (material->texture) material->texture->transform_by(step);
     } else {
         fail(where, "a transformation does not belong here");
     }
@@ -616,18 +616,24 @@ void check_pigment(const runtime::Pigment& pigment) {
     for (const auto& entry : pigment.pigment_map) check_pigment(*entry.pigment);
 }
 void check_normal(const std::optional<runtime::Normal>& normal) {
-    if (normal && !normal->unsupported_name.empty())
+    if (!normal) return;
+    if (!normal->unsupported_name.empty())
         throw ValueError("normal pattern '" + normal->unsupported_name + "' (written at " +
                          normal->unsupported_place.to_string() + ") is not supported by hexant");
+    for (const auto& entry : normal->normal_map) check_normal(*entry.normal);
+}
+void check_texture(const runtime::Texture& texture) {
+    check_pigment(texture.pigment);
+    check_normal(texture.normal);
+    for (const auto& layer : texture.below) check_texture(layer);
+    for (const auto& entry : texture.texture_map) check_texture(*entry.texture);
 }
 
 namespace {
 
 void check_patterns(const runtime::ObjectRecord& object) {
     for_each_nested(object, [](const runtime::ObjectRecord& record) {
-        if (!record.texture) return;
-        check_pigment(record.texture->pigment);
-        check_normal(record.texture->normal);
+        if (record.texture) check_texture(*record.texture);
     });
 }
 

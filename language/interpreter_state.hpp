@@ -77,6 +77,7 @@ enum class Divider { None, Else, Elseif, End, Case, Range, Break };
 // a ValueError naming where it was written (interpreter.cpp).
 void check_pigment(const runtime::Pigment& pigment);
 void check_normal(const std::optional<runtime::Normal>& normal);
+void check_texture(const runtime::Texture& texture);
 
 class Interpreter {
 public:

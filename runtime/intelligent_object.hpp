@@ -47,7 +47,7 @@ struct ObjectHit {
 };
 
 // What complete() returns: world-space normals at the hit's time, texture
-// coordinates and the material evaluated at the hit's time and place.
+// coordinates and the texture to evaluate at the hit's time and place.
 class TextureEvaluator;
 
 struct SurfacePoint {
@@ -55,9 +55,8 @@ struct SurfacePoint {
     glm::dvec3 geometric_normal{};  // unit; for solids outward, for flat shapes their own side
     glm::dvec3 shading_normal{};    // unit; faces the same side as geometric_normal
     glm::dvec2 uv{};
-    MaterialSample material;
-    // The texture, when it perturbs the shading normal (normal { }): the
-    // shader asks it after turning the normal to face the ray.
+    // The texture: the shader asks it for the material and the perturbed
+    // normals at `event` after turning the normal to face the ray.
     const TextureEvaluator* texture = nullptr;
     glm::dvec3 error{0.0};  // world bound of event's error (geometry::world_error): what a secondary ray must clear
 };

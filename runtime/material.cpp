@@ -18,8 +18,43 @@ bool Pigment::depends_on_time() const {
 }
 
 bool Normal::depends_on_time() const {
-    return patterned.depends_on_time() || amount.depends_on_time() || accuracy.depends_on_time() ||
-           transform.depends_on_time();
+    if (patterned.depends_on_time() || amount.depends_on_time() || accuracy.depends_on_time() ||
+        transform.depends_on_time())
+        return true;
+    for (const auto& e : normal_map)
+        if (e.value.depends_on_time() || e.normal->depends_on_time()) return true;
+    for (const auto& e : slope_map)
+        if (e.value.depends_on_time() || e.height.depends_on_time() || e.slope.depends_on_time()) return true;
+    return false;
+}
+
+void Texture::transform_by(const Transform& step) {
+    transform.append(step);
+    for (Texture& layer : below) layer.transform_by(step);
+}
+
+void Texture::transform_by(const TransformStep& step) {
+    transform.append(step);
+    for (Texture& layer : below) layer.transform_by(step);
+}
+
+bool Texture::depends_on_time() const {
+    if (transform.depends_on_time()) return true;
+    if (is_patterned()) {
+        if (patterned.depends_on_time()) return true;
+        for (const auto& e : texture_map)
+            if (e.value.depends_on_time() || e.texture->depends_on_time()) return true;
+        return false;
+    }
+    if (pigment.depends_on_time() || (normal && normal->depends_on_time())) return true;
+    const Finish& f = finish;
+    for (const TimeFunction* value : {&f.ambient, &f.diffuse, &f.brilliance, &f.phong, &f.phong_size, &f.specular,
+                                      &f.roughness, &f.emission})
+        if (value->depends_on_time()) return true;
+    if (f.reflection.depends_on_time()) return true;
+    for (const Texture& layer : below)
+        if (layer.depends_on_time()) return true;
+    return false;
 }
 
 }  // namespace hexant::runtime

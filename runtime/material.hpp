@@ -75,15 +75,34 @@ struct Interior {
     TimeFunction ior = 1.0;
 };
 
+struct Normal;
+// A normal_map's entry: at `value`, this normal (in the space of the
+// pattern around it).
+struct NormalMapEntry {
+    TimeFunction value;
+    std::shared_ptr<const Normal> normal;
+};
+// A slope_map's entry: at `value`, a height and a slope (POV-Ray's
+// Point_Slope, through which a pattern's value goes before its slope is
+// taken: Hermite cubic between entries).
+struct SlopeMapEntry {
+    TimeFunction value, height, slope;
+};
+
 // normal { PATTERN [AMOUNT] ... }: the shading normal perturbed by a
 // pattern (POV-Ray's Perturb_Normal): bumps, dents, ripples, waves,
 // wrinkles and quilted by their own functions, any other pattern by its
-// slope, sampled `accuracy` apart.
+// slope, sampled `accuracy` apart (through a slope_map when it has one),
+// or by a blend of whole normals (normal_map).
 struct Normal {
     pattern::Pattern patterned;
     TimeFunction amount = 0.5;     // bump_size
     TimeFunction accuracy = 0.02;  // POV-Ray's Delta
     bool no_bump_scale = false;
+    // normal_map { [value NORMAL_BODY] ... }: the neighbouring entries'
+    // normals blended (when not empty, the pattern's own bumps are not used).
+    std::vector<NormalMapEntry> normal_map;
+    std::vector<SlopeMapEntry> slope_map;  // empty: the pattern's value itself
     // The transforms after the pattern's last warp: pattern space to
     // object space (as Pigment::transform).
     Transform transform;
@@ -94,11 +113,43 @@ struct Normal {
     bool depends_on_time() const;
 };
 
+struct Texture;
+// A texture_map's entry: at `value`, this texture (in the space of the
+// pattern around it).
+struct TextureMapEntry {
+    TimeFunction value;
+    std::shared_ptr<const Texture> texture;
+};
+
+// POV-Ray's texture, one of two kinds (as its TEXTURE with Type
+// PLAIN_PATTERN or a pattern):
+// - plain: a pigment, a normal and a finish, and the plain layers under it
+//   (texture { A } texture { B }: B on top, A in `below`), each lit and
+//   seen through the layers above (POV-Ray's ComputeLightedTexture);
+// - patterned (texture_map, or a block pattern's list of textures): the
+//   pattern picks whole textures, each lit on its own and the two
+//   neighbours' colours blended (POV-Ray's ComputeOneTextureColour).
+//   Nothing can be layered over or under it, as in POV-Ray.
 struct Texture {
     Pigment pigment;
     std::optional<Normal> normal;
     Finish finish;
-    Transform transform;  // texture space to object space
+    // Texture space to object space. For a patterned texture the pattern's
+    // own: its transforms after its last warp, then the object's.
+    Transform transform;
+    std::vector<Texture> below;  // plain: the layers under this one, top first
+    // Patterned: the pattern and its map (entries at 0, 1, 2 for a block
+    // pattern's textures); empty for a plain texture.
+    pattern::Pattern patterned;
+    std::vector<TextureMapEntry> texture_map;
+
+    bool is_patterned() const { return !texture_map.empty(); }
+    // A transformation of the whole texture: this one's and every layer's
+    // below (POV-Ray's Transform_Textures). Not into a map's entries: they
+    // live in the pattern's space.
+    void transform_by(const Transform& step);
+    void transform_by(const TransformStep& step);
+    bool depends_on_time() const;
 };
 
 }  // namespace hexant::runtime

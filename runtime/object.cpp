@@ -94,15 +94,7 @@ std::vector<std::string> ObjectRecord::timed_parameters() const {
 
 bool ObjectRecord::shape_depends_on_time() const { return !timed_parameters().empty(); }
 
-bool ObjectRecord::texture_depends_on_time() const {
-    if (!texture) return false;
-    if (texture->pigment.depends_on_time()) return true;
-    if (texture->normal && texture->normal->depends_on_time()) return true;
-    const Finish& f = texture->finish;
-    return varies(f.ambient) || varies(f.diffuse) || varies(f.brilliance) || varies(f.phong) ||
-           varies(f.phong_size) || varies(f.specular) || varies(f.roughness) ||
-           f.reflection.depends_on_time() || texture->transform.depends_on_time();
-}
+bool ObjectRecord::texture_depends_on_time() const { return texture && texture->depends_on_time(); }
 
 bool ObjectRecord::depends_on_time() const {
     return !lifetime.is_always() || shape_depends_on_time() || transform.depends_on_time() ||

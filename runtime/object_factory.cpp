@@ -95,7 +95,7 @@ IntelligentObjectPtr build_object(const ObjectRecord& record, const Inherited& p
     if (record.texture) {
         // The record's texture maps to the record's parent space.
         texture = *record.texture;
-        texture->transform.append(parent.to_world);
+        texture->transform_by(parent.to_world);
     }
     const std::optional<Interior> interior = record.interior ? record.interior : parent.interior;
     const bool no_shadow = record.no_shadow || parent.no_shadow;
@@ -168,7 +168,7 @@ void build_split(const ObjectRecord& record, const Inherited& parent,
     down.to_world.append(parent.to_world);
     if (record.texture) {
         down.texture = *record.texture;
-        down.texture->transform.append(parent.to_world);
+        down.texture->transform_by(parent.to_world);
     }
     if (record.interior) down.interior = record.interior;
     down.no_shadow = record.no_shadow || parent.no_shadow;

@@ -197,8 +197,7 @@ public:
             p.uv = Model::uv(hit.object_normal);
         else
             p.uv = hit.uv;
-        p.material = texture_.at(glm::dvec3(hit.event), t);
-        if (texture_.has_normal()) p.texture = &texture_;
+        p.texture = &texture_;
         return p;
     }
 

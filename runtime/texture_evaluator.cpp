@@ -151,39 +151,111 @@ glm::dvec3 TextureEvaluator::CompiledPattern::walk(const glm::dvec3& world, doub
 
 bool TextureEvaluator::CompiledPattern::depends_on_time() const { return !head->is_static(); }
 
+// The pattern-to-outside linear parts of a walk, outside first: a normal
+// goes in by the transpose of each (POV-Ray's MInvTransNormal of the
+// inverse), out by their inverse transposes, in reverse.
+class TextureEvaluator::NormalMaps {
+public:
+    void push(const glm::dmat3& m) {
+        if (count_ < kOnStack) stack_[count_] = m;
+        else heap_.push_back(m);
+        ++count_;
+    }
+    bool empty() const { return count_ == 0; }
+    glm::dvec3 into(glm::dvec3 n) const {
+        for (std::size_t i = 0; i < count_; ++i) n = glm::transpose(at(i)) * n;
+        return n;
+    }
+    glm::dvec3 out_of(glm::dvec3 n) const {
+        for (std::size_t i = count_; i-- > 0;) n = glm::transpose(glm::inverse(at(i))) * n;
+        return n;
+    }
+
+private:
+    static constexpr std::size_t kOnStack = 8;
+    const glm::dmat3& at(std::size_t i) const { return i < kOnStack ? stack_[i] : heap_[i - kOnStack]; }
+    glm::dmat3 stack_[kOnStack];
+    std::vector<glm::dmat3> heap_;
+    std::size_t count_ = 0;
+};
+
+namespace {
+
+// A normal's length set to one, unless no_bump_scale keeps it (or it has
+// none to set).
+glm::dvec3 unit_unless(bool keep, const glm::dvec3& x) {
+    const double l = glm::length(x);
+    return keep || !(l > 0.0) || !std::isfinite(l) ? x : x / l;
+}
+
+// A map's entries as POV-Ray's Search_Blend_Map reads them (single
+// precision values).
+template <class Entries>
+pattern::BlendPick pick_entry(const Entries& entries, double value, double t) {
+    return pattern::search_blend_map(value, entries.size(),
+                                     [&](std::size_t i) { return pattern::single(entries[i].first.at(t)); });
+}
+
+// A normal's pattern, or the error naming where a pattern hexant lacks was
+// written.
+const pattern::Pattern& supported(const Normal& n) {
+    if (!n.unsupported_name.empty())
+        throw ObjectError(n.unsupported_place,
+                          "normal pattern '" + n.unsupported_name + "' is not supported by hexant's tracer");
+    if (n.patterned.kind == nullptr) throw std::logic_error("TextureEvaluator: a normal without its pattern");
+    return n.patterned;
+}
+
+}  // namespace
+
 TextureEvaluator::TextureEvaluator(const Texture& texture, const std::optional<Interior>& interior)
-    : pattern_(texture.pigment.pattern), finish_(compile(texture.finish, interior)) {
-    const Pigment& pigment = texture.pigment;
-    if (pattern_ == Pigment::Pattern::Unsupported)
-        throw ObjectError(pigment.unsupported_place,
-                          "pigment pattern '" + pigment.unsupported_name +
-                              "' is not supported by hexant's tracer");
-    if (pattern_ == Pigment::Pattern::Solid) {
-        if (pigment.colours.empty()) throw std::logic_error("TextureEvaluator: a solid pigment without its colour");
-        colours_.push_back(compile(pigment.colours.front()));
-        depends_on_time_ = pigment.colours.front().depends_on_time();
-    } else {
-        auto p = std::make_shared<const CompiledPigment>(pigment, texture.transform);
-        depends_on_time_ = pigment.depends_on_time() || p->pattern->depends_on_time();
-        pigment_ = std::move(p);
+    : texture_(std::make_shared<const CompiledTexture>(texture, Transform{}, interior)),
+      depends_on_time_(texture.depends_on_time() || (interior && interior->ior.depends_on_time())) {}
+
+TextureEvaluator::CompiledTexture::CompiledTexture(const Texture& texture, const Transform& outside,
+                                                   const std::optional<Interior>& interior) {
+    if (texture.is_patterned()) {
+        if (texture.patterned.kind == nullptr)
+            throw std::logic_error("TextureEvaluator: a texture_map without its pattern");
+        pattern.emplace(texture.patterned, texture.transform, outside);
+        // (The entries live in this pattern's space: nothing outside it.)
+        for (const auto& e : texture.texture_map) {
+            auto entry = std::make_shared<const CompiledTexture>(*e.texture, Transform{}, interior);
+            has_normal = has_normal || entry->has_normal;
+            entries.push_back({CompiledScalar(e.value), std::move(entry)});
+        }
+        return;
     }
-    if (texture.normal) {
-        const Normal& n = *texture.normal;
-        if (!n.unsupported_name.empty())
-            throw ObjectError(n.unsupported_place,
-                              "normal pattern '" + n.unsupported_name + "' is not supported by hexant's tracer");
-        if (n.patterned.kind == nullptr) throw std::logic_error("TextureEvaluator: a normal without its pattern");
-        normal_ = std::make_shared<const CompiledNormal>(
-            CompiledNormal{CompiledPattern(n.patterned, n.transform, texture.transform), CompiledScalar(n.amount),
-                           CompiledScalar(n.accuracy), n.no_bump_scale});
-        depends_on_time_ = depends_on_time_ || n.depends_on_time() || normal_->pattern.depends_on_time();
+    Transform here = texture.transform;
+    here.append(outside);
+    const auto add = [&](const Texture& layer, const Transform& to_world) {
+        CompiledLayer c;
+        c.pigment = std::make_shared<const CompiledPigment>(layer.pigment, to_world);
+        if (layer.normal) {
+            c.normal = std::make_shared<const CompiledNormal>(*layer.normal, to_world);
+            has_normal = true;
+        }
+        c.finish = compile(layer.finish, interior);
+        layers.push_back(std::move(c));
+    };
+    add(texture, here);
+    for (const Texture& below : texture.below) {
+        if (below.is_patterned() || !below.below.empty())
+            throw std::logic_error("TextureEvaluator: a layer under a texture is one plain texture");
+        Transform there = below.transform;
+        there.append(outside);
+        add(below, there);
     }
-    const Finish& f = texture.finish;
-    for (const TimeFunction* value :
-         {&f.ambient, &f.diffuse, &f.brilliance, &f.phong, &f.phong_size, &f.specular,
-          &f.roughness, &f.emission, &f.reflection.c[0], &f.reflection.c[1], &f.reflection.c[2]})
-        depends_on_time_ = depends_on_time_ || value->depends_on_time();
-    if (interior) depends_on_time_ = depends_on_time_ || interior->ior.depends_on_time();
+}
+
+TextureEvaluator::CompiledNormal::CompiledNormal(const Normal& n, const Transform& texture)
+    : pattern(supported(n), n.transform, texture), amount(n.amount), accuracy(n.accuracy),
+      no_bump_scale(n.no_bump_scale) {
+    // (Each entry of a normal map in the space of this pattern.)
+    for (const auto& e : n.normal_map)
+        normals.push_back({CompiledScalar(e.value), std::make_shared<const CompiledNormal>(*e.normal, Transform{})});
+    for (const auto& e : n.slope_map)
+        slopes.push_back({CompiledScalar(e.value), CompiledScalar(e.height), CompiledScalar(e.slope)});
 }
 
 TextureEvaluator::CompiledPigment::CompiledPigment(const Pigment& pigment, const Transform& texture) {
@@ -221,27 +293,18 @@ std::array<double, 5> TextureEvaluator::CompiledPigment::colour(const glm::dvec3
     const CompiledPattern& p = *pattern;
     const pattern::Values v = p.values(t);
     const glm::dvec3 point = p.point(where, t, v);
-    const double value = pattern::evaluate(*p.kind, point, v, p.wave, p.exponent_at(t));
+    const double value = p.value(point, t, v);
     if (!pigments.empty()) {
         // POV-Ray's Compute_Pigment with a pigment map: the neighbouring
         // entries' pigments at this pattern's point, blended linearly.
-        // (Search_Blend_Map over the entries' values, read as it goes.)
-        const auto at = [&](std::size_t i) { return pattern::single(pigments[i].first.at(t)); };
-        std::size_t cur = 0, prev = 0;
-        if (value >= at(pigments.size() - 1)) {
-            prev = cur = pigments.size() - 1;
-        } else {
-            while (value > at(cur)) prev = cur++;
-        }
-        if (value == at(cur)) prev = cur;
         // (A sub-pigment sees the point warped by this pattern, but not
         // moved by turbulence that marble and wood read themselves.)
-        const auto c = pigments[cur].second->colour(point, t);
-        if (prev == cur) return c;
-        const auto b = pigments[prev].second->colour(point, t);
-        const double f = (value - at(prev)) / (at(cur) - at(prev));
+        const pattern::BlendPick pick = pick_entry(pigments, value, t);
+        const auto c = pigments[pick.cur].second->colour(point, t);
+        if (pick.prev == pick.cur) return c;
+        const auto b = pigments[pick.prev].second->colour(point, t);
         std::array<double, 5> out;
-        for (std::size_t i = 0; i < 5; ++i) out[i] = b[i] + f * (c[i] - b[i]);
+        for (std::size_t i = 0; i < 5; ++i) out[i] = b[i] + pick.f * (c[i] - b[i]);
         return out;
     }
     if (map.empty()) return pattern::map_colour(fixed_map, value);
@@ -253,64 +316,51 @@ std::array<double, 5> TextureEvaluator::CompiledPigment::colour(const glm::dvec3
     return pattern::map_colour(entries, value);
 }
 
-glm::dvec3 TextureEvaluator::perturb(const glm::dvec3& normal, const glm::dvec3& world_point, double t) const {
-    if (!normal_) return normal;
-    const CompiledNormal& n = *normal_;
-    const CompiledPattern& p = n.pattern;
+glm::dvec3 TextureEvaluator::CompiledNormal::perturb(const glm::dvec3& normal, const glm::dvec3& where,
+                                                     double t) const {
+    const CompiledPattern& p = pattern;
     const pattern::Values v = p.values(t);
-    // Into pattern space: a normal goes by the transpose of each linear
-    // map, world to pattern, in the order the point went (POV-Ray's
-    // MInvTransNormal); back by their inverse transposes, in reverse.
-    const auto unit = [&](const glm::dvec3& x) {
-        const double l = glm::length(x);
-        return n.no_bump_scale || !(l > 0.0) || !std::isfinite(l) ? x : x / l;
-    };
-    // The pattern-to-world linear parts, head first (on the stack for the
-    // usual few; a longer warp list in a vector), gathered on the way in.
-    constexpr std::size_t kOnStack = 8;
-    glm::dmat3 stack[kOnStack];
-    std::vector<glm::dmat3> heap;
-    std::size_t count = 0;
-    const auto map = [&](std::size_t i) -> const glm::dmat3& { return i < kOnStack ? stack[i] : heap[i - kOnStack]; };
-    const glm::dvec3 point = p.walk(world_point, t, v, [&](const glm::dmat3& m) {
-        if (count < kOnStack) stack[count] = m;
-        else heap.push_back(m);
-        ++count;
-    });
-    glm::dvec3 pn = unit(normal);
-    for (std::size_t i = 0; i < count; ++i) pn = glm::transpose(map(i)) * pn;
-    pn = unit(pn);
-    const double amount = pattern::single(n.amount.at(t));
+    NormalMaps maps;
+    const glm::dvec3 point = p.walk(where, t, v, [&](const glm::dmat3& m) { maps.push(m); });
+    const glm::dvec3 pn = unit_unless(no_bump_scale, maps.into(unit_unless(no_bump_scale, normal)));
     glm::dvec3 bumped;
-    if (p.kind->normal != nullptr) {
-        bumped = p.kind->normal(point, v, amount, pn);
+    if (!normals.empty()) {
+        // POV-Ray's normal_map: the neighbouring entries' normals, each
+        // perturbing this one in this pattern's space, blended linearly.
+        const pattern::BlendPick pick = pick_entry(normals, p.value(point, t, v), t);
+        bumped = normals[pick.cur].second->perturb(pn, point, t);
+        if (pick.prev != pick.cur) {
+            const glm::dvec3 other = normals[pick.prev].second->perturb(pn, point, t);
+            bumped = (1.0 - pick.f) * other + pick.f * bumped;
+        }
+    } else if (p.kind->normal != nullptr) {
+        bumped = p.kind->normal(point, v, pattern::single(amount.at(t)), pn);
     } else {
-        const double delta = pattern::single(n.accuracy.at(t));
-        bumped = pattern::slope_normal(*p.kind, point, v, p.wave, p.exponent_at(t), amount,
-                                       delta, pn);
+        std::vector<pattern::SlopeEntry> slope_map;
+        for (const auto& [value, height, slope] : slopes)
+            slope_map.push_back({pattern::single(value.at(t)), height.at(t), slope.at(t)});
+        bumped = pattern::slope_normal(*p.kind, point, v, p.wave, p.exponent_at(t), pattern::single(amount.at(t)),
+                                       pattern::single(accuracy.at(t)), pn, slopes.empty() ? nullptr : &slope_map);
     }
-    glm::dvec3 out = unit(bumped);
-    for (std::size_t i = count; i-- > 0;) out = glm::transpose(glm::inverse(map(i))) * out;
+    const glm::dvec3 out = maps.out_of(unit_unless(no_bump_scale, bumped));
     const double l = glm::length(out);
     // (A bump that cancels the normal, or a flat map: the normal unchanged.)
     if (!(l > 0.0) || !std::isfinite(l)) return normal;
     return out / l;
 }
 
-MaterialSample TextureEvaluator::at(const glm::dvec3& world_point, double t) const {
+MaterialSample TextureEvaluator::CompiledLayer::material(const glm::dvec3& point, double t) const {
     MaterialSample m;
-    if (pattern_ == Pigment::Pattern::Patterned) {
-        const auto c = pigment_->colour(world_point, t);
-        m.colour = {c[0], c[1], c[2]};
-        m.filter = c[3];
-        m.transmit = c[4];
-    } else {
-        const CompiledColour& colour = colours_.front();
-        m.colour = {colour.c[0].at(t), colour.c[1].at(t), colour.c[2].at(t)};
-        m.filter = colour.c[3].at(t);
-        m.transmit = colour.c[4].at(t);
-    }
-    const CompiledFinish& f = *finish_;
+    fill(m, point, t);
+    return m;
+}
+
+void TextureEvaluator::CompiledLayer::fill(MaterialSample& m, const glm::dvec3& point, double t) const {
+    const auto c = pigment->colour(point, t);
+    m.colour = {c[0], c[1], c[2]};
+    m.filter = c[3];
+    m.transmit = c[4];
+    const CompiledFinish& f = *finish;
     m.ambient = f.ambient.at(t);
     m.diffuse = f.diffuse.at(t);
     m.brilliance = f.brilliance.at(t);
@@ -321,7 +371,77 @@ MaterialSample TextureEvaluator::at(const glm::dvec3& world_point, double t) con
     m.reflection = {f.reflection[0].at(t), f.reflection[1].at(t), f.reflection[2].at(t)};
     m.emission = f.emission.at(t);
     m.ior = f.ior.at(t);
-    return m;
+}
+
+void TextureEvaluator::CompiledTexture::sample(const glm::dvec3& where, double t, const glm::dvec3& normal,
+                                               double weight, TextureSample& out) const {
+    if (!pattern) {
+        out.plains.push_back({weight, out.layers.size(), layers.size()});
+        for (const CompiledLayer& layer : layers) {
+            TextureSample::Layer& l = out.layers.emplace_back();
+            layer.fill(l.material, where, t);
+            l.normal = layer.normal ? layer.normal->perturb(normal, where, t) : normal;
+        }
+        return;
+    }
+    // POV-Ray's ComputeOneTextureColour for a patterned texture: the
+    // neighbouring entries at the pattern's value, each in the pattern's
+    // space, their colours blended; a normal below goes through this
+    // pattern's transforms too (its Warp_Normal, UnWarp_Normal).
+    const CompiledPattern& p = *pattern;
+    const pattern::Values v = p.values(t);
+    NormalMaps maps;
+    const glm::dvec3 point =
+        has_normal ? p.walk(where, t, v, [&](const glm::dmat3& m) { maps.push(m); }) : p.point(where, t, v);
+    const pattern::BlendPick pick = pick_entry(entries, p.value(point, t, v), t);
+    const bool turn = has_normal && !maps.empty();
+    const glm::dvec3 inside = turn ? unit_unless(false, maps.into(normal)) : normal;
+    const std::size_t first = out.layers.size();
+    const double share = pick.prev == pick.cur ? 1.0 : pick.f;
+    entries[pick.cur].second->sample(point, t, inside, weight * share, out);
+    if (pick.prev != pick.cur) entries[pick.prev].second->sample(point, t, inside, weight * (1.0 - share), out);
+    if (!turn) return;
+    for (std::size_t i = first; i < out.layers.size(); ++i) {
+        const glm::dvec3 back = maps.out_of(out.layers[i].normal);
+        const double l = glm::length(back);
+        out.layers[i].normal = l > 0.0 && std::isfinite(l) ? back / l : normal;
+    }
+}
+
+const TextureEvaluator::CompiledLayer& TextureEvaluator::CompiledTexture::picked_top(const glm::dvec3& where,
+                                                                                    double t,
+                                                                                    glm::dvec3& at) const {
+    at = where;
+    if (!pattern) return layers.front();
+    const pattern::Values v = pattern->values(t);
+    const glm::dvec3 point = pattern->point(where, t, v);
+    const pattern::BlendPick pick = pick_entry(entries, pattern->value(point, t, v), t);
+    return entries[pick.cur].second->picked_top(point, t, at);
+}
+
+void TextureEvaluator::sample(const glm::dvec3& world_point, double t, const glm::dvec3& normal,
+                              TextureSample& out) const {
+    texture_->sample(world_point, t, normal, 1.0, out);
+}
+
+void TextureEvaluator::sample_layer(const glm::dvec3& world_point, double t, const glm::dvec3& normal,
+                                    TextureSample::Layer& out) const {
+    const CompiledLayer& layer = texture_->layers.front();
+    layer.fill(out.material, world_point, t);
+    out.normal = layer.normal ? layer.normal->perturb(normal, world_point, t) : normal;
+}
+
+MaterialSample TextureEvaluator::at(const glm::dvec3& world_point, double t) const {
+    glm::dvec3 point;
+    const CompiledLayer& layer = texture_->picked_top(world_point, t, point);
+    return layer.material(point, t);
+}
+
+bool TextureEvaluator::has_normal() const { return !texture_->pattern && texture_->layers.front().normal != nullptr; }
+
+glm::dvec3 TextureEvaluator::perturb(const glm::dvec3& normal, const glm::dvec3& world_point, double t) const {
+    if (!has_normal()) return normal;
+    return texture_->layers.front().normal->perturb(normal, world_point, t);
 }
 
 }  // namespace hexant::runtime

@@ -1,12 +1,14 @@
-// A texture compiled for the tracer: the pigment's pattern, the finish and
-// the interior, evaluated at a world point and time into plain numbers.
+// A texture compiled for the tracer: its patterns, layers, maps, finishes
+// and the interior, evaluated at a world point and time into plain numbers.
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <memory>
 #include <optional>
 #include <vector>
 
+#include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 
 #include "runtime/compiled_function.hpp"
@@ -16,6 +18,30 @@
 
 namespace hexant::runtime {
 
+// What a texture shows at one surface event: the plain textures its
+// patterns pick there (texture_map), each with its weight in the blend, and
+// each plain texture's layers, top first, with the material and the
+// shading normal (perturbed by the layer's normal { }) of each. The shader
+// lights every plain texture on its own and blends the colours by weight
+// (POV-Ray's ComputeOneTextureColour, ComputeLightedTexture). Reused from
+// hit to hit: clear() keeps the storage.
+struct TextureSample {
+    struct Layer {
+        MaterialSample material;
+        glm::dvec3 normal{0.0};  // unit, world
+    };
+    struct Plain {
+        double weight = 1.0;
+        std::size_t first = 0, count = 0;  // layers[first, first + count)
+    };
+    std::vector<Layer> layers;
+    std::vector<Plain> plains;
+    void clear() {
+        layers.clear();
+        plains.clear();
+    }
+};
+
 class TextureEvaluator {
 public:
     // `texture.transform` maps texture space to the world (the object's
@@ -24,16 +50,31 @@ public:
     // for a pattern hexant does not have.
     TextureEvaluator(const Texture& texture, const std::optional<Interior>& interior);
 
+    // The texture at `world_point` and time t, seen with the shading
+    // normal `normal` (unit, world, already turned to face the viewer, as
+    // POV-Ray perturbs it): appends each plain texture picked there, its
+    // layers and their perturbed normals, to `out`. The weights sum to 1.
+    void sample(const glm::dvec3& world_point, double t, const glm::dvec3& normal, TextureSample& out) const;
+
+    // Whether the texture is one plain layer (no texture_map, no layers
+    // under it): then sample_layer gives its one layer, as sample would.
+    bool single_layer() const { return !texture_->pattern && texture_->layers.size() == 1; }
+    void sample_layer(const glm::dvec3& world_point, double t, const glm::dvec3& normal,
+                      TextureSample::Layer& out) const;
+
+    // The top layer's material of the plain texture picked at the point
+    // (for a texture_map the entry at or above the pattern's value, without
+    // blending): for tests and peers that read one colour.
     MaterialSample at(const glm::dvec3& world_point, double t) const;
     bool depends_on_time() const { return depends_on_time_; }
 
-    // Whether the texture perturbs the shading normal (normal { }).
-    bool has_normal() const { return normal_ != nullptr; }
-    // The unit shading normal `normal` (unit, world, already turned to face
-    // the viewer, as POV-Ray perturbs it) perturbed at `world_point` and
-    // time t: taken into the normal pattern's space, bumped, taken back
-    // (POV-Ray's Warp_Normal, Perturb_Normal, UnWarp_Normal). A bump that
-    // cancels the normal leaves it as it was.
+    // Whether the top layer perturbs the shading normal (normal { }).
+    bool has_normal() const;
+    // The unit shading normal `normal` (unit, world, facing the viewer)
+    // perturbed at `world_point` and time t by the top layer's normal { }
+    // (the camera's normal: a texture of one layer). POV-Ray's Warp_Normal,
+    // Perturb_Normal, UnWarp_Normal. A bump that cancels the normal leaves
+    // it as it was.
     glm::dvec3 perturb(const glm::dvec3& normal, const glm::dvec3& world_point, double t) const;
 
 private:
@@ -65,7 +106,8 @@ private:
     };
     struct CompiledPattern {
         const pattern::Kind* kind = nullptr;
-        // Its last transforms, then the texture's: pattern space to world.
+        // Its last transforms, then the texture's: pattern space to the
+        // space around it.
         std::shared_ptr<const Motion> head;
         std::array<CompiledScalar, 3> vector;
         std::array<CompiledScalar, 2> number;
@@ -87,19 +129,27 @@ private:
         double exponent_at(double t) const {
             return fixed ? fixed_exponent : pattern::single(exponent.at(t));
         }
-        // The world point in pattern space (POV-Ray's Warp_EPoint): the
-        // last transforms first, then each earlier step, last written
-        // first; classic turbulence last of all, unless the kind reads it
-        // itself.
-        glm::dvec3 point(const glm::dvec3& world, double t, const pattern::Values& v) const {
-            return walk(world, t, v, NoMaps{});
+        // The pattern's value at a point in pattern space.
+        double value(const glm::dvec3& point, double t, const pattern::Values& v) const {
+            return pattern::evaluate(*kind, point, v, wave, exponent_at(t));
+        }
+        // The point (in the space around the pattern) in pattern space
+        // (POV-Ray's Warp_EPoint): the last transforms first, then each
+        // earlier step, last written first; classic turbulence last of all,
+        // unless the kind reads it itself.
+        glm::dvec3 point(const glm::dvec3& outside, double t, const pattern::Values& v) const {
+            return walk(outside, t, v, NoMaps{});
         }
         struct NoMaps {};  // (a pigment's point: no Jacobians computed)
-        // The same, handing each transform's pattern-to-world linear part
+        // The same, handing each transform's pattern-to-outside linear part
         // (head first) to on_map: what a normal goes through.
         template <class OnMap>
-        glm::dvec3 walk(const glm::dvec3& world, double t, const pattern::Values& v, OnMap on_map) const;
+        glm::dvec3 walk(const glm::dvec3& outside, double t, const pattern::Values& v, OnMap on_map) const;
     };
+    // The linear maps a normal goes through into a pattern's space, outside
+    // first (on the stack for the usual few).
+    class NormalMaps;
+
     // A pigment: a colour, or a pattern through a colour map or a
     // pigment map of pigments (each evaluated in this pattern's space).
     struct CompiledPigment {
@@ -115,19 +165,43 @@ private:
         // texture's pigment), rgb, filter, transmit.
         std::array<double, 5> colour(const glm::dvec3& point, double t) const;
     };
+    // A normal: a pattern's bumps or slope (through a slope map), or a
+    // normal map of normals (each in this pattern's space).
     struct CompiledNormal {
         CompiledPattern pattern;
         CompiledScalar amount, accuracy;
         bool no_bump_scale = false;
+        std::vector<std::pair<CompiledScalar, std::shared_ptr<const CompiledNormal>>> normals;
+        std::vector<std::array<CompiledScalar, 3>> slopes;  // value, height, slope
+
+        CompiledNormal(const Normal& normal, const Transform& texture);
+        // `normal` (in the space around it) perturbed at `point` (there too).
+        glm::dvec3 perturb(const glm::dvec3& normal, const glm::dvec3& point, double t) const;
+    };
+    // A plain texture's layer.
+    struct CompiledLayer {
+        std::shared_ptr<const CompiledPigment> pigment;
+        std::shared_ptr<const CompiledNormal> normal;  // null: none
+        std::shared_ptr<const CompiledFinish> finish;
+        MaterialSample material(const glm::dvec3& point, double t) const;
+        void fill(MaterialSample& m, const glm::dvec3& point, double t) const;  // (in place)
+    };
+    // A texture: plain layers, or a pattern over a map of textures.
+    struct CompiledTexture {
+        std::vector<CompiledLayer> layers;  // plain, top first
+        std::optional<CompiledPattern> pattern;
+        std::vector<std::pair<CompiledScalar, std::shared_ptr<const CompiledTexture>>> entries;
+        bool has_normal = false;  // a layer here or below perturbs the normal
+
+        CompiledTexture(const Texture& texture, const Transform& outside, const std::optional<Interior>& interior);
+        void sample(const glm::dvec3& point, double t, const glm::dvec3& normal, double weight,
+                    TextureSample& out) const;
+        const CompiledLayer& picked_top(const glm::dvec3& point, double t, glm::dvec3& at) const;
     };
     static CompiledTurbulence compile(const pattern::Turbulence& turbulence);
 
-    Pigment::Pattern pattern_;
+    std::shared_ptr<const CompiledTexture> texture_;  // shared by copies
     bool depends_on_time_ = false;
-    std::vector<CompiledColour> colours_;
-    std::shared_ptr<const CompiledPigment> pigment_;  // shared by copies
-    std::shared_ptr<const CompiledNormal> normal_;
-    std::shared_ptr<const CompiledFinish> finish_;
 };
 
 }  // namespace hexant::runtime

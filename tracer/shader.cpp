@@ -137,6 +137,28 @@ glm::dvec3 Shader::sky(const glm::dvec3& direction, double t) const {
     return colour + background * through;
 }
 
+inline void Shader::place(const Light& light, const Hit& h, ShadingScratch::Light& known) const {
+    known.state = ShadingScratch::Light::State::Dark;
+    if (!light.lifetime.is_always() && !light.lifetime.contains(h.time)) return;
+    const glm::dvec3 light_position = light.position_at(h.time);
+    glm::dvec3 to_light = light_position - h.point;
+    const double distance = glm::length(to_light);
+    if (!(distance > 0.0)) return;
+    to_light /= distance;
+    // How far a shadow ray from `start` looks for occluders.
+    double reach = glm::length(light_position - h.start);
+    if (light.parallel) {
+        // Along the light's own direction, back to the plane through it.
+        const glm::dvec3 direction = light.direction_at(h.time);
+        reach = glm::dot(light_position - h.start, -direction);
+        to_light = -direction;
+    }
+    known.state = ShadingScratch::Light::State::Placed;
+    known.to_light = to_light;
+    known.reach = reach;
+    known.colour = light.colour_at(h.time);
+}
+
 glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, ThreadState& state) const {
     const double t = ray.origin.w;
     const auto hit = query_.first_hit(ray, 0.0, std::numeric_limits<double>::infinity(), state);
@@ -146,97 +168,178 @@ glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, ThreadSta
         return fogs_.empty() ? seen : fogged(seen, ray, 2.0e10);
     }
     const runtime::SurfacePoint p = hit->object->complete(ray, *hit);
-    const runtime::MaterialSample& m = p.material;
-    const glm::dvec3 d = glm::normalize(glm::dvec3(ray.direction));
-    const glm::dvec3 point(p.event);
-    const double time = p.event.w;
+    Hit h{ray, p, depth, weight};
+    h.d = glm::normalize(glm::dvec3(ray.direction));
+    h.point = glm::dvec3(p.event);
+    h.time = p.event.w;
     // Lighting uses the normal on the viewer's side, as POV-Ray does: each
     // normal turned to face the ray by its own sign (POV-Ray's trace.cpp
     // flips the shading normal it lights with, a smooth triangle's
     // interpolated one included, whichever way the triangle winds).
-    glm::dvec3 n = p.shading_normal;
-    glm::dvec3 geometric = p.geometric_normal;
-    const bool back = glm::dot(geometric, d) > 0.0;
-    if (back) geometric = -geometric;
-    if (glm::dot(n, d) > 0.0) n = -n;
-    // normal { }: perturbed after the turn, as POV-Ray perturbs the
-    // viewer-facing normal.
-    if (p.texture != nullptr) n = p.texture->perturb(n, point, time);
+    h.raw = p.shading_normal;
+    h.geometric = p.geometric_normal;
+    h.back = glm::dot(h.geometric, h.d) > 0.0;
+    if (h.back) h.geometric = -h.geometric;
+    if (glm::dot(h.raw, h.d) > 0.0) h.raw = -h.raw;
+    h.start = runtime::geometry::offset_ray(h.point, p.error, h.geometric);
 
-    const double opaque = std::clamp(1.0 - m.filter - m.transmit, 0.0, 1.0);
-    const glm::dvec3 ambient = still_ambient_ ? fixed_ambient_ : rgb(ambient_light_, time);
-    glm::dvec3 colour = m.colour * (m.ambient * ambient + m.emission) * opaque;
-
-    const glm::dvec3 start = runtime::geometry::offset_ray(point, p.error, geometric);
-    for (const Light& light : lights_) {
-        if (!light.lifetime.is_always() && !light.lifetime.contains(time)) continue;
-        const glm::dvec3 light_position = light.position_at(time);
-        glm::dvec3 to_light = light_position - point;
-        double distance = glm::length(to_light);
-        if (!(distance > 0.0)) continue;
-        to_light /= distance;
-        // How far a shadow ray from `start` looks for occluders.
-        double reach = glm::length(light_position - start);
-        if (light.parallel) {
-            // Along the light's own direction, back to the plane through it.
-            const glm::dvec3 direction = light.direction_at(time);
-            reach = glm::dot(light_position - start, -direction);
-            to_light = -direction;
-        }
-        const double cosine = glm::dot(n, to_light);
-        if (cosine <= 0.0) continue;
-        if (!light.shadowless && reach > 0.0) {
-            ++state.counters.shadow_rays;
-            const Ray4 shadow{Event(start, time), Event(to_light, 0.0)};
-            if (query_.occluded(shadow, 0.0, reach, state)) continue;
-        }
-        const glm::dvec3 light_colour = light.colour_at(time);
-        // (POV-Ray's default brilliance 1 needs no pow.)
-        const double shade = m.brilliance == 1.0 ? cosine : std::pow(cosine, m.brilliance);
-        glm::dvec3 lit = m.diffuse * shade * m.colour * opaque;
-        // POV-Ray's shadowless lights are fill lights: no highlights.
-        if (m.phong > 0.0 && !light.shadowless) {
-            const glm::dvec3 reflected = d - 2.0 * glm::dot(d, n) * n;
-            const double c = glm::dot(reflected, to_light);
-            if (c > 0.0) lit += glm::dvec3(m.phong * std::pow(c, m.phong_size));
-        }
-        if (m.specular > 0.0 && !light.shadowless) {
-            const glm::dvec3 half = glm::normalize(to_light - d);
-            const double c = glm::dot(half, n);
-            if (c > 0.0) lit += glm::dvec3(m.specular * std::pow(c, 1.0 / m.roughness));
-        }
-        colour += lit * light_colour;
+    // What the texture shows here: the plain textures its patterns pick,
+    // their layers, each layer's normal perturbed after the turn (as
+    // POV-Ray perturbs the viewer-facing normal). A texture of one plain
+    // layer, the usual, is lit straight from the stack: each light is
+    // asked about once anyway.
+    glm::dvec3 colour(0.0);
+    if (p.texture->single_layer()) {
+        runtime::TextureSample::Layer layer;
+        p.texture->sample_layer(h.point, h.time, h.raw, layer);
+        colour = lit(h, &layer, 1, nullptr, state);
+    } else {
+        ShadingScratch& scratch = state.shading_at(depth);
+        scratch.texture.clear();
+        p.texture->sample(h.point, h.time, h.raw, scratch.texture);
+        scratch.lights.assign(lights_.size(), ShadingScratch::Light{});
+        for (const runtime::TextureSample::Plain& plain : scratch.texture.plains)
+            colour += plain.weight * lit(h, scratch.texture.layers.data() + plain.first, plain.count,
+                                         &scratch.lights, state);
     }
 
     // Fog lies along the way here when the ray came through the open (not
     // from inside a solid: POV-Ray fogs only rays outside non-hollow
     // objects).
-    const auto through_fog = [&](const glm::dvec3& c) {
-        return fogs_.empty() || back ? c : fogged(c, ray, glm::distance(point, glm::dvec3(ray.origin)));
-    };
-    if (depth >= max_trace_level_) return through_fog(colour);
-    const double reflect_weight = std::max({m.reflection.x, m.reflection.y, m.reflection.z});
-    if (reflect_weight * weight > kBailout) {
-        ++state.counters.reflected_rays;
-        const glm::dvec3 r = d - 2.0 * glm::dot(d, n) * n;
-        const Ray4 reflected{Event(start, time), Event(r, 0.0)};
-        colour += m.reflection * radiance(reflected, depth + 1, weight * reflect_weight, state);
-    }
-    const double through = m.filter + m.transmit;
-    if (through * weight > kBailout) {
-        // Entering the solid when the ray meets the outward normal's front.
-        const double eta = back ? m.ior : 1.0 / m.ior;
-        const double c = -glm::dot(d, geometric);
-        const double k = 1.0 - eta * eta * (1.0 - c * c);
-        glm::dvec3 out = k >= 0.0 ? eta * d + (eta * c - std::sqrt(k)) * geometric
-                                  : d + 2.0 * c * geometric;  // total internal reflection
-        const glm::dvec3 from = k >= 0.0 ? runtime::geometry::offset_ray(point, p.error, -geometric) : start;
-        ++state.counters.refracted_rays;
-        const Ray4 next{Event(from, time), Event(out, 0.0)};
-        const glm::dvec3 behind = radiance(next, depth + 1, weight * through, state);
-        colour += behind * (m.filter * m.colour + glm::dvec3(m.transmit));
-    }
-    return through_fog(colour);
+    return fogs_.empty() || h.back ? colour : fogged(colour, ray, glm::distance(h.point, glm::dvec3(ray.origin)));
 }
+
+glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers, std::size_t count,
+                       std::vector<ShadingScratch::Light>* seen, ThreadState& state) const {
+    // POV-Ray 3.7's ComputeLightedTexture: each layer, top first, adds its
+    // ambient, emission and lights, seen through the layers above it
+    // (filtered by their filter and transmit), until too little shows
+    // through; then what lies behind, through every layer; then each
+    // layer's reflection.
+    const glm::dvec3 ambient = still_ambient_ ? fixed_ambient_ : rgb(ambient_light_, h.time);
+    glm::dvec3 colour(0.0);
+    glm::dvec3 through(1.0);  // POV-Ray's filCol
+    double trans = 1.0;
+    std::size_t used = 0;
+    for (; used < count && trans > kBailout; ++used) {
+        const runtime::TextureSample::Layer& layer = layers[used];
+        const runtime::MaterialSample& m = layer.material;
+        const glm::dvec3& n = layer.normal;
+        const double opaque = std::clamp(1.0 - m.filter - m.transmit, 0.0, 1.0);
+        glm::dvec3 own = m.colour * (m.ambient * ambient + m.emission) * opaque;
+        for (std::size_t i = 0; i < lights_.size(); ++i) {
+            const Light& light = lights_[i];
+            ShadingScratch::Light alone;
+            ShadingScratch::Light& known = seen ? (*seen)[i] : alone;
+            if (known.state == ShadingScratch::Light::State::Unknown) place(light, h, known);
+            if (known.state == ShadingScratch::Light::State::Dark) continue;
+            const double cosine = glm::dot(n, known.to_light);
+            if (cosine <= 0.0) continue;
+            if (known.state == ShadingScratch::Light::State::Placed) {
+                known.state = ShadingScratch::Light::State::Seen;
+                if (!light.shadowless && known.reach > 0.0) {
+                    ++state.counters.shadow_rays;
+                    const Ray4 shadow{Event(h.start, h.time), Event(known.to_light, 0.0)};
+                    if (query_.occluded(shadow, 0.0, known.reach, state))
+                        known.state = ShadingScratch::Light::State::Shadowed;
+                }
+            }
+            if (known.state == ShadingScratch::Light::State::Shadowed) continue;
+            // (POV-Ray's default brilliance 1 needs no pow.)
+            const double shade = m.brilliance == 1.0 ? cosine : std::pow(cosine, m.brilliance);
+            glm::dvec3 lit = m.diffuse * shade * m.colour * opaque;
+            // POV-Ray's shadowless lights are fill lights: no highlights.
+            if (m.phong > 0.0 && !light.shadowless) {
+                const glm::dvec3 reflected = h.d - 2.0 * glm::dot(h.d, n) * n;
+                const double c = glm::dot(reflected, known.to_light);
+                if (c > 0.0) lit += glm::dvec3(m.phong * std::pow(c, m.phong_size));
+            }
+            if (m.specular > 0.0 && !light.shadowless) {
+                const glm::dvec3 half = glm::normalize(known.to_light - h.d);
+                const double c = glm::dot(half, n);
+                if (c > 0.0) lit += glm::dvec3(m.specular * std::pow(c, 1.0 / m.roughness));
+            }
+            own += lit * known.colour;
+        }
+        colour += own * through;
+        through *= m.filter * m.colour + glm::dvec3(m.transmit);
+        trans = std::min(1.0, std::fabs(0.297 * through.x + 0.589 * through.y + 0.114 * through.z));
+    }
+    if (h.depth >= max_trace_level_) return colour;
+
+    // What lies behind, through every layer, refracted by the top one's
+    // ior (POV-Ray: when enough shows through and the ray's weight is
+    // above the bailout; total internal reflection is not filtered).
+    const runtime::MaterialSample& top = layers[0].material;
+    bool total_internal_reflection = false;
+    const double through_weight = h.weight * std::max({through.x, through.y, through.z});
+    if (trans > kBailout && through_weight >= kBailout) {
+        // POV-Ray's ComputeRefraction and TraceRefractionRay, about the top
+        // layer's normal: the ratio of iors entering or leaving the solid
+        // (entering when the ray meets the outward normal's front), the
+        // normal taken to the ray's side.
+        const glm::dvec3& normal = layers[0].normal;
+        const double eta = h.back ? top.ior : 1.0 / top.ior;
+        double n = glm::dot(h.d, normal);
+        const glm::dvec3 local = n <= 0.0 ? normal : -normal;
+        n = std::fabs(n);
+        const double k = 1.0 + eta * eta * (n * n - 1.0);
+        total_internal_reflection = k < 0.0;
+        const glm::dvec3 out =
+            total_internal_reflection ? reflect(h.d, normal, h.raw) : eta * h.d + (eta * n - std::sqrt(k)) * local;
+        const glm::dvec3 from = !total_internal_reflection
+                                    ? runtime::geometry::offset_ray(h.point, h.p.error, -h.geometric)
+                                    : h.start;
+        ++state.counters.refracted_rays;
+        const Ray4 next{Event(from, h.time), Event(out, 0.0)};
+        const glm::dvec3 behind = radiance(next, h.depth + 1, through_weight, state);
+        colour += total_internal_reflection ? behind : behind * through;
+    }
+    // Each layer's reflection (after total internal reflection, not along
+    // the top layer's normal, which that already followed).
+    for (std::size_t i = 0; i < used; ++i) {
+        const runtime::TextureSample::Layer& layer = layers[i];
+        const glm::dvec3& reflection = layer.material.reflection;
+        if (reflection == glm::dvec3(0.0)) continue;
+        if (total_internal_reflection && layer.normal == layers[0].normal) continue;
+        // (The weight of the layer: what shows through the ones above it.)
+        const double reflect_weight = h.weight * layer_trans(layers, i) *
+                                      std::max({reflection.x, reflection.y, reflection.z});
+        if (reflect_weight < kBailout) continue;
+        ++state.counters.reflected_rays;
+        const Ray4 reflected{Event(h.start, h.time), Event(reflect(h.d, layer.normal, h.raw), 0.0)};
+        colour += reflection * radiance(reflected, h.depth + 1, reflect_weight, state);
+    }
+    return colour;
+}
+
+double Shader::layer_trans(const runtime::TextureSample::Layer* layers, std::size_t index) {
+    glm::dvec3 through(1.0);
+    double trans = 1.0;
+    for (std::size_t i = 0; i < index; ++i) {
+        const runtime::MaterialSample& m = layers[i].material;
+        through *= m.filter * m.colour + glm::dvec3(m.transmit);
+        trans = std::min(1.0, std::fabs(0.297 * through.x + 0.589 * through.y + 0.114 * through.z));
+    }
+    return trans;
+}
+
+glm::dvec3 Shader::reflect(const glm::dvec3& d, const glm::dvec3& normal, const glm::dvec3& raw) {
+    glm::dvec3 r = d - 2.0 * glm::dot(d, normal) * normal;
+    // POV-Ray's ComputeReflection: a perturbed normal may send the ray
+    // under the surface; then it is reflected about the raw normal instead
+    // (when it went in along the perturbed one too), or reflected about it
+    // once more.
+    if (normal != raw) {
+        const double n = glm::dot(r, raw);
+        if (n < 0.0) {
+            if (glm::dot(r, normal) < 0.0) r = d - 2.0 * glm::dot(d, raw) * raw;
+            else r += -2.0 * n * raw;
+        }
+        r = glm::normalize(r);
+    }
+    return r;
+}
+
 
 }  // namespace hexant::tracer

@@ -1,10 +1,14 @@
-// POV-Ray 3.7's lighting at a surface event, at the event's own time:
-// ambient (times the global ambient_light) and emission, then per point
-// light diffuse with brilliance, phong and specular highlights, with a hard
-// shadow ray cast at the same time (shadowless lights cast none and, as
-// POV-Ray's fill lights, add no highlights); then
-// reflection and transmission (filter, transmit, refraction by ior) by
-// recursion up to max_trace_level. Colours are linear (assumed_gamma 1.0).
+// POV-Ray 3.7's lighting at a surface event, at the event's own time: for
+// each plain texture the texture's patterns pick there (texture_map), and
+// each of its layers, top first, seen through the ones above: ambient
+// (times the global ambient_light) and emission, then per point light
+// diffuse with brilliance, phong and specular highlights, with a hard
+// shadow ray cast at the same time, once per light at the hit (shadowless
+// lights cast none and, as POV-Ray's fill lights, add no highlights); then
+// transmission through every layer (filter, transmit, refraction by ior)
+// and each layer's reflection by recursion up to max_trace_level; the
+// plain textures' colours blended by their weights. Colours are linear
+// (assumed_gamma 1.0).
 #pragma once
 
 #include <glm/vec3.hpp>
@@ -13,6 +17,7 @@
 #include "runtime/texture_evaluator.hpp"
 #include "runtime/spacetime.hpp"
 #include "tracer/ray_query.hpp"
+#include "tracer/thread_state.hpp"
 
 namespace hexant::tracer {
 
@@ -48,6 +53,31 @@ private:
 
     glm::dvec3 radiance(const runtime::Ray4& ray, int depth, double weight,
                         ThreadState& state) const;
+    // A hit being shaded: the ray's unit direction, the event, the raw
+    // normal (shading, turned to face the viewer), the geometric one (so
+    // turned too), where secondary rays start, and the ray's depth and
+    // weight.
+    struct Hit {
+        const runtime::Ray4& ray;
+        const runtime::SurfacePoint& p;
+        int depth;
+        double weight;
+        glm::dvec3 d{0.0}, point{0.0}, raw{0.0}, geometric{0.0}, start{0.0};
+        double time = 0.0;
+        bool back = false;
+    };
+    // The colour of one plain texture (its `count` layers, top first) at
+    // the hit; `seen` keeps what is known of each light across the plain
+    // textures and layers of the hit (null: one layer, nothing to keep).
+    glm::dvec3 lit(const Hit& h, const runtime::TextureSample::Layer* layers, std::size_t count,
+                   std::vector<ShadingScratch::Light>* seen, ThreadState& state) const;
+    // Where a light lies from the hit, or that it does not shine there.
+    [[gnu::always_inline]] inline void place(const Light& light, const Hit& h, ShadingScratch::Light& known) const;
+    // How much shows through the layers above layer `index` (POV-Ray's trans).
+    static double layer_trans(const runtime::TextureSample::Layer* layers, std::size_t index);
+    // The direction reflected about `normal`, kept above the surface whose
+    // raw normal is `raw` (POV-Ray's ComputeReflection).
+    static glm::dvec3 reflect(const glm::dvec3& d, const glm::dvec3& normal, const glm::dvec3& raw);
     // What a ray that hits nothing sees: the sky sphere over the background.
     glm::dvec3 sky(const glm::dvec3& direction, double t) const;
     // `colour` seen through the scene's fogs along `depth` of a ray in the

@@ -1,14 +1,46 @@
-// What one thread carries between rays: its mailbox and its counters.
+// What one thread carries between rays: its mailbox, its counters and the
+// shader's scratch space.
 #pragma once
 
+#include <deque>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "runtime/texture_evaluator.hpp"
 #include "tracer/counters.hpp"
 #include "tracer/mailbox.hpp"
 
 namespace hexant::tracer {
 
+// What the shader learns at one hit, kept per trace depth so that a hit's
+// reflected and refracted rays do not overwrite it, and reused from hit to
+// hit so that shading allocates nothing once warm.
+struct ShadingScratch {
+    runtime::TextureSample texture;
+    // Per light, what is known of it at this hit: nothing yet; that it
+    // does not shine here; where it lies (its direction and how far a
+    // shadow ray looks); then whether a shadow ray reached it. Shared by
+    // every layer and map entry at the hit, as POV-Ray's lightColorCache
+    // is, so that each light's shadow ray is cast once.
+    struct Light {
+        enum class State { Unknown, Dark, Placed, Seen, Shadowed };
+        State state = State::Unknown;
+        glm::dvec3 to_light{0.0};
+        double reach = 0.0;
+        glm::dvec3 colour{0.0};
+    };
+    std::vector<Light> lights;
+};
+
 struct ThreadState {
     Mailbox mailbox;
     Counters counters;
+    std::deque<ShadingScratch> shading{};  // by depth (a deque: a deeper one leaves the others in place)
+    ShadingScratch& shading_at(int depth) {
+        while (shading.size() <= static_cast<std::size_t>(depth)) shading.emplace_back();
+        return shading[static_cast<std::size_t>(depth)];
+    }
 };
 
 }  // namespace hexant::tracer

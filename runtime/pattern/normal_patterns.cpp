@@ -60,7 +60,8 @@ glm::dvec3 waves_normal(const glm::dvec3& p, const Values& v, double amount, con
 }
 
 glm::dvec3 slope_normal(const Kind& kind, const glm::dvec3& point, const Values& values, Wave wave,
-                        double exponent, double amount, double delta, const glm::dvec3& normal) {
+                        double exponent, double amount, double delta, const glm::dvec3& normal,
+                        const std::vector<SlopeEntry>* slope_map) {
     // POV-Ray's Pyramid_Vect, with its digits.
     static const glm::dvec3 kPyramid[4] = {{0.942809041, -0.333333333, 0.0},
                                            {-0.471404521, -0.333333333, 0.816496581},
@@ -70,9 +71,25 @@ glm::dvec3 slope_normal(const Kind& kind, const glm::dvec3& point, const Values&
     glm::dvec3 out = normal;
     for (const glm::dvec3& d : kPyramid) {
         const glm::dvec3 at(point.x + delta * d.x, point.y + delta * d.y, point.z + delta * d.z);
-        out += (evaluate(kind, at, values, wave, exponent) * weight) * d;
+        double value = evaluate(kind, at, values, wave, exponent);
+        if (slope_map != nullptr) value = slope_map_value(*slope_map, value);
+        out += (value * weight) * d;
     }
     return out;
+}
+
+double slope_map_value(const std::vector<SlopeEntry>& map, double value) {
+    if (map.empty()) return value;
+    const BlendPick pick = search_blend_map(value, map.size(), [&](std::size_t i) { return map[i].value; });
+    const SlopeEntry& cur = map[pick.cur];
+    if (pick.prev == pick.cur) return cur.height;
+    const SlopeEntry& prev = map[pick.prev];
+    // (POV-Ray's Hermite_Cubic, its terms in its order.)
+    const double t = pick.f, tt = t * t, ttt = tt * t;
+    double r = ttt * (prev.slope + cur.slope + 2.0 * (prev.height - cur.height));
+    r += -tt * (2.0 * prev.slope + cur.slope + 3.0 * (prev.height - cur.height));
+    r += t * prev.slope + prev.height;
+    return r;
 }
 
 }  // namespace hexant::runtime::pattern

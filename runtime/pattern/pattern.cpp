@@ -54,20 +54,12 @@ glm::dvec3 apply_turbulence(const glm::dvec3& point, const glm::dvec3& amount, c
 
 std::array<double, 5> map_colour(const std::vector<MapEntry>& map, double value) {
     if (map.empty()) return {};
-    std::size_t cur;
-    std::size_t prev;
-    if (value >= map.back().value) {
-        prev = cur = map.size() - 1;
-    } else {
-        cur = 0;
-        prev = 0;
-        while (value > map[cur].value) prev = cur++;
-    }
-    if (value == map[cur].value) prev = cur;
-    if (prev == cur) return map[cur].colour;
-    const double f = (value - map[prev].value) / (map[cur].value - map[prev].value);
+    const BlendPick pick = search_blend_map(value, map.size(), [&](std::size_t i) { return map[i].value; });
+    if (pick.prev == pick.cur) return map[pick.cur].colour;
+    const auto& a = map[pick.prev].colour;
+    const auto& b = map[pick.cur].colour;
     std::array<double, 5> c;
-    for (std::size_t i = 0; i < 5; ++i) c[i] = map[prev].colour[i] + f * (map[cur].colour[i] - map[prev].colour[i]);
+    for (std::size_t i = 0; i < 5; ++i) c[i] = a[i] + pick.f * (b[i] - a[i]);
     return c;
 }
 

@@ -128,11 +128,54 @@ double evaluate(const Kind& kind, const glm::dvec3& point, const Values& values,
 // value at four points `delta` from `point` along a tetrahedron's
 // directions, weighted by amount * -5 * 0.02 / delta. `normal` and the
 // result are in pattern space.
+// With a slope map, each value goes through it first.
+struct SlopeEntry;
 glm::dvec3 slope_normal(const Kind& kind, const glm::dvec3& point, const Values& values, Wave wave,
-                        double exponent, double amount, double delta, const glm::dvec3& normal);
+                        double exponent, double amount, double delta, const glm::dvec3& normal,
+                        const std::vector<SlopeEntry>* slope_map = nullptr);
+
+// A slope_map's entry: at `value` (single precision, as POV-Ray keeps a
+// map's values), a height and a slope.
+struct SlopeEntry {
+    double value, height, slope;
+};
+// A value through a slope map (POV-Ray's Do_Slope_Map: the Hermite cubic
+// between the neighbouring entries' heights and slopes; the entry's height
+// at or beyond the ends).
+double slope_map_value(const std::vector<SlopeEntry>& map, double value);
 
 // Classic turbulence applied to a point, as Warp_EPoint does it.
 glm::dvec3 apply_turbulence(const glm::dvec3& point, const glm::dvec3& amount, const Octaves& o);
+
+// POV-Ray's Search_Blend_Map over `count` entries whose values, in order,
+// value_at(i) gives: below the first entry, above the last or on an
+// entry's value, prev == cur; else cur is the first entry above `value`,
+// prev the one before, and f (in (0, 1)) how far value lies from prev to
+// cur. Values are read as the search goes (a time-varying map is not
+// copied).
+struct BlendPick {
+    std::size_t prev = 0, cur = 0;
+    double f = 1.0;
+};
+template <class ValueAt>
+BlendPick search_blend_map(double value, std::size_t count, ValueAt value_at) {
+    BlendPick pick;
+    if (count == 0) return pick;
+    double at_cur;
+    if (value >= (at_cur = value_at(count - 1))) {
+        pick.prev = pick.cur = count - 1;
+    } else {
+        double at_prev = at_cur = value_at(0);
+        while (value > at_cur) {
+            pick.prev = pick.cur++;
+            at_prev = at_cur;
+            at_cur = value_at(pick.cur);
+        }
+        if (value != at_cur && pick.prev != pick.cur) pick.f = (value - at_prev) / (at_cur - at_prev);
+    }
+    if (value == at_cur) pick.prev = pick.cur;
+    return pick;
+}
 
 // The colour a map gives a value (Search_Blend_Map and the linear blend
 // between its neighbouring entries; below the first, the first; above the

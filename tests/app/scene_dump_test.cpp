@@ -1,4 +1,5 @@
 // The `hexant dump` format, line by line, on scene records built by hand.
+#include <algorithm>
 #include <catch2/catch.hpp>
 
 #include <memory>
@@ -204,4 +205,29 @@ TEST_CASE("dump: a pattern's kind and modifiers, normals, the sky, fog and a par
     CHECK(has("normal=bumps amount=0.5"));
     CHECK(has("fog type=1 distance=5"));
     CHECK(has("parallel point_at=<0, 0, 1>"));
+}
+
+TEST_CASE("dump: a texture_map's entries and a layered texture's layers", "[app][dump]") {
+    rt::SceneDescription scene;
+    rt::Texture top, under, map;
+    top.pigment.colours[0] = rt::ColourFunction{{1.0, 0.0, 0.0, 0.0, 0.5}};
+    under.pigment.colours[0] = rt::ColourFunction{{0.0, 0.0, 1.0, 0.0, 0.0}};
+    top.below.push_back(under);
+    map.patterned = rt::pattern::Pattern::of(*rt::pattern::find_kind("gradient"));
+    map.texture_map.push_back({0.25, std::make_shared<rt::Texture>(top)});
+    map.texture_map.push_back({0.75, std::make_shared<rt::Texture>(under)});
+    auto a = object(rt::Sphere{{{0.0, 0.0, 0.0}}, 1.0});
+    a->texture = top;
+    auto b = object(rt::Sphere{{{0.0, 0.0, 0.0}}, 1.0});
+    b->texture = map;
+    scene.objects = {a, b};
+    const auto lines = dump(scene, 0.0);
+    REQUIRE(lines.size() >= 2);
+    const auto& layered = *std::find_if(lines.begin(), lines.end(), [](const auto& l) { return l.find("object[0]") == 0; });
+    CHECK(layered.find("pigment=solid<1, 0, 0, 0, 0.5>") != std::string::npos);
+    CHECK(layered.find("under [pigment=solid<0, 0, 1, 0, 0>") != std::string::npos);
+    const auto& mapped = *std::find_if(lines.begin(), lines.end(), [](const auto& l) { return l.find("object[1]") == 0; });
+    CHECK(mapped.find("texture_map=gradient") != std::string::npos);
+    CHECK(mapped.find(" 0.25[pigment=solid<1, 0, 0, 0, 0.5>") != std::string::npos);
+    CHECK(mapped.find(" 0.75[pigment=solid<0, 0, 1, 0, 0>") != std::string::npos);
 }

@@ -309,6 +309,8 @@ class Converter {
     std::uint32_t add_material(const runtime::Texture& texture,
                                const std::optional<runtime::Interior>& interior,
                                const runtime::ObjectRecord& record) {
+        if (texture.is_patterned() || !texture.below.empty()) refuse(record, "texture_map or layered texture");
+        if (texture.normal) refuse(record, "normal { }");
         for (int k = 0; k < 3; ++k)
             if (!is_zero(texture.finish.reflection.c[k])) refuse(record, "reflection");
         for (const auto& colour : texture.pigment.colours)
@@ -330,7 +332,7 @@ class Converter {
         std::optional<runtime::Texture> texture = parent.texture;
         if (record.texture) {
             texture = *record.texture;
-            texture->transform.append(parent.to_world);
+            texture->transform_by(parent.to_world);
         }
         const auto interior = record.interior ? record.interior : parent.interior;
         const bool no_shadow = record.no_shadow || parent.no_shadow;

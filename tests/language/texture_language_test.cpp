@@ -1,9 +1,11 @@
 // Reading textures as POV-Ray does (issue 19, and a new user's probe of it):
 // a second pigment { } or normal { } on an object modifies the one it has,
-// colour maps may be written by directives and macros, a layered texture
-// that shows what is under it is refused where it is written, a pattern
-// hexant lacks in a normal is an error when the scene is checked, and
-// global_settings { noise_generator } reaches the patterns after it.
+// colour maps may be written by directives and macros, layered textures
+// keep every layer (the last written on top), texture_map, normal_map,
+// slope_map and block patterns' lists read as POV-Ray reads them and refuse
+// what POV-Ray refuses, a pattern hexant lacks in a normal is an error when
+// the scene is checked, and global_settings { noise_generator } reaches
+// the patterns after it.
 #include <catch2/catch.hpp>
 
 #include <string>
@@ -60,17 +62,87 @@ sphere { 0, 1 pigment { gradient y color_map { E(0, <1, 0, 0>) #if (1) E(1, <0, 
     CHECK(texture_of(scene, 1).pigment.colour_map.entries[1].colour.c[2].constant() == 1.0);
 }
 
-TEST_CASE("what hexant cannot show yet is an error where it is written", "[language][pattern]") {
-    // A second texture is a layer on top in POV-Ray: refused when the lower
-    // one would show through; an opaque one is the same image as a
-    // replacement.
-    const auto layered = error_of("sphere { 0, 1 texture { pigment { bozo } } texture { pigment { rgbt <1, 1, 1, 0.5> } } }\n");
-    CHECK(layered.formatted().find("test.pov:1:") != std::string::npos);
-    CHECK(layered.formatted().find("layered") != std::string::npos);
-    hexant::test::reads("sphere { 0, 1 texture { pigment { bozo } } texture { pigment { rgb 1 } } }\n");
-    // A normal pattern hexant lacks: at check, not only at render.
-    const auto facets = error_of("sphere { 0, 1 normal { facets } }\n");
-    CHECK(facets.formatted().find("facets") != std::string::npos);
+TEST_CASE("layered textures keep every layer, the last written on top", "[language][pattern]") {
+    // The object's transform after its textures moves every layer; a
+    // declared layered texture brings all its layers.
+    const auto scene = read(
+        "#declare T = texture { pigment { rgb <0, 1, 0> } } texture { pigment { rgbt <0, 0, 1, 0.5> } }\n"
+        "sphere { 0, 1 texture { pigment { rgb 1 } } texture { pigment { rgbt <1, 0, 0, 0.5> } } translate x }\n"
+        "sphere { 0, 1 texture { T } texture { pigment { rgbf <1, 1, 0, 0.2> } } }\n"
+        "sphere { 0, 1 material { texture { pigment { rgb 1 } } texture { T } } }\n");
+    const rt::Texture& a = texture_of(scene, 0);
+    CHECK(a.pigment.colours[0].c[0].constant() == 1.0);
+    CHECK(a.pigment.colours[0].c[4].constant() == 0.5);
+    REQUIRE(a.below.size() == 1);
+    CHECK(a.below[0].pigment.colours[0].c[4].constant() == 0.0);
+    CHECK(!a.transform.empty());
+    CHECK(!a.below[0].transform.empty());
+    const rt::Texture& b = texture_of(scene, 1);
+    CHECK(b.pigment.colours[0].c[3].constant() == Approx(0.2));
+    REQUIRE(b.below.size() == 2);
+    CHECK(b.below[0].pigment.colours[0].c[2].constant() == 1.0);  // T's top
+    CHECK(b.below[1].pigment.colours[0].c[1].constant() == 1.0);  // T's bottom
+    const rt::Texture& c = texture_of(scene, 2);
+    REQUIRE(c.below.size() == 2);
+    CHECK(c.below[1].pigment.colours[0].c[0].constant() == 1.0);
+}
+
+TEST_CASE("texture_map, normal_map, slope_map and block lists read as POV-Ray reads them", "[language][pattern]") {
+    const auto scene = read(
+        "#declare R = texture { pigment { rgb 1 } normal { bumps } }\n"
+        "sphere { 0, 1 texture { gradient y texture_map { [0.2 R] [0.8 pigment { rgb 0 } finish { phong 1 }] }"
+        " phase clock scale 2 } }\n"
+        "sphere { 0, 1 texture { checker texture { pigment { rgb 1 } }, texture { R } scale 0.5 } }\n"
+        "sphere { 0, 1 normal { marble normal_map { [0 dents 0.3] [1 ripples scale 2] } }"
+        " normal { marble normal_map { [0 dents 0.3] [1 ripples scale 2] } } }\n"
+        "sphere { 0, 1 normal { granite 0.6 slope_map { [0 <0, 1>] [0.5, <1, 0>] [1 <0, -1>] } } }\n"
+        "sphere { 0, 1 normal { hexagon normal { bumps } normal { dents } normal { waves } } }\n");
+    const rt::Texture& a = texture_of(scene, 0);
+    REQUIRE(a.is_patterned());
+    CHECK(a.patterned.kind->name == std::string_view("gradient"));
+    REQUIRE(a.texture_map.size() == 2);
+    CHECK(a.texture_map[0].value.constant() == Approx(0.2));
+    CHECK(a.texture_map[0].texture->normal.has_value());
+    CHECK(a.texture_map[1].texture->finish.phong.constant() == 1.0);
+    CHECK(!a.transform.empty());  // the pattern's own scale
+    const rt::Texture& b = texture_of(scene, 1);
+    REQUIRE(b.texture_map.size() == 2);
+    CHECK(b.texture_map[1].value.constant() == 1.0);
+    const rt::Texture& c = texture_of(scene, 2);
+    REQUIRE(c.normal);
+    // (A second normal { } modifies the first: its map is written anew.)
+    CHECK(c.normal->normal_map.size() == 2);
+    const rt::Texture& d = texture_of(scene, 3);
+    REQUIRE(d.normal);
+    REQUIRE(d.normal->slope_map.size() == 3);
+    CHECK(d.normal->slope_map[1].height.constant() == 1.0);
+    CHECK(d.normal->slope_map[2].slope.constant() == -1.0);
+    CHECK(d.normal->amount.constant() == Approx(0.6));
+    CHECK(texture_of(scene, 4).normal->normal_map.size() == 3);
+}
+
+TEST_CASE("what POV-Ray refuses in textures is an error where it is written", "[language][pattern]") {
+    const auto error = [](const std::string& text, const char* words) {
+        const auto e = error_of(text);
+        INFO(e.formatted());
+        CHECK(e.formatted().find("test.pov:") != std::string::npos);
+        CHECK(e.formatted().find(words) != std::string::npos);
+    };
+    const std::string map = "texture_map { [0 pigment { rgb 0 }] [1 pigment { rgb 1 }] }";
+    error("sphere { 0, 1 texture { gradient x " + map + " } texture { pigment { rgb 1 } } }\n", "layered over a patterned");
+    error("sphere { 0, 1 texture { pigment { rgb 1 } } texture { gradient x " + map + " } }\n", "cannot be layered");
+    error("sphere { 0, 1 texture { gradient x } }\n", "needs a texture_map");
+    error("sphere { 0, 1 texture { checker texture { pigment { rgb 1 } } } }\n", "needs 2 textures");
+    error("sphere { 0, 1 texture { checker " + map + " } }\n", "cannot go with checker");
+    error("sphere { 0, 1 texture { pigment { rgb 1 } texture { pigment { rgb 0 } } } }\n", "block pattern");
+    error("sphere { 0, 1 texture { turbulence 0.5 } }\n", "follows a pattern");
+    error("sphere { 0, 1 texture { gradient x " + map + " } pigment { rgb 1 } }\n", "patterned texture");
+    error("sphere { 0, 1 normal { checker normal_map { [0 bumps] } } }\n", "cannot go with checker");
+    error("sphere { 0, 1 normal { gradient x slope_map { [0 1 2 3] } } }\n", "slope_map");
+    // A normal pattern hexant lacks: at check, not only at render; in a
+    // normal_map's entry too.
+    error("sphere { 0, 1 normal { facets } }\n", "facets");
+    error("sphere { 0, 1 normal { gradient x normal_map { [0 facets] [1 bumps] } } }\n", "facets");
 }
 
 TEST_CASE("global_settings { noise_generator } reaches the patterns after it", "[language][pattern]") {

@@ -1,8 +1,9 @@
 // An animated pigment blurs as the mean of its instants: a wall whose
-// pattern's phase moves with clock (a sine wave through a colour map),
-// rendered as one motion-blurred frame, against the brute-force mean of
-// stills at 64 instants across the same shutter. The texture is evaluated
-// at each sample's own time (runtime/texture_evaluator.cpp).
+// pattern's phase moves with clock (a sine wave through a colour map, or
+// through a texture_map of whole textures), rendered as one motion-blurred
+// frame, against the brute-force mean of stills at 64 instants across the
+// same shutter. The texture is evaluated at each sample's own time
+// (runtime/texture_evaluator.cpp).
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <string>
@@ -25,14 +26,25 @@ box { <-10, -10, 0>, <10, 10, 1>
             color_map { [0 rgb <0, 0, 1>] [0.6 rgb <1, 0.5, 0>] [1 rgb 1] } }
   finish { ambient 1 diffuse 0 } }
 )";
+// The same colours as whole textures, blended lit (ambient 1, diffuse 0:
+// each lit colour is its pigment's).
+const char* kTextureMapScene = R"(
+camera { location <0, 0, -5> look_at 0 }
+#declare Lit = finish { ambient 1 diffuse 0 }
+box { <-10, -10, 0>, <10, 10, 1>
+  texture { gradient x scale 1e6 sine_wave phase 0.25 + 0.5 * clock
+            texture_map { [0 pigment { rgb <0, 0, 1> } finish { Lit }]
+                          [0.6 pigment { rgb <1, 0.5, 0> } finish { Lit }]
+                          [1 pigment { rgb 1 } finish { Lit }] } } }
+)";
 
-hexant::runtime::SceneDescription parse(int frames, double shutter) {
+hexant::runtime::SceneDescription parse(const std::string& text, int frames, double shutter) {
     hexant::language::ParseOptions options;
     options.animation.width = 16;
     options.animation.height = 12;
     options.animation.initial_frame = 1;
     options.animation.final_frame = frames;
-    auto scene = hexant::language::parse_scene_text(kScene, "blur.pov", options);
+    auto scene = hexant::language::parse_scene_text(text, "blur.pov", options);
     scene.animation.shutter = shutter;
     return scene;
 }
@@ -40,15 +52,17 @@ hexant::runtime::SceneDescription parse(int frames, double shutter) {
 }  // namespace
 
 TEST_CASE("a frame of an animated pigment is the mean of its instants", "[tracer][pattern]") {
+    const std::string text = GENERATE(std::string(kScene), std::string(kTextureMapScene));
+    INFO(text);
     // Frame 1 of 2 over clock 0 to 1: its shutter is [0, 1).
-    const auto blurred_scene = parse(2, 1.0);
+    const auto blurred_scene = parse(text, 2, 1.0);
     tr::RenderSettings settings;
     settings.samples_per_pixel = 64;
     tr::Renderer blurred_renderer(blurred_scene, settings);
     const tr::Image blurred = blurred_renderer.render_frame(1);
     // 64 stills at clock (k + 1/2) / 64: frames of a shutter-0 animation
     // whose clock steps by 1/64, from 1/128.
-    auto stills = parse(65, 0.0);
+    auto stills = parse(text, 65, 0.0);
     stills.animation.initial_clock = 0.5 / 64.0;
     stills.animation.final_clock = 64.5 / 64.0;
     tr::RenderSettings one;

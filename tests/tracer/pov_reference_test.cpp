@@ -247,6 +247,31 @@ TEST_CASE("a pigment_map agrees with POV-Ray 3.7's", "[tracer][pov][pattern]") {
     check_stills("patterns", "pigment_map", {"0", "0.5"});
 }
 
+TEST_CASE("texture_map and layered textures agree with POV-Ray 3.7's", "[tracer][pov][pattern]") {
+    // textures/texture_map.pov: a checker of two textures (one reflecting),
+    // a texture_map of a declared texture with a bumpy normal and one
+    // written in place (its gradient's phase moving, turbulence warping
+    // it: the entries' normals go through the pattern's transforms), and a
+    // partly clear layer over wood, turning. textures/layers.pov: a
+    // declared layered texture whose top filters and transmits (lower
+    // layers lit through it, what lies behind refracted about the top
+    // layer's perturbed normal), layered entries in a texture_map, layers
+    // in a material with an object's pigment changing the top. Same
+    // tolerance as the still's (texture_map exact when written; layers
+    // within it but for a pixel on a sphere's rim).
+    check_stills("textures", "texture_map", {"0", "0.5"});
+    check_stills("textures", "layers", {"0", "0.5"});
+}
+
+TEST_CASE("normal_map and slope_map agree with POV-Ray 3.7's", "[tracer][pov][pattern]") {
+    // textures/normal_map.pov: a checker of two normals (one's amount
+    // moving), a normal_map of dents and ripples along a turned gradient
+    // whose phase moves, a slope_map shaping marble's slope (POV-Ray's
+    // Hermite cubic), and a normal_map inside a texture_map's entry. Same
+    // tolerance (exact when written).
+    check_stills("textures", "normal_map", {"0", "0.5"});
+}
+
 TEST_CASE("assumed_gamma 2.2 agrees with POV-Ray 3.7", "[tracer][pov]") {
     // lights/gamma.pov: the parallel-light scene in a working space of gamma
     // 2.2, with a background: POV-Ray decodes the working gamma from each
