@@ -79,6 +79,11 @@ std::string pigment(const runtime::Pigment& p, double t) {
             for (const auto& e : p.pigment_map) s += " " + number(e.value(t)) + "[" + pigment(*e.pigment, t) + "]";
             return s;
         }
+        case runtime::Pigment::Pattern::Image:
+            return "image_map file=" + p.image_map->file + " map_type=" +
+                   std::to_string(static_cast<int>(p.image_map->map_type)) + " interpolate=" +
+                   std::to_string(static_cast<int>(p.image_map->interpolate)) + " once=" +
+                   std::to_string(p.image_map->once ? 1 : 0) + modifiers(p.patterned, t);
         case runtime::Pigment::Pattern::Unsupported: return p.unsupported_name;
     }
     return "";

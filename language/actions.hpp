@@ -66,6 +66,8 @@ HEXANT_NAME_ACTION(camera_vector_name);
 HEXANT_NAME_ACTION(global_setting_name);
 HEXANT_NAME_ACTION(global_ignored_name);
 HEXANT_NAME_ACTION(unsupported_kind);
+HEXANT_NAME_ACTION(image_map_setting_name);
+HEXANT_NAME_ACTION(image_map_filter_name);
 #undef HEXANT_NAME_ACTION
 
 // A shape's keyword: remembers which shape and where it was written.
@@ -1099,6 +1101,136 @@ HEXANT_ACTION(pigment_map_pigment_open) {
 HEXANT_ACTION(pigment_map_entry) {
     HEXANT_APPLY {
         close_map_entry(st, in.position(), "pigment_map", &runtime::Pigment::pigment_map);
+    }
+};
+
+// ---- image_map { } (POV-Ray's Parse_Image, Parse_Image_Map)
+HEXANT_ACTION(image_map_open) {
+    HEXANT_APPLY {
+        st.block<runtime::Pigment>(in.position(), "image_map");
+        st.blocks.emplace_back(std::in_place_type<ImageMapBuilder>);
+    }
+};
+HEXANT_ACTION(image_file_type) {
+    HEXANT_APPLY {
+        (void)st;
+        // hexant reads PNG and OpenEXR (the file's own bytes say which).
+        std::string type = in.string();
+        while (!type.empty() && std::isspace(static_cast<unsigned char>(type.back()))) type.pop_back();
+        if (type != "png" && type != "exr")
+            throw UnsupportedError("image_map: " + type + " images are not supported by hexant (PNG and OpenEXR are)");
+    }
+};
+HEXANT_ACTION(image_map_file) {
+    HEXANT_APPLY {
+        Value v = st.pop();
+        if (v.is<TimedString>())
+            throw UnsupportedError("an image_map's file that changes with clock is not supported by hexant yet (" +
+                                   v.as<TimedString>().describe() + ")");
+        if (!v.is<std::string>()) throw ValueError("image_map's file is a string, not a " + type_name(v));
+        const std::string name = v.as<std::string>();
+        auto& b = st.block<ImageMapBuilder>(in.position(), "image_map's file");
+        const std::filesystem::path path = st.resolve_include(name, in.position(), "image file");
+        try {
+            b.stored = std::make_shared<const image::StoredImage>(image::read_stored_image(path));
+        } catch (const std::runtime_error& e) {
+            throw ValueError(std::string("image_map: ") + e.what());
+        }
+        b.map.file = name;
+        b.map.width = static_cast<float>(b.stored->width);
+        b.map.height = static_cast<float>(b.stored->height);
+    }
+};
+HEXANT_ACTION(image_map_gamma_srgb) {
+    HEXANT_APPLY { st.block<ImageMapBuilder>(in.position(), "gamma").gamma_srgb_next = true; }
+};
+HEXANT_ACTION(image_map_gamma) {
+    HEXANT_APPLY {
+        auto& b = st.block<ImageMapBuilder>(in.position(), "gamma");
+        if (b.gamma_srgb_next) {
+            b.gamma = ImageGamma{std::nullopt, true};
+            b.gamma_srgb_next = false;
+            return;
+        }
+        const double g = to_constant(st.pop(), "gamma");
+        if (!(g > 0.0) || !std::isfinite(g)) throw ValueError("an image's gamma must be positive, as in POV-Ray");
+        b.gamma = ImageGamma{g, false};
+    }
+};
+HEXANT_ACTION(image_map_setting) {
+    HEXANT_APPLY {
+        Value v = st.pop();
+        const std::string name = st.pop_name();
+        auto& b = st.block<ImageMapBuilder>(in.position(), name.c_str());
+        using M = runtime::pattern::ImageMap;
+        if (name == "map_type") {
+            const double t = to_constant(v, "map_type");
+            if (t != 0.0 && t != 1.0 && t != 2.0 && t != 5.0)
+                throw ValueError("map_type is 0 (planar), 1 (spherical), 2 (cylindrical) or 5 (torus), as in POV-Ray");
+            b.map.map_type = static_cast<M::MapType>(static_cast<int>(t));
+        } else if (name == "interpolate") {
+            const double t = to_constant(v, "interpolate");
+            if (t != 2.0 && t != 3.0 && t != 4.0)
+                throw ValueError("interpolate is 2 (bilinear), 3 (bicubic) or 4 (normalized distance), as in POV-Ray");
+            b.map.interpolate = static_cast<M::Interpolate>(static_cast<int>(t));
+        } else if (name == "premultiplied") {
+            // (PNG's alpha is not premultiplied; OpenEXR's is read as it is.)
+            if (to_constant(v, "premultiplied") != 0.0)
+                throw UnsupportedError("premultiplied alpha in an image_map is not supported by hexant");
+        } else {
+            const runtime::Vector3Function uv = to_vector3(v, name);
+            const double u = to_constant(Value{uv.c[0]}, name), w = to_constant(Value{uv.c[1]}, name);
+            if (name == "repeat") {
+                if (!(u > 0.0) || !(w > 0.0)) throw ValueError("an image_map's repeat must be positive, as in POV-Ray");
+                b.map.width = static_cast<float>(b.stored->width * u);
+                b.map.height = static_cast<float>(b.stored->height * w);
+            } else {
+                b.map.offset_u = u * -b.stored->width;
+                b.map.offset_v = w * -b.stored->height;
+            }
+        }
+    }
+};
+HEXANT_ACTION(image_map_flag) {
+    HEXANT_APPLY {
+        std::string flag = in.string();
+        while (!flag.empty() && std::isspace(static_cast<unsigned char>(flag.back()))) flag.pop_back();
+        auto& b = st.block<ImageMapBuilder>(in.position(), flag.c_str());
+        if (flag == "once") b.map.once = true;
+        else if (flag == "use_index")
+            throw UnsupportedError("use_index in an image_map is not supported by hexant (it reads colours)");
+    }
+};
+HEXANT_ACTION(image_map_all) {
+    HEXANT_APPLY { st.block<ImageMapBuilder>(in.position(), "all").all_next = true; }
+};
+HEXANT_ACTION(image_map_filter) {
+    HEXANT_APPLY {
+        std::vector<Value> args = st.close_frame();
+        const std::string name = st.pop_name();
+        auto& b = st.block<ImageMapBuilder>(in.position(), name.c_str());
+        const bool all = b.all_next;
+        b.all_next = false;
+        if (!all || args.size() != 1)
+            throw UnsupportedError(name + " of one palette entry is not supported by hexant (it reads a palette "
+                                   "image's colours); " + name + " all AMOUNT is");
+        (name == "filter" ? b.map.filter_all : b.map.transmit_all) = to_float(args[0], name + " all");
+    }
+};
+HEXANT_ACTION(image_map_block) {
+    HEXANT_APPLY {
+        ImageMapBuilder b = std::move(std::get<ImageMapBuilder>(st.blocks.back()));
+        st.blocks.pop_back();
+        auto map = std::make_shared<runtime::pattern::ImageMap>(std::move(b.map));
+        map->pixels = std::make_shared<const runtime::pattern::ImagePixels>(
+            image_pixels(*b.stored, b.gamma, st.scene.global.assumed_gamma));
+        auto& pigment = st.block<runtime::Pigment>(in.position(), "image_map");
+        // (The pigment's modifiers, turbulence and warps, place the image.)
+        pigment.pattern = runtime::Pigment::Pattern::Image;
+        pigment.patterned.kind = nullptr;
+        pigment.colour_map = {};
+        pigment.pigment_map.clear();
+        pigment.image_map = std::move(map);
     }
 };
 

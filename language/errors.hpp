@@ -78,6 +78,8 @@ HEXANT_ERROR(pigment_map_value, "expected the value of the pigment map's entry")
 HEXANT_ERROR(texture_map_value, "expected the value of the texture map's entry");
 HEXANT_ERROR(normal_map_value, "expected the value of the normal map's entry");
 HEXANT_ERROR(slope_map_item, "expected a slope map entry: [value <height, slope>]");
+HEXANT_ERROR(image_map_file, "expected the image's file name (a string)");
+HEXANT_ERROR(image_map_amount, "expected the amount of filter or transmit");
 HEXANT_ERROR(rbracket, "expected ']'");
 HEXANT_ERROR(finish_setting_value, "expected a value after the finish setting");
 HEXANT_ERROR(reflection_amount, "expected a value or '{' after reflection");

@@ -533,7 +533,6 @@ HEXANT_KEYWORD(kw_material, "material");
 // only where a scene uses them.
 struct unsupported_pattern_name
     : p::sor<TAO_PEGTL_KEYWORD("average"), TAO_PEGTL_KEYWORD("facets"),
-             TAO_PEGTL_KEYWORD("image_map"),
              TAO_PEGTL_KEYWORD("function"), TAO_PEGTL_KEYWORD("julia"), TAO_PEGTL_KEYWORD("pavement"),
              TAO_PEGTL_KEYWORD("tiling"), TAO_PEGTL_KEYWORD("cubic"), TAO_PEGTL_KEYWORD("object"),
              TAO_PEGTL_KEYWORD("slope"), TAO_PEGTL_KEYWORD("aoi"), TAO_PEGTL_KEYWORD("density_file"),
@@ -616,9 +615,42 @@ struct pigment_map_open : p::seq<TAO_PEGTL_KEYWORD("pigment_map"), ws, p::must<l
 struct pigment_map_element
     : p::sor<directive<pigment_map_element>, macro_call<pigment_map_element>, pigment_map_entry> {};
 struct pigment_map_block : p::seq<pigment_map_open, p::star<pigment_map_element>, p::must<rbrace>> {};
+// image_map { [TYPE] "file" [gamma G] [premultiplied B] settings }: POV-Ray's
+// Parse_Image and Parse_Image_Map.
+struct image_map_open : p::seq<TAO_PEGTL_KEYWORD("image_map"), ws, p::must<lbrace>> {};
+struct image_file_type
+    : p::seq<p::sor<TAO_PEGTL_KEYWORD("png"), TAO_PEGTL_KEYWORD("exr"), TAO_PEGTL_KEYWORD("gif"),
+                    TAO_PEGTL_KEYWORD("tga"), TAO_PEGTL_KEYWORD("iff"), TAO_PEGTL_KEYWORD("ppm"),
+                    TAO_PEGTL_KEYWORD("pgm"), TAO_PEGTL_KEYWORD("jpeg"), TAO_PEGTL_KEYWORD("tiff"),
+                    TAO_PEGTL_KEYWORD("bmp"), TAO_PEGTL_KEYWORD("hdr"), TAO_PEGTL_KEYWORD("sys")>,
+             ws> {};
+struct image_map_file : p::seq<sum> {};
+struct image_map_setting_name
+    : p::sor<TAO_PEGTL_KEYWORD("map_type"), TAO_PEGTL_KEYWORD("interpolate"), TAO_PEGTL_KEYWORD("premultiplied"),
+             TAO_PEGTL_KEYWORD("repeat"), TAO_PEGTL_KEYWORD("offset")> {};
+struct image_map_setting : p::seq<image_map_setting_name, ws, p::must<pattern_setting_value>> {};
+// gamma G, or gamma srgb.
+struct image_map_gamma_srgb : p::seq<TAO_PEGTL_KEYWORD("srgb"), ws> {};
+struct image_map_gamma
+    : p::seq<TAO_PEGTL_KEYWORD("gamma"), ws, p::sor<image_map_gamma_srgb, p::must<pattern_setting_value>>> {};
+struct image_map_flag
+    : p::seq<p::sor<TAO_PEGTL_KEYWORD("once"), TAO_PEGTL_KEYWORD("use_colour"), TAO_PEGTL_KEYWORD("use_color"),
+                    TAO_PEGTL_KEYWORD("use_index")>,
+             ws> {};
+// filter all F, transmit all T; filter N F (a palette entry's).
+struct image_map_all : p::seq<TAO_PEGTL_KEYWORD("all"), ws> {};
+struct image_map_amount : p::seq<sum> {};
+struct image_map_filter_name : p::sor<TAO_PEGTL_KEYWORD("filter"), TAO_PEGTL_KEYWORD("transmit")> {};
+struct image_map_filter
+    : p::seq<image_map_filter_name, ws, frame_open,
+             p::opt<image_map_all>, p::must<image_map_amount>, p::opt<p::opt<comma>, image_map_amount>> {};
+struct image_map_item : p::sor<image_map_gamma, image_map_setting, image_map_flag, image_map_filter> {};
+struct image_map_block
+    : p::seq<image_map_open, p::opt<image_file_type>, p::must<image_map_file>, p::star<image_map_item>,
+             p::must<rbrace>> {};
 struct pigment_item
     : p::sor<directive<pigment_item>, macro_call<pigment_item>, pattern_kind, pattern_setting,
-             pattern_wave, warp_block, pigment_colour_map, pigment_map_block, unsupported_pattern,
+             pattern_wave, warp_block, pigment_colour_map, pigment_map_block, image_map_block, unsupported_pattern,
              transformation> {};
 struct pigment_block
     : p::seq<pigment_open, p::opt<pigment_base>, p::star<pigment_item>, p::must<rbrace>> {};

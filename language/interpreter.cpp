@@ -531,8 +531,8 @@ std::string Interpreter::read_include(const std::filesystem::path& path, const p
     return text;
 }
 
-std::filesystem::path Interpreter::resolve_include(const std::string& name,
-                                                   const p::position& where) const {
+std::filesystem::path Interpreter::resolve_include(const std::string& name, const p::position& where,
+                                                   const std::string& what) const {
     namespace fs = std::filesystem;
     const fs::path file(name);
     std::vector<fs::path> folders{scene_folder_};
@@ -552,32 +552,32 @@ std::filesystem::path Interpreter::resolve_include(const std::string& name,
         }
     }
     if (found.empty()) {
-        if (file.is_absolute()) fail(where, "include file '" + name + "' not found");
+        if (file.is_absolute()) fail(where, what + " '" + name + "' not found");
         std::string searched;
         for (const auto& folder : folders)
             searched += (searched.empty() ? "" : ", ") + folder.string();
-        fail(where, "include file '" + name + "' not found (searched " + searched + ")");
+        fail(where, what + " '" + name + "' not found (searched " + searched + ")");
     }
     // Confinement, on the file as it really is (`..` and symbolic links
     // resolved): a regular file inside a folder a scene may read. The
     // messages never show the file's contents.
     const fs::path real = fs::canonical(found, error);
-    if (error) fail(where, "include file '" + name + "' cannot be read: " + error.message());
+    if (error) fail(where, what + " '" + name + "' cannot be read: " + error.message());
     if (!fs::is_regular_file(real, error))
-        fail(where, "include file '" + name +
+        fail(where, what + " '" + name +
                         "' is not a regular file (a device, FIFO or folder "
-                        "cannot be included)");
+                        "cannot be read)");
     std::vector<fs::path> allowed = folders;
     allowed.push_back(kPovRayIncludeDir);
     allowed.insert(allowed.end(), options.read_paths.begin(), options.read_paths.end());
     for (const fs::path system : {"/proc", "/sys", "/dev"})
         if (inside(real, system))
-            fail(where, "include file '" + name + "' is a system file: refused");
+            fail(where, what + " '" + name + "' is a system file: refused");
     for (const auto& folder : allowed) {
         const fs::path root = fs::weakly_canonical(folder.empty() ? fs::path(".") : folder, error);
         if (!error && inside(real, root)) return real;
     }
-    fail(where, "include file '" + name +
+    fail(where, what + " '" + name +
                     "' is outside the folders a scene may read (its own "
                     "folder, the -L folders and the include folders; --allow-read DIR adds one)");
 }

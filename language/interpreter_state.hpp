@@ -29,6 +29,7 @@
 #include <tao/pegtl.hpp>
 
 #include "language/builtins.hpp"
+#include "language/image_map_file.hpp"
 #include "language/errors.hpp"
 #include "language/grammar.hpp"
 #include "language/interpreter.hpp"
@@ -54,12 +55,22 @@ struct MaterialBuilder {
     std::optional<runtime::Interior> interior;
 };
 
+// image_map { } being read: the map, the file as read (decoded when the
+// block closes, after its gamma), and what was said of it.
+struct ImageMapBuilder {
+    runtime::pattern::ImageMap map;
+    std::shared_ptr<const image::StoredImage> stored;
+    ImageGamma gamma;
+    bool gamma_srgb_next = false;  // `gamma srgb` just read
+    bool all_next = false;         // `filter all` / `transmit all` being read
+};
+
 // A block under construction: `sphere { ... }`, `texture { ... }` ...
 using Block = std::variant<runtime::ObjectRecord, runtime::LightRecord, runtime::CameraRecord,
                            runtime::Texture, runtime::Pigment, runtime::Normal, runtime::ColourMap, runtime::SkySphere,
                            runtime::Fog, runtime::Finish,
                            runtime::Interior,
-                           runtime::Transform, SplineBuilder, MaterialBuilder>;
+                           runtime::Transform, SplineBuilder, MaterialBuilder, ImageMapBuilder>;
 
 // What a std::bad_alloc while reading becomes, at its place.
 inline constexpr const char* kOutOfMemory =
@@ -283,7 +294,9 @@ public:
               template <typename...> class Control>
     void read_file(const std::string& name, const std::string& text);
 
-    std::filesystem::path resolve_include(const std::string& name, const p::position& where) const;
+    // (`what` names the file in messages: "include file", "image file".)
+    std::filesystem::path resolve_include(const std::string& name, const p::position& where,
+                                          const std::string& what = "include file") const;
     // The text of the include file at `path` (resolve_include's), counted
     // against Limits::text_read before it is read (read_source_text).
     std::string read_include(const std::filesystem::path& path, const p::position& where);

@@ -11,6 +11,9 @@ bool ColourMap::depends_on_time() const {
 bool Pigment::depends_on_time() const {
     if (pattern == Pattern::Solid) return colours.front().depends_on_time();
     if (pattern == Pattern::Unsupported) return false;
+    if (pattern == Pattern::Image)
+        return patterned.depends_on_time() || transform.depends_on_time() ||
+               image_map->filter_all.depends_on_time() || image_map->transmit_all.depends_on_time();
     if (patterned.depends_on_time() || colour_map.depends_on_time() || transform.depends_on_time()) return true;
     for (const auto& e : pigment_map)
         if (e.value.depends_on_time() || e.pigment->depends_on_time()) return true;

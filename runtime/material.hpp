@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "runtime/pattern/image_map.hpp"
 #include "runtime/pattern/pattern.hpp"
 #include "runtime/source_place.hpp"
 #include "runtime/transform.hpp"
@@ -35,7 +36,7 @@ struct PigmentMapEntry {
 };
 
 struct Pigment {
-    enum class Pattern { Solid, Patterned, Unsupported };
+    enum class Pattern { Solid, Patterned, Image, Unsupported };
     Pattern pattern = Pattern::Solid;
     // Solid: colours[0].
     std::vector<ColourFunction> colours = std::vector<ColourFunction>(1);
@@ -47,6 +48,9 @@ struct Pigment {
     // pigment_map { [value pigment] ... }: blends of whole pigments in
     // place of colours (when not empty, the colour map is not used).
     std::vector<PigmentMapEntry> pigment_map;
+    // Image: image_map { }, placed by `patterned`'s warps and turbulence
+    // (its kind is null: an image has no value of its own) and `transform`.
+    std::shared_ptr<const pattern::ImageMap> image_map;
     // The transforms written after the pattern's last warp (all of them,
     // without warps): pattern space to object space.
     Transform transform;

@@ -84,7 +84,6 @@ pattern::Octaves TextureEvaluator::CompiledTurbulence::at(double t) const {
 TextureEvaluator::CompiledPattern::CompiledPattern(const pattern::Pattern& source, const Transform& last,
                                                    const Transform& texture)
     : kind(source.kind), head(std::make_shared<const Motion>(head_transform(last, texture))) {
-    if (kind == nullptr) throw std::logic_error("TextureEvaluator: a pattern without its kind");
     for (int i = 0; i < 3; ++i) vector[static_cast<std::size_t>(i)] = CompiledScalar(source.vector.c[i]);
     for (std::size_t i = 0; i < 2; ++i) number[i] = CompiledScalar(source.number[i]);
     if (source.turbulence) turbulence = compile(*source.turbulence);
@@ -115,7 +114,7 @@ pattern::Values TextureEvaluator::CompiledPattern::values_at(double t) const {
     pattern::Values v;
     v.vector = {vector[0].at(t), vector[1].at(t), vector[2].at(t)};
     v.number = {number[0].at(t), number[1].at(t)};
-    if (kind->single_numbers) v.number = {pattern::single(v.number[0]), pattern::single(v.number[1])};
+    if (kind != nullptr && kind->single_numbers) v.number = {pattern::single(v.number[0]), pattern::single(v.number[1])};
     v.frequency = pattern::single(frequency.at(t));
     v.phase = pattern::single(phase.at(t));
     v.noise_generator = noise_generator;
@@ -145,7 +144,7 @@ glm::dvec3 TextureEvaluator::CompiledPattern::walk(const glm::dvec3& world, doub
                                           turb.at(t));
         }
     }
-    if (v.has_turbulence && !kind->own_turbulence) p = pattern::apply_turbulence(p, v.turbulence, v.octaves);
+    if (v.has_turbulence && (kind == nullptr || !kind->own_turbulence)) p = pattern::apply_turbulence(p, v.turbulence, v.octaves);
     return p;
 }
 
@@ -268,6 +267,13 @@ TextureEvaluator::CompiledPigment::CompiledPigment(const Pigment& pigment, const
         return;
     }
     pattern.emplace(pigment.patterned, pigment.transform, texture);
+    if (pigment.pattern == Pigment::Pattern::Image) {
+        image = pigment.image_map;
+        filter_all = CompiledScalar(image->filter_all);
+        transmit_all = CompiledScalar(image->transmit_all);
+        return;
+    }
+    if (pattern->kind == nullptr) throw std::logic_error("TextureEvaluator: a pattern without its kind");
     if (!pigment.pigment_map.empty()) {
         // (Each in the space of this pattern: no texture transform of its own.)
         for (const auto& e : pigment.pigment_map)
@@ -293,6 +299,7 @@ std::array<double, 5> TextureEvaluator::CompiledPigment::colour(const glm::dvec3
     const CompiledPattern& p = *pattern;
     const pattern::Values v = p.values(t);
     const glm::dvec3 point = p.point(where, t, v);
+    if (image) return pattern::image_colour(*image, point, filter_all.at(t), transmit_all.at(t));
     const double value = p.value(point, t, v);
     if (!pigments.empty()) {
         // POV-Ray's Compute_Pigment with a pigment map: the neighbouring

@@ -105,7 +105,7 @@ private:
         CompiledTurbulence turbulence;
     };
     struct CompiledPattern {
-        const pattern::Kind* kind = nullptr;
+        const pattern::Kind* kind = nullptr;  // null: an image's placement, no value of its own
         // Its last transforms, then the texture's: pattern space to the
         // space around it.
         std::shared_ptr<const Motion> head;
@@ -159,6 +159,8 @@ private:
         std::vector<pattern::MapEntry> fixed_map;
         std::vector<std::pair<CompiledScalar, CompiledColour>> map;
         std::vector<std::pair<CompiledScalar, std::shared_ptr<const CompiledPigment>>> pigments;
+        std::shared_ptr<const pattern::ImageMap> image;  // image_map (the pattern places it)
+        CompiledScalar filter_all, transmit_all;
 
         CompiledPigment(const Pigment& pigment, const Transform& texture);
         // The colour at `point` (in the space around it: the world for a

@@ -6,10 +6,13 @@
 #include <stdexcept>
 
 #include "tracer/image.hpp"
-#include "tracer/image_format.hpp"
+#include "image/image_format.hpp"
 #include "tracer/image_output.hpp"
 
 namespace hexant::tracer {
+
+using image::StoredImage;
+using image::read_stored_image;
 namespace {
 
 namespace fs = std::filesystem;

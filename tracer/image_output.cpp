@@ -6,10 +6,17 @@
 #include <stdexcept>
 
 #include "tracer/gif_animation.hpp"
-#include "tracer/image_format.hpp"
+#include "image/image_format.hpp"
 #include "tracer/whole_file.hpp"
 
 namespace hexant::tracer {
+
+using image::ImageFormat;
+using image::StoredImage;
+using image::image_format_for;
+using image::image_format_extensions;
+using image::lower_case_extension;
+using image::read_stored_image;
 
 namespace fs = std::filesystem;
 

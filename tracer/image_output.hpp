@@ -9,9 +9,11 @@
 #include <vector>
 
 #include "tracer/image.hpp"
-#include "tracer/image_format.hpp"
+#include "image/image_format.hpp"
 
 namespace hexant::tracer {
+
+using image::ImageFormat;
 
 // The pattern's run of '#' replaced by the frame number, zero-padded to the
 // run's length ("out/atom/frame_####.png", 7 -> "out/atom/frame_0007.png");

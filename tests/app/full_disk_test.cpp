@@ -19,7 +19,7 @@
 #include <sstream>
 #include <string>
 
-#include "tracer/image_format.hpp"
+#include "image/image_format.hpp"
 
 namespace fs = std::filesystem;
 
@@ -114,7 +114,7 @@ TEST_CASE("a full disk: the run fails at the frame that does not fit, the others
         for (const auto& entry : fs::directory_iterator(disk)) left.insert(entry.path().filename());
         CHECK(left == std::set<std::string>{name(1), name(2)});
         for (const int frame : {1, 2}) {
-            const hexant::tracer::StoredImage image = hexant::tracer::read_stored_image(disk / name(frame));
+            const hexant::image::StoredImage image = hexant::image::read_stored_image(disk / name(frame));
             CHECK((image.width == 160 && image.height == 120));
             CHECK(fs::file_size(disk / name(frame)) == fs::file_size(folder / name(frame)));
         }

@@ -122,8 +122,9 @@ TEST_CASE("texture_map, normal_map, slope_map and block lists read as POV-Ray re
 }
 
 TEST_CASE("what POV-Ray refuses in textures is an error where it is written", "[language][pattern]") {
-    const auto error = [](const std::string& text, const char* words) {
-        const auto e = error_of(text);
+    const auto error = [](const std::string& text, const char* words,
+                          hexant::language::ParseOptions options = {}) {
+        const auto e = error_of(text, options);
         INFO(e.formatted());
         CHECK(e.formatted().find("test.pov:") != std::string::npos);
         CHECK(e.formatted().find(words) != std::string::npos);
@@ -139,6 +140,18 @@ TEST_CASE("what POV-Ray refuses in textures is an error where it is written", "[
     error("sphere { 0, 1 texture { gradient x " + map + " } pigment { rgb 1 } }\n", "patterned texture");
     error("sphere { 0, 1 normal { checker normal_map { [0 bumps] } } }\n", "cannot go with checker");
     error("sphere { 0, 1 normal { gradient x slope_map { [0 1 2 3] } } }\n", "slope_map");
+    // image_map: a file that is missing or outside what a scene may read,
+    // a type hexant does not read, a palette entry's filter, a map type
+    // POV-Ray does not have.
+    error("sphere { 0, 1 pigment { image_map { png \"no_such_image.png\" } } }\n", "image file 'no_such_image.png' not found");
+    error("sphere { 0, 1 pigment { image_map { png \"/etc/hostname\" } } }\n", "outside the folders");
+    error("sphere { 0, 1 pigment { image_map { jpeg \"x.jpg\" } } }\n", "jpeg images are not supported");
+    hexant::language::ParseOptions with_tiles;  // (tiles.png found on the include path)
+    with_tiles.include_paths = {std::string(HEXANT_SOURCE_DIR) + "/tests/tracer/pov_reference/textures"};
+    error("sphere { 0, 1 pigment { image_map { png \"tiles.png\" filter 3, 0.5 } } }\n", "palette entry", with_tiles);
+    error("sphere { 0, 1 pigment { image_map { png \"tiles.png\" map_type 3 } } }\n", "map_type is", with_tiles);
+    error("sphere { 0, 1 pigment { image_map { \"tiles.png\" interpolate 1 } } }\n", "interpolate is", with_tiles);
+    hexant::test::reads("sphere { 0, 1 pigment { image_map { \"tiles.png\" gamma srgb once } } }\n", with_tiles);
     // A normal pattern hexant lacks: at check, not only at render; in a
     // normal_map's entry too.
     error("sphere { 0, 1 normal { facets } }\n", "facets");

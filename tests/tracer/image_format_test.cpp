@@ -1,9 +1,9 @@
-// Image files through their own libraries (tracer/image_format.hpp): what
+// Image files through their own libraries (image/image_format.hpp): what
 // is written reads back exactly (PNG's bytes, EXR's floats); a name of no
 // format, a damaged file and a file of no format are errors naming the file;
 // an animation holds every frame; a comparison measures what OpenImageIO's
 // compare did (mean, RMS, worst pixel, failing and warning pixels).
-#include "tracer/image_format.hpp"
+#include "image/image_format.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -43,7 +43,7 @@ TEST_CASE("PNG and EXR frames read back as written", "[tracer][image]") {
     const tr::Image image = ramp(37, 23);
 
     tr::write_image(image, folder / "frame.png");
-    const tr::StoredImage png = tr::read_stored_image(folder / "frame.png");
+    const hexant::image::StoredImage png = hexant::image::read_stored_image(folder / "frame.png");
     CHECK_FALSE(png.linear);
     REQUIRE((png.width == 37 && png.height == 23 && png.channels == 3));
     for (std::size_t i = 0; i < image.rgb.size(); ++i)
@@ -51,12 +51,12 @@ TEST_CASE("PNG and EXR frames read back as written", "[tracer][image]") {
 
     // The name's case does not matter; the format is told by the content.
     tr::write_image(image, folder / "frame.EXR");
-    const tr::StoredImage exr = tr::read_stored_image(folder / "frame.EXR");
+    const hexant::image::StoredImage exr = hexant::image::read_stored_image(folder / "frame.EXR");
     CHECK(exr.linear);
     REQUIRE((exr.width == 37 && exr.height == 23 && exr.channels == 3));
     CHECK(exr.values == image.rgb);
     fs::rename(folder / "frame.EXR", folder / "misnamed.png");
-    CHECK(tr::read_stored_image(folder / "misnamed.png").values == image.rgb);
+    CHECK(hexant::image::read_stored_image(folder / "misnamed.png").values == image.rgb);
     fs::remove_all(folder);
 }
 
@@ -76,14 +76,14 @@ TEST_CASE("a name of no format, a damaged file and a file of no format are error
         const fs::path cut = folder / (std::string("cut_") + name);
         fs::copy_file(folder / name, cut);
         fs::resize_file(cut, fs::file_size(cut) / 2);
-        CHECK_THROWS_WITH(tr::read_stored_image(cut), Catch::Contains(cut.string()));
+        CHECK_THROWS_WITH(hexant::image::read_stored_image(cut), Catch::Contains(cut.string()));
     }
     {
         std::ofstream(folder / "text.png") << "not an image at all";
     }
-    CHECK_THROWS_WITH(tr::read_stored_image(folder / "text.png"),
+    CHECK_THROWS_WITH(hexant::image::read_stored_image(folder / "text.png"),
                       Catch::Contains("text.png") && Catch::Contains("not a .png, .exr file"));
-    CHECK_THROWS_WITH(tr::read_stored_image(folder / "missing.png"),
+    CHECK_THROWS_WITH(hexant::image::read_stored_image(folder / "missing.png"),
                       Catch::Contains("missing.png"));
     fs::remove_all(folder);
 }

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "tracer/image_format.hpp"
+#include "image/image_format.hpp"
 
 namespace {
 
@@ -23,7 +23,7 @@ struct Pixels {
 };
 
 Pixels read_png(const fs::path& path) {
-    const hexant::tracer::StoredImage in = hexant::tracer::read_stored_image(path);
+    const hexant::image::StoredImage in = hexant::image::read_stored_image(path);
     REQUIRE(in.channels == 3);
     Pixels p{in.width, in.height, std::vector<unsigned char>(in.values.size())};
     for (std::size_t i = 0; i < in.values.size(); ++i)
@@ -261,6 +261,17 @@ TEST_CASE("texture_map and layered textures agree with POV-Ray 3.7's", "[tracer]
     // within it but for a pixel on a sphere's rim).
     check_stills("textures", "texture_map", {"0", "0.5"});
     check_stills("textures", "layers", {"0", "0.5"});
+}
+
+TEST_CASE("image_map agrees with POV-Ray 3.7's", "[tracer][pov][pattern][image]") {
+    // textures/image_map.pov: an 8 x 6 RGBA PNG tiled on the floor
+    // (bilinear) and moving, once on a wall over a checker layer (alpha and
+    // transmit all showing it, clear outside), spherical (normalized
+    // distance) turning, cylindrical (bicubic, filter all) from a PNG with a
+    // gAMA chunk, and on a torus; at clock 0 and 0.5. Same tolerance as
+    // the still's (one pixel beyond 2 steps at each clock when written: a
+    // floor point seen past the torus's rim).
+    check_stills("textures", "image_map", {"0", "0.5"});
 }
 
 TEST_CASE("normal_map and slope_map agree with POV-Ray 3.7's", "[tracer][pov][pattern]") {

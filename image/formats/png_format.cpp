@@ -1,4 +1,4 @@
-#include "tracer/image_formats/png_format.hpp"
+#include "image/formats/png_format.hpp"
 
 #include <png.h>
 
@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace hexant::tracer {
+namespace hexant::image {
 
 namespace fs = std::filesystem;
 
@@ -65,6 +65,12 @@ bool read_rows(std::FILE* file, const Reader& r, std::vector<unsigned char>& byt
     png_init_io(r.png, file);
     png_set_user_limits(r.png, kMaxSide, kMaxSide);
     png_read_info(r.png, r.info);
+    // (An sRGB chunk wins over a gAMA chunk, as POV-Ray and the PNG
+    // specification read them.)
+    double file_gamma = 0.0;
+    if (!png_get_valid(r.png, r.info, PNG_INFO_sRGB) && png_get_valid(r.png, r.info, PNG_INFO_gAMA))
+        png_get_gAMA(r.png, r.info, &file_gamma);
+    out.encoding_gamma = file_gamma;
     png_set_expand(r.png);       // palette to RGB, low-bit gray to 8 bits, tRNS to alpha
     png_set_gray_to_rgb(r.png);  // gray as RGB, so every image has 3 or 4 channels
     png_read_update_info(r.png, r.info);
@@ -116,4 +122,4 @@ bool is_png(const unsigned char* head, std::size_t bytes) {
 
 const ImageFormat kPngFormat{"PNG", ".png", false, write_png, read_png, is_png};
 
-}  // namespace hexant::tracer
+}  // namespace hexant::image

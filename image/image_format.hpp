@@ -1,5 +1,5 @@
 // Image files as hexant reads and writes them, one format per file under
-// image_formats/ and one line in image_format.cpp's table: PNG (8-bit sRGB,
+// formats/ and one line in image_format.cpp's table: PNG (8-bit sRGB,
 // libpng) and OpenEXR (linear float, the OpenEXR library). Each is linked
 // directly rather than through OpenImageIO, whose plugins and their
 // libraries cost every process about 120 MB of resident memory and half a
@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace hexant::tracer {
+namespace hexant::image {
 
 // An image as its file holds it, channel values interleaved, rows top to
 // bottom: `linear` values are linear light (EXR); otherwise they are the
@@ -20,6 +20,11 @@ struct StoredImage {
     int width = 0, height = 0, channels = 0;
     bool linear = false;
     std::vector<float> values;
+    // How a non-linear file says its values are encoded: a PNG's gAMA
+    // chunk (its encoding gamma, as 0.45455 for 2.2), or 0 when the file
+    // says sRGB (an sRGB chunk) or nothing (then sRGB, as PNG and W3C
+    // recommend).
+    double encoding_gamma = 0.0;
 };
 
 // One file format. `write` writes `width` x `height` RGB pixels: bytes in
@@ -50,4 +55,4 @@ std::string image_format_extensions();
 // format hexant reads, or is damaged.
 StoredImage read_stored_image(const std::filesystem::path& path);
 
-}  // namespace hexant::tracer
+}  // namespace hexant::image

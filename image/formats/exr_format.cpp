@@ -1,4 +1,4 @@
-#include "tracer/image_formats/exr_format.hpp"
+#include "image/formats/exr_format.hpp"
 
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace hexant::tracer {
+namespace hexant::image {
 
 namespace fs = std::filesystem;
 
@@ -84,4 +84,4 @@ bool is_exr(const unsigned char* head, std::size_t bytes) {
 
 const ImageFormat kExrFormat{"OpenEXR", ".exr", true, write_exr, read_exr, is_exr};
 
-}  // namespace hexant::tracer
+}  // namespace hexant::image

@@ -3,10 +3,10 @@
 // RGB, 16-bit kept exact).
 #pragma once
 
-#include "tracer/image_format.hpp"
+#include "image/image_format.hpp"
 
-namespace hexant::tracer {
+namespace hexant::image {
 
 extern const ImageFormat kPngFormat;
 
-}  // namespace hexant::tracer
+}  // namespace hexant::image

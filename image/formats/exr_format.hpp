@@ -3,10 +3,10 @@
 // and B channels (and A when it has one), half or float.
 #pragma once
 
-#include "tracer/image_format.hpp"
+#include "image/image_format.hpp"
 
-namespace hexant::tracer {
+namespace hexant::image {
 
 extern const ImageFormat kExrFormat;
 
-}  // namespace hexant::tracer
+}  // namespace hexant::image

@@ -1,4 +1,4 @@
-#include "tracer/image_format.hpp"
+#include "image/image_format.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -8,10 +8,10 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "tracer/image_formats/exr_format.hpp"
-#include "tracer/image_formats/png_format.hpp"
+#include "image/formats/exr_format.hpp"
+#include "image/formats/png_format.hpp"
 
-namespace hexant::tracer {
+namespace hexant::image {
 
 namespace fs = std::filesystem;
 
@@ -66,4 +66,4 @@ StoredImage read_stored_image(const fs::path& path) {
                              image_format_extensions() + " file");
 }
 
-}  // namespace hexant::tracer
+}  // namespace hexant::image

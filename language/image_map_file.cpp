@@ -1,0 +1,50 @@
+#include "language/image_map_file.hpp"
+
+#include <cmath>
+#include <cstddef>
+#include <stdexcept>
+
+namespace hexant::language {
+
+namespace {
+
+// The sRGB transfer function's decoding (IEC 61966-2-1), as POV-Ray's
+// SRGBGammaCurve.
+double srgb_decode(double x) { return x <= 0.04045 ? x / 12.92 : std::pow((x + 0.055) / 1.055, 2.4); }
+
+}  // namespace
+
+runtime::pattern::ImagePixels image_pixels(const image::StoredImage& stored, const ImageGamma& gamma,
+                                           double assumed_gamma) {
+    if (stored.channels != 3 && stored.channels != 4)
+        throw std::logic_error("image_pixels: an image of " + std::to_string(stored.channels) + " channels");
+    // Decoding: the scene's gamma, else the file's (OpenEXR is linear; a
+    // PNG's gAMA chunk gives its encoding gamma; else sRGB).
+    const auto decode = [&](double x) {
+        if (gamma.srgb) return srgb_decode(x);
+        if (gamma.power) return std::pow(x, *gamma.power);
+        if (stored.linear) return x;
+        if (stored.encoding_gamma > 0.0) return std::pow(x, 1.0 / stored.encoding_gamma);
+        return srgb_decode(x);
+    };
+    const bool working_linear = assumed_gamma == 1.0;
+    runtime::pattern::ImagePixels out;
+    out.width = stored.width;
+    out.height = stored.height;
+    const std::size_t n = static_cast<std::size_t>(stored.width) * static_cast<std::size_t>(stored.height);
+    out.rgbt.resize(n * 4);
+    for (std::size_t i = 0; i < n; ++i) {
+        const float* in = stored.values.data() + i * static_cast<std::size_t>(stored.channels);
+        for (std::size_t c = 0; c < 3; ++c) {
+            double v = decode(in[c]);
+            if (!working_linear && v > 0.0) v = std::pow(v, 1.0 / assumed_gamma);
+            // (A NaN or infinite value in an OpenEXR file is taken as 0.)
+            out.rgbt[i * 4 + c] = std::isfinite(v) ? static_cast<float>(v) : 0.0f;
+        }
+        const double alpha = stored.channels == 4 ? in[3] : 1.0;
+        out.rgbt[i * 4 + 3] = std::isfinite(alpha) ? static_cast<float>(1.0 - alpha) : 0.0f;
+    }
+    return out;
+}
+
+}  // namespace hexant::language

@@ -1,0 +1,51 @@
+// POV-Ray's image_map: a pigment whose colour is read from an image laid
+// on the pattern's space by a map type (planar, spherical, cylindrical,
+// torus), tiled or `once`, its pixels taken as they are or interpolated
+// (POV-Ray 3.7's imageutil.cpp: image_map, map_pos, no_interpolation,
+// Interp, InterpolateBicubic).
+#pragma once
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "runtime/time_function.hpp"
+
+namespace hexant::runtime::pattern {
+
+// An image's pixels in the scene's working colour space (linear light for
+// assumed_gamma 1), rows top to bottom, each red, green, blue and transmit
+// (1 - alpha; 0 for an image without alpha), in single precision as
+// POV-Ray keeps them.
+struct ImagePixels {
+    int width = 0, height = 0;
+    std::vector<float> rgbt;  // width * height * 4
+};
+
+struct ImageMap {
+    enum class MapType { Planar = 0, Spherical = 1, Cylindrical = 2, Torus = 5 };
+    enum class Interpolate { None = 0, Bilinear = 2, Bicubic = 3, NormalizedDistance = 4 };
+
+    std::string file;  // as the scene named it (for messages and dump)
+    std::shared_ptr<const ImagePixels> pixels;
+    MapType map_type = MapType::Planar;
+    Interpolate interpolate = Interpolate::None;
+    bool once = false;
+    // The size the image spans, in pixels (its own, times `repeat`; single
+    // precision as POV-Ray's), and `offset` in pixels.
+    double width = 0.0, height = 0.0;
+    double offset_u = 0.0, offset_v = 0.0;
+    // filter all, transmit all: added to every pixel's.
+    TimeFunction filter_all = 0.0, transmit_all = 0.0;
+};
+
+// The colour at `point` (in the image map's space: the pigment's point
+// after its transforms and warps): red, green, blue, filter, transmit.
+// Outside an image used `once`, clear (white, transmit 1), as POV-Ray.
+std::array<double, 5> image_colour(const ImageMap& map, const glm::dvec3& point, double filter_all,
+                                   double transmit_all);
+
+}  // namespace hexant::runtime::pattern
