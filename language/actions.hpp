@@ -1124,21 +1124,41 @@ HEXANT_ACTION(image_file_type) {
 HEXANT_ACTION(image_map_file) {
     HEXANT_APPLY {
         Value v = st.pop();
-        if (v.is<TimedString>())
-            throw UnsupportedError("an image_map's file that changes with clock is not supported by hexant yet (" +
-                                   v.as<TimedString>().describe() + ")");
-        if (!v.is<std::string>()) throw ValueError("image_map's file is a string, not a " + type_name(v));
-        const std::string name = v.as<std::string>();
         auto& b = st.block<ImageMapBuilder>(in.position(), "image_map's file");
-        const std::filesystem::path path = st.resolve_include(name, in.position(), "image file");
-        try {
-            b.stored = std::make_shared<const image::StoredImage>(image::read_stored_image(path));
-        } catch (const std::runtime_error& e) {
-            throw ValueError(std::string("image_map: ") + e.what());
+        const auto read = [&](const std::string& name) {
+            const std::filesystem::path path = st.resolve_include(name, in.position(), "image file");
+            try {
+                return std::make_shared<const image::StoredImage>(image::read_stored_image(path));
+            } catch (const std::runtime_error& e) {
+                throw ValueError(std::string("image_map: ") + e.what());
+            }
+        };
+        const runtime::Interval always(-std::numeric_limits<double>::infinity(),
+                                       std::numeric_limits<double>::infinity());
+        if (v.is<std::string>()) {
+            b.map.file = v.as<std::string>();
+            b.stored.push_back({always, read(b.map.file)});
+        } else if (v.is<TimedString>()) {
+            // An image sequence: each file read once, each piece of time
+            // showing its own (the clock named where one fails).
+            const TimedString& names = v.as<TimedString>();
+            std::map<std::string, std::shared_ptr<const image::StoredImage>> files;
+            for (const auto& piece : names.pieces) {
+                auto& file = files[piece.text];
+                if (!file) {
+                    try {
+                        file = read(piece.text);
+                    } catch (const ValueError& e) {
+                        throw ValueError(std::string(e.what()) + " [clock " + std::to_string(piece.time.lo) + " to " +
+                                         std::to_string(piece.time.hi) + "]");
+                    }
+                }
+                b.stored.push_back({piece.time, file});
+            }
+            b.map.file = names.describe();
+        } else {
+            throw ValueError("image_map's file is a string, not a " + type_name(v));
         }
-        b.map.file = name;
-        b.map.width = static_cast<float>(b.stored->width);
-        b.map.height = static_cast<float>(b.stored->height);
     }
 };
 HEXANT_ACTION(image_map_gamma_srgb) {
@@ -1182,11 +1202,11 @@ HEXANT_ACTION(image_map_setting) {
             const double u = to_constant(Value{uv.c[0]}, name), w = to_constant(Value{uv.c[1]}, name);
             if (name == "repeat") {
                 if (!(u > 0.0) || !(w > 0.0)) throw ValueError("an image_map's repeat must be positive, as in POV-Ray");
-                b.map.width = static_cast<float>(b.stored->width * u);
-                b.map.height = static_cast<float>(b.stored->height * w);
+                b.map.repeat_u = u;
+                b.map.repeat_v = w;
             } else {
-                b.map.offset_u = u * -b.stored->width;
-                b.map.offset_v = w * -b.stored->height;
+                b.map.offset_u = u;
+                b.map.offset_v = w;
             }
         }
     }
@@ -1222,8 +1242,15 @@ HEXANT_ACTION(image_map_block) {
         ImageMapBuilder b = std::move(std::get<ImageMapBuilder>(st.blocks.back()));
         st.blocks.pop_back();
         auto map = std::make_shared<runtime::pattern::ImageMap>(std::move(b.map));
-        map->pixels = std::make_shared<const runtime::pattern::ImagePixels>(
-            image_pixels(*b.stored, b.gamma, st.scene.global.assumed_gamma));
+        // (Each distinct file decoded once.)
+        std::map<const image::StoredImage*, std::shared_ptr<const runtime::pattern::ImagePixels>> decoded;
+        for (const auto& [time, stored] : b.stored) {
+            auto& pixels = decoded[stored.get()];
+            if (!pixels)
+                pixels = std::make_shared<const runtime::pattern::ImagePixels>(
+                    image_pixels(*stored, b.gamma, st.scene.global.assumed_gamma));
+            map->images.push_back({time, pixels});
+        }
         auto& pigment = st.block<runtime::Pigment>(in.position(), "image_map");
         // (The pigment's modifiers, turbulence and warps, place the image.)
         pigment.pattern = runtime::Pigment::Pattern::Image;

@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 #include <map>
 #include <memory>
 #include <new>
@@ -59,7 +60,9 @@ struct MaterialBuilder {
 // block closes, after its gamma), and what was said of it.
 struct ImageMapBuilder {
     runtime::pattern::ImageMap map;
-    std::shared_ptr<const image::StoredImage> stored;
+    // The files as read, over their pieces of time (one piece for a file
+    // named once), and each distinct file once.
+    std::vector<std::pair<runtime::Interval, std::shared_ptr<const image::StoredImage>>> stored;
     ImageGamma gamma;
     bool gamma_srgb_next = false;  // `gamma srgb` just read
     bool all_next = false;         // `filter all` / `transmit all` being read

@@ -12,7 +12,7 @@ bool Pigment::depends_on_time() const {
     if (pattern == Pattern::Solid) return colours.front().depends_on_time();
     if (pattern == Pattern::Unsupported) return false;
     if (pattern == Pattern::Image)
-        return patterned.depends_on_time() || transform.depends_on_time() ||
+        return patterned.depends_on_time() || transform.depends_on_time() || image_map->images.size() > 1 ||
                image_map->filter_all.depends_on_time() || image_map->transmit_all.depends_on_time();
     if (patterned.depends_on_time() || colour_map.depends_on_time() || transform.depends_on_time()) return true;
     for (const auto& e : pigment_map)

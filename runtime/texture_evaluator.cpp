@@ -299,7 +299,7 @@ std::array<double, 5> TextureEvaluator::CompiledPigment::colour(const glm::dvec3
     const CompiledPattern& p = *pattern;
     const pattern::Values v = p.values(t);
     const glm::dvec3 point = p.point(where, t, v);
-    if (image) return pattern::image_colour(*image, point, filter_all.at(t), transmit_all.at(t));
+    if (image) return pattern::image_colour(*image, point, t, filter_all.at(t), transmit_all.at(t));
     const double value = p.value(point, t, v);
     if (!pigments.empty()) {
         // POV-Ray's Compute_Pigment with a pigment map: the neighbouring

@@ -1,5 +1,6 @@
 #include "runtime/pattern/image_map.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -30,17 +31,28 @@ double turn(double x, double z, double len) {
     return theta;
 }
 
+// The size the image spans and its offset, in pixels: its own size times
+// `repeat`, in single precision as POV-Ray's image->width (POV-Ray's
+// Parse_Image_Map).
+struct Span {
+    double width, height, offset_u, offset_v;
+};
+Span span_of(const ImageMap& map, const ImagePixels& image) {
+    return {static_cast<float>(image.width * map.repeat_u), static_cast<float>(image.height * map.repeat_v),
+            map.offset_u * -image.width, map.offset_v * -image.height};
+}
+
 // The image coordinates (u, v) of a point by the map type; false where the
 // map has none (POV-Ray's planar_image_map and its siblings).
-bool map_coordinates(const ImageMap& map, const glm::dvec3& p, double& u, double& v) {
+bool map_coordinates(const ImageMap& map, const Span& span, const glm::dvec3& p, double& u, double& v) {
     double x = p.x, y = p.y, z = p.z;
     switch (map.map_type) {
         case ImageMap::MapType::Planar:
             // (POV-Ray's gradient <1, -1, 0>: u along x, v along y.)
             if (map.once && (x < 0.0 || x > 1.0)) return false;
-            u = std::fmod(x * map.width, map.width);
+            u = std::fmod(x * span.width, span.width);
             if (map.once && (y < 0.0 || y > 1.0)) return false;
-            v = std::fmod(y * map.height, map.height);
+            v = std::fmod(y * span.height, span.height);
             return true;
         case ImageMap::MapType::Spherical: {
             double len = std::sqrt(x * x + y * y + z * z);
@@ -51,20 +63,20 @@ bool map_coordinates(const ImageMap& map, const glm::dvec3& p, double& u, double
             const double phi = 0.5 + std::asin(y) / std::numbers::pi;
             len = std::sqrt(x * x + z * z);
             const double theta = len == 0.0 ? 0.0 : turn(x, z, len) / kTwoPi;
-            u = theta * map.width;
-            v = phi * map.height;
+            u = theta * span.width;
+            v = phi * span.height;
             return true;
         }
         case ImageMap::MapType::Cylindrical: {
             if (map.once && (y < 0.0 || y > 1.0)) return false;
-            v = std::fmod(y * map.height, map.height);
+            v = std::fmod(y * span.height, span.height);
             double len = std::sqrt(x * x + y * y + z * z);
             if (len == 0.0) return false;
             x /= len;
             z /= len;
             len = std::sqrt(x * x + z * z);
             if (len == 0.0) return false;
-            u = turn(x, z, len) / kTwoPi * map.width;
+            u = turn(x, z, len) / kTwoPi * span.width;
             return true;
         }
         case ImageMap::MapType::Torus: {
@@ -77,8 +89,8 @@ bool map_coordinates(const ImageMap& map, const glm::dvec3& p, double& u, double
             if (len == 0.0) return false;  // (POV-Ray divides by it)
             double phi = std::acos(-x / len);
             if (y > 0.0) phi = kTwoPi - phi;
-            u = -(theta / kTwoPi) * map.width;
-            v = phi / kTwoPi * map.height;
+            u = -(theta / kTwoPi) * span.width;
+            v = phi / kTwoPi * span.height;
             return true;
         }
     }
@@ -92,8 +104,8 @@ struct Rgbft {
 // The pixel at (x, y) (image coordinates, rows from the top): wrapped, or
 // clamped to the edge for an image used once (POV-Ray's no_interpolation),
 // with filter all and transmit all added.
-Rgbft pixel(const ImageMap& map, double x, double y, double filter_all, double transmit_all) {
-    const ImagePixels& image = *map.pixels;
+Rgbft pixel(const ImageMap& map, const ImagePixels& image, double x, double y, double filter_all,
+            double transmit_all) {
     int ix, iy;
     if (map.once) {
         ix = x < 0.0 ? 0 : x >= image.width ? image.width - 1 : static_cast<int>(x);
@@ -150,18 +162,26 @@ void cubic_weights(double x, double f[4]) {
 
 }  // namespace
 
-std::array<double, 5> image_colour(const ImageMap& map, const glm::dvec3& point, double filter_all,
+const ImagePixels& ImageMap::at(double t) const {
+    // (The last piece starting at or before t.)
+    const auto after = std::upper_bound(images.begin(), images.end(), t,
+                                        [](double x, const Piece& p) { return x < p.time.lo; });
+    return *(after == images.begin() ? images.front() : *(after - 1)).pixels;
+}
+
+std::array<double, 5> image_colour(const ImageMap& map, const glm::dvec3& point, double t, double filter_all,
                                    double transmit_all) {
-    const ImagePixels& image = *map.pixels;
+    const ImagePixels& image = map.at(t);
+    const Span span = span_of(map, image);
     double u = 0.0, v = 0.0;
     // (POV-Ray's image_map: outside the map's coverage, clear white.)
     const std::array<double, 5> clear{1.0, 1.0, 1.0, 0.0, 1.0};
-    if (!map_coordinates(map, point, u, v)) return clear;
+    if (!map_coordinates(map, span, point, u, v)) return clear;
     if (!std::isfinite(u) || !std::isfinite(v)) return clear;  // (a point at infinity, or NaN)
     // POV-Ray's map_pos: the offset and a nudge, then the image's rows
     // counted from the top.
-    double x = u + map.offset_u + kEpsilon;
-    double y = v + map.offset_v + kEpsilon;
+    double x = u + span.offset_u + kEpsilon;
+    double y = v + span.offset_v + kEpsilon;
     if (map.once && (x >= image.width || y >= image.height || x < 0.0 || y < 0.0)) return clear;
     x = wrap(x, image.width);
     y = wrap(-y, image.height);
@@ -169,17 +189,17 @@ std::array<double, 5> image_colour(const ImageMap& map, const glm::dvec3& point,
     Rgbft sum;
     switch (map.interpolate) {
         case ImageMap::Interpolate::None:
-            sum = pixel(map, x, y, filter_all, transmit_all);
+            sum = pixel(map, image, x, y, filter_all, transmit_all);
             break;
         case ImageMap::Interpolate::Bilinear:
         case ImageMap::Interpolate::NormalizedDistance: {
             x += 0.5;
             y += 0.5;
             const int ix = static_cast<int>(x), iy = static_cast<int>(y);
-            const Rgbft corners[4] = {pixel(map, ix, iy, filter_all, transmit_all),
-                                      pixel(map, ix - 1.0, iy, filter_all, transmit_all),
-                                      pixel(map, ix, iy - 1.0, filter_all, transmit_all),
-                                      pixel(map, ix - 1.0, iy - 1.0, filter_all, transmit_all)};
+            const Rgbft corners[4] = {pixel(map, image, ix, iy, filter_all, transmit_all),
+                                      pixel(map, image, ix - 1.0, iy, filter_all, transmit_all),
+                                      pixel(map, image, ix, iy - 1.0, filter_all, transmit_all),
+                                      pixel(map, image, ix - 1.0, iy - 1.0, filter_all, transmit_all)};
             double w[4];
             corner_weights(map.interpolate, x, y, w);
             for (int i = 0; i < 4; ++i)
@@ -195,7 +215,7 @@ std::array<double, 5> image_colour(const ImageMap& map, const glm::dvec3& point,
             cubic_weights(y, fy);
             for (int i = 0; i < 4; ++i)
                 for (int j = 0; j < 4; ++j) {
-                    const Rgbft corner = pixel(map, ix + i - 2.0, iy + j - 2.0, filter_all, transmit_all);
+                    const Rgbft corner = pixel(map, image, ix + i - 2.0, iy + j - 2.0, filter_all, transmit_all);
                     for (int c = 0; c < 5; ++c) sum.c[c] += corner.c[c] * (fx[i] * fy[j]);
                 }
             break;

@@ -12,6 +12,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "runtime/interval.hpp"
 #include "runtime/time_function.hpp"
 
 namespace hexant::runtime::pattern {
@@ -30,22 +31,34 @@ struct ImageMap {
     enum class Interpolate { None = 0, Bilinear = 2, Bicubic = 3, NormalizedDistance = 4 };
 
     std::string file;  // as the scene named it (for messages and dump)
-    std::shared_ptr<const ImagePixels> pixels;
+    // The image over each piece of time, in time order: one piece over all
+    // time for a file named once; an image sequence when the file's name
+    // changes with clock (concat("f", str(frame_number, -3, 0), ".png")).
+    struct Piece {
+        Interval time;
+        std::shared_ptr<const ImagePixels> pixels;
+    };
+    std::vector<Piece> images;
     MapType map_type = MapType::Planar;
     Interpolate interpolate = Interpolate::None;
     bool once = false;
-    // The size the image spans, in pixels (its own, times `repeat`; single
-    // precision as POV-Ray's), and `offset` in pixels.
-    double width = 0.0, height = 0.0;
+    // repeat <u, v> and offset <u, v> as written (POV-Ray scales them by
+    // each image's size).
+    double repeat_u = 1.0, repeat_v = 1.0;
     double offset_u = 0.0, offset_v = 0.0;
     // filter all, transmit all: added to every pixel's.
     TimeFunction filter_all = 0.0, transmit_all = 0.0;
+
+    // The image at time t (the piece holding t; before the first, the
+    // first; after the last, the last).
+    const ImagePixels& at(double t) const;
 };
 
 // The colour at `point` (in the image map's space: the pigment's point
-// after its transforms and warps): red, green, blue, filter, transmit.
-// Outside an image used `once`, clear (white, transmit 1), as POV-Ray.
-std::array<double, 5> image_colour(const ImageMap& map, const glm::dvec3& point, double filter_all,
+// after its transforms and warps) at time t: red, green, blue, filter,
+// transmit. Outside an image used `once`, clear (white, transmit 1), as
+// POV-Ray.
+std::array<double, 5> image_colour(const ImageMap& map, const glm::dvec3& point, double t, double filter_all,
                                    double transmit_all);
 
 }  // namespace hexant::runtime::pattern

@@ -121,6 +121,27 @@ TEST_CASE("texture_map, normal_map, slope_map and block lists read as POV-Ray re
     CHECK(texture_of(scene, 4).normal->normal_map.size() == 3);
 }
 
+TEST_CASE("an image_map whose file changes with clock is an image sequence", "[language][pattern][image]") {
+    // A branch on clock sets the file's name: one image before clock 0.5,
+    // another after (an image sequence, as str(frame_number) names one).
+    hexant::language::ParseOptions options = hexant::test::animation();
+    std::ostringstream messages;
+    options.messages = &messages;
+    options.include_paths = {std::string(HEXANT_SOURCE_DIR) + "/tests/tracer/pov_reference/textures"};
+    const auto scene = hexant::language::parse_scene_text(
+        "#declare F = \"tiles.png\";\n#if (clock > 0.5) #declare F = \"gamma18.png\"; #end\n"
+        "sphere { 0, 1 pigment { image_map { png F } } }\n",
+        "test.pov", options);
+    const rt::Texture& t = texture_of(scene, 0);
+    REQUIRE(t.pigment.pattern == rt::Pigment::Pattern::Image);
+    const auto& map = *t.pigment.image_map;
+    REQUIRE(map.images.size() == 2);
+    CHECK(map.at(0.25).width == 8);
+    CHECK(map.at(0.75).width == 5);
+    CHECK(t.pigment.depends_on_time());
+    CHECK(map.file.find("tiles.png") != std::string::npos);
+}
+
 TEST_CASE("what POV-Ray refuses in textures is an error where it is written", "[language][pattern]") {
     const auto error = [](const std::string& text, const char* words,
                           hexant::language::ParseOptions options = {}) {

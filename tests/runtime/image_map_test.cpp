@@ -23,13 +23,12 @@ pt::ImageMap two_by_two() {
     pixels->width = pixels->height = 2;
     pixels->rgbt = {0.1f, 0, 0, 0, 0.2f, 0, 0, 0, 0.3f, 0, 0, 0, 0.4f, 0, 0, 0.5f};
     pt::ImageMap map;
-    map.pixels = pixels;
-    map.width = map.height = 2.0;
+    map.images.push_back({hexant::runtime::Interval(-1e300, 1e300), pixels});
     return map;
 }
 
 double red(const pt::ImageMap& map, double x, double y, double filter = 0.0, double transmit = 0.0) {
-    return pt::image_colour(map, {x, y, 0.0}, filter, transmit)[0];
+    return pt::image_colour(map, {x, y, 0.0}, 0.0, filter, transmit)[0];
 }
 
 }  // namespace
@@ -43,7 +42,7 @@ TEST_CASE("image_map: a planar point reads its pixel, the image tiled", "[patter
     CHECK(red(map, 1.25, -0.75) == Approx(0.3));  // tiled both ways
     CHECK(red(map, -0.75, 2.75) == Approx(0.1));
     // The clear pixel's transmit, and transmit all added to it; filter all.
-    const auto c = pt::image_colour(map, {0.75, 0.25, 0.0}, 0.25, 0.125);
+    const auto c = pt::image_colour(map, {0.75, 0.25, 0.0}, 0.0, 0.25, 0.125);
     CHECK(c[3] == Approx(0.25));
     CHECK(c[4] == Approx(0.625));
 }
@@ -53,7 +52,7 @@ TEST_CASE("image_map: once shows the image one time and is clear outside", "[pat
     map.once = true;
     CHECK(red(map, 0.25, 0.75) == Approx(0.1));
     for (const auto& p : {glm::dvec3(1.5, 0.5, 0), glm::dvec3(0.5, -0.5, 0), glm::dvec3(-0.1, 0.5, 0)}) {
-        const auto c = pt::image_colour(map, p, 0.0, 0.0);
+        const auto c = pt::image_colour(map, p, 0.0, 0.0, 0.0);
         CHECK(c[0] == 1.0);
         CHECK(c[4] == 1.0);
     }
@@ -85,10 +84,23 @@ TEST_CASE("image_map: a point that is not finite reads clear, never NaN", "[patt
         map.map_type = type;
         for (const glm::dvec3 p : {glm::dvec3(inf, 0, 0), glm::dvec3(nan, 0.5, 0), glm::dvec3(0, 0, 0),
                                    glm::dvec3(1e300, -1e300, 1e300), glm::dvec3(1, 0, 0)}) {
-            const auto c = pt::image_colour(map, p, 0.0, 0.0);
+            const auto c = pt::image_colour(map, p, 0.0, 0.0, 0.0);
             for (const double v : c) CHECK(std::isfinite(v));
         }
     }
+}
+
+TEST_CASE("image_map: an image sequence shows the image of each piece of time", "[pattern][image]") {
+    pt::ImageMap map = two_by_two();
+    auto other = std::make_shared<pt::ImagePixels>(*map.images[0].pixels);
+    other->rgbt[0] = 0.9f;
+    map.images = {{hexant::runtime::Interval(0.0, 0.5), map.images[0].pixels},
+                  {hexant::runtime::Interval(0.5 + 1e-12, 1.0), other}};
+    const auto top_left = [&](double t) { return pt::image_colour(map, {0.25, 0.75, 0.0}, t, 0.0, 0.0)[0]; };
+    CHECK(top_left(0.25) == Approx(0.1));
+    CHECK(top_left(0.75) == Approx(0.9));
+    CHECK(top_left(-1.0) == Approx(0.1));  // before the first piece: the first
+    CHECK(top_left(2.0) == Approx(0.9));   // after the last: the last
 }
 
 TEST_CASE("image_map's file: decoded as POV-Ray 3.7 decodes it", "[pattern][image]") {
