@@ -1,6 +1,7 @@
 #include "app/scene_dump.hpp"
 
 #include <cstdio>
+#include <map>
 #include <string>
 
 namespace hexant::app {
@@ -68,7 +69,42 @@ std::string modifiers(const runtime::pattern::Pattern& p, double t) {
     return s;
 }
 
-std::string pigment(const runtime::Pigment& p, double t) {
+// The map entries of one line: a declared graph of maps may use one entry
+// many times (T1 a checker of T0 and T0 scaled, T2 of T1 ...), exponential
+// printed as a tree. An entry used more than once is printed in full the
+// first time, as `[#k ...]`, and as `[#k]` after.
+class Shared {
+public:
+    // Counts the uses of every entry under a texture, pigment or normal
+    // (each entry's own entries once).
+    void count(const runtime::Texture& x) {
+        count(x.pigment);
+        if (x.normal) count(*x.normal);
+        for (const auto& layer : x.below) count(layer);
+        for (const auto& e : x.texture_map)
+            if (++uses_[e.texture.get()] == 1) count(*e.texture);
+    }
+    void count(const runtime::Pigment& p) {
+        for (const auto& e : p.pigment_map)
+            if (++uses_[e.pigment.get()] == 1) count(*e.pigment);
+    }
+    void count(const runtime::Normal& n) {
+        for (const auto& e : n.normal_map)
+            if (++uses_[e.normal.get()] == 1) count(*e.normal);
+    }
+    template <class Print>
+    std::string entry(const void* record, Print print) {
+        if (uses_[record] < 2) return "[" + print() + "]";
+        const auto [it, first] = labels_.try_emplace(record, static_cast<int>(labels_.size()) + 1);
+        const std::string label = "#" + std::to_string(it->second);
+        return first ? "[" + label + " " + print() + "]" : "[" + label + "]";
+    }
+
+private:
+    std::map<const void*, int> uses_, labels_;
+};
+
+std::string pigment(const runtime::Pigment& p, double t, Shared& shared) {
     switch (p.pattern) {
         case runtime::Pigment::Pattern::Solid: return "solid" + colour(p.colours[0], t);
         case runtime::Pigment::Pattern::Patterned: {
@@ -76,7 +112,8 @@ std::string pigment(const runtime::Pigment& p, double t) {
             // colour, or value and pigment).
             std::string s = std::string(p.patterned.kind->name) + modifiers(p.patterned, t);
             for (const auto& e : p.colour_map.entries) s += " " + number(e.value(t)) + colour(e.colour, t);
-            for (const auto& e : p.pigment_map) s += " " + number(e.value(t)) + "[" + pigment(*e.pigment, t) + "]";
+            for (const auto& e : p.pigment_map)
+                s += " " + number(e.value(t)) + shared.entry(e.pigment.get(), [&] { return pigment(*e.pigment, t, shared); });
             return s;
         }
         case runtime::Pigment::Pattern::Image:
@@ -89,38 +126,40 @@ std::string pigment(const runtime::Pigment& p, double t) {
     return "";
 }
 
-std::string normal(const runtime::Normal& n, double t) {
+std::string normal(const runtime::Normal& n, double t, Shared& shared) {
     if (!n.unsupported_name.empty()) return n.unsupported_name;
     std::string s = std::string(n.patterned.kind->name) + " amount=" + number(n.amount(t)) + modifiers(n.patterned, t);
     // A normal map's entries (value and normal), a slope map's (value,
     // height, slope).
-    for (const auto& e : n.normal_map) s += " " + number(e.value(t)) + "[" + normal(*e.normal, t) + "]";
+    for (const auto& e : n.normal_map)
+        s += " " + number(e.value(t)) + shared.entry(e.normal.get(), [&] { return normal(*e.normal, t, shared); });
     for (const auto& e : n.slope_map)
         s += " " + number(e.value(t)) + "<" + number(e.height(t)) + ", " + number(e.slope(t)) + ">";
     return s;
 }
 
-std::string layer(const runtime::Texture& texture, double t);
+std::string layer(const runtime::Texture& texture, double t, Shared& shared);
 
 // A texture at t: its one layer, or its layers top first, or its pattern
 // and texture map.
-std::string texture(const runtime::Texture& x, double t) {
+std::string texture(const runtime::Texture& x, double t, Shared& shared) {
     if (x.is_patterned()) {
         // The pattern, then its map's entries (value and texture).
         std::string s = "texture_map=" + std::string(x.patterned.kind->name) + modifiers(x.patterned, t);
-        for (const auto& e : x.texture_map) s += " " + number(e.value(t)) + "[" + texture(*e.texture, t) + "]";
+        for (const auto& e : x.texture_map)
+            s += " " + number(e.value(t)) + shared.entry(e.texture.get(), [&] { return texture(*e.texture, t, shared); });
         return s;
     }
-    std::string s = layer(x, t);
+    std::string s = layer(x, t, shared);
     // The layers under it, top first.
-    for (const auto& under : x.below) s += " under [" + layer(under, t) + "]";
+    for (const auto& under : x.below) s += " under [" + layer(under, t, shared) + "]";
     return s;
 }
 
 // A plain texture's pigment, normal and finish at t.
-std::string layer(const runtime::Texture& texture, double t) {
-    std::string s = "pigment=" + pigment(texture.pigment, t);
-    if (texture.normal) s += " normal=" + normal(*texture.normal, t);
+std::string layer(const runtime::Texture& texture, double t, Shared& shared) {
+    std::string s = "pigment=" + pigment(texture.pigment, t, shared);
+    if (texture.normal) s += " normal=" + normal(*texture.normal, t, shared);
     const auto& f = texture.finish;
     s += " finish=ambient:" + number(f.ambient(t)) + ",diffuse:" + number(f.diffuse(t)) +
          ",brilliance:" + number(f.brilliance(t)) + ",phong:" + number(f.phong(t)) +
@@ -199,7 +238,11 @@ void dump_object(const runtime::ObjectRecord& top, const std::string& top_name, 
         if (!object->lifetime.contains(t)) continue;
         out << name << " " << std::visit(ShapeWriter{t}, object->shape) << " "
             << transform(object->transform, t);
-        if (object->texture) out << " " << texture(*object->texture, t);
+        if (object->texture) {
+            Shared shared;
+            shared.count(*object->texture);
+            out << " " << texture(*object->texture, t, shared);
+        }
         if (object->interior) out << " ior=" << number(object->interior->ior(t));
         out << " no_shadow=" << object->no_shadow << " hollow=" << object->hollow
             << " inverse=" << object->inverse << "\n";
@@ -217,11 +260,19 @@ void dump_scene(const runtime::SceneDescription& scene, double t, std::ostream& 
     out << "camera location=" << vector(camera.location) << " direction=" << vector(camera.direction)
         << " right=" << vector(camera.right) << " up=" << vector(camera.up)
         << " sky=" << vector(camera.sky) << "\n";
-    if (scene.camera.normal) out << "camera normal=" << normal(*scene.camera.normal, t) << "\n";
+    if (scene.camera.normal) {
+        Shared shared;
+        shared.count(*scene.camera.normal);
+        out << "camera normal=" << normal(*scene.camera.normal, t, shared) << "\n";
+    }
     out << "background colour=" << colour(scene.background, t) << "\n";
     if (scene.sky_sphere) {
         out << "sky_sphere emission=" << colour(scene.sky_sphere->emission, t);
-        for (const auto& p : scene.sky_sphere->pigments) out << " pigment=" << pigment(p, t);
+        for (const auto& p : scene.sky_sphere->pigments) {
+            Shared shared;
+            shared.count(p);
+            out << " pigment=" << pigment(p, t, shared);
+        }
         out << "\n";
     }
     for (const auto& fog : scene.fogs)

@@ -25,6 +25,13 @@ struct StoredImage {
     // says sRGB (an sRGB chunk) or nothing (then sRGB, as PNG and W3C
     // recommend).
     double encoding_gamma = 0.0;
+    // What the file held before it was expanded to RGB or RGBA: its colour
+    // type, its bits per sample, and whether its alpha came from a colour
+    // key (a PNG tRNS chunk on an RGB or gray image).
+    enum class Source { Rgb, RgbAlpha, Gray, GrayAlpha, Palette };
+    Source source = Source::Rgb;
+    int source_bits = 8;
+    bool colour_key = false;
 };
 
 // One file format. `write` writes `width` x `height` RGB pixels: bytes in

@@ -1005,6 +1005,14 @@ inline void check_map_pattern(const runtime::pattern::Pattern& pattern, const ch
                          ", as in POV-Ray");
 }
 
+HEXANT_ACTION(pigment_list_pigment) {
+    HEXANT_APPLY {
+        auto entry = std::make_shared<runtime::Pigment>(st.pop().as<runtime::Pigment>());
+        auto& outer = st.block<runtime::Pigment>(in.position(), "a pigment");
+        add_to_block_list(outer.pigment_map, outer.patterned,
+                          std::shared_ptr<const runtime::Pigment>(std::move(entry)), "pigment");
+    }
+};
 HEXANT_ACTION(normal_map_open) {
     HEXANT_APPLY {
         auto& normal = st.block<runtime::Normal>(in.position(), "normal_map");
@@ -1184,12 +1192,13 @@ HEXANT_ACTION(image_map_setting) {
         auto& b = st.block<ImageMapBuilder>(in.position(), name.c_str());
         using M = runtime::pattern::ImageMap;
         if (name == "map_type") {
-            const double t = to_constant(v, "map_type");
+            // (POV-Ray takes the integer part.)
+            const double t = std::trunc(to_constant(v, "map_type"));
             if (t != 0.0 && t != 1.0 && t != 2.0 && t != 5.0)
                 throw ValueError("map_type is 0 (planar), 1 (spherical), 2 (cylindrical) or 5 (torus), as in POV-Ray");
             b.map.map_type = static_cast<M::MapType>(static_cast<int>(t));
         } else if (name == "interpolate") {
-            const double t = to_constant(v, "interpolate");
+            const double t = std::trunc(to_constant(v, "interpolate"));
             if (t != 2.0 && t != 3.0 && t != 4.0)
                 throw ValueError("interpolate is 2 (bilinear), 3 (bicubic) or 4 (normalized distance), as in POV-Ray");
             b.map.interpolate = static_cast<M::Interpolate>(static_cast<int>(t));
@@ -1235,6 +1244,7 @@ HEXANT_ACTION(image_map_filter) {
             throw UnsupportedError(name + " of one palette entry is not supported by hexant (it reads a palette "
                                    "image's colours); " + name + " all AMOUNT is");
         (name == "filter" ? b.map.filter_all : b.map.transmit_all) = to_float(args[0], name + " all");
+        if (name == "transmit") b.map.transmit_all_written = true;
     }
 };
 HEXANT_ACTION(image_map_block) {
@@ -1327,7 +1337,17 @@ HEXANT_ACTION(unsupported_pattern) {
 HEXANT_ACTION(pigment_block) {
     HEXANT_APPLY {
         (void)in;
-        Value v{std::get<runtime::Pigment>(st.blocks.back())};
+        auto& pigment = std::get<runtime::Pigment>(st.blocks.back());
+        // A block pattern given fewer pigments than it takes: the rest are
+        // its default colours (POV-Ray's Parse_Blend_List).
+        const auto* kind = pigment.patterned.kind;
+        if (kind && kind->argument == runtime::pattern::Kind::Argument::Colours && !pigment.pigment_map.empty())
+            for (std::size_t i = pigment.pigment_map.size(); i < pigment.colour_map.entries.size(); ++i) {
+                auto solid = std::make_shared<runtime::Pigment>();
+                solid->colours = {pigment.colour_map.entries[i].colour};
+                pigment.pigment_map.push_back({static_cast<double>(i), std::move(solid)});
+            }
+        Value v{pigment};
         st.blocks.pop_back();
         st.push(std::move(v));
     }

@@ -648,10 +648,13 @@ struct image_map_item : p::sor<image_map_gamma, image_map_setting, image_map_fla
 struct image_map_block
     : p::seq<image_map_open, p::opt<image_file_type>, p::must<image_map_file>, p::star<image_map_item>,
              p::must<rbrace>> {};
+struct pigment_block;
+// A block pattern's pigments: checker pigment { } pigment { }.
+struct pigment_list_pigment : p::seq<pigment_block, p::opt<comma>> {};
 struct pigment_item
     : p::sor<directive<pigment_item>, macro_call<pigment_item>, pattern_kind, pattern_setting,
-             pattern_wave, warp_block, pigment_colour_map, pigment_map_block, image_map_block, unsupported_pattern,
-             transformation> {};
+             pattern_wave, warp_block, pigment_colour_map, pigment_map_block, image_map_block, pigment_list_pigment,
+             unsupported_pattern, transformation> {};
 struct pigment_block
     : p::seq<pigment_open, p::opt<pigment_base>, p::star<pigment_item>, p::must<rbrace>> {};
 

@@ -1,5 +1,6 @@
 #include "language/image_map_file.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <stdexcept>
@@ -28,7 +29,17 @@ runtime::pattern::ImagePixels image_pixels(const image::StoredImage& stored, con
         return srgb_decode(x);
     };
     const bool working_linear = assumed_gamma == 1.0;
+    using Source = image::StoredImage::Source;
+    // POV-Ray 3.7 keeps a gray image of 8 bits or fewer as 8-bit integers
+    // after decoding (its Gray_Int8), truncated: dark tones are coarse
+    // there, and so here.
+    const bool coarse = stored.source == Source::Gray && stored.source_bits <= 8 && !stored.linear;
+    // It ignores an RGB image's colour key (tRNS); a gray one's it does not
+    // read well (it crashes): hexant keeps that one as alpha.
+    const bool keyed_rgb = stored.colour_key && stored.source == Source::Rgb;
     runtime::pattern::ImagePixels out;
+    out.premultiplied = stored.linear && stored.channels == 4;
+    out.palette = stored.source == Source::Palette;
     out.width = stored.width;
     out.height = stored.height;
     const std::size_t n = static_cast<std::size_t>(stored.width) * static_cast<std::size_t>(stored.height);
@@ -39,9 +50,11 @@ runtime::pattern::ImagePixels image_pixels(const image::StoredImage& stored, con
             double v = decode(in[c]);
             if (!working_linear && v > 0.0) v = std::pow(v, 1.0 / assumed_gamma);
             // (A NaN or infinite value in an OpenEXR file is taken as 0.)
-            out.rgbt[i * 4 + c] = std::isfinite(v) ? static_cast<float>(v) : 0.0f;
+            if (!std::isfinite(v)) v = 0.0;
+            if (coarse) v = std::floor(std::clamp(v, 0.0, 1.0) * 255.0) / 255.0;
+            out.rgbt[i * 4 + c] = static_cast<float>(v);
         }
-        const double alpha = stored.channels == 4 ? in[3] : 1.0;
+        const double alpha = stored.channels == 4 && !keyed_rgb ? in[3] : 1.0;
         out.rgbt[i * 4 + 3] = std::isfinite(alpha) ? static_cast<float>(1.0 - alpha) : 0.0f;
     }
     return out;

@@ -8,6 +8,7 @@
 #include <iostream>
 #include <regex>
 #include <sstream>
+#include <set>
 
 #include "language/actions.hpp"
 #include "language/checked_integer.hpp"
@@ -609,24 +610,46 @@ void for_each_nested(const runtime::ObjectRecord& object, Visit visit) {
 
 // A pattern hexant lacks, in a pigment (its pigment map's too) or a
 // normal: the error where the scene uses it (check says it, not only render).
-void check_pigment(const runtime::Pigment& pigment) {
+namespace {
+
+// (A declared graph of maps may share entries: each is checked once. A
+// texture and its pigment share an address: the kind is part of the key.)
+using Checked = std::set<std::pair<int, const void*>>;
+void check(const runtime::Pigment& pigment, Checked& seen) {
+    if (!seen.insert({0, &pigment}).second) return;
     if (pigment.pattern == runtime::Pigment::Pattern::Unsupported)
         throw ValueError("pigment pattern '" + pigment.unsupported_name + "' (written at " +
                          pigment.unsupported_place.to_string() + ") is not supported by hexant");
-    for (const auto& entry : pigment.pigment_map) check_pigment(*entry.pigment);
+    for (const auto& entry : pigment.pigment_map) check(*entry.pigment, seen);
+}
+void check(const runtime::Normal& normal, Checked& seen) {
+    if (!seen.insert({1, &normal}).second) return;
+    if (!normal.unsupported_name.empty())
+        throw ValueError("normal pattern '" + normal.unsupported_name + "' (written at " +
+                         normal.unsupported_place.to_string() + ") is not supported by hexant");
+    for (const auto& entry : normal.normal_map) check(*entry.normal, seen);
+}
+void check(const runtime::Texture& texture, Checked& seen) {
+    if (!seen.insert({2, &texture}).second) return;
+    check(texture.pigment, seen);
+    if (texture.normal) check(*texture.normal, seen);
+    for (const auto& layer : texture.below) check(layer, seen);
+    for (const auto& entry : texture.texture_map) check(*entry.texture, seen);
+}
+
+}  // namespace
+
+void check_pigment(const runtime::Pigment& pigment) {
+    Checked seen;
+    check(pigment, seen);
 }
 void check_normal(const std::optional<runtime::Normal>& normal) {
-    if (!normal) return;
-    if (!normal->unsupported_name.empty())
-        throw ValueError("normal pattern '" + normal->unsupported_name + "' (written at " +
-                         normal->unsupported_place.to_string() + ") is not supported by hexant");
-    for (const auto& entry : normal->normal_map) check_normal(*entry.normal);
+    Checked seen;
+    if (normal) check(*normal, seen);
 }
 void check_texture(const runtime::Texture& texture) {
-    check_pigment(texture.pigment);
-    check_normal(texture.normal);
-    for (const auto& layer : texture.below) check_texture(layer);
-    for (const auto& entry : texture.texture_map) check_texture(*entry.texture);
+    Checked seen;
+    check(texture, seen);
 }
 
 namespace {

@@ -207,19 +207,37 @@ const pattern::Pattern& supported(const Normal& n) {
 
 }  // namespace
 
+struct TextureEvaluator::Shared {
+    std::map<const Texture*, std::shared_ptr<const CompiledTexture>> textures;
+    std::map<const Pigment*, std::shared_ptr<const CompiledPigment>> pigments;
+    std::map<const Normal*, std::shared_ptr<const CompiledNormal>> normals;
+    // The entry compiled from `record` (in its pattern's space: nothing
+    // outside it), once.
+    template <class Compiled, class Record, class... Extra>
+    std::shared_ptr<const Compiled> entry(std::map<const Record*, std::shared_ptr<const Compiled>>& done,
+                                          const Record& record, const Extra&... extra) {
+        auto& slot = done[&record];
+        if (!slot) slot = std::make_shared<const Compiled>(record, Transform{}, extra..., *this);
+        return slot;
+    }
+};
+
 TextureEvaluator::TextureEvaluator(const Texture& texture, const std::optional<Interior>& interior)
-    : texture_(std::make_shared<const CompiledTexture>(texture, Transform{}, interior)),
+    : texture_([&] {
+          Shared shared;
+          return std::make_shared<const CompiledTexture>(texture, Transform{}, interior, shared);
+      }()),
       depends_on_time_(texture.depends_on_time() || (interior && interior->ior.depends_on_time())) {}
 
 TextureEvaluator::CompiledTexture::CompiledTexture(const Texture& texture, const Transform& outside,
-                                                   const std::optional<Interior>& interior) {
+                                                   const std::optional<Interior>& interior, Shared& shared) {
     if (texture.is_patterned()) {
         if (texture.patterned.kind == nullptr)
             throw std::logic_error("TextureEvaluator: a texture_map without its pattern");
         pattern.emplace(texture.patterned, texture.transform, outside);
         // (The entries live in this pattern's space: nothing outside it.)
         for (const auto& e : texture.texture_map) {
-            auto entry = std::make_shared<const CompiledTexture>(*e.texture, Transform{}, interior);
+            auto entry = shared.entry(shared.textures, *e.texture, interior);
             has_normal = has_normal || entry->has_normal;
             entries.push_back({CompiledScalar(e.value), std::move(entry)});
         }
@@ -229,9 +247,9 @@ TextureEvaluator::CompiledTexture::CompiledTexture(const Texture& texture, const
     here.append(outside);
     const auto add = [&](const Texture& layer, const Transform& to_world) {
         CompiledLayer c;
-        c.pigment = std::make_shared<const CompiledPigment>(layer.pigment, to_world);
+        c.pigment = std::make_shared<const CompiledPigment>(layer.pigment, to_world, shared);
         if (layer.normal) {
-            c.normal = std::make_shared<const CompiledNormal>(*layer.normal, to_world);
+            c.normal = std::make_shared<const CompiledNormal>(*layer.normal, to_world, shared);
             has_normal = true;
         }
         c.finish = compile(layer.finish, interior);
@@ -247,17 +265,18 @@ TextureEvaluator::CompiledTexture::CompiledTexture(const Texture& texture, const
     }
 }
 
-TextureEvaluator::CompiledNormal::CompiledNormal(const Normal& n, const Transform& texture)
+TextureEvaluator::CompiledNormal::CompiledNormal(const Normal& n, const Transform& texture, Shared& shared)
     : pattern(supported(n), n.transform, texture), amount(n.amount), accuracy(n.accuracy),
       no_bump_scale(n.no_bump_scale) {
     // (Each entry of a normal map in the space of this pattern.)
     for (const auto& e : n.normal_map)
-        normals.push_back({CompiledScalar(e.value), std::make_shared<const CompiledNormal>(*e.normal, Transform{})});
+        normals.push_back({CompiledScalar(e.value), shared.entry(shared.normals, *e.normal)});
     for (const auto& e : n.slope_map)
         slopes.push_back({CompiledScalar(e.value), CompiledScalar(e.height), CompiledScalar(e.slope)});
 }
 
-TextureEvaluator::CompiledPigment::CompiledPigment(const Pigment& pigment, const Transform& texture) {
+TextureEvaluator::CompiledPigment::CompiledPigment(const Pigment& pigment, const Transform& texture,
+                                                   Shared& shared) {
     if (pigment.pattern == Pigment::Pattern::Unsupported)
         throw ObjectError(pigment.unsupported_place,
                           "pigment pattern '" + pigment.unsupported_name + "' is not supported by hexant's tracer");
@@ -277,7 +296,7 @@ TextureEvaluator::CompiledPigment::CompiledPigment(const Pigment& pigment, const
     if (!pigment.pigment_map.empty()) {
         // (Each in the space of this pattern: no texture transform of its own.)
         for (const auto& e : pigment.pigment_map)
-            pigments.push_back({CompiledScalar(e.value), std::make_shared<const CompiledPigment>(*e.pigment, Transform{})});
+            pigments.push_back({CompiledScalar(e.value), shared.entry(shared.pigments, *e.pigment)});
         return;
     }
     const ColourMap& map = pigment.colour_map;

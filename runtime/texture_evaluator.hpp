@@ -150,6 +150,11 @@ private:
     // first (on the stack for the usual few).
     class NormalMaps;
 
+    // Map entries compiled once each while one texture is compiled: a
+    // scene may declare textures whose maps share entries (T1 a checker of
+    // T0 and T0 scaled, T2 of T1 ...), a graph that is exponential as a tree.
+    struct Shared;
+
     // A pigment: a colour, or a pattern through a colour map or a
     // pigment map of pigments (each evaluated in this pattern's space).
     struct CompiledPigment {
@@ -162,7 +167,7 @@ private:
         std::shared_ptr<const pattern::ImageMap> image;  // image_map (the pattern places it)
         CompiledScalar filter_all, transmit_all;
 
-        CompiledPigment(const Pigment& pigment, const Transform& texture);
+        CompiledPigment(const Pigment& pigment, const Transform& texture, Shared& shared);
         // The colour at `point` (in the space around it: the world for a
         // texture's pigment), rgb, filter, transmit.
         std::array<double, 5> colour(const glm::dvec3& point, double t) const;
@@ -176,7 +181,7 @@ private:
         std::vector<std::pair<CompiledScalar, std::shared_ptr<const CompiledNormal>>> normals;
         std::vector<std::array<CompiledScalar, 3>> slopes;  // value, height, slope
 
-        CompiledNormal(const Normal& normal, const Transform& texture);
+        CompiledNormal(const Normal& normal, const Transform& texture, Shared& shared);
         // `normal` (in the space around it) perturbed at `point` (there too).
         glm::dvec3 perturb(const glm::dvec3& normal, const glm::dvec3& point, double t) const;
     };
@@ -195,7 +200,8 @@ private:
         std::vector<std::pair<CompiledScalar, std::shared_ptr<const CompiledTexture>>> entries;
         bool has_normal = false;  // a layer here or below perturbs the normal
 
-        CompiledTexture(const Texture& texture, const Transform& outside, const std::optional<Interior>& interior);
+        CompiledTexture(const Texture& texture, const Transform& outside, const std::optional<Interior>& interior,
+                        Shared& shared);
         void sample(const glm::dvec3& point, double t, const glm::dvec3& normal, double weight,
                     TextureSample& out) const;
         const CompiledLayer& picked_top(const glm::dvec3& point, double t, glm::dvec3& at) const;

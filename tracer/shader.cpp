@@ -225,7 +225,9 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
         const runtime::TextureSample::Layer& layer = layers[used];
         const runtime::MaterialSample& m = layer.material;
         const glm::dvec3& n = layer.normal;
-        const double opaque = std::clamp(1.0 - m.filter - m.transmit, 0.0, 1.0);
+        // (POV-Ray 3.7's opacity, unclamped: filter and transmit above 1
+        // take light away, as there.)
+        const double opaque = 1.0 - m.filter - m.transmit;
         glm::dvec3 own = m.colour * (m.ambient * ambient + m.emission) * opaque;
         for (std::size_t i = 0; i < lights_.size(); ++i) {
             const Light& light = lights_[i];
@@ -272,7 +274,10 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
     // above the bailout; total internal reflection is not filtered).
     const runtime::MaterialSample& top = layers[0].material;
     bool total_internal_reflection = false;
-    const double through_weight = h.weight * std::max({through.x, through.y, through.z});
+    // (POV-Ray's w1: the largest magnitude; a negative transmit gives a
+    // negative share, as there.)
+    const double through_weight =
+        h.weight * std::max({std::fabs(through.x), std::fabs(through.y), std::fabs(through.z)});
     if (trans > kBailout && through_weight >= kBailout) {
         // POV-Ray's ComputeRefraction and TraceRefractionRay, about the top
         // layer's normal: the ratio of iors entering or leaving the solid

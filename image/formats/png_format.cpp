@@ -71,6 +71,15 @@ bool read_rows(std::FILE* file, const Reader& r, std::vector<unsigned char>& byt
     if (!png_get_valid(r.png, r.info, PNG_INFO_sRGB) && png_get_valid(r.png, r.info, PNG_INFO_gAMA))
         png_get_gAMA(r.png, r.info, &file_gamma);
     out.encoding_gamma = file_gamma;
+    switch (png_get_color_type(r.png, r.info)) {
+        case PNG_COLOR_TYPE_GRAY: out.source = StoredImage::Source::Gray; break;
+        case PNG_COLOR_TYPE_GRAY_ALPHA: out.source = StoredImage::Source::GrayAlpha; break;
+        case PNG_COLOR_TYPE_PALETTE: out.source = StoredImage::Source::Palette; break;
+        case PNG_COLOR_TYPE_RGB_ALPHA: out.source = StoredImage::Source::RgbAlpha; break;
+        default: out.source = StoredImage::Source::Rgb; break;
+    }
+    out.source_bits = png_get_bit_depth(r.png, r.info);
+    out.colour_key = out.source != StoredImage::Source::Palette && png_get_valid(r.png, r.info, PNG_INFO_tRNS);
     png_set_expand(r.png);       // palette to RGB, low-bit gray to 8 bits, tRNS to alpha
     png_set_gray_to_rgb(r.png);  // gray as RGB, so every image has 3 or 4 channels
     png_read_update_info(r.png, r.info);

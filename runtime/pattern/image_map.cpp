@@ -121,7 +121,7 @@ Rgbft pixel(const ImageMap& map, const ImagePixels& image, double x, double y, d
     out.c[1] = p[1];
     out.c[2] = p[2];
     out.c[3] = static_cast<float>(0.0 + filter_all);
-    out.c[4] = static_cast<float>(p[3] + transmit_all);
+    out.c[4] = static_cast<float>(image.palette && map.transmit_all_written ? transmit_all : p[3] + transmit_all);
     return out;
 }
 
@@ -220,6 +220,13 @@ std::array<double, 5> image_colour(const ImageMap& map, const glm::dvec3& point,
                 }
             break;
         }
+    }
+    if (image.premultiplied) {
+        // (POV-Ray's image_colour_at: back to straight colour, by the alpha
+        // the transmit leaves, when there is any.)
+        const float alpha = static_cast<float>(1.0f - static_cast<float>(sum.c[4]));
+        if (alpha > 1.0e-10f)
+            for (int c = 0; c < 3; ++c) sum.c[c] = static_cast<float>(sum.c[c]) / alpha;
     }
     // (POV-Ray hands on a single-precision colour.)
     std::array<double, 5> out;

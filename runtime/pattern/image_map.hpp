@@ -24,6 +24,13 @@ namespace hexant::runtime::pattern {
 struct ImagePixels {
     int width = 0, height = 0;
     std::vector<float> rgbt;  // width * height * 4
+    // Colours premultiplied by alpha (OpenEXR's convention): interpolated
+    // so, then divided by the alpha left after transmit all, as POV-Ray.
+    bool premultiplied = false;
+    // From a palette: `transmit all` sets each entry's transmit (a tRNS
+    // chunk's included) instead of adding to it, as POV-Ray's
+    // Parse_Image_Map does to a colour-mapped image.
+    bool palette = false;
 };
 
 struct ImageMap {
@@ -46,8 +53,10 @@ struct ImageMap {
     // each image's size).
     double repeat_u = 1.0, repeat_v = 1.0;
     double offset_u = 0.0, offset_v = 0.0;
-    // filter all, transmit all: added to every pixel's.
+    // filter all, transmit all: added to every pixel's (transmit all,
+    // when written, replaces a palette image's).
     TimeFunction filter_all = 0.0, transmit_all = 0.0;
+    bool transmit_all_written = false;
 
     // The image at time t (the piece holding t; before the first, the
     // first; after the last, the last).

@@ -231,3 +231,19 @@ TEST_CASE("dump: a texture_map's entries and a layered texture's layers", "[app]
     CHECK(mapped.find(" 0.25[pigment=solid<1, 0, 0, 0, 0.5>") != std::string::npos);
     CHECK(mapped.find(" 0.75[pigment=solid<0, 0, 1, 0, 0>") != std::string::npos);
 }
+
+TEST_CASE("dump: a map entry used twice is printed once and named after", "[app][dump]") {
+    // (A declared chain of such maps is exponential printed as a tree.)
+    rt::SceneDescription scene;
+    auto shared = std::make_shared<rt::Texture>();
+    rt::Texture map;
+    map.patterned = rt::pattern::Pattern::of(*rt::pattern::find_kind("checker"));
+    map.texture_map = {{0.0, shared}, {1.0, shared}};
+    auto a = object(rt::Sphere{{{0.0, 0.0, 0.0}}, 1.0});
+    a->texture = map;
+    scene.objects = {a};
+    const auto lines = dump(scene, 0.0);
+    const auto& line = *std::find_if(lines.begin(), lines.end(), [](const auto& l) { return l.find("object[0]") == 0; });
+    CHECK(line.find(" 0[#1 pigment=solid") != std::string::npos);
+    CHECK(line.find(" 1[#1]") != std::string::npos);
+}

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "language/interpreter.hpp"
+#include "runtime/texture_evaluator.hpp"
 #include "scene_text.hpp"
 
 using hexant::test::error_of;
@@ -140,6 +141,25 @@ TEST_CASE("an image_map whose file changes with clock is an image sequence", "[l
     CHECK(map.at(0.75).width == 5);
     CHECK(t.pigment.depends_on_time());
     CHECK(map.file.find("tiles.png") != std::string::npos);
+}
+
+TEST_CASE("a declared chain of maps sharing their entries costs its length, not 2^length", "[language][pattern]") {
+    // T(k) a checker of T(k-1) and T(k-1) scaled: 60 levels are 2^60 paths
+    // as a tree. Reading, checking, compiling and asking whether it moves
+    // visit each declared texture once (a tree walk would not finish).
+    std::string text = "#declare T0 = texture { pigment { rgb <1, 0, 0> } normal { bumps } }\n";
+    for (int k = 1; k <= 60; ++k)
+        text += "#declare T" + std::to_string(k) + " = texture { checker texture { T" + std::to_string(k - 1) +
+                " } texture { T" + std::to_string(k - 1) + " scale 1.01 } }\n";
+    text += "sphere { 0, 1 texture { T60 } }\n";
+    const auto scene = read(text);
+    const rt::Texture& t = texture_of(scene, 0);
+    CHECK(!t.depends_on_time());
+    const rt::TextureEvaluator evaluator(t, std::nullopt);
+    rt::TextureSample sample;
+    evaluator.sample({0.3, 0.2, 0.1}, 0.0, {0.0, 1.0, 0.0}, sample);
+    REQUIRE(sample.plains.size() == 1);  // (a checker picks one entry per level)
+    CHECK(sample.layers.front().material.colour.x == 1.0);
 }
 
 TEST_CASE("what POV-Ray refuses in textures is an error where it is written", "[language][pattern]") {

@@ -252,7 +252,8 @@ TEST_CASE("texture_map and layered textures agree with POV-Ray 3.7's", "[tracer]
     // a texture_map of a declared texture with a bumpy normal and one
     // written in place (its gradient's phase moving, turbulence warping
     // it: the entries' normals go through the pattern's transforms), and a
-    // partly clear layer over wood, turning. textures/layers.pov: a
+    // partly clear layer over wood, turning, and a hexagon of pigments (one
+    // left to its default colour). textures/layers.pov: a
     // declared layered texture whose top filters and transmits (lower
     // layers lit through it, what lies behind refracted about the top
     // layer's perturbed normal), layered entries in a texture_map, layers

@@ -1,6 +1,7 @@
 // hexant against POV-Ray 3.7: textures that blend whole textures
 // (texture_map, a checker's two textures) and layered textures, with
-// their patterns, phases and transforms moving with clock.
+// their patterns, phases and transforms moving with clock; and a block
+// pattern's list of pigments.
 #version 3.7;
 global_settings { assumed_gamma 1.0 }
 camera { location <0, 1.5, -5> look_at <0, 0.3, 0> angle 45 }
@@ -40,4 +41,9 @@ sphere { <1.1, 0.2, 0>, 0.9
     finish { phong 0.8 }
   }
   rotate y * 60 * clock
+}
+// A block pattern's list of pigments (the third of hexagon's left out: its
+// default colour), one a pattern of its own moving with clock.
+box { <-2.5, -1, 1.5>, <2.5, 1.5, 1.6>
+  pigment { hexagon pigment { bozo scale 0.2 phase clock } pigment { rgb <1, 0.9, 0.6> } scale 0.3 }
 }
