@@ -271,8 +271,13 @@ TextureEvaluator::CompiledNormal::CompiledNormal(const Normal& n, const Transfor
     // (Each entry of a normal map in the space of this pattern.)
     for (const auto& e : n.normal_map)
         normals.push_back({CompiledScalar(e.value), shared.entry(shared.normals, *e.normal)});
-    for (const auto& e : n.slope_map)
-        slopes.push_back({CompiledScalar(e.value), CompiledScalar(e.height), CompiledScalar(e.slope)});
+    const bool still = std::all_of(n.slope_map.begin(), n.slope_map.end(), [](const SlopeMapEntry& e) {
+        return e.value.is_constant() && e.height.is_constant() && e.slope.is_constant();
+    });
+    for (const auto& e : n.slope_map) {
+        if (still) fixed_slopes.push_back({pattern::single(e.value.constant()), e.height.constant(), e.slope.constant()});
+        else slopes.push_back({CompiledScalar(e.value), CompiledScalar(e.height), CompiledScalar(e.slope)});
+    }
 }
 
 TextureEvaluator::CompiledPigment::CompiledPigment(const Pigment& pigment, const Transform& texture,
@@ -362,11 +367,12 @@ glm::dvec3 TextureEvaluator::CompiledNormal::perturb(const glm::dvec3& normal, c
     } else if (p.kind->normal != nullptr) {
         bumped = p.kind->normal(point, v, pattern::single(amount.at(t)), pn);
     } else {
-        std::vector<pattern::SlopeEntry> slope_map;
+        std::vector<pattern::SlopeEntry> moving;
         for (const auto& [value, height, slope] : slopes)
-            slope_map.push_back({pattern::single(value.at(t)), height.at(t), slope.at(t)});
+            moving.push_back({pattern::single(value.at(t)), height.at(t), slope.at(t)});
+        const auto* slope_map = !fixed_slopes.empty() ? &fixed_slopes : !moving.empty() ? &moving : nullptr;
         bumped = pattern::slope_normal(*p.kind, point, v, p.wave, p.exponent_at(t), pattern::single(amount.at(t)),
-                                       pattern::single(accuracy.at(t)), pn, slopes.empty() ? nullptr : &slope_map);
+                                       pattern::single(accuracy.at(t)), pn, slope_map);
     }
     const glm::dvec3 out = maps.out_of(unit_unless(no_bump_scale, bumped));
     const double l = glm::length(out);

@@ -179,7 +179,10 @@ private:
         CompiledScalar amount, accuracy;
         bool no_bump_scale = false;
         std::vector<std::pair<CompiledScalar, std::shared_ptr<const CompiledNormal>>> normals;
-        std::vector<std::array<CompiledScalar, 3>> slopes;  // value, height, slope
+        // The slope map: fixed when nothing in it moves (a still map
+        // builds nothing per hit), else compiled (value, height, slope).
+        std::vector<pattern::SlopeEntry> fixed_slopes;
+        std::vector<std::array<CompiledScalar, 3>> slopes;
 
         CompiledNormal(const Normal& normal, const Transform& texture, Shared& shared);
         // `normal` (in the space around it) perturbed at `point` (there too).
