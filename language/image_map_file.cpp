@@ -5,15 +5,10 @@
 #include <cstddef>
 #include <stdexcept>
 
+#include "runtime/time_ops.hpp"
+
 namespace hexant::language {
 
-namespace {
-
-// The sRGB transfer function's decoding (IEC 61966-2-1), as POV-Ray's
-// SRGBGammaCurve.
-double srgb_decode(double x) { return x <= 0.04045 ? x / 12.92 : std::pow((x + 0.055) / 1.055, 2.4); }
-
-}  // namespace
 
 runtime::pattern::ImagePixels image_pixels(const image::StoredImage& stored, const ImageGamma& gamma,
                                            double assumed_gamma) {
@@ -22,11 +17,11 @@ runtime::pattern::ImagePixels image_pixels(const image::StoredImage& stored, con
     // Decoding: the scene's gamma, else the file's (OpenEXR is linear; a
     // PNG's gAMA chunk gives its encoding gamma; else sRGB).
     const auto decode = [&](double x) {
-        if (gamma.srgb) return srgb_decode(x);
+        if (gamma.srgb) return runtime::srgb_decode(x);
         if (gamma.power) return std::pow(x, *gamma.power);
         if (stored.linear) return x;
         if (stored.encoding_gamma > 0.0) return std::pow(x, 1.0 / stored.encoding_gamma);
-        return srgb_decode(x);
+        return runtime::srgb_decode(x);
     };
     const bool working_linear = assumed_gamma == 1.0;
     using Source = image::StoredImage::Source;
