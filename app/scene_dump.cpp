@@ -169,59 +169,50 @@ std::string layer(const runtime::Texture& texture, double t, Shared& shared) {
     return s;
 }
 
+// "sphere center=<...> radius=..." at t: the kind's keyword and its
+// parameters (runtime/objects/shape_kind.hpp); a CSG's kind and child count.
 struct ShapeWriter {
     double t;
-    std::string operator()(const runtime::Sphere& s) const {
-        return "sphere center=" + vector(s.center, t) + " radius=" + number(s.radius(t));
+    std::string out;
+
+    void operator()(const char* name, const char*, const runtime::TimeFunction& f) {
+        out += std::string(" ") + name + "=" + number(f(t));
     }
-    std::string operator()(const runtime::Box& b) const {
-        return "box corner1=" + vector(b.corner1, t) + " corner2=" + vector(b.corner2, t);
+    void operator()(const char* name, const char*, const runtime::Vector3Function& v) {
+        out += std::string(" ") + name + "=" + vector(v, t);
     }
-    std::string operator()(const runtime::Plane& p) const {
-        return "plane normal=" + vector(p.normal, t) + " distance=" + number(p.distance(t));
+    void operator()(const char* name, const char*, const runtime::Vector2Function& v) {
+        out += std::string(" ") + name + "=" + vector2(v);
     }
-    std::string operator()(const runtime::Polygon& p) const {
-        std::string s = "polygon points=";
-        for (std::size_t i = 0; i < p.points.size(); ++i) s += (i ? ";" : "") + vector(p.points[i], t);
-        return s;
+    template <typename T>
+    void operator()(const char* name, const char*, const std::vector<T>& items) {
+        out += std::string(" ") + name + "=";
+        for (std::size_t i = 0; i < items.size(); ++i) {
+            ShapeWriter item{t, {}};
+            item("", "", items[i]);
+            out += (i ? ";" : "") + item.out.substr(2);  // without " ="
+        }
     }
-    std::string operator()(const runtime::Triangle& tr) const {
-        return "triangle p1=" + vector(tr.points[0], t) + " p2=" + vector(tr.points[1], t) +
-               " p3=" + vector(tr.points[2], t);
+    void operator()(const char* name, const char*, bool on) {
+        out += std::string(" ") + name + "=" + (on ? "1" : "0");
     }
-    std::string operator()(const runtime::SmoothTriangle& tr) const {
-        std::string s = "smooth_triangle";
-        for (int i = 0; i < 3; ++i)
-            s += " p" + std::to_string(i + 1) + "=" + vector(tr.points[i], t) + " n" +
-                 std::to_string(i + 1) + "=" + vector(tr.normals[i], t);
-        return s;
+    void operator()(const char* name, const char*, const std::string& text) {
+        out += std::string(" ") + name + "=\"" + text + "\"";
     }
-    std::string operator()(const runtime::Disc& d) const {
-        return "disc center=" + vector(d.center, t) + " normal=" + vector(d.normal, t) +
-               " radius=" + number(d.radius(t)) + " hole_radius=" + number(d.hole_radius(t));
+    void operator()(const char* name, const char*, const runtime::objects::DescribedParameter& p) {
+        out += std::string(" ") + name + "=" + p.text;
     }
-    std::string operator()(const runtime::Cylinder& c) const {
-        return "cylinder base=" + vector(c.base, t) + " cap=" + vector(c.cap, t) +
-               " radius=" + number(c.radius(t)) + " open=" + (c.open ? "1" : "0");
+
+    std::string vector2(const runtime::Vector2Function& v) const {
+        return "<" + number(v.c[0](t)) + ", " + number(v.c[1](t)) + ">";
     }
-    std::string operator()(const runtime::Cone& c) const {
-        return "cone base=" + vector(c.base, t) + " base_radius=" + number(c.base_radius(t)) +
-               " cap=" + vector(c.cap, t) + " cap_radius=" + number(c.cap_radius(t)) +
-               " open=" + (c.open ? "1" : "0");
-    }
-    std::string operator()(const runtime::Torus& r) const {
-        return "torus major=" + number(r.major_radius(t)) + " minor=" + number(r.minor_radius(t));
-    }
-    std::string operator()(const runtime::Prism& p) const {
-        std::string s = "prism height1=" + number(p.height1(t)) + " height2=" + number(p.height2(t)) +
-                        " points=";
-        for (std::size_t i = 0; i < p.points.size(); ++i)
-            s += (i ? ";" : "") + ("<" + number(p.points[i].c[0](t)) + ", " + number(p.points[i].c[1](t)) + ">");
-        return s + " open=" + (p.open ? "1" : "0");
-    }
-    std::string operator()(const runtime::Csg& c) const {
-        static const char* kinds[] = {"union", "merge", "intersection", "difference"};
-        return std::string(kinds[static_cast<int>(c.kind)]) + " children=" + std::to_string(c.children.size());
+
+    static std::string write(const runtime::Shape& shape, double t) {
+        if (const auto* c = std::get_if<runtime::Csg>(&shape))
+            return std::string(runtime::shape_name(shape)) + " children=" + std::to_string(c->children.size());
+        ShapeWriter writer{t, runtime::shape_name(shape)};
+        runtime::for_each_parameter(shape, writer);
+        return writer.out;
     }
 };
 
@@ -236,7 +227,7 @@ void dump_object(const runtime::ObjectRecord& top, const std::string& top_name, 
         pending.pop_back();
         // What exists at t only (runtime::Lifetime).
         if (!object->lifetime.contains(t)) continue;
-        out << name << " " << std::visit(ShapeWriter{t}, object->shape) << " "
+        out << name << " " << ShapeWriter::write(object->shape, t) << " "
             << transform(object->transform, t);
         if (object->texture) {
             Shared shared;

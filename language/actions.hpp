@@ -61,6 +61,7 @@ HEXANT_NAME_ACTION(fog_setting_name);
 HEXANT_NAME_ACTION(finish_setting_name);
 HEXANT_NAME_ACTION(csg_kind);
 HEXANT_NAME_ACTION(object_flag_name);
+HEXANT_NAME_ACTION(shape_setting_name);
 HEXANT_NAME_ACTION(light_setting_name);
 HEXANT_NAME_ACTION(camera_vector_name);
 HEXANT_NAME_ACTION(global_setting_name);
@@ -77,26 +78,21 @@ void shape_keyword(const ActionInput& in, Interpreter& st) {
     const auto p = in.position();
     st.shape_place = {p.source, p.line, p.column};
 }
-#define HEXANT_SHAPE_KEYWORD(rule)                                  \
-    template <>                                                     \
-    struct action<g::rule> {                                        \
-        template <typename ActionInput>                             \
-        static void apply(const ActionInput& in, Interpreter& st) { \
-            shape_keyword(in, st);                                  \
-        }                                                           \
+template <>
+struct action<g::shape_keyword> {
+    template <typename ActionInput>
+    static void apply(const ActionInput& in, Interpreter& st) {
+        shape_keyword(in, st);
+        st.shape_options.emplace_back();
     }
-HEXANT_SHAPE_KEYWORD(kw_sphere);
-HEXANT_SHAPE_KEYWORD(kw_box);
-HEXANT_SHAPE_KEYWORD(kw_plane);
-HEXANT_SHAPE_KEYWORD(kw_polygon);
-HEXANT_SHAPE_KEYWORD(kw_triangle);
-HEXANT_SHAPE_KEYWORD(kw_smooth_triangle);
-HEXANT_SHAPE_KEYWORD(kw_disc);
-HEXANT_SHAPE_KEYWORD(kw_cylinder);
-HEXANT_SHAPE_KEYWORD(kw_cone);
-HEXANT_SHAPE_KEYWORD(kw_torus);
-HEXANT_SHAPE_KEYWORD(kw_prism);
-#undef HEXANT_SHAPE_KEYWORD
+};
+template <>
+struct action<g::shape_option> {
+    template <typename ActionInput>
+    static void apply(const ActionInput& in, Interpreter& st) {
+        st.shape_options.back().push_back(word(in));
+    }
+};
 
 // A ValueError from the value operations, or a runtime::LimitError,
 // becomes an error at the rule's place.
@@ -1503,29 +1499,20 @@ runtime::SourcePlace source_place(const ActionInput& in) {
     return {p.source, p.line, p.column};
 }
 
-runtime::ObjectRecord make_shape(const std::string& kind, std::vector<Value>& args, Interpreter& st);
+runtime::ObjectRecord make_shape(const std::string& kind, std::vector<std::string> options,
+                                 std::vector<Value>& args, Interpreter& st, const p::position& where);
+void set_shape_setting(runtime::ObjectRecord& record, const std::string& name,
+                       std::vector<Value>& values, Interpreter& st, const p::position& where);
 
 HEXANT_ACTION(shape_arguments) {
     HEXANT_APPLY {
         std::vector<Value> args = st.close_frame();
         const std::string kind = st.pop_name();
-        runtime::ObjectRecord record = make_shape(kind, args, st);
+        std::vector<std::string> options = std::move(st.shape_options.back());
+        st.shape_options.pop_back();
+        runtime::ObjectRecord record = make_shape(kind, std::move(options), args, st, in.position());
         record.place = st.shape_place;
         st.blocks.emplace_back(std::move(record));
-    }
-};
-HEXANT_ACTION(prism_open) {
-    HEXANT_APPLY {
-        (void)in;
-        st.prism_spline = "linear_spline";
-        st.prism_sweep = "linear_sweep";
-    }
-};
-HEXANT_ACTION(prism_option) {
-    HEXANT_APPLY {
-        const std::string w = word(in);
-        if (w.find("sweep") != std::string::npos) st.prism_sweep = w;
-        else st.prism_spline = w;
     }
 };
 
@@ -1542,9 +1529,15 @@ struct finish_object {
         }
         auto& record = std::get<runtime::ObjectRecord>(b);
         record.lifetime = record.lifetime.intersect(st.domain);
-        if (const auto* prism = std::get_if<runtime::Prism>(&record.shape); prism && prism->points.empty()) {
-            // A prism of a kind hexant lacks: usable only where nothing uses it.
-            st.push(Value{Unevaluated{"prism with " + st.prism_sweep + " and " + st.prism_spline, in.position()}});
+        // A variant of its kind that hexant lacks: usable only where nothing uses it.
+        const auto lacking = std::visit(
+            [](const auto& shape) -> std::optional<std::string> {
+                if constexpr (std::is_same_v<std::decay_t<decltype(shape)>, runtime::Csg>) return std::nullopt;
+                else return runtime::objects::unsupported_variant(shape);
+            },
+            record.shape);
+        if (lacking) {
+            st.push(Value{Unevaluated{*lacking, in.position()}});
             return;
         }
         if (const auto* csg = std::get_if<runtime::Csg>(&record.shape)) {
@@ -1561,8 +1554,7 @@ struct finish_object {
         st.push(Value{runtime::ObjectPtr(std::make_shared<runtime::ObjectRecord>(std::move(record)))});
     }
 };
-template <typename K> struct action<g::shape_block<K>> : finish_object {};
-template <> struct action<g::prism_block> : finish_object {};
+template <> struct action<g::shape_block> : finish_object {};
 template <> struct action<g::csg_block> : finish_object {};
 template <> struct action<g::object_block> : finish_object {};
 
@@ -1663,14 +1655,18 @@ HEXANT_ACTION(object_flag) {
         if (name == "no_shadow") record.no_shadow = on;
         else if (name == "hollow") record.hollow = on;
         else if (name == "inverse") record.inverse = on;
-        else if (name == "open") {
-            if (auto* c = std::get_if<runtime::Cylinder>(&record.shape)) c->open = on;
-            else if (auto* k = std::get_if<runtime::Cone>(&record.shape)) k->open = on;
-            else if (auto* pr = std::get_if<runtime::Prism>(&record.shape)) pr->open = on;
-            else throw ValueError("'open' belongs to a cylinder, cone or prism, not a " +
-                                  std::string(runtime::shape_name(record.shape)));
-        }
         // sturm, no_image, no_reflection, no_radiosity, double_illumination, smooth: read, no effect.
+    }
+};
+// A setting of the object's kind (runtime/objects/shape_kind.hpp).
+HEXANT_ACTION(shape_setting) {
+    HEXANT_APPLY {
+        std::vector<Value> given = st.close_frame();
+        const std::string name = st.pop_name();
+        if (!st.blocks.empty() && std::holds_alternative<runtime::LightRecord>(st.blocks.back()))
+            throw ValueError("'" + name + "' does not belong in a light_source");
+        auto& record = st.block<runtime::ObjectRecord>(in.position(), name.c_str());
+        set_shape_setting(record, name, given, st, in.position());
     }
 };
 HEXANT_ACTION(object_ignored_block) {

@@ -20,6 +20,8 @@
 #include <tao/pegtl.hpp>
 #include <tao/pegtl/contrib/analyze_traits.hpp>
 
+#include "runtime/objects/kinds.hpp"
+
 namespace hexant::language::grammar {
 
 namespace p = tao::pegtl;
@@ -824,32 +826,20 @@ struct shape_arguments
              p::star<p::sor<argument_directive, p::seq<comma, p::must<first_shape_argument>>,
                             p::seq<p::not_at<macro_ahead>, shape_argument>>>> {};
 
-template <typename Keyword>
+// A registered object kind (runtime/objects/kinds.hpp): its keyword, the
+// option words it may take before its values (prism's linear_sweep), its
+// values, and modifiers. The kind itself reads what it was given.
+struct shape_keyword_words {
+    static constexpr auto list = runtime::objects::KindWords<runtime::ShapeKinds>::keywords;
+};
+struct shape_option_words {
+    static constexpr auto list = runtime::objects::KindWords<runtime::ShapeKinds>::options;
+};
+struct shape_keyword : one_word_of<shape_keyword_words> {};
+struct shape_open : p::seq<shape_keyword, ws, p::must<lbrace>> {};
+struct shape_option : p::seq<one_word_of<shape_option_words>, ws> {};
 struct shape_block
-    : p::seq<Keyword, p::must<lbrace>, p::must<shape_arguments>, object_modifiers,
-             p::must<object_close>> {};
-
-HEXANT_KEYWORD(kw_sphere, "sphere");
-HEXANT_KEYWORD(kw_box, "box");
-HEXANT_KEYWORD(kw_plane, "plane");
-HEXANT_KEYWORD(kw_polygon, "polygon");
-HEXANT_KEYWORD(kw_triangle, "triangle");
-HEXANT_KEYWORD(kw_smooth_triangle, "smooth_triangle");
-HEXANT_KEYWORD(kw_disc, "disc");
-HEXANT_KEYWORD(kw_cylinder, "cylinder");
-HEXANT_KEYWORD(kw_cone, "cone");
-HEXANT_KEYWORD(kw_torus, "torus");
-HEXANT_KEYWORD(kw_prism, "prism");
-
-// prism { [linear_sweep] [linear_spline] H1, H2, N, <..>, ... }
-struct prism_option
-    : p::seq<p::sor<TAO_PEGTL_KEYWORD("linear_sweep"), TAO_PEGTL_KEYWORD("conic_sweep"),
-                    TAO_PEGTL_KEYWORD("linear_spline"), TAO_PEGTL_KEYWORD("quadratic_spline"),
-                    TAO_PEGTL_KEYWORD("cubic_spline"), TAO_PEGTL_KEYWORD("bezier_spline")>,
-             ws> {};
-struct prism_open : p::seq<kw_prism, p::must<lbrace>> {};
-struct prism_block
-    : p::seq<prism_open, p::star<prism_option>, p::must<shape_arguments>, object_modifiers,
+    : p::seq<shape_open, p::star<shape_option>, p::must<shape_arguments>, object_modifiers,
              p::must<object_close>> {};
 
 HEXANT_KEYWORD(kw_union, "union");
@@ -922,11 +912,7 @@ struct unsupported_block
     : p::seq<unsupported_kind, ws, p::opt<skip::parenthesized, ws>, p::must<skipped_block>, ws> {};
 
 struct object_value
-    : p::sor<shape_block<kw_sphere>, shape_block<kw_box>, shape_block<kw_plane>,
-             shape_block<kw_polygon>, shape_block<kw_triangle>,
-             shape_block<kw_smooth_triangle>, shape_block<kw_disc>, shape_block<kw_cylinder>,
-             shape_block<kw_cone>, shape_block<kw_torus>, prism_block, csg_block, object_block,
-             light_block> {};
+    : p::sor<shape_block, csg_block, object_block, light_block> {};
 
 // Things that modify an object, in any order.
 struct object_texture : p::seq<texture_block> {};
@@ -936,12 +922,20 @@ struct object_interior : p::seq<interior_block> {};
 struct object_material : p::seq<material_block> {};
 struct object_flag_name
     : p::sor<TAO_PEGTL_KEYWORD("no_shadow"), TAO_PEGTL_KEYWORD("hollow"),
-             TAO_PEGTL_KEYWORD("inverse"), TAO_PEGTL_KEYWORD("open"), TAO_PEGTL_KEYWORD("sturm"),
+             TAO_PEGTL_KEYWORD("inverse"), TAO_PEGTL_KEYWORD("sturm"),
              TAO_PEGTL_KEYWORD("no_image"), TAO_PEGTL_KEYWORD("no_reflection"),
              TAO_PEGTL_KEYWORD("no_radiosity"), TAO_PEGTL_KEYWORD("double_illumination"),
              TAO_PEGTL_KEYWORD("smooth")> {};
 struct object_flag_value : p::seq<p::not_at<p::one<'<'>>, expression> {};
 struct object_flag : p::seq<object_flag_name, ws, frame_open, p::opt<object_flag_value>> {};
+// A setting of the object's own kind (a cylinder's `open`), with an
+// optional value; the kind says what it takes.
+struct shape_setting_words {
+    static constexpr auto list = runtime::objects::KindWords<runtime::ShapeKinds>::settings;
+};
+struct shape_setting_name : one_word_of<shape_setting_words> {};
+struct shape_setting_value : p::seq<p::not_at<p::one<'<'>>, expression> {};
+struct shape_setting : p::seq<shape_setting_name, ws, frame_open, p::opt<shape_setting_value>> {};
 struct object_ignored_block
     : p::seq<p::sor<TAO_PEGTL_KEYWORD("bounded_by"), TAO_PEGTL_KEYWORD("clipped_by"),
                     TAO_PEGTL_KEYWORD("photons"), TAO_PEGTL_KEYWORD("radiosity")>,
@@ -949,7 +943,7 @@ struct object_ignored_block
 struct object_modifier
     : p::sor<directive<object_modifier>, macro_call<object_modifier>, transformation,
              deformation, object_texture, object_pigment, object_finish, object_normal,
-             object_interior, object_material, object_flag, object_ignored_block> {};
+             object_interior, object_material, object_flag, shape_setting, object_ignored_block> {};
 
 // ---------------------------------------------------------------- scene items
 

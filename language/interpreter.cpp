@@ -734,81 +734,99 @@ void fill_array(Array& array, const Array& list, std::size_t dimension, std::siz
     }
 }
 
-runtime::ObjectRecord make_shape(const std::string& kind, std::vector<Value>& args,
-                                 Interpreter& st) {
-    auto need = [&](std::size_t lo, std::size_t hi, const char* what) {
-        if (args.size() < lo || args.size() > hi)
-            throw ValueError(kind + " needs " + what + ", but " + std::to_string(args.size()) +
-                             " value" + (args.size() == 1 ? " was" : "s were") + " given");
-    };
-    auto vec = [&](std::size_t i, const std::string& what) {
-        return to_vector3(args[i], kind + "'s " + what);
-    };
-    auto num = [&](std::size_t i, const std::string& what) { return to_float(args[i], kind + "'s " + what); };
-    runtime::ObjectRecord record;
-    if (kind == "sphere") {
-        need(2, 2, "a centre and a radius");
-        record.shape = runtime::Sphere{vec(0, "centre"), num(1, "radius")};
-    } else if (kind == "box") {
-        need(2, 2, "two corners");
-        record.shape = runtime::Box{vec(0, "first corner"), vec(1, "second corner")};
-    } else if (kind == "plane") {
-        need(2, 2, "a normal and a distance");
-        record.shape = runtime::Plane{vec(0, "normal"), num(1, "distance")};
-    } else if (kind == "polygon") {
-        if (args.empty()) need(1, 1, "a point count and the points");
-        const long long n = checked_integer(to_constant(args[0], "polygon's point count"),
-                                            "polygon's point count", 3, 100'000'000);
-        if (args.size() != static_cast<std::size_t>(n) + 1)
-            throw ValueError("polygon says it has " + std::to_string(n) +
-                             " points but lists " + std::to_string(args.size() - 1));
-        runtime::Polygon polygon;
-        for (std::size_t i = 1; i < args.size(); ++i) {
-            const Vector v = to_vector(args[i], "a polygon point");
-            polygon.points.push_back({{v.c[0], v.c[1], v.size >= 3 ? v.c[2] : TimeFunction(0.0)}});
-        }
-        record.shape = std::move(polygon);
-    } else if (kind == "triangle") {
-        need(3, 3, "three corners");
-        record.shape = runtime::Triangle{{vec(0, "first corner"), vec(1, "second corner"), vec(2, "third corner")}};
-    } else if (kind == "smooth_triangle") {
-        need(6, 6, "three corners, each with its normal");
-        record.shape = runtime::SmoothTriangle{{vec(0, "first corner"), vec(2, "second corner"), vec(4, "third corner")},
-                                               {vec(1, "first normal"), vec(3, "second normal"), vec(5, "third normal")}};
-    } else if (kind == "disc") {
-        need(3, 4, "a centre, a normal, a radius and optionally a hole radius");
-        runtime::Disc disc{vec(0, "centre"), vec(1, "normal"), num(2, "radius")};
-        if (args.size() == 4) disc.hole_radius = num(3, "hole radius");
-        record.shape = std::move(disc);
-    } else if (kind == "cylinder") {
-        need(3, 3, "two end points and a radius");
-        record.shape = runtime::Cylinder{vec(0, "base point"), vec(1, "cap point"), num(2, "radius")};
-    } else if (kind == "cone") {
-        need(4, 4, "a base point and radius and a cap point and radius");
-        record.shape = runtime::Cone{vec(0, "base point"), num(1, "base radius"), vec(2, "cap point"), num(3, "cap radius")};
-    } else if (kind == "torus") {
-        need(2, 2, "a major and a minor radius");
-        record.shape = runtime::Torus{num(0, "major radius"), num(1, "minor radius")};
-    } else if (kind == "prism") {
-        runtime::Prism prism;
-        if (args.size() < 3) need(3, 3, "two heights, a point count and the points");
-        prism.height1 = num(0, "first height");
-        prism.height2 = num(1, "second height");
-        const bool supported = st.prism_spline == "linear_spline" && st.prism_sweep == "linear_sweep";
-        if (supported) {
-            const long long n = checked_integer(to_constant(args[2], "prism's point count"),
-                                                "prism's point count", 3, 100'000'000);
-            if (args.size() != static_cast<std::size_t>(n) + 3)
-                throw ValueError("prism says it has " + std::to_string(n) +
-                                 " points but lists " + std::to_string(args.size() - 3));
-            for (std::size_t i = 3; i < args.size(); ++i)
-                prism.points.push_back(to_vector2(args[i], "a prism point"));
-        }
-        record.shape = std::move(prism);
-    } else {
-        throw std::logic_error("hexant: unknown shape " + kind);
+namespace {
+
+// A shape block's values for its kind's read (runtime/objects/shape_arguments.hpp),
+// converted by the language's own rules; errors are ValueErrors, which the
+// rule reading the block places.
+class BlockArguments final : public runtime::objects::ShapeArguments {
+  public:
+    BlockArguments(std::string keyword, std::vector<std::string> options, std::vector<Value>& values,
+                   const Interpreter& st, const p::position& where)
+        : keyword_(std::move(keyword)), options_(std::move(options)), values_(values), st_(st),
+          where_(where) {}
+
+    const std::string& keyword() const override { return keyword_; }
+    const std::vector<std::string>& options() const override { return options_; }
+    std::size_t size() const override { return values_.size(); }
+    TimeFunction number(std::size_t i, const std::string& what) const override {
+        return to_float(at(i), what);
     }
+    runtime::Vector3Function vector3(std::size_t i, const std::string& what) const override {
+        return to_vector3(at(i), what);
+    }
+    runtime::Vector2Function vector2(std::size_t i, const std::string& what) const override {
+        return to_vector2(at(i), what);
+    }
+    double constant(std::size_t i, const std::string& what) const override {
+        return to_constant(at(i), what);
+    }
+    std::string string(std::size_t i, const std::string& what) const override {
+        return to_string_value(at(i), what);
+    }
+    std::filesystem::path file(std::size_t i, const std::string& kind) const override {
+        return st_.resolve_include(string(i, keyword_ + "'s " + kind + " name"), where_, kind);
+    }
+    [[noreturn]] void fail(const std::string& message) const override { throw ValueError(message); }
+
+  private:
+    const Value& at(std::size_t i) const {
+        if (i >= values_.size()) fail(keyword_ + " has no value " + std::to_string(i + 1));
+        return values_[i];
+    }
+
+    std::string keyword_;
+    std::vector<std::string> options_;
+    std::vector<Value>& values_;
+    const Interpreter& st_;
+    p::position where_;
+};
+
+template <class... Kinds>
+runtime::Shape read_shape(const std::string& keyword, const runtime::objects::ShapeArguments& args,
+                          runtime::objects::KindList<Kinds...>) {
+    std::optional<runtime::Shape> shape;
+    ((keyword == Kinds::keyword ? (shape = Kinds::read(args), true) : false) || ...);
+    if (!shape) throw std::logic_error("hexant: unknown shape " + keyword);
+    return std::move(*shape);
+}
+
+}  // namespace
+
+runtime::ObjectRecord make_shape(const std::string& kind, std::vector<std::string> options,
+                                 std::vector<Value>& args, Interpreter& st, const p::position& where) {
+    const BlockArguments arguments(kind, std::move(options), args, st, where);
+    runtime::ObjectRecord record;
+    record.shape = read_shape(kind, arguments, runtime::ShapeKinds{});
     return record;
+}
+
+void set_shape_setting(runtime::ObjectRecord& record, const std::string& name,
+                       std::vector<Value>& values, Interpreter& st, const p::position& where) {
+    const BlockArguments value(name, {}, values, st, where);
+    bool taken = false;
+    std::visit(
+        [&](auto& shape) {
+            using Kind = std::decay_t<decltype(shape)>;
+            if constexpr (requires { shape.set(name, value); })
+                if (runtime::objects::takes_setting<Kind>(name)) {
+                    shape.set(name, value);
+                    taken = true;
+                }
+        },
+        record.shape);
+    if (taken) return;
+    // Which kinds it belongs to, for the message.
+    std::vector<std::string> owners;
+    [&]<class... Kinds>(runtime::objects::KindList<Kinds...>) {
+        ((runtime::objects::takes_setting<Kinds>(name) ? (owners.emplace_back(Kinds::keyword), 0) : 0),
+         ...);
+    }(runtime::ShapeKinds{});
+    std::string kinds;
+    for (std::size_t i = 0; i < owners.size(); ++i)
+        kinds += (i == 0 ? "" : i + 1 == owners.size() ? " or " : ", ") + owners[i];
+    throw ValueError("'" + name + "' belongs to a " + kinds + ", not a " +
+                     runtime::shape_name(record.shape));
 }
 
 // ------------------------------------------------------------------ entry points

@@ -193,8 +193,9 @@ public:
     const ParseOptions& options;
     RandomStreams random;
     double version = 3.7;
-    // prism { ... } options read before its arguments
-    std::string prism_spline = "linear_spline", prism_sweep = "linear_sweep";
+    // The option words read before a shape's values (prism's linear_sweep),
+    // one list per shape being read.
+    std::vector<std::vector<std::string>> shape_options;
     // Patterns read so far (a global noise_generator after them is warned).
     std::size_t patterns_written = 0;
     runtime::SourcePlace shape_place;  // where the shape being read was written

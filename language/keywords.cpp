@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "language/grammar.hpp"
+#include "runtime/objects/kinds.hpp"
 
 namespace hexant::language::grammar {
 
@@ -382,7 +383,10 @@ constexpr std::array<std::string_view, 367> kReserved = {
 }  // namespace
 
 bool is_reserved_word(std::string_view word) {
-    return std::binary_search(kReserved.begin(), kReserved.end(), word);
+    // An object kind's words are reserved with it (runtime/objects/kinds.hpp).
+    using Words = runtime::objects::KindWords<runtime::ShapeKinds>;
+    const auto in = [word](const auto& list) { return std::binary_search(list.begin(), list.end(), word); };
+    return in(kReserved) || in(Words::keywords) || in(Words::options) || in(Words::settings);
 }
 
 }  // namespace hexant::language::grammar

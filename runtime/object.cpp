@@ -1,19 +1,24 @@
 #include "runtime/object.hpp"
 
 #include <string>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
 namespace hexant::runtime {
 
 const char* shape_name(const Shape& shape) {
-    static const char* names[] = {"sphere",   "box",  "plane",    "polygon", "triangle",
-                                  "smooth_triangle",  "disc",     "cylinder", "cone",
-                                  "torus",    "prism", "csg"};
     if (const auto* csg = std::get_if<Csg>(&shape)) {
         static const char* kinds[] = {"union", "merge", "intersection", "difference"};
         return kinds[static_cast<int>(csg->kind)];
     }
-    return names[shape.index()];
+    // Keywords are string literals: data() ends in a '\0'.
+    return std::visit(
+        [](const auto& s) -> const char* {
+            if constexpr (std::is_same_v<std::decay_t<decltype(s)>, Csg>) return "";
+            else return std::decay_t<decltype(s)>::keyword.data();
+        },
+        shape);
 }
 
 namespace {
@@ -21,75 +26,31 @@ namespace {
 bool varies(const TimeFunction& f) { return f.depends_on_time(); }
 bool varies(const Vector3Function& v) { return v.depends_on_time(); }
 bool varies(const Vector2Function& v) { return v.depends_on_time(); }
-template <typename T, std::size_t N>
-bool varies(const std::array<T, N>& items) {
-    for (const auto& item : items)
-        if (varies(item)) return true;
-    return false;
-}
 template <typename T>
 bool varies(const std::vector<T>& items) {
     for (const auto& item : items)
         if (varies(item)) return true;
     return false;
 }
-
-// The names of a shape's parameters that depend on time.
-struct TimedParameters {
-    std::vector<std::string> names;
-    void check(bool timed, const char* name) {
-        if (timed) names.emplace_back(name);
-    }
-    void operator()(const Sphere& s) { check(varies(s.center), "center"); check(varies(s.radius), "radius"); }
-    void operator()(const Box& b) { check(varies(b.corner1), "corner1"); check(varies(b.corner2), "corner2"); }
-    void operator()(const Plane& p) { check(varies(p.normal), "normal"); check(varies(p.distance), "distance"); }
-    void operator()(const Polygon& p) { check(varies(p.points), "points"); }
-    void operator()(const Triangle& t) { check(varies(t.points), "points"); }
-    void operator()(const SmoothTriangle& t) {
-        check(varies(t.points), "points");
-        check(varies(t.normals), "normals");
-    }
-    void operator()(const Disc& d) {
-        check(varies(d.center), "center");
-        check(varies(d.normal), "normal");
-        check(varies(d.radius), "radius");
-        check(varies(d.hole_radius), "hole_radius");
-    }
-    void operator()(const Cylinder& c) {
-        check(varies(c.base), "base");
-        check(varies(c.cap), "cap");
-        check(varies(c.radius), "radius");
-    }
-    void operator()(const Cone& c) {
-        check(varies(c.base), "base");
-        check(varies(c.base_radius), "base_radius");
-        check(varies(c.cap), "cap");
-        check(varies(c.cap_radius), "cap_radius");
-    }
-    void operator()(const Torus& t) {
-        check(varies(t.major_radius), "major_radius");
-        check(varies(t.minor_radius), "minor_radius");
-    }
-    void operator()(const Prism& p) {
-        check(varies(p.height1), "height1");
-        check(varies(p.height2), "height2");
-        check(varies(p.points), "points");
-    }
-    void operator()(const Csg& c) {
-        for (const auto& child : c.children)
-            if (child->depends_on_time()) {
-                names.emplace_back("children");
-                return;
-            }
-    }
-};
+// Flags, strings and described parameters are fixed when the scene is read.
+template <typename T>
+bool varies(const T&) {
+    return false;
+}
 
 }  // namespace
 
 std::vector<std::string> ObjectRecord::timed_parameters() const {
-    TimedParameters timed;
-    std::visit(timed, shape);
-    return timed.names;
+    std::vector<std::string> names;
+    if (const auto* csg = std::get_if<Csg>(&shape)) {
+        for (const auto& child : csg->children)
+            if (child->depends_on_time()) return {"children"};
+        return names;
+    }
+    for_each_parameter(shape, [&](const char* name, const char*, const auto& value) {
+        if (varies(value)) names.emplace_back(name);
+    });
+    return names;
 }
 
 bool ObjectRecord::shape_depends_on_time() const { return !timed_parameters().empty(); }

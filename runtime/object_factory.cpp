@@ -9,15 +9,6 @@
 
 #include "runtime/csg_object.hpp"
 #include "runtime/object_error.hpp"
-#include "runtime/objects/box_model.hpp"
-#include "runtime/objects/cylinder_model.hpp"
-#include "runtime/objects/disc_model.hpp"
-#include "runtime/objects/plane_model.hpp"
-#include "runtime/objects/polygon_model.hpp"
-#include "runtime/objects/prism_model.hpp"
-#include "runtime/objects/sphere_model.hpp"
-#include "runtime/objects/torus_model.hpp"
-#include "runtime/objects/triangle_model.hpp"
 #include "runtime/lifetime_object.hpp"
 #include "runtime/primitive.hpp"
 
@@ -44,12 +35,6 @@ struct Inherited {
 // written (a generated scene reached 8,000 intersections, a crash; real
 // scenes nest tens).
 constexpr int kMaxCsgDepth = 1000;
-
-template <class Model, class Shape>
-IntelligentObjectPtr make_primitive(const Shape& shape, const Transform& to_world,
-                                    TextureEvaluator texture, PrimitiveOptions options) {
-    return std::make_unique<Primitive<Model>>(Model(shape), to_world, std::move(texture), options);
-}
 
 IntelligentObjectPtr build_object(const ObjectRecord& record, const Inherited& parent);
 IntelligentObjectPtr build(const ObjectRecord& record, const Inherited& parent);
@@ -115,41 +100,23 @@ IntelligentObjectPtr build_object(const ObjectRecord& record, const Inherited& p
         for (const auto& child : csg->children) children.push_back(build(*child, down));
         return std::make_unique<CsgObject>(csg->kind, std::move(children), record.inverse);
     }
-    if (std::holds_alternative<Plane>(record.shape) && to_world.has_deformation())
-        throw ObjectError(record.place,
-                          "a plane cannot be twisted, tapered or bent (it has no bound to "
-                          "search in); deform a box or a polygon instead");
-
     TextureEvaluator evaluator(*texture, interior);
     const PrimitiveOptions options{record.inverse, no_shadow};
     return std::visit(
         [&](const auto& shape) -> IntelligentObjectPtr {
-            using S = std::decay_t<decltype(shape)>;
-            if constexpr (std::is_same_v<S, Sphere>)
-                return make_primitive<objects::SphereModel>(shape, to_world, evaluator, options);
-            else if constexpr (std::is_same_v<S, Box>)
-                return make_primitive<objects::BoxModel>(shape, to_world, evaluator, options);
-            else if constexpr (std::is_same_v<S, Plane>)
-                return make_primitive<objects::PlaneModel>(shape, to_world, evaluator, options);
-            else if constexpr (std::is_same_v<S, Polygon>)
-                return make_primitive<objects::PolygonModel>(shape, to_world, evaluator, options);
-            else if constexpr (std::is_same_v<S, Triangle>)
-                return make_primitive<objects::TriangleModel>(shape, to_world, evaluator, options);
-            else if constexpr (std::is_same_v<S, SmoothTriangle>)
-                return make_primitive<objects::SmoothTriangleModel>(shape, to_world, evaluator,
-                                                                    options);
-            else if constexpr (std::is_same_v<S, Disc>)
-                return make_primitive<objects::DiscModel>(shape, to_world, evaluator, options);
-            else if constexpr (std::is_same_v<S, Cylinder>)
-                return make_primitive<objects::CylinderModel>(shape, to_world, evaluator, options);
-            else if constexpr (std::is_same_v<S, Cone>)
-                return make_primitive<objects::ConeModel>(shape, to_world, evaluator, options);
-            else if constexpr (std::is_same_v<S, Torus>)
-                return make_primitive<objects::TorusModel>(shape, to_world, evaluator, options);
-            else if constexpr (std::is_same_v<S, Prism>)
-                return make_primitive<objects::PrismModel>(shape, to_world, evaluator, options);
-            else
+            using Kind = std::decay_t<decltype(shape)>;
+            if constexpr (std::is_same_v<Kind, Csg>) {
                 throw std::logic_error("make_intelligent_object: CSG handled above");
+            } else {
+                using Model = typename Kind::Model;
+                if (Primitive<Model>::kUnbounded && to_world.has_deformation())
+                    throw ObjectError(record.place,
+                                      "a " + std::string(Kind::keyword) +
+                                          " cannot be twisted, tapered or bent (it has no bound "
+                                          "to search in); deform a box or a polygon instead");
+                return std::make_unique<Primitive<Model>>(Model(shape), to_world,
+                                                          std::move(evaluator), options);
+            }
         },
         record.shape);
 }

@@ -114,63 +114,28 @@ Problem check(const Texture& texture, const std::string& whose, const Span& span
     return check(texture.transform, whose + " texture's", span);
 }
 
+// Each kind's parameters (runtime/objects/shape_kind.hpp), by type.
 struct ShapeParameters {
     const Span& span;
     const std::string whose;
+    Problem first;
 
-    Problem operator()(const Sphere& s) const { return all(v(s.center, "centre"), f(s.radius, "radius")); }
-    Problem operator()(const Box& s) const {
-        return all(v(s.corner1, "first corner"), v(s.corner2, "second corner"));
+    void operator()(const char*, const char* phrase, const TimeFunction& x) {
+        if (!first) first = check(x, whose + " " + phrase, span);
     }
-    Problem operator()(const Plane& s) const { return all(v(s.normal, "normal"), f(s.distance, "distance")); }
-    Problem operator()(const Polygon& s) const {
-        for (const auto& point : s.points)
-            if (auto p = v(point, "point")) return p;
-        return std::nullopt;
+    void operator()(const char*, const char* phrase, const Vector3Function& x) {
+        if (!first) first = check(x.c, whose + " " + phrase, span);
     }
-    Problem operator()(const Triangle& s) const {
-        for (const auto& point : s.points)
-            if (auto p = v(point, "corner")) return p;
-        return std::nullopt;
+    void operator()(const char*, const char* phrase, const Vector2Function& x) {
+        if (!first) first = check(x.c, whose + " " + phrase, span);
     }
-    Problem operator()(const SmoothTriangle& s) const {
-        for (std::size_t i = 0; i < 3; ++i)
-            if (auto p = all(v(s.points[i], "corner"), v(s.normals[i], "normal"))) return p;
-        return std::nullopt;
+    template <typename T>
+    void operator()(const char* name, const char* phrase, const std::vector<T>& items) {
+        for (const auto& item : items) (*this)(name, phrase, item);
     }
-    Problem operator()(const Disc& s) const {
-        return all(v(s.center, "centre"), v(s.normal, "normal"), f(s.radius, "radius"),
-                   f(s.hole_radius, "hole radius"));
-    }
-    Problem operator()(const Cylinder& s) const {
-        return all(v(s.base, "base point"), v(s.cap, "cap point"), f(s.radius, "radius"));
-    }
-    Problem operator()(const Cone& s) const {
-        return all(v(s.base, "base point"), f(s.base_radius, "base radius"), v(s.cap, "cap point"),
-                   f(s.cap_radius, "cap radius"));
-    }
-    Problem operator()(const Torus& s) const {
-        return all(f(s.major_radius, "major radius"), f(s.minor_radius, "minor radius"));
-    }
-    Problem operator()(const Prism& s) const {
-        if (auto p = all(f(s.height1, "first height"), f(s.height2, "second height"))) return p;
-        for (const auto& point : s.points)
-            if (auto p = check(point.c, whose + " point", span)) return p;
-        return std::nullopt;
-    }
-    Problem operator()(const Csg&) const { return std::nullopt; }
-
-  private:
-    Problem f(const TimeFunction& x, const char* name) const { return check(x, whose + " " + name, span); }
-    Problem v(const Vector3Function& x, const char* name) const {
-        return check(x.c, whose + " " + name, span);
-    }
-    template <typename... P>
-    static Problem all(const P&... problems) {
-        Problem first;
-        ((first = first ? first : problems), ...);
-        return first;
-    }
+    // Flags, strings and described parameters: nothing to evaluate.
+    template <typename T>
+    void operator()(const char*, const char*, const T&) {}
 };
 
 // 1 / |a - b|^2 as a time function: infinite exactly where a and b meet
@@ -189,7 +154,9 @@ TimeFunction meeting(const Vector3Function& a, const Vector3Function& b) {
 std::optional<std::string> bad_parameter(const ObjectRecord& object, const Animation& animation) {
     const Span span(animation);
     const std::string whose = std::string("the ") + shape_name(object.shape) + "'s";
-    if (auto p = std::visit(ShapeParameters{span, whose}, object.shape)) return p;
+    ShapeParameters parameters{span, whose, std::nullopt};
+    for_each_parameter(object.shape, parameters);
+    if (parameters.first) return parameters.first;
     if (auto p = check(object.transform, whose, span)) return p;
     if (object.texture)
         if (auto p = check(*object.texture, whose, span)) return p;

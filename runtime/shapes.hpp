@@ -1,80 +1,20 @@
-// The geometric primitives a scene may hold, as plain records in object
-// space, with POV-Ray's parameters and defaults. Each parameter may be a
-// function of time. The tracer's intelligent objects are built from these.
+// The shapes a scene may hold: one of the registered object kinds
+// (runtime/objects/kinds.hpp), each a plain record in object space with
+// POV-Ray's parameters and defaults, any of which may be a function of time;
+// or a CSG group of objects. The tracer's intelligent objects are built
+// from these.
 #pragma once
 
 #include <memory>
 #include <variant>
 #include <vector>
 
-#include "runtime/vector_function.hpp"
+#include "runtime/objects/kinds.hpp"
 
 namespace hexant::runtime {
 
 struct ObjectRecord;
 using ObjectPtr = std::shared_ptr<const ObjectRecord>;
-
-struct Sphere {
-    Vector3Function center;
-    TimeFunction radius;
-};
-
-struct Box {
-    Vector3Function corner1, corner2;
-};
-
-// All points p with dot(p, normal) = distance; the solid is the side the
-// normal points away from.
-struct Plane {
-    Vector3Function normal;
-    TimeFunction distance;
-};
-
-// POV-Ray's polygon: one or more closed outlines in a common plane.
-struct Polygon {
-    std::vector<Vector3Function> points;
-};
-
-struct Triangle {
-    std::array<Vector3Function, 3> points;
-};
-
-struct SmoothTriangle {
-    std::array<Vector3Function, 3> points;
-    std::array<Vector3Function, 3> normals;
-};
-
-struct Disc {
-    Vector3Function center, normal;
-    TimeFunction radius;
-    TimeFunction hole_radius = 0.0;
-};
-
-struct Cylinder {
-    Vector3Function base, cap;
-    TimeFunction radius;
-    bool open = false;
-};
-
-struct Cone {
-    Vector3Function base;
-    TimeFunction base_radius;
-    Vector3Function cap;
-    TimeFunction cap_radius;
-    bool open = false;
-};
-
-// In the x-z plane about the y axis.
-struct Torus {
-    TimeFunction major_radius, minor_radius;
-};
-
-// linear_sweep, linear_spline: the outline in x-z, swept along y.
-struct Prism {
-    TimeFunction height1, height2;
-    std::vector<Vector2Function> points;
-    bool open = false;
-};
 
 struct Csg {
     enum class Kind { Union, Merge, Intersection, Difference };
@@ -82,9 +22,29 @@ struct Csg {
     std::vector<ObjectPtr> children;
 };
 
-using Shape = std::variant<Sphere, Box, Plane, Polygon, Triangle, SmoothTriangle, Disc, Cylinder,
-                           Cone, Torus, Prism, Csg>;
+namespace shape_detail {
+template <class List>
+struct ShapeVariant;
+template <class... K>
+struct ShapeVariant<objects::KindList<K...>> {
+    using type = std::variant<K..., Csg>;
+};
+}  // namespace shape_detail
 
+using Shape = shape_detail::ShapeVariant<ShapeKinds>::type;
+
+// The kind's keyword, or the CSG's ("union", "difference", ...).
 const char* shape_name(const Shape& shape);
+
+// f(name, phrase, value) for each of the shape's own parameters (none for a
+// CSG), as runtime/objects/shape_kind.hpp describes.
+template <class F>
+void for_each_parameter(const Shape& shape, F&& f) {
+    std::visit(
+        [&](const auto& s) {
+            if constexpr (!std::is_same_v<std::decay_t<decltype(s)>, Csg>) s.parameters(f);
+        },
+        shape);
+}
 
 }  // namespace hexant::runtime

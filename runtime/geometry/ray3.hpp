@@ -1,6 +1,6 @@
 // The records that every static ray/shape routine in runtime/geometry shares:
 // a ray, a closed axis-aligned box and a surface hit, all in object space at
-// one instant. Each shape kind K has K.hpp with
+// one instant. Each object kind K has runtime/objects/<folder>/K_geometry.hpp with
 //   std::optional<SurfaceHit> intersect(const KGeometry&, const Ray3&, double s_min, double s_max);
 //   bool inside(const KGeometry&, glm::dvec3 p);
 //   Box3 object_bounds(const KGeometry&);          (not for the plane)

@@ -133,7 +133,7 @@ TEST_CASE("dump: each shape's own keys", "[app][dump]") {
         "object[5] disc center=<0, 0, 0> normal=<0, 1, 0> radius=2 hole_radius=0.5",
         "object[6] cylinder base=<0, 0, 0> cap=<0, 2, 0> radius=0.5 open=1",
         "object[7] cone base=<0, 0, 0> base_radius=1 cap=<0, 1, 0> cap_radius=0 open=0",
-        "object[8] torus major=2 minor=0.25",
+        "object[8] torus major_radius=2 minor_radius=0.25",
         "object[9] prism height1=0 height2=1 points=<0, 0>;<1, 2> open=0",
     };
     for (std::size_t i = 0; i < shapes.size(); ++i) CHECK(lines[i + 2] == shapes[i] + " " + kIdentity + " " + kFlags);

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "runtime/geometry/sphere.hpp"
+#include "runtime/objects/sphere/sphere_geometry.hpp"
 #include "runtime/object_test_support.hpp"
 
 using namespace object_test;

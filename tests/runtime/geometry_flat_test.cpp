@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "geometry_test_support.hpp"
-#include "runtime/geometry/polygon.hpp"
-#include "runtime/geometry/smooth_triangle.hpp"
-#include "runtime/geometry/triangle.hpp"
+#include "runtime/objects/polygon/polygon_geometry.hpp"
+#include "runtime/objects/triangle/smooth_triangle_geometry.hpp"
+#include "runtime/objects/triangle/triangle_geometry.hpp"
 
 using namespace geometry_test;
 using hexant::runtime::geometry::PolygonGeometry;

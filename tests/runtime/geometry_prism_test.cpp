@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "geometry_test_support.hpp"
-#include "runtime/geometry/prism.hpp"
+#include "runtime/objects/prism/prism_geometry.hpp"
 
 using namespace geometry_test;
 using hexant::runtime::geometry::PrismGeometry;

@@ -4,9 +4,9 @@
 // away, inside() against an independent long double test and the ray
 // parity, and surface_may_meet around surface points.
 #include "geometry_test_support.hpp"
-#include "runtime/geometry/cone.hpp"
-#include "runtime/geometry/cylinder.hpp"
-#include "runtime/geometry/disc.hpp"
+#include "runtime/objects/cylinder/cone_geometry.hpp"
+#include "runtime/objects/cylinder/cylinder_geometry.hpp"
+#include "runtime/objects/disc/disc_geometry.hpp"
 
 using namespace geometry_test;
 using hexant::runtime::geometry::ConeGeometry;

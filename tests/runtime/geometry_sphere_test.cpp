@@ -3,7 +3,7 @@
 // far from the origin), grazing rays against a long double reference,
 // inside() against the distance, and surface_may_meet around surface points.
 #include "geometry_test_support.hpp"
-#include "runtime/geometry/sphere.hpp"
+#include "runtime/objects/sphere/sphere_geometry.hpp"
 
 using namespace geometry_test;
 using hexant::runtime::geometry::SphereGeometry;

@@ -6,14 +6,14 @@
 #include <vector>
 
 #include "geometry_test_support.hpp"
-#include "runtime/geometry/box.hpp"
-#include "runtime/geometry/cylinder.hpp"
+#include "runtime/objects/box/box_geometry.hpp"
+#include "runtime/objects/cylinder/cylinder_geometry.hpp"
 #include "runtime/geometry/offset_ray.hpp"
 #include "runtime/geometry/outline.hpp"
-#include "runtime/geometry/sphere.hpp"
+#include "runtime/objects/sphere/sphere_geometry.hpp"
 #include "runtime/geometry/stable_arithmetic.hpp"
-#include "runtime/geometry/torus.hpp"
-#include "runtime/geometry/triangle.hpp"
+#include "runtime/objects/torus/torus_geometry.hpp"
+#include "runtime/objects/triangle/triangle_geometry.hpp"
 
 using namespace geometry_test;
 namespace geo = hexant::runtime::geometry;
@@ -205,12 +205,12 @@ TEST_CASE("offset_ray: no self-intersection at any scale or distance", "[runtime
     }
 }
 
-#include "runtime/geometry/cone.hpp"
-#include "runtime/geometry/disc.hpp"
-#include "runtime/geometry/plane.hpp"
-#include "runtime/geometry/polygon.hpp"
-#include "runtime/geometry/prism.hpp"
-#include "runtime/geometry/smooth_triangle.hpp"
+#include "runtime/objects/cylinder/cone_geometry.hpp"
+#include "runtime/objects/disc/disc_geometry.hpp"
+#include "runtime/objects/plane/plane_geometry.hpp"
+#include "runtime/objects/polygon/polygon_geometry.hpp"
+#include "runtime/objects/prism/prism_geometry.hpp"
+#include "runtime/objects/triangle/smooth_triangle_geometry.hpp"
 
 namespace {
 

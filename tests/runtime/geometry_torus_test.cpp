@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "geometry_test_support.hpp"
-#include "runtime/geometry/torus.hpp"
+#include "runtime/objects/torus/torus_geometry.hpp"
 
 using namespace geometry_test;
 using hexant::runtime::geometry::TorusGeometry;

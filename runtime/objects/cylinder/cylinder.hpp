@@ -1,0 +1,44 @@
+// POV-Ray's cylinder { BASE, CAP, RADIUS [open] }: the object kind
+// (runtime/objects/shape_kind.hpp).
+#pragma once
+
+#include <array>
+#include <string_view>
+
+#include "runtime/objects/shape_kind.hpp"
+#include "runtime/vector_function.hpp"
+
+namespace hexant::runtime {
+
+namespace objects {
+class CylinderModel;
+}  // namespace objects
+
+struct Cylinder {
+    static constexpr std::string_view keyword = "cylinder";
+    static constexpr std::array<std::string_view, 1> settings{"open"};
+    using Model = objects::CylinderModel;
+
+    Vector3Function base, cap;
+    TimeFunction radius;
+    bool open = false;
+
+    static Cylinder read(const objects::ShapeArguments& a) {
+        a.no_options();
+        a.need(3, 3, "two end points and a radius");
+        return {a.vector3(0, "cylinder's base point"), a.vector3(1, "cylinder's cap point"),
+                a.number(2, "cylinder's radius")};
+    }
+    void set(std::string_view, const objects::ShapeArguments& value) { open = objects::flag(value); }
+    template <class F>
+    void parameters(F&& f) const {
+        f("base", "base point", base);
+        f("cap", "cap point", cap);
+        f("radius", "radius", radius);
+        f("open", "open", open);
+    }
+};
+
+}  // namespace hexant::runtime
+
+#include "runtime/objects/cylinder/cylinder_model.hpp"

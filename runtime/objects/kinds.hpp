@@ -1,0 +1,27 @@
+// The object kinds hexant knows, registered here once: each is a record in
+// its own folder (runtime/objects/shape_kind.hpp says what it provides).
+// The language reads their keywords, options and settings from this list,
+// the factory makes a Primitive of each one's Model, and the checks and the
+// dump walk each one's parameters. Adding a kind: its folder, and a line in
+// each of the two lists below.
+#pragma once
+
+#include "runtime/objects/box/box.hpp"
+#include "runtime/objects/cylinder/cone.hpp"
+#include "runtime/objects/cylinder/cylinder.hpp"
+#include "runtime/objects/disc/disc.hpp"
+#include "runtime/objects/plane/plane.hpp"
+#include "runtime/objects/polygon/polygon.hpp"
+#include "runtime/objects/prism/prism.hpp"
+#include "runtime/objects/shape_kind.hpp"
+#include "runtime/objects/sphere/sphere.hpp"
+#include "runtime/objects/torus/torus.hpp"
+#include "runtime/objects/triangle/smooth_triangle.hpp"
+#include "runtime/objects/triangle/triangle.hpp"
+
+namespace hexant::runtime {
+
+using ShapeKinds = objects::KindList<Sphere, Box, Plane, Polygon, Triangle, SmoothTriangle, Disc,
+                                     Cylinder, Cone, Torus, Prism>;
+
+}  // namespace hexant::runtime

@@ -1,0 +1,39 @@
+// POV-Ray's plane { NORMAL, DISTANCE }: all points p with dot(p, normal) =
+// distance; the solid is the side the normal points away from. The object
+// kind (runtime/objects/shape_kind.hpp).
+#pragma once
+
+#include <array>
+#include <string_view>
+
+#include "runtime/objects/shape_kind.hpp"
+#include "runtime/vector_function.hpp"
+
+namespace hexant::runtime {
+
+namespace objects {
+class PlaneModel;
+}  // namespace objects
+
+struct Plane {
+    static constexpr std::string_view keyword = "plane";
+    using Model = objects::PlaneModel;
+
+    Vector3Function normal;
+    TimeFunction distance;
+
+    static Plane read(const objects::ShapeArguments& a) {
+        a.no_options();
+        a.need(2, 2, "a normal and a distance");
+        return {a.vector3(0, "plane's normal"), a.number(1, "plane's distance")};
+    }
+    template <class F>
+    void parameters(F&& f) const {
+        f("normal", "normal", normal);
+        f("distance", "distance", distance);
+    }
+};
+
+}  // namespace hexant::runtime
+
+#include "runtime/objects/plane/plane_model.hpp"

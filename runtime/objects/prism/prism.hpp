@@ -1,0 +1,53 @@
+// POV-Ray's prism { [SWEEP] [SPLINE] HEIGHT1, HEIGHT2, N, POINT ... [open] }:
+// linear_sweep with linear_spline, the outline in x-z swept along y. The
+// object kind (runtime/objects/shape_kind.hpp).
+#pragma once
+
+#include <array>
+#include <string_view>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "runtime/objects/shape_kind.hpp"
+#include "runtime/vector_function.hpp"
+
+namespace hexant::runtime {
+
+namespace objects {
+class PrismModel;
+}  // namespace objects
+
+struct Prism {
+    static constexpr std::string_view keyword = "prism";
+    static constexpr std::array<std::string_view, 6> options{
+        "bezier_spline", "conic_sweep", "cubic_spline", "linear_spline", "linear_sweep",
+        "quadratic_spline"};
+    static constexpr std::array<std::string_view, 1> settings{"open"};
+    using Model = objects::PrismModel;
+
+    TimeFunction height1, height2;
+    std::vector<Vector2Function> points;
+    bool open = false;
+    // The sweep and spline asked for, when hexant lacks them (it has
+    // linear_sweep with linear_spline): then the points are not read.
+    std::string lacking;
+
+    static Prism read(const objects::ShapeArguments& a);
+    void set(std::string_view, const objects::ShapeArguments& value) { open = objects::flag(value); }
+    std::optional<std::string> unsupported() const {
+        if (lacking.empty()) return std::nullopt;
+        return lacking;
+    }
+    template <class F>
+    void parameters(F&& f) const {
+        f("height1", "first height", height1);
+        f("height2", "second height", height2);
+        f("points", "point", points);
+        f("open", "open", open);
+    }
+};
+
+}  // namespace hexant::runtime
+
+#include "runtime/objects/prism/prism_model.hpp"

@@ -1,0 +1,146 @@
+// What an object kind is: one record type in its own folder
+// (runtime/objects/<kind>/), registered once in runtime/objects/kinds.hpp,
+// from which the language, the factory, the checks and the dump take what
+// they need (pbrt-v4 keeps each shape's parameter reading beside the shape;
+// Mitsuba registers its plugins in one place). A kind's record provides
+//
+//   static constexpr std::string_view keyword;   POV-Ray's word ("sphere")
+//   using Model = objects::SphereModel;          its time functions, which the
+//                                                factory wraps as Primitive<Model>
+//   static Sphere read(const ShapeArguments&);   from the values in its block
+//   template <class F> void parameters(F&& f) const;
+//       calls f(name, phrase, value) for each parameter: name as the dump
+//       and "which parameters move" print it ("center"), phrase as error
+//       messages say it ("centre"), value one of the Parameter types below
+//
+// and, where it has them,
+//
+//   static constexpr std::array<std::string_view, N> options;
+//       words written before its values (prism's linear_sweep)
+//   static constexpr std::array<std::string_view, N> settings;
+//   void set(std::string_view setting, const ShapeArguments& value);
+//       words written among its modifiers (open), with their values
+//   std::optional<std::string> unsupported() const;
+//       set when the block asked for a variant hexant lacks ("prism with
+//       cubic_spline"): kept unevaluated, an error only where used.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <concepts>
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <tuple>
+#include <vector>
+
+#include "runtime/objects/shape_arguments.hpp"
+#include "runtime/time_ops.hpp"
+#include "runtime/vector_function.hpp"
+
+namespace hexant::runtime::objects {
+
+// A parameter that is neither a number nor a vector (a font's name, a
+// mesh's triangles): never a time function; the dump prints `text`.
+struct DescribedParameter {
+    std::string text;
+};
+
+template <class... Kinds>
+struct KindList {};
+
+// A setting that is a flag (`open`, `open off`, `open 0`): on unless its
+// value is POV-Ray's false.
+inline bool flag(const ShapeArguments& value) {
+    return value.size() == 0 || pov_true(value.constant(0, "'" + value.keyword() + "'"));
+}
+
+namespace kind_detail {
+
+template <class K>
+constexpr std::array<std::string_view, 1> keyword_of() {
+    return {K::keyword};
+}
+
+template <class K>
+constexpr auto options_of() {
+    if constexpr (requires { K::options; })
+        return K::options;
+    else
+        return std::array<std::string_view, 0>{};
+}
+
+template <class K>
+constexpr auto settings_of() {
+    if constexpr (requires { K::settings; })
+        return K::settings;
+    else
+        return std::array<std::string_view, 0>{};
+}
+
+template <class... A>
+constexpr auto concat(const A&... arrays) {
+    std::array<std::string_view, (0 + ... + std::tuple_size_v<A>)> out{};
+    std::size_t at = 0;
+    ((std::copy(arrays.begin(), arrays.end(), out.begin() + at), at += arrays.size()), ...);
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+template <std::size_t N>
+constexpr std::size_t count_unique(const std::array<std::string_view, N>& sorted) {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < N; ++i)
+        if (i == 0 || sorted[i] != sorted[i - 1]) ++n;
+    return n;
+}
+
+template <std::size_t M, std::size_t N>
+constexpr std::array<std::string_view, M> unique(const std::array<std::string_view, N>& sorted) {
+    std::array<std::string_view, M> out{};
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < N; ++i)
+        if (i == 0 || sorted[i] != sorted[i - 1]) out[n++] = sorted[i];
+    return out;
+}
+
+}  // namespace kind_detail
+
+// The sorted keywords, option words and setting words of a list of kinds
+// (grammar tables binary-search them).
+template <class List>
+struct KindWords;
+
+template <class... K>
+struct KindWords<KindList<K...>> {
+  private:
+    static constexpr auto all_keywords = kind_detail::concat(kind_detail::keyword_of<K>()...);
+    static constexpr auto all_options = kind_detail::concat(kind_detail::options_of<K>()...);
+    static constexpr auto all_settings = kind_detail::concat(kind_detail::settings_of<K>()...);
+
+  public:
+    static constexpr auto keywords =
+        kind_detail::unique<kind_detail::count_unique(all_keywords)>(all_keywords);
+    static constexpr auto options =
+        kind_detail::unique<kind_detail::count_unique(all_options)>(all_options);
+    static constexpr auto settings =
+        kind_detail::unique<kind_detail::count_unique(all_settings)>(all_settings);
+};
+
+template <class K>
+constexpr bool takes_setting(std::string_view word) {
+    for (const auto w : kind_detail::settings_of<K>())
+        if (w == word) return true;
+    return false;
+}
+
+template <class K>
+std::optional<std::string> unsupported_variant(const K& record) {
+    if constexpr (requires { record.unsupported(); })
+        return record.unsupported();
+    else
+        return std::nullopt;
+}
+
+}  // namespace hexant::runtime::objects
