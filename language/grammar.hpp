@@ -900,12 +900,12 @@ struct light_block
 // Object kinds POV-Ray has and hexant does not: kept as source, an error
 // only where used. Also `function { }` and the *_map blocks.
 struct unsupported_kind_words {
-    static constexpr std::array<std::string_view, 32> list = {
+    static constexpr std::array<std::string_view, 31> list = {
         "bicubic_patch", "blob", "color_map", "colour_map", "cubic", "density", "density_map",
         "function", "height_field", "isosurface", "julia_fractal", "lathe", "lemon",
         "media", "mesh", "mesh2", "normal_map", "ovus", "parametric", "photons", "pigment_map",
         "poly", "polynomial", "quadric", "quartic", "rainbow", "slope_map", "sor",
-        "sphere_sweep", "superellipsoid", "text", "texture_map"};
+        "sphere_sweep", "superellipsoid", "texture_map"};
 };
 struct unsupported_kind : one_word_of<unsupported_kind_words> {};
 struct unsupported_block

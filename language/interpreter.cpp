@@ -476,6 +476,9 @@ namespace {
 
 // POV-Ray's own include folder (Debian's povray-includes), readable too.
 const char* const kPovRayIncludeDir = "/usr/share/povray-3.7/include";
+// Debian's fonts-povray: POV-Ray's fonts (timrom.ttf, cyrvetic.ttf, ...),
+// which its include folder links to.
+const char* const kPovRayFontDir = "/usr/share/fonts/truetype/povray";
 
 // Is `file` inside `folder` (both canonical)?
 bool inside(const std::filesystem::path& file, const std::filesystem::path& folder) {
@@ -533,12 +536,14 @@ std::string Interpreter::read_include(const std::filesystem::path& path, const p
 }
 
 std::filesystem::path Interpreter::resolve_include(const std::string& name, const p::position& where,
-                                                   const std::string& what) const {
+                                                   const std::string& what,
+                                                   const std::vector<std::filesystem::path>& also) const {
     namespace fs = std::filesystem;
     const fs::path file(name);
     std::vector<fs::path> folders{scene_folder_};
     folders.insert(folders.end(), options.include_paths.begin(), options.include_paths.end());
     folders.push_back(bundled_include_dir());
+    folders.insert(folders.end(), also.begin(), also.end());
     fs::path found;
     std::error_code error;
     if (file.is_absolute()) {
@@ -765,7 +770,9 @@ class BlockArguments final : public runtime::objects::ShapeArguments {
         return to_string_value(at(i), what);
     }
     std::filesystem::path file(std::size_t i, const std::string& kind) const override {
-        return st_.resolve_include(string(i, keyword_ + "'s " + kind + " name"), where_, kind);
+        // Also where POV-Ray's default library path finds them on Debian.
+        return st_.resolve_include(string(i, keyword_ + "'s " + kind + " name"), where_, kind,
+                                   {kPovRayIncludeDir, kPovRayFontDir});
     }
     [[noreturn]] void fail(const std::string& message) const override { throw ValueError(message); }
 
@@ -783,21 +790,50 @@ class BlockArguments final : public runtime::objects::ShapeArguments {
 };
 
 template <class... Kinds>
-runtime::Shape read_shape(const std::string& keyword, const runtime::objects::ShapeArguments& args,
-                          runtime::objects::KindList<Kinds...>) {
-    std::optional<runtime::Shape> shape;
-    ((keyword == Kinds::keyword ? (shape = Kinds::read(args), true) : false) || ...);
-    if (!shape) throw std::logic_error("hexant: unknown shape " + keyword);
-    return std::move(*shape);
+void read_shape(const std::string& keyword, const runtime::objects::ShapeArguments& args,
+                runtime::ObjectRecord& record, runtime::objects::KindList<Kinds...>) {
+    const bool found = ((keyword == Kinds::keyword ? ([&] {
+        record.shape = Kinds::read(args);
+        // What POV-Ray applies before the scene's own transformations.
+        if constexpr (requires { Kinds::placement(); }) record.transform = Kinds::placement();
+    }(), true) : false) || ...);
+    if (!found) throw std::logic_error("hexant: unknown shape " + keyword);
 }
+
+// The most objects one shape may become by strings that change with clock
+// (str(clock) over 10,000 frames is 10,000 texts).
+constexpr std::size_t kMaxTimedStringObjects = 100'000;
 
 }  // namespace
 
 runtime::ObjectRecord make_shape(const std::string& kind, std::vector<std::string> options,
                                  std::vector<Value>& args, Interpreter& st, const p::position& where) {
+    // A string value that changes with clock (str(clock, 0, 2), a branch on
+    // clock naming two fonts): one object per text, each living while its
+    // text holds, together in a union. (Further such strings split each.)
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        if (!args[i].is<TimedString>()) continue;
+        const auto texts = args[i].as<TimedString>().by_text();
+        if (texts.size() > kMaxTimedStringObjects)
+            throw ValueError(kind + "'s value " + std::to_string(i + 1) + " changes with clock into " +
+                             std::to_string(texts.size()) + " different strings, more than " +
+                             std::to_string(kMaxTimedStringObjects) + " objects");
+        runtime::Csg group;
+        for (const auto& [text, life] : texts) {
+            std::vector<Value> one = args;
+            one[i] = Value{text};
+            runtime::ObjectRecord child = make_shape(kind, options, one, st, where);
+            child.lifetime = child.lifetime.intersect(life);
+            child.place = st.shape_place;
+            group.children.push_back(std::make_shared<const runtime::ObjectRecord>(std::move(child)));
+        }
+        runtime::ObjectRecord record;
+        record.shape = std::move(group);
+        return record;
+    }
     const BlockArguments arguments(kind, std::move(options), args, st, where);
     runtime::ObjectRecord record;
-    record.shape = read_shape(kind, arguments, runtime::ShapeKinds{});
+    read_shape(kind, arguments, record, runtime::ShapeKinds{});
     return record;
 }
 

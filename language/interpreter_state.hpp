@@ -299,8 +299,10 @@ public:
     void read_file(const std::string& name, const std::string& text);
 
     // (`what` names the file in messages: "include file", "image file".)
+    // `also` are searched after the usual folders (and may be read).
     std::filesystem::path resolve_include(const std::string& name, const p::position& where,
-                                          const std::string& what = "include file") const;
+                                          const std::string& what = "include file",
+                                          const std::vector<std::filesystem::path>& also = {}) const;
     // The text of the include file at `path` (resolve_include's), counted
     // against Limits::text_read before it is read (read_source_text).
     std::string read_include(const std::filesystem::path& path, const p::position& where);

@@ -15,6 +15,7 @@
 #include "runtime/objects/prism/prism.hpp"
 #include "runtime/objects/shape_kind.hpp"
 #include "runtime/objects/sphere/sphere.hpp"
+#include "runtime/objects/text/text.hpp"
 #include "runtime/objects/torus/torus.hpp"
 #include "runtime/objects/triangle/smooth_triangle.hpp"
 #include "runtime/objects/triangle/triangle.hpp"
@@ -22,6 +23,6 @@
 namespace hexant::runtime {
 
 using ShapeKinds = objects::KindList<Sphere, Box, Plane, Polygon, Triangle, SmoothTriangle, Disc,
-                                     Cylinder, Cone, Torus, Prism>;
+                                     Cylinder, Cone, Torus, Prism, Text>;
 
 }  // namespace hexant::runtime

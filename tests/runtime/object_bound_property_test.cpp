@@ -153,6 +153,10 @@ TEST_CASE("bound holds the surface: prism", "[object][property]") {
     check_kind(kind_scene("prism"));
 }
 
+TEST_CASE("bound holds the surface: text", "[object][property]") {
+    check_kind(kind_scene("text"));
+}
+
 TEST_CASE("a plane is unbounded and gives no bound", "[object]") {
     const Parsed parsed = parse("plane { <0, 1, 0>, -1 translate <0, clock, 0> }\n");
     REQUIRE(parsed.objects.size() == 1);

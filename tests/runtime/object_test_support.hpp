@@ -175,6 +175,30 @@ inline glm::dvec3 sample_object_surface(const rt::Shape& shape, double t, Random
         p.y = part == 1 ? h1 : h2;
         return p;
     }
+    if (const auto* tx = std::get_if<rt::Text>(&shape)) {
+        // A glyph with an outline; then a point of a side wall (a point of
+        // a segment, at any depth) or of a cap (a point of the glyph's box
+        // that the even-odd rule puts inside, by rejection).
+        std::vector<const rt::geometry::TextGlyph*> glyphs;
+        for (const auto& g : tx->glyphs)
+            if (!g.segments.empty()) glyphs.push_back(&g);
+        if (glyphs.empty()) throw std::logic_error("sample_object_surface: a text without outlines");
+        const rt::geometry::TextGlyph& g = *glyphs[random.integer(0, int(glyphs.size()) - 1)];
+        const double depth = tx->thickness(t);
+        const int part = random.integer(0, 2);
+        if (part == 0) {
+            const auto& seg = g.segments[random.integer(0, int(g.segments.size()) - 1)];
+            const double u = random.uniform();
+            const glm::dvec2 q = seg.quadratic ? (1 - u) * (1 - u) * seg.p0 + 2 * u * (1 - u) * seg.control + u * u * seg.p2
+                                               : seg.p0 + u * (seg.p2 - seg.p0);
+            return {q.x, q.y, random.uniform(std::min(0.0, depth), std::max(0.0, depth))};
+        }
+        for (int tries = 0; tries < 100000; ++tries) {
+            const glm::dvec2 q(random.uniform(g.lo.x, g.hi.x), random.uniform(g.lo.y, g.hi.y));
+            if (rt::geometry::inside_outline(g, q)) return {q.x, q.y, part == 1 ? 0.0 : depth};
+        }
+        throw std::logic_error("sample_object_surface: no point inside a glyph");
+    }
     throw std::logic_error("sample_object_surface: a shape kind without a sampler");
 }
 
@@ -322,6 +346,11 @@ inline const std::vector<KindScene>& kind_scenes() {
         {"prism",
          "linear_sweep linear_spline -0.5, 0.5, 5, <-0.5, -0.5>, <0.5, -0.5>, <0.6, 0.4>, <-0.4, 0.5>, <-0.5, -0.5>",
          "linear_sweep linear_spline -0.5, 0.5 + clock, 5, <-0.5, -0.5>, <0.5, -0.5>, <0.6, 0.4 + clock>, <-0.4, 0.5>, <-0.5, -0.5>"},
+        // Two glyphs of POV-Ray's timrom.ttf (Debian's fonts-povray), one
+        // with a hole; the thickness moves.
+        {"text",
+         "ttf \"timrom.ttf\" \"Ag\", 0.5, 0",
+         "ttf \"timrom.ttf\" \"Ag\", 0.3 + 0.4 * clock, 0"},
     };
     return list;
 }

@@ -1,0 +1,86 @@
+// text { ttf "FONT" "STRING", THICKNESS, OFFSET } as the language reads it:
+// the font found as includes are (then in Debian's fonts-povray), strings
+// that change with clock made one text per piece of time, refusals named.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "language/interpreter.hpp"
+#include "runtime/shapes.hpp"
+#include "tests/language/scene_text.hpp"
+
+namespace rt = hexant::runtime;
+using hexant::test::error_of;
+
+namespace {
+
+bool fonts_installed() {
+    if (std::filesystem::exists(std::filesystem::path(HEXANT_POV_FONT_DIR) / "timrom.ttf")) return true;
+    WARN("not run: POV-Ray's fonts are not installed (Debian: fonts-povray)");
+    return false;
+}
+
+std::string message(const std::string& scene) { return error_of(scene).what(); }
+
+}  // namespace
+
+TEST_CASE("a text's glyphs are laid out when it is read", "[language][text]") {
+    if (!fonts_installed()) return;
+    const auto scene = hexant::language::parse_scene_text(
+        "text { ttf \"timrom.ttf\" \"Hi there\", 0.25, <0.1, 0, 0> }", "t.pov", {});
+    REQUIRE(scene.objects.size() == 1);
+    const auto& text = std::get<rt::Text>(scene.objects[0]->shape);
+    CHECK(text.string == "Hi there");
+    CHECK(text.glyphs.size() == 8);  // the space is a glyph without outline
+    CHECK(text.thickness.constant() == 0.25);
+    // Each later glyph starts further right: the offset adds 0.1 a character.
+    CHECK(text.glyphs[1].lo.x > text.glyphs[0].hi.x);
+    // POV-Ray's turn of 0.001 degrees about each axis comes first.
+    CHECK(scene.objects[0]->transform.steps().size() == 1);
+}
+
+TEST_CASE("a text whose string changes with clock is one text per string", "[language][text]") {
+    if (!fonts_installed()) return;
+    auto options = hexant::test::animation();  // frames 1 to 8, clock 0 to 1
+    const auto scene = hexant::language::parse_scene_text(
+        "text { ttf \"timrom.ttf\" str(frame_number, 0, 0), 0.1, 0 pigment { rgb 1 } }", "t.pov",
+        options);
+    REQUIRE(scene.objects.size() == 1);
+    const auto* group = std::get_if<rt::Csg>(&scene.objects[0]->shape);
+    REQUIRE(group != nullptr);
+    REQUIRE(group->children.size() == 8);
+    for (int frame = 1; frame <= 8; ++frame) {
+        const double t = options.animation.clock_of_frame(frame);
+        int living = 0;
+        for (const auto& child : group->children)
+            if (child->lifetime.contains(t)) {
+                ++living;
+                CHECK(std::get<rt::Text>(child->shape).string == std::to_string(frame));
+            }
+        CHECK(living == 1);
+    }
+}
+
+TEST_CASE("a text's refusals name what is wrong", "[language][text]") {
+    CHECK(message("text { ttf \"no_such_font.ttf\" \"a\", 1, 0 }").find("font file 'no_such_font.ttf' not found") !=
+          std::string::npos);
+    CHECK(message("text { internal 1 \"a\", 1, 0 }").find("internal fonts are not supported") != std::string::npos);
+    CHECK(message("text { \"timrom.ttf\" \"a\", 1, 0 }").find("needs its font as ttf") != std::string::npos);
+    CHECK(message("text { ttf \"timrom.ttf\" \"a\", 1 }").find("text needs a font file, a string, a thickness and an offset") !=
+          std::string::npos);
+    if (!fonts_installed()) return;
+    CHECK(std::string(error_of("text { ttf \"timrom.ttf\" \"a\", 1, <clock, 0, 0> }", hexant::test::animation()).what())
+              .find("offset depends on clock") != std::string::npos);
+    // A file that is not a font: FreeType's refusal, naming the file.
+    const auto folder = std::filesystem::temp_directory_path() / "hexant_text_test";
+    std::filesystem::create_directories(folder);
+    {
+        std::ofstream(folder / "fake.ttf") << "not a font at all";
+    }
+    hexant::language::ParseOptions options;
+    options.include_paths.push_back(folder.string());
+    const auto e = error_of("text { ttf \"fake.ttf\" \"a\", 1, 0 }", options);
+    CHECK(std::string(e.what()).find("fake.ttf") != std::string::npos);
+}
