@@ -10,6 +10,7 @@
 
 #include "language/grammar.hpp"
 #include "language/interpreter_state.hpp"
+#include "language/mesh_reading.hpp"
 #include "language/checked_integer.hpp"
 #include "language/timed_call.hpp"
 #include "language/value_ops.hpp"
@@ -1603,6 +1604,69 @@ HEXANT_ACTION(object_base) {
         }
     }
 };
+
+// ------------------------------------------------------------ meshes
+
+// The mesh being read: the object on top of the block stack.
+inline runtime::objects::MeshData& mesh_data(Interpreter& st, const p::position& where) {
+    auto& record = st.block<runtime::ObjectRecord>(where, "a mesh's part");
+    auto* mesh = std::get_if<runtime::Mesh>(&record.shape);
+    if (!mesh) throw ValueError("this belongs in a mesh or mesh2");
+    return *mesh->data;
+}
+struct open_mesh {
+    HEXANT_APPLY {
+        runtime::ObjectRecord record;
+        record.shape = runtime::Mesh{};
+        record.place = source_place(in);
+        st.blocks.emplace_back(std::move(record));
+    }
+};
+template <> struct action<g::mesh_open> : open_mesh {};
+template <> struct action<g::mesh2_open> : open_mesh {};
+HEXANT_ACTION(mesh_triangle) {
+    HEXANT_APPLY {
+        Value v = st.pop();
+        if (!v.is<runtime::ObjectPtr>()) throw ValueError("a mesh holds triangles and smooth_triangles only");
+        add_mesh_triangle(mesh_data(st, in.position()), *v.as<runtime::ObjectPtr>());
+    }
+};
+HEXANT_ACTION(mesh_inside_vector_value) {
+    HEXANT_APPLY { set_inside_vector(mesh_data(st, in.position()), st.pop()); }
+};
+HEXANT_ACTION(mesh_hierarchy_value) {
+    HEXANT_APPLY { (void)to_constant(st.pop(), "hierarchy"); (void)in; }
+};
+template <>
+struct action<g::mesh2_section_name> {
+    template <typename ActionInput>
+    static void apply(const ActionInput& in, Interpreter& st) {
+        st.push_name(word(in));
+    }
+};
+HEXANT_ACTION(mesh2_values) {
+    HEXANT_APPLY {
+        const std::vector<Value> values = st.close_frame();
+        const std::string section = st.pop_name();
+        read_mesh2_section(mesh_data(st, in.position()), section, values);
+    }
+};
+HEXANT_ACTION(mesh2_texture_list) {
+    HEXANT_APPLY { read_mesh2_textures(mesh_data(st, in.position()), st.close_frame()); }
+};
+// The hierarchy is built once all faces are read, before the modifiers'
+// object is pushed as a value.
+template <const char* Keyword>
+struct close_mesh {
+    HEXANT_APPLY {
+        finish_mesh(mesh_data(st, in.position()), Keyword);
+        finish_object::apply(in, st);
+    }
+};
+inline constexpr char kMeshWord[] = "mesh";
+inline constexpr char kMesh2Word[] = "mesh2";
+template <> struct action<g::mesh_block> : close_mesh<kMeshWord> {};
+template <> struct action<g::mesh2_block> : close_mesh<kMesh2Word> {};
 
 // The texture an object modifier changes, made if the object has none.
 inline runtime::Texture& object_texture(Interpreter& st, const p::position& where) {

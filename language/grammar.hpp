@@ -830,7 +830,7 @@ struct shape_arguments
 // option words it may take before its values (prism's linear_sweep), its
 // values, and modifiers. The kind itself reads what it was given.
 struct shape_keyword_words {
-    static constexpr auto list = runtime::objects::KindWords<runtime::ShapeKinds>::keywords;
+    static constexpr auto list = runtime::objects::KindWords<runtime::ShapeKinds>::block_keywords;
 };
 struct shape_option_words {
     static constexpr auto list = runtime::objects::KindWords<runtime::ShapeKinds>::options;
@@ -900,19 +900,59 @@ struct light_block
 // Object kinds POV-Ray has and hexant does not: kept as source, an error
 // only where used. Also `function { }` and the *_map blocks.
 struct unsupported_kind_words {
-    static constexpr std::array<std::string_view, 31> list = {
+    static constexpr std::array<std::string_view, 27> list = {
         "bicubic_patch", "blob", "color_map", "colour_map", "cubic", "density", "density_map",
-        "function", "height_field", "isosurface", "julia_fractal", "lathe", "lemon",
-        "media", "mesh", "mesh2", "normal_map", "ovus", "parametric", "photons", "pigment_map",
-        "poly", "polynomial", "quadric", "quartic", "rainbow", "slope_map", "sor",
+        "function", "height_field", "isosurface", "julia_fractal", "lemon",
+        "media", "normal_map", "ovus", "parametric", "photons", "pigment_map",
+        "poly", "polynomial", "quadric", "quartic", "rainbow", "slope_map",
         "sphere_sweep", "superellipsoid", "texture_map"};
 };
 struct unsupported_kind : one_word_of<unsupported_kind_words> {};
 struct unsupported_block
     : p::seq<unsupported_kind, ws, p::opt<skip::parenthesized, ws>, p::must<skipped_block>, ws> {};
 
+// mesh { triangle { .. } smooth_triangle { .. } ... modifiers }: its
+// triangles are read as objects and taken apart (runtime/objects/mesh/).
+struct mesh_open : p::seq<TAO_PEGTL_KEYWORD("mesh"), ws, p::must<lbrace>> {};
+struct mesh_triangle : p::seq<object_value> {};
+struct mesh_inside_vector_value : p::seq<expression> {};
+struct mesh_inside_vector
+    : p::seq<TAO_PEGTL_KEYWORD("inside_vector"), ws, p::must<mesh_inside_vector_value>> {};
+// hierarchy on|off: read; hexant's mesh always has its hierarchy.
+struct mesh_hierarchy_value : p::seq<expression> {};
+struct mesh_hierarchy
+    : p::seq<TAO_PEGTL_KEYWORD("hierarchy"), ws, p::opt<mesh_hierarchy_value>> {};
+struct mesh_item
+    : p::sor<directive<mesh_item>, macro_call<mesh_item>, mesh_inside_vector, mesh_hierarchy,
+             mesh_triangle, object_modifier> {};
+struct mesh_block : p::seq<mesh_open, p::star<mesh_item>, p::must<object_close>> {};
+
+// mesh2 { vertex_vectors { N, <..> ... } normal_vectors { } uv_vectors { }
+// texture_list { N, texture { } ... } face_indices { N, <a, b, c> [, t
+// [, t2, t3]] ... } normal_indices { } uv_indices { } modifiers }
+struct mesh2_open : p::seq<TAO_PEGTL_KEYWORD("mesh2"), ws, p::must<lbrace>> {};
+struct mesh2_section_name
+    : p::sor<TAO_PEGTL_KEYWORD("vertex_vectors"), TAO_PEGTL_KEYWORD("normal_vectors"),
+             TAO_PEGTL_KEYWORD("uv_vectors"), TAO_PEGTL_KEYWORD("face_indices"),
+             TAO_PEGTL_KEYWORD("normal_indices"), TAO_PEGTL_KEYWORD("uv_indices")> {};
+// A section's values, commas between them optional; directives may write
+// them (#while and #for loops, as meshmaker.inc's macros do).
+struct mesh2_value_item;
+struct mesh2_value_item : p::sor<directive<mesh2_value_item>, comma, shape_argument> {};
+struct mesh2_values : p::seq<frame_open, p::star<mesh2_value_item>> {};
+struct mesh2_section
+    : p::seq<mesh2_section_name, ws, p::must<lbrace>, p::must<mesh2_values>, p::must<rbrace>> {};
+struct mesh2_texture_count : p::seq<sum> {};
+struct mesh2_texture_list
+    : p::seq<TAO_PEGTL_KEYWORD("texture_list"), ws, p::must<lbrace>, frame_open,
+             p::must<mesh2_texture_count>, p::star<p::opt<comma>, texture_block>, p::must<rbrace>> {};
+struct mesh2_item
+    : p::sor<directive<mesh2_item>, macro_call<mesh2_item>, mesh2_section, mesh2_texture_list,
+             mesh_inside_vector, mesh_hierarchy, object_modifier> {};
+struct mesh2_block : p::seq<mesh2_open, p::star<mesh2_item>, p::must<object_close>> {};
+
 struct object_value
-    : p::sor<shape_block, csg_block, object_block, light_block> {};
+    : p::sor<mesh_block, mesh2_block, shape_block, csg_block, object_block, light_block> {};
 
 // Things that modify an object, in any order.
 struct object_texture : p::seq<texture_block> {};

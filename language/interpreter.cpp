@@ -792,10 +792,13 @@ class BlockArguments final : public runtime::objects::ShapeArguments {
 template <class... Kinds>
 void read_shape(const std::string& keyword, const runtime::objects::ShapeArguments& args,
                 runtime::ObjectRecord& record, runtime::objects::KindList<Kinds...>) {
+    // (Kinds with a rule of their own are never read here.)
     const bool found = ((keyword == Kinds::keyword ? ([&] {
-        record.shape = Kinds::read(args);
-        // What POV-Ray applies before the scene's own transformations.
-        if constexpr (requires { Kinds::placement(); }) record.transform = Kinds::placement();
+        if constexpr (!runtime::objects::kind_detail::own_syntax<Kinds>()) {
+            record.shape = Kinds::read(args);
+            // What POV-Ray applies before the scene's own transformations.
+            if constexpr (requires { Kinds::placement(); }) record.transform = Kinds::placement();
+        }
     }(), true) : false) || ...);
     if (!found) throw std::logic_error("hexant: unknown shape " + keyword);
 }

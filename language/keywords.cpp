@@ -11,7 +11,7 @@
 namespace hexant::language::grammar {
 
 namespace {
-constexpr std::array<std::string_view, 367> kReserved = {
+constexpr std::array<std::string_view, 376> kReserved = {
     "abs",
     "accuracy",
     "acos",
@@ -116,6 +116,7 @@ constexpr std::array<std::string_view, 367> kReserved = {
     "exp",
     "exponent",
     "exr",
+    "face_indices",
     "facets",
     "fade_color",
     "fade_colour",
@@ -154,6 +155,7 @@ constexpr std::array<std::string_view, 367> kReserved = {
     "hdr",
     "height_field",
     "hexagon",
+    "hierarchy",
     "hollow",
     "if",
     "ifdef",
@@ -165,6 +167,7 @@ constexpr std::array<std::string_view, 367> kReserved = {
     "image_width",
     "initial_clock",
     "initial_frame",
+    "inside_vector",
     "int",
     "interior",
     "interpolate",
@@ -219,7 +222,9 @@ constexpr std::array<std::string_view, 367> kReserved = {
     "no_shadow",
     "noise_generator",
     "normal",
+    "normal_indices",
     "normal_map",
+    "normal_vectors",
     "object",
     "octaves",
     "off",
@@ -332,6 +337,7 @@ constexpr std::array<std::string_view, 367> kReserved = {
     "tau",
     "text",
     "texture",
+    "texture_list",
     "texture_map",
     "tga",
     "tiff",
@@ -355,7 +361,9 @@ constexpr std::array<std::string_view, 367> kReserved = {
     "use_color",
     "use_colour",
     "use_index",
+    "uv_indices",
     "uv_mapping",
+    "uv_vectors",
     "v",
     "val",
     "variance",
@@ -363,6 +371,7 @@ constexpr std::array<std::string_view, 367> kReserved = {
     "vcross",
     "vdot",
     "version",
+    "vertex_vectors",
     "vlength",
     "vnormalize",
     "vrotate",

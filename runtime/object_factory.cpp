@@ -114,8 +114,18 @@ IntelligentObjectPtr build_object(const ObjectRecord& record, const Inherited& p
                                       "a " + std::string(Kind::keyword) +
                                           " cannot be twisted, tapered or bent (it has no bound "
                                           "to search in); deform a box or a polygon instead");
+                // Textures of the kind's own parts (a mesh's faces), written
+                // in its object space.
+                std::vector<TextureEvaluator> parts;
+                if constexpr (requires { shape.part_textures(); })
+                    for (const Texture& part : shape.part_textures()) {
+                        Texture world = part;
+                        world.transform_by(to_world);
+                        parts.emplace_back(world, interior);
+                    }
                 return std::make_unique<Primitive<Model>>(Model(shape), to_world,
-                                                          std::move(evaluator), options);
+                                                          std::move(evaluator), options,
+                                                          std::move(parts));
             }
         },
         record.shape);

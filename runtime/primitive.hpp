@@ -50,11 +50,19 @@ class Primitive final : public IntelligentObject {
 public:
     using Geometry = typename Model::Geometry;
     static constexpr bool kUnbounded = is_unbounded_model<Model>();
+    // A model made of parts with bounds of their own (a mesh's hierarchy).
+    static constexpr bool kHasPieces = requires(const Model& m) {
+        m.pieces([](const objects::IntervalBox&) { return 0; }, [](const objects::IntervalBox&) {});
+    };
+    // A model whose parts may have textures of their own (a mesh's faces).
+    static constexpr bool kHasPartTextures = requires(const Model& m) { m.texture_of(0); };
 
+    // `part_textures`: the textures a model's parts name (Model::texture_of),
+    // already in world terms.
     Primitive(Model model, const Transform& transform, TextureEvaluator texture,
-              PrimitiveOptions options)
+              PrimitiveOptions options, std::vector<TextureEvaluator> part_textures = {})
         : model_(std::move(model)), motion_(transform), texture_(std::move(texture)),
-          options_(options) {
+          part_textures_(std::move(part_textures)), options_(options) {
         moves_ = !model_.is_static() || !motion_.is_static();
         if (model_.is_static()) {
             static_geometry_ = model_.at(0.0);
@@ -77,6 +85,10 @@ public:
     void bound(const Box4& region, std::vector<SlabBound>& out) const override {
         if constexpr (kUnbounded) return;
         if (region.is_empty()) return;
+        if constexpr (kHasPieces) {
+            bound_by_pieces(region, out);
+            return;
+        }
         if (!moves_) {
             const Box4 piece = piece_box(still_->world_box, region.time(), region);
             if (piece.is_empty()) return;
@@ -198,6 +210,10 @@ public:
         else
             p.uv = hit.uv;
         p.texture = &texture_;
+        if constexpr (kHasPartTextures) {
+            const int k = model_.texture_of(hit.part);
+            if (k >= 0 && static_cast<std::size_t>(k) < part_textures_.size()) p.texture = &part_textures_[k];
+        }
         return p;
     }
 
@@ -389,9 +405,45 @@ private:
         });
     }
 
+    // The paper's star cluster: where the region is small against the
+    // object, the boxes of the model's parts that meet it (a mesh's
+    // hierarchy nodes, descended while a node crosses the region's edge and
+    // is more than half the region's size, at most kMaxPieces of them),
+    // each swept over the region's time.
+    void bound_by_pieces(const Box4& region, std::vector<SlabBound>& out) const {
+        constexpr std::size_t kMaxPieces = 32;
+        const Interval time = moves_ ? region.time() : Interval(0.0);
+        const glm::dvec4 extent = region.hi - region.lo;
+        const double size = std::max({extent.x, extent.y, extent.z});
+        std::vector<objects::IntervalBox> chosen;
+        model_.pieces(
+            [&](const objects::IntervalBox& box) {
+                const objects::IntervalBox world = motion_.world_box(box, time);
+                if (piece_box(world, region.time(), region).is_empty()) return 0;
+                // A part wholly inside the region gains nothing from its
+                // children; one across its edge does, while large.
+                if (contains_box(region, world) || largest_width(world) <= 0.5 * size ||
+                    chosen.size() >= kMaxPieces)
+                    return 1;
+                return 2;
+            },
+            [&](const objects::IntervalBox& box) { chosen.push_back(box); });
+        std::vector<Box4> pieces;
+        for (const auto& box : chosen) {
+            pieces.clear();
+            if (moves_)
+                swept_pieces(region, region.time(), 0,
+                             [&](const Interval& t) { return motion_.world_box(box, t); }, pieces);
+            else
+                pieces.push_back(piece_box(motion_.world_box(box, time), region.time(), region));
+            append_swept_bounds(pieces, region, out);  // a bound per part
+        }
+    }
+
     Model model_;
     Motion motion_;
     TextureEvaluator texture_;
+    std::vector<TextureEvaluator> part_textures_;
     PrimitiveOptions options_;
     bool moves_ = false;
     std::optional<Geometry> static_geometry_;

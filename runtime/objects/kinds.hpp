@@ -10,10 +10,13 @@
 #include "runtime/objects/cylinder/cone.hpp"
 #include "runtime/objects/cylinder/cylinder.hpp"
 #include "runtime/objects/disc/disc.hpp"
+#include "runtime/objects/lathe/lathe.hpp"
+#include "runtime/objects/mesh/mesh.hpp"
 #include "runtime/objects/plane/plane.hpp"
 #include "runtime/objects/polygon/polygon.hpp"
 #include "runtime/objects/prism/prism.hpp"
 #include "runtime/objects/shape_kind.hpp"
+#include "runtime/objects/sor/sor.hpp"
 #include "runtime/objects/sphere/sphere.hpp"
 #include "runtime/objects/text/text.hpp"
 #include "runtime/objects/torus/torus.hpp"
@@ -23,6 +26,6 @@
 namespace hexant::runtime {
 
 using ShapeKinds = objects::KindList<Sphere, Box, Plane, Polygon, Triangle, SmoothTriangle, Disc,
-                                     Cylinder, Cone, Torus, Prism, Text>;
+                                     Cylinder, Cone, Torus, Prism, Text, Mesh, Lathe, Sor>;
 
 }  // namespace hexant::runtime

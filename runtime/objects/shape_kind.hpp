@@ -20,6 +20,9 @@
 //   static constexpr std::array<std::string_view, N> settings;
 //   void set(std::string_view setting, const ShapeArguments& value);
 //       words written among its modifiers (open), with their values
+//   static constexpr bool kOwnSyntax = true;
+//       its blocks are read by a rule of its own in the grammar (mesh),
+//       not the generic "keyword { values modifiers }", and it has no read()
 //   std::optional<std::string> unsupported() const;
 //       set when the block asked for a variant hexant lacks ("prism with
 //       cubic_spline"): kept unevaluated, an error only where used.
@@ -59,8 +62,25 @@ inline bool flag(const ShapeArguments& value) {
 namespace kind_detail {
 
 template <class K>
+constexpr bool own_syntax() {
+    if constexpr (requires { K::kOwnSyntax; })
+        return K::kOwnSyntax;
+    else
+        return false;
+}
+
+template <class K>
 constexpr std::array<std::string_view, 1> keyword_of() {
     return {K::keyword};
+}
+
+// Kinds the generic shape block reads (not those with a rule of their own).
+template <class K>
+constexpr auto block_keyword_of() {
+    if constexpr (own_syntax<K>())
+        return std::array<std::string_view, 0>{};
+    else
+        return std::array<std::string_view, 1>{K::keyword};
 }
 
 template <class K>
@@ -116,12 +136,17 @@ template <class... K>
 struct KindWords<KindList<K...>> {
   private:
     static constexpr auto all_keywords = kind_detail::concat(kind_detail::keyword_of<K>()...);
+    static constexpr auto all_block_keywords = kind_detail::concat(kind_detail::block_keyword_of<K>()...);
     static constexpr auto all_options = kind_detail::concat(kind_detail::options_of<K>()...);
     static constexpr auto all_settings = kind_detail::concat(kind_detail::settings_of<K>()...);
 
   public:
+    // Every kind's keyword (reserved words), and those of the kinds the
+    // generic shape block reads.
     static constexpr auto keywords =
         kind_detail::unique<kind_detail::count_unique(all_keywords)>(all_keywords);
+    static constexpr auto block_keywords =
+        kind_detail::unique<kind_detail::count_unique(all_block_keywords)>(all_block_keywords);
     static constexpr auto options =
         kind_detail::unique<kind_detail::count_unique(all_options)>(all_options);
     static constexpr auto settings =

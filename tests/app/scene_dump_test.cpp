@@ -121,7 +121,7 @@ TEST_CASE("dump: each shape's own keys", "[app][dump]") {
     scene.objects.push_back(object(rt::Cylinder{vec(0.0, 0.0, 0.0), vec(0.0, symbolic_clock(), 0.0), 0.5, true}));
     scene.objects.push_back(object(rt::Cone{vec(0.0, 0.0, 0.0), 1.0, vec(0.0, 1.0, 0.0), 0.0, false}));
     scene.objects.push_back(object(rt::Torus{2.0, 0.25}));
-    scene.objects.push_back(object(rt::Prism{0.0, 1.0, {rt::Vector2Function{{0.0, 0.0}}, rt::Vector2Function{{1.0, symbolic_clock()}}}, false}));
+    scene.objects.push_back(object(rt::Prism{0.0, 1.0, {rt::Vector2Function{{0.0, 0.0}}, rt::Vector2Function{{1.0, symbolic_clock()}}}, false, {}}));
     const auto lines = dump(scene, 2.0);
     REQUIRE(lines.size() == 12);
     const std::vector<std::string> shapes = {

@@ -43,6 +43,8 @@ TEST_CASE("every registered kind is read by its keyword, names itself and is res
         CHECK(rt::shape_name(rt::Shape{Kind{}}) == keyword);
         // An empty block is the grammar's error; a string where the kind
         // wants numbers is the kind's own reading's, which names the kind.
+        // (Kinds with a rule of their own, mesh, say so in their own tests.)
+        if constexpr (rt::objects::kind_detail::own_syntax<Kind>()) return;
         const auto e = error_of(keyword + " { }");
         CHECK(std::string(e.what()).find("expected the object's parameters") != std::string::npos);
         const auto wrong = error_of(keyword + " { \"a string\" }");
@@ -67,7 +69,7 @@ TEST_CASE("a kind's option words and settings reach that kind only", "[language]
 
     // A setting of other kinds: the message names them.
     const auto e = error_of("sphere { 0, 1 open }");
-    CHECK(std::string(e.what()).find("'open' belongs to a cylinder, cone or prism, not a sphere") !=
+    CHECK(std::string(e.what()).find("'open' belongs to a cylinder, cone, prism or sor, not a sphere") !=
           std::string::npos);
     // An option word of another kind.
     const auto o = error_of("sphere { linear_spline 0, 1 }");

@@ -10,6 +10,7 @@
 // that fall inside their region: 10^5 in the suite; run
 //   HEXANT_PROPERTY_SAMPLES=10000000 build/tests/hexant_tests "[property]"
 // for 10^7 per variant.
+#include <cstdio>
 #include <catch2/catch.hpp>
 #include <string>
 #include <vector>
@@ -155,6 +156,62 @@ TEST_CASE("bound holds the surface: prism", "[object][property]") {
 
 TEST_CASE("bound holds the surface: text", "[object][property]") {
     check_kind(kind_scene("text"));
+}
+
+TEST_CASE("bound holds the surface: lathe and sor", "[object][property]") {
+    check_kind(kind_scene("lathe"));
+    check_kind(kind_scene("sor"));
+}
+
+TEST_CASE("bound holds the surface: mesh", "[object][property]") {
+    check_kind(kind_scene("mesh"));
+}
+
+TEST_CASE("a mesh answers a small region with several smaller bounds (the star cluster)", "[object]") {
+    // A 40 x 40 grid of quads in the x-y plane from 0 to 4: its hierarchy's
+    // nodes are its bound's pieces where the region is small against it.
+    std::string sdl = "mesh {\n";
+    for (int i = 0; i < 40; ++i)
+        for (int j = 0; j < 40; ++j) {
+            const double x = 0.1 * i, y = 0.1 * j, z = 0.02 * ((i * 7 + j * 3) % 5);
+            char quad[256];
+            std::snprintf(quad, sizeof quad,
+                          "triangle { <%g, %g, %g>, <%g, %g, 0>, <%g, %g, 0> } "
+                          "triangle { <%g, %g, 0>, <%g, %g, 0>, <%g, %g, %g> }\n",
+                          x, y, z, x + 0.1, y, x, y + 0.1, x + 0.1, y, x + 0.1, y + 0.1, x, y + 0.1, z);
+            sdl += quad;
+        }
+    sdl += "}\n";
+    const Parsed parsed = parse(sdl);
+    const rt::IntelligentObject& object = *parsed.objects.front();
+    rt::Box4 whole;
+    whole.lo = rt::Event(-1.0, -1.0, -1.0, 0.0);
+    whole.hi = rt::Event(5.0, 5.0, 1.0, 1.0);
+    std::vector<rt::SlabBound> all;
+    object.bound(whole, all);
+    CHECK(all.size() == 1);  // the region holds it all: one bound
+    // A region a tenth of its size, across its middle: several pieces, each
+    // much smaller than the one bound the region would clip.
+    rt::Box4 small;
+    small.lo = rt::Event(1.75, 1.0, -1.0, 0.0);
+    small.hi = rt::Event(2.25, 3.0, 1.0, 1.0);
+    std::vector<rt::SlabBound> pieces;
+    object.bound(small, pieces);
+    CHECK(pieces.size() >= 2);
+    double volume = 0.0;
+    for (const auto& b : pieces) volume += b.box().volume();
+    CHECK(volume < 0.5 * small.volume());
+    // And every surface event in the region lies in one of them.
+    Random random(5);
+    const rt::ObjectRecord& record = *parsed.scene.objects.front();
+    int checked = 0;
+    for (int k = 0; k < 20000; ++k) {
+        const rt::Event e = sample_surface_event(record, random.uniform(0.0, 1.0), random);
+        if (!small.contains(e)) continue;
+        ++checked;
+        REQUIRE(inside_some(pieces, e));
+    }
+    CHECK(checked > 100);
 }
 
 TEST_CASE("a plane is unbounded and gives no bound", "[object]") {

@@ -199,6 +199,46 @@ inline glm::dvec3 sample_object_surface(const rt::Shape& shape, double t, Random
         }
         throw std::logic_error("sample_object_surface: no point inside a glyph");
     }
+    if (const auto* mesh = std::get_if<rt::Mesh>(&shape)) {
+        // A random face, a random point of it.
+        const auto& m = *mesh->data;
+        const auto& f = m.faces[static_cast<std::size_t>(random.integer(0, int(m.faces.size()) - 1))];
+        double u = random.uniform(), v = random.uniform();
+        if (u + v > 1.0) {
+            u = 1.0 - u;
+            v = 1.0 - v;
+        }
+        const glm::dvec3 a = m.vertices[f.vertex[0]], b = m.vertices[f.vertex[1]], c = m.vertices[f.vertex[2]];
+        return a + u * (b - a) + v * (c - a);
+    }
+    const auto points_at = [&](const std::vector<rt::Vector2Function>& points) {
+        std::vector<glm::dvec2> out;
+        for (const auto& q : points) out.emplace_back(q.c[0](t), q.c[1](t));
+        return out;
+    };
+    if (const auto* lathe = std::get_if<rt::Lathe>(&shape)) {
+        // A point of a segment's profile, turned about y.
+        const auto g = rt::geometry::make_lathe(lathe->spline, points_at(lathe->points));
+        const auto& seg = g.segments[static_cast<std::size_t>(random.integer(0, int(g.segments.size()) - 1))];
+        const glm::dvec2 q = seg.at(random.uniform());
+        const double phi = random.uniform(0.0, 2.0 * kPi), r = std::fabs(q.x);
+        return {r * std::cos(phi), q.y, r * std::sin(phi)};
+    }
+    if (const auto* sor = std::get_if<rt::Sor>(&shape)) {
+        // A point of the side (the radius from r^2(y)), or of a cap.
+        const auto g = rt::geometry::make_sor(points_at(sor->points), sor->open);
+        const double phi = random.uniform(0.0, 2.0 * kPi);
+        const int part = sor->open ? 0 : random.integer(0, 2);
+        if (part == 0) {
+            const auto& seg = g.segments[static_cast<std::size_t>(random.integer(0, int(g.segments.size()) - 1))];
+            const double y = random.uniform(seg.y_lo, seg.y_hi);
+            const double r = std::sqrt(std::max(0.0, seg.r2(y)));
+            return {r * std::cos(phi), y, r * std::sin(phi)};
+        }
+        const double r2 = part == 1 ? g.base_radius_squared : g.cap_radius_squared;
+        const double r = std::sqrt(std::max(0.0, r2) * random.uniform());
+        return {r * std::cos(phi), part == 1 ? g.height1 : g.height2, r * std::sin(phi)};
+    }
     throw std::logic_error("sample_object_surface: a shape kind without a sampler");
 }
 
@@ -351,6 +391,26 @@ inline const std::vector<KindScene>& kind_scenes() {
         {"text",
          "ttf \"timrom.ttf\" \"Ag\", 0.5, 0",
          "ttf \"timrom.ttf\" \"Ag\", 0.3 + 0.4 * clock, 0"},
+        {"lathe",
+         "cubic_spline 6, <0, -0.6>, <0.5, -0.5>, <0.7, 0>, <0.4, 0.4>, <0.5, 0.7>, <0, 0.9>",
+         "cubic_spline 6, <0, -0.6>, <0.5, -0.5>, <0.7 - 0.3 * clock, 0>, <0.4, 0.4>, <0.5, 0.7 + clock>, <0, 0.9>"},
+        {"sor",
+         "6, <0.3, -0.7>, <0.4, -0.5>, <0.6, -0.1>, <0.3, 0.3>, <0.5, 0.6>, <0.6, 0.8>",
+         "6, <0.3, -0.7>, <0.4, -0.5>, <0.6, -0.1>, <0.3 + 0.2 * clock, 0.3>, <0.5, 0.6>, <0.6, 0.8>"},
+        // A closed mesh of five faces, one smooth, with an inside; its
+        // triangles cannot move, so its moving case moves it whole.
+        {"mesh",
+         "triangle { <-0.5, -0.4, -0.4>, <0.6, -0.5, -0.3>, <0, 0.7, 0> } "
+         "triangle { <0.6, -0.5, -0.3>, <0.1, -0.3, 0.6>, <0, 0.7, 0> } "
+         "smooth_triangle { <0.1, -0.3, 0.6>, <0, 0.2, 1>, <-0.5, -0.4, -0.4>, <-1, 0.2, 0>, <0, 0.7, 0>, <0, 1, 0> } "
+         "triangle { <-0.5, -0.4, -0.4>, <0.1, -0.3, 0.6>, <0.6, -0.5, -0.3> } "
+         "triangle { <-0.5, -0.4, -0.4>, <0.6, -0.5, -0.3>, <0.2, -0.45, -0.35> } inside_vector <0.1, 1, 0.2>",
+         "triangle { <-0.5, -0.4, -0.4>, <0.6, -0.5, -0.3>, <0, 0.7, 0> } "
+         "triangle { <0.6, -0.5, -0.3>, <0.1, -0.3, 0.6>, <0, 0.7, 0> } "
+         "smooth_triangle { <0.1, -0.3, 0.6>, <0, 0.2, 1>, <-0.5, -0.4, -0.4>, <-1, 0.2, 0>, <0, 0.7, 0>, <0, 1, 0> } "
+         "triangle { <-0.5, -0.4, -0.4>, <0.1, -0.3, 0.6>, <0.6, -0.5, -0.3> } "
+         "triangle { <-0.5, -0.4, -0.4>, <0.6, -0.5, -0.3>, <0.2, -0.45, -0.35> } inside_vector <0.1, 1, 0.2> "
+         "translate <0.5 * clock, 0, -0.3 * clock>"},
     };
     return list;
 }

@@ -1,0 +1,35 @@
+// Reading POV-Ray's mesh and mesh2 blocks into runtime::objects::MeshData
+// (runtime/objects/mesh/): the grammar's rules for them (grammar.hpp,
+// mesh_block and mesh2_block) hand their pieces here. Each throws
+// ValueError, which the rule that read the piece places.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "language/value.hpp"
+#include "runtime/object.hpp"
+#include "runtime/objects/mesh/mesh_data.hpp"
+
+namespace hexant::language {
+
+// A triangle or smooth_triangle written inside mesh { }: its corners (and
+// normals), and its texture if it has one.
+void add_mesh_triangle(runtime::objects::MeshData& mesh, const runtime::ObjectRecord& triangle);
+
+// One of mesh2's sections: "vertex_vectors", "normal_vectors",
+// "uv_vectors", "face_indices", "normal_indices", "uv_indices"; `values`
+// is its count and its values, as written.
+void read_mesh2_section(runtime::objects::MeshData& mesh, const std::string& section,
+                        const std::vector<Value>& values);
+// mesh2's texture_list: its count and its textures.
+void read_mesh2_textures(runtime::objects::MeshData& mesh, const std::vector<Value>& values);
+
+void set_inside_vector(runtime::objects::MeshData& mesh, const Value& value);
+
+// After the block: indices checked against what they index (POV-Ray's
+// rules: faces without normal_indices or uv_indices take their vertex
+// indices when there are normals or uvs), then the hierarchy built.
+void finish_mesh(runtime::objects::MeshData& mesh, const std::string& keyword);
+
+}  // namespace hexant::language

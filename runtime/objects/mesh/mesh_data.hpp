@@ -1,0 +1,48 @@
+// What a mesh holds once read (mesh { triangle {..} ... } or mesh2 { ... }):
+// vertices, normals and uv coordinates shared by index, the faces, the
+// textures its faces name, and its hierarchy over the faces in object space
+// (mesh_hierarchy.hpp). Built once while the scene is read; every copy of
+// the object shares it.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "runtime/material.hpp"
+#include "runtime/objects/mesh/mesh_hierarchy.hpp"
+
+namespace hexant::runtime::objects {
+
+struct MeshFace {
+    std::array<std::uint32_t, 3> vertex{};
+    // Indices into normals (all three, or none: -1) and into uvs.
+    std::array<std::int32_t, 3> normal{-1, -1, -1};
+    std::array<std::int32_t, 3> uv{-1, -1, -1};
+    // Index into textures, or -1: the object's own texture.
+    std::int32_t texture = -1;
+
+    bool smooth() const { return normal[0] >= 0; }
+};
+
+struct MeshData {
+    std::vector<glm::dvec3> vertices;
+    std::vector<glm::dvec3> normals;
+    std::vector<glm::dvec2> uvs;
+    std::vector<MeshFace> faces;  // in the hierarchy's order once built
+    std::vector<Texture> textures;
+    // POV-Ray's inside_vector: a mesh with one is a solid (a point is inside
+    // when a ray from it along the vector crosses the faces an odd number
+    // of times); without one it has no inside.
+    std::optional<glm::dvec3> inside_vector;
+    MeshHierarchy hierarchy;
+
+    // Orders the faces and builds the hierarchy (after reading).
+    void build_hierarchy() { hierarchy = MeshHierarchy::build(vertices, faces); }
+    std::size_t bytes() const;
+};
+
+}  // namespace hexant::runtime::objects
