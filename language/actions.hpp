@@ -1605,6 +1605,16 @@ HEXANT_ACTION(object_base) {
     }
 };
 
+HEXANT_ACTION(charset_name) {
+    HEXANT_APPLY {
+        const std::string name = in.string();
+        // POV-Ray 3.7 on Unix knows ascii and utf8 ("sys" has no conversion there).
+        if (name != "ascii" && name != "utf8")
+            throw ValueError("charset '" + name + "' is not supported (ascii or utf8, as POV-Ray 3.7 on Unix)");
+        st.charset = name;
+    }
+};
+
 // ------------------------------------------------------------ meshes
 
 // The mesh being read: the object on top of the block stack.

@@ -769,11 +769,14 @@ class BlockArguments final : public runtime::objects::ShapeArguments {
     std::string string(std::size_t i, const std::string& what) const override {
         return to_string_value(at(i), what);
     }
-    std::filesystem::path file(std::size_t i, const std::string& kind) const override {
-        // Also where POV-Ray's default library path finds them on Debian.
-        return st_.resolve_include(string(i, keyword_ + "'s " + kind + " name"), where_, kind,
-                                   {kPovRayIncludeDir, kPovRayFontDir});
+    std::filesystem::path find_file(const std::string& name, const std::string& kind) const override {
+        if (name.empty()) fail(keyword_ + "'s " + kind + " name is empty");
+        // Also where POV-Ray's default library path finds them on Debian;
+        // the system's fonts may be named by their path.
+        return st_.resolve_include(name, where_, kind,
+                                   {kPovRayIncludeDir, kPovRayFontDir, "/usr/share/fonts"});
     }
+    const std::string& charset() const override { return st_.charset; }
     [[noreturn]] void fail(const std::string& message) const override { throw ValueError(message); }
 
   private:

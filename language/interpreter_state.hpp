@@ -193,6 +193,8 @@ public:
     const ParseOptions& options;
     RandomStreams random;
     double version = 3.7;
+    // global_settings { charset }: "ascii" (POV-Ray's default) or "utf8".
+    std::string charset = "ascii";
     // The option words read before a shape's values (prism's linear_sweep),
     // one list per shape being read.
     std::vector<std::vector<std::string>> shape_options;

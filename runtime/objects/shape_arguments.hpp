@@ -37,14 +37,21 @@ class ShapeArguments {
     // A number that must be known while the scene is read (a count).
     virtual double constant(std::size_t i, const std::string& what) const = 0;
     virtual std::string string(std::size_t i, const std::string& what) const = 0;
-    // A file named by string i, found as an #include is (the scene's
-    // folder, then the library path), confined as includes are; `kind` for
-    // messages ("font file").
-    virtual std::filesystem::path file(std::size_t i, const std::string& kind) const = 0;
+    // A file named `name`, found as an #include is (the scene's folder, the
+    // library path, then POV-Ray's own folders), confined as includes are;
+    // `kind` for messages ("font file").
+    virtual std::filesystem::path find_file(const std::string& name, const std::string& kind) const = 0;
+    // global_settings { charset ascii | utf8 }: how a string's bytes become
+    // characters ("ascii", POV-Ray's default, or "utf8").
+    virtual const std::string& charset() const = 0;
 
     // Throws the language's error with this message.
     [[noreturn]] virtual void fail(const std::string& message) const = 0;
 
+    // The file named by string i (find_file).
+    std::filesystem::path file(std::size_t i, const std::string& kind) const {
+        return find_file(string(i, keyword() + "'s " + kind + " name"), kind);
+    }
     // A count in [lo, hi] (truncated toward zero, as POV-Ray's casts).
     long long count(std::size_t i, const std::string& what, long long lo, long long hi) const;
     // Fails unless lo <= size() <= hi: "<keyword> needs <what>, but N values were given".

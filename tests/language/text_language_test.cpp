@@ -63,10 +63,36 @@ TEST_CASE("a text whose string changes with clock is one text per string", "[lan
     }
 }
 
+TEST_CASE("a text's characters follow the scene's charset; fonts by POV-Ray's names", "[language][text]") {
+    if (!fonts_installed()) return;
+    const auto glyphs = [](const std::string& scene) {
+        const auto s = hexant::language::parse_scene_text(scene, "t.pov", {});
+        return std::get<rt::Text>(s.objects.back()->shape).glyphs.size();
+    };
+    // "\xc3\xa9" is é in UTF-8: two bytes, two spaces in ascii (POV-Ray's
+    // default), one character with charset utf8.
+    CHECK(glyphs("text { ttf \"timrom.ttf\" \"a\xc3\xa9\", 1, 0 }") == 3);
+    CHECK(glyphs("global_settings { charset utf8 } text { ttf \"timrom.ttf\" \"a\xc3\xa9\", 1, 0 }") == 2);
+    CHECK(message("global_settings { charset sys }").find("charset 'sys' is not supported") != std::string::npos);
+    // A name without its extension gets ".ttf"; internal 1 is timrom.ttf.
+    const auto plain = hexant::language::parse_scene_text("text { ttf \"timrom.ttf\" \"Ab\", 1, 0 }", "t.pov", {});
+    const auto bare = hexant::language::parse_scene_text("text { ttf \"timrom\" \"Ab\", 1, 0 }", "t.pov", {});
+    const auto internal = hexant::language::parse_scene_text("text { internal 1 \"Ab\", 1, 0 }", "t.pov", {});
+    const auto& a = std::get<rt::Text>(plain.objects[0]->shape).glyphs;
+    for (const auto* other : {&bare, &internal}) {
+        const auto& b = std::get<rt::Text>((*other).objects[0]->shape).glyphs;
+        REQUIRE(b.size() == a.size());
+        for (std::size_t i = 0; i < a.size(); ++i) {
+            CHECK(b[i].lo == a[i].lo);
+            CHECK(b[i].hi == a[i].hi);
+        }
+    }
+}
+
 TEST_CASE("a text's refusals name what is wrong", "[language][text]") {
     CHECK(message("text { ttf \"no_such_font.ttf\" \"a\", 1, 0 }").find("font file 'no_such_font.ttf' not found") !=
           std::string::npos);
-    CHECK(message("text { internal 1 \"a\", 1, 0 }").find("internal fonts are not supported") != std::string::npos);
+    CHECK(message("text { internal 7 \"a\", 1, 0 }").find("internal font 7 is out of range 0 to 3") != std::string::npos);
     CHECK(message("text { \"timrom.ttf\" \"a\", 1, 0 }").find("needs its font as ttf") != std::string::npos);
     CHECK(message("text { ttf \"timrom.ttf\" \"a\", 1 }").find("text needs a font file, a string, a thickness and an offset") !=
           std::string::npos);

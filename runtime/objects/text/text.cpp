@@ -23,17 +23,23 @@ std::shared_ptr<const objects::TrueTypeFont> font_at(const std::filesystem::path
 
 }  // namespace
 
+// POV-Ray 3.7's internal fonts 0 to 3 are its four bundled TrueType files.
+const char* const kInternalFonts[] = {"povlogo.ttf", "timrom.ttf", "cyrvetic.ttf", "crystal.ttf"};
+
 Text Text::read(const objects::ShapeArguments& a) {
     const auto& options = a.options();
-    if (options.size() != 1 || options.front() != "ttf") {
-        if (!options.empty() && options.front() == "internal")
-            a.fail("text's internal fonts are not supported by hexant; name a TrueType file: "
-                   "text { ttf \"timrom.ttf\" \"...\", thickness, offset }");
-        a.fail("text needs its font as ttf \"FILE.ttf\" before the string");
-    }
-    a.need(4, 4, "a font file, a string, a thickness and an offset");
+    const bool internal = options.size() == 1 && options.front() == "internal";
+    if (!internal && (options.size() != 1 || options.front() != "ttf"))
+        a.fail("text needs its font as ttf \"FILE.ttf\" (or internal N) before the string");
+    a.need(4, 4, internal ? "a font number, a string, a thickness and an offset"
+                          : "a font file, a string, a thickness and an offset");
     Text text;
-    text.font = a.string(0, "text's font file name");
+    if (internal) {
+        const long long id = a.count(0, "text's internal font", 0, 3);
+        text.font = kInternalFonts[id];
+    } else {
+        text.font = a.string(0, "text's font file name");
+    }
     text.string = a.string(1, "text's string");
     text.thickness = a.number(2, "text's thickness");
     const Vector3Function offset = a.vector3(3, "text's offset");
@@ -41,9 +47,13 @@ Text Text::read(const objects::ShapeArguments& a) {
         a.fail("text's offset depends on clock; it places the glyphs, which hexant lays out "
                "once (move or scale the text instead)");
     text.offset = offset(0.0);
+    // POV-Ray adds ".ttf" to a name without an extension.
+    std::string name = text.font;
+    if (std::filesystem::path(name).extension().empty()) name += ".ttf";
+    const auto encoding = a.charset() == "utf8" ? objects::TextEncoding::utf8 : objects::TextEncoding::ascii;
     try {
-        const auto font = font_at(a.file(0, "font file"));
-        geometry::TextGeometry laid = objects::lay_out_text(*font, text.string, 1.0, text.offset);
+        const auto font = font_at(a.find_file(name, "font file"));
+        geometry::TextGeometry laid = objects::lay_out_text(*font, text.string, 1.0, text.offset, encoding);
         text.glyphs = laid.glyphs;
     } catch (const objects::FontError& e) {
         a.fail(e.what());

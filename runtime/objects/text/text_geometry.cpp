@@ -381,6 +381,12 @@ std::optional<SurfaceHit> intersect(const TextGeometry& text, const Ray3& ray, d
     }
     hit.shading_normal = hit.normal;
     hit.uv = {hit.point.x, hit.point.y};
+    // The point's error bound, as a triangle's (barycentric_error: a few
+    // roundings of each coordinate's size): a cap's z is exact here, but a
+    // secondary ray from it is carried into object space by a transform that
+    // rounds at the size of the coordinates, and a glyph far from the text's
+    // origin (a long line) would otherwise shadow itself.
+    hit.error = rounding_gamma(10) * glm::abs(hit.point);
     if (!is_finite(hit)) return std::nullopt;
     return hit;
 }

@@ -15,3 +15,9 @@ text { ttf "cyrvetic.ttf" "AVATAR Wave", 0.2, <0.03, 0.01, 0>
   pigment { checker color rgb <0.3, 0.9, 0.5> color rgb <0.1, 0.4, 0.8> scale 0.1 }
   scale 0.55 rotate y*(-25 + 50*clock) translate <0, -0.35, 0> }
 plane { y, -0.5 pigment { color rgb 0.6 } }
+// Glyphs 200 units from the text's own origin (800 spaces first), brought
+// back by a translate and turned: their faces must not shadow themselves.
+#declare Far = ""; #for (I, 1, 800) #declare Far = concat(Far, " "); #end
+text { ttf "timrom.ttf" concat(Far, "31o"), 0.3, 0
+  pigment { color rgb <1, 0.6, 0.2> } finish { ambient 0.2 diffuse 0.8 }
+  translate <-204.694 + 3.5, 0, 0> rotate y * -30 scale 0.5 translate <2.2, -0.45, -0.6> }

@@ -1,0 +1,63 @@
+#include "runtime/objects/height_field/height_field.hpp"
+
+#include <map>
+#include <mutex>
+#include <utility>
+
+namespace hexant::runtime {
+
+namespace {
+
+// Images by file and type, read once per process however many height
+// fields name them (weak: freed with the last scene that used them).
+std::shared_ptr<const objects::HeightFieldData> field_at(const std::filesystem::path& path,
+                                                         const std::string& type) {
+    static std::mutex mutex;
+    static std::map<std::pair<std::filesystem::path, std::string>,
+                    std::weak_ptr<const objects::HeightFieldData>>
+        fields;
+    const std::lock_guard<std::mutex> lock(mutex);
+    auto& slot = fields[{path, type}];
+    if (auto field = slot.lock()) return field;
+    auto field = objects::read_height_field(path, type);
+    slot = field;
+    return field;
+}
+
+}  // namespace
+
+HeightField HeightField::read(const objects::ShapeArguments& a) {
+    const auto& options = a.options();
+    if (options.size() > 1)
+        a.fail("height_field takes one image type word before its file name, not " +
+               std::to_string(options.size()));
+    HeightField field;
+    if (!options.empty()) {
+        field.type = options.front();
+        if (field.type != "png" && field.type != "exr")
+            a.fail("height_field: hexant does not read '" + field.type +
+                   "' images; convert the file to png (or exr) and write png \"FILE.png\"");
+    }
+    a.need(1, 1, "an image file name");
+    field.file = a.string(0, "height_field's image file name");
+    try {
+        field.data = field_at(a.file(0, "height_field image"), field.type);
+    } catch (const objects::HeightFieldError& e) {
+        a.fail(e.what());
+    }
+    return field;
+}
+
+void HeightField::set(std::string_view setting, const objects::ShapeArguments& value) {
+    if (setting == "smooth") {
+        smooth = objects::flag(value);
+    } else if (setting == "water_level") {
+        value.need(1, 1, "a water level");
+        water_level = value.number(0, "height_field's water level");
+    } else if (setting == "hierarchy") {
+        // POV-Ray's switch for its own block hierarchy: read, ignored.
+        if (value.size() > 0) (void)value.constant(0, "height_field's hierarchy");
+    }
+}
+
+}  // namespace hexant::runtime
