@@ -13,8 +13,10 @@ run: build
 	./build/hexant render examples/atom.pov examples/atom.ini \
 	  --contact-sheet out/atom/contact_sheet.png --animation out/atom/atom.gif
 
+# --timeout: a test that hangs fails after 10 minutes instead of holding
+# the run (the slowest takes seconds; the whole suite about a minute).
 test: build
-	cd build && ctest --output-on-failure -j$(JOBS)
+	cd build && ctest --output-on-failure -j$(JOBS) --timeout 600
 
 # Renders the golden-test frames anew and stores them in tests/golden/: run by
 # hand after a change that is meant to change the images, then look at them.

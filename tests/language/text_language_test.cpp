@@ -63,7 +63,7 @@ TEST_CASE("a text whose string changes with clock is one text per string", "[lan
     }
 }
 
-TEST_CASE("a text's characters follow the scene's charset; fonts by POV-Ray's names", "[language][text]") {
+TEST_CASE("a text's characters follow the scene's charset and fonts by POV-Ray's names", "[language][text]") {
     if (!fonts_installed()) return;
     const auto glyphs = [](const std::string& scene) {
         const auto s = hexant::language::parse_scene_text(scene, "t.pov", {});

@@ -18,6 +18,8 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kClip = 1.0 + 1e-6;
 // The longest piece of the ray the search leaves unsplit.
 constexpr double kLeaf = 1e-9;
+// Pieces one ray may visit (see intersect).
+constexpr int kPieceBudget = 1 << 14;
 // F's rounding: a few ulps of pow's results (relative to F + 1 >= 0).
 constexpr double kRangeSlack = 1e-12;
 
@@ -181,7 +183,11 @@ std::optional<SurfaceHit> intersect(const SuperellipsoidGeometry& g, const Ray3&
     int top = 0;
     stack[top++] = {k0, k1, f(k0), f(k1)};
     double k_hit = kInf;
-    while (top > 0) {
+    // A ray that runs within the surface (along a face of a near-cube, say)
+    // keeps every piece's range around zero: without a budget its pieces
+    // would number 2^depth. An ordinary ray visits a few hundred.
+    int budget = kPieceBudget;
+    while (top > 0 && budget-- > 0) {
         const Piece piece = stack[--top];
         const glm::dvec3 pa = local->at(piece.a), pb = local->at(piece.b);
         if (!range_holds_zero(g, glm::min(pa, pb), glm::max(pa, pb))) continue;

@@ -26,7 +26,8 @@
 // front first; a piece whose interval of F excludes 0 is dropped; a piece
 // shorter than 1e-9 with a sign change is refined by bisection to adjacent
 // doubles. No crossing of the surface wider than 1e-9 (a thousandth of a
-// millionth of the box) is missed; an exact tangency may be.
+// millionth of the box) is missed; an exact tangency may be, and so may a
+// ray that runs within the surface (the search stops after 2^14 pieces).
 #pragma once
 
 #include <glm/glm.hpp>
