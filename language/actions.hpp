@@ -1654,10 +1654,18 @@ struct action<g::mesh2_section_name> {
         st.push_name(word(in));
     }
 };
+HEXANT_ACTION(mesh2_value) {
+    HEXANT_APPLY {
+        (void)in;
+        st.mesh2_values.push_back(mesh_value(st.pop(), "a mesh2 section"));
+    }
+};
 HEXANT_ACTION(mesh2_values) {
     HEXANT_APPLY {
-        const std::vector<Value> values = st.close_frame();
+        (void)st.close_frame();  // each value was taken as it was read
         const std::string section = st.pop_name();
+        std::vector<MeshValue> values = std::move(st.mesh2_values);
+        st.mesh2_values.clear();
         read_mesh2_section(mesh_data(st, in.position()), section, values);
     }
 };
@@ -1729,7 +1737,7 @@ HEXANT_ACTION(object_flag) {
         if (name == "no_shadow") record.no_shadow = on;
         else if (name == "hollow") record.hollow = on;
         else if (name == "inverse") record.inverse = on;
-        // sturm, no_image, no_reflection, no_radiosity, double_illumination, smooth: read, no effect.
+        // sturm, no_image, no_reflection, no_radiosity, double_illuminate: read, no effect.
     }
 };
 // A setting of the object's kind (runtime/objects/shape_kind.hpp).

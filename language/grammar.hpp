@@ -937,8 +937,11 @@ struct mesh2_section_name
              TAO_PEGTL_KEYWORD("normal_indices"), TAO_PEGTL_KEYWORD("uv_indices")> {};
 // A section's values, commas between them optional; directives may write
 // them (#while and #for loops, as meshmaker.inc's macros do).
+// Each value is taken into the section as it is read (a million-face mesh
+// would otherwise hold millions of values at once).
+struct mesh2_value : p::seq<sum> {};
 struct mesh2_value_item;
-struct mesh2_value_item : p::sor<directive<mesh2_value_item>, comma, shape_argument> {};
+struct mesh2_value_item : p::sor<directive<mesh2_value_item>, comma, mesh2_value> {};
 struct mesh2_values : p::seq<frame_open, p::star<mesh2_value_item>> {};
 struct mesh2_section
     : p::seq<mesh2_section_name, ws, p::must<lbrace>, p::must<mesh2_values>, p::must<rbrace>> {};
@@ -964,8 +967,7 @@ struct object_flag_name
     : p::sor<TAO_PEGTL_KEYWORD("no_shadow"), TAO_PEGTL_KEYWORD("hollow"),
              TAO_PEGTL_KEYWORD("inverse"), TAO_PEGTL_KEYWORD("sturm"),
              TAO_PEGTL_KEYWORD("no_image"), TAO_PEGTL_KEYWORD("no_reflection"),
-             TAO_PEGTL_KEYWORD("no_radiosity"), TAO_PEGTL_KEYWORD("double_illumination"),
-             TAO_PEGTL_KEYWORD("smooth")> {};
+             TAO_PEGTL_KEYWORD("no_radiosity"), TAO_PEGTL_KEYWORD("double_illuminate")> {};
 struct object_flag_value : p::seq<p::not_at<p::one<'<'>>, expression> {};
 struct object_flag : p::seq<object_flag_name, ws, frame_open, p::opt<object_flag_value>> {};
 // A setting of the object's own kind (a cylinder's `open`), with an

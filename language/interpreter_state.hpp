@@ -34,6 +34,7 @@
 #include "language/errors.hpp"
 #include "language/grammar.hpp"
 #include "language/interpreter.hpp"
+#include "language/mesh_reading.hpp"
 #include "language/value.hpp"
 #include "language/time_branch.hpp"
 #include "language/value_ops.hpp"
@@ -193,6 +194,8 @@ public:
     const ParseOptions& options;
     RandomStreams random;
     double version = 3.7;
+    // The values of the mesh2 section being read (language/mesh_reading.hpp).
+    std::vector<MeshValue> mesh2_values;
     // global_settings { charset }: "ascii" (POV-Ray's default) or "utf8".
     std::string charset = "ascii";
     // The option words read before a shape's values (prism's linear_sweep),

@@ -107,7 +107,7 @@ constexpr std::array<std::string_view, 376> kReserved = {
     "dispersion_samples",
     "distance",
     "div",
-    "double_illumination",
+    "double_illuminate",
     "else",
     "elseif",
     "emission",

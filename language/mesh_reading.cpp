@@ -33,25 +33,10 @@ std::uint32_t add_vertex(MeshData& mesh, const glm::dvec3& p) {
     return static_cast<std::uint32_t>(mesh.vertices.size() - 1);
 }
 
-// The section's declared count, checked against the values that follow it
-// (`per` values an item) or none when items vary in length.
-long long section_count(const std::vector<Value>& values, const std::string& section) {
-    if (values.empty()) throw ValueError(section + " needs its count first");
-    return checked_integer(to_constant(values[0], section + "'s count"), section + "'s count", 0, kMaxMeshItems);
-}
-
 void check_count(long long declared, std::size_t found, const std::string& section) {
     if (static_cast<std::size_t>(declared) != found)
         throw ValueError(section + " says it has " + std::to_string(declared) + " but lists " +
                          std::to_string(found));
-}
-
-std::array<std::int32_t, 3> index_triple(const Value& v, const std::string& what) {
-    const glm::dvec3 p = fixed_vector(v, what);
-    std::array<std::int32_t, 3> out{};
-    for (int i = 0; i < 3; ++i)
-        out[i] = static_cast<std::int32_t>(checked_integer(p[i], what, 0, kMaxMeshItems - 1));
-    return out;
 }
 
 void check_index(std::int32_t index, std::size_t size, const std::string& what, std::size_t face,
@@ -86,23 +71,64 @@ void add_mesh_triangle(MeshData& mesh, const runtime::ObjectRecord& triangle) {
     mesh.faces.push_back(face);
 }
 
-void read_mesh2_section(MeshData& mesh, const std::string& section, const std::vector<Value>& values) {
-    const long long n = section_count(values, section);
+MeshValue mesh_value(const Value& value, const std::string& section) {
+    MeshValue out;
+    if (value.is<TimeFunction>()) {
+        out.c[0] = to_constant(value, section + "'s value");
+        return out;
+    }
+    if (!value.is<Vector>()) throw ValueError(section + " holds numbers and vectors, not a " + type_name(value));
+    const Vector& v = value.as<Vector>();
+    if (v.size > 3) throw ValueError(section + " holds vectors of 2 or 3 numbers, not " + std::to_string(v.size));
+    out.size = v.size;
+    for (int i = 0; i < v.size; ++i) {
+        if (!v.c[i].is_constant())
+            throw ValueError(section + "'s vector depends on clock; a mesh's triangles are fixed when the "
+                                       "scene is read (move, turn or deform the whole mesh with its transforms)");
+        out.c[i] = v.c[i].constant();
+    }
+    return out;
+}
+
+namespace {
+
+glm::dvec3 vector3(const MeshValue& v) {
+    if (v.size == 1) return glm::dvec3(v.c[0]);  // POV-Ray promotes a float
+    return {v.c[0], v.c[1], v.size == 3 ? v.c[2] : 0.0};
+}
+
+std::array<std::int32_t, 3> index_triple(const MeshValue& v, const std::string& what) {
+    if (v.size != 3) throw ValueError(what + " must be a vector <a, b, c>");
+    std::array<std::int32_t, 3> out{};
+    for (int i = 0; i < 3; ++i)
+        out[i] = static_cast<std::int32_t>(checked_integer(v.c[i], what, 0, kMaxMeshItems - 1));
+    return out;
+}
+
+long long mesh_count(const std::vector<MeshValue>& values, const std::string& section) {
+    if (values.empty() || values[0].size != 1) throw ValueError(section + " needs its count first");
+    return checked_integer(values[0].c[0], section + "'s count", 0, kMaxMeshItems);
+}
+
+}  // namespace
+
+void read_mesh2_section(MeshData& mesh, const std::string& section, const std::vector<MeshValue>& values) {
+    const long long n = mesh_count(values, section);
     if (section == "vertex_vectors" || section == "normal_vectors") {
         check_count(n, values.size() - 1, section);
         auto& list = section == "vertex_vectors" ? mesh.vertices : mesh.normals;
         list.clear();
         list.reserve(values.size() - 1);
-        for (std::size_t i = 1; i < values.size(); ++i) list.push_back(fixed_vector(values[i], section + "' vector"));
+        for (std::size_t i = 1; i < values.size(); ++i) list.push_back(vector3(values[i]));
         return;
     }
     if (section == "uv_vectors") {
         check_count(n, values.size() - 1, section);
         mesh.uvs.clear();
+        mesh.uvs.reserve(values.size() - 1);
         for (std::size_t i = 1; i < values.size(); ++i) {
-            const auto uv = to_vector2(values[i], "a uv vector");
-            if (uv.depends_on_time()) throw ValueError("a mesh's uv vectors are fixed when the scene is read");
-            mesh.uvs.emplace_back(uv.c[0].constant(), uv.c[1].constant());
+            const MeshValue& v = values[i];
+            mesh.uvs.emplace_back(v.c[0], v.size == 1 ? v.c[0] : v.c[1]);
         }
         return;
     }
@@ -112,15 +138,14 @@ void read_mesh2_section(MeshData& mesh, const std::string& section, const std::v
         mesh.faces.clear();
         mesh.faces.reserve(static_cast<std::size_t>(n));
         for (std::size_t i = 1; i < values.size();) {
-            if (!values[i].is<Vector>()) throw ValueError("face_indices expected a face <a, b, c> here");
+            if (values[i].size == 1) throw ValueError("face_indices expected a face <a, b, c> here");
             MeshFace face;
             const auto v = index_triple(values[i], "a face's vertex index");
             for (int k = 0; k < 3; ++k) face.vertex[k] = static_cast<std::uint32_t>(v[k]);
             ++i;
             int textures = 0;
-            while (i < values.size() && values[i].is<TimeFunction>()) {
-                const auto t = checked_integer(to_constant(values[i], "a face's texture index"),
-                                               "a face's texture index", 0, kMaxMeshItems - 1);
+            while (i < values.size() && values[i].size == 1) {
+                const auto t = checked_integer(values[i].c[0], "a face's texture index", 0, kMaxMeshItems - 1);
                 if (textures == 0) face.texture = static_cast<std::int32_t>(t);
                 ++textures;
                 ++i;
@@ -146,7 +171,9 @@ void read_mesh2_section(MeshData& mesh, const std::string& section, const std::v
 }
 
 void read_mesh2_textures(MeshData& mesh, const std::vector<Value>& values) {
-    const long long n = section_count(values, "texture_list");
+    if (values.empty()) throw ValueError("texture_list needs its count first");
+    const long long n = checked_integer(to_constant(values[0], "texture_list's count"), "texture_list's count", 0,
+                                        kMaxMeshItems);
     check_count(n, values.size() - 1, "texture_list");
     mesh.textures.clear();
     for (std::size_t i = 1; i < values.size(); ++i) {

@@ -4,6 +4,7 @@
 // ValueError, which the rule that read the piece places.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,15 @@
 
 namespace hexant::language {
 
+// A value of a mesh2 section, fixed when read: a number (size 1) or a
+// vector of 2 or 3 numbers.
+struct MeshValue {
+    int size = 1;
+    std::array<double, 3> c{};
+};
+// Throws ValueError for other values and for values that depend on clock.
+MeshValue mesh_value(const Value& value, const std::string& section);
+
 // A triangle or smooth_triangle written inside mesh { }: its corners (and
 // normals), and its texture if it has one.
 void add_mesh_triangle(runtime::objects::MeshData& mesh, const runtime::ObjectRecord& triangle);
@@ -21,7 +31,7 @@ void add_mesh_triangle(runtime::objects::MeshData& mesh, const runtime::ObjectRe
 // "uv_vectors", "face_indices", "normal_indices", "uv_indices"; `values`
 // is its count and its values, as written.
 void read_mesh2_section(runtime::objects::MeshData& mesh, const std::string& section,
-                        const std::vector<Value>& values);
+                        const std::vector<MeshValue>& values);
 // mesh2's texture_list: its count and its textures.
 void read_mesh2_textures(runtime::objects::MeshData& mesh, const std::vector<Value>& values);
 
