@@ -10,6 +10,7 @@
 #include "runtime/objects/cylinder/cone.hpp"
 #include "runtime/objects/cylinder/cylinder.hpp"
 #include "runtime/objects/disc/disc.hpp"
+#include "runtime/objects/height_field/height_field.hpp"
 #include "runtime/objects/lathe/lathe.hpp"
 #include "runtime/objects/mesh/mesh.hpp"
 #include "runtime/objects/plane/plane.hpp"
@@ -18,6 +19,7 @@
 #include "runtime/objects/shape_kind.hpp"
 #include "runtime/objects/sor/sor.hpp"
 #include "runtime/objects/sphere/sphere.hpp"
+#include "runtime/objects/superellipsoid/superellipsoid.hpp"
 #include "runtime/objects/text/text.hpp"
 #include "runtime/objects/torus/torus.hpp"
 #include "runtime/objects/triangle/smooth_triangle.hpp"
@@ -26,6 +28,7 @@
 namespace hexant::runtime {
 
 using ShapeKinds = objects::KindList<Sphere, Box, Plane, Polygon, Triangle, SmoothTriangle, Disc,
-                                     Cylinder, Cone, Torus, Prism, Text, Mesh, Lathe, Sor>;
+                                     Cylinder, Cone, Torus, Prism, Text, Mesh, Lathe, Sor,
+                                     Superellipsoid, HeightField>;
 
 }  // namespace hexant::runtime

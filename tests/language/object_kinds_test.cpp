@@ -71,6 +71,12 @@ TEST_CASE("a kind's option words and settings reach that kind only", "[language]
     const auto e = error_of("sphere { 0, 1 open }");
     CHECK(std::string(e.what()).find("'open' belongs to a cylinder, cone, prism or sor, not a sphere") !=
           std::string::npos);
+    // smooth is height_field's; double_illuminate (POV-Ray's word) any object's.
+    const auto smooth = error_of("sphere { 0, 1 smooth }");
+    CHECK(std::string(smooth.what()).find("'smooth' belongs to a height_field, not a sphere") !=
+          std::string::npos);
+    hexant::test::reads("sphere { 0, 1 double_illuminate }");
+    hexant::test::reads("sphere { 0, 1 sturm double_illuminate off }");
     // An option word of another kind.
     const auto o = error_of("sphere { linear_spline 0, 1 }");
     CHECK(std::string(o.what()).find("sphere takes no 'linear_spline'") != std::string::npos);

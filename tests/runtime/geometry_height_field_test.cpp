@@ -2,6 +2,7 @@
 // triangle tested, normals, smooth normals, inside, bounds, the water cut,
 // POV-Ray's pixel-to-height rules and reading PNG files.
 #include <png.h>
+#include <unistd.h>
 
 #include <catch2/catch.hpp>
 #include <cmath>

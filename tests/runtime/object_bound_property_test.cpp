@@ -167,6 +167,11 @@ TEST_CASE("bound holds the surface: mesh", "[object][property]") {
     check_kind(kind_scene("mesh"));
 }
 
+TEST_CASE("bound holds the surface: superellipsoid and height_field", "[object][property]") {
+    check_kind(kind_scene("superellipsoid"));
+    check_kind(kind_scene("height_field"));
+}
+
 TEST_CASE("a mesh answers a small region with several smaller bounds (the star cluster)", "[object]") {
     // A 40 x 40 grid of quads in the x-y plane from 0 to 4: its hierarchy's
     // nodes are its bound's pieces where the region is small against it.

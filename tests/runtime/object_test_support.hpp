@@ -59,8 +59,14 @@ struct Parsed {
     std::vector<rt::IntelligentObjectPtr> objects;
 };
 
+#ifndef HEXANT_SOURCE_DIR
+#define HEXANT_SOURCE_DIR "."
+#endif
+
 inline Parsed parse(const std::string& sdl) {
     hexant::language::ParseOptions options;
+    // Where the height field's image (bump.png) is.
+    options.include_paths.push_back(HEXANT_SOURCE_DIR "/tests/tracer/pov_reference/shapes");
     options.animation.initial_frame = 1;
     options.animation.final_frame = 2;
     Parsed parsed{hexant::language::parse_scene_text(sdl, "object-test.pov", options), {}};
@@ -239,6 +245,34 @@ inline glm::dvec3 sample_object_surface(const rt::Shape& shape, double t, Random
         const double r = std::sqrt(std::max(0.0, r2) * random.uniform());
         return {r * std::cos(phi), part == 1 ? g.height1 : g.height2, r * std::sin(phi)};
     }
+    if (const auto* se = std::get_if<rt::Superellipsoid>(&shape)) {
+        // F + 1 is positively homogeneous of degree 1: d / (F(d) + 1) is on
+        // the surface for any direction d.
+        const auto g = rt::geometry::make_superellipsoid(se->e(t), se->n(t));
+        const glm::dvec3 d = random.unit_vector();
+        return d / (rt::geometry::superellipsoid_function(g, d) + 1.0);
+    }
+    if (const auto* hf = std::get_if<rt::HeightField>(&shape)) {
+        // A random cell's lower or upper triangle, a random point of it;
+        // points below the floor (the water level) are cut away: again.
+        const auto& data = *hf->data;
+        const double floor = rt::geometry::height_field_floor(data, hf->water_level(t));
+        for (int tries = 0; tries < 100000; ++tries) {
+            const int x = random.integer(0, data.width() - 2), z = random.integer(0, data.depth() - 2);
+            double u = random.uniform(), v = random.uniform();
+            if (u + v > 1.0) {
+                u = 1.0 - u;
+                v = 1.0 - v;
+            }
+            const bool upper = random.integer(0, 1) == 1;
+            const glm::dvec3 a = upper ? data.vertex(x + 1, z + 1) : data.vertex(x, z);
+            const glm::dvec3 b = upper ? data.vertex(x, z + 1) : data.vertex(x + 1, z);
+            const glm::dvec3 c = upper ? data.vertex(x + 1, z) : data.vertex(x, z + 1);
+            const glm::dvec3 p = a + u * (b - a) + v * (c - a);
+            if (p.y >= floor) return p;
+        }
+        throw std::logic_error("sample_object_surface: a height field under its water");
+    }
     throw std::logic_error("sample_object_surface: a shape kind without a sampler");
 }
 
@@ -411,6 +445,14 @@ inline const std::vector<KindScene>& kind_scenes() {
          "triangle { <-0.5, -0.4, -0.4>, <0.1, -0.3, 0.6>, <0.6, -0.5, -0.3> } "
          "triangle { <-0.5, -0.4, -0.4>, <0.6, -0.5, -0.3>, <0.2, -0.45, -0.35> } inside_vector <0.1, 1, 0.2> "
          "translate <0.5 * clock, 0, -0.3 * clock>"},
+        {"superellipsoid",
+         "<0.4, 1.5>",
+         "<0.3 + 0.8 * clock, 1.2 - 0.9 * clock>"},
+        // The height_field still's 32 x 32 bump (on parse()'s include
+        // path); the water level rises through it.
+        {"height_field",
+         "png \"bump.png\" smooth",
+         "png \"bump.png\" water_level 0.6 * clock"},
     };
     return list;
 }

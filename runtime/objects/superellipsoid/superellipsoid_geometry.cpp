@@ -184,16 +184,21 @@ std::optional<SurfaceHit> intersect(const SuperellipsoidGeometry& g, const Ray3&
     stack[top++] = {k0, k1, f(k0), f(k1)};
     double k_hit = kInf;
     // A ray that runs within the surface (along a face of a near-cube, say)
-    // keeps every piece's range around zero: without a budget its pieces
-    // would number 2^depth. An ordinary ray visits a few hundred.
+    // keeps every piece's range around zero: split without end, its pieces
+    // would number 2^depth. So splitting stops after kPieceBudget pieces
+    // (an ordinary ray needs a few hundred); the pieces still on the stack
+    // (at most 94) are then searched for a sign change at their ends or
+    // middles only, which finds a crossing that is not a thin sliver.
     int budget = kPieceBudget;
-    while (top > 0 && budget-- > 0) {
+    while (top > 0) {
         const Piece piece = stack[--top];
+        const bool split = budget > 0;
+        --budget;
         const glm::dvec3 pa = local->at(piece.a), pb = local->at(piece.b);
         if (!range_holds_zero(g, glm::min(pa, pb), glm::max(pa, pb))) continue;
         const double mid = 0.5 * (piece.a + piece.b);
         const double fm = f(mid);
-        if (piece.b - piece.a > kLeaf && mid > piece.a && mid < piece.b && top < 94) {
+        if (split && piece.b - piece.a > kLeaf && mid > piece.a && mid < piece.b && top < 94) {
             stack[top++] = {mid, piece.b, fm, piece.fb};
             stack[top++] = {piece.a, mid, piece.fa, fm};
             continue;

@@ -27,7 +27,8 @@
 // shorter than 1e-9 with a sign change is refined by bisection to adjacent
 // doubles. No crossing of the surface wider than 1e-9 (a thousandth of a
 // millionth of the box) is missed; an exact tangency may be, and so may a
-// ray that runs within the surface (the search stops after 2^14 pieces).
+// ray that runs within the surface for a stretch (after 2^14 pieces the
+// search looks only for sign changes at the ends of the pieces it has).
 #pragma once
 
 #include <glm/glm.hpp>
