@@ -1504,6 +1504,8 @@ runtime::ObjectRecord make_shape(const std::string& kind, std::vector<std::strin
                                  std::vector<Value>& args, Interpreter& st, const p::position& where);
 void set_shape_setting(runtime::ObjectRecord& record, const std::string& name,
                        std::vector<Value>& values, Interpreter& st, const p::position& where);
+void add_blob_component(runtime::ObjectRecord& record, const std::string& kind,
+                        std::vector<Value>& values, Interpreter& st, const p::position& where);
 
 HEXANT_ACTION(shape_arguments) {
     HEXANT_APPLY {
@@ -1685,6 +1687,47 @@ inline constexpr char kMeshWord[] = "mesh";
 inline constexpr char kMesh2Word[] = "mesh2";
 template <> struct action<g::mesh_block> : close_mesh<kMeshWord> {};
 template <> struct action<g::mesh2_block> : close_mesh<kMesh2Word> {};
+
+// blob { }: its components are added as they are read
+// (runtime/objects/blob/blob.hpp).
+HEXANT_ACTION(blob_open) {
+    HEXANT_APPLY {
+        runtime::ObjectRecord record;
+        record.shape = runtime::Blob{};
+        record.place = source_place(in);
+        st.blocks.emplace_back(std::move(record));
+    }
+};
+template <>
+struct action<g::blob_component_kind> {
+    template <typename ActionInput>
+    static void apply(const ActionInput& in, Interpreter& st) {
+        st.push_name(word(in));
+    }
+};
+HEXANT_ACTION(blob_component_modifier) {
+    HEXANT_APPLY {
+        (void)st;
+        throw ValueError("hexant does not read a blob component's own '" + word(in) +
+                         "' yet (POV-Ray does); give it to the whole blob");
+    }
+};
+HEXANT_ACTION(blob_component) {
+    HEXANT_APPLY {
+        std::vector<Value> values = st.close_frame();
+        const std::string kind = st.pop_name();
+        auto& record = st.block<runtime::ObjectRecord>(in.position(), "a blob component");
+        add_blob_component(record, kind, values, st, in.position());
+    }
+};
+HEXANT_ACTION(blob_old_component) {
+    HEXANT_APPLY {
+        std::vector<Value> values = st.close_frame();
+        auto& record = st.block<runtime::ObjectRecord>(in.position(), "a blob component");
+        add_blob_component(record, "component", values, st, in.position());
+    }
+};
+template <> struct action<g::blob_block> : finish_object {};
 
 // The texture an object modifier changes, made if the object has none.
 inline runtime::Texture& object_texture(Interpreter& st, const p::position& where) {

@@ -900,12 +900,12 @@ struct light_block
 // Object kinds POV-Ray has and hexant does not: kept as source, an error
 // only where used. Also `function { }` and the *_map blocks.
 struct unsupported_kind_words {
-    static constexpr std::array<std::string_view, 27> list = {
-        "bicubic_patch", "blob", "color_map", "colour_map", "cubic", "density", "density_map",
-        "function", "height_field", "isosurface", "julia_fractal", "lemon",
+    static constexpr std::array<std::string_view, 24> list = {
+        "bicubic_patch", "color_map", "colour_map", "cubic", "density", "density_map",
+        "function", "isosurface", "julia_fractal", "lemon",
         "media", "normal_map", "ovus", "parametric", "photons", "pigment_map",
         "poly", "polynomial", "quadric", "quartic", "rainbow", "slope_map",
-        "sphere_sweep", "superellipsoid", "texture_map"};
+        "sphere_sweep", "texture_map"};
 };
 struct unsupported_kind : one_word_of<unsupported_kind_words> {};
 struct unsupported_block
@@ -954,8 +954,35 @@ struct mesh2_item
              mesh_inside_vector, mesh_hierarchy, object_modifier> {};
 struct mesh2_block : p::seq<mesh2_open, p::star<mesh2_item>, p::must<object_close>> {};
 
+// blob { threshold T  sphere { <C>, R, [strength] S }  cylinder { <A>, <B>,
+// R, [strength] S }  component S, R, <C>  modifiers } (runtime/objects/blob/):
+// each component is added as it is read; threshold and hierarchy are the
+// blob's settings, read among its modifiers.
+struct blob_open : p::seq<TAO_PEGTL_KEYWORD("blob"), ws, p::must<lbrace>> {};
+struct blob_component_kind : p::sor<TAO_PEGTL_KEYWORD("sphere"), TAO_PEGTL_KEYWORD("cylinder")> {};
+struct blob_strength_word : p::seq<TAO_PEGTL_KEYWORD("strength"), ws> {};
+// A component's own modifiers, which POV-Ray reads and hexant refuses.
+struct blob_component_modifier
+    : p::sor<TAO_PEGTL_KEYWORD("texture"), TAO_PEGTL_KEYWORD("pigment"), TAO_PEGTL_KEYWORD("normal"),
+             TAO_PEGTL_KEYWORD("finish"), TAO_PEGTL_KEYWORD("translate"), TAO_PEGTL_KEYWORD("rotate"),
+             TAO_PEGTL_KEYWORD("scale"), TAO_PEGTL_KEYWORD("matrix"), TAO_PEGTL_KEYWORD("transform")> {};
+struct blob_component_item;
+struct blob_component_item
+    : p::sor<directive<blob_component_item>, comma, blob_strength_word, blob_component_modifier,
+             shape_argument> {};
+struct blob_component
+    : p::seq<blob_component_kind, ws, p::must<lbrace>, frame_open, p::star<blob_component_item>,
+             p::must<rbrace>> {};
+struct blob_old_component
+    : p::seq<TAO_PEGTL_KEYWORD("component"), ws, frame_open, p::must<shape_argument>,
+             p::opt<comma>, p::must<shape_argument>, p::opt<comma>, p::must<shape_argument>> {};
+struct blob_item
+    : p::sor<directive<blob_item>, macro_call<blob_item>, blob_component, blob_old_component,
+             object_modifier> {};
+struct blob_block : p::seq<blob_open, p::star<blob_item>, p::must<object_close>> {};
+
 struct object_value
-    : p::sor<mesh_block, mesh2_block, shape_block, csg_block, object_block, light_block> {};
+    : p::sor<mesh_block, mesh2_block, blob_block, shape_block, csg_block, object_block, light_block> {};
 
 // Things that modify an object, in any order.
 struct object_texture : p::seq<texture_block> {};

@@ -871,6 +871,14 @@ void set_shape_setting(runtime::ObjectRecord& record, const std::string& name,
                      runtime::shape_name(record.shape));
 }
 
+void add_blob_component(runtime::ObjectRecord& record, const std::string& kind,
+                        std::vector<Value>& values, Interpreter& st, const p::position& where) {
+    auto* blob = std::get_if<runtime::Blob>(&record.shape);
+    if (!blob) throw ValueError("a blob component belongs in a blob");
+    const BlockArguments args("blob " + kind, {}, values, st, where);
+    blob->add_component(kind, args);
+}
+
 // ------------------------------------------------------------------ entry points
 
 namespace {

@@ -11,7 +11,7 @@
 namespace hexant::language::grammar {
 
 namespace {
-constexpr std::array<std::string_view, 376> kReserved = {
+constexpr std::array<std::string_view, 378> kReserved = {
     "abs",
     "accuracy",
     "acos",
@@ -71,6 +71,7 @@ constexpr std::array<std::string_view, 376> kReserved = {
     "color_map",
     "colour",
     "colour_map",
+    "component",
     "concat",
     "cone",
     "confidence",
@@ -321,6 +322,7 @@ constexpr std::array<std::string_view, 376> kReserved = {
     "statistics",
     "str",
     "strcmp",
+    "strength",
     "strlen",
     "strlwr",
     "strupr",

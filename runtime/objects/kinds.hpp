@@ -6,6 +6,7 @@
 // each of the two lists below.
 #pragma once
 
+#include "runtime/objects/blob/blob.hpp"
 #include "runtime/objects/box/box.hpp"
 #include "runtime/objects/cylinder/cone.hpp"
 #include "runtime/objects/cylinder/cylinder.hpp"
@@ -29,6 +30,6 @@ namespace hexant::runtime {
 
 using ShapeKinds = objects::KindList<Sphere, Box, Plane, Polygon, Triangle, SmoothTriangle, Disc,
                                      Cylinder, Cone, Torus, Prism, Text, Mesh, Lathe, Sor,
-                                     Superellipsoid, HeightField>;
+                                     Superellipsoid, HeightField, Blob>;
 
 }  // namespace hexant::runtime

@@ -167,9 +167,16 @@ TEST_CASE("bound holds the surface: mesh", "[object][property]") {
     check_kind(kind_scene("mesh"));
 }
 
-TEST_CASE("bound holds the surface: superellipsoid and height_field", "[object][property]") {
+TEST_CASE("bound holds the surface: superellipsoid", "[object][property]") {
     check_kind(kind_scene("superellipsoid"));
+}
+
+TEST_CASE("bound holds the surface: height_field", "[object][property]") {
     check_kind(kind_scene("height_field"));
+}
+
+TEST_CASE("bound holds the surface: blob", "[object][property]") {
+    check_kind(kind_scene("blob"));
 }
 
 TEST_CASE("a mesh answers a small region with several smaller bounds (the star cluster)", "[object]") {

@@ -17,9 +17,9 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // margin keeps a cube's faces, e = n = 0, strictly inside the searched stretch).
 constexpr double kClip = 1.0 + 1e-6;
 // The longest piece of the ray the search leaves unsplit.
-constexpr double kLeaf = 1e-9;
+constexpr double kLeaf = 1e-7;
 // Pieces one ray may visit (see intersect).
-constexpr int kPieceBudget = 1 << 14;
+constexpr int kPieceBudget = 1 << 16;
 // F's rounding: a few ulps of pow's results (relative to F + 1 >= 0).
 constexpr double kRangeSlack = 1e-12;
 
@@ -186,7 +186,8 @@ std::optional<SurfaceHit> intersect(const SuperellipsoidGeometry& g, const Ray3&
     // A ray that runs within the surface (along a face of a near-cube, say)
     // keeps every piece's range around zero: split without end, its pieces
     // would number 2^depth. So splitting stops after kPieceBudget pieces
-    // (an ordinary ray needs a few hundred); the pieces still on the stack
+    // (an ordinary ray needs a few hundred, one tangent to a flat face up to
+    // about 22,000); the pieces still on the stack
     // (at most 94) are then searched for a sign change at their ends or
     // middles only, which finds a crossing that is not a thin sliver.
     int budget = kPieceBudget;
@@ -206,7 +207,26 @@ std::optional<SurfaceHit> intersect(const SuperellipsoidGeometry& g, const Ray3&
         // A leaf: a sign change at its ends, or two about its middle.
         double lo = piece.a, hi = piece.b, flo = piece.fa, fhi = piece.fb;
         if (out(flo) == out(fhi)) {
-            if (out(fm) == out(flo)) continue;
+            if (out(fm) == out(flo)) {
+                // No sign change: a touch where F comes within its rounding
+                // of 0 (a ray tangent to the surface), else nothing.
+                // Only at a least |F| along the ray: before a crossing |F|
+                // falls to the leaf's end, and the crossing is the next
+                // leaf's (a half leaf beyond the end says which).
+                double k = mid, least = std::fabs(fm);
+                if (std::fabs(flo) < least) k = lo, least = std::fabs(flo);
+                if (std::fabs(fhi) < least) k = hi, least = std::fabs(fhi);
+                if (k != mid && least <= kRangeSlack) {
+                    const double beyond = f(k + (k == lo ? -0.5 : 0.5) * (hi - lo));
+                    if (out(beyond) != out(fm) || std::fabs(beyond) < least) continue;
+                }
+                const double s = local->to_s(k);
+                if (least <= kRangeSlack && s > s_min && s < s_max) {
+                    k_hit = k;
+                    break;
+                }
+                continue;
+            }
             hi = mid;
             fhi = fm;
         }

@@ -24,11 +24,13 @@
 // z = 0 and its secant checks, which can step over thin hits): the ray,
 // moved next to the box, is clipped to the unit box and cut in halves,
 // front first; a piece whose interval of F excludes 0 is dropped; a piece
-// shorter than 1e-9 with a sign change is refined by bisection to adjacent
-// doubles. No crossing of the surface wider than 1e-9 (a thousandth of a
-// millionth of the box) is missed; an exact tangency may be, and so may a
-// ray that runs within the surface for a stretch (after 2^14 pieces the
-// search looks only for sign changes at the ends of the pieces it has).
+// shorter than 1e-7 with a sign change is refined by bisection to adjacent
+// doubles; one without, whose F comes within its rounding (1e-12) of 0, is
+// a touch (a tangent ray) and a hit. No crossing of the surface wider than
+// 1e-7 of the box is missed. A ray that runs within the surface for a
+// stretch may be: after 2^16 pieces (an ordinary ray needs a few hundred, a
+// tangent one to a flat face up to about 22,000) the search looks only for sign changes at
+// the ends of the pieces it holds.
 #pragma once
 
 #include <glm/glm.hpp>

@@ -1,0 +1,80 @@
+// blob { } as the language reads it (runtime/objects/blob/blob.hpp, the
+// grammar's blob_block): POV-Ray 3.7's component syntaxes, the threshold,
+// time functions, and the refusals.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <string>
+
+#include "language/interpreter.hpp"
+#include "runtime/shapes.hpp"
+#include "tests/language/scene_text.hpp"
+
+namespace rt = hexant::runtime;
+using hexant::test::error_of;
+
+namespace {
+
+rt::Blob blob_of(const std::string& text) {
+    const auto scene = hexant::language::parse_scene_text(text, "t.pov", {});
+    REQUIRE(scene.objects.size() == 1);
+    return std::get<rt::Blob>(scene.objects[0]->shape);
+}
+
+bool says(const std::string& scene, const std::string& part) {
+    const std::string message = error_of(scene).what();
+    INFO(message);
+    return message.find(part) != std::string::npos;
+}
+
+}  // namespace
+
+TEST_CASE("blob reads its components in POV-Ray's three syntaxes", "[language][blob]") {
+    using Kind = rt::geometry::BlobComponent::Kind;
+    const auto b = blob_of(
+        "blob { threshold 0.4 sphere { <1, 2, 3>, 1.5, 2 } sphere { 0, 1 strength -0.5 } "
+        "cylinder { <0, 0, 0>, <0, 1, 0>, 0.3, strength 1 } component 3, 0.7, <4, 5, 6> "
+        "#for (i, 0, 1) sphere { <i, 0, 0>, 1, 1 } #end sturm hierarchy off translate x }");
+    REQUIRE(b.kinds.size() == 6);
+    CHECK(b.threshold.constant() == 0.4);
+    CHECK(b.kinds[0] == Kind::sphere);
+    CHECK(b.a[0](0.0) == glm::dvec3(1, 2, 3));
+    CHECK(b.radii[0].constant() == 1.5);
+    CHECK(b.strengths[0].constant() == 2.0);
+    CHECK(b.strengths[1].constant() == -0.5);
+    CHECK(b.kinds[2] == Kind::cylinder);
+    CHECK(b.b[2](0.0) == glm::dvec3(0, 1, 0));
+    CHECK(b.radii[2].constant() == 0.3);
+    // The old syntax: strength, radius, centre.
+    CHECK(b.strengths[3].constant() == 3.0);
+    CHECK(b.radii[3].constant() == 0.7);
+    CHECK(b.a[3](0.0) == glm::dvec3(4, 5, 6));
+    CHECK(b.a[5](0.0) == glm::dvec3(1, 0, 0));
+    // The default threshold is POV-Ray's 1.
+    CHECK(blob_of("blob { sphere { 0, 1, 1 } }").threshold.constant() == 1.0);
+}
+
+TEST_CASE("a blob's components and threshold may move with clock", "[language][blob]") {
+    hexant::language::ParseOptions options;
+    options.animation.initial_frame = 1;
+    options.animation.final_frame = 2;
+    const auto scene = hexant::language::parse_scene_text(
+        "blob { threshold 0.5 + clock sphere { <clock, 0, 0>, 1, 1 - clock } }", "t.pov", options);
+    const auto& b = std::get<rt::Blob>(scene.objects[0]->shape);
+    CHECK(b.threshold.depends_on_time());
+    CHECK(b.a[0].depends_on_time());
+    CHECK(b.strengths[0].depends_on_time());
+    CHECK_FALSE(b.radii[0].depends_on_time());
+    const auto moving = scene.objects[0]->timed_parameters();
+    CHECK(std::find(moving.begin(), moving.end(), "threshold") != moving.end());
+    CHECK(std::find(moving.begin(), moving.end(), "a") != moving.end());
+}
+
+TEST_CASE("a blob's refusals name what is wrong", "[language][blob]") {
+    CHECK(says("blob { sphere { 0, 1 } }", "a centre, a radius and a strength"));
+    CHECK(says("blob { cylinder { 0, y, 1 } }", "two ends, a radius and a strength"));
+    CHECK(says("blob { sphere { 0, 1, 1 pigment { rgb 1 } } }", "blob component's own 'pigment'"));
+    CHECK(says("blob { sphere { 0, 1, 1 scale 2 } }", "blob component's own 'scale'"));
+    CHECK(says("sphere { 0, 1 threshold 2 }", "'threshold' belongs to a blob, not a sphere"));
+    CHECK(says("blob { sphere { \"a\", 1, 1 } }", "blob sphere's centre"));
+}
