@@ -900,12 +900,12 @@ struct light_block
 // Object kinds POV-Ray has and hexant does not: kept as source, an error
 // only where used. Also `function { }` and the *_map blocks.
 struct unsupported_kind_words {
-    static constexpr std::array<std::string_view, 24> list = {
+    static constexpr std::array<std::string_view, 23> list = {
         "bicubic_patch", "color_map", "colour_map", "cubic", "density", "density_map",
         "function", "isosurface", "julia_fractal", "lemon",
         "media", "normal_map", "ovus", "parametric", "photons", "pigment_map",
         "poly", "polynomial", "quadric", "quartic", "rainbow", "slope_map",
-        "sphere_sweep", "texture_map"};
+        "texture_map"};
 };
 struct unsupported_kind : one_word_of<unsupported_kind_words> {};
 struct unsupported_block

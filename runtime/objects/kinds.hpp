@@ -20,6 +20,7 @@
 #include "runtime/objects/shape_kind.hpp"
 #include "runtime/objects/sor/sor.hpp"
 #include "runtime/objects/sphere/sphere.hpp"
+#include "runtime/objects/sphere_sweep/sphere_sweep.hpp"
 #include "runtime/objects/superellipsoid/superellipsoid.hpp"
 #include "runtime/objects/text/text.hpp"
 #include "runtime/objects/torus/torus.hpp"
@@ -30,6 +31,7 @@ namespace hexant::runtime {
 
 using ShapeKinds = objects::KindList<Sphere, Box, Plane, Polygon, Triangle, SmoothTriangle, Disc,
                                      Cylinder, Cone, Torus, Prism, Text, Mesh, Lathe, Sor,
-                                     Superellipsoid, HeightField, Blob>;
+                                     Superellipsoid, HeightField, Blob,
+                                     SphereSweep>;
 
 }  // namespace hexant::runtime

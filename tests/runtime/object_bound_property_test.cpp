@@ -179,6 +179,10 @@ TEST_CASE("bound holds the surface: blob", "[object][property]") {
     check_kind(kind_scene("blob"));
 }
 
+TEST_CASE("bound holds the surface: sphere_sweep", "[object][property]") {
+    check_kind(kind_scene("sphere_sweep"));
+}
+
 TEST_CASE("a mesh answers a small region with several smaller bounds (the star cluster)", "[object]") {
     // A 40 x 40 grid of quads in the x-y plane from 0 to 4: its hierarchy's
     // nodes are its bound's pieces where the region is small against it.

@@ -299,6 +299,20 @@ inline glm::dvec3 sample_object_surface(const rt::Shape& shape, double t, Random
         }
         throw std::logic_error("sample_object_surface: a blob without a surface");
     }
+    if (const auto* sweep = std::get_if<rt::SphereSweep>(&shape)) {
+        // A point of one of the swept spheres: on the surface or inside the
+        // solid, so a ray through it meets the surface at or before it.
+        std::vector<glm::dvec3> centres;
+        std::vector<double> radii;
+        for (std::size_t i = 0; i < sweep->centres.size(); ++i) {
+            centres.push_back(sweep->centres[i](t));
+            radii.push_back(sweep->radii[i](t));
+        }
+        const auto g = rt::geometry::make_sphere_sweep(sweep->spline, centres, radii);
+        const auto& seg = g.segments[static_cast<std::size_t>(random.integer(0, int(g.segments.size()) - 1))];
+        const glm::dvec4 c = seg.at(random.uniform());
+        return g.origin + g.scale * (glm::dvec3(c) + std::fabs(c.w) * random.unit_vector());
+    }
     throw std::logic_error("sample_object_surface: a shape kind without a sampler");
 }
 
@@ -478,6 +492,11 @@ inline const std::vector<KindScene>& kind_scenes() {
          "cylinder { <0, -0.5, 0>, <0, 0.5, 0.2>, 0.4, 1 }",
          "threshold 0.5 + 0.2 * clock sphere { <-0.9 + 0.8 * clock, 0, 0>, 0.8, 1 } "
          "sphere { <0.4, 0.1, 0>, 0.8, 1 - 0.5 * clock } cylinder { <0, -0.5, 0>, <0, 0.5, 0.2>, 0.4, 1 }"},
+        // A b_spline sweep of five spheres; its middle one moves and swells.
+        {"sphere_sweep",
+         "b_spline 5, <-0.8, 0, 0>, 0.2, <-0.4, 0.4, 0>, 0.3, <0, 0, 0.2>, 0.35, <0.4, 0.3, 0>, 0.25, <0.8, 0, 0>, 0.2",
+         "b_spline 5, <-0.8, 0, 0>, 0.2, <-0.4, 0.4, 0>, 0.3, <0, 0.6 * clock, 0.2>, 0.25 + 0.2 * clock, "
+         "<0.4, 0.3, 0>, 0.25, <0.8, 0, 0>, 0.2"},
         {"superellipsoid",
          "<0.4, 1.5>",
          "<0.3 + 0.8 * clock, 1.2 - 0.9 * clock>"},
