@@ -104,7 +104,15 @@ private:
     std::map<const void*, int> uses_, labels_;
 };
 
+// " uv_mapping" where it is on (nothing otherwise: dumps without it stay as they were).
+std::string uv_word(runtime::UvMapping m) { return m == runtime::UvMapping::Off ? "" : " uv_mapping"; }
+
+std::string pigment_body(const runtime::Pigment& p, double t, Shared& shared);
 std::string pigment(const runtime::Pigment& p, double t, Shared& shared) {
+    return pigment_body(p, t, shared) + uv_word(p.uv_mapping);
+}
+
+std::string pigment_body(const runtime::Pigment& p, double t, Shared& shared) {
     switch (p.pattern) {
         case runtime::Pigment::Pattern::Solid: return "solid" + colour(p.colours[0], t);
         case runtime::Pigment::Pattern::Patterned: {
@@ -135,7 +143,7 @@ std::string normal(const runtime::Normal& n, double t, Shared& shared) {
         s += " " + number(e.value(t)) + shared.entry(e.normal.get(), [&] { return normal(*e.normal, t, shared); });
     for (const auto& e : n.slope_map)
         s += " " + number(e.value(t)) + "<" + number(e.height(t)) + ", " + number(e.slope(t)) + ">";
-    return s;
+    return s + uv_word(n.uv_mapping);
 }
 
 std::string layer(const runtime::Texture& texture, double t, Shared& shared);
@@ -148,7 +156,7 @@ std::string texture(const runtime::Texture& x, double t, Shared& shared) {
         std::string s = "texture_map=" + std::string(x.patterned.kind->name) + modifiers(x.patterned, t);
         for (const auto& e : x.texture_map)
             s += " " + number(e.value(t)) + shared.entry(e.texture.get(), [&] { return texture(*e.texture, t, shared); });
-        return s;
+        return s + uv_word(x.uv_mapping);
     }
     std::string s = layer(x, t, shared);
     // The layers under it, top first.
@@ -166,7 +174,7 @@ std::string layer(const runtime::Texture& texture, double t, Shared& shared) {
          ",phong_size:" + number(f.phong_size(t)) + ",specular:" + number(f.specular(t)) +
          ",roughness:" + number(f.roughness(t)) + ",reflection:<" + number(f.reflection.c[0](t)) + ", " +
          number(f.reflection.c[1](t)) + ", " + number(f.reflection.c[2](t)) + ">";
-    return s;
+    return s + uv_word(texture.uv_mapping);
 }
 
 // "sphere center=<...> radius=..." at t: the kind's keyword and its

@@ -883,6 +883,11 @@ HEXANT_ACTION(warp_setting) {
     }
 };
 
+// A uv-mapped block, once written, takes no transforms from outside it.
+inline void close_uv_mapping(runtime::UvMapping& m) {
+    if (m == runtime::UvMapping::Open) m = runtime::UvMapping::Closed;
+}
+
 // ---- normal { }
 HEXANT_ACTION(normal_open) {
     HEXANT_APPLY {
@@ -918,6 +923,7 @@ HEXANT_ACTION(normal_block) {
         auto& normal = st.block<runtime::Normal>(in.position(), "a normal");
         if (normal.patterned.kind == nullptr && normal.unsupported_name.empty())
             throw ValueError("a normal needs a pattern (POV-Ray: no normal type given)");
+        close_uv_mapping(normal.uv_mapping);
         Value v{std::move(normal)};
         st.blocks.pop_back();
         st.push(std::move(v));
@@ -930,6 +936,9 @@ HEXANT_ACTION(camera_normal) {
     HEXANT_APPLY {
         Value v = st.pop();
         check_normal(v.as<runtime::Normal>());
+        // (POV-Ray: "The 'uv_mapping' pattern cannot be used" without a surface.)
+        if (v.as<runtime::Normal>().uv_mapping != runtime::UvMapping::Off)
+            throw ValueError("uv_mapping needs a surface's (u, v): not in the camera's normal");
         st.block<runtime::CameraRecord>(in.position(), "normal").normal = v.as<runtime::Normal>();
     }
 };
@@ -1344,6 +1353,7 @@ HEXANT_ACTION(pigment_block) {
                 solid->colours = {pigment.colour_map.entries[i].colour};
                 pigment.pigment_map.push_back({static_cast<double>(i), std::move(solid)});
             }
+        close_uv_mapping(pigment.uv_mapping);
         Value v{pigment};
         st.blocks.pop_back();
         st.push(std::move(v));
@@ -1431,6 +1441,18 @@ HEXANT_ACTION(interior_block) {
     }
 };
 
+// uv_mapping: the pigment, normal or texture being written reads (u, v, 0).
+HEXANT_ACTION(uv_mapping) {
+    HEXANT_APPLY {
+        if (st.blocks.empty()) throw ValueError("uv_mapping belongs in a pigment, a normal or a texture");
+        auto& b = st.blocks.back();
+        if (auto* pigment = std::get_if<runtime::Pigment>(&b)) pigment->uv_mapping = runtime::UvMapping::Open;
+        else if (auto* normal = std::get_if<runtime::Normal>(&b)) normal->uv_mapping = runtime::UvMapping::Open;
+        else if (auto* texture = std::get_if<runtime::Texture>(&b)) texture->uv_mapping = runtime::UvMapping::Open;
+        else throw ValueError("uv_mapping belongs in a pigment, a normal or a texture");
+        (void)in;
+    }
+};
 HEXANT_ACTION(texture_open) {
     HEXANT_APPLY { (void)in; st.blocks.emplace_back(std::in_place_type<runtime::Texture>); }
 };
@@ -1453,6 +1475,7 @@ HEXANT_ACTION(texture_block) {
     HEXANT_APPLY {
         (void)in;
         check_patterned_texture(std::get<runtime::Texture>(st.blocks.back()));
+        close_uv_mapping(std::get<runtime::Texture>(st.blocks.back()).uv_mapping);
         Value v{std::get<runtime::Texture>(st.blocks.back())};
         st.blocks.pop_back();
         st.push(std::move(v));
@@ -1919,6 +1942,9 @@ HEXANT_ACTION(sky_sphere_base) {
 HEXANT_ACTION(sky_sphere_pigment) {
     HEXANT_APPLY {
         Value v = st.pop();
+        // (POV-Ray: "The 'uv_mapping' pattern cannot be used" without a surface.)
+        if (v.as<runtime::Pigment>().uv_mapping != runtime::UvMapping::Off)
+            throw ValueError("uv_mapping needs a surface's (u, v): not in a sky_sphere");
         st.block<runtime::SkySphere>(in.position(), "a pigment").pigments.push_back(v.as<runtime::Pigment>());
     }
 };

@@ -538,9 +538,12 @@ struct unsupported_pattern_name
              TAO_PEGTL_KEYWORD("function"), TAO_PEGTL_KEYWORD("julia"), TAO_PEGTL_KEYWORD("pavement"),
              TAO_PEGTL_KEYWORD("tiling"), TAO_PEGTL_KEYWORD("cubic"), TAO_PEGTL_KEYWORD("object"),
              TAO_PEGTL_KEYWORD("slope"), TAO_PEGTL_KEYWORD("aoi"), TAO_PEGTL_KEYWORD("density_file"),
-             TAO_PEGTL_KEYWORD("image_pattern"), TAO_PEGTL_KEYWORD("uv_mapping"),
-             TAO_PEGTL_KEYWORD("bump_map"), TAO_PEGTL_KEYWORD("wave")> {};
+             TAO_PEGTL_KEYWORD("image_pattern"), TAO_PEGTL_KEYWORD("bump_map"),
+             TAO_PEGTL_KEYWORD("wave")> {};
 struct unsupported_pattern : p::seq<unsupported_pattern_name, skip::until_rbrace> {};
+// uv_mapping in a pigment, a normal or a texture: what follows in the
+// block is read at the surface's (u, v, 0) (runtime/material.hpp).
+struct uv_mapping : p::seq<TAO_PEGTL_KEYWORD("uv_mapping"), ws> {};
 
 // The patterns hexant has (runtime/pattern/registry.cpp, the same names),
 // each followed by what its kind takes: a vector (gradient), a number
@@ -656,7 +659,7 @@ struct pigment_list_pigment : p::seq<pigment_block, p::opt<comma>> {};
 struct pigment_item
     : p::sor<directive<pigment_item>, macro_call<pigment_item>, pattern_kind, pattern_setting,
              pattern_wave, warp_block, pigment_colour_map, pigment_map_block, image_map_block, pigment_list_pigment,
-             unsupported_pattern, transformation> {};
+             uv_mapping, unsupported_pattern, transformation> {};
 struct pigment_block
     : p::seq<pigment_open, p::opt<pigment_base>, p::star<pigment_item>, p::must<rbrace>> {};
 
@@ -729,7 +732,7 @@ struct normal_list_normal : p::seq<normal_block, p::opt<comma>> {};
 struct normal_item
     : p::sor<directive<normal_item>, macro_call<normal_item>, pattern_kind, pattern_setting, pattern_wave,
              warp_block, normal_setting, normal_no_bump_scale, normal_map_block, slope_map_block,
-             normal_list_normal, unsupported_pattern, transformation> {};
+             normal_list_normal, uv_mapping, unsupported_pattern, transformation> {};
 struct normal_block : p::seq<normal_open, p::opt<normal_base>, p::star<normal_item>, p::must<rbrace>> {};
 struct texture_normal : p::seq<normal_block> {};
 struct object_normal : p::seq<normal_block> {};
@@ -774,7 +777,7 @@ struct texture_list_texture : p::seq<texture_block, p::opt<comma>> {};
 struct texture_item
     : p::sor<directive<texture_item>, macro_call<texture_item>, texture_pigment, texture_finish,
              texture_normal, pattern_kind, pattern_setting, pattern_wave, warp_block, texture_map_block,
-             texture_list_texture, transformation> {};
+             texture_list_texture, uv_mapping, transformation> {};
 struct texture_block
     : p::seq<texture_open, p::opt<texture_base>, p::star<texture_item>, p::must<rbrace>> {};
 

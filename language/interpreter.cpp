@@ -170,9 +170,11 @@ void Interpreter::apply_transform(runtime::TransformStep step, const p::position
     } else if (auto* texture = std::get_if<runtime::Texture>(&b)) {
         texture->transform_by(step);
     } else if (auto* pigment = std::get_if<runtime::Pigment>(&b)) {
-        pigment->transform.append(std::move(step));
+        // (A declared uv-mapped pigment takes no transform from outside
+        // its own block, as in POV-Ray: runtime/material.hpp, UvMapping.)
+        if (pigment->uv_mapping != runtime::UvMapping::Closed) pigment->transform.append(std::move(step));
     } else if (auto* normal = std::get_if<runtime::Normal>(&b)) {
-        normal->transform.append(std::move(step));
+        if (normal->uv_mapping != runtime::UvMapping::Closed) normal->transform.append(std::move(step));
     } else if (auto* fog = std::get_if<runtime::Fog>(&b)) {
         // (POV-Ray turns a fog's up vector; a translation does not move it.)
         if (step.kind == runtime::TransformKind::Translate) return;

@@ -73,12 +73,12 @@ bool depends(const Normal& n, Seen& seen) {
 }  // namespace
 
 void Texture::transform_by(const Transform& step) {
-    transform.append(step);
+    (uv_mapping == UvMapping::Closed ? uv_outside : transform).append(step);
     for (Texture& layer : below) layer.transform_by(step);
 }
 
 void Texture::transform_by(const TransformStep& step) {
-    transform.append(step);
+    (uv_mapping == UvMapping::Closed ? uv_outside : transform).append(step);
     for (Texture& layer : below) layer.transform_by(step);
 }
 
@@ -86,7 +86,7 @@ void Texture::transform_by(const TransformStep& step) {
 namespace {
 
 bool depends(const Texture& x, Seen& seen) {
-    if (x.transform.depends_on_time()) return true;
+    if (x.transform.depends_on_time() || x.uv_outside.depends_on_time()) return true;
     if (x.is_patterned()) {
         if (x.patterned.depends_on_time()) return true;
         for (const auto& e : x.texture_map)

@@ -27,6 +27,17 @@ struct ColourMap {
     bool depends_on_time() const;
 };
 
+// uv_mapping (POV-Ray's UV_MAP_PATTERN, Parse_Item_Into_Blend_List): a
+// pigment, normal or texture read at the surface's (u, v, 0) in place of
+// the point (POV-Ray's UVCoord: sphere, box, torus, lathe, sor and mesh
+// have their own (u, v); any other shape the world point's x and y),
+// through the transforms written in its own block. Nothing from outside
+// that block moves it: not the object's transforms, not a texture's, not
+// one written around a declared copy (POV-Ray puts those on the outer
+// pattern, which a uv map does not warp). Open while its block is being
+// written, Closed after.
+enum class UvMapping : unsigned char { Off, Open, Closed };
+
 struct Pigment;
 // A pigment_map's entry: at `value`, this pigment (evaluated in the space
 // of the pattern around it).
@@ -58,6 +69,7 @@ struct Pigment {
     // using it reports a clear error.
     std::string unsupported_name;
     SourcePlace unsupported_place;
+    UvMapping uv_mapping = UvMapping::Off;
 
     bool depends_on_time() const;
 };
@@ -114,6 +126,7 @@ struct Normal {
     // where it was written, for the error where it is used.
     std::string unsupported_name;
     SourcePlace unsupported_place;
+    UvMapping uv_mapping = UvMapping::Off;
     bool depends_on_time() const;
 };
 
@@ -146,6 +159,15 @@ struct Texture {
     // pattern's textures); empty for a plain texture.
     pattern::Pattern patterned;
     std::vector<TextureMapEntry> texture_map;
+    // uv_mapping on the whole texture: its pattern, or its pigment and
+    // normal, read at (u, v, 0) through `transform` alone. A Closed one
+    // keeps the transforms that come after (the object's) in
+    // `uv_outside`: they move none of its points, but a normal still goes
+    // through their linear part, into them and back out (POV-Ray's
+    // ComputeLightedTexture warps the normal by each enclosing texture's
+    // transforms, the uv map's own included).
+    UvMapping uv_mapping = UvMapping::Off;
+    Transform uv_outside;
 
     bool is_patterned() const { return !texture_map.empty(); }
     // A transformation of the whole texture: this one's and every layer's

@@ -111,6 +111,7 @@ Problem check(const Texture& texture, const std::string& whose, const Span& span
     for (const auto& [value, name] : values)
         if (auto p = check(*value, whose + " finish's " + name, span)) return p;
     if (auto p = check(f.reflection.c, whose + " finish's reflection", span)) return p;
+    if (auto p = check(texture.uv_outside, whose + " texture's", span)) return p;
     return check(texture.transform, whose + " texture's", span);
 }
 

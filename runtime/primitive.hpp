@@ -45,6 +45,16 @@ constexpr bool is_unbounded_model() {
         return false;
 }
 
+// Whether POV-Ray 3.7 maps the kind's surface to (u, v) of its own
+// (sphere, box, torus, lathe, sor, mesh: their UVCoord).
+template <class Model>
+constexpr bool has_uv_mapping() {
+    if constexpr (requires { Model::kUvMapping; })
+        return Model::kUvMapping;
+    else
+        return false;
+}
+
 template <class Model>
 class Primitive final : public IntelligentObject {
 public:
@@ -203,12 +213,18 @@ public:
             p.geometric_normal = -p.geometric_normal;
             p.shading_normal = -p.shading_normal;
         }
-        // A model may leave its texture coordinates to be formed here, for
-        // the one hit that is shaded.
-        if constexpr (requires { Model::uv(hit.object_normal); })
-            p.uv = Model::uv(hit.object_normal);
-        else
-            p.uv = hit.uv;
+        // The surface's (u, v) for uv_mapping: a kind's own where POV-Ray
+        // 3.7 gives it one (Model::kUvMapping; a model may leave it to be
+        // formed here, for the one hit that is shaded), else the world
+        // point's x and y (POV-Ray's ObjectBase::UVCoord).
+        if constexpr (has_uv_mapping<Model>()) {
+            if constexpr (requires { Model::uv(hit.object_normal); })
+                p.uv = Model::uv(hit.object_normal);
+            else
+                p.uv = hit.uv;
+        } else {
+            p.uv = glm::dvec2(hit.event.x, hit.event.y);
+        }
         p.texture = &texture_;
         if constexpr (kHasPartTextures) {
             const int k = model_.texture_of(hit.part);

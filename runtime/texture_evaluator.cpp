@@ -187,6 +187,13 @@ glm::dvec3 unit_unless(bool keep, const glm::dvec3& x) {
     return keep || !(l > 0.0) || !std::isfinite(l) ? x : x / l;
 }
 
+// The linear part, at `where` (in the space around them) and t, of the
+// transforms around a uv-mapped texture: what its normals go through.
+glm::dmat3 outer_jacobian(const Motion& outer, const glm::dvec3& where, double t) {
+    const auto q = outer.to_object<double>({where.x, where.y, where.z}, t);
+    return outer.jacobian_at(glm::dvec3(q[0], q[1], q[2]), t);
+}
+
 // A map's entries as POV-Ray's Search_Blend_Map reads them (single
 // precision values).
 template <class Entries>
@@ -234,7 +241,10 @@ TextureEvaluator::CompiledTexture::CompiledTexture(const Texture& texture, const
     if (texture.is_patterned()) {
         if (texture.patterned.kind == nullptr)
             throw std::logic_error("TextureEvaluator: a texture_map without its pattern");
-        pattern.emplace(texture.patterned, texture.transform, outside);
+        // (A uv-mapped one: in uv space, through its own transforms alone.)
+        uv = texture.uv_mapping != UvMapping::Off;
+        pattern.emplace(texture.patterned, texture.transform, uv ? Transform{} : outside);
+        if (uv && !texture.uv_outside.empty()) outer = std::make_shared<const Motion>(texture.uv_outside);
         // (The entries live in this pattern's space: nothing outside it.)
         for (const auto& e : texture.texture_map) {
             auto entry = shared.entry(shared.textures, *e.texture, interior);
@@ -243,10 +253,17 @@ TextureEvaluator::CompiledTexture::CompiledTexture(const Texture& texture, const
         }
         return;
     }
-    Transform here = texture.transform;
-    here.append(outside);
+    // (A uv-mapped layer: in uv space, through its own transforms alone.)
+    const auto placed = [&](const Texture& layer) {
+        Transform to_world = layer.transform;
+        if (layer.uv_mapping == UvMapping::Off) to_world.append(outside);
+        return to_world;
+    };
     const auto add = [&](const Texture& layer, const Transform& to_world) {
         CompiledLayer c;
+        c.uv = layer.uv_mapping != UvMapping::Off;
+        if (c.uv && layer.normal && !layer.uv_outside.empty())
+            c.outer = std::make_shared<const Motion>(layer.uv_outside);
         c.pigment = std::make_shared<const CompiledPigment>(layer.pigment, to_world, shared);
         if (layer.normal) {
             c.normal = std::make_shared<const CompiledNormal>(*layer.normal, to_world, shared);
@@ -255,19 +272,18 @@ TextureEvaluator::CompiledTexture::CompiledTexture(const Texture& texture, const
         c.finish = compile(layer.finish, interior);
         layers.push_back(std::move(c));
     };
-    add(texture, here);
+    add(texture, placed(texture));
     for (const Texture& below : texture.below) {
         if (below.is_patterned() || !below.below.empty())
             throw std::logic_error("TextureEvaluator: a layer under a texture is one plain texture");
-        Transform there = below.transform;
-        there.append(outside);
-        add(below, there);
+        add(below, placed(below));
     }
 }
 
 TextureEvaluator::CompiledNormal::CompiledNormal(const Normal& n, const Transform& texture, Shared& shared)
-    : pattern(supported(n), n.transform, texture), amount(n.amount), accuracy(n.accuracy),
-      no_bump_scale(n.no_bump_scale) {
+    : pattern(supported(n), n.transform, n.uv_mapping != UvMapping::Off ? Transform{} : texture),
+      amount(n.amount), accuracy(n.accuracy), no_bump_scale(n.no_bump_scale),
+      uv(n.uv_mapping != UvMapping::Off) {
     // (Each entry of a normal map in the space of this pattern.)
     for (const auto& e : n.normal_map)
         normals.push_back({CompiledScalar(e.value), shared.entry(shared.normals, *e.normal)});
@@ -290,7 +306,9 @@ TextureEvaluator::CompiledPigment::CompiledPigment(const Pigment& pigment, const
         solid = compile(pigment.colours.front());
         return;
     }
-    pattern.emplace(pigment.patterned, pigment.transform, texture);
+    // (A uv-mapped one: in uv space, through its own transforms alone.)
+    uv = pigment.uv_mapping != UvMapping::Off;
+    pattern.emplace(pigment.patterned, pigment.transform, uv ? Transform{} : texture);
     if (pigment.pattern == Pigment::Pattern::Image) {
         image = pigment.image_map;
         filter_all = CompiledScalar(image->filter_all);
@@ -318,11 +336,12 @@ TextureEvaluator::CompiledPigment::CompiledPigment(const Pigment& pigment, const
     }
 }
 
-std::array<double, 5> TextureEvaluator::CompiledPigment::colour(const glm::dvec3& where, double t) const {
+std::array<double, 5> TextureEvaluator::CompiledPigment::colour(const glm::dvec3& where, const glm::dvec2& surface_uv,
+                                                                double t) const {
     if (solid) return {solid->c[0].at(t), solid->c[1].at(t), solid->c[2].at(t), solid->c[3].at(t), solid->c[4].at(t)};
     const CompiledPattern& p = *pattern;
     const pattern::Values v = p.values(t);
-    const glm::dvec3 point = p.point(where, t, v);
+    const glm::dvec3 point = p.point(uv ? glm::dvec3(surface_uv, 0.0) : where, t, v);
     if (image) return pattern::image_colour(*image, point, t, filter_all.at(t), transmit_all.at(t));
     const double value = p.value(point, t, v);
     if (!pigments.empty()) {
@@ -331,9 +350,9 @@ std::array<double, 5> TextureEvaluator::CompiledPigment::colour(const glm::dvec3
         // (A sub-pigment sees the point warped by this pattern, but not
         // moved by turbulence that marble and wood read themselves.)
         const pattern::BlendPick pick = pick_entry(pigments, value, t);
-        const auto c = pigments[pick.cur].second->colour(point, t);
+        const auto c = pigments[pick.cur].second->colour(point, surface_uv, t);
         if (pick.prev == pick.cur) return c;
-        const auto b = pigments[pick.prev].second->colour(point, t);
+        const auto b = pigments[pick.prev].second->colour(point, surface_uv, t);
         std::array<double, 5> out;
         for (std::size_t i = 0; i < 5; ++i) out[i] = b[i] + pick.f * (c[i] - b[i]);
         return out;
@@ -348,20 +367,23 @@ std::array<double, 5> TextureEvaluator::CompiledPigment::colour(const glm::dvec3
 }
 
 glm::dvec3 TextureEvaluator::CompiledNormal::perturb(const glm::dvec3& normal, const glm::dvec3& where,
-                                                     double t) const {
+                                                     const glm::dvec2& surface_uv, double t) const {
     const CompiledPattern& p = pattern;
     const pattern::Values v = p.values(t);
     NormalMaps maps;
-    const glm::dvec3 point = p.walk(where, t, v, [&](const glm::dmat3& m) { maps.push(m); });
+    // (uv-mapped: POV-Ray perturbs the normal as it is at (u, v, 0): no
+    // map between uv space and the surface's tangents.)
+    const glm::dvec3 start = uv ? glm::dvec3(surface_uv, 0.0) : where;
+    const glm::dvec3 point = p.walk(start, t, v, [&](const glm::dmat3& m) { maps.push(m); });
     const glm::dvec3 pn = unit_unless(no_bump_scale, maps.into(unit_unless(no_bump_scale, normal)));
     glm::dvec3 bumped;
     if (!normals.empty()) {
         // POV-Ray's normal_map: the neighbouring entries' normals, each
         // perturbing this one in this pattern's space, blended linearly.
         const pattern::BlendPick pick = pick_entry(normals, p.value(point, t, v), t);
-        bumped = normals[pick.cur].second->perturb(pn, point, t);
+        bumped = normals[pick.cur].second->perturb(pn, point, surface_uv, t);
         if (pick.prev != pick.cur) {
-            const glm::dvec3 other = normals[pick.prev].second->perturb(pn, point, t);
+            const glm::dvec3 other = normals[pick.prev].second->perturb(pn, point, surface_uv, t);
             bumped = (1.0 - pick.f) * other + pick.f * bumped;
         }
     } else if (p.kind->normal != nullptr) {
@@ -381,14 +403,16 @@ glm::dvec3 TextureEvaluator::CompiledNormal::perturb(const glm::dvec3& normal, c
     return out / l;
 }
 
-MaterialSample TextureEvaluator::CompiledLayer::material(const glm::dvec3& point, double t) const {
+MaterialSample TextureEvaluator::CompiledLayer::material(const glm::dvec3& point, const glm::dvec2& surface_uv,
+                                                        double t) const {
     MaterialSample m;
-    fill(m, point, t);
+    fill(m, point, surface_uv, t);
     return m;
 }
 
-void TextureEvaluator::CompiledLayer::fill(MaterialSample& m, const glm::dvec3& point, double t) const {
-    const auto c = pigment->colour(point, t);
+void TextureEvaluator::CompiledLayer::fill(MaterialSample& m, const glm::dvec3& point, const glm::dvec2& surface_uv,
+                                          double t) const {
+    const auto c = pigment->colour(at(point, surface_uv), surface_uv, t);
     m.colour = {c[0], c[1], c[2]};
     m.filter = c[3];
     m.transmit = c[4];
@@ -405,14 +429,26 @@ void TextureEvaluator::CompiledLayer::fill(MaterialSample& m, const glm::dvec3& 
     m.ior = f.ior.at(t);
 }
 
-void TextureEvaluator::CompiledTexture::sample(const glm::dvec3& where, double t, const glm::dvec3& normal,
-                                               double weight, TextureSample& out) const {
+glm::dvec3 TextureEvaluator::CompiledLayer::perturbed(const glm::dvec3& n, const glm::dvec3& point,
+                                                     const glm::dvec2& surface_uv, double t) const {
+    if (!normal) return n;
+    if (!outer) return normal->perturb(n, at(point, surface_uv), surface_uv, t);
+    NormalMaps maps;
+    maps.push(outer_jacobian(*outer, point, t));
+    const glm::dvec3 back = maps.out_of(normal->perturb(unit_unless(false, maps.into(n)), at(point, surface_uv),
+                                                        surface_uv, t));
+    const double l = glm::length(back);
+    return l > 0.0 && std::isfinite(l) ? back / l : n;
+}
+
+void TextureEvaluator::CompiledTexture::sample(const glm::dvec3& where, const glm::dvec2& surface_uv, double t,
+                                               const glm::dvec3& normal, double weight, TextureSample& out) const {
     if (!pattern) {
         out.plains.push_back({weight, out.layers.size(), layers.size()});
         for (const CompiledLayer& layer : layers) {
             TextureSample::Layer& l = out.layers.emplace_back();
-            layer.fill(l.material, where, t);
-            l.normal = layer.normal ? layer.normal->perturb(normal, where, t) : normal;
+            layer.fill(l.material, where, surface_uv, t);
+            l.normal = layer.perturbed(normal, where, surface_uv, t);
         }
         return;
     }
@@ -423,15 +459,18 @@ void TextureEvaluator::CompiledTexture::sample(const glm::dvec3& where, double t
     const CompiledPattern& p = *pattern;
     const pattern::Values v = p.values(t);
     NormalMaps maps;
+    const glm::dvec3 start = uv ? glm::dvec3(surface_uv, 0.0) : where;
+    if (outer && has_normal) maps.push(outer_jacobian(*outer, where, t));
     const glm::dvec3 point =
-        has_normal ? p.walk(where, t, v, [&](const glm::dmat3& m) { maps.push(m); }) : p.point(where, t, v);
+        has_normal ? p.walk(start, t, v, [&](const glm::dmat3& m) { maps.push(m); }) : p.point(start, t, v);
     const pattern::BlendPick pick = pick_entry(entries, p.value(point, t, v), t);
     const bool turn = has_normal && !maps.empty();
     const glm::dvec3 inside = turn ? unit_unless(false, maps.into(normal)) : normal;
     const std::size_t first = out.layers.size();
     const double share = pick.prev == pick.cur ? 1.0 : pick.f;
-    entries[pick.cur].second->sample(point, t, inside, weight * share, out);
-    if (pick.prev != pick.cur) entries[pick.prev].second->sample(point, t, inside, weight * (1.0 - share), out);
+    entries[pick.cur].second->sample(point, surface_uv, t, inside, weight * share, out);
+    if (pick.prev != pick.cur)
+        entries[pick.prev].second->sample(point, surface_uv, t, inside, weight * (1.0 - share), out);
     if (!turn) return;
     for (std::size_t i = first; i < out.layers.size(); ++i) {
         const glm::dvec3 back = maps.out_of(out.layers[i].normal);
@@ -441,39 +480,40 @@ void TextureEvaluator::CompiledTexture::sample(const glm::dvec3& where, double t
 }
 
 const TextureEvaluator::CompiledLayer& TextureEvaluator::CompiledTexture::picked_top(const glm::dvec3& where,
+                                                                                    const glm::dvec2& surface_uv,
                                                                                     double t,
                                                                                     glm::dvec3& at) const {
     at = where;
     if (!pattern) return layers.front();
     const pattern::Values v = pattern->values(t);
-    const glm::dvec3 point = pattern->point(where, t, v);
+    const glm::dvec3 point = pattern->point(uv ? glm::dvec3(surface_uv, 0.0) : where, t, v);
     const pattern::BlendPick pick = pick_entry(entries, pattern->value(point, t, v), t);
-    return entries[pick.cur].second->picked_top(point, t, at);
+    return entries[pick.cur].second->picked_top(point, surface_uv, t, at);
 }
 
-void TextureEvaluator::sample(const glm::dvec3& world_point, double t, const glm::dvec3& normal,
-                              TextureSample& out) const {
-    texture_->sample(world_point, t, normal, 1.0, out);
+void TextureEvaluator::sample(const glm::dvec3& world_point, const glm::dvec2& uv, double t,
+                              const glm::dvec3& normal, TextureSample& out) const {
+    texture_->sample(world_point, uv, t, normal, 1.0, out);
 }
 
-void TextureEvaluator::sample_layer(const glm::dvec3& world_point, double t, const glm::dvec3& normal,
-                                    TextureSample::Layer& out) const {
+void TextureEvaluator::sample_layer(const glm::dvec3& world_point, const glm::dvec2& uv, double t,
+                                    const glm::dvec3& normal, TextureSample::Layer& out) const {
     const CompiledLayer& layer = texture_->layers.front();
-    layer.fill(out.material, world_point, t);
-    out.normal = layer.normal ? layer.normal->perturb(normal, world_point, t) : normal;
+    layer.fill(out.material, world_point, uv, t);
+    out.normal = layer.perturbed(normal, world_point, uv, t);
 }
 
-MaterialSample TextureEvaluator::at(const glm::dvec3& world_point, double t) const {
+MaterialSample TextureEvaluator::at(const glm::dvec3& world_point, const glm::dvec2& uv, double t) const {
     glm::dvec3 point;
-    const CompiledLayer& layer = texture_->picked_top(world_point, t, point);
-    return layer.material(point, t);
+    const CompiledLayer& layer = texture_->picked_top(world_point, uv, t, point);
+    return layer.material(point, uv, t);
 }
 
 bool TextureEvaluator::has_normal() const { return !texture_->pattern && texture_->layers.front().normal != nullptr; }
 
 glm::dvec3 TextureEvaluator::perturb(const glm::dvec3& normal, const glm::dvec3& world_point, double t) const {
     if (!has_normal()) return normal;
-    return texture_->layers.front().normal->perturb(normal, world_point, t);
+    return texture_->layers.front().normal->perturb(normal, world_point, glm::dvec2(0.0), t);
 }
 
 }  // namespace hexant::runtime

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <glm/mat3x3.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "runtime/compiled_function.hpp"
@@ -54,27 +55,30 @@ public:
     // normal `normal` (unit, world, already turned to face the viewer, as
     // POV-Ray perturbs it): appends each plain texture picked there, its
     // layers and their perturbed normals, to `out`. The weights sum to 1.
-    void sample(const glm::dvec3& world_point, double t, const glm::dvec3& normal, TextureSample& out) const;
+    // `uv`: the surface's (u, v) there (SurfacePoint::uv), which a
+    // uv-mapped pigment, normal or texture reads as the point (u, v, 0).
+    void sample(const glm::dvec3& world_point, const glm::dvec2& uv, double t, const glm::dvec3& normal,
+                TextureSample& out) const;
 
     // Whether the texture is one plain layer (no texture_map, no layers
     // under it): then sample_layer gives its one layer, as sample would.
     bool single_layer() const { return !texture_->pattern && texture_->layers.size() == 1; }
-    void sample_layer(const glm::dvec3& world_point, double t, const glm::dvec3& normal,
+    void sample_layer(const glm::dvec3& world_point, const glm::dvec2& uv, double t, const glm::dvec3& normal,
                       TextureSample::Layer& out) const;
 
     // The top layer's material of the plain texture picked at the point
     // (for a texture_map the entry at or above the pattern's value, without
     // blending): for tests and peers that read one colour.
-    MaterialSample at(const glm::dvec3& world_point, double t) const;
+    MaterialSample at(const glm::dvec3& world_point, const glm::dvec2& uv, double t) const;
     bool depends_on_time() const { return depends_on_time_; }
 
     // Whether the top layer perturbs the shading normal (normal { }).
     bool has_normal() const;
     // The unit shading normal `normal` (unit, world, facing the viewer)
     // perturbed at `world_point` and time t by the top layer's normal { }
-    // (the camera's normal: a texture of one layer). POV-Ray's Warp_Normal,
-    // Perturb_Normal, UnWarp_Normal. A bump that cancels the normal leaves
-    // it as it was.
+    // (the camera's normal: a texture of one layer, never uv-mapped: the
+    // language refuses it). POV-Ray's Warp_Normal, Perturb_Normal,
+    // UnWarp_Normal. A bump that cancels the normal leaves it as it was.
     glm::dvec3 perturb(const glm::dvec3& normal, const glm::dvec3& world_point, double t) const;
 
 private:
@@ -166,11 +170,12 @@ private:
         std::vector<std::pair<CompiledScalar, std::shared_ptr<const CompiledPigment>>> pigments;
         std::shared_ptr<const pattern::ImageMap> image;  // image_map (the pattern places it)
         CompiledScalar filter_all, transmit_all;
+        bool uv = false;  // uv_mapping: read at (u, v, 0), nothing around it applied
 
         CompiledPigment(const Pigment& pigment, const Transform& texture, Shared& shared);
         // The colour at `point` (in the space around it: the world for a
-        // texture's pigment), rgb, filter, transmit.
-        std::array<double, 5> colour(const glm::dvec3& point, double t) const;
+        // texture's pigment), rgb, filter, transmit; `uv` the surface's.
+        std::array<double, 5> colour(const glm::dvec3& point, const glm::dvec2& uv, double t) const;
     };
     // A normal: a pattern's bumps or slope (through a slope map), or a
     // normal map of normals (each in this pattern's space).
@@ -183,18 +188,33 @@ private:
         // builds nothing per hit), else compiled (value, height, slope).
         std::vector<pattern::SlopeEntry> fixed_slopes;
         std::vector<std::array<CompiledScalar, 3>> slopes;
+        bool uv = false;  // uv_mapping: perturbs at (u, v, 0), nothing around it applied
 
         CompiledNormal(const Normal& normal, const Transform& texture, Shared& shared);
-        // `normal` (in the space around it) perturbed at `point` (there too).
-        glm::dvec3 perturb(const glm::dvec3& normal, const glm::dvec3& point, double t) const;
+        // `normal` (in the space around it) perturbed at `point` (there
+        // too); `uv` the surface's.
+        glm::dvec3 perturb(const glm::dvec3& normal, const glm::dvec3& point, const glm::dvec2& uv,
+                           double t) const;
     };
     // A plain texture's layer.
     struct CompiledLayer {
         std::shared_ptr<const CompiledPigment> pigment;
         std::shared_ptr<const CompiledNormal> normal;  // null: none
         std::shared_ptr<const CompiledFinish> finish;
-        MaterialSample material(const glm::dvec3& point, double t) const;
-        void fill(MaterialSample& m, const glm::dvec3& point, double t) const;  // (in place)
+        bool uv = false;  // a uv-mapped texture's layer: pigment and normal at (u, v, 0)
+        // Its normal goes through these transforms' linear part first (a
+        // uv-mapped texture's uv_outside; null: none).
+        std::shared_ptr<const Motion> outer;
+        // The shading normal `normal` (in the space around it) with this
+        // layer's normal { } at `point` (there too).
+        glm::dvec3 perturbed(const glm::dvec3& normal, const glm::dvec3& point, const glm::dvec2& surface_uv,
+                             double t) const;
+        MaterialSample material(const glm::dvec3& point, const glm::dvec2& uv, double t) const;
+        void fill(MaterialSample& m, const glm::dvec3& point, const glm::dvec2& uv, double t) const;  // (in place)
+        // The point its pigment and normal read.
+        glm::dvec3 at(const glm::dvec3& point, const glm::dvec2& surface_uv) const {
+            return uv ? glm::dvec3(surface_uv, 0.0) : point;
+        }
     };
     // A texture: plain layers, or a pattern over a map of textures.
     struct CompiledTexture {
@@ -202,12 +222,15 @@ private:
         std::optional<CompiledPattern> pattern;
         std::vector<std::pair<CompiledScalar, std::shared_ptr<const CompiledTexture>>> entries;
         bool has_normal = false;  // a layer here or below perturbs the normal
+        bool uv = false;          // a uv-mapped patterned texture: its pattern at (u, v, 0)
+        std::shared_ptr<const Motion> outer;  // as CompiledLayer::outer
 
         CompiledTexture(const Texture& texture, const Transform& outside, const std::optional<Interior>& interior,
                         Shared& shared);
-        void sample(const glm::dvec3& point, double t, const glm::dvec3& normal, double weight,
-                    TextureSample& out) const;
-        const CompiledLayer& picked_top(const glm::dvec3& point, double t, glm::dvec3& at) const;
+        void sample(const glm::dvec3& point, const glm::dvec2& uv, double t, const glm::dvec3& normal,
+                    double weight, TextureSample& out) const;
+        const CompiledLayer& picked_top(const glm::dvec3& point, const glm::dvec2& uv, double t,
+                                        glm::dvec3& at) const;
     };
     static CompiledTurbulence compile(const pattern::Turbulence& turbulence);
 

@@ -129,7 +129,7 @@ glm::dvec3 Shader::sky(const glm::dvec3& direction, double t) const {
     glm::dvec3 colour(0.0), through(1.0);
     const glm::dvec3 emission = rgb(sky_emission_, t);
     for (const auto& layer : sky_layers_) {
-        const runtime::MaterialSample m = layer.at(direction, t);
+        const runtime::MaterialSample m = layer.at(direction, glm::dvec2(0.0), t);  // (no uv: refused on a sky)
         const double opacity = 1.0 - m.filter - m.transmit;
         colour += m.colour * opacity * through * emission;
         through *= m.colour * m.filter + glm::dvec3(m.transmit);
@@ -191,12 +191,12 @@ glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, ThreadSta
     glm::dvec3 colour(0.0);
     if (p.texture->single_layer()) {
         runtime::TextureSample::Layer layer;
-        p.texture->sample_layer(h.point, h.time, h.raw, layer);
+        p.texture->sample_layer(h.point, p.uv, h.time, h.raw, layer);
         colour = lit(h, &layer, 1, nullptr, state);
     } else {
         ShadingScratch& scratch = state.shading_at(depth);
         scratch.texture.clear();
-        p.texture->sample(h.point, h.time, h.raw, scratch.texture);
+        p.texture->sample(h.point, p.uv, h.time, h.raw, scratch.texture);
         scratch.lights.assign(lights_.size(), ShadingScratch::Light{});
         for (const runtime::TextureSample::Plain& plain : scratch.texture.plains)
             colour += plain.weight * lit(h, scratch.texture.layers.data() + plain.first, plain.count,

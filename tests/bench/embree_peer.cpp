@@ -199,8 +199,9 @@ struct Material {
     runtime::MaterialSample sample;
     std::shared_ptr<const runtime::TextureEvaluator> pattern;
 
+    // (uv_mapping was refused when converting: no surface (u, v) here.)
     runtime::MaterialSample at(const glm::dvec3& point, double t) const {
-        return fixed ? sample : pattern->at(point, t);
+        return fixed ? sample : pattern->at(point, glm::dvec2(0.0), t);
     }
 };
 
@@ -311,6 +312,8 @@ class Converter {
                                const runtime::ObjectRecord& record) {
         if (texture.is_patterned() || !texture.below.empty()) refuse(record, "texture_map or layered texture");
         if (texture.normal) refuse(record, "normal { }");
+        if (texture.uv_mapping != runtime::UvMapping::Off || texture.pigment.uv_mapping != runtime::UvMapping::Off)
+            refuse(record, "uv_mapping");
         for (int k = 0; k < 3; ++k)
             if (!is_zero(texture.finish.reflection.c[k])) refuse(record, "reflection");
         for (const auto& colour : texture.pigment.colours)
@@ -320,7 +323,7 @@ class Converter {
         Material m;
         m.fixed = texture.pigment.pattern == runtime::Pigment::Pattern::Solid &&
                   !evaluator->depends_on_time();
-        if (m.fixed) m.sample = evaluator->at(glm::dvec3(0.0), static_time_);
+        if (m.fixed) m.sample = evaluator->at(glm::dvec3(0.0), glm::dvec2(0.0), static_time_);
         m.pattern = std::move(evaluator);
         out_.materials.push_back(std::move(m));
         return std::uint32_t(out_.materials.size() - 1);

@@ -157,7 +157,7 @@ TEST_CASE("a declared chain of maps sharing their entries costs its length, not 
     CHECK(!t.depends_on_time());
     const rt::TextureEvaluator evaluator(t, std::nullopt);
     rt::TextureSample sample;
-    evaluator.sample({0.3, 0.2, 0.1}, 0.0, {0.0, 1.0, 0.0}, sample);
+    evaluator.sample({0.3, 0.2, 0.1}, {0.3, 0.2}, 0.0, {0.0, 1.0, 0.0}, sample);
     REQUIRE(sample.plains.size() == 1);  // (a checker picks one entry per level)
     CHECK(sample.layers.front().material.colour.x == 1.0);
 }

@@ -23,7 +23,7 @@ namespace {
 // layer of what is picked there).
 rt::MaterialSample material(const rt::IntelligentObject& object, const rt::Ray4& ray, const rt::ObjectHit& hit) {
     const rt::SurfacePoint p = object.complete(ray, hit);
-    return p.texture->at(glm::dvec3(p.event), p.event.w);
+    return p.texture->at(glm::dvec3(p.event), p.uv, p.event.w);
 }
 
 constexpr double kInf = std::numeric_limits<double>::infinity();

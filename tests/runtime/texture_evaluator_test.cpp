@@ -29,7 +29,7 @@ TEST_CASE("textures answer with their own finish, shared or not", "[runtime][tex
         made.push_back(std::make_unique<rt::TextureEvaluator>(
             texture_with(k % 3 == 0 ? 0.6 : 0.2 + 0.001 * k, 0.01 * k), none));
     for (int k = 0; k < 200; ++k) {
-        const rt::MaterialSample m = made[k]->at({0, 0, 0}, 0.5);
+        const rt::MaterialSample m = made[k]->at({0, 0, 0}, {0, 0}, 0.5);
         REQUIRE(m.phong == (k % 3 == 0 ? 0.6 : 0.2 + 0.001 * k));
         REQUIRE(m.colour.x == 0.01 * k);
         REQUIRE(m.ior == 1.0);
@@ -39,15 +39,15 @@ TEST_CASE("textures answer with their own finish, shared or not", "[runtime][tex
     rt::Interior glass;
     glass.ior = 1.5;
     const rt::TextureEvaluator again(texture_with(0.6, 1.0), glass);
-    CHECK(again.at({0, 0, 0}, 0.0).phong == 0.6);
-    CHECK(again.at({0, 0, 0}, 0.0).ior == 1.5);
+    CHECK(again.at({0, 0, 0}, {0, 0}, 0.0).phong == 0.6);
+    CHECK(again.at({0, 0, 0}, {0, 0}, 0.0).ior == 1.5);
     const rt::TextureEvaluator plain(texture_with(0.6, 1.0), none);
-    CHECK(plain.at({0, 0, 0}, 0.0).ior == 1.0);
+    CHECK(plain.at({0, 0, 0}, {0, 0}, 0.0).ior == 1.0);
 
     rt::Texture timed = texture_with(0.6, 1.0);
     timed.finish.phong = rt::TimeFunction::clock();
     const rt::TextureEvaluator moving(timed, none);
     CHECK(moving.depends_on_time());
-    CHECK(moving.at({0, 0, 0}, 0.25).phong == 0.25);
-    CHECK(moving.at({0, 0, 0}, 0.75).phong == 0.75);
+    CHECK(moving.at({0, 0, 0}, {0, 0}, 0.25).phong == 0.25);
+    CHECK(moving.at({0, 0, 0}, {0, 0}, 0.75).phong == 0.75);
 }

@@ -14,6 +14,7 @@ class LatheModel {
 public:
     using Geometry = geometry::LatheGeometry;
     static constexpr bool kSolid = true;
+    static constexpr bool kUvMapping = true;  // POV-Ray 3.7 maps it (primitive.hpp)
 
     explicit LatheModel(const Lathe& l) : spline_(l.spline) {
         points_.reserve(l.points.size());

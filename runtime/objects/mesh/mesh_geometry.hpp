@@ -4,7 +4,8 @@
 //
 // Hits: part = the face's index in MeshData::faces (its texture, if any,
 // is MeshData::textures[face.texture]). uv: the face's uv_vectors blended by
-// the hit's barycentric weights, else (b2, b3) as a triangle's. Normals:
+// the hit's barycentric weights (POV-Ray's Mesh::UVCoord), else (0, 0), as
+// POV-Ray reads a face without uv_vectors. Normals:
 // the face's own side (p2 - p1) x (p3 - p1), not flipped toward the ray.
 // inside: only with an inside_vector (POV-Ray 3.7: a ray from the point
 // along it crossing the faces an odd number of times), else false.

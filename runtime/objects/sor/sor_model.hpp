@@ -15,6 +15,7 @@ class SorModel {
 public:
     using Geometry = geometry::SorGeometry;
     static constexpr bool kSolid = true;
+    static constexpr bool kUvMapping = true;  // POV-Ray 3.7 maps it (primitive.hpp)
 
     explicit SorModel(const Sor& s) : open_(s.open) {
         points_.reserve(s.points.size());

@@ -13,6 +13,7 @@ class TorusModel {
 public:
     using Geometry = geometry::TorusGeometry;
     static constexpr bool kSolid = true;
+    static constexpr bool kUvMapping = true;  // POV-Ray 3.7 maps it (primitive.hpp)
 
     explicit TorusModel(const Torus& t) : major_(t.major_radius), minor_(t.minor_radius) {}
 
