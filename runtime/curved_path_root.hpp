@@ -17,6 +17,8 @@
 #include <optional>
 #include <utility>
 
+#include <glm/geometric.hpp>
+
 #include "runtime/geometry/ray3.hpp"
 #include "runtime/interval.hpp"
 
@@ -120,6 +122,13 @@ std::optional<CurvedPathHit> first_hit_on_curve(double s_min, double s_max, doub
             break;
         }
         const glm::dvec3 p0 = point_at(a), p1 = point_at(b);
+        // Ends that lie apart on a piece halved to the doubles' resolution:
+        // the path jumps there (a bend's inverse crossing its branch cut,
+        // behind the centre of curvature, takes the other preimage), and
+        // the chord between the two preimages is no part of it. A hit on
+        // it would lie off the ray (issue 20: a height field met 1e-3 off
+        // its path).
+        if (width > stop_width && !(glm::length(p1 - p0) <= stop_width)) continue;
         const geometry::Ray3 chord{p0, p1 - p0};
         // The chord's own parameter runs over [0, 1]; a hit exactly at a
         // piece's end belongs to both neighbours, so accept the closed range.

@@ -67,14 +67,6 @@ TEST_CASE("rays aimed at surface events hit at or before them, for every kind an
     Random random(21);
     for (const KindScene& kind : kind_scenes()) {
         for (const Variant& variant : variants()) {
-            // Known fault, left open (issue 20's note): under a bend, one
-            // aimed ray in 400 meets the height field 1e-3 off its path, and
-            // one meets the superellipsoid 3.3e-4 beyond its target (at
-            // 2e5 away, the incidence above 1e-4): both under bend only,
-            // which points at the bend's curved-path search, not the kinds.
-            if ((kind.keyword == "height_field" || kind.keyword == "superellipsoid") &&
-                variant.transform.rfind("bend", 0) == 0)
-                continue;
             const std::string sdl = std::string(kPath) + kind.keyword + " { " +
                                     (variant.moving_parameters ? kind.moving : kind.fixed) + " " +
                                     variant.transform + " }\n";
