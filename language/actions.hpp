@@ -11,6 +11,7 @@
 #include "language/grammar.hpp"
 #include "language/interpreter_state.hpp"
 #include "language/mesh_reading.hpp"
+#include "language/object_extent.hpp"
 #include "language/checked_integer.hpp"
 #include "language/timed_call.hpp"
 #include "language/value_ops.hpp"
@@ -182,6 +183,14 @@ HEXANT_ACTION(function_call) {
                 if (a.is<TimedString>()) length += a.as<TimedString>().longest();
             }
             st.check_string_length(length, "concat()'s result");
+        }
+        // The box of an object (language/object_extent.hpp).
+        if (name == "min_extent" || name == "max_extent") {
+            if (args.size() != 1 || !args[0].is<runtime::ObjectPtr>())
+                throw ValueError(name + "() takes one object, as in POV-Ray");
+            st.push(object_extent(*args[0].as<runtime::ObjectPtr>(), name == "max_extent", st.animation_time(),
+                                  st.options.limits.time_pieces));
+            return;
         }
         // (A string function of arguments that depend on clock: once a
         // piece of time, language/timed_call.hpp.)

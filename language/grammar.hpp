@@ -218,10 +218,11 @@ struct vector_literal
 
 // Built-in functions; the name picks the implementation (builtins.cpp).
 struct function_words {
-    static constexpr std::array<std::string_view, 51> list = {
+    static constexpr std::array<std::string_view, 53> list = {
         "abs", "acos", "asc", "asin", "atan", "atan2", "bitwise_and", "bitwise_or", "bitwise_xor",
         "ceil", "chr", "concat", "cos", "cosh", "degrees", "dimension_size", "dimensions", "div",
-        "exp", "file_exists", "floor", "int", "ln", "log", "max", "min", "mod", "pow", "radians",
+        "exp", "file_exists", "floor", "int", "ln", "log", "max", "max_extent", "min", "min_extent", "mod", "pow",
+        "radians",
         "rand", "seed", "select", "sin", "sinh", "sqrt", "str", "strcmp", "strlen", "strlwr", "strupr",
         "substr", "tan", "tanh", "val", "vaxis_rotate", "vcross", "vdot", "vlength", "vnormalize",
         "vrotate", "vstr"};

@@ -11,7 +11,7 @@
 namespace hexant::language::grammar {
 
 namespace {
-constexpr std::array<std::string_view, 378> kReserved = {
+constexpr std::array<std::string_view, 380> kReserved = {
     "abs",
     "accuracy",
     "acos",
@@ -201,6 +201,7 @@ constexpr std::array<std::string_view, 378> kReserved = {
     "material",
     "matrix",
     "max",
+    "max_extent",
     "max_trace_level",
     "media",
     "media_attenuation",
@@ -211,6 +212,7 @@ constexpr std::array<std::string_view, 378> kReserved = {
     "metallic",
     "metric",
     "min",
+    "min_extent",
     "mod",
     "mortar",
     "motion_blur",

@@ -146,6 +146,15 @@ TEST_CASE("text agrees with POV-Ray 3.7's render of it, at two clocks", "[tracer
     check_stills("text", "text", {"0", "0.5"});
 }
 
+TEST_CASE("min_extent and max_extent place objects as POV-Ray 3.7's do", "[tracer][pov][text]") {
+    // text/extent.pov: a text centred on its box (shapes.inc's
+    // Center_Object, written out), a countdown from str(clock) centred on a
+    // box that changes with its string, a turned box set on its lowest
+    // corner. The still's tolerance; exact at both clocks when written (and
+    // within 1 step at 320x240).
+    check_stills("text", "extent", {"0", "0.5"});
+}
+
 TEST_CASE("mesh and mesh2 agree with POV-Ray 3.7's render of them, at two clocks", "[tracer][pov][mesh]") {
     // shapes/mesh.pov: a mesh of flat and smooth triangles with a face's
     // own texture, turning; a mesh2 ball written by #for loops (normals per
