@@ -64,6 +64,7 @@ HEXANT_NAME_ACTION(finish_setting_name);
 HEXANT_NAME_ACTION(csg_kind);
 HEXANT_NAME_ACTION(object_flag_name);
 HEXANT_NAME_ACTION(shape_setting_name);
+HEXANT_NAME_ACTION(shape_vectors_setting_name);
 HEXANT_NAME_ACTION(light_setting_name);
 HEXANT_NAME_ACTION(camera_vector_name);
 HEXANT_NAME_ACTION(global_setting_name);
@@ -1826,6 +1827,9 @@ HEXANT_ACTION(shape_setting) {
         set_shape_setting(record, name, given, st, in.position());
     }
 };
+// (The same, with vectors for values: uv_vectors.)
+template <>
+struct action<g::shape_vectors_setting> : action<g::shape_setting> {};
 HEXANT_ACTION(object_ignored_block) {
     HEXANT_APPLY { st.warn(in.position(), word(in) + " { } is read and ignored"); }
 };

@@ -69,6 +69,7 @@ HEXANT_ERROR(transform_block, "expected '{' after transform");
 HEXANT_ERROR(deformation_axis, "expected an axis vector after the deformation");
 HEXANT_ERROR(deformation_amount, "expected an amount after the deformation's axis");
 HEXANT_ERROR(pattern_setting_value, "expected a value after the pattern modifier");
+HEXANT_ERROR(shape_vectors_setting_value, "expected a <u, v> vector after uv_vectors (three, one a corner)");
 HEXANT_ERROR(warp_turbulence_keyword,
              "expected turbulence in warp { } (hexant's warps are turbulence; repeat, black_hole "
              "and the mapping warps are not supported)");

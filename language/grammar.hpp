@@ -1009,6 +1009,13 @@ struct shape_setting_words {
 struct shape_setting_name : one_word_of<shape_setting_words> {};
 struct shape_setting_value : p::seq<p::not_at<p::one<'<'>>, expression> {};
 struct shape_setting : p::seq<shape_setting_name, ws, frame_open, p::opt<shape_setting_value>> {};
+// A setting whose values are vectors: a mesh triangle's uv_vectors <u1, v1>,
+// <u2, v2>, <u3, v3> (runtime/objects/triangle/triangle.hpp).
+struct shape_vectors_setting_name : TAO_PEGTL_KEYWORD("uv_vectors") {};
+struct shape_vectors_setting_value : p::seq<expression> {};
+struct shape_vectors_setting
+    : p::seq<shape_vectors_setting_name, ws, frame_open, p::must<shape_vectors_setting_value>,
+             p::star<comma, p::must<shape_vectors_setting_value>>> {};
 struct object_ignored_block
     : p::seq<p::sor<TAO_PEGTL_KEYWORD("bounded_by"), TAO_PEGTL_KEYWORD("clipped_by"),
                     TAO_PEGTL_KEYWORD("photons"), TAO_PEGTL_KEYWORD("radiosity")>,
@@ -1016,7 +1023,8 @@ struct object_ignored_block
 struct object_modifier
     : p::sor<directive<object_modifier>, macro_call<object_modifier>, transformation,
              deformation, object_texture, object_pigment, object_finish, object_normal,
-             object_interior, object_material, object_flag, shape_setting, object_ignored_block> {};
+             object_interior, object_material, object_flag, shape_vectors_setting, shape_setting,
+             object_ignored_block> {};
 
 // ---------------------------------------------------------------- scene items
 

@@ -64,6 +64,16 @@ void add_mesh_triangle(MeshData& mesh, const runtime::ObjectRecord& triangle) {
             mesh.normals.push_back(fixed_vector(smooth->normals[i], "a mesh triangle's normal"));
             face.normal[i] = static_cast<std::int32_t>(mesh.normals.size() - 1);
         }
+    // (POV-Ray's Parse_Three_UVCoords: without them the corners' uv are 0.)
+    if (const auto& uv = flat ? flat->uv_vectors : smooth->uv_vectors)
+        for (int i = 0; i < 3; ++i) {
+            const auto& c = (*uv)[i].c;
+            if (c[0].depends_on_time() || c[1].depends_on_time())
+                throw ValueError("a mesh triangle's uv vector depends on clock; a mesh's triangles are fixed when "
+                                 "the scene is read");
+            mesh.uvs.emplace_back(c[0](0.0), c[1](0.0));
+            face.uv[i] = static_cast<std::int32_t>(mesh.uvs.size() - 1);
+        }
     if (triangle.texture) {
         mesh.textures.push_back(*triangle.texture);
         face.texture = static_cast<std::int32_t>(mesh.textures.size() - 1);

@@ -109,6 +109,8 @@ IntelligentObjectPtr build_object(const ObjectRecord& record, const Inherited& p
                 throw std::logic_error("make_intelligent_object: CSG handled above");
             } else {
                 using Model = typename Kind::Model;
+                if constexpr (requires { shape.standalone_error(); })
+                    if (const auto refused = shape.standalone_error()) throw ObjectError(record.place, *refused);
                 if (Primitive<Model>::kUnbounded && to_world.has_deformation())
                     throw ObjectError(record.place,
                                       "a " + std::string(Kind::keyword) +

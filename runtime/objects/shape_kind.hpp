@@ -23,6 +23,10 @@
 //   static constexpr bool kOwnSyntax = true;
 //       its blocks are read by a rule of its own in the grammar (mesh),
 //       not the generic "keyword { values modifiers }", and it has no read()
+//   std::optional<std::string> standalone_error() const;
+//       set when the block holds what belongs only inside another object (a
+//       triangle's uv_vectors, read only in a mesh): the factory refuses
+//       the object on its own, naming its place
 //   std::optional<std::string> unsupported() const;
 //       set when the block asked for a variant hexant lacks ("prism with
 //       cubic_spline"): kept unevaluated, an error only where used.
@@ -57,6 +61,14 @@ struct KindList {};
 // value is POV-Ray's false.
 inline bool flag(const ShapeArguments& value) {
     return value.size() == 0 || pov_true(value.constant(0, "'" + value.keyword() + "'"));
+}
+
+// A triangle's uv_vectors setting: three <u, v> (POV-Ray's
+// Parse_Three_UVCoords).
+inline std::array<Vector2Function, 3> read_uv_vectors(const ShapeArguments& value) {
+    value.need(3, 3, "three <u, v> vectors, one a corner");
+    return {value.vector2(0, "first uv vector"), value.vector2(1, "second uv vector"),
+            value.vector2(2, "third uv vector")};
 }
 
 namespace kind_detail {

@@ -114,9 +114,10 @@ TEST_CASE("dump: each shape's own keys", "[app][dump]") {
     scene.objects.push_back(object(rt::Box{vec(-1.0, -1.0, -1.0), vec(1.0, 2.0, 3.0)}));
     scene.objects.push_back(object(rt::Plane{vec(0.0, 1.0, 0.0), -symbolic_clock()}));
     scene.objects.push_back(object(rt::Polygon{{vec(0.0, 0.0, 0.0), vec(1.0, 0.0, 0.0), vec(0.0, 1.0, 0.0)}}));
-    scene.objects.push_back(object(rt::Triangle{{vec(0.0, 0.0, 0.0), vec(1.0, 0.0, 0.0), vec(0.0, 1.0, 0.0)}}));
+    scene.objects.push_back(object(rt::Triangle{{vec(0.0, 0.0, 0.0), vec(1.0, 0.0, 0.0), vec(0.0, 1.0, 0.0)}, std::nullopt}));
     scene.objects.push_back(object(rt::SmoothTriangle{{vec(0.0, 0.0, 0.0), vec(1.0, 0.0, 0.0), vec(0.0, 1.0, 0.0)},
-                                                      {vec(0.0, 0.0, 1.0), vec(0.0, 0.0, 2.0), vec(0.0, 0.0, 3.0)}}));
+                                                      {vec(0.0, 0.0, 1.0), vec(0.0, 0.0, 2.0), vec(0.0, 0.0, 3.0)},
+                                                      std::nullopt}));
     scene.objects.push_back(object(rt::Disc{vec(0.0, 0.0, 0.0), vec(0.0, 1.0, 0.0), 2.0, 0.5}));
     scene.objects.push_back(object(rt::Cylinder{vec(0.0, 0.0, 0.0), vec(0.0, symbolic_clock(), 0.0), 0.5, true}));
     scene.objects.push_back(object(rt::Cone{vec(0.0, 0.0, 0.0), 1.0, vec(0.0, 1.0, 0.0), 0.0, false}));

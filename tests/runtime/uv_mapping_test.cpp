@@ -88,6 +88,15 @@ TEST_CASE("a mesh's (u, v) blends its uv_vectors, and is (0, 0) without them", "
     // Barycentric weights (0.25, 0.25, 0.5) of the three corners.
     CHECK(seen.point.uv.x == Approx(0.25 * 0.1 + 0.25 * 0.9 + 0.5 * 0.1).epsilon(1e-12));
     CHECK(seen.point.uv.y == Approx(0.25 * 0.2 + 0.25 * 0.2 + 0.5 * 0.6).epsilon(1e-12));
+    // A mesh's triangle with uv_vectors (POV-Ray's Parse_Three_UVCoords):
+    // the same blend.
+    const Seen listed = look(std::string("mesh { triangle { <0, 0, 0>, <1, 0, 0>, <0, 1, 0> uv_vectors <0.1, 0.2>, "
+                                         "<0.9, 0.2>, <0.1, 0.6> } ") +
+                                 kRamp + " }",
+                             {0.25, 0.5, -5}, {0, 0, 1});
+    CHECK(listed.point.uv.x == Approx(seen.point.uv.x).epsilon(1e-12));
+    CHECK(listed.point.uv.y == Approx(seen.point.uv.y).epsilon(1e-12));
+    CHECK(listed.material.colour.x == Approx(listed.point.uv.x).margin(1e-6));
     const Seen none = look(std::string("mesh { triangle { <0, 0, 0>, <1, 0, 0>, <0, 1, 0> } ") + kRamp + " }",
                            {0.25, 0.5, -5}, {0, 0, 1});
     CHECK(none.point.uv == glm::dvec2(0.0));
@@ -126,6 +135,14 @@ TEST_CASE("uv_mapping where there is no surface is an error naming it", "[langua
                Catch::Contains("uv_mapping") && Catch::Contains("camera"));
     CHECK_THAT(error_of("sky_sphere { pigment { uv_mapping gradient y } }").formatted(),
                Catch::Contains("uv_mapping") && Catch::Contains("sky_sphere"));
+    // uv_vectors belong to a mesh's triangle (POV-Ray 3.7 reads them only there).
+    const rt::SceneDescription alone = hexant::language::parse_scene_text(
+        "triangle { 0, x, y uv_vectors <0, 0>, <1, 0>, <0, 1> }\n", "test.pov", {});
+    REQUIRE(alone.objects.size() == 1);
+    CHECK_THROWS_WITH(rt::make_intelligent_object(*alone.objects.front()),
+                      Catch::Contains("uv_vectors belong to a triangle in a mesh"));
+    CHECK_THAT(error_of("mesh { triangle { 0, x, y uv_vectors <0, 0>, <1, 0> } }").formatted(),
+               Catch::Contains("three"));
     // (Not a finish's word: the usual error at the place.)
     CHECK_THAT(error_of("sphere { 0, 1 finish { uv_mapping } }").formatted(), Catch::Contains("test.pov:1:"));
 }

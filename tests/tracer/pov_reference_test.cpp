@@ -374,6 +374,9 @@ TEST_CASE("uv_mapping agrees with POV-Ray 3.7's", "[tracer][pov][pattern][image]
     // object's turn, as POV-Ray warps it). Same tolerance as the still's
     // (0 pixels at 64x48 when written; 1 of 76,800 at 320x240, on an edge).
     check_stills("textures", "uv_mapping", {"0", "0.5"});
+    // textures/mesh_uv.pov: a mesh's triangle and smooth_triangle with
+    // uv_vectors under a uv-mapped checker (exact when written).
+    check_stills("textures", "mesh_uv", {"0"});
 }
 
 TEST_CASE("normal_map and slope_map agree with POV-Ray 3.7's", "[tracer][pov][pattern]") {

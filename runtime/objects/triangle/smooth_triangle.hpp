@@ -4,6 +4,8 @@
 #pragma once
 
 #include <array>
+#include <optional>
+#include <string>
 #include <string_view>
 
 #include "runtime/objects/shape_kind.hpp"
@@ -21,6 +23,8 @@ struct SmoothTriangle {
 
     std::array<Vector3Function, 3> points;
     std::array<Vector3Function, 3> normals;
+    std::optional<std::array<Vector2Function, 3>> uv_vectors;  // as Triangle's
+    static constexpr std::array<std::string_view, 1> settings{"uv_vectors"};
 
     static SmoothTriangle read(const objects::ShapeArguments& a) {
         a.no_options();
@@ -30,7 +34,8 @@ struct SmoothTriangle {
                  a.vector3(4, "smooth_triangle's third corner")},
                 {a.vector3(1, "smooth_triangle's first normal"),
                  a.vector3(3, "smooth_triangle's second normal"),
-                 a.vector3(5, "smooth_triangle's third normal")}};
+                 a.vector3(5, "smooth_triangle's third normal")},
+                std::nullopt};
     }
     template <class F>
     void parameters(F&& f) const {
@@ -40,6 +45,13 @@ struct SmoothTriangle {
         f("n2", "second normal", normals[1]);
         f("p3", "third corner", points[2]);
         f("n3", "third normal", normals[2]);
+    }
+    void set(std::string_view, const objects::ShapeArguments& value) {
+        uv_vectors = objects::read_uv_vectors(value);
+    }
+    std::optional<std::string> standalone_error() const {
+        if (!uv_vectors) return std::nullopt;
+        return std::string("uv_vectors belong to a smooth_triangle in a mesh (POV-Ray 3.7 reads them only there)");
     }
 };
 
