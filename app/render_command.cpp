@@ -1,6 +1,7 @@
 #include "app/render_command.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -171,12 +172,13 @@ double peak_resident_mb() {
 Counters render_mode(runtime::SceneDescription& scene, const RenderArguments& args,
                      tracer::Mode mode, const std::string& pattern,
                      const std::vector<int>& frames, bool write,
-                     std::vector<tracer::Image>* keep, bool last_use) {
+                     std::vector<tracer::Image>* keep, bool last_use, std::ostream& err) {
     tracer::RenderSettings settings;
     settings.mode = mode;
     settings.samples_per_pixel = args.samples_per_pixel.value_or(scene.global.motion_blur_samples.value_or(1));
     settings.jitter = !args.no_jitter;
     settings.sample_seed = args.seed;
+    settings.sample_sets = args.error_estimate || args.error_image ? 2 : 1;
     settings.threads = args.threads;
     settings.build = args.hierarchy.options();
     settings.first_frame = frames.front();
@@ -191,10 +193,28 @@ Counters render_mode(runtime::SceneDescription& scene, const RenderArguments& ar
                         : tracer::Renderer(scene, settings);
     });
     for (const int frame : frames) {
+        const auto began = std::chrono::steady_clock::now();
         tracer::Image image = naming_out_of_memory(
             "rendering frame " + std::to_string(frame) + " (" + size + " pixels)",
             [&] { return renderer.render_frame(frame); });
         if (write) tracer::write_image(image, tracer::frame_path(pattern, frame));
+        if (const auto& estimate = renderer.last_estimate(); estimate && write) {
+            if (settings.progress) std::cerr << "\r" << std::string(40, ' ') << "\r";
+            const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+            err << "frame " << frame << ": " << seconds << " s, estimated RMSE " << estimate->rmse
+                      << " (linear light); worst " << tracer::FrameEstimate::kTile << "-pixel tiles";
+            for (const auto& tile : estimate->worst) err << " " << tile.rmse << " at " << tile.x << "," << tile.y;
+            err << "\n";
+            if (args.error_image) {
+                // Per pixel its estimated RMSE, grey.
+                tracer::Image errors(image.width, image.height);
+                const std::vector<double>& squared = renderer.last_squared_error();
+                for (int y = 0; y < image.height; ++y)
+                    for (int x = 0; x < image.width; ++x)
+                        errors.set(x, y, glm::dvec3(std::sqrt(squared[std::size_t(y) * image.width + x])));
+                tracer::write_image(errors, tracer::frame_path(*args.error_image, frame));
+            }
+        }
         if (keep) keep->push_back(std::move(image));
     }
     if (settings.progress) std::cerr << "\r" << std::string(40, ' ') << "\r";
@@ -220,6 +240,12 @@ void add_render_arguments(CLI::App& command, RenderArguments& a) {
     command.add_option("--seed", a.seed,
                        "Scramble the samples with this number (default 0); another seed gives "
                        "an independent estimate of the same image");
+    command.add_flag("--error-estimate", a.error_estimate,
+                     "Estimate each frame's error without a reference: its samples are two independent "
+                     "halves (an even --spp), and the RMSE of their mean is printed with the worst tiles");
+    command.add_option("--error-image", a.error_image,
+                       "Also write each frame's per-pixel estimated RMSE (linear light) as an image; #### "
+                       "becomes the frame number (implies --error-estimate)");
     command.add_option("--frames", a.frames, "A:B renders frames A to B of the animation; a comma list (1,17,33 or 1:4,9) renders those");
     command.add_option("-o,--output", a.output,
                        "Frame file pattern; #### becomes the frame number (default "
@@ -246,6 +272,10 @@ void check_outputs(const RenderArguments& args, const std::string& pattern,
     tracer::check_frame_pattern(pattern, selected.size());
     tracer::check_image_name(pattern);
     if (args.contact_sheet) tracer::check_image_name(*args.contact_sheet);
+    if (args.error_image) {
+        tracer::check_frame_pattern(*args.error_image, selected.size());
+        tracer::check_image_name(*args.error_image);
+    }
     if (args.animation) tracer::check_animation_name(*args.animation);
     if (args.animation && std::max(animation.width, animation.height) > tracer::kGifMaxSide)
         throw std::runtime_error(*args.animation + ": a GIF is at most " +
@@ -292,6 +322,13 @@ int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err
         runtime::SceneDescription scene =
             language::parse_scene_file(resolved.scene, resolved.options);
         apply_scene_defaults(args, scene, err);
+        if (args.error_estimate || args.error_image) {
+            const int spp = args.samples_per_pixel.value_or(scene.global.motion_blur_samples.value_or(1));
+            if (spp < 2 || spp % 2 != 0 || args.no_jitter)
+                throw std::runtime_error("--error-estimate and --error-image need an even --spp of 2 or more "
+                                         "(two independent halves) and jitter; --spp is " + std::to_string(spp) +
+                                         (args.no_jitter ? " with --no-jitter" : ""));
+        }
         const std::vector<int> selected = frame_selection(args.frames, scene.animation);
         const std::string pattern =
             args.output ? *args.output
@@ -303,11 +340,11 @@ int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err
         const tracer::Mode mode = args.compare ? tracer::Mode::Spacetime : tracer::parse_mode(args.mode);
         columns.emplace_back(tracer::mode_name(mode),
                              render_mode(scene, args, mode, pattern, selected, true,
-                                         keep_frames ? &frames : nullptr, !args.compare));
+                                         keep_frames ? &frames : nullptr, !args.compare, err));
         if (args.compare)  // the paper's order: frame by frame, then spacetime
             columns.emplace(columns.begin(), "frames",
                             render_mode(scene, args, tracer::Mode::Frames, pattern, selected, false,
-                                        nullptr, true));
+                                        nullptr, true, err));
         const int first = selected.front(), last = selected.back();
         const bool contiguous = last - first + 1 == static_cast<int>(selected.size());
         out << "frames ";

@@ -25,6 +25,11 @@ struct RenderArguments {
     bool stats = false;
     bool compare = false;
     int threads = 0;
+    // Each frame's error estimated from two independent halves of its
+    // samples (tracer/frame_estimate.hpp), printed; --error-image writes
+    // each frame's per-pixel estimate (a pattern with ####, as --output).
+    bool error_estimate = false;
+    std::optional<std::string> error_image;
     HierarchyArguments hierarchy;
 };
 

@@ -134,7 +134,12 @@ Image Renderer::render_frame(int frame) {
 
     const int width = a.width, height = a.height;
     const int spp = std::max(1, settings_.samples_per_pixel);
+    const bool halves = settings_.sample_sets == 2;
+    if (halves && (spp % 2 != 0 || !settings_.jitter))
+        throw std::invalid_argument("two sample sets need an even number of jittered samples per pixel");
     Image image(width, height);
+    // (Per pixel, the estimated squared error over its channels: halves only.)
+    std::vector<double> squared(halves ? static_cast<std::size_t>(width) * height : 0);
     const bool moving_camera = scene_.camera.depends_on_time();
     const double working_gamma = scene_.global.assumed_gamma;
     const runtime::CameraFrame fixed_camera = scene_.camera.evaluate(open);
@@ -158,11 +163,17 @@ Image Renderer::render_frame(int frame) {
             for (int y = tile.rows().begin(); y < tile.rows().end(); ++y) {
                 for (int x = tile.cols().begin(); x < tile.cols().end(); ++x) {
                     const std::uint32_t seed = pixel_seed(frame, x, y, settings_.sample_seed);
-                    glm::dvec3 sum(0.0);
+                    // Halves: samples 0 .. n/2 - 1 of the pixel's own set,
+                    // then as many of an independent second set.
+                    const int per_set = halves ? spp / 2 : spp;
+                    const std::uint32_t second = halves ? second_set_seed(seed) : seed;
+                    glm::dvec3 sum(0.0), first_sum(0.0);
                     for (int i = 0; i < spp; ++i) {
-                        const PixelSample s = pixel_sample(seed, static_cast<std::uint32_t>(i),
-                                                           static_cast<std::uint32_t>(spp),
-                                                           settings_.jitter);
+                        if (halves && i == per_set) first_sum = sum;
+                        const bool in_second = i >= per_set;
+                        const PixelSample s = pixel_sample(in_second ? second : seed,
+                                                           static_cast<std::uint32_t>(in_second ? i - per_set : i),
+                                                           static_cast<std::uint32_t>(per_set), settings_.jitter);
                         const double t = open + s.time * length;
                         const runtime::CameraFrame camera =
                             moving_camera ? scene_.camera.evaluate(t) : fixed_camera;
@@ -177,14 +188,23 @@ Image Renderer::render_frame(int frame) {
                         const runtime::Ray4 ray{Event(camera.location, t), Event(d, 0.0)};
                         sum += shader_->trace(ray, state);
                     }
-                    glm::dvec3 pixel = sum / double(spp);
                     // assumed_gamma G: the scene's colours and all the
                     // shading are in a space of gamma G; the pixel leaves it
                     // (POV-Ray 3.7 decodes the working gamma before it
                     // encodes the file's).
-                    if (working_gamma != 1.0)
-                        for (int c = 0; c < 3; ++c) pixel[c] = std::pow(std::max(pixel[c], 0.0), working_gamma);
-                    image.set(x, y, pixel);
+                    const auto linear = [&](glm::dvec3 c) {
+                        if (working_gamma != 1.0)
+                            for (int k = 0; k < 3; ++k) c[k] = std::pow(std::max(c[k], 0.0), working_gamma);
+                        return c;
+                    };
+                    image.set(x, y, linear(sum / double(spp)));
+                    if (halves) {
+                        // (A - B)^2 / 4, each half in linear light.
+                        const glm::dvec3 a = linear(first_sum / double(per_set));
+                        const glm::dvec3 b = linear((sum - first_sum) / double(per_set));
+                        const glm::dvec3 d = a - b;
+                        squared[static_cast<std::size_t>(y) * width + x] = glm::dot(d, d) / 12.0;
+                    }
                 }
             }
             state.counters.deformation_maps += runtime::this_thread_work.deformation_maps - maps;
@@ -201,6 +221,13 @@ Image Renderer::render_frame(int frame) {
     for (const ThreadState& s : states) counters_ += s.counters;
     counters_.render_seconds +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (halves) {
+        last_estimate_ = estimate_frame(squared, width, height);
+        last_squared_ = std::move(squared);
+    } else {
+        last_estimate_.reset();
+        last_squared_.clear();
+    }
     return image;
 }
 

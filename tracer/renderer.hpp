@@ -15,6 +15,7 @@
 #include "runtime/scene.hpp"
 #include "runtime/texture_evaluator.hpp"
 #include "tracer/counters.hpp"
+#include "tracer/frame_estimate.hpp"
 #include "tracer/image.hpp"
 #include "tracer/ray_query.hpp"
 #include "tracer/shader.hpp"
@@ -28,6 +29,11 @@ struct RenderSettings {
     // 0: the samples every render of this frame uses; another number gives
     // independent scrambles (an independent estimate of the same image).
     std::uint32_t sample_seed = 0;
+    // 2: each pixel's samples are two independent halves of
+    // samples_per_pixel / 2 (even, jittered), and each frame comes with an
+    // estimate of its error (tracer/frame_estimate.hpp); the image is then
+    // another, equally good one than with 1, the default.
+    int sample_sets = 1;
     BuildOptions build;
     int threads = 0;        // 0: as many as the machine has
     bool progress = false;  // a progress line on stderr
@@ -54,6 +60,12 @@ public:
     // Frame numbers as the animation counts them (initial_frame ..), within
     // the settings' first and last frame; std::out_of_range otherwise.
     Image render_frame(int frame);
+    // With sample_sets 2: the last frame's estimate of its error, and per
+    // pixel its estimated squared error averaged over the channels (linear
+    // light, rows top to bottom); none
+    // otherwise.
+    const std::optional<FrameEstimate>& last_estimate() const { return last_estimate_; }
+    const std::vector<double>& last_squared_error() const { return last_squared_; }
 
     const Counters& counters() const { return counters_; }
     // Statistics: the cells a full build of the hierarchy in use makes
@@ -74,6 +86,8 @@ private:
     runtime::Box4 root_;
     int first_frame_, last_frame_;
     Counters counters_;
+    std::optional<FrameEstimate> last_estimate_;
+    std::vector<double> last_squared_;
     std::unique_ptr<RayQuery> query_;
     std::unique_ptr<Shader> shader_;
     // The camera's normal { }, when it has one (runtime/camera.hpp).

@@ -194,3 +194,29 @@ TEST_CASE("MegaPOV's motion_blur sets the defaults of --spp and --shutter, and s
     CHECK(bytes(out / "f_01.png") == bytes(out / "g_01.png"));
     CHECK(e2.str().find("--spp") == std::string::npos);
 }
+
+TEST_CASE("render estimates each frame's error and writes its error image", "[app][render][estimate]") {
+    const fs::path scene = scene_file(moving_sphere("<2 * clock - 1, 0, 0>"));
+    const fs::path out = fresh_output(scene);
+    RenderArguments a = arguments_for(scene, out);
+    a.samples_per_pixel = 4;
+    a.error_image = (out / "err_##.png").string();
+    std::ostringstream stdout_text, stderr_text;
+    REQUIRE(run_render(a, stdout_text, stderr_text) == 0);
+    const std::string said = stderr_text.str();
+    INFO(said);
+    CHECK(said.find("frame 1: ") != std::string::npos);
+    CHECK(said.find("frame 3: ") != std::string::npos);
+    CHECK(said.find("estimated RMSE") != std::string::npos);
+    CHECK(fs::exists(out / "err_01.png"));
+    CHECK(fs::exists(out / "err_03.png"));
+    // An odd count cannot be halved: refused before anything is written.
+    const fs::path none = fresh_output(scene);
+    RenderArguments odd = arguments_for(scene, none);
+    odd.samples_per_pixel = 3;
+    odd.error_estimate = true;
+    std::ostringstream o, e;
+    CHECK(run_render(odd, o, e) != 0);
+    CHECK(e.str().find("even --spp") != std::string::npos);
+    CHECK_FALSE(fs::exists(none / "f_01.png"));
+}
