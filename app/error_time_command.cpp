@@ -8,6 +8,7 @@
 #include <fstream>
 #include <functional>
 #include <iomanip>
+#include <optional>
 #include <iostream>
 #include <sstream>
 #include <vector>
@@ -89,6 +90,9 @@ struct Point {
     double seconds, build_seconds, render_seconds;
     std::uint64_t rays;
     tracer::ImageError error;
+    // The frame's own estimate of its RMSE (tracer/frame_estimate.hpp), from
+    // two independent halves of its samples: at every even count.
+    std::optional<double> estimate;
 };
 
 // Renders `frame` once and writes it; the build time is charged as the
@@ -101,6 +105,8 @@ Point measure(const runtime::SceneDescription& scene, tracer::Mode mode, int spp
     settings.mode = mode;
     settings.samples_per_pixel = spp;
     settings.sample_seed = sample_seed;
+    // (Even counts as two independent halves: the frame estimates its error.)
+    if (sample_seed == 0 && args.sample_sets == 2 && spp >= 2 && spp % 2 == 0) settings.sample_sets = 2;
     settings.threads = args.threads;
     settings.build = args.hierarchy.options();
     settings.first_frame = settings.last_frame = frame;
@@ -111,7 +117,9 @@ Point measure(const runtime::SceneDescription& scene, tracer::Mode mode, int spp
     // first and last frame), in either mode: its build is the frame's own,
     // charged whole.
     const double build_share = c.build_seconds;
-    return {mode, spp, build_share + c.render_seconds, build_share, c.render_seconds, c.rays(), {}};
+    std::optional<double> estimate;
+    if (renderer.last_estimate()) estimate = renderer.last_estimate()->rmse;
+    return {mode, spp, build_share + c.render_seconds, build_share, c.render_seconds, c.rays(), {}, estimate};
 }
 
 const char* colour_of(tracer::Mode mode) {
@@ -154,6 +162,10 @@ void add_error_time_arguments(CLI::App& command, ErrorTimeArguments& a) {
                        "Folder for the CSV, the plot, the images and the cached reference "
                        "(default out/SCENE/error-time)");
     command.add_option("--threads", a.threads, "Worker threads (default: all cores)");
+    command.add_option("--sample-sets", a.sample_sets,
+                       "2 (default): even counts render as two independent halves and estimate their own "
+                       "error; 1: one set, no estimate (what estimating costs)")
+        ->check(CLI::Range(1, 2));
     add_hierarchy_arguments(command, a.hierarchy);
 }
 
@@ -206,7 +218,10 @@ int run_error_time(const ErrorTimeArguments& args, std::ostream& out, std::ostre
                 out << std::left << std::setw(10) << tracer::mode_name(mode) << std::right
                     << " spp " << std::setw(5) << spp << "  " << std::fixed << std::setprecision(3)
                     << std::setw(8) << p.seconds << " s  rmse " << std::scientific
-                    << std::setprecision(3) << p.error.rmse << "  relMSE " << p.error.relative_mse
+                    << std::setprecision(3) << p.error.rmse << "  estimated ";
+                if (p.estimate) out << *p.estimate << " (" << std::fixed << std::setprecision(2) << *p.estimate / p.error.rmse << "x)";
+                else out << "-";
+                out << std::scientific << std::setprecision(3) << "  relMSE " << p.error.relative_mse
                     << std::defaultfloat << "\n";
             }
         }
@@ -216,12 +231,15 @@ int run_error_time(const ErrorTimeArguments& args, std::ostream& out, std::ostre
         const fs::path csv = dir / "error_time.csv";
         {
             std::ostringstream table;
-            table << "mode,spp,seconds,build_seconds,render_seconds,rays,rmse,relative_mse\n"
+            table << "mode,spp,seconds,build_seconds,render_seconds,rays,rmse,relative_mse,estimated_rmse\n"
                   << std::setprecision(9);
-            for (const Point& p : points)
+            for (const Point& p : points) {
                 table << tracer::mode_name(p.mode) << ',' << p.spp << ',' << p.seconds << ','
                       << p.build_seconds << ',' << p.render_seconds << ',' << p.rays << ','
-                      << p.error.rmse << ',' << p.error.relative_mse << '\n';
+                      << p.error.rmse << ',' << p.error.relative_mse << ',';
+                if (p.estimate) table << *p.estimate;  // (empty: an odd count, no halves)
+                table << '\n';
+            }
             tracer::write_text_file(csv, table.str());
         }
         LogLogPlot plot;
@@ -231,9 +249,14 @@ int run_error_time(const ErrorTimeArguments& args, std::ostream& out, std::ostre
         plot.y_label = "RMSE against " + std::to_string(reference_spp) + " spp (linear)";
         for (const tracer::Mode mode : modes) {
             PlotCurve curve{tracer::mode_name(mode), colour_of(mode), {}};
+            PlotCurve estimated{std::string(tracer::mode_name(mode)) + ", estimated", colour_of(mode), {}, true};
             for (const Point& p : points)
-                if (p.mode == mode) curve.points.emplace_back(p.seconds, p.error.rmse);
+                if (p.mode == mode) {
+                    curve.points.emplace_back(p.seconds, p.error.rmse);
+                    if (p.estimate) estimated.points.emplace_back(p.seconds, *p.estimate);
+                }
             plot.curves.push_back(std::move(curve));
+            if (!estimated.points.empty()) plot.curves.push_back(std::move(estimated));
         }
         const fs::path svg = dir / "error_time.svg";
         tracer::write_text_file(svg, to_svg(plot));

@@ -23,6 +23,10 @@ struct ErrorTimeArguments {
     int reference_spp = 0;  // 0: 4 times the largest of spp_list
     std::optional<std::string> output_dir;  // default out/SCENE/error-time
     int threads = 0;
+    // 2: every even count renders as two independent halves and estimates
+    // its own error (the estimate column); 1: one set, as without
+    // --error-estimate (what the estimate costs, measured side by side).
+    int sample_sets = 2;
     HierarchyArguments hierarchy;
 };
 

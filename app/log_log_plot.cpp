@@ -89,7 +89,8 @@ std::string to_svg(const LogLogPlot& plot) {
     // The curves and the legend.
     double legend_y = kTop + 10;
     for (const auto& curve : plot.curves) {
-        svg << "<polyline fill=\"none\" stroke=\"" << curve.colour << "\" stroke-width=\"2\" points=\"";
+        const std::string dash = curve.dashed ? "\" stroke-dasharray=\"6,4" : "";
+        svg << "<polyline fill=\"none\" stroke=\"" << curve.colour << dash << "\" stroke-width=\"2\" points=\"";
         for (const auto& [x, y] : curve.points)
             if (x > 0 && y > 0) svg << px(x) << "," << py(y) << " ";
         svg << "\"/>\n";
@@ -98,7 +99,7 @@ std::string to_svg(const LogLogPlot& plot) {
                 svg << "<circle cx=\"" << px(x) << "\" cy=\"" << py(y) << "\" r=\"3\" fill=\""
                     << curve.colour << "\"/>\n";
         svg << "<line x1=\"" << kLeft + plot_w + 12 << "\" y1=\"" << legend_y << "\" x2=\""
-            << kLeft + plot_w + 36 << "\" y2=\"" << legend_y << "\" stroke=\"" << curve.colour
+            << kLeft + plot_w + 36 << "\" y2=\"" << legend_y << "\" stroke=\"" << curve.colour << dash
             << "\" stroke-width=\"2\"/>\n"
             << "<text x=\"" << kLeft + plot_w + 42 << "\" y=\"" << legend_y + 4 << "\">"
             << escape(curve.name) << "</text>\n";

@@ -13,6 +13,7 @@ struct PlotCurve {
     std::string name;
     std::string colour;  // an SVG colour, e.g. "#1f77b4"
     std::vector<std::pair<double, double>> points;  // positive x and y
+    bool dashed = false;  // a dashed line (an estimate beside its measurement)
 };
 
 struct LogLogPlot {

@@ -54,8 +54,10 @@ TEST_CASE("error-time measures each mode at each sample count against a cached r
 
     // One row per mode and sample count.
     const std::string csv = read_text(folder / "out/error_time.csv");
-    REQUIRE(csv.rfind("mode,spp,seconds,build_seconds,render_seconds,rays,rmse,relative_mse\n", 0) == 0);
-    std::map<std::string, double> rmse;  // "mode spp" -> rmse
+    REQUIRE(csv.rfind("mode,spp,seconds,build_seconds,render_seconds,rays,rmse,relative_mse,estimated_rmse\n",
+                      0) == 0);
+    std::map<std::string, double> rmse;       // "mode spp" -> rmse
+    std::map<std::string, std::string> estimate;  // "mode spp" -> the estimate's field
     std::istringstream rows(csv);
     std::string row;
     std::getline(rows, row);
@@ -67,6 +69,8 @@ TEST_CASE("error-time measures each mode at each sample count against a cached r
         for (int i = 0; i < 4; ++i) std::getline(fields, skip, ',');
         std::getline(fields, value, ',');
         rmse[mode + " " + spp] = std::stod(value);
+        std::getline(fields, skip, ',');  // relative MSE
+        std::getline(fields, estimate[mode + " " + spp]);
     }
     REQUIRE(rmse.size() == 4);
     // More samples, less error; the modes trace the same samples, so their
@@ -75,9 +79,18 @@ TEST_CASE("error-time measures each mode at each sample count against a cached r
     CHECK(rmse["frames 4"] < rmse["frames 1"]);
     CHECK(rmse["spacetime 1"] == Approx(rmse["frames 1"]).epsilon(1e-6));
     CHECK(rmse["spacetime 4"] > 0.0);
+    // An even count estimates its own error (two halves), an odd one not;
+    // the modes trace the same samples, so their estimates are equal.
+    CHECK(estimate["spacetime 1"].empty());
+    REQUIRE(!estimate["spacetime 4"].empty());
+    CHECK(std::stod(estimate["spacetime 4"]) > 0.0);
+    CHECK(estimate["spacetime 4"] == estimate["frames 4"]);
+    CHECK(out.str().find("estimated") != std::string::npos);
 
     const std::string svg = read_text(folder / "out/error_time.svg");
-    CHECK(count_of(svg, "<polyline") == 2);
+    // Each mode's measured curve, and its estimate dashed beside it.
+    CHECK(count_of(svg, "<polyline") == 4);
+    CHECK(count_of(svg, "stroke-dasharray") == 4);  // two curves, two legend lines
     CHECK(svg.find("spacetime") != std::string::npos);
 
     // The reference is rendered once.
