@@ -42,9 +42,10 @@ std::vector<int> int_list(const std::string& text, const char* flag) {
         } catch (const std::exception&) {
             used = 0;
         }
-        if (used != item.size() || value < 1)
-            throw std::runtime_error(std::string(flag) + ": expected a comma list of positive "
-                                     "whole numbers, got '" + text + "'");
+        // (At most --spp's own limit, 2^20: the reference takes four times the largest.)
+        if (used != item.size() || value < 1 || value > (1 << 20))
+            throw std::runtime_error(std::string(flag) + ": expected a comma list of whole numbers from 1 to "
+                                     "1048576, got '" + text + "'");
         values.push_back(value);
     }
     return values;
@@ -186,7 +187,7 @@ int run_error_time(const ErrorTimeArguments& args, std::ostream& out, std::ostre
         std::sort(spps.begin(), spps.end());
         spps.erase(std::unique(spps.begin(), spps.end()), spps.end());
         const std::vector<tracer::Mode> modes = mode_list(args.modes);
-        const int reference_spp = args.reference_spp > 0 ? args.reference_spp : 4 * spps.back();
+        const int reference_spp = args.reference_spp > 0 ? args.reference_spp : std::min(4 * spps.back(), 1 << 20);
         const fs::path dir = args.output_dir
                                  ? fs::path(*args.output_dir)
                                  : fs::path("out") / resolved.scene.stem() / "error-time";

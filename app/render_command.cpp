@@ -273,8 +273,13 @@ void check_outputs(const RenderArguments& args, const std::string& pattern,
     tracer::check_image_name(pattern);
     if (args.contact_sheet) tracer::check_image_name(*args.contact_sheet);
     if (args.error_image) {
-        tracer::check_frame_pattern(*args.error_image, selected.size());
+        tracer::check_frame_pattern(*args.error_image, selected.size(), "--error-image");
         tracer::check_image_name(*args.error_image);
+        for (const int frame : selected)
+            if (std::filesystem::absolute(tracer::frame_path(*args.error_image, frame)).lexically_normal() ==
+                std::filesystem::absolute(tracer::frame_path(pattern, frame)).lexically_normal())
+                throw std::runtime_error(*args.error_image + ": --error-image names frame " + std::to_string(frame) +
+                                         "'s file");
     }
     if (args.animation) tracer::check_animation_name(*args.animation);
     if (args.animation && std::max(animation.width, animation.height) > tracer::kGifMaxSide)

@@ -711,6 +711,20 @@ struct PatternSlot {
 };
 // (`starts` for the pattern's name itself: in a texture, a modifier comes
 // after it.)
+// A uv-mapped block, once written, takes no transforms from outside it.
+inline void close_uv_mapping(runtime::UvMapping& m) {
+    if (m == runtime::UvMapping::Open) m = runtime::UvMapping::Closed;
+}
+// A new pattern written over a uv-mapped pigment or normal of an earlier
+// block (a second pigment { } on the object): POV-Ray's Parse_Pattern
+// replaces the uv map, and the transforms that lived inside it go with it.
+template <class Record>
+void replace_uv_mapping(Record& r) {
+    if (r.uv_mapping != runtime::UvMapping::Closed) return;
+    r.uv_mapping = runtime::UvMapping::Off;
+    r.transform = {};
+}
+
 inline PatternSlot pattern_slot(Interpreter& st, const p::position& at, const char* what, bool starts = false) {
     if (!st.blocks.empty()) {
         if (auto* n = std::get_if<runtime::Normal>(&st.blocks.back())) return {n->patterned, n->transform, nullptr, n};
@@ -731,6 +745,8 @@ HEXANT_ACTION(pattern_kind) {
         const PatternSlot slot = pattern_slot(st, in.position(), "a pattern", true);
         const runtime::pattern::Kind* kind = runtime::pattern::find_kind(name);
         if (kind == nullptr) throw ValueError("no pattern " + name);
+        if (slot.pigment) replace_uv_mapping(*slot.pigment);
+        if (slot.normal) replace_uv_mapping(*slot.normal);
         slot.pattern = runtime::pattern::Pattern::of(*kind);
         // (The scene's noise generator, global_settings { noise_generator }.)
         slot.pattern.noise_generator = st.scene.global.noise_generator;
@@ -893,10 +909,6 @@ HEXANT_ACTION(warp_setting) {
     }
 };
 
-// A uv-mapped block, once written, takes no transforms from outside it.
-inline void close_uv_mapping(runtime::UvMapping& m) {
-    if (m == runtime::UvMapping::Open) m = runtime::UvMapping::Closed;
-}
 
 // ---- normal { }
 HEXANT_ACTION(normal_open) {
@@ -1278,6 +1290,7 @@ HEXANT_ACTION(image_map_block) {
             map->images.push_back({time, pixels});
         }
         auto& pigment = st.block<runtime::Pigment>(in.position(), "image_map");
+        replace_uv_mapping(pigment);
         // (The pigment's modifiers, turbulence and warps, place the image.)
         pigment.pattern = runtime::Pigment::Pattern::Image;
         pigment.patterned.kind = nullptr;
@@ -1456,8 +1469,16 @@ HEXANT_ACTION(uv_mapping) {
     HEXANT_APPLY {
         if (st.blocks.empty()) throw ValueError("uv_mapping belongs in a pigment, a normal or a texture");
         auto& b = st.blocks.back();
-        if (auto* pigment = std::get_if<runtime::Pigment>(&b)) pigment->uv_mapping = runtime::UvMapping::Open;
-        else if (auto* normal = std::get_if<runtime::Normal>(&b)) normal->uv_mapping = runtime::UvMapping::Open;
+        // (What follows is a pigment or normal of its own, POV-Ray's
+        // Parse_Item_Into_Blend_List from the default: nothing written
+        // before in this block, or in one it modifies, carries over.)
+        if (auto* pigment = std::get_if<runtime::Pigment>(&b)) {
+            *pigment = runtime::Pigment();
+            pigment->uv_mapping = runtime::UvMapping::Open;
+        } else if (auto* normal = std::get_if<runtime::Normal>(&b)) {
+            *normal = runtime::Normal();
+            normal->uv_mapping = runtime::UvMapping::Open;
+        }
         else if (auto* texture = std::get_if<runtime::Texture>(&b)) texture->uv_mapping = runtime::UvMapping::Open;
         else throw ValueError("uv_mapping belongs in a pigment, a normal or a texture");
         (void)in;

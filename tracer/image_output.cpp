@@ -31,17 +31,17 @@ std::string frame_path(const std::string& pattern, int frame) {
     return pattern.substr(0, first) + number + pattern.substr(last);
 }
 
-void check_frame_pattern(const std::string& pattern, std::size_t frames) {
+void check_frame_pattern(const std::string& pattern, std::size_t frames, const std::string& flag) {
     const auto first = pattern.find('#');
     if (first == std::string::npos) {
         if (frames > 1)
-            throw std::runtime_error("-o " + pattern +
+            throw std::runtime_error(flag + " " + pattern +
                                      ": several frames need a #### in the name for the number");
         return;
     }
     const auto after = pattern.find_first_not_of('#', first);
     if (after != std::string::npos && pattern.find('#', after) != std::string::npos)
-        throw std::runtime_error("-o " + pattern + ": one run of # is the frame number; this has more");
+        throw std::runtime_error(flag + " " + pattern + ": one run of # is the frame number; this has more");
 }
 
 unsigned char to_srgb8(double linear) {

@@ -21,8 +21,9 @@ using image::ImageFormat;
 std::string frame_path(const std::string& pattern, int frame);
 // Throws std::runtime_error naming the pattern when it has more than one run
 // of '#' (the second would stay in the name as it is), or none while
-// `frames` is more than one (each would be written over the last).
-void check_frame_pattern(const std::string& pattern, std::size_t frames);
+// `frames` is more than one (each would be written over the last); `flag`
+// names the option in the message.
+void check_frame_pattern(const std::string& pattern, std::size_t frames, const std::string& flag = "-o");
 
 // The format a frame's name asks for (its extension); throws
 // std::runtime_error naming the file when there is none, so that a command

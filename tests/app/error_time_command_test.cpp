@@ -99,7 +99,7 @@ TEST_CASE("error-time measures each mode at each sample count against a cached r
     CHECK(out.str().find("(cached)") != std::string::npos);
 
     // Bad requests name the flag.
-    for (const char* bad : {"1,,2", "0", "x"}) {
+    for (const char* bad : {"1,,2", "0", "x", "2000000"}) {
         a.spp_list = bad;
         err.str("");
         CHECK(run_error_time(a, out, err) != 0);

@@ -219,4 +219,16 @@ TEST_CASE("render estimates each frame's error and writes its error image", "[ap
     CHECK(run_render(odd, o, e) != 0);
     CHECK(e.str().find("even --spp") != std::string::npos);
     CHECK_FALSE(fs::exists(none / "f_01.png"));
+    // The error images may not take the frames' names, nor lack the number.
+    RenderArguments same = arguments_for(scene, none);
+    same.samples_per_pixel = 2;
+    same.error_image = same.output;
+    std::ostringstream o2, e2;
+    CHECK(run_render(same, o2, e2) != 0);
+    CHECK(e2.str().find("--error-image names frame 1") != std::string::npos);
+    same.error_image = (none / "e.png").string();
+    std::ostringstream o3, e3;
+    CHECK(run_render(same, o3, e3) != 0);
+    CHECK(e3.str().find("--error-image") != std::string::npos);
+    CHECK_FALSE(fs::exists(none / "f_01.png"));
 }

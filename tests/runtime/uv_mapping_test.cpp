@@ -129,6 +129,28 @@ sphere { 0, 1 normal { uv_mapping bumps 0.5 scale 0.1 } normal { scale 9 } }
     CHECK(n.transform.steps().size() == 1);
 }
 
+TEST_CASE("a second pigment or normal over a uv-mapped one replaces it, as in POV-Ray", "[language][pattern]") {
+    const Parsed parsed = parse(R"(
+sphere { 0, 1 pigment { uv_mapping checker rgb 0, rgb 1 scale 0.1 } pigment { checker rgb 0, rgb 1 scale 0.2 } }
+sphere { 0, 1 pigment { checker rgb 0, rgb 1 scale 0.1 } pigment { uv_mapping checker rgb 0, rgb 1 scale 0.2 } }
+sphere { 0, 1 normal { uv_mapping bumps 0.5 scale 0.1 } normal { dents 0.5 scale 0.2 } }
+)");
+    const auto& objects = parsed.scene.objects;
+    // The plain pattern alone, with its own scale (POV-Ray's Parse_Pattern
+    // puts a new pattern in place of the uv map and what was inside it).
+    const rt::Pigment& plain = objects[0]->texture->pigment;
+    CHECK(plain.uv_mapping == rt::UvMapping::Off);
+    CHECK(plain.transform.steps().size() == 1);
+    // The uv map from the default pigment: the earlier scale does not reach it.
+    const rt::Pigment& mapped = objects[1]->texture->pigment;
+    CHECK(mapped.uv_mapping == rt::UvMapping::Closed);
+    CHECK(mapped.transform.steps().size() == 1);
+    const rt::Normal& n = *objects[2]->texture->normal;
+    CHECK(n.uv_mapping == rt::UvMapping::Off);
+    CHECK(n.patterned.kind->name == "dents");
+    CHECK(n.transform.steps().size() == 1);
+}
+
 TEST_CASE("uv_mapping where there is no surface is an error naming it", "[language][pattern]") {
     using hexant::test::error_of;
     CHECK_THAT(error_of("camera { location -z look_at 0 normal { uv_mapping bumps 0.5 } }").formatted(),
