@@ -101,13 +101,13 @@ struct Point {
 // frames, frames mode builds one per frame.
 Point measure(const runtime::SceneDescription& scene, tracer::Mode mode, int spp, int frame,
               const ErrorTimeArguments& args, const fs::path& image,
-              std::uint32_t sample_seed = 0) {
+              std::uint32_t sample_seed = 0, bool reference = false) {
     tracer::RenderSettings settings;
     settings.mode = mode;
     settings.samples_per_pixel = spp;
     settings.sample_seed = sample_seed;
     // (Even counts as two independent halves: the frame estimates its error.)
-    if (sample_seed == 0 && args.sample_sets == 2 && spp >= 2 && spp % 2 == 0) settings.sample_sets = 2;
+    if (!reference && args.sample_sets == 2 && spp >= 2 && spp % 2 == 0) settings.sample_sets = 2;
     settings.threads = args.threads;
     settings.build = args.hierarchy.options();
     settings.first_frame = settings.last_frame = frame;
@@ -201,8 +201,10 @@ int run_error_time(const ErrorTimeArguments& args, std::ostream& out, std::ostre
         } else {
             out << "reference: rendering frame " << frame << " at " << reference_spp
                 << " samples per pixel ..." << std::flush;
-            measure(scene, tracer::Mode::Spacetime, reference_spp, frame, args, reference,
-                    kReferenceSeed);
+            // (One sample set, its own seed: the reference is the best image
+            // its count gives, independent of every measured one.)
+            measure(scene, tracer::Mode::Spacetime, reference_spp, frame, args, reference, kReferenceSeed,
+                    /*reference=*/true);
             out << " " << reference.string() << "\n";
         }
 
