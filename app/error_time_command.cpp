@@ -94,6 +94,8 @@ struct Point {
     // The frame's own estimate of its RMSE (tracer/frame_estimate.hpp), from
     // two independent halves of its samples: at every even count.
     std::optional<double> estimate;
+    double mean_spp = 0.0;         // samples per pixel taken (adaptive: the mean)
+    std::optional<double> target;  // adaptive sampling's target
 };
 
 // Renders `frame` once and writes it; the build time is charged as the
@@ -101,18 +103,24 @@ struct Point {
 // frames, frames mode builds one per frame.
 Point measure(const runtime::SceneDescription& scene, tracer::Mode mode, int spp, int frame,
               const ErrorTimeArguments& args, const fs::path& image,
-              std::uint32_t sample_seed = 0, bool reference = false) {
+              std::uint32_t sample_seed = 0, bool reference = false,
+              std::optional<double> target = std::nullopt) {
     tracer::RenderSettings settings;
     settings.mode = mode;
     settings.samples_per_pixel = spp;
     settings.sample_seed = sample_seed;
     // (Even counts as two independent halves: the frame estimates its error.)
     if (!reference && args.sample_sets == 2 && spp >= 2 && spp % 2 == 0) settings.sample_sets = 2;
+    if (target) {
+        settings.sample_sets = 2;
+        settings.target_error = *target;
+    }
     settings.threads = args.threads;
     settings.build = args.hierarchy.options();
     settings.first_frame = settings.last_frame = frame;
     tracer::Renderer renderer(scene, settings);
-    tracer::write_image(renderer.render_frame(frame), image);
+    const tracer::Image rendered = renderer.render_frame(frame);
+    tracer::write_image(rendered, image);
     const tracer::Counters& c = renderer.counters();
     // The renderer builds for this frame's time only (RenderSettings'
     // first and last frame), in either mode: its build is the frame's own,
@@ -120,7 +128,9 @@ Point measure(const runtime::SceneDescription& scene, tracer::Mode mode, int spp
     const double build_share = c.build_seconds;
     std::optional<double> estimate;
     if (renderer.last_estimate()) estimate = renderer.last_estimate()->rmse;
-    return {mode, spp, build_share + c.render_seconds, build_share, c.render_seconds, c.rays(), {}, estimate};
+    const double mean_spp = double(renderer.last_sample_count()) / (double(rendered.width) * rendered.height);
+    return {mode,     spp,      build_share + c.render_seconds, build_share, c.render_seconds, c.rays(), {},
+            estimate, mean_spp, target};
 }
 
 const char* colour_of(tracer::Mode mode) {
@@ -131,12 +141,14 @@ const char* colour_of(tracer::Mode mode) {
     }
 }
 
-// Time a mode needs to reach `error`: log-log interpolation between its
-// points; nothing when the error lies outside them.
-std::optional<double> time_for(const std::vector<Point>& points, tracer::Mode mode, double error) {
+// Time (or with `samples`, samples per pixel) a mode needs to reach
+// `error`: log-log interpolation between its points; nothing when the error
+// lies outside them.
+std::optional<double> time_for(const std::vector<Point>& points, tracer::Mode mode, double error,
+                               bool samples = false) {
     std::vector<std::pair<double, double>> curve;  // (error, time)
     for (const Point& p : points)
-        if (p.mode == mode) curve.emplace_back(p.error.rmse, p.seconds);
+        if (p.mode == mode) curve.emplace_back(p.error.rmse, samples ? p.mean_spp : p.seconds);
     for (std::size_t i = 0; i + 1 < curve.size(); ++i) {
         const auto [e0, t0] = curve[i];
         const auto [e1, t1] = curve[i + 1];
@@ -167,6 +179,10 @@ void add_error_time_arguments(CLI::App& command, ErrorTimeArguments& a) {
                        "2 (default): even counts render as two independent halves and estimate their own "
                        "error; 1: one set, no estimate (what estimating costs)")
         ->check(CLI::Range(1, 2));
+    command.add_option("--targets", a.targets,
+                       "Also render with adaptive sampling at these RMSE targets (a comma list, e.g. "
+                       "0.01,0.004; the largest of --spp-list is the ceiling) and print the samples and time "
+                       "uniform sampling needs for the same true error");
     add_hierarchy_arguments(command, a.hierarchy);
 }
 
@@ -187,6 +203,27 @@ int run_error_time(const ErrorTimeArguments& args, std::ostream& out, std::ostre
         std::sort(spps.begin(), spps.end());
         spps.erase(std::unique(spps.begin(), spps.end()), spps.end());
         const std::vector<tracer::Mode> modes = mode_list(args.modes);
+        std::vector<double> targets;
+        if (!args.targets.empty()) {
+            std::stringstream items(args.targets + ",");
+            std::string item;
+            while (std::getline(items, item, ',')) {
+                std::size_t used = 0;
+                double value = 0.0;
+                try {
+                    value = std::stod(item, &used);
+                } catch (const std::exception&) {
+                    used = 0;
+                }
+                if (used != item.size() || !(value > 0.0) || !std::isfinite(value))
+                    throw std::runtime_error("--targets: expected a comma list of positive numbers, got '" +
+                                             args.targets + "'");
+                targets.push_back(value);
+            }
+            if (spps.back() < 2 || spps.back() % 2 != 0)
+                throw std::runtime_error("--targets: the largest of --spp-list is the ceiling and must be even (two "
+                                         "independent halves); it is " + std::to_string(spps.back()));
+        }
         const int reference_spp = args.reference_spp > 0 ? args.reference_spp : std::min(4 * spps.back(), 1 << 20);
         const fs::path dir = args.output_dir
                                  ? fs::path(*args.output_dir)
@@ -231,17 +268,51 @@ int run_error_time(const ErrorTimeArguments& args, std::ostream& out, std::ostre
         std::stable_sort(points.begin(), points.end(),
                          [](const Point& x, const Point& y) { return x.mode < y.mode; });
 
+        // Adaptive sampling at each target: its true error, and what
+        // uniform sampling (the points above) needs for that error.
+        std::vector<Point> adaptive;
+        for (const double target : targets) {
+            for (const tracer::Mode mode : modes) {
+                std::ostringstream name;
+                name << tracer::mode_name(mode) << "_target" << target << ".exr";
+                const fs::path image = dir / name.str();
+                Point p = measure(scene, mode, spps.back(), frame, args, image, 0, false, target);
+                p.error = tracer::image_error(image, reference);
+                adaptive.push_back(p);
+                out << std::left << std::setw(10) << tracer::mode_name(mode) << std::right << " target "
+                    << std::scientific << std::setprecision(3) << target << ": " << std::fixed
+                    << std::setprecision(3) << p.seconds << " s, " << std::setprecision(1) << p.mean_spp
+                    << " spp, rmse " << std::scientific << std::setprecision(3) << p.error.rmse << " ("
+                    << std::fixed << std::setprecision(2) << p.error.rmse / target << "x the target); uniform needs ";
+                const auto spp = time_for(points, mode, p.error.rmse, true);
+                const auto seconds = time_for(points, mode, p.error.rmse);
+                if (spp && seconds)
+                    out << std::setprecision(1) << *spp << " spp (" << std::setprecision(2) << *spp / p.mean_spp
+                        << "x the samples), " << std::setprecision(3) << *seconds << " s (" << std::setprecision(2)
+                        << *seconds / p.seconds << "x the time)\n";
+                else
+                    out << "more than --spp-list measured (outside the measured range)\n";
+            }
+        }
+        std::stable_sort(adaptive.begin(), adaptive.end(),
+                         [](const Point& x, const Point& y) { return x.mode < y.mode; });
+
         const fs::path csv = dir / "error_time.csv";
         {
             std::ostringstream table;
-            table << "mode,spp,seconds,build_seconds,render_seconds,rays,rmse,relative_mse,estimated_rmse\n"
+            table << "mode,spp,seconds,build_seconds,render_seconds,rays,rmse,relative_mse,estimated_rmse,"
+                     "target,mean_spp\n"
                   << std::setprecision(9);
-            for (const Point& p : points) {
+            std::vector<Point> rows = points;
+            rows.insert(rows.end(), adaptive.begin(), adaptive.end());
+            for (const Point& p : rows) {
                 table << tracer::mode_name(p.mode) << ',' << p.spp << ',' << p.seconds << ','
                       << p.build_seconds << ',' << p.render_seconds << ',' << p.rays << ','
                       << p.error.rmse << ',' << p.error.relative_mse << ',';
                 if (p.estimate) table << *p.estimate;  // (empty: an odd count, no halves)
-                table << '\n';
+                table << ',';
+                if (p.target) table << *p.target;  // (empty: uniform sampling)
+                table << ',' << p.mean_spp << '\n';
             }
             tracer::write_text_file(csv, table.str());
         }
@@ -260,6 +331,11 @@ int run_error_time(const ErrorTimeArguments& args, std::ostream& out, std::ostre
                 }
             plot.curves.push_back(std::move(curve));
             if (!estimated.points.empty()) plot.curves.push_back(std::move(estimated));
+            PlotCurve targeted{std::string(tracer::mode_name(mode)) + ", adaptive", colour_of(mode), {}, false,
+                               true};
+            for (const Point& p : adaptive)
+                if (p.mode == mode) targeted.points.emplace_back(p.seconds, p.error.rmse);
+            if (!targeted.points.empty()) plot.curves.push_back(std::move(targeted));
         }
         const fs::path svg = dir / "error_time.svg";
         tracer::write_text_file(svg, to_svg(plot));

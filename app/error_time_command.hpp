@@ -27,6 +27,10 @@ struct ErrorTimeArguments {
     // its own error (the estimate column); 1: one set, as without
     // --error-estimate (what the estimate costs, measured side by side).
     int sample_sets = 2;
+    // Adaptive sampling (--target-error) at each of these RMSE targets, with
+    // the largest of spp_list as the ceiling: its true error, and the
+    // samples and time uniform sampling needs for that error (empty: none).
+    std::string targets;
     HierarchyArguments hierarchy;
 };
 

@@ -89,7 +89,9 @@ std::string to_svg(const LogLogPlot& plot) {
     // The curves and the legend.
     double legend_y = kTop + 10;
     for (const auto& curve : plot.curves) {
-        const std::string dash = curve.dashed ? "\" stroke-dasharray=\"6,4" : "";
+        const std::string dash = curve.dashed   ? "\" stroke-dasharray=\"6,4"
+                                 : curve.dotted ? "\" stroke-dasharray=\"2,3"
+                                                : "";
         svg << "<polyline fill=\"none\" stroke=\"" << curve.colour << dash << "\" stroke-width=\"2\" points=\"";
         for (const auto& [x, y] : curve.points)
             if (x > 0 && y > 0) svg << px(x) << "," << py(y) << " ";

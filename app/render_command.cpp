@@ -7,6 +7,7 @@
 #include <iostream>
 #include <sstream>
 #include <cstdio>
+#include <cstring>
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -112,6 +113,20 @@ const Row kRows[] = {
      2},
 };
 
+// What --stats-json records of each frame (keys none of the rows use, so
+// a tool that greps one row's name finds the row).
+struct FrameRecord {
+    int frame = 0;
+    double seconds = 0.0;       // rendering it, its file written
+    double mean_samples = 0.0;  // samples per pixel, over the frame
+    std::optional<tracer::FrameEstimate> estimate;
+};
+
+struct ModeRun {
+    Counters counters;
+    std::vector<FrameRecord> frames;
+};
+
 void print_stats(std::ostream& out, const std::vector<std::pair<std::string, Counters>>& columns) {
     out << std::left << std::setw(26) << "";
     for (const auto& c : columns) out << std::right << std::setw(16) << c.first;
@@ -133,16 +148,32 @@ void print_stats(std::ostream& out, const std::vector<std::pair<std::string, Cou
     }
 }
 
-void write_stats_json(const std::string& path,
-                      const std::vector<std::pair<std::string, Counters>>& columns) {
+void write_stats_json(const std::string& path, const std::vector<std::pair<std::string, ModeRun>>& columns) {
     std::ostringstream json;
-    json << "{\n";
+    json << "{\n" << std::setprecision(17);
     for (std::size_t i = 0; i < columns.size(); ++i) {
         json << "  \"" << columns[i].first << "\": {";
         for (std::size_t r = 0; r < std::size(kRows); ++r)
-            json << (r ? ", " : "") << "\"" << kRows[r].name << "\": "
-                 << std::setprecision(17) << kRows[r].value(columns[i].second);
-        json << "}" << (i + 1 < columns.size() ? "," : "") << "\n";
+            json << (r ? ", " : "") << "\"" << kRows[r].name << "\": " << kRows[r].value(columns[i].second.counters);
+        // Each frame on a line of its own.
+        json << ",\n    \"per frame\": [";
+        const auto& frames = columns[i].second.frames;
+        for (std::size_t f = 0; f < frames.size(); ++f) {
+            const FrameRecord& r = frames[f];
+            json << (f ? "," : "") << "\n      {\"frame\": " << r.frame << ", \"seconds\": " << r.seconds
+                 << ", \"samples per pixel\": " << r.mean_samples;
+            if (r.estimate) {
+                json << ", \"estimated rmse\": " << r.estimate->rmse << ", \"worst tiles\": [";
+                for (std::size_t t = 0; t < r.estimate->worst.size(); ++t) {
+                    const auto& tile = r.estimate->worst[t];
+                    json << (t ? ", " : "") << "{\"x\": " << tile.x << ", \"y\": " << tile.y
+                         << ", \"rmse\": " << tile.rmse << "}";
+                }
+                json << "]";
+            }
+            json << "}";
+        }
+        json << "]}" << (i + 1 < columns.size() ? "," : "") << "\n";
     }
     json << "}\n";
     tracer::write_text_file(path, json.str());
@@ -169,22 +200,75 @@ double peak_resident_mb() {
 // renderer has made its intelligent objects of it (about 2 KB a parsed
 // object, as much as the object: records and objects are never all held
 // at once).
-Counters render_mode(runtime::SceneDescription& scene, const RenderArguments& args,
-                     tracer::Mode mode, const std::string& pattern,
+// The progress line on a terminal: the frame, the frames done of all, the
+// samples per second so far and the time left at that pace.
+class ProgressLine {
+public:
+    explicit ProgressLine(std::size_t frames) : frames_(frames), start_(Clock::now()) {}
+    void update(int frame, double fraction, std::uint64_t frame_samples) {
+        const auto now = Clock::now();
+        if (now - shown_ < std::chrono::milliseconds(100) && fraction < 1.0) return;
+        shown_ = now;
+        const double elapsed = std::chrono::duration<double>(now - start_).count();
+        const double done = double(done_) + fraction;
+        char line[160];
+        std::snprintf(line, sizeof line, "\rframe %d (%zu of %zu done): %3d%%, %.2f M samples/s, %s left ",
+                      frame, done_, frames_, int(fraction * 100.0),
+                      elapsed > 0.0 ? double(samples_ + frame_samples) / elapsed * 1e-6 : 0.0,
+                      done > 0.0 ? duration(elapsed / done * (double(frames_) - done)).c_str() : "?");
+        std::cerr << line << std::flush;
+        width_ = std::max(width_, std::strlen(line));
+    }
+    void frame_done(std::uint64_t frame_samples) {
+        ++done_;
+        samples_ += frame_samples;
+    }
+    void clear() {
+        if (width_) std::cerr << "\r" << std::string(width_, ' ') << "\r" << std::flush;
+    }
+
+private:
+    using Clock = std::chrono::steady_clock;
+    static std::string duration(double seconds) {
+        char text[32];
+        if (seconds < 60.0) std::snprintf(text, sizeof text, "%.0f s", seconds);
+        else if (seconds < 3600.0) std::snprintf(text, sizeof text, "%d min %02d s", int(seconds) / 60, int(seconds) % 60);
+        else std::snprintf(text, sizeof text, "%d h %02d min", int(seconds) / 3600, int(seconds) / 60 % 60);
+        return text;
+    }
+    std::size_t frames_, done_ = 0, width_ = 0;
+    std::uint64_t samples_ = 0;
+    Clock::time_point start_, shown_{};
+};
+
+// One full render in one mode; frames go to files as they finish.
+// With last_use, each of the scene's object records is freed as soon as the
+// renderer has made its intelligent objects of it (about 2 KB a parsed
+// object, as much as the object: records and objects are never all held
+// at once).
+ModeRun render_mode(runtime::SceneDescription& scene, const RenderArguments& args,
+                     const Sampling& sampling, tracer::Mode mode, const std::string& pattern,
                      const std::vector<int>& frames, bool write,
                      std::vector<tracer::Image>* keep, bool last_use, std::ostream& err) {
     tracer::RenderSettings settings;
     settings.mode = mode;
-    settings.samples_per_pixel = args.samples_per_pixel.value_or(scene.global.motion_blur_samples.value_or(1));
+    settings.samples_per_pixel = sampling.samples;
+    settings.sample_sets = sampling.sets;
+    settings.target_error = sampling.target_error;
     settings.jitter = !args.no_jitter;
     settings.sample_seed = args.seed;
-    settings.sample_sets = args.error_estimate || args.error_image ? 2 : 1;
     settings.threads = args.threads;
     settings.build = args.hierarchy.options();
     settings.first_frame = frames.front();
     settings.last_frame = frames.back();
     settings.build.count_full = args.stats || args.compare || args.stats_json.has_value();
-    settings.progress = isatty(STDERR_FILENO);
+    std::optional<ProgressLine> progress;
+    if (isatty(STDERR_FILENO)) {
+        progress.emplace(frames.size());
+        settings.progress = [&](int frame, double fraction, std::uint64_t samples) {
+            progress->update(frame, fraction, samples);
+        };
+    }
     const double start_mb = resident_mb();
     const std::string size =
         std::to_string(scene.animation.width) + " by " + std::to_string(scene.animation.height);
@@ -192,40 +276,54 @@ Counters render_mode(runtime::SceneDescription& scene, const RenderArguments& ar
         return last_use ? tracer::Renderer(scene, settings, tracer::Renderer::ReleaseRecords{})
                         : tracer::Renderer(scene, settings);
     });
+    ModeRun run;
     for (const int frame : frames) {
         const auto began = std::chrono::steady_clock::now();
         tracer::Image image = naming_out_of_memory(
             "rendering frame " + std::to_string(frame) + " (" + size + " pixels)",
             [&] { return renderer.render_frame(frame); });
+        if (progress) progress->frame_done(renderer.last_sample_count());
         if (write) tracer::write_image(image, tracer::frame_path(pattern, frame));
+        const double pixels = double(image.width) * image.height;
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+        run.frames.push_back({frame, seconds, double(renderer.last_sample_count()) / pixels, renderer.last_estimate()});
         if (const auto& estimate = renderer.last_estimate(); estimate && write) {
-            if (settings.progress) std::cerr << "\r" << std::string(40, ' ') << "\r";
-            const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
-            err << "frame " << frame << ": " << seconds << " s, estimated RMSE " << estimate->rmse
-                      << " (linear light); worst " << tracer::FrameEstimate::kTile << "-pixel tiles";
+            if (progress) progress->clear();
+            err << "frame " << frame << ": " << seconds << " s, " << run.frames.back().mean_samples
+                << " samples per pixel, estimated RMSE "
+                << estimate->rmse << " (linear light); worst " << tracer::FrameEstimate::kTile << "-pixel tiles";
             for (const auto& tile : estimate->worst) err << " " << tile.rmse << " at " << tile.x << "," << tile.y;
             err << "\n";
-            if (args.error_image) {
-                // Per pixel its estimated RMSE, grey.
-                tracer::Image errors(image.width, image.height);
-                const std::vector<double>& squared = renderer.last_squared_error();
-                for (int y = 0; y < image.height; ++y)
-                    for (int x = 0; x < image.width; ++x)
-                        errors.set(x, y, glm::dvec3(std::sqrt(squared[std::size_t(y) * image.width + x])));
-                tracer::write_image(errors, tracer::frame_path(*args.error_image, frame));
-            }
+        }
+        if (write && args.error_image) {
+            // Per pixel its estimated RMSE, grey.
+            tracer::Image errors(image.width, image.height);
+            const std::vector<double>& squared = renderer.last_squared_error();
+            for (int y = 0; y < image.height; ++y)
+                for (int x = 0; x < image.width; ++x)
+                    errors.set(x, y, glm::dvec3(std::sqrt(squared[std::size_t(y) * image.width + x])));
+            tracer::write_image(errors, tracer::frame_path(*args.error_image, frame));
+        }
+        if (write && args.samples_image) {
+            // Per pixel its samples over the ceiling, grey: white took all.
+            tracer::Image taken(image.width, image.height);
+            const std::vector<int>& samples = renderer.last_samples();
+            for (int y = 0; y < image.height; ++y)
+                for (int x = 0; x < image.width; ++x)
+                    taken.set(x, y, glm::dvec3(double(samples[std::size_t(y) * image.width + x]) / sampling.samples));
+            tracer::write_image(taken, tracer::frame_path(*args.samples_image, frame));
         }
         if (keep) keep->push_back(std::move(image));
     }
-    if (settings.progress) std::cerr << "\r" << std::string(40, ' ') << "\r";
+    if (progress) progress->clear();
     renderer.measure_memory();
     // The render's peak, before counting a full build adds its own.
     const double peak_mb = peak_resident_mb();
     if (settings.build.count_full) renderer.count_full_hierarchy();
-    Counters c = renderer.counters();
-    c.memory_start_mb = start_mb;
-    c.memory_peak_mb = peak_mb;
-    return c;
+    run.counters = renderer.counters();
+    run.counters.memory_start_mb = start_mb;
+    run.counters.memory_peak_mb = peak_mb;
+    return run;
 }
 
 }  // namespace
@@ -233,7 +331,9 @@ Counters render_mode(runtime::SceneDescription& scene, const RenderArguments& ar
 void add_render_arguments(CLI::App& command, RenderArguments& a) {
     add_scene_arguments(command, a.scene);
     command.add_option("--mode", a.mode, "spacetime (default), frames (per-frame hierarchies) or brute");
-    command.add_option("--spp", a.samples_per_pixel, "Samples per pixel (default 1)")
+    command.add_option("--spp", a.samples_per_pixel,
+                       "Samples per pixel, or with --target-error their ceiling (default: --target-error "
+                       "1/128 under 256; with --no-jitter 1)")
         ->check(CLI::Range(1, 1 << 20));
     command.add_flag("--no-jitter", a.no_jitter,
                      "Samples at the centres of their strata (with --spp 1: the pixel centre)");
@@ -246,6 +346,14 @@ void add_render_arguments(CLI::App& command, RenderArguments& a) {
     command.add_option("--error-image", a.error_image,
                        "Also write each frame's per-pixel estimated RMSE (linear light) as an image; #### "
                        "becomes the frame number (implies --error-estimate)");
+    command.add_option("--target-error", a.target_error,
+                       "Adaptive sampling: each 16-pixel tile doubles its samples until its estimated RMSE "
+                       "(linear light, 0 to 1) is at most this, with --spp the ceiling (default: without --spp, "
+                       "1/128 under 256)")
+        ->check(CLI::PositiveNumber);
+    command.add_option("--samples-image", a.samples_image,
+                       "Also write the samples each pixel took, over --spp, as a grey image; #### becomes the "
+                       "frame number");
     command.add_option("--frames", a.frames, "A:B renders frames A to B of the animation; a comma list (1,17,33 or 1:4,9) renders those");
     command.add_option("-o,--output", a.output,
                        "Frame file pattern; #### becomes the frame number (default "
@@ -272,14 +380,22 @@ void check_outputs(const RenderArguments& args, const std::string& pattern,
     tracer::check_frame_pattern(pattern, selected.size());
     tracer::check_image_name(pattern);
     if (args.contact_sheet) tracer::check_image_name(*args.contact_sheet);
-    if (args.error_image) {
-        tracer::check_frame_pattern(*args.error_image, selected.size(), "--error-image");
-        tracer::check_image_name(*args.error_image);
-        for (const int frame : selected)
-            if (std::filesystem::absolute(tracer::frame_path(*args.error_image, frame)).lexically_normal() ==
-                std::filesystem::absolute(tracer::frame_path(pattern, frame)).lexically_normal())
-                throw std::runtime_error(*args.error_image + ": --error-image names frame " + std::to_string(frame) +
-                                         "'s file");
+    // The per-frame images beside the frames: none may take a frame's file
+    // or another's.
+    std::vector<std::pair<std::string, std::string>> patterns{{"--output", pattern}};
+    if (args.error_image) patterns.emplace_back("--error-image", *args.error_image);
+    if (args.samples_image) patterns.emplace_back("--samples-image", *args.samples_image);
+    for (std::size_t i = 1; i < patterns.size(); ++i) {
+        const auto& [flag, name] = patterns[i];
+        tracer::check_frame_pattern(name, selected.size(), flag);
+        tracer::check_image_name(name);
+        for (std::size_t j = 0; j < i; ++j)
+            for (const int frame : selected)
+                if (std::filesystem::absolute(tracer::frame_path(name, frame)).lexically_normal() ==
+                    std::filesystem::absolute(tracer::frame_path(patterns[j].second, frame)).lexically_normal())
+                    throw std::runtime_error(name + ": " + flag + " names " +
+                                             (j == 0 ? "frame " + std::to_string(frame) + "'s file"
+                                                     : patterns[j].first + "'s file for frame " + std::to_string(frame)));
     }
     if (args.animation) tracer::check_animation_name(*args.animation);
     if (args.animation && std::max(animation.width, animation.height) > tracer::kGifMaxSide)
@@ -320,6 +436,29 @@ void apply_scene_defaults(const RenderArguments& args, runtime::SceneDescription
     err << " by default\n";
 }
 
+Sampling resolve_sampling(const RenderArguments& args, const runtime::SceneDescription& scene) {
+    Sampling s;
+    const std::optional<int> asked =
+        args.samples_per_pixel ? args.samples_per_pixel : scene.global.motion_blur_samples;
+    if (!asked && !args.no_jitter && !args.target_error) {
+        s.samples = kDefaultCeiling;
+        s.target_error = kDefaultTargetError;
+    } else {
+        s.samples = asked.value_or(args.target_error ? kDefaultCeiling : 1);
+        s.target_error = args.target_error.value_or(0.0);
+    }
+    const bool estimated = s.target_error > 0.0 || args.error_estimate || args.error_image;
+    if (!estimated) return s;
+    if (s.samples < 2 || s.samples % 2 != 0 || args.no_jitter) {
+        const char* flags = args.target_error ? "--target-error needs" : "--error-estimate and --error-image need";
+        throw std::runtime_error(std::string(flags) +
+                                 " an even --spp of 2 or more (two independent halves) and jitter; --spp is " +
+                                 std::to_string(s.samples) + (args.no_jitter ? " with --no-jitter" : ""));
+    }
+    s.sets = 2;
+    return s;
+}
+
 int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err) {
     return run_reporting_errors(err, [&] {
         ResolvedScene resolved = resolve(args.scene);
@@ -327,13 +466,7 @@ int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err
         runtime::SceneDescription scene =
             language::parse_scene_file(resolved.scene, resolved.options);
         apply_scene_defaults(args, scene, err);
-        if (args.error_estimate || args.error_image) {
-            const int spp = args.samples_per_pixel.value_or(scene.global.motion_blur_samples.value_or(1));
-            if (spp < 2 || spp % 2 != 0 || args.no_jitter)
-                throw std::runtime_error("--error-estimate and --error-image need an even --spp of 2 or more "
-                                         "(two independent halves) and jitter; --spp is " + std::to_string(spp) +
-                                         (args.no_jitter ? " with --no-jitter" : ""));
-        }
+        const Sampling sampling = resolve_sampling(args, scene);
         const std::vector<int> selected = frame_selection(args.frames, scene.animation);
         const std::string pattern =
             args.output ? *args.output
@@ -341,14 +474,14 @@ int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err
         check_outputs(args, pattern, selected, scene.animation);
         const bool keep_frames = args.contact_sheet || args.animation;
         std::vector<tracer::Image> frames;
-        std::vector<std::pair<std::string, Counters>> columns;
+        std::vector<std::pair<std::string, ModeRun>> columns;
         const tracer::Mode mode = args.compare ? tracer::Mode::Spacetime : tracer::parse_mode(args.mode);
         columns.emplace_back(tracer::mode_name(mode),
-                             render_mode(scene, args, mode, pattern, selected, true,
+                             render_mode(scene, args, sampling, mode, pattern, selected, true,
                                          keep_frames ? &frames : nullptr, !args.compare, err));
         if (args.compare)  // the paper's order: frame by frame, then spacetime
             columns.emplace(columns.begin(), "frames",
-                            render_mode(scene, args, tracer::Mode::Frames, pattern, selected, false,
+                            render_mode(scene, args, sampling, tracer::Mode::Frames, pattern, selected, false,
                                         nullptr, true, err));
         const int first = selected.front(), last = selected.back();
         const bool contiguous = last - first + 1 == static_cast<int>(selected.size());
@@ -371,7 +504,11 @@ int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err
             tracer::write_animation(frames, *args.animation);
             out << "animation: " << *args.animation << "\n";
         }
-        if (args.stats || args.compare) print_stats(out, columns);
+        if (args.stats || args.compare) {
+            std::vector<std::pair<std::string, Counters>> counters;
+            for (const auto& [name, run] : columns) counters.emplace_back(name, run.counters);
+            print_stats(out, counters);
+        }
         if (args.stats_json) write_stats_json(*args.stats_json, columns);
         return 0;
     });

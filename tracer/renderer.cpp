@@ -1,15 +1,16 @@
 #include "tracer/renderer.hpp"
 
 #include <algorithm>
+#include <array>
+#include <mutex>
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 #include <string>
 
 #include <glm/geometric.hpp>
-#include <tbb/blocked_range2d.h>
+#include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
@@ -135,89 +136,123 @@ Image Renderer::render_frame(int frame) {
     const int width = a.width, height = a.height;
     const int spp = std::max(1, settings_.samples_per_pixel);
     const bool halves = settings_.sample_sets == 2;
+    const bool adaptive = settings_.target_error > 0.0;
     if (halves && (spp % 2 != 0 || !settings_.jitter))
         throw std::invalid_argument("two sample sets need an even number of jittered samples per pixel");
+    if (adaptive && !halves)
+        throw std::invalid_argument("a target error needs two sample sets (its estimate)");
     Image image(width, height);
     // (Per pixel, the estimated squared error over its channels: halves only.)
     std::vector<double> squared(halves ? static_cast<std::size_t>(width) * height : 0);
+    std::vector<int> samples(static_cast<std::size_t>(width) * height, 0);
     const bool moving_camera = scene_.camera.depends_on_time();
     const double working_gamma = scene_.global.assumed_gamma;
     const runtime::CameraFrame fixed_camera = scene_.camera.evaluate(open);
     const std::size_t object_count = query_->object_count();
     tbb::enumerable_thread_specific<ThreadState> states(
         [&] { return ThreadState{Mailbox(object_count), {}}; });
-    std::atomic<long> pixels_done{0};
-    std::atomic<int> last_shown{-1};
     const auto start = std::chrono::steady_clock::now();
 
     std::unique_ptr<tbb::global_control> limit;
     if (settings_.threads > 0)
         limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
                                                       settings_.threads);
-    constexpr int kTile = 16;
-    tbb::parallel_for(
-        tbb::blocked_range2d<int>(0, height, kTile, 0, width, kTile),
-        [&](const tbb::blocked_range2d<int>& tile) {
-            ThreadState& state = states.local();
-            const std::uint64_t maps = runtime::this_thread_work.deformation_maps;
-            for (int y = tile.rows().begin(); y < tile.rows().end(); ++y) {
-                for (int x = tile.cols().begin(); x < tile.cols().end(); ++x) {
+    // assumed_gamma G: the scene's colours and all the shading are in a
+    // space of gamma G; the pixel leaves it (POV-Ray 3.7 decodes the working
+    // gamma before it encodes the file's).
+    const auto linear = [&](glm::dvec3 c) {
+        if (working_gamma != 1.0)
+            for (int k = 0; k < 3; ++k) c[k] = std::pow(std::max(c[k], 0.0), working_gamma);
+        return c;
+    };
+    // Sample `index` of the set with this seed, of `count` in the set.
+    const auto trace_sample = [&](int x, int y, std::uint32_t seed, int index, int count,
+                                  ThreadState& state) {
+        const PixelSample s = pixel_sample(seed, static_cast<std::uint32_t>(index),
+                                           static_cast<std::uint32_t>(count), settings_.jitter);
+        const double t = open + s.time * length;
+        const runtime::CameraFrame camera = moving_camera ? scene_.camera.evaluate(t) : fixed_camera;
+        // POV-Ray's screen: x from -0.5 (left) to 0.5, y from 0.5 (top) to
+        // -0.5; left-handed.
+        const double u = (x + s.x) / width - 0.5;
+        const double v = 0.5 - (y + s.y) / height;
+        glm::dvec3 d = glm::normalize(camera.direction + u * camera.right + v * camera.up);
+        // (A camera's normal { } bends each ray by the pattern at its point
+        // on the screen.)
+        if (camera_normal_) d = camera_normal_->perturb(d, {u, v, 0.0}, t);
+        return shader_->trace(runtime::Ray4{Event(camera.location, t), Event(d, 0.0)}, state);
+    };
+
+    // The fixed grid of tiles (the estimate's, FrameEstimate::kTile): what
+    // a tile does depends on its own samples only.
+    constexpr int kTile = FrameEstimate::kTile;
+    const int tiles_x = (width + kTile - 1) / kTile, tiles_y = (height + kTile - 1) / kTile;
+    const int tile_count = tiles_x * tiles_y;
+    const int per_set = halves ? spp / 2 : spp;
+    std::atomic<int> tiles_done{0};
+    std::atomic<std::uint64_t> samples_taken{0};
+    std::mutex progress_mutex;
+    tbb::parallel_for(tbb::blocked_range<int>(0, tile_count, 1), [&](const tbb::blocked_range<int>& range) {
+        ThreadState& state = states.local();
+        const std::uint64_t maps = runtime::this_thread_work.deformation_maps;
+        for (int tile = range.begin(); tile < range.end(); ++tile) {
+            const int x0 = tile % tiles_x * kTile, y0 = tile / tiles_x * kTile;
+            const int x1 = std::min(width, x0 + kTile), y1 = std::min(height, y0 + kTile);
+            const int tile_width = x1 - x0, pixels = tile_width * (y1 - y0);
+            // Per pixel of the tile, the sums of its first and (halves) its
+            // second, independent set of samples.
+            std::array<glm::dvec3, kTile * kTile> sum_a, sum_b;
+            sum_a.fill(glm::dvec3(0.0));
+            sum_b.fill(glm::dvec3(0.0));
+            // Rounds: samples [taken, goal) of each set, then the tile's
+            // estimate decides whether to double (adaptive only).
+            int taken = 0;
+            int goal = adaptive ? std::min(per_set, RenderSettings::kFirstRoundSamples / 2) : per_set;
+            double tile_squared = 0.0;
+            while (true) {
+                for (int p = 0; p < pixels; ++p) {
+                    const int x = x0 + p % tile_width, y = y0 + p / tile_width;
                     const std::uint32_t seed = pixel_seed(frame, x, y, settings_.sample_seed);
-                    // Halves: samples 0 .. n/2 - 1 of the pixel's own set,
-                    // then as many of an independent second set.
-                    const int per_set = halves ? spp / 2 : spp;
-                    const std::uint32_t second = halves ? second_set_seed(seed) : seed;
-                    glm::dvec3 sum(0.0), first_sum(0.0);
-                    for (int i = 0; i < spp; ++i) {
-                        if (halves && i == per_set) first_sum = sum;
-                        const bool in_second = i >= per_set;
-                        const PixelSample s = pixel_sample(in_second ? second : seed,
-                                                           static_cast<std::uint32_t>(in_second ? i - per_set : i),
-                                                           static_cast<std::uint32_t>(per_set), settings_.jitter);
-                        const double t = open + s.time * length;
-                        const runtime::CameraFrame camera =
-                            moving_camera ? scene_.camera.evaluate(t) : fixed_camera;
-                        // POV-Ray's screen: x from -0.5 (left) to 0.5, y from
-                        // 0.5 (top) to -0.5; left-handed.
-                        const double u = (x + s.x) / width - 0.5;
-                        const double v = 0.5 - (y + s.y) / height;
-                        glm::dvec3 d = glm::normalize(camera.direction + u * camera.right + v * camera.up);
-                        // (A camera's normal { } bends each ray by the pattern at
-                        // its point on the screen.)
-                        if (camera_normal_) d = camera_normal_->perturb(d, {u, v, 0.0}, t);
-                        const runtime::Ray4 ray{Event(camera.location, t), Event(d, 0.0)};
-                        sum += shader_->trace(ray, state);
-                    }
-                    // assumed_gamma G: the scene's colours and all the
-                    // shading are in a space of gamma G; the pixel leaves it
-                    // (POV-Ray 3.7 decodes the working gamma before it
-                    // encodes the file's).
-                    const auto linear = [&](glm::dvec3 c) {
-                        if (working_gamma != 1.0)
-                            for (int k = 0; k < 3; ++k) c[k] = std::pow(std::max(c[k], 0.0), working_gamma);
-                        return c;
-                    };
-                    image.set(x, y, linear(sum / double(spp)));
-                    if (halves) {
-                        // (A - B)^2 / 4, each half in linear light.
-                        const glm::dvec3 a = linear(first_sum / double(per_set));
-                        const glm::dvec3 b = linear((sum - first_sum) / double(per_set));
-                        const glm::dvec3 d = a - b;
-                        squared[static_cast<std::size_t>(y) * width + x] = glm::dot(d, d) / 12.0;
+                    const std::uint32_t second = halves ? second_set_seed(seed) : 0;
+                    for (int i = taken; i < goal; ++i) {
+                        sum_a[p] += trace_sample(x, y, seed, i, per_set, state);
+                        if (halves) sum_b[p] += trace_sample(x, y, second, i, per_set, state);
                     }
                 }
+                taken = goal;
+                if (halves) {
+                    tile_squared = 0.0;
+                    for (int p = 0; p < pixels; ++p) {
+                        // (A - B)^2 / 4 per channel, each half in linear light.
+                        const glm::dvec3 d = linear(sum_a[p] / double(taken)) - linear(sum_b[p] / double(taken));
+                        tile_squared += glm::dot(d, d) / 12.0;
+                    }
+                }
+                if (!adaptive || taken == per_set ||
+                    std::sqrt(tile_squared / pixels) <= settings_.target_error)
+                    break;
+                goal = std::min(per_set, 2 * taken);
             }
-            state.counters.deformation_maps += runtime::this_thread_work.deformation_maps - maps;
+            const int sets = halves ? 2 : 1;
+            for (int p = 0; p < pixels; ++p) {
+                const int x = x0 + p % tile_width, y = y0 + p / tile_width;
+                const std::size_t at = static_cast<std::size_t>(y) * width + x;
+                image.set(x, y, linear((sum_a[p] + sum_b[p]) / double(sets * taken)));
+                samples[at] = sets * taken;
+                if (halves) {
+                    const glm::dvec3 d = linear(sum_a[p] / double(taken)) - linear(sum_b[p] / double(taken));
+                    squared[at] = glm::dot(d, d) / 12.0;
+                }
+            }
+            const std::uint64_t total = samples_taken += std::uint64_t(pixels) * sets * taken;
+            const int done = ++tiles_done;
             if (settings_.progress) {
-                // The thread that moves the percentage on prints it.
-                const long done = pixels_done += long(tile.rows().size()) * long(tile.cols().size());
-                const int percent = int(done * 100 / (long(width) * height));
-                int shown = last_shown.load();
-                while (percent > shown && !last_shown.compare_exchange_weak(shown, percent)) {
-                }
-                if (percent > shown) std::fprintf(stderr, "\rframe %d: %3d%%", frame, percent);
+                const std::lock_guard<std::mutex> lock(progress_mutex);
+                settings_.progress(frame, double(done) / tile_count, total);
             }
-        });
+        }
+        state.counters.deformation_maps += runtime::this_thread_work.deformation_maps - maps;
+    });
     for (const ThreadState& s : states) counters_ += s.counters;
     counters_.render_seconds +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -228,6 +263,8 @@ Image Renderer::render_frame(int frame) {
         last_estimate_.reset();
         last_squared_.clear();
     }
+    last_samples_ = std::move(samples);
+    last_sample_count_ = samples_taken;
     return image;
 }
 

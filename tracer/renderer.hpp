@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -34,9 +35,21 @@ struct RenderSettings {
     // estimate of its error (tracer/frame_estimate.hpp); the image is then
     // another, equally good one than with 1, the default.
     int sample_sets = 1;
+    // > 0 (with sample_sets 2): adaptive sampling. Each 16-pixel tile of
+    // the frame's fixed grid (FrameEstimate::kTile) starts with
+    // kFirstRoundSamples per pixel and doubles them while its estimated
+    // RMSE (linear light, over its pixels and channels) is above this,
+    // samples_per_pixel being the ceiling. Every tile under the target
+    // makes a frame under it. A tile's rounds depend on its own samples
+    // only, so images do not depend on the thread count.
+    double target_error = 0.0;
+    static constexpr int kFirstRoundSamples = 8;
     BuildOptions build;
     int threads = 0;        // 0: as many as the machine has
-    bool progress = false;  // a progress line on stderr
+    // Told, from a worker thread and one call at a time, each time a tile
+    // of a frame is done: the frame, the fraction of its tiles done, and
+    // the samples (primary rays) the frame has taken so far.
+    std::function<void(int frame, double fraction, std::uint64_t samples)> progress;
     // The frames that will be rendered, first and last (0: the animation's
     // own). The spacetime hierarchy spans their time only: rendering one
     // frame of a long animation builds for that frame's time, not for the
@@ -62,10 +75,13 @@ public:
     Image render_frame(int frame);
     // With sample_sets 2: the last frame's estimate of its error, and per
     // pixel its estimated squared error averaged over the channels (linear
-    // light, rows top to bottom); none
-    // otherwise.
+    // light, rows top to bottom); none otherwise.
     const std::optional<FrameEstimate>& last_estimate() const { return last_estimate_; }
     const std::vector<double>& last_squared_error() const { return last_squared_; }
+    // The samples each pixel of the last frame took (rows top to bottom)
+    // and their sum.
+    const std::vector<int>& last_samples() const { return last_samples_; }
+    std::uint64_t last_sample_count() const { return last_sample_count_; }
 
     const Counters& counters() const { return counters_; }
     // Statistics: the cells a full build of the hierarchy in use makes
@@ -88,6 +104,8 @@ private:
     Counters counters_;
     std::optional<FrameEstimate> last_estimate_;
     std::vector<double> last_squared_;
+    std::vector<int> last_samples_;
+    std::uint64_t last_sample_count_ = 0;
     std::unique_ptr<RayQuery> query_;
     std::unique_ptr<Shader> shader_;
     // The camera's normal { }, when it has one (runtime/camera.hpp).

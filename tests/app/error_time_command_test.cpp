@@ -54,7 +54,8 @@ TEST_CASE("error-time measures each mode at each sample count against a cached r
 
     // One row per mode and sample count.
     const std::string csv = read_text(folder / "out/error_time.csv");
-    REQUIRE(csv.rfind("mode,spp,seconds,build_seconds,render_seconds,rays,rmse,relative_mse,estimated_rmse\n",
+    REQUIRE(csv.rfind("mode,spp,seconds,build_seconds,render_seconds,rays,rmse,relative_mse,estimated_rmse,"
+                      "target,mean_spp\n",
                       0) == 0);
     std::map<std::string, double> rmse;       // "mode spp" -> rmse
     std::map<std::string, std::string> estimate;  // "mode spp" -> the estimate's field
@@ -70,7 +71,7 @@ TEST_CASE("error-time measures each mode at each sample count against a cached r
         std::getline(fields, value, ',');
         rmse[mode + " " + spp] = std::stod(value);
         std::getline(fields, skip, ',');  // relative MSE
-        std::getline(fields, estimate[mode + " " + spp]);
+        std::getline(fields, estimate[mode + " " + spp], ',');
     }
     REQUIRE(rmse.size() == 4);
     // More samples, less error; the modes trace the same samples, so their
@@ -97,6 +98,39 @@ TEST_CASE("error-time measures each mode at each sample count against a cached r
     out.str("");
     REQUIRE(run_error_time(a, out, err) == 0);
     CHECK(out.str().find("(cached)") != std::string::npos);
+
+    // Adaptive sampling at a target: a row of its own, its true error and
+    // what uniform sampling needs for it.
+    a.spp_list = "2,8,32";
+    a.reference_spp = 256;
+    a.modes = "spacetime";
+    a.targets = "0.02";
+    out.str("");
+    REQUIRE(run_error_time(a, out, err) == 0);
+    CHECK(out.str().find("target 2.000e-02: ") != std::string::npos);
+    CHECK(out.str().find("the target); uniform needs") != std::string::npos);
+    const std::string with_target = read_text(folder / "out/error_time.csv");
+    const auto at = with_target.find(",0.02,");
+    REQUIRE(at != std::string::npos);
+    // (Its mean samples per pixel: at least the first round's 8, at most
+    // the ceiling, the largest of --spp-list.)
+    const double mean = std::stod(with_target.substr(at + 6));
+    CHECK(mean >= 8.0);
+    CHECK(mean <= 32.0);
+    CHECK(count_of(read_text(folder / "out/error_time.svg"), "stroke-dasharray=\"2,3\"") == 2);
+    for (const char* bad : {"0", "x", "0.1,", "-1"}) {
+        a.targets = bad;
+        err.str("");
+        CHECK(run_error_time(a, out, err) != 0);
+        CHECK(err.str().find("--targets") != std::string::npos);
+    }
+    a.targets = "0.02";
+    a.spp_list = "2,9";
+    err.str("");
+    CHECK(run_error_time(a, out, err) != 0);
+    CHECK(err.str().find("must be even") != std::string::npos);
+    a.targets.clear();
+    a.modes = "spacetime,frames";
 
     // Bad requests name the flag.
     for (const char* bad : {"1,,2", "0", "x", "2000000"}) {

@@ -47,6 +47,7 @@ RenderArguments arguments_for(const fs::path& scene, const fs::path& out) {
     a.scene.height = 12;
     a.scene.frame_count = 3;
     a.output = (out / "f_##.png").string();
+    a.samples_per_pixel = 1;  // (the default samples adaptively: a test below)
     return a;
 }
 
@@ -175,6 +176,7 @@ TEST_CASE("MegaPOV's motion_blur sets the defaults of --spp and --shutter, and s
     const fs::path out = fresh_output(scene);
     RenderArguments a = arguments_for(scene, out);
     a.frames = "1";
+    a.samples_per_pixel.reset();
     std::ostringstream o, e;
     REQUIRE(run_render(a, o, e) == 0);
     CHECK(e.str().find("MegaPOV's motion_blur 8, 0.1") != std::string::npos);
@@ -230,5 +232,66 @@ TEST_CASE("render estimates each frame's error and writes its error image", "[ap
     std::ostringstream o3, e3;
     CHECK(run_render(same, o3, e3) != 0);
     CHECK(e3.str().find("--error-image") != std::string::npos);
+    CHECK_FALSE(fs::exists(none / "f_01.png"));
+}
+
+TEST_CASE("render samples adaptively to a target error, and by default", "[app][render][adaptive]") {
+    const fs::path scene = scene_file(moving_sphere("<2 * clock - 1, 0, 0>"));
+    const fs::path out = fresh_output(scene);
+    RenderArguments a = arguments_for(scene, out);
+    a.samples_per_pixel = 64;
+    a.target_error = 0.02;
+    a.samples_image = (out / "n_##.png").string();
+    a.stats_json = (out / "stats.json").string();
+    std::ostringstream stdout_text, stderr_text;
+    REQUIRE(run_render(a, stdout_text, stderr_text) == 0);
+    const std::string said = stderr_text.str();
+    INFO(said);
+    CHECK(said.find("frame 2: ") != std::string::npos);
+    CHECK(said.find("samples per pixel, estimated RMSE") != std::string::npos);
+    CHECK(fs::exists(out / "n_01.png"));
+    CHECK(fs::exists(out / "n_03.png"));
+    // Each frame in the JSON, under keys no row has.
+    std::ifstream json(out / "stats.json");
+    const std::string stats((std::istreambuf_iterator<char>(json)), std::istreambuf_iterator<char>());
+    CHECK(stats.find("\"per frame\": [") != std::string::npos);
+    CHECK(stats.find("{\"frame\": 3, \"seconds\": ") != std::string::npos);
+    CHECK(stats.find("\"estimated rmse\": ") != std::string::npos);
+    CHECK(stats.find("\"worst tiles\": [{\"x\": 0, \"y\": 0, \"rmse\": ") != std::string::npos);
+
+    // Without --spp: the default target under the default ceiling; with
+    // --no-jitter, one sample at each pixel's centre as before.
+    hexant::runtime::SceneDescription parsed;
+    RenderArguments plain;
+    const auto s = hexant::app::resolve_sampling(plain, parsed);
+    CHECK(s.target_error == hexant::app::kDefaultTargetError);
+    CHECK(s.samples == hexant::app::kDefaultCeiling);
+    CHECK(s.sets == 2);
+    plain.no_jitter = true;
+    CHECK(hexant::app::resolve_sampling(plain, parsed).samples == 1);
+    CHECK(hexant::app::resolve_sampling(plain, parsed).target_error == 0.0);
+    // A scene's own count (MegaPOV's motion_blur) is uniform sampling.
+    plain.no_jitter = false;
+    parsed.global.motion_blur_samples = 5;
+    CHECK(hexant::app::resolve_sampling(plain, parsed).samples == 5);
+    CHECK(hexant::app::resolve_sampling(plain, parsed).target_error == 0.0);
+
+    // A target needs an even ceiling and jitter: refused before anything
+    // is written, naming the flag.
+    const fs::path none = fresh_output(scene);
+    RenderArguments odd = arguments_for(scene, none);
+    odd.samples_per_pixel = 9;
+    odd.target_error = 0.01;
+    std::ostringstream o, e;
+    CHECK(run_render(odd, o, e) != 0);
+    CHECK(e.str().find("--target-error needs an even --spp") != std::string::npos);
+    // The samples image may not take the error image's names.
+    RenderArguments clash = arguments_for(scene, none);
+    clash.samples_per_pixel = 4;
+    clash.error_image = (none / "e_##.png").string();
+    clash.samples_image = clash.error_image;
+    std::ostringstream o2, e2;
+    CHECK(run_render(clash, o2, e2) != 0);
+    CHECK(e2.str().find("--samples-image names --error-image's file for frame 1") != std::string::npos);
     CHECK_FALSE(fs::exists(none / "f_01.png"));
 }

@@ -1,7 +1,7 @@
 # Runs `hexant check` on a scene the fuzzer once crashed on and passes when
 # it ends as a scene may: read (exit 0) or an error reported with its place
 # (exit 1). A scene that reads is then rendered as the fuzzer renders it
-# (tests/fuzz/sdl_fuzzer.cpp: frame 1 of 3, 8 by 8 pixels, one thread), and
+# (tests/fuzz/sdl_fuzzer.cpp: frame 1 of 3, 8 by 8 pixels, one sample, one thread), and
 # must again end in an image or a reported error: some finds hung only in
 # the render (fuzz_found/flat_cells.pov). The test's TIMEOUT catches a hang.
 # A signal or any other exit fails.
@@ -20,6 +20,6 @@ endfunction()
 
 expect_clean_end("hexant check" check "${SCENE}")
 if(last_result STREQUAL "0")
-  expect_clean_end("hexant render" render "${SCENE}" -W 8 -H 8 --frame-count 3 --frames 1
+  expect_clean_end("hexant render" render "${SCENE}" -W 8 -H 8 --frame-count 3 --frames 1 --spp 1
                    --threads 1 -o "${OUT}")
 endif()
