@@ -285,9 +285,21 @@ void dump_scene(const runtime::SceneDescription& scene, double t, std::ostream& 
                                  : light.transform.matrix_at(t) * glm::dvec4(light.position(t), 1.0);
         out << "light[" << i << "] position=" << vector(glm::dvec3(p)) << " colour="
             << colour(light.colour, t) << " shadowless=" << light.shadowless;
-        if (light.parallel)
-            out << " parallel point_at=<" << number(light.point_at.c[0](t)) << ", " << number(light.point_at.c[1](t))
-                << ", " << number(light.point_at.c[2](t)) << ">";
+        const auto vec3 = [&](const runtime::Vector3Function& v) {
+            return "<" + number(v.c[0](t)) + ", " + number(v.c[1](t)) + ", " + number(v.c[2](t)) + ">";
+        };
+        if (light.kind != runtime::LightKind::Point)
+            out << (light.kind == runtime::LightKind::Spotlight ? " spotlight" : " cylinder")
+                << " radius=" << number(light.radius(t)) << " falloff=" << number(light.falloff(t))
+                << " tightness=" << number(light.tightness(t));
+        if (light.parallel) out << " parallel";
+        if (light.parallel || light.kind != runtime::LightKind::Point) out << " point_at=" << vec3(light.point_at);
+        if (light.fade_power(t) > 0.0)
+            out << " fade_distance=" << number(light.fade_distance(t)) << " fade_power=" << number(light.fade_power(t));
+        if (light.area)
+            out << " area_light=" << vec3(light.area->axis1) << ", " << vec3(light.area->axis2) << ", "
+                << light.area->size1 << ", " << light.area->size2 << (light.jitter ? " jitter" : "")
+                << (light.circular ? " circular" : "") << (light.orient ? " orient" : "");
         out << "\n";
     }
     for (std::size_t i = 0; i < scene.objects.size(); ++i)

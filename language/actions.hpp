@@ -1872,11 +1872,24 @@ HEXANT_ACTION(light_flag) {
     HEXANT_APPLY {
         const std::string w = word(in);
         auto& light = st.block<runtime::LightRecord>(in.position(), w.c_str());
+        // (POV-Ray's Parse_Light_Source: the kind's keyword sets its
+        // defaults, so radius, falloff and tightness come after it.)
         if (w == "shadowless") light.shadowless = true;
-        else if (w == "spotlight") light.spotlight = true;
-        else if (w == "parallel") light.parallel = true;
-        else if (w == "cylinder")
-            st.warn(in.position(), w + " lights are rendered as point lights");
+        else if (w == "spotlight") {
+            light.kind = runtime::LightKind::Spotlight;
+            light.radius = 30.0;
+            light.falloff = 45.0;
+            light.tightness = 0.0;
+        } else if (w == "cylinder") {
+            light.kind = runtime::LightKind::Cylinder;
+            light.radius = 0.75;
+            light.falloff = 1.0;
+            light.tightness = 0.0;
+            light.parallel = true;
+        } else if (w == "parallel") light.parallel = true;
+        else if (w == "jitter") light.jitter = true;
+        else if (w == "circular") light.circular = true;
+        else if (w == "orient") light.orient = true;
     }
 };
 HEXANT_ACTION(light_setting) {
@@ -1884,16 +1897,38 @@ HEXANT_ACTION(light_setting) {
         Value v = st.pop();
         const std::string name = st.pop_name();
         auto& light = st.block<runtime::LightRecord>(in.position(), name.c_str());
+        const bool shaped = light.kind != runtime::LightKind::Point;
+        // (POV-Ray refuses these on a standard light, its Not_With.)
+        if (((name == "radius" || name == "falloff" || name == "tightness") && !shaped) ||
+            (name == "point_at" && !shaped && !light.parallel))
+            throw ValueError("'" + name + "' needs a spotlight or cylinder light" +
+                             (name == "point_at" ? " or a parallel one" : "") + " (say so before it)");
         if (name == "point_at") light.point_at = to_vector3(v, name);
         else if (name == "radius") light.radius = to_float(v, name);
         else if (name == "falloff") light.falloff = to_float(v, name);
         else if (name == "tightness") light.tightness = to_float(v, name);
+        else if (name == "fade_distance") light.fade_distance = to_float(v, name);
+        else if (name == "fade_power") light.fade_power = to_float(v, name);
+        // adaptive: POV-Ray's shortcut to the area grid's average, which
+        // hexant samples whole; media_interaction, media_attenuation: hexant
+        // has no media. Read, no effect.
     }
 };
 HEXANT_ACTION(area_light) {
     HEXANT_APPLY {
-        st.close_frame();
-        st.block<runtime::LightRecord>(in.position(), "area_light").area_light = true;
+        std::vector<Value> given = st.close_frame();
+        auto& light = st.block<runtime::LightRecord>(in.position(), "area_light");
+        runtime::AreaLight area;
+        area.axis1 = to_vector3(given.at(0), "area_light's first axis");
+        area.axis2 = to_vector3(given.at(1), "area_light's second axis");
+        // (Lights along each axis: POV-Ray truncates to whole numbers and
+        // refuses 0. hexant samples the grid, never stores it: 2^20 a side
+        // is no limit a scene meets.)
+        area.size1 = int(checked_integer(std::trunc(to_constant(given.at(2), "area_light's first size")),
+                                         "area_light's first size", 1, 1 << 20));
+        area.size2 = int(checked_integer(std::trunc(to_constant(given.at(3), "area_light's second size")),
+                                         "area_light's second size", 1, 1 << 20));
+        light.area = std::move(area);
     }
 };
 HEXANT_ACTION(light_looks_like) {

@@ -1,31 +1,63 @@
 // A light source record after POV-Ray's light_source.
 #pragma once
 
+#include <optional>
+
 #include "runtime/lifetime.hpp"
 #include "runtime/transform.hpp"
 #include "runtime/vector_function.hpp"
 
 namespace hexant::runtime {
 
+// POV-Ray 3.7's area_light: a grid of size1 by size2 point lights spread
+// along axis1 and axis2 about the light's position, each shadow ray aimed
+// at one of them (jittered within its cell with `jitter`; the grid's
+// squares mapped to a disc with `circular`; the axes turned to face each
+// lit point with `orient`). POV-Ray's `adaptive` is its shortcut to the
+// grid's average (it samples corners and subdivides where they differ);
+// hexant samples the whole grid, so it is read and changes nothing.
+struct AreaLight {
+    Vector3Function axis1, axis2;
+    int size1 = 1, size2 = 1;
+};
+
+enum class LightKind { Point, Spotlight, Cylinder };
+
 struct LightRecord {
     Vector3Function position;
     ColourFunction colour;
+    // POV-Ray's fill light: no shadow, no highlights.
     bool shadowless = false;
-    bool spotlight = false;   // parsed; rendered as a point light for now
-    bool area_light = false;  // parsed; rendered as a point light for now
+    // spotlight: a cone from `position` toward point_at; cylinder: a
+    // parallel beam about the line through them. radius and falloff are
+    // the cone's half angles (degrees) or the beam's radii (scene units),
+    // tightness the power of the cosine or of the beam's fall; the
+    // keyword sets POV-Ray's defaults for its kind (spotlight 30, 45, 0;
+    // cylinder 0.75, 1, 0).
+    LightKind kind = LightKind::Point;
     // parallel: its rays all run from `position` toward `point_at`, and a
     // shadow reaches back to the plane through `position` across them
-    // (POV-Ray's ComputeOneWhiteLightRay).
+    // (POV-Ray's ComputeOneWhiteLightRay). A cylinder light is parallel.
     bool parallel = false;
     Vector3Function point_at{{0.0, 0.0, 1.0}};  // POV-Ray's default
     TimeFunction radius = 30.0, falloff = 45.0, tightness = 0.0;
+    // Light falls by 2 / (1 + (d / fade_distance)^fade_power) at distance d
+    // when both are given (fade_power > 0, fade_distance not 0).
+    TimeFunction fade_distance = 0.0, fade_power = 0.0;
+    std::optional<AreaLight> area;
+    bool jitter = false, circular = false, orient = false;  // (area lights')
     Transform transform;
     // When it shines: always, or the pieces of time of the clock-dependent
     // branches it was made under.
     Lifetime lifetime;
 
-    bool depends_on_time() const { return !lifetime.is_always() || position.depends_on_time() || colour.depends_on_time() ||
-                                          transform.depends_on_time(); }
+    bool depends_on_time() const {
+        return !lifetime.is_always() || position.depends_on_time() || colour.depends_on_time() ||
+               transform.depends_on_time() || point_at.depends_on_time() || radius.depends_on_time() ||
+               falloff.depends_on_time() || tightness.depends_on_time() || fade_distance.depends_on_time() ||
+               fade_power.depends_on_time() ||
+               (area && (area->axis1.depends_on_time() || area->axis2.depends_on_time()));
+    }
 };
 
 }  // namespace hexant::runtime

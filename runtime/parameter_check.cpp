@@ -178,8 +178,17 @@ std::optional<std::string> bad_parameter(const LightRecord& light, const Animati
     if (auto p = check(light.point_at.c, "the light's point_at", span)) return p;
     for (const auto& [value, name] : {std::pair{&light.radius, "radius"},
                                       std::pair{&light.falloff, "falloff"},
-                                      std::pair{&light.tightness, "tightness"}})
+                                      std::pair{&light.tightness, "tightness"},
+                                      std::pair{&light.fade_distance, "fade_distance"},
+                                      std::pair{&light.fade_power, "fade_power"}})
         if (auto p = check(*value, std::string("the light's ") + name, span)) return p;
+    if (light.area) {
+        if (auto p = check(light.area->axis1.c, "the area_light's first axis", span)) return p;
+        if (auto p = check(light.area->axis2.c, "the area_light's second axis", span)) return p;
+        // (POV-Ray's rule: a circular grid maps its square shells to rings.)
+        if (light.circular && (light.area->size1 <= 1 || light.area->size2 <= 1))
+            return std::string("a circular area_light needs more than 1 light along each axis");
+    }
     return check(light.transform, "the light's", span);
 }
 

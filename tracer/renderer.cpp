@@ -186,6 +186,7 @@ Image Renderer::render_frame(int frame) {
         // (A camera's normal { } bends each ray by the pattern at its point
         // on the screen.)
         if (camera_normal_) d = camera_normal_->perturb(d, {u, v, 0.0}, t);
+        state.sample = {seed, static_cast<std::uint32_t>(index), static_cast<std::uint32_t>(count), settings_.jitter};
         return shader_->trace(runtime::Ray4{Event(camera.location, t), Event(d, 0.0)}, state);
     };
 
@@ -195,7 +196,7 @@ Image Renderer::render_frame(int frame) {
     const int tiles_x = (width + kTile - 1) / kTile, tiles_y = (height + kTile - 1) / kTile;
     const int tile_count = tiles_x * tiles_y;
     const int per_set = halves ? spp / 2 : spp;
-    std::atomic<int> tiles_done{0};
+    std::atomic<int> tiles_done{0}, tiles_over{0};
     std::atomic<std::uint64_t> samples_taken{0};
     std::mutex progress_mutex;
     tbb::parallel_for(tbb::blocked_range<int>(0, tile_count, 1), [&](const tbb::blocked_range<int>& range) {
@@ -234,9 +235,11 @@ Image Renderer::render_frame(int frame) {
                         tile_squared += glm::dot(d, d) / 12.0;
                     }
                 }
-                if (!adaptive || taken == per_set ||
-                    std::sqrt(tile_squared / pixels) <= settings_.target_error)
+                if (!adaptive || std::sqrt(tile_squared / pixels) <= settings_.target_error) break;
+                if (taken == per_set) {
+                    ++tiles_over;  // (the ceiling reached above the target)
                     break;
+                }
                 goal = std::min(per_set, 2 * taken);
             }
             const int sets = halves ? 2 : 1;
@@ -271,6 +274,8 @@ Image Renderer::render_frame(int frame) {
     }
     last_samples_ = std::move(samples);
     last_sample_count_ = samples_taken;
+    last_tiles_over_target_ = tiles_over;
+    last_tile_count_ = tile_count;
     return image;
 }
 

@@ -82,6 +82,10 @@ public:
     // and their sum.
     const std::vector<int>& last_samples() const { return last_samples_; }
     std::uint64_t last_sample_count() const { return last_sample_count_; }
+    // With a target error: the last frame's tiles that reached the ceiling
+    // (samples_per_pixel) still above the target, and all its tiles.
+    int last_tiles_over_target() const { return last_tiles_over_target_; }
+    int last_tile_count() const { return last_tile_count_; }
 
     const Counters& counters() const { return counters_; }
     // Statistics: the cells a full build of the hierarchy in use makes
@@ -106,6 +110,7 @@ private:
     std::vector<double> last_squared_;
     std::vector<int> last_samples_;
     std::uint64_t last_sample_count_ = 0;
+    int last_tiles_over_target_ = 0, last_tile_count_ = 0;
     std::unique_ptr<RayQuery> query_;
     std::unique_ptr<Shader> shader_;
     // The camera's normal { }, when it has one (runtime/camera.hpp).

@@ -107,4 +107,30 @@ inline PixelSample pixel_sample(std::uint32_t seed, std::uint32_t index, std::ui
             owen_scramble(sobol(index, 2), hash(seed ^ 0x3u)) * kScale};
 }
 
+// The dimensions past pixel and time (an area light's point, one pair per
+// light and trace depth): each pair is the first two dimensions of Sobol's
+// sequence Owen-scrambled with a seed of its own ("padded", as pbrt-v4's
+// PaddedSobolSampler), so sample i's pair is stratified over the pixel's
+// samples and independent of the other pairs. Without jitter, the
+// unscrambled points at the middles of their strata, as pixel_sample.
+inline std::array<double, 2> padded_pair(std::uint32_t seed, std::uint32_t index, std::uint32_t count,
+                                         std::uint32_t pair, bool jitter) {
+    using namespace sobol_detail;
+    constexpr double kScale = 1.0 / 4294967296.0;
+    if (!jitter) {
+        const double half = 0.5 / static_cast<double>(count == 0 ? 1 : count);
+        auto wrap = [](double u) { return u >= 1.0 ? u - 1.0 : u; };
+        return {wrap(sobol(index, 0) * kScale + half), wrap(sobol(index, 1) * kScale + half)};
+    }
+    const std::uint32_t own = hash(seed ^ hash(pair * 0x9e3779b9u + 0x632be5abu));
+    // (Burley's shuffle: the pair's own nested permutation of the index.
+    // Without it the pair would be a fixed function of the pixel's first
+    // two dimensions, scrambled from the same Sobol' points, and more
+    // samples would not average it. The first 2^k shuffled indices are an
+    // aligned block of the sequence, itself stratified: progressive still.)
+    const std::uint32_t shuffled = owen_scramble(index, hash(own ^ 0x3u));
+    return {owen_scramble(sobol(shuffled, 0), hash(own ^ 0x1u)) * kScale,
+            owen_scramble(sobol(shuffled, 1), hash(own ^ 0x2u)) * kScale};
+}
+
 }  // namespace hexant::tracer

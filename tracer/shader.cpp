@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "runtime/geometry/offset_ray.hpp"
+#include "tracer/sample_pattern.hpp"
 
 namespace hexant::tracer {
 
@@ -25,38 +26,10 @@ constexpr double kBailout = 1.0 / 255.0;
 
 }  // namespace
 
-glm::dvec3 Shader::Light::position_at(double t) const {
-    if (still_position) return fixed_position;
-    const glm::dvec3 p = position(t);
-    if (transform.empty()) return p;
-    return glm::dvec3(transform.matrix_at(t) * glm::dvec4(p, 1.0));
-}
-
-glm::dvec3 Shader::Light::direction_at(double t) const {
-    glm::dvec3 target(point_at.c[0](t), point_at.c[1](t), point_at.c[2](t));
-    if (!transform.empty()) target = glm::dvec3(transform.matrix_at(t) * glm::dvec4(target, 1.0));
-    const glm::dvec3 d = target - position_at(t);
-    const double l = glm::length(d);
-    // (point_at at the light itself: POV-Ray's direction is zero, and the
-    // light lights nothing.)
-    return l > 0.0 ? d / l : glm::dvec3(0.0);
-}
-
-glm::dvec3 Shader::Light::colour_at(double t) const {
-    return still_colour ? fixed_colour : rgb(colour, t);
-}
-
 Shader::Shader(const runtime::SceneDescription& scene, const RayQuery& query)
     : query_(query), background_(scene.background), ambient_light_(scene.global.ambient_light),
       max_trace_level_(std::max(1, scene.global.max_trace_level)) {
-    for (const auto& l : scene.lights) {
-        Light light{l.position, l.transform, l.colour, l.shadowless, l.lifetime, l.parallel, l.point_at};
-        light.fixed_position = light.position_at(0.0);
-        light.still_position = !l.position.depends_on_time() && !l.transform.depends_on_time();
-        light.fixed_colour = rgb(l.colour, 0.0);
-        light.still_colour = !l.colour.depends_on_time();
-        lights_.push_back(light);
-    }
+    for (const auto& l : scene.lights) lights_.emplace_back(l);
     still_ambient_ = !ambient_light_.depends_on_time();
     fixed_ambient_ = rgb(ambient_light_, 0.0);
     if (scene.sky_sphere) {
@@ -137,26 +110,42 @@ glm::dvec3 Shader::sky(const glm::dvec3& direction, double t) const {
     return colour + background * through;
 }
 
-inline void Shader::place(const Light& light, const Hit& h, ShadingScratch::Light& known) const {
+inline void Shader::place(const ShadedLight& light, const Hit& h, ShadingScratch::Light& known) const {
     known.state = ShadingScratch::Light::State::Dark;
-    if (!light.lifetime.is_always() && !light.lifetime.contains(h.time)) return;
-    const glm::dvec3 light_position = light.position_at(h.time);
-    glm::dvec3 to_light = light_position - h.point;
-    const double distance = glm::length(to_light);
-    if (!(distance > 0.0)) return;
-    to_light /= distance;
-    // How far a shadow ray from `start` looks for occluders.
-    double reach = glm::length(light_position - h.start);
-    if (light.parallel) {
-        // Along the light's own direction, back to the plane through it.
-        const glm::dvec3 direction = light.direction_at(h.time);
-        reach = glm::dot(light_position - h.start, -direction);
-        to_light = -direction;
-    }
+    if (!light.shines_at(h.time)) return;
+    // POV-Ray's ComputeOneLightRay: the ray toward the light's centre from
+    // the hit, its colour attenuated along it (a spotlight's cone, fade);
+    // the shadow ray starts off the surface and looks as far as the light
+    // (a parallel light: the plane through it).
+    const LightRay ray = light.ray_from(h.point, h.time);
+    if (ray.direction == glm::dvec3(0.0)) return;
+    const double attenuation = light.attenuation(h.point, ray, h.time);
+    if (!(attenuation > 0.0)) return;
     known.state = ShadingScratch::Light::State::Placed;
-    known.to_light = to_light;
-    known.reach = reach;
-    known.colour = light.colour_at(h.time);
+    known.to_light = ray.direction;
+    known.reach = light.ray_from(h.start, h.time).depth;
+    known.colour = light.colour_at(h.time) * attenuation;
+}
+
+inline bool Shader::shadowed(std::size_t index, const Hit& h, const ShadingScratch::Light& known, ThreadState& state) const {
+    const ShadedLight& light = lights_[index];
+    glm::dvec3 direction = known.to_light;
+    double reach = known.reach;
+    if (light.is_area()) {
+        // One point of the grid per sample: over a pixel's samples the
+        // shadow averages the grid, as POV-Ray's fully subdivided one.
+        const SampleIndex& s = state.sample;
+        const auto u = padded_pair(s.seed, s.index, s.count,
+                                   static_cast<std::uint32_t>(index + lights_.size() * std::size_t(h.depth)), s.jitter);
+        const glm::dvec3 offset = light.area_offset({u[0], u[1]}, LightRay{known.to_light, 0.0}, h.time);
+        const LightRay toward = light.ray_from(h.start, h.time, offset);
+        if (toward.direction == glm::dvec3(0.0)) return false;
+        direction = toward.direction;
+        reach = toward.depth;
+    }
+    if (!(reach > 0.0)) return false;
+    ++state.counters.shadow_rays;
+    return query_.occluded(Ray4{Event(h.start, h.time), Event(direction, 0.0)}, 0.0, reach, state);
 }
 
 glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, ThreadState& state) const {
@@ -230,7 +219,7 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
         const double opaque = 1.0 - m.filter - m.transmit;
         glm::dvec3 own = m.colour * (m.ambient * ambient + m.emission) * opaque;
         for (std::size_t i = 0; i < lights_.size(); ++i) {
-            const Light& light = lights_[i];
+            const ShadedLight& light = lights_[i];
             ShadingScratch::Light alone;
             ShadingScratch::Light& known = seen ? (*seen)[i] : alone;
             if (known.state == ShadingScratch::Light::State::Unknown) place(light, h, known);
@@ -239,24 +228,20 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
             if (cosine <= 0.0) continue;
             if (known.state == ShadingScratch::Light::State::Placed) {
                 known.state = ShadingScratch::Light::State::Seen;
-                if (!light.shadowless && known.reach > 0.0) {
-                    ++state.counters.shadow_rays;
-                    const Ray4 shadow{Event(h.start, h.time), Event(known.to_light, 0.0)};
-                    if (query_.occluded(shadow, 0.0, known.reach, state))
-                        known.state = ShadingScratch::Light::State::Shadowed;
-                }
+                if (!light.shadowless() && shadowed(i, h, known, state))
+                    known.state = ShadingScratch::Light::State::Shadowed;
             }
             if (known.state == ShadingScratch::Light::State::Shadowed) continue;
             // (POV-Ray's default brilliance 1 needs no pow.)
             const double shade = m.brilliance == 1.0 ? cosine : std::pow(cosine, m.brilliance);
             glm::dvec3 lit = m.diffuse * shade * m.colour * opaque;
             // POV-Ray's shadowless lights are fill lights: no highlights.
-            if (m.phong > 0.0 && !light.shadowless) {
+            if (m.phong > 0.0 && !light.shadowless()) {
                 const glm::dvec3 reflected = h.d - 2.0 * glm::dot(h.d, n) * n;
                 const double c = glm::dot(reflected, known.to_light);
                 if (c > 0.0) lit += glm::dvec3(m.phong * std::pow(c, m.phong_size));
             }
-            if (m.specular > 0.0 && !light.shadowless) {
+            if (m.specular > 0.0 && !light.shadowless()) {
                 const glm::dvec3 half = glm::normalize(known.to_light - h.d);
                 const double c = glm::dot(half, n);
                 if (c > 0.0) lit += glm::dvec3(m.specular * std::pow(c, 1.0 / m.roughness));

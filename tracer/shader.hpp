@@ -8,7 +8,9 @@
 // transmission through every layer (filter, transmit, refraction by ior)
 // and each layer's reflection by recursion up to max_trace_level; the
 // plain textures' colours blended by their weights. Colours are linear
-// (assumed_gamma 1.0).
+// (assumed_gamma 1.0). Lights as POV-Ray's (tracer/light.hpp): spotlights
+// and cylinders attenuate, fade with distance, and an area light's shadow
+// ray aims at one point of its grid per sample.
 #pragma once
 
 #include <glm/vec3.hpp>
@@ -16,6 +18,7 @@
 #include "runtime/scene.hpp"
 #include "runtime/texture_evaluator.hpp"
 #include "runtime/spacetime.hpp"
+#include "tracer/light.hpp"
 #include "tracer/ray_query.hpp"
 #include "tracer/thread_state.hpp"
 
@@ -32,25 +35,6 @@ public:
     }
 
 private:
-    // A light as the shader reads it: a still light's position and colour
-    // evaluated once, a moving one's at each hit's time.
-    struct Light {
-        runtime::Vector3Function position;
-        runtime::Transform transform;
-        runtime::ColourFunction colour;
-        bool shadowless = false;
-        runtime::Lifetime lifetime;  // when it shines
-        bool parallel = false;
-        runtime::Vector3Function point_at;
-        // A parallel light's direction (unit, from it toward point_at; zero
-        // when point_at is the light's own place).
-        glm::dvec3 direction_at(double t) const;
-        bool still_position = false, still_colour = false;
-        glm::dvec3 fixed_position{0.0}, fixed_colour{0.0};
-        glm::dvec3 position_at(double t) const;
-        glm::dvec3 colour_at(double t) const;
-    };
-
     glm::dvec3 radiance(const runtime::Ray4& ray, int depth, double weight,
                         ThreadState& state) const;
     // A hit being shaded: the ray's unit direction, the event, the raw
@@ -72,7 +56,12 @@ private:
     glm::dvec3 lit(const Hit& h, const runtime::TextureSample::Layer* layers, std::size_t count,
                    std::vector<ShadingScratch::Light>* seen, ThreadState& state) const;
     // Where a light lies from the hit, or that it does not shine there.
-    [[gnu::always_inline]] inline void place(const Light& light, const Hit& h, ShadingScratch::Light& known) const;
+    [[gnu::always_inline]] inline void place(const ShadedLight& light, const Hit& h,
+                                             ShadingScratch::Light& known) const;
+    // Whether the shadow ray from the hit toward light `index` (an area
+    // light: toward its grid point for this sample) meets anything.
+    [[gnu::always_inline]] inline bool shadowed(std::size_t index, const Hit& h, const ShadingScratch::Light& known,
+                                                ThreadState& state) const;
     // How much shows through the layers above layer `index` (POV-Ray's trans).
     static double layer_trans(const runtime::TextureSample::Layer* layers, std::size_t index);
     // The direction reflected about `normal`, kept above the surface whose
@@ -85,7 +74,7 @@ private:
     glm::dvec3 fogged(const glm::dvec3& colour, const runtime::Ray4& ray, double depth) const;
 
     const RayQuery& query_;
-    std::vector<Light> lights_;
+    std::vector<ShadedLight> lights_;
     runtime::ColourFunction background_;
     // The sky sphere's pigments, the last written first (on top).
     std::vector<runtime::TextureEvaluator> sky_layers_;

@@ -2,6 +2,7 @@
 // shader's scratch space.
 #pragma once
 
+#include <cstdint>
 #include <deque>
 #include <vector>
 
@@ -33,9 +34,19 @@ struct ShadingScratch {
     std::vector<Light> lights;
 };
 
+// The pixel sample a primary ray carries (tracer/sample_pattern.hpp): its
+// set's seed, its index and count in the set, and whether it is jittered.
+// The shader draws the further dimensions of distributed ray tracing from
+// it (padded_pair), so that they too depend on (frame, pixel, sample) only.
+struct SampleIndex {
+    std::uint32_t seed = 0, index = 0, count = 1;
+    bool jitter = false;
+};
+
 struct ThreadState {
     Mailbox mailbox;
     Counters counters;
+    SampleIndex sample{};
     std::deque<ShadingScratch> shading{};  // by depth (a deque: a deeper one leaves the others in place)
     ShadingScratch& shading_at(int depth) {
         while (shading.size() <= static_cast<std::size_t>(depth)) shading.emplace_back();

@@ -281,10 +281,10 @@ class Converter {
             add(*record,
                 Inherited{runtime::Transform{}, scene_.default_texture, std::nullopt, false});
         for (const auto& l : scene_.lights) {
-            if (l.spotlight || l.area_light)
+            if (l.kind != runtime::LightKind::Point || l.area || l.parallel ||
+                !l.fade_power.is_constant() || l.fade_power.constant() > 0.0)
                 throw std::runtime_error(
-                    "only point lights are supported (a spotlight or area "
-                    "light renders as a point light in hexant)");
+                    "only plain point lights are supported (no spotlight, cylinder, parallel, area light or fade)");
             out_.lights.push_back({l.position, l.transform, l.colour, l.shadowless});
         }
         return std::move(out_);
