@@ -55,7 +55,12 @@ std::vector<tracer::Mode> mode_list(const std::string& text) {
     std::vector<tracer::Mode> modes;
     std::stringstream items(text);
     std::string item;
-    while (std::getline(items, item, ',')) modes.push_back(tracer::parse_mode(item));
+    while (std::getline(items, item, ',')) {
+        const tracer::Mode mode = tracer::parse_mode(item);
+        if (std::find(modes.begin(), modes.end(), mode) != modes.end())
+            throw std::runtime_error("--modes " + text + ": " + item + " is named twice");
+        modes.push_back(mode);
+    }
     if (modes.empty()) throw std::runtime_error("--modes: no mode named");
     return modes;
 }
@@ -259,8 +264,14 @@ int run_error_time(const ErrorTimeArguments& args, std::ostream& out, std::ostre
                     << " spp " << std::setw(5) << spp << "  " << std::fixed << std::setprecision(3)
                     << std::setw(8) << p.seconds << " s  rmse " << std::scientific
                     << std::setprecision(3) << p.error.rmse << "  estimated ";
-                if (p.estimate) out << *p.estimate << " (" << std::fixed << std::setprecision(2) << *p.estimate / p.error.rmse << "x)";
-                else out << "-";
+                if (p.estimate) {
+                    out << *p.estimate;
+                    // (Against a true error of 0, a flat frame, no ratio.)
+                    if (p.error.rmse > 0.0)
+                        out << " (" << std::fixed << std::setprecision(2) << *p.estimate / p.error.rmse << "x)";
+                } else {
+                    out << "-";
+                }
                 out << std::scientific << std::setprecision(3) << "  relMSE " << p.error.relative_mse
                     << std::defaultfloat << "\n";
             }
@@ -290,8 +301,16 @@ int run_error_time(const ErrorTimeArguments& args, std::ostream& out, std::ostre
                     out << std::setprecision(1) << *spp << " spp (" << std::setprecision(2) << *spp / p.mean_spp
                         << "x the samples), " << std::setprecision(3) << *seconds << " s (" << std::setprecision(2)
                         << *seconds / p.seconds << "x the time)\n";
-                else
-                    out << "more than --spp-list measured (outside the measured range)\n";
+                else {
+                    // Which side of the measured curve: fewer samples than
+                    // its first point (a larger error), or more than its last.
+                    double largest = 0.0;
+                    for (const Point& q : points)
+                        if (q.mode == mode) largest = std::max(largest, q.error.rmse);
+                    out << (p.error.rmse > largest ? "fewer samples than the smallest of --spp-list"
+                                                   : "more samples than the largest of --spp-list")
+                        << " (outside the measured range)\n";
+                }
             }
         }
         std::stable_sort(adaptive.begin(), adaptive.end(),
@@ -346,7 +365,7 @@ int run_error_time(const ErrorTimeArguments& args, std::ostream& out, std::ostre
             out << "time to reach the same RMSE (" << tracer::mode_name(modes[1]) << " / "
                 << tracer::mode_name(modes[0]) << "):\n";
             for (const Point& p : points) {
-                if (p.mode != modes[0]) continue;
+                if (p.mode != modes[0] || !(p.error.rmse > 0.0)) continue;  // (a flat frame: no error to reach)
                 const auto other = time_for(points, modes[1], p.error.rmse);
                 out << "  rmse " << std::scientific << std::setprecision(3) << p.error.rmse
                     << std::fixed << std::setprecision(3) << ": " << p.seconds << " s against ";

@@ -8,6 +8,8 @@
 #include <sstream>
 #include <cstdio>
 #include <cstring>
+#include <limits>
+#include <functional>
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -120,6 +122,7 @@ struct FrameRecord {
     double seconds = 0.0;       // rendering it, its file written
     double mean_samples = 0.0;  // samples per pixel, over the frame
     std::optional<tracer::FrameEstimate> estimate;
+    int tiles_over_target = 0;  // (adaptive sampling: at the ceiling, above the target)
 };
 
 struct ModeRun {
@@ -148,26 +151,36 @@ void print_stats(std::ostream& out, const std::vector<std::pair<std::string, Cou
     }
 }
 
+// A JSON number, or null for what JSON cannot hold (an infinite estimate
+// of a frame whose colours overflow).
+std::string json_number(double v) {
+    if (!std::isfinite(v)) return "null";
+    std::ostringstream out;
+    out << std::setprecision(17) << v;
+    return out.str();
+}
+
 void write_stats_json(const std::string& path, const std::vector<std::pair<std::string, ModeRun>>& columns) {
     std::ostringstream json;
     json << "{\n" << std::setprecision(17);
     for (std::size_t i = 0; i < columns.size(); ++i) {
         json << "  \"" << columns[i].first << "\": {";
         for (std::size_t r = 0; r < std::size(kRows); ++r)
-            json << (r ? ", " : "") << "\"" << kRows[r].name << "\": " << kRows[r].value(columns[i].second.counters);
+            json << (r ? ", " : "") << "\"" << kRows[r].name << "\": " << json_number(kRows[r].value(columns[i].second.counters));
         // Each frame on a line of its own.
         json << ",\n    \"per frame\": [";
         const auto& frames = columns[i].second.frames;
         for (std::size_t f = 0; f < frames.size(); ++f) {
             const FrameRecord& r = frames[f];
-            json << (f ? "," : "") << "\n      {\"frame\": " << r.frame << ", \"seconds\": " << r.seconds
-                 << ", \"samples per pixel\": " << r.mean_samples;
+            json << (f ? "," : "") << "\n      {\"frame\": " << r.frame << ", \"seconds\": " << json_number(r.seconds)
+                 << ", \"samples per pixel\": " << json_number(r.mean_samples);
             if (r.estimate) {
-                json << ", \"estimated rmse\": " << r.estimate->rmse << ", \"worst tiles\": [";
+                json << ", \"tiles over target\": " << r.tiles_over_target
+                     << ", \"estimated rmse\": " << json_number(r.estimate->rmse) << ", \"worst tiles\": [";
                 for (std::size_t t = 0; t < r.estimate->worst.size(); ++t) {
                     const auto& tile = r.estimate->worst[t];
                     json << (t ? ", " : "") << "{\"x\": " << tile.x << ", \"y\": " << tile.y
-                         << ", \"rmse\": " << tile.rmse << "}";
+                         << ", \"rmse\": " << json_number(tile.rmse) << "}";
                 }
                 json << "]";
             }
@@ -231,6 +244,7 @@ private:
     using Clock = std::chrono::steady_clock;
     static std::string duration(double seconds) {
         char text[32];
+        seconds = std::ceil(seconds);  // (never "0 s" with work left)
         if (seconds < 60.0) std::snprintf(text, sizeof text, "%.0f s", seconds);
         else if (seconds < 3600.0) std::snprintf(text, sizeof text, "%d min %02d s", int(seconds) / 60, int(seconds) % 60);
         else std::snprintf(text, sizeof text, "%d h %02d min", int(seconds) / 3600, int(seconds) / 60 % 60);
@@ -286,13 +300,22 @@ ModeRun render_mode(runtime::SceneDescription& scene, const RenderArguments& arg
         if (write) tracer::write_image(image, tracer::frame_path(pattern, frame));
         const double pixels = double(image.width) * image.height;
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
-        run.frames.push_back({frame, seconds, double(renderer.last_sample_count()) / pixels, renderer.last_estimate()});
+        run.frames.push_back({frame, seconds, double(renderer.last_sample_count()) / pixels, renderer.last_estimate(),
+                              renderer.last_tiles_over_target()});
         if (const auto& estimate = renderer.last_estimate(); estimate && write) {
             if (progress) progress->clear();
-            err << "frame " << frame << ": " << seconds << " s, " << run.frames.back().mean_samples
-                << " samples per pixel, estimated RMSE "
-                << estimate->rmse << " (linear light); worst " << tracer::FrameEstimate::kTile << "-pixel tiles";
-            for (const auto& tile : estimate->worst) err << " " << tile.rmse << " at " << tile.x << "," << tile.y;
+            char line[160];
+            std::snprintf(line, sizeof line, "frame %d: %.3f s, %.1f samples per pixel, estimated RMSE %.3g (linear light)",
+                          frame, seconds, run.frames.back().mean_samples, estimate->rmse);
+            err << line << "; worst " << tracer::FrameEstimate::kTile << "-pixel tiles";
+            for (std::size_t k = 0; k < estimate->worst.size(); ++k) {
+                std::snprintf(line, sizeof line, "%s %.3g at (%d, %d)", k ? "," : "", estimate->worst[k].rmse,
+                              estimate->worst[k].x, estimate->worst[k].y);
+                err << line;
+            }
+            if (const int over = renderer.last_tiles_over_target())
+                err << "; " << over << " of " << renderer.last_tile_count() << " tiles reached --spp "
+                    << sampling.samples << " above the target " << sampling.target_error;
             err << "\n";
         }
         if (write && args.error_image) {
@@ -346,11 +369,11 @@ void add_render_arguments(CLI::App& command, RenderArguments& a) {
     command.add_option("--error-image", a.error_image,
                        "Also write each frame's per-pixel estimated RMSE (linear light) as an image; #### "
                        "becomes the frame number (implies --error-estimate)");
-    command.add_option("--target-error", a.target_error,
-                       "Adaptive sampling: each 16-pixel tile doubles its samples until its estimated RMSE "
-                       "(linear light, 0 to 1) is at most this, with --spp the ceiling (default: without --spp, "
-                       "1/128 under 256)")
-        ->check(CLI::PositiveNumber);
+    command.add_option_function<std::string>(
+        "--target-error", [&a](const std::string& text) { a.target_error = parse_target_error(text); },
+        "Adaptive sampling: each 16-pixel tile doubles its samples until its estimated RMSE "
+        "(linear light, 0 to 1; a number or a fraction such as 1/128) is at most this, with --spp the ceiling "
+        "(default: without --spp, 1/128 under 256)");
     command.add_option("--samples-image", a.samples_image,
                        "Also write the samples each pixel took, over --spp, as a grey image; #### becomes the "
                        "frame number");
@@ -364,57 +387,74 @@ void add_render_arguments(CLI::App& command, RenderArguments& a) {
     command.add_option("--stats-json", a.stats_json, "Write the same figures as JSON");
     command.add_flag("--compare", a.compare,
                      "Render in spacetime and frames modes and print both columns and their ratio");
-    command.add_option("--threads", a.threads, "Worker threads (default: all cores)");
+    command.add_option("--threads", a.threads, "Worker threads (default 0: all cores)")->check(CLI::NonNegativeNumber);
     add_hierarchy_arguments(command, a.hierarchy);
 }
 
 namespace {
 
 // Every name the run will write, checked before any frame is rendered: the
-// frame pattern (frame_path's rules), each name's format, a GIF's 16-bit
-// sides, and no output named as another (a contact sheet named as a frame
-// would replace it; a sheet and an animation never share a name: .png or
-// .exr against .gif).
+// patterns (frame_path's rules), each name's format, a GIF's 16-bit sides,
+// a folder that can be made for each, and no two outputs naming one file (a
+// contact sheet named as a frame, or the stats as a samples image, would
+// replace it). Errors name the flag.
 void check_outputs(const RenderArguments& args, const std::string& pattern,
                    const std::vector<int>& selected, const runtime::Animation& animation) {
-    tracer::check_frame_pattern(pattern, selected.size());
-    tracer::check_image_name(pattern);
-    if (args.contact_sheet) tracer::check_image_name(*args.contact_sheet);
-    // The per-frame images beside the frames: none may take a frame's file
-    // or another's.
-    std::vector<std::pair<std::string, std::string>> patterns{{"--output", pattern}};
-    if (args.error_image) patterns.emplace_back("--error-image", *args.error_image);
-    if (args.samples_image) patterns.emplace_back("--samples-image", *args.samples_image);
-    for (std::size_t i = 1; i < patterns.size(); ++i) {
-        const auto& [flag, name] = patterns[i];
-        tracer::check_frame_pattern(name, selected.size(), flag);
-        tracer::check_image_name(name);
+    struct Output {
+        std::string flag, name;
+        bool per_frame;  // a pattern with #### (one file per frame)
+        enum class Kind { Image, Animation, Text } kind;
+    };
+    std::vector<Output> outputs{{"-o", pattern, true, Output::Kind::Image}};
+    if (args.error_image) outputs.push_back({"--error-image", *args.error_image, true, Output::Kind::Image});
+    if (args.samples_image) outputs.push_back({"--samples-image", *args.samples_image, true, Output::Kind::Image});
+    if (args.contact_sheet) outputs.push_back({"--contact-sheet", *args.contact_sheet, false, Output::Kind::Image});
+    if (args.animation) outputs.push_back({"--animation", *args.animation, false, Output::Kind::Animation});
+    if (args.stats_json) outputs.push_back({"--stats-json", *args.stats_json, false, Output::Kind::Text});
+    const auto file_of = [&](const Output& o, int frame) {
+        return std::filesystem::absolute(o.per_frame ? tracer::frame_path(o.name, frame) : o.name).lexically_normal();
+    };
+    for (std::size_t i = 0; i < outputs.size(); ++i) {
+        const Output& o = outputs[i];
+        const auto named = [&](const std::function<void()>& check) {
+            try {
+                check();
+            } catch (const std::exception& e) {
+                const std::string what = e.what();
+                throw std::runtime_error(what.rfind(o.flag, 0) == 0 ? what : o.flag + " " + what);
+            }
+        };
+        if (o.name.empty()) throw std::runtime_error(o.flag + ": an empty file name");
+        named([&] {
+            if (o.per_frame) tracer::check_frame_pattern(o.name, selected.size(), o.flag);
+            if (o.kind == Output::Kind::Image) tracer::check_image_name(o.name);
+            if (o.kind == Output::Kind::Animation) tracer::check_animation_name(o.name);
+        });
+        // (A folder that could not be made fails now, not after the first
+        // frame: its nearest existing ancestor must be a folder this
+        // process may write in. Nothing is made before the render.)
+        std::filesystem::path folder = file_of(o, selected.front()).parent_path();
+        std::error_code error;
+        while (!std::filesystem::exists(folder, error) && folder.has_parent_path() && folder != folder.parent_path())
+            folder = folder.parent_path();
+        if (!std::filesystem::is_directory(folder, error) || access(folder.c_str(), W_OK | X_OK) != 0)
+            throw std::runtime_error(o.flag + " " + o.name + ": cannot write in " + folder.string());
         for (std::size_t j = 0; j < i; ++j)
-            for (const int frame : selected)
-                if (std::filesystem::absolute(tracer::frame_path(name, frame)).lexically_normal() ==
-                    std::filesystem::absolute(tracer::frame_path(patterns[j].second, frame)).lexically_normal())
-                    throw std::runtime_error(name + ": " + flag + " names " +
-                                             (j == 0 ? "frame " + std::to_string(frame) + "'s file"
-                                                     : patterns[j].first + "'s file for frame " + std::to_string(frame)));
+            for (const int frame : selected) {
+                if (file_of(o, frame) != file_of(outputs[j], frame)) continue;
+                throw std::runtime_error(o.name + ": " + o.flag + " names " +
+                                         (j == 0 ? "frame " + std::to_string(frame) + "'s file"
+                                                 : outputs[j].flag + "'s file" +
+                                                       (o.per_frame || outputs[j].per_frame
+                                                            ? " for frame " + std::to_string(frame)
+                                                            : "")));
+            }
     }
-    if (args.animation) tracer::check_animation_name(*args.animation);
     if (args.animation && std::max(animation.width, animation.height) > tracer::kGifMaxSide)
         throw std::runtime_error(*args.animation + ": a GIF is at most " +
                                  std::to_string(tracer::kGifMaxSide) +
                                  " pixels a side; the frames are " + std::to_string(animation.width) +
                                  " by " + std::to_string(animation.height));
-    const auto same = [](const std::string& a, const std::string& b) {
-        return std::filesystem::absolute(a).lexically_normal() ==
-               std::filesystem::absolute(b).lexically_normal();
-    };
-    std::vector<std::pair<std::string, std::string>> extra;
-    if (args.contact_sheet) extra.emplace_back("--contact-sheet", *args.contact_sheet);
-    if (args.animation) extra.emplace_back("--animation", *args.animation);
-    for (const auto& [flag, name] : extra)
-        for (const int frame : selected)
-            if (same(name, tracer::frame_path(pattern, frame)))
-                throw std::runtime_error(name + ": " + flag + " names frame " +
-                                         std::to_string(frame) + "'s file");
 }
 
 }  // namespace
@@ -436,7 +476,31 @@ void apply_scene_defaults(const RenderArguments& args, runtime::SceneDescription
     err << " by default\n";
 }
 
+double parse_target_error(const std::string& text) {
+    // A number, or A/B (the README's 1/128).
+    double value = std::numeric_limits<double>::quiet_NaN();
+    try {
+        std::size_t used = 0;
+        value = std::stod(text, &used);
+        if (used < text.size() && text[used] == '/') {
+            std::size_t more = 0;
+            const std::string rest = text.substr(used + 1);
+            value /= std::stod(rest, &more);
+            used += 1 + more;
+        }
+        if (used != text.size()) value = std::numeric_limits<double>::quiet_NaN();
+    } catch (const std::exception&) {
+        value = std::numeric_limits<double>::quiet_NaN();
+    }
+    if (!(value > 0.0) || !std::isfinite(value))
+        throw CLI::ValidationError("--target-error", "expected a positive number (an RMSE in linear light, e.g. "
+                                                     "0.01 or 1/128), got '" + text + "'");
+    return value;
+}
+
 Sampling resolve_sampling(const RenderArguments& args, const runtime::SceneDescription& scene) {
+    if (args.target_error && !(*args.target_error > 0.0 && std::isfinite(*args.target_error)))
+        throw std::runtime_error("--target-error: expected a positive number (an RMSE in linear light)");
     Sampling s;
     const std::optional<int> asked =
         args.samples_per_pixel ? args.samples_per_pixel : scene.global.motion_blur_samples;
@@ -451,9 +515,11 @@ Sampling resolve_sampling(const RenderArguments& args, const runtime::SceneDescr
     if (!estimated) return s;
     if (s.samples < 2 || s.samples % 2 != 0 || args.no_jitter) {
         const char* flags = args.target_error ? "--target-error needs" : "--error-estimate and --error-image need";
-        throw std::runtime_error(std::string(flags) +
-                                 " an even --spp of 2 or more (two independent halves) and jitter; --spp is " +
-                                 std::to_string(s.samples) + (args.no_jitter ? " with --no-jitter" : ""));
+        const std::string given = args.samples_per_pixel    ? "--spp is " + std::to_string(s.samples)
+                                  : asked                    ? "the scene's motion_blur gives " + std::to_string(s.samples)
+                                                             : "the default ceiling is " + std::to_string(s.samples);
+        throw std::runtime_error(std::string(flags) + " an even --spp of 2 or more (two independent halves) and jitter; " +
+                                 given + (args.no_jitter ? ", with --no-jitter" : ""));
     }
     s.sets = 2;
     return s;

@@ -58,6 +58,9 @@ struct Sampling {
 // From the arguments and the scene; std::runtime_error naming the flags
 // when they do not go together.
 Sampling resolve_sampling(const RenderArguments& arguments, const runtime::SceneDescription& scene);
+// --target-error's text: a positive finite number or a fraction A/B;
+// CLI::ValidationError otherwise.
+double parse_target_error(const std::string& text);
 
 void add_render_arguments(CLI::App& command, RenderArguments& arguments);
 

@@ -140,6 +140,10 @@ TEST_CASE("error-time measures each mode at each sample count against a cached r
         CHECK(err.str().find("--spp-list") != std::string::npos);
     }
     a.spp_list = "1";
+    a.modes = "frames,frames";
+    err.str("");
+    CHECK(run_error_time(a, out, err) != 0);
+    CHECK(err.str().find("frames is named twice") != std::string::npos);
     a.modes = "spacetime,fast";
     err.str("");
     CHECK(run_error_time(a, out, err) != 0);
@@ -161,4 +165,29 @@ TEST_CASE("a log-log plot leaves out points it cannot place", "[app][bench]") {
     CHECK(svg.find("a &lt; b") != std::string::npos);
     CHECK(svg.find("nan") == std::string::npos);
     CHECK(svg.find("inf") == std::string::npos);
+}
+
+TEST_CASE("error-time on a frame without error prints no NaN", "[app][bench]") {
+    // Only a background: every image equals the reference; an estimate
+    // against a true error of 0 has no ratio, and no time to reach 0.
+    const fs::path folder = fs::temp_directory_path() / "hexant_error_time_flat_test";
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    const fs::path scene = folder / "flat.pov";
+    std::ofstream(scene) << "camera { location <0, 0, -5> look_at 0 }\nbackground { rgb 0.5 }\n";
+    ErrorTimeArguments a;
+    a.scene.files = {scene.string()};
+    a.scene.width = 16;
+    a.scene.height = 16;
+    a.scene.frame_count = 2;
+    a.spp_list = "2,8";
+    a.reference_spp = 32;
+    a.targets = "0.01";
+    a.output_dir = (folder / "out").string();
+    std::ostringstream out, err;
+    REQUIRE(run_error_time(a, out, err) == 0);
+    INFO(out.str());
+    CHECK(out.str().find("nan") == std::string::npos);
+    CHECK(out.str().find("rmse 0.000e+00") != std::string::npos);
+    fs::remove_all(folder);
 }

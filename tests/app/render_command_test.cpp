@@ -6,6 +6,7 @@
 #include <cctype>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -294,4 +295,73 @@ TEST_CASE("render samples adaptively to a target error, and by default", "[app][
     CHECK(run_render(clash, o2, e2) != 0);
     CHECK(e2.str().find("--samples-image names --error-image's file for frame 1") != std::string::npos);
     CHECK_FALSE(fs::exists(none / "f_01.png"));
+}
+
+TEST_CASE("render's adaptive flags refuse what makes no sense, naming the flag", "[app][render][adaptive]") {
+    using hexant::app::parse_target_error;
+    CHECK(parse_target_error("0.01") == 0.01);
+    CHECK(parse_target_error("1/128") == 1.0 / 128.0);
+    for (const char* bad : {"nan", "-nan", "inf", "0", "-1", "abc", "1/0", "0.01x", "", "1/"})
+        CHECK_THROWS_WITH(parse_target_error(bad), Catch::Contains("--target-error"));
+
+    const fs::path scene = scene_file(moving_sphere("<2 * clock - 1, 0, 0>"));
+    const fs::path out = fresh_output(scene);
+    const auto refused = [&](const std::function<void(RenderArguments&)>& change, const std::string& says) {
+        RenderArguments a = arguments_for(scene, out);
+        a.samples_per_pixel = 4;
+        change(a);
+        std::ostringstream o, e;
+        CHECK(run_render(a, o, e) != 0);
+        INFO(e.str());
+        CHECK(e.str().find(says) != std::string::npos);
+        CHECK_FALSE(fs::exists(out / "f_01.png"));
+    };
+    // No output may take another's file, whatever its kind.
+    refused([&](RenderArguments& a) {
+        a.frames = "1";
+        a.samples_image = (out / "sheet.png").string();
+        a.contact_sheet = (out / "sheet.png").string();
+    }, "--contact-sheet names --samples-image's file for frame 1");
+    refused([&](RenderArguments& a) { a.stats_json = (out / "f_02.png").string(); },
+            "--stats-json names frame 2's file");
+    refused([&](RenderArguments& a) {
+        a.error_image = (out / "e_##.png").string();
+        a.stats_json = (out / "e_03.png").string();
+    }, "--stats-json names --error-image's file for frame 3");
+    // A name of no format or an empty one says which flag it was.
+    refused([&](RenderArguments& a) { a.samples_image = (out / "s_##.jpg").string(); }, "--samples-image ");
+    refused([&](RenderArguments& a) { a.stats_json = ""; }, "--stats-json: an empty file name");
+    // A folder that cannot be made fails before the first frame.
+    const fs::path plain = scene.parent_path() / "plain.txt";
+    std::ofstream(plain) << "a file, not a folder\n";
+    refused([&](RenderArguments& a) { a.samples_image = (plain / "s_##.png").string(); }, "cannot write in");
+    CHECK_FALSE(fs::exists(out));  // (and nothing made on the way)
+    // The default ceiling is named as such.
+    refused([&](RenderArguments& a) {
+        a.samples_per_pixel.reset();
+        a.no_jitter = true;
+        a.target_error = 0.01;
+    }, "the default ceiling is 256, with --no-jitter");
+}
+
+TEST_CASE("render says when tiles reach the ceiling above the target, and its JSON holds no infinity",
+          "[app][render][adaptive]") {
+    // Colours that overflow the estimate: JSON has no inf, so null.
+    const fs::path scene = scene_file("camera { location <0, 0, -5> look_at 0 }\nbackground { rgb 1e300 }\n"
+                                      "sphere { <2 * clock - 1, 0, 0>, 1 pigment { rgb 0 } }\n");
+    const fs::path out = fresh_output(scene);
+    RenderArguments a = arguments_for(scene, out);
+    a.frames = "2";
+    a.samples_per_pixel = 8;
+    a.target_error = 1e-9;
+    a.stats_json = (out / "stats.json").string();
+    std::ostringstream o, e;
+    REQUIRE(run_render(a, o, e) == 0);
+    INFO(e.str());
+    CHECK(e.str().find("tiles reached --spp 8 above the target") != std::string::npos);
+    std::ifstream json(out / "stats.json");
+    const std::string stats((std::istreambuf_iterator<char>(json)), std::istreambuf_iterator<char>());
+    CHECK(stats.find("inf") == std::string::npos);
+    CHECK(stats.find("\"estimated rmse\": null") != std::string::npos);
+    CHECK(stats.find("\"tiles over target\": ") != std::string::npos);
 }
