@@ -67,6 +67,7 @@ HEXANT_NAME_ACTION(shape_setting_name);
 HEXANT_NAME_ACTION(shape_vectors_setting_name);
 HEXANT_NAME_ACTION(light_setting_name);
 HEXANT_NAME_ACTION(camera_vector_name);
+HEXANT_NAME_ACTION(camera_blur_name);
 HEXANT_NAME_ACTION(global_setting_name);
 HEXANT_NAME_ACTION(global_ignored_name);
 HEXANT_NAME_ACTION(unsupported_kind);
@@ -1972,8 +1973,32 @@ HEXANT_ACTION(camera_setting) {
 HEXANT_ACTION(camera_unsupported_type) {
     HEXANT_APPLY { (void)st; Interpreter::fail(in.position(), word(in) + " cameras are not supported by hexant (only perspective)"); }
 };
+HEXANT_ACTION(camera_blur_setting) {
+    HEXANT_APPLY {
+        std::vector<Value> given = st.close_frame();
+        const std::string name = st.pop_name();
+        auto& camera = st.block<runtime::CameraRecord>(in.position(), name.c_str());
+        runtime::CameraItem item;
+        using K = runtime::CameraItem::Kind;
+        if (given.size() > 1 && name != "blur_samples")
+            throw ValueError(name + " takes one value");
+        if (name == "focal_point") {
+            item.kind = K::FocalPoint;
+            item.vector = to_vector3(given[0], "the camera's focal_point");
+        } else {
+            item.kind = name == "aperture" ? K::Aperture : K::BlurSamples;
+            // (blur_samples MIN, MAX: POV-Ray's most is what counts here.)
+            item.angle = to_float(given.back(), "the camera's " + name);
+            if (name == "blur_samples" && item.angle.is_constant() && !(item.angle.constant() > 0.0))
+                throw ValueError("blur_samples must be 1 or more (POV-Ray: illegal number of focal blur samples)");
+        }
+        camera.items.push_back(std::move(item));
+    }
+};
 HEXANT_ACTION(camera_ignored_setting) {
-    HEXANT_APPLY { st.warn(in.position(), word(in) + " is read and ignored (no depth of field)"); }
+    HEXANT_APPLY {
+        st.warn(in.position(), word(in) + " is read and ignored (hexant samples by --spp or --target-error)");
+    }
 };
 HEXANT_ACTION(camera_block) {
     HEXANT_APPLY {

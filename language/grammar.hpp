@@ -1043,14 +1043,23 @@ struct camera_unsupported_type
              TAO_PEGTL_KEYWORD("ultra_wide_angle"), TAO_PEGTL_KEYWORD("omnimax"),
              TAO_PEGTL_KEYWORD("panoramic"), TAO_PEGTL_KEYWORD("spherical"),
              TAO_PEGTL_KEYWORD("cylinder")> {};
+// Focal blur: aperture A, focal_point <P>, blur_samples [MIN,] MAX;
+// confidence and variance are POV-Ray's stopping rule, read and ignored
+// (hexant's samples are --spp or --target-error's).
+struct camera_blur_name
+    : p::sor<TAO_PEGTL_KEYWORD("aperture"), TAO_PEGTL_KEYWORD("blur_samples"),
+             TAO_PEGTL_KEYWORD("focal_point")> {};
+struct camera_blur_argument : p::seq<sum> {};
+struct camera_blur_setting
+    : p::seq<camera_blur_name, ws, frame_open, p::must<camera_blur_argument>,
+             p::opt<comma, camera_blur_argument>> {};
 struct camera_ignored_setting
-    : p::seq<p::sor<TAO_PEGTL_KEYWORD("aperture"), TAO_PEGTL_KEYWORD("blur_samples"),
-                    TAO_PEGTL_KEYWORD("focal_point"), TAO_PEGTL_KEYWORD("confidence"),
-                    TAO_PEGTL_KEYWORD("variance")>,
-             ws, p::must<ignored_value>, p::opt<comma, ignored_value>> {};
+    : p::seq<p::sor<TAO_PEGTL_KEYWORD("confidence"), TAO_PEGTL_KEYWORD("variance")>,
+             ws, p::must<ignored_value>> {};
 struct camera_item
     : p::sor<directive<camera_item>, macro_call<camera_item>, camera_perspective, camera_setting,
-             camera_ignored_setting, camera_normal, transformation, camera_unsupported_type> {};
+             camera_blur_setting, camera_ignored_setting, camera_normal, transformation,
+             camera_unsupported_type> {};
 struct camera_block
     : p::seq<camera_open, p::opt<camera_base>, p::star<camera_item>, p::must<rbrace>> {};
 

@@ -23,6 +23,8 @@
 // rules above at time t.
 #include "runtime/camera.hpp"
 
+#include <optional>
+
 #include <cmath>
 #include <stdexcept>
 
@@ -43,6 +45,8 @@ bool CameraRecord::depends_on_time() const {
     for (const CameraItem& item : items) {
         switch (item.kind) {
             case CameraItem::Kind::Angle:
+            case CameraItem::Kind::Aperture:
+            case CameraItem::Kind::BlurSamples:
                 if (item.angle.depends_on_time()) return true;
                 break;
             case CameraItem::Kind::Transform:
@@ -69,6 +73,8 @@ CameraFrame CameraRecord::evaluate_items(const std::vector<CameraItem>& items, d
     double angle = 0.0;
     glm::dmat4 transform(1.0);
     bool has_transform = false;
+    std::optional<glm::dvec3> focal_point;
+    double blur_samples = 0.0;
 
     // 1. Gather: the last value of each item wins; transforms compose.
     for (const CameraItem& item : items) {
@@ -90,6 +96,9 @@ CameraFrame CameraRecord::evaluate_items(const std::vector<CameraItem>& items, d
                 transform = item.step.matrix_at(t) * transform;
                 has_transform = true;
                 break;
+            case CameraItem::Kind::Aperture: cam.aperture = item.angle(t); break;
+            case CameraItem::Kind::FocalPoint: focal_point = item.vector(t); break;
+            case CameraItem::Kind::BlurSamples: blur_samples = item.angle(t); break;
         }
     }
 
@@ -131,6 +140,13 @@ CameraFrame CameraRecord::evaluate_items(const std::vector<CameraItem>& items, d
         cam.direction = direction * direction_length;
         cam.right = right * (handedness > 0.0 ? right_length : -right_length);
     }
+
+    // Focal blur when both an aperture and samples are given (POV-Ray's
+    // useFocalBlur); in focus at focal_point's distance, else at the
+    // direction's length (a length 0 counts as 1, as there).
+    if (!(blur_samples > 0.0)) cam.aperture = 0.0;
+    cam.focal_distance = focal_point ? glm::length(*focal_point - cam.location) : glm::length(cam.direction);
+    if (cam.focal_distance == 0.0) cam.focal_distance = 1.0;
 
     // 4. The transforms, last.
     if (has_transform) {

@@ -17,10 +17,14 @@
 namespace hexant::runtime {
 
 struct CameraItem {
-    enum class Kind { Location, LookAt, Direction, Right, Up, Sky, Angle, Transform };
+    // (Aperture, FocalPoint, BlurSamples: POV-Ray's focal blur.)
+    enum class Kind { Location, LookAt, Direction, Right, Up, Sky, Angle, Transform, Aperture, FocalPoint, BlurSamples };
     Kind kind;
-    Vector3Function vector;  // Location .. Sky
-    TimeFunction angle;      // Angle: horizontal field of view in degrees
+    Vector3Function vector;  // Location .. Sky, FocalPoint
+    // Angle: horizontal field of view in degrees; Aperture: the lens'
+    // aperture (scene units); BlurSamples: POV-Ray's count (0 or less, or
+    // an aperture of 0: no focal blur).
+    TimeFunction angle;
     TransformStep step;      // Transform
 };
 
@@ -33,6 +37,12 @@ struct CameraFrame {
     glm::dvec3 right{1.33, 0, 0};
     glm::dvec3 up{0, 1, 0};
     glm::dvec3 sky{0, 1, 0};
+    // Focal blur (POV-Ray's, tracer/focal_blur.hpp): the aperture (0: a
+    // pinhole) and the distance from the location to the plane in focus,
+    // |focal_point - location| before the camera's transforms, else the
+    // direction's length (POV-Ray's Parse_Camera).
+    double aperture = 0.0;
+    double focal_distance = 1.0;
 };
 
 struct CameraRecord {

@@ -202,6 +202,15 @@ std::optional<std::string> bad_parameter(const CameraRecord& camera, const Anima
             case K::Angle:
                 if (auto p = check(item.angle, "the camera's angle", span)) return p;
                 break;
+            case K::Aperture:
+                if (auto p = check(item.angle, "the camera's aperture", span)) return p;
+                break;
+            case K::BlurSamples:
+                if (auto p = check(item.angle, "the camera's blur_samples", span)) return p;
+                break;
+            case K::FocalPoint:
+                if (auto p = check(item.vector.c, "the camera's focal_point", span)) return p;
+                break;
             case K::Transform: transform.append(item.step); break;
             default: {
                 static const char* const names[] = {"location", "look_at", "direction",

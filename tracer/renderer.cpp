@@ -17,6 +17,7 @@
 
 #include "runtime/object_factory.hpp"
 #include "runtime/work_counts.hpp"
+#include "tracer/focal_blur.hpp"
 #include "tracer/sample_pattern.hpp"
 
 namespace hexant::tracer {
@@ -25,6 +26,10 @@ namespace {
 
 using runtime::Box4;
 using runtime::Event;
+
+// The lens' pair of sample dimensions: none of the lights' (light index +
+// lights x depth).
+constexpr std::uint32_t kLensPair = 0x7fffffffu;
 
 // The root cell: the objects' extent over frames first..last (their
 // shutters' span), the eye and the lights at each of those frames' opening
@@ -45,7 +50,14 @@ Box4 animation_root(const runtime::SceneDescription& scene, const ObjectSet& obj
     for (int f = first; f <= last; ++f) {
         const double open = a.clock_of_frame(f);
         for (const double t : {open, open + a.shutter * a.clock_delta()}) {
-            add(scene.camera.evaluate(t).location);
+            const runtime::CameraFrame camera = scene.camera.evaluate(t);
+            add(camera.location);
+            // (Focal blur moves the eye over a lens of radius aperture / 4.)
+            if (camera.aperture != 0.0) {
+                const double r = std::fabs(camera.aperture) / 4.0;
+                add(camera.location - glm::dvec3(r));
+                add(camera.location + glm::dvec3(r));
+            }
             for (const auto& light : scene.lights) {
                 glm::dvec3 p = light.position(t);
                 if (!light.transform.empty()) p = glm::dvec3(light.transform.matrix_at(t) * glm::dvec4(p, 1.0));
@@ -182,12 +194,24 @@ Image Renderer::render_frame(int frame) {
         // -0.5; left-handed.
         const double u = (x + s.x) / width - 0.5;
         const double v = 0.5 - (y + s.y) / height;
-        glm::dvec3 d = glm::normalize(camera.direction + u * camera.right + v * camera.up);
+        const glm::dvec3 screen = camera.direction + u * camera.right + v * camera.up;
+        glm::dvec3 origin = camera.location, d;
+        if (camera.aperture != 0.0) {
+            // Focal blur: the lens point is one more pair of the sample's
+            // dimensions (its own scramble, as an area light's).
+            const auto lens = padded_pair(seed, static_cast<std::uint32_t>(index), static_cast<std::uint32_t>(count),
+                                          kLensPair, settings_.jitter);
+            const CameraRay ray = focal_blur_ray(camera, screen, lens_point({lens[0], lens[1]}));
+            origin = ray.origin;
+            d = ray.direction;
+        } else {
+            d = glm::normalize(screen);
+        }
         // (A camera's normal { } bends each ray by the pattern at its point
-        // on the screen.)
+        // on the screen, after the lens, as POV-Ray's CreateCameraRay.)
         if (camera_normal_) d = camera_normal_->perturb(d, {u, v, 0.0}, t);
         state.sample = {seed, static_cast<std::uint32_t>(index), static_cast<std::uint32_t>(count), settings_.jitter};
-        return shader_->trace(runtime::Ray4{Event(camera.location, t), Event(d, 0.0)}, state);
+        return shader_->trace(runtime::Ray4{Event(origin, t), Event(d, 0.0)}, state);
     };
 
     // The fixed grid of tiles (the estimate's, FrameEstimate::kTile): what

@@ -207,3 +207,33 @@ TEST_CASE("a camera driven by clock is evaluated at each time", "[camera]") {
 TEST_CASE("location equal to look_at is an error", "[camera]") {
     CHECK_THROWS(camera_of({loc({1, 1, 1}), look({1, 1, 1})}).evaluate(0.0));
 }
+
+TEST_CASE("focal blur: the focal distance from focal_point before the transforms, an aperture only with samples",
+          "[runtime][camera]") {
+    // POV-Ray's Parse_Camera: |focal_point - location| before the camera's
+    // transforms (a scale does not change it), else the direction's
+    // length; no focal blur without blur_samples.
+    CameraRecord c;
+    c.items = {loc({0, 0, -5}), look({0, 0, 0}), angle(TimeFunction(60.0))};
+    CameraItem aperture;
+    aperture.kind = CameraItem::Kind::Aperture;
+    aperture.angle = TimeFunction(0.5);
+    CameraItem focus = item(CameraItem::Kind::FocalPoint, {3, 4, -5});
+    c.items.push_back(aperture);
+    c.items.push_back(focus);
+    c.items.push_back(xf(TransformKind::Scale, {2, 2, 2}));
+    CameraFrame f = c.evaluate(0.0);
+    CHECK(f.aperture == 0.0);  // (no blur_samples yet)
+    CHECK(f.focal_distance == Approx(5.0));
+    CameraItem samples;
+    samples.kind = CameraItem::Kind::BlurSamples;
+    samples.angle = TimeFunction(10.0);
+    c.items.push_back(samples);
+    f = c.evaluate(0.0);
+    CHECK(f.aperture == 0.5);
+    CHECK(f.focal_distance == Approx(5.0));
+    // Without a focal point: the direction's length (angle 60 on right 1.33).
+    c.items.erase(c.items.begin() + 4);
+    f = c.evaluate(0.0);
+    CHECK(f.focal_distance == Approx(1.33 / std::tan(30.0 * 3.14159265358979323846 / 180.0) / 2.0));
+}
