@@ -285,19 +285,23 @@ void dump_scene(const runtime::SceneDescription& scene, double t, std::ostream& 
                                  : light.transform.matrix_at(t) * glm::dvec4(light.position(t), 1.0);
         out << "light[" << i << "] position=" << vector(glm::dvec3(p)) << " colour="
             << colour(light.colour, t) << " shadowless=" << light.shadowless;
-        const auto vec3 = [&](const runtime::Vector3Function& v) {
-            return "<" + number(v.c[0](t)) + ", " + number(v.c[1](t)) + ", " + number(v.c[2](t)) + ">";
+        // (point_at a point, the area's axes directions, in the world: the
+        // light's transform applied, as to its position.)
+        const glm::dmat4 m = light.transform.has_deformation() ? glm::dmat4(1.0) : light.transform.matrix_at(t);
+        const auto vec3 = [&](const runtime::Vector3Function& v, double w) {
+            const glm::dvec4 p = m * glm::dvec4(v.c[0](t), v.c[1](t), v.c[2](t), w);
+            return "<" + number(p.x) + ", " + number(p.y) + ", " + number(p.z) + ">";
         };
         if (light.kind != runtime::LightKind::Point)
             out << (light.kind == runtime::LightKind::Spotlight ? " spotlight" : " cylinder")
                 << " radius=" << number(light.radius(t)) << " falloff=" << number(light.falloff(t))
                 << " tightness=" << number(light.tightness(t));
         if (light.parallel) out << " parallel";
-        if (light.parallel || light.kind != runtime::LightKind::Point) out << " point_at=" << vec3(light.point_at);
+        if (light.parallel || light.kind != runtime::LightKind::Point) out << " point_at=" << vec3(light.point_at, 1.0);
         if (light.fade_power(t) > 0.0)
             out << " fade_distance=" << number(light.fade_distance(t)) << " fade_power=" << number(light.fade_power(t));
         if (light.area)
-            out << " area_light=" << vec3(light.area->axis1) << ", " << vec3(light.area->axis2) << ", "
+            out << " area_light=" << vec3(light.area->axis1, 0.0) << ", " << vec3(light.area->axis2, 0.0) << ", "
                 << light.area->size1 << ", " << light.area->size2 << (light.jitter ? " jitter" : "")
                 << (light.circular ? " circular" : "") << (light.orient ? " orient" : "");
         out << "\n";

@@ -45,10 +45,7 @@ void summarize_scene(const runtime::SceneDescription& scene, std::ostream& out) 
     out << scene.lights.size() << " light" << (scene.lights.size() == 1 ? "" : "s") << "\n";
     for (std::size_t i = 0; i < scene.lights.size(); ++i)
         out << "  light " << i << ": "
-            << (scene.lights[i].position.depends_on_time() || scene.lights[i].colour.depends_on_time() ||
-                        scene.lights[i].transform.depends_on_time()
-                    ? "moves with time"
-                    : "static")
+            << (scene.lights[i].moves() ? "moves with time" : "static")
             << (scene.lights[i].shadowless ? ", shadowless" : "")
             << (scene.lights[i].lifetime.is_always() ? "" : ", shines " + scene.lights[i].lifetime.to_string())
             << "\n";

@@ -1875,13 +1875,20 @@ HEXANT_ACTION(light_flag) {
         auto& light = st.block<runtime::LightRecord>(in.position(), w.c_str());
         // (POV-Ray's Parse_Light_Source: the kind's keyword sets its
         // defaults, so radius, falloff and tightness come after it.)
-        if (w == "shadowless") light.shadowless = true;
-        else if (w == "spotlight") {
+        // shadowless is POV-Ray's fill light, a type of its own: it turns
+        // a spotlight or cylinder back into a plain light, and either
+        // keyword after it turns it into theirs, with shadows.
+        if (w == "shadowless") {
+            light.shadowless = true;
+            light.kind = runtime::LightKind::Point;
+        } else if (w == "spotlight") {
+            light.shadowless = false;
             light.kind = runtime::LightKind::Spotlight;
             light.radius = 30.0;
             light.falloff = 45.0;
             light.tightness = 0.0;
         } else if (w == "cylinder") {
+            light.shadowless = false;
             light.kind = runtime::LightKind::Cylinder;
             light.radius = 0.75;
             light.falloff = 1.0;
@@ -1989,8 +1996,21 @@ HEXANT_ACTION(camera_blur_setting) {
             item.kind = name == "aperture" ? K::Aperture : K::BlurSamples;
             // (blur_samples MIN, MAX: POV-Ray's most is what counts here.)
             item.angle = to_float(given.back(), "the camera's " + name);
-            if (name == "blur_samples" && item.angle.is_constant() && !(item.angle.constant() > 0.0))
-                throw ValueError("blur_samples must be 1 or more (POV-Ray: illegal number of focal blur samples)");
+            if (name == "blur_samples") {
+                // POV-Ray's rules: whole numbers (truncated) of 1 or more,
+                // the least not above the most.
+                double least = 1.0, most = 1.0;
+                for (std::size_t k = 0; k < given.size(); ++k) {
+                    const TimeFunction f = to_float(given[k], "the camera's blur_samples");
+                    if (!f.is_constant()) continue;
+                    const double v = std::trunc(f.constant());
+                    if (!(v >= 1.0))
+                        throw ValueError("blur_samples must be 1 or more (POV-Ray: illegal number of focal blur samples)");
+                    (k + 1 == given.size() ? most : least) = v;
+                }
+                if (given.size() > 1 && least > most)
+                    throw ValueError("blur_samples' least must not be above its most");
+            }
         }
         camera.items.push_back(std::move(item));
     }

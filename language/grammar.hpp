@@ -887,10 +887,11 @@ struct light_setting_name
 struct light_setting_value : p::seq<expression> {};
 struct light_setting : p::seq<light_setting_name, ws, p::must<light_setting_value>> {};
 struct area_light_argument : p::seq<sum> {};
+// (The commas are optional, as POV-Ray's Parse_Comma.)
 struct area_light
     : p::seq<TAO_PEGTL_KEYWORD("area_light"), ws, frame_open, p::must<area_light_argument>,
-             p::must<comma>, p::must<area_light_argument>, p::must<comma>,
-             p::must<area_light_argument>, p::must<comma>, p::must<area_light_argument>> {};
+             p::opt<comma>, p::must<area_light_argument>, p::opt<comma>,
+             p::must<area_light_argument>, p::opt<comma>, p::must<area_light_argument>> {};
 struct light_looks_like
     : p::seq<p::sor<TAO_PEGTL_KEYWORD("looks_like"), TAO_PEGTL_KEYWORD("projected_through")>, ws,
              p::must<skipped_block>, ws> {};
@@ -1052,7 +1053,7 @@ struct camera_blur_name
 struct camera_blur_argument : p::seq<sum> {};
 struct camera_blur_setting
     : p::seq<camera_blur_name, ws, frame_open, p::must<camera_blur_argument>,
-             p::opt<comma, camera_blur_argument>> {};
+             p::opt<p::opt<comma>, p::not_at<camera_blur_name>, camera_blur_argument>> {};
 struct camera_ignored_setting
     : p::seq<p::sor<TAO_PEGTL_KEYWORD("confidence"), TAO_PEGTL_KEYWORD("variance")>,
              ws, p::must<ignored_value>> {};

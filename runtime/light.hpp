@@ -51,8 +51,10 @@ struct LightRecord {
     // branches it was made under.
     Lifetime lifetime;
 
-    bool depends_on_time() const {
-        return !lifetime.is_always() || position.depends_on_time() || colour.depends_on_time() ||
+    bool depends_on_time() const { return !lifetime.is_always() || moves(); }
+    // Whether anything of it but its lifetime changes with time.
+    bool moves() const {
+        return position.depends_on_time() || colour.depends_on_time() ||
                transform.depends_on_time() || point_at.depends_on_time() || radius.depends_on_time() ||
                falloff.depends_on_time() || tightness.depends_on_time() || fade_distance.depends_on_time() ||
                fade_power.depends_on_time() ||

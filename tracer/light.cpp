@@ -51,7 +51,11 @@ ShadedLight::ShadedLight(const runtime::LightRecord& r)
     : position_(r.position), point_at_(r.point_at), colour_(r.colour), transform_(r.transform),
       lifetime_(r.lifetime), kind_(r.kind), shadowless_(r.shadowless), parallel_(r.parallel),
       radius_(r.radius), falloff_(r.falloff), tightness_(r.tightness), fade_distance_(r.fade_distance),
-      fade_power_(r.fade_power), area_(r.area), jitter_(r.jitter), circular_(r.circular), orient_(r.orient) {
+      fade_power_(r.fade_power), area_(r.area), jitter_(r.jitter),
+      // (orient alone makes the grid circular: POV-Ray warns "This area
+      // light is now circular"; a row of one light stays square.)
+      circular_(r.area && (r.circular || r.orient) && r.area->size1 > 1 && r.area->size2 > 1),
+      orient_(r.orient) {
     fixed_position_ = moving_position(0.0);
     still_position_ = !r.position.depends_on_time() && !r.transform.depends_on_time();
     fixed_colour_ = rgb(r.colour, 0.0);
@@ -89,9 +93,10 @@ glm::dvec3 ShadedLight::point_at(double t) const {
 glm::dvec3 ShadedLight::axis_at(double t) const {
     const glm::dvec3 d = point_at(t) - position_at(t);
     const double l = glm::length(d);
-    // (point_at at the light itself: POV-Ray leaves the direction unscaled,
-    // about zero, and the light lights nothing.)
-    return l > 0.0 ? d / l : glm::dvec3(0.0);
+    // (point_at within POV-Ray's EPSILON of the light: it leaves the
+    // direction unscaled, about zero, and the light lights nothing. An
+    // absolute 1e-10, POV-Ray's rule, kept so that images agree.)
+    return l > kEpsilon ? d / l : glm::dvec3(0.0);
 }
 
 glm::dvec3 ShadedLight::moving_colour(double t) const { return rgb(colour_, t); }

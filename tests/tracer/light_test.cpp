@@ -161,3 +161,29 @@ TEST_CASE("orient turns an area light's axes across the ray to the lit point", "
             CHECK(glm::length(o) <= std::sqrt(0.5) + 1e-12);  // a square of side |axis1|
         }
 }
+
+TEST_CASE("orient alone makes an area light circular, as POV-Ray does", "[tracer][light]") {
+    // POV-Ray warns "This area light is now circular" and renders orient
+    // as circular orient.
+    rt::LightRecord r = light_at({3, 4, 0});
+    r.area = rt::AreaLight{rt::Vector3Function{{1.0, 0.0, 0.0}}, rt::Vector3Function{{0.0, 1.0, 0.0}}, 4, 4};
+    r.orient = true;
+    const tr::ShadedLight orient(r);
+    r.circular = true;
+    const tr::ShadedLight both(r);
+    const tr::LightRay centre = orient.ray_from({0, 0, 0}, 0.0);
+    for (const double u : {0.05, 0.3, 0.7, 0.95})
+        for (const double v : {0.05, 0.6})
+            CHECK(orient.area_offset({u, v}, centre, 0.0) == both.area_offset({u, v}, centre, 0.0));
+}
+
+TEST_CASE("a point_at within POV-Ray's 1e-10 of the light gives it no direction", "[tracer][light]") {
+    rt::LightRecord r = light_at({0, 6, -2});
+    r.kind = rt::LightKind::Spotlight;
+    r.radius = 10.0;
+    r.falloff = 20.0;
+    r.point_at = rt::Vector3Function{{0.0, 6.0 - 1e-11, -2.0}};
+    const tr::ShadedLight light(r);
+    const glm::dvec3 below(0, 0, -2);
+    CHECK(light.attenuation(below, light.ray_from(below, 0.0), 0.0) == 0.0);
+}
