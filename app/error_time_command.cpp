@@ -30,25 +30,32 @@ namespace fs = std::filesystem;
 // noise is independent of every measured image's (which use seed 0).
 constexpr std::uint32_t kReferenceSeed = 0x5eed;
 
-std::vector<int> int_list(const std::string& text, const char* flag) {
-    std::vector<int> values;
-    std::stringstream items(text + ",");
-    std::string item;
-    while (std::getline(items, item, ',')) {
-        std::size_t used = 0;
-        int value = 0;
+// A comma list of `item`s (each parsed whole, or nothing when it is not
+// one): --spp-list and --targets.
+template <class T, class Parse>
+std::vector<T> comma_list(const std::string& text, const char* flag, const char* expected, Parse item) {
+    std::vector<T> values;
+    std::stringstream items(text + ",");  // (every item ends with a comma: "1," has an empty last one)
+    std::string one;
+    while (std::getline(items, one, ',')) {
+        std::optional<T> value;
         try {
-            value = std::stoi(item, &used);
+            value = item(one);
         } catch (const std::exception&) {
-            used = 0;
         }
-        // (At most --spp's own limit, 2^20: the reference takes four times the largest.)
-        if (used != item.size() || value < 1 || value > (1 << 20))
-            throw std::runtime_error(std::string(flag) + ": expected a comma list of whole numbers from 1 to "
-                                     "1048576, got '" + text + "'");
-        values.push_back(value);
+        if (!value) throw std::runtime_error(std::string(flag) + ": expected a comma list of " + expected + ", got '" + text + "'");
+        values.push_back(*value);
     }
     return values;
+}
+
+std::vector<int> int_list(const std::string& text, const char* flag) {
+    // (At most --spp's own limit, 2^20: the reference takes four times the largest.)
+    return comma_list<int>(text, flag, "whole numbers from 1 to 1048576", [](const std::string& item) {
+        std::size_t used = 0;
+        const int value = std::stoi(item, &used);
+        return used == item.size() && value >= 1 && value <= (1 << 20) ? std::optional<int>(value) : std::nullopt;
+    });
 }
 
 std::vector<tracer::Mode> mode_list(const std::string& text) {
@@ -210,21 +217,12 @@ int run_error_time(const ErrorTimeArguments& args, std::ostream& out, std::ostre
         const std::vector<tracer::Mode> modes = mode_list(args.modes);
         std::vector<double> targets;
         if (!args.targets.empty()) {
-            std::stringstream items(args.targets + ",");
-            std::string item;
-            while (std::getline(items, item, ',')) {
+            targets = comma_list<double>(args.targets, "--targets", "positive numbers", [](const std::string& item) {
                 std::size_t used = 0;
-                double value = 0.0;
-                try {
-                    value = std::stod(item, &used);
-                } catch (const std::exception&) {
-                    used = 0;
-                }
-                if (used != item.size() || !(value > 0.0) || !std::isfinite(value))
-                    throw std::runtime_error("--targets: expected a comma list of positive numbers, got '" +
-                                             args.targets + "'");
-                targets.push_back(value);
-            }
+                const double value = std::stod(item, &used);
+                return used == item.size() && value > 0.0 && std::isfinite(value) ? std::optional<double>(value)
+                                                                                  : std::nullopt;
+            });
             if (spps.back() < 2 || spps.back() % 2 != 0)
                 throw std::runtime_error("--targets: the largest of --spp-list is the ceiling and must be even (two "
                                          "independent halves); it is " + std::to_string(spps.back()));

@@ -239,6 +239,9 @@ Image Renderer::render_frame(int frame) {
             // estimate decides whether to double (adaptive only).
             int taken = 0;
             int goal = adaptive ? std::min(per_set, RenderSettings::kFirstRoundSamples / 2) : per_set;
+            // (halves) Per pixel, its estimated squared error after the last
+            // round: the tile's decision and the frame's estimate both read it.
+            std::array<double, kTile * kTile> pixel_squared{};
             double tile_squared = 0.0;
             while (true) {
                 for (int p = 0; p < pixels; ++p) {
@@ -256,7 +259,8 @@ Image Renderer::render_frame(int frame) {
                     for (int p = 0; p < pixels; ++p) {
                         // (A - B)^2 / 4 per channel, each half in linear light.
                         const glm::dvec3 d = linear(sum_a[p] / double(taken)) - linear(sum_b[p] / double(taken));
-                        tile_squared += glm::dot(d, d) / 12.0;
+                        pixel_squared[p] = glm::dot(d, d) / 12.0;
+                        tile_squared += pixel_squared[p];
                     }
                 }
                 if (!adaptive || std::sqrt(tile_squared / pixels) <= settings_.target_error) break;
@@ -272,10 +276,7 @@ Image Renderer::render_frame(int frame) {
                 const std::size_t at = static_cast<std::size_t>(y) * width + x;
                 image.set(x, y, linear((sum_a[p] + sum_b[p]) / double(sets * taken)));
                 samples[at] = sets * taken;
-                if (halves) {
-                    const glm::dvec3 d = linear(sum_a[p] / double(taken)) - linear(sum_b[p] / double(taken));
-                    squared[at] = glm::dot(d, d) / 12.0;
-                }
+                if (halves) squared[at] = pixel_squared[p];
             }
             const std::uint64_t total = samples_taken += std::uint64_t(pixels) * sets * taken;
             const int done = ++tiles_done;
