@@ -22,6 +22,13 @@ void add_scene_arguments(CLI::App& command, SceneArguments& a) {
     command.add_flag("--cyclic", a.cyclic, "Cyclic animation (POV-Ray's Cyclic_Animation)");
     command.add_option("--shutter", a.shutter,
                        "Fraction of each frame's clock step the shutter is open (default 1)");
+    command.add_option("--shutter-curve", a.shutter_curve,
+                       "How open the shutter is over its open time, weighting the samples' times: box "
+                       "(the default), triangle, trapezoid, or keys u:w,u:w,... (u from 0 to 1 of the "
+                       "open time, w >= 0; e.g. 0:0,0.1:1,0.9:1,1:0)");
+    command.add_option("--rolling-shutter", a.rolling_shutter,
+                       "Rolling shutter: the fraction of each frame's clock step from the top row's "
+                       "opening to the bottom row's (default 0, every row at once)");
     command.add_option("-L,--include-path", a.include_paths,
                        "Folder searched for #include after the scene's own (POV-Ray's +L)");
     command.add_option("--allow-read", a.read_paths,
@@ -125,6 +132,14 @@ ResolvedScene resolve(const SceneArguments& arguments) {
     }
     if (arguments.cyclic) a.cyclic = true;
     if (arguments.shutter) a.shutter = *arguments.shutter;
+    if (arguments.shutter_curve) {
+        try {
+            a.shutter_curve = runtime::ShutterCurve::parse(*arguments.shutter_curve);
+        } catch (const std::invalid_argument& e) {
+            throw std::runtime_error(std::string("--shutter-curve: ") + e.what());
+        }
+    }
+    if (arguments.rolling_shutter) a.rolling_shutter = *arguments.rolling_shutter;
     for (const auto& path : arguments.include_paths) r.options.include_paths.emplace_back(path);
     for (const auto& path : arguments.read_paths) r.options.read_paths.emplace_back(path);
     for (const auto& d : arguments.declares) {
@@ -167,6 +182,8 @@ ResolvedScene resolve(const SceneArguments& arguments) {
                                  "; --max-frames N raises the limit)");
     // Written so that NaN fails too (every comparison with NaN is false).
     if (!(a.shutter >= 0 && a.shutter <= 1)) throw std::runtime_error("--shutter must lie in [0, 1]");
+    if (!(a.rolling_shutter >= 0 && a.rolling_shutter <= 1))
+        throw std::runtime_error("--rolling-shutter must lie in [0, 1]");
     if (!std::isfinite(a.initial_clock) || !std::isfinite(a.final_clock) ||
         (r.at_clock && !std::isfinite(*r.at_clock)))
         throw std::runtime_error("the clock (--clock, Initial_Clock, Final_Clock) must be finite numbers");

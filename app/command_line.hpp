@@ -24,6 +24,8 @@ struct SceneArguments {
     std::optional<std::string> clock_range;  // A:B
     bool cyclic = false;
     std::optional<double> shutter;
+    std::optional<std::string> shutter_curve;  // runtime::ShutterCurve::parse
+    std::optional<double> rolling_shutter;
     std::vector<std::string> include_paths;
     std::vector<std::string> read_paths;
     std::vector<std::string> declares;  // NAME=VALUE

@@ -272,6 +272,7 @@ ModeRun render_mode(runtime::SceneDescription& scene, const RenderArguments& arg
     settings.jitter = !args.no_jitter;
     settings.sample_seed = args.seed;
     settings.threads = args.threads;
+    if (args.light_speed) settings.light_speed = *args.light_speed;
     settings.build = args.hierarchy.options();
     settings.first_frame = frames.front();
     settings.last_frame = frames.back();
@@ -388,6 +389,22 @@ void add_render_arguments(CLI::App& command, RenderArguments& a) {
     command.add_flag("--compare", a.compare,
                      "Render in spacetime and frames modes and print both columns and their ratio");
     command.add_option("--threads", a.threads, "Worker threads (default 0: all cores)")->check(CLI::NonNegativeNumber);
+    command.add_option_function<std::string>(
+        "--light-speed",
+        [&a](const std::string& text) {
+            double value = std::numeric_limits<double>::quiet_NaN();
+            try {
+                std::size_t used = 0;
+                value = std::stod(text, &used);
+                if (used != text.size()) value = std::numeric_limits<double>::quiet_NaN();
+            } catch (const std::exception&) {
+            }
+            if (!(value > 0.0))
+                throw CLI::ValidationError("--light-speed", "'" + text + "' is not a positive number of scene units per clock unit (inf: instant light)");
+            a.light_speed = value;
+        },
+        "Finite speed of light, scene units per clock unit: every ray runs back in time as it goes, so a fast "
+        "object is seen where it was when its light left it (default: instant)");
     add_hierarchy_arguments(command, a.hierarchy);
 }
 

@@ -28,6 +28,9 @@ struct RenderArguments {
     bool stats = false;
     bool compare = false;
     int threads = 0;
+    // The speed of light (tracer/light_travel.hpp), scene units per clock
+    // unit: none, instant light.
+    std::optional<double> light_speed;
     // Each frame's error estimated from two independent halves of its
     // samples (tracer/frame_estimate.hpp), printed; --error-image writes
     // each frame's per-pixel estimate (a pattern with ####, as --output).

@@ -258,7 +258,21 @@ void dump_scene(const runtime::SceneDescription& scene, double t, std::ostream& 
     const runtime::CameraFrame camera = scene.camera.evaluate(t);
     out << "camera location=" << vector(camera.location) << " direction=" << vector(camera.direction)
         << " right=" << vector(camera.right) << " up=" << vector(camera.up)
-        << " sky=" << vector(camera.sky) << "\n";
+        << " sky=" << vector(camera.sky);
+    // (Only what differs from a perspective pinhole, so that the usual
+    // camera's line stays as it was.)
+    switch (camera.type) {
+        case runtime::CameraType::Perspective: break;
+        case runtime::CameraType::Orthographic: out << " orthographic"; break;
+        case runtime::CameraType::Fisheye: out << " fisheye angle=" << number(camera.angle); break;
+        case runtime::CameraType::Panoramic: out << " panoramic"; break;
+        case runtime::CameraType::Spherical:
+            out << " spherical angle=" << number(camera.h_angle) << "," << number(camera.v_angle);
+            break;
+    }
+    if (camera.aperture != 0.0)
+        out << " aperture=" << number(camera.aperture) << " focal_distance=" << number(camera.focal_distance);
+    out << "\n";
     if (scene.camera.normal) {
         Shared shared;
         shared.count(*scene.camera.normal);

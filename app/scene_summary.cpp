@@ -38,7 +38,9 @@ void summarize_scene(const runtime::SceneDescription& scene, std::ostream& out) 
     const auto& a = scene.animation;
     out << "frames " << a.initial_frame << ".." << a.final_frame << ", clock " << number(a.time_begin())
         << ".." << number(a.time_end()) << (a.cyclic ? " (cyclic)" : "") << ", shutter "
-        << number(a.shutter) << ", " << a.width << "x" << a.height << "\n";
+        << number(a.shutter) << (a.shutter_curve.is_box() ? "" : " (shutter curve)")
+        << (a.rolling_shutter > 0.0 ? ", rolling shutter " + number(a.rolling_shutter) : std::string())
+        << ", " << a.width << "x" << a.height << "\n";
     const auto camera = scene.camera.evaluate(a.time_begin());
     out << "camera at " << vector(camera.location) << " looking along " << vector(camera.direction)
         << (scene.camera.depends_on_time() ? ", moves with time" : ", static") << "\n";

@@ -1963,22 +1963,74 @@ HEXANT_ACTION(camera_setting) {
         auto& camera = st.block<runtime::CameraRecord>(in.position(), name.c_str());
         runtime::CameraItem item;
         using K = runtime::CameraItem::Kind;
-        if (name == "angle") {
-            item.kind = K::Angle;
-            item.angle = to_float(v, "the camera's angle");
-            if (item.angle.is_constant() && (item.angle.constant() <= 0.0 || item.angle.constant() >= 180.0))
-                throw ValueError("a perspective camera's angle must lie between 0 and 180 degrees");
-        } else {
-            item.kind = name == "location" ? K::Location : name == "look_at" ? K::LookAt
-                        : name == "direction" ? K::Direction : name == "right" ? K::Right
-                        : name == "up" ? K::Up : K::Sky;
-            item.vector = to_vector3(v, "the camera's " + name);
-        }
+        item.kind = name == "location" ? K::Location : name == "look_at" ? K::LookAt
+                    : name == "direction" ? K::Direction : name == "right" ? K::Right
+                    : name == "up" ? K::Up : K::Sky;
+        item.vector = to_vector3(v, "the camera's " + name);
         camera.items.push_back(std::move(item));
     }
 };
 HEXANT_ACTION(camera_unsupported_type) {
-    HEXANT_APPLY { (void)st; Interpreter::fail(in.position(), word(in) + " cameras are not supported by hexant (only perspective)"); }
+    HEXANT_APPLY {
+        (void)st;
+        Interpreter::fail(in.position(), word(in) + " cameras are not supported by hexant (perspective, orthographic, "
+                                                    "fisheye, panoramic and spherical are)");
+    }
+};
+HEXANT_ACTION(camera_type) {
+    HEXANT_APPLY {
+        const std::string name = word(in);
+        auto& camera = st.block<runtime::CameraRecord>(in.position(), name.c_str());
+        // POV-Ray reads the type before any other item, and not at all
+        // after a camera identifier (then only transforms may follow).
+        if (!camera.items.empty() || !camera.pieces.empty() || camera.normal)
+            throw ValueError("the camera's type (" + name + ") must come first in camera { }, before its other "
+                             "items and not after a declared camera (as POV-Ray requires)");
+        runtime::CameraItem item;
+        item.kind = runtime::CameraItem::Kind::Type;
+        using T = runtime::CameraType;
+        item.type = name == "orthographic" ? T::Orthographic : name == "fisheye" ? T::Fisheye
+                    : name == "panoramic" ? T::Panoramic : name == "spherical" ? T::Spherical : T::Perspective;
+        camera.items.push_back(std::move(item));
+    }
+};
+HEXANT_ACTION(camera_angle) {
+    HEXANT_APPLY {
+        std::vector<Value> given = st.close_frame();
+        auto& camera = st.block<runtime::CameraRecord>(in.position(), "angle");
+        using T = runtime::CameraType;
+        T type = T::Perspective;
+        for (const auto& item : camera.items)
+            if (item.kind == runtime::CameraItem::Kind::Type) type = item.type;
+        const char* name = type == T::Perspective ? "perspective" : type == T::Orthographic ? "orthographic"
+                           : type == T::Fisheye ? "fisheye" : type == T::Panoramic ? "panoramic" : "spherical";
+        // POV-Ray's Parse_Camera: an orthographic angle may be left out (0);
+        // only a spherical camera takes a second (vertical) angle.
+        if (given.empty() && type != T::Orthographic)
+            throw ValueError(std::string("a ") + name + " camera's angle needs a value");
+        if (given.size() > 1 && type != T::Spherical)
+            throw ValueError(std::string("a ") + name + " camera's angle takes one value (two: a spherical camera's)");
+        runtime::CameraItem item;
+        item.kind = runtime::CameraItem::Kind::Angle;
+        item.angle = given.empty() ? TimeFunction(0.0) : to_float(given[0], "the camera's angle");
+        if (item.angle.is_constant()) {
+            const double a = item.angle.constant();
+            if (type == T::Perspective && (a <= 0.0 || a >= 180.0))
+                throw ValueError("a perspective camera's angle must lie between 0 and 180 degrees");
+            if (type == T::Orthographic && (a < 0.0 || a >= 180.0))
+                throw ValueError("an orthographic camera's angle must lie in [0, 180) degrees");
+            if (!(a >= 0.0)) throw ValueError(std::string("a ") + name + " camera's angle must not be negative");
+        }
+        camera.items.push_back(item);
+        if (given.size() > 1) {
+            runtime::CameraItem vertical;
+            vertical.kind = runtime::CameraItem::Kind::VerticalAngle;
+            vertical.angle = to_float(given[1], "the spherical camera's vertical angle");
+            if (vertical.angle.is_constant() && !(vertical.angle.constant() >= 0.0))
+                throw ValueError("a spherical camera's vertical angle must not be negative");
+            camera.items.push_back(std::move(vertical));
+        }
+    }
 };
 HEXANT_ACTION(camera_blur_setting) {
     HEXANT_APPLY {

@@ -1035,14 +1035,22 @@ struct camera_base : p::seq<expression> {};
 struct camera_vector_name
     : p::sor<TAO_PEGTL_KEYWORD("location"), TAO_PEGTL_KEYWORD("look_at"),
              TAO_PEGTL_KEYWORD("direction"), TAO_PEGTL_KEYWORD("right"), TAO_PEGTL_KEYWORD("up"),
-             TAO_PEGTL_KEYWORD("sky"), TAO_PEGTL_KEYWORD("angle")> {};
+             TAO_PEGTL_KEYWORD("sky")> {};
 struct camera_vector_value : p::seq<expression> {};
 struct camera_setting : p::seq<camera_vector_name, ws, p::must<camera_vector_value>> {};
-struct camera_perspective : p::seq<TAO_PEGTL_KEYWORD("perspective"), ws> {};
+// angle [A] (orthographic: the value may be left out, POV-Ray's
+// Allow_Float); spherical: angle H [, V].
+struct camera_angle_value : p::seq<sum> {};
+struct camera_angle
+    : p::seq<TAO_PEGTL_KEYWORD("angle"), ws, frame_open,
+             p::opt<camera_angle_value, p::opt<p::opt<comma>, camera_angle_value>>> {};
+// The projection (POV-Ray's camera types; the type comes first).
+struct camera_type
+    : p::sor<TAO_PEGTL_KEYWORD("perspective"), TAO_PEGTL_KEYWORD("orthographic"),
+             TAO_PEGTL_KEYWORD("fisheye"), TAO_PEGTL_KEYWORD("panoramic"),
+             TAO_PEGTL_KEYWORD("spherical")> {};
 struct camera_unsupported_type
-    : p::sor<TAO_PEGTL_KEYWORD("orthographic"), TAO_PEGTL_KEYWORD("fisheye"),
-             TAO_PEGTL_KEYWORD("ultra_wide_angle"), TAO_PEGTL_KEYWORD("omnimax"),
-             TAO_PEGTL_KEYWORD("panoramic"), TAO_PEGTL_KEYWORD("spherical"),
+    : p::sor<TAO_PEGTL_KEYWORD("ultra_wide_angle"), TAO_PEGTL_KEYWORD("omnimax"),
              TAO_PEGTL_KEYWORD("cylinder")> {};
 // Focal blur: aperture A, focal_point <P>, blur_samples [MIN,] MAX;
 // confidence and variance are POV-Ray's stopping rule, read and ignored
@@ -1058,8 +1066,8 @@ struct camera_ignored_setting
     : p::seq<p::sor<TAO_PEGTL_KEYWORD("confidence"), TAO_PEGTL_KEYWORD("variance")>,
              ws, p::must<ignored_value>> {};
 struct camera_item
-    : p::sor<directive<camera_item>, macro_call<camera_item>, camera_perspective, camera_setting,
-             camera_blur_setting, camera_ignored_setting, camera_normal, transformation,
+    : p::sor<directive<camera_item>, macro_call<camera_item>, p::seq<camera_type, ws>, camera_setting,
+             camera_angle, camera_blur_setting, camera_ignored_setting, camera_normal, transformation,
              camera_unsupported_type> {};
 struct camera_block
     : p::seq<camera_open, p::opt<camera_base>, p::star<camera_item>, p::must<rbrace>> {};

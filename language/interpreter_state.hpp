@@ -179,7 +179,7 @@ public:
         // Without it, what the scene makes only there (a file named for
         // the frame after the last) is not needed. A shutter of 0 (and a
         // still) has its instants only.
-        if (scene.animation.shutter > 0.0 && b != a) b = b > a ? runtime::interval_detail::next_down(b) : runtime::interval_detail::next_up(b);
+        if (scene.animation.exposure() > 0.0 && b != a) b = b > a ? runtime::interval_detail::next_down(b) : runtime::interval_detail::next_up(b);
         return {std::min(a, b), std::max(a, b)};
     }
     // How many times the camera and the background were set: a side of a

@@ -16,22 +16,33 @@
 
 namespace hexant::runtime {
 
+// POV-Ray's projections (its camera types) that hexant makes rays for
+// (tracer/camera_ray.hpp).
+enum class CameraType { Perspective, Orthographic, Fisheye, Panoramic, Spherical };
+
 struct CameraItem {
-    // (Aperture, FocalPoint, BlurSamples: POV-Ray's focal blur.)
-    enum class Kind { Location, LookAt, Direction, Right, Up, Sky, Angle, Transform, Aperture, FocalPoint, BlurSamples };
+    // (Aperture, FocalPoint, BlurSamples: POV-Ray's focal blur. Type: the
+    // projection, first when given. VerticalAngle: a spherical camera's
+    // second angle.)
+    enum class Kind { Location, LookAt, Direction, Right, Up, Sky, Angle, Transform, Aperture, FocalPoint, BlurSamples, Type, VerticalAngle };
     Kind kind;
     Vector3Function vector;  // Location .. Sky, FocalPoint
-    // Angle: horizontal field of view in degrees; Aperture: the lens'
-    // aperture (scene units); BlurSamples: POV-Ray's count (0 or less, or
-    // an aperture of 0: no focal blur).
+    // Angle: field of view in degrees (perspective and orthographic: the
+    // horizontal one, setting direction's length; fisheye: the whole
+    // circle's; spherical: the horizontal; panoramic: read, unused, as in
+    // POV-Ray); VerticalAngle: a spherical camera's vertical field of view;
+    // Aperture: the lens' aperture (scene units); BlurSamples: POV-Ray's
+    // count (0 or less, or an aperture of 0: no focal blur).
     TimeFunction angle;
     TransformStep step;      // Transform
+    CameraType type = CameraType::Perspective;  // Type
 };
 
 // The camera's vectors at one instant, as POV-Ray uses them to make rays:
 // a ray through screen point (u, v) in [-0.5, 0.5]^2 has direction
 // direction + u * right + v * up, from location.
 struct CameraFrame {
+    CameraType type = CameraType::Perspective;
     glm::dvec3 location{0, 0, 0};
     glm::dvec3 direction{0, 0, 1};
     glm::dvec3 right{1.33, 0, 0};
@@ -43,6 +54,11 @@ struct CameraFrame {
     // direction's length (POV-Ray's Parse_Camera).
     double aperture = 0.0;
     double focal_distance = 1.0;
+    // Fisheye: the circle's field of view in degrees (POV-Ray's default 90).
+    double angle = 90.0;
+    // Spherical: the horizontal and vertical fields of view in degrees
+    // (POV-Ray's defaults 360 and 180).
+    double h_angle = 360.0, v_angle = 180.0;
 };
 
 struct CameraRecord {

@@ -229,6 +229,11 @@ bool CsgObject::deformed() const {
                        [](const auto& c) { return c->deformed(); });
 }
 
+bool CsgObject::filters_light() const {
+    return std::any_of(children_.begin(), children_.end(),
+                       [](const auto& c) { return c->filters_light(); });
+}
+
 bool CsgObject::casts_shadow() const {
     return std::any_of(children_.begin(), children_.end(),
                        [](const auto& c) { return c->casts_shadow(); });

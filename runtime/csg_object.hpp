@@ -35,6 +35,7 @@ public:
     bool deformed() const override;
     // A group casts a shadow where any child does (no_shadow passes down).
     bool casts_shadow() const override;
+    bool filters_light() const override;
 
     Csg::Kind kind() const { return kind_; }
     const std::vector<IntelligentObjectPtr>& children() const { return children_; }

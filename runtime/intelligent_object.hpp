@@ -131,6 +131,11 @@ public:
     virtual bool deformed() const = 0;
     // Does it cast shadows (no no_shadow)?
     virtual bool casts_shadow() const { return true; }
+    // May light pass it (a texture that filters or transmits somewhere:
+    // POV-Ray's objects without OPAQUE_FLAG)? Then a shadow ray does not
+    // stop at it (`occluded` passes it by) but takes the colour of each of
+    // its surfaces it crosses (tracer/shader.cpp, filtered shadows).
+    virtual bool filters_light() const { return false; }
 };
 
 using IntelligentObjectPtr = std::unique_ptr<IntelligentObject>;

@@ -31,6 +31,41 @@ bool ColourMap::depends_on_time() const {
     return false;
 }
 
+namespace {
+
+bool colour_may_filter(const ColourFunction& c) {
+    for (const int k : {3, 4})
+        if (!c.c[k].is_constant() || c.c[k].constant() != 0.0) return true;
+    return false;
+}
+
+bool may_filter(const Pigment& p, Seen& seen) {
+    using Pattern = Pigment::Pattern;
+    if (p.pattern == Pattern::Solid) return colour_may_filter(p.colours.front());
+    if (p.pattern == Pattern::Image) return true;
+    if (p.pattern == Pattern::Unsupported) return false;
+    for (const auto& e : p.colour_map.entries)
+        if (colour_may_filter(e.colour)) return true;
+    for (const auto& e : p.pigment_map)
+        if (seen.insert({0, e.pigment.get()}).second && may_filter(*e.pigment, seen)) return true;
+    return false;
+}
+
+}  // namespace
+
+bool Pigment::may_filter() const {
+    Seen seen;
+    return hexant::runtime::may_filter(*this, seen);
+}
+
+bool Texture::opaque() const {
+    if (is_patterned()) return false;
+    if (!pigment.may_filter()) return true;
+    for (const Texture& layer : below)
+        if (layer.opaque()) return true;
+    return false;
+}
+
 bool Pigment::depends_on_time() const {
     Seen seen;
     return depends(*this, seen);

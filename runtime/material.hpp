@@ -72,6 +72,10 @@ struct Pigment {
     UvMapping uv_mapping = UvMapping::Off;
 
     bool depends_on_time() const;
+    // Whether some colour it can give, at some time, has a filter or a
+    // transmit other than 0 (POV-Ray's HAS_FILTER; an image_map counts,
+    // its alpha and filter being per pixel).
+    bool may_filter() const;
 };
 
 // POV-Ray 3.7's finish and its defaults.
@@ -170,6 +174,10 @@ struct Texture {
     Transform uv_outside;
 
     bool is_patterned() const { return !texture_map.empty(); }
+    // Whether no light passes it (POV-Ray's OPAQUE_FLAG, Test_Opacity): a
+    // plain texture with a layer whose pigment never filters or transmits.
+    // A texture_map never is: its entries may differ.
+    bool opaque() const;
     // A transformation of the whole texture: this one's and every layer's
     // below (POV-Ray's Transform_Textures). Not into a map's entries: they
     // live in the pattern's space.

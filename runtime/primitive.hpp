@@ -74,6 +74,8 @@ public:
         : model_(std::move(model)), motion_(transform), texture_(std::move(texture)),
           part_textures_(std::move(part_textures)), options_(options) {
         moves_ = !model_.is_static() || !motion_.is_static();
+        filters_light_ = !texture_.opaque();
+        for (const TextureEvaluator& part : part_textures_) filters_light_ = filters_light_ || !part.opaque();
         if (model_.is_static()) {
             static_geometry_ = model_.at(0.0);
             if constexpr (!kUnbounded)
@@ -91,6 +93,7 @@ public:
     bool moves() const override { return moves_; }
     bool deformed() const override { return !motion_.is_affine(); }
     bool casts_shadow() const override { return !options_.no_shadow; }
+    bool filters_light() const override { return filters_light_; }
 
     void bound(const Box4& region, std::vector<SlabBound>& out) const override {
         if constexpr (kUnbounded) return;
@@ -459,6 +462,7 @@ private:
     Model model_;
     Motion motion_;
     TextureEvaluator texture_;
+    bool filters_light_ = false;
     std::vector<TextureEvaluator> part_textures_;
     PrimitiveOptions options_;
     bool moves_ = false;

@@ -234,7 +234,8 @@ TextureEvaluator::TextureEvaluator(const Texture& texture, const std::optional<I
           Shared shared;
           return std::make_shared<const CompiledTexture>(texture, Transform{}, interior, shared);
       }()),
-      depends_on_time_(texture.depends_on_time() || (interior && interior->ior.depends_on_time())) {}
+      depends_on_time_(texture.depends_on_time() || (interior && interior->ior.depends_on_time())),
+      opaque_(texture.opaque()) {}
 
 TextureEvaluator::CompiledTexture::CompiledTexture(const Texture& texture, const Transform& outside,
                                                    const std::optional<Interior>& interior, Shared& shared) {

@@ -71,6 +71,8 @@ public:
     // blending): for tests and peers that read one colour.
     MaterialSample at(const glm::dvec3& world_point, const glm::dvec2& uv, double t) const;
     bool depends_on_time() const { return depends_on_time_; }
+    // Whether no light passes it (Texture::opaque).
+    bool opaque() const { return opaque_; }
 
     // Whether the top layer perturbs the shading normal (normal { }).
     bool has_normal() const;
@@ -236,6 +238,7 @@ private:
 
     std::shared_ptr<const CompiledTexture> texture_;  // shared by copies
     bool depends_on_time_ = false;
+    bool opaque_ = true;
 };
 
 }  // namespace hexant::runtime

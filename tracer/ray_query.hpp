@@ -53,7 +53,9 @@ public:
     virtual std::optional<runtime::ObjectHit> first_hit(const runtime::Ray4& ray, double s_min,
                                                         double s_max,
                                                         ThreadState& state) const = 0;
-    // Does an object that casts shadows meet the ray with s_min < s < s_max?
+    // Does an object that casts a full shadow (casts shadows and lets no
+    // light through: IntelligentObject::filters_light) meet the ray with
+    // s_min < s < s_max?
     virtual bool occluded(const runtime::Ray4& ray, double s_min, double s_max,
                           ThreadState& state) const = 0;
     // The mailbox size a thread needs.

@@ -17,6 +17,7 @@
 
 #include "runtime/object_factory.hpp"
 #include "runtime/work_counts.hpp"
+#include "tracer/camera_ray.hpp"
 #include "tracer/focal_blur.hpp"
 #include "tracer/sample_pattern.hpp"
 
@@ -31,33 +32,55 @@ using runtime::Event;
 // lights x depth).
 constexpr std::uint32_t kLensPair = 0x7fffffffu;
 
+// How far back in time light of frames first..last can reach at speed
+// `light_speed` (scene units per clock unit; infinite: 0). Every ray starts
+// inside the extent of everything the animation holds (its objects, eyes
+// and lights) and hits only inside it, so a ray travels at most its
+// diagonal; a path is at most max_trace_level rays and one shadow ray.
+double light_lookback(const runtime::SceneDescription& scene, const ObjectSet& objects, double light_speed) {
+    if (!std::isfinite(light_speed)) return 0.0;
+    const auto& a = scene.animation;
+    const double begin = std::min(a.time_begin(), a.time_end()), end = std::max(a.time_begin(), a.time_end());
+    Box4 all = enclosing_box(objects, begin, end);
+    for (int f = a.initial_frame; f <= a.final_frame; ++f) {
+        const double open = a.clock_of_frame(f);
+        for (const double t : {open, open + a.exposure() * a.clock_delta()}) {
+            eye_extent(scene.camera.evaluate(t), [&](const glm::dvec3& p) { all.extend(Event(p, begin)); });
+            for (const auto& light : scene.lights) {
+                glm::dvec3 p = light.position(t);
+                if (!light.transform.empty()) p = glm::dvec3(light.transform.matrix_at(t) * glm::dvec4(p, 1.0));
+                all.extend(Event(p, begin));
+            }
+        }
+    }
+    const double diagonal = glm::length(glm::dvec3(all.hi) - glm::dvec3(all.lo));
+    return (std::max(1, scene.global.max_trace_level) + 1) * diagonal / light_speed;
+}
+
 // The root cell: the objects' extent over frames first..last (their
-// shutters' span), the eye and the lights at each of those frames' opening
-// and closing.
+// shutters' span, and before it as far back as their light reaches, not
+// before the animation), the eye and the lights at each of those frames'
+// opening and closing. `floor` gets the root's first instant.
 Box4 animation_root(const runtime::SceneDescription& scene, const ObjectSet& objects, int first,
-                    int last) {
+                    int last, double lookback, double& floor) {
     const auto& a = scene.animation;
     // (A clock that runs backwards, --clock 2:1, spans the same time the
     // other way: the root's time is its smaller end to its larger.)
     const double from = a.clock_of_frame(first);
-    const double to = a.clock_of_frame(last) + a.shutter * a.clock_delta();
+    const double to = a.clock_of_frame(last) + a.exposure() * a.clock_delta();
     const double begin = std::min(from, to), end = std::max(from, to);
-    Box4 root = enclosing_box(objects, begin, end);
+    floor = lookback > 0.0 ? std::max(std::min(a.time_begin(), a.time_end()), begin - lookback) : begin;
+    Box4 root = enclosing_box(objects, floor, end);
     const auto add = [&](const glm::dvec3& p) {
-        root.extend(Event(p, begin));
+        root.extend(Event(p, floor));
         root.extend(Event(p, end));
     };
     for (int f = first; f <= last; ++f) {
         const double open = a.clock_of_frame(f);
-        for (const double t : {open, open + a.shutter * a.clock_delta()}) {
-            const runtime::CameraFrame camera = scene.camera.evaluate(t);
-            add(camera.location);
-            // (Focal blur moves the eye over a lens of radius aperture / 4.)
-            if (camera.aperture != 0.0) {
-                const double r = std::fabs(camera.aperture) / 4.0;
-                add(camera.location - glm::dvec3(r));
-                add(camera.location + glm::dvec3(r));
-            }
+        for (const double t : {open, open + a.exposure() * a.clock_delta()}) {
+            // (Focal blur moves the eye over a lens of radius aperture / 4;
+            // an orthographic camera's rays start across its film.)
+            eye_extent(scene.camera.evaluate(t), add);
             for (const auto& light : scene.lights) {
                 glm::dvec3 p = light.position(t);
                 if (!light.transform.empty()) p = glm::dvec3(light.transform.matrix_at(t) * glm::dvec4(p, 1.0));
@@ -110,7 +133,10 @@ Renderer::Renderer(const runtime::SceneDescription& scene, const RenderSettings&
     counters_.objects = objects_.size();
     const ObjectSet set = ObjectSet::of(objects_);
     const std::uint64_t maps = runtime::this_thread_work.deformation_maps;
-    root_ = animation_root(scene, set, first_frame_, last_frame_);
+    if (!(settings.light_speed > 0.0))
+        throw std::invalid_argument("the speed of light must be a positive number (infinite: instant light)");
+    lookback_ = light_lookback(scene, set, settings.light_speed);
+    root_ = animation_root(scene, set, first_frame_, last_frame_, lookback_, floor_);
     counters_.deformation_maps += runtime::this_thread_work.deformation_maps - maps;
     // What the cost criterion weighs a split against: the rays of a frame
     // (primary, and a shadow ray per light that casts shadows; reflections
@@ -128,10 +154,19 @@ Renderer::Renderer(const runtime::SceneDescription& scene, const RenderSettings&
         build.rays_per_frame = double(scene.animation.width) * scene.animation.height *
                                std::max(1, samples) * (1.0 + lights);
         build.frame_interval = std::fabs(scene.animation.clock_delta());
-        build.shutter_time = std::fabs(scene.animation.shutter * scene.animation.clock_delta());
+        build.shutter_time = std::fabs(scene.animation.exposure() * scene.animation.clock_delta());
     }
     query_ = make_ray_query(settings.mode, set, root_, build, counters_);
-    shader_ = std::make_unique<Shader>(scene, *query_);
+    LightTravel travel;
+    if (std::isfinite(settings.light_speed)) {
+        travel.time_per_distance = 1.0 / settings.light_speed;
+        travel.floor = floor_;
+    }
+    travel_ = travel;
+    const bool filtering = std::any_of(objects_.begin(), objects_.end(), [](const auto& o) {
+        return o->casts_shadow() && o->filters_light();
+    });
+    shader_ = std::make_unique<Shader>(scene, *query_, travel, filtering);
     if (scene.camera.normal) {
         runtime::Texture screen;
         screen.normal = *scene.camera.normal;
@@ -148,8 +183,11 @@ Image Renderer::render_frame(int frame) {
                                 std::to_string(last_frame_) + " this renderer was built for");
     const auto& a = scene_.animation;
     const double open = a.clock_of_frame(frame);
-    const double length = a.shutter * a.clock_delta();
-    query_->prepare_frame(std::min(open, open + length), std::max(open, open + length), counters_);
+    const double length = a.exposure() * a.clock_delta();
+    // (Light of finite speed reaches back before the shutter opens.)
+    const double first_instant = std::min(open, open + length);
+    query_->prepare_frame(lookback_ > 0.0 ? std::max(floor_, first_instant - lookback_) : first_instant,
+                          std::max(open, open + length), counters_);
 
     const int width = a.width, height = a.height;
     const int spp = std::max(1, settings_.samples_per_pixel);
@@ -188,30 +226,34 @@ Image Renderer::render_frame(int frame) {
                                   ThreadState& state) {
         const PixelSample s = pixel_sample(seed, static_cast<std::uint32_t>(index),
                                            static_cast<std::uint32_t>(count), settings_.jitter);
-        const double t = open + s.time * length;
+        const double t = a.sample_time(frame, (y + s.y) / height, s.time);
         const runtime::CameraFrame camera = moving_camera ? scene_.camera.evaluate(t) : fixed_camera;
         // POV-Ray's screen: x from -0.5 (left) to 0.5, y from 0.5 (top) to
         // -0.5; left-handed.
         const double u = (x + s.x) / width - 0.5;
         const double v = 0.5 - (y + s.y) / height;
-        const glm::dvec3 screen = camera.direction + u * camera.right + v * camera.up;
-        glm::dvec3 origin = camera.location, d;
+        const std::optional<ScreenRay> screen = camera_ray(camera, u, v);
+        // (No ray, a fisheye's corner: black, as POV-Ray's.)
+        if (!screen) return glm::dvec3(0.0);
+        glm::dvec3 origin = screen->origin, d;
         if (camera.aperture != 0.0) {
             // Focal blur: the lens point is one more pair of the sample's
-            // dimensions (its own scramble, as an area light's).
+            // dimensions (its own scramble, as an area light's). (The lens
+            // moves an orthographic ray's own origin, where POV-Ray 3.7
+            // moves every ray's to the location's lens.)
             const auto lens = padded_pair(seed, static_cast<std::uint32_t>(index), static_cast<std::uint32_t>(count),
                                           kLensPair, settings_.jitter);
-            const CameraRay ray = focal_blur_ray(camera, screen, lens_point({lens[0], lens[1]}));
-            origin = ray.origin;
+            const CameraRay ray = focal_blur_ray(camera, screen->direction, lens_point({lens[0], lens[1]}));
+            origin = screen->origin - camera.location + ray.origin;
             d = ray.direction;
         } else {
-            d = glm::normalize(screen);
+            d = glm::normalize(screen->direction);
         }
         // (A camera's normal { } bends each ray by the pattern at its point
         // on the screen, after the lens, as POV-Ray's CreateCameraRay.)
-        if (camera_normal_) d = camera_normal_->perturb(d, {u, v, 0.0}, t);
+        if (camera_normal_) d = camera_normal_->perturb(d, {screen->pattern_point, 0.0}, t);
         state.sample = {seed, static_cast<std::uint32_t>(index), static_cast<std::uint32_t>(count), settings_.jitter};
-        return shader_->trace(runtime::Ray4{Event(origin, t), Event(d, 0.0)}, state);
+        return shader_->trace(travel_.ray(origin, t, d), state);
     };
 
     // The fixed grid of tiles (the estimate's, FrameEstimate::kTile): what

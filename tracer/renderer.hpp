@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -44,6 +45,10 @@ struct RenderSettings {
     // only, so images do not depend on the thread count.
     double target_error = 0.0;
     static constexpr int kFirstRoundSamples = 8;
+    // The speed of light in scene units per clock unit (light_travel.hpp):
+    // infinite, the default, is instant light. Positive; the constructor
+    // throws std::invalid_argument otherwise.
+    double light_speed = std::numeric_limits<double>::infinity();
     BuildOptions build;
     int threads = 0;        // 0: as many as the machine has
     // Told, from a worker thread and one call at a time, each time a tile
@@ -104,6 +109,10 @@ private:
     RenderSettings settings_;
     std::vector<runtime::IntelligentObjectPtr> objects_;
     runtime::Box4 root_;
+    // Light of finite speed: how far back a frame's light reaches and the
+    // earliest instant any does (the root's).
+    double lookback_ = 0.0, floor_ = 0.0;
+    LightTravel travel_;
     int first_frame_, last_frame_;
     Counters counters_;
     std::optional<FrameEstimate> last_estimate_;

@@ -26,8 +26,8 @@ constexpr double kBailout = 1.0 / 255.0;
 
 }  // namespace
 
-Shader::Shader(const runtime::SceneDescription& scene, const RayQuery& query)
-    : query_(query), background_(scene.background), ambient_light_(scene.global.ambient_light),
+Shader::Shader(const runtime::SceneDescription& scene, const RayQuery& query, LightTravel travel, bool filtering)
+    : query_(query), travel_(travel), filtering_(filtering), background_(scene.background), ambient_light_(scene.global.ambient_light),
       max_trace_level_(std::max(1, scene.global.max_trace_level)) {
     for (const auto& l : scene.lights) lights_.emplace_back(l);
     still_ambient_ = !ambient_light_.depends_on_time();
@@ -127,7 +127,8 @@ inline void Shader::place(const ShadedLight& light, const Hit& h, ShadingScratch
     known.colour = light.colour_at(h.time) * attenuation;
 }
 
-inline bool Shader::shadowed(std::size_t index, const Hit& h, const ShadingScratch::Light& known, ThreadState& state) const {
+inline glm::dvec3 Shader::shadow_filter(std::size_t index, const Hit& h, const ShadingScratch::Light& known,
+                                        ThreadState& state) const {
     const ShadedLight& light = lights_[index];
     glm::dvec3 direction = known.to_light;
     double reach = known.reach;
@@ -139,25 +140,97 @@ inline bool Shader::shadowed(std::size_t index, const Hit& h, const ShadingScrat
                                    static_cast<std::uint32_t>(index + lights_.size() * std::size_t(h.depth)), s.jitter);
         const glm::dvec3 offset = light.area_offset({u[0], u[1]}, LightRay{known.to_light, 0.0}, h.time);
         const LightRay toward = light.ray_from(h.start, h.time, offset);
-        if (toward.direction == glm::dvec3(0.0)) return false;
+        if (toward.direction == glm::dvec3(0.0)) return glm::dvec3(1.0);
         direction = toward.direction;
         reach = toward.depth;
     }
-    if (!(reach > 0.0)) return false;
+    if (!(reach > 0.0)) return glm::dvec3(1.0);
     ++state.counters.shadow_rays;
-    return query_.occluded(Ray4{Event(h.start, h.time), Event(direction, 0.0)}, 0.0, reach, state);
+    const Ray4 ray = travel_.ray(h.start, h.time, direction);
+    // (Objects that may let light through do not block: `blocked` passes
+    // them by, and they filter what it lets pass.)
+    if (blocked(ray, reach, state)) return glm::dvec3(0.0);
+    return filtering_ ? filtered(ray, reach, h.depth, state) : glm::dvec3(1.0);
+}
+
+glm::dvec3 Shader::filtered(Ray4 ray, double reach, int depth, ThreadState& state) const {
+    // (No count in POV-Ray; this one only stops a walk that cannot end.)
+    constexpr int kMostSurfaces = 1 << 16;
+    const glm::dvec3 d = glm::dvec3(ray.direction) / glm::length(glm::dvec3(ray.direction));
+    glm::dvec3 through(1.0);
+    for (int crossed = 0; crossed < kMostSurfaces; ++crossed) {
+        const auto seen = nearest(ray, state, reach);
+        if (!seen) return through;
+        const runtime::SurfacePoint p = seen->hit.object->complete(seen->ray, seen->hit);
+        // (A no_shadow object is passed by, as POV-Ray's precondition.)
+        if (seen->hit.object->casts_shadow()) {
+            through *= transmittance(p, depth, state);
+            // POV-Ray's full shadow: below its EPSILON in every channel.
+            if (std::max({std::fabs(through.x), std::fabs(through.y), std::fabs(through.z)}) < 1.0e-10)
+                return glm::dvec3(0.0);
+        }
+        // On from just past the surface, as far as is left to the light.
+        glm::dvec3 n = p.geometric_normal;
+        if (glm::dot(n, d) < 0.0) n = -n;
+        const glm::dvec3 from = runtime::geometry::offset_ray(glm::dvec3(p.event), p.error, n);
+        reach -= glm::dot(from - glm::dvec3(ray.origin), d);
+        if (!(reach > 0.0)) return through;
+        ray = travel_.ray(from, p.event.w, d);
+        ++state.counters.shadow_rays;
+    }
+    return through;
+}
+
+glm::dvec3 Shader::transmittance(const runtime::SurfacePoint& p, int depth, ThreadState& state) const {
+    const glm::dvec3 point(p.event);
+    const double t = p.event.w;
+    const auto filter = [](const runtime::MaterialSample& m) { return m.colour * m.filter + glm::dvec3(m.transmit); };
+    if (p.texture->single_layer()) {
+        runtime::TextureSample::Layer layer;
+        p.texture->sample_layer(point, p.uv, t, p.shading_normal, layer);
+        return filter(layer.material);
+    }
+    // (The hit being lit holds depth's scratch; the recursion's next one
+    // is free until this returns.)
+    runtime::TextureSample& sample = state.shading_at(depth + 1).texture;
+    sample.clear();
+    p.texture->sample(point, p.uv, t, p.shading_normal, sample);
+    glm::dvec3 sum(0.0);
+    for (const runtime::TextureSample::Plain& plain : sample.plains) {
+        glm::dvec3 product(1.0);
+        for (std::size_t i = plain.first; i < plain.first + plain.count; ++i) product *= filter(sample.layers[i].material);
+        sum += plain.weight * product;
+    }
+    return sum;
+}
+
+std::optional<Shader::Seen> Shader::nearest(const Ray4& ray, ThreadState& state, double s_max) const {
+    const double s_floor = LightTravel::floor_parameter(ray, travel_.floor);
+    if (auto hit = query_.first_hit(ray, 0.0, std::min(s_max, s_floor), state)) return Seen{ray, *hit};
+    if (s_floor >= s_max) return std::nullopt;
+    const Ray4 held = LightTravel::held_piece(ray, s_floor, travel_.floor);
+    if (auto hit = query_.first_hit(held, 0.0, s_max - s_floor, state)) return Seen{held, *hit};
+    return std::nullopt;
+}
+
+bool Shader::blocked(const Ray4& ray, double reach, ThreadState& state) const {
+    const double s_floor = LightTravel::floor_parameter(ray, travel_.floor);
+    if (s_floor >= reach) return query_.occluded(ray, 0.0, reach, state);
+    if (query_.occluded(ray, 0.0, s_floor, state)) return true;
+    const Ray4 held = LightTravel::held_piece(ray, s_floor, travel_.floor);
+    return query_.occluded(held, 0.0, reach - s_floor, state);
 }
 
 glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, ThreadState& state) const {
     const double t = ray.origin.w;
-    const auto hit = query_.first_hit(ray, 0.0, std::numeric_limits<double>::infinity(), state);
+    const auto seen = nearest(ray, state);
     // (A ray that hits nothing goes POV-Ray's BOUND_HUGE, 2e10, through fog.)
-    if (!hit) {
-        const glm::dvec3 seen = sky(glm::normalize(glm::dvec3(ray.direction)), t);
-        return fogs_.empty() ? seen : fogged(seen, ray, 2.0e10);
+    if (!seen) {
+        const glm::dvec3 colour = sky(glm::normalize(glm::dvec3(ray.direction)), t);
+        return fogs_.empty() ? colour : fogged(colour, ray, 2.0e10);
     }
-    const runtime::SurfacePoint p = hit->object->complete(ray, *hit);
-    Hit h{ray, p, depth, weight};
+    const runtime::SurfacePoint p = seen->hit.object->complete(seen->ray, seen->hit);
+    Hit h{seen->ray, p, depth, weight};
     h.d = glm::normalize(glm::dvec3(ray.direction));
     h.point = glm::dvec3(p.event);
     h.time = p.event.w;
@@ -228,8 +301,11 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
             if (cosine <= 0.0) continue;
             if (known.state == ShadingScratch::Light::State::Placed) {
                 known.state = ShadingScratch::Light::State::Seen;
-                if (!light.shadowless() && shadowed(i, h, known, state))
-                    known.state = ShadingScratch::Light::State::Shadowed;
+                if (!light.shadowless()) {
+                    const glm::dvec3 through = shadow_filter(i, h, known, state);
+                    if (through == glm::dvec3(0.0)) known.state = ShadingScratch::Light::State::Shadowed;
+                    else if (through != glm::dvec3(1.0)) known.colour *= through;
+                }
             }
             if (known.state == ShadingScratch::Light::State::Shadowed) continue;
             // (POV-Ray's default brilliance 1 needs no pow.)
@@ -281,7 +357,7 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
                                     ? runtime::geometry::offset_ray(h.point, h.p.error, -h.geometric)
                                     : h.start;
         ++state.counters.refracted_rays;
-        const Ray4 next{Event(from, h.time), Event(out, 0.0)};
+        const Ray4 next = travel_.ray(from, h.time, out);
         const glm::dvec3 behind = radiance(next, h.depth + 1, through_weight, state);
         colour += total_internal_reflection ? behind : behind * through;
     }
@@ -297,7 +373,7 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
                                       std::max({reflection.x, reflection.y, reflection.z});
         if (reflect_weight < kBailout) continue;
         ++state.counters.reflected_rays;
-        const Ray4 reflected{Event(h.start, h.time), Event(reflect(h.d, layer.normal, h.raw), 0.0)};
+        const Ray4 reflected = travel_.ray(h.start, h.time, reflect(h.d, layer.normal, h.raw));
         colour += reflection * radiance(reflected, h.depth + 1, reflect_weight, state);
     }
     return colour;

@@ -13,12 +13,15 @@
 // ray aims at one point of its grid per sample.
 #pragma once
 
+#include <limits>
+
 #include <glm/vec3.hpp>
 
 #include "runtime/scene.hpp"
 #include "runtime/texture_evaluator.hpp"
 #include "runtime/spacetime.hpp"
 #include "tracer/light.hpp"
+#include "tracer/light_travel.hpp"
 #include "tracer/ray_query.hpp"
 #include "tracer/thread_state.hpp"
 
@@ -26,7 +29,13 @@ namespace hexant::tracer {
 
 class Shader {
 public:
-    Shader(const runtime::SceneDescription& scene, const RayQuery& query);
+    // `travel`: how rays run back in time as they go (light_travel.hpp;
+    // the default, instant light, as before).
+    // `filtering`: whether some object that casts shadows may let light
+    // through (IntelligentObject::filters_light); without one, a shadow ray
+    // asks only whether it is blocked.
+    Shader(const runtime::SceneDescription& scene, const RayQuery& query, LightTravel travel = {},
+           bool filtering = false);
 
     // The colour seen along a primary ray.
     glm::dvec3 trace(const runtime::Ray4& ray, ThreadState& state) const {
@@ -37,6 +46,17 @@ public:
 private:
     glm::dvec3 radiance(const runtime::Ray4& ray, int depth, double weight,
                         ThreadState& state) const;
+    // The nearest hit along `ray` and the ray it is on: `ray` itself, or,
+    // for light that would run back past the floor, its held piece
+    // (light_travel.hpp).
+    struct Seen {
+        runtime::Ray4 ray;
+        runtime::ObjectHit hit;
+    };
+    std::optional<Seen> nearest(const runtime::Ray4& ray, ThreadState& state,
+                                double s_max = std::numeric_limits<double>::infinity()) const;
+    // Whether anything lies on `ray` within (0, reach], both pieces.
+    bool blocked(const runtime::Ray4& ray, double reach, ThreadState& state) const;
     // A hit being shaded: the ray's unit direction, the event, the raw
     // normal (shading, turned to face the viewer), the geometric one (so
     // turned too), where secondary rays start, and the ray's depth and
@@ -58,10 +78,22 @@ private:
     // Where a light lies from the hit, or that it does not shine there.
     [[gnu::always_inline]] inline void place(const ShadedLight& light, const Hit& h,
                                              ShadingScratch::Light& known) const;
-    // Whether the shadow ray from the hit toward light `index` (an area
-    // light: toward its grid point for this sample) meets anything.
-    [[gnu::always_inline]] inline bool shadowed(std::size_t index, const Hit& h, const ShadingScratch::Light& known,
-                                                ThreadState& state) const;
+    // What of light `index` reaches the hit along its shadow ray (an area
+    // light: toward its grid point for this sample), per channel: 1 when
+    // nothing is in the way, 0 when something opaque is, else the product
+    // of the filters of the surfaces crossed.
+    [[gnu::always_inline]] inline glm::dvec3 shadow_filter(std::size_t index, const Hit& h,
+                                                           const ShadingScratch::Light& known,
+                                                           ThreadState& state) const;
+    // POV-Ray 3.7's filtered shadows (TracePointLightShadowRay,
+    // ComputeShadowColour): along a shadow ray that nothing opaque blocks,
+    // each surface of an object that casts shadows, nearest first, filters
+    // the light by its texture there; `depth` picks the scratch texture.
+    glm::dvec3 filtered(runtime::Ray4 ray, double reach, int depth, ThreadState& state) const;
+    // A surface's filter: per plain texture the product over its layers of
+    // colour x filter + transmit, blended by the plain textures' weights
+    // (ComputeShadowTexture, ComputeOneTextureColour).
+    glm::dvec3 transmittance(const runtime::SurfacePoint& p, int depth, ThreadState& state) const;
     // How much shows through the layers above layer `index` (POV-Ray's trans).
     static double layer_trans(const runtime::TextureSample::Layer* layers, std::size_t index);
     // The direction reflected about `normal`, kept above the surface whose
@@ -74,6 +106,8 @@ private:
     glm::dvec3 fogged(const glm::dvec3& colour, const runtime::Ray4& ray, double depth) const;
 
     const RayQuery& query_;
+    LightTravel travel_;
+    bool filtering_ = false;
     std::vector<ShadedLight> lights_;
     runtime::ColourFunction background_;
     // The sky sphere's pigments, the last written first (on top).

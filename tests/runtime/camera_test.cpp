@@ -237,3 +237,49 @@ TEST_CASE("focal blur: the focal distance from focal_point before the transforms
     f = c.evaluate(0.0);
     CHECK(f.focal_distance == Approx(1.33 / std::tan(30.0 * 3.14159265358979323846 / 180.0) / 2.0));
 }
+
+TEST_CASE("the focal distance without a focal_point is POV-Ray's Direction_Length", "[runtime][camera]") {
+    // Parse_Camera's Direction_Length is 1 unless angle or look_at set it:
+    // a direction given alone does not (hexant took its length before).
+    CameraRecord c;
+    c.items = {loc({0, 0, -5}), dir({0, 0, 3})};
+    CHECK(c.evaluate(0.0).focal_distance == 1.0);
+    c.items.push_back(look({0, 0, 0}));
+    CHECK(c.evaluate(0.0).focal_distance == Approx(3.0));
+}
+
+TEST_CASE("camera types: the orthographic resize and the wide projections' angles", "[runtime][camera]") {
+    CameraItem type;
+    type.kind = CameraItem::Kind::Type;
+    // Orthographic with neither up nor right: right and up scaled by
+    // |look_at - location| / |direction| (POV-Ray's Parse_Camera).
+    type.type = CameraType::Orthographic;
+    CameraRecord ortho;
+    ortho.items = {type, loc({0, 0, -8}), look({0, 0, 0})};
+    CameraFrame f = ortho.evaluate(0.0);
+    CHECK(glm::length(f.right) == Approx(1.33 * 8.0));
+    CHECK(glm::length(f.up) == Approx(8.0));
+    // ... not when up or right is given, unless an angle is.
+    ortho.items.push_back(up({0, 2, 0}));
+    f = ortho.evaluate(0.0);
+    CHECK(glm::length(f.up) == Approx(2.0));
+    ortho.items.push_back(angle(TimeFunction(90.0)));
+    f = ortho.evaluate(0.0);
+    // (angle 90: direction 1.33 / 2, then the resize by 8 / 0.665.)
+    CHECK(glm::length(f.up) == Approx(2.0 * 8.0 / (1.33 / 2.0)));
+    // Spherical: angle H alone gives V = H / 2; a fisheye keeps its angle
+    // and its direction (angle sets direction's length only on the flat
+    // projections), and may be wider than 180.
+    type.type = CameraType::Spherical;
+    CameraRecord sphere;
+    sphere.items = {type, angle(TimeFunction(300.0))};
+    f = sphere.evaluate(0.0);
+    CHECK(f.h_angle == 300.0);
+    CHECK(f.v_angle == 150.0);
+    type.type = CameraType::Fisheye;
+    CameraRecord fish;
+    fish.items = {type, angle(TimeFunction(200.0))};
+    f = fish.evaluate(0.0);
+    CHECK(f.angle == 200.0);
+    CHECK(f.direction == glm::dvec3(0, 0, 1));
+}

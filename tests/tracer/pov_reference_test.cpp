@@ -330,6 +330,17 @@ TEST_CASE("spotlights, cylinder lights and fading lights agree with POV-Ray 3.7'
     check_stills("lights", "spot", {"0", "0.5"});
 }
 
+TEST_CASE("shadows filtered by transparent objects agree with POV-Ray 3.7's", "[tracer][pov]") {
+    // lights/filtered.pov: a filtering ball (both its surfaces filter), a
+    // transmitting box, a half-clear checker pane, a layered texture, a
+    // texture_map half opaque, a clear ball with no_shadow, moving with
+    // clock, under two lights. The still's tolerance: 1 and 2 pixels beyond
+    // 2 steps (edges) when this was written; a systematic fault (opaque
+    // shadows, one filter per object instead of per surface) moves every
+    // pixel of those shadows, hundreds.
+    check_stills("lights", "filtered", {"0", "0.5"});
+}
+
 TEST_CASE("area lights' soft shadows agree with POV-Ray 3.7's", "[tracer][pov]") {
     // lights/area.pov: a rectangular 5 x 5 area light and a circular,
     // oriented 4 x 4 one, both moving with clock. POV-Ray's image is its
@@ -395,6 +406,18 @@ TEST_CASE("focal blur agrees with POV-Ray 3.7's", "[tracer][pov]") {
         CHECK(a.mean < 1.2);
         CHECK(a.total - a.within <= a.total * 12 / 100);
     }
+}
+
+TEST_CASE("orthographic, fisheye, panoramic and spherical cameras agree with POV-Ray 3.7's", "[tracer][pov][camera]") {
+    // camera/*.pov: each projection with parameters that move with clock
+    // (an orthographic view resized as POV-Ray resizes it, one sized by
+    // right and up, a fisheye widening past 180 degrees, a panoramic
+    // camera turning, a spherical one's angles changing). The still's
+    // tolerance: every pixel was exact when this was written; a half-pixel
+    // shift, a flipped axis or an angle taken in the wrong unit moves
+    // hundreds.
+    for (const char* name : {"orthographic", "orthographic_sized", "fisheye", "panoramic", "spherical"})
+        check_stills("camera", name, {"0", "0.5"});
 }
 
 TEST_CASE("crackle agrees with POV-Ray 3.7's", "[tracer][pov][pattern]") {
