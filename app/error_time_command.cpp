@@ -82,6 +82,7 @@ std::string file_text(const fs::path& path) {
 std::string reference_key(const ErrorTimeArguments& args, const runtime::SceneDescription& scene,
                           int frame, int reference_spp) {
     std::ostringstream key;
+    key.precision(17);  // (two shutters that print alike at 6 digits differ)
     for (const auto& file : args.scene.files) {
         const fs::path path = file.substr(0, file.find('['));
         key << file << '\n' << file_text(path) << '\n';
@@ -90,8 +91,13 @@ std::string reference_key(const ErrorTimeArguments& args, const runtime::SceneDe
         << " spp " << reference_spp << " shutter " << scene.animation.shutter << " clock "
         << scene.animation.initial_clock << ':' << scene.animation.final_clock << " frames "
         << scene.animation.initial_frame << ':' << scene.animation.final_frame << " cyclic "
-        << scene.animation.cyclic;
+        << scene.animation.cyclic << " rolling " << scene.animation.rolling_shutter << " curve";
+    // (Every key of the shutter's curve, to the last bit; a box is keyless.)
+    if (!scene.animation.shutter_curve.is_box())
+        for (const auto& k : scene.animation.shutter_curve.keys()) key << ' ' << std::hexfloat << k.u << ':' << k.weight;
+    key << std::defaultfloat;  // (precision 17 still)
     for (const auto& d : args.scene.declares) key << " declare " << d;
+    for (const auto& path : args.scene.include_paths) key << " include " << path;
     std::ostringstream hex;
     hex << std::hex << std::setw(16) << std::setfill('0') << std::hash<std::string>{}(key.str());
     return hex.str();

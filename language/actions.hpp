@@ -2,6 +2,7 @@
 // the grammar. They work on the Interpreter's value stack and block stack.
 #pragma once
 
+#include <algorithm>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -1861,6 +1862,13 @@ HEXANT_ACTION(object_ignored_block) {
 HEXANT_ACTION(light_arguments) {
     HEXANT_APPLY {
         std::vector<Value> args = st.close_frame();
+        // light_source { L modifiers }: a copy of the declared light, as
+        // POV-Ray's Parse_Light_Source starts from a LIGHT_SOURCE_ID.
+        if (args[0].is<runtime::LightRecord>()) {
+            if (args.size() > 1) throw ValueError("a declared light_source takes modifiers after it, not a colour");
+            st.blocks.emplace_back(args[0].as<runtime::LightRecord>());
+            return;
+        }
         runtime::LightRecord light;
         light.position = to_vector3(args[0], "the light's position");
         if (args.size() > 1) light.colour = to_colour(args[1], "the light's colour");
@@ -1939,8 +1947,34 @@ HEXANT_ACTION(area_light) {
         light.area = std::move(area);
     }
 };
-HEXANT_ACTION(light_looks_like) {
+HEXANT_ACTION(light_projected_through) {
     HEXANT_APPLY { st.warn(in.position(), word(in) + " { } is read and ignored"); }
+};
+// POV-Ray's Parse_Light_Source: the object is moved to the light's centre,
+// then its modifiers apply (a scale inside looks_like { } scales about the
+// origin, after the move), then the light's own transforms
+// (Interpreter::add_light).
+HEXANT_ACTION(looks_like_base) {
+    HEXANT_APPLY {
+        action<g::object_base>::apply(in, st);
+        if (st.blocks.size() < 2 || !std::holds_alternative<runtime::LightRecord>(st.blocks[st.blocks.size() - 2]) ||
+            !std::holds_alternative<runtime::ObjectRecord>(st.blocks.back()))
+            throw ValueError("looks_like { } needs an object");
+        const auto& light = std::get<runtime::LightRecord>(st.blocks[st.blocks.size() - 2]);
+        std::get<runtime::ObjectRecord>(st.blocks.back())
+            .transform.append(runtime::TransformStep{runtime::TransformKind::Translate, light.position, {}, {}, false});
+    }
+};
+HEXANT_ACTION(light_looks_like) {
+    HEXANT_APPLY {
+        // (The object's block, closed as object { } closes.)
+        finish_object::apply(in, st);
+        Value v = st.pop();
+        if (!v.is<runtime::ObjectPtr>()) throw ValueError("looks_like { } needs an object, not a " + type_name(v));
+        auto& light = st.block<runtime::LightRecord>(in.position(), "looks_like");
+        if (light.looks_like) throw ValueError("only one looks_like is allowed per light_source (POV-Ray's rule)");
+        light.looks_like = v.as<runtime::ObjectPtr>();
+    }
 };
 template <> struct action<g::light_block> : finish_object {};
 
@@ -1981,9 +2015,13 @@ HEXANT_ACTION(camera_type) {
     HEXANT_APPLY {
         const std::string name = word(in);
         auto& camera = st.block<runtime::CameraRecord>(in.position(), name.c_str());
-        // POV-Ray reads the type before any other item, and not at all
-        // after a camera identifier (then only transforms may follow).
-        if (!camera.items.empty() || !camera.pieces.empty() || camera.normal)
+        // POV-Ray reads the type before any other item (the last of several
+        // types in a row wins), and not at all after a camera identifier
+        // (then only transforms may follow).
+        const bool only_types = std::all_of(camera.items.begin(), camera.items.end(), [](const auto& item) {
+            return item.kind == runtime::CameraItem::Kind::Type;
+        });
+        if (!only_types || !camera.pieces.empty() || camera.normal)
             throw ValueError("the camera's type (" + name + ") must come first in camera { }, before its other "
                              "items and not after a declared camera (as POV-Ray requires)");
         runtime::CameraItem item;
@@ -2350,7 +2388,7 @@ HEXANT_ACTION(scene_object) {
         if (v.is<runtime::LightRecord>()) {
             if (auto problem = runtime::bad_parameter(v.as<runtime::LightRecord>(), st.scene.animation))
                 throw ValueError(*problem);
-            st.scene.lights.push_back(v.as<runtime::LightRecord>());
+            st.add_light(v.as<runtime::LightRecord>(), in.position());
         } else if (v.is<runtime::ObjectPtr>()) {
             st.add_object(v.as<runtime::ObjectPtr>(), in.position());
         } else if (v.is<Unevaluated>()) {

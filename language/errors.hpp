@@ -94,6 +94,7 @@ HEXANT_ERROR(shape_argument, "expected a parameter");
 HEXANT_ERROR(first_shape_argument, "expected a parameter");
 HEXANT_ERROR(object_close, "expected '}' or a modifier that belongs in this object");
 HEXANT_ERROR(object_base, "expected an object or a declared object's name");
+HEXANT_ERROR(looks_like_base, "expected an object or a declared object's name");
 HEXANT_ERROR(light_arguments, "expected the light's position and colour");
 HEXANT_ERROR(light_setting_value, "expected a value after the light setting");
 HEXANT_ERROR(area_light_argument, "expected area_light <axis1>, <axis2>, size1, size2");

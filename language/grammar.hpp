@@ -892,12 +892,17 @@ struct area_light
     : p::seq<TAO_PEGTL_KEYWORD("area_light"), ws, frame_open, p::must<area_light_argument>,
              p::opt<comma>, p::must<area_light_argument>, p::opt<comma>,
              p::must<area_light_argument>, p::opt<comma>, p::must<area_light_argument>> {};
+// looks_like { OBJECT modifiers }, as object { }; POV-Ray moves the object
+// to the light before its modifiers (looks_like_base).
+struct looks_like_base : object_base {};
 struct light_looks_like
-    : p::seq<p::sor<TAO_PEGTL_KEYWORD("looks_like"), TAO_PEGTL_KEYWORD("projected_through")>, ws,
-             p::must<skipped_block>, ws> {};
+    : p::seq<TAO_PEGTL_KEYWORD("looks_like"), ws, p::must<lbrace>, p::must<looks_like_base>, object_modifiers,
+             p::must<object_close>> {};
+struct light_projected_through
+    : p::seq<TAO_PEGTL_KEYWORD("projected_through"), ws, p::must<skipped_block>, ws> {};
 struct light_item
     : p::sor<directive<light_item>, macro_call<light_item>, light_flag, light_setting,
-             area_light, light_looks_like, transformation> {};
+             area_light, light_looks_like, light_projected_through, transformation> {};
 struct light_block
     : p::seq<kw_light_source, p::must<lbrace>, p::must<light_arguments>, p::star<light_item>,
              p::must<object_close>> {};

@@ -716,8 +716,28 @@ void Interpreter::add_object(const runtime::ObjectPtr& object, const p::position
         fail(where, e.what());
     }
     check_parameters(*object, where);
-    collect_lights(*object, scene.lights);
+    std::vector<runtime::LightRecord> lights;
+    collect_lights(*object, lights);
     scene.objects.push_back(object);
+    for (auto& light : lights) add_light(std::move(light), where);
+}
+
+void Interpreter::add_light(runtime::LightRecord light, const p::position& where) {
+    if (light.looks_like) {
+        // POV-Ray's Parse_Light_Source: the object moved to the light's
+        // centre and through its own modifiers (as it was read), no_shadow,
+        // then transformed with the light. (POV-Ray moves it to the centre
+        // as the transforms written before looks_like left it, without
+        // turning it by them; hexant turns it by every transform of the
+        // light.)
+        runtime::ObjectRecord placed = *light.looks_like;
+        placed.transform.append(light.transform);
+        placed.no_shadow = true;
+        placed.lifetime = placed.lifetime.intersect(light.lifetime);
+        light.looks_like.reset();
+        add_object(std::make_shared<const runtime::ObjectRecord>(std::move(placed)), where);
+    }
+    scene.lights.push_back(std::move(light));
 }
 
 void fill_array(Array& array, const Array& list, std::size_t dimension, std::size_t& next) {

@@ -156,6 +156,9 @@ public:
     // A finished top-level object joins the scene; its lights join the
     // scene's lights, and a pattern hexant lacks is an error here, where used.
     void add_object(const runtime::ObjectPtr& object, const p::position& where);
+    // Adds a light to the scene, and its looks_like object (placed at the
+    // light, through its transforms, casting no shadow).
+    void add_light(runtime::LightRecord light, const p::position& where);
     // Throws SceneError at the object's place (or its part's) when a
     // parameter is NaN, infinite or degenerate at some instant of the
     // animation (runtime/parameter_check.hpp); `where` is the item that

@@ -44,15 +44,25 @@ struct Animation {
     // The fraction of clock_delta a frame's samples span: its rows' shutter
     // openings spread over rolling_shutter, each open for `shutter`.
     double exposure() const { return shutter + rolling_shutter; }
-    // The time of a sample of frame k: at `row` (0 top edge, 1 bottom) of
-    // the image and `when` (a uniform coordinate in [0, 1)) of its shutter,
-    // warped by the shutter curve.
-    double sample_time(int frame, double row, double when) const {
-        // (Summed in this order so that a box shutter without rolling gives
-        // the very doubles it always gave: open + when (shutter delta).)
-        return clock_of_frame(frame) + shutter_curve.warp(when) * (shutter * clock_delta()) +
-               row * (rolling_shutter * clock_delta());
+    // When frame k's samples fall: its opening, how long its shutter is
+    // open and how long its rows take to open, in clock units, and the
+    // curve. at(row, when): the time of a sample at `row` (0 top edge, 1
+    // bottom) of the image and `when` (a uniform coordinate in [0, 1)) of
+    // its shutter. (Summed in this order so that a box shutter without
+    // rolling gives the very doubles it always gave: open + when
+    // (shutter delta).)
+    struct FrameClock {
+        double open, shutter_length, rolling_length;
+        const ShutterCurve* curve;
+        double at(double row, double when) const {
+            return open + curve->warp(when) * shutter_length + row * rolling_length;
+        }
+    };
+    FrameClock frame_clock(int frame) const {
+        const double delta = clock_delta();
+        return {clock_of_frame(frame), shutter * delta, rolling_shutter * delta, &shutter_curve};
     }
+    double sample_time(int frame, double row, double when) const { return frame_clock(frame).at(row, when); }
 };
 
 }  // namespace hexant::runtime

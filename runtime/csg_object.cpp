@@ -6,7 +6,9 @@
 namespace hexant::runtime {
 
 CsgObject::CsgObject(Csg::Kind kind, std::vector<IntelligentObjectPtr> children, bool inverse)
-    : kind_(kind), children_(std::move(children)), inverse_(inverse) {}
+    : kind_(kind), children_(std::move(children)), inverse_(inverse) {
+    full_shadow_ = casts_shadow() && !filters_light();
+}
 
 bool CsgObject::bounded() const {
     switch (kind_) {

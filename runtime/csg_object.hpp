@@ -36,6 +36,7 @@ public:
     // A group casts a shadow where any child does (no_shadow passes down).
     bool casts_shadow() const override;
     bool filters_light() const override;
+    bool casts_full_shadow() const override { return full_shadow_; }
 
     Csg::Kind kind() const { return kind_; }
     const std::vector<IntelligentObjectPtr>& children() const { return children_; }
@@ -48,6 +49,7 @@ private:
 
   Csg::Kind kind_;
   std::vector<IntelligentObjectPtr> children_;
+  bool full_shadow_ = true;
   bool inverse_;
 };
 

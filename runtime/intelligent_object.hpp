@@ -136,6 +136,9 @@ public:
     // stop at it (`occluded` passes it by) but takes the colour of each of
     // its surfaces it crosses (tracer/shader.cpp, filtered shadows).
     virtual bool filters_light() const { return false; }
+    // casts_shadow() and not filters_light(): what the any-hit shadow query
+    // asks of every object it meets (one call).
+    virtual bool casts_full_shadow() const { return casts_shadow() && !filters_light(); }
 };
 
 using IntelligentObjectPtr = std::unique_ptr<IntelligentObject>;

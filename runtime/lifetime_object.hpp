@@ -44,6 +44,7 @@ public:
     bool deformed() const override { return inner_->deformed(); }
     bool casts_shadow() const override { return inner_->casts_shadow(); }
     bool filters_light() const override { return inner_->filters_light(); }
+    bool casts_full_shadow() const override { return inner_->casts_full_shadow(); }
 
 private:
     // Calls f(lo, hi) for each span of the ray's parameter in (s_min, s_max)

@@ -1,6 +1,7 @@
 // A light source record after POV-Ray's light_source.
 #pragma once
 
+#include <memory>
 #include <optional>
 
 #include "runtime/lifetime.hpp"
@@ -23,8 +24,15 @@ struct AreaLight {
 
 enum class LightKind { Point, Spotlight, Cylinder };
 
+struct ObjectRecord;
+
 struct LightRecord {
     Vector3Function position;
+    // looks_like { OBJECT }: what the light looks like, as POV-Ray places
+    // it: at the light's position, then through the light's transforms,
+    // casting no shadow (language/interpreter.cpp adds it to the scene
+    // with the light).
+    std::shared_ptr<const ObjectRecord> looks_like;
     ColourFunction colour;
     // POV-Ray's fill light: no shadow, no highlights.
     bool shadowless = false;

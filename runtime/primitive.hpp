@@ -94,6 +94,7 @@ public:
     bool deformed() const override { return !motion_.is_affine(); }
     bool casts_shadow() const override { return !options_.no_shadow; }
     bool filters_light() const override { return filters_light_; }
+    bool casts_full_shadow() const override { return !options_.no_shadow && !filters_light_; }
 
     void bound(const Box4& region, std::vector<SlabBound>& out) const override {
         if constexpr (kUnbounded) return;
@@ -352,6 +353,12 @@ private:
         return hit;
     }
 
+    // The most times a chord's hit on a surface that changes along the ray
+    // is solved again at the hit's own instant (chord_hit below): a
+    // contraction by v / c per step meets its fixed point in the doubles
+    // long before, unless the surface outruns light.
+    static constexpr int kMostRefinements = 40;
+
     // The ray's image in object space is a curve: the deformation bends it,
     // or the ray's time runs along it through a moving frame.
     std::optional<ObjectHit> intersect_curved(const Ray4& ray, double s_min, double s_max,
@@ -414,7 +421,23 @@ private:
         const auto chord_hit = [&](const geometry::Ray3& chord, double u0, double u1,
                                    const Interval& s) {
             if (fixed) return geometry::intersect(*fixed_geometry, chord, u0, u1);
-            return geometry::intersect(model_.at(time_over(s).mid()), chord, u0, u1);
+            // The surface at the piece's middle instant, then again at the
+            // instant of the hit that gives, until the hit and its instant
+            // agree: the event must lie on the surface as it stands at the
+            // event's own time, or a ray leaving it (a shadow ray running
+            // back in time) meets it again just behind its start, as it
+            // stood a fraction of a piece earlier, and shadows itself. Each
+            // step shrinks the disagreement by about (v / c) / cos, the
+            // surface's speed over light's against the incidence.
+            auto hit = geometry::intersect(model_.at(time_over(s).mid()), chord, u0, u1);
+            double used = std::numeric_limits<double>::quiet_NaN();
+            for (int refine = 0; hit && refine < kMostRefinements; ++refine) {
+                const double u = std::clamp(hit->s, 0.0, 1.0);
+                if (u == used) break;
+                used = u;
+                hit = geometry::intersect(model_.at(ow + (s.lo + u * (s.hi - s.lo)) * dw), chord, u0, u1);
+            }
+            return hit;
         };
         const auto found = first_hit_on_curve(a, b, size, box_over, point_at, may_meet, chord_hit);
         if (!found || !(found->s > s_min && found->s < s_max)) return std::nullopt;

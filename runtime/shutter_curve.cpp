@@ -65,8 +65,7 @@ ShutterCurve ShutterCurve::parse(const std::string& text) {
     return ShutterCurve(std::move(keys));
 }
 
-double ShutterCurve::warp(double x) const {
-    if (box_) return x;
+double ShutterCurve::warp_keys(double x) const {
     const double target = std::clamp(x, 0.0, 1.0) * area_.back();
     // The segment whose integral holds the target (the first, among
     // segments of no area, whose end reaches it).

@@ -37,9 +37,10 @@ public:
     // The instant in [0, 1] of the open interval for the uniform sample
     // coordinate x in [0, 1]: W^-1(x W(1)) with W(u) the integral of w
     // from 0. x itself for the box.
-    double warp(double x) const;
+    double warp(double x) const { return box_ ? x : warp_keys(x); }
 
 private:
+    double warp_keys(double x) const;
     std::vector<Key> keys_{{0.0, 1.0}, {1.0, 1.0}};
     std::vector<double> area_;  // W at each key
     bool box_ = true;

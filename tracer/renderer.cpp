@@ -184,6 +184,7 @@ Image Renderer::render_frame(int frame) {
     const auto& a = scene_.animation;
     const double open = a.clock_of_frame(frame);
     const double length = a.exposure() * a.clock_delta();
+    const runtime::Animation::FrameClock frame_clock = a.frame_clock(frame);
     // (Light of finite speed reaches back before the shutter opens.)
     const double first_instant = std::min(open, open + length);
     query_->prepare_frame(lookback_ > 0.0 ? std::max(floor_, first_instant - lookback_) : first_instant,
@@ -226,16 +227,29 @@ Image Renderer::render_frame(int frame) {
                                   ThreadState& state) {
         const PixelSample s = pixel_sample(seed, static_cast<std::uint32_t>(index),
                                            static_cast<std::uint32_t>(count), settings_.jitter);
-        const double t = a.sample_time(frame, (y + s.y) / height, s.time);
-        const runtime::CameraFrame camera = moving_camera ? scene_.camera.evaluate(t) : fixed_camera;
+        const double t = frame_clock.at((y + s.y) / height, s.time);
+        std::optional<runtime::CameraFrame> moved;
+        if (moving_camera) moved.emplace(scene_.camera.evaluate(t));
+        const runtime::CameraFrame& camera = moving_camera ? *moved : fixed_camera;
         // POV-Ray's screen: x from -0.5 (left) to 0.5, y from 0.5 (top) to
         // -0.5; left-handed.
         const double u = (x + s.x) / width - 0.5;
         const double v = 0.5 - (y + s.y) / height;
-        const std::optional<ScreenRay> screen = camera_ray(camera, u, v);
-        // (No ray, a fisheye's corner: black, as POV-Ray's.)
-        if (!screen) return glm::dvec3(0.0);
-        glm::dvec3 origin = screen->origin, d;
+        // (The pinhole's ray here, the other projections' out of line: no
+        // optional in the common case.)
+        glm::dvec3 origin = camera.location, direction;
+        glm::dvec2 pattern_point(u, v);
+        if (camera.type == runtime::CameraType::Perspective) {
+            direction = camera.direction + u * camera.right + v * camera.up;
+        } else {
+            const std::optional<ScreenRay> screen = projected_camera_ray(camera, u, v);
+            // (No ray, a fisheye's corner: black, as POV-Ray's.)
+            if (!screen) return glm::dvec3(0.0);
+            origin = screen->origin;
+            direction = screen->direction;
+            pattern_point = screen->pattern_point;
+        }
+        glm::dvec3 d;
         if (camera.aperture != 0.0) {
             // Focal blur: the lens point is one more pair of the sample's
             // dimensions (its own scramble, as an area light's). (The lens
@@ -243,15 +257,15 @@ Image Renderer::render_frame(int frame) {
             // moves every ray's to the location's lens.)
             const auto lens = padded_pair(seed, static_cast<std::uint32_t>(index), static_cast<std::uint32_t>(count),
                                           kLensPair, settings_.jitter);
-            const CameraRay ray = focal_blur_ray(camera, screen->direction, lens_point({lens[0], lens[1]}));
-            origin = screen->origin - camera.location + ray.origin;
+            const CameraRay ray = focal_blur_ray(camera, direction, lens_point({lens[0], lens[1]}));
+            origin = origin - camera.location + ray.origin;
             d = ray.direction;
         } else {
-            d = glm::normalize(screen->direction);
+            d = glm::normalize(direction);
         }
         // (A camera's normal { } bends each ray by the pattern at its point
         // on the screen, after the lens, as POV-Ray's CreateCameraRay.)
-        if (camera_normal_) d = camera_normal_->perturb(d, {screen->pattern_point, 0.0}, t);
+        if (camera_normal_) d = camera_normal_->perturb(d, {pattern_point, 0.0}, t);
         state.sample = {seed, static_cast<std::uint32_t>(index), static_cast<std::uint32_t>(count), settings_.jitter};
         return shader_->trace(travel_.ray(origin, t, d), state);
     };

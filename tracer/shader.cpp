@@ -127,6 +127,27 @@ inline void Shader::place(const ShadedLight& light, const Hit& h, ShadingScratch
     known.colour = light.colour_at(h.time) * attenuation;
 }
 
+inline std::optional<runtime::ObjectHit> Shader::nearest(const Ray4& ray, Ray4& on, ThreadState& state,
+                                                        double s_max) const {
+    if (ray.direction.w == 0.0) return query_.first_hit(ray, 0.0, s_max, state);
+    ++state.counters.travelling_rays;
+    const double s_floor = LightTravel::floor_parameter(ray, travel_.floor);
+    if (auto hit = query_.first_hit(ray, 0.0, std::min(s_max, s_floor), state)) return hit;
+    if (s_floor >= s_max) return std::nullopt;
+    on = LightTravel::held_piece(ray, s_floor, travel_.floor);
+    return query_.first_hit(on, 0.0, s_max - s_floor, state);
+}
+
+inline bool Shader::blocked(const Ray4& ray, double reach, ThreadState& state) const {
+    if (ray.direction.w == 0.0) return query_.occluded(ray, 0.0, reach, state);
+    ++state.counters.travelling_rays;
+    const double s_floor = LightTravel::floor_parameter(ray, travel_.floor);
+    if (s_floor >= reach) return query_.occluded(ray, 0.0, reach, state);
+    if (query_.occluded(ray, 0.0, s_floor, state)) return true;
+    const Ray4 held = LightTravel::held_piece(ray, s_floor, travel_.floor);
+    return query_.occluded(held, 0.0, reach - s_floor, state);
+}
+
 inline glm::dvec3 Shader::shadow_filter(std::size_t index, const Hit& h, const ShadingScratch::Light& known,
                                         ThreadState& state) const {
     const ShadedLight& light = lights_[index];
@@ -159,11 +180,13 @@ glm::dvec3 Shader::filtered(Ray4 ray, double reach, int depth, ThreadState& stat
     const glm::dvec3 d = glm::dvec3(ray.direction) / glm::length(glm::dvec3(ray.direction));
     glm::dvec3 through(1.0);
     for (int crossed = 0; crossed < kMostSurfaces; ++crossed) {
-        const auto seen = nearest(ray, state, reach);
-        if (!seen) return through;
-        const runtime::SurfacePoint p = seen->hit.object->complete(seen->ray, seen->hit);
+        Ray4 on = ray;
+        const auto hit = nearest(ray, on, state, reach);
+        if (!hit) return through;
+        const runtime::SurfacePoint p = hit->object->complete(on, *hit);
         // (A no_shadow object is passed by, as POV-Ray's precondition.)
-        if (seen->hit.object->casts_shadow()) {
+        if (hit->object->casts_shadow()) {
+            ++state.counters.filtered_surfaces;
             through *= transmittance(p, depth, state);
             // POV-Ray's full shadow: below its EPSILON in every channel.
             if (std::max({std::fabs(through.x), std::fabs(through.y), std::fabs(through.z)}) < 1.0e-10)
@@ -204,33 +227,18 @@ glm::dvec3 Shader::transmittance(const runtime::SurfacePoint& p, int depth, Thre
     return sum;
 }
 
-std::optional<Shader::Seen> Shader::nearest(const Ray4& ray, ThreadState& state, double s_max) const {
-    const double s_floor = LightTravel::floor_parameter(ray, travel_.floor);
-    if (auto hit = query_.first_hit(ray, 0.0, std::min(s_max, s_floor), state)) return Seen{ray, *hit};
-    if (s_floor >= s_max) return std::nullopt;
-    const Ray4 held = LightTravel::held_piece(ray, s_floor, travel_.floor);
-    if (auto hit = query_.first_hit(held, 0.0, s_max - s_floor, state)) return Seen{held, *hit};
-    return std::nullopt;
-}
-
-bool Shader::blocked(const Ray4& ray, double reach, ThreadState& state) const {
-    const double s_floor = LightTravel::floor_parameter(ray, travel_.floor);
-    if (s_floor >= reach) return query_.occluded(ray, 0.0, reach, state);
-    if (query_.occluded(ray, 0.0, s_floor, state)) return true;
-    const Ray4 held = LightTravel::held_piece(ray, s_floor, travel_.floor);
-    return query_.occluded(held, 0.0, reach - s_floor, state);
-}
 
 glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, ThreadState& state) const {
     const double t = ray.origin.w;
-    const auto seen = nearest(ray, state);
+    Ray4 on = ray;
+    const auto hit = nearest(ray, on, state);
     // (A ray that hits nothing goes POV-Ray's BOUND_HUGE, 2e10, through fog.)
-    if (!seen) {
-        const glm::dvec3 colour = sky(glm::normalize(glm::dvec3(ray.direction)), t);
-        return fogs_.empty() ? colour : fogged(colour, ray, 2.0e10);
+    if (!hit) {
+        const glm::dvec3 seen = sky(glm::normalize(glm::dvec3(ray.direction)), t);
+        return fogs_.empty() ? seen : fogged(seen, ray, 2.0e10);
     }
-    const runtime::SurfacePoint p = seen->hit.object->complete(seen->ray, seen->hit);
-    Hit h{seen->ray, p, depth, weight};
+    const runtime::SurfacePoint p = hit->object->complete(on, *hit);
+    Hit h{on, p, depth, weight};
     h.d = glm::normalize(glm::dvec3(ray.direction));
     h.point = glm::dvec3(p.event);
     h.time = p.event.w;

@@ -46,17 +46,15 @@ public:
 private:
     glm::dvec3 radiance(const runtime::Ray4& ray, int depth, double weight,
                         ThreadState& state) const;
-    // The nearest hit along `ray` and the ray it is on: `ray` itself, or,
-    // for light that would run back past the floor, its held piece
+    // The nearest hit along `ray` within (0, s_max), and in `on` the ray it
+    // is on: `ray` itself (on is left alone: the caller sets it to ray),
+    // or, for light that would run back past the floor, its held piece
     // (light_travel.hpp).
-    struct Seen {
-        runtime::Ray4 ray;
-        runtime::ObjectHit hit;
-    };
-    std::optional<Seen> nearest(const runtime::Ray4& ray, ThreadState& state,
-                                double s_max = std::numeric_limits<double>::infinity()) const;
+    [[gnu::always_inline]] inline std::optional<runtime::ObjectHit> nearest(
+        const runtime::Ray4& ray, runtime::Ray4& on, ThreadState& state,
+        double s_max = std::numeric_limits<double>::infinity()) const;
     // Whether anything lies on `ray` within (0, reach], both pieces.
-    bool blocked(const runtime::Ray4& ray, double reach, ThreadState& state) const;
+    [[gnu::always_inline]] inline bool blocked(const runtime::Ray4& ray, double reach, ThreadState& state) const;
     // A hit being shaded: the ray's unit direction, the event, the raw
     // normal (shading, turned to face the viewer), the geometric one (so
     // turned too), where secondary rays start, and the ray's depth and

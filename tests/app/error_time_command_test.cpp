@@ -98,6 +98,16 @@ TEST_CASE("error-time measures each mode at each sample count against a cached r
     out.str("");
     REQUIRE(run_error_time(a, out, err) == 0);
     CHECK(out.str().find("(cached)") != std::string::npos);
+    // ... and again for another shutter: its curve or a rolling shutter
+    // change the image (a fresh user found the cached one reused).
+    for (const auto& [curve, rolling] : {std::pair<std::string, double>{"triangle", 0.0}, {"box", 0.5}}) {
+        ErrorTimeArguments other = a;
+        other.scene.shutter_curve = curve;
+        other.scene.rolling_shutter = rolling;
+        out.str("");
+        REQUIRE(run_error_time(other, out, err) == 0);
+        CHECK(out.str().find("(cached)") == std::string::npos);
+    }
 
     // Adaptive sampling at a target: a row of its own, its true error and
     // what uniform sampling needs for it.

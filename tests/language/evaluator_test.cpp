@@ -300,3 +300,31 @@ TEST_CASE("no input makes the reader crash: it either reads or says where it fai
         }
     }
 }
+
+TEST_CASE("a declared light is copied with its modifiers, and looks_like places its object at the light",
+          "[evaluator]") {
+    const auto r = run(
+        "#declare L = light_source { <0, 5, -3>, rgb <1, 0.5, 0.25> spotlight point_at 0 }\n"
+        "light_source { L translate x * 2 }\n"
+        "light_source { <1, 2, 3>, rgb 1 looks_like { sphere { 0, 0.5 } } translate y }\n"
+        "union { sphere { 0, 1 } light_source { 0, rgb 1 looks_like { box { -1, 1 } } } translate z * 4 }\n");
+    const auto& s = r.scene;
+    REQUIRE(s.lights.size() == 3);
+    // The copy keeps the declared light's kind and colour; its translate
+    // comes after.
+    CHECK(s.lights[0].kind == hexant::runtime::LightKind::Spotlight);
+    CHECK(s.lights[0].colour.c[1].constant() == 0.5);
+    CHECK(s.lights[0].transform.matrix_at(0)[3][0] == 2.0);
+    // Each looks_like object: at the light's position, then through its
+    // transforms (a union's included), casting no shadow.
+    REQUIRE(s.objects.size() == 3);  // the sphere, the union, the box
+    const auto& sphere = *s.objects[0];
+    CHECK(sphere.no_shadow);
+    const glm::dmat4 m = sphere.transform.matrix_at(0.0);
+    CHECK(m[3][0] == 1.0);
+    CHECK(m[3][1] == 3.0);
+    CHECK(m[3][2] == 3.0);
+    CHECK(s.objects[2]->no_shadow);
+    CHECK(s.objects[2]->transform.matrix_at(0.0)[3][2] == 4.0);
+    CHECK_FALSE(s.lights[1].looks_like);
+}

@@ -108,6 +108,20 @@ TEST_CASE("without mirrors or glass only shadow rays follow the primary rays", "
     CHECK(mirror.refracted_rays > 0);
 }
 
+TEST_CASE("only transparent objects filter shadow rays, and only finite light runs rays through time", "[tracer][pay]") {
+    // A scene of opaque objects under instant light: its shadow rays ask
+    // only whether something blocks them, and every ray is at one instant.
+    const tr::Counters c = counters_of(parse(kCamera + kStaticObjects, 1), tr::Mode::Spacetime);
+    CHECK(c.shadow_rays > 0);
+    CHECK(c.filtered_surfaces == 0);
+    CHECK(c.travelling_rays == 0);
+    const auto glass = parse(kCamera + kStaticObjects +
+                                 "sphere { <2, 1, -2>, 0.6 pigment { rgbf <1, 0.5, 0.5, 0.9> } }\n",
+                             1);
+    CHECK(counters_of(glass, tr::Mode::Spacetime).filtered_surfaces > 0);
+    CHECK(counters_of(glass, tr::Mode::Spacetime).travelling_rays == 0);
+}
+
 TEST_CASE("declarations a scene never uses are never built", "[tracer][pay]") {
     const std::string declarations = R"(
 #declare Unused_Sphere = sphere { 0, 1 }

@@ -108,6 +108,43 @@ TEST_CASE("the image does not depend on the thread count", "[tracer][render]") {
     CHECK(largest_difference(one, eight) == 0.0);
 }
 
+TEST_CASE("area lights, focal blur, a shaped rolling shutter and finite light: images independent of the thread count, "
+          "the three modes agreeing",
+          "[tracer][render]") {
+    // Every dimension a sample draws (pixel, time, lens, each light's grid
+    // point per depth) is a function of (frame, pixel, sample), and every
+    // mode answers the same rays.
+    hexant::language::ParseOptions options;
+    options.animation.width = 32;
+    options.animation.height = 24;
+    options.animation.initial_frame = 1;
+    options.animation.final_frame = 3;
+    options.animation.shutter_curve = hexant::runtime::ShutterCurve::parse("trapezoid");
+    options.animation.rolling_shutter = 0.3;
+    const auto scene = hexant::language::parse_scene_text(R"(
+camera { fisheye location <0, 2, -5> look_at <0, 0.5, 0> angle 120 aperture 0.6 blur_samples 10 focal_point <0, 0.5, 0> }
+light_source { <-2 + 4 * clock, 5, -2>, rgb 1 area_light x, z, 4, 4 circular orient jitter }
+plane { y, 0 pigment { checker rgb 0.8, rgb 0.3 } }
+sphere { <0, 0.6, 0>, 0.6 pigment { rgbf <0.9, 0.5, 0.3, 0.7> } interior { ior 1.3 } translate x * clock }
+box { <-1.5, 0, 0.5>, <-0.8, 1, 1> rotate y * 90 * clock pigment { rgb <0.2, 0.5, 0.9> } finish { reflection 0.3 } }
+)", "joint-dimensions.pov", options);
+    const auto image = [&](tr::Mode mode, int threads) {
+        tr::RenderSettings settings;
+        settings.mode = mode;
+        settings.samples_per_pixel = 8;
+        settings.threads = threads;
+        settings.light_speed = 40.0;
+        tr::Renderer renderer(scene, settings);
+        return renderer.render_frame(2);
+    };
+    const tr::Image one = image(tr::Mode::Spacetime, 1);
+    CHECK(largest_difference(one, image(tr::Mode::Spacetime, 2)) == 0.0);
+    CHECK(largest_difference(one, image(tr::Mode::Spacetime, 8)) == 0.0);
+    // (The modes: the same image, as above.)
+    CHECK(largest_difference(one, image(tr::Mode::Frames, 2)) == 0.0);
+    CHECK(largest_difference(one, image(tr::Mode::Brute, 2)) == 0.0);
+}
+
 TEST_CASE("motion blur: a sample's time is its own, within the frame's shutter", "[tracer][render]") {
     // A sphere crossing the whole view during frame 1's shutter leaves a
     // streak: many pixels partly covered; at shutter 0 it is a sharp disc.
