@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -27,6 +28,30 @@ namespace hexant::app {
 namespace {
 
 using tracer::Counters;
+
+}  // namespace
+
+std::vector<int> window_frames(const std::string& text, const std::vector<int>& frames) {
+    const auto slash = text.find('/');
+    long long i = -1, n = 0;
+    try {
+        std::size_t used_i = 0, used_n = 0;
+        if (slash == std::string::npos) throw std::invalid_argument(text);
+        i = std::stoll(text.substr(0, slash), &used_i);
+        n = std::stoll(text.substr(slash + 1), &used_n);
+        if (used_i != slash || used_n != text.size() - slash - 1) throw std::invalid_argument(text);
+    } catch (const std::exception&) {
+        throw std::runtime_error("--window: expected I/N (window I of N, I from 0 to N-1), got '" + text + "'");
+    }
+    if (n < 1 || i < 0 || i >= n)
+        throw std::runtime_error("--window " + text + ": I must lie from 0 to N-1 and N be at least 1");
+    const long long k = static_cast<long long>(frames.size());
+    // Window i holds frames [floor(i k / n), floor((i + 1) k / n)).
+    const auto begin = static_cast<std::size_t>(i * k / n), end = static_cast<std::size_t>((i + 1) * k / n);
+    return {frames.begin() + static_cast<std::ptrdiff_t>(begin), frames.begin() + static_cast<std::ptrdiff_t>(end)};
+}
+
+namespace {
 
 // The frames to render, in increasing order: "A:B", "A", or a comma list of
 // those ("1,17,33", "1:4,9").
@@ -382,6 +407,12 @@ void add_render_arguments(CLI::App& command, RenderArguments& a) {
                        "Also write the samples each pixel took, over --spp, as a grey image; #### becomes the "
                        "frame number");
     command.add_option("--frames", a.frames, "A:B renders frames A to B of the animation; a comma list (1,17,33 or 1:4,9) renders those");
+    command.add_option("--window", a.window,
+                       "I/N renders the I-th (0 to N-1, a Slurm array task's number) of N consecutive windows of "
+                       "the frames, each with a hierarchy over its own time only; the frames are those one run "
+                       "over all would write");
+    command.add_flag("--resume", a.resume,
+                     "Skip frames already written (POV-Ray's +C) and remove what a killed run left half-written");
     command.add_option("-o,--output", a.output,
                        "Frame file pattern; #### becomes the frame number (default "
                        "out/SCENE/frame_####.png): .png is 8-bit sRGB, .exr linear float");
@@ -550,11 +581,40 @@ int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err
             language::parse_scene_file(resolved.scene, resolved.options);
         apply_scene_defaults(args, scene, err);
         const Sampling sampling = resolve_sampling(args, scene);
-        const std::vector<int> selected = frame_selection(args.frames, scene.animation);
+        std::vector<int> selected = frame_selection(args.frames, scene.animation);
         const std::string pattern =
             args.output ? *args.output
                         : "out/" + resolved.scene.stem().string() + "/frame_####.png";
+        if ((args.window || args.resume) && (args.contact_sheet || args.animation || args.compare))
+            throw std::runtime_error(std::string(args.window ? "--window" : "--resume") +
+                                     " renders part of the frames: --contact-sheet, --animation and --compare "
+                                     "need them all (render them in one run, or join the windows' frames)");
+        if (args.window) {
+            selected = window_frames(*args.window, selected);
+            if (selected.empty()) {
+                out << "window " << *args.window << ": no frames (more windows than frames)\n";
+                return 0;
+            }
+        }
         check_outputs(args, pattern, selected, scene.animation);
+        if (args.resume) {
+            // A frame on disk was written whole (a temporary renamed over
+            // it); what a killed run left half-written is its temporaries.
+            int leftovers = 0;
+            std::vector<int> missing;
+            for (const int frame : selected) {
+                const std::filesystem::path path = tracer::frame_path(pattern, frame);
+                leftovers += tracer::remove_leftover_temporaries(path);
+                std::error_code error;
+                if (!std::filesystem::is_regular_file(path, error)) missing.push_back(frame);
+            }
+            if (leftovers > 0) err << "--resume: removed " << leftovers << " half-written temporar"
+                                   << (leftovers == 1 ? "y" : "ies") << "\n";
+            out << "--resume: " << selected.size() - missing.size() << " of " << selected.size()
+                << " frames already written\n";
+            if (missing.empty()) return 0;
+            selected = std::move(missing);
+        }
         const bool keep_frames = args.contact_sheet || args.animation;
         std::vector<tracer::Image> frames;
         std::vector<std::pair<std::string, ModeRun>> columns;

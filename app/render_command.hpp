@@ -23,6 +23,13 @@ struct RenderArguments {
     bool no_jitter = false;
     unsigned seed = 0;
     std::optional<std::string> frames;  // A:B
+    // I/N: the I-th (0 to N-1, as Slurm numbers an array's tasks) of N
+    // consecutive windows of the frames, each its own hierarchy over its own
+    // time (window_frames).
+    std::optional<std::string> window;
+    // POV-Ray's +C: frames already written are skipped, a killed run's
+    // temporaries removed.
+    bool resume = false;
     std::optional<std::string> output;  // pattern with ####
     std::optional<std::string> contact_sheet, animation, stats_json;
     bool stats = false;
@@ -42,6 +49,13 @@ struct RenderArguments {
     std::optional<std::string> samples_image;
     HierarchyArguments hierarchy;
 };
+
+// Window I of N (text "I/N") of `frames`: the I-th of N runs of
+// consecutive frames, as even as can be (window I holds frames
+// floor(I K / N) to floor((I + 1) K / N) - 1 of the K, sizes differing by
+// at most one); empty when there are more windows than frames.
+// std::runtime_error naming --window for a malformed or out-of-range one.
+std::vector<int> window_frames(const std::string& text, const std::vector<int>& frames);
 
 // The default target: an RMSE of 1/128 in linear light per 16-pixel tile,
 // about 1.3 steps of an 8-bit sRGB file at mid-grey (0.5 linear) and 2 at a

@@ -100,6 +100,34 @@ TemporaryFile::TemporaryFile(const fs::path& path) : path_(path) {
     slot_ = register_temporary(temporary_);
 }
 
+int remove_leftover_temporaries(const fs::path& path) {
+    const fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
+    const std::string name = path.filename().string();
+    std::error_code error;
+    fs::directory_iterator it(folder, error);
+    if (error) return 0;  // (no folder: nothing left)
+    int removed = 0;
+    const std::string tail = ".partial";
+    for (const fs::directory_entry& entry : it) {
+        const std::string f = entry.path().filename().string();
+        if (f.size() < 1 + tail.size() + 2 || f[0] != '.' || f.compare(f.size() - tail.size(), tail.size(), tail) != 0)
+            continue;
+        // ".NAME.PID.partial", NAME cut as TemporaryFile cuts it for a
+        // number of that many digits.
+        const std::string middle = f.substr(1, f.size() - 1 - tail.size());
+        const auto dot = middle.rfind('.');
+        if (dot == std::string::npos || dot + 1 == middle.size()) continue;
+        const std::string pid = middle.substr(dot + 1);
+        if (pid.find_first_not_of("0123456789") != std::string::npos) continue;
+        std::string expected = name;
+        const std::size_t suffix = 1 + pid.size() + tail.size();
+        if (expected.size() + suffix + 1 > 255) expected.resize(255 - suffix - 1);
+        if (middle.substr(0, dot) != expected) continue;
+        if (fs::remove(entry.path(), error)) ++removed;
+    }
+    return removed;
+}
+
 TemporaryFile::~TemporaryFile() {
     if (!committed_) {
         std::error_code ignored;

@@ -36,6 +36,11 @@ class TemporaryFile {
     bool committed_ = false;
 };
 
+// Removes what a killed run left of its temporaries for `path` (the
+// ".NAME.PID.partial" files beside it, of any process); returns how many.
+// For a run that resumes (render --resume): nothing else writes `path`.
+int remove_leftover_temporaries(const std::filesystem::path& path);
+
 // Writes `text` to `path` whole; throws std::runtime_error naming the file.
 void write_text_file(const std::filesystem::path& path, const std::string& text);
 
