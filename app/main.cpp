@@ -2,11 +2,13 @@
 // Glassner's spacetime ray tracing. Each subcommand takes
 //   hexant SUBCOMMAND SCENE.pov [FILE.ini ...] [flags]
 #include <CLI/CLI.hpp>
+#include <filesystem>
 #include <iostream>
 #include <malloc.h>
 
 #include "app/command_line.hpp"
 #include "app/error_time_command.hpp"
+#include "app/farm_command.hpp"
 #include "app/render_command.hpp"
 #include "app/scene_dump.hpp"
 #include "app/scene_summary.hpp"
@@ -41,6 +43,13 @@ int main(int argc, char** argv) {
         "render", "Render the animation's frames with spacetime ray tracing");
     app::add_render_arguments(*render, render_arguments);
 
+    CLI::App* farm = program.add_subcommand(
+        "farm", "Write (and with --submit, submit) a Slurm job array that renders the animation as --windows N "
+                "time windows, and a join job for the contact sheet and animation: hexant farm SCENE.pov "
+                "[INI ...] [render flags] --windows N [--partition P] [--time T] [--farm-dir DIR] [--submit]");
+    farm->prefix_command();
+    farm->allow_extras();
+
     CLI::App* bench = program.add_subcommand("bench", "Measure hexant: speed and error");
     bench->require_subcommand(1);
     app::ErrorTimeArguments error_time_arguments;
@@ -51,6 +60,12 @@ int main(int argc, char** argv) {
 
     CLI11_PARSE(program, argc, argv);
     if (render->parsed()) return app::run_render(render_arguments, std::cout, std::cerr);
+    if (farm->parsed())
+        return app::run_reporting_errors(std::cerr, [&] {
+            app::FarmArguments arguments = app::split_farm_arguments(farm->remaining());
+            arguments.hexant = std::filesystem::canonical("/proc/self/exe").string();
+            return app::run_farm(arguments, std::cout, std::cerr);
+        });
     if (error_time->parsed())
         return app::run_error_time(error_time_arguments, std::cout, std::cerr);
 

@@ -582,13 +582,15 @@ int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err
         apply_scene_defaults(args, scene, err);
         const Sampling sampling = resolve_sampling(args, scene);
         std::vector<int> selected = frame_selection(args.frames, scene.animation);
+        std::vector<int> written;  // (--resume: frames already on disk)
         const std::string pattern =
             args.output ? *args.output
                         : "out/" + resolved.scene.stem().string() + "/frame_####.png";
-        if ((args.window || args.resume) && (args.contact_sheet || args.animation || args.compare))
-            throw std::runtime_error(std::string(args.window ? "--window" : "--resume") +
-                                     " renders part of the frames: --contact-sheet, --animation and --compare "
-                                     "need them all (render them in one run, or join the windows' frames)");
+        if (args.window && (args.contact_sheet || args.animation || args.compare))
+            throw std::runtime_error("--window renders part of the frames: --contact-sheet, --animation and --compare "
+                                     "need them all (join the windows' frames with --resume and those outputs)");
+        if (args.resume && args.compare)
+            throw std::runtime_error("--resume skips frames --compare would measure");
         if (args.window) {
             selected = window_frames(*args.window, selected);
             if (selected.empty()) {
@@ -612,16 +614,33 @@ int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err
                                    << (leftovers == 1 ? "y" : "ies") << "\n";
             out << "--resume: " << selected.size() - missing.size() << " of " << selected.size()
                 << " frames already written\n";
-            if (missing.empty()) return 0;
+            written.assign(selected.begin(), selected.end());
+            std::erase_if(written, [&](int frame) { return std::binary_search(missing.begin(), missing.end(), frame); });
+            if (missing.empty() && !args.contact_sheet && !args.animation) return 0;
             selected = std::move(missing);
         }
         const bool keep_frames = args.contact_sheet || args.animation;
         std::vector<tracer::Image> frames;
         std::vector<std::pair<std::string, ModeRun>> columns;
         const tracer::Mode mode = args.compare ? tracer::Mode::Spacetime : tracer::parse_mode(args.mode);
-        columns.emplace_back(tracer::mode_name(mode),
-                             render_mode(scene, args, sampling, mode, pattern, selected, true,
-                                         keep_frames ? &frames : nullptr, !args.compare, err));
+        if (!selected.empty())
+            columns.emplace_back(tracer::mode_name(mode),
+                                 render_mode(scene, args, sampling, mode, pattern, selected, true,
+                                             keep_frames ? &frames : nullptr, !args.compare, err));
+        if (keep_frames && !written.empty()) {
+            // (--resume) The frames on disk join those just rendered, in
+            // order, read back as written (an 8-bit sRGB frame gives its
+            // very bytes again).
+            std::vector<std::pair<int, tracer::Image>> all;
+            for (std::size_t i = 0; i < selected.size(); ++i) all.emplace_back(selected[i], std::move(frames[i]));
+            for (const int frame : written)
+                all.emplace_back(frame, tracer::read_image(tracer::frame_path(pattern, frame)));
+            std::sort(all.begin(), all.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+            frames.clear();
+            for (auto& [frame, image] : all) frames.push_back(std::move(image));
+            selected.insert(selected.end(), written.begin(), written.end());
+            std::sort(selected.begin(), selected.end());
+        }
         if (args.compare)  // the paper's order: frame by frame, then spacetime
             columns.emplace(columns.begin(), "frames",
                             render_mode(scene, args, sampling, tracer::Mode::Frames, pattern, selected, false,
@@ -647,7 +666,7 @@ int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err
             tracer::write_animation(frames, *args.animation);
             out << "animation: " << *args.animation << "\n";
         }
-        if (args.stats || args.compare) {
+        if ((args.stats || args.compare) && !columns.empty()) {
             std::vector<std::pair<std::string, Counters>> counters;
             for (const auto& [name, run] : columns) counters.emplace_back(name, run.counters);
             print_stats(out, counters);

@@ -44,6 +44,23 @@ void check_frame_pattern(const std::string& pattern, std::size_t frames, const s
         throw std::runtime_error(flag + " " + pattern + ": one run of # is the frame number; this has more");
 }
 
+Image read_image(const fs::path& path) {
+    const image::StoredImage stored = image::read_stored_image(path);
+    if (!stored.linear && (stored.encoding_gamma != 0.0 || stored.source_bits != 8))
+        throw std::runtime_error(path.string() + ": not an 8-bit sRGB image as hexant writes");
+    Image image(stored.width, stored.height);
+    for (int y = 0; y < stored.height; ++y)
+        for (int x = 0; x < stored.width; ++x) {
+            const std::size_t at = (std::size_t(y) * stored.width + x) * stored.channels;
+            glm::dvec3 c(stored.values[at], stored.values[at + 1], stored.values[at + 2]);
+            if (!stored.linear)
+                for (int k = 0; k < 3; ++k)  // (the inverse of to_srgb8's curve)
+                    c[k] = c[k] <= 0.04045 ? c[k] / 12.92 : std::pow((c[k] + 0.055) / 1.055, 2.4);
+            image.set(x, y, c);
+        }
+    return image;
+}
+
 unsigned char to_srgb8(double linear) {
     const double c = std::clamp(linear, 0.0, 1.0);
     const double s = c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;

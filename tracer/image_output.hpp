@@ -46,6 +46,11 @@ Image contact_sheet(const std::vector<Image>& frames, int columns = 0);
 void write_animation(const std::vector<Image>& frames, const std::filesystem::path& path,
                      double fps = 24.0);
 
+// A frame read back from a file hexant wrote (PNG: sRGB decoded to linear,
+// so that writing it again gives the same bytes; EXR: linear as stored);
+// alpha, if any, dropped. std::runtime_error naming the file otherwise.
+Image read_image(const std::filesystem::path& path);
+
 // Linear to sRGB, 8 bits.
 unsigned char to_srgb8(double linear);
 

@@ -1,0 +1,102 @@
+// `hexant farm`: the Slurm scripts it writes, run here as Slurm would run
+// them (each array task with its SLURM_ARRAY_TASK_ID, then the join),
+// give the frames, contact sheet and animation one run gives, byte for
+// byte. (Submitting to a real Slurm: the `cluster` test, not here.)
+#include <catch2/catch.hpp>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <string>
+
+#include "app/farm_command.hpp"
+
+namespace fs = std::filesystem;
+using hexant::app::run_farm;
+using hexant::app::split_farm_arguments;
+
+namespace {
+
+std::string bytes(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+const char* kScene = R"(
+camera { location <0, 2, -6> look_at <0, 0.5, 0> }
+light_source { <-3 + 6 * clock, 5, -4>, rgb 1 }
+plane { y, 0 pigment { checker rgb 0.9, rgb 0.3 } }
+sphere { <-2 + 4 * clock, 0.5, 0>, 0.5 pigment { rgb <0.9, 0.3, 0.2> } }
+)";
+
+}  // namespace
+
+TEST_CASE("farm's flags are its own, the rest passes to render as written", "[app][farm]") {
+    const auto a = split_farm_arguments({"s.pov", "--windows", "4", "--spp=8", "--partition=short", "--time",
+                                         "00:10:00", "--contact-sheet", "sheet.png", "-W", "64", "--submit"});
+    CHECK(a.windows == 4);
+    CHECK(a.partition == "short");
+    CHECK(a.time_limit == "00:10:00");
+    CHECK(a.contact_sheet == "sheet.png");
+    CHECK(a.submit);
+    CHECK(a.render == std::vector<std::string>{"s.pov", "--spp=8", "-W", "64"});
+    CHECK_THROWS_WITH(split_farm_arguments({"s.pov"}), Catch::Contains("--windows"));
+    CHECK_THROWS_WITH(split_farm_arguments({"s.pov", "--windows", "0"}), Catch::Contains("at least 1"));
+    CHECK_THROWS_WITH(split_farm_arguments({"s.pov", "--windows", "2", "--window", "0/2"}), Catch::Contains("--window"));
+    CHECK_THROWS_WITH(split_farm_arguments({"s.pov", "--windows", "2", "--time"}), Catch::Contains("needs a value"));
+    CHECK(hexant::app::shell_quote("it's a 'b'") == "'it'\\''s a '\\''b'\\'''");
+}
+
+TEST_CASE("a farm's array tasks and join, run as Slurm runs them, give one run's bytes", "[app][farm]") {
+    const fs::path folder = fs::temp_directory_path() / "hexant_farm_test";
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    std::ofstream(folder / "scene.pov") << kScene;
+    const std::string hexant = HEXANT_BINARY;
+    const std::string common = (folder / "scene.pov").string() + " -W 32 -H 24 --frame-count 10 --spp 4";
+    REQUIRE(std::system((hexant + " render " + common + " -o " + (folder / "one/f_####.png").string() +
+                         " --contact-sheet " + (folder / "one.png").string() + " --animation " +
+                         (folder / "one.gif").string() + " > /dev/null 2>&1")
+                            .c_str()) == 0);
+
+    auto args = split_farm_arguments({(folder / "scene.pov").string(), "-W", "32", "-H", "24", "--frame-count", "10",
+                                      "--spp", "4", "-o", (folder / "farm/f_####.png").string(), "--windows", "4",
+                                      "--partition", "debug", "--contact-sheet", (folder / "farm.png").string(),
+                                      "--animation", (folder / "farm.gif").string(), "--farm-dir",
+                                      (folder / "scripts").string()});
+    args.hexant = hexant;
+    std::ostringstream out, err;
+    REQUIRE(run_farm(args, out, err) == 0);
+    INFO(out.str() << err.str());
+    const std::string array = bytes(folder / "scripts/array.sbatch");
+    CHECK(array.find("#SBATCH --array=0-3\n") != std::string::npos);
+    CHECK(array.find("#SBATCH --partition=debug\n") != std::string::npos);
+    CHECK(array.find("--window \"${SLURM_ARRAY_TASK_ID}/4\" --resume") != std::string::npos);
+    CHECK(bytes(folder / "scripts/submit.sh").find("--dependency=afterok:$array") != std::string::npos);
+
+    for (int task = 0; task < 4; ++task)
+        REQUIRE(std::system(("SLURM_ARRAY_TASK_ID=" + std::to_string(task) + " bash " +
+                             (folder / "scripts/array.sbatch").string() + " > /dev/null 2>&1")
+                                .c_str()) == 0);
+    // Each window wrote its statistics.
+    for (int task = 0; task < 4; ++task) CHECK(fs::exists(folder / ("scripts/window_" + std::to_string(task) + ".json")));
+    REQUIRE(std::system(("bash " + (folder / "scripts/join.sbatch").string() + " > /dev/null 2>&1").c_str()) == 0);
+    for (int k = 1; k <= 10; ++k) {
+        char name[32];
+        std::snprintf(name, sizeof name, "f_%04d.png", k);
+        INFO(name);
+        CHECK(bytes(folder / "one" / name) == bytes(folder / "farm" / name));
+    }
+    CHECK(bytes(folder / "one.png") == bytes(folder / "farm.png"));
+    CHECK(bytes(folder / "one.gif") == bytes(folder / "farm.gif"));
+
+    // A mistake in the render flags shows at once, not in every task.
+    auto bad = split_farm_arguments({(folder / "scene.pov").string(), "--spp", "0", "--windows", "2",
+                                     "--farm-dir", (folder / "bad").string()});
+    bad.hexant = hexant;
+    std::ostringstream bad_out, bad_err;
+    CHECK(run_farm(bad, bad_out, bad_err) != 0);
+    CHECK(bad_err.str().find("--spp") != std::string::npos);
+    CHECK_FALSE(fs::exists(folder / "bad"));
+}
