@@ -125,10 +125,15 @@ int run_farm(const FarmArguments& args, std::ostream& out, std::ostream& err) {
         join << header(args, "hexant-" + stem + "-join", (folder / "join.log").string())
              << "# After every window: what needs all the frames (read back; any frame still\n"
              << "# missing is rendered here).\n"
-             << render_line(args) << " --resume";
+             << "set -e\n"
+             << render_line(args).substr(5) << " --resume";  // (not exec: the statistics follow)
         if (args.contact_sheet) join << " --contact-sheet " << shell_quote(*args.contact_sheet);
         if (args.animation) join << " --animation " << shell_quote(*args.animation);
-        join << "\n";
+        join << "\n# The windows' statistics as one run's.\n"
+             << "exec " << shell_quote(args.hexant) << " merge-stats";
+        for (int w = 0; w < args.windows; ++w)
+            join << " " << shell_quote((folder / ("window_" + std::to_string(w) + ".json")).string());
+        join << " -o " << shell_quote((folder / "stats.json").string()) << "\n";
 
         const fs::path array_path = folder / "array.sbatch", join_path = folder / "join.sbatch";
         const fs::path submit_path = folder / "submit.sh";

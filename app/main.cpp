@@ -9,6 +9,7 @@
 #include "app/command_line.hpp"
 #include "app/error_time_command.hpp"
 #include "app/farm_command.hpp"
+#include "app/merge_stats.hpp"
 #include "app/render_command.hpp"
 #include "app/scene_dump.hpp"
 #include "app/scene_summary.hpp"
@@ -50,6 +51,14 @@ int main(int argc, char** argv) {
     farm->prefix_command();
     farm->allow_extras();
 
+    std::vector<std::string> merge_inputs;
+    std::string merge_output;
+    CLI::App* merge = program.add_subcommand(
+        "merge-stats", "The statistics of windows (render --window I/N --stats-json) as one run's: counts and "
+                       "times summed, memory the largest, the ratios from the sums, and each window's build");
+    merge->add_option("windows", merge_inputs, "The windows' statistics files, in window order")->required();
+    merge->add_option("-o,--output", merge_output, "The merged statistics (JSON)")->required();
+
     CLI::App* bench = program.add_subcommand("bench", "Measure hexant: speed and error");
     bench->require_subcommand(1);
     app::ErrorTimeArguments error_time_arguments;
@@ -60,6 +69,7 @@ int main(int argc, char** argv) {
 
     CLI11_PARSE(program, argc, argv);
     if (render->parsed()) return app::run_render(render_arguments, std::cout, std::cerr);
+    if (merge->parsed()) return app::run_merge_stats(merge_inputs, merge_output, std::cout, std::cerr);
     if (farm->parsed())
         return app::run_reporting_errors(std::cerr, [&] {
             app::FarmArguments arguments = app::split_farm_arguments(farm->remaining());

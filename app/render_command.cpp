@@ -595,6 +595,9 @@ int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err
             selected = window_frames(*args.window, selected);
             if (selected.empty()) {
                 out << "window " << *args.window << ": no frames (more windows than frames)\n";
+                // (Its statistics: none, for a merge of every window's.)
+                if (args.stats_json)
+                    write_stats_json(*args.stats_json, {{tracer::mode_name(tracer::parse_mode(args.mode)), ModeRun{}}});
                 return 0;
             }
         }

@@ -10,7 +10,10 @@
 #include <sstream>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "app/farm_command.hpp"
+#include "app/merge_stats.hpp"
 
 namespace fs = std::filesystem;
 using hexant::app::run_farm;
@@ -57,7 +60,8 @@ TEST_CASE("a farm's array tasks and join, run as Slurm runs them, give one run's
     const std::string common = (folder / "scene.pov").string() + " -W 32 -H 24 --frame-count 10 --spp 4";
     REQUIRE(std::system((hexant + " render " + common + " -o " + (folder / "one/f_####.png").string() +
                          " --contact-sheet " + (folder / "one.png").string() + " --animation " +
-                         (folder / "one.gif").string() + " > /dev/null 2>&1")
+                         (folder / "one.gif").string() + " --stats-json " + (folder / "one.json").string() +
+                         " > /dev/null 2>&1")
                             .c_str()) == 0);
 
     auto args = split_farm_arguments({(folder / "scene.pov").string(), "-W", "32", "-H", "24", "--frame-count", "10",
@@ -90,6 +94,21 @@ TEST_CASE("a farm's array tasks and join, run as Slurm runs them, give one run's
     }
     CHECK(bytes(folder / "one.png") == bytes(folder / "farm.png"));
     CHECK(bytes(folder / "one.gif") == bytes(folder / "farm.gif"));
+    // The merged statistics: the windows' sums, which for the rays are one
+    // run's (the same samples); each window's build listed.
+    const auto one = nlohmann::json::parse(bytes(folder / "one.json"))["spacetime"];
+    const auto merged = nlohmann::json::parse(bytes(folder / "scripts/stats.json"))["spacetime"];
+    for (const char* row : {"primary rays", "shadow rays", "reflected rays", "refracted rays"})
+        CHECK(merged[row].get<double>() == one[row].get<double>());
+    double builds = 0.0;
+    for (int task = 0; task < 4; ++task) {
+        const auto w = nlohmann::json::parse(bytes(folder / ("scripts/window_" + std::to_string(task) + ".json")))["spacetime"];
+        builds += w["build time (s)"].get<double>();
+    }
+    CHECK(merged["build time (s)"].get<double>() == Approx(builds).epsilon(1e-12));
+    REQUIRE(merged["per window"].size() == 4);
+    CHECK(merged["per window"][3]["frames"].size() == 3);  // (frames 8 to 10 of 10 in 4 windows)
+    CHECK(merged["per frame"].size() == 10);
 
     // A mistake in the render flags shows at once, not in every task.
     auto bad = split_farm_arguments({(folder / "scene.pov").string(), "--spp", "0", "--windows", "2",
@@ -99,4 +118,22 @@ TEST_CASE("a farm's array tasks and join, run as Slurm runs them, give one run's
     CHECK(run_farm(bad, bad_out, bad_err) != 0);
     CHECK(bad_err.str().find("--spp") != std::string::npos);
     CHECK_FALSE(fs::exists(folder / "bad"));
+}
+
+TEST_CASE("merge-stats refuses what is not one mode's statistics, naming the file", "[app][farm]") {
+    const fs::path folder = fs::temp_directory_path() / "hexant_merge_stats_test";
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    std::ofstream(folder / "a.json") << R"({"spacetime": {"primary rays": 10, "per frame": [{"frame": 1}]}})";
+    std::ofstream(folder / "b.json") << R"({"frames": {"primary rays": 5}})";
+    std::ofstream(folder / "c.json") << "not json";
+    const std::string out = (folder / "m.json").string();
+    using hexant::app::merge_stats;
+    CHECK_THROWS_WITH(merge_stats({(folder / "a.json").string(), (folder / "b.json").string()}, out),
+                      Catch::Contains("b.json") && Catch::Contains("frames render"));
+    CHECK_THROWS_WITH(merge_stats({(folder / "c.json").string()}, out), Catch::Contains("c.json"));
+    CHECK_THROWS_WITH(merge_stats({(folder / "none.json").string()}, out), Catch::Contains("none.json"));
+    CHECK_FALSE(fs::exists(out));
+    merge_stats({(folder / "a.json").string(), (folder / "a.json").string()}, out);
+    CHECK(nlohmann::json::parse(bytes(out))["spacetime"]["primary rays"].get<double>() == 20.0);
 }
