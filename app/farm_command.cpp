@@ -1,5 +1,6 @@
 #include "app/farm_command.hpp"
 
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <ostream>
@@ -23,10 +24,34 @@ std::string shell_quote(const std::string& word) {
     return quoted + "'";
 }
 
+namespace {
+
+// A word the scripts can hold: no control character (a newline would end
+// the script's line and start a command of its own).
+void check_word(const std::string& word, const std::string& what) {
+    for (const char c : word)
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
+            throw std::runtime_error(what + " holds a control character (a newline?): '" + word + "'");
+}
+
+// A value on an #SBATCH line: sbatch splits its own lines at blanks and
+// reads quotes and #, so such values are refused (a path is written in
+// double quotes: sbatch_path).
+void check_sbatch_value(const std::string& value, const std::string& flag) {
+    check_word(value, flag);
+    if (value.empty() || value.find_first_of(" \t'\"#\\") != std::string::npos)
+        throw std::runtime_error(flag + " '" + value + "': Slurm's #SBATCH lines take no blank, quote, # or "
+                                 "backslash (and not an empty value)");
+}
+
+}  // namespace
+
 FarmArguments split_farm_arguments(const std::vector<std::string>& words) {
     FarmArguments a;
+    bool windows_given = false;
     for (std::size_t i = 0; i < words.size(); ++i) {
         const std::string& w = words[i];
+        check_word(w, "the farm's word " + std::to_string(i + 1));
         const auto eq = w.find('=');
         const std::string flag = w.rfind("--", 0) == 0 ? w.substr(0, eq) : w;
         const auto value = [&]() -> std::string {
@@ -35,6 +60,8 @@ FarmArguments split_farm_arguments(const std::vector<std::string>& words) {
             return words[++i];
         };
         if (flag == "--windows") {
+            if (windows_given) throw std::runtime_error("--windows given twice");
+            windows_given = true;
             const std::string v = value();
             std::size_t used = 0;
             try {
@@ -46,8 +73,10 @@ FarmArguments split_farm_arguments(const std::vector<std::string>& words) {
                 throw std::runtime_error("--windows needs a whole number of windows, at least 1, not '" + v + "'");
         } else if (flag == "--partition") {
             a.partition = value();
+            check_sbatch_value(*a.partition, "--partition");
         } else if (flag == "--time") {
             a.time_limit = value();
+            check_sbatch_value(*a.time_limit, "--time");
         } else if (flag == "--farm-dir") {
             a.folder = value();
         } else if (flag == "--contact-sheet") {
@@ -58,6 +87,8 @@ FarmArguments split_farm_arguments(const std::vector<std::string>& words) {
             a.submit = true;
         } else if (flag == "--stats-json") {
             throw std::runtime_error("--stats-json: each window writes its own (window_I.json in the farm's folder)");
+        } else if (flag == "--compare") {
+            throw std::runtime_error("--compare renders every frame twice in one run; a farm's tasks render windows");
         } else if (flag == "--window" || flag == "--resume") {
             throw std::runtime_error(flag + " is the farm's to give each task; leave it out");
         } else {
@@ -79,22 +110,61 @@ void check_render_words(const FarmArguments& args, std::string& scene_stem) {
     std::vector<std::string> reversed(args.render.rbegin(), args.render.rend());
     try {
         render.parse(reversed);
+    } catch (const CLI::RequiredError&) {
+        throw std::runtime_error("farm needs the scene (SCENE.pov [INI ...]) before its flags");
     } catch (const CLI::ParseError& e) {
         throw std::runtime_error(std::string("the render flags: ") + e.what());
     }
     ResolvedScene resolved = resolve(parsed.scene);
-    language::parse_scene_file(resolved.scene, resolved.options);
+    const runtime::SceneDescription scene = language::parse_scene_file(resolved.scene, resolved.options);
     scene_stem = resolved.scene.stem().string();
+    const long long frames = static_cast<long long>(scene.animation.frame_count());
+    if (args.windows > frames)
+        throw std::runtime_error("--windows " + std::to_string(args.windows) + ": the animation has " +
+                                 std::to_string(frames) + " frame" + (frames == 1 ? "" : "s") +
+                                 ", so at most that many windows");
+    // What each task and the join will be asked, checked once here.
+    RenderArguments task = parsed;
+    task.window = "0/" + std::to_string(args.windows);
+    task.resume = true;
+    check_render_plan(task, resolved.scene, scene);
+    RenderArguments join = parsed;
+    join.resume = true;
+    join.contact_sheet = args.contact_sheet;
+    join.animation = args.animation;
+    check_render_plan(join, resolved.scene, scene);
 }
 
-std::string header(const FarmArguments& args, const std::string& name, const std::string& log) {
+// A path on an #SBATCH line, in double quotes (sbatch's own quoting).
+std::string sbatch_path(const std::string& path) {
+    check_word(path, "the path " + path);
+    if (path.find_first_of("\"\\") != std::string::npos)
+        throw std::runtime_error("the path '" + path + "' holds a double quote or backslash, which an #SBATCH line "
+                                 "cannot hold");
+    return "\"" + path + "\"";
+}
+
+// Slurm's job name: the scene's name, what sbatch reads plainly.
+std::string job_name(const std::string& stem) {
+    std::string name = "hexant-";
+    for (const char c : stem) name += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.' ? c : '_';
+    return name;
+}
+
+// The #SBATCH lines, then the folder the render words are relative to
+// (cd as well: run by hand, the script works from anywhere).
+std::string header(const FarmArguments& args, const std::string& name, const std::string& log,
+                   const std::string& extra = "") {
+    const std::string here = fs::current_path().string();
     std::ostringstream s;
     s << "#!/bin/bash\n"
       << "#SBATCH --job-name=" << name << "\n"
-      << "#SBATCH --chdir=" << fs::current_path().string() << "\n"
-      << "#SBATCH --output=" << log << "\n";
+      << "#SBATCH --chdir=" << sbatch_path(here) << "\n"
+      << "#SBATCH --output=" << sbatch_path(log) << "\n"
+      << extra;
     if (args.partition) s << "#SBATCH --partition=" << *args.partition << "\n";
     if (args.time_limit) s << "#SBATCH --time=" << *args.time_limit << "\n";
+    s << "cd " << shell_quote(here) << "\n";
     return s.str();
 }
 
@@ -114,15 +184,15 @@ int run_farm(const FarmArguments& args, std::ostream& out, std::ostream& err) {
         const std::string n = std::to_string(args.windows);
 
         std::ostringstream array;
-        array << header(args, "hexant-" + stem, (folder / "window_%a.log").string())
-              << "#SBATCH --array=0-" << args.windows - 1 << "\n"
+        array << header(args, job_name(stem), (folder / "window_%a.log").string(),
+                        "#SBATCH --array=0-" + std::to_string(args.windows - 1) + "\n")
               << "# Window $SLURM_ARRAY_TASK_ID of " << n << ": its frames, with a hierarchy over its own\n"
               << "# time; --resume lets a requeued or rerun task finish what the last run left.\n"
               << render_line(args) << " --window \"${SLURM_ARRAY_TASK_ID}/" << n << "\" --resume --stats-json "
               << shell_quote((folder / "window_").string()) << "\"${SLURM_ARRAY_TASK_ID}\"'.json'\n";
 
         std::ostringstream join;
-        join << header(args, "hexant-" + stem + "-join", (folder / "join.log").string())
+        join << header(args, job_name(stem) + "-join", (folder / "join.log").string())
              << "# After every window: what needs all the frames (read back; any frame still\n"
              << "# missing is rendered here).\n"
              << "set -e\n"

@@ -55,7 +55,8 @@ int main(int argc, char** argv) {
     std::string merge_output;
     CLI::App* merge = program.add_subcommand(
         "merge-stats", "The statistics of windows (render --window I/N --stats-json) as one run's: counts and "
-                       "times summed, memory the largest, the ratios from the sums, and each window's build");
+                       "times summed, memory the largest, the ratios from the sums, and each window's build and "
+                       "render times listed. A window resumed counts only the frames it rendered");
     merge->add_option("windows", merge_inputs, "The windows' statistics files, in window order")->required();
     merge->add_option("-o,--output", merge_output, "The merged statistics (JSON)")->required();
 

@@ -1,5 +1,8 @@
 #include "app/merge_stats.hpp"
 
+#include <algorithm>
+#include <cstdint>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <ostream>
@@ -14,10 +17,16 @@ namespace hexant::app {
 
 namespace {
 
+namespace fs = std::filesystem;
 using nlohmann::json;
 
-// Rows kept as the largest window's, and rows recomputed from the sums.
-bool is_memory(const std::string& row) { return row.find("(MB)") != std::string::npos; }
+// Rows kept as the largest window's (memory; the objects, which every
+// window builds alike), and rows recomputed from the sums.
+bool is_memory(const std::string& row) { return row.find("(MB)") != std::string::npos || row == "objects"; }
+// Rows that are counts, written as whole numbers as render writes them.
+bool is_count(const std::string& row) {
+    return row.find("(") == std::string::npos && row.find(" per ") == std::string::npos;
+}
 bool is_ratio(const std::string& row) {
     return row.find(" per ray") != std::string::npos || row == "rays per second (M)";
 }
@@ -36,6 +45,17 @@ json read_json(const std::string& path) {
 
 void merge_stats(const std::vector<std::string>& windows, const std::string& output) {
     if (windows.empty()) throw std::runtime_error("merge-stats needs the windows' statistics files");
+    // (A file named twice would count twice; the output must not be one
+    // of the windows.)
+    std::vector<fs::path> seen;
+    const fs::path out_path = fs::weakly_canonical(output);
+    for (const auto& w : windows) {
+        const fs::path p = fs::weakly_canonical(w);
+        if (std::find(seen.begin(), seen.end(), p) != seen.end())
+            throw std::runtime_error(w + ": named twice (each window once)");
+        if (p == out_path) throw std::runtime_error(output + ": the output is one of the windows' files");
+        seen.push_back(p);
+    }
     std::string mode;
     json merged = json::object(), per_window = json::array(), frames = json::array();
     for (std::size_t w = 0; w < windows.size(); ++w) {
@@ -52,7 +72,9 @@ void merge_stats(const std::vector<std::string>& windows, const std::string& out
                 for (const json& f : it.value()) frames.push_back(f);
                 continue;
             }
-            if (!it.value().is_number()) continue;  // (null: a row with no value)
+            if (it.value().is_null()) continue;  // (a row with no value)
+            if (!it.value().is_number())
+                throw std::runtime_error(windows[w] + ": row \"" + it.key() + "\" is not a number");
             const double v = it.value().get<double>();
             if (!merged.contains(it.key())) merged[it.key()] = 0.0;
             const double sum = merged[it.key()].get<double>();
@@ -78,6 +100,8 @@ void merge_stats(const std::vector<std::string>& windows, const std::string& out
             it.value() = rays > 0.0 ? get(count.c_str()) / rays : 0.0;
         }
     }
+    for (auto it = merged.begin(); it != merged.end(); ++it)
+        if (is_count(it.key())) it.value() = static_cast<std::uint64_t>(it.value().get<double>() + 0.5);
     merged["per frame"] = frames;
     merged["per window"] = per_window;
     tracer::write_text_file(output, json{{mode, merged}}.dump(2) + "\n");

@@ -21,6 +21,7 @@
 #include "tracer/gif_animation.hpp"
 #include "tracer/image_output.hpp"
 #include "tracer/renderer.hpp"
+#include "image/image_format.hpp"
 #include "tracer/whole_file.hpp"
 
 namespace hexant::app {
@@ -33,21 +34,22 @@ using tracer::Counters;
 
 std::vector<int> window_frames(const std::string& text, const std::vector<int>& frames) {
     const auto slash = text.find('/');
-    long long i = -1, n = 0;
-    try {
-        std::size_t used_i = 0, used_n = 0;
-        if (slash == std::string::npos) throw std::invalid_argument(text);
-        i = std::stoll(text.substr(0, slash), &used_i);
-        n = std::stoll(text.substr(slash + 1), &used_n);
-        if (used_i != slash || used_n != text.size() - slash - 1) throw std::invalid_argument(text);
-    } catch (const std::exception&) {
-        throw std::runtime_error("--window: expected I/N (window I of N, I from 0 to N-1), got '" + text + "'");
-    }
-    if (n < 1 || i < 0 || i >= n)
+    const auto digits = [](const std::string& t) {
+        return !t.empty() && t.size() <= 18 && t.find_first_not_of("0123456789") == std::string::npos;
+    };
+    const std::string i_text = slash == std::string::npos ? text : text.substr(0, slash);
+    const std::string n_text = slash == std::string::npos ? "" : text.substr(slash + 1);
+    if (slash == std::string::npos || !digits(i_text) || !digits(n_text))
+        throw std::runtime_error("--window: expected I/N (window I of N, I from 0 to N-1, whole numbers), got '" +
+                                 text + "'");
+    const unsigned long long i = std::stoull(i_text), n = std::stoull(n_text);
+    if (n < 1 || i >= n)
         throw std::runtime_error("--window " + text + ": I must lie from 0 to N-1 and N be at least 1");
-    const long long k = static_cast<long long>(frames.size());
-    // Window i holds frames [floor(i k / n), floor((i + 1) k / n)).
-    const auto begin = static_cast<std::size_t>(i * k / n), end = static_cast<std::size_t>((i + 1) * k / n);
+    const unsigned long long k = frames.size();
+    // Window i holds frames [floor(i k / n), floor((i + 1) k / n)), in 128
+    // bits (i k overflows 64 for windows counted in the billions).
+    const auto begin = static_cast<std::size_t>(static_cast<unsigned __int128>(i) * k / n);
+    const auto end = static_cast<std::size_t>(static_cast<unsigned __int128>(i + 1) * k / n);
     return {frames.begin() + static_cast<std::ptrdiff_t>(begin), frames.begin() + static_cast<std::ptrdiff_t>(end)};
 }
 
@@ -573,6 +575,19 @@ Sampling resolve_sampling(const RenderArguments& args, const runtime::SceneDescr
     return s;
 }
 
+void check_render_plan(const RenderArguments& args, const std::filesystem::path& scene_file,
+                       const runtime::SceneDescription& scene) {
+    const std::vector<int> selected = frame_selection(args.frames, scene.animation);
+    const std::string pattern =
+        args.output ? *args.output : "out/" + scene_file.stem().string() + "/frame_####.png";
+    if (args.window && (args.contact_sheet || args.animation || args.compare))
+        throw std::runtime_error("--window renders part of the frames: --contact-sheet, --animation and --compare "
+                                 "need them all (join the windows' frames with --resume and those outputs)");
+    if (args.resume && args.compare) throw std::runtime_error("--resume skips frames --compare would measure");
+    (void)resolve_sampling(args, scene);
+    check_outputs(args, pattern, selected, scene.animation);
+}
+
 int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err) {
     return run_reporting_errors(err, [&] {
         ResolvedScene resolved = resolve(args.scene);
@@ -611,7 +626,25 @@ int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err
                 const std::filesystem::path path = tracer::frame_path(pattern, frame);
                 leftovers += tracer::remove_leftover_temporaries(path);
                 std::error_code error;
-                if (!std::filesystem::is_regular_file(path, error)) missing.push_back(frame);
+                if (!std::filesystem::is_regular_file(path, error)) {
+                    missing.push_back(frame);
+                    continue;
+                }
+                // A file hexant did not write whole, or of another size (an
+                // earlier render with other flags), is rendered again.
+                std::string why;
+                try {
+                    const image::StoredImage stored = image::read_stored_image(path);
+                    if (stored.width != scene.animation.width || stored.height != scene.animation.height)
+                        why = std::to_string(stored.width) + " by " + std::to_string(stored.height) + " pixels, not " +
+                              std::to_string(scene.animation.width) + " by " + std::to_string(scene.animation.height);
+                } catch (const std::exception& e) {
+                    why = e.what();
+                }
+                if (!why.empty()) {
+                    err << "--resume: " << path.string() << " is rendered again (" << why << ")\n";
+                    missing.push_back(frame);
+                }
             }
             if (leftovers > 0) err << "--resume: removed " << leftovers << " half-written temporar"
                                    << (leftovers == 1 ? "y" : "ies") << "\n";
@@ -641,13 +674,14 @@ int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err
             std::sort(all.begin(), all.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
             frames.clear();
             for (auto& [frame, image] : all) frames.push_back(std::move(image));
-            selected.insert(selected.end(), written.begin(), written.end());
-            std::sort(selected.begin(), selected.end());
         }
         if (args.compare)  // the paper's order: frame by frame, then spacetime
             columns.emplace(columns.begin(), "frames",
                             render_mode(scene, args, sampling, tracer::Mode::Frames, pattern, selected, false,
                                         nullptr, true, err));
+        if (selected.empty()) {
+            out << "frames: none rendered (all written already)\n";
+        } else {
         const int first = selected.front(), last = selected.back();
         const bool contiguous = last - first + 1 == static_cast<int>(selected.size());
         out << "frames ";
@@ -658,6 +692,7 @@ int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err
             for (std::size_t i = 0; i < selected.size(); ++i) out << (i ? ", " : "") << selected[i];
             out << ": " << tracer::frame_path(pattern, first) << " ... "
                 << tracer::frame_path(pattern, last) << "\n";
+        }
         }
         if (args.contact_sheet) {
             tracer::write_image(naming_out_of_memory("making the contact sheet",

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <iosfwd>
+#include <filesystem>
 #include <optional>
 #include <string>
 
@@ -49,6 +50,13 @@ struct RenderArguments {
     std::optional<std::string> samples_image;
     HierarchyArguments hierarchy;
 };
+
+// What `render` checks before it renders anything (the frames, the
+// outputs' names and formats, the flags that cannot go together), for a
+// scene already read: `hexant farm` asks it of every task and the join.
+// std::runtime_error naming the flag otherwise.
+void check_render_plan(const RenderArguments& args, const std::filesystem::path& scene_file,
+                       const runtime::SceneDescription& scene);
 
 // Window I of N (text "I/N") of `frames`: the I-th of N runs of
 // consecutive frames, as even as can be (window I holds frames

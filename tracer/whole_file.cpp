@@ -1,5 +1,7 @@
 #include "tracer/whole_file.hpp"
 
+#include <cstdlib>
+
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -123,6 +125,9 @@ int remove_leftover_temporaries(const fs::path& path) {
         const std::size_t suffix = 1 + pid.size() + tail.size();
         if (expected.size() + suffix + 1 > 255) expected.resize(255 - suffix - 1);
         if (middle.substr(0, dot) != expected) continue;
+        // (A process of this machine that still runs is still writing it.)
+        const long number = std::strtol(pid.c_str(), nullptr, 10);
+        if (number > 0 && number != ::getpid() && (::kill(pid_t(number), 0) == 0 || errno == EPERM)) continue;
         if (fs::remove(entry.path(), error)) ++removed;
     }
     return removed;

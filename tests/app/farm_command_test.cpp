@@ -49,6 +49,15 @@ TEST_CASE("farm's flags are its own, the rest passes to render as written", "[ap
     CHECK_THROWS_WITH(split_farm_arguments({"s.pov", "--windows", "2", "--window", "0/2"}), Catch::Contains("--window"));
     CHECK_THROWS_WITH(split_farm_arguments({"s.pov", "--windows", "2", "--time"}), Catch::Contains("needs a value"));
     CHECK(hexant::app::shell_quote("it's a 'b'") == "'it'\\''s a '\\''b'\\'''");
+    // (Found by a fresh user: a newline in a value became a command of the
+    // script; sbatch's own lines split at blanks.)
+    CHECK_THROWS_WITH(split_farm_arguments({"s.pov", "--windows", "2", "--time", "1:00\necho x"}),
+                      Catch::Contains("control character"));
+    CHECK_THROWS_WITH(split_farm_arguments({"s.pov\necho x", "--windows", "2"}), Catch::Contains("control character"));
+    CHECK_THROWS_WITH(split_farm_arguments({"s.pov", "--windows", "2", "--partition", "a #b"}),
+                      Catch::Contains("#SBATCH"));
+    CHECK_THROWS_WITH(split_farm_arguments({"s.pov", "--windows", "2", "--windows", "3"}), Catch::Contains("twice"));
+    CHECK_THROWS_WITH(split_farm_arguments({"s.pov", "--windows", "2", "--compare"}), Catch::Contains("--compare"));
 }
 
 TEST_CASE("a farm's array tasks and join, run as Slurm runs them, give one run's bytes", "[app][farm]") {
@@ -110,14 +119,30 @@ TEST_CASE("a farm's array tasks and join, run as Slurm runs them, give one run's
     CHECK(merged["per window"][3]["frames"].size() == 3);  // (frames 8 to 10 of 10 in 4 windows)
     CHECK(merged["per frame"].size() == 10);
 
-    // A mistake in the render flags shows at once, not in every task.
-    auto bad = split_farm_arguments({(folder / "scene.pov").string(), "--spp", "0", "--windows", "2",
-                                     "--farm-dir", (folder / "bad").string()});
-    bad.hexant = hexant;
-    std::ostringstream bad_out, bad_err;
-    CHECK(run_farm(bad, bad_out, bad_err) != 0);
-    CHECK(bad_err.str().find("--spp") != std::string::npos);
-    CHECK_FALSE(fs::exists(folder / "bad"));
+    // A mistake in the render flags shows at once, not in every task (nor
+    // in the join, after all the rendering): flags, output names, too many
+    // windows.
+    const std::string scene = (folder / "scene.pov").string();
+    for (const auto& [words, said] :
+         std::vector<std::pair<std::vector<std::string>, std::string>>{
+             {{scene, "--spp", "0"}, "--spp"},
+             {{scene, "--frame-count", "10", "-o", (folder / "x/f.png").string()}, "####"},
+             {{scene, "--frame-count", "10", "--animation", (folder / "a.png").string()}, "a.png"},
+             {{scene, "--frame-count", "3"}, "at most that many windows"},
+             {{"--spp", "2"}, "needs the scene"}}) {
+        std::vector<std::string> all = words;
+        for (const std::string w : {"--windows", "4", "--farm-dir"}) all.push_back(w);
+        all.push_back((folder / "bad").string());
+        auto bad = split_farm_arguments(all);
+        bad.hexant = hexant;
+        std::ostringstream bad_out, bad_err;
+        INFO(said);
+        CHECK(run_farm(bad, bad_out, bad_err) != 0);
+        CHECK(bad_err.str().find(said) != std::string::npos);
+        CHECK_FALSE(fs::exists(folder / "bad"));
+    }
+    // Run by hand from elsewhere, the scripts still find the scene (cd).
+    CHECK(array.find("cd '") != std::string::npos);
 }
 
 TEST_CASE("merge-stats refuses what is not one mode's statistics, naming the file", "[app][farm]") {
@@ -134,6 +159,20 @@ TEST_CASE("merge-stats refuses what is not one mode's statistics, naming the fil
     CHECK_THROWS_WITH(merge_stats({(folder / "c.json").string()}, out), Catch::Contains("c.json"));
     CHECK_THROWS_WITH(merge_stats({(folder / "none.json").string()}, out), Catch::Contains("none.json"));
     CHECK_FALSE(fs::exists(out));
-    merge_stats({(folder / "a.json").string(), (folder / "a.json").string()}, out);
-    CHECK(nlohmann::json::parse(bytes(out))["spacetime"]["primary rays"].get<double>() == 20.0);
+    // (Found by a fresh user: a file named twice was counted twice, the
+    // output could overwrite a window's file, a row of text merged to
+    // nothing, and the objects were summed.)
+    CHECK_THROWS_WITH(merge_stats({(folder / "a.json").string(), (folder / "a.json").string()}, out),
+                      Catch::Contains("named twice"));
+    CHECK_THROWS_WITH(merge_stats({(folder / "a.json").string()}, (folder / "a.json").string()),
+                      Catch::Contains("one of the windows"));
+    std::ofstream(folder / "d.json") << R"({"spacetime": {"objects": "eight"}})";
+    CHECK_THROWS_WITH(merge_stats({(folder / "d.json").string()}, out), Catch::Contains("not a number"));
+    std::ofstream(folder / "a2.json") << R"({"spacetime": {"primary rays": 10, "objects": 8, "per frame": [{"frame": 2}]}})";
+    std::ofstream(folder / "a3.json") << R"({"spacetime": {"primary rays": 7, "objects": 8, "per frame": [{"frame": 3}]}})";
+    merge_stats({(folder / "a2.json").string(), (folder / "a3.json").string()}, out);
+    const auto merged = nlohmann::json::parse(bytes(out))["spacetime"];
+    CHECK(merged["primary rays"] == 17);  // (a whole number, as render writes counts)
+    CHECK(merged["objects"] == 8);
+    CHECK(merged["per frame"].size() == 2);
 }

@@ -12,6 +12,8 @@
 #include <sstream>
 #include <string>
 
+#include <unistd.h>
+
 #include "app/render_command.hpp"
 
 namespace fs = std::filesystem;
@@ -96,8 +98,10 @@ TEST_CASE("windows split the frames evenly, in order, and refuse what is not I/N
     std::size_t total = 0;
     for (int i = 0; i < 16; ++i) total += window_frames(std::to_string(i) + "/16", frames).size();
     CHECK(total == frames.size());
-    for (const char* bad : {"3/3", "-1/3", "1/0", "1", "a/b", "1/3x", "1/ 3/"})
+    for (const char* bad : {"3/3", "-1/3", "1/0", "1", "a/b", "1/3x", "1/ 3/", " 1/3", "+1/3", "1/3 "})
         CHECK_THROWS_WITH(window_frames(bad, frames), Catch::Contains("--window"));
+    // (Found by a fresh user: I K overflowed 64 bits, losing the last frame.)
+    CHECK(window_frames("99999999999999998/99999999999999999", frames) == std::vector<int>{10});
 }
 
 TEST_CASE("frames rendered in windows are byte-identical to one run's", "[app][window]") {
@@ -170,6 +174,27 @@ TEST_CASE("resuming after SIGKILL at a random moment loses no frame and leaves n
               std::string::npos);
         check_same_frames(folder / "one", folder / "killed", 12);
     }
+    // A frame cut short, a file that is no image, a frame of another size:
+    // rendered again, not taken as written (found by a fresh user).
+    std::ofstream(folder / "killed/f_0002.png", std::ios::trunc) << "not a png";
+    {
+        const std::string whole = bytes(folder / "killed/f_0003.png");
+        std::ofstream(folder / "killed/f_0003.png", std::ios::binary | std::ios::trunc) << whole.substr(0, 300);
+    }
+    RenderArguments other = arguments(folder, "small");
+    other.scene.width = 20;
+    other.scene.height = 15;
+    REQUIRE(render(other) == 0);
+    fs::copy_file(folder / "small/f_0004.png", folder / "killed/f_0004.png", fs::copy_options::overwrite_existing);
+    {
+        RenderArguments again = arguments(folder, "killed");
+        again.resume = true;
+        std::ostringstream out, err;
+        REQUIRE(run_render(again, out, err) == 0);
+        CHECK(out.str().find("9 of 12 frames already written") != std::string::npos);
+        CHECK(err.str().find("20 by 15") != std::string::npos);
+        check_same_frames(folder / "one", folder / "killed", 12);
+    }
     // A run with every frame written renders nothing.
     RenderArguments done = arguments(folder, "killed");
     done.resume = true;
@@ -177,4 +202,11 @@ TEST_CASE("resuming after SIGKILL at a random moment loses no frame and leaves n
     REQUIRE(run_render(done, out, err) == 0);
     CHECK(out.str().find("12 of 12 frames already written") != std::string::npos);
     CHECK(out.str().find("frames 1 to") == std::string::npos);
+    // A temporary of a process still running is left to it.
+    const std::string live = ".f_0005.png." + std::to_string(::getppid()) + ".partial";
+    std::ofstream(folder / "killed" / live) << "x";
+    std::ostringstream out2, err2;
+    REQUIRE(run_render(done, out2, err2) == 0);
+    CHECK(fs::exists(folder / "killed" / live));
+    fs::remove(folder / "killed" / live);
 }
