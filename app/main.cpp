@@ -50,6 +50,17 @@ int main(int argc, char** argv) {
                 "[INI ...] [render flags] --windows N [--partition P] [--time T] [--farm-dir DIR] [--submit]");
     farm->prefix_command();
     farm->allow_extras();
+    farm->footer(
+        "Farm flags (the rest goes to every task's `render` as written):\n"
+        "  --windows N          the windows, one Slurm array task each (at most the frames)\n"
+        "  --partition P        #SBATCH --partition for the array and the join\n"
+        "  --time T             #SBATCH --time (Slurm's format, e.g. 01:00:00)\n"
+        "  --farm-dir DIR       where the scripts, logs and statistics go (default out/SCENE/farm)\n"
+        "  --contact-sheet F    the join's contact sheet of every frame\n"
+        "  --animation F.gif    the join's animated GIF of every frame\n"
+        "  --submit             run submit.sh (sbatch) and print the job ids; else print the command\n"
+        "Each task runs render ... --window I/N --resume --stats-json DIR/window_I.json; the join, after\n"
+        "every task succeeded, runs render ... --resume with the sheet and GIF, then merge-stats.");
 
     std::vector<std::string> merge_inputs;
     std::string merge_output;
