@@ -5,6 +5,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "runtime/time_ops.hpp"
 #include "tracer/gif_animation.hpp"
 #include "image/image_format.hpp"
 #include "tracer/whole_file.hpp"
@@ -54,8 +55,7 @@ Image read_image(const fs::path& path) {
             const std::size_t at = (std::size_t(y) * stored.width + x) * stored.channels;
             glm::dvec3 c(stored.values[at], stored.values[at + 1], stored.values[at + 2]);
             if (!stored.linear)
-                for (int k = 0; k < 3; ++k)  // (the inverse of to_srgb8's curve)
-                    c[k] = c[k] <= 0.04045 ? c[k] / 12.92 : std::pow((c[k] + 0.055) / 1.055, 2.4);
+                for (int k = 0; k < 3; ++k) c[k] = runtime::srgb_decode(c[k]);  // (to_srgb8's inverse)
             image.set(x, y, c);
         }
     return image;

@@ -32,7 +32,26 @@ using runtime::Event;
 // lights x depth).
 constexpr std::uint32_t kLensPair = 0x7fffffffu;
 
-// How far back in time light of frames first..last can reach at speed
+// Calls add(p, t) with every point the eye's rays start from (the lens, an
+// orthographic film) and every light's position, at the opening and closing
+// of each of frames first..last.
+template <class Add>
+void for_each_eye_and_light(const runtime::SceneDescription& scene, int first, int last, Add&& add) {
+    const auto& a = scene.animation;
+    for (int f = first; f <= last; ++f) {
+        const double open = a.clock_of_frame(f);
+        for (const double t : {open, open + a.exposure() * a.clock_delta()}) {
+            eye_extent(scene.camera.evaluate(t), [&](const glm::dvec3& p) { add(p); });
+            for (const auto& light : scene.lights) {
+                glm::dvec3 p = light.position(t);
+                if (!light.transform.empty()) p = glm::dvec3(light.transform.matrix_at(t) * glm::dvec4(p, 1.0));
+                add(p);
+            }
+        }
+    }
+}
+
+// How far back in time light of the animation can reach at speed
 // `light_speed` (scene units per clock unit; infinite: 0). Every ray starts
 // inside the extent of everything the animation holds (its objects, eyes
 // and lights) and hits only inside it, so a ray travels at most its
@@ -42,17 +61,8 @@ double light_lookback(const runtime::SceneDescription& scene, const ObjectSet& o
     const auto& a = scene.animation;
     const double begin = std::min(a.time_begin(), a.time_end()), end = std::max(a.time_begin(), a.time_end());
     Box4 all = enclosing_box(objects, begin, end);
-    for (int f = a.initial_frame; f <= a.final_frame; ++f) {
-        const double open = a.clock_of_frame(f);
-        for (const double t : {open, open + a.exposure() * a.clock_delta()}) {
-            eye_extent(scene.camera.evaluate(t), [&](const glm::dvec3& p) { all.extend(Event(p, begin)); });
-            for (const auto& light : scene.lights) {
-                glm::dvec3 p = light.position(t);
-                if (!light.transform.empty()) p = glm::dvec3(light.transform.matrix_at(t) * glm::dvec4(p, 1.0));
-                all.extend(Event(p, begin));
-            }
-        }
-    }
+    for_each_eye_and_light(scene, a.initial_frame, a.final_frame,
+                           [&](const glm::dvec3& p) { all.extend(Event(p, begin)); });
     const double diagonal = glm::length(glm::dvec3(all.hi) - glm::dvec3(all.lo));
     return (std::max(1, scene.global.max_trace_level) + 1) * diagonal / light_speed;
 }
@@ -75,19 +85,9 @@ Box4 animation_root(const runtime::SceneDescription& scene, const ObjectSet& obj
         root.extend(Event(p, floor));
         root.extend(Event(p, end));
     };
-    for (int f = first; f <= last; ++f) {
-        const double open = a.clock_of_frame(f);
-        for (const double t : {open, open + a.exposure() * a.clock_delta()}) {
-            // (Focal blur moves the eye over a lens of radius aperture / 4;
-            // an orthographic camera's rays start across its film.)
-            eye_extent(scene.camera.evaluate(t), add);
-            for (const auto& light : scene.lights) {
-                glm::dvec3 p = light.position(t);
-                if (!light.transform.empty()) p = glm::dvec3(light.transform.matrix_at(t) * glm::dvec4(p, 1.0));
-                add(p);
-            }
-        }
-    }
+    // (Focal blur moves the eye over a lens of radius aperture / 4; an
+    // orthographic camera's rays start across its film.)
+    for_each_eye_and_light(scene, first, last, add);
     // A flat extent (everything in one plane, or a still) gets a little
     // thickness so that the cells have volume.
     for (int i = 0; i < 4; ++i) {

@@ -126,29 +126,29 @@ TEST_CASE("shadow rays run back in time: a moving occluder's shadow lags", "[tra
     CHECK(shadow_centre(150.0) == Approx(0.3 * (1.0 - 30.0 / 150.0) * grow).margin(kTolerance));
 }
 
-TEST_CASE("infinite light is today's image, and light barely finite differs by rounding only", "[tracer][light speed]") {
+TEST_CASE("light barely finite differs from instant light by rounding only, and instant light runs no ray "
+          "through time",
+          "[tracer][light speed]") {
+    // (Instant light is today's image bit for bit: its rays carry w exactly
+    // 0 and take the path they always took, which the counter shows; the
+    // golden frames and the exact POV-Ray stills hold the images.)
     const auto scene = parse(std::string(kCamera) + "light_source { <-3, 4, -6>, rgb 1 }\n"
                              "plane { y, -0.3 pigment { checker rgb 0.9, rgb 0.2 scale 0.1 } finish { reflection 0.3 } }\n"
                              "sphere { <0.2 * clock, 0, 0>, 0.2 pigment { rgbf <0.9, 0.9, 1, 0.8> } interior { ior 1.4 } }\n"
                              "box { <-0.4, -0.3, 0.2>, <-0.2, 0.1, 0.4> rotate y * 90 * clock pigment { rgb <1, 0.4, 0.2> } }");
-    tr::RenderSettings plain;
-    plain.samples_per_pixel = 4;
-    tr::Renderer today(scene, plain);
-    const tr::Image a = today.render_frame(2);
-    tr::RenderSettings same = plain;
-    same.light_speed = std::numeric_limits<double>::infinity();
-    tr::Renderer infinite(scene, same);
-    CHECK(infinite.render_frame(2).rgb == a.rgb);
+    tr::RenderSettings settings;
+    settings.samples_per_pixel = 4;
+    tr::Renderer instant(scene, settings);
+    const tr::Image a = instant.render_frame(2);
+    CHECK(instant.counters().travelling_rays == 0);
     // C = 10^12: every ray takes the time-travelling walk, and its times
     // differ from the instant's by 10^-11 at most.
-    same.light_speed = 1e12;
-    tr::Renderer fast(scene, same);
+    settings.light_speed = 1e12;
+    tr::Renderer fast(scene, settings);
     const tr::Image c = fast.render_frame(2);
     double largest = 0.0;
     for (std::size_t i = 0; i < a.rgb.size(); ++i) largest = std::max(largest, double(std::fabs(a.rgb[i] - c.rgb[i])));
     CHECK(largest < 1e-4);
-    // (Counted: instant light runs no ray through time.)
-    CHECK(infinite.counters().travelling_rays == 0);
     CHECK(fast.counters().travelling_rays >= fast.counters().primary_rays);
 }
 
