@@ -1,15 +1,42 @@
 #include "app/hierarchy_arguments.hpp"
 
 #include <stdexcept>
+#include <string>
 
 namespace hexant::app {
+
+namespace {
+
+// "paper"/"cost", "lazy"/"eager", "auto"/"box"/"linear"/"slabs";
+// std::invalid_argument otherwise.
+tracer::Criterion parse_criterion(const std::string& name) {
+    if (name == "cost") return tracer::Criterion::Cost;
+    if (name == "paper") return tracer::Criterion::Paper;
+    throw std::invalid_argument("unknown split criterion '" + name + "' (cost or paper)");
+}
+
+tracer::BuildKind parse_build_kind(const std::string& name) {
+    if (name == "lazy") return tracer::BuildKind::Lazy;
+    if (name == "eager") return tracer::BuildKind::Eager;
+    throw std::invalid_argument("unknown build '" + name + "' (lazy or eager)");
+}
+
+tracer::BoundStyle parse_bound_style(const std::string& name) {
+    if (name == "auto") return tracer::BoundStyle::Auto;
+    if (name == "box") return tracer::BoundStyle::Box;
+    if (name == "linear") return tracer::BoundStyle::Linear;
+    if (name == "slabs") return tracer::BoundStyle::Slabs;
+    throw std::invalid_argument("unknown bound style '" + name + "' (auto, box, linear or slabs)");
+}
+
+}  // namespace
 
 tracer::BuildOptions HierarchyArguments::options() const {
     tracer::BuildOptions o;
     try {
-        o.criterion = tracer::parse_criterion(split);
-        o.build = tracer::parse_build_kind(build);
-        o.bounds = tracer::parse_bound_style(bounds);
+        o.criterion = parse_criterion(split);
+        o.build = parse_build_kind(build);
+        o.bounds = parse_bound_style(bounds);
     } catch (const std::invalid_argument& e) {
         throw std::runtime_error(std::string("--split/--build/--bounds: ") + e.what());
     }

@@ -17,7 +17,7 @@
 
 #include "app/out_of_memory.hpp"
 #include "language/interpreter.hpp"
-#include "runtime/object_error.hpp"
+#include "runtime/objects/object_error.hpp"
 #include "tracer/gif_animation.hpp"
 #include "tracer/image_output.hpp"
 #include "tracer/renderer.hpp"

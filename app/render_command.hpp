@@ -11,7 +11,7 @@
 
 #include "app/command_line.hpp"
 #include "app/hierarchy_arguments.hpp"
-#include "runtime/scene.hpp"
+#include "runtime/scene/scene.hpp"
 
 namespace hexant::app {
 

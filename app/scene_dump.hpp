@@ -5,7 +5,7 @@
 
 #include <ostream>
 
-#include "runtime/scene.hpp"
+#include "runtime/scene/scene.hpp"
 
 namespace hexant::app {
 

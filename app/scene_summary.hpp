@@ -4,7 +4,7 @@
 
 #include <ostream>
 
-#include "runtime/scene.hpp"
+#include "runtime/scene/scene.hpp"
 
 namespace hexant::app {
 

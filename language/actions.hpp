@@ -16,7 +16,7 @@
 #include "language/checked_integer.hpp"
 #include "language/timed_call.hpp"
 #include "language/value_ops.hpp"
-#include "runtime/parameter_check.hpp"
+#include "runtime/objects/parameter_check.hpp"
 
 namespace hexant::language {
 
@@ -603,7 +603,7 @@ HEXANT_ACTION(scale_step) {
         auto v = to_vector3(st.pop(), "scale's factors");
         // POV-Ray 3.7 warns and scales by 1 instead (parser_expressions.cpp);
         // a factor that only passes through 0 is handled where it is
-        // evaluated (runtime/motion.cpp, scale_factor).
+        // evaluated (runtime/motion/motion.cpp, scale_factor).
         static const char* const kAxis[] = {"X", "Y", "Z"};
         for (int i = 0; i < 3; ++i)
             if (v.c[i].is_constant() && v.c[i].constant() == 0.0) {
@@ -701,7 +701,7 @@ HEXANT_ACTION(pigment_base) {
         }
     }
 };
-// ---- patterns (runtime/pattern/pattern.hpp), in a pigment or a normal
+// ---- patterns (runtime/texture/pattern/pattern.hpp), in a pigment or a normal
 
 // The pattern being written: a pigment's, a normal's or a texture's.
 struct PatternSlot {

@@ -8,7 +8,7 @@
 
 #include "language/checked_integer.hpp"
 #include "language/value_ops.hpp"
-#include "runtime/switching_instants.hpp"
+#include "runtime/time/switching_instants.hpp"
 
 namespace hexant::language {
 
@@ -419,7 +419,7 @@ std::optional<double> vnormalize_zero_at(const std::vector<Value>& args,
     if (args.size() != 1) return std::nullopt;
     const TimeFunction l = length(arg_vector("vnormalize", args, 0));
     if (l.is_constant()) return l.constant() == 0.0 ? std::optional<double>(time.lo) : std::nullopt;
-    // Its zeros, exactly (runtime/switching_instants.hpp); a length that
+    // Its zeros, exactly (runtime/time/switching_instants.hpp); a length that
     // comes and goes too often is reported at the start.
     try {
         const auto pieces = runtime::split_by_truth(TimeFunction::apply(TimeOp::Greater, l, 0.0),

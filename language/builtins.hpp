@@ -7,7 +7,7 @@
 
 #include "language/random_stream.hpp"
 #include "language/value.hpp"
-#include "runtime/interval.hpp"
+#include "runtime/time/interval.hpp"
 
 namespace hexant::language {
 

@@ -543,10 +543,10 @@ struct unsupported_pattern_name
              TAO_PEGTL_KEYWORD("wave")> {};
 struct unsupported_pattern : p::seq<unsupported_pattern_name, skip::until_rbrace> {};
 // uv_mapping in a pigment, a normal or a texture: what follows in the
-// block is read at the surface's (u, v, 0) (runtime/material.hpp).
+// block is read at the surface's (u, v, 0) (runtime/texture/material.hpp).
 struct uv_mapping : p::seq<TAO_PEGTL_KEYWORD("uv_mapping"), ws> {};
 
-// The patterns hexant has (runtime/pattern/registry.cpp, the same names),
+// The patterns hexant has (runtime/texture/pattern/registry.cpp, the same names),
 // each followed by what its kind takes: a vector (gradient), a number
 // (spiral1, spiral2, mandel) or a list of colours (checker, brick,
 // hexagon).

@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <stdexcept>
 
-#include "runtime/time_ops.hpp"
+#include "image/colour_transfer.hpp"
 
 namespace hexant::language {
 
@@ -17,11 +17,11 @@ runtime::pattern::ImagePixels image_pixels(const image::StoredImage& stored, con
     // Decoding: the scene's gamma, else the file's (OpenEXR is linear; a
     // PNG's gAMA chunk gives its encoding gamma; else sRGB).
     const auto decode = [&](double x) {
-        if (gamma.srgb) return runtime::srgb_decode(x);
+        if (gamma.srgb) return image::srgb_decode(x);
         if (gamma.power) return std::pow(x, *gamma.power);
         if (stored.linear) return x;
         if (stored.encoding_gamma > 0.0) return std::pow(x, 1.0 / stored.encoding_gamma);
-        return runtime::srgb_decode(x);
+        return image::srgb_decode(x);
     };
     const bool working_linear = assumed_gamma == 1.0;
     using Source = image::StoredImage::Source;

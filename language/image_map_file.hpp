@@ -8,7 +8,7 @@
 #include <optional>
 
 #include "image/image_format.hpp"
-#include "runtime/pattern/image_map.hpp"
+#include "runtime/texture/pattern/image_map.hpp"
 
 namespace hexant::language {
 

@@ -13,7 +13,7 @@
 #include "language/actions.hpp"
 #include "language/checked_integer.hpp"
 #include "language/interpreter_state.hpp"
-#include "runtime/parameter_check.hpp"
+#include "runtime/objects/parameter_check.hpp"
 
 #ifndef HEXANT_BUNDLED_INCLUDE_DIR
 #define HEXANT_BUNDLED_INCLUDE_DIR "language/include"
@@ -171,7 +171,7 @@ void Interpreter::apply_transform(runtime::TransformStep step, const p::position
         texture->transform_by(step);
     } else if (auto* pigment = std::get_if<runtime::Pigment>(&b)) {
         // (A declared uv-mapped pigment takes no transform from outside
-        // its own block, as in POV-Ray: runtime/material.hpp, UvMapping.)
+        // its own block, as in POV-Ray: runtime/texture/material.hpp, UvMapping.)
         if (pigment->uv_mapping != runtime::UvMapping::Closed) pigment->transform.append(std::move(step));
     } else if (auto* normal = std::get_if<runtime::Normal>(&b)) {
         if (normal->uv_mapping != runtime::UvMapping::Closed) normal->transform.append(std::move(step));

@@ -10,7 +10,7 @@
 
 #include "language/limits.hpp"
 #include "language/scene_error.hpp"
-#include "runtime/scene.hpp"
+#include "runtime/scene/scene.hpp"
 
 namespace hexant::language {
 

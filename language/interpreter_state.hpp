@@ -38,8 +38,8 @@
 #include "language/value.hpp"
 #include "language/time_branch.hpp"
 #include "language/value_ops.hpp"
-#include "runtime/scene.hpp"
-#include "runtime/switching_instants.hpp"
+#include "runtime/scene/scene.hpp"
+#include "runtime/time/switching_instants.hpp"
 
 namespace hexant::language {
 
@@ -161,7 +161,7 @@ public:
     void add_light(runtime::LightRecord light, const p::position& where);
     // Throws SceneError at the object's place (or its part's) when a
     // parameter is NaN, infinite or degenerate at some instant of the
-    // animation (runtime/parameter_check.hpp); `where` is the item that
+    // animation (runtime/objects/parameter_check.hpp); `where` is the item that
     // added it to the scene.
     void check_parameters(const runtime::ObjectRecord& object, const p::position& where) const;
 

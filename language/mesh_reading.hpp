@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "language/value.hpp"
-#include "runtime/object.hpp"
+#include "runtime/objects/object.hpp"
 #include "runtime/objects/mesh/mesh_data.hpp"
 
 namespace hexant::language {

@@ -7,7 +7,7 @@
 
 #include "language/timed_call.hpp"
 #include "language/value_ops.hpp"
-#include "runtime/object_factory.hpp"
+#include "runtime/objects/object_factory.hpp"
 
 namespace hexant::language {
 

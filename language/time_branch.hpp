@@ -1,7 +1,7 @@
 // Branches whose condition depends on `clock` (#if, #elseif on a function
 // of time): the interpreter splits the time it is reading for (its time
 // domain, Interpreter::domain) into the pieces where the condition holds
-// and where it does not (runtime/switching_instants.hpp), reads the branch
+// and where it does not (runtime/time/switching_instants.hpp), reads the branch
 // that holds on each side with the domain restricted to it, and then makes
 // what the sides changed piecewise in time:
 //   - objects and lights made on a side exist only during its pieces
@@ -19,7 +19,7 @@
 #include <string>
 
 #include "language/value.hpp"
-#include "runtime/lifetime.hpp"
+#include "runtime/time/lifetime.hpp"
 
 namespace hexant::language {
 

@@ -6,8 +6,8 @@
 #include <set>
 
 #include "language/value_ops.hpp"
-#include "runtime/limit_error.hpp"
-#include "runtime/switching_instants.hpp"
+#include "runtime/time/limit_error.hpp"
+#include "runtime/time/switching_instants.hpp"
 
 namespace hexant::language {
 

@@ -10,8 +10,8 @@
 #include <utility>
 #include <vector>
 
-#include "runtime/interval.hpp"
-#include "runtime/lifetime.hpp"
+#include "runtime/time/interval.hpp"
+#include "runtime/time/lifetime.hpp"
 
 namespace hexant::language {
 

@@ -13,13 +13,13 @@
 
 #include "language/memory_budget.hpp"
 #include "language/timed_string.hpp"
-#include "runtime/camera.hpp"
-#include "runtime/light.hpp"
-#include "runtime/material.hpp"
-#include "runtime/object.hpp"
-#include "runtime/sky_sphere.hpp"
-#include "runtime/spline.hpp"
-#include "runtime/transform.hpp"
+#include "runtime/scene/camera.hpp"
+#include "runtime/scene/light.hpp"
+#include "runtime/texture/material.hpp"
+#include "runtime/objects/object.hpp"
+#include "runtime/scene/sky_sphere.hpp"
+#include "runtime/motion/spline.hpp"
+#include "runtime/motion/transform.hpp"
 
 namespace hexant::language {
 

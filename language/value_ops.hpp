@@ -7,8 +7,8 @@
 #include <string>
 
 #include "language/value.hpp"
-#include "runtime/time_ops.hpp"
-#include "runtime/vector_function.hpp"
+#include "runtime/time/time_ops.hpp"
+#include "runtime/time/vector_function.hpp"
 
 namespace hexant::language {
 

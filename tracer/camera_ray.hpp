@@ -15,7 +15,9 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-#include "runtime/camera.hpp"
+#include "runtime/scene/camera.hpp"
+#include "runtime/texture/texture_evaluator.hpp"
+#include "tracer/focal_blur.hpp"
 
 namespace hexant::tracer {
 
@@ -28,7 +30,6 @@ struct ScreenRay {
     glm::dvec2 pattern_point;
 };
 
-
 // The wide and parallel projections (camera_ray.cpp).
 std::optional<ScreenRay> projected_camera_ray(const runtime::CameraFrame& camera, double x0, double y0);
 
@@ -39,6 +40,37 @@ std::optional<ScreenRay> projected_camera_ray(const runtime::CameraFrame& camera
     if (camera.type == runtime::CameraType::Perspective)
         return ScreenRay{camera.location, camera.direction + x0 * camera.right + y0 * camera.up, {x0, y0}};
     return projected_camera_ray(camera, x0, y0);
+}
+
+// A sample's primary ray, in POV-Ray's order (CreateCameraRay): the
+// projection's ray through screen point (x0, y0); with an aperture, moved
+// to the lens point that lens() (a pair in [0, 1)^2) picks (focal_blur.hpp),
+// the origin moving with it; then bent by the camera's normal { } at its
+// screen point, at time t, when there is one. The direction is unit. No
+// ray where the projection gives none.
+struct PrimaryRay {
+    glm::dvec3 origin, direction;
+};
+
+template <class Lens>
+[[gnu::always_inline]] inline std::optional<PrimaryRay> primary_ray(const runtime::CameraFrame& camera,
+                                                                    double x0, double y0, Lens&& lens,
+                                                                    const runtime::TextureEvaluator* normal,
+                                                                    double t) {
+    const std::optional<ScreenRay> screen = camera_ray(camera, x0, y0);
+    if (!screen) return std::nullopt;
+    glm::dvec3 origin = screen->origin, direction;
+    if (camera.aperture != 0.0) {
+        // (The lens moves an orthographic ray's own origin, where POV-Ray
+        // 3.7 moves every ray's to the location's lens.)
+        const CameraRay ray = focal_blur_ray(camera, screen->direction, lens_point(lens()));
+        origin = origin - camera.location + ray.origin;
+        direction = ray.direction;
+    } else {
+        direction = glm::normalize(screen->direction);
+    }
+    if (normal) direction = normal->perturb(direction, {screen->pattern_point, 0.0}, t);
+    return PrimaryRay{origin, direction};
 }
 
 // Calls add(p) with every point a camera's rays start from or that bounds

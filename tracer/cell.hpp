@@ -15,7 +15,7 @@
 //    lo + u dlo .. hi + u dhi, u = (t - t0) / (t1 - t0). In spacetime this
 //    is a bound by eight 4D slabs whose normals follow the motion; for a ray
 //    at one instant it is a 3D box, three fused multiply-adds per side;
-//  - SlabNode: the 12-slab bound (runtime/slab_bound.hpp) without its time
+//  - SlabNode: the 12-slab bound (runtime/bounds/slab_bound.hpp) without its time
 //    slab: at an instant its eight auxiliary slabs pair up into four
 //    diagonal 3D slabs, so the child lies in a 3D box cut by four planes.
 // Every stored bound is rounded outward, with the margin that the float

@@ -13,7 +13,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-#include "runtime/camera.hpp"
+#include "runtime/scene/camera.hpp"
 
 namespace hexant::tracer {
 

@@ -1,5 +1,5 @@
 // Glassner's hybrid hierarchy over spacetime: space (and time) subdivision
-// down, bounding volumes up (DESIGN.md, tracer/).
+// down, bounding volumes up (docs/design.md, "The tracer").
 //
 // Down: a cell (a 4D box) is halved in time, in space (eight octants), in
 // both, or not at all, as the split criterion says:
@@ -38,9 +38,9 @@
 #include <string>
 #include <vector>
 
-#include "runtime/intelligent_object.hpp"
-#include "runtime/spacetime.hpp"
-#include "runtime/time_sweep.hpp"
+#include "runtime/objects/intelligent_object.hpp"
+#include "runtime/geometry/spacetime.hpp"
+#include "runtime/bounds/time_sweep.hpp"
 #include "tracer/cell.hpp"
 #include "tracer/counters.hpp"
 #include "tracer/node_arena.hpp"
@@ -95,13 +95,7 @@ struct BuildOptions {
     static constexpr int kMaxDepth = 32;
 };
 
-// "paper"/"cost", "lazy"/"eager", "auto"/"box"/"linear"/"slabs";
-// std::invalid_argument otherwise.
-Criterion parse_criterion(const std::string& name);
-BuildKind parse_build_kind(const std::string& name);
-BoundStyle parse_bound_style(const std::string& name);
-
-// The bounded objects and their sweeps (runtime/time_sweep.hpp), computed
+// The bounded objects and their sweeps (runtime/bounds/time_sweep.hpp), computed
 // once over `time` and shared by every hierarchy built over part of it.
 struct SweptObjects {
     std::vector<const runtime::IntelligentObject*> objects;

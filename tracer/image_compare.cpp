@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "tracer/image.hpp"
+#include "image/colour_transfer.hpp"
 #include "image/image_format.hpp"
 #include "tracer/image_output.hpp"
 
@@ -17,18 +18,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// sRGB's decoding (IEC 61966-2-1), the inverse of to_srgb8's encoding.
-float srgb_to_linear(float v) {
-    return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
-}
-
 StoredImage read(const fs::path& path, ImageSpace space = ImageSpace::Stored) {
     StoredImage image = read_stored_image(path);
     if (space == ImageSpace::Linear && !image.linear) {
         // Colour channels only: an alpha channel is not encoded.
         for (std::size_t i = 0; i < image.values.size(); ++i)
             if (int(i % std::size_t(image.channels)) < 3)
-                image.values[i] = srgb_to_linear(image.values[i]);
+                image.values[i] = float(image::srgb_decode(image.values[i]));
         image.linear = true;
     }
     return image;

@@ -5,7 +5,7 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "runtime/time_ops.hpp"
+#include "image/colour_transfer.hpp"
 #include "tracer/gif_animation.hpp"
 #include "image/image_format.hpp"
 #include "tracer/whole_file.hpp"
@@ -55,7 +55,7 @@ Image read_image(const fs::path& path) {
             const std::size_t at = (std::size_t(y) * stored.width + x) * stored.channels;
             glm::dvec3 c(stored.values[at], stored.values[at + 1], stored.values[at + 2]);
             if (!stored.linear)
-                for (int k = 0; k < 3; ++k) c[k] = runtime::srgb_decode(c[k]);  // (to_srgb8's inverse)
+                for (int k = 0; k < 3; ++k) c[k] = image::srgb_decode(c[k]);  // (to_srgb8's inverse)
             image.set(x, y, c);
         }
     return image;
@@ -63,7 +63,7 @@ Image read_image(const fs::path& path) {
 
 unsigned char to_srgb8(double linear) {
     const double c = std::clamp(linear, 0.0, 1.0);
-    const double s = c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
+    const double s = image::srgb_encode(c);
     return static_cast<unsigned char>(std::lround(s * 255.0));
 }
 

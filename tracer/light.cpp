@@ -16,8 +16,6 @@ constexpr double kEpsilon = 1.0e-10;
 
 glm::dvec3 rgb(const runtime::ColourFunction& c, double t) { return {c.c[0](t), c.c[1](t), c.c[2](t)}; }
 
-glm::dvec3 vec(const runtime::Vector3Function& v, double t) { return {v.c[0](t), v.c[1](t), v.c[2](t)}; }
-
 // POV-Ray's subdivision of rows a..b (TraceAreaLightSubsetShadowRay): the
 // two ends each half when they are neighbours (or the one row whole),
 // else half to each of a..floor(middle) and ceil(middle)..b.
@@ -79,16 +77,10 @@ double ShadedLight::grid_row(double s, const std::vector<double>& cumulative) co
 }
 
 glm::dvec3 ShadedLight::moving_position(double t) const {
-    const glm::dvec3 p = vec(position_, t);
-    if (transform_.empty()) return p;
-    return glm::dvec3(transform_.matrix_at(t) * glm::dvec4(p, 1.0));
+    return runtime::light_point(position_, transform_, t);
 }
 
-glm::dvec3 ShadedLight::point_at(double t) const {
-    const glm::dvec3 p = vec(point_at_, t);
-    if (transform_.empty()) return p;
-    return glm::dvec3(transform_.matrix_at(t) * glm::dvec4(p, 1.0));
-}
+glm::dvec3 ShadedLight::point_at(double t) const { return runtime::light_point(point_at_, transform_, t); }
 
 glm::dvec3 ShadedLight::axis_at(double t) const {
     const glm::dvec3 d = point_at(t) - position_at(t);
@@ -187,7 +179,7 @@ double ShadedLight::shaped_attenuation(const glm::dvec3& point, const LightRay& 
 
 glm::dvec3 ShadedLight::area_offset(glm::dvec2 u, const LightRay& centre, double t) const {
     const runtime::AreaLight& area = *area_;
-    glm::dvec3 axis1 = vec(area.axis1, t), axis2 = vec(area.axis2, t);
+    glm::dvec3 axis1 = area.axis1(t), axis2 = area.axis2(t);
     if (!transform_.empty()) {
         const glm::dmat3 m(transform_.matrix_at(t));
         axis1 = m * axis1;

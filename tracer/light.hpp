@@ -15,7 +15,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-#include "runtime/light.hpp"
+#include "runtime/scene/light.hpp"
 
 namespace hexant::tracer {
 

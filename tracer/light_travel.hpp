@@ -22,7 +22,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
-#include "runtime/spacetime.hpp"
+#include "runtime/geometry/spacetime.hpp"
 
 namespace hexant::tracer {
 

@@ -13,7 +13,7 @@
 #include <limits>
 #include <glm/vec3.hpp>
 
-#include "runtime/spacetime.hpp"
+#include "runtime/geometry/spacetime.hpp"
 
 namespace hexant::tracer {
 

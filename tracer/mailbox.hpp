@@ -11,7 +11,7 @@
 #include <optional>
 #include <vector>
 
-#include "runtime/intelligent_object.hpp"
+#include "runtime/objects/intelligent_object.hpp"
 
 namespace hexant::tracer {
 

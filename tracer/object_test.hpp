@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <optional>
 
-#include "runtime/intelligent_object.hpp"
+#include "runtime/objects/intelligent_object.hpp"
 #include "tracer/thread_state.hpp"
 
 namespace hexant::tracer {

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "runtime/intelligent_object.hpp"
-#include "runtime/spacetime.hpp"
+#include "runtime/objects/intelligent_object.hpp"
+#include "runtime/geometry/spacetime.hpp"
 #include "tracer/counters.hpp"
 #include "tracer/hierarchy.hpp"
 #include "tracer/thread_state.hpp"

@@ -15,7 +15,7 @@
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
-#include "runtime/object_factory.hpp"
+#include "runtime/objects/object_factory.hpp"
 #include "runtime/work_counts.hpp"
 #include "tracer/camera_ray.hpp"
 #include "tracer/focal_blur.hpp"
@@ -42,11 +42,7 @@ void for_each_eye_and_light(const runtime::SceneDescription& scene, int first, i
         const double open = a.clock_of_frame(f);
         for (const double t : {open, open + a.exposure() * a.clock_delta()}) {
             eye_extent(scene.camera.evaluate(t), [&](const glm::dvec3& p) { add(p); });
-            for (const auto& light : scene.lights) {
-                glm::dvec3 p = light.position(t);
-                if (!light.transform.empty()) p = glm::dvec3(light.transform.matrix_at(t) * glm::dvec4(p, 1.0));
-                add(p);
-            }
+            for (const auto& light : scene.lights) add(light.world_position(t));
         }
     }
 }
@@ -97,6 +93,71 @@ Box4 animation_root(const runtime::SceneDescription& scene, const ObjectSet& obj
         root.hi[i] += pad;
     }
     return root;
+}
+
+// One tile of the frame's fixed grid (FrameEstimate::kTile): its place, and
+// how it samples.
+struct TilePlan {
+    int frame;
+    std::uint32_t sample_seed;
+    bool halves, adaptive;  // two sample sets; rounds to a target error
+    int per_set;            // the samples of each set at most
+    double target_error;
+    int x0, y0, width, pixels;
+};
+
+// A tile's samples: per pixel the sums of its first and (halves) its
+// second, independent set, and its estimated squared error after the last
+// round; how many samples each set took, and whether the ceiling was
+// reached above the target.
+struct TileSamples {
+    std::array<glm::dvec3, FrameEstimate::kTile * FrameEstimate::kTile> sum_a, sum_b;
+    std::array<double, FrameEstimate::kTile * FrameEstimate::kTile> pixel_squared{};
+    int taken = 0;
+    bool over_target = false;
+};
+
+// Samples a tile in rounds: samples [taken, goal) of each set, then the
+// tile's estimate decides whether to double (adaptive only). What a tile
+// does depends on its own samples only. `trace(x, y, seed, index, count,
+// state)` gives one sample; `linear` takes a colour to linear light.
+template <class Trace, class Linear>
+TileSamples sample_tile(const TilePlan& plan, Trace&& trace, Linear&& linear, ThreadState& state) {
+    TileSamples out;
+    out.sum_a.fill(glm::dvec3(0.0));
+    out.sum_b.fill(glm::dvec3(0.0));
+    const int per_set = plan.per_set, pixels = plan.pixels;
+    int& taken = out.taken;
+    int goal = plan.adaptive ? std::min(per_set, RenderSettings::kFirstRoundSamples / 2) : per_set;
+    double tile_squared = 0.0;
+    while (true) {
+        for (int p = 0; p < pixels; ++p) {
+            const int x = plan.x0 + p % plan.width, y = plan.y0 + p / plan.width;
+            const std::uint32_t seed = pixel_seed(plan.frame, x, y, plan.sample_seed);
+            const std::uint32_t second = plan.halves ? second_set_seed(seed) : 0;
+            for (int i = taken; i < goal; ++i) {
+                out.sum_a[p] += trace(x, y, seed, i, per_set, state);
+                if (plan.halves) out.sum_b[p] += trace(x, y, second, i, per_set, state);
+            }
+        }
+        taken = goal;
+        if (plan.halves) {
+            tile_squared = 0.0;
+            for (int p = 0; p < pixels; ++p) {
+                // (A - B)^2 / 4 per channel, each half in linear light.
+                const glm::dvec3 d = linear(out.sum_a[p] / double(taken)) - linear(out.sum_b[p] / double(taken));
+                out.pixel_squared[p] = glm::dot(d, d) / 12.0;
+                tile_squared += out.pixel_squared[p];
+            }
+        }
+        if (!plan.adaptive || std::sqrt(tile_squared / pixels) <= plan.target_error) break;
+        if (taken == per_set) {
+            out.over_target = true;  // (the ceiling reached above the target)
+            break;
+        }
+        goal = std::min(per_set, 2 * taken);
+    }
+    return out;
 }
 
 }  // namespace
@@ -232,42 +293,21 @@ Image Renderer::render_frame(int frame) {
         if (moving_camera) moved.emplace(scene_.camera.evaluate(t));
         const runtime::CameraFrame& camera = moving_camera ? *moved : fixed_camera;
         // POV-Ray's screen: x from -0.5 (left) to 0.5, y from 0.5 (top) to
-        // -0.5; left-handed.
+        // -0.5; left-handed. Focal blur's lens point is one more pair of the
+        // sample's dimensions (its own scramble, as an area light's).
         const double u = (x + s.x) / width - 0.5;
         const double v = 0.5 - (y + s.y) / height;
-        // (The pinhole's ray here, the other projections' out of line: no
-        // optional in the common case.)
-        glm::dvec3 origin = camera.location, direction;
-        glm::dvec2 pattern_point(u, v);
-        if (camera.type == runtime::CameraType::Perspective) {
-            direction = camera.direction + u * camera.right + v * camera.up;
-        } else {
-            const std::optional<ScreenRay> screen = projected_camera_ray(camera, u, v);
-            // (No ray, a fisheye's corner: black, as POV-Ray's.)
-            if (!screen) return glm::dvec3(0.0);
-            origin = screen->origin;
-            direction = screen->direction;
-            pattern_point = screen->pattern_point;
-        }
-        glm::dvec3 d;
-        if (camera.aperture != 0.0) {
-            // Focal blur: the lens point is one more pair of the sample's
-            // dimensions (its own scramble, as an area light's). (The lens
-            // moves an orthographic ray's own origin, where POV-Ray 3.7
-            // moves every ray's to the location's lens.)
-            const auto lens = padded_pair(seed, static_cast<std::uint32_t>(index), static_cast<std::uint32_t>(count),
-                                          kLensPair, settings_.jitter);
-            const CameraRay ray = focal_blur_ray(camera, direction, lens_point({lens[0], lens[1]}));
-            origin = origin - camera.location + ray.origin;
-            d = ray.direction;
-        } else {
-            d = glm::normalize(direction);
-        }
-        // (A camera's normal { } bends each ray by the pattern at its point
-        // on the screen, after the lens, as POV-Ray's CreateCameraRay.)
-        if (camera_normal_) d = camera_normal_->perturb(d, {pattern_point, 0.0}, t);
+        const auto lens = [&] {
+            const auto pair = padded_pair(seed, static_cast<std::uint32_t>(index),
+                                          static_cast<std::uint32_t>(count), kLensPair, settings_.jitter);
+            return glm::dvec2(pair[0], pair[1]);
+        };
+        const std::optional<PrimaryRay> ray =
+            primary_ray(camera, u, v, lens, camera_normal_ ? &*camera_normal_ : nullptr, t);
+        // (No ray, a fisheye's corner: black, as POV-Ray's.)
+        if (!ray) return glm::dvec3(0.0);
         state.sample = {seed, static_cast<std::uint32_t>(index), static_cast<std::uint32_t>(count), settings_.jitter};
-        return shader_->trace(travel_.ray(origin, t, d), state);
+        return shader_->trace(travel_.ray(ray->origin, t, ray->direction), state);
     };
 
     // The fixed grid of tiles (the estimate's, FrameEstimate::kTile): what
@@ -286,46 +326,14 @@ Image Renderer::render_frame(int frame) {
             const int x0 = tile % tiles_x * kTile, y0 = tile / tiles_x * kTile;
             const int x1 = std::min(width, x0 + kTile), y1 = std::min(height, y0 + kTile);
             const int tile_width = x1 - x0, pixels = tile_width * (y1 - y0);
-            // Per pixel of the tile, the sums of its first and (halves) its
-            // second, independent set of samples.
-            std::array<glm::dvec3, kTile * kTile> sum_a, sum_b;
-            sum_a.fill(glm::dvec3(0.0));
-            sum_b.fill(glm::dvec3(0.0));
-            // Rounds: samples [taken, goal) of each set, then the tile's
-            // estimate decides whether to double (adaptive only).
-            int taken = 0;
-            int goal = adaptive ? std::min(per_set, RenderSettings::kFirstRoundSamples / 2) : per_set;
-            // (halves) Per pixel, its estimated squared error after the last
-            // round: the tile's decision and the frame's estimate both read it.
-            std::array<double, kTile * kTile> pixel_squared{};
-            double tile_squared = 0.0;
-            while (true) {
-                for (int p = 0; p < pixels; ++p) {
-                    const int x = x0 + p % tile_width, y = y0 + p / tile_width;
-                    const std::uint32_t seed = pixel_seed(frame, x, y, settings_.sample_seed);
-                    const std::uint32_t second = halves ? second_set_seed(seed) : 0;
-                    for (int i = taken; i < goal; ++i) {
-                        sum_a[p] += trace_sample(x, y, seed, i, per_set, state);
-                        if (halves) sum_b[p] += trace_sample(x, y, second, i, per_set, state);
-                    }
-                }
-                taken = goal;
-                if (halves) {
-                    tile_squared = 0.0;
-                    for (int p = 0; p < pixels; ++p) {
-                        // (A - B)^2 / 4 per channel, each half in linear light.
-                        const glm::dvec3 d = linear(sum_a[p] / double(taken)) - linear(sum_b[p] / double(taken));
-                        pixel_squared[p] = glm::dot(d, d) / 12.0;
-                        tile_squared += pixel_squared[p];
-                    }
-                }
-                if (!adaptive || std::sqrt(tile_squared / pixels) <= settings_.target_error) break;
-                if (taken == per_set) {
-                    ++tiles_over;  // (the ceiling reached above the target)
-                    break;
-                }
-                goal = std::min(per_set, 2 * taken);
-            }
+            TilePlan plan{frame, settings_.sample_seed, halves, adaptive, per_set, settings_.target_error,
+                          x0, y0, tile_width, pixels};
+            const TileSamples t = sample_tile(plan, trace_sample, linear, state);
+            if (t.over_target) ++tiles_over;
+            const auto& sum_a = t.sum_a;
+            const auto& sum_b = t.sum_b;
+            const auto& pixel_squared = t.pixel_squared;
+            const int taken = t.taken;
             const int sets = halves ? 2 : 1;
             for (int p = 0; p < pixels; ++p) {
                 const int x = x0 + p % tile_width, y = y0 + p / tile_width;

@@ -13,9 +13,9 @@
 #include <optional>
 #include <vector>
 
-#include "runtime/intelligent_object.hpp"
-#include "runtime/scene.hpp"
-#include "runtime/texture_evaluator.hpp"
+#include "runtime/objects/intelligent_object.hpp"
+#include "runtime/scene/scene.hpp"
+#include "runtime/texture/texture_evaluator.hpp"
 #include "tracer/counters.hpp"
 #include "tracer/frame_estimate.hpp"
 #include "tracer/image.hpp"
@@ -122,7 +122,7 @@ private:
     int last_tiles_over_target_ = 0, last_tile_count_ = 0;
     std::unique_ptr<RayQuery> query_;
     std::unique_ptr<Shader> shader_;
-    // The camera's normal { }, when it has one (runtime/camera.hpp).
+    // The camera's normal { }, when it has one (runtime/scene/camera.hpp).
     std::optional<runtime::TextureEvaluator> camera_normal_;
 };
 

@@ -17,9 +17,9 @@
 
 #include <glm/vec3.hpp>
 
-#include "runtime/scene.hpp"
-#include "runtime/texture_evaluator.hpp"
-#include "runtime/spacetime.hpp"
+#include "runtime/scene/scene.hpp"
+#include "runtime/texture/texture_evaluator.hpp"
+#include "runtime/geometry/spacetime.hpp"
 #include "tracer/light.hpp"
 #include "tracer/light_travel.hpp"
 #include "tracer/ray_query.hpp"
@@ -100,7 +100,7 @@ private:
     // What a ray that hits nothing sees: the sky sphere over the background.
     glm::dvec3 sky(const glm::dvec3& direction, double t) const;
     // `colour` seen through the scene's fogs along `depth` of a ray in the
-    // open (runtime/fog.hpp).
+    // open (runtime/scene/fog.hpp).
     glm::dvec3 fogged(const glm::dvec3& colour, const runtime::Ray4& ray, double depth) const;
 
     const RayQuery& query_;

@@ -8,7 +8,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "runtime/texture_evaluator.hpp"
+#include "runtime/texture/texture_evaluator.hpp"
 #include "tracer/counters.hpp"
 #include "tracer/mailbox.hpp"
 

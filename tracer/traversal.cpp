@@ -6,7 +6,7 @@
 #include <limits>
 #include <vector>
 
-#include "runtime/slab_ray.hpp"
+#include "runtime/bounds/slab_ray.hpp"
 #include "tracer/bound_rounding.hpp"
 #include "tracer/object_test.hpp"
 

@@ -33,8 +33,8 @@
 #include <cstdint>
 #include <optional>
 
-#include "runtime/intelligent_object.hpp"
-#include "runtime/spacetime.hpp"
+#include "runtime/objects/intelligent_object.hpp"
+#include "runtime/geometry/spacetime.hpp"
 #include "tracer/hierarchy.hpp"
 #include "tracer/thread_state.hpp"
 

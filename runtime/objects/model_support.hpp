@@ -11,15 +11,11 @@
 
 #include <glm/vec3.hpp>
 
-#include "runtime/compiled_function.hpp"
+#include "runtime/time/compiled_function.hpp"
 #include "runtime/geometry/ray3.hpp"
-#include "runtime/interval.hpp"
+#include "runtime/time/interval.hpp"
 
 namespace hexant::runtime::objects {
-
-// An axis-aligned box in object space as three intervals: the form interval
-// evaluation produces and the motion's world_box consumes.
-using IntervalBox = std::array<Interval, 3>;
 
 inline IntervalBox empty_interval_box() {
     const double inf = std::numeric_limits<double>::infinity();

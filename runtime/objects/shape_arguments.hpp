@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "runtime/vector_function.hpp"
+#include "runtime/time/vector_function.hpp"
 
 namespace hexant::runtime::objects {
 

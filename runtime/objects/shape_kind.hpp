@@ -43,8 +43,8 @@
 #include <vector>
 
 #include "runtime/objects/shape_arguments.hpp"
-#include "runtime/time_ops.hpp"
-#include "runtime/vector_function.hpp"
+#include "runtime/time/time_ops.hpp"
+#include "runtime/time/vector_function.hpp"
 
 namespace hexant::runtime::objects {
 

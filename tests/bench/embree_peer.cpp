@@ -86,10 +86,10 @@
 #include "language/ini_file.hpp"
 #include "language/interpreter.hpp"
 #include "language/scene_error.hpp"
-#include "runtime/object.hpp"
-#include "runtime/object_error.hpp"
-#include "runtime/scene.hpp"
-#include "runtime/texture_evaluator.hpp"
+#include "runtime/objects/object.hpp"
+#include "runtime/objects/object_error.hpp"
+#include "runtime/scene/scene.hpp"
+#include "runtime/texture/texture_evaluator.hpp"
 #include "tracer/image.hpp"
 #include "tracer/image_output.hpp"
 #include "tracer/renderer.hpp"
@@ -266,7 +266,7 @@ struct PeerScene {
     const runtime::SceneDescription* scene = nullptr;
 };
 
-// Walks the records as runtime/object_factory.cpp build() does: a child's
+// Walks the records as runtime/objects/object_factory.cpp build() does: a child's
 // transform, then its parent's appended; textures inherit, and a record's
 // own texture maps to its parent's space.
 class Converter {

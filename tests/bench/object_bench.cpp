@@ -157,7 +157,7 @@ int main(int argc, char** argv) {
                     g_sink = g_sink + double(n);
                 });
             }
-            // The sweep's evaluations (runtime/time_sweep.hpp): the box over
+            // The sweep's evaluations (runtime/bounds/time_sweep.hpp): the box over
             // 1/64 of the animation (interval), and a placed box at one
             // instant (a chord's end, doubles).
             double box_ns = 0.0, moving_ns = 0.0;

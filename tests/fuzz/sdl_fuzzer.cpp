@@ -15,7 +15,7 @@
 #include <string>
 
 #include "language/interpreter.hpp"
-#include "runtime/curved_path_root.hpp"
+#include "runtime/geometry/curved_path_root.hpp"
 #include "tracer/renderer.hpp"
 
 extern "C" std::size_t LLVMFuzzerMutate(std::uint8_t* data, std::size_t size, std::size_t max_size);

@@ -12,7 +12,7 @@
 #include <sstream>
 
 #include "language/interpreter.hpp"
-#include "runtime/transform.hpp"
+#include "runtime/motion/transform.hpp"
 #include "scene_text.hpp"
 #include "tests/sanitizer.hpp"
 

@@ -6,8 +6,8 @@
 #include <string>
 
 #include "language/interpreter.hpp"
-#include "runtime/object.hpp"
-#include "runtime/time_function.hpp"
+#include "runtime/objects/object.hpp"
+#include "runtime/time/time_function.hpp"
 #include "scene_text.hpp"
 
 using hexant::language::ParseOptions;

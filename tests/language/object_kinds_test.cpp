@@ -9,7 +9,7 @@
 #include "language/grammar.hpp"
 #include "language/interpreter.hpp"
 #include "runtime/objects/kinds.hpp"
-#include "runtime/shapes.hpp"
+#include "runtime/objects/shapes.hpp"
 #include "tests/language/scene_text.hpp"
 
 namespace rt = hexant::runtime;

@@ -1,5 +1,5 @@
 // Scene parameters the renderer cannot use are errors at their place, with
-// the instant when they depend on clock (runtime/parameter_check.hpp), and
+// the instant when they depend on clock (runtime/objects/parameter_check.hpp), and
 // parameters that only look risky are not.
 #include <catch2/catch.hpp>
 

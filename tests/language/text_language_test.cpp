@@ -8,7 +8,7 @@
 #include <string>
 
 #include "language/interpreter.hpp"
-#include "runtime/shapes.hpp"
+#include "runtime/objects/shapes.hpp"
 #include "tests/language/scene_text.hpp"
 
 namespace rt = hexant::runtime;

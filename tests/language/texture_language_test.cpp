@@ -11,7 +11,7 @@
 #include <string>
 
 #include "language/interpreter.hpp"
-#include "runtime/texture_evaluator.hpp"
+#include "runtime/texture/texture_evaluator.hpp"
 #include "scene_text.hpp"
 
 using hexant::test::error_of;

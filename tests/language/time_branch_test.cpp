@@ -9,7 +9,7 @@
 #include <string>
 
 #include "language/interpreter.hpp"
-#include "runtime/interval.hpp"
+#include "runtime/time/interval.hpp"
 #include "scene_text.hpp"
 
 using hexant::language::ParseOptions;

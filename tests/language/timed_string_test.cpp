@@ -14,7 +14,7 @@
 
 #include "language/builtins.hpp"
 #include "language/interpreter.hpp"
-#include "runtime/interval.hpp"
+#include "runtime/time/interval.hpp"
 #include "scene_text.hpp"
 
 using hexant::language::format_number;

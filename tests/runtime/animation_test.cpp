@@ -25,7 +25,7 @@
 // the comparisons below allow 1e-6.
 #include <catch2/catch.hpp>
 
-#include "runtime/animation.hpp"
+#include "runtime/scene/animation.hpp"
 
 using hexant::runtime::Animation;
 

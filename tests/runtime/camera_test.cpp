@@ -33,7 +33,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "runtime/camera.hpp"
+#include "runtime/scene/camera.hpp"
 
 using namespace hexant::runtime;
 

@@ -1,13 +1,13 @@
-// Lines in clock (runtime/clock_line.hpp) against the tapes they stand in
+// Lines in clock (runtime/time/clock_line.hpp) against the tapes they stand in
 // for: every form the language builds gives the tape's value bit for bit at
 // points, over intervals, with derivatives and as interval jets; anything
 // else is not taken for a line.
-#include "runtime/clock_line.hpp"
+#include "runtime/time/clock_line.hpp"
 
 #include <catch2/catch.hpp>
 #include <vector>
 
-#include "runtime/time_tape.hpp"
+#include "runtime/time/time_tape.hpp"
 #include "same_bits.hpp"
 
 using hexant::runtime::ClockLine;

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "object_test_support.hpp"
-#include "runtime/object_error.hpp"
+#include "runtime/objects/object_error.hpp"
 
 using namespace object_test;
 

@@ -1,4 +1,4 @@
-// The curved-path root finder (runtime/curved_path_root.hpp) on paths made
+// The curved-path root finder (runtime/geometry/curved_path_root.hpp) on paths made
 // by hand: it finds a crossing of a continuous path, and a path that jumps
 // (as a bend's inverse does across its branch cut) gives no hit from the
 // chord between its two sides (issue 20: a height field and a
@@ -8,7 +8,7 @@
 #include <cmath>
 #include <optional>
 
-#include "runtime/curved_path_root.hpp"
+#include "runtime/geometry/curved_path_root.hpp"
 
 namespace rt = hexant::runtime;
 namespace geo = hexant::runtime::geometry;

@@ -1,4 +1,4 @@
-// image_map's lookup (runtime/pattern/image_map.cpp) on a 2 x 2 image whose
+// image_map's lookup (runtime/texture/pattern/image_map.cpp) on a 2 x 2 image whose
 // pixels are told apart by red: which pixel a planar point reads (rows from
 // the top, the image's bottom at y = 0), tiling, `once`, the interpolations
 // at a pixel's centre and on a corner (where POV-Ray's normalized distance
@@ -10,7 +10,7 @@
 #include <limits>
 
 #include "language/image_map_file.hpp"
-#include "runtime/pattern/image_map.hpp"
+#include "runtime/texture/pattern/image_map.hpp"
 
 namespace pt = hexant::runtime::pattern;
 

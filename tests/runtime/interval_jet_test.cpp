@@ -1,16 +1,16 @@
-// Interval jets (runtime/interval_jet.hpp): over random intervals of time,
+// Interval jets (runtime/time/interval_jet.hpp): over random intervals of time,
 // each expression's double value must lie in v, its derivative (Dual, at a
 // point) in d, its second derivative (a difference quotient of Dual
 // derivatives, which equals f'' somewhere between) in dd, and the double
 // value within r of a long double evaluation; steps, kinks and choices are
 // smooth exactly where they cannot change.
-#include "runtime/interval_jet.hpp"
+#include "runtime/time/interval_jet.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
 
-#include "runtime/dual.hpp"
+#include "runtime/time/dual.hpp"
 
 namespace rt = hexant::runtime;
 

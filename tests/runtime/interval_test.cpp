@@ -2,7 +2,7 @@
 // the long double one, nearer the truth) at random points of random argument
 // intervals, over huge and tiny magnitudes; the trigonometric functions are
 // tight over short intervals and exact at their extremes.
-#include "runtime/interval.hpp"
+#include "runtime/time/interval.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>

@@ -3,17 +3,17 @@
 // point at every time of the interval, thin for short intervals; Barr's
 // deformations undone by their inverses; Jacobians that match finite
 // differences.
-#include "runtime/motion.hpp"
+#include "runtime/motion/motion.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
 
-#include "runtime/deformation.hpp"
-#include "runtime/transform.hpp"
+#include "runtime/motion/deformation.hpp"
+#include "runtime/motion/transform.hpp"
 
 using hexant::runtime::Interval;
-using hexant::runtime::IntervalVec3;
+using hexant::runtime::IntervalBox;
 using hexant::runtime::Motion;
 using hexant::runtime::TimeFunction;
 using hexant::runtime::Transform;
@@ -73,7 +73,7 @@ double max_difference(const glm::dmat4& a, const glm::dmat4& b) {
     return d;
 }
 
-bool holds(const IntervalVec3& box, const std::array<double, 3>& p) {
+bool holds(const IntervalBox& box, const std::array<double, 3>& p) {
     return box[0].contains(p[0]) && box[1].contains(p[1]) && box[2].contains(p[2]);
 }
 
@@ -152,9 +152,9 @@ TEST_CASE("motion: interval bounds hold every point at every time", "[motion]") 
         const Motion motion(transform);
         const double t0 = r.uniform(0.0, 1.0);
         const Interval t(t0, t0 + r.uniform(0.0, 0.3));
-        const IntervalVec3 box{Interval(-1.0, r.uniform(-1.0, 1.0)), Interval(-0.5, 0.5),
+        const IntervalBox box{Interval(-1.0, r.uniform(-1.0, 1.0)), Interval(-0.5, 0.5),
                                Interval(0.2, r.uniform(0.2, 2.0))};
-        const IntervalVec3 world = motion.world_box(box, t);
+        const IntervalBox world = motion.world_box(box, t);
         for (int k = 0; k < 300; ++k) {
             const double tk = k == 0 ? t.lo : k == 1 ? t.hi : r.uniform(t.lo, t.hi);
             const std::array<double, 3> p{r.uniform(box[0].lo, box[0].hi),
@@ -169,11 +169,11 @@ TEST_CASE("motion: a short interval of a fast rotation gives a thin arc's box", 
     Transform transform;
     transform.append(step(TransformKind::Rotate, 0.0, clock_times(3600.0), 0.0));  // 10 turns
     const Motion motion(transform);
-    const IntervalVec3 point{Interval(1.0), Interval(0.0), Interval(0.0)};
-    const IntervalVec3 arc = motion.world_box(point, Interval(0.0, 1e-4));  // 0.36 degrees
+    const IntervalBox point{Interval(1.0), Interval(0.0), Interval(0.0)};
+    const IntervalBox arc = motion.world_box(point, Interval(0.0, 1e-4));  // 0.36 degrees
     CHECK(arc[0].width() < 1e-4);
     CHECK(arc[2].width() < 7e-3);  // the arc's chord, 2 pi 1e-4 * 10, plus rounding
-    const IntervalVec3 whole = motion.world_box(point, Interval(0.0, 1.0));
+    const IntervalBox whole = motion.world_box(point, Interval(0.0, 1.0));
     CHECK(whole[0].lo <= -1.0);
     CHECK(whole[2].hi >= 1.0);
 }
@@ -262,7 +262,7 @@ TEST_CASE("motion: a twist's interval image holds every point and stays within i
         const double radius = r.uniform(0.1, 2.0), angle = r.uniform(0.0, 6.3);
         const double y = r.uniform(-1.0, 1.0), h = r.uniform(0.0, 0.05);
         const glm::dvec3 c(radius * std::cos(angle), y, radius * std::sin(angle));
-        const IntervalVec3 box{Interval(c.x - h * std::fabs(std::sin(angle)), c.x),
+        const IntervalBox box{Interval(c.x - h * std::fabs(std::sin(angle)), c.x),
                                Interval(y, y + h), Interval(c.z)};
         const auto image = motion.to_object<Interval>(box, Interval(0.0));
         const double reach = std::sqrt(std::max(c.x * c.x, box[0].lo * box[0].lo) + c.z * c.z);
@@ -281,7 +281,7 @@ TEST_CASE("motion: a box beyond a twist's reach holds no image of the object", "
     // The reach is the farthest the object gets from the twist's axis; a
     // world box wholly farther out is dropped without being turned back.
     Random r(14);
-    const IntervalVec3 object{Interval(-0.5, 0.5), Interval(0.0, 1.0), Interval(-0.3, 0.3)};
+    const IntervalBox object{Interval(-0.5, 0.5), Interval(0.0, 1.0), Interval(-0.3, 0.3)};
     int trials_dropping = 0;
     for (int trial = 0; trial < 100; ++trial) {
         Transform transform;
@@ -302,7 +302,7 @@ TEST_CASE("motion: a box beyond a twist's reach holds no image of the object", "
                                           r.uniform(-0.3, 0.3)};
             const auto w = motion.to_world(p, 0.0);
             const double h = r.uniform(0.0, 0.2), push = k % 4 == 0 ? 0.0 : r.uniform(0.0, 2.0);
-            const IntervalVec3 box{Interval(w[0] + push, w[0] + push + h), Interval(w[1] - h, w[1]),
+            const IntervalBox box{Interval(w[0] + push, w[0] + push + h), Interval(w[1] - h, w[1]),
                                    Interval(w[2] + push - h, w[2] + push)};
             const auto within = motion.to_object_within(box, Interval(0.0), reaches);
             // A box holding an image is never dropped.

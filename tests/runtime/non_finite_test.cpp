@@ -1,12 +1,12 @@
 // first_non_finite: the instants where a time function is NaN or infinite,
 // found by interval search and confirmed by the point value, and none where
 // an interval only might hold one.
-#include "runtime/non_finite.hpp"
+#include "runtime/time/non_finite.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "runtime/time_function.hpp"
+#include "runtime/time/time_function.hpp"
 
 using hexant::runtime::first_non_finite;
 using hexant::runtime::TimeFunction;

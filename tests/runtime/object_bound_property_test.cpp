@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "object_test_support.hpp"
-#include "runtime/slab_bound.hpp"
+#include "runtime/bounds/slab_bound.hpp"
 
 using namespace object_test;
 

@@ -17,7 +17,7 @@
 #include <string>
 
 #include "object_test_support.hpp"
-#include "runtime/curved_path_root.hpp"
+#include "runtime/geometry/curved_path_root.hpp"
 
 using namespace object_test;
 

@@ -9,10 +9,10 @@
 #include <string>
 
 #include "object_test_support.hpp"
-#include "runtime/curved_path_root.hpp"
+#include "runtime/geometry/curved_path_root.hpp"
 #include "runtime/geometry/offset_ray.hpp"
-#include "runtime/object_error.hpp"
-#include "runtime/texture_evaluator.hpp"
+#include "runtime/objects/object_error.hpp"
+#include "runtime/texture/texture_evaluator.hpp"
 #include "runtime/work_counts.hpp"
 
 using namespace object_test;

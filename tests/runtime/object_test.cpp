@@ -3,7 +3,7 @@
 
 #include <memory>
 
-#include "runtime/object.hpp"
+#include "runtime/objects/object.hpp"
 
 namespace rt = hexant::runtime;
 

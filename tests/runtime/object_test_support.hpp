@@ -7,7 +7,7 @@
 // world step by step: TransformStep::matrix_at for the affine steps, and
 // Barr's deformations written geometrically (Rodrigues' rotation for twist,
 // the circle of radius 1/k for bend), not in the frame-and-series form of
-// runtime/deformation.hpp.
+// runtime/motion/deformation.hpp.
 #pragma once
 
 #include <algorithm>
@@ -23,10 +23,10 @@
 #include <glm/glm.hpp>
 
 #include "language/interpreter.hpp"
-#include "runtime/intelligent_object.hpp"
-#include "runtime/object.hpp"
-#include "runtime/object_factory.hpp"
-#include "runtime/scene.hpp"
+#include "runtime/objects/intelligent_object.hpp"
+#include "runtime/objects/object.hpp"
+#include "runtime/objects/object_factory.hpp"
+#include "runtime/scene/scene.hpp"
 
 namespace object_test {
 

@@ -1,4 +1,4 @@
-// POV-Ray 3.7's noise (runtime/pattern/noise.hpp) against what POV-Ray
+// POV-Ray 3.7's noise (runtime/texture/pattern/noise.hpp) against what POV-Ray
 // itself printed (tests/tracer/pov_reference/noise/, README there): at
 // lattice points, where each value is one table entry, and at 200 random
 // points for each noise generator, through the scalar noise, the vector
@@ -17,8 +17,8 @@
 #include <string>
 #include <vector>
 
-#include "runtime/pattern/noise.hpp"
-#include "runtime/pattern/pattern.hpp"
+#include "runtime/texture/pattern/noise.hpp"
+#include "runtime/texture/pattern/pattern.hpp"
 
 namespace fs = std::filesystem;
 namespace pt = hexant::runtime::pattern;

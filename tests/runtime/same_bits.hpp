@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "runtime/interval.hpp"
+#include "runtime/time/interval.hpp"
 
 namespace hexant::test {
 

@@ -7,9 +7,9 @@
 #include <cmath>
 #include <random>
 
-#include "runtime/slab_bound.hpp"
-#include "runtime/slab_ray.hpp"
-#include "runtime/spacetime.hpp"
+#include "runtime/bounds/slab_bound.hpp"
+#include "runtime/bounds/slab_ray.hpp"
+#include "runtime/geometry/spacetime.hpp"
 
 using hexant::runtime::Box4;
 using hexant::runtime::Event;

@@ -1,7 +1,7 @@
 // Ranges and derivatives of splines (SplineBounds) against Spline::evaluate
 // itself: ranges hold dense samples and random points and are barely wider
 // than what sampling finds; derivatives match finite differences.
-#include "runtime/spline_bounds.hpp"
+#include "runtime/motion/spline_bounds.hpp"
 
 #include <algorithm>
 #include <catch2/catch.hpp>
@@ -9,8 +9,8 @@
 #include <random>
 #include <vector>
 
-#include "runtime/interval.hpp"
-#include "runtime/spline.hpp"
+#include "runtime/time/interval.hpp"
+#include "runtime/motion/spline.hpp"
 
 using hexant::runtime::Interval;
 using hexant::runtime::Spline;

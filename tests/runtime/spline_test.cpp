@@ -11,7 +11,7 @@
 #include <map>
 #include <string>
 
-#include "runtime/spline.hpp"
+#include "runtime/motion/spline.hpp"
 
 using hexant::runtime::Spline;
 using hexant::runtime::SplineKind;

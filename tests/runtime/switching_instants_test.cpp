@@ -1,15 +1,15 @@
-// Switching instants (runtime/switching_instants.hpp) are exact: on each
+// Switching instants (runtime/time/switching_instants.hpp) are exact: on each
 // side of an instant the point evaluator gives the truth its piece says,
 // so the instant sits between two neighbouring doubles where the double
 // evaluation of the condition changes; for a continuous condition that is
-// within a few ulps of the exact root. And lifetimes (runtime/lifetime.hpp)
+// within a few ulps of the exact root. And lifetimes (runtime/time/lifetime.hpp)
 // hold every double of a split exactly once.
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "runtime/lifetime.hpp"
-#include "runtime/switching_instants.hpp"
-#include "runtime/time_ops.hpp"
+#include "runtime/time/lifetime.hpp"
+#include "runtime/time/switching_instants.hpp"
+#include "runtime/time/time_ops.hpp"
 
 namespace rt = hexant::runtime;
 using rt::TimeFunction;

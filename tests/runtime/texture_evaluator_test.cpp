@@ -2,7 +2,7 @@
 // constants are shared between textures (one kept for a scene of many
 // objects that differ in colour only), and sharing never hands a texture
 // another's numbers, nor a time-dependent finish a frozen one.
-#include "runtime/texture_evaluator.hpp"
+#include "runtime/texture/texture_evaluator.hpp"
 
 #include <catch2/catch.hpp>
 #include <memory>

@@ -7,9 +7,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "runtime/spline.hpp"
-#include "runtime/time_function.hpp"
-#include "runtime/time_ops.hpp"
+#include "runtime/motion/spline.hpp"
+#include "runtime/time/time_function.hpp"
+#include "runtime/time/time_ops.hpp"
 
 using hexant::runtime::apply_op;
 using hexant::runtime::arity;

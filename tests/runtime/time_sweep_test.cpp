@@ -1,4 +1,4 @@
-// Property tests of an object's sweep (runtime/time_sweep.hpp): for every
+// Property tests of an object's sweep (runtime/bounds/time_sweep.hpp): for every
 // object kind and every motion variant of object_test_support.hpp (static,
 // translation, fast rotation, spline path, moving parameters, twist, taper,
 // bend, stiff twist) and two more (an orbit like examples/swarm.pov's, and
@@ -11,7 +11,7 @@
 // The surface events come from the independent reference in
 // object_test_support.hpp; 10^4 events per variant in the suite
 // (HEXANT_PROPERTY_SAMPLES sets it).
-#include "runtime/time_sweep.hpp"
+#include "runtime/bounds/time_sweep.hpp"
 
 #include <array>
 #include <catch2/catch.hpp>
@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "object_test_support.hpp"
-#include "runtime/swept_bound.hpp"
+#include "runtime/bounds/swept_bound.hpp"
 
 using namespace object_test;
 

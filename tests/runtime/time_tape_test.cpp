@@ -3,7 +3,7 @@
 // evaluator equals TimeFunction(t) bit for bit, the interval evaluator holds
 // the point values of every t inside, and the dual evaluator's derivative
 // matches finite differences where the function is smooth.
-#include "runtime/time_tape.hpp"
+#include "runtime/time/time_tape.hpp"
 
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -11,13 +11,13 @@
 #include <random>
 #include <vector>
 
-#include "runtime/compiled_function.hpp"
-#include "runtime/dual.hpp"
-#include "runtime/interval.hpp"
-#include "runtime/spline.hpp"
-#include "runtime/time_function.hpp"
-#include "runtime/time_ops.hpp"
-#include "runtime/time_ops_generic.hpp"
+#include "runtime/time/compiled_function.hpp"
+#include "runtime/time/dual.hpp"
+#include "runtime/time/interval.hpp"
+#include "runtime/motion/spline.hpp"
+#include "runtime/time/time_function.hpp"
+#include "runtime/time/time_ops.hpp"
+#include "runtime/time/time_ops_generic.hpp"
 #include "same_bits.hpp"
 
 using hexant::runtime::arity;

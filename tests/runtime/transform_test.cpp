@@ -45,7 +45,7 @@
 
 #include <glm/vec4.hpp>
 
-#include "runtime/transform.hpp"
+#include "runtime/motion/transform.hpp"
 
 using namespace hexant::runtime;
 

@@ -1,4 +1,4 @@
-// uv_mapping (runtime/material.hpp, UvMapping; runtime/primitive.hpp,
+// uv_mapping (runtime/texture/material.hpp, UvMapping; runtime/objects/primitive.hpp,
 // has_uv_mapping): what a surface's (u, v) is for each kind, that a
 // uv-mapped pigment reads it and nothing else (not the object's transforms,
 // not a transform written around a declared copy), and where the language
@@ -10,7 +10,7 @@
 #include <string>
 
 #include "object_test_support.hpp"
-#include "runtime/texture_evaluator.hpp"
+#include "runtime/texture/texture_evaluator.hpp"
 #include "../language/scene_text.hpp"
 
 using namespace object_test;

@@ -21,8 +21,8 @@
 #include <vector>
 
 #include "language/interpreter.hpp"
-#include "runtime/curved_path_root.hpp"
-#include "runtime/object_factory.hpp"
+#include "runtime/geometry/curved_path_root.hpp"
+#include "runtime/objects/object_factory.hpp"
 #include "runtime/work_counts.hpp"
 #include "tracer/ray_query.hpp"
 #include "tracer/renderer.hpp"

@@ -1,4 +1,4 @@
-// Objects that live part of the time (runtime/lifetime_object.hpp), made by
+// Objects that live part of the time (runtime/objects/lifetime_object.hpp), made by
 // a branch on clock: a blurred frame that holds a switching instant shows
 // each side for its share of the shutter, the three modes agree, and
 // lights that shine part of the time light only then.

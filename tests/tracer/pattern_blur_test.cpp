@@ -3,7 +3,7 @@
 // through a texture_map of whole textures), rendered as one motion-blurred
 // frame, against the brute-force mean of stills at 64 instants across the
 // same shutter. The texture is evaluated at each sample's own time
-// (runtime/texture_evaluator.cpp).
+// (runtime/texture/texture_evaluator.cpp).
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <string>

@@ -1,5 +1,5 @@
-// The shutter's shape (runtime/shutter_curve.hpp) and the rolling shutter
-// (runtime/animation.hpp): a curve draws the samples' times with its
+// The shutter's shape (runtime/scene/shutter_curve.hpp) and the rolling shutter
+// (runtime/scene/animation.hpp): a curve draws the samples' times with its
 // density, a box changes nothing, and a rolling shutter slants a vertical
 // bar that moves sideways by the angle its readout time gives.
 #include <catch2/catch.hpp>
@@ -9,7 +9,7 @@
 
 #include "app/command_line.hpp"
 #include "language/interpreter.hpp"
-#include "runtime/shutter_curve.hpp"
+#include "runtime/scene/shutter_curve.hpp"
 #include "tracer/renderer.hpp"
 
 namespace rt = hexant::runtime;

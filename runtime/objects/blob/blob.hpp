@@ -19,7 +19,7 @@
 
 #include "runtime/objects/blob/blob_geometry.hpp"
 #include "runtime/objects/shape_kind.hpp"
-#include "runtime/vector_function.hpp"
+#include "runtime/time/vector_function.hpp"
 
 namespace hexant::runtime {
 

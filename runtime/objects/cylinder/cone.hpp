@@ -6,7 +6,7 @@
 #include <string_view>
 
 #include "runtime/objects/shape_kind.hpp"
-#include "runtime/vector_function.hpp"
+#include "runtime/time/vector_function.hpp"
 
 namespace hexant::runtime {
 

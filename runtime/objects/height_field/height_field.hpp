@@ -18,7 +18,7 @@
 
 #include "runtime/objects/height_field/height_field_data.hpp"
 #include "runtime/objects/shape_kind.hpp"
-#include "runtime/vector_function.hpp"
+#include "runtime/time/vector_function.hpp"
 
 namespace hexant::runtime {
 

@@ -11,7 +11,7 @@
 
 #include "runtime/objects/lathe/lathe_geometry.hpp"
 #include "runtime/objects/shape_kind.hpp"
-#include "runtime/vector_function.hpp"
+#include "runtime/time/vector_function.hpp"
 
 namespace hexant::runtime {
 

@@ -12,7 +12,7 @@
 
 #include <glm/glm.hpp>
 
-#include "runtime/material.hpp"
+#include "runtime/texture/material.hpp"
 #include "runtime/objects/mesh/mesh_hierarchy.hpp"
 
 namespace hexant::runtime::objects {

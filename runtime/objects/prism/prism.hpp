@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "runtime/objects/shape_kind.hpp"
-#include "runtime/vector_function.hpp"
+#include "runtime/time/vector_function.hpp"
 
 namespace hexant::runtime {
 

@@ -7,7 +7,7 @@
 #include <numbers>
 
 #include "runtime/objects/sphere/sphere_geometry.hpp"
-#include "runtime/interval_matrix.hpp"
+#include "runtime/time/interval_matrix.hpp"
 #include "runtime/objects/model_support.hpp"
 #include "runtime/objects/sphere/sphere.hpp"
 

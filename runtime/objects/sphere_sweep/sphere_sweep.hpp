@@ -12,7 +12,7 @@
 
 #include "runtime/objects/shape_kind.hpp"
 #include "runtime/objects/sphere_sweep/sphere_sweep_geometry.hpp"
-#include "runtime/vector_function.hpp"
+#include "runtime/time/vector_function.hpp"
 
 namespace hexant::runtime {
 

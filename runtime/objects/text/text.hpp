@@ -18,8 +18,8 @@
 
 #include "runtime/objects/shape_kind.hpp"
 #include "runtime/objects/text/text_geometry.hpp"
-#include "runtime/transform.hpp"
-#include "runtime/vector_function.hpp"
+#include "runtime/motion/transform.hpp"
+#include "runtime/time/vector_function.hpp"
 
 namespace hexant::runtime {
 

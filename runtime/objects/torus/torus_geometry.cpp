@@ -7,7 +7,7 @@
 #include "runtime/geometry/box_queries.hpp"
 #include "runtime/geometry/local_ray.hpp"
 #include "runtime/geometry/stable_arithmetic.hpp"
-#include "runtime/interval.hpp"
+#include "runtime/time/interval.hpp"
 
 namespace hexant::runtime::geometry {
 

@@ -1,6 +1,6 @@
 // Found by the fuzzer on 2026-11-30 (a timeout, 26 s for an 8x8 frame under
 // the sanitizers): a twist of 8e18 degrees a unit, which no curved-path
-// search can resolve (runtime/curved_path_root.hpp, kCurvedPathMaxUnresolved).
+// search can resolve (runtime/geometry/curved_path_root.hpp, kCurvedPathMaxUnresolved).
 // twister.pov: objects that deform while they move, which no frame-bx-frame
 // renderer blurs easily: every point of a deformed object follows its own
 // curved path within a frame. A square column twists one way and back (its

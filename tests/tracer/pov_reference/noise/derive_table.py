@@ -1,11 +1,11 @@
 #!/usr/bin/env python3
-"""Derives POV-Ray 3.7's noise table (runtime/pattern/noise_table.cpp) from
+"""Derives POV-Ray 3.7's noise table (runtime/texture/pattern/noise_table.cpp) from
 POV-Ray's own output recorded here, and prints it, one entry a line.
 
 POV-Ray's Noise at a lattice point is one table entry, scaled: generator 2
 gives (entry / 2 + 1.05242) * 0.48985582. Which entry, the lattice hash
 says; the hash is POV-Ray's shuffle of 0..4095 by its generator
-r = r * 1812433253 + 12345 (runtime/pattern/noise.cpp builds the same).
+r = r * 1812433253 + 12345 (runtime/texture/pattern/noise.cpp builds the same).
 lattice_noise.txt gives entries 0 to 510 (every second number of RTable);
 lattice_dnoise.txt the vector noise's, 8 and 16 further on (to 526);
 dnoise_slopes.txt the last three, from slopes. Each entry has six

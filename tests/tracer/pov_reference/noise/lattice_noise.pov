@@ -1,5 +1,5 @@
 // Records POV-Ray 3.7's Noise (generator 2, the default) at lattice
-// points: each gives one entry of its table (runtime/pattern/noise_table.cpp).
+// points: each gives one entry of its table (runtime/texture/pattern/noise_table.cpp).
 #version 3.7;
 #include "functions.inc"
 global_settings { assumed_gamma 1 }

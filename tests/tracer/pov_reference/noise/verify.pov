@@ -1,5 +1,5 @@
 // Noise, vector noise and turbulence at points off the lattice, recorded
-// from POV-Ray 3.7 for hexant's tests (runtime/pattern/noise.cpp).
+// from POV-Ray 3.7 for hexant's tests (runtime/texture/pattern/noise.cpp).
 #version 3.7;
 #include "functions.inc"
 global_settings { assumed_gamma 1 noise_generator NG }

@@ -1,0 +1,181 @@
+// An intelligent object's sweep: what it occupies over time, computed once
+// so that the hierarchy's cells clip cached boxes instead of evaluating
+// motion again for every cell (the paper's future work: "objects cache
+// their swept bounds").
+//
+// The time range is cut into 2^depth equal pieces, and each piece keeps a
+// box whose sides move linearly over it (moving_box.hpp). Where the object
+// bounds its motion's second derivative (chord_bound_over: a rigid shape
+// on an affine motion without jumps or kinks), a piece is the chord between
+// the object's placed boxes at the piece's ends (double placements, cheap),
+// moved out by the chord's error, length^2 / 8 times that bound, and the
+// rounding margin: a box at each instant wider than the object by the
+// square of the piece's length, where a box over the whole piece is wider
+// by its length times the speed. Elsewhere a piece is an interval box over
+// the piece, held still. Both are conservative.
+//
+// The depth is the object's own: for chords, the fewest pieces whose error
+// keeps the box at every instant within kSweptBoundGrowth of the object's
+// size, or fewer where the object tests saved do not pay for the ends (one
+// jet over the whole range bounds the acceleration); for boxes, as many as the speed measured over
+// three short probes asks for. Then pairs are merged back while the coarser pieces are already that
+// tight, or the finer ones save fewer object tests than they cost. So a static object keeps one
+// piece, a slow one a few, a small fast one more, up to a limit. A motion that is fast only between
+// the probes gets fewer box pieces than it could use: looser, never wrong.
+//
+// Storage: the box over the whole range in doubles, and the pieces as
+// 16-bit steps of that box rounded outward (lower ends to a step at or
+// below them, upper ends at or above, checked on the decoded values, so the
+// rounding of encoding and decoding cannot cut anything off; a line between
+// outward ends lies outside the line between the true ends), in one of
+// three layouts, whatever the scene's scale:
+//   - still: each piece a box held still, 12 bytes a piece (the boxes of
+//     box pieces);
+//   - shared ends: the box at each of the 2^depth + 1 cuts, each piece the
+//     box moving linearly between its two cuts', 12 bytes a piece and one
+//     more (chords: neighbouring chords meet at the same placed box, so
+//     sharing loses nothing; where merging left two ends apart, the cut
+//     keeps the outer of the two, looser, never wrong);
+//   - separate ends: the four ends of each piece's moving sides, 24 bytes a
+//     piece, where a piece has no surface (its neighbours' ends cannot be
+//     shared through it).
+// The chord bound, kept where the sweep refines, is in floats rounded up.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <limits>
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "runtime/objects/intelligent_object.hpp"
+#include "runtime/bounds/moving_box.hpp"
+#include "runtime/geometry/spacetime.hpp"
+
+namespace hexant::runtime {
+
+// The end of piece `index` of 2^level equal pieces of `range`: range.lo +
+// width * (index / 2^level), the same double for every (level, index) that
+// names the same fraction, so that cuts made at different levels meet
+// exactly. index == 2^level gives range.hi itself.
+inline double dyadic_time(const Interval& range, int level, std::uint64_t index) {
+    const std::uint64_t n = std::uint64_t(1) << level;
+    if (index == 0) return range.lo;
+    if (index >= n) return range.hi;
+    return range.lo + (range.hi - range.lo) * (double(index) / double(n));
+}
+
+// What finer pieces are worth: each halving costs an evaluation of the
+// object's box per new piece, and saves object tests for the rays that
+// would have met the wider boxes. A piece's rays are estimated as
+// ray_density * (its box's surface area) * (its time), the rays of an
+// animation spreading evenly over the scene's area and time.
+struct SweepPricing {
+    double ray_density = 0.0;       // rays per unit of area and of time; 0: free
+    double evaluation_cost = 100.0;  // one box evaluation (interval), in node tests
+    double point_cost = 20.0;        // one placed box at an instant (doubles), in node tests
+    double object_cost = 3.0;       // one object test, in node tests
+};
+
+class TimeSweep {
+public:
+    TimeSweep() = default;
+    // A sweep moved from is empty (its pieces went with the move).
+    TimeSweep(TimeSweep&& other) noexcept { *this = std::move(other); }
+    TimeSweep& operator=(TimeSweep&& other) noexcept {
+        if (this != &other) {
+            time_ = other.time_;
+            lo_ = std::exchange(other.lo_, glm::dvec3(std::numeric_limits<double>::infinity()));
+            hi_ = std::exchange(other.hi_, glm::dvec3(-std::numeric_limits<double>::infinity()));
+            for (int k = 0; k < 3; ++k) {
+                acceleration_[k] = other.acceleration_[k];
+                margin_[k] = other.margin_[k];
+            }
+            steps_ = std::move(other.steps_);
+            depth_ = std::exchange(other.depth_, std::uint8_t(0));
+            layout_ = std::exchange(other.layout_, Layout::Whole);
+            refines_ = std::exchange(other.refines_, false);
+        }
+        return *this;
+    }
+
+    // The sweep of `object` over `time` (finite, lo <= hi), with at most
+    // 2^max_depth pieces (max_depth in [0, 20]). With pricing, pieces are
+    // halved only while the object tests saved pay for the evaluations.
+    static TimeSweep of(const IntelligentObject& object, const Interval& time, int max_depth,
+                        const SweepPricing& pricing = {});
+
+    const Interval& time() const { return time_; }
+    int depth() const { return depth_; }
+    std::size_t piece_count() const { return std::size_t(1) << depth_; }
+    // The box over the whole time range (empty if the object has no surface).
+    Box4 whole() const;
+    bool empty() const { return !(lo_.x <= hi_.x && lo_.y <= hi_.y && lo_.z <= hi_.z); }
+
+    // A box holding the object at every instant of t, from the pieces that
+    // meet t (the whole sweep's box in space where t spans it all); its time
+    // part is t clipped to time(). Empty where t misses time().
+    Box4 box_over(const Interval& t) const;
+
+    // The box over piece `index` of 2^level equal pieces of time(), cut as
+    // dyadic_time() cuts them: the union of the sweep's pieces inside it,
+    // or the one piece it lies in. Its time part is that piece of time.
+    // Exact and cheap when the hierarchy's cells are cut the same way.
+    Box4 box_over_dyadic(int level, std::uint64_t index) const;
+
+    // As box_over_dyadic for pieces first .. first + count - 1 of level
+    // `level`, into out[0 .. count). Where the level is finer than the
+    // sweep's pieces and the sweep was made by chords, each box is refined
+    // from `object` (the object the sweep is of): the chord over that finer
+    // piece, from placed boxes at its ends (shared by neighbours, count + 1
+    // placements), clipped to the cached piece's part. The paper's star
+    // cluster: the cache answers coarse questions, the object fine ones.
+    void boxes_over_dyadic(int level, std::uint64_t first, std::size_t count,
+                           const IntelligentObject& object, Box4* out) const;
+    // Can boxes_over_dyadic refine below the cached pieces?
+    bool refines() const { return refines_; }
+
+    // Piece i's time interval, its moving box, and the box over all of it
+    // (empty if the object has no surface then).
+    Interval piece_time(std::size_t i) const;
+    MovingBox moving_piece(std::size_t i) const;
+    Box4 piece(std::size_t i) const;
+    // The pieces that meet t: [first, last], or first > last for none.
+    void pieces_meeting(const Interval& t, std::size_t& first, std::size_t& last) const;
+
+    // Heap and inline bytes this sweep takes.
+    std::size_t bytes() const { return sizeof(*this) + step_count() * sizeof(std::uint16_t); }
+
+private:
+    // How the pieces are kept (the storage note above); Whole: one box held
+    // still over the whole time, no pieces.
+    enum class Layout : std::uint8_t { Whole, Still, Shared, Separate };
+
+    double boundary(std::size_t i) const;
+    std::size_t step_count() const;
+    double decode(int axis, std::uint16_t q) const;
+    std::uint16_t encode_down(int axis, double v) const;
+    std::uint16_t encode_up(int axis, double v) const;
+    // Six steps of a box: lo xyz rounded down, hi xyz up (an empty box, no
+    // surface: lo at the top step, hi at the bottom).
+    void encode_box(std::uint16_t* q, const glm::dvec3& lo, const glm::dvec3& hi) const;
+    void encode_pieces(const std::vector<MovingBox>& level);
+
+    Interval time_{0.0, 0.0};
+    // The box over the whole time (empty: lo > hi).
+    glm::dvec3 lo_{std::numeric_limits<double>::infinity()};
+    glm::dvec3 hi_{-std::numeric_limits<double>::infinity()};
+    // The chord bound over the whole time, rounded up to floats, where the
+    // sweep refines (IntelligentObject::chord_bound_over).
+    float acceleration_[3] = {0.0f, 0.0f, 0.0f};
+    float margin_[3] = {0.0f, 0.0f, 0.0f};
+    // The pieces' steps, step_count() of them, in the layout's order.
+    std::unique_ptr<std::uint16_t[]> steps_;
+    std::uint8_t depth_ = 0;
+    Layout layout_ = Layout::Whole;
+    bool refines_ = false;
+};
+
+}  // namespace hexant::runtime

@@ -1,0 +1,146 @@
+// The messages an object answers for the tracer, after Glassner's
+// "intelligent objects": each object knows its own motion and deformation and
+// answers, for itself, where it may be (bound), where a ray meets it
+// (intersect), what it looks like there (complete) and how much of a region
+// it fills (occupancy). Nothing here knows the hierarchy.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/vec3.hpp>
+
+#include "runtime/texture/material_sample.hpp"
+#include "runtime/bounds/slab_bound.hpp"
+#include "runtime/geometry/spacetime.hpp"
+
+namespace hexant::runtime {
+
+class IntelligentObject;
+
+// A surface event found by intersect(): enough for complete() to finish the
+// job without solving again.
+struct ObjectHit {
+    double s = 0.0;  // ray parameter: the event is ray.at(s)
+    Event event{};
+    const IntelligentObject* object = nullptr;  // the primitive hit (inside groups too)
+    glm::dvec3 object_point{};   // in the primitive's own (undeformed) space
+    glm::dvec3 object_normal{};  // geometric normal there, unit
+    glm::dvec3 object_shading_normal{};
+    glm::dvec2 uv{};
+    int part = 0;  // which face, cap or side (per shape kind)
+    // The object-to-world map's linear part at the hit's time, when the
+    // intersection had it at hand (a moving undeformed object), so that
+    // complete() does not evaluate the motion again.
+    glm::dmat3 to_world_linear{1.0};
+    bool has_linear = false;
+    // The normal points into the solid the scene sees (a difference's cut,
+    // an `inverse` object): complete() turns it around.
+    bool flipped = false;
+    // SurfaceHit::error: a bound on object_point's distance from the exact
+    // surface, in the primitive's space (zero where none is known);
+    // complete() carries it into the world.
+    glm::dvec3 object_error{0.0};
+};
+
+// What complete() returns: world-space normals at the hit's time, texture
+// coordinates and the texture to evaluate at the hit's time and place.
+class TextureEvaluator;
+
+struct SurfacePoint {
+    Event event{};
+    glm::dvec3 geometric_normal{};  // unit; for solids outward, for flat shapes their own side
+    glm::dvec3 shading_normal{};    // unit; faces the same side as geometric_normal
+    glm::dvec2 uv{};
+    // The texture: the shader asks it for the material and the perturbed
+    // normals at `event` after turning the normal to face the ray.
+    const TextureEvaluator* texture = nullptr;
+    glm::dvec3 error{0.0};  // world bound of event's error (geometry::world_error): what a secondary ray must clear
+};
+
+class IntelligentObject {
+public:
+    virtual ~IntelligentObject() = default;
+
+    // False for objects without a finite extent (a plane): the tracer keeps
+    // them outside the hierarchy and tests them on every ray.
+    virtual bool bounded() const { return true; }
+
+    // Appends to `out` one or more 12-slab bounds that together contain every
+    // surface event of the object inside `region`. Conservative always; an
+    // object whose surface has no event in the region may append nothing.
+    virtual void bound(const Box4& region, std::vector<SlabBound>& out) const = 0;
+
+    // A box around every surface event of the object at times in `t`: its
+    // space part holds the surface at every instant of t, its time part is
+    // t. Conservative always (interval evaluation), tight when t is short;
+    // empty when the object has no surface then. The hierarchy caches these
+    // over pieces of time (tracer/.., runtime/bounds/time_sweep.hpp) and clips them
+    // to its cells; bound() answers the same question for one region.
+    virtual Box4 box_over(const Interval& t) const = 0;
+
+    // For sweeps by chords (runtime/bounds/time_sweep.hpp): over t, per world axis,
+    // a bound on the second time derivative of the position of every point
+    // the object's surface may occupy (`acceleration`), and `margin`, which
+    // covers how far the exact positions at any instant may lie outside
+    // placed_box_at() there, plus how far the double placement the tracer
+    // uses may stray from the exact one. Then a line between placed boxes at
+    // t0 and t1, moved out by (t1 - t0)^2 / 8 * acceleration + margin, holds
+    // the surface at every instant between. Nothing where no such bound is
+    // known (deformations, jumps or kinks in the motion, a changing shape).
+    struct ChordBound {
+        glm::dvec3 acceleration{0.0};
+        glm::dvec3 margin{0.0};
+    };
+    virtual std::optional<ChordBound> chord_bound_over(const Interval&) const {
+        return std::nullopt;
+    }
+    // A box around the surface at instant t as the double placement puts
+    // it (the ends of the chords above); box_over(t) where there is no
+    // cheaper answer.
+    virtual Box4 placed_box_at(double t) const { return box_over(Interval(t)); }
+
+    // The first surface event along `ray` with s_min < s < s_max.
+    virtual std::optional<ObjectHit> intersect(const Ray4& ray, double s_min,
+                                               double s_max) const = 0;
+
+    // Is there a surface event along `ray` with s_min < s < s_max? The
+    // any-hit question of shadow rays (pbrt's IntersectP): an object may
+    // answer it without forming the hit.
+    virtual bool occluded(const Ray4& ray, double s_min, double s_max) const {
+        return intersect(ray, s_min, s_max).has_value();
+    }
+
+    // Normals, texture coordinates and material at a hit this object returned.
+    virtual SurfacePoint complete(const Ray4& ray, const ObjectHit& hit) const = 0;
+
+    // Is the event inside the object's solid (POV-Ray's inside, with
+    // `inverse`)? Flat objects have no inside.
+    virtual bool inside(const Event& event) const = 0;
+
+    // The fraction of the region's 4D volume that the object's solid fills,
+    // in [0, 1]; for the hierarchy's density criterion.
+    virtual double occupancy(const Box4& region) const = 0;
+
+    // Does anything about the object change with time?
+    virtual bool moves() const = 0;
+    // Is its map to world space non-affine (twist, taper, bend)?
+    virtual bool deformed() const = 0;
+    // Does it cast shadows (no no_shadow)?
+    virtual bool casts_shadow() const { return true; }
+    // May light pass it (a texture that filters or transmits somewhere:
+    // POV-Ray's objects without OPAQUE_FLAG)? Then a shadow ray does not
+    // stop at it (`occluded` passes it by) but takes the colour of each of
+    // its surfaces it crosses (tracer/shader.cpp, filtered shadows).
+    virtual bool filters_light() const { return false; }
+    // casts_shadow() and not filters_light(): what the any-hit shadow query
+    // asks of every object it meets (one call).
+    virtual bool casts_full_shadow() const { return casts_shadow() && !filters_light(); }
+};
+
+using IntelligentObjectPtr = std::unique_ptr<IntelligentObject>;
+
+}  // namespace hexant::runtime

@@ -1,0 +1,180 @@
+#include "runtime/objects/object_factory.hpp"
+
+#include <optional>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include "runtime/objects/csg_object.hpp"
+#include "runtime/objects/object_error.hpp"
+#include "runtime/objects/lifetime_object.hpp"
+#include "runtime/objects/primitive.hpp"
+
+namespace hexant::runtime {
+
+namespace {
+
+// What a group hands down to its children, already in world terms.
+struct Inherited {
+    Transform to_world;  // the group's object space to the world
+    std::optional<Texture> texture;
+    std::optional<Interior> interior;
+    bool no_shadow = false;
+    int csg_depth = 0;  // CSG objects around this one (unions split apart do not count)
+    // The lifetime of unions split apart around it (a group kept whole
+    // carries its own, runtime/objects/lifetime_object.hpp).
+    Lifetime lifetime;
+    // Is it a member of an intersection (LifetimeObject's inside_when_absent)?
+    bool in_intersection = false;
+};
+
+// The tracer tests a CSG's children recursively for every ray, on threads
+// whose stacks are a few MB: deeper nesting than this is refused where it is
+// written (a generated scene reached 8,000 intersections, a crash; real
+// scenes nest tens).
+constexpr int kMaxCsgDepth = 1000;
+
+// What the scene's top hands its objects: the default texture.
+Inherited top_level(const Texture& default_texture) {
+    return {Transform{}, default_texture, std::nullopt, false, 0, Lifetime::always(), false};
+}
+
+// What `record` holds in world terms under `parent`: its transform after
+// the parent's, its texture (mapped to the parent's space) or the parent's,
+// its interior or the parent's, no_shadow if either says so; the rest as
+// the parent's.
+Inherited handed_down(const ObjectRecord& record, const Inherited& parent) {
+    Inherited down = parent;
+    down.to_world = record.transform;
+    down.to_world.append(parent.to_world);
+    if (record.texture) {
+        // The record's texture maps to the record's parent space.
+        down.texture = *record.texture;
+        down.texture->transform_by(parent.to_world);
+    }
+    if (record.interior) down.interior = record.interior;
+    down.no_shadow = record.no_shadow || parent.no_shadow;
+    return down;
+}
+
+IntelligentObjectPtr build_object(const ObjectRecord& record, const Inherited& parent);
+IntelligentObjectPtr build(const ObjectRecord& record, const Inherited& parent);
+
+// A difference whose first member lives part of the time (made under a
+// branch on clock): POV-Ray takes the later members away from the first
+// member there is, so where the first written is absent the next present
+// one is the base. One difference per base, each living where its base is
+// the first present, side by side in a union (they never overlap in time).
+IntelligentObjectPtr build_difference_by_base(const Csg& csg, const Inherited& down, bool inverse) {
+    std::vector<IntelligentObjectPtr> parts;
+    Lifetime none_before = Lifetime::always();  // where every member so far is absent
+    for (std::size_t k = 0; k < csg.children.size(); ++k) {
+        const Lifetime& life = csg.children[k]->lifetime;
+        const Lifetime base = life.intersect(none_before);
+        if (!base.is_never()) {
+            std::vector<IntelligentObjectPtr> members;
+            for (std::size_t j = k; j < csg.children.size(); ++j) members.push_back(build(*csg.children[j], down));
+            auto part = std::make_unique<CsgObject>(Csg::Kind::Difference, std::move(members), inverse);
+            if (base.is_always()) parts.push_back(std::move(part));
+            else parts.push_back(std::make_unique<LifetimeObject>(std::move(part), base, false));
+        }
+        if (life.is_always()) break;
+        none_before = none_before.intersect(life.complement_within(Interval::entire()));
+        if (none_before.is_never()) break;
+    }
+    return std::make_unique<CsgObject>(Csg::Kind::Union, std::move(parts), false);
+}
+
+// The object, and where it lives only part of the time, wrapped in its
+// lifetime.
+IntelligentObjectPtr build(const ObjectRecord& record, const Inherited& parent) {
+    IntelligentObjectPtr object = build_object(record, parent);
+    const Lifetime lifetime = record.lifetime.intersect(parent.lifetime);
+    if (lifetime.is_always()) return object;
+    return std::make_unique<LifetimeObject>(std::move(object), lifetime, parent.in_intersection);
+}
+
+IntelligentObjectPtr build_object(const ObjectRecord& record, const Inherited& parent) {
+    const Inherited own = handed_down(record, parent);
+    const Transform& to_world = own.to_world;
+    const std::optional<Interior>& interior = own.interior;
+
+    if (const auto* csg = std::get_if<Csg>(&record.shape)) {
+        if (parent.csg_depth >= kMaxCsgDepth)
+            throw ObjectError(record.place, "CSG nested more than " + std::to_string(kMaxCsgDepth) +
+                                                " levels deep (intersection, difference or merge "
+                                                "inside one another)");
+        Inherited down = own;
+        down.csg_depth = parent.csg_depth + 1;
+        down.lifetime = Lifetime::always();
+        down.in_intersection = csg->kind == Csg::Kind::Intersection;
+        if (csg->kind == Csg::Kind::Difference && !csg->children.empty() &&
+            !csg->children.front()->lifetime.is_always())
+            return build_difference_by_base(*csg, down, record.inverse);
+        std::vector<IntelligentObjectPtr> children;
+        children.reserve(csg->children.size());
+        for (const auto& child : csg->children) children.push_back(build(*child, down));
+        return std::make_unique<CsgObject>(csg->kind, std::move(children), record.inverse);
+    }
+    TextureEvaluator evaluator(*own.texture, interior);
+    const PrimitiveOptions options{record.inverse, own.no_shadow};
+    return std::visit(
+        [&](const auto& shape) -> IntelligentObjectPtr {
+            using Kind = std::decay_t<decltype(shape)>;
+            if constexpr (std::is_same_v<Kind, Csg>) {
+                throw std::logic_error("make_intelligent_object: CSG handled above");
+            } else {
+                using Model = typename Kind::Model;
+                if constexpr (requires { shape.standalone_error(); })
+                    if (const auto refused = shape.standalone_error()) throw ObjectError(record.place, *refused);
+                if (Primitive<Model>::kUnbounded && to_world.has_deformation())
+                    throw ObjectError(record.place,
+                                      "a " + std::string(Kind::keyword) +
+                                          " cannot be twisted, tapered or bent (it has no bound "
+                                          "to search in); deform a box or a polygon instead");
+                // Textures of the kind's own parts (a mesh's faces), written
+                // in its object space.
+                std::vector<TextureEvaluator> parts;
+                if constexpr (requires { shape.part_textures(); })
+                    for (const Texture& part : shape.part_textures()) {
+                        Texture world = part;
+                        world.transform_by(to_world);
+                        parts.emplace_back(world, interior);
+                    }
+                return std::make_unique<Primitive<Model>>(Model(shape), to_world,
+                                                          std::move(evaluator), options,
+                                                          std::move(parts));
+            }
+        },
+        record.shape);
+}
+
+// A union's children become objects of their own, with what the union
+// hands down; anything else is one object.
+void build_split(const ObjectRecord& record, const Inherited& parent,
+                 std::vector<IntelligentObjectPtr>& out) {
+    const auto* csg = std::get_if<Csg>(&record.shape);
+    if (!csg || csg->kind != Csg::Kind::Union || record.inverse) {
+        out.push_back(build(record, parent));
+        return;
+    }
+    Inherited down = handed_down(record, parent);
+    down.lifetime = record.lifetime.intersect(parent.lifetime);
+    for (const auto& child : csg->children) build_split(*child, down, out);
+}
+
+}  // namespace
+
+IntelligentObjectPtr make_intelligent_object(const ObjectRecord& record,
+                                             const Texture& default_texture) {
+    return build(record, top_level(default_texture));
+}
+
+void make_intelligent_objects(const ObjectRecord& record, const Texture& default_texture,
+                              std::vector<IntelligentObjectPtr>& out) {
+    build_split(record, top_level(default_texture), out);
+}
+
+}  // namespace hexant::runtime

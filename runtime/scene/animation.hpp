@@ -1,0 +1,68 @@
+// The animation's frames and their clock values, after POV-Ray's animation
+// options (Initial_Frame, Final_Frame, Initial_Clock, Final_Clock,
+// Cyclic_Animation) plus the shutter: frame k's shutter opens at its clock and
+// stays open for `shutter` of clock_delta, its samples' times drawn by the
+// shutter curve; with a rolling shutter, each row of the image opens later
+// than the one above.
+#pragma once
+
+#include "runtime/scene/shutter_curve.hpp"
+
+namespace hexant::runtime {
+
+struct Animation {
+    int width = 320;
+    int height = 240;
+    int initial_frame = 1;
+    int final_frame = 1;
+    double initial_clock = 0.0;
+    double final_clock = 1.0;
+    bool cyclic = false;
+    double shutter = 1.0;
+    // How the shutter opens and closes over its open interval (a box: fully
+    // open throughout).
+    ShutterCurve shutter_curve;
+    // A rolling shutter (as a CMOS sensor's readout): the time, as a
+    // fraction of clock_delta, from the top row's opening to the bottom
+    // row's. A sample at height y (0 at the top edge, 1 at the bottom) opens
+    // at the frame's clock plus y rolling_shutter clock_delta. 0: a global
+    // shutter, every row at once.
+    double rolling_shutter = 0.0;
+
+    int frame_count() const { return final_frame - initial_frame + 1; }
+    bool is_animation() const { return final_frame != initial_frame; }
+    // Whether `clock` moves during the rendering: an animation, or one
+    // cyclic frame whose shutter spans the cycle (clock_delta).
+    bool clock_runs() const { return is_animation() || cyclic; }
+    // The clock step between frames.
+    double clock_delta() const;
+    // The clock value of frame k (the shutter's opening).
+    double clock_of_frame(int frame) const;
+    // The first frame's opening and the last frame's closing.
+    double time_begin() const { return clock_of_frame(initial_frame); }
+    double time_end() const { return clock_of_frame(final_frame) + exposure() * clock_delta(); }
+    // The fraction of clock_delta a frame's samples span: its rows' shutter
+    // openings spread over rolling_shutter, each open for `shutter`.
+    double exposure() const { return shutter + rolling_shutter; }
+    // When frame k's samples fall: its opening, how long its shutter is
+    // open and how long its rows take to open, in clock units, and the
+    // curve. at(row, when): the time of a sample at `row` (0 top edge, 1
+    // bottom) of the image and `when` (a uniform coordinate in [0, 1)) of
+    // its shutter. (Summed in this order so that a box shutter without
+    // rolling gives the very doubles it always gave: open + when
+    // (shutter delta).)
+    struct FrameClock {
+        double open, shutter_length, rolling_length;
+        const ShutterCurve* curve;
+        double at(double row, double when) const {
+            return open + curve->warp(when) * shutter_length + row * rolling_length;
+        }
+    };
+    FrameClock frame_clock(int frame) const {
+        const double delta = clock_delta();
+        return {clock_of_frame(frame), shutter * delta, rolling_shutter * delta, &shutter_curve};
+    }
+    double sample_time(int frame, double row, double when) const { return frame_clock(frame).at(row, when); }
+};
+
+}  // namespace hexant::runtime

@@ -1,0 +1,54 @@
+// What the language hands to the renderer: plain records, no syntax.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "runtime/scene/animation.hpp"
+#include "runtime/scene/camera.hpp"
+#include "runtime/scene/fog.hpp"
+#include "runtime/scene/light.hpp"
+#include "runtime/scene/sky_sphere.hpp"
+#include "runtime/objects/object.hpp"
+#include "runtime/source_place.hpp"
+
+namespace hexant::runtime {
+
+struct GlobalSettings {
+    double assumed_gamma = 1.0;
+    int max_trace_level = 5;
+    ColourFunction ambient_light{{1.0, 1.0, 1.0, 0.0, 0.0}};
+    // MegaPOV's global_settings { motion_blur SAMPLES, TIME }: hexant blurs
+    // every render, so these are only defaults for --spp and --shutter
+    // (TIME, in clock units, over the clock step; app/render_command.cpp).
+    // noise_generator 1 to 3 for every pattern that names none (POV-Ray's
+    // default 2); hexant applies it to the patterns written after it.
+    int noise_generator = 2;
+    std::optional<int> motion_blur_samples;
+    std::optional<double> motion_blur_time;
+};
+
+// A branch whose condition depends on clock, as the language split it:
+// where its condition was written and the instants where it switches.
+struct TimeSplit {
+    SourcePlace where;
+    std::vector<double> instants;
+};
+
+struct SceneDescription {
+    CameraRecord camera;  // POV-Ray's default camera when the scene has none
+    std::vector<LightRecord> lights;
+    std::vector<ObjectPtr> objects;
+    ColourFunction background{};  // black
+    std::optional<SkySphere> sky_sphere;  // over the background
+    std::vector<Fog> fogs;
+    GlobalSettings global;
+    // The texture of objects that have none of their own (#default).
+    Texture default_texture;
+    Animation animation;
+    std::vector<std::string> warnings;
+    std::vector<TimeSplit> time_splits;
+};
+
+}  // namespace hexant::runtime

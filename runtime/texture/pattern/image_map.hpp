@@ -1,0 +1,73 @@
+// POV-Ray's image_map: a pigment whose colour is read from an image laid
+// on the pattern's space by a map type (planar, spherical, cylindrical,
+// torus), tiled or `once`, its pixels taken as they are or interpolated
+// (POV-Ray 3.7's imageutil.cpp: image_map, map_pos, no_interpolation,
+// Interp, InterpolateBicubic).
+#pragma once
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "runtime/time/interval.hpp"
+#include "runtime/time/time_function.hpp"
+
+namespace hexant::runtime::pattern {
+
+// An image's pixels in the scene's working colour space (linear light for
+// assumed_gamma 1), rows top to bottom, each red, green, blue and transmit
+// (1 - alpha; 0 for an image without alpha), in single precision as
+// POV-Ray keeps them.
+struct ImagePixels {
+    int width = 0, height = 0;
+    std::vector<float> rgbt;  // width * height * 4
+    // Colours premultiplied by alpha (OpenEXR's convention): interpolated
+    // so, then divided by the alpha left after transmit all, as POV-Ray.
+    bool premultiplied = false;
+    // From a palette: `transmit all` sets each entry's transmit (a tRNS
+    // chunk's included) instead of adding to it, as POV-Ray's
+    // Parse_Image_Map does to a colour-mapped image.
+    bool palette = false;
+};
+
+struct ImageMap {
+    enum class MapType { Planar = 0, Spherical = 1, Cylindrical = 2, Torus = 5 };
+    enum class Interpolate { None = 0, Bilinear = 2, Bicubic = 3, NormalizedDistance = 4 };
+
+    std::string file;  // as the scene named it (for messages and dump)
+    // The image over each piece of time, in time order: one piece over all
+    // time for a file named once; an image sequence when the file's name
+    // changes with clock (concat("f", str(frame_number, -3, 0), ".png")).
+    struct Piece {
+        Interval time;
+        std::shared_ptr<const ImagePixels> pixels;
+    };
+    std::vector<Piece> images;
+    MapType map_type = MapType::Planar;
+    Interpolate interpolate = Interpolate::None;
+    bool once = false;
+    // repeat <u, v> and offset <u, v> as written (POV-Ray scales them by
+    // each image's size).
+    double repeat_u = 1.0, repeat_v = 1.0;
+    double offset_u = 0.0, offset_v = 0.0;
+    // filter all, transmit all: added to every pixel's (transmit all,
+    // when written, replaces a palette image's).
+    TimeFunction filter_all = 0.0, transmit_all = 0.0;
+    bool transmit_all_written = false;
+
+    // The image at time t (the piece holding t; before the first, the
+    // first; after the last, the last).
+    const ImagePixels& at(double t) const;
+};
+
+// The colour at `point` (in the image map's space: the pigment's point
+// after its transforms and warps) at time t: red, green, blue, filter,
+// transmit. Outside an image used `once`, clear (white, transmit 1), as
+// POV-Ray.
+std::array<double, 5> image_colour(const ImageMap& map, const glm::dvec3& point, double t, double filter_all,
+                                   double transmit_all);
+
+}  // namespace hexant::runtime::pattern

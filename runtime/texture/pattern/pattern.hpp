@@ -1,0 +1,185 @@
+// POV-Ray's patterns: a function from a point in pattern space to a number
+// (mostly in [0, 1]) that a colour map turns into a colour. Each kind is a
+// Kind in the registry (registry.cpp) with its evaluation in its family's
+// file (noise_patterns.cpp, shape_patterns.cpp, block_patterns.cpp,
+// fractal_patterns.cpp); adding a pattern is its function there and one
+// line in the registry. The pipeline around the kind's function is POV-Ray
+// 3.7's (Compute_Pigment, Warp_EPoint, Evaluate_TPat in its sources):
+//
+//   world point -> the pattern's transforms and warps, inverted, last
+//   written first -> classic turbulence (unless the kind reads it itself)
+//   -> the kind's value -> frequency and phase (fmod by 1.00001) -> wave
+//   shape -> the colour map.
+//
+// Every parameter may be a function of time; a Pattern holds them as the
+// scene wrote them, Values holds them at one instant.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "runtime/texture/pattern/noise.hpp"
+#include "runtime/motion/transform.hpp"
+#include "runtime/time/vector_function.hpp"
+
+namespace hexant::runtime::pattern {
+
+enum class Wave { Ramp, Sine, Triangle, Scallop, Cubic, Poly };
+
+// turbulence <x, y, z> with its octaves, omega and lambda.
+struct Turbulence {
+    Vector3Function amount{{0.0, 0.0, 0.0}};
+    TimeFunction octaves = 6.0;
+    TimeFunction omega = 0.5;
+    TimeFunction lambda = 2.0;
+    bool depends_on_time() const;
+};
+
+// One step of a pattern's warp list, in the order written: a transform
+// (consecutive ones composed) or a `warp { turbulence ... }`.
+struct Warp {
+    std::optional<Transform> transform;  // else turbulence
+    Turbulence turbulence;
+};
+
+// The parameters of one instant, as a kind's function reads them.
+struct Values {
+    glm::dvec3 vector{0.0};          // gradient's direction, brick_size
+    std::array<double, 2> number{};  // mortar, arms, iterations, control0/1, agate_turb
+    bool has_turbulence = false;     // classic turbulence given
+    glm::dvec3 turbulence{0.0};
+    Octaves octaves;
+    double frequency = 1.0;
+    double phase = 0.0;
+    int noise_generator = kDefaultNoiseGenerator;
+};
+
+using Function = double (*)(const glm::dvec3& point, const Values& values);
+// A normal-only pattern's perturbation (bumps, dents, ripples, waves,
+// wrinkles, quilted in a normal { }): `normal` (pattern space) plus its
+// bump of size `amount` at `point` (POV-Ray's normal.cpp).
+using NormalFunction = glm::dvec3 (*)(const glm::dvec3& point, const Values& values, double amount,
+                                      const glm::dvec3& normal);
+
+// A colour map's entry: at `value`, this colour (r, g, b, filter, transmit).
+struct MapEntry {
+    double value;
+    std::array<double, 5> colour;
+};
+
+struct Kind {
+    std::string_view name;
+    Function value;
+    // What follows the name: nothing, a vector (gradient), a number
+    // (spiral1's arms, mandel's iterations), or a list of colours (the
+    // block patterns: checker and brick 2, hexagon 3; their values are the
+    // index of a colour, POV-Ray's blend list).
+    enum class Argument { None, Vector, Number, Colours } argument = Argument::None;
+    int colours = 0;
+    Wave wave = Wave::Ramp;
+    bool frequency = true;        // false: frequency 0 (block patterns, quilted)
+    bool own_turbulence = false;  // marble, wood: read classic turbulence themselves
+    std::vector<MapEntry> default_map;
+    // Its numbers' defaults (Values::number) and vector's (brick_size).
+    std::array<double, 2> number{};
+    glm::dvec3 vector{0.0};
+    // In a normal { }: its own perturbation, else the slope of its value.
+    NormalFunction normal = nullptr;
+    // POV-Ray keeps the kinds' numbers in single precision, but crackle's
+    // metric and offset in double.
+    bool single_numbers = true;
+};
+
+// The kind named `name`, or null.
+const Kind* find_kind(std::string_view name);
+// Every kind, by name (for the grammar's keyword list and the README).
+const std::vector<const Kind*>& all_kinds();
+
+// A pattern as the scene wrote it.
+struct Pattern {
+    const Kind* kind = nullptr;
+    Vector3Function vector;
+    std::array<TimeFunction, 2> number{};
+    std::optional<Turbulence> turbulence;  // classic
+    TimeFunction frequency = 1.0;
+    TimeFunction phase = 0.0;
+    Wave wave = Wave::Ramp;
+    TimeFunction exponent = 1.0;  // poly_wave
+    int noise_generator = 0;      // 0: the scene's
+    std::vector<Warp> warps;      // before the last transforms (Pigment::transform)
+
+    // A pattern of `kind` with its defaults.
+    static Pattern of(const Kind& kind);
+    bool depends_on_time() const;
+};
+
+// The value at a point already in pattern space (after warps and classic
+// turbulence), through frequency, phase and the wave (Evaluate_TPat).
+double evaluate(const Kind& kind, const glm::dvec3& point, const Values& values, Wave wave,
+                double exponent);
+
+// A normal perturbed by the slope of the pattern's value (POV-Ray's
+// Perturb_Normal for patterns without a normal function of their own): the
+// value at four points `delta` from `point` along a tetrahedron's
+// directions, weighted by amount * -5 * 0.02 / delta. `normal` and the
+// result are in pattern space.
+// With a slope map, each value goes through it first.
+struct SlopeEntry;
+glm::dvec3 slope_normal(const Kind& kind, const glm::dvec3& point, const Values& values, Wave wave,
+                        double exponent, double amount, double delta, const glm::dvec3& normal,
+                        const std::vector<SlopeEntry>* slope_map = nullptr);
+
+// A slope_map's entry: at `value` (single precision, as POV-Ray keeps a
+// map's values), a height and a slope.
+struct SlopeEntry {
+    double value, height, slope;
+};
+// A value through a slope map (POV-Ray's Do_Slope_Map: the Hermite cubic
+// between the neighbouring entries' heights and slopes; the entry's height
+// at or beyond the ends).
+double slope_map_value(const std::vector<SlopeEntry>& map, double value);
+
+// Classic turbulence applied to a point, as Warp_EPoint does it.
+glm::dvec3 apply_turbulence(const glm::dvec3& point, const glm::dvec3& amount, const Octaves& o);
+
+// POV-Ray's Search_Blend_Map over `count` entries whose values, in order,
+// value_at(i) gives: below the first entry, above the last or on an
+// entry's value, prev == cur; else cur is the first entry above `value`,
+// prev the one before, and f (in (0, 1)) how far value lies from prev to
+// cur. Values are read as the search goes (a time-varying map is not
+// copied).
+struct BlendPick {
+    std::size_t prev = 0, cur = 0;
+    double f = 1.0;
+};
+template <class ValueAt>
+BlendPick search_blend_map(double value, std::size_t count, ValueAt value_at) {
+    BlendPick pick;
+    if (count == 0) return pick;
+    double at_cur;
+    if (value >= (at_cur = value_at(count - 1))) {
+        pick.prev = pick.cur = count - 1;
+    } else {
+        double at_prev = at_cur = value_at(0);
+        while (value > at_cur) {
+            pick.prev = pick.cur++;
+            at_prev = at_cur;
+            at_cur = value_at(pick.cur);
+        }
+        if (value != at_cur && pick.prev != pick.cur) pick.f = (value - at_prev) / (at_cur - at_prev);
+    }
+    if (value == at_cur) pick.prev = pick.cur;
+    return pick;
+}
+
+// The colour a map gives a value (Search_Blend_Map and the linear blend
+// between its neighbouring entries; below the first, the first; above the
+// last, the last).
+std::array<double, 5> map_colour(const std::vector<MapEntry>& map, double value);
+
+}  // namespace hexant::runtime::pattern

@@ -1,0 +1,520 @@
+#include "runtime/texture/texture_evaluator.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <mutex>
+#include <type_traits>
+
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+#include "runtime/objects/object_error.hpp"
+
+namespace hexant::runtime {
+
+namespace {
+
+// The transforms after a pattern's last warp, then the texture's.
+Transform head_transform(const Transform& last, const Transform& texture) {
+    Transform t = last;
+    t.append(texture);
+    return t;
+}
+
+}  // namespace
+
+TextureEvaluator::CompiledColour TextureEvaluator::compile(const ColourFunction& colour) {
+    CompiledColour out;
+    for (int i = 0; i < 5; ++i) out.c[i] = CompiledScalar(colour.c[i]);
+    return out;
+}
+
+std::shared_ptr<const TextureEvaluator::CompiledFinish> TextureEvaluator::compile(
+    const Finish& f, const std::optional<Interior>& interior) {
+    const auto make = [&] {
+        return std::make_shared<const CompiledFinish>(CompiledFinish{
+            CompiledScalar(f.ambient), CompiledScalar(f.diffuse), CompiledScalar(f.brilliance),
+            CompiledScalar(f.phong), CompiledScalar(f.phong_size), CompiledScalar(f.specular),
+            CompiledScalar(f.roughness), CompiledScalar(f.emission),
+            interior ? CompiledScalar(interior->ior) : CompiledScalar(1.0),
+            {CompiledScalar(f.reflection.c[0]), CompiledScalar(f.reflection.c[1]),
+             CompiledScalar(f.reflection.c[2])}});
+    };
+    using Key = std::array<double, 12>;
+    Key key{};
+    std::size_t n = 0;
+    for (const TimeFunction* value :
+         {&f.ambient, &f.diffuse, &f.brilliance, &f.phong, &f.phong_size, &f.specular,
+          &f.roughness, &f.emission, &f.reflection.c[0], &f.reflection.c[1], &f.reflection.c[2]}) {
+        if (!value->is_constant()) return make();
+        key[n++] = value->constant();
+    }
+    if (interior && !interior->ior.is_constant()) return make();
+    key[n] = interior ? interior->ior.constant() : 1.0;
+    // Finishes of constants, shared while some texture holds them. Objects
+    // are made on several threads at once in tests, so the table is locked
+    // (once per object, while the scene is being set up).
+    static std::mutex mutex;
+    static std::map<Key, std::weak_ptr<const CompiledFinish>> shared;
+    const std::lock_guard lock(mutex);
+    auto& slot = shared[key];
+    if (auto kept = slot.lock()) return kept;
+    static std::size_t prune_at = 64;
+    if (shared.size() > prune_at) {  // forget finishes no texture holds any more
+        std::erase_if(shared, [](const auto& entry) { return entry.second.expired(); });
+        prune_at = std::max<std::size_t>(64, 2 * shared.size());  // amortized: linear in all
+    }
+    auto made = make();
+    shared[key] = made;
+    return made;
+}
+
+TextureEvaluator::CompiledTurbulence TextureEvaluator::compile(const pattern::Turbulence& t) {
+    return {{CompiledScalar(t.amount.c[0]), CompiledScalar(t.amount.c[1]), CompiledScalar(t.amount.c[2])},
+            CompiledScalar(t.octaves),
+            CompiledScalar(t.omega),
+            CompiledScalar(t.lambda)};
+}
+
+pattern::Octaves TextureEvaluator::CompiledTurbulence::at(double t) const {
+    return pattern::octaves_of(octaves.at(t), omega.at(t), lambda.at(t));
+}
+
+TextureEvaluator::CompiledPattern::CompiledPattern(const pattern::Pattern& source, const Transform& last,
+                                                   const Transform& texture)
+    : kind(source.kind), head(std::make_shared<const Motion>(head_transform(last, texture))) {
+    for (int i = 0; i < 3; ++i) vector[static_cast<std::size_t>(i)] = CompiledScalar(source.vector.c[i]);
+    for (std::size_t i = 0; i < 2; ++i) number[i] = CompiledScalar(source.number[i]);
+    if (source.turbulence) turbulence = compile(*source.turbulence);
+    frequency = CompiledScalar(source.frequency);
+    phase = CompiledScalar(source.phase);
+    exponent = CompiledScalar(source.exponent);
+    wave = source.wave;
+    if (source.noise_generator != 0) noise_generator = source.noise_generator;
+    for (const pattern::Warp& w : source.warps) {
+        CompiledWarp c;
+        if (w.transform) c.transform = std::make_shared<const Motion>(*w.transform);
+        else c.turbulence = compile(w.turbulence);
+        warps.push_back(std::move(c));
+    }
+    const bool still = !source.vector.depends_on_time() && !source.number[0].depends_on_time() &&
+                       !source.number[1].depends_on_time() && !source.frequency.depends_on_time() &&
+                       !source.phase.depends_on_time() && !source.exponent.depends_on_time() &&
+                       !(source.turbulence && source.turbulence->depends_on_time());
+    if (still) {
+        fixed = values_at(0.0);
+        fixed_exponent = pattern::single(exponent.at(0.0));
+    }
+}
+
+pattern::Values TextureEvaluator::CompiledPattern::values_at(double t) const {
+    // (POV-Ray keeps frequency, phase and the kinds' numbers in single
+    // precision: pattern::single.)
+    pattern::Values v;
+    v.vector = {vector[0].at(t), vector[1].at(t), vector[2].at(t)};
+    v.number = {number[0].at(t), number[1].at(t)};
+    if (kind != nullptr && kind->single_numbers) v.number = {pattern::single(v.number[0]), pattern::single(v.number[1])};
+    v.frequency = pattern::single(frequency.at(t));
+    v.phase = pattern::single(phase.at(t));
+    v.noise_generator = noise_generator;
+    if (turbulence) {
+        v.has_turbulence = true;
+        v.turbulence = {turbulence->amount[0].at(t), turbulence->amount[1].at(t), turbulence->amount[2].at(t)};
+        v.octaves = turbulence->at(t);
+    }
+    return v;
+}
+
+template <class OnMap>
+glm::dvec3 TextureEvaluator::CompiledPattern::walk(const glm::dvec3& world, double t, const pattern::Values& v,
+                                                   OnMap on_map) const {
+    const auto q = head->to_object<double>({world.x, world.y, world.z}, t);
+    glm::dvec3 p(q[0], q[1], q[2]);
+    constexpr bool maps = !std::is_same_v<OnMap, NoMaps>;
+    if constexpr (maps) on_map(head->jacobian_at(p, t));
+    for (auto w = warps.rbegin(); w != warps.rend(); ++w) {
+        if (w->transform) {
+            const auto r = w->transform->to_object<double>({p.x, p.y, p.z}, t);
+            p = {r[0], r[1], r[2]};
+            if constexpr (maps) on_map(w->transform->jacobian_at(p, t));
+        } else {
+            const CompiledTurbulence& turb = w->turbulence;
+            p = pattern::apply_turbulence(p, {turb.amount[0].at(t), turb.amount[1].at(t), turb.amount[2].at(t)},
+                                          turb.at(t));
+        }
+    }
+    if (v.has_turbulence && (kind == nullptr || !kind->own_turbulence)) p = pattern::apply_turbulence(p, v.turbulence, v.octaves);
+    return p;
+}
+
+bool TextureEvaluator::CompiledPattern::depends_on_time() const { return !head->is_static(); }
+
+// The pattern-to-outside linear parts of a walk, outside first: a normal
+// goes in by the transpose of each (POV-Ray's MInvTransNormal of the
+// inverse), out by their inverse transposes, in reverse.
+class TextureEvaluator::NormalMaps {
+public:
+    void push(const glm::dmat3& m) {
+        if (count_ < kOnStack) stack_[count_] = m;
+        else heap_.push_back(m);
+        ++count_;
+    }
+    bool empty() const { return count_ == 0; }
+    glm::dvec3 into(glm::dvec3 n) const {
+        for (std::size_t i = 0; i < count_; ++i) n = glm::transpose(at(i)) * n;
+        return n;
+    }
+    glm::dvec3 out_of(glm::dvec3 n) const {
+        for (std::size_t i = count_; i-- > 0;) n = glm::transpose(glm::inverse(at(i))) * n;
+        return n;
+    }
+
+private:
+    static constexpr std::size_t kOnStack = 8;
+    const glm::dmat3& at(std::size_t i) const { return i < kOnStack ? stack_[i] : heap_[i - kOnStack]; }
+    glm::dmat3 stack_[kOnStack];
+    std::vector<glm::dmat3> heap_;
+    std::size_t count_ = 0;
+};
+
+namespace {
+
+// A normal's length set to one, unless no_bump_scale keeps it (or it has
+// none to set).
+glm::dvec3 unit_unless(bool keep, const glm::dvec3& x) {
+    const double l = glm::length(x);
+    return keep || !(l > 0.0) || !std::isfinite(l) ? x : x / l;
+}
+
+// The linear part, at `where` (in the space around them) and t, of the
+// transforms around a uv-mapped texture: what its normals go through.
+glm::dmat3 outer_jacobian(const Motion& outer, const glm::dvec3& where, double t) {
+    const auto q = outer.to_object<double>({where.x, where.y, where.z}, t);
+    return outer.jacobian_at(glm::dvec3(q[0], q[1], q[2]), t);
+}
+
+// A map's entries as POV-Ray's Search_Blend_Map reads them (single
+// precision values).
+template <class Entries>
+pattern::BlendPick pick_entry(const Entries& entries, double value, double t) {
+    return pattern::search_blend_map(value, entries.size(),
+                                     [&](std::size_t i) { return pattern::single(entries[i].first.at(t)); });
+}
+
+// A normal's pattern, or the error naming where a pattern hexant lacks was
+// written.
+const pattern::Pattern& supported(const Normal& n) {
+    if (!n.unsupported_name.empty())
+        throw ObjectError(n.unsupported_place,
+                          "normal pattern '" + n.unsupported_name + "' is not supported by hexant's tracer");
+    if (n.patterned.kind == nullptr) throw std::logic_error("TextureEvaluator: a normal without its pattern");
+    return n.patterned;
+}
+
+}  // namespace
+
+struct TextureEvaluator::Shared {
+    std::map<const Texture*, std::shared_ptr<const CompiledTexture>> textures;
+    std::map<const Pigment*, std::shared_ptr<const CompiledPigment>> pigments;
+    std::map<const Normal*, std::shared_ptr<const CompiledNormal>> normals;
+    // The entry compiled from `record` (in its pattern's space: nothing
+    // outside it), once.
+    template <class Compiled, class Record, class... Extra>
+    std::shared_ptr<const Compiled> entry(std::map<const Record*, std::shared_ptr<const Compiled>>& done,
+                                          const Record& record, const Extra&... extra) {
+        auto& slot = done[&record];
+        if (!slot) slot = std::make_shared<const Compiled>(record, Transform{}, extra..., *this);
+        return slot;
+    }
+};
+
+TextureEvaluator::TextureEvaluator(const Texture& texture, const std::optional<Interior>& interior)
+    : texture_([&] {
+          Shared shared;
+          return std::make_shared<const CompiledTexture>(texture, Transform{}, interior, shared);
+      }()),
+      depends_on_time_(texture.depends_on_time() || (interior && interior->ior.depends_on_time())),
+      opaque_(texture.opaque()) {}
+
+TextureEvaluator::CompiledTexture::CompiledTexture(const Texture& texture, const Transform& outside,
+                                                   const std::optional<Interior>& interior, Shared& shared) {
+    if (texture.is_patterned()) {
+        if (texture.patterned.kind == nullptr)
+            throw std::logic_error("TextureEvaluator: a texture_map without its pattern");
+        // (A uv-mapped one: in uv space, through its own transforms alone.)
+        uv = texture.uv_mapping != UvMapping::Off;
+        pattern.emplace(texture.patterned, texture.transform, uv ? Transform{} : outside);
+        if (uv && !texture.uv_outside.empty()) outer = std::make_shared<const Motion>(texture.uv_outside);
+        // (The entries live in this pattern's space: nothing outside it.)
+        for (const auto& e : texture.texture_map) {
+            auto entry = shared.entry(shared.textures, *e.texture, interior);
+            has_normal = has_normal || entry->has_normal;
+            entries.push_back({CompiledScalar(e.value), std::move(entry)});
+        }
+        return;
+    }
+    // (A uv-mapped layer: in uv space, through its own transforms alone.)
+    const auto placed = [&](const Texture& layer) {
+        Transform to_world = layer.transform;
+        if (layer.uv_mapping == UvMapping::Off) to_world.append(outside);
+        return to_world;
+    };
+    const auto add = [&](const Texture& layer, const Transform& to_world) {
+        CompiledLayer c;
+        c.uv = layer.uv_mapping != UvMapping::Off;
+        if (c.uv && layer.normal && !layer.uv_outside.empty())
+            c.outer = std::make_shared<const Motion>(layer.uv_outside);
+        c.pigment = std::make_shared<const CompiledPigment>(layer.pigment, to_world, shared);
+        if (layer.normal) {
+            c.normal = std::make_shared<const CompiledNormal>(*layer.normal, to_world, shared);
+            has_normal = true;
+        }
+        c.finish = compile(layer.finish, interior);
+        layers.push_back(std::move(c));
+    };
+    add(texture, placed(texture));
+    for (const Texture& below : texture.below) {
+        if (below.is_patterned() || !below.below.empty())
+            throw std::logic_error("TextureEvaluator: a layer under a texture is one plain texture");
+        add(below, placed(below));
+    }
+}
+
+TextureEvaluator::CompiledNormal::CompiledNormal(const Normal& n, const Transform& texture, Shared& shared)
+    : pattern(supported(n), n.transform, n.uv_mapping != UvMapping::Off ? Transform{} : texture),
+      amount(n.amount), accuracy(n.accuracy), no_bump_scale(n.no_bump_scale),
+      uv(n.uv_mapping != UvMapping::Off) {
+    // (Each entry of a normal map in the space of this pattern.)
+    for (const auto& e : n.normal_map)
+        normals.push_back({CompiledScalar(e.value), shared.entry(shared.normals, *e.normal)});
+    const bool still = std::all_of(n.slope_map.begin(), n.slope_map.end(), [](const SlopeMapEntry& e) {
+        return e.value.is_constant() && e.height.is_constant() && e.slope.is_constant();
+    });
+    for (const auto& e : n.slope_map) {
+        if (still) fixed_slopes.push_back({pattern::single(e.value.constant()), e.height.constant(), e.slope.constant()});
+        else slopes.push_back({CompiledScalar(e.value), CompiledScalar(e.height), CompiledScalar(e.slope)});
+    }
+}
+
+TextureEvaluator::CompiledPigment::CompiledPigment(const Pigment& pigment, const Transform& texture,
+                                                   Shared& shared) {
+    if (pigment.pattern == Pigment::Pattern::Unsupported)
+        throw ObjectError(pigment.unsupported_place,
+                          "pigment pattern '" + pigment.unsupported_name + "' is not supported by hexant's tracer");
+    if (pigment.pattern == Pigment::Pattern::Solid) {
+        if (pigment.colours.empty()) throw std::logic_error("TextureEvaluator: a solid pigment without its colour");
+        solid = compile(pigment.colours.front());
+        return;
+    }
+    // (A uv-mapped one: in uv space, through its own transforms alone.)
+    uv = pigment.uv_mapping != UvMapping::Off;
+    pattern.emplace(pigment.patterned, pigment.transform, uv ? Transform{} : texture);
+    if (pigment.pattern == Pigment::Pattern::Image) {
+        image = pigment.image_map;
+        filter_all = CompiledScalar(image->filter_all);
+        transmit_all = CompiledScalar(image->transmit_all);
+        return;
+    }
+    if (pattern->kind == nullptr) throw std::logic_error("TextureEvaluator: a pattern without its kind");
+    if (!pigment.pigment_map.empty()) {
+        // (Each in the space of this pattern: no texture transform of its own.)
+        for (const auto& e : pigment.pigment_map)
+            pigments.push_back({CompiledScalar(e.value), shared.entry(shared.pigments, *e.pigment)});
+        return;
+    }
+    const ColourMap& map = pigment.colour_map;
+    if (map.entries.empty()) {
+        fixed_map = pigment.patterned.kind->default_map;
+    } else if (!map.depends_on_time()) {
+        for (const auto& e : map.entries) {
+            pattern::MapEntry entry{pattern::single(e.value.constant()), {}};
+            for (std::size_t i = 0; i < 5; ++i) entry.colour[i] = e.colour.c[i].constant();
+            fixed_map.push_back(entry);
+        }
+    } else {
+        for (const auto& e : map.entries) this->map.push_back({CompiledScalar(e.value), compile(e.colour)});
+    }
+}
+
+std::array<double, 5> TextureEvaluator::CompiledPigment::colour(const glm::dvec3& where, const glm::dvec2& surface_uv,
+                                                                double t) const {
+    if (solid) return {solid->c[0].at(t), solid->c[1].at(t), solid->c[2].at(t), solid->c[3].at(t), solid->c[4].at(t)};
+    const CompiledPattern& p = *pattern;
+    const pattern::Values v = p.values(t);
+    const glm::dvec3 point = p.point(uv ? glm::dvec3(surface_uv, 0.0) : where, t, v);
+    if (image) return pattern::image_colour(*image, point, t, filter_all.at(t), transmit_all.at(t));
+    const double value = p.value(point, t, v);
+    if (!pigments.empty()) {
+        // POV-Ray's Compute_Pigment with a pigment map: the neighbouring
+        // entries' pigments at this pattern's point, blended linearly.
+        // (A sub-pigment sees the point warped by this pattern, but not
+        // moved by turbulence that marble and wood read themselves.)
+        const pattern::BlendPick pick = pick_entry(pigments, value, t);
+        const auto c = pigments[pick.cur].second->colour(point, surface_uv, t);
+        if (pick.prev == pick.cur) return c;
+        const auto b = pigments[pick.prev].second->colour(point, surface_uv, t);
+        std::array<double, 5> out;
+        for (std::size_t i = 0; i < 5; ++i) out[i] = b[i] + pick.f * (c[i] - b[i]);
+        return out;
+    }
+    if (map.empty()) return pattern::map_colour(fixed_map, value);
+    std::vector<pattern::MapEntry> entries;
+    entries.reserve(map.size());
+    for (const auto& [entry_value, colour] : map)
+        entries.push_back({pattern::single(entry_value.at(t)), {colour.c[0].at(t), colour.c[1].at(t), colour.c[2].at(t),
+                                                                colour.c[3].at(t), colour.c[4].at(t)}});
+    return pattern::map_colour(entries, value);
+}
+
+glm::dvec3 TextureEvaluator::CompiledNormal::perturb(const glm::dvec3& normal, const glm::dvec3& where,
+                                                     const glm::dvec2& surface_uv, double t) const {
+    const CompiledPattern& p = pattern;
+    const pattern::Values v = p.values(t);
+    NormalMaps maps;
+    // (uv-mapped: POV-Ray perturbs the normal as it is at (u, v, 0): no
+    // map between uv space and the surface's tangents.)
+    const glm::dvec3 start = uv ? glm::dvec3(surface_uv, 0.0) : where;
+    const glm::dvec3 point = p.walk(start, t, v, [&](const glm::dmat3& m) { maps.push(m); });
+    const glm::dvec3 pn = unit_unless(no_bump_scale, maps.into(unit_unless(no_bump_scale, normal)));
+    glm::dvec3 bumped;
+    if (!normals.empty()) {
+        // POV-Ray's normal_map: the neighbouring entries' normals, each
+        // perturbing this one in this pattern's space, blended linearly.
+        const pattern::BlendPick pick = pick_entry(normals, p.value(point, t, v), t);
+        bumped = normals[pick.cur].second->perturb(pn, point, surface_uv, t);
+        if (pick.prev != pick.cur) {
+            const glm::dvec3 other = normals[pick.prev].second->perturb(pn, point, surface_uv, t);
+            bumped = (1.0 - pick.f) * other + pick.f * bumped;
+        }
+    } else if (p.kind->normal != nullptr) {
+        bumped = p.kind->normal(point, v, pattern::single(amount.at(t)), pn);
+    } else {
+        std::vector<pattern::SlopeEntry> moving;
+        for (const auto& [value, height, slope] : slopes)
+            moving.push_back({pattern::single(value.at(t)), height.at(t), slope.at(t)});
+        const auto* slope_map = !fixed_slopes.empty() ? &fixed_slopes : !moving.empty() ? &moving : nullptr;
+        bumped = pattern::slope_normal(*p.kind, point, v, p.wave, p.exponent_at(t), pattern::single(amount.at(t)),
+                                       pattern::single(accuracy.at(t)), pn, slope_map);
+    }
+    const glm::dvec3 out = maps.out_of(unit_unless(no_bump_scale, bumped));
+    const double l = glm::length(out);
+    // (A bump that cancels the normal, or a flat map: the normal unchanged.)
+    if (!(l > 0.0) || !std::isfinite(l)) return normal;
+    return out / l;
+}
+
+MaterialSample TextureEvaluator::CompiledLayer::material(const glm::dvec3& point, const glm::dvec2& surface_uv,
+                                                        double t) const {
+    MaterialSample m;
+    fill(m, point, surface_uv, t);
+    return m;
+}
+
+void TextureEvaluator::CompiledLayer::fill(MaterialSample& m, const glm::dvec3& point, const glm::dvec2& surface_uv,
+                                          double t) const {
+    const auto c = pigment->colour(at(point, surface_uv), surface_uv, t);
+    m.colour = {c[0], c[1], c[2]};
+    m.filter = c[3];
+    m.transmit = c[4];
+    const CompiledFinish& f = *finish;
+    m.ambient = f.ambient.at(t);
+    m.diffuse = f.diffuse.at(t);
+    m.brilliance = f.brilliance.at(t);
+    m.phong = f.phong.at(t);
+    m.phong_size = f.phong_size.at(t);
+    m.specular = f.specular.at(t);
+    m.roughness = f.roughness.at(t);
+    m.reflection = {f.reflection[0].at(t), f.reflection[1].at(t), f.reflection[2].at(t)};
+    m.emission = f.emission.at(t);
+    m.ior = f.ior.at(t);
+}
+
+glm::dvec3 TextureEvaluator::CompiledLayer::perturbed(const glm::dvec3& n, const glm::dvec3& point,
+                                                     const glm::dvec2& surface_uv, double t) const {
+    if (!normal) return n;
+    if (!outer) return normal->perturb(n, at(point, surface_uv), surface_uv, t);
+    NormalMaps maps;
+    maps.push(outer_jacobian(*outer, point, t));
+    const glm::dvec3 back = maps.out_of(normal->perturb(unit_unless(false, maps.into(n)), at(point, surface_uv),
+                                                        surface_uv, t));
+    const double l = glm::length(back);
+    return l > 0.0 && std::isfinite(l) ? back / l : n;
+}
+
+void TextureEvaluator::CompiledTexture::sample(const glm::dvec3& where, const glm::dvec2& surface_uv, double t,
+                                               const glm::dvec3& normal, double weight, TextureSample& out) const {
+    if (!pattern) {
+        out.plains.push_back({weight, out.layers.size(), layers.size()});
+        for (const CompiledLayer& layer : layers) {
+            TextureSample::Layer& l = out.layers.emplace_back();
+            layer.fill(l.material, where, surface_uv, t);
+            l.normal = layer.perturbed(normal, where, surface_uv, t);
+        }
+        return;
+    }
+    // POV-Ray's ComputeOneTextureColour for a patterned texture: the
+    // neighbouring entries at the pattern's value, each in the pattern's
+    // space, their colours blended; a normal below goes through this
+    // pattern's transforms too (its Warp_Normal, UnWarp_Normal).
+    const CompiledPattern& p = *pattern;
+    const pattern::Values v = p.values(t);
+    NormalMaps maps;
+    const glm::dvec3 start = uv ? glm::dvec3(surface_uv, 0.0) : where;
+    if (outer && has_normal) maps.push(outer_jacobian(*outer, where, t));
+    const glm::dvec3 point =
+        has_normal ? p.walk(start, t, v, [&](const glm::dmat3& m) { maps.push(m); }) : p.point(start, t, v);
+    const pattern::BlendPick pick = pick_entry(entries, p.value(point, t, v), t);
+    const bool turn = has_normal && !maps.empty();
+    const glm::dvec3 inside = turn ? unit_unless(false, maps.into(normal)) : normal;
+    const std::size_t first = out.layers.size();
+    const double share = pick.prev == pick.cur ? 1.0 : pick.f;
+    entries[pick.cur].second->sample(point, surface_uv, t, inside, weight * share, out);
+    if (pick.prev != pick.cur)
+        entries[pick.prev].second->sample(point, surface_uv, t, inside, weight * (1.0 - share), out);
+    if (!turn) return;
+    for (std::size_t i = first; i < out.layers.size(); ++i) {
+        const glm::dvec3 back = maps.out_of(out.layers[i].normal);
+        const double l = glm::length(back);
+        out.layers[i].normal = l > 0.0 && std::isfinite(l) ? back / l : normal;
+    }
+}
+
+const TextureEvaluator::CompiledLayer& TextureEvaluator::CompiledTexture::picked_top(const glm::dvec3& where,
+                                                                                    const glm::dvec2& surface_uv,
+                                                                                    double t,
+                                                                                    glm::dvec3& at) const {
+    at = where;
+    if (!pattern) return layers.front();
+    const pattern::Values v = pattern->values(t);
+    const glm::dvec3 point = pattern->point(uv ? glm::dvec3(surface_uv, 0.0) : where, t, v);
+    const pattern::BlendPick pick = pick_entry(entries, pattern->value(point, t, v), t);
+    return entries[pick.cur].second->picked_top(point, surface_uv, t, at);
+}
+
+void TextureEvaluator::sample(const glm::dvec3& world_point, const glm::dvec2& uv, double t,
+                              const glm::dvec3& normal, TextureSample& out) const {
+    texture_->sample(world_point, uv, t, normal, 1.0, out);
+}
+
+void TextureEvaluator::sample_layer(const glm::dvec3& world_point, const glm::dvec2& uv, double t,
+                                    const glm::dvec3& normal, TextureSample::Layer& out) const {
+    const CompiledLayer& layer = texture_->layers.front();
+    layer.fill(out.material, world_point, uv, t);
+    out.normal = layer.perturbed(normal, world_point, uv, t);
+}
+
+MaterialSample TextureEvaluator::at(const glm::dvec3& world_point, const glm::dvec2& uv, double t) const {
+    glm::dvec3 point;
+    const CompiledLayer& layer = texture_->picked_top(world_point, uv, t, point);
+    return layer.material(point, uv, t);
+}
+
+bool TextureEvaluator::has_normal() const { return !texture_->pattern && texture_->layers.front().normal != nullptr; }
+
+glm::dvec3 TextureEvaluator::perturb(const glm::dvec3& normal, const glm::dvec3& world_point, double t) const {
+    if (!has_normal()) return normal;
+    return texture_->layers.front().normal->perturb(normal, world_point, glm::dvec2(0.0), t);
+}
+
+}  // namespace hexant::runtime

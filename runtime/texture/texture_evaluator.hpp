@@ -1,0 +1,244 @@
+// A texture compiled for the tracer: its patterns, layers, maps, finishes
+// and the interior, evaluated at a world point and time into plain numbers.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include <glm/mat3x3.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "runtime/time/compiled_function.hpp"
+#include "runtime/texture/material.hpp"
+#include "runtime/texture/material_sample.hpp"
+#include "runtime/motion/motion.hpp"
+
+namespace hexant::runtime {
+
+// What a texture shows at one surface event: the plain textures its
+// patterns pick there (texture_map), each with its weight in the blend, and
+// each plain texture's layers, top first, with the material and the
+// shading normal (perturbed by the layer's normal { }) of each. The shader
+// lights every plain texture on its own and blends the colours by weight
+// (POV-Ray's ComputeOneTextureColour, ComputeLightedTexture). Reused from
+// hit to hit: clear() keeps the storage.
+struct TextureSample {
+    struct Layer {
+        MaterialSample material;
+        glm::dvec3 normal{0.0};  // unit, world
+    };
+    struct Plain {
+        double weight = 1.0;
+        std::size_t first = 0, count = 0;  // layers[first, first + count)
+    };
+    std::vector<Layer> layers;
+    std::vector<Plain> plains;
+    void clear() {
+        layers.clear();
+        plains.clear();
+    }
+};
+
+class TextureEvaluator {
+public:
+    // `texture.transform` maps texture space to the world (the object's
+    // transforms written after the texture are already appended, so the
+    // texture moves with the object). Throws ObjectError, naming the place,
+    // for a pattern hexant does not have.
+    TextureEvaluator(const Texture& texture, const std::optional<Interior>& interior);
+
+    // The texture at `world_point` and time t, seen with the shading
+    // normal `normal` (unit, world, already turned to face the viewer, as
+    // POV-Ray perturbs it): appends each plain texture picked there, its
+    // layers and their perturbed normals, to `out`. The weights sum to 1.
+    // `uv`: the surface's (u, v) there (SurfacePoint::uv), which a
+    // uv-mapped pigment, normal or texture reads as the point (u, v, 0).
+    void sample(const glm::dvec3& world_point, const glm::dvec2& uv, double t, const glm::dvec3& normal,
+                TextureSample& out) const;
+
+    // Whether the texture is one plain layer (no texture_map, no layers
+    // under it): then sample_layer gives its one layer, as sample would.
+    bool single_layer() const { return !texture_->pattern && texture_->layers.size() == 1; }
+    void sample_layer(const glm::dvec3& world_point, const glm::dvec2& uv, double t, const glm::dvec3& normal,
+                      TextureSample::Layer& out) const;
+
+    // The top layer's material of the plain texture picked at the point
+    // (for a texture_map the entry at or above the pattern's value, without
+    // blending): for tests and peers that read one colour.
+    MaterialSample at(const glm::dvec3& world_point, const glm::dvec2& uv, double t) const;
+    bool depends_on_time() const { return depends_on_time_; }
+    // Whether no light passes it (Texture::opaque).
+    bool opaque() const { return opaque_; }
+
+    // Whether the top layer perturbs the shading normal (normal { }).
+    bool has_normal() const;
+    // The unit shading normal `normal` (unit, world, facing the viewer)
+    // perturbed at `world_point` and time t by the top layer's normal { }
+    // (the camera's normal: a texture of one layer, never uv-mapped: the
+    // language refuses it). POV-Ray's Warp_Normal, Perturb_Normal,
+    // UnWarp_Normal. A bump that cancels the normal leaves it as it was.
+    glm::dvec3 perturb(const glm::dvec3& normal, const glm::dvec3& world_point, double t) const;
+
+private:
+    struct CompiledColour {
+        std::array<CompiledScalar, 5> c;
+    };
+    static CompiledColour compile(const ColourFunction& colour);
+
+    // The finish and the interior's ior. A finish of constants is shared by
+    // every texture that has the same numbers (a scene of 10^5 spheres
+    // that differ in colour keeps one), so an object pays a pointer for it.
+    struct CompiledFinish {
+        CompiledScalar ambient, diffuse, brilliance, phong, phong_size, specular, roughness,
+            emission, ior;
+        std::array<CompiledScalar, 3> reflection;
+    };
+    static std::shared_ptr<const CompiledFinish> compile(const Finish& finish,
+                                                         const std::optional<Interior>& interior);
+
+    // A pattern's parameters, compiled (runtime/texture/pattern/pattern.hpp).
+    struct CompiledTurbulence {
+        std::array<CompiledScalar, 3> amount;
+        CompiledScalar octaves, omega, lambda;
+        pattern::Octaves at(double t) const;
+    };
+    struct CompiledWarp {
+        std::shared_ptr<const Motion> transform;  // else turbulence
+        CompiledTurbulence turbulence;
+    };
+    struct CompiledPattern {
+        const pattern::Kind* kind = nullptr;  // null: an image's placement, no value of its own
+        // Its last transforms, then the texture's: pattern space to the
+        // space around it.
+        std::shared_ptr<const Motion> head;
+        std::array<CompiledScalar, 3> vector;
+        std::array<CompiledScalar, 2> number;
+        std::optional<CompiledTurbulence> turbulence;
+        CompiledScalar frequency, phase, exponent;
+        pattern::Wave wave = pattern::Wave::Ramp;
+        int noise_generator = pattern::kDefaultNoiseGenerator;
+        std::vector<CompiledWarp> warps;  // in the order written
+        // The parameters, when none moves: a still pattern pays nothing per
+        // hit for time.
+        std::optional<pattern::Values> fixed;
+        double fixed_exponent = 1.0;
+
+        CompiledPattern(const pattern::Pattern& source, const Transform& last, const Transform& texture);
+        bool depends_on_time() const;
+        // The parameters at t.
+        pattern::Values values(double t) const { return fixed ? *fixed : values_at(t); }
+        pattern::Values values_at(double t) const;
+        double exponent_at(double t) const {
+            return fixed ? fixed_exponent : pattern::single(exponent.at(t));
+        }
+        // The pattern's value at a point in pattern space.
+        double value(const glm::dvec3& point, double t, const pattern::Values& v) const {
+            return pattern::evaluate(*kind, point, v, wave, exponent_at(t));
+        }
+        // The point (in the space around the pattern) in pattern space
+        // (POV-Ray's Warp_EPoint): the last transforms first, then each
+        // earlier step, last written first; classic turbulence last of all,
+        // unless the kind reads it itself.
+        glm::dvec3 point(const glm::dvec3& outside, double t, const pattern::Values& v) const {
+            return walk(outside, t, v, NoMaps{});
+        }
+        struct NoMaps {};  // (a pigment's point: no Jacobians computed)
+        // The same, handing each transform's pattern-to-outside linear part
+        // (head first) to on_map: what a normal goes through.
+        template <class OnMap>
+        glm::dvec3 walk(const glm::dvec3& outside, double t, const pattern::Values& v, OnMap on_map) const;
+    };
+    // The linear maps a normal goes through into a pattern's space, outside
+    // first (on the stack for the usual few).
+    class NormalMaps;
+
+    // Map entries compiled once each while one texture is compiled: a
+    // scene may declare textures whose maps share entries (T1 a checker of
+    // T0 and T0 scaled, T2 of T1 ...), a graph that is exponential as a tree.
+    struct Shared;
+
+    // A pigment: a colour, or a pattern through a colour map or a
+    // pigment map of pigments (each evaluated in this pattern's space).
+    struct CompiledPigment {
+        std::optional<CompiledColour> solid;
+        std::optional<CompiledPattern> pattern;
+        // The colour map: fixed when nothing in it moves, else compiled.
+        std::vector<pattern::MapEntry> fixed_map;
+        std::vector<std::pair<CompiledScalar, CompiledColour>> map;
+        std::vector<std::pair<CompiledScalar, std::shared_ptr<const CompiledPigment>>> pigments;
+        std::shared_ptr<const pattern::ImageMap> image;  // image_map (the pattern places it)
+        CompiledScalar filter_all, transmit_all;
+        bool uv = false;  // uv_mapping: read at (u, v, 0), nothing around it applied
+
+        CompiledPigment(const Pigment& pigment, const Transform& texture, Shared& shared);
+        // The colour at `point` (in the space around it: the world for a
+        // texture's pigment), rgb, filter, transmit; `uv` the surface's.
+        std::array<double, 5> colour(const glm::dvec3& point, const glm::dvec2& uv, double t) const;
+    };
+    // A normal: a pattern's bumps or slope (through a slope map), or a
+    // normal map of normals (each in this pattern's space).
+    struct CompiledNormal {
+        CompiledPattern pattern;
+        CompiledScalar amount, accuracy;
+        bool no_bump_scale = false;
+        std::vector<std::pair<CompiledScalar, std::shared_ptr<const CompiledNormal>>> normals;
+        // The slope map: fixed when nothing in it moves (a still map
+        // builds nothing per hit), else compiled (value, height, slope).
+        std::vector<pattern::SlopeEntry> fixed_slopes;
+        std::vector<std::array<CompiledScalar, 3>> slopes;
+        bool uv = false;  // uv_mapping: perturbs at (u, v, 0), nothing around it applied
+
+        CompiledNormal(const Normal& normal, const Transform& texture, Shared& shared);
+        // `normal` (in the space around it) perturbed at `point` (there
+        // too); `uv` the surface's.
+        glm::dvec3 perturb(const glm::dvec3& normal, const glm::dvec3& point, const glm::dvec2& uv,
+                           double t) const;
+    };
+    // A plain texture's layer.
+    struct CompiledLayer {
+        std::shared_ptr<const CompiledPigment> pigment;
+        std::shared_ptr<const CompiledNormal> normal;  // null: none
+        std::shared_ptr<const CompiledFinish> finish;
+        bool uv = false;  // a uv-mapped texture's layer: pigment and normal at (u, v, 0)
+        // Its normal goes through these transforms' linear part first (a
+        // uv-mapped texture's uv_outside; null: none).
+        std::shared_ptr<const Motion> outer;
+        // The shading normal `normal` (in the space around it) with this
+        // layer's normal { } at `point` (there too).
+        glm::dvec3 perturbed(const glm::dvec3& normal, const glm::dvec3& point, const glm::dvec2& surface_uv,
+                             double t) const;
+        MaterialSample material(const glm::dvec3& point, const glm::dvec2& uv, double t) const;
+        void fill(MaterialSample& m, const glm::dvec3& point, const glm::dvec2& uv, double t) const;  // (in place)
+        // The point its pigment and normal read.
+        glm::dvec3 at(const glm::dvec3& point, const glm::dvec2& surface_uv) const {
+            return uv ? glm::dvec3(surface_uv, 0.0) : point;
+        }
+    };
+    // A texture: plain layers, or a pattern over a map of textures.
+    struct CompiledTexture {
+        std::vector<CompiledLayer> layers;  // plain, top first
+        std::optional<CompiledPattern> pattern;
+        std::vector<std::pair<CompiledScalar, std::shared_ptr<const CompiledTexture>>> entries;
+        bool has_normal = false;  // a layer here or below perturbs the normal
+        bool uv = false;          // a uv-mapped patterned texture: its pattern at (u, v, 0)
+        std::shared_ptr<const Motion> outer;  // as CompiledLayer::outer
+
+        CompiledTexture(const Texture& texture, const Transform& outside, const std::optional<Interior>& interior,
+                        Shared& shared);
+        void sample(const glm::dvec3& point, const glm::dvec2& uv, double t, const glm::dvec3& normal,
+                    double weight, TextureSample& out) const;
+        const CompiledLayer& picked_top(const glm::dvec3& point, const glm::dvec2& uv, double t,
+                                        glm::dvec3& at) const;
+    };
+    static CompiledTurbulence compile(const pattern::Turbulence& turbulence);
+
+    std::shared_ptr<const CompiledTexture> texture_;  // shared by copies
+    bool depends_on_time_ = false;
+    bool opaque_ = true;
+};
+
+}  // namespace hexant::runtime
