@@ -805,7 +805,7 @@ HEXANT_ACTION(pattern_kind) {
                     break;
                 }
                 count(0, static_cast<std::size_t>(kind->colours),
-                      kind->colours == 2 ? "at most 2 colours" : "at most 3 colours");
+                      ("at most " + std::to_string(kind->colours) + " colours").c_str());
                 // A blend list: colour i at value i, the kind's default
                 // where none is given.
                 for (std::size_t i = 0; i < static_cast<std::size_t>(kind->colours); ++i) {
@@ -825,17 +825,35 @@ HEXANT_ACTION(pattern_kind) {
     }
 };
 
+// A kind's own modifier, as its file under runtime/texture/pattern/kinds/
+// declares it (POV-Ray refuses one the pattern does not have).
+inline void set_kind_setting(runtime::pattern::Pattern& pattern, const std::string& name, const Value& v) {
+    namespace pt = runtime::pattern;
+    const pt::Setting* setting = pattern.kind ? pt::find_setting(*pattern.kind, name) : nullptr;
+    if (setting == nullptr) {
+        std::string owners;
+        for (const pt::Kind* k : pt::all_kinds())
+            if (pt::find_setting(*k, name)) owners += (owners.empty() ? "" : " or ") + std::string(k->name);
+        throw ValueError(name + " belongs to " + owners + ", not to " +
+                         (pattern.kind ? std::string(pattern.kind->name) : std::string("a plain colour")));
+    }
+    if (setting->type == pt::Setting::Type::Vector) {
+        const runtime::Vector3Function value = to_vector3(v, name);
+        if (setting->constant && value.depends_on_time()) throw ValueError(name + " cannot move with clock");
+        pattern.vector = value;
+        return;
+    }
+    const TimeFunction value = to_float(v, name);
+    if (setting->constant && value.depends_on_time()) throw ValueError(name + " cannot move with clock");
+    pattern.number[static_cast<std::size_t>(setting->slot)] = value;
+}
+
 HEXANT_ACTION(pattern_setting) {
     HEXANT_APPLY {
         Value v = st.pop();
         const std::string name = st.pop_name();
         const PatternSlot slot = pattern_slot(st, in.position(), name.c_str());
         runtime::pattern::Pattern& pattern = slot.pattern;
-        const std::string kind = pattern.kind ? std::string(pattern.kind->name) : "";
-        const auto only = [&](const char* for_kind) {
-            if (kind != for_kind) throw ValueError(name + " belongs to " + for_kind + ", not to " +
-                                                   (kind.empty() ? std::string("a plain colour") : kind));
-        };
         // Classic turbulence, made by the first of its settings (POV-Ray's Check_Turb).
         const auto turbulence = [&]() -> runtime::pattern::Turbulence& {
             if (!pattern.turbulence) pattern.turbulence.emplace();
@@ -847,17 +865,11 @@ HEXANT_ACTION(pattern_setting) {
         else if (name == "octaves") turbulence().octaves = to_float(v, "octaves");
         else if (name == "omega") turbulence().omega = to_float(v, "omega");
         else if (name == "lambda") turbulence().lambda = to_float(v, "lambda");
-        else if (name == "mortar") { only("brick"); pattern.number[0] = to_float(v, "mortar"); }
-        else if (name == "brick_size") { only("brick"); pattern.vector = to_vector3(v, "brick_size"); }
-        else if (name == "control0") { only("quilted"); pattern.number[0] = to_float(v, "control0"); }
-        else if (name == "control1") { only("quilted"); pattern.number[1] = to_float(v, "control1"); }
-        else if (name == "agate_turb") { only("agate"); pattern.number[0] = to_float(v, "agate_turb"); }
-        else if (name == "metric") { only("crackle"); pattern.number[0] = to_float(v, "metric"); }
-        else if (name == "offset") { only("crackle"); pattern.number[1] = to_float(v, "offset"); }
-        else if (name == "form") { only("crackle"); pattern.vector = to_vector3(v, "form"); }
         else if (name == "noise_generator") {
             pattern.noise_generator =
                 static_cast<int>(checked_integer(to_constant(v, "noise_generator"), "noise_generator", 1, 3));
+        } else {
+            set_kind_setting(pattern, name, v);
         }
     }
 };

@@ -21,6 +21,7 @@
 #include <tao/pegtl/contrib/analyze_traits.hpp>
 
 #include "runtime/objects/kinds.hpp"
+#include "runtime/texture/pattern/kinds.hpp"
 
 namespace hexant::language::grammar {
 
@@ -546,31 +547,29 @@ struct unsupported_pattern : p::seq<unsupported_pattern_name, skip::until_rbrace
 // block is read at the surface's (u, v, 0) (runtime/texture/material.hpp).
 struct uv_mapping : p::seq<TAO_PEGTL_KEYWORD("uv_mapping"), ws> {};
 
-// The patterns hexant has (runtime/texture/pattern/registry.cpp, the same names),
-// each followed by what its kind takes: a vector (gradient), a number
-// (spiral1, spiral2, mandel) or a list of colours (checker, brick,
-// hexagon).
+// The patterns hexant has (runtime/texture/pattern/kinds.hpp, whose list
+// gives these words), each followed by what its kind takes: a vector
+// (gradient), a number (spiral1, spiral2, mandel) or a list of colours (the
+// block patterns).
 struct pattern_words {
-    static constexpr std::array<std::string_view, 28> list = {
-        "agate", "boxed", "bozo", "brick", "bumps", "cells", "checker", "crackle", "cylindrical", "dents",
-        "gradient", "granite", "hexagon", "leopard", "mandel", "marble", "onion", "planar",
-        "quilted", "radial", "ripples", "spherical", "spiral1", "spiral2", "spotted", "waves",
-        "wood", "wrinkles"};
+    static constexpr auto list = runtime::pattern::PatternWords<runtime::pattern::PatternKinds>::keywords;
 };
 struct pattern_name : one_word_of<pattern_words> {};
 struct pattern_argument : p::seq<sum> {};
 struct pattern_kind
     : p::seq<pattern_name, ws, frame_open,
              p::opt<pattern_argument, p::star<p::opt<comma>, pattern_argument>>> {};
-// The pattern modifiers (POV-Ray's Parse_Pattern), each with one value.
+// The pattern modifiers (POV-Ray's Parse_Pattern), each with one value:
+// those of every pattern, and the kinds' own (mortar, metric, ...: each
+// kind's file declares its settings).
+struct pattern_kind_setting_words {
+    static constexpr auto list = runtime::pattern::PatternWords<runtime::pattern::PatternKinds>::settings;
+};
 struct pattern_setting_name
     : p::sor<TAO_PEGTL_KEYWORD("frequency"), TAO_PEGTL_KEYWORD("phase"),
              TAO_PEGTL_KEYWORD("turbulence"), TAO_PEGTL_KEYWORD("octaves"),
-             TAO_PEGTL_KEYWORD("omega"), TAO_PEGTL_KEYWORD("lambda"), TAO_PEGTL_KEYWORD("mortar"),
-             TAO_PEGTL_KEYWORD("brick_size"), TAO_PEGTL_KEYWORD("control0"),
-             TAO_PEGTL_KEYWORD("control1"), TAO_PEGTL_KEYWORD("agate_turb"),
-             TAO_PEGTL_KEYWORD("noise_generator"), TAO_PEGTL_KEYWORD("metric"),
-             TAO_PEGTL_KEYWORD("form"), TAO_PEGTL_KEYWORD("offset")> {};
+             TAO_PEGTL_KEYWORD("omega"), TAO_PEGTL_KEYWORD("lambda"),
+             TAO_PEGTL_KEYWORD("noise_generator"), one_word_of<pattern_kind_setting_words>> {};
 struct pattern_setting_value : p::seq<expression> {};
 struct pattern_setting : p::seq<pattern_setting_name, ws, p::must<pattern_setting_value>> {};
 struct pattern_wave_name
@@ -1119,7 +1118,7 @@ struct global_charset : p::seq<TAO_PEGTL_KEYWORD("charset"), ws, p::must<charset
 struct global_ignored_name : p::seq<p::identifier, ws> {};
 struct global_ignored_setting
     : p::seq<global_ignored_name, frame_open, p::sor<p::seq<skip::braced, ws>, expression>> {};
-// MegaPOV's motion_blur SAMPLES, TIME (../shared/cases/17).
+// MegaPOV's motion_blur SAMPLES, TIME (real-animation case 17).
 struct global_motion_blur
     : p::seq<TAO_PEGTL_KEYWORD("motion_blur"), ws, frame_open, p::must<global_setting_value>, p::opt<comma>,
              p::must<global_setting_value>> {};

@@ -1,9 +1,9 @@
 // POV-Ray's patterns: a function from a point in pattern space to a number
-// (mostly in [0, 1]) that a colour map turns into a colour. Each kind is a
-// Kind in the registry (registry.cpp) with its evaluation in its family's
-// file (noise_patterns.cpp, shape_patterns.cpp, block_patterns.cpp,
-// fractal_patterns.cpp); adding a pattern is its function there and one
-// line in the registry. The pipeline around the kind's function is POV-Ray
+// (mostly in [0, 1]) that a colour map turns into a colour. Each kind is
+// one file under kinds/ (pattern_kind.hpp says what it declares), listed
+// once in kinds.hpp; kinds of one family share their helpers' files
+// (noise_patterns.cpp, shape_patterns.cpp, block_patterns.cpp,
+// fractal_patterns.cpp, crackle.cpp, normal_patterns.cpp). The pipeline around the kind's function is POV-Ray
 // 3.7's (Compute_Pigment, Warp_EPoint, Evaluate_TPat in its sources):
 //
 //   world point -> the pattern's transforms and warps, inverted, last
@@ -72,6 +72,29 @@ struct MapEntry {
     std::array<double, 5> colour;
 };
 
+// A kind's own modifier (POV-Ray's Parse_Pattern: brick's mortar,
+// crackle's metric): its word, what it takes, where its value goes
+// (Values::number[slot], or Values::vector) and its default. Its value
+// may move with clock unless it is `constant`.
+struct Setting {
+    enum class Type { Number, Vector };
+    std::string_view name;
+    Type type = Type::Number;
+    int slot = 0;
+    double number = 0.0;
+    std::array<double, 3> vector{};
+    bool constant = false;
+
+    static constexpr Setting of_number(std::string_view name, int slot, double default_value) {
+        return {name, Type::Number, slot, default_value, {}, false};
+    }
+    static constexpr Setting of_vector(std::string_view name, std::array<double, 3> default_value) {
+        return {name, Type::Vector, 0, 0.0, default_value, false};
+    }
+};
+
+// A pattern kind as the texture evaluator reads it: made from its file
+// under kinds/ (pattern_kind.hpp, make_kind).
 struct Kind {
     std::string_view name;
     Function value;
@@ -85,7 +108,9 @@ struct Kind {
     bool frequency = true;        // false: frequency 0 (block patterns, quilted)
     bool own_turbulence = false;  // marble, wood: read classic turbulence themselves
     std::vector<MapEntry> default_map;
-    // Its numbers' defaults (Values::number) and vector's (brick_size).
+    // Its own modifiers, and its numbers' defaults (Values::number) and
+    // vector's (brick_size), the settings' defaults among them.
+    std::vector<Setting> settings;
     std::array<double, 2> number{};
     glm::dvec3 vector{0.0};
     // In a normal { }: its own perturbation, else the slope of its value.
@@ -97,7 +122,9 @@ struct Kind {
 
 // The kind named `name`, or null.
 const Kind* find_kind(std::string_view name);
-// Every kind, by name (for the grammar's keyword list and the README).
+// The setting `name` of `kind`, or null.
+const Setting* find_setting(const Kind& kind, std::string_view name);
+// Every kind, by name.
 const std::vector<const Kind*>& all_kinds();
 
 // A pattern as the scene wrote it.

@@ -1,0 +1,48 @@
+// The pattern kinds hexant knows, registered here once: each is a struct in
+// its own file under kinds/ (pattern_kind.hpp says what it provides). The
+// grammar reads their keywords and setting words from this list
+// (PatternWords), and registry.cpp makes the texture evaluator's Kind of
+// each. Adding a pattern: its file, and its line in the list below.
+#pragma once
+
+#include "runtime/texture/pattern/kinds/agate.hpp"
+#include "runtime/texture/pattern/kinds/boxed.hpp"
+#include "runtime/texture/pattern/kinds/bozo.hpp"
+#include "runtime/texture/pattern/kinds/brick.hpp"
+#include "runtime/texture/pattern/kinds/bumps.hpp"
+#include "runtime/texture/pattern/kinds/cells.hpp"
+#include "runtime/texture/pattern/kinds/checker.hpp"
+#include "runtime/texture/pattern/kinds/crackle.hpp"
+#include "runtime/texture/pattern/kinds/cylindrical.hpp"
+#include "runtime/texture/pattern/kinds/dents.hpp"
+#include "runtime/texture/pattern/kinds/gradient.hpp"
+#include "runtime/texture/pattern/kinds/granite.hpp"
+#include "runtime/texture/pattern/kinds/hexagon.hpp"
+#include "runtime/texture/pattern/kinds/leopard.hpp"
+#include "runtime/texture/pattern/kinds/mandel.hpp"
+#include "runtime/texture/pattern/kinds/marble.hpp"
+#include "runtime/texture/pattern/kinds/onion.hpp"
+#include "runtime/texture/pattern/kinds/planar.hpp"
+#include "runtime/texture/pattern/kinds/quilted.hpp"
+#include "runtime/texture/pattern/kinds/radial.hpp"
+#include "runtime/texture/pattern/kinds/ripples.hpp"
+#include "runtime/texture/pattern/kinds/spherical.hpp"
+#include "runtime/texture/pattern/kinds/spiral1.hpp"
+#include "runtime/texture/pattern/kinds/spiral2.hpp"
+#include "runtime/texture/pattern/kinds/spotted.hpp"
+#include "runtime/texture/pattern/kinds/waves.hpp"
+#include "runtime/texture/pattern/kinds/wood.hpp"
+#include "runtime/texture/pattern/kinds/wrinkles.hpp"
+#include "runtime/texture/pattern/pattern_kind.hpp"
+
+namespace hexant::runtime::pattern {
+
+using PatternKinds =
+    PatternKindList<kinds::Agate, kinds::Boxed, kinds::Bozo, kinds::Brick, kinds::Bumps, kinds::Cells,
+                    kinds::Checker, kinds::Crackle, kinds::Cylindrical, kinds::Dents, kinds::Gradient,
+                    kinds::Granite, kinds::Hexagon, kinds::Leopard, kinds::Mandel, kinds::Marble, kinds::Onion,
+                    kinds::Planar, kinds::Quilted, kinds::Radial, kinds::Ripples, kinds::Spherical,
+                    kinds::Spiral1, kinds::Spiral2, kinds::Spotted, kinds::Waves, kinds::Wood,
+                    kinds::Wrinkles>;
+
+}  // namespace hexant::runtime::pattern
