@@ -24,7 +24,7 @@ int main(int argc, char** argv) {
     // mapped from the system and returned when freed. glibc's threshold
     // otherwise rises to the largest buffer freed, after which such
     // buffers stay in the heap: at swarm 10^5 the peak held a leaf build's
-    // 12.8 MB that was already freed (README "Scale").
+    // 12.8 MB that was already freed (docs/benchmarks.md, "Scale: the swarm").
     mallopt(M_MMAP_THRESHOLD, 1 << 20);
     CLI::App program{"hexant: spacetime ray tracing of POV-Ray-style animated scenes"};
     program.require_subcommand(1);

@@ -3,7 +3,7 @@
 // libpng) and OpenEXR (linear float, the OpenEXR library). Each is linked
 // directly rather than through OpenImageIO, whose plugins and their
 // libraries cost every process about 120 MB of resident memory and half a
-// second before main() (README "Scale", issue 21).
+// second before main() (docs/benchmarks.md, "Scale: the swarm"; issue 21).
 #pragma once
 
 #include <filesystem>

@@ -1,4 +1,4 @@
-// The hierarchy's nodes as the traversal reads them (DESIGN.md, tracer/):
+// The hierarchy's nodes as the traversal reads them (docs/design.md, "Cell"):
 // a cell of spacetime becomes either a time node (its two time halves), a
 // node of up to eight children with their bounds side by side, or, at the
 // bottom, a node whose children are the objects themselves, each with its

@@ -1,5 +1,5 @@
 // Glassner's hybrid hierarchy over spacetime: space (and time) subdivision
-// down, bounding volumes up (docs/design.md, "The tracer").
+// down, bounding volumes up (docs/design.md, "The hybrid hierarchy").
 //
 // Down: a cell (a 4D box) is halved in time, in space (eight octants), in
 // both, or not at all, as the split criterion says:

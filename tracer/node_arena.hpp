@@ -8,7 +8,7 @@
 // The blocks are mapped from the system (mmap), not taken from the heap:
 // a slab let go returns its nodes' memory at once, where heap blocks stayed
 // among the smaller allocations made since and the heap grew as slabs came
-// and went (swarm 10^5, 16 frames: 10 MB more at the peak, README "Scale").
+// and went (swarm 10^5, 16 frames: 10 MB more at the peak, docs/benchmarks.md, "Scale: the swarm").
 #pragma once
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 // The question every mode of the tracer answers for a ray: the first surface
 // event along it, or whether anything casting a shadow lies on a segment.
-// Three modes answer it (DESIGN.md, tracer/): one spacetime hierarchy for the
+// Three modes answer it (docs/design.md, "Spacetime query"): one spacetime hierarchy for the
 // whole animation (spacetime_query.cpp), a spatial hierarchy per frame, the
 // paper's baseline (frame_baseline.cpp), and brute force, the reference
 // (brute_force.cpp). They must agree up to ties between equal distances.

@@ -208,7 +208,7 @@ Renderer::Renderer(const runtime::SceneDescription& scene, const RenderSettings&
         for (const auto& light : scene.lights) lights += light.shadowless ? 0.0 : 1.0;
         // (Adaptive sampling takes an unknown count under its ceiling: the
         // mean at the default target is 8 to 26 samples on the examples
-        // (README, "Error against run time"), so twice the first round.)
+        // (docs/benchmarks.md, "Error against run time"), so twice the first round.)
         const int samples = settings.target_error > 0.0
                                 ? std::min(settings.samples_per_pixel, 2 * RenderSettings::kFirstRoundSamples)
                                 : settings.samples_per_pixel;

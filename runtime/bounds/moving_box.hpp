@@ -1,6 +1,6 @@
 // A box whose sides move linearly over a piece of time: what an object
 // occupies over a short piece when its sweep follows the motion (the
-// first-order Taylor form of interval_dual.hpp) instead of holding one box
+// first-order Taylor form of runtime/time/interval_jet.hpp) instead of holding one box
 // for the whole piece. At instant t of [t0, t1] the surface lies in
 //   lo0 + u (lo1 - lo0) .. hi0 + u (hi1 - hi0),  u = (t - t0) / (t1 - t0),
 // per axis. The same shape as the hierarchy's linear-motion nodes

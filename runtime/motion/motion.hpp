@@ -145,7 +145,7 @@ class Motion {
     // deformation deformations()[index]. Kept apart, and the five arrays in
     // one block, a moving sphere's motion is about 360 bytes (48 in the
     // object, 312 in its block) where stages holding every kind's fields
-    // took about 1,050 and five separate arrays about 470 (README "Scale").
+    // took about 1,050 and five separate arrays about 470 (docs/benchmarks.md, "Scale: the swarm").
     struct FixedMaps {
         AffineMap<double> forward = AffineMap<double>::identity();
         AffineMap<double> backward = AffineMap<double>::identity();

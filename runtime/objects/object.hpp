@@ -35,7 +35,7 @@ struct ObjectRecord {
     // refuses records deeper than kMaxObjectDepth where they are made.
     int depth = 1;
     // When it exists: always, or the pieces of time of the clock-dependent
-    // branches it was made under (language/time_domain.hpp). Its CSG
+    // branches it was made under (Interpreter::domain, language/interpreter_state.hpp). Its CSG
     // children exist within it.
     Lifetime lifetime;
     // Light sources written inside a CSG move with it.

@@ -1,7 +1,7 @@
 // When something exists: a set of time intervals. An object, light or value
 // made under a branch whose condition depends on `clock` exists only during
 // the pieces of time where that branch holds (the interpreter's time
-// domain, language/time_domain.hpp); the tracer's bounds are empty outside
+// domain, Interpreter::domain in language/interpreter_state.hpp); the tracer's bounds are empty outside
 // them, so the spacetime hierarchy never holds the object there (Glassner
 // 1988: a hierarchy in spacetime holds an object only where it exists).
 //

@@ -170,7 +170,7 @@ TEST_CASE("render --seed gives an independent estimate of the same frame", "[app
 }
 
 TEST_CASE("MegaPOV's motion_blur sets the defaults of --spp and --shutter, and says so", "[app][render]") {
-    // ../shared/cases/17: global_settings { motion_blur SAMPLES, TIME }.
+    // real-animation case 17: global_settings { motion_blur SAMPLES, TIME }.
     // Three frames over clock 0 to 1 step by 0.5: TIME 0.1 is a shutter
     // of 0.2 of the step; the flags given win.
     const fs::path scene = scene_file("global_settings { motion_blur 8, 0.1 }\n" + moving_sphere("<2 * clock, 0, 0>"));

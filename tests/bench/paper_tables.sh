@@ -3,7 +3,7 @@
 # (Table 1's settings: 64 frames, 126 x 126, 32 samples per pixel) and on
 # dino (Table 2's: 64 frames, 126 x 126, 4 samples per pixel), once with each
 # split criterion (cost, the default, and the paper's), with the date, the
-# machine and the commands, for README.md's "The paper's tables".
+# machine and the commands, for docs/benchmarks.md's "The paper's tables, reproduced".
 # A benchmark: it prints figures, it asserts nothing. Run from the top folder
 # after `make build`:   sh tests/bench/paper_tables.sh [OUT_DIR]
 set -e

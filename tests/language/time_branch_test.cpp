@@ -97,7 +97,7 @@ TEST_CASE("#elseif chains split what the earlier conditions leave", "[language][
 }
 
 TEST_CASE("a macro that picks its formula by time returns a piecewise value", "[language][time]") {
-    // ../shared/cases/01: a bounce whose height is one formula going up and
+    // real-animation case 01: a bounce whose height is one formula going up and
     // another coming down.
     const auto scene = read(R"(
 #macro Height(T)
@@ -142,7 +142,7 @@ TEST_CASE("nested clock-dependent #if, and #if inside a loop", "[language][time]
 }
 
 TEST_CASE("a switch on a vector's length: vlength(C) != 0", "[language][time]") {
-    // ../shared/cases/04: a direction that vanishes once.
+    // real-animation case 04: a direction that vanishes once.
     const auto scene = read(R"(
 #declare C = <clock - 0.5, 0, 0>;
 #if (vlength(C) != 0)
@@ -196,7 +196,7 @@ TEST_CASE("what cannot yet be piecewise in time is an error at the branch", "[la
 }
 
 TEST_CASE("frame_number switches exactly at each frame's clock", "[language][time]") {
-    // ../shared/cases/06: a countdown whose tens digit goes once the count
+    // real-animation case 06: a countdown whose tens digit goes once the count
     // is below 10 (a sphere stands in for the text).
     for (const int frames : {8, 10, 30}) {
         ParseOptions options = animation();
@@ -230,7 +230,7 @@ union {
 }
 
 TEST_CASE("an #if in a macro that gives a value gives a piecewise value", "[language][time]") {
-    // ../shared/cases/01: the macro's body is the #if; each side leaves
+    // real-animation case 01: the macro's body is the #if; each side leaves
     // one value.
     const auto scene = read(R"(
 #macro Hop(T)
@@ -298,7 +298,7 @@ TEST_CASE("#switch on clock: #range, #case and #else each on their pieces", "[la
 
 TEST_CASE("vnormalize of a zero vector gives <0, 0, 0> with a warning, known or on clock",
           "[language][time]") {
-    // ../shared/cases/03: POV-Ray warns and gives <0, 0, 0>; hexant stopped
+    // real-animation case 03: POV-Ray warns and gives <0, 0, 0>; hexant stopped
     // on a known zero and made a silent NaN of one on clock.
     const auto still = read("sphere { vnormalize(<0, 0, 0>), 1 }\n");
     CHECK(sphere(still, 0).center(0.0) == glm::dvec3(0.0));

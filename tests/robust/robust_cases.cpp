@@ -8,7 +8,7 @@
 // darker with shadows is a false shadow: the count must be zero, in every
 // mode, and the three modes must give the same pixels.
 //
-// The scenes are ../shared/cases/numerics 18 (a sphere of radius R as the
+// The scenes are numerics case 18 (a sphere of radius R as the
 // ground) and 11 (a floor of one triangle, smooth triangle or polygon whose
 // vertices lie Half from the origin), at the radii and halves the issue
 // names: 10 to 1e8.
@@ -223,7 +223,7 @@ int differing(const tr::Image& a, const tr::Image& b, double tolerance) {
 
 }  // namespace
 
-// ../shared/cases/numerics/09: a checkered plane at an integer height (on a
+// numerics case 09: a checkered plane at an integer height (on a
 // cell boundary) in a world scaled by Sc, camera and light scaled too. The
 // image must not depend on Sc. Tolerance 0.05 per channel: scaling changes
 // only roundings (relative 1e-12 in the shading), while a checker that

@@ -110,7 +110,7 @@ TEST_CASE("a still agrees with POV-Ray 3.7's render of it pixel by pixel", "[tra
 }
 
 TEST_CASE("scenes that switch with clock agree with POV-Ray 3.7 at each clock", "[tracer][pov][time]") {
-    // ../shared/cases 01 (an #if in a macro picks the bounce's formula,
+    // real-animation case 01 (an #if in a macro picks the bounce's formula,
     // switching at 0.5) and 04 (an arrow that exists while a cross product
     // is not zero: absent at 0.5 only, within POV-Ray's epsilon), each as
     // one frame, at the clock POV-Ray rendered (+K), of a 10001-frame
@@ -127,7 +127,7 @@ TEST_CASE("scenes that switch with clock agree with POV-Ray 3.7 at each clock", 
                                          std::string("hexant_pov_") + scene, frame),
                                   read_png(folder / (std::string(scene) + "_" + clock + ".png"))));
         }
-    // ../shared/cases 06 (a countdown on frame_number, a text object per
+    // real-animation case 06 (a countdown on frame_number, a text object per
     // digit from str()): frames 2 and 3 of 8, on either side of the tens'
     // switch.
     for (const int frame : {2, 3}) {
@@ -256,7 +256,7 @@ TEST_CASE("a sky_sphere over the background agrees with POV-Ray 3.7's", "[tracer
     check_stills("sky", "sky", {"0", "0.5"});
 }
 
-TEST_CASE("a checker face on a cell boundary takes POV-Ray's side (../shared/cases/13)", "[tracer][pov][pattern]") {
+TEST_CASE("a checker face on a cell boundary takes POV-Ray's side (real-animation case 13)", "[tracer][pov][pattern]") {
     // The box's side faces lie on checker boundaries (scale 0.5): POV-Ray
     // floors each coordinate after adding 1e-10, so a face takes one cell
     // whichever way its hit points rounded. Frame 8 of the cyclic
@@ -273,7 +273,7 @@ TEST_CASE("normal perturbations agree with POV-Ray 3.7's, on objects and on the 
     // (bumps, dents, ripples, waves, wrinkles, quilted), the slope of
     // others (gradient, marble, bozo, leopard, granite with its accuracy,
     // agate warped), bump_size and no_bump_scale, on a lit ball and floor,
-    // amount and phase moving with clock. Then ../shared/cases/10: a camera
+    // amount and phase moving with clock. Then real-animation case 10: a camera
     // whose normal { waves } fades and moves with clock (colors.inc left
     // out). The same tolerance as the still's (all agreed exactly but for
     // single steps when this was written; quilted is moved off the floor,
