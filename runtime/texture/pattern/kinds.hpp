@@ -37,12 +37,38 @@
 
 namespace hexant::runtime::pattern {
 
-using PatternKinds =
-    PatternKindList<kinds::Agate, kinds::Boxed, kinds::Bozo, kinds::Brick, kinds::Bumps, kinds::Cells,
-                    kinds::Checker, kinds::Crackle, kinds::Cylindrical, kinds::Dents, kinds::Gradient,
-                    kinds::Granite, kinds::Hexagon, kinds::Leopard, kinds::Mandel, kinds::Marble, kinds::Onion,
-                    kinds::Planar, kinds::Quilted, kinds::Radial, kinds::Ripples, kinds::Spherical,
-                    kinds::Spiral1, kinds::Spiral2, kinds::Spotted, kinds::Waves, kinds::Wood,
-                    kinds::Wrinkles>;
+// One kind a line (kept so by hand, not by clang-format): adding one is a
+// line here and its #include above.
+// clang-format off
+using PatternKinds = PatternKindList<
+    kinds::Agate,
+    kinds::Boxed,
+    kinds::Bozo,
+    kinds::Brick,
+    kinds::Bumps,
+    kinds::Cells,
+    kinds::Checker,
+    kinds::Crackle,
+    kinds::Cylindrical,
+    kinds::Dents,
+    kinds::Gradient,
+    kinds::Granite,
+    kinds::Hexagon,
+    kinds::Leopard,
+    kinds::Mandel,
+    kinds::Marble,
+    kinds::Onion,
+    kinds::Planar,
+    kinds::Quilted,
+    kinds::Radial,
+    kinds::Ripples,
+    kinds::Spherical,
+    kinds::Spiral1,
+    kinds::Spiral2,
+    kinds::Spotted,
+    kinds::Waves,
+    kinds::Wood,
+    kinds::Wrinkles>;
+// clang-format on
 
 }  // namespace hexant::runtime::pattern
