@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -112,4 +113,32 @@ sphere { 0, 1 pigment { agate agate_turb 0.5 } }
     CHECK(says("sphere { 0, 1 pigment { bozo mortar 0.2 } }", "mortar belongs to brick, not to bozo"));
     CHECK(says("sphere { 0, 1 pigment { rgb 1 metric 2 } }", "metric belongs to crackle, not to a plain colour"));
     CHECK(says("sphere { 0, 1 pigment { brick form <1, 0, 0> } }", "form belongs to crackle, not to brick"));
+}
+
+TEST_CASE("square paves the x-z plane with POV-Ray's four colours", "[pattern][registry]") {
+    // The values are POV-Ray 3.7's, read from one-pixel renders of each
+    // square's centre (tests/tracer/pov_reference/README.md, "Patterns").
+    const pt::Kind& square = *pt::find_kind("square");
+    const pt::Values v;
+    const auto at = [&](double x, double y, double z) { return square.value(glm::dvec3(x, y, z), v); };
+    CHECK(at(0.5, 0.0, 0.5) == 0.0);
+    CHECK(at(0.5, 0.0, 1.5) == 1.0);
+    CHECK(at(1.5, 0.0, 1.5) == 2.0);
+    CHECK(at(1.5, 0.0, 0.5) == 3.0);
+    CHECK(at(-0.5, 0.0, 0.5) == 3.0);   // floor(-0.5) = -1 is odd
+    CHECK(at(-0.5, 7.0, -0.5) == 2.0);  // y is not read
+    CHECK(at(2.0, 0.0, 0.0) == 0.0);    // an edge takes the square above it
+    // Past int's range the parity still comes from the double, and a
+    // non-finite point is square 0: no undefined cast.
+    CHECK(at(3.0e9 + 1.5, 0.0, 0.5) == 3.0);
+    CHECK(at(1.0e300, 0.0, 0.5) == 0.0);
+    CHECK(at(std::numeric_limits<double>::infinity(), 0.0, 0.0) == 0.0);
+    CHECK(at(std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0) == 0.0);
+    CHECK(square.argument == pt::Kind::Argument::Colours);
+    CHECK(square.colours == 4);
+    CHECK_FALSE(square.frequency);
+    REQUIRE(square.default_map.size() == 4);
+    CHECK(square.default_map[3].colour == std::array<double, 5>{1, 1, 0, 0, 0});
+    CHECK(hexant::test::error_of("sphere { 0, 1 pigment { square rgb 1, rgb 0, rgb 1, rgb 0, rgb 1 } }")
+              .what() == std::string("test.pov:1:25: square takes at most 4 colours, not 5 values"));
 }

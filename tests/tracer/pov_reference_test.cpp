@@ -438,6 +438,16 @@ TEST_CASE("crackle agrees with POV-Ray 3.7's", "[tracer][pov][pattern]") {
     check_stills("patterns", "crackle", {"0", "0.5"});
 }
 
+TEST_CASE("square agrees with POV-Ray 3.7's", "[tracer][pov][pattern]") {
+    // patterns/square.pov: the default colours, four of its own (one fading
+    // with clock), two of its own and the rest default, scaled, turned and
+    // moved with clock and under turbulence, at clock 0 and 0.5. The
+    // still's tolerance (exact when this was written); a square's colours
+    // in another order, or the cells off by one along x or z, move a
+    // quarter of the plane's pixels.
+    check_stills("patterns", "square", {"0", "0.5"});
+}
+
 TEST_CASE("a pigment_map agrees with POV-Ray 3.7's", "[tracer][pov][pattern]") {
     // patterns/pigment_map.pov: pigments (declared, a colour, patterns of
     // their own) blended by gradient and by marble, in the outer pattern's

@@ -30,6 +30,7 @@
 #include "runtime/texture/pattern/kinds/spiral1.hpp"
 #include "runtime/texture/pattern/kinds/spiral2.hpp"
 #include "runtime/texture/pattern/kinds/spotted.hpp"
+#include "runtime/texture/pattern/kinds/square.hpp"
 #include "runtime/texture/pattern/kinds/waves.hpp"
 #include "runtime/texture/pattern/kinds/wood.hpp"
 #include "runtime/texture/pattern/kinds/wrinkles.hpp"
@@ -66,6 +67,7 @@ using PatternKinds = PatternKindList<
     kinds::Spiral1,
     kinds::Spiral2,
     kinds::Spotted,
+    kinds::Square,
     kinds::Waves,
     kinds::Wood,
     kinds::Wrinkles>;
