@@ -1,0 +1,110 @@
+// Directives: declarations, conditions, loops, messages.
+// Part of the actions (language/actions.hpp).
+#pragma once
+
+#include "language/actions/operators.hpp"
+
+namespace hexant::language {
+
+// ------------------------------------------------------------ directives
+
+template <>
+struct action<g::declare_directive> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        std::vector<Value> frame = st.close_frame();  // indices..., value
+        Value value = std::move(frame.back());
+        frame.pop_back();
+        const std::string name = st.pop_name();
+        const bool local = st.pop_name() == "local";
+        if (value.is<std::shared_ptr<Array>>())
+            value = Value{std::make_shared<Array>(*value.as<std::shared_ptr<Array>>())};
+        if (frame.empty()) {
+            st.declare(name, std::move(value), local);
+        } else {
+            st.assign_element(name, frame, std::move(value), in.position());
+        }
+    }
+};
+
+template <>
+struct action<g::undef_name> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { st.undefine(word(in)); }
+};
+
+template <>
+struct action<g::version_value> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { (void)in; st.version = to_constant(st.pop(), "#version"); }
+};
+
+// A message's text that depends on clock: each piece's text, after the
+// time it is said for (POV-Ray says it once a frame, at that frame's clock).
+inline std::string message_text(const Value& value, const char* what) {
+    if (!value.is<TimedString>()) return to_string_value(value, what);
+    std::ostringstream out;
+    out << std::setprecision(17);
+    for (const auto& piece : value.as<TimedString>().pieces) {
+        out << "[clock " << piece.time.lo << " to " << piece.time.hi << "] " << piece.text;
+        // (One line a piece, whether or not the text ends its line.)
+        if (piece.text.empty() || piece.text.back() != '\n') out << '\n';
+    }
+    return out.str();
+}
+
+template <>
+struct action<g::debug_directive> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { (void)in; st.messages() << message_text(st.pop(), "#debug's text"); }
+};
+
+template <>
+struct action<g::warning_directive> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { st.warn(in.position(), message_text(st.pop(), "#warning's text")); }
+};
+
+template <>
+struct action<g::error_directive> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { Interpreter::fail(in.position(), "#error: " + message_text(st.pop(), "#error's text")); }
+};
+
+template <>
+struct action<g::unsupported_directive> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { Interpreter::fail(in.position(), "#" + word(in) + " is not supported by hexant"); }
+};
+
+template <>
+struct action<g::unknown_directive> {
+    template <typename ActionInput>
+    static void apply(const ActionInput& in, Interpreter&) {
+        const char* b = in.begin();
+        const char* e = in.input().end();
+        const char* q = b;
+        while (q != e && (std::isalnum(static_cast<unsigned char>(*q)) || *q == '_')) ++q;
+        Interpreter::fail(in.position(), "unknown directive '#" + std::string(b, q) + "'");
+    }
+};
+
+template <>
+struct action<g::default_item> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        st.require_whole_time(in.position(), "#default");
+        Value v = st.pop();
+        auto& texture = st.scene.default_texture;
+        if (v.is<runtime::Texture>()) texture = v.as<runtime::Texture>();
+        else if (v.is<runtime::Pigment>()) texture.pigment = v.as<runtime::Pigment>();
+        else if (v.is<runtime::Finish>()) texture.finish = v.as<runtime::Finish>();
+        // Checked here, at the #default: the objects that take it are
+        // checked for their own parameters only.
+        if (auto problem = runtime::bad_parameter(texture, "the #default", st.scene.animation))
+            Interpreter::fail(in.position(), *problem);
+    }
+};
+
+
+}  // namespace hexant::language

@@ -1,0 +1,363 @@
+// Literals: numbers, strings, vectors, colours, names and calls.
+// Part of the actions (language/actions.hpp).
+#pragma once
+
+#include "language/actions/action.hpp"
+#include "language/array_index.hpp"
+
+namespace hexant::language {
+
+// ------------------------------------------------------------ literals
+
+template <>
+struct action<g::number_text> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { (void)in; st.push(Value{TimeFunction(std::strtod(in.string().c_str(), nullptr))}); }
+};
+
+template <>
+struct action<g::string_content> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        const std::string raw = in.string();
+        std::string out;
+        for (std::size_t i = 0; i < raw.size(); ++i) {
+            if (raw[i] != '\\' || i + 1 == raw.size()) {
+                out += raw[i];
+                continue;
+            }
+            const char c = raw[++i];
+            switch (c) {
+                case 'n': out += '\n'; break;
+                case 't': out += '\t'; break;
+                case 'r': out += '\r'; break;
+                case 'a': out += '\a'; break;
+                case 'b': out += '\b'; break;
+                case 'f': out += '\f'; break;
+                case 'v': out += '\v'; break;
+                case '0': out += '\0'; break;
+                default: out += c; break;
+            }
+        }
+        st.push(Value{out});
+    }
+};
+
+template <>
+struct action<g::frame_open> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { (void)in; st.open_frame(); }
+};
+
+template <>
+struct action<g::vector_literal> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        std::vector<Value> items = st.close_frame();
+        if (items.size() < 2 || items.size() > 5)
+            throw ValueError("a vector has 2 to 5 components, not " + std::to_string(items.size()));
+        Vector v;
+        v.size = static_cast<int>(items.size());
+        for (std::size_t i = 0; i < items.size(); ++i)
+            v.c[i] = to_float(items[i], "a vector component");
+        st.push(Value{v});
+    }
+};
+
+template <>
+struct action<g::function_call> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)in;
+        std::vector<Value> args = st.close_frame();
+        const std::string name = st.pop_name();
+        // concat() is checked before it is built: a string doubled each time
+        // would otherwise reach the allocator's limit first.
+        if (name == "concat") {
+            std::size_t length = 0;
+            for (const auto& a : args) {
+                if (a.is<std::string>()) length += a.as<std::string>().size();
+                if (a.is<TimedString>()) length += a.as<TimedString>().longest();
+            }
+            st.check_string_length(length, "concat()'s result");
+        }
+        // The box of an object (language/object_extent.hpp).
+        if (name == "min_extent" || name == "max_extent") {
+            if (args.size() != 1 || !args[0].is<runtime::ObjectPtr>())
+                throw ValueError(name + "() takes one object, as in POV-Ray");
+            st.push(object_extent(*args[0].as<runtime::ObjectPtr>(), name == "max_extent", st.animation_time(),
+                                  st.options.limits.time_pieces));
+            return;
+        }
+        // (A string function of arguments that depend on clock: once a
+        // piece of time, language/timed_call.hpp.)
+        std::optional<Value> timed = call_over_time(name, args, st.domain.within(st.animation_time()),
+                                                    st.options.limits.time_pieces, st.random);
+        Value result = timed ? std::move(*timed) : call_builtin(name, args, st.random);
+        if (name == "vnormalize")
+            if (const auto zero = vnormalize_zero_at(args, st.animation_time())) {
+                std::ostringstream note;
+                note << "vnormalize() of a zero-length vector gives <0, 0, 0>, as in POV-Ray";
+                bool timed = false;
+                const Vector v = to_vector(args.at(0), "the argument of vnormalize()");
+                for (int i = 0; i < v.size; ++i) timed = timed || v.c[i].depends_on_time();
+                if (timed)
+                    note << " (at clock " << std::setprecision(17) << *zero << " and wherever else it is zero)";
+                st.warn(in.position(), note.str());
+            }
+        if (result.is<std::string>())
+            st.check_string_length(result.as<std::string>().size(), name + "()'s result");
+        if (result.is<TimedString>())
+            st.check_string_length(result.as<TimedString>().longest(), name + "()'s result");
+        st.push(std::move(result));
+    }
+};
+
+template <>
+struct action<g::defined_call> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)in;
+        // (Declared part of the time: 1 on those pieces, language/time_branch.hpp.)
+        const runtime::Lifetime* when = st.declared_when(st.pop_name());
+        st.push(Value{when ? indicator(*when) : TimeFunction(0.0)});
+    }
+};
+
+template <>
+struct action<g::builtin_constant_name> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        const std::string w = in.string();
+        const auto& a = st.options.animation;
+        auto f = [&](double v) { st.push(Value{TimeFunction(v)}); };
+        if (w == "pi") f(3.14159265358979323846);
+        else if (w == "tau") f(2 * 3.14159265358979323846);
+        else if (w == "true" || w == "yes" || w == "on") f(1.0);
+        else if (w == "false" || w == "no" || w == "off") f(0.0);
+        else if (w == "x") st.push(make_vector({1.0, 0.0, 0.0}));
+        else if (w == "y") st.push(make_vector({0.0, 1.0, 0.0}));
+        else if (w == "z") st.push(make_vector({0.0, 0.0, 1.0}));
+        else if (w == "t") st.push(make_vector({0.0, 0.0, 0.0, 1.0}));
+        else if (w == "u") st.push(make_vector({1.0, 0.0}));
+        else if (w == "v") st.push(make_vector({0.0, 1.0}));
+        else if (w == "image_width") f(a.width);
+        else if (w == "image_height") f(a.height);
+        else if (w == "clock") st.push(Value{a.clock_runs() ? TimeFunction::clock() : TimeFunction(a.initial_clock)});
+        else if (w == "clock_delta") f(a.clock_delta());
+        else if (w == "clock_on") f(a.clock_runs() ? 1.0 : 0.0);
+        // In a still, POV-Ray reads these four (and frame_number) as 0.
+        else if (w == "initial_clock") f(a.clock_runs() ? a.initial_clock : 0.0);
+        else if (w == "final_clock") f(a.clock_runs() ? a.final_clock : 0.0);
+        else if (w == "initial_frame") f(a.is_animation() ? a.initial_frame : 0.0);
+        else if (w == "final_frame") f(a.is_animation() ? a.final_frame : 0.0);
+        else if (w == "version") f(st.version);
+        else if (w == "frame_number") {
+            // The frame whose shutter holds the time: constant within a
+            // frame, and switching exactly at each frame's clock as the
+            // renderer computes it (Animation::clock_of_frame: c0 + n *
+            // delta, the same operations here), so that a branch on it
+            // splits time at the frames' first instants. The quotient may
+            // be a frame off next to a boundary; the comparisons with the
+            // frame's own clock and the next one's correct it.
+            if (!a.is_animation() || a.clock_delta() == 0.0) {
+                f(a.is_animation() ? a.initial_frame : 0.0);
+            } else {
+                const TimeFunction t = TimeFunction::clock();
+                const double delta = a.clock_delta();
+                const TimeFunction n = TimeFunction::apply(TimeOp::Floor, (t - a.initial_clock) / delta);
+                const TimeFunction start = a.initial_clock + n * delta;
+                const TimeFunction next = a.initial_clock + (n + 1.0) * delta;
+                // (A clock running backwards, delta < 0: a frame holds the
+                // times from its clock down to the next one's.)
+                const bool forward = delta > 0.0;
+                const TimeFunction past_next =
+                    TimeFunction::apply(forward ? TimeOp::GreaterEqual : TimeOp::LessEqual, t, next);
+                const TimeFunction before_start =
+                    TimeFunction::apply(forward ? TimeOp::Less : TimeOp::Greater, t, start);
+                const TimeFunction exact = n + past_next - before_start;
+                st.push(Value{TimeFunction::apply(TimeOp::Min, exact + double(a.initial_frame),
+                                                  double(a.final_frame))});
+            }
+        }
+    }
+};
+
+template <>
+struct action<g::colour_model_literal> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)in;
+        Value v = st.pop();
+        st.push(colour_model(st.pop_name(), v));
+    }
+};
+
+template <>
+struct action<g::colour_keyword> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)in;
+        Vector black;
+        black.size = 5;
+        st.push(Value{black});
+    }
+};
+
+template <>
+struct action<g::colour_base> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)in;
+        Value v = st.pop();
+        const runtime::ColourFunction c = to_colour(v, "the colour after 'color'");
+        Vector r;
+        r.size = 5;
+        for (int i = 0; i < 5; ++i) r.c[i] = c.c[i];
+        st.top() = Value{r};
+    }
+};
+
+template <>
+struct action<g::colour_component_setting> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)in;
+        const TimeFunction v = to_float(st.pop(), "a colour component");
+        const std::string name = st.pop_name();
+        Vector& c = st.top().as<Vector>();
+        const int i = name == "red" ? 0 : name == "green" ? 1 : name == "blue" ? 2 : name == "filter" ? 3 : 4;
+        c.c[i] = v;
+    }
+};
+
+template <>
+struct action<g::reference> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        const std::string name = word(in);
+        const Value* v = st.lookup(name);
+        if (v == nullptr) throw ValueError("undeclared identifier '" + name + "'");
+        st.check_declared(name);
+        if (v->is<Unevaluated>()) {
+            const auto& u = v->as<Unevaluated>();
+            throw UnsupportedError("'" + name + "' is a " + u.what + " (declared at " + u.where.source + ":" +
+                             std::to_string(u.where.line) + ":" + std::to_string(u.where.column) +
+                             "), which hexant does not support");
+        }
+        if (v->is<std::shared_ptr<Array>>()) {
+            // Arrays are values: a copy, so that changing it leaves the original alone.
+            st.push(Value{std::make_shared<Array>(*v->as<std::shared_ptr<Array>>())});
+            return;
+        }
+        st.push(*v);
+    }
+};
+
+template <>
+struct action<g::component_access> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)in;
+        Value v = st.pop();
+        st.push(component(v, st.pop_name()));
+    }
+};
+
+// A[index] where the index depends on clock: the element of each piece of
+// time where floor(index) is one number (runtime::split_by_value), made
+// piecewise as a branch's sides are (time_branch.hpp: floats and vectors
+// as `floor(index) = k ? A[k] : ...`, objects each living on its pieces).
+inline Value element_by_clock(const Array& array, const TimeFunction& index, Interpreter& st) {
+    if (array.dimensions.size() != 1)
+        throw ValueError("an index that depends on clock into an array of " +
+                         std::to_string(array.dimensions.size()) +
+                         " dimensions; hexant picks elements by clock from one-dimensional arrays only");
+    const TimeFunction step = TimeFunction::apply(TimeOp::Floor, index);
+    std::vector<runtime::ValuePiece> pieces;
+    try {
+        pieces = runtime::split_by_value(step, st.domain.within(st.animation_time()),
+                                         st.options.limits.time_pieces);
+    } catch (const runtime::LimitError& e) {
+        throw ValueError(std::string("an array index: ") + e.what());
+    }
+    std::map<double, std::vector<runtime::Interval>> by_value;
+    for (const auto& piece : pieces) by_value[piece.value].push_back(piece.time);
+    std::optional<Value> result;
+    std::vector<runtime::Interval> result_times;
+    for (const auto& [k, times] : by_value) {
+        const std::size_t i = element_index(array, {k});
+        if (!array.elements[i])
+            throw ValueError("array element " + std::to_string(i) + " is used (by clock) before it is set");
+        const Value& element = **array.elements[i];
+        const runtime::Lifetime when = runtime::Lifetime::of(times);
+        if (!result) {
+            result = by_value.size() == 1 ? element : during(element, when);
+        } else {
+            result = merge_sides("the element picked by clock",
+                                 TimeFunction::apply(TimeOp::Equal, step, k), element, when, result,
+                                 runtime::Lifetime::of(result_times));
+        }
+        result_times.insert(result_times.end(), times.begin(), times.end());
+    }
+    if (!result) throw ValueError("an array index that depends on clock, over no time");
+    return *result;
+}
+
+template <>
+struct action<g::index_suffix> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)in;
+        const TimeFunction index_f = to_float(st.pop(), "an array index");
+        Value a = st.pop();
+        if (!a.is<std::shared_ptr<Array>>()) throw ValueError("'[ ]' needs an array, not a " + type_name(a));
+        auto array = a.as<std::shared_ptr<Array>>();
+        if (index_f.depends_on_time()) {
+            st.push(element_by_clock(*array, index_f, st));
+            return;
+        }
+        const double index = index_f.constant();
+        if (array->dimensions.size() > 1) {
+            // A[i] of a many-dimensional array: the sub-array.
+            const int rows = array->dimensions[0];
+            const long long row = checked_integer(std::floor(index), "an array index", 0, rows - 1);
+            auto sub = std::make_shared<Array>();
+            sub->charge.attach(st.array_memory());
+            sub->dimensions.assign(array->dimensions.begin() + 1, array->dimensions.end());
+            const std::size_t stride = array->elements.size() / static_cast<std::size_t>(rows);
+            sub->charge.add(stride * kArraySlotBytes);
+            const std::size_t start = static_cast<std::size_t>(row) * stride;
+            sub->elements.assign(array->elements.begin() + static_cast<std::ptrdiff_t>(start),
+                                 array->elements.begin() + static_cast<std::ptrdiff_t>(start + stride));
+            st.push(Value{sub});
+            return;
+        }
+        const std::size_t i = element_index(*array, {index});
+        if (!array->elements[i]) throw ValueError("array element " + std::to_string(i) + " is used before it is set");
+        st.push(**array->elements[i]);
+    }
+};
+
+template <>
+struct action<g::spline_call> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)in;
+        std::vector<Value> args = st.close_frame();
+        Value s = st.pop();
+        if (!s.is<std::shared_ptr<const runtime::Spline>>())
+            throw ValueError("only a spline can be called like this, not a " + type_name(s));
+        if (args.empty() || args.size() > 2) throw ValueError("a spline takes one argument, the time");
+        const auto spline = s.as<std::shared_ptr<const runtime::Spline>>();
+        const TimeFunction t = to_float(args[0], "the spline's argument");
+        // POV-Ray's S(t) is a vector even for a spline of floats (the value in .x).
+        Vector v;
+        v.size = std::max(spline->dimensions(), 2);
+        for (int i = 0; i < v.size; ++i) v.c[i] = TimeFunction::spline_component(spline, i, t);
+        st.push(Value{v});
+    }
+};
+
+
+}  // namespace hexant::language

@@ -1,0 +1,493 @@
+// Image maps, colour maps, finishes, interiors, textures and materials.
+// Part of the actions (language/actions.hpp).
+#pragma once
+
+#include "language/actions/maps.hpp"
+
+namespace hexant::language {
+
+// ---- image_map { } (POV-Ray's Parse_Image, Parse_Image_Map)
+template <>
+struct action<g::image_map_open> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        st.block<runtime::Pigment>(in.position(), "image_map");
+        st.blocks.emplace_back(std::in_place_type<ImageMapBuilder>);
+    }
+};
+template <>
+struct action<g::image_file_type> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)st;
+        // hexant reads PNG and OpenEXR (the file's own bytes say which).
+        std::string type = in.string();
+        while (!type.empty() && std::isspace(static_cast<unsigned char>(type.back()))) type.pop_back();
+        if (type != "png" && type != "exr")
+            throw UnsupportedError("image_map: " + type + " images are not supported by hexant (PNG and OpenEXR are)");
+    }
+};
+template <>
+struct action<g::image_map_file> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        Value v = st.pop();
+        auto& b = st.block<ImageMapBuilder>(in.position(), "image_map's file");
+        const auto read = [&](const std::string& name) {
+            const std::filesystem::path path = st.resolve_include(name, in.position(), "image file");
+            try {
+                return std::make_shared<const image::StoredImage>(image::read_stored_image(path));
+            } catch (const std::runtime_error& e) {
+                throw ValueError(std::string("image_map: ") + e.what());
+            }
+        };
+        const runtime::Interval always(-std::numeric_limits<double>::infinity(),
+                                       std::numeric_limits<double>::infinity());
+        if (v.is<std::string>()) {
+            b.map.file = v.as<std::string>();
+            b.stored.push_back({always, read(b.map.file)});
+        } else if (v.is<TimedString>()) {
+            // An image sequence: each file read once, each piece of time
+            // showing its own (the clock named where one fails).
+            const TimedString& names = v.as<TimedString>();
+            std::map<std::string, std::shared_ptr<const image::StoredImage>> files;
+            for (const auto& piece : names.pieces) {
+                auto& file = files[piece.text];
+                if (!file) {
+                    try {
+                        file = read(piece.text);
+                    } catch (const ValueError& e) {
+                        throw ValueError(std::string(e.what()) + " [clock " + std::to_string(piece.time.lo) + " to " +
+                                         std::to_string(piece.time.hi) + "]");
+                    }
+                }
+                b.stored.push_back({piece.time, file});
+            }
+            b.map.file = names.describe();
+        } else {
+            throw ValueError("image_map's file is a string, not a " + type_name(v));
+        }
+    }
+};
+template <>
+struct action<g::image_map_gamma_srgb> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { st.block<ImageMapBuilder>(in.position(), "gamma").gamma_srgb_next = true; }
+};
+template <>
+struct action<g::image_map_gamma> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        auto& b = st.block<ImageMapBuilder>(in.position(), "gamma");
+        if (b.gamma_srgb_next) {
+            b.gamma = ImageGamma{std::nullopt, true};
+            b.gamma_srgb_next = false;
+            return;
+        }
+        const double g = to_constant(st.pop(), "gamma");
+        if (!(g > 0.0) || !std::isfinite(g)) throw ValueError("an image's gamma must be positive, as in POV-Ray");
+        b.gamma = ImageGamma{g, false};
+    }
+};
+template <>
+struct action<g::image_map_setting> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        Value v = st.pop();
+        const std::string name = st.pop_name();
+        auto& b = st.block<ImageMapBuilder>(in.position(), name.c_str());
+        using M = runtime::pattern::ImageMap;
+        if (name == "map_type") {
+            // (POV-Ray takes the integer part.)
+            const double t = std::trunc(to_constant(v, "map_type"));
+            if (t != 0.0 && t != 1.0 && t != 2.0 && t != 5.0)
+                throw ValueError("map_type is 0 (planar), 1 (spherical), 2 (cylindrical) or 5 (torus), as in POV-Ray");
+            b.map.map_type = static_cast<M::MapType>(static_cast<int>(t));
+        } else if (name == "interpolate") {
+            const double t = std::trunc(to_constant(v, "interpolate"));
+            if (t != 2.0 && t != 3.0 && t != 4.0)
+                throw ValueError("interpolate is 2 (bilinear), 3 (bicubic) or 4 (normalized distance), as in POV-Ray");
+            b.map.interpolate = static_cast<M::Interpolate>(static_cast<int>(t));
+        } else if (name == "premultiplied") {
+            // (PNG's alpha is not premultiplied; OpenEXR's is read as it is.)
+            if (to_constant(v, "premultiplied") != 0.0)
+                throw UnsupportedError("premultiplied alpha in an image_map is not supported by hexant");
+        } else {
+            const runtime::Vector3Function uv = to_vector3(v, name);
+            const double u = to_constant(Value{uv.c[0]}, name), w = to_constant(Value{uv.c[1]}, name);
+            if (name == "repeat") {
+                if (!(u > 0.0) || !(w > 0.0)) throw ValueError("an image_map's repeat must be positive, as in POV-Ray");
+                b.map.repeat_u = u;
+                b.map.repeat_v = w;
+            } else {
+                b.map.offset_u = u;
+                b.map.offset_v = w;
+            }
+        }
+    }
+};
+template <>
+struct action<g::image_map_flag> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        std::string flag = in.string();
+        while (!flag.empty() && std::isspace(static_cast<unsigned char>(flag.back()))) flag.pop_back();
+        auto& b = st.block<ImageMapBuilder>(in.position(), flag.c_str());
+        if (flag == "once") b.map.once = true;
+        else if (flag == "use_index")
+            throw UnsupportedError("use_index in an image_map is not supported by hexant (it reads colours)");
+    }
+};
+template <>
+struct action<g::image_map_all> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { st.block<ImageMapBuilder>(in.position(), "all").all_next = true; }
+};
+template <>
+struct action<g::image_map_filter> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        std::vector<Value> args = st.close_frame();
+        const std::string name = st.pop_name();
+        auto& b = st.block<ImageMapBuilder>(in.position(), name.c_str());
+        const bool all = b.all_next;
+        b.all_next = false;
+        if (!all || args.size() != 1)
+            throw UnsupportedError(name + " of one palette entry is not supported by hexant (it reads a palette "
+                                   "image's colours); " + name + " all AMOUNT is");
+        (name == "filter" ? b.map.filter_all : b.map.transmit_all) = to_float(args[0], name + " all");
+        if (name == "transmit") b.map.transmit_all_written = true;
+    }
+};
+template <>
+struct action<g::image_map_block> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        ImageMapBuilder b = std::move(std::get<ImageMapBuilder>(st.blocks.back()));
+        st.blocks.pop_back();
+        auto map = std::make_shared<runtime::pattern::ImageMap>(std::move(b.map));
+        // (Each distinct file decoded once.)
+        std::map<const image::StoredImage*, std::shared_ptr<const runtime::pattern::ImagePixels>> decoded;
+        for (const auto& [time, stored] : b.stored) {
+            auto& pixels = decoded[stored.get()];
+            if (!pixels)
+                pixels = std::make_shared<const runtime::pattern::ImagePixels>(
+                    image_pixels(*stored, b.gamma, st.scene.global.assumed_gamma));
+            map->images.push_back({time, pixels});
+        }
+        auto& pigment = st.block<runtime::Pigment>(in.position(), "image_map");
+        replace_uv_mapping(pigment);
+        // (The pigment's modifiers, turbulence and warps, place the image.)
+        pigment.pattern = runtime::Pigment::Pattern::Image;
+        pigment.patterned.kind = nullptr;
+        pigment.colour_map = {};
+        pigment.pigment_map.clear();
+        pigment.image_map = std::move(map);
+    }
+};
+
+template <>
+struct action<g::colour_map_open> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { (void)in; st.blocks.emplace_back(std::in_place_type<runtime::ColourMap>); }
+};
+template <>
+struct action<g::colour_map_base> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        Value v = st.pop();
+        if (!v.is<runtime::ColourMap>()) throw ValueError("color_map { } starts with a color_map, not a " + type_name(v));
+        st.block<runtime::ColourMap>(in.position(), "a color_map") = v.as<runtime::ColourMap>();
+    }
+};
+template <>
+struct action<g::colour_map_entry> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        std::vector<Value> items = st.close_frame();
+        auto& map = st.block<runtime::ColourMap>(in.position(), "a color_map entry");
+        // [value colour], or POV-Ray's older [value1, value2 colour1 colour2].
+        if (items.size() == 2) {
+            map.entries.push_back({to_float(items[0], "a color_map entry's value"),
+                                   to_colour(items[1], "a color_map entry's colour")});
+        } else if (items.size() == 4) {
+            map.entries.push_back({to_float(items[0], "a color_map entry's first value"),
+                                   to_colour(items[2], "a color_map entry's first colour")});
+            map.entries.push_back({to_float(items[1], "a color_map entry's second value"),
+                                   to_colour(items[3], "a color_map entry's second colour")});
+        } else {
+            throw ValueError("a color_map entry is [value colour] (or [value1, value2 colour1 colour2]), not " +
+                             std::to_string(items.size()) + " values");
+        }
+        if (map.entries.size() > 256) throw ValueError("a color_map has at most 256 entries, as in POV-Ray");
+    }
+};
+template <>
+struct action<g::colour_map_block> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        auto& map = st.block<runtime::ColourMap>(in.position(), "a color_map");
+        if (map.entries.empty()) throw ValueError("a color_map needs at least one entry");
+        Value v{std::move(map)};
+        st.blocks.pop_back();
+        st.push(std::move(v));
+    }
+};
+template <>
+struct action<g::pigment_colour_map> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        Value v = st.pop();
+        auto& pigment = st.block<runtime::Pigment>(in.position(), "color_map");
+        if (pigment.patterned.kind && pigment.patterned.kind->argument == runtime::pattern::Kind::Argument::Colours)
+            throw ValueError(std::string("a color_map cannot go with ") + std::string(pigment.patterned.kind->name) +
+                             " (its colours follow its name), as in POV-Ray");
+        pigment.colour_map = v.as<runtime::ColourMap>();
+    }
+};
+template <>
+struct action<g::unsupported_pattern> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        if (!st.blocks.empty() && std::holds_alternative<runtime::Normal>(st.blocks.back())) {
+            auto& normal = st.block<runtime::Normal>(in.position(), "a pattern");
+            normal.unsupported_name = st.pop_name();
+            normal.unsupported_place = {in.position().source, in.position().line, in.position().column};
+            return;
+        }
+        auto& pigment = st.block<runtime::Pigment>(in.position(), "a pattern");
+        pigment.pattern = runtime::Pigment::Pattern::Unsupported;
+        pigment.unsupported_name = st.pop_name();
+        pigment.unsupported_place = {in.position().source, in.position().line, in.position().column};
+    }
+};
+template <>
+struct action<g::pigment_block> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)in;
+        auto& pigment = std::get<runtime::Pigment>(st.blocks.back());
+        // A block pattern given fewer pigments than it takes: the rest are
+        // its default colours (POV-Ray's Parse_Blend_List).
+        const auto* kind = pigment.patterned.kind;
+        if (kind && kind->argument == runtime::pattern::Kind::Argument::Colours && !pigment.pigment_map.empty())
+            for (std::size_t i = pigment.pigment_map.size(); i < pigment.colour_map.entries.size(); ++i) {
+                auto solid = std::make_shared<runtime::Pigment>();
+                solid->colours = {pigment.colour_map.entries[i].colour};
+                pigment.pigment_map.push_back({static_cast<double>(i), std::move(solid)});
+            }
+        close_uv_mapping(pigment.uv_mapping);
+        Value v{pigment};
+        st.blocks.pop_back();
+        st.push(std::move(v));
+    }
+};
+
+template <>
+struct action<g::finish_open> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { (void)in; st.blocks.emplace_back(std::in_place_type<runtime::Finish>); }
+};
+template <>
+struct action<g::finish_base> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        Value v = st.pop();
+        if (!v.is<runtime::Finish>()) throw ValueError("finish { } starts with a finish, not a " + type_name(v));
+        st.block<runtime::Finish>(in.position(), "a finish") = v.as<runtime::Finish>();
+    }
+};
+template <>
+struct action<g::finish_setting> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        Value v = st.pop();
+        const std::string name = st.pop_name();
+        auto& f = st.block<runtime::Finish>(in.position(), name.c_str());
+        TimeFunction x;
+        if (v.is<Vector>()) {
+            // A colour amount (ambient rgb <..>): hexant keeps its mean.
+            const auto c = to_colour(v, name);
+            x = (c.c[0] + c.c[1] + c.c[2]) / 3.0;
+        } else {
+            x = to_float(v, name);
+        }
+        if (name == "ambient") f.ambient = x;
+        else if (name == "diffuse") f.diffuse = x;
+        else if (name == "brilliance") f.brilliance = x;
+        else if (name == "phong") f.phong = x;
+        else if (name == "phong_size") f.phong_size = x;
+        else if (name == "specular") f.specular = x;
+        else if (name == "roughness") f.roughness = x;
+        else if (name == "emission") f.emission = x;
+        // crand and metallic are read and ignored.
+    }
+};
+template <>
+struct action<g::reflection_value> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        Value v = st.pop();
+        auto& f = st.block<runtime::Finish>(in.position(), "reflection");
+        if (v.is<TimeFunction>()) {
+            const TimeFunction x = v.as<TimeFunction>();
+            f.reflection = runtime::ColourFunction{{x, x, x, 0.0, 0.0}};
+        } else {
+            f.reflection = to_colour(v, "reflection");
+            f.reflection.c[3] = f.reflection.c[4] = 0.0;
+        }
+    }
+};
+template <>
+struct action<g::ignored_value> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { (void)in; st.pop(); }
+};
+template <>
+struct action<g::finish_block> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)in;
+        Value v{std::get<runtime::Finish>(st.blocks.back())};
+        st.blocks.pop_back();
+        st.push(std::move(v));
+    }
+};
+
+template <>
+struct action<g::interior_open> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { (void)in; st.blocks.emplace_back(std::in_place_type<runtime::Interior>); }
+};
+template <>
+struct action<g::interior_base> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        Value v = st.pop();
+        if (!v.is<runtime::Interior>()) throw ValueError("interior { } starts with an interior, not a " + type_name(v));
+        st.block<runtime::Interior>(in.position(), "an interior") = v.as<runtime::Interior>();
+    }
+};
+template <>
+struct action<g::ior_setting> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { st.block<runtime::Interior>(in.position(), "ior").ior = to_float(st.pop(), "ior"); }
+};
+template <>
+struct action<g::interior_block> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)in;
+        Value v{std::get<runtime::Interior>(st.blocks.back())};
+        st.blocks.pop_back();
+        st.push(std::move(v));
+    }
+};
+
+// uv_mapping: the pigment, normal or texture being written reads (u, v, 0).
+template <>
+struct action<g::uv_mapping> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        if (st.blocks.empty()) throw ValueError("uv_mapping belongs in a pigment, a normal or a texture");
+        auto& b = st.blocks.back();
+        // (What follows is a pigment or normal of its own, POV-Ray's
+        // Parse_Item_Into_Blend_List from the default: nothing written
+        // before in this block, or in one it modifies, carries over.)
+        if (auto* pigment = std::get_if<runtime::Pigment>(&b)) {
+            *pigment = runtime::Pigment();
+            pigment->uv_mapping = runtime::UvMapping::Open;
+        } else if (auto* normal = std::get_if<runtime::Normal>(&b)) {
+            *normal = runtime::Normal();
+            normal->uv_mapping = runtime::UvMapping::Open;
+        }
+        else if (auto* texture = std::get_if<runtime::Texture>(&b)) texture->uv_mapping = runtime::UvMapping::Open;
+        else throw ValueError("uv_mapping belongs in a pigment, a normal or a texture");
+        (void)in;
+    }
+};
+template <>
+struct action<g::texture_open> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { (void)in; st.blocks.emplace_back(std::in_place_type<runtime::Texture>); }
+};
+template <>
+struct action<g::texture_base> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        Value v = st.pop();
+        auto& t = st.block<runtime::Texture>(in.position(), "a texture");
+        if (v.is<runtime::Texture>()) t = v.as<runtime::Texture>();
+        else if (v.is<runtime::Pigment>()) t.pigment = v.as<runtime::Pigment>();
+        else throw ValueError("texture { } starts with a texture, not a " + type_name(v));
+    }
+};
+template <>
+struct action<g::texture_pigment> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { Value v = st.pop(); st.block<runtime::Texture>(in.position(), "pigment").pigment = v.as<runtime::Pigment>(); }
+};
+template <>
+struct action<g::texture_finish> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { Value v = st.pop(); st.block<runtime::Texture>(in.position(), "finish").finish = v.as<runtime::Finish>(); }
+};
+template <>
+struct action<g::texture_block> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)in;
+        check_patterned_texture(std::get<runtime::Texture>(st.blocks.back()));
+        close_uv_mapping(std::get<runtime::Texture>(st.blocks.back()).uv_mapping);
+        Value v{std::get<runtime::Texture>(st.blocks.back())};
+        st.blocks.pop_back();
+        st.push(std::move(v));
+    }
+};
+template <>
+struct action<g::texture_layer> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        // texture { A } texture { B }: B on top of A.
+        (void)in;
+        runtime::Texture top = st.pop().as<runtime::Texture>();
+        if (st.top().is<Unevaluated>()) return;
+        st.top() = Value{layered(std::move(top), st.top().as<runtime::Texture>())};
+    }
+};
+template <>
+struct action<g::material_value> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        st.blocks.pop_back();
+        st.push(Value{Unevaluated{"material", in.position()}});
+    }
+};
+template <>
+struct action<g::material_open> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { (void)in; st.blocks.emplace_back(std::in_place_type<MaterialBuilder>); }
+};
+template <>
+struct action<g::material_base> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { (void)st; throw ValueError("declared materials are not supported; declare its texture and interior"); (void)in; }
+};
+template <>
+struct action<g::material_texture> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        Value v = st.pop();
+        auto& material = st.block<MaterialBuilder>(in.position(), "texture");
+        auto texture = v.as<runtime::Texture>();
+        material.texture = material.texture ? layered(std::move(texture), std::move(*material.texture)) : std::move(texture);
+    }
+};
+template <>
+struct action<g::material_interior> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { Value v = st.pop(); st.block<MaterialBuilder>(in.position(), "interior").interior = v.as<runtime::Interior>(); }
+};
+
+
+}  // namespace hexant::language

@@ -1,0 +1,234 @@
+// Meshes: mesh and mesh2, their triangles and vectors.
+// Part of the actions (language/actions.hpp).
+#pragma once
+
+#include "language/actions/objects.hpp"
+
+namespace hexant::language {
+
+// ------------------------------------------------------------ meshes
+
+// The mesh being read: the object on top of the block stack.
+inline runtime::objects::MeshData& mesh_data(Interpreter& st, const p::position& where) {
+    auto& record = st.block<runtime::ObjectRecord>(where, "a mesh's part");
+    auto* mesh = std::get_if<runtime::Mesh>(&record.shape);
+    if (!mesh) throw ValueError("this belongs in a mesh or mesh2");
+    return *mesh->data;
+}
+struct open_mesh {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        runtime::ObjectRecord record;
+        record.shape = runtime::Mesh{};
+        record.place = source_place(in);
+        st.blocks.emplace_back(std::move(record));
+    }
+};
+template <> struct action<g::mesh_open> : open_mesh {};
+template <> struct action<g::mesh2_open> : open_mesh {};
+template <>
+struct action<g::mesh_triangle> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        Value v = st.pop();
+        if (!v.is<runtime::ObjectPtr>()) throw ValueError("a mesh holds triangles and smooth_triangles only");
+        add_mesh_triangle(mesh_data(st, in.position()), *v.as<runtime::ObjectPtr>());
+    }
+};
+template <>
+struct action<g::mesh_inside_vector_value> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { set_inside_vector(mesh_data(st, in.position()), st.pop()); }
+};
+template <>
+struct action<g::mesh_hierarchy_value> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { (void)to_constant(st.pop(), "hierarchy"); (void)in; }
+};
+template <>
+struct action<g::mesh2_section_name> {
+    template <typename ActionInput>
+    static void apply(const ActionInput& in, Interpreter& st) {
+        st.push_name(word(in));
+    }
+};
+template <>
+struct action<g::mesh2_value> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)in;
+        st.mesh2_values.push_back(mesh_value(st.pop(), "a mesh2 section"));
+    }
+};
+template <>
+struct action<g::mesh2_values> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)st.close_frame();  // each value was taken as it was read
+        const std::string section = st.pop_name();
+        std::vector<MeshValue> values = std::move(st.mesh2_values);
+        st.mesh2_values.clear();
+        read_mesh2_section(mesh_data(st, in.position()), section, values);
+    }
+};
+template <>
+struct action<g::mesh2_texture_list> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { read_mesh2_textures(mesh_data(st, in.position()), st.close_frame()); }
+};
+// The hierarchy is built once all faces are read, before the modifiers'
+// object is pushed as a value.
+template <const char* Keyword>
+struct close_mesh {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        finish_mesh(mesh_data(st, in.position()), Keyword);
+        finish_object::apply(in, st);
+    }
+};
+inline constexpr char kMeshWord[] = "mesh";
+inline constexpr char kMesh2Word[] = "mesh2";
+template <> struct action<g::mesh_block> : close_mesh<kMeshWord> {};
+template <> struct action<g::mesh2_block> : close_mesh<kMesh2Word> {};
+
+// blob { }: its components are added as they are read
+// (runtime/objects/blob/blob.hpp).
+template <>
+struct action<g::blob_open> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        runtime::ObjectRecord record;
+        record.shape = runtime::Blob{};
+        record.place = source_place(in);
+        st.blocks.emplace_back(std::move(record));
+    }
+};
+template <>
+struct action<g::blob_component_kind> {
+    template <typename ActionInput>
+    static void apply(const ActionInput& in, Interpreter& st) {
+        st.push_name(word(in));
+    }
+};
+template <>
+struct action<g::blob_component_modifier> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)st;
+        throw ValueError("hexant does not read a blob component's own '" + word(in) +
+                         "' yet (POV-Ray does); give it to the whole blob");
+    }
+};
+template <>
+struct action<g::blob_component> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        std::vector<Value> values = st.close_frame();
+        const std::string kind = st.pop_name();
+        auto& record = st.block<runtime::ObjectRecord>(in.position(), "a blob component");
+        add_blob_component(record, kind, values, st, in.position());
+    }
+};
+template <>
+struct action<g::blob_old_component> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        std::vector<Value> values = st.close_frame();
+        auto& record = st.block<runtime::ObjectRecord>(in.position(), "a blob component");
+        add_blob_component(record, "component", values, st, in.position());
+    }
+};
+template <> struct action<g::blob_block> : finish_object {};
+
+// The texture an object modifier changes, made if the object has none.
+inline runtime::Texture& object_texture(Interpreter& st, const p::position& where) {
+    auto& record = st.block<runtime::ObjectRecord>(where, "a texture");
+    if (!record.texture) record.texture = runtime::Texture{};
+    if (record.texture->is_patterned())
+        throw ValueError("a pigment, normal or finish cannot be added to a patterned texture (texture_map), as in "
+                         "POV-Ray");
+    return *record.texture;
+}
+
+template <>
+struct action<g::object_texture> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        Value v = st.pop();
+        auto& record = st.block<runtime::ObjectRecord>(in.position(), "a texture");
+        auto texture = v.as<runtime::Texture>();
+        // A texture on an object that has one is a layer on top, as in POV-Ray.
+        record.texture = record.texture ? layered(std::move(texture), std::move(*record.texture)) : std::move(texture);
+    }
+};
+template <>
+struct action<g::object_pigment> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { Value v = st.pop(); object_texture(st, in.position()).pigment = v.as<runtime::Pigment>(); }
+};
+template <>
+struct action<g::object_normal> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { Value v = st.pop(); object_texture(st, in.position()).normal = v.as<runtime::Normal>(); }
+};
+template <>
+struct action<g::object_finish> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { Value v = st.pop(); object_texture(st, in.position()).finish = v.as<runtime::Finish>(); }
+};
+template <>
+struct action<g::object_interior> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { Value v = st.pop(); st.block<runtime::ObjectRecord>(in.position(), "interior").interior = v.as<runtime::Interior>(); }
+};
+template <>
+struct action<g::object_material> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        MaterialBuilder m = std::get<MaterialBuilder>(st.blocks.back());
+        st.blocks.pop_back();
+        auto& record = st.block<runtime::ObjectRecord>(in.position(), "material");
+        if (m.texture) record.texture = m.texture;
+        if (m.interior) record.interior = m.interior;
+    }
+};
+template <>
+struct action<g::object_flag> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        std::vector<Value> given = st.close_frame();
+        const std::string name = st.pop_name();
+        const bool on = given.empty() || runtime::pov_true(to_constant(given[0], name));
+        if (!st.blocks.empty() && std::holds_alternative<runtime::LightRecord>(st.blocks.back()))
+            throw ValueError("'" + name + "' does not belong in a light_source");
+        auto& record = st.block<runtime::ObjectRecord>(in.position(), name.c_str());
+        if (name == "no_shadow") record.no_shadow = on;
+        else if (name == "hollow") record.hollow = on;
+        else if (name == "inverse") record.inverse = on;
+        // sturm, no_image, no_reflection, no_radiosity, double_illuminate: read, no effect.
+    }
+};
+// A setting of the object's kind (runtime/objects/shape_kind.hpp).
+template <>
+struct action<g::shape_setting> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        std::vector<Value> given = st.close_frame();
+        const std::string name = st.pop_name();
+        if (!st.blocks.empty() && std::holds_alternative<runtime::LightRecord>(st.blocks.back()))
+            throw ValueError("'" + name + "' does not belong in a light_source");
+        auto& record = st.block<runtime::ObjectRecord>(in.position(), name.c_str());
+        set_shape_setting(record, name, given, st, in.position());
+    }
+};
+// (The same, with vectors for values: uv_vectors.)
+template <>
+struct action<g::shape_vectors_setting> : action<g::shape_setting> {};
+template <>
+struct action<g::object_ignored_block> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { st.warn(in.position(), word(in) + " { } is read and ignored"); }
+};
+
+
+}  // namespace hexant::language

@@ -1,0 +1,380 @@
+// Patterns: pigments, normals and textures with a pattern, its settings and waves.
+// Part of the actions (language/actions.hpp).
+#pragma once
+
+#include "language/actions/transformations.hpp"
+
+namespace hexant::language {
+
+// ------------------------------------------------------------ textures
+
+// The pigment or normal an object, a texture or the camera already has:
+// a second pigment { } there modifies it (POV-Ray parses into the one it
+// has), it does not start over.
+inline const runtime::Texture* texture_being_written(const Interpreter& st) {
+    if (st.blocks.empty()) return nullptr;
+    if (const auto* t = std::get_if<runtime::Texture>(&st.blocks.back())) return t;
+    if (const auto* o = std::get_if<runtime::ObjectRecord>(&st.blocks.back()))
+        return o->texture ? &*o->texture : nullptr;
+    return nullptr;
+}
+
+template <>
+struct action<g::pigment_open> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)in;
+        const runtime::Texture* texture = texture_being_written(st);
+        runtime::Pigment start = texture ? texture->pigment : runtime::Pigment();
+        st.blocks.emplace_back(std::move(start));
+    }
+};
+template <>
+struct action<g::pigment_base> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        Value v = st.pop();
+        auto& pigment = st.block<runtime::Pigment>(in.position(), "a pigment");
+        if (v.is<runtime::Pigment>()) {
+            pigment = v.as<runtime::Pigment>();
+        } else {
+            pigment = runtime::Pigment();
+            pigment.colours = {to_colour(v, "a pigment")};
+        }
+    }
+};
+// ---- patterns (runtime/texture/pattern/pattern.hpp), in a pigment or a normal
+
+// The pattern being written: a pigment's, a normal's or a texture's.
+struct PatternSlot {
+    runtime::pattern::Pattern& pattern;
+    runtime::Transform& transform;
+    runtime::Pigment* pigment = nullptr;  // (one of the three)
+    runtime::Normal* normal = nullptr;
+    runtime::Texture* texture = nullptr;
+};
+// (`starts` for the pattern's name itself: in a texture, a modifier comes
+// after it.)
+// A uv-mapped block, once written, takes no transforms from outside it.
+inline void close_uv_mapping(runtime::UvMapping& m) {
+    if (m == runtime::UvMapping::Open) m = runtime::UvMapping::Closed;
+}
+// A new pattern written over a uv-mapped pigment or normal of an earlier
+// block (a second pigment { } on the object): POV-Ray's Parse_Pattern
+// replaces the uv map, and the transforms that lived inside it go with it.
+template <class Record>
+void replace_uv_mapping(Record& r) {
+    if (r.uv_mapping != runtime::UvMapping::Closed) return;
+    r.uv_mapping = runtime::UvMapping::Off;
+    r.transform = {};
+}
+
+inline PatternSlot pattern_slot(Interpreter& st, const p::position& at, const char* what, bool starts = false) {
+    if (!st.blocks.empty()) {
+        if (auto* n = std::get_if<runtime::Normal>(&st.blocks.back())) return {n->patterned, n->transform, nullptr, n};
+        if (auto* t = std::get_if<runtime::Texture>(&st.blocks.back())) {
+            if (t->patterned.kind == nullptr && !starts)
+                throw ValueError(std::string(what) + " in a texture follows a pattern (texture { PATTERN texture_map { } })");
+            return {t->patterned, t->transform, nullptr, nullptr, t};
+        }
+    }
+    auto& pigment = st.block<runtime::Pigment>(at, what);
+    return {pigment.patterned, pigment.transform, &pigment};
+}
+
+template <>
+struct action<g::pattern_kind> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        std::vector<Value> args = st.close_frame();
+        const std::string name = st.pop_name();
+        const PatternSlot slot = pattern_slot(st, in.position(), "a pattern", true);
+        const runtime::pattern::Kind* kind = runtime::pattern::find_kind(name);
+        if (kind == nullptr) throw ValueError("no pattern " + name);
+        if (slot.pigment) replace_uv_mapping(*slot.pigment);
+        if (slot.normal) replace_uv_mapping(*slot.normal);
+        slot.pattern = runtime::pattern::Pattern::of(*kind);
+        // (The scene's noise generator, global_settings { noise_generator }.)
+        slot.pattern.noise_generator = st.scene.global.noise_generator;
+        ++st.patterns_written;
+        if (slot.pigment) {
+            slot.pigment->pattern = runtime::Pigment::Pattern::Patterned;
+            slot.pigment->colour_map = {};
+        }
+        if (slot.texture) {
+            // (POV-Ray: a texture is plain or patterned; a pattern after
+            // its layers or in a declared plain one starts it over.)
+            if (!slot.texture->below.empty())
+                throw ValueError("a layered texture cannot take a pattern (" + name + ")");
+            slot.texture->texture_map.clear();
+        }
+        using A = runtime::pattern::Kind::Argument;
+        // In a normal, one more number may follow: the amount (bump_size).
+        const std::size_t own = kind->argument == A::Vector || kind->argument == A::Number ? 1 : 0;
+        if (slot.normal && args.size() == own + 1) {
+            slot.normal->amount = to_float(args.back(), name + "'s amount");
+            args.pop_back();
+        }
+        const auto count = [&](std::size_t lo, std::size_t hi, const char* what) {
+            if (args.size() < lo || args.size() > hi)
+                throw ValueError(name + " takes " + what + ", not " + std::to_string(args.size()) + " values");
+        };
+        switch (kind->argument) {
+            case A::None: count(0, 0, slot.normal ? "at most an amount" : "no value after it"); break;
+            case A::Vector: {
+                count(1, 1, "one vector (its direction)");
+                // POV-Ray normalizes the direction.
+                const runtime::Vector3Function v = to_vector3(args[0], name + "'s direction");
+                const TimeFunction length = TimeFunction::apply(
+                    TimeOp::Sqrt, v.c[0] * v.c[0] + v.c[1] * v.c[1] + v.c[2] * v.c[2]);
+                if (length.is_constant() && length.constant() == 0.0)
+                    throw ValueError(name + "'s direction is the zero vector");
+                for (int i = 0; i < 3; ++i) slot.pattern.vector.c[i] = v.c[i] / length;
+                break;
+            }
+            case A::Number:
+                count(1, 1, "one number");
+                // (POV-Ray keeps the arms and the iterations as integers.)
+                slot.pattern.number[0] = TimeFunction::apply(TimeOp::Int, to_float(args[0], name + "'s number"));
+                break;
+            case A::Colours: {
+                // (In a normal or a texture, the normals or textures follow
+                // as blocks.)
+                if (slot.normal) {
+                    count(0, 0, "at most an amount in a normal");
+                    break;
+                }
+                if (slot.texture) {
+                    count(0, 0, "its textures as texture { } blocks");
+                    break;
+                }
+                count(0, static_cast<std::size_t>(kind->colours),
+                      ("at most " + std::to_string(kind->colours) + " colours").c_str());
+                // A blend list: colour i at value i, the kind's default
+                // where none is given.
+                for (std::size_t i = 0; i < static_cast<std::size_t>(kind->colours); ++i) {
+                    runtime::ColourMapEntry e;
+                    e.value = static_cast<double>(i);
+                    if (i < args.size()) {
+                        e.colour = to_colour(args[i], name + "'s colour " + std::to_string(i + 1));
+                    } else {
+                        const auto& d = kind->default_map[i].colour;
+                        e.colour = runtime::ColourFunction{{d[0], d[1], d[2], d[3], d[4]}};
+                    }
+                    slot.pigment->colour_map.entries.push_back(std::move(e));
+                }
+                break;
+            }
+        }
+    }
+};
+
+// A kind's own modifier, as its file under runtime/texture/pattern/kinds/
+// declares it (POV-Ray refuses one the pattern does not have).
+inline void set_kind_setting(runtime::pattern::Pattern& pattern, const std::string& name, const Value& v) {
+    namespace pt = runtime::pattern;
+    const pt::Setting* setting = pattern.kind ? pt::find_setting(*pattern.kind, name) : nullptr;
+    if (setting == nullptr) {
+        std::string owners;
+        for (const pt::Kind* k : pt::all_kinds())
+            if (pt::find_setting(*k, name)) owners += (owners.empty() ? "" : " or ") + std::string(k->name);
+        throw ValueError(name + " belongs to " + owners + ", not to " +
+                         (pattern.kind ? std::string(pattern.kind->name) : std::string("a plain colour")));
+    }
+    if (setting->type == pt::Setting::Type::Vector) {
+        const runtime::Vector3Function value = to_vector3(v, name);
+        if (setting->constant && value.depends_on_time()) throw ValueError(name + " cannot move with clock");
+        pattern.vector = value;
+        return;
+    }
+    const TimeFunction value = to_float(v, name);
+    if (setting->constant && value.depends_on_time()) throw ValueError(name + " cannot move with clock");
+    pattern.number[static_cast<std::size_t>(setting->slot)] = value;
+}
+
+template <>
+struct action<g::pattern_setting> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        Value v = st.pop();
+        const std::string name = st.pop_name();
+        const PatternSlot slot = pattern_slot(st, in.position(), name.c_str());
+        runtime::pattern::Pattern& pattern = slot.pattern;
+        // Classic turbulence, made by the first of its settings (POV-Ray's Check_Turb).
+        const auto turbulence = [&]() -> runtime::pattern::Turbulence& {
+            if (!pattern.turbulence) pattern.turbulence.emplace();
+            return *pattern.turbulence;
+        };
+        if (name == "frequency") pattern.frequency = to_float(v, "frequency");
+        else if (name == "phase") pattern.phase = to_float(v, "phase");
+        else if (name == "turbulence") turbulence().amount = to_vector3(v, "turbulence");
+        else if (name == "octaves") turbulence().octaves = to_float(v, "octaves");
+        else if (name == "omega") turbulence().omega = to_float(v, "omega");
+        else if (name == "lambda") turbulence().lambda = to_float(v, "lambda");
+        else if (name == "noise_generator") {
+            pattern.noise_generator =
+                static_cast<int>(checked_integer(to_constant(v, "noise_generator"), "noise_generator", 1, 3));
+        } else {
+            set_kind_setting(pattern, name, v);
+        }
+    }
+};
+
+template <>
+struct action<g::pattern_wave> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        std::vector<Value> args = st.close_frame();
+        const std::string name = st.pop_name();
+        runtime::pattern::Pattern& pattern = pattern_slot(st, in.position(), name.c_str()).pattern;
+        using W = runtime::pattern::Wave;
+        if (name != "poly_wave" && !args.empty()) throw ValueError(name + " takes no value");
+        pattern.wave = name == "ramp_wave"       ? W::Ramp
+                       : name == "sine_wave"     ? W::Sine
+                       : name == "triangle_wave" ? W::Triangle
+                       : name == "scallop_wave"  ? W::Scallop
+                       : name == "cubic_wave"    ? W::Cubic
+                                                 : W::Poly;
+        if (name == "poly_wave") pattern.exponent = args.empty() ? TimeFunction(1.0) : to_float(args[0], "poly_wave");
+    }
+};
+
+template <>
+struct action<g::warp_open> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        // The transforms written so far come before this warp (applied
+        // after it, world to pattern): they become a step of their own.
+        const PatternSlot slot = pattern_slot(st, in.position(), "warp");
+        if (!slot.transform.empty()) {
+            runtime::pattern::Warp step;
+            step.transform = slot.transform;
+            slot.pattern.warps.push_back(std::move(step));
+            slot.transform = {};
+        }
+        slot.pattern.warps.push_back(runtime::pattern::Warp{});
+    }
+};
+template <>
+struct action<g::warp_turbulence> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        Value v = st.pop();
+        pattern_slot(st, in.position(), "warp").pattern.warps.back().turbulence.amount =
+            to_vector3(v, "warp's turbulence");
+    }
+};
+template <>
+struct action<g::warp_setting> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        Value v = st.pop();
+        const std::string name = st.pop_name();
+        auto& turbulence = pattern_slot(st, in.position(), "warp").pattern.warps.back().turbulence;
+        if (name == "octaves") turbulence.octaves = to_float(v, "octaves");
+        else if (name == "omega") turbulence.omega = to_float(v, "omega");
+        else turbulence.lambda = to_float(v, "lambda");
+    }
+};
+
+
+// ---- normal { }
+template <>
+struct action<g::normal_open> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)in;
+        std::optional<runtime::Normal> start;
+        if (const runtime::Texture* texture = texture_being_written(st)) start = texture->normal;
+        else if (!st.blocks.empty())
+            if (const auto* camera = std::get_if<runtime::CameraRecord>(&st.blocks.back())) start = camera->normal;
+        st.blocks.emplace_back(start ? std::move(*start) : runtime::Normal());
+    }
+};
+template <>
+struct action<g::normal_base> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        Value v = st.pop();
+        if (!v.is<runtime::Normal>()) throw ValueError("normal { } starts with a normal, not a " + type_name(v));
+        st.block<runtime::Normal>(in.position(), "a normal") = v.as<runtime::Normal>();
+    }
+};
+template <>
+struct action<g::normal_setting> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        Value v = st.pop();
+        const std::string name = st.pop_name();
+        auto& normal = st.block<runtime::Normal>(in.position(), name.c_str());
+        if (name == "bump_size") normal.amount = to_float(v, "bump_size");
+        else normal.accuracy = to_float(v, "accuracy");
+    }
+};
+template <>
+struct action<g::normal_no_bump_scale> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { st.block<runtime::Normal>(in.position(), "no_bump_scale").no_bump_scale = true; }
+};
+template <>
+struct action<g::normal_block> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        auto& normal = st.block<runtime::Normal>(in.position(), "a normal");
+        if (normal.patterned.kind == nullptr && normal.unsupported_name.empty())
+            throw ValueError("a normal needs a pattern (POV-Ray: no normal type given)");
+        close_uv_mapping(normal.uv_mapping);
+        Value v{std::move(normal)};
+        st.blocks.pop_back();
+        st.push(std::move(v));
+    }
+};
+template <>
+struct action<g::texture_normal> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { Value v = st.pop(); st.block<runtime::Texture>(in.position(), "normal").normal = v.as<runtime::Normal>(); }
+};
+template <>
+struct action<g::camera_normal> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        Value v = st.pop();
+        check_normal(v.as<runtime::Normal>());
+        // (POV-Ray: "The 'uv_mapping' pattern cannot be used" without a surface.)
+        if (v.as<runtime::Normal>().uv_mapping != runtime::UvMapping::Off)
+            throw ValueError("uv_mapping needs a surface's (u, v): not in the camera's normal");
+        st.block<runtime::CameraRecord>(in.position(), "normal").normal = v.as<runtime::Normal>();
+    }
+};
+
+// A texture's pattern has its map (POV-Ray: "Patterned texture must have
+// texture_map"), a block pattern all its textures.
+inline void check_patterned_texture(const runtime::Texture& t) {
+    if (t.patterned.kind == nullptr) return;
+    if (t.texture_map.empty())
+        throw ValueError("a texture with a pattern (" + std::string(t.patterned.kind->name) +
+                         ") needs a texture_map, as in POV-Ray");
+    using A = runtime::pattern::Kind::Argument;
+    if (t.patterned.kind->argument == A::Colours &&
+        t.texture_map.size() < static_cast<std::size_t>(t.patterned.kind->colours))
+        throw ValueError(std::string(t.patterned.kind->name) + " in a texture needs " +
+                         std::to_string(t.patterned.kind->colours) + " textures, not " +
+                         std::to_string(t.texture_map.size()));
+}
+
+// `top` layered over `under` (POV-Ray's Link_Textures): top's layers, then
+// under's. Nothing is layered over or under a patterned texture.
+inline runtime::Texture layered(runtime::Texture top, runtime::Texture under) {
+    if (under.is_patterned())
+        throw ValueError("a texture cannot be layered over a patterned one (texture_map), as in POV-Ray");
+    if (top.is_patterned())
+        throw ValueError("a patterned texture (texture_map) cannot be layered over another, as in POV-Ray");
+    std::vector<runtime::Texture> lower = std::move(under.below);
+    under.below.clear();
+    top.below.push_back(std::move(under));
+    for (auto& layer : lower) top.below.push_back(std::move(layer));
+    return top;
+}
+
+
+}  // namespace hexant::language

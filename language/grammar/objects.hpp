@@ -1,0 +1,250 @@
+// Objects: the registered kinds, CSG and the kinds' own sections.
+// Part of the grammar (language/grammar.hpp).
+#pragma once
+
+#include "language/grammar/textures.hpp"
+
+namespace hexant::language::grammar {
+
+// ---------------------------------------------------------------- objects
+
+struct object_value;
+struct object_modifier;
+struct object_modifiers : p::star<object_modifier> {};
+struct object_close : rbrace {};
+
+// A shape's leading arguments: values separated by commas, which POV-Ray
+// lets one leave out.
+struct shape_argument : p::seq<sum> {};
+// Where a comma is left out, a macro call starts the modifiers, not another
+// argument: sphere { 0, R Move() } (as in POV-Ray, whose expressions end there).
+struct macro_ahead_item {};
+HEXANT_CUSTOM_RULE(macro_ahead_rule, macro_ahead);
+struct macro_ahead : macro_ahead_rule<macro_ahead_item> {};
+// A conditional directive among the arguments (POV-Ray reads directives
+// anywhere): `#if`, `#ifdef` or `#ifndef` whose condition is followed by a
+// value, as in smooth_triangle { #if (Flip) <0,0,0>, -y, ... #else ... #end }
+// or cylinder { 0, #if (A) x #else y #end, 1 }. It is told from a directive
+// among the modifiers (sphere { 0, 1 #if (A) translate x #end }) by the
+// first word or character after the condition, before anything runs: the
+// interpreter runs directives as it reads, so they cannot be tried twice
+// (Interpreter::argument_directive_ahead says which words are values).
+struct argument_directive_ahead_item {};
+HEXANT_CUSTOM_RULE(argument_directive_ahead_rule, argument_directive_ahead);
+struct argument_directive_ahead : argument_directive_ahead_rule<argument_directive_ahead_item> {};
+struct shape_argument_item;
+struct argument_directive : p::seq<argument_directive_ahead, directive<shape_argument_item>> {};
+// What a directive's branch among the arguments holds: arguments, commas
+// and further such directives.
+struct shape_argument_item
+    : p::sor<argument_directive, comma, p::seq<p::not_at<macro_ahead>, shape_argument>> {};
+struct first_shape_argument : p::sor<argument_directive, shape_argument> {};
+struct shape_arguments
+    : p::seq<frame_open, first_shape_argument,
+             p::star<p::sor<argument_directive, p::seq<comma, p::must<first_shape_argument>>,
+                            p::seq<p::not_at<macro_ahead>, shape_argument>>>> {};
+
+// A registered object kind (runtime/objects/kinds.hpp): its keyword, the
+// option words it may take before its values (prism's linear_sweep), its
+// values, and modifiers. The kind itself reads what it was given.
+struct shape_keyword_words {
+    static constexpr auto list = runtime::objects::KindWords<runtime::ShapeKinds>::block_keywords;
+};
+struct shape_option_words {
+    static constexpr auto list = runtime::objects::KindWords<runtime::ShapeKinds>::options;
+};
+struct shape_keyword : one_word_of<shape_keyword_words> {};
+struct shape_open : p::seq<shape_keyword, ws, p::must<lbrace>> {};
+struct shape_option : p::seq<one_word_of<shape_option_words>, ws> {};
+struct shape_block
+    : p::seq<shape_open, p::star<shape_option>, p::must<shape_arguments>, object_modifiers,
+             p::must<object_close>> {};
+
+HEXANT_KEYWORD(kw_union, "union");
+HEXANT_KEYWORD(kw_merge, "merge");
+HEXANT_KEYWORD(kw_intersection, "intersection");
+HEXANT_KEYWORD(kw_difference, "difference");
+HEXANT_KEYWORD(kw_motion_blur, "motion_blur");
+struct csg_kind : p::sor<kw_union, kw_merge, kw_intersection, kw_difference, kw_motion_blur> {};
+struct csg_open : p::seq<csg_kind, p::must<lbrace>> {};
+struct unsupported_block;
+struct csg_child : p::sor<object_value, unsupported_block> {};
+struct csg_item
+    : p::sor<directive<csg_item>, macro_call<csg_item>, csg_child, object_modifier> {};
+struct csg_block : p::seq<csg_open, p::star<csg_item>, p::must<object_close>> {};
+
+// object { IDENT modifiers } or object { shape modifiers }
+HEXANT_KEYWORD(kw_object, "object");
+struct object_base : p::sor<object_value, expression> {};
+struct object_block
+    : p::seq<kw_object, p::must<lbrace>, p::must<object_base>, object_modifiers,
+             p::must<object_close>> {};
+
+// light_source { <position>, colour modifiers }
+HEXANT_KEYWORD(kw_light_source, "light_source");
+// The colour may be left out (POV-Ray: white).
+struct light_arguments
+    : p::seq<frame_open, p::must<shape_argument>,
+             p::opt<p::opt<comma>, p::not_at<macro_ahead>, shape_argument>> {};
+struct light_flag
+    : p::seq<p::sor<TAO_PEGTL_KEYWORD("shadowless"), TAO_PEGTL_KEYWORD("spotlight"),
+                    TAO_PEGTL_KEYWORD("cylinder"), TAO_PEGTL_KEYWORD("parallel"),
+                    TAO_PEGTL_KEYWORD("jitter"), TAO_PEGTL_KEYWORD("circular"),
+                    TAO_PEGTL_KEYWORD("orient")>,
+             ws> {};
+struct light_setting_name
+    : p::sor<TAO_PEGTL_KEYWORD("point_at"), TAO_PEGTL_KEYWORD("radius"),
+             TAO_PEGTL_KEYWORD("falloff"), TAO_PEGTL_KEYWORD("tightness"),
+             TAO_PEGTL_KEYWORD("adaptive"), TAO_PEGTL_KEYWORD("fade_distance"),
+             TAO_PEGTL_KEYWORD("fade_power"), TAO_PEGTL_KEYWORD("media_interaction"),
+             TAO_PEGTL_KEYWORD("media_attenuation")> {};
+struct light_setting_value : p::seq<expression> {};
+struct light_setting : p::seq<light_setting_name, ws, p::must<light_setting_value>> {};
+struct area_light_argument : p::seq<sum> {};
+// (The commas are optional, as POV-Ray's Parse_Comma.)
+struct area_light
+    : p::seq<TAO_PEGTL_KEYWORD("area_light"), ws, frame_open, p::must<area_light_argument>,
+             p::opt<comma>, p::must<area_light_argument>, p::opt<comma>,
+             p::must<area_light_argument>, p::opt<comma>, p::must<area_light_argument>> {};
+// looks_like { OBJECT modifiers }, as object { }; POV-Ray moves the object
+// to the light before its modifiers (looks_like_base).
+struct looks_like_base : object_base {};
+struct light_looks_like
+    : p::seq<TAO_PEGTL_KEYWORD("looks_like"), ws, p::must<lbrace>, p::must<looks_like_base>, object_modifiers,
+             p::must<object_close>> {};
+struct light_projected_through
+    : p::seq<TAO_PEGTL_KEYWORD("projected_through"), ws, p::must<skipped_block>, ws> {};
+struct light_item
+    : p::sor<directive<light_item>, macro_call<light_item>, light_flag, light_setting,
+             area_light, light_looks_like, light_projected_through, transformation> {};
+struct light_block
+    : p::seq<kw_light_source, p::must<lbrace>, p::must<light_arguments>, p::star<light_item>,
+             p::must<object_close>> {};
+
+// Object kinds POV-Ray has and hexant does not: kept as source, an error
+// only where used. Also `function { }` and the *_map blocks.
+struct unsupported_kind_words {
+    static constexpr std::array<std::string_view, 23> list = {
+        "bicubic_patch", "color_map", "colour_map", "cubic", "density", "density_map",
+        "function", "isosurface", "julia_fractal", "lemon",
+        "media", "normal_map", "ovus", "parametric", "photons", "pigment_map",
+        "poly", "polynomial", "quadric", "quartic", "rainbow", "slope_map",
+        "texture_map"};
+};
+struct unsupported_kind : one_word_of<unsupported_kind_words> {};
+struct unsupported_block
+    : p::seq<unsupported_kind, ws, p::opt<skip::parenthesized, ws>, p::must<skipped_block>, ws> {};
+
+// mesh { triangle { .. } smooth_triangle { .. } ... modifiers }: its
+// triangles are read as objects and taken apart (runtime/objects/mesh/).
+struct mesh_open : p::seq<TAO_PEGTL_KEYWORD("mesh"), ws, p::must<lbrace>> {};
+struct mesh_triangle : p::seq<object_value> {};
+struct mesh_inside_vector_value : p::seq<expression> {};
+struct mesh_inside_vector
+    : p::seq<TAO_PEGTL_KEYWORD("inside_vector"), ws, p::must<mesh_inside_vector_value>> {};
+// hierarchy on|off: read; hexant's mesh always has its hierarchy.
+struct mesh_hierarchy_value : p::seq<expression> {};
+struct mesh_hierarchy
+    : p::seq<TAO_PEGTL_KEYWORD("hierarchy"), ws, p::opt<mesh_hierarchy_value>> {};
+struct mesh_item
+    : p::sor<directive<mesh_item>, macro_call<mesh_item>, mesh_inside_vector, mesh_hierarchy,
+             mesh_triangle, object_modifier> {};
+struct mesh_block : p::seq<mesh_open, p::star<mesh_item>, p::must<object_close>> {};
+
+// mesh2 { vertex_vectors { N, <..> ... } normal_vectors { } uv_vectors { }
+// texture_list { N, texture { } ... } face_indices { N, <a, b, c> [, t
+// [, t2, t3]] ... } normal_indices { } uv_indices { } modifiers }
+struct mesh2_open : p::seq<TAO_PEGTL_KEYWORD("mesh2"), ws, p::must<lbrace>> {};
+struct mesh2_section_name
+    : p::sor<TAO_PEGTL_KEYWORD("vertex_vectors"), TAO_PEGTL_KEYWORD("normal_vectors"),
+             TAO_PEGTL_KEYWORD("uv_vectors"), TAO_PEGTL_KEYWORD("face_indices"),
+             TAO_PEGTL_KEYWORD("normal_indices"), TAO_PEGTL_KEYWORD("uv_indices")> {};
+// A section's values, commas between them optional; directives may write
+// them (#while and #for loops, as meshmaker.inc's macros do).
+// Each value is taken into the section as it is read (a million-face mesh
+// would otherwise hold millions of values at once).
+struct mesh2_value : p::seq<sum> {};
+struct mesh2_value_item;
+struct mesh2_value_item : p::sor<directive<mesh2_value_item>, comma, mesh2_value> {};
+struct mesh2_values : p::seq<frame_open, p::star<mesh2_value_item>> {};
+struct mesh2_section
+    : p::seq<mesh2_section_name, ws, p::must<lbrace>, p::must<mesh2_values>, p::must<rbrace>> {};
+struct mesh2_texture_count : p::seq<sum> {};
+struct mesh2_texture_list
+    : p::seq<TAO_PEGTL_KEYWORD("texture_list"), ws, p::must<lbrace>, frame_open,
+             p::must<mesh2_texture_count>, p::star<p::opt<comma>, texture_block>, p::must<rbrace>> {};
+struct mesh2_item
+    : p::sor<directive<mesh2_item>, macro_call<mesh2_item>, mesh2_section, mesh2_texture_list,
+             mesh_inside_vector, mesh_hierarchy, object_modifier> {};
+struct mesh2_block : p::seq<mesh2_open, p::star<mesh2_item>, p::must<object_close>> {};
+
+// blob { threshold T  sphere { <C>, R, [strength] S }  cylinder { <A>, <B>,
+// R, [strength] S }  component S, R, <C>  modifiers } (runtime/objects/blob/):
+// each component is added as it is read; threshold and hierarchy are the
+// blob's settings, read among its modifiers.
+struct blob_open : p::seq<TAO_PEGTL_KEYWORD("blob"), ws, p::must<lbrace>> {};
+struct blob_component_kind : p::sor<TAO_PEGTL_KEYWORD("sphere"), TAO_PEGTL_KEYWORD("cylinder")> {};
+struct blob_strength_word : p::seq<TAO_PEGTL_KEYWORD("strength"), ws> {};
+// A component's own modifiers, which POV-Ray reads and hexant refuses.
+struct blob_component_modifier
+    : p::sor<TAO_PEGTL_KEYWORD("texture"), TAO_PEGTL_KEYWORD("pigment"), TAO_PEGTL_KEYWORD("normal"),
+             TAO_PEGTL_KEYWORD("finish"), TAO_PEGTL_KEYWORD("translate"), TAO_PEGTL_KEYWORD("rotate"),
+             TAO_PEGTL_KEYWORD("scale"), TAO_PEGTL_KEYWORD("matrix"), TAO_PEGTL_KEYWORD("transform")> {};
+struct blob_component_item;
+struct blob_component_item
+    : p::sor<directive<blob_component_item>, comma, blob_strength_word, blob_component_modifier,
+             shape_argument> {};
+struct blob_component
+    : p::seq<blob_component_kind, ws, p::must<lbrace>, frame_open, p::star<blob_component_item>,
+             p::must<rbrace>> {};
+struct blob_old_component
+    : p::seq<TAO_PEGTL_KEYWORD("component"), ws, frame_open, p::must<shape_argument>,
+             p::opt<comma>, p::must<shape_argument>, p::opt<comma>, p::must<shape_argument>> {};
+struct blob_item
+    : p::sor<directive<blob_item>, macro_call<blob_item>, blob_component, blob_old_component,
+             object_modifier> {};
+struct blob_block : p::seq<blob_open, p::star<blob_item>, p::must<object_close>> {};
+
+struct object_value
+    : p::sor<mesh_block, mesh2_block, blob_block, shape_block, csg_block, object_block, light_block> {};
+
+// Things that modify an object, in any order.
+struct object_texture : p::seq<texture_block> {};
+struct object_pigment : p::seq<pigment_block> {};
+struct object_finish : p::seq<finish_block> {};
+struct object_interior : p::seq<interior_block> {};
+struct object_material : p::seq<material_block> {};
+struct object_flag_name
+    : p::sor<TAO_PEGTL_KEYWORD("no_shadow"), TAO_PEGTL_KEYWORD("hollow"),
+             TAO_PEGTL_KEYWORD("inverse"), TAO_PEGTL_KEYWORD("sturm"),
+             TAO_PEGTL_KEYWORD("no_image"), TAO_PEGTL_KEYWORD("no_reflection"),
+             TAO_PEGTL_KEYWORD("no_radiosity"), TAO_PEGTL_KEYWORD("double_illuminate")> {};
+struct object_flag_value : p::seq<p::not_at<p::one<'<'>>, expression> {};
+struct object_flag : p::seq<object_flag_name, ws, frame_open, p::opt<object_flag_value>> {};
+// A setting of the object's own kind (a cylinder's `open`), with an
+// optional value; the kind says what it takes.
+struct shape_setting_words {
+    static constexpr auto list = runtime::objects::KindWords<runtime::ShapeKinds>::settings;
+};
+struct shape_setting_name : one_word_of<shape_setting_words> {};
+struct shape_setting_value : p::seq<p::not_at<p::one<'<'>>, expression> {};
+struct shape_setting : p::seq<shape_setting_name, ws, frame_open, p::opt<shape_setting_value>> {};
+// A setting whose values are vectors: a mesh triangle's uv_vectors <u1, v1>,
+// <u2, v2>, <u3, v3> (runtime/objects/triangle/triangle.hpp).
+struct shape_vectors_setting_name : TAO_PEGTL_KEYWORD("uv_vectors") {};
+struct shape_vectors_setting_value : p::seq<expression> {};
+struct shape_vectors_setting
+    : p::seq<shape_vectors_setting_name, ws, frame_open, p::must<shape_vectors_setting_value>,
+             p::star<comma, p::must<shape_vectors_setting_value>>> {};
+struct object_ignored_block
+    : p::seq<p::sor<TAO_PEGTL_KEYWORD("bounded_by"), TAO_PEGTL_KEYWORD("clipped_by"),
+                    TAO_PEGTL_KEYWORD("photons"), TAO_PEGTL_KEYWORD("radiosity")>,
+             ws, p::must<skipped_block>, ws> {};
+struct object_modifier
+    : p::sor<directive<object_modifier>, macro_call<object_modifier>, transformation,
+             deformation, object_texture, object_pigment, object_finish, object_normal,
+             object_interior, object_material, object_flag, shape_vectors_setting, shape_setting,
+             object_ignored_block> {};
+
+
+}  // namespace hexant::language::grammar

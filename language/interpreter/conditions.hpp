@@ -1,0 +1,234 @@
+// The Interpreter's #if, #ifdef and #ifndef, and the split of the animation's time where a condition depends on clock.
+// Part of the Interpreter (language/interpreter_state.hpp), whose end includes it.
+#pragma once
+
+#include "language/interpreter_state.hpp"
+
+namespace hexant::language {
+
+template <template <typename...> class Action, template <typename...> class Control,
+          typename ParseInput>
+double Interpreter::condition(ParseInput& in, const char* directive) {
+    const auto position = in.position();
+    read<grammar::condition, Action, Control>(in);
+    try {
+        return to_constant(pop(), std::string("the condition of ") + directive);
+    } catch (const ValueError& e) {
+        fail(position, e.what());
+    }
+}
+
+template <template <typename...> class Action, template <typename...> class Control,
+          typename ParseInput>
+TimeFunction Interpreter::timed_condition(ParseInput& in, const char* directive) {
+    const auto position = in.position();
+    read<grammar::condition, Action, Control>(in);
+    try {
+        return to_float(pop(), std::string("the condition of ") + directive);
+    } catch (const ValueError& e) {
+        fail(position, e.what());
+    }
+}
+
+template <typename Item, template <typename...> class Action,
+          template <typename...> class Control, typename ParseInput>
+bool Interpreter::run_if(ParseInput& in) {
+    const auto opened = directive_position(in);
+    if (!keyword(in, "if")) return false;
+    const auto at = in.position();
+    if_chain<Item, Action, Control>(in, opened, at, timed_condition<Action, Control>(in, "#if"));
+    return true;
+}
+
+template <typename Item, template <typename...> class Action,
+          template <typename...> class Control, typename ParseInput>
+void Interpreter::if_chain(ParseInput& in, const p::position& opened, const p::position& at,
+                           const TimeFunction& c) {
+    if (c.is_constant()) return if_rest<Item, Action, Control>(in, opened, runtime::pov_true(c.constant()));
+    const runtime::TruthPieces pieces = split_domain(c, at);
+    if (const auto whole = whole_truth(pieces)) return if_rest<Item, Action, Control>(in, opened, *whole);
+    split_time(in, at, c, pieces, [&](bool taken) { if_rest<Item, Action, Control>(in, opened, taken); });
+}
+
+template <typename Item, template <typename...> class Action,
+          template <typename...> class Control, typename ParseInput>
+void Interpreter::if_rest(ParseInput& in, const p::position& opened, bool taken) {
+    bool seen_else = false;
+    for (;;) {
+        const Divider d = taken ? run_body<Item, Action, Control>(in) : skip_body<Control>(in);
+        if (d == Divider::End) return;
+        if (taken) {
+            // The rest, up to #end, is skipped whatever it holds.
+            if (d != Divider::Else && d != Divider::Elseif) unclosed(opened, "#if", d, in);
+            if (d == Divider::Else && seen_else) unclosed(opened, "#if", d, in);
+            Divider rest;
+            do {
+                rest = skip_body<Control>(in);
+            } while (rest == Divider::Else || rest == Divider::Elseif);
+            if (rest != Divider::End) unclosed(opened, "#if", rest, in);
+            return;
+        }
+        if (d == Divider::Else) {
+            if (seen_else) unclosed(opened, "#if", d, in);
+            seen_else = true;
+            taken = true;
+            // After #else only #end may follow.
+            const Divider last = run_body<Item, Action, Control>(in);
+            if (last != Divider::End) unclosed(opened, "#if", last, in);
+            return;
+        }
+        if (d == Divider::Elseif) {
+            const auto at = in.position();
+            const TimeFunction c = timed_condition<Action, Control>(in, "#elseif");
+            // The rest of the chain splits the time this side holds.
+            if (!c.is_constant()) return if_chain<Item, Action, Control>(in, opened, at, c);
+            taken = runtime::pov_true(c.constant());
+            continue;
+        }
+        unclosed(opened, "#if", d, in);
+    }
+}
+
+template <typename ParseInput, typename Read>
+void Interpreter::split_time(ParseInput& in, const p::position& at, const TimeFunction& c,
+                             const runtime::TruthPieces& pieces, Read read) {
+    // Each split re-reads its text once a side and nests the next inside
+    // it: bounded like macro calls (a chain of #elseif each on clock).
+    if (branch_logs_.size() >= static_cast<std::size_t>(options.limits.macro_depth))
+        fail(at, "clock-dependent branches nested more than " +
+                     std::to_string(options.limits.macro_depth) +
+                     " deep (--max-macro-depth N raises the limit)");
+    const auto start = in.iterator();
+    const runtime::Lifetime outer = domain;
+    // What a side may change besides variables: values it leaves on the
+    // stack (an #if inside a macro that returns a value), and the object
+    // being built around it (CSG members it adds).
+    const std::size_t stack_base = stack_.size();
+    const runtime::CameraRecord camera_before = scene.camera;
+    const runtime::ColourFunction background_before = scene.background;
+    const std::size_t camera_count = camera_sets, background_count = background_sets;
+    const std::size_t block_count = blocks.size();
+    std::optional<runtime::ObjectRecord> top_before;
+    if (!blocks.empty()) {
+        if (!std::holds_alternative<runtime::ObjectRecord>(blocks.back()))
+            fail(at, "a branch whose condition depends on clock inside this block; hexant makes "
+                     "objects, their CSG members, floats and vectors piecewise in time, not yet "
+                     "what this block holds");
+        top_before = std::get<runtime::ObjectRecord>(blocks.back());
+    }
+    std::optional<TimeSide> sides[2];  // [0]: where c holds
+    auto end = start;
+    const auto restore = [&] {
+        BranchLog log = std::move(branch_logs_.back());
+        branch_logs_.pop_back();
+        TimeSide side;
+        restoring_ = true;
+        for (auto& [key, before] : log.before) {
+            side.after[key] = variable_at(key);
+            set_variable_at(key, before);
+        }
+        restoring_ = false;
+        if (camera_sets != camera_count) side.camera = std::exchange(scene.camera, camera_before);
+        if (background_sets != background_count)
+            side.background = std::exchange(scene.background, background_before);
+        camera_sets = camera_count;
+        background_sets = background_count;
+        if (stack_.size() >= stack_base) {
+            side.pushed.assign(std::make_move_iterator(stack_.begin() + static_cast<std::ptrdiff_t>(stack_base)),
+                               std::make_move_iterator(stack_.end()));
+        }
+        const bool balanced = stack_.size() >= stack_base && blocks.size() == block_count;
+        stack_.resize(std::min(stack_.size(), stack_base));
+        if (blocks.size() == block_count && top_before) {
+            side.top = std::move(std::get<runtime::ObjectRecord>(blocks.back()));
+            blocks.back() = *top_before;
+        }
+        return std::pair{std::move(side), balanced};
+    };
+    for (int side = 0; side < 2; ++side) {
+        const runtime::Lifetime& when = side == 0 ? pieces.when_true : pieces.when_false;
+        if (when.is_never()) continue;
+        in.iterator() = start;
+        // (A condition true, or false, over all of the domain: no split.)
+        const bool whole = (side == 0 ? pieces.when_false : pieces.when_true).is_never();
+        domain = whole ? outer : when;
+        branch_logs_.push_back({scopes_.size(), {}});
+        const std::size_t watched = watched_block_, edits = watched_edits_;
+        watched_block_ = top_before ? block_count : 0;
+        watched_edits_ = 0;
+        try {
+            read(side == 0);
+        } catch (const p::parse_error& e) {
+            // Where in time the error is: from this side's first instant
+            // (POV-Ray stops at that clock's frame).
+            std::ostringstream note;
+            note << std::setprecision(17) << e.message() << " (at clock " << when.pieces().front().lo
+                 << ", on a side of the branch on clock at line " << at.line << ")";
+            domain = outer;
+            watched_block_ = watched;
+            watched_edits_ = edits;
+            (void)restore();
+            if (e.message().find(" (at clock ") != std::string_view::npos) throw;  // said once, innermost
+            p::parse_error amended(note.str(), e.positions().front());
+            for (std::size_t i = 1; i < e.positions().size(); ++i)
+                amended.add_position(p::position(e.positions()[i]));
+            throw amended;
+        } catch (...) {
+            domain = outer;
+            watched_block_ = watched;
+            watched_edits_ = edits;
+            (void)restore();
+            throw;
+        }
+        const bool edited = watched_edits_ > 0;
+        watched_block_ = watched;
+        watched_edits_ = edits + (edited ? 1 : 0);
+        auto [done, balanced] = restore();
+        done.top_edited = edited;
+        if (!balanced) {
+            domain = outer;
+            fail(at, "a branch whose condition depends on clock that uses values from before it "
+                     "or leaves a block open; hexant cannot yet make that piecewise in time");
+        }
+        done.when = when;
+        sides[side] = std::move(done);
+        end = in.iterator();
+    }
+    domain = outer;
+    in.iterator() = end;
+    merge_time_sides(at, c, sides, top_before, camera_before, background_before);
+}
+
+template <typename Item, template <typename...> class Action,
+          template <typename...> class Control, typename ParseInput>
+bool Interpreter::run_ifdef(ParseInput& in) {
+    const auto opened = directive_position(in);
+    bool negate = false;
+    if (keyword(in, "ifndef")) negate = true;
+    else if (!keyword(in, "ifdef")) return false;
+    const char* name = negate ? "#ifndef" : "#ifdef";
+    read<grammar::lparen, Action, Control>(in);
+    const std::string id = identifier(in, "a name in #ifdef ( )");
+    read<grammar::condition_close, Action, Control>(in);
+    const auto rest = [&](bool taken) {
+        Divider d = taken ? run_body<Item, Action, Control>(in) : skip_body<Control>(in);
+        if (d == Divider::Else) d = taken ? skip_body<Control>(in) : run_body<Item, Action, Control>(in);
+        if (d != Divider::End) unclosed(opened, name, d, in);
+    };
+    const runtime::Lifetime* when = declared_when(id);
+    if (when == nullptr || when->is_always()) {
+        rest((when != nullptr) != negate);
+        return true;
+    }
+    // Declared part of the time: a branch on the time it is declared.
+    TimeFunction c = indicator(*when);
+    if (negate) c = TimeFunction::apply(runtime::TimeOp::Not, c);
+    // (The split is the directive's, as an #if's is.)
+    const runtime::TruthPieces pieces = split_domain(c, opened);
+    if (const auto whole = whole_truth(pieces)) rest(*whole);
+    else split_time(in, opened, c, pieces, rest);
+    return true;
+}
+
+
+}  // namespace hexant::language

@@ -1,0 +1,143 @@
+// The Interpreter's #macro: definitions and calls, the body read from its stored source with its own positions.
+// Part of the Interpreter (language/interpreter_state.hpp), whose end includes it.
+#pragma once
+
+#include "language/interpreter_state.hpp"
+
+namespace hexant::language {
+
+template <typename Item, template <typename...> class Action,
+          template <typename...> class Control, typename ParseInput>
+bool Interpreter::define_macro(ParseInput& in) {
+    const auto opened = directive_position(in);
+    if (!keyword(in, "macro")) return false;
+    std::string name = identifier(in, "the macro's name after #macro");
+    std::vector<std::string> parameters;
+    read<grammar::lparen, Action, Control>(in);
+    while (in.current() != in.end() && *in.current() != ')') {
+        if (!parameters.empty()) {
+            // POV-Ray lets one leave out the ',' and allows a trailing one.
+            (void)p::match<grammar::comma, p::apply_mode::nothing, p::rewind_mode::required,
+                           p::nothing, p::normal>(in);
+            if (in.current() != in.end() && *in.current() == ')') break;
+        }
+        parameters.push_back(identifier(in, "a parameter name in #macro ( )"));
+    }
+    read<grammar::rparen, Action, Control>(in);
+    const char* body_begin = in.current();
+    const auto body_position = in.position();
+    skip_text<Control>(in);
+    const char* body_end = in.current();
+    const Divider d = next_divider(in);
+    if (d != Divider::End) unclosed(opened, "#macro", d, in);
+    auto macro = std::make_shared<Macro>(Macro{std::move(name), std::move(parameters), body_begin,
+                                               body_end, body_position, opened});
+    declare(macro->name, Value{std::shared_ptr<const Macro>(macro)}, false);
+    return true;
+}
+
+template <typename Item, template <typename...> class Action,
+          template <typename...> class Control, typename ParseInput>
+bool Interpreter::call_macro(ParseInput& in) {
+    const char* b = in.current();
+    const char* e = in.end();
+    const char* q = b;
+    while (q != e && (std::isalnum(static_cast<unsigned char>(*q)) || *q == '_')) ++q;
+    if (q == b || std::isdigit(static_cast<unsigned char>(*b))) return false;
+    const std::string name(b, q);
+    const Value* v = lookup(name);
+    if (v == nullptr || !v->is<std::shared_ptr<const Macro>>()) return false;
+    const auto macro = v->as<std::shared_ptr<const Macro>>();
+    const auto call_place = in.position();
+    in.bump_in_this_line(static_cast<std::size_t>(q - b));
+    (void)p::match<grammar::ws, p::apply_mode::nothing, p::rewind_mode::dontcare, p::nothing, p::normal>(
+        in);
+    read<grammar::call_open, Action, Control>(in);
+    open_frame();
+    // An argument that is just a declared name is passed by reference, as in
+    // POV-Ray: what the macro #declares to its parameter goes back to it.
+    std::vector<std::string> references;
+    if (in.current() != in.end() && *in.current() != ')') {
+        do {
+            const char* start = in.current();
+            read<grammar::call_argument, Action, Control>(in);
+            std::string text(start, in.current());
+            while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
+            const bool is_name = !text.empty() && !std::isdigit(static_cast<unsigned char>(text[0])) &&
+                                 std::all_of(text.begin(), text.end(), [](char c) {
+                                     return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+                                 });
+            references.push_back(is_name && lookup(text) ? text : std::string());
+        } while (p::match<grammar::comma, p::apply_mode::nothing, p::rewind_mode::required,
+                          p::nothing, p::normal>(in));
+    }
+    read<grammar::call_close, Action, Control>(in);
+    std::vector<Value> args = close_frame();
+    if (args.size() != macro->parameters.size())
+        fail(call_place, "macro '" + name + "' takes " + std::to_string(macro->parameters.size()) +
+                             " argument" + (macro->parameters.size() == 1 ? "" : "s") + ", not " +
+                             std::to_string(args.size()));
+    if (macro_depth_ >= options.limits.macro_depth)
+        fail(call_place, "macro calls nested more than " +
+                             std::to_string(options.limits.macro_depth) +
+                             " deep; stopping (runaway recursion? --max-macro-depth N raises the "
+                             "limit)");
+    count_step(call_place);
+    count_text(static_cast<std::size_t>(macro->body_end - macro->body_begin), call_place);
+    scopes_.emplace_back();
+    try {
+        for (std::size_t i = 0; i < args.size(); ++i)
+            set_variable(scopes_.back(), macro->parameters[i], std::move(args[i]));
+    } catch (const ValueError& e) {
+        scopes_.pop_back();
+        fail(call_place, e.what());
+    }
+    ++macro_depth_;
+    const std::size_t before = depth();
+    const auto& at = macro->body_position;
+    Input body(macro->body_begin, macro->body_end, at.source, at.byte, at.line, at.column);
+    try {
+        (void)p::match<p::seq<grammar::ws, p::star<Item>, p::must<grammar::macro_body_end>>,
+                 p::apply_mode::action, p::rewind_mode::dontcare, Action, Control>(body, *this);
+    } catch (const unsupported_use&) {
+        // A #declare around the call may keep it as source and read on.
+        --macro_depth_;
+        scopes_.pop_back();
+        throw;
+    } catch (const p::parse_error& error) {
+        SceneError scene_error = to_scene_error(error);
+        scene_error.add_context(place(call_place, "in macro '" + name + "' called here"));
+        throw scene_error;
+    } catch (SceneError& scene_error) {
+        scene_error.add_context(place(call_place, "in macro '" + name + "' called here"));
+        throw;
+    }
+    --macro_depth_;
+    for (std::size_t i = 0; i < references.size(); ++i) {
+        if (references[i].empty()) continue;
+        auto found = scopes_.back().find(macro->parameters[i]);
+        if (found == scopes_.back().end()) continue;
+        for (std::size_t level = scopes_.size() - 1; level-- > 0;) {
+            auto target = scopes_[level].find(references[i]);
+            if (target != scopes_[level].end()) {
+                try {
+                    set_variable(scopes_[level], references[i], found->second.value);
+                } catch (const ValueError& e) {
+                    scopes_.pop_back();
+                    fail(call_place, e.what());
+                }
+                break;
+            }
+        }
+    }
+    scopes_.pop_back();
+    if constexpr (std::is_same_v<Item, grammar::value_item>) {
+        if (depth() != before + 1)
+            fail(call_place, "macro '" + name + "' is used as a value but gives " +
+                                 std::to_string(depth() - before) + " values");
+    }
+    return true;
+}
+
+
+}  // namespace hexant::language

@@ -1,0 +1,331 @@
+// The Interpreter's objects: the checks of their patterns, the scene's objects and lights, arrays.
+// Part of the Interpreter (language/interpreter_state.hpp).
+#include "language/interpreter.hpp"
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <regex>
+#include <sstream>
+#include <set>
+
+#include "language/checked_integer.hpp"
+#include "language/interpreter_state.hpp"
+#include "language/source_files.hpp"
+#include "runtime/objects/parameter_check.hpp"
+
+namespace hexant::language {
+
+// ------------------------------------------------------------------ objects
+
+namespace {
+
+// The walks below over an object and the objects nested in it keep their
+// own stack, not the thread's: a record may nest kMaxObjectDepth deep, and
+// a frame per level overflowed the main thread's 8 MB under AddressSanitizer
+// (whose frames are several times larger).
+
+// Calls visit(record) for the object and every object nested in it.
+template <class Visit>
+void for_each_nested(const runtime::ObjectRecord& object, Visit visit) {
+    std::vector<const runtime::ObjectRecord*> pending{&object};
+    while (!pending.empty()) {
+        const runtime::ObjectRecord* record = pending.back();
+        pending.pop_back();
+        visit(*record);
+        if (const auto* csg = std::get_if<runtime::Csg>(&record->shape))
+            for (auto it = csg->children.rbegin(); it != csg->children.rend(); ++it)
+                pending.push_back(it->get());  // reversed: children visited in order
+    }
+}
+
+}  // namespace
+
+// A pattern hexant lacks, in a pigment (its pigment map's too) or a
+// normal: the error where the scene uses it (check says it, not only render).
+namespace {
+
+// (A declared graph of maps may share entries: each is checked once. A
+// texture and its pigment share an address: the kind is part of the key.)
+using Checked = std::set<std::pair<int, const void*>>;
+void check(const runtime::Pigment& pigment, Checked& seen) {
+    if (!seen.insert({0, &pigment}).second) return;
+    if (pigment.pattern == runtime::Pigment::Pattern::Unsupported)
+        throw ValueError("pigment pattern '" + pigment.unsupported_name + "' (written at " +
+                         pigment.unsupported_place.to_string() + ") is not supported by hexant");
+    for (const auto& entry : pigment.pigment_map) check(*entry.pigment, seen);
+}
+void check(const runtime::Normal& normal, Checked& seen) {
+    if (!seen.insert({1, &normal}).second) return;
+    if (!normal.unsupported_name.empty())
+        throw ValueError("normal pattern '" + normal.unsupported_name + "' (written at " +
+                         normal.unsupported_place.to_string() + ") is not supported by hexant");
+    for (const auto& entry : normal.normal_map) check(*entry.normal, seen);
+}
+void check(const runtime::Texture& texture, Checked& seen) {
+    if (!seen.insert({2, &texture}).second) return;
+    check(texture.pigment, seen);
+    if (texture.normal) check(*texture.normal, seen);
+    for (const auto& layer : texture.below) check(layer, seen);
+    for (const auto& entry : texture.texture_map) check(*entry.texture, seen);
+}
+
+}  // namespace
+
+void check_pigment(const runtime::Pigment& pigment) {
+    Checked seen;
+    check(pigment, seen);
+}
+void check_normal(const std::optional<runtime::Normal>& normal) {
+    Checked seen;
+    if (normal) check(*normal, seen);
+}
+void check_texture(const runtime::Texture& texture) {
+    Checked seen;
+    check(texture, seen);
+}
+
+namespace {
+
+void check_patterns(const runtime::ObjectRecord& object) {
+    for_each_nested(object, [](const runtime::ObjectRecord& record) {
+        if (record.texture) check_texture(*record.texture);
+    });
+}
+
+// Lights inside CSGs move with them: hand them to the scene with the
+// transforms of every object around them.
+void collect_lights(const runtime::ObjectRecord& object, std::vector<runtime::LightRecord>& lights) {
+    struct Pending {
+        const runtime::ObjectRecord* record;
+        // The transform of the objects around it, shared by its siblings: a
+        // union of 10^5 objects holds one copy, not one per child.
+        std::shared_ptr<const runtime::Transform> outer;
+    };
+    std::vector<Pending> pending{{&object, std::make_shared<const runtime::Transform>()}};
+    while (!pending.empty()) {
+        const Pending p = std::move(pending.back());
+        pending.pop_back();
+        auto here = std::make_shared<runtime::Transform>(p.record->transform);
+        here->append(*p.outer);
+        for (auto light : p.record->lights) {
+            light.transform.append(*here);
+            lights.push_back(std::move(light));
+        }
+        if (const auto* csg = std::get_if<runtime::Csg>(&p.record->shape))
+            for (auto it = csg->children.rbegin(); it != csg->children.rend(); ++it)
+                pending.push_back({it->get(), here});
+    }
+}
+
+}  // namespace
+
+void Interpreter::check_parameters(const runtime::ObjectRecord& object,
+                                   const p::position& where) const {
+    for_each_nested(object, [&](const runtime::ObjectRecord& record) {
+        std::optional<std::string> problem = runtime::bad_parameter(record, scene.animation);
+        for (std::size_t i = 0; !problem && i < record.lights.size(); ++i)
+            problem = runtime::bad_parameter(record.lights[i], scene.animation);
+        if (!problem) return;
+        if (record.place.file.empty()) fail(where, *problem);
+        SceneError error(*problem, place(record.place));
+        if (record.place.file != where.source || record.place.line != where.line)
+            error.add_context(place(where, "in the object added to the scene here"));
+        throw error;
+    });
+}
+
+void Interpreter::add_object(const runtime::ObjectPtr& object, const p::position& where) {
+    try {
+        check_patterns(*object);
+    } catch (const ValueError& e) {
+        fail(where, e.what());
+    }
+    check_parameters(*object, where);
+    std::vector<runtime::LightRecord> lights;
+    collect_lights(*object, lights);
+    scene.objects.push_back(object);
+    for (auto& light : lights) add_light(std::move(light), where);
+}
+
+void Interpreter::add_light(runtime::LightRecord light, const p::position& where) {
+    if (light.looks_like) {
+        // POV-Ray's Parse_Light_Source: the object moved to the light's
+        // centre and through its own modifiers (as it was read), no_shadow,
+        // then transformed with the light. (POV-Ray moves it to the centre
+        // as the transforms written before looks_like left it, without
+        // turning it by them; hexant turns it by every transform of the
+        // light.)
+        runtime::ObjectRecord placed = *light.looks_like;
+        placed.transform.append(light.transform);
+        placed.no_shadow = true;
+        placed.lifetime = placed.lifetime.intersect(light.lifetime);
+        light.looks_like.reset();
+        add_object(std::make_shared<const runtime::ObjectRecord>(std::move(placed)), where);
+    }
+    scene.lights.push_back(std::move(light));
+}
+
+void fill_array(Array& array, const Array& list, std::size_t dimension, std::size_t& next) {
+    const int want = array.dimensions[dimension];
+    if (static_cast<int>(list.elements.size()) != want)
+        throw ValueError("the array's dimension " + std::to_string(dimension + 1) + " has " +
+                         std::to_string(want) + " elements but " +
+                         std::to_string(list.elements.size()) + " were given");
+    for (const auto& element : list.elements) {
+        const Value& v = **element;
+        const bool is_list = v.is<std::shared_ptr<Array>>() &&
+                             v.as<std::shared_ptr<Array>>()->dimensions.empty();
+        if (dimension + 1 < array.dimensions.size()) {
+            if (!is_list) throw ValueError("expected a { } list for the array's next dimension");
+            fill_array(array, *v.as<std::shared_ptr<Array>>(), dimension + 1, next);
+        } else {
+            if (is_list) throw ValueError("the array has fewer dimensions than this { } list");
+            array.charge.add(element_bytes(v));
+            array.elements[next++] = std::make_shared<Value>(v);
+        }
+    }
+}
+
+namespace {
+
+// A shape block's values for its kind's read (runtime/objects/shape_arguments.hpp),
+// converted by the language's own rules; errors are ValueErrors, which the
+// rule reading the block places.
+class BlockArguments final : public runtime::objects::ShapeArguments {
+  public:
+    BlockArguments(std::string keyword, std::vector<std::string> options, std::vector<Value>& values,
+                   const Interpreter& st, const p::position& where)
+        : keyword_(std::move(keyword)), options_(std::move(options)), values_(values), st_(st),
+          where_(where) {}
+
+    const std::string& keyword() const override { return keyword_; }
+    const std::vector<std::string>& options() const override { return options_; }
+    std::size_t size() const override { return values_.size(); }
+    TimeFunction number(std::size_t i, const std::string& what) const override {
+        return to_float(at(i), what);
+    }
+    runtime::Vector3Function vector3(std::size_t i, const std::string& what) const override {
+        return to_vector3(at(i), what);
+    }
+    runtime::Vector2Function vector2(std::size_t i, const std::string& what) const override {
+        return to_vector2(at(i), what);
+    }
+    double constant(std::size_t i, const std::string& what) const override {
+        return to_constant(at(i), what);
+    }
+    std::string string(std::size_t i, const std::string& what) const override {
+        return to_string_value(at(i), what);
+    }
+    std::filesystem::path find_file(const std::string& name, const std::string& kind) const override {
+        if (name.empty()) fail(keyword_ + "'s " + kind + " name is empty");
+        // Also where POV-Ray's default library path finds them on Debian;
+        // the system's fonts may be named by their path.
+        return st_.resolve_include(name, where_, kind,
+                                   {kPovRayIncludeDir, kPovRayFontDir, "/usr/share/fonts"});
+    }
+    const std::string& charset() const override { return st_.charset; }
+    [[noreturn]] void fail(const std::string& message) const override { throw ValueError(message); }
+
+  private:
+    const Value& at(std::size_t i) const {
+        if (i >= values_.size()) fail(keyword_ + " has no value " + std::to_string(i + 1));
+        return values_[i];
+    }
+
+    std::string keyword_;
+    std::vector<std::string> options_;
+    std::vector<Value>& values_;
+    const Interpreter& st_;
+    p::position where_;
+};
+
+template <class... Kinds>
+void read_shape(const std::string& keyword, const runtime::objects::ShapeArguments& args,
+                runtime::ObjectRecord& record, runtime::objects::KindList<Kinds...>) {
+    // (Kinds with a rule of their own are never read here.)
+    const bool found = ((keyword == Kinds::keyword ? ([&] {
+        if constexpr (!runtime::objects::kind_detail::own_syntax<Kinds>()) {
+            record.shape = Kinds::read(args);
+            // What POV-Ray applies before the scene's own transformations.
+            if constexpr (requires { Kinds::placement(); }) record.transform = Kinds::placement();
+        }
+    }(), true) : false) || ...);
+    if (!found) throw std::logic_error("hexant: unknown shape " + keyword);
+}
+
+// The most objects one shape may become by strings that change with clock
+// (str(clock) over 10,000 frames is 10,000 texts).
+constexpr std::size_t kMaxTimedStringObjects = 100'000;
+
+}  // namespace
+
+runtime::ObjectRecord make_shape(const std::string& kind, std::vector<std::string> options,
+                                 std::vector<Value>& args, Interpreter& st, const p::position& where) {
+    // A string value that changes with clock (str(clock, 0, 2), a branch on
+    // clock naming two fonts): one object per text, each living while its
+    // text holds, together in a union. (Further such strings split each.)
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        if (!args[i].is<TimedString>()) continue;
+        const auto texts = args[i].as<TimedString>().by_text();
+        if (texts.size() > kMaxTimedStringObjects)
+            throw ValueError(kind + "'s value " + std::to_string(i + 1) + " changes with clock into " +
+                             std::to_string(texts.size()) + " different strings, more than " +
+                             std::to_string(kMaxTimedStringObjects) + " objects");
+        runtime::Csg group;
+        for (const auto& [text, life] : texts) {
+            std::vector<Value> one = args;
+            one[i] = Value{text};
+            runtime::ObjectRecord child = make_shape(kind, options, one, st, where);
+            child.lifetime = child.lifetime.intersect(life);
+            child.place = st.shape_place;
+            group.children.push_back(std::make_shared<const runtime::ObjectRecord>(std::move(child)));
+        }
+        runtime::ObjectRecord record;
+        record.shape = std::move(group);
+        return record;
+    }
+    const BlockArguments arguments(kind, std::move(options), args, st, where);
+    runtime::ObjectRecord record;
+    read_shape(kind, arguments, record, runtime::ShapeKinds{});
+    return record;
+}
+
+void set_shape_setting(runtime::ObjectRecord& record, const std::string& name,
+                       std::vector<Value>& values, Interpreter& st, const p::position& where) {
+    const BlockArguments value(name, {}, values, st, where);
+    bool taken = false;
+    std::visit(
+        [&](auto& shape) {
+            using Kind = std::decay_t<decltype(shape)>;
+            if constexpr (requires { shape.set(name, value); })
+                if (runtime::objects::takes_setting<Kind>(name)) {
+                    shape.set(name, value);
+                    taken = true;
+                }
+        },
+        record.shape);
+    if (taken) return;
+    // Which kinds it belongs to, for the message.
+    std::vector<std::string> owners;
+    [&]<class... Kinds>(runtime::objects::KindList<Kinds...>) {
+        ((runtime::objects::takes_setting<Kinds>(name) ? (owners.emplace_back(Kinds::keyword), 0) : 0),
+         ...);
+    }(runtime::ShapeKinds{});
+    std::string kinds;
+    for (std::size_t i = 0; i < owners.size(); ++i)
+        kinds += (i == 0 ? "" : i + 1 == owners.size() ? " or " : ", ") + owners[i];
+    throw ValueError("'" + name + "' belongs to a " + kinds + ", not a " +
+                     runtime::shape_name(record.shape));
+}
+
+void add_blob_component(runtime::ObjectRecord& record, const std::string& kind,
+                        std::vector<Value>& values, Interpreter& st, const p::position& where) {
+    auto* blob = std::get_if<runtime::Blob>(&record.shape);
+    if (!blob) throw ValueError("a blob component belongs in a blob");
+    const BlockArguments args("blob " + kind, {}, values, st, where);
+    blob->add_component(kind, args);
+}
+
+}  // namespace hexant::language

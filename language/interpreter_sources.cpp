@@ -1,0 +1,101 @@
+// The Interpreter's sources and errors: the texts it reads, and where a message points.
+// Part of the Interpreter (language/interpreter_state.hpp).
+#include "language/interpreter.hpp"
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <regex>
+#include <sstream>
+#include <set>
+
+#include "language/checked_integer.hpp"
+#include "language/interpreter_state.hpp"
+#include "runtime/objects/parameter_check.hpp"
+
+namespace hexant::language {
+
+// ------------------------------------------------------------------ sources and errors
+
+namespace {
+
+// The newest source of that name (an include read twice is kept twice if
+// its text changed in between).
+const std::string* newest_source(const std::deque<std::pair<std::string, std::string>>& sources,
+                                 const std::string& name) {
+    for (auto it = sources.rbegin(); it != sources.rend(); ++it)
+        if (it->first == name) return &it->second;
+    return nullptr;
+}
+
+}  // namespace
+
+const std::string& Interpreter::add_source(const std::string& name, std::string text) {
+    // A file included again with the same text shares the kept copy (an
+    // #include inside a loop kept one copy a turn). Macros declared in it
+    // point into the copy, which is never changed.
+    if (const std::string* kept = newest_source(sources_, name); kept != nullptr && *kept == text)
+        return *kept;
+    sources_.emplace_back(name, std::move(text));
+    return sources_.back().second;
+}
+
+namespace {
+
+// The line of `text` that starts at `begin`, without its end of line: up
+// to a '\n', less a '\r' before it. A bare '\r' ends no line, as the
+// reader counts lines (PEGTL's lf_crlf).
+std::string_view line_from(const std::string& text, std::size_t begin) {
+    std::size_t end = begin;
+    while (end < text.size() && text[end] != '\n') ++end;
+    if (end > begin && text[end - 1] == '\r') --end;
+    return std::string_view(text).substr(begin, end - begin);
+}
+
+}  // namespace
+
+ErrorPlace Interpreter::place(const p::position& position, std::string note) const {
+    ErrorPlace place{position.source, position.line, position.column, {}, std::move(note)};
+    if (const std::string* text = newest_source(sources_, position.source)) {
+        std::size_t begin = std::min(position.byte, text->size());
+        while (begin > 0 && (*text)[begin - 1] != '\n') --begin;
+        place.set_source_line(line_from(*text, begin));
+    }
+    return place;
+}
+
+ErrorPlace Interpreter::place(const runtime::SourcePlace& where, std::string note) const {
+    ErrorPlace place{where.file, where.line, where.column, {}, std::move(note)};
+    if (const std::string* text = newest_source(sources_, where.file)) {
+        // Found by its number: a record keeps its line, not its byte.
+        std::size_t begin = 0;
+        for (std::size_t line = 1; line < where.line && begin != std::string::npos; ++line) {
+            begin = text->find('\n', begin);
+            if (begin != std::string::npos) ++begin;
+        }
+        if (begin != std::string::npos) place.set_source_line(line_from(*text, begin));
+    }
+    return place;
+}
+
+SceneError Interpreter::to_scene_error(const p::parse_error& e) const {
+    const auto& positions = e.positions();
+    SceneError error(std::string(e.message()),
+                     positions.empty() ? ErrorPlace{} : place(positions.front()));
+    for (std::size_t i = 1; i < positions.size(); ++i) error.add_context(place(positions[i], "from here"));
+    return error;
+}
+
+std::ostream& Interpreter::messages() const {
+    return options.messages ? *options.messages : std::cerr;
+}
+
+void Interpreter::warn(const p::position& position, const std::string& message) {
+    std::string text = position.source + ":" + std::to_string(position.line) + ":" +
+                       std::to_string(position.column) + ": warning: " + message;
+    messages() << text << "\n";
+    scene.warnings.push_back(std::move(text));
+}
+
+}  // namespace hexant::language

@@ -1,0 +1,405 @@
+// The Interpreter's symbols: scopes, declarations, the time split of a value, and #include's reading of files.
+// Part of the Interpreter (language/interpreter_state.hpp).
+#include "language/interpreter.hpp"
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <regex>
+#include <sstream>
+#include <set>
+
+#include "language/checked_integer.hpp"
+#include "language/array_index.hpp"
+#include "language/interpreter_state.hpp"
+#include "language/source_files.hpp"
+#include "runtime/objects/parameter_check.hpp"
+
+namespace hexant::language {
+
+// ------------------------------------------------------------------ symbols
+
+const Value* Interpreter::lookup(const std::string& name) const {
+    for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it) {
+        auto found = it->find(name);
+        if (found != it->end()) return &found->second.value;
+    }
+    return nullptr;
+}
+
+const runtime::Lifetime* Interpreter::declared_when(const std::string& name) const {
+    for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it) {
+        auto found = it->find(name);
+        if (found != it->end()) return &found->second.defined;
+    }
+    return nullptr;
+}
+
+void Interpreter::check_declared(const std::string& name) const {
+    const runtime::Lifetime* when = declared_when(name);
+    if (when == nullptr || when->is_always()) return;
+    for (const runtime::Interval& piece : domain.within(animation_time()))
+        if (!when->holds_all(piece)) {
+            // The first instant of the piece it does not hold.
+            const runtime::Lifetime gaps = when->complement_within(piece);
+            const double t = gaps.pieces().empty() ? piece.lo : gaps.pieces().front().lo;
+            std::ostringstream message;
+            message.precision(17);
+            message << "'" << name << "' is not declared at clock " << t
+                    << ": it is declared only on some pieces of time (under a branch on clock)";
+            throw ValueError(message.str());
+        }
+}
+
+void Interpreter::log_change(const Scope& scope, const std::string& name) {
+    if (branch_logs_.empty() || restoring_) return;
+    BranchLog& log = branch_logs_.back();
+    const std::size_t index = static_cast<std::size_t>(&scope - scopes_.data());
+    if (index >= log.scopes) return;  // a scope of this side's own (a macro's)
+    VariableKey key{index, name};
+    if (log.before.count(key)) return;
+    log.before.emplace(key, variable_at(key));
+}
+
+std::optional<Interpreter::Held> Interpreter::variable_at(const VariableKey& key) const {
+    if (key.first >= scopes_.size()) return std::nullopt;
+    const Scope& scope = scopes_[key.first];
+    const auto found = scope.find(key.second);
+    if (found == scope.end()) return std::nullopt;
+    return Held{found->second.value, found->second.defined};
+}
+
+void Interpreter::set_variable_at(const VariableKey& key, const std::optional<Held>& held) {
+    Scope& scope = scopes_[key.first];
+    if (held) {
+        set_variable(scope, key.second, held->value);
+        scope[key.second].defined = held->defined;
+    } else {
+        log_change(scope, key.second);
+        scope.erase(key.second);
+    }
+}
+
+namespace {
+
+// What block() does not count (Interpreter::watched_edits_): the kind of
+// shape and the transform (apply_transform edits the block directly). A
+// side of a time split may change neither (not yet piecewise in time).
+bool same_but_members(const runtime::ObjectRecord& a, const runtime::ObjectRecord& b) {
+    const auto* ca = std::get_if<runtime::Csg>(&a.shape);
+    const auto* cb = std::get_if<runtime::Csg>(&b.shape);
+    if (a.shape.index() != b.shape.index() || (ca && ca->kind != cb->kind)) return false;
+    return a.transform.steps().size() == b.transform.steps().size() &&
+           a.texture.has_value() == b.texture.has_value() &&
+           a.interior.has_value() == b.interior.has_value() && a.no_shadow == b.no_shadow &&
+           a.hollow == b.hollow && a.inverse == b.inverse;
+}
+
+}  // namespace
+
+void Interpreter::merge_time_sides(const p::position& at, const TimeFunction& c,
+                                   std::optional<TimeSide> (&sides)[2],
+                                   const std::optional<runtime::ObjectRecord>& top_before,
+                                   const runtime::CameraRecord& camera_before,
+                                   const runtime::ColourFunction& background_before) {
+    try {
+        // The camera: each side's on its own pieces, ahead of what held
+        // before (which still holds outside this split's time).
+        if ((sides[0] && sides[0]->camera) || (sides[1] && sides[1]->camera)) {
+            runtime::CameraRecord merged = camera_before;
+            std::vector<runtime::CameraRecord::Piece> fresh;
+            for (const auto& s : sides) {
+                if (!s) continue;
+                const runtime::CameraRecord& camera = s->camera ? *s->camera : camera_before;
+                for (const auto& piece : camera.pieces) fresh.push_back({piece.when.intersect(s->when), piece.items});
+                fresh.push_back({s->when, camera.items});
+            }
+            fresh.insert(fresh.end(), camera_before.pieces.begin(), camera_before.pieces.end());
+            merged.pieces = std::move(fresh);
+            scene.camera = std::move(merged);
+            ++camera_sets;
+        }
+        // The background: `c ? one : other`, component by component.
+        if ((sides[0] && sides[0]->background) || (sides[1] && sides[1]->background)) {
+            runtime::ColourFunction colour[2];
+            for (int side = 0; side < 2; ++side)
+                colour[side] = sides[side] && sides[side]->background ? *sides[side]->background : background_before;
+            if (!sides[1]) scene.background = colour[0];
+            else if (!sides[0]) scene.background = colour[1];
+            else
+                for (int i = 0; i < 5; ++i)
+                    scene.background.c[i] =
+                        TimeFunction::apply(runtime::TimeOp::Conditional, c, colour[0].c[i], colour[1].c[i]);
+            ++background_sets;
+        }
+        // The variables either side changed.
+        std::map<VariableKey, bool> changed;
+        for (const auto& s : sides)
+            if (s)
+                for (const auto& entry : s->after) changed[entry.first] = true;
+        for (const auto& [key, unused] : changed) {
+            (void)unused;
+            const std::optional<Held> before = variable_at(key);
+            std::optional<Held> values[2];
+            for (int side = 0; side < 2; ++side) {
+                if (!sides[side]) continue;
+                const auto found = sides[side]->after.find(key);
+                values[side] = found != sides[side]->after.end() ? found->second : before;
+            }
+            std::optional<Held> merged;
+            if (!sides[1]) merged = values[0];
+            else if (!sides[0]) merged = values[1];
+            else if (values[0] || values[1]) {
+                // Declared where either side has it, on that side's pieces.
+                std::vector<runtime::Interval> declared;
+                std::optional<Value> value[2];
+                for (int side = 0; side < 2; ++side) {
+                    if (!values[side]) continue;
+                    value[side] = values[side]->value;
+                    for (const auto& piece :
+                         values[side]->defined.intersect(sides[side]->when).within(animation_time()))
+                        declared.push_back(piece);
+                }
+                runtime::Lifetime defined = runtime::Lifetime::of(std::move(declared));
+                if (defined.holds_all(animation_time())) defined = runtime::Lifetime::always();
+                merged = Held{*merge_sides("'" + key.second + "'", c, value[0], sides[0]->when, value[1], sides[1]->when),
+                              std::move(defined)};
+            }
+            set_variable_at(key, merged);
+        }
+        // The values they left (a macro's result): one each, side by side.
+        if (sides[0] && sides[1] && sides[0]->pushed.size() != sides[1]->pushed.size())
+            throw ValueError("the two sides of this clock-dependent branch give " +
+                             std::to_string(sides[0]->pushed.size()) + " and " +
+                             std::to_string(sides[1]->pushed.size()) +
+                             " values; each side must give as many");
+        const std::size_t count = sides[0] ? sides[0]->pushed.size() : sides[1] ? sides[1]->pushed.size() : 0;
+        for (std::size_t i = 0; i < count; ++i) {
+            if (!sides[1]) push(sides[0]->pushed[i]);
+            else if (!sides[0]) push(sides[1]->pushed[i]);
+            else
+                push(*merge_sides("the value this branch gives", c, sides[0]->pushed[i], sides[0]->when,
+                                  sides[1]->pushed[i], sides[1]->when));
+        }
+        // The object around the branch: the CSG members and lights each side
+        // added (each living on its side's pieces, finish_object), and
+        // nothing else changed.
+        if (top_before) {
+            runtime::ObjectRecord merged = *top_before;
+            auto* members = std::get_if<runtime::Csg>(&merged.shape);
+            const std::size_t base_members =
+                members ? std::get<runtime::Csg>(top_before->shape).children.size() : 0;
+            for (const auto& s : sides) {
+                if (!s || !s->top) continue;
+                if (s->top_edited || !same_but_members(*s->top, *top_before))
+                    throw ValueError("this clock-dependent branch changes the object around it "
+                                     "(a transform, texture or flag); hexant makes the CSG "
+                                     "members it adds piecewise in time, not yet the object's "
+                                     "own modifiers (put the branch in the value they use)");
+                if (const auto* csg = std::get_if<runtime::Csg>(&s->top->shape))
+                    members->children.insert(members->children.end(),
+                                             csg->children.begin() + static_cast<std::ptrdiff_t>(base_members),
+                                             csg->children.end());
+                merged.lights.insert(merged.lights.end(),
+                                     s->top->lights.begin() +
+                                         static_cast<std::ptrdiff_t>(top_before->lights.size()),
+                                     s->top->lights.end());
+            }
+            blocks.back() = std::move(merged);
+        }
+    } catch (const ValueError& e) {
+        fail(at, e.what());
+    }
+}
+
+runtime::TruthPieces Interpreter::split_domain(const TimeFunction& c, const p::position& at) {
+    runtime::TruthPieces pieces;
+    try {
+        pieces = runtime::split_by_truth(c, domain.within(animation_time()), options.limits.time_pieces);
+    } catch (const runtime::LimitError& e) {
+        fail(at, e.what());
+    }
+    // (Reported where it does split: a #while on clock that holds from its
+    // second turn on would list every turn.)
+    if (!pieces.instants.empty())
+        scene.time_splits.push_back({{at.source, at.line, at.column}, pieces.instants});
+    return pieces;
+}
+
+void Interpreter::require_whole_time(const p::position& where, const char* what) const {
+    if (domain.is_always()) return;
+    fail(where, std::string(what) +
+                    " is set under a branch whose condition depends on clock; hexant makes "
+                    "objects, lights, floats and vectors piecewise in time, not yet this");
+}
+
+void Interpreter::set_variable(Scope& scope, const std::string& name, Value value) {
+    log_change(scope, name);
+    const std::size_t bytes = string_bytes(value);
+    auto [slot, added] = scope.try_emplace(name);
+    Variable& variable = slot->second;
+    variable.charge.attach(array_memory_);
+    try {
+        variable.charge.set(bytes);
+    } catch (const ValueError&) {
+        if (added) scope.erase(slot);  // past the budget: no variable made
+        throw;
+    }
+    variable.value = std::move(value);
+    variable.defined = runtime::Lifetime::always();  // declared now
+}
+
+void Interpreter::declare(const std::string& name, Value value, bool local) {
+    // #declare of a name local to the current macro or file changes that
+    // local (a macro's parameter, say); otherwise it is global.
+    if (!local && scopes_.size() > 1 && scopes_.back().count(name)) local = true;
+    auto& table = local ? scopes_.back() : scopes_.front();
+    set_variable(table, name, std::move(value));
+}
+
+void Interpreter::assign_element(const std::string& name, const std::vector<Value>& indices,
+                                 Value value, const p::position& where) {
+    Value* target = nullptr;
+    for (auto it = scopes_.rbegin(); it != scopes_.rend() && !target; ++it) {
+        auto found = it->find(name);
+        if (found != it->end()) target = &found->second.value;
+    }
+    if (!target) fail(where, "undeclared array '" + name + "'");
+    // (An array is shared, not copied, by the sides of a time split: an
+    // element set on one side would be seen on the other.)
+    if (!branch_logs_.empty())
+        fail(where, "an array element set under a branch whose condition depends on clock; "
+                    "hexant cannot yet make an array piecewise in time (declare a float or "
+                    "vector under the branch instead)");
+    if (!target->is<std::shared_ptr<Array>>()) fail(where, "'" + name + "' is not an array");
+    auto& array = *target->as<std::shared_ptr<Array>>();
+    std::vector<double> at;
+    try {
+        for (const auto& i : indices) at.push_back(to_constant(i, "an array index"));
+        auto& slot = array.elements[element_index(array, at)];
+        array.charge.add(element_bytes(value));
+        if (slot) array.charge.remove(element_bytes(**slot));
+        slot = std::make_shared<Value>(std::move(value));
+    } catch (const ValueError& e) {
+        fail(where, e.what());
+    }
+}
+
+bool Interpreter::undefine(const std::string& name) {
+    for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it)
+        if (it->count(name)) {
+            log_change(*it, name);
+            it->erase(name);
+            return true;
+        }
+    return false;
+}
+
+const char* const kPovRayIncludeDir = "/usr/share/povray-3.7/include";
+const char* const kPovRayFontDir = "/usr/share/fonts/truetype/povray";
+
+namespace {
+
+// Is `file` inside `folder` (both canonical)?
+bool inside(const std::filesystem::path& file, const std::filesystem::path& folder) {
+    auto f = file.begin();
+    for (auto d = folder.begin(); d != folder.end(); ++d, ++f) {
+        if (d->empty()) continue;  // a trailing separator
+        if (f == file.end() || *f != *d) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+std::string read_source_text(const std::filesystem::path& path, std::size_t max_bytes) {
+    namespace fs = std::filesystem;
+    std::error_code error;
+    // Not through a symbolic link's name: what it points at.
+    if (!fs::is_regular_file(path, error))
+        throw ValueError(fs::exists(path, error)
+                             ? "it is not a regular file (a device, FIFO or folder cannot be read)"
+                             : "it does not exist");
+    const auto size = fs::file_size(path, error);
+    if (error) throw ValueError("cannot read it: " + error.message());
+    if (size > max_bytes)
+        throw ValueError("its " + std::to_string(size) +
+                         " bytes would take the scene's reading over its limit of text, " +
+                         std::to_string(max_bytes) + " bytes left (--max-text-read N raises the limit)");
+    std::ifstream stream(path, std::ios::binary);
+    if (!stream) throw ValueError("cannot read it");
+    std::string text(size, '\0');
+    stream.read(text.data(), static_cast<std::streamsize>(size));
+    // A file that shrank while read keeps what was there; one that grew is
+    // read up to the size checked.
+    text.resize(static_cast<std::size_t>(stream.gcount()));
+    return text;
+}
+
+
+std::string Interpreter::read_include(const std::filesystem::path& path, const p::position& where) {
+    std::string text;
+    try {
+        text = read_source_text(path, options.limits.text_read - std::min(text_read_, options.limits.text_read));
+    } catch (const ValueError& e) {
+        fail(where, "include file '" + path.string() + "': " + e.what());
+    }
+    count_text(text.size(), where);
+    return text;
+}
+
+std::filesystem::path Interpreter::resolve_include(const std::string& name, const p::position& where,
+                                                   const std::string& what,
+                                                   const std::vector<std::filesystem::path>& also) const {
+    namespace fs = std::filesystem;
+    const fs::path file(name);
+    std::vector<fs::path> folders{scene_folder_};
+    folders.insert(folders.end(), options.include_paths.begin(), options.include_paths.end());
+    folders.push_back(bundled_include_dir());
+    folders.insert(folders.end(), also.begin(), also.end());
+    fs::path found;
+    std::error_code error;
+    if (file.is_absolute()) {
+        if (fs::exists(file, error)) found = file;
+    } else {
+        for (const auto& folder : folders) {
+            const fs::path candidate = folder / file;
+            if (fs::exists(candidate, error)) {
+                found = candidate;
+                break;
+            }
+        }
+    }
+    if (found.empty()) {
+        if (file.is_absolute()) fail(where, what + " '" + name + "' not found");
+        std::string searched;
+        for (const auto& folder : folders)
+            searched += (searched.empty() ? "" : ", ") + folder.string();
+        fail(where, what + " '" + name + "' not found (searched " + searched + ")");
+    }
+    // Confinement, on the file as it really is (`..` and symbolic links
+    // resolved): a regular file inside a folder a scene may read. The
+    // messages never show the file's contents.
+    const fs::path real = fs::canonical(found, error);
+    if (error) fail(where, what + " '" + name + "' cannot be read: " + error.message());
+    if (!fs::is_regular_file(real, error))
+        fail(where, what + " '" + name +
+                        "' is not a regular file (a device, FIFO or folder "
+                        "cannot be read)");
+    std::vector<fs::path> allowed = folders;
+    allowed.push_back(kPovRayIncludeDir);
+    allowed.insert(allowed.end(), options.read_paths.begin(), options.read_paths.end());
+    for (const fs::path system : {"/proc", "/sys", "/dev"})
+        if (inside(real, system))
+            fail(where, what + " '" + name + "' is a system file: refused");
+    for (const auto& folder : allowed) {
+        const fs::path root = fs::weakly_canonical(folder.empty() ? fs::path(".") : folder, error);
+        if (!error && inside(real, root)) return real;
+    }
+    fail(where, what + " '" + name +
+                    "' is outside the folders a scene may read (its own "
+                    "folder, the -L folders and the include folders; --allow-read DIR adds one)");
+}
+
+}  // namespace hexant::language
