@@ -22,13 +22,15 @@ void add_scene_arguments(CLI::App& command, SceneArguments& a) {
     command.add_flag("--cyclic", a.cyclic, "Cyclic animation (POV-Ray's Cyclic_Animation)");
     command.add_option("--shutter", a.shutter,
                        "Fraction of each frame's clock step the shutter is open (default 1)");
-    command.add_option("--shutter-curve", a.shutter_curve,
-                       "How open the shutter is over its open time, weighting the samples' times: box "
-                       "(the default), triangle, trapezoid, or keys u:w,u:w,... (u from 0 to 1 of the "
-                       "open time, w >= 0; e.g. 0:0,0.1:1,0.9:1,1:0)");
-    command.add_option("--rolling-shutter", a.rolling_shutter,
-                       "Rolling shutter: the fraction of each frame's clock step from the top row's "
-                       "opening to the bottom row's (default 0, every row at once)");
+    command.add_option(
+        "--shutter-curve", a.shutter_curve,
+        "How open the shutter is over its open time, weighting the samples' times: box "
+        "(the default), triangle, trapezoid, or keys u:w,u:w,... (u from 0 to 1 of the "
+        "open time, w >= 0; e.g. 0:0,0.1:1,0.9:1,1:0)");
+    command.add_option(
+        "--rolling-shutter", a.rolling_shutter,
+        "Rolling shutter: the fraction of each frame's clock step from the top row's "
+        "opening to the bottom row's (default 0, every row at once)");
     command.add_option("-L,--include-path", a.include_paths,
                        "Folder searched for #include after the scene's own (POV-Ray's +L)");
     command.add_option("--allow-read", a.read_paths,
@@ -40,38 +42,47 @@ void add_scene_arguments(CLI::App& command, SceneArguments& a) {
     // The limits (language/limits.hpp). Each is a range, so that "-1"
     // (which an unsigned conversion wraps to 2^64 - 1) is refused rather
     // than taken as no limit at all.
-    command.add_option("--max-loop-iterations", a.max_loop_iterations,
-                       "Stop a #while or #for after this many iterations (default 10^7)")
+    command
+        .add_option("--max-loop-iterations", a.max_loop_iterations,
+                    "Stop a #while or #for after this many iterations (default 10^7)")
         ->check(CLI::Range(std::size_t(1), std::size_t(1'000'000'000'000)));
-    command.add_option("--max-iterations", a.max_iterations,
-                       "Stop the scene after this many loop iterations and macro calls in all "
-                       "(default 10^8)")
+    command
+        .add_option("--max-iterations", a.max_iterations,
+                    "Stop the scene after this many loop iterations and macro calls in all "
+                    "(default 10^8)")
         ->check(CLI::Range(std::size_t(1), std::size_t(1'000'000'000'000)));
-    command.add_option("--max-time-pieces", a.max_time_pieces,
-                       "Pieces of time a condition that depends on clock may split the "
-                       "animation into (default 10^4)")
+    command
+        .add_option("--max-time-pieces", a.max_time_pieces,
+                    "Pieces of time a condition that depends on clock may split the "
+                    "animation into (default 10^4)")
         ->check(CLI::Range(std::size_t(1), std::size_t(1'000'000'000)));
-    command.add_option("--max-text-read", a.max_text_read,
-                       "Bytes of scene text read in all, each loop turn and macro call reading "
-                       "its body again (default 1073741824, 1 GiB)")
+    command
+        .add_option("--max-text-read", a.max_text_read,
+                    "Bytes of scene text read in all, each loop turn and macro call reading "
+                    "its body again (default 1073741824, 1 GiB)")
         ->check(CLI::Range(std::size_t(1), std::size_t(1) << 50));
-    command.add_option("--max-macro-depth", a.max_macro_depth,
-                       "Macro calls nested at most this deep (default 200)")
+    command
+        .add_option("--max-macro-depth", a.max_macro_depth,
+                    "Macro calls nested at most this deep (default 200)")
         ->check(CLI::Range(1, 100'000));
-    command.add_option("--max-include-depth", a.max_include_depth,
-                       "#include nested at most this deep (default 100)")
+    command
+        .add_option("--max-include-depth", a.max_include_depth,
+                    "#include nested at most this deep (default 100)")
         ->check(CLI::Range(1, 10'000));
-    command.add_option("--max-string-length", a.max_string_length,
-                       "Characters of one string (default 16777216, 16 Mi)")
+    command
+        .add_option("--max-string-length", a.max_string_length,
+                    "Characters of one string (default 16777216, 16 Mi)")
         ->check(CLI::Range(std::size_t(1), std::size_t(1) << 40));
-    command.add_option("--max-array-memory", a.max_array_memory_mib,
-                       "MiB the scene's arrays and its variables' strings may hold at once (default 2048)")
+    command
+        .add_option(
+            "--max-array-memory", a.max_array_memory_mib,
+            "MiB the scene's arrays and its variables' strings may hold at once (default 2048)")
         ->check(CLI::Range(std::size_t(1), std::size_t(1) << 30));
-    command.add_option("--max-frames", a.max_frames,
-                       "Frames an animation may have (default 10^6)")
+    command.add_option("--max-frames", a.max_frames, "Frames an animation may have (default 10^6)")
         ->check(CLI::Range(1LL, 2'000'000'000LL));
-    command.add_option("--max-pixels", a.max_pixels,
-                       "Pixels (width times height) an image may have (default 10^8)")
+    command
+        .add_option("--max-pixels", a.max_pixels,
+                    "Pixels (width times height) an image may have (default 10^8)")
         ->check(CLI::Range(1LL, 1LL << 40));
 }
 
@@ -102,13 +113,15 @@ ResolvedScene resolve(const SceneArguments& arguments) {
             apply_ini_file(ini->file, r, ini->section);
         } else {
             if (!named_scene.empty())
-                throw std::runtime_error("more than one scene named: " + named_scene + " and " + file);
+                throw std::runtime_error("more than one scene named: " + named_scene + " and " +
+                                         file);
             named_scene = file;
         }
     }
     if (!named_scene.empty()) r.scene = named_scene;
     if (r.scene.empty())
-        throw std::runtime_error("no scene: name a .pov file or set Input_File_Name in an .ini file");
+        throw std::runtime_error(
+            "no scene: name a .pov file or set Input_File_Name in an .ini file");
     auto& a = r.options.animation;
     if (arguments.width) a.width = *arguments.width;
     if (arguments.height) a.height = *arguments.height;
@@ -161,7 +174,8 @@ ResolvedScene resolve(const SceneArguments& arguments) {
     if (arguments.max_pixels) limits.image_pixels = *arguments.max_pixels;
     // A single clock value on a still is POV-Ray's +K: the still's clock.
     if (r.at_clock && !a.is_animation()) a.initial_clock = *r.at_clock;
-    if (a.width < 1 || a.height < 1) throw std::runtime_error("the image size must be at least 1 by 1");
+    if (a.width < 1 || a.height < 1)
+        throw std::runtime_error("the image size must be at least 1 by 1");
     // Checked here, before any pixel is allocated: -W 100000 -H 100000
     // ended in std::bad_alloc with no word of why.
     if (static_cast<long long>(a.width) * a.height > limits.image_pixels)
@@ -181,16 +195,19 @@ ResolvedScene resolve(const SceneArguments& arguments) {
                                  std::to_string(a.final_frame) +
                                  "; --max-frames N raises the limit)");
     // Written so that NaN fails too (every comparison with NaN is false).
-    if (!(a.shutter >= 0 && a.shutter <= 1)) throw std::runtime_error("--shutter must lie in [0, 1]");
+    if (!(a.shutter >= 0 && a.shutter <= 1))
+        throw std::runtime_error("--shutter must lie in [0, 1]");
     if (!(a.rolling_shutter >= 0 && a.rolling_shutter <= 1))
         throw std::runtime_error("--rolling-shutter must lie in [0, 1]");
     if (!std::isfinite(a.initial_clock) || !std::isfinite(a.final_clock) ||
         (r.at_clock && !std::isfinite(*r.at_clock)))
-        throw std::runtime_error("the clock (--clock, Initial_Clock, Final_Clock) must be finite numbers");
+        throw std::runtime_error(
+            "the clock (--clock, Initial_Clock, Final_Clock) must be finite numbers");
     // Finite ends can still be too far apart for a double (-1e308:1e308).
     if (!std::isfinite(a.clock_delta()) || !std::isfinite(a.time_end()))
-        throw std::runtime_error("the clock's range (--clock, Initial_Clock, Final_Clock) overflows "
-                                 "the doubles");
+        throw std::runtime_error(
+            "the clock's range (--clock, Initial_Clock, Final_Clock) overflows "
+            "the doubles");
     return r;
 }
 

@@ -30,8 +30,8 @@ struct SceneArguments {
     std::vector<std::string> read_paths;
     std::vector<std::string> declares;  // NAME=VALUE
     // Limits (language/limits.hpp); each raises or lowers one default.
-    std::optional<std::size_t> max_loop_iterations, max_iterations, max_time_pieces, max_text_read, max_string_length,
-        max_array_memory_mib;
+    std::optional<std::size_t> max_loop_iterations, max_iterations, max_time_pieces, max_text_read,
+        max_string_length, max_array_memory_mib;
     std::optional<int> max_macro_depth, max_include_depth;
     std::optional<long long> max_frames, max_pixels;
 };

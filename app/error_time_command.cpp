@@ -8,8 +8,8 @@
 #include <fstream>
 #include <functional>
 #include <iomanip>
-#include <optional>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <vector>
 
@@ -33,9 +33,11 @@ constexpr std::uint32_t kReferenceSeed = 0x5eed;
 // A comma list of `item`s (each parsed whole, or nothing when it is not
 // one): --spp-list and --targets.
 template <class T, class Parse>
-std::vector<T> comma_list(const std::string& text, const char* flag, const char* expected, Parse item) {
+std::vector<T> comma_list(const std::string& text, const char* flag, const char* expected,
+                          Parse item) {
     std::vector<T> values;
-    std::stringstream items(text + ",");  // (every item ends with a comma: "1," has an empty last one)
+    std::stringstream items(text +
+                            ",");  // (every item ends with a comma: "1," has an empty last one)
     std::string one;
     while (std::getline(items, one, ',')) {
         std::optional<T> value;
@@ -43,7 +45,9 @@ std::vector<T> comma_list(const std::string& text, const char* flag, const char*
             value = item(one);
         } catch (const std::exception&) {
         }
-        if (!value) throw std::runtime_error(std::string(flag) + ": expected a comma list of " + expected + ", got '" + text + "'");
+        if (!value)
+            throw std::runtime_error(std::string(flag) + ": expected a comma list of " + expected +
+                                     ", got '" + text + "'");
         values.push_back(*value);
     }
     return values;
@@ -51,11 +55,14 @@ std::vector<T> comma_list(const std::string& text, const char* flag, const char*
 
 std::vector<int> int_list(const std::string& text, const char* flag) {
     // (At most --spp's own limit, 2^20: the reference takes four times the largest.)
-    return comma_list<int>(text, flag, "whole numbers from 1 to 1048576", [](const std::string& item) {
-        std::size_t used = 0;
-        const int value = std::stoi(item, &used);
-        return used == item.size() && value >= 1 && value <= (1 << 20) ? std::optional<int>(value) : std::nullopt;
-    });
+    return comma_list<int>(text, flag, "whole numbers from 1 to 1048576",
+                           [](const std::string& item) {
+                               std::size_t used = 0;
+                               const int value = std::stoi(item, &used);
+                               return used == item.size() && value >= 1 && value <= (1 << 20)
+                                          ? std::optional<int>(value)
+                                          : std::nullopt;
+                           });
 }
 
 std::vector<tracer::Mode> mode_list(const std::string& text) {
@@ -87,14 +94,15 @@ std::string reference_key(const ErrorTimeArguments& args, const runtime::SceneDe
         const fs::path path = file.substr(0, file.find('['));
         key << file << '\n' << file_text(path) << '\n';
     }
-    key << scene.animation.width << 'x' << scene.animation.height << " frame " << frame
-        << " spp " << reference_spp << " shutter " << scene.animation.shutter << " clock "
+    key << scene.animation.width << 'x' << scene.animation.height << " frame " << frame << " spp "
+        << reference_spp << " shutter " << scene.animation.shutter << " clock "
         << scene.animation.initial_clock << ':' << scene.animation.final_clock << " frames "
         << scene.animation.initial_frame << ':' << scene.animation.final_frame << " cyclic "
         << scene.animation.cyclic << " rolling " << scene.animation.rolling_shutter << " curve";
     // (Every key of the shutter's curve, to the last bit; a box is keyless.)
     if (!scene.animation.shutter_curve.is_box())
-        for (const auto& k : scene.animation.shutter_curve.keys()) key << ' ' << std::hexfloat << k.u << ':' << k.weight;
+        for (const auto& k : scene.animation.shutter_curve.keys())
+            key << ' ' << std::hexfloat << k.u << ':' << k.weight;
     key << std::defaultfloat;  // (precision 17 still)
     for (const auto& d : args.scene.declares) key << " declare " << d;
     for (const auto& path : args.scene.include_paths) key << " include " << path;
@@ -120,9 +128,8 @@ struct Point {
 // frame's share: spacetime builds one hierarchy for all the animation's
 // frames, frames mode builds one per frame.
 Point measure(const runtime::SceneDescription& scene, tracer::Mode mode, int spp, int frame,
-              const ErrorTimeArguments& args, const fs::path& image,
-              std::uint32_t sample_seed = 0, bool reference = false,
-              std::optional<double> target = std::nullopt) {
+              const ErrorTimeArguments& args, const fs::path& image, std::uint32_t sample_seed = 0,
+              bool reference = false, std::optional<double> target = std::nullopt) {
     tracer::RenderSettings settings;
     settings.mode = mode;
     settings.samples_per_pixel = spp;
@@ -146,16 +153,28 @@ Point measure(const runtime::SceneDescription& scene, tracer::Mode mode, int spp
     const double build_share = c.build_seconds;
     std::optional<double> estimate;
     if (renderer.last_estimate()) estimate = renderer.last_estimate()->rmse;
-    const double mean_spp = double(renderer.last_sample_count()) / (double(rendered.width) * rendered.height);
-    return {mode,     spp,      build_share + c.render_seconds, build_share, c.render_seconds, c.rays(), {},
-            estimate, mean_spp, target};
+    const double mean_spp =
+        double(renderer.last_sample_count()) / (double(rendered.width) * rendered.height);
+    return {mode,
+            spp,
+            build_share + c.render_seconds,
+            build_share,
+            c.render_seconds,
+            c.rays(),
+            {},
+            estimate,
+            mean_spp,
+            target};
 }
 
 const char* colour_of(tracer::Mode mode) {
     switch (mode) {
-        case tracer::Mode::Spacetime: return "#d62728";
-        case tracer::Mode::Frames: return "#1f77b4";
-        default: return "#2ca02c";
+        case tracer::Mode::Spacetime:
+            return "#d62728";
+        case tracer::Mode::Frames:
+            return "#1f77b4";
+        default:
+            return "#2ca02c";
     }
 }
 
@@ -184,23 +203,28 @@ std::optional<double> time_for(const std::vector<Point>& points, tracer::Mode mo
 void add_error_time_arguments(CLI::App& command, ErrorTimeArguments& a) {
     add_scene_arguments(command, a.scene);
     command.add_option("--frame", a.frame, "The frame to measure (default: the middle one)");
-    command.add_option("--spp-list", a.spp_list, "Sample counts to measure (default 1,2,4,...,256)");
+    command.add_option("--spp-list", a.spp_list,
+                       "Sample counts to measure (default 1,2,4,...,256)");
     command.add_option("--modes", a.modes, "Modes to measure (default spacetime,frames)");
-    command.add_option("--reference-spp", a.reference_spp,
-                       "Samples of the reference (default 4 times the largest measured)")
+    command
+        .add_option("--reference-spp", a.reference_spp,
+                    "Samples of the reference (default 4 times the largest measured)")
         ->check(CLI::Range(1, 1 << 20));
     command.add_option("-o,--output", a.output_dir,
                        "Folder for the CSV, the plot, the images and the cached reference "
                        "(default out/SCENE/error-time)");
     command.add_option("--threads", a.threads, "Worker threads (default: all cores)");
-    command.add_option("--sample-sets", a.sample_sets,
-                       "2 (default): even counts render as two independent halves and estimate their own "
-                       "error; 1: one set, no estimate (what estimating costs)")
+    command
+        .add_option(
+            "--sample-sets", a.sample_sets,
+            "2 (default): even counts render as two independent halves and estimate their own "
+            "error; 1: one set, no estimate (what estimating costs)")
         ->check(CLI::Range(1, 2));
-    command.add_option("--targets", a.targets,
-                       "Also render with adaptive sampling at these RMSE targets (a comma list, e.g. "
-                       "0.01,0.004; the largest of --spp-list is the ceiling) and print the samples and time "
-                       "uniform sampling needs for the same true error");
+    command.add_option(
+        "--targets", a.targets,
+        "Also render with adaptive sampling at these RMSE targets (a comma list, e.g. "
+        "0.01,0.004; the largest of --spp-list is the ceiling) and print the samples and time "
+        "uniform sampling needs for the same true error");
     add_hierarchy_arguments(command, a.hierarchy);
 }
 
@@ -213,27 +237,31 @@ int run_error_time(const ErrorTimeArguments& args, std::ostream& out, std::ostre
         const runtime::Animation& a = scene.animation;
         const int frame = args.frame.value_or((a.initial_frame + a.final_frame) / 2);
         if (frame < a.initial_frame || frame > a.final_frame)
-            throw std::runtime_error("--frame " + std::to_string(frame) +
-                                     ": the animation has frames " +
-                                     std::to_string(a.initial_frame) + " to " +
-                                     std::to_string(a.final_frame));
+            throw std::runtime_error(
+                "--frame " + std::to_string(frame) + ": the animation has frames " +
+                std::to_string(a.initial_frame) + " to " + std::to_string(a.final_frame));
         std::vector<int> spps = int_list(args.spp_list, "--spp-list");
         std::sort(spps.begin(), spps.end());
         spps.erase(std::unique(spps.begin(), spps.end()), spps.end());
         const std::vector<tracer::Mode> modes = mode_list(args.modes);
         std::vector<double> targets;
         if (!args.targets.empty()) {
-            targets = comma_list<double>(args.targets, "--targets", "positive numbers", [](const std::string& item) {
-                std::size_t used = 0;
-                const double value = std::stod(item, &used);
-                return used == item.size() && value > 0.0 && std::isfinite(value) ? std::optional<double>(value)
-                                                                                  : std::nullopt;
-            });
+            targets = comma_list<double>(
+                args.targets, "--targets", "positive numbers", [](const std::string& item) {
+                    std::size_t used = 0;
+                    const double value = std::stod(item, &used);
+                    return used == item.size() && value > 0.0 && std::isfinite(value)
+                               ? std::optional<double>(value)
+                               : std::nullopt;
+                });
             if (spps.back() < 2 || spps.back() % 2 != 0)
-                throw std::runtime_error("--targets: the largest of --spp-list is the ceiling and must be even (two "
-                                         "independent halves); it is " + std::to_string(spps.back()));
+                throw std::runtime_error(
+                    "--targets: the largest of --spp-list is the ceiling and must be even (two "
+                    "independent halves); it is " +
+                    std::to_string(spps.back()));
         }
-        const int reference_spp = args.reference_spp > 0 ? args.reference_spp : std::min(4 * spps.back(), 1 << 20);
+        const int reference_spp =
+            args.reference_spp > 0 ? args.reference_spp : std::min(4 * spps.back(), 1 << 20);
         const fs::path dir = args.output_dir
                                  ? fs::path(*args.output_dir)
                                  : fs::path("out") / resolved.scene.stem() / "error-time";
@@ -249,7 +277,8 @@ int run_error_time(const ErrorTimeArguments& args, std::ostream& out, std::ostre
                 << " samples per pixel ..." << std::flush;
             // (One sample set, its own seed: the reference is the best image
             // its count gives, independent of every measured one.)
-            measure(scene, tracer::Mode::Spacetime, reference_spp, frame, args, reference, kReferenceSeed,
+            measure(scene, tracer::Mode::Spacetime, reference_spp, frame, args, reference,
+                    kReferenceSeed,
                     /*reference=*/true);
             out << " " << reference.string() << "\n";
         }
@@ -272,12 +301,13 @@ int run_error_time(const ErrorTimeArguments& args, std::ostream& out, std::ostre
                     out << *p.estimate;
                     // (Against a true error of 0, a flat frame, no ratio.)
                     if (p.error.rmse > 0.0)
-                        out << " (" << std::fixed << std::setprecision(2) << *p.estimate / p.error.rmse << "x)";
+                        out << " (" << std::fixed << std::setprecision(2)
+                            << *p.estimate / p.error.rmse << "x)";
                 } else {
                     out << "-";
                 }
-                out << std::scientific << std::setprecision(3) << "  relMSE " << p.error.relative_mse
-                    << std::defaultfloat << "\n";
+                out << std::scientific << std::setprecision(3) << "  relMSE "
+                    << p.error.relative_mse << std::defaultfloat << "\n";
             }
         }
         std::stable_sort(points.begin(), points.end(),
@@ -294,17 +324,20 @@ int run_error_time(const ErrorTimeArguments& args, std::ostream& out, std::ostre
                 Point p = measure(scene, mode, spps.back(), frame, args, image, 0, false, target);
                 p.error = tracer::image_error(image, reference);
                 adaptive.push_back(p);
-                out << std::left << std::setw(10) << tracer::mode_name(mode) << std::right << " target "
-                    << std::scientific << std::setprecision(3) << target << ": " << std::fixed
-                    << std::setprecision(3) << p.seconds << " s, " << std::setprecision(1) << p.mean_spp
-                    << " spp, rmse " << std::scientific << std::setprecision(3) << p.error.rmse << " ("
-                    << std::fixed << std::setprecision(2) << p.error.rmse / target << "x the target); uniform needs ";
+                out << std::left << std::setw(10) << tracer::mode_name(mode) << std::right
+                    << " target " << std::scientific << std::setprecision(3) << target << ": "
+                    << std::fixed << std::setprecision(3) << p.seconds << " s, "
+                    << std::setprecision(1) << p.mean_spp << " spp, rmse " << std::scientific
+                    << std::setprecision(3) << p.error.rmse << " (" << std::fixed
+                    << std::setprecision(2) << p.error.rmse / target
+                    << "x the target); uniform needs ";
                 const auto spp = time_for(points, mode, p.error.rmse, true);
                 const auto seconds = time_for(points, mode, p.error.rmse);
                 if (spp && seconds)
-                    out << std::setprecision(1) << *spp << " spp (" << std::setprecision(2) << *spp / p.mean_spp
-                        << "x the samples), " << std::setprecision(3) << *seconds << " s (" << std::setprecision(2)
-                        << *seconds / p.seconds << "x the time)\n";
+                    out << std::setprecision(1) << *spp << " spp (" << std::setprecision(2)
+                        << *spp / p.mean_spp << "x the samples), " << std::setprecision(3)
+                        << *seconds << " s (" << std::setprecision(2) << *seconds / p.seconds
+                        << "x the time)\n";
                 else {
                     // Which side of the measured curve: fewer samples than
                     // its first point (a larger error), or more than its last.
@@ -323,7 +356,8 @@ int run_error_time(const ErrorTimeArguments& args, std::ostream& out, std::ostre
         const fs::path csv = dir / "error_time.csv";
         {
             std::ostringstream table;
-            table << "mode,spp,seconds,build_seconds,render_seconds,rays,rmse,relative_mse,estimated_rmse,"
+            table << "mode,spp,seconds,build_seconds,render_seconds,rays,rmse,relative_mse,"
+                     "estimated_rmse,"
                      "target,mean_spp\n"
                   << std::setprecision(9);
             std::vector<Point> rows = points;
@@ -346,7 +380,8 @@ int run_error_time(const ErrorTimeArguments& args, std::ostream& out, std::ostre
         plot.y_label = "RMSE against " + std::to_string(reference_spp) + " spp (linear)";
         for (const tracer::Mode mode : modes) {
             PlotCurve curve{tracer::mode_name(mode), colour_of(mode), {}};
-            PlotCurve estimated{std::string(tracer::mode_name(mode)) + ", estimated", colour_of(mode), {}, true};
+            PlotCurve estimated{
+                std::string(tracer::mode_name(mode)) + ", estimated", colour_of(mode), {}, true};
             for (const Point& p : points)
                 if (p.mode == mode) {
                     curve.points.emplace_back(p.seconds, p.error.rmse);
@@ -354,7 +389,10 @@ int run_error_time(const ErrorTimeArguments& args, std::ostream& out, std::ostre
                 }
             plot.curves.push_back(std::move(curve));
             if (!estimated.points.empty()) plot.curves.push_back(std::move(estimated));
-            PlotCurve targeted{std::string(tracer::mode_name(mode)) + ", adaptive", colour_of(mode), {}, false,
+            PlotCurve targeted{std::string(tracer::mode_name(mode)) + ", adaptive",
+                               colour_of(mode),
+                               {},
+                               false,
                                true};
             for (const Point& p : adaptive)
                 if (p.mode == mode) targeted.points.emplace_back(p.seconds, p.error.rmse);
@@ -369,12 +407,14 @@ int run_error_time(const ErrorTimeArguments& args, std::ostream& out, std::ostre
             out << "time to reach the same RMSE (" << tracer::mode_name(modes[1]) << " / "
                 << tracer::mode_name(modes[0]) << "):\n";
             for (const Point& p : points) {
-                if (p.mode != modes[0] || !(p.error.rmse > 0.0)) continue;  // (a flat frame: no error to reach)
+                if (p.mode != modes[0] || !(p.error.rmse > 0.0))
+                    continue;  // (a flat frame: no error to reach)
                 const auto other = time_for(points, modes[1], p.error.rmse);
                 out << "  rmse " << std::scientific << std::setprecision(3) << p.error.rmse
                     << std::fixed << std::setprecision(3) << ": " << p.seconds << " s against ";
                 if (other)
-                    out << *other << " s, ratio " << std::setprecision(2) << *other / p.seconds << "\n";
+                    out << *other << " s, ratio " << std::setprecision(2) << *other / p.seconds
+                        << "\n";
                 else
                     out << "(outside the measured range)\n";
             }

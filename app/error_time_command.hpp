@@ -20,7 +20,7 @@ struct ErrorTimeArguments {
     std::optional<int> frame;  // default: the animation's middle frame
     std::string spp_list = "1,2,4,8,16,32,64,128,256";
     std::string modes = "spacetime,frames";
-    int reference_spp = 0;  // 0: 4 times the largest of spp_list
+    int reference_spp = 0;                  // 0: 4 times the largest of spp_list
     std::optional<std::string> output_dir;  // default out/SCENE/error-time
     int threads = 0;
     // 2: every even count renders as two independent halves and estimates

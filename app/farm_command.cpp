@@ -31,7 +31,8 @@ namespace {
 void check_word(const std::string& word, const std::string& what) {
     for (const char c : word)
         if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
-            throw std::runtime_error(what + " holds a control character (a newline?): '" + word + "'");
+            throw std::runtime_error(what + " holds a control character (a newline?): '" + word +
+                                     "'");
 }
 
 // A value on an #SBATCH line: sbatch splits its own lines at blanks and
@@ -40,7 +41,8 @@ void check_word(const std::string& word, const std::string& what) {
 void check_sbatch_value(const std::string& value, const std::string& flag) {
     check_word(value, flag);
     if (value.empty() || value.find_first_of(" \t'\"#\\") != std::string::npos)
-        throw std::runtime_error(flag + " '" + value + "': Slurm's #SBATCH lines take no blank, quote, # or "
+        throw std::runtime_error(flag + " '" + value +
+                                 "': Slurm's #SBATCH lines take no blank, quote, # or "
                                  "backslash (and not an empty value)");
 }
 
@@ -70,7 +72,8 @@ FarmArguments split_farm_arguments(const std::vector<std::string>& words) {
                 used = 0;
             }
             if (used != v.size() || a.windows < 1)
-                throw std::runtime_error("--windows needs a whole number of windows, at least 1, not '" + v + "'");
+                throw std::runtime_error(
+                    "--windows needs a whole number of windows, at least 1, not '" + v + "'");
         } else if (flag == "--partition") {
             a.partition = value();
             check_sbatch_value(*a.partition, "--partition");
@@ -86,9 +89,11 @@ FarmArguments split_farm_arguments(const std::vector<std::string>& words) {
         } else if (flag == "--submit") {
             a.submit = true;
         } else if (flag == "--stats-json") {
-            throw std::runtime_error("--stats-json: each window writes its own (window_I.json in the farm's folder)");
+            throw std::runtime_error(
+                "--stats-json: each window writes its own (window_I.json in the farm's folder)");
         } else if (flag == "--compare") {
-            throw std::runtime_error("--compare renders every frame twice in one run; a farm's tasks render windows");
+            throw std::runtime_error(
+                "--compare renders every frame twice in one run; a farm's tasks render windows");
         } else if (flag == "--window" || flag == "--resume") {
             throw std::runtime_error(flag + " is the farm's to give each task; leave it out");
         } else {
@@ -116,13 +121,14 @@ void check_render_words(const FarmArguments& args, std::string& scene_stem) {
         throw std::runtime_error(std::string("the render flags: ") + e.what());
     }
     ResolvedScene resolved = resolve(parsed.scene);
-    const runtime::SceneDescription scene = language::parse_scene_file(resolved.scene, resolved.options);
+    const runtime::SceneDescription scene =
+        language::parse_scene_file(resolved.scene, resolved.options);
     scene_stem = resolved.scene.stem().string();
     const long long frames = static_cast<long long>(scene.animation.frame_count());
     if (args.windows > frames)
-        throw std::runtime_error("--windows " + std::to_string(args.windows) + ": the animation has " +
-                                 std::to_string(frames) + " frame" + (frames == 1 ? "" : "s") +
-                                 ", so at most that many windows");
+        throw std::runtime_error("--windows " + std::to_string(args.windows) +
+                                 ": the animation has " + std::to_string(frames) + " frame" +
+                                 (frames == 1 ? "" : "s") + ", so at most that many windows");
     // What each task and the join will be asked, checked once here.
     RenderArguments task = parsed;
     task.window = "0/" + std::to_string(args.windows);
@@ -139,7 +145,8 @@ void check_render_words(const FarmArguments& args, std::string& scene_stem) {
 std::string sbatch_path(const std::string& path) {
     check_word(path, "the path " + path);
     if (path.find_first_of("\"\\") != std::string::npos)
-        throw std::runtime_error("the path '" + path + "' holds a double quote or backslash, which an #SBATCH line "
+        throw std::runtime_error("the path '" + path +
+                                 "' holds a double quote or backslash, which an #SBATCH line "
                                  "cannot hold");
     return "\"" + path + "\"";
 }
@@ -147,7 +154,10 @@ std::string sbatch_path(const std::string& path) {
 // Slurm's job name: the scene's name, what sbatch reads plainly.
 std::string job_name(const std::string& stem) {
     std::string name = "hexant-";
-    for (const char c : stem) name += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.' ? c : '_';
+    for (const char c : stem)
+        name += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.'
+                    ? c
+                    : '_';
     return name;
 }
 
@@ -180,16 +190,19 @@ int run_farm(const FarmArguments& args, std::ostream& out, std::ostream& err) {
     return run_reporting_errors(err, [&] {
         std::string stem;
         check_render_words(args, stem);
-        const fs::path folder = fs::absolute(args.folder.empty() ? "out/" + stem + "/farm" : args.folder);
+        const fs::path folder =
+            fs::absolute(args.folder.empty() ? "out/" + stem + "/farm" : args.folder);
         const std::string n = std::to_string(args.windows);
 
         std::ostringstream array;
         array << header(args, job_name(stem), (folder / "window_%a.log").string(),
                         "#SBATCH --array=0-" + std::to_string(args.windows - 1) + "\n")
-              << "# Window $SLURM_ARRAY_TASK_ID of " << n << ": its frames, with a hierarchy over its own\n"
+              << "# Window $SLURM_ARRAY_TASK_ID of " << n
+              << ": its frames, with a hierarchy over its own\n"
               << "# time; --resume lets a requeued or rerun task finish what the last run left.\n"
-              << render_line(args) << " --window \"${SLURM_ARRAY_TASK_ID}/" << n << "\" --resume --stats-json "
-              << shell_quote((folder / "window_").string()) << "\"${SLURM_ARRAY_TASK_ID}\"'.json'\n";
+              << render_line(args) << " --window \"${SLURM_ARRAY_TASK_ID}/" << n
+              << "\" --resume --stats-json " << shell_quote((folder / "window_").string())
+              << "\"${SLURM_ARRAY_TASK_ID}\"'.json'\n";
 
         std::ostringstream join;
         join << header(args, job_name(stem) + "-join", (folder / "join.log").string())
@@ -202,7 +215,8 @@ int run_farm(const FarmArguments& args, std::ostream& out, std::ostream& err) {
         join << "\n# The windows' statistics as one run's.\n"
              << "exec " << shell_quote(args.hexant) << " merge-stats";
         for (int w = 0; w < args.windows; ++w)
-            join << " " << shell_quote((folder / ("window_" + std::to_string(w) + ".json")).string());
+            join << " "
+                 << shell_quote((folder / ("window_" + std::to_string(w) + ".json")).string());
         join << " -o " << shell_quote((folder / "stats.json").string()) << "\n";
 
         const fs::path array_path = folder / "array.sbatch", join_path = folder / "join.sbatch";
@@ -213,8 +227,8 @@ int run_farm(const FarmArguments& args, std::ostream& out, std::ostream& err) {
                << "set -euo pipefail\n"
                << "array=$(sbatch --parsable " << shell_quote(array_path.string()) << ")\n"
                << "array=${array%%;*}\n"
-               << "join=$(sbatch --parsable --dependency=afterok:$array " << shell_quote(join_path.string())
-               << ")\n"
+               << "join=$(sbatch --parsable --dependency=afterok:$array "
+               << shell_quote(join_path.string()) << ")\n"
                << "echo \"array job $array, join job ${join%%;*}\"\n";
         tracer::write_text_file(array_path, array.str());
         tracer::write_text_file(join_path, join.str());
@@ -222,8 +236,9 @@ int run_farm(const FarmArguments& args, std::ostream& out, std::ostream& err) {
 
         const std::string command = "bash " + shell_quote(submit_path.string());
         if (!args.submit) {
-            out << "array: " << array_path.string() << " (" << n << " windows)\njoin: " << join_path.string()
-                << "\nsubmit with: " << command << "\n";
+            out << "array: " << array_path.string() << " (" << n
+                << " windows)\njoin: " << join_path.string() << "\nsubmit with: " << command
+                << "\n";
             return 0;
         }
         std::FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");

@@ -59,8 +59,9 @@ void add_hierarchy_arguments(CLI::App& command, HierarchyArguments& a) {
     command.add_option("--bounds", a.bounds,
                        "The style of the cells' bounds: auto (default: a linear-motion box where "
                        "it is tighter, else a box), box, linear or slabs (the 12-slab bound)");
-    command.add_option("--max-depth", a.max_depth,
-                       "Hierarchy depth limit (default: 5 with --split paper, 24 with cost)")
+    command
+        .add_option("--max-depth", a.max_depth,
+                    "Hierarchy depth limit (default: 5 with --split paper, 24 with cost)")
         ->check(CLI::Range(0, tracer::BuildOptions::kMaxDepth));
     command.add_flag("--frames-slab-bounds", a.frames_slab_bounds,
                      "The same as --bounds slabs (kept for the frame-by-frame baseline)");

@@ -16,10 +16,14 @@ constexpr double kLeft = 80, kRight = 150, kTop = 40, kBottom = 60;
 std::string escape(const std::string& text) {
     std::string out;
     for (const char c : text) {
-        if (c == '<') out += "&lt;";
-        else if (c == '>') out += "&gt;";
-        else if (c == '&') out += "&amp;";
-        else out += c;
+        if (c == '<')
+            out += "&lt;";
+        else if (c == '>')
+            out += "&gt;";
+        else if (c == '&')
+            out += "&amp;";
+        else
+            out += c;
     }
     return out;
 }
@@ -51,7 +55,8 @@ std::string to_svg(const LogLogPlot& plot) {
     if (!(x_lo <= x_hi)) x_lo = 1, x_hi = 10, y_lo = 1, y_hi = 10;
     // Plain names, not structured bindings: lambdas capture these (clang
     // before 16, which the fuzz build uses, cannot capture a binding).
-    const std::pair<double, double> x_decades = decades(x_lo, x_hi), y_decades = decades(y_lo, y_hi);
+    const std::pair<double, double> x_decades = decades(x_lo, x_hi),
+                                    y_decades = decades(y_lo, y_hi);
     const double xa = x_decades.first, xb = x_decades.second;
     const double ya = y_decades.first, yb = y_decades.second;
     const double plot_w = kWidth - kLeft - kRight, plot_h = kHeight - kTop - kBottom;
@@ -70,8 +75,8 @@ std::string to_svg(const LogLogPlot& plot) {
         const double x = kLeft + (e - xa) / (xb - xa) * plot_w;
         svg << "<line x1=\"" << x << "\" y1=\"" << kTop << "\" x2=\"" << x << "\" y2=\""
             << kTop + plot_h << "\" stroke=\"#ddd\"/>\n"
-            << "<text x=\"" << x << "\" y=\"" << kTop + plot_h + 16
-            << "\" text-anchor=\"middle\">" << number(e) << "</text>\n";
+            << "<text x=\"" << x << "\" y=\"" << kTop + plot_h + 16 << "\" text-anchor=\"middle\">"
+            << number(e) << "</text>\n";
     }
     for (double e = ya; e <= yb; e += 1.0) {
         const double y = kTop + (yb - e) / (yb - ya) * plot_h;
@@ -80,8 +85,8 @@ std::string to_svg(const LogLogPlot& plot) {
             << "<text x=\"" << kLeft - 6 << "\" y=\"" << y + 4 << "\" text-anchor=\"end\">"
             << number(e) << "</text>\n";
     }
-    svg << "<rect x=\"" << kLeft << "\" y=\"" << kTop << "\" width=\"" << plot_w
-        << "\" height=\"" << plot_h << "\" fill=\"none\" stroke=\"black\"/>\n"
+    svg << "<rect x=\"" << kLeft << "\" y=\"" << kTop << "\" width=\"" << plot_w << "\" height=\""
+        << plot_h << "\" fill=\"none\" stroke=\"black\"/>\n"
         << "<text x=\"" << kLeft + plot_w / 2 << "\" y=\"" << kHeight - 18
         << "\" text-anchor=\"middle\">" << escape(plot.x_label) << "</text>\n"
         << "<text transform=\"translate(20," << kTop + plot_h / 2
@@ -92,7 +97,8 @@ std::string to_svg(const LogLogPlot& plot) {
         const std::string dash = curve.dashed   ? "\" stroke-dasharray=\"6,4"
                                  : curve.dotted ? "\" stroke-dasharray=\"2,3"
                                                 : "";
-        svg << "<polyline fill=\"none\" stroke=\"" << curve.colour << dash << "\" stroke-width=\"2\" points=\"";
+        svg << "<polyline fill=\"none\" stroke=\"" << curve.colour << dash
+            << "\" stroke-width=\"2\" points=\"";
         for (const auto& [x, y] : curve.points)
             if (x > 0 && y > 0) svg << px(x) << "," << py(y) << " ";
         svg << "\"/>\n";
@@ -101,8 +107,8 @@ std::string to_svg(const LogLogPlot& plot) {
                 svg << "<circle cx=\"" << px(x) << "\" cy=\"" << py(y) << "\" r=\"3\" fill=\""
                     << curve.colour << "\"/>\n";
         svg << "<line x1=\"" << kLeft + plot_w + 12 << "\" y1=\"" << legend_y << "\" x2=\""
-            << kLeft + plot_w + 36 << "\" y2=\"" << legend_y << "\" stroke=\"" << curve.colour << dash
-            << "\" stroke-width=\"2\"/>\n"
+            << kLeft + plot_w + 36 << "\" y2=\"" << legend_y << "\" stroke=\"" << curve.colour
+            << dash << "\" stroke-width=\"2\"/>\n"
             << "<text x=\"" << kLeft + plot_w + 42 << "\" y=\"" << legend_y + 4 << "\">"
             << escape(curve.name) << "</text>\n";
         legend_y += 18;

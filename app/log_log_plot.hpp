@@ -11,7 +11,7 @@ namespace hexant::app {
 
 struct PlotCurve {
     std::string name;
-    std::string colour;  // an SVG colour, e.g. "#1f77b4"
+    std::string colour;                             // an SVG colour, e.g. "#1f77b4"
     std::vector<std::pair<double, double>> points;  // positive x and y
     bool dashed = false;  // a dashed line (an estimate beside its measurement)
     bool dotted = false;  // a dotted line (adaptive sampling beside uniform)

@@ -1,9 +1,10 @@
 // hexant: renders animations written in a POV-Ray-style scene language with
 // Glassner's spacetime ray tracing. Each subcommand takes
 //   hexant SUBCOMMAND SCENE.pov [FILE.ini ...] [flags]
-#include <CLI/CLI.hpp>
 #include <filesystem>
 #include <iostream>
+
+#include <CLI/CLI.hpp>
 #include <malloc.h>
 
 #include "app/command_line.hpp"
@@ -35,8 +36,8 @@ int main(int argc, char** argv) {
     app::add_scene_arguments(*check, check_arguments);
 
     app::SceneArguments dump_arguments;
-    CLI::App* dump = program.add_subcommand(
-        "dump", "Print every object with its parameters at one clock value");
+    CLI::App* dump =
+        program.add_subcommand("dump", "Print every object with its parameters at one clock value");
     app::add_scene_arguments(*dump, dump_arguments);
 
     app::RenderArguments render_arguments;
@@ -45,9 +46,12 @@ int main(int argc, char** argv) {
     app::add_render_arguments(*render, render_arguments);
 
     CLI::App* farm = program.add_subcommand(
-        "farm", "Write (and with --submit, submit) a Slurm job array that renders the animation as --windows N "
-                "time windows, and a join job for the contact sheet and animation: hexant farm SCENE.pov "
-                "[INI ...] [render flags] --windows N [--partition P] [--time T] [--farm-dir DIR] [--submit]");
+        "farm",
+        "Write (and with --submit, submit) a Slurm job array that renders the animation as "
+        "--windows N "
+        "time windows, and a join job for the contact sheet and animation: hexant farm SCENE.pov "
+        "[INI ...] [render flags] --windows N [--partition P] [--time T] [--farm-dir DIR] "
+        "[--submit]");
     farm->prefix_command();
     farm->allow_extras();
     farm->footer(
@@ -55,33 +59,40 @@ int main(int argc, char** argv) {
         "  --windows N          the windows, one Slurm array task each (at most the frames)\n"
         "  --partition P        #SBATCH --partition for the array and the join\n"
         "  --time T             #SBATCH --time (Slurm's format, e.g. 01:00:00)\n"
-        "  --farm-dir DIR       where the scripts, logs and statistics go (default out/SCENE/farm)\n"
+        "  --farm-dir DIR       where the scripts, logs and statistics go (default "
+        "out/SCENE/farm)\n"
         "  --contact-sheet F    the join's contact sheet of every frame\n"
         "  --animation F.gif    the join's animated GIF of every frame\n"
-        "  --submit             run submit.sh (sbatch) and print the job ids; else print the command\n"
-        "Each task runs render ... --window I/N --resume --stats-json DIR/window_I.json; the join, after\n"
+        "  --submit             run submit.sh (sbatch) and print the job ids; else print the "
+        "command\n"
+        "Each task runs render ... --window I/N --resume --stats-json DIR/window_I.json; the join, "
+        "after\n"
         "every task succeeded, runs render ... --resume with the sheet and GIF, then merge-stats.");
 
     std::vector<std::string> merge_inputs;
     std::string merge_output;
     CLI::App* merge = program.add_subcommand(
-        "merge-stats", "The statistics of windows (render --window I/N --stats-json) as one run's: counts and "
-                       "times summed, memory the largest, the ratios from the sums, and each window's build and "
-                       "render times listed. A window resumed counts only the frames it rendered");
-    merge->add_option("windows", merge_inputs, "The windows' statistics files, in window order")->required();
+        "merge-stats",
+        "The statistics of windows (render --window I/N --stats-json) as one run's: counts and "
+        "times summed, memory the largest, the ratios from the sums, and each window's build and "
+        "render times listed. A window resumed counts only the frames it rendered");
+    merge->add_option("windows", merge_inputs, "The windows' statistics files, in window order")
+        ->required();
     merge->add_option("-o,--output", merge_output, "The merged statistics (JSON)")->required();
 
     CLI::App* bench = program.add_subcommand("bench", "Measure hexant: speed and error");
     bench->require_subcommand(1);
     app::ErrorTimeArguments error_time_arguments;
     CLI::App* error_time = bench->add_subcommand(
-        "error-time", "Error of one frame against a high-sample reference, against its run time, "
-                      "per mode and sample count (CSV and log-log plot)");
+        "error-time",
+        "Error of one frame against a high-sample reference, against its run time, "
+        "per mode and sample count (CSV and log-log plot)");
     app::add_error_time_arguments(*error_time, error_time_arguments);
 
     CLI11_PARSE(program, argc, argv);
     if (render->parsed()) return app::run_render(render_arguments, std::cout, std::cerr);
-    if (merge->parsed()) return app::run_merge_stats(merge_inputs, merge_output, std::cout, std::cerr);
+    if (merge->parsed())
+        return app::run_merge_stats(merge_inputs, merge_output, std::cout, std::cerr);
     if (farm->parsed())
         return app::run_reporting_errors(std::cerr, [&] {
             app::FarmArguments arguments = app::split_farm_arguments(farm->remaining());
@@ -100,7 +111,8 @@ int main(int argc, char** argv) {
         if (check->parsed()) {
             app::summarize_scene(scene, std::cout);
         } else {
-            app::dump_scene(scene, resolved.at_clock.value_or(scene.animation.time_begin()), std::cout);
+            app::dump_scene(scene, resolved.at_clock.value_or(scene.animation.time_begin()),
+                            std::cout);
         }
         return 0;
     });

@@ -22,7 +22,9 @@ using nlohmann::json;
 
 // Rows kept as the largest window's (memory; the objects, which every
 // window builds alike), and rows recomputed from the sums.
-bool is_memory(const std::string& row) { return row.find("(MB)") != std::string::npos || row == "objects"; }
+bool is_memory(const std::string& row) {
+    return row.find("(MB)") != std::string::npos || row == "objects";
+}
 // Rows that are counts, written as whole numbers as render writes them.
 bool is_count(const std::string& row) {
     return row.find("(") == std::string::npos && row.find(" per ") == std::string::npos;
@@ -44,7 +46,8 @@ json read_json(const std::string& path) {
 }  // namespace
 
 void merge_stats(const std::vector<std::string>& windows, const std::string& output) {
-    if (windows.empty()) throw std::runtime_error("merge-stats needs the windows' statistics files");
+    if (windows.empty())
+        throw std::runtime_error("merge-stats needs the windows' statistics files");
     // (A file named twice would count twice; the output must not be one
     // of the windows.)
     std::vector<fs::path> seen;
@@ -53,7 +56,8 @@ void merge_stats(const std::vector<std::string>& windows, const std::string& out
         const fs::path p = fs::weakly_canonical(w);
         if (std::find(seen.begin(), seen.end(), p) != seen.end())
             throw std::runtime_error(w + ": named twice (each window once)");
-        if (p == out_path) throw std::runtime_error(output + ": the output is one of the windows' files");
+        if (p == out_path)
+            throw std::runtime_error(output + ": the output is one of the windows' files");
         seen.push_back(p);
     }
     std::string mode;
@@ -61,7 +65,8 @@ void merge_stats(const std::vector<std::string>& windows, const std::string& out
     for (std::size_t w = 0; w < windows.size(); ++w) {
         const json file = read_json(windows[w]);
         if (!file.is_object() || file.size() != 1 || !file.begin().value().is_object())
-            throw std::runtime_error(windows[w] + ": not the statistics of one render (--stats-json)");
+            throw std::runtime_error(windows[w] +
+                                     ": not the statistics of one render (--stats-json)");
         const std::string here = file.begin().key();
         if (!mode.empty() && here != mode)
             throw std::runtime_error(windows[w] + ": a " + here + " render, the others " + mode);
@@ -81,15 +86,20 @@ void merge_stats(const std::vector<std::string>& windows, const std::string& out
             merged[it.key()] = is_memory(it.key()) ? std::max(sum, v) : sum + v;
         }
         json window = {{"window", w}, {"file", windows[w]}, {"frames", json::array()}};
-        for (const char* row : {"build time (s)", "sweep time (s)", "lazy build in render (s)", "render time (s)"})
+        for (const char* row :
+             {"build time (s)", "sweep time (s)", "lazy build in render (s)", "render time (s)"})
             if (column.contains(row)) window[row] = column[row];
         if (column.contains("per frame"))
-            for (const json& f : column["per frame"]) window["frames"].push_back(f.value("frame", 0));
+            for (const json& f : column["per frame"])
+                window["frames"].push_back(f.value("frame", 0));
         per_window.push_back(window);
     }
     // The ratios from the sums.
-    const auto get = [&](const char* row) { return merged.contains(row) ? merged[row].get<double>() : 0.0; };
-    const double rays = get("primary rays") + get("shadow rays") + get("reflected rays") + get("refracted rays");
+    const auto get = [&](const char* row) {
+        return merged.contains(row) ? merged[row].get<double>() : 0.0;
+    };
+    const double rays =
+        get("primary rays") + get("shadow rays") + get("reflected rays") + get("refracted rays");
     for (auto it = merged.begin(); it != merged.end(); ++it) {
         if (!is_ratio(it.key())) continue;
         if (it.key() == "rays per second (M)") {
@@ -101,18 +111,19 @@ void merge_stats(const std::vector<std::string>& windows, const std::string& out
         }
     }
     for (auto it = merged.begin(); it != merged.end(); ++it)
-        if (is_count(it.key())) it.value() = static_cast<std::uint64_t>(it.value().get<double>() + 0.5);
+        if (is_count(it.key()))
+            it.value() = static_cast<std::uint64_t>(it.value().get<double>() + 0.5);
     merged["per frame"] = frames;
     merged["per window"] = per_window;
     tracer::write_text_file(output, json{{mode, merged}}.dump(2) + "\n");
 }
 
-int run_merge_stats(const std::vector<std::string>& windows, const std::string& output, std::ostream& out,
-                    std::ostream& err) {
+int run_merge_stats(const std::vector<std::string>& windows, const std::string& output,
+                    std::ostream& out, std::ostream& err) {
     return run_reporting_errors(err, [&] {
         merge_stats(windows, output);
-        out << "merged statistics of " << windows.size() << " window" << (windows.size() == 1 ? "" : "s") << ": "
-            << output << "\n";
+        out << "merged statistics of " << windows.size() << " window"
+            << (windows.size() == 1 ? "" : "s") << ": " << output << "\n";
         return 0;
     });
 }

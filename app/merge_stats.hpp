@@ -20,7 +20,7 @@ namespace hexant::app {
 void merge_stats(const std::vector<std::string>& windows, const std::string& output);
 
 // The CLI: `hexant merge-stats WINDOW.json ... -o MERGED.json`.
-int run_merge_stats(const std::vector<std::string>& windows, const std::string& output, std::ostream& out,
-                    std::ostream& err);
+int run_merge_stats(const std::vector<std::string>& windows, const std::string& output,
+                    std::ostream& out, std::ostream& err);
 
 }  // namespace hexant::app

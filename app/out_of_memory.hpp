@@ -17,8 +17,9 @@ decltype(auto) naming_out_of_memory(const std::string& stage, Body&& body) {
     try {
         return std::forward<Body>(body)();
     } catch (const std::bad_alloc&) {
-        throw std::runtime_error("out of memory while " + stage +
-                                 " (std::bad_alloc): the run needs more memory than the machine gives");
+        throw std::runtime_error(
+            "out of memory while " + stage +
+            " (std::bad_alloc): the run needs more memory than the machine gives");
     }
 }
 

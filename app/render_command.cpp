@@ -3,25 +3,26 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
+#include <functional>
 #include <iomanip>
 #include <iostream>
-#include <sstream>
-#include <cstdio>
-#include <cstring>
 #include <limits>
-#include <functional>
+#include <sstream>
+
 #include <sys/resource.h>
 #include <unistd.h>
 
 #include "app/out_of_memory.hpp"
+#include "image/image_format.hpp"
 #include "language/interpreter.hpp"
 #include "runtime/objects/object_error.hpp"
 #include "tracer/gif_animation.hpp"
 #include "tracer/image_output.hpp"
 #include "tracer/renderer.hpp"
-#include "image/image_format.hpp"
 #include "tracer/whole_file.hpp"
 
 namespace hexant::app {
@@ -35,22 +36,26 @@ using tracer::Counters;
 std::vector<int> window_frames(const std::string& text, const std::vector<int>& frames) {
     const auto slash = text.find('/');
     const auto digits = [](const std::string& t) {
-        return !t.empty() && t.size() <= 18 && t.find_first_not_of("0123456789") == std::string::npos;
+        return !t.empty() && t.size() <= 18 &&
+               t.find_first_not_of("0123456789") == std::string::npos;
     };
     const std::string i_text = slash == std::string::npos ? text : text.substr(0, slash);
     const std::string n_text = slash == std::string::npos ? "" : text.substr(slash + 1);
     if (slash == std::string::npos || !digits(i_text) || !digits(n_text))
-        throw std::runtime_error("--window: expected I/N (window I of N, I from 0 to N-1, whole numbers), got '" +
-                                 text + "'");
+        throw std::runtime_error(
+            "--window: expected I/N (window I of N, I from 0 to N-1, whole numbers), got '" + text +
+            "'");
     const unsigned long long i = std::stoull(i_text), n = std::stoull(n_text);
     if (n < 1 || i >= n)
-        throw std::runtime_error("--window " + text + ": I must lie from 0 to N-1 and N be at least 1");
+        throw std::runtime_error("--window " + text +
+                                 ": I must lie from 0 to N-1 and N be at least 1");
     const unsigned long long k = frames.size();
     // Window i holds frames [floor(i k / n), floor((i + 1) k / n)), in 128
     // bits (i k overflows 64 for windows counted in the billions).
     const auto begin = static_cast<std::size_t>(static_cast<unsigned __int128>(i) * k / n);
     const auto end = static_cast<std::size_t>(static_cast<unsigned __int128>(i + 1) * k / n);
-    return {frames.begin() + static_cast<std::ptrdiff_t>(begin), frames.begin() + static_cast<std::ptrdiff_t>(end)};
+    return {frames.begin() + static_cast<std::ptrdiff_t>(begin),
+            frames.begin() + static_cast<std::ptrdiff_t>(end)};
 }
 
 namespace {
@@ -175,7 +180,10 @@ void print_stats(std::ostream& out, const std::vector<std::pair<std::string, Cou
         if (columns.size() == 2) {
             const double a = row.value(columns[0].second), b = row.value(columns[1].second);
             out << std::setw(10) << std::setprecision(2);
-            if (a > 0.0) out << b / a; else out << "-";
+            if (a > 0.0)
+                out << b / a;
+            else
+                out << "-";
         }
         out << "\n";
     }
@@ -190,23 +198,27 @@ std::string json_number(double v) {
     return out.str();
 }
 
-void write_stats_json(const std::string& path, const std::vector<std::pair<std::string, ModeRun>>& columns) {
+void write_stats_json(const std::string& path,
+                      const std::vector<std::pair<std::string, ModeRun>>& columns) {
     std::ostringstream json;
     json << "{\n" << std::setprecision(17);
     for (std::size_t i = 0; i < columns.size(); ++i) {
         json << "  \"" << columns[i].first << "\": {";
         for (std::size_t r = 0; r < std::size(kRows); ++r)
-            json << (r ? ", " : "") << "\"" << kRows[r].name << "\": " << json_number(kRows[r].value(columns[i].second.counters));
+            json << (r ? ", " : "") << "\"" << kRows[r].name
+                 << "\": " << json_number(kRows[r].value(columns[i].second.counters));
         // Each frame on a line of its own.
         json << ",\n    \"per frame\": [";
         const auto& frames = columns[i].second.frames;
         for (std::size_t f = 0; f < frames.size(); ++f) {
             const FrameRecord& r = frames[f];
-            json << (f ? "," : "") << "\n      {\"frame\": " << r.frame << ", \"seconds\": " << json_number(r.seconds)
+            json << (f ? "," : "") << "\n      {\"frame\": " << r.frame
+                 << ", \"seconds\": " << json_number(r.seconds)
                  << ", \"samples per pixel\": " << json_number(r.mean_samples);
             if (r.estimate) {
                 json << ", \"tiles over target\": " << r.tiles_over_target
-                     << ", \"estimated rmse\": " << json_number(r.estimate->rmse) << ", \"worst tiles\": [";
+                     << ", \"estimated rmse\": " << json_number(r.estimate->rmse)
+                     << ", \"worst tiles\": [";
                 for (std::size_t t = 0; t < r.estimate->worst.size(); ++t) {
                     const auto& tile = r.estimate->worst[t];
                     json << (t ? ", " : "") << "{\"x\": " << tile.x << ", \"y\": " << tile.y
@@ -246,7 +258,7 @@ double peak_resident_mb() {
 // The progress line on a terminal: the frame, the frames done of all, the
 // samples per second so far and the time left at that pace.
 class ProgressLine {
-public:
+  public:
     explicit ProgressLine(std::size_t frames) : frames_(frames), start_(Clock::now()) {}
     void update(int frame, double fraction, std::uint64_t frame_samples) {
         const auto now = Clock::now();
@@ -255,10 +267,11 @@ public:
         const double elapsed = std::chrono::duration<double>(now - start_).count();
         const double done = double(done_) + fraction;
         char line[160];
-        std::snprintf(line, sizeof line, "\rframe %d (%zu of %zu done): %3d%%, %.2f M samples/s, %s left ",
-                      frame, done_, frames_, int(fraction * 100.0),
-                      elapsed > 0.0 ? double(samples_ + frame_samples) / elapsed * 1e-6 : 0.0,
-                      done > 0.0 ? duration(elapsed / done * (double(frames_) - done)).c_str() : "?");
+        std::snprintf(
+            line, sizeof line, "\rframe %d (%zu of %zu done): %3d%%, %.2f M samples/s, %s left ",
+            frame, done_, frames_, int(fraction * 100.0),
+            elapsed > 0.0 ? double(samples_ + frame_samples) / elapsed * 1e-6 : 0.0,
+            done > 0.0 ? duration(elapsed / done * (double(frames_) - done)).c_str() : "?");
         std::cerr << line << std::flush;
         width_ = std::max(width_, std::strlen(line));
     }
@@ -270,14 +283,18 @@ public:
         if (width_) std::cerr << "\r" << std::string(width_, ' ') << "\r" << std::flush;
     }
 
-private:
+  private:
     using Clock = std::chrono::steady_clock;
     static std::string duration(double seconds) {
         char text[32];
         seconds = std::ceil(seconds);  // (never "0 s" with work left)
-        if (seconds < 60.0) std::snprintf(text, sizeof text, "%.0f s", seconds);
-        else if (seconds < 3600.0) std::snprintf(text, sizeof text, "%d min %02d s", int(seconds) / 60, int(seconds) % 60);
-        else std::snprintf(text, sizeof text, "%d h %02d min", int(seconds) / 3600, int(seconds) / 60 % 60);
+        if (seconds < 60.0)
+            std::snprintf(text, sizeof text, "%.0f s", seconds);
+        else if (seconds < 3600.0)
+            std::snprintf(text, sizeof text, "%d min %02d s", int(seconds) / 60, int(seconds) % 60);
+        else
+            std::snprintf(text, sizeof text, "%d h %02d min", int(seconds) / 3600,
+                          int(seconds) / 60 % 60);
         return text;
     }
     std::size_t frames_, done_ = 0, width_ = 0;
@@ -291,9 +308,9 @@ private:
 // object, as much as the object: records and objects are never all held
 // at once).
 ModeRun render_mode(runtime::SceneDescription& scene, const RenderArguments& args,
-                     const Sampling& sampling, tracer::Mode mode, const std::string& pattern,
-                     const std::vector<int>& frames, bool write,
-                     std::vector<tracer::Image>* keep, bool last_use, std::ostream& err) {
+                    const Sampling& sampling, tracer::Mode mode, const std::string& pattern,
+                    const std::vector<int>& frames, bool write, std::vector<tracer::Image>* keep,
+                    bool last_use, std::ostream& err) {
     tracer::RenderSettings settings;
     settings.mode = mode;
     settings.samples_per_pixel = sampling.samples;
@@ -330,23 +347,27 @@ ModeRun render_mode(runtime::SceneDescription& scene, const RenderArguments& arg
         if (progress) progress->frame_done(renderer.last_sample_count());
         if (write) tracer::write_image(image, tracer::frame_path(pattern, frame));
         const double pixels = double(image.width) * image.height;
-        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
-        run.frames.push_back({frame, seconds, double(renderer.last_sample_count()) / pixels, renderer.last_estimate(),
-                              renderer.last_tiles_over_target()});
+        const double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+        run.frames.push_back({frame, seconds, double(renderer.last_sample_count()) / pixels,
+                              renderer.last_estimate(), renderer.last_tiles_over_target()});
         if (const auto& estimate = renderer.last_estimate(); estimate && write) {
             if (progress) progress->clear();
             char line[160];
-            std::snprintf(line, sizeof line, "frame %d: %.3f s, %.1f samples per pixel, estimated RMSE %.3g (linear light)",
-                          frame, seconds, run.frames.back().mean_samples, estimate->rmse);
+            std::snprintf(
+                line, sizeof line,
+                "frame %d: %.3f s, %.1f samples per pixel, estimated RMSE %.3g (linear light)",
+                frame, seconds, run.frames.back().mean_samples, estimate->rmse);
             err << line << "; worst " << tracer::FrameEstimate::kTile << "-pixel tiles";
             for (std::size_t k = 0; k < estimate->worst.size(); ++k) {
-                std::snprintf(line, sizeof line, "%s %.3g at (%d, %d)", k ? "," : "", estimate->worst[k].rmse,
-                              estimate->worst[k].x, estimate->worst[k].y);
+                std::snprintf(line, sizeof line, "%s %.3g at (%d, %d)", k ? "," : "",
+                              estimate->worst[k].rmse, estimate->worst[k].x, estimate->worst[k].y);
                 err << line;
             }
             if (const int over = renderer.last_tiles_over_target())
-                err << "; " << over << " of " << renderer.last_tile_count() << " tiles reached --spp "
-                    << sampling.samples << " above the target " << sampling.target_error;
+                err << "; " << over << " of " << renderer.last_tile_count()
+                    << " tiles reached --spp " << sampling.samples << " above the target "
+                    << sampling.target_error;
             err << "\n";
         }
         if (write && args.error_image) {
@@ -355,7 +376,8 @@ ModeRun render_mode(runtime::SceneDescription& scene, const RenderArguments& arg
             const std::vector<double>& squared = renderer.last_squared_error();
             for (int y = 0; y < image.height; ++y)
                 for (int x = 0; x < image.width; ++x)
-                    errors.set(x, y, glm::dvec3(std::sqrt(squared[std::size_t(y) * image.width + x])));
+                    errors.set(x, y,
+                               glm::dvec3(std::sqrt(squared[std::size_t(y) * image.width + x])));
             tracer::write_image(errors, tracer::frame_path(*args.error_image, frame));
         }
         if (write && args.samples_image) {
@@ -364,7 +386,9 @@ ModeRun render_mode(runtime::SceneDescription& scene, const RenderArguments& arg
             const std::vector<int>& samples = renderer.last_samples();
             for (int y = 0; y < image.height; ++y)
                 for (int x = 0; x < image.width; ++x)
-                    taken.set(x, y, glm::dvec3(double(samples[std::size_t(y) * image.width + x]) / sampling.samples));
+                    taken.set(x, y,
+                              glm::dvec3(double(samples[std::size_t(y) * image.width + x]) /
+                                         sampling.samples));
             tracer::write_image(taken, tracer::frame_path(*args.samples_image, frame));
         }
         if (keep) keep->push_back(std::move(image));
@@ -384,59 +408,78 @@ ModeRun render_mode(runtime::SceneDescription& scene, const RenderArguments& arg
 
 void add_render_arguments(CLI::App& command, RenderArguments& a) {
     add_scene_arguments(command, a.scene);
-    command.add_option("--mode", a.mode, "spacetime (default), frames (per-frame hierarchies) or brute");
-    command.add_option("--spp", a.samples_per_pixel,
-                       "Samples per pixel, or with --target-error their ceiling (default: --target-error "
-                       "1/128 under 256; with --no-jitter 1)")
+    command.add_option("--mode", a.mode,
+                       "spacetime (default), frames (per-frame hierarchies) or brute");
+    command
+        .add_option(
+            "--spp", a.samples_per_pixel,
+            "Samples per pixel, or with --target-error their ceiling (default: --target-error "
+            "1/128 under 256; with --no-jitter 1)")
         ->check(CLI::Range(1, 1 << 20));
     command.add_flag("--no-jitter", a.no_jitter,
                      "Samples at the centres of their strata (with --spp 1: the pixel centre)");
     command.add_option("--seed", a.seed,
                        "Scramble the samples with this number (default 0); another seed gives "
                        "an independent estimate of the same image");
-    command.add_flag("--error-estimate", a.error_estimate,
-                     "Estimate each frame's error without a reference: its samples are two independent "
-                     "halves (an even --spp), and the RMSE of their mean is printed with the worst tiles");
-    command.add_option("--error-image", a.error_image,
-                       "Also write each frame's per-pixel estimated RMSE (linear light) as an image; #### "
-                       "becomes the frame number (implies --error-estimate)");
+    command.add_flag(
+        "--error-estimate", a.error_estimate,
+        "Estimate each frame's error without a reference: its samples are two independent "
+        "halves (an even --spp), and the RMSE of their mean is printed with the worst tiles");
+    command.add_option(
+        "--error-image", a.error_image,
+        "Also write each frame's per-pixel estimated RMSE (linear light) as an image; #### "
+        "becomes the frame number (implies --error-estimate)");
     command.add_option_function<std::string>(
-        "--target-error", [&a](const std::string& text) { a.target_error = parse_target_error(text); },
+        "--target-error",
+        [&a](const std::string& text) { a.target_error = parse_target_error(text); },
         "Adaptive sampling: each 16-pixel tile doubles its samples until its estimated RMSE "
-        "(linear light, 0 to 1; a number or a fraction such as 1/128) is at most this, with --spp the ceiling "
+        "(linear light, 0 to 1; a number or a fraction such as 1/128) is at most this, with --spp "
+        "the ceiling "
         "(default: without --spp, 1/128 under 256)");
-    command.add_option("--samples-image", a.samples_image,
-                       "Also write the samples each pixel took, over --spp, as a grey image; #### becomes the "
-                       "frame number");
-    command.add_option("--frames", a.frames, "A:B renders frames A to B of the animation; a comma list (1,17,33 or 1:4,9) renders those");
-    command.add_option("--window", a.window,
-                       "I/N renders the I-th (0 to N-1, a Slurm array task's number) of N consecutive windows of "
-                       "the frames, each with a hierarchy over its own time only; the frames are those one run "
-                       "over all would write");
+    command.add_option(
+        "--samples-image", a.samples_image,
+        "Also write the samples each pixel took, over --spp, as a grey image; #### becomes the "
+        "frame number");
+    command.add_option("--frames", a.frames,
+                       "A:B renders frames A to B of the animation; a comma list (1,17,33 or "
+                       "1:4,9) renders those");
+    command.add_option(
+        "--window", a.window,
+        "I/N renders the I-th (0 to N-1, a Slurm array task's number) of N consecutive windows of "
+        "the frames, each with a hierarchy over its own time only; the frames are those one run "
+        "over all would write");
     command.add_flag("--resume", a.resume,
-                     "Skip frames already written (POV-Ray's +C) and remove what a killed run left half-written");
+                     "Skip frames already written (POV-Ray's +C) and remove what a killed run left "
+                     "half-written");
     command.add_option("-o,--output", a.output,
                        "Frame file pattern; #### becomes the frame number (default "
                        "out/SCENE/frame_####.png): .png is 8-bit sRGB, .exr linear float");
-    command.add_option("--contact-sheet", a.contact_sheet, "Also write the frames as one grid image");
+    command.add_option("--contact-sheet", a.contact_sheet,
+                       "Also write the frames as one grid image");
     command.add_option("--animation", a.animation, "Also write an animated GIF of the frames");
     command.add_flag("--stats", a.stats, "Print the paper's table rows for the run");
     command.add_option("--stats-json", a.stats_json, "Write the same figures as JSON");
     command.add_flag("--compare", a.compare,
                      "Render in spacetime and frames modes and print both columns and their ratio");
-    command.add_option("--threads", a.threads, "Worker threads (default 0: all cores)")->check(CLI::NonNegativeNumber);
+    command.add_option("--threads", a.threads, "Worker threads (default 0: all cores)")
+        ->check(CLI::NonNegativeNumber);
     command.add_option_function<std::string>(
         "--light-speed",
         [&a](const std::string& text) {
             // (strtod: a subnormal speed is a speed; stod refuses it.)
             char* end = nullptr;
             double value = std::strtod(text.c_str(), &end);
-            if (text.empty() || end != text.c_str() + text.size()) value = std::numeric_limits<double>::quiet_NaN();
+            if (text.empty() || end != text.c_str() + text.size())
+                value = std::numeric_limits<double>::quiet_NaN();
             if (!(value > 0.0))
-                throw CLI::ValidationError("--light-speed", "'" + text + "' is not a positive number of scene units per clock unit (inf: instant light)");
+                throw CLI::ValidationError("--light-speed",
+                                           "'" + text +
+                                               "' is not a positive number of scene units per "
+                                               "clock unit (inf: instant light)");
             a.light_speed = value;
         },
-        "Finite speed of light, scene units per clock unit: every ray runs back in time as it goes, so a fast "
+        "Finite speed of light, scene units per clock unit: every ray runs back in time as it "
+        "goes, so a fast "
         "object is seen where it was when its light left it (default: instant)");
     add_hierarchy_arguments(command, a.hierarchy);
 }
@@ -456,13 +499,19 @@ void check_outputs(const RenderArguments& args, const std::string& pattern,
         enum class Kind { Image, Animation, Text } kind;
     };
     std::vector<Output> outputs{{"-o", pattern, true, Output::Kind::Image}};
-    if (args.error_image) outputs.push_back({"--error-image", *args.error_image, true, Output::Kind::Image});
-    if (args.samples_image) outputs.push_back({"--samples-image", *args.samples_image, true, Output::Kind::Image});
-    if (args.contact_sheet) outputs.push_back({"--contact-sheet", *args.contact_sheet, false, Output::Kind::Image});
-    if (args.animation) outputs.push_back({"--animation", *args.animation, false, Output::Kind::Animation});
-    if (args.stats_json) outputs.push_back({"--stats-json", *args.stats_json, false, Output::Kind::Text});
+    if (args.error_image)
+        outputs.push_back({"--error-image", *args.error_image, true, Output::Kind::Image});
+    if (args.samples_image)
+        outputs.push_back({"--samples-image", *args.samples_image, true, Output::Kind::Image});
+    if (args.contact_sheet)
+        outputs.push_back({"--contact-sheet", *args.contact_sheet, false, Output::Kind::Image});
+    if (args.animation)
+        outputs.push_back({"--animation", *args.animation, false, Output::Kind::Animation});
+    if (args.stats_json)
+        outputs.push_back({"--stats-json", *args.stats_json, false, Output::Kind::Text});
     const auto file_of = [&](const Output& o, int frame) {
-        return std::filesystem::absolute(o.per_frame ? tracer::frame_path(o.name, frame) : o.name).lexically_normal();
+        return std::filesystem::absolute(o.per_frame ? tracer::frame_path(o.name, frame) : o.name)
+            .lexically_normal();
     };
     for (std::size_t i = 0; i < outputs.size(); ++i) {
         const Output& o = outputs[i];
@@ -485,10 +534,13 @@ void check_outputs(const RenderArguments& args, const std::string& pattern,
         // process may write in. Nothing is made before the render.)
         std::filesystem::path folder = file_of(o, selected.front()).parent_path();
         std::error_code error;
-        while (!std::filesystem::exists(folder, error) && folder.has_parent_path() && folder != folder.parent_path())
+        while (!std::filesystem::exists(folder, error) && folder.has_parent_path() &&
+               folder != folder.parent_path())
             folder = folder.parent_path();
-        if (!std::filesystem::is_directory(folder, error) || access(folder.c_str(), W_OK | X_OK) != 0)
-            throw std::runtime_error(o.flag + " " + o.name + ": cannot write in " + folder.string());
+        if (!std::filesystem::is_directory(folder, error) ||
+            access(folder.c_str(), W_OK | X_OK) != 0)
+            throw std::runtime_error(o.flag + " " + o.name + ": cannot write in " +
+                                     folder.string());
         for (std::size_t j = 0; j < i; ++j)
             for (const int frame : selected) {
                 if (file_of(o, frame) != file_of(outputs[j], frame)) continue;
@@ -501,15 +553,16 @@ void check_outputs(const RenderArguments& args, const std::string& pattern,
             }
     }
     if (args.animation && std::max(animation.width, animation.height) > tracer::kGifMaxSide)
-        throw std::runtime_error(*args.animation + ": a GIF is at most " +
-                                 std::to_string(tracer::kGifMaxSide) +
-                                 " pixels a side; the frames are " + std::to_string(animation.width) +
-                                 " by " + std::to_string(animation.height));
+        throw std::runtime_error(
+            *args.animation + ": a GIF is at most " + std::to_string(tracer::kGifMaxSide) +
+            " pixels a side; the frames are " + std::to_string(animation.width) + " by " +
+            std::to_string(animation.height));
 }
 
 }  // namespace
 
-void apply_scene_defaults(const RenderArguments& args, runtime::SceneDescription& scene, std::ostream& err) {
+void apply_scene_defaults(const RenderArguments& args, runtime::SceneDescription& scene,
+                          std::ostream& err) {
     const auto& g = scene.global;
     if (!g.motion_blur_samples) return;
     // MegaPOV's motion_blur SAMPLES, TIME: TIME is how long (in clock
@@ -543,14 +596,17 @@ double parse_target_error(const std::string& text) {
         value = std::numeric_limits<double>::quiet_NaN();
     }
     if (!(value > 0.0) || !std::isfinite(value))
-        throw CLI::ValidationError("--target-error", "expected a positive number (an RMSE in linear light, e.g. "
-                                                     "0.01 or 1/128), got '" + text + "'");
+        throw CLI::ValidationError("--target-error",
+                                   "expected a positive number (an RMSE in linear light, e.g. "
+                                   "0.01 or 1/128), got '" +
+                                       text + "'");
     return value;
 }
 
 Sampling resolve_sampling(const RenderArguments& args, const runtime::SceneDescription& scene) {
     if (args.target_error && !(*args.target_error > 0.0 && std::isfinite(*args.target_error)))
-        throw std::runtime_error("--target-error: expected a positive number (an RMSE in linear light)");
+        throw std::runtime_error(
+            "--target-error: expected a positive number (an RMSE in linear light)");
     Sampling s;
     const std::optional<int> asked =
         args.samples_per_pixel ? args.samples_per_pixel : scene.global.motion_blur_samples;
@@ -564,12 +620,16 @@ Sampling resolve_sampling(const RenderArguments& args, const runtime::SceneDescr
     const bool estimated = s.target_error > 0.0 || args.error_estimate || args.error_image;
     if (!estimated) return s;
     if (s.samples < 2 || s.samples % 2 != 0 || args.no_jitter) {
-        const char* flags = args.target_error ? "--target-error needs" : "--error-estimate and --error-image need";
-        const std::string given = args.samples_per_pixel    ? "--spp is " + std::to_string(s.samples)
-                                  : asked                    ? "the scene's motion_blur gives " + std::to_string(s.samples)
-                                                             : "the default ceiling is " + std::to_string(s.samples);
-        throw std::runtime_error(std::string(flags) + " an even --spp of 2 or more (two independent halves) and jitter; " +
-                                 given + (args.no_jitter ? ", with --no-jitter" : ""));
+        const char* flags =
+            args.target_error ? "--target-error needs" : "--error-estimate and --error-image need";
+        const std::string given = args.samples_per_pixel ? "--spp is " + std::to_string(s.samples)
+                                  : asked
+                                      ? "the scene's motion_blur gives " + std::to_string(s.samples)
+                                      : "the default ceiling is " + std::to_string(s.samples);
+        throw std::runtime_error(
+            std::string(flags) +
+            " an even --spp of 2 or more (two independent halves) and jitter; " + given +
+            (args.no_jitter ? ", with --no-jitter" : ""));
     }
     s.sets = 2;
     return s;
@@ -581,9 +641,11 @@ void check_render_plan(const RenderArguments& args, const std::filesystem::path&
     const std::string pattern =
         args.output ? *args.output : "out/" + scene_file.stem().string() + "/frame_####.png";
     if (args.window && (args.contact_sheet || args.animation || args.compare))
-        throw std::runtime_error("--window renders part of the frames: --contact-sheet, --animation and --compare "
-                                 "need them all (join the windows' frames with --resume and those outputs)");
-    if (args.resume && args.compare) throw std::runtime_error("--resume skips frames --compare would measure");
+        throw std::runtime_error(
+            "--window renders part of the frames: --contact-sheet, --animation and --compare "
+            "need them all (join the windows' frames with --resume and those outputs)");
+    if (args.resume && args.compare)
+        throw std::runtime_error("--resume skips frames --compare would measure");
     (void)resolve_sampling(args, scene);
     check_outputs(args, pattern, selected, scene.animation);
 }
@@ -602,8 +664,9 @@ int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err
             args.output ? *args.output
                         : "out/" + resolved.scene.stem().string() + "/frame_####.png";
         if (args.window && (args.contact_sheet || args.animation || args.compare))
-            throw std::runtime_error("--window renders part of the frames: --contact-sheet, --animation and --compare "
-                                     "need them all (join the windows' frames with --resume and those outputs)");
+            throw std::runtime_error(
+                "--window renders part of the frames: --contact-sheet, --animation and --compare "
+                "need them all (join the windows' frames with --resume and those outputs)");
         if (args.resume && args.compare)
             throw std::runtime_error("--resume skips frames --compare would measure");
         if (args.window) {
@@ -612,7 +675,9 @@ int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err
                 out << "window " << *args.window << ": no frames (more windows than frames)\n";
                 // (Its statistics: none, for a merge of every window's.)
                 if (args.stats_json)
-                    write_stats_json(*args.stats_json, {{tracer::mode_name(tracer::parse_mode(args.mode)), ModeRun{}}});
+                    write_stats_json(
+                        *args.stats_json,
+                        {{tracer::mode_name(tracer::parse_mode(args.mode)), ModeRun{}}});
                 return 0;
             }
         }
@@ -635,9 +700,12 @@ int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err
                 std::string why;
                 try {
                     const image::StoredImage stored = image::read_stored_image(path);
-                    if (stored.width != scene.animation.width || stored.height != scene.animation.height)
-                        why = std::to_string(stored.width) + " by " + std::to_string(stored.height) + " pixels, not " +
-                              std::to_string(scene.animation.width) + " by " + std::to_string(scene.animation.height);
+                    if (stored.width != scene.animation.width ||
+                        stored.height != scene.animation.height)
+                        why = std::to_string(stored.width) + " by " +
+                              std::to_string(stored.height) + " pixels, not " +
+                              std::to_string(scene.animation.width) + " by " +
+                              std::to_string(scene.animation.height);
                 } catch (const std::exception& e) {
                     why = e.what();
                 }
@@ -646,19 +714,23 @@ int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err
                     missing.push_back(frame);
                 }
             }
-            if (leftovers > 0) err << "--resume: removed " << leftovers << " half-written temporar"
-                                   << (leftovers == 1 ? "y" : "ies") << "\n";
+            if (leftovers > 0)
+                err << "--resume: removed " << leftovers << " half-written temporar"
+                    << (leftovers == 1 ? "y" : "ies") << "\n";
             out << "--resume: " << selected.size() - missing.size() << " of " << selected.size()
                 << " frames already written\n";
             written.assign(selected.begin(), selected.end());
-            std::erase_if(written, [&](int frame) { return std::binary_search(missing.begin(), missing.end(), frame); });
+            std::erase_if(written, [&](int frame) {
+                return std::binary_search(missing.begin(), missing.end(), frame);
+            });
             if (missing.empty() && !args.contact_sheet && !args.animation) return 0;
             selected = std::move(missing);
         }
         const bool keep_frames = args.contact_sheet || args.animation;
         std::vector<tracer::Image> frames;
         std::vector<std::pair<std::string, ModeRun>> columns;
-        const tracer::Mode mode = args.compare ? tracer::Mode::Spacetime : tracer::parse_mode(args.mode);
+        const tracer::Mode mode =
+            args.compare ? tracer::Mode::Spacetime : tracer::parse_mode(args.mode);
         if (!selected.empty())
             columns.emplace_back(tracer::mode_name(mode),
                                  render_mode(scene, args, sampling, mode, pattern, selected, true,
@@ -668,31 +740,34 @@ int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err
             // order, read back as written (an 8-bit sRGB frame gives its
             // very bytes again).
             std::vector<std::pair<int, tracer::Image>> all;
-            for (std::size_t i = 0; i < selected.size(); ++i) all.emplace_back(selected[i], std::move(frames[i]));
+            for (std::size_t i = 0; i < selected.size(); ++i)
+                all.emplace_back(selected[i], std::move(frames[i]));
             for (const int frame : written)
                 all.emplace_back(frame, tracer::read_image(tracer::frame_path(pattern, frame)));
-            std::sort(all.begin(), all.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+            std::sort(all.begin(), all.end(),
+                      [](const auto& a, const auto& b) { return a.first < b.first; });
             frames.clear();
             for (auto& [frame, image] : all) frames.push_back(std::move(image));
         }
         if (args.compare)  // the paper's order: frame by frame, then spacetime
             columns.emplace(columns.begin(), "frames",
-                            render_mode(scene, args, sampling, tracer::Mode::Frames, pattern, selected, false,
-                                        nullptr, true, err));
+                            render_mode(scene, args, sampling, tracer::Mode::Frames, pattern,
+                                        selected, false, nullptr, true, err));
         if (selected.empty()) {
             out << "frames: none rendered (all written already)\n";
         } else {
-        const int first = selected.front(), last = selected.back();
-        const bool contiguous = last - first + 1 == static_cast<int>(selected.size());
-        out << "frames ";
-        if (contiguous) {
-            out << first << " to " << last << ": " << tracer::frame_path(pattern, first)
-                << (last > first ? " ... " + tracer::frame_path(pattern, last) : "") << "\n";
-        } else {
-            for (std::size_t i = 0; i < selected.size(); ++i) out << (i ? ", " : "") << selected[i];
-            out << ": " << tracer::frame_path(pattern, first) << " ... "
-                << tracer::frame_path(pattern, last) << "\n";
-        }
+            const int first = selected.front(), last = selected.back();
+            const bool contiguous = last - first + 1 == static_cast<int>(selected.size());
+            out << "frames ";
+            if (contiguous) {
+                out << first << " to " << last << ": " << tracer::frame_path(pattern, first)
+                    << (last > first ? " ... " + tracer::frame_path(pattern, last) : "") << "\n";
+            } else {
+                for (std::size_t i = 0; i < selected.size(); ++i)
+                    out << (i ? ", " : "") << selected[i];
+                out << ": " << tracer::frame_path(pattern, first) << " ... "
+                    << tracer::frame_path(pattern, last) << "\n";
+            }
         }
         if (args.contact_sheet) {
             tracer::write_image(naming_out_of_memory("making the contact sheet",

@@ -2,8 +2,8 @@
 // file, and the paper's table rows (--stats, --compare).
 #pragma once
 
-#include <iosfwd>
 #include <filesystem>
+#include <iosfwd>
 #include <optional>
 #include <string>
 

@@ -37,7 +37,8 @@ std::string transform(const runtime::Transform& transform, double t) {
         return "transform=" + s + "]";
     }
     // With a deformation there is no one matrix: each step as written.
-    static const char* names[] = {"translate", "rotate", "scale", "matrix", "twist", "taper", "bend"};
+    static const char* names[] = {"translate", "rotate", "scale", "matrix",
+                                  "twist",     "taper",  "bend"};
     std::string s = "steps=";
     bool first = true;
     for (const auto& step : transform.steps()) {
@@ -63,8 +64,9 @@ std::string transform(const runtime::Transform& transform, double t) {
 std::string modifiers(const runtime::pattern::Pattern& p, double t) {
     std::string s = " frequency=" + number(p.frequency(t)) + " phase=" + number(p.phase(t));
     if (p.turbulence)
-        s += " turbulence=<" + number(p.turbulence->amount.c[0](t)) + ", " + number(p.turbulence->amount.c[1](t)) +
-             ", " + number(p.turbulence->amount.c[2](t)) + ">";
+        s += " turbulence=<" + number(p.turbulence->amount.c[0](t)) + ", " +
+             number(p.turbulence->amount.c[1](t)) + ", " + number(p.turbulence->amount.c[2](t)) +
+             ">";
     if (!p.warps.empty()) s += " warps=" + std::to_string(p.warps.size());
     return s;
 }
@@ -74,7 +76,7 @@ std::string modifiers(const runtime::pattern::Pattern& p, double t) {
 // printed as a tree. An entry used more than once is printed in full the
 // first time, as `[#k ...]`, and as `[#k]` after.
 class Shared {
-public:
+  public:
     // Counts the uses of every entry under a texture, pigment or normal
     // (each entry's own entries once).
     void count(const runtime::Texture& x) {
@@ -100,12 +102,14 @@ public:
         return first ? "[" + label + " " + print() + "]" : "[" + label + "]";
     }
 
-private:
+  private:
     std::map<const void*, int> uses_, labels_;
 };
 
 // " uv_mapping" where it is on (nothing otherwise: dumps without it stay as they were).
-std::string uv_word(runtime::UvMapping m) { return m == runtime::UvMapping::Off ? "" : " uv_mapping"; }
+std::string uv_word(runtime::UvMapping m) {
+    return m == runtime::UvMapping::Off ? "" : " uv_mapping";
+}
 
 std::string pigment_body(const runtime::Pigment& p, double t, Shared& shared);
 std::string pigment(const runtime::Pigment& p, double t, Shared& shared) {
@@ -114,33 +118,39 @@ std::string pigment(const runtime::Pigment& p, double t, Shared& shared) {
 
 std::string pigment_body(const runtime::Pigment& p, double t, Shared& shared) {
     switch (p.pattern) {
-        case runtime::Pigment::Pattern::Solid: return "solid" + colour(p.colours[0], t);
+        case runtime::Pigment::Pattern::Solid:
+            return "solid" + colour(p.colours[0], t);
         case runtime::Pigment::Pattern::Patterned: {
             // The kind, its modifiers, then its map's entries at t (value and
             // colour, or value and pigment).
             std::string s = std::string(p.patterned.kind->name) + modifiers(p.patterned, t);
-            for (const auto& e : p.colour_map.entries) s += " " + number(e.value(t)) + colour(e.colour, t);
+            for (const auto& e : p.colour_map.entries)
+                s += " " + number(e.value(t)) + colour(e.colour, t);
             for (const auto& e : p.pigment_map)
-                s += " " + number(e.value(t)) + shared.entry(e.pigment.get(), [&] { return pigment(*e.pigment, t, shared); });
+                s += " " + number(e.value(t)) +
+                     shared.entry(e.pigment.get(), [&] { return pigment(*e.pigment, t, shared); });
             return s;
         }
         case runtime::Pigment::Pattern::Image:
-            return "image_map file=" + p.image_map->file + " map_type=" +
-                   std::to_string(static_cast<int>(p.image_map->map_type)) + " interpolate=" +
-                   std::to_string(static_cast<int>(p.image_map->interpolate)) + " once=" +
-                   std::to_string(p.image_map->once ? 1 : 0) + modifiers(p.patterned, t);
-        case runtime::Pigment::Pattern::Unsupported: return p.unsupported_name;
+            return "image_map file=" + p.image_map->file +
+                   " map_type=" + std::to_string(static_cast<int>(p.image_map->map_type)) +
+                   " interpolate=" + std::to_string(static_cast<int>(p.image_map->interpolate)) +
+                   " once=" + std::to_string(p.image_map->once ? 1 : 0) + modifiers(p.patterned, t);
+        case runtime::Pigment::Pattern::Unsupported:
+            return p.unsupported_name;
     }
     return "";
 }
 
 std::string normal(const runtime::Normal& n, double t, Shared& shared) {
     if (!n.unsupported_name.empty()) return n.unsupported_name;
-    std::string s = std::string(n.patterned.kind->name) + " amount=" + number(n.amount(t)) + modifiers(n.patterned, t);
+    std::string s = std::string(n.patterned.kind->name) + " amount=" + number(n.amount(t)) +
+                    modifiers(n.patterned, t);
     // A normal map's entries (value and normal), a slope map's (value,
     // height, slope).
     for (const auto& e : n.normal_map)
-        s += " " + number(e.value(t)) + shared.entry(e.normal.get(), [&] { return normal(*e.normal, t, shared); });
+        s += " " + number(e.value(t)) +
+             shared.entry(e.normal.get(), [&] { return normal(*e.normal, t, shared); });
     for (const auto& e : n.slope_map)
         s += " " + number(e.value(t)) + "<" + number(e.height(t)) + ", " + number(e.slope(t)) + ">";
     return s + uv_word(n.uv_mapping);
@@ -153,9 +163,11 @@ std::string layer(const runtime::Texture& texture, double t, Shared& shared);
 std::string texture(const runtime::Texture& x, double t, Shared& shared) {
     if (x.is_patterned()) {
         // The pattern, then its map's entries (value and texture).
-        std::string s = "texture_map=" + std::string(x.patterned.kind->name) + modifiers(x.patterned, t);
+        std::string s =
+            "texture_map=" + std::string(x.patterned.kind->name) + modifiers(x.patterned, t);
         for (const auto& e : x.texture_map)
-            s += " " + number(e.value(t)) + shared.entry(e.texture.get(), [&] { return texture(*e.texture, t, shared); });
+            s += " " + number(e.value(t)) +
+                 shared.entry(e.texture.get(), [&] { return texture(*e.texture, t, shared); });
         return s + uv_word(x.uv_mapping);
     }
     std::string s = layer(x, t, shared);
@@ -172,8 +184,8 @@ std::string layer(const runtime::Texture& texture, double t, Shared& shared) {
     s += " finish=ambient:" + number(f.ambient(t)) + ",diffuse:" + number(f.diffuse(t)) +
          ",brilliance:" + number(f.brilliance(t)) + ",phong:" + number(f.phong(t)) +
          ",phong_size:" + number(f.phong_size(t)) + ",specular:" + number(f.specular(t)) +
-         ",roughness:" + number(f.roughness(t)) + ",reflection:<" + number(f.reflection.c[0](t)) + ", " +
-         number(f.reflection.c[1](t)) + ", " + number(f.reflection.c[2](t)) + ">";
+         ",roughness:" + number(f.roughness(t)) + ",reflection:<" + number(f.reflection.c[0](t)) +
+         ", " + number(f.reflection.c[1](t)) + ", " + number(f.reflection.c[2](t)) + ">";
     return s + uv_word(texture.uv_mapping);
 }
 
@@ -217,7 +229,8 @@ struct ShapeWriter {
 
     static std::string write(const runtime::Shape& shape, double t) {
         if (const auto* c = std::get_if<runtime::Csg>(&shape))
-            return std::string(runtime::shape_name(shape)) + " children=" + std::to_string(c->children.size());
+            return std::string(runtime::shape_name(shape)) +
+                   " children=" + std::to_string(c->children.size());
         ShapeWriter writer{t, runtime::shape_name(shape)};
         runtime::for_each_parameter(shape, writer);
         return writer.out;
@@ -256,22 +269,30 @@ void dump_object(const runtime::ObjectRecord& top, const std::string& top_name, 
 
 void dump_scene(const runtime::SceneDescription& scene, double t, std::ostream& out) {
     const runtime::CameraFrame camera = scene.camera.evaluate(t);
-    out << "camera location=" << vector(camera.location) << " direction=" << vector(camera.direction)
-        << " right=" << vector(camera.right) << " up=" << vector(camera.up)
-        << " sky=" << vector(camera.sky);
+    out << "camera location=" << vector(camera.location)
+        << " direction=" << vector(camera.direction) << " right=" << vector(camera.right)
+        << " up=" << vector(camera.up) << " sky=" << vector(camera.sky);
     // (Only what differs from a perspective pinhole, so that the usual
     // camera's line stays as it was.)
     switch (camera.type) {
-        case runtime::CameraType::Perspective: break;
-        case runtime::CameraType::Orthographic: out << " orthographic"; break;
-        case runtime::CameraType::Fisheye: out << " fisheye angle=" << number(camera.angle); break;
-        case runtime::CameraType::Panoramic: out << " panoramic"; break;
+        case runtime::CameraType::Perspective:
+            break;
+        case runtime::CameraType::Orthographic:
+            out << " orthographic";
+            break;
+        case runtime::CameraType::Fisheye:
+            out << " fisheye angle=" << number(camera.angle);
+            break;
+        case runtime::CameraType::Panoramic:
+            out << " panoramic";
+            break;
         case runtime::CameraType::Spherical:
             out << " spherical angle=" << number(camera.h_angle) << "," << number(camera.v_angle);
             break;
     }
     if (camera.aperture != 0.0)
-        out << " aperture=" << number(camera.aperture) << " focal_distance=" << number(camera.focal_distance);
+        out << " aperture=" << number(camera.aperture)
+            << " focal_distance=" << number(camera.focal_distance);
     out << "\n";
     if (scene.camera.normal) {
         Shared shared;
@@ -289,19 +310,21 @@ void dump_scene(const runtime::SceneDescription& scene, double t, std::ostream& 
         out << "\n";
     }
     for (const auto& fog : scene.fogs)
-        out << "fog type=" << fog.type << " distance=" << number(fog.distance(t)) << " colour=" << colour(fog.colour, t)
-            << "\n";
+        out << "fog type=" << fog.type << " distance=" << number(fog.distance(t))
+            << " colour=" << colour(fog.colour, t) << "\n";
     for (std::size_t i = 0; i < scene.lights.size(); ++i) {
         const auto& light = scene.lights[i];
         if (!light.lifetime.contains(t)) continue;
-        const glm::dvec4 p = light.transform.has_deformation()
-                                 ? glm::dvec4(light.position(t), 1.0)
-                                 : light.transform.matrix_at(t) * glm::dvec4(light.position(t), 1.0);
-        out << "light[" << i << "] position=" << vector(glm::dvec3(p)) << " colour="
-            << colour(light.colour, t) << " shadowless=" << light.shadowless;
+        const glm::dvec4 p =
+            light.transform.has_deformation()
+                ? glm::dvec4(light.position(t), 1.0)
+                : light.transform.matrix_at(t) * glm::dvec4(light.position(t), 1.0);
+        out << "light[" << i << "] position=" << vector(glm::dvec3(p))
+            << " colour=" << colour(light.colour, t) << " shadowless=" << light.shadowless;
         // (point_at a point, the area's axes directions, in the world: the
         // light's transform applied, as to its position.)
-        const glm::dmat4 m = light.transform.has_deformation() ? glm::dmat4(1.0) : light.transform.matrix_at(t);
+        const glm::dmat4 m =
+            light.transform.has_deformation() ? glm::dmat4(1.0) : light.transform.matrix_at(t);
         const auto vec3 = [&](const runtime::Vector3Function& v, double w) {
             const glm::dvec4 p = m * glm::dvec4(v.c[0](t), v.c[1](t), v.c[2](t), w);
             return "<" + number(p.x) + ", " + number(p.y) + ", " + number(p.z) + ">";
@@ -311,12 +334,15 @@ void dump_scene(const runtime::SceneDescription& scene, double t, std::ostream& 
                 << " radius=" << number(light.radius(t)) << " falloff=" << number(light.falloff(t))
                 << " tightness=" << number(light.tightness(t));
         if (light.parallel) out << " parallel";
-        if (light.parallel || light.kind != runtime::LightKind::Point) out << " point_at=" << vec3(light.point_at, 1.0);
+        if (light.parallel || light.kind != runtime::LightKind::Point)
+            out << " point_at=" << vec3(light.point_at, 1.0);
         if (light.fade_power(t) > 0.0)
-            out << " fade_distance=" << number(light.fade_distance(t)) << " fade_power=" << number(light.fade_power(t));
+            out << " fade_distance=" << number(light.fade_distance(t))
+                << " fade_power=" << number(light.fade_power(t));
         if (light.area)
-            out << " area_light=" << vec3(light.area->axis1, 0.0) << ", " << vec3(light.area->axis2, 0.0) << ", "
-                << light.area->size1 << ", " << light.area->size2 << (light.jitter ? " jitter" : "")
+            out << " area_light=" << vec3(light.area->axis1, 0.0) << ", "
+                << vec3(light.area->axis2, 0.0) << ", " << light.area->size1 << ", "
+                << light.area->size2 << (light.jitter ? " jitter" : "")
                 << (light.circular ? " circular" : "") << (light.orient ? " orient" : "");
         out << "\n";
     }

@@ -36,20 +36,22 @@ std::string timing(const runtime::ObjectRecord& object) {
 
 void summarize_scene(const runtime::SceneDescription& scene, std::ostream& out) {
     const auto& a = scene.animation;
-    out << "frames " << a.initial_frame << ".." << a.final_frame << ", clock " << number(a.time_begin())
-        << ".." << number(a.time_end()) << (a.cyclic ? " (cyclic)" : "") << ", shutter "
-        << number(a.shutter) << (a.shutter_curve.is_box() ? "" : " (shutter curve)")
-        << (a.rolling_shutter > 0.0 ? ", rolling shutter " + number(a.rolling_shutter) : std::string())
+    out << "frames " << a.initial_frame << ".." << a.final_frame << ", clock "
+        << number(a.time_begin()) << ".." << number(a.time_end()) << (a.cyclic ? " (cyclic)" : "")
+        << ", shutter " << number(a.shutter) << (a.shutter_curve.is_box() ? "" : " (shutter curve)")
+        << (a.rolling_shutter > 0.0 ? ", rolling shutter " + number(a.rolling_shutter)
+                                    : std::string())
         << ", " << a.width << "x" << a.height << "\n";
     const auto camera = scene.camera.evaluate(a.time_begin());
     out << "camera at " << vector(camera.location) << " looking along " << vector(camera.direction)
         << (scene.camera.depends_on_time() ? ", moves with time" : ", static") << "\n";
     out << scene.lights.size() << " light" << (scene.lights.size() == 1 ? "" : "s") << "\n";
     for (std::size_t i = 0; i < scene.lights.size(); ++i)
-        out << "  light " << i << ": "
-            << (scene.lights[i].moves() ? "moves with time" : "static")
+        out << "  light " << i << ": " << (scene.lights[i].moves() ? "moves with time" : "static")
             << (scene.lights[i].shadowless ? ", shadowless" : "")
-            << (scene.lights[i].lifetime.is_always() ? "" : ", shines " + scene.lights[i].lifetime.to_string())
+            << (scene.lights[i].lifetime.is_always()
+                    ? ""
+                    : ", shines " + scene.lights[i].lifetime.to_string())
             << "\n";
     out << scene.objects.size() << " object" << (scene.objects.size() == 1 ? "" : "s") << "\n";
     std::size_t moving = 0;

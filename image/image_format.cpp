@@ -1,8 +1,8 @@
 #include "image/image_format.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <array>
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
@@ -49,7 +49,8 @@ StoredImage read_stored_image(const fs::path& path) {
     {
         std::ifstream in(path, std::ios::binary);
         if (!in)
-            throw std::runtime_error(path.string() + ": cannot read image: " + std::strerror(errno));
+            throw std::runtime_error(path.string() +
+                                     ": cannot read image: " + std::strerror(errno));
         in.read(reinterpret_cast<char*>(head.data()), head.size());
         got = static_cast<std::size_t>(in.gcount());
     }

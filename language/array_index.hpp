@@ -17,11 +17,12 @@ namespace hexant::language {
 inline std::size_t element_index(const Array& array, const std::vector<double>& indices) {
     if (indices.size() != array.dimensions.size())
         throw ValueError("this array has " + std::to_string(array.dimensions.size()) +
-                         " dimension(s) but " + std::to_string(indices.size()) + " index(es) were given");
+                         " dimension(s) but " + std::to_string(indices.size()) +
+                         " index(es) were given");
     std::size_t flat = 0;
     for (std::size_t d = 0; d < indices.size(); ++d) {
-        const long long i = checked_integer(std::floor(indices[d]), "an array index", 0,
-                                            array.dimensions[d] - 1);
+        const long long i =
+            checked_integer(std::floor(indices[d]), "an array index", 0, array.dimensions[d] - 1);
         flat = flat * static_cast<std::size_t>(array.dimensions[d]) + static_cast<std::size_t>(i);
     }
     return flat;

@@ -23,12 +23,12 @@ std::string format_number(double value, int length, int precision) {
     const int width = std::min(std::abs(length), 200);
     const auto print = [&](char conversion) {
         char format[16];
-        std::snprintf(format, sizeof format, "%%%s*%s%c", zero_pad ? "0" : "", precision >= 0 ? ".*" : "",
-                      conversion);
+        std::snprintf(format, sizeof format, "%%%s*%s%c", zero_pad ? "0" : "",
+                      precision >= 0 ? ".*" : "", conversion);
         char buffer[1024];
-        const int n = precision >= 0
-                          ? std::snprintf(buffer, sizeof buffer, format, width, std::min(precision, 100), value)
-                          : std::snprintf(buffer, sizeof buffer, format, width, value);
+        const int n = precision >= 0 ? std::snprintf(buffer, sizeof buffer, format, width,
+                                                     std::min(precision, 100), value)
+                                     : std::snprintf(buffer, sizeof buffer, format, width, value);
         return std::pair<std::string, int>(buffer, n);
     };
     auto [text, n] = print('f');
@@ -42,11 +42,11 @@ using Args = std::vector<Value>;
 
 void expect_count(const std::string& name, const Args& args, std::size_t lo, std::size_t hi) {
     if (args.size() < lo || args.size() > hi) {
-        std::string want = lo == hi ? std::to_string(lo)
+        std::string want = lo == hi   ? std::to_string(lo)
                            : hi > 100 ? "at least " + std::to_string(lo)
                                       : std::to_string(lo) + " to " + std::to_string(hi);
-        throw ValueError(name + "() takes " + want + " argument" + (hi == 1 ? "" : "s") +
-                         ", not " + std::to_string(args.size()));
+        throw ValueError(name + "() takes " + want + " argument" + (hi == 1 ? "" : "s") + ", not " +
+                         std::to_string(args.size()));
     }
 }
 
@@ -193,10 +193,10 @@ const std::map<std::string, Builtin>& table() {
              if (s.is_constant())
                  return s.constant() < 0.0 ? a[1] : (s.constant() == 0.0 ? a[2] : a[3]);
              const TimeFunction is_zero = TimeFunction::apply(TimeOp::Equal, s, 0.0);
-             return Value{TimeFunction::apply(
-                 TimeOp::Select, s, arg_float(n, a, 1),
-                 TimeFunction::apply(TimeOp::Conditional, is_zero, arg_float(n, a, 2),
-                                     arg_float(n, a, 3)))};
+             return Value{
+                 TimeFunction::apply(TimeOp::Select, s, arg_float(n, a, 1),
+                                     TimeFunction::apply(TimeOp::Conditional, is_zero,
+                                                         arg_float(n, a, 2), arg_float(n, a, 3)))};
          }},
         {"vlength",
          [](const std::string& n, const Args& a, RandomStreams&) {
@@ -255,25 +255,32 @@ const std::map<std::string, Builtin>& table() {
         {"str",
          [](const std::string& n, const Args& a, RandomStreams&) {
              expect_count(n, a, 3, 3);
-             return Value{format_number(arg_constant(n, a, 0),
-                                        static_cast<int>(checked_integer(arg_constant(n, a, 1), "str()'s length", -kMaxWidth, kMaxWidth)),
-                                        static_cast<int>(checked_integer(arg_constant(n, a, 2), "str()'s precision", -kMaxWidth, kMaxPrecision)))};
+             return Value{format_number(
+                 arg_constant(n, a, 0),
+                 static_cast<int>(checked_integer(arg_constant(n, a, 1), "str()'s length",
+                                                  -kMaxWidth, kMaxWidth)),
+                 static_cast<int>(checked_integer(arg_constant(n, a, 2), "str()'s precision",
+                                                  -kMaxWidth, kMaxPrecision)))};
          }},
         {"vstr",
          [](const std::string& n, const Args& a, RandomStreams&) {
              expect_count(n, a, 5, 5);
              // POV-Ray's order: vstr(components, vector, separator, length, precision)
-             const int dims = static_cast<int>(checked_integer(arg_constant(n, a, 0), "vstr()'s component count", -kMaxExactInteger, kMaxExactInteger));
+             const int dims =
+                 static_cast<int>(checked_integer(arg_constant(n, a, 0), "vstr()'s component count",
+                                                  -kMaxExactInteger, kMaxExactInteger));
              const Vector v = to_vector(a[1], "argument 2 of vstr()");
              const std::string& sep = arg_string(n, a, 2);
-             const int len = static_cast<int>(checked_integer(arg_constant(n, a, 3), "vstr()'s length", -kMaxWidth, kMaxWidth));
-             const int prec = static_cast<int>(checked_integer(arg_constant(n, a, 4), "vstr()'s precision", -kMaxWidth, kMaxPrecision));
+             const int len = static_cast<int>(
+                 checked_integer(arg_constant(n, a, 3), "vstr()'s length", -kMaxWidth, kMaxWidth));
+             const int prec = static_cast<int>(checked_integer(
+                 arg_constant(n, a, 4), "vstr()'s precision", -kMaxWidth, kMaxPrecision));
              std::string out;
              for (int i = 0; i < std::clamp(dims, 1, 5); ++i) {
                  if (i) out += sep;
                  const TimeFunction c = i < v.size ? v.c[i] : TimeFunction(0.0);
-                 out += format_number(to_constant(Value{c}, "a component given to vstr()"), len,
-                                      prec);
+                 out +=
+                     format_number(to_constant(Value{c}, "a component given to vstr()"), len, prec);
              }
              return Value{out};
          }},
@@ -287,7 +294,8 @@ const std::map<std::string, Builtin>& table() {
         {"chr",
          [](const std::string& n, const Args& a, RandomStreams&) {
              expect_count(n, a, 1, 1);
-             const long long c = checked_integer(arg_constant(n, a, 0), "chr()'s character code", 1, 127);
+             const long long c =
+                 checked_integer(arg_constant(n, a, 0), "chr()'s character code", 1, 127);
              return Value{std::string(1, static_cast<char>(c))};
          }},
         {"asc",
@@ -306,8 +314,10 @@ const std::map<std::string, Builtin>& table() {
              expect_count(n, a, 3, 3);
              const std::string& s = arg_string(n, a, 0);
              const long long size = static_cast<long long>(s.size());
-             const long long p = checked_integer(arg_constant(n, a, 1), "substr()'s start", 1, size + 1);
-             const long long l = checked_integer(arg_constant(n, a, 2), "substr()'s length", 0, size + 1 - p);
+             const long long p =
+                 checked_integer(arg_constant(n, a, 1), "substr()'s start", 1, size + 1);
+             const long long l =
+                 checked_integer(arg_constant(n, a, 2), "substr()'s length", 0, size + 1 - p);
              return Value{s.substr(static_cast<std::size_t>(p - 1), static_cast<std::size_t>(l))};
          }},
         {"strupr",
@@ -361,8 +371,9 @@ const std::map<std::string, Builtin>& table() {
                  throw ValueError("dimension_size() needs an array, not a " + type_name(a[0]));
              const auto& dims = a[0].as<std::shared_ptr<Array>>()->dimensions;
              // POV-Ray gives 0 for a dimension the array does not have.
-             const long long d = checked_integer(arg_constant(n, a, 1), "dimension_size()'s dimension",
-                                                 -kMaxExactInteger, kMaxExactInteger);
+             const long long d =
+                 checked_integer(arg_constant(n, a, 1), "dimension_size()'s dimension",
+                                 -kMaxExactInteger, kMaxExactInteger);
              if (d < 1 || d > static_cast<long long>(dims.size())) return Value{TimeFunction(0.0)};
              return Value{TimeFunction(static_cast<double>(dims[static_cast<std::size_t>(d) - 1]))};
          }},
@@ -375,9 +386,11 @@ const std::map<std::string, Builtin>& table() {
         {"rand",
          [](const std::string& n, const Args& a, RandomStreams& r) {
              expect_count(n, a, 1, 1);
-             if (r.streams.empty()) throw ValueError("rand() needs a stream made by seed(), and none was made");
-             const long long s = checked_integer(arg_constant(n, a, 0), "rand()'s stream (made by seed())", 0,
-                                                 static_cast<long long>(r.streams.size()) - 1);
+             if (r.streams.empty())
+                 throw ValueError("rand() needs a stream made by seed(), and none was made");
+             const long long s =
+                 checked_integer(arg_constant(n, a, 0), "rand()'s stream (made by seed())", 0,
+                                 static_cast<long long>(r.streams.size()) - 1);
              return Value{TimeFunction(r.streams[static_cast<std::size_t>(s)].next())};
          }},
         {"bitwise_and",
@@ -422,8 +435,8 @@ std::optional<double> vnormalize_zero_at(const std::vector<Value>& args,
     // Its zeros, exactly (runtime/time/switching_instants.hpp); a length that
     // comes and goes too often is reported at the start.
     try {
-        const auto pieces = runtime::split_by_truth(TimeFunction::apply(TimeOp::Greater, l, 0.0),
-                                                    {time}, 10'000);
+        const auto pieces =
+            runtime::split_by_truth(TimeFunction::apply(TimeOp::Greater, l, 0.0), {time}, 10'000);
         if (pieces.when_false.is_never()) return std::nullopt;
         return pieces.when_false.pieces().front().lo;
     } catch (const runtime::LimitError&) {

@@ -18,8 +18,7 @@ struct RandomStreams {
 
 // Calls the function `name` on `args`; throws ValueError for wrong counts
 // or types.
-Value call_builtin(const std::string& name, const std::vector<Value>& args,
-                   RandomStreams& random);
+Value call_builtin(const std::string& name, const std::vector<Value>& args, RandomStreams& random);
 
 // Where vnormalize(args) has a zero-length argument over `time`: the first
 // instant found (POV-Ray gives <0, 0, 0> there, with a warning), or none.

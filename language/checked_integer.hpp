@@ -21,7 +21,8 @@ inline constexpr long long kMaxExactInteger = 9007199254740992LL;  // 2^53
 // `what` names the number ("an array index", "str()'s length"). The value
 // is truncated toward zero, as POV-Ray's (int) casts do; callers that
 // floor (array indices) floor first.
-inline long long checked_integer(double value, const std::string& what, long long lo, long long hi) {
+inline long long checked_integer(double value, const std::string& what, long long lo,
+                                 long long hi) {
     if (!(value >= static_cast<double>(lo) && value <= static_cast<double>(hi))) {
         char shown[64];
         std::snprintf(shown, sizeof shown, "%.17g", value);

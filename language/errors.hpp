@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+
 #include <tao/pegtl.hpp>
 
 #include "language/grammar.hpp"
@@ -69,7 +70,8 @@ HEXANT_ERROR(transform_block, "expected '{' after transform");
 HEXANT_ERROR(deformation_axis, "expected an axis vector after the deformation");
 HEXANT_ERROR(deformation_amount, "expected an amount after the deformation's axis");
 HEXANT_ERROR(pattern_setting_value, "expected a value after the pattern modifier");
-HEXANT_ERROR(shape_vectors_setting_value, "expected a <u, v> vector after uv_vectors (three, one a corner)");
+HEXANT_ERROR(shape_vectors_setting_value,
+             "expected a <u, v> vector after uv_vectors (three, one a corner)");
 HEXANT_ERROR(warp_turbulence_keyword,
              "expected turbulence in warp { } (hexant's warps are turbulence; repeat, black_hole "
              "and the mapping warps are not supported)");
@@ -140,7 +142,8 @@ std::string found_text(const ParseInput& in) {
     const char* e = in.end();
     if (b == e) return " but found the end of the file";
     if (*b == '\n' || *b == '\r') return " but found the end of the line";
-    if (const unsigned char c = static_cast<unsigned char>(*b); (c < 0x20 && c != '\t') || c == 0x7F) {
+    if (const unsigned char c = static_cast<unsigned char>(*b);
+        (c < 0x20 && c != '\t') || c == 0x7F) {
         // A control character (a NUL, an escape) named, not printed: it
         // would cut the message short or reach the terminal.
         static const char* const kHex = "0123456789ABCDEF";

@@ -16,17 +16,18 @@
 
 #include "language/grammar/scene.hpp"
 
-
 // For analyze<>(): each custom rule consumes input when it succeeds.
 namespace tao::pegtl {
 template <typename Name>
 struct analyze_traits<Name, hexant::language::grammar::name> : analyze_any_traits<> {};
 template <typename Name>
-struct analyze_traits<Name, hexant::language::grammar::block_comment_body> : analyze_any_traits<> {};
+struct analyze_traits<Name, hexant::language::grammar::block_comment_body> : analyze_any_traits<> {
+};
 template <typename Name, typename Words>
-struct analyze_traits<Name, hexant::language::grammar::one_word_of<Words>> : analyze_any_traits<> {};
-#define HEXANT_CUSTOM_ANALYZE(rule)                                                         \
-    template <typename Name, typename Item>                                                \
+struct analyze_traits<Name, hexant::language::grammar::one_word_of<Words>> : analyze_any_traits<> {
+};
+#define HEXANT_CUSTOM_ANALYZE(rule)         \
+    template <typename Name, typename Item> \
     struct analyze_traits<Name, hexant::language::grammar::rule<Item>> : analyze_any_traits<> {}
 HEXANT_CUSTOM_ANALYZE(macro_call);
 HEXANT_CUSTOM_ANALYZE(if_directive);
@@ -40,7 +41,8 @@ HEXANT_CUSTOM_ANALYZE(declared_value_rule);
 #undef HEXANT_CUSTOM_ANALYZE
 // macro_ahead and argument_directive_ahead only look.
 template <typename Name, typename Item>
-struct analyze_traits<Name, hexant::language::grammar::macro_ahead_rule<Item>> : analyze_opt_traits<> {};
+struct analyze_traits<Name, hexant::language::grammar::macro_ahead_rule<Item>>
+    : analyze_opt_traits<> {};
 template <typename Name, typename Item>
 struct analyze_traits<Name, hexant::language::grammar::argument_directive_ahead_rule<Item>>
     : analyze_opt_traits<> {};

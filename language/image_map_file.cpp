@@ -9,11 +9,11 @@
 
 namespace hexant::language {
 
-
-runtime::pattern::ImagePixels image_pixels(const image::StoredImage& stored, const ImageGamma& gamma,
-                                           double assumed_gamma) {
+runtime::pattern::ImagePixels image_pixels(const image::StoredImage& stored,
+                                           const ImageGamma& gamma, double assumed_gamma) {
     if (stored.channels != 3 && stored.channels != 4)
-        throw std::logic_error("image_pixels: an image of " + std::to_string(stored.channels) + " channels");
+        throw std::logic_error("image_pixels: an image of " + std::to_string(stored.channels) +
+                               " channels");
     // Decoding: the scene's gamma, else the file's (OpenEXR is linear; a
     // PNG's gAMA chunk gives its encoding gamma; else sRGB).
     const auto decode = [&](double x) {
@@ -37,7 +37,8 @@ runtime::pattern::ImagePixels image_pixels(const image::StoredImage& stored, con
     out.palette = stored.source == Source::Palette;
     out.width = stored.width;
     out.height = stored.height;
-    const std::size_t n = static_cast<std::size_t>(stored.width) * static_cast<std::size_t>(stored.height);
+    const std::size_t n =
+        static_cast<std::size_t>(stored.width) * static_cast<std::size_t>(stored.height);
     out.rgbt.resize(n * 4);
     for (std::size_t i = 0; i < n; ++i) {
         const float* in = stored.values.data() + i * static_cast<std::size_t>(stored.channels);

@@ -22,7 +22,7 @@ struct ImageGamma {
 // The pixels of `stored` (3 or 4 channels, rows top to bottom) in the
 // working space of `assumed_gamma`: red, green, blue decoded and encoded,
 // transmit 1 - alpha (alpha is not gamma-encoded).
-runtime::pattern::ImagePixels image_pixels(const image::StoredImage& stored, const ImageGamma& gamma,
-                                           double assumed_gamma);
+runtime::pattern::ImagePixels image_pixels(const image::StoredImage& stored,
+                                           const ImageGamma& gamma, double assumed_gamma);
 
 }  // namespace hexant::language

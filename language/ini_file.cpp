@@ -71,11 +71,16 @@ enum class Option {
 
 Option option_of_key(const std::string& key) {
     static const std::pair<const char*, Option> keys[] = {
-        {"input_file_name", Option::InputFile}, {"width", Option::Width},
-        {"height", Option::Height},             {"initial_frame", Option::InitialFrame},
-        {"final_frame", Option::FinalFrame},    {"initial_clock", Option::InitialClock},
-        {"final_clock", Option::FinalClock},    {"cyclic_animation", Option::Cyclic},
-        {"library_path", Option::LibraryPath},  {"declare", Option::Declare},
+        {"input_file_name", Option::InputFile},
+        {"width", Option::Width},
+        {"height", Option::Height},
+        {"initial_frame", Option::InitialFrame},
+        {"final_frame", Option::FinalFrame},
+        {"initial_clock", Option::InitialClock},
+        {"final_clock", Option::FinalClock},
+        {"cyclic_animation", Option::Cyclic},
+        {"library_path", Option::LibraryPath},
+        {"declare", Option::Declare},
     };
     for (const auto& [name, option] : keys)
         if (key == name) return option;
@@ -83,7 +88,7 @@ Option option_of_key(const std::string& key) {
 }
 
 class Reader {
-public:
+  public:
     Reader(IniSettings& settings, const std::string& name, const fs::path& folder)
         : s_(settings), name_(name), folder_(folder) {}
 
@@ -104,7 +109,7 @@ public:
 
     std::string place(int number) const { return name_ + ":" + std::to_string(number); }
 
-private:
+  private:
     // One switch such as +W320, +KFF64, -KC or +Llib.
     void switch_word(const std::string& word) {
         if (word.size() < 2 || (word[0] != '+' && word[0] != '-')) {
@@ -150,7 +155,8 @@ private:
 
     [[noreturn]] void bad(const std::string& written, const std::string& needs,
                           const std::string& value) const {
-        throw std::runtime_error(place_ + ": " + written + " needs " + needs + ", not '" + value + "'");
+        throw std::runtime_error(place_ + ": " + written + " needs " + needs + ", not '" + value +
+                                 "'");
     }
 
     int integer(const std::string& written, const std::string& value) const {
@@ -158,7 +164,8 @@ private:
         const char* end = value.data() + value.size();
         int v = 0;
         const auto [stop, error] = std::from_chars(begin, end, v);
-        if (value.empty() || error != std::errc() || stop != end) bad(written, "a whole number", value);
+        if (value.empty() || error != std::errc() || stop != end)
+            bad(written, "a whole number", value);
         return v;
     }
 
@@ -184,13 +191,27 @@ private:
                 if (value.empty()) bad(written, "a file name", value);
                 s_.input_file = folder_ / value;
                 break;
-            case Option::Width: s_.width = integer(written, value); break;
-            case Option::Height: s_.height = integer(written, value); break;
-            case Option::InitialFrame: s_.initial_frame = integer(written, value); break;
-            case Option::FinalFrame: s_.final_frame = integer(written, value); break;
-            case Option::InitialClock: s_.initial_clock = real(written, value); break;
-            case Option::FinalClock: s_.final_clock = real(written, value); break;
-            case Option::Cyclic: s_.cyclic = boolean(written, value); break;
+            case Option::Width:
+                s_.width = integer(written, value);
+                break;
+            case Option::Height:
+                s_.height = integer(written, value);
+                break;
+            case Option::InitialFrame:
+                s_.initial_frame = integer(written, value);
+                break;
+            case Option::FinalFrame:
+                s_.final_frame = integer(written, value);
+                break;
+            case Option::InitialClock:
+                s_.initial_clock = real(written, value);
+                break;
+            case Option::FinalClock:
+                s_.final_clock = real(written, value);
+                break;
+            case Option::Cyclic:
+                s_.cyclic = boolean(written, value);
+                break;
             case Option::LibraryPath:
                 if (value.empty()) bad(written, "a folder", value);
                 s_.library_paths.push_back(folder_ / value);
@@ -234,17 +255,20 @@ IniSettings parse_ini_text(const std::string& text, const std::string& name, con
         if (line.empty()) continue;
         if (line[0] == '[') {
             const auto close = line.find(']');
-            const std::string label = trim(line.substr(1, close == std::string::npos ? std::string::npos : close - 1));
+            const std::string label =
+                trim(line.substr(1, close == std::string::npos ? std::string::npos : close - 1));
             reading = !wanted.empty() && lower(label) == wanted;
             found = found || reading;
             if (!reading && wanted.empty())
                 settings.warnings.push_back(reader.place(number) + ": section [" + label +
-                                            "] is read only when selected, as " + name + "[" + label + "]");
+                                            "] is read only when selected, as " + name + "[" +
+                                            label + "]");
             continue;
         }
         if (reading) reader.line(number, line);
     }
-    if (!wanted.empty() && !found) throw std::runtime_error(name + ": has no section [" + section + "]");
+    if (!wanted.empty() && !found)
+        throw std::runtime_error(name + ": has no section [" + section + "]");
     return settings;
 }
 

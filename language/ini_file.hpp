@@ -28,7 +28,7 @@ struct IniSettings {
     std::optional<int> initial_frame, final_frame;
     std::optional<double> initial_clock, final_clock;
     std::optional<bool> cyclic;
-    std::vector<std::filesystem::path> library_paths;  // in order; they accumulate
+    std::vector<std::filesystem::path> library_paths;           // in order; they accumulate
     std::vector<std::pair<std::string, std::string>> declares;  // NAME, VALUE
     std::vector<std::string> warnings;  // "FILE:LINE: ..." for ignored lines
 };

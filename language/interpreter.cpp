@@ -7,8 +7,8 @@
 #include <fstream>
 #include <iostream>
 #include <regex>
-#include <sstream>
 #include <set>
+#include <sstream>
 
 #include "language/actions.hpp"
 #include "language/checked_integer.hpp"
@@ -22,7 +22,9 @@
 
 namespace hexant::language {
 
-std::filesystem::path bundled_include_dir() { return HEXANT_BUNDLED_INCLUDE_DIR; }
+std::filesystem::path bundled_include_dir() {
+    return HEXANT_BUNDLED_INCLUDE_DIR;
+}
 
 Interpreter::Interpreter(const ParseOptions& options_in, runtime::SceneDescription& scene_in,
                          std::filesystem::path scene_folder)
@@ -54,7 +56,8 @@ void check_declare(const std::string& key, const std::string& value) {
     static const std::regex accepted("\\s*(" + number + "|<\\s*" + number + "(\\s*,\\s*" + number +
                                      ")*\\s*>|\"[^\"\\\\\\n]*\")\\s*");
     if (!std::regex_match(key, name))
-        throw SceneError("the name must be an identifier", ErrorPlace{"--declare " + key, 0, 0, "", ""});
+        throw SceneError("the name must be an identifier",
+                         ErrorPlace{"--declare " + key, 0, 0, "", ""});
     if (!std::regex_match(value, accepted))
         throw SceneError("the value '" + value +
                              "' must be a number, a vector of numbers <a, b, c> or a \"string\" "
@@ -81,7 +84,8 @@ runtime::SceneDescription parse(const std::string& text, const std::string& name
     for (const auto& [key, value] : options.declares) {
         check_declare(key, value);
         const std::string source = "#declare " + key + " = " + value + ";";
-        interpreter.read_file<grammar::scene_item, action, action_control>("--declare " + key, source);
+        interpreter.read_file<grammar::scene_item, action, action_control>("--declare " + key,
+                                                                           source);
     }
     interpreter.read_file<grammar::scene_item, action, action_control>(name, text);
     return scene;

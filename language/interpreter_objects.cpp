@@ -1,16 +1,15 @@
 // The Interpreter's objects: the checks of their patterns, the scene's objects and lights, arrays.
 // Part of the Interpreter (language/interpreter_state.hpp).
-#include "language/interpreter.hpp"
-
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <regex>
-#include <sstream>
 #include <set>
+#include <sstream>
 
 #include "language/checked_integer.hpp"
+#include "language/interpreter.hpp"
 #include "language/interpreter_state.hpp"
 #include "language/source_files.hpp"
 #include "runtime/objects/parameter_check.hpp"
@@ -96,7 +95,8 @@ void check_patterns(const runtime::ObjectRecord& object) {
 
 // Lights inside CSGs move with them: hand them to the scene with the
 // transforms of every object around them.
-void collect_lights(const runtime::ObjectRecord& object, std::vector<runtime::LightRecord>& lights) {
+void collect_lights(const runtime::ObjectRecord& object,
+                    std::vector<runtime::LightRecord>& lights) {
     struct Pending {
         const runtime::ObjectRecord* record;
         // The transform of the objects around it, shared by its siblings: a
@@ -175,8 +175,8 @@ void fill_array(Array& array, const Array& list, std::size_t dimension, std::siz
                          std::to_string(list.elements.size()) + " were given");
     for (const auto& element : list.elements) {
         const Value& v = **element;
-        const bool is_list = v.is<std::shared_ptr<Array>>() &&
-                             v.as<std::shared_ptr<Array>>()->dimensions.empty();
+        const bool is_list =
+            v.is<std::shared_ptr<Array>>() && v.as<std::shared_ptr<Array>>()->dimensions.empty();
         if (dimension + 1 < array.dimensions.size()) {
             if (!is_list) throw ValueError("expected a { } list for the array's next dimension");
             fill_array(array, *v.as<std::shared_ptr<Array>>(), dimension + 1, next);
@@ -195,9 +195,12 @@ namespace {
 // rule reading the block places.
 class BlockArguments final : public runtime::objects::ShapeArguments {
   public:
-    BlockArguments(std::string keyword, std::vector<std::string> options, std::vector<Value>& values,
-                   const Interpreter& st, const p::position& where)
-        : keyword_(std::move(keyword)), options_(std::move(options)), values_(values), st_(st),
+    BlockArguments(std::string keyword, std::vector<std::string> options,
+                   std::vector<Value>& values, const Interpreter& st, const p::position& where)
+        : keyword_(std::move(keyword)),
+          options_(std::move(options)),
+          values_(values),
+          st_(st),
           where_(where) {}
 
     const std::string& keyword() const override { return keyword_; }
@@ -218,7 +221,8 @@ class BlockArguments final : public runtime::objects::ShapeArguments {
     std::string string(std::size_t i, const std::string& what) const override {
         return to_string_value(at(i), what);
     }
-    std::filesystem::path find_file(const std::string& name, const std::string& kind) const override {
+    std::filesystem::path find_file(const std::string& name,
+                                    const std::string& kind) const override {
         if (name.empty()) fail(keyword_ + "'s " + kind + " name is empty");
         // Also where POV-Ray's default library path finds them on Debian;
         // the system's fonts may be named by their path.
@@ -245,13 +249,20 @@ template <class... Kinds>
 void read_shape(const std::string& keyword, const runtime::objects::ShapeArguments& args,
                 runtime::ObjectRecord& record, runtime::objects::KindList<Kinds...>) {
     // (Kinds with a rule of their own are never read here.)
-    const bool found = ((keyword == Kinds::keyword ? ([&] {
-        if constexpr (!runtime::objects::kind_detail::own_syntax<Kinds>()) {
-            record.shape = Kinds::read(args);
-            // What POV-Ray applies before the scene's own transformations.
-            if constexpr (requires { Kinds::placement(); }) record.transform = Kinds::placement();
-        }
-    }(), true) : false) || ...);
+    const bool found =
+        ((keyword == Kinds::keyword
+              ? (
+                    [&] {
+                        if constexpr (!runtime::objects::kind_detail::own_syntax<Kinds>()) {
+                            record.shape = Kinds::read(args);
+                            // What POV-Ray applies before the scene's own transformations.
+                            if constexpr (requires { Kinds::placement(); })
+                                record.transform = Kinds::placement();
+                        }
+                    }(),
+                    true)
+              : false) ||
+         ...);
     if (!found) throw std::logic_error("hexant: unknown shape " + keyword);
 }
 
@@ -262,7 +273,8 @@ constexpr std::size_t kMaxTimedStringObjects = 100'000;
 }  // namespace
 
 runtime::ObjectRecord make_shape(const std::string& kind, std::vector<std::string> options,
-                                 std::vector<Value>& args, Interpreter& st, const p::position& where) {
+                                 std::vector<Value>& args, Interpreter& st,
+                                 const p::position& where) {
     // A string value that changes with clock (str(clock, 0, 2), a branch on
     // clock naming two fonts): one object per text, each living while its
     // text holds, together in a union. (Further such strings split each.)
@@ -270,8 +282,9 @@ runtime::ObjectRecord make_shape(const std::string& kind, std::vector<std::strin
         if (!args[i].is<TimedString>()) continue;
         const auto texts = args[i].as<TimedString>().by_text();
         if (texts.size() > kMaxTimedStringObjects)
-            throw ValueError(kind + "'s value " + std::to_string(i + 1) + " changes with clock into " +
-                             std::to_string(texts.size()) + " different strings, more than " +
+            throw ValueError(kind + "'s value " + std::to_string(i + 1) +
+                             " changes with clock into " + std::to_string(texts.size()) +
+                             " different strings, more than " +
                              std::to_string(kMaxTimedStringObjects) + " objects");
         runtime::Csg group;
         for (const auto& [text, life] : texts) {
@@ -280,7 +293,8 @@ runtime::ObjectRecord make_shape(const std::string& kind, std::vector<std::strin
             runtime::ObjectRecord child = make_shape(kind, options, one, st, where);
             child.lifetime = child.lifetime.intersect(life);
             child.place = st.shape_place;
-            group.children.push_back(std::make_shared<const runtime::ObjectRecord>(std::move(child)));
+            group.children.push_back(
+                std::make_shared<const runtime::ObjectRecord>(std::move(child)));
         }
         runtime::ObjectRecord record;
         record.shape = std::move(group);
@@ -310,7 +324,8 @@ void set_shape_setting(runtime::ObjectRecord& record, const std::string& name,
     // Which kinds it belongs to, for the message.
     std::vector<std::string> owners;
     [&]<class... Kinds>(runtime::objects::KindList<Kinds...>) {
-        ((runtime::objects::takes_setting<Kinds>(name) ? (owners.emplace_back(Kinds::keyword), 0) : 0),
+        ((runtime::objects::takes_setting<Kinds>(name) ? (owners.emplace_back(Kinds::keyword), 0)
+                                                       : 0),
          ...);
     }(runtime::ShapeKinds{});
     std::string kinds;

@@ -1,16 +1,15 @@
 // The Interpreter's sources and errors: the texts it reads, and where a message points.
 // Part of the Interpreter (language/interpreter_state.hpp).
-#include "language/interpreter.hpp"
-
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <regex>
-#include <sstream>
 #include <set>
+#include <sstream>
 
 #include "language/checked_integer.hpp"
+#include "language/interpreter.hpp"
 #include "language/interpreter_state.hpp"
 #include "runtime/objects/parameter_check.hpp"
 
@@ -83,7 +82,8 @@ SceneError Interpreter::to_scene_error(const p::parse_error& e) const {
     const auto& positions = e.positions();
     SceneError error(std::string(e.message()),
                      positions.empty() ? ErrorPlace{} : place(positions.front()));
-    for (std::size_t i = 1; i < positions.size(); ++i) error.add_context(place(positions[i], "from here"));
+    for (std::size_t i = 1; i < positions.size(); ++i)
+        error.add_context(place(positions[i], "from here"));
     return error;
 }
 

@@ -1,16 +1,15 @@
 // The Interpreter's value stack, and the transforms a block collects.
 // Part of the Interpreter (language/interpreter_state.hpp).
-#include "language/interpreter.hpp"
-
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <regex>
-#include <sstream>
 #include <set>
+#include <sstream>
 
 #include "language/checked_integer.hpp"
+#include "language/interpreter.hpp"
 #include "language/interpreter_state.hpp"
 #include "runtime/objects/parameter_check.hpp"
 
@@ -34,8 +33,9 @@ std::vector<Value> Interpreter::close_frame() {
     if (frames_.empty()) throw std::logic_error("hexant: frame stack underflow");
     const std::size_t begin = frames_.back();
     frames_.pop_back();
-    std::vector<Value> values(std::make_move_iterator(stack_.begin() + static_cast<std::ptrdiff_t>(begin)),
-                              std::make_move_iterator(stack_.end()));
+    std::vector<Value> values(
+        std::make_move_iterator(stack_.begin() + static_cast<std::ptrdiff_t>(begin)),
+        std::make_move_iterator(stack_.end()));
     stack_.resize(begin);
     return values;
 }
@@ -66,9 +66,11 @@ void Interpreter::apply_transform(runtime::TransformStep step, const p::position
     } else if (auto* pigment = std::get_if<runtime::Pigment>(&b)) {
         // (A declared uv-mapped pigment takes no transform from outside
         // its own block, as in POV-Ray: runtime/texture/material.hpp, UvMapping.)
-        if (pigment->uv_mapping != runtime::UvMapping::Closed) pigment->transform.append(std::move(step));
+        if (pigment->uv_mapping != runtime::UvMapping::Closed)
+            pigment->transform.append(std::move(step));
     } else if (auto* normal = std::get_if<runtime::Normal>(&b)) {
-        if (normal->uv_mapping != runtime::UvMapping::Closed) normal->transform.append(std::move(step));
+        if (normal->uv_mapping != runtime::UvMapping::Closed)
+            normal->transform.append(std::move(step));
     } else if (auto* fog = std::get_if<runtime::Fog>(&b)) {
         // (POV-Ray turns a fog's up vector; a translation does not move it.)
         if (step.kind == runtime::TransformKind::Translate) return;

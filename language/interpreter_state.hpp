@@ -7,9 +7,9 @@
 // its original positions; so every error points at the right line.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <algorithm>
 #include <deque>
 #include <filesystem>
 #include <fstream>
@@ -30,13 +30,13 @@
 #include <tao/pegtl.hpp>
 
 #include "language/builtins.hpp"
-#include "language/image_map_file.hpp"
 #include "language/errors.hpp"
 #include "language/grammar.hpp"
+#include "language/image_map_file.hpp"
 #include "language/interpreter.hpp"
 #include "language/mesh_reading.hpp"
-#include "language/value.hpp"
 #include "language/time_branch.hpp"
+#include "language/value.hpp"
 #include "language/value_ops.hpp"
 #include "runtime/scene/scene.hpp"
 #include "runtime/time/switching_instants.hpp"
@@ -71,9 +71,8 @@ struct ImageMapBuilder {
 
 // A block under construction: `sphere { ... }`, `texture { ... }` ...
 using Block = std::variant<runtime::ObjectRecord, runtime::LightRecord, runtime::CameraRecord,
-                           runtime::Texture, runtime::Pigment, runtime::Normal, runtime::ColourMap, runtime::SkySphere,
-                           runtime::Fog, runtime::Finish,
-                           runtime::Interior,
+                           runtime::Texture, runtime::Pigment, runtime::Normal, runtime::ColourMap,
+                           runtime::SkySphere, runtime::Fog, runtime::Finish, runtime::Interior,
                            runtime::Transform, SplineBuilder, MaterialBuilder, ImageMapBuilder>;
 
 // What a std::bad_alloc while reading becomes, at its place.
@@ -95,7 +94,7 @@ void check_normal(const std::optional<runtime::Normal>& normal);
 void check_texture(const runtime::Texture& texture);
 
 class Interpreter {
-public:
+  public:
     Interpreter(const ParseOptions& options, runtime::SceneDescription& scene,
                 std::filesystem::path scene_folder);
 
@@ -182,7 +181,9 @@ public:
         // Without it, what the scene makes only there (a file named for
         // the frame after the last) is not needed. A shutter of 0 (and a
         // still) has its instants only.
-        if (scene.animation.exposure() > 0.0 && b != a) b = b > a ? runtime::interval_detail::next_down(b) : runtime::interval_detail::next_up(b);
+        if (scene.animation.exposure() > 0.0 && b != a)
+            b = b > a ? runtime::interval_detail::next_down(b)
+                      : runtime::interval_detail::next_up(b);
         return {std::min(a, b), std::max(a, b)};
     }
     // How many times the camera and the background were set: a side of a
@@ -286,12 +287,40 @@ public:
         if (q == b) return false;
         const std::string word(b, q);
         if (grammar::is_reserved_word(word)) {
-            static const char* const kValueWords[] = {
-                "x", "y", "z", "t", "u", "v", "pi", "tau", "clock", "clock_delta", "clock_on",
-                "frame_number", "initial_clock", "final_clock", "initial_frame", "final_frame",
-                "image_width", "image_height", "true", "false", "yes", "no", "on", "off",
-                "version", "rgb", "rgbf", "rgbt", "rgbft", "color", "colour", "red", "green",
-                "blue"};
+            static const char* const kValueWords[] = {"x",
+                                                      "y",
+                                                      "z",
+                                                      "t",
+                                                      "u",
+                                                      "v",
+                                                      "pi",
+                                                      "tau",
+                                                      "clock",
+                                                      "clock_delta",
+                                                      "clock_on",
+                                                      "frame_number",
+                                                      "initial_clock",
+                                                      "final_clock",
+                                                      "initial_frame",
+                                                      "final_frame",
+                                                      "image_width",
+                                                      "image_height",
+                                                      "true",
+                                                      "false",
+                                                      "yes",
+                                                      "no",
+                                                      "on",
+                                                      "off",
+                                                      "version",
+                                                      "rgb",
+                                                      "rgbf",
+                                                      "rgbt",
+                                                      "rgbft",
+                                                      "color",
+                                                      "colour",
+                                                      "red",
+                                                      "green",
+                                                      "blue"};
             for (const char* w : kValueWords)
                 if (word == w) return true;
             while (q != in.end() && (*q == ' ' || *q == '\t')) ++q;
@@ -308,9 +337,9 @@ public:
 
     // (`what` names the file in messages: "include file", "image file".)
     // `also` are searched after the usual folders (and may be read).
-    std::filesystem::path resolve_include(const std::string& name, const p::position& where,
-                                          const std::string& what = "include file",
-                                          const std::vector<std::filesystem::path>& also = {}) const;
+    std::filesystem::path resolve_include(
+        const std::string& name, const p::position& where, const std::string& what = "include file",
+        const std::vector<std::filesystem::path>& also = {}) const;
     // The text of the include file at `path` (resolve_include's), counted
     // against Limits::text_read before it is read (read_source_text).
     std::string read_include(const std::filesystem::path& path, const p::position& where);
@@ -343,17 +372,17 @@ public:
                             "again); stopping here (--max-text-read N raises the limit)");
     }
 
-private:
+  private:
     template <typename Rule, template <typename...> class Action,
               template <typename...> class Control, typename ParseInput>
     void read(ParseInput& in) {
-        (void)p::match<p::must<Rule>, p::apply_mode::action, p::rewind_mode::dontcare, Action, Control>(
-            in, *this);
+        (void)p::match<p::must<Rule>, p::apply_mode::action, p::rewind_mode::dontcare, Action,
+                       Control>(in, *this);
     }
     template <template <typename...> class Control, typename ParseInput>
     void skip_text(ParseInput& in) {
-        (void)p::match<grammar::skip::text, p::apply_mode::nothing, p::rewind_mode::dontcare, p::nothing,
-                 Control>(in, *this);
+        (void)p::match<grammar::skip::text, p::apply_mode::nothing, p::rewind_mode::dontcare,
+                       p::nothing, Control>(in, *this);
     }
     template <typename ParseInput>
     Divider next_divider(ParseInput& in);
@@ -413,8 +442,8 @@ private:
     template <typename Item, template <typename...> class Action,
               template <typename...> class Control, typename ParseInput>
     Divider run_body(ParseInput& in) {
-        (void)p::match<p::star<Item>, p::apply_mode::action, p::rewind_mode::dontcare, Action, Control>(
-            in, *this);
+        (void)p::match<p::star<Item>, p::apply_mode::action, p::rewind_mode::dontcare, Action,
+                       Control>(in, *this);
         return next_divider(in);
     }
     template <template <typename...> class Control, typename ParseInput>
@@ -469,7 +498,7 @@ private:
         std::map<VariableKey, std::optional<Held>> after;
         std::vector<Value> pushed;
         std::optional<runtime::ObjectRecord> top;
-        bool top_edited = false;  // beyond adding members
+        bool top_edited = false;                            // beyond adding members
         std::optional<runtime::CameraRecord> camera;        // when it set one
         std::optional<runtime::ColourFunction> background;  // when it set one
     };
@@ -494,9 +523,9 @@ private:
 }  // namespace hexant::language
 
 // The member templates, by what they read (language/interpreter/).
-#include "language/interpreter/reading.hpp"
 #include "language/interpreter/conditions.hpp"
-#include "language/interpreter/loops.hpp"
-#include "language/interpreter/switch.hpp"
-#include "language/interpreter/macros.hpp"
 #include "language/interpreter/files.hpp"
+#include "language/interpreter/loops.hpp"
+#include "language/interpreter/macros.hpp"
+#include "language/interpreter/reading.hpp"
+#include "language/interpreter/switch.hpp"

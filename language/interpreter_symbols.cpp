@@ -1,17 +1,16 @@
-// The Interpreter's symbols: scopes, declarations, the time split of a value, and #include's reading of files.
-// Part of the Interpreter (language/interpreter_state.hpp).
-#include "language/interpreter.hpp"
-
+// The Interpreter's symbols: scopes, declarations, the time split of a value, and #include's
+// reading of files. Part of the Interpreter (language/interpreter_state.hpp).
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <regex>
-#include <sstream>
 #include <set>
+#include <sstream>
 
-#include "language/checked_integer.hpp"
 #include "language/array_index.hpp"
+#include "language/checked_integer.hpp"
+#include "language/interpreter.hpp"
 #include "language/interpreter_state.hpp"
 #include "language/source_files.hpp"
 #include "runtime/objects/parameter_check.hpp"
@@ -112,7 +111,8 @@ void Interpreter::merge_time_sides(const p::position& at, const TimeFunction& c,
             for (const auto& s : sides) {
                 if (!s) continue;
                 const runtime::CameraRecord& camera = s->camera ? *s->camera : camera_before;
-                for (const auto& piece : camera.pieces) fresh.push_back({piece.when.intersect(s->when), piece.items});
+                for (const auto& piece : camera.pieces)
+                    fresh.push_back({piece.when.intersect(s->when), piece.items});
                 fresh.push_back({s->when, camera.items});
             }
             fresh.insert(fresh.end(), camera_before.pieces.begin(), camera_before.pieces.end());
@@ -124,13 +124,16 @@ void Interpreter::merge_time_sides(const p::position& at, const TimeFunction& c,
         if ((sides[0] && sides[0]->background) || (sides[1] && sides[1]->background)) {
             runtime::ColourFunction colour[2];
             for (int side = 0; side < 2; ++side)
-                colour[side] = sides[side] && sides[side]->background ? *sides[side]->background : background_before;
-            if (!sides[1]) scene.background = colour[0];
-            else if (!sides[0]) scene.background = colour[1];
+                colour[side] = sides[side] && sides[side]->background ? *sides[side]->background
+                                                                      : background_before;
+            if (!sides[1])
+                scene.background = colour[0];
+            else if (!sides[0])
+                scene.background = colour[1];
             else
                 for (int i = 0; i < 5; ++i)
-                    scene.background.c[i] =
-                        TimeFunction::apply(runtime::TimeOp::Conditional, c, colour[0].c[i], colour[1].c[i]);
+                    scene.background.c[i] = TimeFunction::apply(runtime::TimeOp::Conditional, c,
+                                                                colour[0].c[i], colour[1].c[i]);
             ++background_sets;
         }
         // The variables either side changed.
@@ -148,8 +151,10 @@ void Interpreter::merge_time_sides(const p::position& at, const TimeFunction& c,
                 values[side] = found != sides[side]->after.end() ? found->second : before;
             }
             std::optional<Held> merged;
-            if (!sides[1]) merged = values[0];
-            else if (!sides[0]) merged = values[1];
+            if (!sides[1])
+                merged = values[0];
+            else if (!sides[0])
+                merged = values[1];
             else if (values[0] || values[1]) {
                 // Declared where either side has it, on that side's pieces.
                 std::vector<runtime::Interval> declared;
@@ -157,13 +162,15 @@ void Interpreter::merge_time_sides(const p::position& at, const TimeFunction& c,
                 for (int side = 0; side < 2; ++side) {
                     if (!values[side]) continue;
                     value[side] = values[side]->value;
-                    for (const auto& piece :
-                         values[side]->defined.intersect(sides[side]->when).within(animation_time()))
+                    for (const auto& piece : values[side]
+                                                 ->defined.intersect(sides[side]->when)
+                                                 .within(animation_time()))
                         declared.push_back(piece);
                 }
                 runtime::Lifetime defined = runtime::Lifetime::of(std::move(declared));
                 if (defined.holds_all(animation_time())) defined = runtime::Lifetime::always();
-                merged = Held{*merge_sides("'" + key.second + "'", c, value[0], sides[0]->when, value[1], sides[1]->when),
+                merged = Held{*merge_sides("'" + key.second + "'", c, value[0], sides[0]->when,
+                                           value[1], sides[1]->when),
                               std::move(defined)};
             }
             set_variable_at(key, merged);
@@ -174,13 +181,17 @@ void Interpreter::merge_time_sides(const p::position& at, const TimeFunction& c,
                              std::to_string(sides[0]->pushed.size()) + " and " +
                              std::to_string(sides[1]->pushed.size()) +
                              " values; each side must give as many");
-        const std::size_t count = sides[0] ? sides[0]->pushed.size() : sides[1] ? sides[1]->pushed.size() : 0;
+        const std::size_t count = sides[0]   ? sides[0]->pushed.size()
+                                  : sides[1] ? sides[1]->pushed.size()
+                                             : 0;
         for (std::size_t i = 0; i < count; ++i) {
-            if (!sides[1]) push(sides[0]->pushed[i]);
-            else if (!sides[0]) push(sides[1]->pushed[i]);
+            if (!sides[1])
+                push(sides[0]->pushed[i]);
+            else if (!sides[0])
+                push(sides[1]->pushed[i]);
             else
-                push(*merge_sides("the value this branch gives", c, sides[0]->pushed[i], sides[0]->when,
-                                  sides[1]->pushed[i], sides[1]->when));
+                push(*merge_sides("the value this branch gives", c, sides[0]->pushed[i],
+                                  sides[0]->when, sides[1]->pushed[i], sides[1]->when));
         }
         // The object around the branch: the CSG members and lights each side
         // added (each living on its side's pieces, finish_object), and
@@ -193,18 +204,20 @@ void Interpreter::merge_time_sides(const p::position& at, const TimeFunction& c,
             for (const auto& s : sides) {
                 if (!s || !s->top) continue;
                 if (s->top_edited || !same_but_members(*s->top, *top_before))
-                    throw ValueError("this clock-dependent branch changes the object around it "
-                                     "(a transform, texture or flag); hexant makes the CSG "
-                                     "members it adds piecewise in time, not yet the object's "
-                                     "own modifiers (put the branch in the value they use)");
+                    throw ValueError(
+                        "this clock-dependent branch changes the object around it "
+                        "(a transform, texture or flag); hexant makes the CSG "
+                        "members it adds piecewise in time, not yet the object's "
+                        "own modifiers (put the branch in the value they use)");
                 if (const auto* csg = std::get_if<runtime::Csg>(&s->top->shape))
-                    members->children.insert(members->children.end(),
-                                             csg->children.begin() + static_cast<std::ptrdiff_t>(base_members),
-                                             csg->children.end());
-                merged.lights.insert(merged.lights.end(),
-                                     s->top->lights.begin() +
-                                         static_cast<std::ptrdiff_t>(top_before->lights.size()),
-                                     s->top->lights.end());
+                    members->children.insert(
+                        members->children.end(),
+                        csg->children.begin() + static_cast<std::ptrdiff_t>(base_members),
+                        csg->children.end());
+                merged.lights.insert(
+                    merged.lights.end(),
+                    s->top->lights.begin() + static_cast<std::ptrdiff_t>(top_before->lights.size()),
+                    s->top->lights.end());
             }
             blocks.back() = std::move(merged);
         }
@@ -216,7 +229,8 @@ void Interpreter::merge_time_sides(const p::position& at, const TimeFunction& c,
 runtime::TruthPieces Interpreter::split_domain(const TimeFunction& c, const p::position& at) {
     runtime::TruthPieces pieces;
     try {
-        pieces = runtime::split_by_truth(c, domain.within(animation_time()), options.limits.time_pieces);
+        pieces =
+            runtime::split_by_truth(c, domain.within(animation_time()), options.limits.time_pieces);
     } catch (const runtime::LimitError& e) {
         fail(at, e.what());
     }
@@ -269,9 +283,10 @@ void Interpreter::assign_element(const std::string& name, const std::vector<Valu
     // (An array is shared, not copied, by the sides of a time split: an
     // element set on one side would be seen on the other.)
     if (!branch_logs_.empty())
-        fail(where, "an array element set under a branch whose condition depends on clock; "
-                    "hexant cannot yet make an array piecewise in time (declare a float or "
-                    "vector under the branch instead)");
+        fail(where,
+             "an array element set under a branch whose condition depends on clock; "
+             "hexant cannot yet make an array piecewise in time (declare a float or "
+             "vector under the branch instead)");
     if (!target->is<std::shared_ptr<Array>>()) fail(where, "'" + name + "' is not an array");
     auto& array = *target->as<std::shared_ptr<Array>>();
     std::vector<double> at;
@@ -326,7 +341,8 @@ std::string read_source_text(const std::filesystem::path& path, std::size_t max_
     if (size > max_bytes)
         throw ValueError("its " + std::to_string(size) +
                          " bytes would take the scene's reading over its limit of text, " +
-                         std::to_string(max_bytes) + " bytes left (--max-text-read N raises the limit)");
+                         std::to_string(max_bytes) +
+                         " bytes left (--max-text-read N raises the limit)");
     std::ifstream stream(path, std::ios::binary);
     if (!stream) throw ValueError("cannot read it");
     std::string text(size, '\0');
@@ -337,11 +353,11 @@ std::string read_source_text(const std::filesystem::path& path, std::size_t max_
     return text;
 }
 
-
 std::string Interpreter::read_include(const std::filesystem::path& path, const p::position& where) {
     std::string text;
     try {
-        text = read_source_text(path, options.limits.text_read - std::min(text_read_, options.limits.text_read));
+        text = read_source_text(
+            path, options.limits.text_read - std::min(text_read_, options.limits.text_read));
     } catch (const ValueError& e) {
         fail(where, "include file '" + path.string() + "': " + e.what());
     }
@@ -349,9 +365,9 @@ std::string Interpreter::read_include(const std::filesystem::path& path, const p
     return text;
 }
 
-std::filesystem::path Interpreter::resolve_include(const std::string& name, const p::position& where,
-                                                   const std::string& what,
-                                                   const std::vector<std::filesystem::path>& also) const {
+std::filesystem::path Interpreter::resolve_include(
+    const std::string& name, const p::position& where, const std::string& what,
+    const std::vector<std::filesystem::path>& also) const {
     namespace fs = std::filesystem;
     const fs::path file(name);
     std::vector<fs::path> folders{scene_folder_};
@@ -391,8 +407,7 @@ std::filesystem::path Interpreter::resolve_include(const std::string& name, cons
     allowed.push_back(kPovRayIncludeDir);
     allowed.insert(allowed.end(), options.read_paths.begin(), options.read_paths.end());
     for (const fs::path system : {"/proc", "/sys", "/dev"})
-        if (inside(real, system))
-            fail(where, what + " '" + name + "' is a system file: refused");
+        if (inside(real, system)) fail(where, what + " '" + name + "' is a system file: refused");
     for (const auto& folder : allowed) {
         const fs::path root = fs::weakly_canonical(folder.empty() ? fs::path(".") : folder, error);
         if (!error && inside(real, root)) return real;

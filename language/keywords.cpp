@@ -366,7 +366,9 @@ bool is_reserved_word(std::string_view word) {
     // and a pattern kind's (runtime/texture/pattern/kinds.hpp).
     using Words = runtime::objects::KindWords<runtime::ShapeKinds>;
     using Patterns = runtime::pattern::PatternWords<runtime::pattern::PatternKinds>;
-    const auto in = [word](const auto& list) { return std::binary_search(list.begin(), list.end(), word); };
+    const auto in = [word](const auto& list) {
+        return std::binary_search(list.begin(), list.end(), word);
+    };
     return in(kReserved) || in(Words::keywords) || in(Words::options) || in(Words::settings) ||
            in(Patterns::keywords) || in(Patterns::settings);
 }

@@ -17,8 +17,9 @@ constexpr long long kMaxMeshItems = 1LL << 31;
 
 glm::dvec3 fixed_vector(const runtime::Vector3Function& v, const std::string& what) {
     if (v.depends_on_time())
-        throw ValueError(what + " depends on clock; a mesh's triangles are fixed when the scene is "
-                                "read (move, turn or deform the whole mesh with its transforms)");
+        throw ValueError(what +
+                         " depends on clock; a mesh's triangles are fixed when the scene is "
+                         "read (move, turn or deform the whole mesh with its transforms)");
     return v(0.0);
 }
 
@@ -42,8 +43,9 @@ void check_count(long long declared, std::size_t found, const std::string& secti
 void check_index(std::int32_t index, std::size_t size, const std::string& what, std::size_t face,
                  const std::string& of) {
     if (index >= 0 && static_cast<std::size_t>(index) >= size)
-        throw ValueError("face " + std::to_string(face) + "'s " + what + " index " + std::to_string(index) +
-                         " is beyond the " + std::to_string(size) + " " + of);
+        throw ValueError("face " + std::to_string(face) + "'s " + what + " index " +
+                         std::to_string(index) + " is beyond the " + std::to_string(size) + " " +
+                         of);
 }
 
 }  // namespace
@@ -58,7 +60,8 @@ void add_mesh_triangle(MeshData& mesh, const runtime::ObjectRecord& triangle) {
         throw ValueError("a triangle in a mesh cannot be transformed (transform the mesh)");
     MeshFace face;
     const auto& points = flat ? flat->points : smooth->points;
-    for (int i = 0; i < 3; ++i) face.vertex[i] = add_vertex(mesh, fixed_vector(points[i], "a mesh triangle's corner"));
+    for (int i = 0; i < 3; ++i)
+        face.vertex[i] = add_vertex(mesh, fixed_vector(points[i], "a mesh triangle's corner"));
     if (smooth)
         for (int i = 0; i < 3; ++i) {
             mesh.normals.push_back(fixed_vector(smooth->normals[i], "a mesh triangle's normal"));
@@ -69,8 +72,10 @@ void add_mesh_triangle(MeshData& mesh, const runtime::ObjectRecord& triangle) {
         for (int i = 0; i < 3; ++i) {
             const auto& c = (*uv)[i].c;
             if (c[0].depends_on_time() || c[1].depends_on_time())
-                throw ValueError("a mesh triangle's uv vector depends on clock; a mesh's triangles are fixed when "
-                                 "the scene is read");
+                throw ValueError(
+                    "a mesh triangle's uv vector depends on clock; a mesh's triangles are fixed "
+                    "when "
+                    "the scene is read");
             mesh.uvs.emplace_back(c[0](0.0), c[1](0.0));
             face.uv[i] = static_cast<std::int32_t>(mesh.uvs.size() - 1);
         }
@@ -87,14 +92,19 @@ MeshValue mesh_value(const Value& value, const std::string& section) {
         out.c[0] = to_constant(value, section + "'s value");
         return out;
     }
-    if (!value.is<Vector>()) throw ValueError(section + " holds numbers and vectors, not a " + type_name(value));
+    if (!value.is<Vector>())
+        throw ValueError(section + " holds numbers and vectors, not a " + type_name(value));
     const Vector& v = value.as<Vector>();
-    if (v.size > 3) throw ValueError(section + " holds vectors of 2 or 3 numbers, not " + std::to_string(v.size));
+    if (v.size > 3)
+        throw ValueError(section + " holds vectors of 2 or 3 numbers, not " +
+                         std::to_string(v.size));
     out.size = v.size;
     for (int i = 0; i < v.size; ++i) {
         if (!v.c[i].is_constant())
-            throw ValueError(section + "'s vector depends on clock; a mesh's triangles are fixed when the "
-                                       "scene is read (move, turn or deform the whole mesh with its transforms)");
+            throw ValueError(
+                section +
+                "'s vector depends on clock; a mesh's triangles are fixed when the "
+                "scene is read (move, turn or deform the whole mesh with its transforms)");
         out.c[i] = v.c[i].constant();
     }
     return out;
@@ -122,7 +132,8 @@ long long mesh_count(const std::vector<MeshValue>& values, const std::string& se
 
 }  // namespace
 
-void read_mesh2_section(MeshData& mesh, const std::string& section, const std::vector<MeshValue>& values) {
+void read_mesh2_section(MeshData& mesh, const std::string& section,
+                        const std::vector<MeshValue>& values) {
     const long long n = mesh_count(values, section);
     if (section == "vertex_vectors" || section == "normal_vectors") {
         check_count(n, values.size() - 1, section);
@@ -148,14 +159,16 @@ void read_mesh2_section(MeshData& mesh, const std::string& section, const std::v
         mesh.faces.clear();
         mesh.faces.reserve(static_cast<std::size_t>(n));
         for (std::size_t i = 1; i < values.size();) {
-            if (values[i].size == 1) throw ValueError("face_indices expected a face <a, b, c> here");
+            if (values[i].size == 1)
+                throw ValueError("face_indices expected a face <a, b, c> here");
             MeshFace face;
             const auto v = index_triple(values[i], "a face's vertex index");
             for (int k = 0; k < 3; ++k) face.vertex[k] = static_cast<std::uint32_t>(v[k]);
             ++i;
             int textures = 0;
             while (i < values.size() && values[i].size == 1) {
-                const auto t = checked_integer(values[i].c[0], "a face's texture index", 0, kMaxMeshItems - 1);
+                const auto t =
+                    checked_integer(values[i].c[0], "a face's texture index", 0, kMaxMeshItems - 1);
                 if (textures == 0) face.texture = static_cast<std::int32_t>(t);
                 ++textures;
                 ++i;
@@ -175,15 +188,16 @@ void read_mesh2_section(MeshData& mesh, const std::string& section, const std::v
         throw ValueError(section + " has " + std::to_string(values.size() - 1) + " entries for " +
                          std::to_string(mesh.faces.size()) + " faces");
     for (std::size_t i = 1; i < values.size(); ++i) {
-        const auto v = index_triple(values[i], section == "normal_indices" ? "a face's normal index" : "a face's uv index");
+        const auto v = index_triple(
+            values[i], section == "normal_indices" ? "a face's normal index" : "a face's uv index");
         (section == "normal_indices" ? mesh.faces[i - 1].normal : mesh.faces[i - 1].uv) = v;
     }
 }
 
 void read_mesh2_textures(MeshData& mesh, const std::vector<Value>& values) {
     if (values.empty()) throw ValueError("texture_list needs its count first");
-    const long long n = checked_integer(to_constant(values[0], "texture_list's count"), "texture_list's count", 0,
-                                        kMaxMeshItems);
+    const long long n = checked_integer(to_constant(values[0], "texture_list's count"),
+                                        "texture_list's count", 0, kMaxMeshItems);
     check_count(n, values.size() - 1, "texture_list");
     mesh.textures.clear();
     for (std::size_t i = 1; i < values.size(); ++i) {
@@ -194,11 +208,13 @@ void read_mesh2_textures(MeshData& mesh, const std::vector<Value>& values) {
 
 void set_inside_vector(MeshData& mesh, const Value& value) {
     const glm::dvec3 v = fixed_vector(value, "the mesh's inside_vector");
-    if (!std::isfinite(v.x + v.y + v.z)) throw ValueError("the mesh's inside_vector must be finite");
+    if (!std::isfinite(v.x + v.y + v.z))
+        throw ValueError("the mesh's inside_vector must be finite");
     // POV-Ray: a vector within EPSILON (1e-10) of zero leaves the mesh
     // without an inside.
     constexpr double kPovEpsilon = 1e-10;
-    if (std::fabs(v.x) < kPovEpsilon && std::fabs(v.y) < kPovEpsilon && std::fabs(v.z) < kPovEpsilon)
+    if (std::fabs(v.x) < kPovEpsilon && std::fabs(v.y) < kPovEpsilon &&
+        std::fabs(v.z) < kPovEpsilon)
         mesh.inside_vector.reset();
     else
         mesh.inside_vector = v;
@@ -213,19 +229,21 @@ void finish_mesh(MeshData& mesh, const std::string& keyword) {
         const bool normal_indices = mesh.faces.front().normal[0] >= 0;
         const bool uv_indices = mesh.faces.front().uv[0] >= 0;
         if (!mesh.normals.empty() && !normal_indices && mesh.normals.size() != mesh.vertices.size())
-            throw ValueError("mesh2 has " + std::to_string(mesh.normals.size()) + " normal_vectors for " +
-                             std::to_string(mesh.vertices.size()) +
+            throw ValueError("mesh2 has " + std::to_string(mesh.normals.size()) +
+                             " normal_vectors for " + std::to_string(mesh.vertices.size()) +
                              " vertex_vectors and no normal_indices section");
         if (!mesh.uvs.empty() && !uv_indices && mesh.uvs.size() != mesh.vertices.size())
             throw ValueError("mesh2 has " + std::to_string(mesh.uvs.size()) + " uv_vectors for " +
-                             std::to_string(mesh.vertices.size()) + " vertex_vectors and no uv_indices section");
+                             std::to_string(mesh.vertices.size()) +
+                             " vertex_vectors and no uv_indices section");
     }
     for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
         MeshFace& face = mesh.faces[f];
         for (int k = 0; k < 3; ++k)
             if (face.vertex[k] >= mesh.vertices.size())
-                throw ValueError("face " + std::to_string(f) + "'s vertex index " + std::to_string(face.vertex[k]) +
-                                 " is beyond the " + std::to_string(mesh.vertices.size()) + " vertex_vectors");
+                throw ValueError("face " + std::to_string(f) + "'s vertex index " +
+                                 std::to_string(face.vertex[k]) + " is beyond the " +
+                                 std::to_string(mesh.vertices.size()) + " vertex_vectors");
         // mesh2 without normal_indices (uv_indices): the vertex indices
         // index the normals (uvs) too. (A mesh's flat triangles have none.)
         if (mesh2 && !mesh.normals.empty() && face.normal[0] < 0)
@@ -236,7 +254,8 @@ void finish_mesh(MeshData& mesh, const std::string& keyword) {
             check_index(face.normal[k], mesh.normals.size(), "normal", f, "normal_vectors");
             check_index(face.uv[k], mesh.uvs.size(), "uv", f, "uv_vectors");
         }
-        check_index(face.texture, mesh.textures.size(), "texture", f, "textures of its texture_list");
+        check_index(face.texture, mesh.textures.size(), "texture", f,
+                    "textures of its texture_list");
         // POV-Ray: a face whose three normals are equal (squared
         // differences within EPSILON, 1e-10) is flat, lit by its own normal.
         if (face.smooth()) {

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "language/value.hpp"
-#include "runtime/objects/object.hpp"
 #include "runtime/objects/mesh/mesh_data.hpp"
+#include "runtime/objects/object.hpp"
 
 namespace hexant::language {
 

@@ -1,8 +1,8 @@
 #include "language/nesting_guard.hpp"
 
-#include <sys/resource.h>
-
 #include <algorithm>
+
+#include <sys/resource.h>
 
 namespace hexant::language {
 

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cstddef>
+
 #include <tao/pegtl.hpp>
 
 namespace hexant::language {

@@ -39,17 +39,22 @@ void lifetime_edges(const runtime::ObjectRecord& r, std::vector<double>& out) {
         for (const auto& c : csg->children) lifetime_edges(*c, out);
 }
 
-std::string corner_name(bool max) { return max ? "max_extent()" : "min_extent()"; }
+std::string corner_name(bool max) {
+    return max ? "max_extent()" : "min_extent()";
+}
 
 }  // namespace
 
 Value object_extent(const runtime::ObjectRecord& object, bool max, const runtime::Interval& time,
                     std::size_t max_pieces) {
     if (!placed_still(object))
-        throw ValueError(corner_name(max) + " of an object whose shape or transforms move with clock: its box "
-                         "would change continuously, which hexant does not form yet (take the box of the object "
-                         "before it moves, then move it)");
-    const runtime::IntelligentObjectPtr placed = runtime::make_intelligent_object(object, runtime::Texture{});
+        throw ValueError(
+            corner_name(max) +
+            " of an object whose shape or transforms move with clock: its box "
+            "would change continuously, which hexant does not form yet (take the box of the object "
+            "before it moves, then move it)");
+    const runtime::IntelligentObjectPtr placed =
+        runtime::make_intelligent_object(object, runtime::Texture{});
     const auto corner = [&](double t) {
         if (!placed->bounded()) return glm::dvec3(max ? kHalfBoundHuge : -kHalfBoundHuge);
         const runtime::Box4 box = placed->box_over(runtime::Interval(t));
@@ -66,7 +71,9 @@ Value object_extent(const runtime::ObjectRecord& object, bool max, const runtime
     std::vector<runtime::Interval> pieces;
     for (std::size_t i = 0; i < edges.size(); ++i) {
         if (edges[i] < time.lo || edges[i] > time.hi) continue;
-        const double end = i + 1 < edges.size() ? std::min(std::nextafter(edges[i + 1], -INFINITY), time.hi) : time.hi;
+        const double end = i + 1 < edges.size()
+                               ? std::min(std::nextafter(edges[i + 1], -INFINITY), time.hi)
+                               : time.hi;
         if (end >= edges[i]) pieces.push_back(runtime::Interval(edges[i], end));
     }
     if (pieces.size() <= 1) {
@@ -74,8 +81,9 @@ Value object_extent(const runtime::ObjectRecord& object, bool max, const runtime
         return make_vector({c.x, c.y, c.z});
     }
     if (pieces.size() > max_pieces)
-        throw ValueError(corner_name(max) + " of an object whose parts change " + std::to_string(pieces.size()) +
-                         " times, more than " + std::to_string(max_pieces));
+        throw ValueError(corner_name(max) + " of an object whose parts change " +
+                         std::to_string(pieces.size()) + " times, more than " +
+                         std::to_string(max_pieces));
     std::vector<double> xs, ys, zs;
     for (const runtime::Interval& piece : pieces) {
         const glm::dvec3 c = corner(piece.mid());

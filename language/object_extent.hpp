@@ -10,8 +10,8 @@
 #pragma once
 
 #include "language/value.hpp"
-#include "runtime/time/interval.hpp"
 #include "runtime/objects/object.hpp"
+#include "runtime/time/interval.hpp"
 
 namespace hexant::language {
 

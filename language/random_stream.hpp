@@ -7,7 +7,7 @@
 namespace hexant::language {
 
 class RandomStream {
-public:
+  public:
     // seed(seed_value): the value is truncated to an int as C++ does; a value
     // outside int's range (or NaN) becomes INT_MIN, as x86 conversion gives in
     // POV-Ray. The int's bits are the generator's starting state.
@@ -17,7 +17,7 @@ public:
     // state / (2^32 - 1), a value in [0, 1].
     double next();
 
-private:
+  private:
     std::uint32_t state_;
 };
 

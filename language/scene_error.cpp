@@ -12,7 +12,9 @@ std::string header(const ErrorPlace& place) {
     return place.file + ":" + std::to_string(place.line) + ":" + std::to_string(place.column);
 }
 
-bool continuation(char c) { return (static_cast<unsigned char>(c) & 0xC0) == 0x80; }
+bool continuation(char c) {
+    return (static_cast<unsigned char>(c) & 0xC0) == 0x80;
+}
 
 // The first byte of `line` to show so that `column` (1 is the first byte)
 // lies in the kShownWidth shown: the line's start, or a window with the

@@ -16,8 +16,9 @@ struct ErrorPlace {
     std::string file;
     std::size_t line = 0;
     std::size_t column = 0;
-    std::string source_line;  // the text of that line (or of its part around the column), for the caret
-    std::string note;         // for the chain: "in macro 'M' called here"
+    std::string
+        source_line;   // the text of that line (or of its part around the column), for the caret
+    std::string note;  // for the chain: "in macro 'M' called here"
     std::size_t source_first = 0;  // the byte of the line where source_line starts
     bool source_cut = false;       // the line goes on past source_line
 
@@ -29,7 +30,7 @@ struct ErrorPlace {
 };
 
 class SceneError : public std::runtime_error {
-public:
+  public:
     SceneError(std::string message, ErrorPlace place);
 
     const std::string& message() const { return message_; }
@@ -40,7 +41,7 @@ public:
     // The whole report as printed on stderr.
     std::string formatted() const;
 
-private:
+  private:
     std::string message_;
     std::vector<ErrorPlace> places_;
 };

@@ -26,14 +26,17 @@ bool same_function(const TimeFunction& a, const TimeFunction& b) {
 
 namespace {
 
-TimeFunction any_of(const std::vector<runtime::Interval>& pieces, std::size_t first, std::size_t last) {
+TimeFunction any_of(const std::vector<runtime::Interval>& pieces, std::size_t first,
+                    std::size_t last) {
     if (last - first == 1) {
         const TimeFunction t = TimeFunction::clock();
-        return TimeFunction::apply(TimeOp::And, TimeFunction::apply(TimeOp::GreaterEqual, t, pieces[first].lo),
+        return TimeFunction::apply(TimeOp::And,
+                                   TimeFunction::apply(TimeOp::GreaterEqual, t, pieces[first].lo),
                                    TimeFunction::apply(TimeOp::LessEqual, t, pieces[first].hi));
     }
     const std::size_t middle = first + (last - first) / 2;
-    return TimeFunction::apply(TimeOp::Or, any_of(pieces, first, middle), any_of(pieces, middle, last));
+    return TimeFunction::apply(TimeOp::Or, any_of(pieces, first, middle),
+                               any_of(pieces, middle, last));
 }
 
 }  // namespace
@@ -57,9 +60,11 @@ bool same_value(const Value& a, const Value& b) {
     if (a.is<std::string>()) return a.as<std::string>() == b.as<std::string>();
     if (a.is<TimedString>()) return a.as<TimedString>() == b.as<TimedString>();
     if (a.is<runtime::ObjectPtr>()) return a.as<runtime::ObjectPtr>() == b.as<runtime::ObjectPtr>();
-    if (a.is<std::shared_ptr<Array>>()) return a.as<std::shared_ptr<Array>>() == b.as<std::shared_ptr<Array>>();
+    if (a.is<std::shared_ptr<Array>>())
+        return a.as<std::shared_ptr<Array>>() == b.as<std::shared_ptr<Array>>();
     if (a.is<std::shared_ptr<const runtime::Spline>>())
-        return a.as<std::shared_ptr<const runtime::Spline>>() == b.as<std::shared_ptr<const runtime::Spline>>();
+        return a.as<std::shared_ptr<const runtime::Spline>>() ==
+               b.as<std::shared_ptr<const runtime::Spline>>();
     if (a.is<std::shared_ptr<const Macro>>())
         return a.as<std::shared_ptr<const Macro>>() == b.as<std::shared_ptr<const Macro>>();
     return false;
@@ -95,17 +100,23 @@ std::optional<Value> merge_sides(const std::string& name, const TimeFunction& co
     const Value& a = *when_true;
     const Value& b = *when_false;
     if (same_value(a, b)) return a;
-    const bool numbers = (a.is<TimeFunction>() || a.is<Vector>()) && (b.is<TimeFunction>() || b.is<Vector>());
+    const bool numbers =
+        (a.is<TimeFunction>() || a.is<Vector>()) && (b.is<TimeFunction>() || b.is<Vector>());
     if (numbers) return conditional(Value{condition}, a, b);
-    const auto is_string = [](const Value& v) { return v.is<std::string>() || v.is<TimedString>(); };
+    const auto is_string = [](const Value& v) {
+        return v.is<std::string>() || v.is<TimedString>();
+    };
     if (is_string(a) && is_string(b)) {
         // Each side's text on its own pieces (the sides' pieces are
         // disjoint, both within the time being read).
-        const runtime::Interval any(-std::numeric_limits<double>::max(), std::numeric_limits<double>::max());
+        const runtime::Interval any(-std::numeric_limits<double>::max(),
+                                    std::numeric_limits<double>::max());
         std::vector<TimedString::Piece> pieces = string_pieces(a, true_pieces, any);
         for (auto& piece : string_pieces(b, false_pieces, any)) pieces.push_back(std::move(piece));
         std::sort(pieces.begin(), pieces.end(),
-                  [](const TimedString::Piece& x, const TimedString::Piece& y) { return x.time.lo < y.time.lo; });
+                  [](const TimedString::Piece& x, const TimedString::Piece& y) {
+                      return x.time.lo < y.time.lo;
+                  });
         return timed_string(std::move(pieces));
     }
     if (a.is<runtime::ObjectPtr>() && b.is<runtime::ObjectPtr>()) {
@@ -125,12 +136,18 @@ std::optional<Value> merge_sides(const std::string& name, const TimeFunction& co
         return (std::string("aeiou").find(kind.front()) != std::string::npos ? "an " : "a ") + kind;
     };
     if (a.v.index() != b.v.index() && !(is_string(a) && is_string(b)))
-        throw ValueError(name + " is " + a_or_an(type_name(a)) + " on one side of this clock-dependent "
-                         "branch and " + a_or_an(type_name(b)) + " on the other; a name keeps one kind "
+        throw ValueError(name + " is " + a_or_an(type_name(a)) +
+                         " on one side of this clock-dependent "
+                         "branch and " +
+                         a_or_an(type_name(b)) +
+                         " on the other; a name keeps one kind "
                          "of value across a branch on clock");
-    throw ValueError(name + " is a different " + type_name(a) + " on each side of this clock-dependent "
-                     "branch; hexant makes floats, vectors, strings and objects piecewise in time, not "
-                     "yet " + type_name(a) + "s");
+    throw ValueError(
+        name + " is a different " + type_name(a) +
+        " on each side of this clock-dependent "
+        "branch; hexant makes floats, vectors, strings and objects piecewise in time, not "
+        "yet " +
+        type_name(a) + "s");
 }
 
 }  // namespace hexant::language

@@ -38,11 +38,10 @@ bool same_value(const Value& a, const Value& b);
 // that lifetime; any other value unchanged.
 Value during(const Value& value, const runtime::Lifetime& when);
 
-// The variable `name` (as messages name it: "'V'") after a split on `condition`: `when_true` on the side
-// where it held, `when_false` on the other (none: not defined there).
-// Strings become a TimedString. Throws ValueError for a kind of value
-// hexant cannot make piecewise in time (a texture, an array ...) where the
-// sides differ.
+// The variable `name` (as messages name it: "'V'") after a split on `condition`: `when_true` on the
+// side where it held, `when_false` on the other (none: not defined there). Strings become a
+// TimedString. Throws ValueError for a kind of value hexant cannot make piecewise in time (a
+// texture, an array ...) where the sides differ.
 std::optional<Value> merge_sides(const std::string& name, const TimeFunction& condition,
                                  const std::optional<Value>& when_true,
                                  const runtime::Lifetime& true_pieces,

@@ -28,8 +28,8 @@ std::optional<Reads> reads(const std::string& name, std::size_t i) {
     if (name == "str") return i == 0 ? Reads::Formatted : Reads::Integer;
     if (name == "vstr") return i == 1 ? Reads::Formatted : Reads::Integer;
     if (name == "chr" || name == "substr") return Reads::Integer;
-    static const std::set<std::string> strings = {"concat", "asc",    "strlen", "strupr", "strlwr",
-                                                  "val",    "strcmp", "file_exists"};
+    static const std::set<std::string> strings = {"concat", "asc", "strlen", "strupr",
+                                                  "strlwr", "val", "strcmp", "file_exists"};
     if (strings.count(name)) return Reads::Exact;
     return std::nullopt;
 }
@@ -51,7 +51,8 @@ struct Leaf {
 
 }  // namespace
 
-TimeFunction piecewise_constant(const std::vector<Interval>& times, const std::vector<double>& values) {
+TimeFunction piecewise_constant(const std::vector<Interval>& times,
+                                const std::vector<double>& values) {
     const auto build = [&](const auto& self, std::size_t first, std::size_t last) -> TimeFunction {
         if (last - first == 1) return values[first];
         const std::size_t middle = first + (last - first) / 2;
@@ -94,10 +95,12 @@ std::optional<Value> call_over_time(const std::string& name, const std::vector<V
     }
     const runtime::KeyOf key = [&](std::size_t which, double v) {
         switch (leaves[which].read) {
-            case Reads::Integer: return exact_key(std::trunc(v));
+            case Reads::Integer:
+                return exact_key(std::trunc(v));
             case Reads::Formatted:
                 return precision ? format_number(v, 0, *precision) : exact_key(v);
-            case Reads::Exact: break;
+            case Reads::Exact:
+                break;
         }
         return exact_key(v);
     };
@@ -124,8 +127,10 @@ std::optional<Value> call_over_time(const std::string& name, const std::vector<V
                 cut.push_back({both, parts[a].texts});
                 cut.back().texts.push_back(pieces[b].text);
             }
-            if (parts[a].time.hi < pieces[b].time.hi) ++a;
-            else ++b;
+            if (parts[a].time.hi < pieces[b].time.hi)
+                ++a;
+            else
+                ++b;
         }
         parts = std::move(cut);
         if (parts.size() > max_pieces + 1)
@@ -150,21 +155,26 @@ std::optional<Value> call_over_time(const std::string& name, const std::vector<V
         for (const auto& piece : pieces) {
             // Any instant of the piece reads the same: its start.
             std::vector<Value> concrete = base;
-            for (std::size_t s = 0; s < strings.size(); ++s) concrete[strings[s]] = Value{part.texts[s]};
+            for (std::size_t s = 0; s < strings.size(); ++s)
+                concrete[strings[s]] = Value{part.texts[s]};
             for (const Leaf& leaf : leaves) {
                 const double v = leaf.f(piece.time.lo);
-                if (leaf.component < 0) concrete[leaf.arg] = Value{TimeFunction(v)};
-                else concrete[leaf.arg].as<Vector>().c[static_cast<std::size_t>(leaf.component)] = v;
+                if (leaf.component < 0)
+                    concrete[leaf.arg] = Value{TimeFunction(v)};
+                else
+                    concrete[leaf.arg].as<Vector>().c[static_cast<std::size_t>(leaf.component)] = v;
             }
             times.push_back(piece.time);
             results.push_back(call_builtin(name, concrete, random));
             if (times.size() > max_pieces + 1)
-                throw ValueError(name + "() of arguments that depend on clock changes more than " +
-                                 std::to_string(max_pieces) +
-                                 " times over the animation (--max-time-pieces N raises the limit)");
+                throw ValueError(
+                    name + "() of arguments that depend on clock changes more than " +
+                    std::to_string(max_pieces) +
+                    " times over the animation (--max-time-pieces N raises the limit)");
         }
     }
-    if (results.empty()) throw ValueError(name + "() of arguments that depend on clock, over no time");
+    if (results.empty())
+        throw ValueError(name + "() of arguments that depend on clock, over no time");
     if (results.front().is<std::string>()) {
         std::vector<TimedString::Piece> pieces;
         for (std::size_t i = 0; i < results.size(); ++i)

@@ -25,7 +25,8 @@ std::vector<std::pair<std::string, runtime::Lifetime>> TimedString::by_text() co
         groups[it->second].second.push_back(piece.time);
     }
     std::vector<std::pair<std::string, runtime::Lifetime>> out;
-    for (auto& [text, times] : groups) out.push_back({text, runtime::Lifetime::of(std::move(times))});
+    for (auto& [text, times] : groups)
+        out.push_back({text, runtime::Lifetime::of(std::move(times))});
     return out;
 }
 
@@ -91,8 +92,10 @@ std::vector<TimedString::Piece> string_pieces(const Value& value, const runtime:
         const runtime::Interval both(std::max(pieces[i].time.lo, times[j].lo),
                                      std::min(pieces[i].time.hi, times[j].hi));
         if (both.lo <= both.hi) out.push_back({both, pieces[i].text});
-        if (pieces[i].time.hi < times[j].hi) ++i;
-        else ++j;
+        if (pieces[i].time.hi < times[j].hi)
+            ++i;
+        else
+            ++j;
     }
     return out;
 }

@@ -13,13 +13,13 @@
 
 #include "language/memory_budget.hpp"
 #include "language/timed_string.hpp"
-#include "runtime/scene/camera.hpp"
-#include "runtime/scene/light.hpp"
-#include "runtime/texture/material.hpp"
-#include "runtime/objects/object.hpp"
-#include "runtime/scene/sky_sphere.hpp"
 #include "runtime/motion/spline.hpp"
 #include "runtime/motion/transform.hpp"
+#include "runtime/objects/object.hpp"
+#include "runtime/scene/camera.hpp"
+#include "runtime/scene/light.hpp"
+#include "runtime/scene/sky_sphere.hpp"
+#include "runtime/texture/material.hpp"
 
 namespace hexant::language {
 
@@ -56,9 +56,10 @@ struct Array {
 
 struct Value {
     using Variant =
-        std::variant<TimeFunction, Vector, std::string, TimedString, runtime::ObjectPtr, runtime::LightRecord,
-                     runtime::CameraRecord, runtime::Texture, runtime::Pigment, runtime::Normal, runtime::ColourMap, runtime::SkySphere, runtime::Finish,
-                     runtime::Interior, runtime::Transform, std::shared_ptr<Array>,
+        std::variant<TimeFunction, Vector, std::string, TimedString, runtime::ObjectPtr,
+                     runtime::LightRecord, runtime::CameraRecord, runtime::Texture,
+                     runtime::Pigment, runtime::Normal, runtime::ColourMap, runtime::SkySphere,
+                     runtime::Finish, runtime::Interior, runtime::Transform, std::shared_ptr<Array>,
                      std::shared_ptr<const runtime::Spline>, std::shared_ptr<const Macro>,
                      Unevaluated>;
     Variant v;

@@ -35,7 +35,9 @@ std::string type_name(const Value& value) {
     return std::visit(Namer{}, value.v);
 }
 
-Value make_float(const TimeFunction& f) { return Value{f}; }
+Value make_float(const TimeFunction& f) {
+    return Value{f};
+}
 
 Value make_vector(std::initializer_list<TimeFunction> components) {
     Vector v;
@@ -55,7 +57,9 @@ Vector promote(const TimeFunction& f, int size) {
     return v;
 }
 
-std::string op_text(TimeOp op) { return std::string("'") + runtime::name(op) + "'"; }
+std::string op_text(TimeOp op) {
+    return std::string("'") + runtime::name(op) + "'";
+}
 
 }  // namespace
 
@@ -77,11 +81,21 @@ Value binary_op(TimeOp op, const Value& a, const Value& b) {
         const TimeFunction x = i < va.size ? va.c[i] : TimeFunction(0.0);
         const TimeFunction y = i < vb.size ? vb.c[i] : TimeFunction(0.0);
         switch (op) {
-            case TimeOp::Add: r.c[i] = x + y; break;
-            case TimeOp::Subtract: r.c[i] = x - y; break;
-            case TimeOp::Multiply: r.c[i] = x * y; break;
-            case TimeOp::Divide: r.c[i] = x / y; break;
-            default: r.c[i] = TimeFunction::apply(op, x, y); break;
+            case TimeOp::Add:
+                r.c[i] = x + y;
+                break;
+            case TimeOp::Subtract:
+                r.c[i] = x - y;
+                break;
+            case TimeOp::Multiply:
+                r.c[i] = x * y;
+                break;
+            case TimeOp::Divide:
+                r.c[i] = x / y;
+                break;
+            default:
+                r.c[i] = TimeFunction::apply(op, x, y);
+                break;
         }
     }
     return Value{r};
@@ -121,8 +135,8 @@ Value conditional(const Value& a, const Value& b, const Value& c) {
             r.c[i] = TimeFunction::apply(TimeOp::Conditional, cond, vb.c[i], vc.c[i]);
         return Value{r};
     }
-    throw ValueError("a condition that depends on clock cannot choose between a " +
-                     type_name(b) + " and a " + type_name(c));
+    throw ValueError("a condition that depends on clock cannot choose between a " + type_name(b) +
+                     " and a " + type_name(c));
 }
 
 Value component(const Value& a, const std::string& name) {
@@ -134,11 +148,16 @@ Value component(const Value& a, const std::string& name) {
         return Value{v.c[0] * 0.297 + v.c[1] * 0.589 + v.c[2] * 0.114};
     }
     int index = 0;
-    if (name == "x" || name == "u" || name == "red") index = 0;
-    else if (name == "y" || name == "v" || name == "green") index = 1;
-    else if (name == "z" || name == "blue") index = 2;
-    else if (name == "t" || name == "filter") index = 3;
-    else if (name == "transmit") index = 4;
+    if (name == "x" || name == "u" || name == "red")
+        index = 0;
+    else if (name == "y" || name == "v" || name == "green")
+        index = 1;
+    else if (name == "z" || name == "blue")
+        index = 2;
+    else if (name == "t" || name == "filter")
+        index = 3;
+    else if (name == "transmit")
+        index = 4;
     if (index >= v.size)
         throw ValueError("'." + name + "' is not a component of a " + type_name(a));
     return Value{v.c[index]};
@@ -192,9 +211,10 @@ const std::string& to_string_value(const Value& v, const std::string& what) {
 double to_constant(const Value& v, const std::string& what) {
     const TimeFunction f = to_float(v, what);
     if (!f.is_constant())
-        throw ValueError(what + " depends on clock; it must be known while the scene is read "
-                                "(hexant splits time on conditions, a #for's end and an index "
-                                "read, not yet on this)");
+        throw ValueError(what +
+                         " depends on clock; it must be known while the scene is read "
+                         "(hexant splits time on conditions, a #for's end and an index "
+                         "read, not yet on this)");
     return f.constant();
 }
 

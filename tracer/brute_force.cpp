@@ -11,7 +11,7 @@ using runtime::ObjectHit;
 using runtime::Ray4;
 
 class BruteForce final : public RayQuery {
-public:
+  public:
     explicit BruteForce(ObjectSet objects) : objects_(std::move(objects)) {}
     void prepare_frame(double, double, Counters&) override {}
     std::optional<ObjectHit> first_hit(const Ray4& ray, double s_min, double s_max,
@@ -24,8 +24,7 @@ public:
             test.nearest(std::uint32_t(i), *objects_.bounded[i], best, best_s);
         return best;
     }
-    bool occluded(const Ray4& ray, double s_min, double s_max,
-                  ThreadState& state) const override {
+    bool occluded(const Ray4& ray, double s_min, double s_max, ThreadState& state) const override {
         state.mailbox.next_ray();
         if (unbounded_occludes(objects_, ray, s_min, s_max, state)) return true;
         const ObjectTest test{ray, s_min, s_max, state};
@@ -37,7 +36,7 @@ public:
     void count_full_hierarchy(Counters&) const override {}
     void measure_memory(Counters&) const override {}
 
-private:
+  private:
     ObjectSet objects_;
 };
 

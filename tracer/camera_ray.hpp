@@ -31,14 +31,16 @@ struct ScreenRay {
 };
 
 // The wide and parallel projections (camera_ray.cpp).
-std::optional<ScreenRay> projected_camera_ray(const runtime::CameraFrame& camera, double x0, double y0);
+std::optional<ScreenRay> projected_camera_ray(const runtime::CameraFrame& camera, double x0,
+                                              double y0);
 
 // The ray through screen point (x0, y0); the pinhole's inline, as every
 // sample of the usual camera asks.
-[[gnu::always_inline]] inline std::optional<ScreenRay> camera_ray(const runtime::CameraFrame& camera, double x0,
-                                                                  double y0) {
+[[gnu::always_inline]] inline std::optional<ScreenRay> camera_ray(
+    const runtime::CameraFrame& camera, double x0, double y0) {
     if (camera.type == runtime::CameraType::Perspective)
-        return ScreenRay{camera.location, camera.direction + x0 * camera.right + y0 * camera.up, {x0, y0}};
+        return ScreenRay{
+            camera.location, camera.direction + x0 * camera.right + y0 * camera.up, {x0, y0}};
     return projected_camera_ray(camera, x0, y0);
 }
 
@@ -53,10 +55,9 @@ struct PrimaryRay {
 };
 
 template <class Lens>
-[[gnu::always_inline]] inline std::optional<PrimaryRay> primary_ray(const runtime::CameraFrame& camera,
-                                                                    double x0, double y0, Lens&& lens,
-                                                                    const runtime::TextureEvaluator* normal,
-                                                                    double t) {
+[[gnu::always_inline]] inline std::optional<PrimaryRay> primary_ray(
+    const runtime::CameraFrame& camera, double x0, double y0, Lens&& lens,
+    const runtime::TextureEvaluator* normal, double t) {
     const std::optional<ScreenRay> screen = camera_ray(camera, x0, y0);
     if (!screen) return std::nullopt;
     glm::dvec3 origin = screen->origin, direction;

@@ -41,7 +41,7 @@ enum class RefKind : std::uint8_t {
 // A child: a tagged pointer to a node (nodes are 64-byte aligned), or an
 // object index shifted past the tag.
 class NodeRef {
-public:
+  public:
     NodeRef() = default;
     static NodeRef node(RefKind kind, const void* p) {
         return NodeRef(reinterpret_cast<std::uintptr_t>(p) | std::uintptr_t(kind));
@@ -69,7 +69,7 @@ public:
         __atomic_store_n(&slot->bits_, value.bits_, __ATOMIC_RELEASE);
     }
 
-private:
+  private:
     explicit NodeRef(std::uintptr_t bits) : bits_(bits) {}
     std::uintptr_t bits_ = 0;
 };
@@ -79,7 +79,7 @@ private:
 struct alignas(64) BoxNode {
     float lo[3][kNodeWidth], hi[3][kNodeWidth];
     NodeRef child[kNodeWidth];
-    double t0, t1;  // the time range the bounds hold over
+    double t0, t1;           // the time range the bounds hold over
     std::uint32_t children;  // non-empty slots (first ones)
 };
 

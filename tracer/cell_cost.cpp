@@ -45,9 +45,9 @@ CostSummary Hierarchy::Builder::cost_summary(const Box4& region, const CellTime&
     const int halves = level(1), quarters = level(2), fits = level(kFitLevels);
     // (Only where the sweeps resolve the cell's time into its bins: a
     // line fitted to one or two pieces is no tighter than their boxes.)
-    const bool linear = !space_only() && levels >= kFitLevels &&
-                        (options_.bounds == BoundStyle::Auto ||
-                         options_.bounds == BoundStyle::Linear);
+    const bool linear =
+        !space_only() && levels >= kFitLevels &&
+        (options_.bounds == BoundStyle::Auto || options_.bounds == BoundStyle::Linear);
     std::array<Box4, 8> octants;
     for (int o = 0; o < 8; ++o) octants[o] = octant(region, o);
     // The union of everything per piece, at every level.
@@ -168,7 +168,8 @@ CostSummary Hierarchy::Builder::cost_summary(const Box4& region, const CellTime&
 // A cell inside one piece of the sweeps looks at eighths of its time
 // when some of its objects' sweeps refine (chords: finer pieces are
 // new answers, at a placement per end), down to 1/64 of a piece.
-int Hierarchy::Builder::time_levels(const CellTime& time, const std::vector<std::uint32_t>& objects) const {
+int Hierarchy::Builder::time_levels(const CellTime& time,
+                                    const std::vector<std::uint32_t>& objects) const {
     const double span = time.t.width();
     double finest = span;
     bool refine = false;

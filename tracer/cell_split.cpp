@@ -13,25 +13,30 @@ using namespace hierarchy_build;
 
 // The node of the cell `region` (whose time is `time`) holding
 // `objects` (each meets it).
-NodeRef Hierarchy::Builder::build(NodeArena& arena, const Box4& region, const CellTime& time, const ObjectList& list,
-                                  int depth, Counters& counters) const {
+NodeRef Hierarchy::Builder::build(NodeArena& arena, const Box4& region, const CellTime& time,
+                                  const ObjectList& list, int depth, Counters& counters) const {
     ++counters.cells;
     arena.count_cell();
     const std::vector<std::uint32_t>& objects = *list;
     if (objects.empty()) return {};
-    const Split split =
-        depth < options_.depth_limit() ? choose(region, time, objects, depth, counters) : Split::Leaf;
+    const Split split = depth < options_.depth_limit()
+                            ? choose(region, time, objects, depth, counters)
+                            : Split::Leaf;
     switch (split) {
-        case Split::Leaf: return leaf(arena, region, time, objects, counters);
-        case Split::Space: return space_node(arena, region, time, list, depth, counters);
+        case Split::Leaf:
+            return leaf(arena, region, time, objects, counters);
+        case Split::Space:
+            return space_node(arena, region, time, list, depth, counters);
         case Split::Time:
-        case Split::Both: return time_node(arena, region, time, list, depth, split, counters);
+        case Split::Both:
+            return time_node(arena, region, time, list, depth, split, counters);
     }
     return {};
 }
 
-Split Hierarchy::Builder::choose(const Box4& region, const CellTime& time, const std::vector<std::uint32_t>& objects,
-                                 int depth, Counters& counters) const {
+Split Hierarchy::Builder::choose(const Box4& region, const CellTime& time,
+                                 const std::vector<std::uint32_t>& objects, int depth,
+                                 Counters& counters) const {
     counters.bounds_built += objects.size();
     if (options_.criterion == Criterion::Paper) {
         PaperSummary s;
@@ -55,8 +60,10 @@ Split Hierarchy::Builder::choose(const Box4& region, const CellTime& time, const
         const double w = time.t.width();
         double frames = 1.0;
         if (options_.frame_interval > 0.0) frames = w / options_.frame_interval;
-        if (options_.shutter_time > 0.0) frames = std::max(frames, std::min(1.0, w / options_.shutter_time));
-        else frames = std::max(frames, 1.0);
+        if (options_.shutter_time > 0.0)
+            frames = std::max(frames, std::min(1.0, w / options_.shutter_time));
+        else
+            frames = std::max(frames, 1.0);
         prices.rays = options_.rays_per_frame * frames * summary.cell / h_.root_area_;
     }
     return cost_split(summary, prices, space_only());
@@ -65,14 +72,16 @@ Split Hierarchy::Builder::choose(const Box4& region, const CellTime& time, const
 // A child cell: built now (eager) or when a ray first reaches it.
 // A child's list: the parent's own where it holds all of the parent's
 // objects (a part of a list holds them in the same order).
-ObjectList Hierarchy::Builder::shared_list(const ObjectList& parent, std::vector<std::uint32_t> part) {
+ObjectList Hierarchy::Builder::shared_list(const ObjectList& parent,
+                                           std::vector<std::uint32_t> part) {
     if (part.size() == parent->size()) return parent;
     return std::make_shared<const std::vector<std::uint32_t>>(std::move(part));
 }
 
-NodeRef Hierarchy::Builder::child_cell(NodeArena& arena, const Box4& region, const CellTime& time, ObjectList objects,
-                                       int depth, Counters& counters) const {
-    if (options_.build == BuildKind::Eager) return build(arena, region, time, objects, depth, counters);
+NodeRef Hierarchy::Builder::child_cell(NodeArena& arena, const Box4& region, const CellTime& time,
+                                       ObjectList objects, int depth, Counters& counters) const {
+    if (options_.build == BuildKind::Eager)
+        return build(arena, region, time, objects, depth, counters);
     PendingCell* p = arena.own<PendingCell>();
     p->arena = &arena;
     // The first cell no longer than a frame below the part that stays:
@@ -91,8 +100,9 @@ NodeRef Hierarchy::Builder::child_cell(NodeArena& arena, const Box4& region, con
 
 // The cell's two time halves, each a child cell (Split::Time) or the
 // node of its octants (Split::Both).
-NodeRef Hierarchy::Builder::time_node(NodeArena& arena, const Box4& region, const CellTime& time, const ObjectList& list,
-                                      int depth, Split split, Counters& counters) const {
+NodeRef Hierarchy::Builder::time_node(NodeArena& arena, const Box4& region, const CellTime& time,
+                                      const ObjectList& list, int depth, Split split,
+                                      Counters& counters) const {
     const std::vector<std::uint32_t>& objects = *list;
     ++counters.time_splits;
     ++counters.time_nodes;
@@ -131,8 +141,9 @@ NodeRef Hierarchy::Builder::time_node(NodeArena& arena, const Box4& region, cons
 
 // The region's octants as the children of one node (those its objects
 // meet), each bounded by what its objects occupy inside it.
-NodeRef Hierarchy::Builder::space_node(NodeArena& arena, const Box4& region, const CellTime& time, const ObjectList& list,
-                                       int depth, Counters& counters) const {
+NodeRef Hierarchy::Builder::space_node(NodeArena& arena, const Box4& region, const CellTime& time,
+                                       const ObjectList& list, int depth,
+                                       Counters& counters) const {
     const std::vector<std::uint32_t>& objects = *list;
     std::array<Box4, 8> octants;
     for (int o = 0; o < 8; ++o) octants[o] = octant(region, o);
@@ -159,13 +170,14 @@ NodeRef Hierarchy::Builder::space_node(NodeArena& arena, const Box4& region, con
     std::vector<Child> children(used.size());
     const auto make = [&](std::size_t c, Counters& counts) {
         const int o = used[c];
-        children[c].ref =
-            child_cell(arena, octants[o], time, shared_list(list, std::move(lists[o])), depth + 1, counts);
+        children[c].ref = child_cell(arena, octants[o], time,
+                                     shared_list(list, std::move(lists[o])), depth + 1, counts);
         children[c].bins = bins[o];
     };
     if (options_.build == BuildKind::Eager && used.size() > 1) {
         tbb::enumerable_thread_specific<Counters> each;
-        tbb::parallel_for(std::size_t(0), used.size(), [&](std::size_t c) { make(c, each.local()); });
+        tbb::parallel_for(std::size_t(0), used.size(),
+                          [&](std::size_t c) { make(c, each.local()); });
         for (const Counters& c : each) counters += c;
     } else {
         for (std::size_t c = 0; c < used.size(); ++c) make(c, counters);

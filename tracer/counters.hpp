@@ -30,8 +30,9 @@ struct Counters {
     std::uint64_t objects = 0;           // intelligent objects built from the scene
     std::uint64_t time_splits = 0;       // cells whose children halve time
     std::uint64_t deformation_maps = 0;  // runtime::WorkCounts, while building and tracing
-    std::uint64_t filtered_surfaces = 0;  // surfaces that filtered a shadow ray (transparent objects)
-    std::uint64_t travelling_rays = 0;    // rays whose time runs along them (--light-speed)
+    std::uint64_t filtered_surfaces =
+        0;                              // surfaces that filtered a shadow ray (transparent objects)
+    std::uint64_t travelling_rays = 0;  // rays whose time runs along them (--light-speed)
     // Wall time: building before the frames (sweeps, the root; everything
     // when eager) and rendering them. A lazy build's cells are built during
     // the render, by the threads that reach them: their time is inside

@@ -41,7 +41,8 @@ struct CameraRay {
 // The ray through the screen along `screen` (the camera's direction plus
 // its share of right and up, not normalized) from the lens point `lens`
 // (lens_point). Without an aperture, the pinhole ray.
-inline CameraRay focal_blur_ray(const runtime::CameraFrame& camera, const glm::dvec3& screen, glm::dvec2 lens) {
+inline CameraRay focal_blur_ray(const runtime::CameraFrame& camera, const glm::dvec3& screen,
+                                glm::dvec2 lens) {
     if (camera.aperture == 0.0) return {camera.location, glm::normalize(screen)};
     // POV-Ray's crosshair across the view, and its deflection x - y.
     const glm::dvec3 x_perp = glm::normalize(glm::cross(camera.up, camera.direction));

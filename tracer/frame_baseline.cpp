@@ -17,7 +17,7 @@ using runtime::ObjectHit;
 using runtime::Ray4;
 
 class FrameBaseline final : public RayQuery {
-public:
+  public:
     FrameBaseline(ObjectSet objects, const Box4& animation, const BuildOptions& options,
                   Counters& counters)
         : objects_(std::move(objects)), animation_(animation), options_(options) {
@@ -48,8 +48,7 @@ public:
         if (found) best = found;
         return best;
     }
-    bool occluded(const Ray4& ray, double s_min, double s_max,
-                  ThreadState& state) const override {
+    bool occluded(const Ray4& ray, double s_min, double s_max, ThreadState& state) const override {
         state.mailbox.next_ray();
         if (unbounded_occludes(objects_, ray, s_min, s_max, state)) return true;
         return hierarchy_ && tracer::occluded(*hierarchy_, ray, s_min, s_max, state);
@@ -66,7 +65,7 @@ public:
         counters.sweep_bytes = swept_.bytes();
     }
 
-private:
+  private:
     ObjectSet objects_;
     Box4 animation_;
     BuildOptions options_;

@@ -26,8 +26,9 @@ FrameEstimate estimate_frame(const std::vector<double>& squared, int width, int 
             tiles.push_back({tx, ty, std::sqrt(sum / count)});
         }
     out.rmse = std::sqrt(total / (static_cast<double>(width) * height));
-    std::stable_sort(tiles.begin(), tiles.end(),
-                     [](const FrameEstimate::Tile& a, const FrameEstimate::Tile& b) { return a.rmse > b.rmse; });
+    std::stable_sort(
+        tiles.begin(), tiles.end(),
+        [](const FrameEstimate::Tile& a, const FrameEstimate::Tile& b) { return a.rmse > b.rmse; });
     tiles.resize(std::min<std::size_t>(tiles.size(), FrameEstimate::kWorst));
     out.worst = std::move(tiles);
     return out;

@@ -1,16 +1,15 @@
 #include "tracer/gif_animation.hpp"
 
-#include <fcntl.h>
-#include <gif_lib.h>
-#include <unistd.h>
-
 #include <cerrno>
-#include <cstring>
-
 #include <cmath>
+#include <cstring>
 #include <memory>
 #include <stdexcept>
 #include <string>
+
+#include <fcntl.h>
+#include <gif_lib.h>
+#include <unistd.h>
 
 namespace hexant::tracer {
 
@@ -58,8 +57,8 @@ bool write_blocks(GifFileType* gif, int width, int height,
         int colours = 256;
         const std::unique_ptr<ColorMapObject, MapDeleter> map(GifMakeMapObject(256, nullptr));
         if (!map) throw std::bad_alloc();
-        if (GifQuantizeBuffer(unsigned(width), unsigned(height), &colours, red.data(),
-                              green.data(), blue.data(), index.data(), map->Colors) == GIF_ERROR)
+        if (GifQuantizeBuffer(unsigned(width), unsigned(height), &colours, red.data(), green.data(),
+                              blue.data(), index.data(), map->Colors) == GIF_ERROR)
             throw std::runtime_error("giflib cannot quantize a frame");
         if (EGifPutExtension(gif, GRAPHICS_EXT_FUNC_CODE, 4, control_bytes) == GIF_ERROR ||
             EGifPutImageDesc(gif, 0, 0, width, height, false, map.get()) == GIF_ERROR)

@@ -57,20 +57,24 @@ std::size_t SweptObjects::bytes() const {
 
 Hierarchy::Hierarchy(const SweptObjects& objects, const Box4& root, const BuildOptions& options,
                      Counters& counters)
-    : objects_(objects), options_(options), region_(root),
+    : objects_(objects),
+      options_(options),
+      region_(root),
       builder_(std::make_unique<Builder>(*this)) {
     const auto start = std::chrono::steady_clock::now();
     const std::uint64_t maps = runtime::this_thread_work.deformation_maps;
     std::vector<std::uint32_t> all;
     all.reserve(objects.objects.size());
     for (std::uint32_t i = 0; i < objects.objects.size(); ++i)
-        if (!objects.sweeps[i].box_over(root.time()).intersection(root).is_empty()) all.push_back(i);
+        if (!objects.sweeps[i].box_over(root.time()).intersection(root).is_empty())
+            all.push_back(i);
     CellTime time;
     time.t = root.time();
     // Spacetime mode: the root's time is the sweeps', cut the same way.
     if (root.lo.w == objects.time.lo && root.hi.w == objects.time.hi) time.level = 0;
     root_ = builder_->build(arena_, root, time,
-                            std::make_shared<const std::vector<std::uint32_t>>(std::move(all)), 0, counters);
+                            std::make_shared<const std::vector<std::uint32_t>>(std::move(all)), 0,
+                            counters);
     counters.build_seconds +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     // The root is entered by every ray: never leave it pending.

@@ -28,8 +28,6 @@
 // every bound is a box over that whole interval, as the paper's baseline.
 #pragma once
 
-#include <tbb/collaborative_call_once.h>
-
 #include <atomic>
 #include <cstdint>
 #include <memory>
@@ -38,9 +36,11 @@
 #include <string>
 #include <vector>
 
-#include "runtime/objects/intelligent_object.hpp"
-#include "runtime/geometry/spacetime.hpp"
+#include <tbb/collaborative_call_once.h>
+
 #include "runtime/bounds/time_sweep.hpp"
+#include "runtime/geometry/spacetime.hpp"
+#include "runtime/objects/intelligent_object.hpp"
 #include "tracer/cell.hpp"
 #include "tracer/counters.hpp"
 #include "tracer/node_arena.hpp"
@@ -150,7 +150,7 @@ struct PendingCell {
 };
 
 class Hierarchy {
-public:
+  public:
     // Builds the root cell's node over `root` (eager: the whole hierarchy).
     // The objects must outlive the hierarchy.
     Hierarchy(const SweptObjects& objects, const runtime::Box4& root, const BuildOptions& options,
@@ -188,7 +188,7 @@ public:
     std::size_t bytes() const;
     std::size_t peak_bytes() const;
 
-private:
+  private:
     class Builder;
     struct CellTime;
 

@@ -129,7 +129,8 @@ struct Hierarchy::CellTime {
                            runtime::dyadic_time(whole, c.level, c.index + 1));
         } else {
             const double lo = p == 0 ? t.lo : t.lo + (t.hi - t.lo) * (double(p) / double(n));
-            const double hi = p + 1 == n ? t.hi : t.lo + (t.hi - t.lo) * (double(p + 1) / double(n));
+            const double hi =
+                p + 1 == n ? t.hi : t.lo + (t.hi - t.lo) * (double(p + 1) / double(n));
             c.t = Interval(lo, hi);
         }
         return c;
@@ -137,7 +138,7 @@ struct Hierarchy::CellTime {
 };
 
 class Hierarchy::Builder {
-public:
+  public:
     using Box4 = runtime::Box4;
     using Interval = runtime::Interval;
     using Child = hierarchy_build::Child;
@@ -147,10 +148,10 @@ public:
 
     // The node of the cell `region` (whose time is `time`) holding
     // `objects` (each meets it). cell_split.cpp.
-    NodeRef build(NodeArena& arena, const Box4& region, const CellTime& time, const ObjectList& list,
-                  int depth, Counters& counters) const;
+    NodeRef build(NodeArena& arena, const Box4& region, const CellTime& time,
+                  const ObjectList& list, int depth, Counters& counters) const;
 
-private:
+  private:
     bool space_only() const { return options_.split == SplitMode::Space; }
 
     // Bounds are fitted to this many bins of a node's time (one for the
@@ -192,15 +193,15 @@ private:
     }
 
     // Cell splitting (cell_split.cpp).
-    Split choose(const Box4& region, const CellTime& time, const std::vector<std::uint32_t>& objects,
-                 int depth, Counters& counters) const;
+    Split choose(const Box4& region, const CellTime& time,
+                 const std::vector<std::uint32_t>& objects, int depth, Counters& counters) const;
     static ObjectList shared_list(const ObjectList& parent, std::vector<std::uint32_t> part);
-    NodeRef child_cell(NodeArena& arena, const Box4& region, const CellTime& time, ObjectList objects,
-                       int depth, Counters& counters) const;
-    NodeRef time_node(NodeArena& arena, const Box4& region, const CellTime& time, const ObjectList& list,
-                      int depth, Split split, Counters& counters) const;
-    NodeRef space_node(NodeArena& arena, const Box4& region, const CellTime& time, const ObjectList& list,
-                       int depth, Counters& counters) const;
+    NodeRef child_cell(NodeArena& arena, const Box4& region, const CellTime& time,
+                       ObjectList objects, int depth, Counters& counters) const;
+    NodeRef time_node(NodeArena& arena, const Box4& region, const CellTime& time,
+                      const ObjectList& list, int depth, Split split, Counters& counters) const;
+    NodeRef space_node(NodeArena& arena, const Box4& region, const CellTime& time,
+                       const ObjectList& list, int depth, Counters& counters) const;
 
     // The price of a split (cell_cost.cpp).
     static void scale_object_sums(CostSummary& s, double factor);
@@ -218,17 +219,19 @@ private:
     };
     NodeRef leaf(NodeArena& arena, const Box4& region, const CellTime& time,
                  const std::vector<std::uint32_t>& objects, Counters& counters) const;
-    Child group_range(const Leaf& leaf, std::vector<LeafItem>& items, std::size_t begin, std::size_t end,
-                      Counters& counters, bool top = false) const;
+    Child group_range(const Leaf& leaf, std::vector<LeafItem>& items, std::size_t begin,
+                      std::size_t end, Counters& counters, bool top = false) const;
 
     // Nodes over children's bounds (node_fit.cpp).
     NodeRef bound_node(NodeArena& arena, const Interval& time, const std::vector<Child>& children,
                        Counters& counters) const;
     static bool moves_within(const std::vector<Child>& children);
-    NodeRef box_node(NodeArena& arena, const Interval& time, const std::vector<Child>& children) const;
+    NodeRef box_node(NodeArena& arena, const Interval& time,
+                     const std::vector<Child>& children) const;
     NodeRef motion_node(NodeArena& arena, const Interval& time, const std::vector<Child>& children,
                         const std::vector<LinearBox>& fits) const;
-    NodeRef slab_node(NodeArena& arena, const Interval& time, const std::vector<Child>& children) const;
+    NodeRef slab_node(NodeArena& arena, const Interval& time,
+                      const std::vector<Child>& children) const;
 
     const Hierarchy& h_;
     const SweptObjects& objects_;

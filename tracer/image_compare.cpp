@@ -5,15 +5,15 @@
 #include <limits>
 #include <stdexcept>
 
-#include "tracer/image.hpp"
 #include "image/colour_transfer.hpp"
 #include "image/image_format.hpp"
+#include "tracer/image.hpp"
 #include "tracer/image_output.hpp"
 
 namespace hexant::tracer {
 
-using image::StoredImage;
 using image::read_stored_image;
+using image::StoredImage;
 namespace {
 
 namespace fs = std::filesystem;
@@ -52,8 +52,8 @@ ImageDifference compare_images(const fs::path& a, const fs::path& b, double fail
     for (std::size_t p = 0; p < d.pixels; ++p) {
         bool fails = false, warns = false;
         for (std::size_t c = 0; c < channels; ++c) {
-            const double e = std::abs(double(ia.values[p * channels + c]) -
-                                      double(ib.values[p * channels + c]));
+            const double e =
+                std::abs(double(ia.values[p * channels + c]) - double(ib.values[p * channels + c]));
             sum += e;
             squares += e * e;
             // A NaN on either side counts as the worst difference.
@@ -97,8 +97,8 @@ void write_difference_image(const fs::path& a, const fs::path& b, const fs::path
     const std::size_t channels = std::size_t(ia.channels);
     for (std::size_t p = 0; p < std::size_t(ia.width) * std::size_t(ia.height); ++p)
         for (std::size_t c = 0; c < 3; ++c)
-            image.rgb[p * 3 + c] = float(
-                gain * std::abs(double(ia.values[p * channels + c]) - double(ib.values[p * channels + c])));
+            image.rgb[p * 3 + c] = float(gain * std::abs(double(ia.values[p * channels + c]) -
+                                                         double(ib.values[p * channels + c])));
     write_image(image, out);
 }
 

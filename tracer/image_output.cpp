@@ -6,18 +6,18 @@
 #include <stdexcept>
 
 #include "image/colour_transfer.hpp"
-#include "tracer/gif_animation.hpp"
 #include "image/image_format.hpp"
+#include "tracer/gif_animation.hpp"
 #include "tracer/whole_file.hpp"
 
 namespace hexant::tracer {
 
-using image::ImageFormat;
-using image::StoredImage;
-using image::image_format_for;
 using image::image_format_extensions;
+using image::image_format_for;
+using image::ImageFormat;
 using image::lower_case_extension;
 using image::read_stored_image;
+using image::StoredImage;
 
 namespace fs = std::filesystem;
 
@@ -42,7 +42,8 @@ void check_frame_pattern(const std::string& pattern, std::size_t frames, const s
     }
     const auto after = pattern.find_first_not_of('#', first);
     if (after != std::string::npos && pattern.find('#', after) != std::string::npos)
-        throw std::runtime_error(flag + " " + pattern + ": one run of # is the frame number; this has more");
+        throw std::runtime_error(flag + " " + pattern +
+                                 ": one run of # is the frame number; this has more");
 }
 
 Image read_image(const fs::path& path) {
@@ -55,7 +56,8 @@ Image read_image(const fs::path& path) {
             const std::size_t at = (std::size_t(y) * stored.width + x) * stored.channels;
             glm::dvec3 c(stored.values[at], stored.values[at + 1], stored.values[at + 2]);
             if (!stored.linear)
-                for (int k = 0; k < 3; ++k) c[k] = image::srgb_decode(c[k]);  // (to_srgb8's inverse)
+                for (int k = 0; k < 3; ++k)
+                    c[k] = image::srgb_decode(c[k]);  // (to_srgb8's inverse)
             image.set(x, y, c);
         }
     return image;
@@ -109,7 +111,8 @@ const ImageFormat& check_image_name(const fs::path& path) {
 }
 
 void check_animation_name(const fs::path& path) {
-    if (lower_case_extension(path) != ".gif") throw std::runtime_error(path.string() + ": an animation is written as .gif");
+    if (lower_case_extension(path) != ".gif")
+        throw std::runtime_error(path.string() + ": an animation is written as .gif");
 }
 
 void write_image(const Image& image, const fs::path& path) {

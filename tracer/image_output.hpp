@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "tracer/image.hpp"
 #include "image/image_format.hpp"
+#include "tracer/image.hpp"
 
 namespace hexant::tracer {
 
@@ -23,7 +23,8 @@ std::string frame_path(const std::string& pattern, int frame);
 // of '#' (the second would stay in the name as it is), or none while
 // `frames` is more than one (each would be written over the last); `flag`
 // names the option in the message.
-void check_frame_pattern(const std::string& pattern, std::size_t frames, const std::string& flag = "-o");
+void check_frame_pattern(const std::string& pattern, std::size_t frames,
+                         const std::string& flag = "-o");
 
 // The format a frame's name asks for (its extension); throws
 // std::runtime_error naming the file when there is none, so that a command

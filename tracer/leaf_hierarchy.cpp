@@ -45,7 +45,8 @@ Spread centre_spread(It first, It last) {
 }
 // Orders items by their centres along `axis`.
 auto by_centre(int axis) {
-    return [axis](const LeafItem& a, const LeafItem& b) { return centre(a, axis) < centre(b, axis); };
+    return
+        [axis](const LeafItem& a, const LeafItem& b) { return centre(a, axis) < centre(b, axis); };
 }
 
 // Reorders [first, last) (items) into two runs
@@ -98,7 +99,8 @@ std::size_t sah_cut(It first, It last) {
         }
     }
     if (best < 0) return median();
-    const It middle = std::partition(first, last, [&](const auto& item) { return bin_of(item) < best; });
+    const It middle =
+        std::partition(first, last, [&](const auto& item) { return bin_of(item) < best; });
     const std::size_t left = std::size_t(middle - first);
     return left == 0 || left == n ? median() : left;
 }
@@ -111,7 +113,8 @@ std::size_t sah_cut(It first, It last) {
 // 304 bytes an object (the bins in floats, and a 96-byte item), 30 MB
 // for a leaf of 10^5 objects, and the two threads build two at once.
 NodeRef Hierarchy::Builder::leaf(NodeArena& arena, const Box4& region, const CellTime& time,
-                                 const std::vector<std::uint32_t>& objects, Counters& counters) const {
+                                 const std::vector<std::uint32_t>& objects,
+                                 Counters& counters) const {
     const int k = fit_levels();
     std::vector<LeafItem> items(objects.size());
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, objects.size(), kParallelGrain),
@@ -143,15 +146,17 @@ NodeRef Hierarchy::Builder::leaf(NodeArena& arena, const Box4& region, const Cel
 // [begin, end) with the bins of everything in it, its objects' bins
 // unpacked at the bottom; the items are reordered in place. A
 // lone object below the leaf's top is its parent's child itself.
-Child Hierarchy::Builder::group_range(const Leaf& leaf, std::vector<LeafItem>& items, std::size_t begin, std::size_t end,
-                                      Counters& counters, bool top) const {
+Child Hierarchy::Builder::group_range(const Leaf& leaf, std::vector<LeafItem>& items,
+                                      std::size_t begin, std::size_t end, Counters& counters,
+                                      bool top) const {
     const Interval& time = leaf.time.t;
     if (end - begin <= std::size_t(kNodeWidth)) {
         std::vector<Child> members;
         members.reserve(end - begin);
         Child merged{{}, TimeBins::empty(1 << leaf.k)};
         for (std::size_t i = begin; i < end; ++i) {
-            members.push_back({NodeRef::object(items[i].object), items[i].bins.unpack(items[i].box)});
+            members.push_back(
+                {NodeRef::object(items[i].object), items[i].bins.unpack(items[i].box)});
             merged.bins.add(members.back().bins);
         }
         if (members.size() == 1 && !top) return members.front();
@@ -190,7 +195,8 @@ Child Hierarchy::Builder::group_range(const Leaf& leaf, std::vector<LeafItem>& i
                 pick = c;
         if (pick == clusters.size()) break;
         const Cluster c = clusters[pick];
-        const std::size_t middle = sah_cut(items.begin() + c.begin, items.begin() + c.end) + c.begin;
+        const std::size_t middle =
+            sah_cut(items.begin() + c.begin, items.begin() + c.end) + c.begin;
         clusters[pick] = weigh(c.begin, middle);
         clusters.push_back(weigh(middle, c.end));
     }

@@ -14,7 +14,9 @@ namespace {
 // POV-Ray's EPSILON (frame.h): below it a fade distance counts as none.
 constexpr double kEpsilon = 1.0e-10;
 
-glm::dvec3 rgb(const runtime::ColourFunction& c, double t) { return {c.c[0](t), c.c[1](t), c.c[2](t)}; }
+glm::dvec3 rgb(const runtime::ColourFunction& c, double t) {
+    return {c.c[0](t), c.c[1](t), c.c[2](t)};
+}
 
 // POV-Ray's subdivision of rows a..b (TraceAreaLightSubsetShadowRay): the
 // two ends each half when they are neighbours (or the one row whole),
@@ -46,10 +48,21 @@ std::vector<double> cumulative_rows(int n) {
 }  // namespace
 
 ShadedLight::ShadedLight(const runtime::LightRecord& r)
-    : position_(r.position), point_at_(r.point_at), colour_(r.colour), transform_(r.transform),
-      lifetime_(r.lifetime), kind_(r.kind), shadowless_(r.shadowless), parallel_(r.parallel),
-      radius_(r.radius), falloff_(r.falloff), tightness_(r.tightness), fade_distance_(r.fade_distance),
-      fade_power_(r.fade_power), area_(r.area), jitter_(r.jitter),
+    : position_(r.position),
+      point_at_(r.point_at),
+      colour_(r.colour),
+      transform_(r.transform),
+      lifetime_(r.lifetime),
+      kind_(r.kind),
+      shadowless_(r.shadowless),
+      parallel_(r.parallel),
+      radius_(r.radius),
+      falloff_(r.falloff),
+      tightness_(r.tightness),
+      fade_distance_(r.fade_distance),
+      fade_power_(r.fade_power),
+      area_(r.area),
+      jitter_(r.jitter),
       // (orient alone makes the grid circular: POV-Ray warns "This area
       // light is now circular"; a row of one light stays square.)
       circular_(r.area && (r.circular || r.orient) && r.area->size1 > 1 && r.area->size2 > 1),
@@ -59,7 +72,8 @@ ShadedLight::ShadedLight(const runtime::LightRecord& r)
     fixed_colour_ = rgb(r.colour, 0.0);
     still_colour_ = !r.colour.depends_on_time();
     toward_centre_ = kind_ != runtime::LightKind::Cylinder && !parallel_;
-    plain_ = kind_ == runtime::LightKind::Point && r.fade_power.is_constant() && !(r.fade_power.constant() > 0.0);
+    plain_ = kind_ == runtime::LightKind::Point && r.fade_power.is_constant() &&
+             !(r.fade_power.constant() > 0.0);
     if (area_) {
         rows1_ = cumulative_rows(area_->size1);
         rows2_ = cumulative_rows(area_->size2);
@@ -80,7 +94,9 @@ glm::dvec3 ShadedLight::moving_position(double t) const {
     return runtime::light_point(position_, transform_, t);
 }
 
-glm::dvec3 ShadedLight::point_at(double t) const { return runtime::light_point(point_at_, transform_, t); }
+glm::dvec3 ShadedLight::point_at(double t) const {
+    return runtime::light_point(point_at_, transform_, t);
+}
 
 glm::dvec3 ShadedLight::axis_at(double t) const {
     const glm::dvec3 d = point_at(t) - position_at(t);
@@ -91,9 +107,12 @@ glm::dvec3 ShadedLight::axis_at(double t) const {
     return l > kEpsilon ? d / l : glm::dvec3(0.0);
 }
 
-glm::dvec3 ShadedLight::moving_colour(double t) const { return rgb(colour_, t); }
+glm::dvec3 ShadedLight::moving_colour(double t) const {
+    return rgb(colour_, t);
+}
 
-LightRay ShadedLight::shaped_ray_from(const glm::dvec3& point, double t, const glm::dvec3& offset) const {
+LightRay ShadedLight::shaped_ray_from(const glm::dvec3& point, double t,
+                                      const glm::dvec3& offset) const {
     const glm::dvec3 centre = position_at(t) + offset;
     LightRay ray;
     if (kind_ == runtime::LightKind::Cylinder) {
@@ -137,7 +156,8 @@ double ShadedLight::cubic_spline(double low, double high, double pos) {
     return (3.0 - 2.0 * pos) * pos * pos;
 }
 
-double ShadedLight::shaped_attenuation(const glm::dvec3& point, const LightRay& ray, double t) const {
+double ShadedLight::shaped_attenuation(const glm::dvec3& point, const LightRay& ray,
+                                       double t) const {
     double a = 1.0;
     switch (kind_) {
         case runtime::LightKind::Spotlight: {
@@ -166,7 +186,8 @@ double ShadedLight::shaped_attenuation(const glm::dvec3& point, const LightRay& 
             if (radius > 0.0 && off > radius) a *= cubic_spline(0.0, 1.0 - radius / falloff, d);
             break;
         }
-        case runtime::LightKind::Point: break;
+        case runtime::LightKind::Point:
+            break;
     }
     if (a > 0.0) {
         const double power = fade_power_(t), distance = fade_distance_(t);
@@ -190,7 +211,8 @@ glm::dvec3 ShadedLight::area_offset(glm::dvec2 u, const LightRay& centre, double
         // as axis1.
         const double length = glm::length(axis1);
         const glm::dvec3 d = centre.direction;
-        const glm::dvec3 helper = std::fabs(std::fabs(d.z) - 1.0) < 0.01 ? glm::dvec3(0, 1, 0) : glm::dvec3(0, 0, 1);
+        const glm::dvec3 helper =
+            std::fabs(std::fabs(d.z) - 1.0) < 0.01 ? glm::dvec3(0, 1, 0) : glm::dvec3(0, 0, 1);
         const glm::dvec3 a1 = glm::cross(d, helper);
         const double l1 = glm::length(a1);
         if (l1 > 0.0) {

@@ -28,7 +28,7 @@ struct LightRay {
 };
 
 class ShadedLight {
-public:
+  public:
     explicit ShadedLight(const runtime::LightRecord& record);
 
     bool shines_at(double t) const { return lifetime_.is_always() || lifetime_.contains(t); }
@@ -36,13 +36,18 @@ public:
     bool is_area() const { return area_.has_value(); }
     // (The common light's answers inline: a scene of point lights pays
     // nothing for the other kinds.)
-    glm::dvec3 position_at(double t) const { return still_position_ ? fixed_position_ : moving_position(t); }
-    glm::dvec3 colour_at(double t) const { return still_colour_ ? fixed_colour_ : moving_colour(t); }
+    glm::dvec3 position_at(double t) const {
+        return still_position_ ? fixed_position_ : moving_position(t);
+    }
+    glm::dvec3 colour_at(double t) const {
+        return still_colour_ ? fixed_colour_ : moving_colour(t);
+    }
 
     // The ray from `point` toward the light's centre moved by `offset` (an
     // area light's grid point; zero otherwise). A zero direction when the
     // point is the light's place, or a parallel light's point_at is.
-    LightRay ray_from(const glm::dvec3& point, double t, const glm::dvec3& offset = glm::dvec3(0.0)) const {
+    LightRay ray_from(const glm::dvec3& point, double t,
+                      const glm::dvec3& offset = glm::dvec3(0.0)) const {
         if (!toward_centre_) return shaped_ray_from(point, t, offset);
         const glm::dvec3 to = position_at(t) + offset - point;
         const double depth = std::sqrt(to.x * to.x + to.y * to.y + to.z * to.z);
@@ -61,7 +66,7 @@ public:
     // ray from the lit point (orient turns the axes to face it).
     glm::dvec3 area_offset(glm::dvec2 u, const LightRay& centre, double t) const;
 
-private:
+  private:
     glm::dvec3 moving_position(double t) const;
     glm::dvec3 moving_colour(double t) const;
     LightRay shaped_ray_from(const glm::dvec3& point, double t, const glm::dvec3& offset) const;

@@ -1,11 +1,10 @@
 // A finite speed of light (Glassner's seed paper, "Spacetime rays": "the
 // time component of the direction vector ... set to a value consistent with
-// the speed of light in the database"): light seen at time t along a ray left the event s scene units away at
-// t - s / C, so every ray the renderer casts (camera, shadow, reflected,
-// refracted) runs back in time as it goes, its 4D direction
-// (d, -|d| / C). A fast object is then seen where it was when the light
-// left it. The intelligent objects and the hierarchy's walk already answer
-// such rays (a ray whose time changes crosses cells in time too).
+// the speed of light in the database"): light seen at time t along a ray left the event s scene
+// units away at t - s / C, so every ray the renderer casts (camera, shadow, reflected, refracted)
+// runs back in time as it goes, its 4D direction (d, -|d| / C). A fast object is then seen where it
+// was when the light left it. The intelligent objects and the hierarchy's walk already answer such
+// rays (a ray whose time changes crosses cells in time too).
 //
 // The animation has a first instant; before it the scene is not defined
 // (its parameters were checked over the animation's time only). A ray that

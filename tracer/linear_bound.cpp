@@ -1,9 +1,9 @@
 #include "tracer/linear_bound.hpp"
 
-#include "tracer/bound_rounding.hpp"
-
 #include <algorithm>
 #include <cmath>
+
+#include "tracer/bound_rounding.hpp"
 
 namespace hexant::tracer {
 

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+
 #include <glm/vec3.hpp>
 
 #include "runtime/geometry/spacetime.hpp"

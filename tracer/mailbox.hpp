@@ -16,7 +16,7 @@
 namespace hexant::tracer {
 
 class Mailbox {
-public:
+  public:
     static constexpr std::int32_t kUntested = -2;
     static constexpr std::int32_t kMiss = -1;
 
@@ -49,7 +49,7 @@ public:
         return slots_[i] = std::int32_t(hits_.size() - 1);
     }
 
-private:
+  private:
     std::vector<std::uint32_t> stamps_;
     std::vector<std::int32_t> slots_;
     std::vector<runtime::ObjectHit> hits_;

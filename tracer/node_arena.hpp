@@ -18,15 +18,15 @@
 #include <cstdlib>
 #include <memory>
 #include <new>
-#include <sys/mman.h>
 #include <vector>
 
+#include <sys/mman.h>
 #include <tbb/enumerable_thread_specific.h>
 
 namespace hexant::tracer {
 
 class NodeArena {
-public:
+  public:
     NodeArena() = default;
     NodeArena(const NodeArena&) = delete;
     NodeArena& operator=(const NodeArena&) = delete;
@@ -63,7 +63,7 @@ public:
         return total;
     }
 
-private:
+  private:
     static constexpr std::size_t kAlign = 64;
     static constexpr std::size_t kBlock = 64 * 1024;
     struct Blocks {
@@ -76,9 +76,11 @@ private:
         Blocks& b = blocks_.local();
         if (b.used + bytes > kBlock) {
             // Room first, so that a mapped block is always recorded.
-            if (b.list.size() == b.list.capacity()) b.list.reserve(std::max<std::size_t>(8, 2 * b.list.size()));
+            if (b.list.size() == b.list.capacity())
+                b.list.reserve(std::max<std::size_t>(8, 2 * b.list.size()));
             // Page-aligned (so 64-byte aligned) and zeroed.
-            void* p = mmap(nullptr, kBlock, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+            void* p =
+                mmap(nullptr, kBlock, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
             if (p == MAP_FAILED) throw std::bad_alloc();
             b.list.push_back(p);
             b.used = 0;

@@ -15,7 +15,8 @@ using namespace hierarchy_build;
 
 // One node over `time` holding the children's bounds, in the style the
 // options ask for (Auto: a linear-motion box where it saves area).
-NodeRef Hierarchy::Builder::bound_node(NodeArena& arena, const Interval& time, const std::vector<Child>& children,
+NodeRef Hierarchy::Builder::bound_node(NodeArena& arena, const Interval& time,
+                                       const std::vector<Child>& children,
                                        Counters& counters) const {
     BoundStyle style = options_.bounds;
     if (space_only() && style == BoundStyle::Linear) style = BoundStyle::Box;
@@ -38,8 +39,12 @@ NodeRef Hierarchy::Builder::bound_node(NodeArena& arena, const Interval& time, c
         case BoundStyle::Linear:
             ++counters.motion_nodes;
             return motion_node(arena, time, children, fits);
-        case BoundStyle::Slabs: ++counters.slab_nodes; return slab_node(arena, time, children);
-        default: ++counters.box_nodes; return box_node(arena, time, children);
+        case BoundStyle::Slabs:
+            ++counters.slab_nodes;
+            return slab_node(arena, time, children);
+        default:
+            ++counters.box_nodes;
+            return box_node(arena, time, children);
     }
 }
 
@@ -47,12 +52,12 @@ NodeRef Hierarchy::Builder::bound_node(NodeArena& arena, const Interval& time, c
 bool Hierarchy::Builder::moves_within(const std::vector<Child>& children) {
     for (const Child& c : children)
         for (int b = 1; b < c.bins.count; ++b)
-            if (c.bins.bin[b] != c.bins.bin[0])
-                return true;
+            if (c.bins.bin[b] != c.bins.bin[0]) return true;
     return false;
 }
 
-NodeRef Hierarchy::Builder::box_node(NodeArena& arena, const Interval& time, const std::vector<Child>& children) const {
+NodeRef Hierarchy::Builder::box_node(NodeArena& arena, const Interval& time,
+                                     const std::vector<Child>& children) const {
     BoxNode* node = arena.make<BoxNode>();
     node->children = std::uint32_t(children.size());
     node->t0 = time.lo;
@@ -72,7 +77,8 @@ NodeRef Hierarchy::Builder::box_node(NodeArena& arena, const Interval& time, con
 }
 
 // `fits`: the children's fitted boxes if already made, else empty.
-NodeRef Hierarchy::Builder::motion_node(NodeArena& arena, const Interval& time, const std::vector<Child>& children,
+NodeRef Hierarchy::Builder::motion_node(NodeArena& arena, const Interval& time,
+                                        const std::vector<Child>& children,
                                         const std::vector<LinearBox>& fits) const {
     MotionNode* node = arena.make<MotionNode>();
     node->children = std::uint32_t(children.size());
@@ -104,7 +110,8 @@ NodeRef Hierarchy::Builder::motion_node(NodeArena& arena, const Interval& time, 
     return NodeRef::node(RefKind::MotionNode, node);
 }
 
-NodeRef Hierarchy::Builder::slab_node(NodeArena& arena, const Interval& time, const std::vector<Child>& children) const {
+NodeRef Hierarchy::Builder::slab_node(NodeArena& arena, const Interval& time,
+                                      const std::vector<Child>& children) const {
     SlabNode* node = arena.make<SlabNode>();
     node->children = std::uint32_t(children.size());
     node->t0 = time.lo;
@@ -120,7 +127,8 @@ NodeRef Hierarchy::Builder::slab_node(NodeArena& arena, const Interval& time, co
             // The bin's piece of the node's time, widened by an ulp each
             // way: a box claimed over a little more time still holds.
             const double lo = bin == 0 ? time.lo : time.lo + time.width() * (double(bin) / n);
-            const double hi = bin + 1 == n ? time.hi : time.lo + time.width() * (double(bin + 1) / n);
+            const double hi =
+                bin + 1 == n ? time.hi : time.lo + time.width() * (double(bin + 1) / n);
             b.add(children[i].bins.bin[bin].box(
                 Interval(std::nextafter(lo, -std::numeric_limits<double>::infinity()),
                          std::nextafter(hi, std::numeric_limits<double>::infinity()))));

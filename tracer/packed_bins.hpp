@@ -69,7 +69,9 @@ struct PackedBins {
         Axis(const BinBox& hull, int a)
             : lo(hull.lo[a]), hi(hull.hi[a]), step((double(hull.hi[a]) - hull.lo[a]) / kTop) {}
         bool usable() const { return std::isfinite(step) && step > 0.0; }
-        double decode(int s) const { return s == 0 ? lo : s == kTop || !usable() ? hi : lo + s * step; }
+        double decode(int s) const {
+            return s == 0 ? lo : s == kTop || !usable() ? hi : lo + s * step;
+        }
         std::uint16_t down(float v) const {
             if (!usable()) return 0;
             int s = static_cast<int>(std::clamp(std::floor((v - lo) / step), 0.0, double(kTop)));

@@ -19,9 +19,12 @@ Mode parse_mode(const std::string& name) {
 
 const char* mode_name(Mode mode) {
     switch (mode) {
-        case Mode::Spacetime: return "spacetime";
-        case Mode::Frames: return "frames";
-        case Mode::Brute: return "brute";
+        case Mode::Spacetime:
+            return "spacetime";
+        case Mode::Frames:
+            return "frames";
+        case Mode::Brute:
+            return "brute";
     }
     return "?";
 }
@@ -42,10 +45,12 @@ Box4 enclosing_box(const ObjectSet& objects, double t0, double t1) {
 std::unique_ptr<RayQuery> make_ray_query(Mode mode, ObjectSet objects, const Box4& animation,
                                          const BuildOptions& options, Counters& counters) {
     switch (mode) {
-        case Mode::Brute: return query_detail::make_brute(std::move(objects));
+        case Mode::Brute:
+            return query_detail::make_brute(std::move(objects));
         case Mode::Frames:
             return query_detail::make_frames(std::move(objects), animation, options, counters);
-        case Mode::Spacetime: break;
+        case Mode::Spacetime:
+            break;
     }
     return query_detail::make_spacetime(std::move(objects), animation, options, counters);
 }

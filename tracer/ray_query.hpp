@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "runtime/objects/intelligent_object.hpp"
 #include "runtime/geometry/spacetime.hpp"
+#include "runtime/objects/intelligent_object.hpp"
 #include "tracer/counters.hpp"
 #include "tracer/hierarchy.hpp"
 #include "tracer/thread_state.hpp"
@@ -42,7 +42,7 @@ struct ObjectSet {
 runtime::Box4 enclosing_box(const ObjectSet& objects, double t0, double t1);
 
 class RayQuery {
-public:
+  public:
     virtual ~RayQuery() = default;
     // Make ready for rays with times in [t0, t1] (one frame's shutter):
     // the frame-by-frame mode builds that frame's hierarchy here; spacetime
@@ -51,8 +51,7 @@ public:
     virtual void prepare_frame(double t0, double t1, Counters& counters) = 0;
     // The nearest surface event with s_min < s < s_max.
     virtual std::optional<runtime::ObjectHit> first_hit(const runtime::Ray4& ray, double s_min,
-                                                        double s_max,
-                                                        ThreadState& state) const = 0;
+                                                        double s_max, ThreadState& state) const = 0;
     // Does an object that casts a full shadow (casts shadows and lets no
     // light through: IntelligentObject::filters_light) meet the ray with
     // s_min < s < s_max?
@@ -87,8 +86,8 @@ std::unique_ptr<RayQuery> make_brute(ObjectSet objects);
 // The unbounded objects, tested on every ray (through the mailbox).
 std::optional<runtime::ObjectHit> first_unbounded(const ObjectSet& set, const runtime::Ray4& ray,
                                                   double s_min, double s_max, ThreadState& state);
-bool unbounded_occludes(const ObjectSet& set, const runtime::Ray4& ray, double s_min,
-                        double s_max, ThreadState& state);
+bool unbounded_occludes(const ObjectSet& set, const runtime::Ray4& ray, double s_min, double s_max,
+                        ThreadState& state);
 // The root of a hierarchy over `time`: the cost criterion's is the objects'
 // own extent (its splits then fall where the objects are); the paper's is
 // `given` (the objects, the eye and the lights), as the paper builds it.

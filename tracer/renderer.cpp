@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <array>
-#include <mutex>
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 
@@ -36,7 +36,8 @@ constexpr std::uint32_t kLensPair = 0x7fffffffu;
 // orthographic film) and every light's position, at the opening and closing
 // of each of frames first..last.
 template <class Add>
-void for_each_eye_and_light(const runtime::SceneDescription& scene, int first, int last, Add&& add) {
+void for_each_eye_and_light(const runtime::SceneDescription& scene, int first, int last,
+                            Add&& add) {
     const auto& a = scene.animation;
     for (int f = first; f <= last; ++f) {
         const double open = a.clock_of_frame(f);
@@ -52,10 +53,12 @@ void for_each_eye_and_light(const runtime::SceneDescription& scene, int first, i
 // inside the extent of everything the animation holds (its objects, eyes
 // and lights) and hits only inside it, so a ray travels at most its
 // diagonal; a path is at most max_trace_level rays and one shadow ray.
-double light_lookback(const runtime::SceneDescription& scene, const ObjectSet& objects, double light_speed) {
+double light_lookback(const runtime::SceneDescription& scene, const ObjectSet& objects,
+                      double light_speed) {
     if (!std::isfinite(light_speed)) return 0.0;
     const auto& a = scene.animation;
-    const double begin = std::min(a.time_begin(), a.time_end()), end = std::max(a.time_begin(), a.time_end());
+    const double begin = std::min(a.time_begin(), a.time_end()),
+                 end = std::max(a.time_begin(), a.time_end());
     Box4 all = enclosing_box(objects, begin, end);
     for_each_eye_and_light(scene, a.initial_frame, a.final_frame,
                            [&](const glm::dvec3& p) { all.extend(Event(p, begin)); });
@@ -75,7 +78,8 @@ Box4 animation_root(const runtime::SceneDescription& scene, const ObjectSet& obj
     const double from = a.clock_of_frame(first);
     const double to = a.clock_of_frame(last) + a.exposure() * a.clock_delta();
     const double begin = std::min(from, to), end = std::max(from, to);
-    floor = lookback > 0.0 ? std::max(std::min(a.time_begin(), a.time_end()), begin - lookback) : begin;
+    floor =
+        lookback > 0.0 ? std::max(std::min(a.time_begin(), a.time_end()), begin - lookback) : begin;
     Box4 root = enclosing_box(objects, floor, end);
     const auto add = [&](const glm::dvec3& p) {
         root.extend(Event(p, floor));
@@ -145,7 +149,8 @@ TileSamples sample_tile(const TilePlan& plan, Trace&& trace, Linear&& linear, Th
             tile_squared = 0.0;
             for (int p = 0; p < pixels; ++p) {
                 // (A - B)^2 / 4 per channel, each half in linear light.
-                const glm::dvec3 d = linear(out.sum_a[p] / double(taken)) - linear(out.sum_b[p] / double(taken));
+                const glm::dvec3 d =
+                    linear(out.sum_a[p] / double(taken)) - linear(out.sum_b[p] / double(taken));
                 out.pixel_squared[p] = glm::dot(d, d) / 12.0;
                 tile_squared += out.pixel_squared[p];
             }
@@ -165,13 +170,13 @@ TileSamples sample_tile(const TilePlan& plan, Trace&& trace, Linear&& linear, Th
 Renderer::Renderer(const runtime::SceneDescription& scene, const RenderSettings& settings)
     : Renderer(scene, settings, nullptr) {}
 
-Renderer::Renderer(runtime::SceneDescription& scene, const RenderSettings& settings,
-                   ReleaseRecords)
+Renderer::Renderer(runtime::SceneDescription& scene, const RenderSettings& settings, ReleaseRecords)
     : Renderer(scene, settings, &scene.objects) {}
 
 Renderer::Renderer(const runtime::SceneDescription& scene, const RenderSettings& settings,
                    Records* release)
-    : scene_(scene), settings_(settings),
+    : scene_(scene),
+      settings_(settings),
       first_frame_(settings.first_frame > 0 ? settings.first_frame : scene.animation.initial_frame),
       last_frame_(settings.last_frame > 0 ? settings.last_frame : scene.animation.final_frame) {
     if (first_frame_ < scene.animation.initial_frame || last_frame_ > scene.animation.final_frame ||
@@ -195,7 +200,8 @@ Renderer::Renderer(const runtime::SceneDescription& scene, const RenderSettings&
     const ObjectSet set = ObjectSet::of(objects_);
     const std::uint64_t maps = runtime::this_thread_work.deformation_maps;
     if (!(settings.light_speed > 0.0))
-        throw std::invalid_argument("the speed of light must be a positive number (infinite: instant light)");
+        throw std::invalid_argument(
+            "the speed of light must be a positive number (infinite: instant light)");
     lookback_ = light_lookback(scene, set, settings.light_speed);
     root_ = animation_root(scene, set, first_frame_, last_frame_, lookback_, floor_);
     counters_.deformation_maps += runtime::this_thread_work.deformation_maps - maps;
@@ -209,9 +215,10 @@ Renderer::Renderer(const runtime::SceneDescription& scene, const RenderSettings&
         // (Adaptive sampling takes an unknown count under its ceiling: the
         // mean at the default target is 8 to 26 samples on the examples
         // (docs/benchmarks.md, "Error against run time"), so twice the first round.)
-        const int samples = settings.target_error > 0.0
-                                ? std::min(settings.samples_per_pixel, 2 * RenderSettings::kFirstRoundSamples)
-                                : settings.samples_per_pixel;
+        const int samples =
+            settings.target_error > 0.0
+                ? std::min(settings.samples_per_pixel, 2 * RenderSettings::kFirstRoundSamples)
+                : settings.samples_per_pixel;
         build.rays_per_frame = double(scene.animation.width) * scene.animation.height *
                                std::max(1, samples) * (1.0 + lights);
         build.frame_interval = std::fabs(scene.animation.clock_delta());
@@ -248,15 +255,17 @@ Image Renderer::render_frame(int frame) {
     const runtime::Animation::FrameClock frame_clock = a.frame_clock(frame);
     // (Light of finite speed reaches back before the shutter opens.)
     const double first_instant = std::min(open, open + length);
-    query_->prepare_frame(lookback_ > 0.0 ? std::max(floor_, first_instant - lookback_) : first_instant,
-                          std::max(open, open + length), counters_);
+    query_->prepare_frame(
+        lookback_ > 0.0 ? std::max(floor_, first_instant - lookback_) : first_instant,
+        std::max(open, open + length), counters_);
 
     const int width = a.width, height = a.height;
     const int spp = std::max(1, settings_.samples_per_pixel);
     const bool halves = settings_.sample_sets == 2;
     const bool adaptive = settings_.target_error > 0.0;
     if (halves && (spp % 2 != 0 || !settings_.jitter))
-        throw std::invalid_argument("two sample sets need an even number of jittered samples per pixel");
+        throw std::invalid_argument(
+            "two sample sets need an even number of jittered samples per pixel");
     if (adaptive && !halves)
         throw std::invalid_argument("a target error needs two sample sets (its estimate)");
     Image image(width, height);
@@ -267,8 +276,9 @@ Image Renderer::render_frame(int frame) {
     const double working_gamma = scene_.global.assumed_gamma;
     const runtime::CameraFrame fixed_camera = scene_.camera.evaluate(open);
     const std::size_t object_count = query_->object_count();
-    tbb::enumerable_thread_specific<ThreadState> states(
-        [&] { return ThreadState{Mailbox(object_count), {}}; });
+    tbb::enumerable_thread_specific<ThreadState> states([&] {
+        return ThreadState{Mailbox(object_count), {}};
+    });
     const auto start = std::chrono::steady_clock::now();
 
     std::unique_ptr<tbb::global_control> limit;
@@ -298,15 +308,17 @@ Image Renderer::render_frame(int frame) {
         const double u = (x + s.x) / width - 0.5;
         const double v = 0.5 - (y + s.y) / height;
         const auto lens = [&] {
-            const auto pair = padded_pair(seed, static_cast<std::uint32_t>(index),
-                                          static_cast<std::uint32_t>(count), kLensPair, settings_.jitter);
+            const auto pair =
+                padded_pair(seed, static_cast<std::uint32_t>(index),
+                            static_cast<std::uint32_t>(count), kLensPair, settings_.jitter);
             return glm::dvec2(pair[0], pair[1]);
         };
         const std::optional<PrimaryRay> ray =
             primary_ray(camera, u, v, lens, camera_normal_ ? &*camera_normal_ : nullptr, t);
         // (No ray, a fisheye's corner: black, as POV-Ray's.)
         if (!ray) return glm::dvec3(0.0);
-        state.sample = {seed, static_cast<std::uint32_t>(index), static_cast<std::uint32_t>(count), settings_.jitter};
+        state.sample = {seed, static_cast<std::uint32_t>(index), static_cast<std::uint32_t>(count),
+                        settings_.jitter};
         return shader_->trace(travel_.ray(ray->origin, t, ray->direction), state);
     };
 
@@ -319,38 +331,42 @@ Image Renderer::render_frame(int frame) {
     std::atomic<int> tiles_done{0}, tiles_over{0};
     std::atomic<std::uint64_t> samples_taken{0};
     std::mutex progress_mutex;
-    tbb::parallel_for(tbb::blocked_range<int>(0, tile_count, 1), [&](const tbb::blocked_range<int>& range) {
-        ThreadState& state = states.local();
-        const std::uint64_t maps = runtime::this_thread_work.deformation_maps;
-        for (int tile = range.begin(); tile < range.end(); ++tile) {
-            const int x0 = tile % tiles_x * kTile, y0 = tile / tiles_x * kTile;
-            const int x1 = std::min(width, x0 + kTile), y1 = std::min(height, y0 + kTile);
-            const int tile_width = x1 - x0, pixels = tile_width * (y1 - y0);
-            TilePlan plan{frame, settings_.sample_seed, halves, adaptive, per_set, settings_.target_error,
-                          x0, y0, tile_width, pixels};
-            const TileSamples t = sample_tile(plan, trace_sample, linear, state);
-            if (t.over_target) ++tiles_over;
-            const auto& sum_a = t.sum_a;
-            const auto& sum_b = t.sum_b;
-            const auto& pixel_squared = t.pixel_squared;
-            const int taken = t.taken;
-            const int sets = halves ? 2 : 1;
-            for (int p = 0; p < pixels; ++p) {
-                const int x = x0 + p % tile_width, y = y0 + p / tile_width;
-                const std::size_t at = static_cast<std::size_t>(y) * width + x;
-                image.set(x, y, linear((sum_a[p] + sum_b[p]) / double(sets * taken)));
-                samples[at] = sets * taken;
-                if (halves) squared[at] = pixel_squared[p];
+    tbb::parallel_for(
+        tbb::blocked_range<int>(0, tile_count, 1), [&](const tbb::blocked_range<int>& range) {
+            ThreadState& state = states.local();
+            const std::uint64_t maps = runtime::this_thread_work.deformation_maps;
+            for (int tile = range.begin(); tile < range.end(); ++tile) {
+                const int x0 = tile % tiles_x * kTile, y0 = tile / tiles_x * kTile;
+                const int x1 = std::min(width, x0 + kTile), y1 = std::min(height, y0 + kTile);
+                const int tile_width = x1 - x0, pixels = tile_width * (y1 - y0);
+                TilePlan plan{frame,      settings_.sample_seed,
+                              halves,     adaptive,
+                              per_set,    settings_.target_error,
+                              x0,         y0,
+                              tile_width, pixels};
+                const TileSamples t = sample_tile(plan, trace_sample, linear, state);
+                if (t.over_target) ++tiles_over;
+                const auto& sum_a = t.sum_a;
+                const auto& sum_b = t.sum_b;
+                const auto& pixel_squared = t.pixel_squared;
+                const int taken = t.taken;
+                const int sets = halves ? 2 : 1;
+                for (int p = 0; p < pixels; ++p) {
+                    const int x = x0 + p % tile_width, y = y0 + p / tile_width;
+                    const std::size_t at = static_cast<std::size_t>(y) * width + x;
+                    image.set(x, y, linear((sum_a[p] + sum_b[p]) / double(sets * taken)));
+                    samples[at] = sets * taken;
+                    if (halves) squared[at] = pixel_squared[p];
+                }
+                const std::uint64_t total = samples_taken += std::uint64_t(pixels) * sets * taken;
+                const int done = ++tiles_done;
+                if (settings_.progress) {
+                    const std::lock_guard<std::mutex> lock(progress_mutex);
+                    settings_.progress(frame, double(done) / tile_count, total);
+                }
             }
-            const std::uint64_t total = samples_taken += std::uint64_t(pixels) * sets * taken;
-            const int done = ++tiles_done;
-            if (settings_.progress) {
-                const std::lock_guard<std::mutex> lock(progress_mutex);
-                settings_.progress(frame, double(done) / tile_count, total);
-            }
-        }
-        state.counters.deformation_maps += runtime::this_thread_work.deformation_maps - maps;
-    });
+            state.counters.deformation_maps += runtime::this_thread_work.deformation_maps - maps;
+        });
     for (const ThreadState& s : states) counters_ += s.counters;
     counters_.render_seconds +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -50,7 +50,7 @@ struct RenderSettings {
     // throws std::invalid_argument otherwise.
     double light_speed = std::numeric_limits<double>::infinity();
     BuildOptions build;
-    int threads = 0;        // 0: as many as the machine has
+    int threads = 0;  // 0: as many as the machine has
     // Told, from a worker thread and one call at a time, each time a tile
     // of a frame is done: the frame, the fraction of its tiles done, and
     // the samples (primary rays) the frame has taken so far.
@@ -63,7 +63,7 @@ struct RenderSettings {
 };
 
 class Renderer {
-public:
+  public:
     // Builds the objects (the scene's records into intelligent objects) and,
     // in spacetime mode, the one hierarchy over the whole animation.
     Renderer(const runtime::SceneDescription& scene, const RenderSettings& settings);
@@ -100,7 +100,7 @@ public:
     void measure_memory() { query_->measure_memory(counters_); }
     const runtime::Box4& root() const { return root_; }
 
-private:
+  private:
     using Records = std::vector<std::shared_ptr<const runtime::ObjectRecord>>;
     Renderer(const runtime::SceneDescription& scene, const RenderSettings& settings,
              Records* release);

@@ -75,9 +75,9 @@ struct PixelSample {
 // other value gives independent scrambles.
 inline std::uint32_t pixel_seed(int frame, int x, int y, std::uint32_t sample_seed = 0) {
     using sobol_detail::hash;
-    const std::uint32_t seed =
-        hash(static_cast<std::uint32_t>(frame) ^
-             hash(static_cast<std::uint32_t>(x) ^ hash(static_cast<std::uint32_t>(y) + 0x9e3779b9u)));
+    const std::uint32_t seed = hash(
+        static_cast<std::uint32_t>(frame) ^
+        hash(static_cast<std::uint32_t>(x) ^ hash(static_cast<std::uint32_t>(y) + 0x9e3779b9u)));
     return sample_seed == 0 ? seed : hash(seed ^ hash(sample_seed));
 }
 
@@ -113,8 +113,8 @@ inline PixelSample pixel_sample(std::uint32_t seed, std::uint32_t index, std::ui
 // PaddedSobolSampler), so sample i's pair is stratified over the pixel's
 // samples and independent of the other pairs. Without jitter, the
 // unscrambled points at the middles of their strata, as pixel_sample.
-inline std::array<double, 2> padded_pair(std::uint32_t seed, std::uint32_t index, std::uint32_t count,
-                                         std::uint32_t pair, bool jitter) {
+inline std::array<double, 2> padded_pair(std::uint32_t seed, std::uint32_t index,
+                                         std::uint32_t count, std::uint32_t pair, bool jitter) {
     using namespace sobol_detail;
     constexpr double kScale = 1.0 / 4294967296.0;
     if (!jitter) {

@@ -26,8 +26,13 @@ constexpr double kBailout = 1.0 / 255.0;
 
 }  // namespace
 
-Shader::Shader(const runtime::SceneDescription& scene, const RayQuery& query, LightTravel travel, bool filtering)
-    : query_(query), travel_(travel), filtering_(filtering), background_(scene.background), ambient_light_(scene.global.ambient_light),
+Shader::Shader(const runtime::SceneDescription& scene, const RayQuery& query, LightTravel travel,
+               bool filtering)
+    : query_(query),
+      travel_(travel),
+      filtering_(filtering),
+      background_(scene.background),
+      ambient_light_(scene.global.ambient_light),
       max_trace_level_(std::max(1, scene.global.max_trace_level)) {
     for (const auto& l : scene.lights) lights_.emplace_back(l);
     still_ambient_ = !ambient_light_.depends_on_time();
@@ -35,7 +40,8 @@ Shader::Shader(const runtime::SceneDescription& scene, const RayQuery& query, Li
     if (scene.sky_sphere) {
         // A pigment is evaluated at the direction taken through the sky's
         // transform: a texture whose transform is the sky's.
-        for (auto p = scene.sky_sphere->pigments.rbegin(); p != scene.sky_sphere->pigments.rend(); ++p) {
+        for (auto p = scene.sky_sphere->pigments.rbegin(); p != scene.sky_sphere->pigments.rend();
+             ++p) {
             runtime::Texture layer;
             layer.pigment = *p;
             layer.transform = scene.sky_sphere->transform;
@@ -58,7 +64,8 @@ glm::dvec3 Shader::fogged(const glm::dvec3& colour, const Ray4& ray, double dept
         if (!(std::fabs(distance) > 1.0e-10)) continue;  // POV-Ray's EPSILON
         double width = depth;
         const auto& c = fog.colour;
-        const double r = c.c[0](t), g = c.c[1](t), b = c.c[2](t), filter = c.c[3](t), transmit = c.c[4](t);
+        const double r = c.c[0](t), g = c.c[1](t), b = c.c[2](t), filter = c.c[3](t),
+                     transmit = c.c[4](t);
         double density = 1.0;
         glm::dvec3 middle = origin + direction * (width / 2.0);
         if (fog.type == 2) {
@@ -67,22 +74,30 @@ glm::dvec3 Shader::fogged(const glm::dvec3& colour, const Ray4& ray, double dept
             up = glm::normalize(up);
             const glm::dvec3 p1 = origin, p2 = origin + direction * width;
             const double alt = fog.alt(t), offset = fog.offset(t);
-            const double start = (glm::dot(p1, up) - offset) / alt, end = (glm::dot(p2, up) - offset) / alt;
+            const double start = (glm::dot(p1, up) - offset) / alt,
+                         end = (glm::dot(p2, up) - offset) / alt;
             // Density 1 below the offset, 1 / (1 + y^2) above: its mean
             // along the ray from the integral atan(y).
-            if (start <= 0.0) density = end <= 0.0 ? 1.0 : (std::atan(end) - start) / (end - start);
-            else if (end <= 0.0) density = (std::atan(start) - end) / (start - end);
-            else if (std::fabs(start - end) > 1.0e-10) density = (std::atan(start) - std::atan(end)) / (start - end);
-            else density = 1.0 / (start * start + 1.0);
+            if (start <= 0.0)
+                density = end <= 0.0 ? 1.0 : (std::atan(end) - start) / (end - start);
+            else if (end <= 0.0)
+                density = (std::atan(start) - end) / (start - end);
+            else if (std::fabs(start - end) > 1.0e-10)
+                density = (std::atan(start) - std::atan(end)) / (start - end);
+            else
+                density = 1.0 / (start * start + 1.0);
             middle = (p1 + p2) * 0.5;
         }
         if (fog.turbulence) {
             const runtime::pattern::Turbulence& turb = *fog.turbulence;
-            const glm::dvec3 p = middle * glm::dvec3(turb.amount.c[0](t), turb.amount.c[1](t), turb.amount.c[2](t));
+            const glm::dvec3 p =
+                middle * glm::dvec3(turb.amount.c[0](t), turb.amount.c[1](t), turb.amount.c[2](t));
             const double k = std::exp(-width / distance);
-            const auto octaves = runtime::pattern::octaves_of(turb.octaves(t), turb.omega(t), turb.lambda(t));
-            width *= 1.0 - k * std::min(1.0, runtime::pattern::turbulence(p, octaves, noise_generator_) *
-                                                 fog.turb_depth(t));
+            const auto octaves =
+                runtime::pattern::octaves_of(turb.octaves(t), turb.omega(t), turb.lambda(t));
+            width *=
+                1.0 - k * std::min(1.0, runtime::pattern::turbulence(p, octaves, noise_generator_) *
+                                            fog.turb_depth(t));
         }
         double att = std::exp(-width * density / distance);
         if (att < transmit) att = transmit;
@@ -102,7 +117,8 @@ glm::dvec3 Shader::sky(const glm::dvec3& direction, double t) const {
     glm::dvec3 colour(0.0), through(1.0);
     const glm::dvec3 emission = rgb(sky_emission_, t);
     for (const auto& layer : sky_layers_) {
-        const runtime::MaterialSample m = layer.at(direction, glm::dvec2(0.0), t);  // (no uv: refused on a sky)
+        const runtime::MaterialSample m =
+            layer.at(direction, glm::dvec2(0.0), t);  // (no uv: refused on a sky)
         const double opacity = 1.0 - m.filter - m.transmit;
         colour += m.colour * opacity * through * emission;
         through *= m.colour * m.filter + glm::dvec3(m.transmit);
@@ -110,7 +126,8 @@ glm::dvec3 Shader::sky(const glm::dvec3& direction, double t) const {
     return colour + background * through;
 }
 
-inline void Shader::place(const ShadedLight& light, const Hit& h, ShadingScratch::Light& known) const {
+inline void Shader::place(const ShadedLight& light, const Hit& h,
+                          ShadingScratch::Light& known) const {
     known.state = ShadingScratch::Light::State::Dark;
     if (!light.shines_at(h.time)) return;
     // POV-Ray's ComputeOneLightRay: the ray toward the light's centre from
@@ -127,8 +144,8 @@ inline void Shader::place(const ShadedLight& light, const Hit& h, ShadingScratch
     known.colour = light.colour_at(h.time) * attenuation;
 }
 
-inline std::optional<runtime::ObjectHit> Shader::nearest(const Ray4& ray, Ray4& on, ThreadState& state,
-                                                        double s_max) const {
+inline std::optional<runtime::ObjectHit> Shader::nearest(const Ray4& ray, Ray4& on,
+                                                         ThreadState& state, double s_max) const {
     if (ray.direction.w == 0.0) return query_.first_hit(ray, 0.0, s_max, state);
     ++state.counters.travelling_rays;
     const double s_floor = LightTravel::floor_parameter(ray, travel_.floor);
@@ -148,7 +165,8 @@ inline bool Shader::blocked(const Ray4& ray, double reach, ThreadState& state) c
     return query_.occluded(held, 0.0, reach - s_floor, state);
 }
 
-inline glm::dvec3 Shader::shadow_filter(std::size_t index, const Hit& h, const ShadingScratch::Light& known,
+inline glm::dvec3 Shader::shadow_filter(std::size_t index, const Hit& h,
+                                        const ShadingScratch::Light& known,
                                         ThreadState& state) const {
     const ShadedLight& light = lights_[index];
     glm::dvec3 direction = known.to_light;
@@ -157,9 +175,11 @@ inline glm::dvec3 Shader::shadow_filter(std::size_t index, const Hit& h, const S
         // One point of the grid per sample: over a pixel's samples the
         // shadow averages the grid, as POV-Ray's fully subdivided one.
         const SampleIndex& s = state.sample;
-        const auto u = padded_pair(s.seed, s.index, s.count,
-                                   static_cast<std::uint32_t>(index + lights_.size() * std::size_t(h.depth)), s.jitter);
-        const glm::dvec3 offset = light.area_offset({u[0], u[1]}, LightRay{known.to_light, 0.0}, h.time);
+        const auto u = padded_pair(
+            s.seed, s.index, s.count,
+            static_cast<std::uint32_t>(index + lights_.size() * std::size_t(h.depth)), s.jitter);
+        const glm::dvec3 offset =
+            light.area_offset({u[0], u[1]}, LightRay{known.to_light, 0.0}, h.time);
         const LightRay toward = light.ray_from(h.start, h.time, offset);
         if (toward.direction == glm::dvec3(0.0)) return glm::dvec3(1.0);
         direction = toward.direction;
@@ -189,7 +209,8 @@ glm::dvec3 Shader::filtered(Ray4 ray, double reach, int depth, ThreadState& stat
             ++state.counters.filtered_surfaces;
             through *= transmittance(p, depth, state);
             // POV-Ray's full shadow: below its EPSILON in every channel.
-            if (std::max({std::fabs(through.x), std::fabs(through.y), std::fabs(through.z)}) < 1.0e-10)
+            if (std::max({std::fabs(through.x), std::fabs(through.y), std::fabs(through.z)}) <
+                1.0e-10)
                 return glm::dvec3(0.0);
         }
         // On from just past the surface, as far as is left to the light.
@@ -204,10 +225,13 @@ glm::dvec3 Shader::filtered(Ray4 ray, double reach, int depth, ThreadState& stat
     return through;
 }
 
-glm::dvec3 Shader::transmittance(const runtime::SurfacePoint& p, int depth, ThreadState& state) const {
+glm::dvec3 Shader::transmittance(const runtime::SurfacePoint& p, int depth,
+                                 ThreadState& state) const {
     const glm::dvec3 point(p.event);
     const double t = p.event.w;
-    const auto filter = [](const runtime::MaterialSample& m) { return m.colour * m.filter + glm::dvec3(m.transmit); };
+    const auto filter = [](const runtime::MaterialSample& m) {
+        return m.colour * m.filter + glm::dvec3(m.transmit);
+    };
     if (p.texture->single_layer()) {
         runtime::TextureSample::Layer layer;
         p.texture->sample_layer(point, p.uv, t, p.shading_normal, layer);
@@ -221,12 +245,12 @@ glm::dvec3 Shader::transmittance(const runtime::SurfacePoint& p, int depth, Thre
     glm::dvec3 sum(0.0);
     for (const runtime::TextureSample::Plain& plain : sample.plains) {
         glm::dvec3 product(1.0);
-        for (std::size_t i = plain.first; i < plain.first + plain.count; ++i) product *= filter(sample.layers[i].material);
+        for (std::size_t i = plain.first; i < plain.first + plain.count; ++i)
+            product *= filter(sample.layers[i].material);
         sum += plain.weight * product;
     }
     return sum;
 }
-
 
 glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, ThreadState& state) const {
     const double t = ray.origin.w;
@@ -269,14 +293,16 @@ glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, ThreadSta
         p.texture->sample(h.point, p.uv, h.time, h.raw, scratch.texture);
         scratch.lights.assign(lights_.size(), ShadingScratch::Light{});
         for (const runtime::TextureSample::Plain& plain : scratch.texture.plains)
-            colour += plain.weight * lit(h, scratch.texture.layers.data() + plain.first, plain.count,
-                                         &scratch.lights, state);
+            colour += plain.weight * lit(h, scratch.texture.layers.data() + plain.first,
+                                         plain.count, &scratch.lights, state);
     }
 
     // Fog lies along the way here when the ray came through the open (not
     // from inside a solid: POV-Ray fogs only rays outside non-hollow
     // objects).
-    return fogs_.empty() || h.back ? colour : fogged(colour, ray, glm::distance(h.point, glm::dvec3(ray.origin)));
+    return fogs_.empty() || h.back
+               ? colour
+               : fogged(colour, ray, glm::distance(h.point, glm::dvec3(ray.origin)));
 }
 
 glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers, std::size_t count,
@@ -311,8 +337,10 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
                 known.state = ShadingScratch::Light::State::Seen;
                 if (!light.shadowless()) {
                     const glm::dvec3 through = shadow_filter(i, h, known, state);
-                    if (through == glm::dvec3(0.0)) known.state = ShadingScratch::Light::State::Shadowed;
-                    else if (through != glm::dvec3(1.0)) known.colour *= through;
+                    if (through == glm::dvec3(0.0))
+                        known.state = ShadingScratch::Light::State::Shadowed;
+                    else if (through != glm::dvec3(1.0))
+                        known.colour *= through;
                 }
             }
             if (known.state == ShadingScratch::Light::State::Shadowed) continue;
@@ -359,11 +387,12 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
         n = std::fabs(n);
         const double k = 1.0 + eta * eta * (n * n - 1.0);
         total_internal_reflection = k < 0.0;
-        const glm::dvec3 out =
-            total_internal_reflection ? reflect(h.d, normal, h.raw) : eta * h.d + (eta * n - std::sqrt(k)) * local;
-        const glm::dvec3 from = !total_internal_reflection
-                                    ? runtime::geometry::offset_ray(h.point, h.p.error, -h.geometric)
-                                    : h.start;
+        const glm::dvec3 out = total_internal_reflection
+                                   ? reflect(h.d, normal, h.raw)
+                                   : eta * h.d + (eta * n - std::sqrt(k)) * local;
+        const glm::dvec3 from = !total_internal_reflection ? runtime::geometry::offset_ray(
+                                                                 h.point, h.p.error, -h.geometric)
+                                                           : h.start;
         ++state.counters.refracted_rays;
         const Ray4 next = travel_.ray(from, h.time, out);
         const glm::dvec3 behind = radiance(next, h.depth + 1, through_weight, state);
@@ -407,13 +436,14 @@ glm::dvec3 Shader::reflect(const glm::dvec3& d, const glm::dvec3& normal, const 
     if (normal != raw) {
         const double n = glm::dot(r, raw);
         if (n < 0.0) {
-            if (glm::dot(r, normal) < 0.0) r = d - 2.0 * glm::dot(d, raw) * raw;
-            else r += -2.0 * n * raw;
+            if (glm::dot(r, normal) < 0.0)
+                r = d - 2.0 * glm::dot(d, raw) * raw;
+            else
+                r += -2.0 * n * raw;
         }
         r = glm::normalize(r);
     }
     return r;
 }
-
 
 }  // namespace hexant::tracer

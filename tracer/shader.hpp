@@ -17,9 +17,9 @@
 
 #include <glm/vec3.hpp>
 
+#include "runtime/geometry/spacetime.hpp"
 #include "runtime/scene/scene.hpp"
 #include "runtime/texture/texture_evaluator.hpp"
-#include "runtime/geometry/spacetime.hpp"
 #include "tracer/light.hpp"
 #include "tracer/light_travel.hpp"
 #include "tracer/ray_query.hpp"
@@ -28,7 +28,7 @@
 namespace hexant::tracer {
 
 class Shader {
-public:
+  public:
     // `travel`: how rays run back in time as they go (light_travel.hpp;
     // the default, instant light, as before).
     // `filtering`: whether some object that casts shadows may let light
@@ -43,7 +43,7 @@ public:
         return radiance(ray, 1, 1.0, state);
     }
 
-private:
+  private:
     glm::dvec3 radiance(const runtime::Ray4& ray, int depth, double weight,
                         ThreadState& state) const;
     // The nearest hit along `ray` within (0, s_max), and in `on` the ray it
@@ -54,7 +54,8 @@ private:
         const runtime::Ray4& ray, runtime::Ray4& on, ThreadState& state,
         double s_max = std::numeric_limits<double>::infinity()) const;
     // Whether anything lies on `ray` within (0, reach], both pieces.
-    [[gnu::always_inline]] inline bool blocked(const runtime::Ray4& ray, double reach, ThreadState& state) const;
+    [[gnu::always_inline]] inline bool blocked(const runtime::Ray4& ray, double reach,
+                                               ThreadState& state) const;
     // A hit being shaded: the ray's unit direction, the event, the raw
     // normal (shading, turned to face the viewer), the geometric one (so
     // turned too), where secondary rays start, and the ray's depth and

@@ -26,10 +26,11 @@ SweptObjects timed_sweeps(const ObjectSet& objects, const Box4& animation,
 }
 
 class SpacetimeQuery final : public RayQuery {
-public:
+  public:
     SpacetimeQuery(ObjectSet objects, const Box4& animation, const BuildOptions& options,
                    Counters& counters)
-        : objects_(std::move(objects)), swept_(timed_sweeps(objects_, animation, options, counters)),
+        : objects_(std::move(objects)),
+          swept_(timed_sweeps(objects_, animation, options, counters)),
           hierarchy_(swept_, hierarchy_root(swept_, animation, options), options, counters) {}
 
     // The slabs of frames done (or not yet begun) are let go: memory holds
@@ -46,8 +47,7 @@ public:
         if (found) best = found;
         return best;
     }
-    bool occluded(const Ray4& ray, double s_min, double s_max,
-                  ThreadState& state) const override {
+    bool occluded(const Ray4& ray, double s_min, double s_max, ThreadState& state) const override {
         state.mailbox.next_ray();
         if (unbounded_occludes(objects_, ray, s_min, s_max, state)) return true;
         return tracer::occluded(hierarchy_, ray, s_min, s_max, state);
@@ -62,7 +62,7 @@ public:
         counters.sweep_bytes = swept_.bytes();
     }
 
-private:
+  private:
     ObjectSet objects_;
     SweptObjects swept_;
     Hierarchy hierarchy_;

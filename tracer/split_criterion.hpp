@@ -14,8 +14,8 @@ enum class Split { Leaf, Time, Space, Both };
 // What the paper's criterion reads.
 struct PaperSummary {
     std::size_t objects = 0;
-    bool moving = false;      // something in the cell moves
-    double occupancy = 0.0;   // the objects' summed occupancy (only when asked)
+    bool moving = false;     // something in the cell moves
+    double occupancy = 0.0;  // the objects' summed occupancy (only when asked)
 };
 
 // The paper's rule (Glassner 1988, "Subdivision"): split while more than

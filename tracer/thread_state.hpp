@@ -47,7 +47,8 @@ struct ThreadState {
     Mailbox mailbox;
     Counters counters;
     SampleIndex sample{};
-    std::deque<ShadingScratch> shading{};  // by depth (a deque: a deeper one leaves the others in place)
+    std::deque<ShadingScratch>
+        shading{};  // by depth (a deque: a deeper one leaves the others in place)
     ShadingScratch& shading_at(int depth) {
         while (shading.size() <= static_cast<std::size_t>(depth)) shading.emplace_back();
         return shading[static_cast<std::size_t>(depth)];

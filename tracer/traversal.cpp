@@ -62,8 +62,8 @@ bool TraversalRay::prepare(const Ray4& ray, bool with_diagonals) {
         } else {
             const double sy = (j - 3) & 2 ? -0.5 : 0.5, sz = (j - 3) & 1 ? -0.5 : 0.5;
             const Sum o = compensated_sum(0.5 * ray.origin.x, sy * ray.origin.y, sz * ray.origin.z);
-            const Sum d = compensated_sum(0.5 * ray.direction.x, sy * ray.direction.y,
-                                          sz * ray.direction.z);
+            const Sum d =
+                compensated_sum(0.5 * ray.direction.x, sy * ray.direction.y, sz * ray.direction.z);
             on = o.value;
             dn = d.value;
             error = 0x1p-23 * std::fabs(on) + 2.0 * o.error;
@@ -115,11 +115,18 @@ namespace {
 // principal slabs), tested with runtime::SlabRay's robust clip. Looser than
 // the instant tests, never wrong.
 class DoubleWalk {
-public:
+  public:
     DoubleWalk(const Hierarchy& h, const Ray4& ray, double s_min, double s_max, bool occlusion,
                ThreadState& state, std::optional<ObjectHit>& best)
-        : h_(h), ray_(ray), slab_ray_(ray), s_min_(s_min), best_s_(s_max), occlusion_(occlusion),
-          test_{ray, s_min, s_max, state}, state_(state), best_(best),
+        : h_(h),
+          ray_(ray),
+          slab_ray_(ray),
+          s_min_(s_min),
+          best_s_(s_max),
+          occlusion_(occlusion),
+          test_{ray, s_min, s_max, state},
+          state_(state),
+          best_(best),
           instant_(ray.direction.w == 0.0) {}
 
     bool run() {
@@ -147,23 +154,30 @@ public:
                     // An instant on the split takes the later half, as
                     // the SIMD walk does (both halves hold it).
                     for (int c = 1; c >= 0; --c) {
-                        if (instant_ && (c == 0 ? ray_.origin.w >= node->split
-                                                : ray_.origin.w < node->split))
+                        if (instant_ &&
+                            (c == 0 ? ray_.origin.w >= node->split : ray_.origin.w < node->split))
                             continue;
                         stack.push_back({&node->child[c], e.enter});
                     }
                     break;
                 }
-                case RefKind::BoxNode: push(ref.as<BoxNode>(), stack); break;
-                case RefKind::MotionNode: push(ref.as<MotionNode>(), stack); break;
-                case RefKind::SlabNode: push(ref.as<SlabNode>(), stack); break;
-                default: break;
+                case RefKind::BoxNode:
+                    push(ref.as<BoxNode>(), stack);
+                    break;
+                case RefKind::MotionNode:
+                    push(ref.as<MotionNode>(), stack);
+                    break;
+                case RefKind::SlabNode:
+                    push(ref.as<SlabNode>(), stack);
+                    break;
+                default:
+                    break;
             }
         }
         return false;
     }
 
-private:
+  private:
     struct Entry {
         NodeRef* slot;
         double enter;
@@ -206,7 +220,8 @@ private:
             if (slab_ray_.clip(b, s_min_, best_s_, &enter, &exit)) hits[count++] = {enter, i};
         }
         std::sort(hits.begin(), hits.begin() + count);
-        for (int k = count - 1; k >= 0; --k) stack.push_back({&node->child[hits[k].second], hits[k].first});
+        for (int k = count - 1; k >= 0; --k)
+            stack.push_back({&node->child[hits[k].second], hits[k].first});
     }
 
     const Hierarchy& h_;
@@ -229,8 +244,8 @@ bool at_time_of(const Hierarchy& h, const Ray4& ray) {
 
 }  // namespace
 
-std::optional<ObjectHit> first_hit(const Hierarchy& h, const Ray4& ray, double s_min,
-                                   double s_max, ThreadState& state) {
+std::optional<ObjectHit> first_hit(const Hierarchy& h, const Ray4& ray, double s_min, double s_max,
+                                   ThreadState& state) {
     std::optional<ObjectHit> best;
     if (h.empty() || !(s_min < s_max) || !at_time_of(h, ray)) return best;
     TraversalRay r;
@@ -241,8 +256,7 @@ std::optional<ObjectHit> first_hit(const Hierarchy& h, const Ray4& ray, double s
     return best;
 }
 
-bool occluded(const Hierarchy& h, const Ray4& ray, double s_min, double s_max,
-              ThreadState& state) {
+bool occluded(const Hierarchy& h, const Ray4& ray, double s_min, double s_max, ThreadState& state) {
     std::optional<ObjectHit> none;
     if (h.empty() || !(s_min < s_max) || !at_time_of(h, ray)) return false;
     TraversalRay r;

@@ -33,8 +33,8 @@
 #include <cstdint>
 #include <optional>
 
-#include "runtime/objects/intelligent_object.hpp"
 #include "runtime/geometry/spacetime.hpp"
+#include "runtime/objects/intelligent_object.hpp"
 #include "tracer/hierarchy.hpp"
 #include "tracer/thread_state.hpp"
 
@@ -53,7 +53,7 @@ struct TraversalRay {
     float epsilon_box = 0.0f;    // the widening for x, y, z
     float epsilon_slab = 0.0f;   // ... for all seven
     double time = 0.0;
-    float half_time = 0.0f;      // time / 2, for slab nodes
+    float half_time = 0.0f;  // time / 2, for slab nodes
 
     // False when the ray's numbers do not fit (the double walk then). The
     // diagonal directions are prepared only when asked (only 12-slab nodes
@@ -78,8 +78,8 @@ namespace traversal_detail {
 // The single-precision walk (traversal_simd.cpp), by dynamic dispatch to
 // the machine's widest SIMD. Returns true when `occlusion` and an occluder
 // was found; first hits update best / best_s.
-bool walk_instant(const Hierarchy& h, const TraversalRay& r, const runtime::Ray4& ray,
-                  double s_min, double s_max, bool occlusion, ThreadState& state,
+bool walk_instant(const Hierarchy& h, const TraversalRay& r, const runtime::Ray4& ray, double s_min,
+                  double s_max, bool occlusion, ThreadState& state,
                   std::optional<runtime::ObjectHit>& best);
 
 }  // namespace traversal_detail

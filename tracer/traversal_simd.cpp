@@ -6,11 +6,11 @@
 // stored bounds in bound_rounding.hpp.
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "tracer/traversal_simd.cpp"
-#include <hwy/foreach_target.h>  // IWYU pragma: keep
-#include <hwy/highway.h>
-
 #include <algorithm>
 #include <cfloat>
+
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
 
 #include "tracer/bound_rounding.hpp"
 #include "tracer/object_test.hpp"
@@ -38,8 +38,8 @@ struct Entry {
 // the widened entry parameters. `planes(j, i, lo, hi)` loads the children
 // i.. bounds along direction j at the ray's instant.
 template <class Planes>
-HWY_INLINE unsigned TestChildren(const TraversalRay& r, int directions, float epsilon,
-                                 float s_min, float s_max, const Planes& planes, float* enter) {
+HWY_INLINE unsigned TestChildren(const TraversalRay& r, int directions, float epsilon, float s_min,
+                                 float s_max, const Planes& planes, float* enter) {
     const D d;
     const std::size_t lanes = hn::Lanes(d);
     const V big = hn::Set(d, FLT_MAX);
@@ -56,8 +56,8 @@ HWY_INLINE unsigned TestChildren(const TraversalRay& r, int directions, float ep
             const V o = hn::Set(d, r.origin[j]);
             if ((r.parallel >> j) & 1) {
                 const V slack = hn::Set(d, r.slack[j]);
-                inside = hn::And(inside, hn::And(hn::Le(hn::Sub(lo, slack), o),
-                                                 hn::Le(o, hn::Add(hi, slack))));
+                inside = hn::And(
+                    inside, hn::And(hn::Le(hn::Sub(lo, slack), o), hn::Le(o, hn::Add(hi, slack))));
                 continue;
             }
             // The end met first by sign of the direction: an empty child
@@ -83,11 +83,18 @@ HWY_INLINE unsigned TestChildren(const TraversalRay& r, int directions, float ep
 }
 
 class Walk {
-public:
+  public:
     Walk(const Hierarchy& h, const TraversalRay& r, const runtime::Ray4& ray, double s_min,
          double s_max, bool occlusion, ThreadState& state, std::optional<runtime::ObjectHit>& best)
-        : h_(h), r_(r), s_min_(float_down(s_min)), best_s_(s_max), best_f_(float_up(s_max)),
-          occlusion_(occlusion), test_{ray, s_min, s_max, state}, state_(state), best_(best) {}
+        : h_(h),
+          r_(r),
+          s_min_(float_down(s_min)),
+          best_s_(s_max),
+          best_f_(float_up(s_max)),
+          occlusion_(occlusion),
+          test_{ray, s_min, s_max, state},
+          state_(state),
+          best_(best) {}
 
     bool run() {
         NodeRef root = h_.root();
@@ -120,12 +127,17 @@ public:
                     }
                     break;
                 }
-                case RefKind::BoxNode: descend = box(ref.as<BoxNode>(), slot, stack, top); break;
+                case RefKind::BoxNode:
+                    descend = box(ref.as<BoxNode>(), slot, stack, top);
+                    break;
                 case RefKind::MotionNode:
                     descend = motion(ref.as<MotionNode>(), slot, stack, top);
                     break;
-                case RefKind::SlabNode: descend = slabs(ref.as<SlabNode>(), slot, stack, top); break;
-                default: break;
+                case RefKind::SlabNode:
+                    descend = slabs(ref.as<SlabNode>(), slot, stack, top);
+                    break;
+                default:
+                    break;
             }
             if (descend) continue;
             // Next: the nearest child left behind that may still matter.
@@ -140,7 +152,7 @@ public:
         }
     }
 
-private:
+  private:
     // After a node's test: the nearest child hit becomes `slot`, the others
     // go on the stack farthest first. False when none was hit.
     template <class Node>
@@ -158,7 +170,8 @@ private:
         for (int a = 1; a < count; ++a)
             for (int b = a; b > 0 && enter[index[b]] > enter[index[b - 1]]; --b)
                 std::swap(index[b], index[b - 1]);
-        for (int k = 0; k + 1 < count; ++k) stack[top++] = {&node->child[index[k]], enter[index[k]]};
+        for (int k = 0; k + 1 < count; ++k)
+            stack[top++] = {&node->child[index[k]], enter[index[k]]};
         slot = &node->child[index[count - 1]];
         return true;
     }
@@ -237,8 +250,8 @@ private:
     std::optional<runtime::ObjectHit>& best_;
 };
 
-bool WalkInstant(const Hierarchy& h, const TraversalRay& r, const runtime::Ray4& ray,
-                 double s_min, double s_max, bool occlusion, ThreadState& state,
+bool WalkInstant(const Hierarchy& h, const TraversalRay& r, const runtime::Ray4& ray, double s_min,
+                 double s_max, bool occlusion, ThreadState& state,
                  std::optional<runtime::ObjectHit>& best) {
     return Walk(h, r, ray, s_min, s_max, occlusion, state, best).run();
 }
@@ -251,8 +264,8 @@ HWY_AFTER_NAMESPACE();
 namespace hexant::tracer {
 HWY_EXPORT(WalkInstant);
 namespace traversal_detail {
-bool walk_instant(const Hierarchy& h, const TraversalRay& r, const runtime::Ray4& ray,
-                  double s_min, double s_max, bool occlusion, ThreadState& state,
+bool walk_instant(const Hierarchy& h, const TraversalRay& r, const runtime::Ray4& ray, double s_min,
+                  double s_max, bool occlusion, ThreadState& state,
                   std::optional<runtime::ObjectHit>& best) {
     return HWY_DYNAMIC_DISPATCH(WalkInstant)(h, r, ray, s_min, s_max, occlusion, state, best);
 }

@@ -1,16 +1,15 @@
 #include "tracer/whole_file.hpp"
 
-#include <cstdlib>
-
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <atomic>
 #include <cerrno>
 #include <csignal>
+#include <cstdlib>
 #include <cstring>
 #include <stdexcept>
 #include <system_error>
+
+#include <fcntl.h>
+#include <unistd.h>
 
 namespace hexant::tracer {
 
@@ -112,7 +111,8 @@ int remove_leftover_temporaries(const fs::path& path) {
     const std::string tail = ".partial";
     for (const fs::directory_entry& entry : it) {
         const std::string f = entry.path().filename().string();
-        if (f.size() < 1 + tail.size() + 2 || f[0] != '.' || f.compare(f.size() - tail.size(), tail.size(), tail) != 0)
+        if (f.size() < 1 + tail.size() + 2 || f[0] != '.' ||
+            f.compare(f.size() - tail.size(), tail.size(), tail) != 0)
             continue;
         // ".NAME.PID.partial", NAME cut as TemporaryFile cuts it for a
         // number of that many digits.
@@ -127,7 +127,8 @@ int remove_leftover_temporaries(const fs::path& path) {
         if (middle.substr(0, dot) != expected) continue;
         // (A process of this machine that still runs is still writing it.)
         const long number = std::strtol(pid.c_str(), nullptr, 10);
-        if (number > 0 && number != ::getpid() && (::kill(pid_t(number), 0) == 0 || errno == EPERM)) continue;
+        if (number > 0 && number != ::getpid() && (::kill(pid_t(number), 0) == 0 || errno == EPERM))
+            continue;
         if (fs::remove(entry.path(), error)) ++removed;
     }
     return removed;

@@ -1,14 +1,14 @@
 #include "image/formats/exr_format.hpp"
 
+#include <exception>
+#include <stdexcept>
+#include <string>
+
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
-
-#include <exception>
-#include <stdexcept>
-#include <string>
 
 namespace hexant::image {
 
@@ -28,8 +28,8 @@ void write_exr(const fs::path& file, int width, int height, const void* pixels) 
         char* base = static_cast<char*>(const_cast<void*>(pixels));
         for (int c = 0; c < 3; ++c) {
             header.channels().insert(kChannels[c], Imf::Channel(Imf::FLOAT));
-            frame.insert(kChannels[c], Imf::Slice(Imf::FLOAT, base + c * sizeof(float),
-                                                  x_stride, y_stride));
+            frame.insert(kChannels[c],
+                         Imf::Slice(Imf::FLOAT, base + c * sizeof(float), x_stride, y_stride));
         }
         // The file's destructor writes the line offsets and swallows its
         // errors: the caller reads the file back to catch a short one.
@@ -63,9 +63,8 @@ StoredImage read_exr(const fs::path& file) {
         const std::size_t x_stride = std::size_t(out.channels) * sizeof(float);
         const std::size_t y_stride = x_stride * std::size_t(out.width);
         for (int c = 0; c < out.channels; ++c)
-            frame.insert(kChannels[c],
-                         Imf::Slice::Make(Imf::FLOAT, out.values.data() + c, window, x_stride,
-                                          y_stride));
+            frame.insert(kChannels[c], Imf::Slice::Make(Imf::FLOAT, out.values.data() + c, window,
+                                                        x_stride, y_stride));
         in.setFrameBuffer(frame);
         in.readPixels(window.min.y, window.max.y);
         return out;

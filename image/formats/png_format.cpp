@@ -1,13 +1,13 @@
 #include "image/formats/png_format.hpp"
 
-#include <png.h>
-
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <memory>
 #include <stdexcept>
 #include <string>
+
+#include <png.h>
 
 namespace hexant::image {
 
@@ -72,14 +72,25 @@ bool read_rows(std::FILE* file, const Reader& r, std::vector<unsigned char>& byt
         png_get_gAMA(r.png, r.info, &file_gamma);
     out.encoding_gamma = file_gamma;
     switch (png_get_color_type(r.png, r.info)) {
-        case PNG_COLOR_TYPE_GRAY: out.source = StoredImage::Source::Gray; break;
-        case PNG_COLOR_TYPE_GRAY_ALPHA: out.source = StoredImage::Source::GrayAlpha; break;
-        case PNG_COLOR_TYPE_PALETTE: out.source = StoredImage::Source::Palette; break;
-        case PNG_COLOR_TYPE_RGB_ALPHA: out.source = StoredImage::Source::RgbAlpha; break;
-        default: out.source = StoredImage::Source::Rgb; break;
+        case PNG_COLOR_TYPE_GRAY:
+            out.source = StoredImage::Source::Gray;
+            break;
+        case PNG_COLOR_TYPE_GRAY_ALPHA:
+            out.source = StoredImage::Source::GrayAlpha;
+            break;
+        case PNG_COLOR_TYPE_PALETTE:
+            out.source = StoredImage::Source::Palette;
+            break;
+        case PNG_COLOR_TYPE_RGB_ALPHA:
+            out.source = StoredImage::Source::RgbAlpha;
+            break;
+        default:
+            out.source = StoredImage::Source::Rgb;
+            break;
     }
     out.source_bits = png_get_bit_depth(r.png, r.info);
-    out.colour_key = out.source != StoredImage::Source::Palette && png_get_valid(r.png, r.info, PNG_INFO_tRNS);
+    out.colour_key =
+        out.source != StoredImage::Source::Palette && png_get_valid(r.png, r.info, PNG_INFO_tRNS);
     png_set_expand(r.png);       // palette to RGB, low-bit gray to 8 bits, tRNS to alpha
     png_set_gray_to_rgb(r.png);  // gray as RGB, so every image has 3 or 4 channels
     png_read_update_info(r.png, r.info);
@@ -118,8 +129,7 @@ StoredImage read_png(const fs::path& file) {
         for (std::size_t i = 0; i < out.values.size(); ++i)
             out.values[i] = float((unsigned(bytes[2 * i]) << 8 | bytes[2 * i + 1]) / 65535.0);
     else
-        for (std::size_t i = 0; i < out.values.size(); ++i)
-            out.values[i] = float(bytes[i] / 255.0);
+        for (std::size_t i = 0; i < out.values.size(); ++i) out.values[i] = float(bytes[i] / 255.0);
     return out;
 }
 

@@ -11,11 +11,11 @@
 
 #include <tao/pegtl.hpp>
 
+#include "language/checked_integer.hpp"
 #include "language/grammar.hpp"
 #include "language/interpreter_state.hpp"
 #include "language/mesh_reading.hpp"
 #include "language/object_extent.hpp"
-#include "language/checked_integer.hpp"
 #include "language/timed_call.hpp"
 #include "language/value_ops.hpp"
 #include "runtime/objects/parameter_check.hpp"

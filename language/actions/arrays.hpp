@@ -67,7 +67,10 @@ struct action<g::array_value> {
 template <>
 struct action<g::spline_open> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { (void)in; st.blocks.emplace_back(std::in_place_type<SplineBuilder>); }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)in;
+        st.blocks.emplace_back(std::in_place_type<SplineBuilder>);
+    }
 };
 template <>
 struct action<g::spline_base> {
@@ -90,8 +93,10 @@ struct action<g::spline_kind> {
         const std::string w = word(in);
         auto& s = st.block<SplineBuilder>(in.position(), w.c_str());
         using K = runtime::SplineKind;
-        s.kind = w == "linear_spline" ? K::Linear : w == "quadratic_spline" ? K::Quadratic
-                 : w == "cubic_spline" ? K::Cubic : K::Natural;
+        s.kind = w == "linear_spline"      ? K::Linear
+                 : w == "quadratic_spline" ? K::Quadratic
+                 : w == "cubic_spline"     ? K::Cubic
+                                           : K::Natural;
     }
 };
 template <>
@@ -111,8 +116,10 @@ struct action<g::spline_key> {
             for (int i = 0; i < vec.size; ++i)
                 key.value[i] = to_constant(Value{vec.c[i]}, "a spline key's value");
         }
-        if (s.keys.empty()) s.dimensions = dims;
-        else s.dimensions = std::max(s.dimensions, dims);
+        if (s.keys.empty())
+            s.dimensions = dims;
+        else
+            s.dimensions = std::max(s.dimensions, dims);
         s.keys.push_back(key);
     }
 };
@@ -134,7 +141,8 @@ struct action<g::scene_object> {
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.pop();
         if (v.is<runtime::LightRecord>()) {
-            if (auto problem = runtime::bad_parameter(v.as<runtime::LightRecord>(), st.scene.animation))
+            if (auto problem =
+                    runtime::bad_parameter(v.as<runtime::LightRecord>(), st.scene.animation))
                 throw ValueError(*problem);
             st.add_light(v.as<runtime::LightRecord>(), in.position());
         } else if (v.is<runtime::ObjectPtr>()) {
@@ -152,7 +160,5 @@ struct action<g::scene_unsupported> {
         throw ValueError(st.pop().as<Unevaluated>().what + " is not supported by hexant");
     }
 };
-
-
 
 }  // namespace hexant::language

@@ -30,13 +30,18 @@ struct action<g::declare_directive> {
 template <>
 struct action<g::undef_name> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { st.undefine(word(in)); }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        st.undefine(word(in));
+    }
 };
 
 template <>
 struct action<g::version_value> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { (void)in; st.version = to_constant(st.pop(), "#version"); }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)in;
+        st.version = to_constant(st.pop(), "#version");
+    }
 };
 
 // A message's text that depends on clock: each piece's text, after the
@@ -56,25 +61,34 @@ inline std::string message_text(const Value& value, const char* what) {
 template <>
 struct action<g::debug_directive> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { (void)in; st.messages() << message_text(st.pop(), "#debug's text"); }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)in;
+        st.messages() << message_text(st.pop(), "#debug's text");
+    }
 };
 
 template <>
 struct action<g::warning_directive> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { st.warn(in.position(), message_text(st.pop(), "#warning's text")); }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        st.warn(in.position(), message_text(st.pop(), "#warning's text"));
+    }
 };
 
 template <>
 struct action<g::error_directive> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { Interpreter::fail(in.position(), "#error: " + message_text(st.pop(), "#error's text")); }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        Interpreter::fail(in.position(), "#error: " + message_text(st.pop(), "#error's text"));
+    }
 };
 
 template <>
 struct action<g::unsupported_directive> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { Interpreter::fail(in.position(), "#" + word(in) + " is not supported by hexant"); }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        Interpreter::fail(in.position(), "#" + word(in) + " is not supported by hexant");
+    }
 };
 
 template <>
@@ -96,15 +110,17 @@ struct action<g::default_item> {
         st.require_whole_time(in.position(), "#default");
         Value v = st.pop();
         auto& texture = st.scene.default_texture;
-        if (v.is<runtime::Texture>()) texture = v.as<runtime::Texture>();
-        else if (v.is<runtime::Pigment>()) texture.pigment = v.as<runtime::Pigment>();
-        else if (v.is<runtime::Finish>()) texture.finish = v.as<runtime::Finish>();
+        if (v.is<runtime::Texture>())
+            texture = v.as<runtime::Texture>();
+        else if (v.is<runtime::Pigment>())
+            texture.pigment = v.as<runtime::Pigment>();
+        else if (v.is<runtime::Finish>())
+            texture.finish = v.as<runtime::Finish>();
         // Checked here, at the #default: the objects that take it are
         // checked for their own parameters only.
         if (auto problem = runtime::bad_parameter(texture, "the #default", st.scene.animation))
             Interpreter::fail(in.position(), *problem);
     }
 };
-
 
 }  // namespace hexant::language

@@ -16,14 +16,17 @@ struct action<g::light_arguments> {
         // light_source { L modifiers }: a copy of the declared light, as
         // POV-Ray's Parse_Light_Source starts from a LIGHT_SOURCE_ID.
         if (args[0].is<runtime::LightRecord>()) {
-            if (args.size() > 1) throw ValueError("a declared light_source takes modifiers after it, not a colour");
+            if (args.size() > 1)
+                throw ValueError("a declared light_source takes modifiers after it, not a colour");
             st.blocks.emplace_back(args[0].as<runtime::LightRecord>());
             return;
         }
         runtime::LightRecord light;
         light.position = to_vector3(args[0], "the light's position");
-        if (args.size() > 1) light.colour = to_colour(args[1], "the light's colour");
-        else light.colour.c = {1.0, 1.0, 1.0, 0.0, 0.0};  // POV-Ray's default: white
+        if (args.size() > 1)
+            light.colour = to_colour(args[1], "the light's colour");
+        else
+            light.colour.c = {1.0, 1.0, 1.0, 0.0, 0.0};  // POV-Ray's default: white
         (void)in;
         st.blocks.emplace_back(std::move(light));
     }
@@ -55,10 +58,14 @@ struct action<g::light_flag> {
             light.falloff = 1.0;
             light.tightness = 0.0;
             light.parallel = true;
-        } else if (w == "parallel") light.parallel = true;
-        else if (w == "jitter") light.jitter = true;
-        else if (w == "circular") light.circular = true;
-        else if (w == "orient") light.orient = true;
+        } else if (w == "parallel")
+            light.parallel = true;
+        else if (w == "jitter")
+            light.jitter = true;
+        else if (w == "circular")
+            light.circular = true;
+        else if (w == "orient")
+            light.orient = true;
     }
 };
 template <>
@@ -73,13 +80,20 @@ struct action<g::light_setting> {
         if (((name == "radius" || name == "falloff" || name == "tightness") && !shaped) ||
             (name == "point_at" && !shaped && !light.parallel))
             throw ValueError("'" + name + "' needs a spotlight or cylinder light" +
-                             (name == "point_at" ? " or a parallel one" : "") + " (say so before it)");
-        if (name == "point_at") light.point_at = to_vector3(v, name);
-        else if (name == "radius") light.radius = to_float(v, name);
-        else if (name == "falloff") light.falloff = to_float(v, name);
-        else if (name == "tightness") light.tightness = to_float(v, name);
-        else if (name == "fade_distance") light.fade_distance = to_float(v, name);
-        else if (name == "fade_power") light.fade_power = to_float(v, name);
+                             (name == "point_at" ? " or a parallel one" : "") +
+                             " (say so before it)");
+        if (name == "point_at")
+            light.point_at = to_vector3(v, name);
+        else if (name == "radius")
+            light.radius = to_float(v, name);
+        else if (name == "falloff")
+            light.falloff = to_float(v, name);
+        else if (name == "tightness")
+            light.tightness = to_float(v, name);
+        else if (name == "fade_distance")
+            light.fade_distance = to_float(v, name);
+        else if (name == "fade_power")
+            light.fade_power = to_float(v, name);
         // adaptive: POV-Ray's shortcut to the area grid's average, which
         // hexant samples whole; media_interaction, media_attenuation: hexant
         // has no media. Read, no effect.
@@ -97,17 +111,21 @@ struct action<g::area_light> {
         // (Lights along each axis: POV-Ray truncates to whole numbers and
         // refuses 0. hexant samples the grid, never stores it: 2^20 a side
         // is no limit a scene meets.)
-        area.size1 = int(checked_integer(std::trunc(to_constant(given.at(2), "area_light's first size")),
-                                         "area_light's first size", 1, 1 << 20));
-        area.size2 = int(checked_integer(std::trunc(to_constant(given.at(3), "area_light's second size")),
-                                         "area_light's second size", 1, 1 << 20));
+        area.size1 =
+            int(checked_integer(std::trunc(to_constant(given.at(2), "area_light's first size")),
+                                "area_light's first size", 1, 1 << 20));
+        area.size2 =
+            int(checked_integer(std::trunc(to_constant(given.at(3), "area_light's second size")),
+                                "area_light's second size", 1, 1 << 20));
         light.area = std::move(area);
     }
 };
 template <>
 struct action<g::light_projected_through> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { st.warn(in.position(), word(in) + " { } is read and ignored"); }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        st.warn(in.position(), word(in) + " { } is read and ignored");
+    }
 };
 // POV-Ray's Parse_Light_Source: the object is moved to the light's centre,
 // then its modifiers apply (a scale inside looks_like { } scales about the
@@ -118,12 +136,14 @@ struct action<g::looks_like_base> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         action<g::object_base>::apply(in, st);
-        if (st.blocks.size() < 2 || !std::holds_alternative<runtime::LightRecord>(st.blocks[st.blocks.size() - 2]) ||
+        if (st.blocks.size() < 2 ||
+            !std::holds_alternative<runtime::LightRecord>(st.blocks[st.blocks.size() - 2]) ||
             !std::holds_alternative<runtime::ObjectRecord>(st.blocks.back()))
             throw ValueError("looks_like { } needs an object");
         const auto& light = std::get<runtime::LightRecord>(st.blocks[st.blocks.size() - 2]);
         std::get<runtime::ObjectRecord>(st.blocks.back())
-            .transform.append(runtime::TransformStep{runtime::TransformKind::Translate, light.position, {}, {}, false});
+            .transform.append(runtime::TransformStep{
+                runtime::TransformKind::Translate, light.position, {}, {}, false});
     }
 };
 template <>
@@ -133,13 +153,15 @@ struct action<g::light_looks_like> {
         // (The object's block, closed as object { } closes.)
         finish_object::apply(in, st);
         Value v = st.pop();
-        if (!v.is<runtime::ObjectPtr>()) throw ValueError("looks_like { } needs an object, not a " + type_name(v));
+        if (!v.is<runtime::ObjectPtr>())
+            throw ValueError("looks_like { } needs an object, not a " + type_name(v));
         auto& light = st.block<runtime::LightRecord>(in.position(), "looks_like");
-        if (light.looks_like) throw ValueError("only one looks_like is allowed per light_source (POV-Ray's rule)");
+        if (light.looks_like)
+            throw ValueError("only one looks_like is allowed per light_source (POV-Ray's rule)");
         light.looks_like = v.as<runtime::ObjectPtr>();
     }
 };
-template <> struct action<g::light_block> : finish_object {};
-
+template <>
+struct action<g::light_block> : finish_object {};
 
 }  // namespace hexant::language

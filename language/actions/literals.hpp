@@ -12,7 +12,10 @@ namespace hexant::language {
 template <>
 struct action<g::number_text> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { (void)in; st.push(Value{TimeFunction(std::strtod(in.string().c_str(), nullptr))}); }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)in;
+        st.push(Value{TimeFunction(std::strtod(in.string().c_str(), nullptr))});
+    }
 };
 
 template <>
@@ -28,15 +31,33 @@ struct action<g::string_content> {
             }
             const char c = raw[++i];
             switch (c) {
-                case 'n': out += '\n'; break;
-                case 't': out += '\t'; break;
-                case 'r': out += '\r'; break;
-                case 'a': out += '\a'; break;
-                case 'b': out += '\b'; break;
-                case 'f': out += '\f'; break;
-                case 'v': out += '\v'; break;
-                case '0': out += '\0'; break;
-                default: out += c; break;
+                case 'n':
+                    out += '\n';
+                    break;
+                case 't':
+                    out += '\t';
+                    break;
+                case 'r':
+                    out += '\r';
+                    break;
+                case 'a':
+                    out += '\a';
+                    break;
+                case 'b':
+                    out += '\b';
+                    break;
+                case 'f':
+                    out += '\f';
+                    break;
+                case 'v':
+                    out += '\v';
+                    break;
+                case '0':
+                    out += '\0';
+                    break;
+                default:
+                    out += c;
+                    break;
             }
         }
         st.push(Value{out});
@@ -46,7 +67,10 @@ struct action<g::string_content> {
 template <>
 struct action<g::frame_open> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { (void)in; st.open_frame(); }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)in;
+        st.open_frame();
+    }
 };
 
 template <>
@@ -85,14 +109,15 @@ struct action<g::function_call> {
         if (name == "min_extent" || name == "max_extent") {
             if (args.size() != 1 || !args[0].is<runtime::ObjectPtr>())
                 throw ValueError(name + "() takes one object, as in POV-Ray");
-            st.push(object_extent(*args[0].as<runtime::ObjectPtr>(), name == "max_extent", st.animation_time(),
-                                  st.options.limits.time_pieces));
+            st.push(object_extent(*args[0].as<runtime::ObjectPtr>(), name == "max_extent",
+                                  st.animation_time(), st.options.limits.time_pieces));
             return;
         }
         // (A string function of arguments that depend on clock: once a
         // piece of time, language/timed_call.hpp.)
-        std::optional<Value> timed = call_over_time(name, args, st.domain.within(st.animation_time()),
-                                                    st.options.limits.time_pieces, st.random);
+        std::optional<Value> timed =
+            call_over_time(name, args, st.domain.within(st.animation_time()),
+                           st.options.limits.time_pieces, st.random);
         Value result = timed ? std::move(*timed) : call_builtin(name, args, st.random);
         if (name == "vnormalize")
             if (const auto zero = vnormalize_zero_at(args, st.animation_time())) {
@@ -102,7 +127,8 @@ struct action<g::function_call> {
                 const Vector v = to_vector(args.at(0), "the argument of vnormalize()");
                 for (int i = 0; i < v.size; ++i) timed = timed || v.c[i].depends_on_time();
                 if (timed)
-                    note << " (at clock " << std::setprecision(17) << *zero << " and wherever else it is zero)";
+                    note << " (at clock " << std::setprecision(17) << *zero
+                         << " and wherever else it is zero)";
                 st.warn(in.position(), note.str());
             }
         if (result.is<std::string>())
@@ -131,27 +157,47 @@ struct action<g::builtin_constant_name> {
         const std::string w = in.string();
         const auto& a = st.options.animation;
         auto f = [&](double v) { st.push(Value{TimeFunction(v)}); };
-        if (w == "pi") f(3.14159265358979323846);
-        else if (w == "tau") f(2 * 3.14159265358979323846);
-        else if (w == "true" || w == "yes" || w == "on") f(1.0);
-        else if (w == "false" || w == "no" || w == "off") f(0.0);
-        else if (w == "x") st.push(make_vector({1.0, 0.0, 0.0}));
-        else if (w == "y") st.push(make_vector({0.0, 1.0, 0.0}));
-        else if (w == "z") st.push(make_vector({0.0, 0.0, 1.0}));
-        else if (w == "t") st.push(make_vector({0.0, 0.0, 0.0, 1.0}));
-        else if (w == "u") st.push(make_vector({1.0, 0.0}));
-        else if (w == "v") st.push(make_vector({0.0, 1.0}));
-        else if (w == "image_width") f(a.width);
-        else if (w == "image_height") f(a.height);
-        else if (w == "clock") st.push(Value{a.clock_runs() ? TimeFunction::clock() : TimeFunction(a.initial_clock)});
-        else if (w == "clock_delta") f(a.clock_delta());
-        else if (w == "clock_on") f(a.clock_runs() ? 1.0 : 0.0);
+        if (w == "pi")
+            f(3.14159265358979323846);
+        else if (w == "tau")
+            f(2 * 3.14159265358979323846);
+        else if (w == "true" || w == "yes" || w == "on")
+            f(1.0);
+        else if (w == "false" || w == "no" || w == "off")
+            f(0.0);
+        else if (w == "x")
+            st.push(make_vector({1.0, 0.0, 0.0}));
+        else if (w == "y")
+            st.push(make_vector({0.0, 1.0, 0.0}));
+        else if (w == "z")
+            st.push(make_vector({0.0, 0.0, 1.0}));
+        else if (w == "t")
+            st.push(make_vector({0.0, 0.0, 0.0, 1.0}));
+        else if (w == "u")
+            st.push(make_vector({1.0, 0.0}));
+        else if (w == "v")
+            st.push(make_vector({0.0, 1.0}));
+        else if (w == "image_width")
+            f(a.width);
+        else if (w == "image_height")
+            f(a.height);
+        else if (w == "clock")
+            st.push(Value{a.clock_runs() ? TimeFunction::clock() : TimeFunction(a.initial_clock)});
+        else if (w == "clock_delta")
+            f(a.clock_delta());
+        else if (w == "clock_on")
+            f(a.clock_runs() ? 1.0 : 0.0);
         // In a still, POV-Ray reads these four (and frame_number) as 0.
-        else if (w == "initial_clock") f(a.clock_runs() ? a.initial_clock : 0.0);
-        else if (w == "final_clock") f(a.clock_runs() ? a.final_clock : 0.0);
-        else if (w == "initial_frame") f(a.is_animation() ? a.initial_frame : 0.0);
-        else if (w == "final_frame") f(a.is_animation() ? a.final_frame : 0.0);
-        else if (w == "version") f(st.version);
+        else if (w == "initial_clock")
+            f(a.clock_runs() ? a.initial_clock : 0.0);
+        else if (w == "final_clock")
+            f(a.clock_runs() ? a.final_clock : 0.0);
+        else if (w == "initial_frame")
+            f(a.is_animation() ? a.initial_frame : 0.0);
+        else if (w == "final_frame")
+            f(a.is_animation() ? a.final_frame : 0.0);
+        else if (w == "version")
+            f(st.version);
         else if (w == "frame_number") {
             // The frame whose shutter holds the time: constant within a
             // frame, and switching exactly at each frame's clock as the
@@ -165,14 +211,15 @@ struct action<g::builtin_constant_name> {
             } else {
                 const TimeFunction t = TimeFunction::clock();
                 const double delta = a.clock_delta();
-                const TimeFunction n = TimeFunction::apply(TimeOp::Floor, (t - a.initial_clock) / delta);
+                const TimeFunction n =
+                    TimeFunction::apply(TimeOp::Floor, (t - a.initial_clock) / delta);
                 const TimeFunction start = a.initial_clock + n * delta;
                 const TimeFunction next = a.initial_clock + (n + 1.0) * delta;
                 // (A clock running backwards, delta < 0: a frame holds the
                 // times from its clock down to the next one's.)
                 const bool forward = delta > 0.0;
-                const TimeFunction past_next =
-                    TimeFunction::apply(forward ? TimeOp::GreaterEqual : TimeOp::LessEqual, t, next);
+                const TimeFunction past_next = TimeFunction::apply(
+                    forward ? TimeOp::GreaterEqual : TimeOp::LessEqual, t, next);
                 const TimeFunction before_start =
                     TimeFunction::apply(forward ? TimeOp::Less : TimeOp::Greater, t, start);
                 const TimeFunction exact = n + past_next - before_start;
@@ -226,7 +273,11 @@ struct action<g::colour_component_setting> {
         const TimeFunction v = to_float(st.pop(), "a colour component");
         const std::string name = st.pop_name();
         Vector& c = st.top().as<Vector>();
-        const int i = name == "red" ? 0 : name == "green" ? 1 : name == "blue" ? 2 : name == "filter" ? 3 : 4;
+        const int i = name == "red"      ? 0
+                      : name == "green"  ? 1
+                      : name == "blue"   ? 2
+                      : name == "filter" ? 3
+                                         : 4;
         c.c[i] = v;
     }
 };
@@ -241,9 +292,10 @@ struct action<g::reference> {
         st.check_declared(name);
         if (v->is<Unevaluated>()) {
             const auto& u = v->as<Unevaluated>();
-            throw UnsupportedError("'" + name + "' is a " + u.what + " (declared at " + u.where.source + ":" +
-                             std::to_string(u.where.line) + ":" + std::to_string(u.where.column) +
-                             "), which hexant does not support");
+            throw UnsupportedError("'" + name + "' is a " + u.what + " (declared at " +
+                                   u.where.source + ":" + std::to_string(u.where.line) + ":" +
+                                   std::to_string(u.where.column) +
+                                   "), which hexant does not support");
         }
         if (v->is<std::shared_ptr<Array>>()) {
             // Arrays are values: a copy, so that changing it leaves the original alone.
@@ -270,9 +322,10 @@ struct action<g::component_access> {
 // as `floor(index) = k ? A[k] : ...`, objects each living on its pieces).
 inline Value element_by_clock(const Array& array, const TimeFunction& index, Interpreter& st) {
     if (array.dimensions.size() != 1)
-        throw ValueError("an index that depends on clock into an array of " +
-                         std::to_string(array.dimensions.size()) +
-                         " dimensions; hexant picks elements by clock from one-dimensional arrays only");
+        throw ValueError(
+            "an index that depends on clock into an array of " +
+            std::to_string(array.dimensions.size()) +
+            " dimensions; hexant picks elements by clock from one-dimensional arrays only");
     const TimeFunction step = TimeFunction::apply(TimeOp::Floor, index);
     std::vector<runtime::ValuePiece> pieces;
     try {
@@ -288,7 +341,8 @@ inline Value element_by_clock(const Array& array, const TimeFunction& index, Int
     for (const auto& [k, times] : by_value) {
         const std::size_t i = element_index(array, {k});
         if (!array.elements[i])
-            throw ValueError("array element " + std::to_string(i) + " is used (by clock) before it is set");
+            throw ValueError("array element " + std::to_string(i) +
+                             " is used (by clock) before it is set");
         const Value& element = **array.elements[i];
         const runtime::Lifetime when = runtime::Lifetime::of(times);
         if (!result) {
@@ -311,7 +365,8 @@ struct action<g::index_suffix> {
         (void)in;
         const TimeFunction index_f = to_float(st.pop(), "an array index");
         Value a = st.pop();
-        if (!a.is<std::shared_ptr<Array>>()) throw ValueError("'[ ]' needs an array, not a " + type_name(a));
+        if (!a.is<std::shared_ptr<Array>>())
+            throw ValueError("'[ ]' needs an array, not a " + type_name(a));
         auto array = a.as<std::shared_ptr<Array>>();
         if (index_f.depends_on_time()) {
             st.push(element_by_clock(*array, index_f, st));
@@ -328,13 +383,15 @@ struct action<g::index_suffix> {
             const std::size_t stride = array->elements.size() / static_cast<std::size_t>(rows);
             sub->charge.add(stride * kArraySlotBytes);
             const std::size_t start = static_cast<std::size_t>(row) * stride;
-            sub->elements.assign(array->elements.begin() + static_cast<std::ptrdiff_t>(start),
-                                 array->elements.begin() + static_cast<std::ptrdiff_t>(start + stride));
+            sub->elements.assign(
+                array->elements.begin() + static_cast<std::ptrdiff_t>(start),
+                array->elements.begin() + static_cast<std::ptrdiff_t>(start + stride));
             st.push(Value{sub});
             return;
         }
         const std::size_t i = element_index(*array, {index});
-        if (!array->elements[i]) throw ValueError("array element " + std::to_string(i) + " is used before it is set");
+        if (!array->elements[i])
+            throw ValueError("array element " + std::to_string(i) + " is used before it is set");
         st.push(**array->elements[i]);
     }
 };
@@ -348,7 +405,8 @@ struct action<g::spline_call> {
         Value s = st.pop();
         if (!s.is<std::shared_ptr<const runtime::Spline>>())
             throw ValueError("only a spline can be called like this, not a " + type_name(s));
-        if (args.empty() || args.size() > 2) throw ValueError("a spline takes one argument, the time");
+        if (args.empty() || args.size() > 2)
+            throw ValueError("a spline takes one argument, the time");
         const auto spline = s.as<std::shared_ptr<const runtime::Spline>>();
         const TimeFunction t = to_float(args[0], "the spline's argument");
         // POV-Ray's S(t) is a vector even for a spline of floats (the value in .x).
@@ -358,6 +416,5 @@ struct action<g::spline_call> {
         st.push(Value{v});
     }
 };
-
 
 }  // namespace hexant::language

@@ -20,7 +20,8 @@ void close_map_entry(Interpreter& st, const p::position& at, const std::string& 
     const TimeFunction value = to_float(st.pop(), what + "'s value");
     auto& outer = st.block<Record>(at, what.c_str());
     (outer.*entries).push_back({value, std::move(entry)});
-    if ((outer.*entries).size() > 256) throw ValueError("a " + map + " has at most 256 entries, as in POV-Ray");
+    if ((outer.*entries).size() > 256)
+        throw ValueError("a " + map + " has at most 256 entries, as in POV-Ray");
 }
 
 // A normal or texture for a block pattern (checker normal { } normal { }):
@@ -31,18 +32,19 @@ void add_to_block_list(std::vector<Entry>& map, const runtime::pattern::Pattern&
     using A = runtime::pattern::Kind::Argument;
     if (pattern.kind == nullptr || pattern.kind->argument != A::Colours)
         throw ValueError(std::string("a ") + what + " inside a " + what +
-                         " follows a block pattern (checker, brick, hexagon) as one of its " + what + "s");
+                         " follows a block pattern (checker, brick, hexagon) as one of its " +
+                         what + "s");
     if (map.size() >= static_cast<std::size_t>(pattern.kind->colours))
-        throw ValueError(std::string(pattern.kind->name) + " takes at most " + std::to_string(pattern.kind->colours) +
-                         " " + what + "s");
+        throw ValueError(std::string(pattern.kind->name) + " takes at most " +
+                         std::to_string(pattern.kind->colours) + " " + what + "s");
     map.push_back({static_cast<double>(map.size()), std::move(item)});
 }
 // A map's pattern must be one that gives values (POV-Ray refuses the block
 // patterns with a map).
 inline void check_map_pattern(const runtime::pattern::Pattern& pattern, const char* map) {
     if (pattern.kind && pattern.kind->argument == runtime::pattern::Kind::Argument::Colours)
-        throw ValueError(std::string("a ") + map + " cannot go with " + std::string(pattern.kind->name) +
-                         ", as in POV-Ray");
+        throw ValueError(std::string("a ") + map + " cannot go with " +
+                         std::string(pattern.kind->name) + ", as in POV-Ray");
 }
 
 template <>
@@ -67,7 +69,10 @@ struct action<g::normal_map_open> {
 template <>
 struct action<g::normal_map_normal_open> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { (void)in; st.blocks.emplace_back(std::in_place_type<runtime::Normal>); }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)in;
+        st.blocks.emplace_back(std::in_place_type<runtime::Normal>);
+    }
 };
 template <>
 struct action<g::normal_map_entry> {
@@ -85,8 +90,8 @@ struct action<g::normal_list_normal> {
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         auto entry = std::make_shared<runtime::Normal>(st.pop().as<runtime::Normal>());
         auto& outer = st.block<runtime::Normal>(in.position(), "a normal");
-        add_to_block_list(outer.normal_map, outer.patterned, std::shared_ptr<const runtime::Normal>(std::move(entry)),
-                          "normal");
+        add_to_block_list(outer.normal_map, outer.patterned,
+                          std::shared_ptr<const runtime::Normal>(std::move(entry)), "normal");
     }
 };
 template <>
@@ -107,16 +112,18 @@ struct action<g::slope_map_entry> {
         runtime::SlopeMapEntry e;
         if (items.size() == 2) {
             e.value = to_float(items[0], "a slope_map entry's value");
-            const runtime::Vector3Function hs = to_vector3(items[1], "a slope_map entry's <height, slope>");
+            const runtime::Vector3Function hs =
+                to_vector3(items[1], "a slope_map entry's <height, slope>");
             e.height = hs.c[0];
             e.slope = hs.c[1];
         } else {
-            throw ValueError("a slope_map entry is [value <height, slope>], not " + std::to_string(items.size()) +
-                             " values");
+            throw ValueError("a slope_map entry is [value <height, slope>], not " +
+                             std::to_string(items.size()) + " values");
         }
         auto& normal = st.block<runtime::Normal>(in.position(), "a slope_map entry");
         normal.slope_map.push_back(std::move(e));
-        if (normal.slope_map.size() > 256) throw ValueError("a slope_map has at most 256 entries, as in POV-Ray");
+        if (normal.slope_map.size() > 256)
+            throw ValueError("a slope_map has at most 256 entries, as in POV-Ray");
     }
 };
 
@@ -126,7 +133,8 @@ struct action<g::texture_map_open> {
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         auto& texture = st.block<runtime::Texture>(in.position(), "texture_map");
         if (texture.patterned.kind == nullptr)
-            throw ValueError("a texture_map follows its pattern (texture { PATTERN texture_map { } })");
+            throw ValueError(
+                "a texture_map follows its pattern (texture { PATTERN texture_map { } })");
         check_map_pattern(texture.patterned, "texture_map");
         texture.texture_map.clear();
     }
@@ -134,7 +142,10 @@ struct action<g::texture_map_open> {
 template <>
 struct action<g::texture_map_texture_open> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { (void)in; st.blocks.emplace_back(std::in_place_type<runtime::Texture>); }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)in;
+        st.blocks.emplace_back(std::in_place_type<runtime::Texture>);
+    }
 };
 template <>
 struct action<g::texture_map_entry> {
@@ -161,16 +172,20 @@ struct action<g::pigment_map_open> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         auto& pigment = st.block<runtime::Pigment>(in.position(), "pigment_map");
-        if (pigment.patterned.kind && pigment.patterned.kind->argument == runtime::pattern::Kind::Argument::Colours)
-            throw ValueError(std::string("a pigment_map cannot go with ") + std::string(pigment.patterned.kind->name) +
-                             ", as in POV-Ray");
+        if (pigment.patterned.kind &&
+            pigment.patterned.kind->argument == runtime::pattern::Kind::Argument::Colours)
+            throw ValueError(std::string("a pigment_map cannot go with ") +
+                             std::string(pigment.patterned.kind->name) + ", as in POV-Ray");
         pigment.pigment_map.clear();
     }
 };
 template <>
 struct action<g::pigment_map_pigment_open> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { (void)in; st.blocks.emplace_back(std::in_place_type<runtime::Pigment>); }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)in;
+        st.blocks.emplace_back(std::in_place_type<runtime::Pigment>);
+    }
 };
 template <>
 struct action<g::pigment_map_entry> {
@@ -179,6 +194,5 @@ struct action<g::pigment_map_entry> {
         close_map_entry(st, in.position(), "pigment_map", &runtime::Pigment::pigment_map);
     }
 };
-
 
 }  // namespace hexant::language

@@ -22,9 +22,11 @@ struct action<g::image_file_type> {
         (void)st;
         // hexant reads PNG and OpenEXR (the file's own bytes say which).
         std::string type = in.string();
-        while (!type.empty() && std::isspace(static_cast<unsigned char>(type.back()))) type.pop_back();
+        while (!type.empty() && std::isspace(static_cast<unsigned char>(type.back())))
+            type.pop_back();
         if (type != "png" && type != "exr")
-            throw UnsupportedError("image_map: " + type + " images are not supported by hexant (PNG and OpenEXR are)");
+            throw UnsupportedError("image_map: " + type +
+                                   " images are not supported by hexant (PNG and OpenEXR are)");
     }
 };
 template <>
@@ -34,7 +36,8 @@ struct action<g::image_map_file> {
         Value v = st.pop();
         auto& b = st.block<ImageMapBuilder>(in.position(), "image_map's file");
         const auto read = [&](const std::string& name) {
-            const std::filesystem::path path = st.resolve_include(name, in.position(), "image file");
+            const std::filesystem::path path =
+                st.resolve_include(name, in.position(), "image file");
             try {
                 return std::make_shared<const image::StoredImage>(image::read_stored_image(path));
             } catch (const std::runtime_error& e) {
@@ -57,7 +60,8 @@ struct action<g::image_map_file> {
                     try {
                         file = read(piece.text);
                     } catch (const ValueError& e) {
-                        throw ValueError(std::string(e.what()) + " [clock " + std::to_string(piece.time.lo) + " to " +
+                        throw ValueError(std::string(e.what()) + " [clock " +
+                                         std::to_string(piece.time.lo) + " to " +
                                          std::to_string(piece.time.hi) + "]");
                     }
                 }
@@ -72,7 +76,9 @@ struct action<g::image_map_file> {
 template <>
 struct action<g::image_map_gamma_srgb> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { st.block<ImageMapBuilder>(in.position(), "gamma").gamma_srgb_next = true; }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        st.block<ImageMapBuilder>(in.position(), "gamma").gamma_srgb_next = true;
+    }
 };
 template <>
 struct action<g::image_map_gamma> {
@@ -85,7 +91,8 @@ struct action<g::image_map_gamma> {
             return;
         }
         const double g = to_constant(st.pop(), "gamma");
-        if (!(g > 0.0) || !std::isfinite(g)) throw ValueError("an image's gamma must be positive, as in POV-Ray");
+        if (!(g > 0.0) || !std::isfinite(g))
+            throw ValueError("an image's gamma must be positive, as in POV-Ray");
         b.gamma = ImageGamma{g, false};
     }
 };
@@ -101,22 +108,29 @@ struct action<g::image_map_setting> {
             // (POV-Ray takes the integer part.)
             const double t = std::trunc(to_constant(v, "map_type"));
             if (t != 0.0 && t != 1.0 && t != 2.0 && t != 5.0)
-                throw ValueError("map_type is 0 (planar), 1 (spherical), 2 (cylindrical) or 5 (torus), as in POV-Ray");
+                throw ValueError(
+                    "map_type is 0 (planar), 1 (spherical), 2 (cylindrical) or 5 (torus), as in "
+                    "POV-Ray");
             b.map.map_type = static_cast<M::MapType>(static_cast<int>(t));
         } else if (name == "interpolate") {
             const double t = std::trunc(to_constant(v, "interpolate"));
             if (t != 2.0 && t != 3.0 && t != 4.0)
-                throw ValueError("interpolate is 2 (bilinear), 3 (bicubic) or 4 (normalized distance), as in POV-Ray");
+                throw ValueError(
+                    "interpolate is 2 (bilinear), 3 (bicubic) or 4 (normalized distance), as in "
+                    "POV-Ray");
             b.map.interpolate = static_cast<M::Interpolate>(static_cast<int>(t));
         } else if (name == "premultiplied") {
             // (PNG's alpha is not premultiplied; OpenEXR's is read as it is.)
             if (to_constant(v, "premultiplied") != 0.0)
-                throw UnsupportedError("premultiplied alpha in an image_map is not supported by hexant");
+                throw UnsupportedError(
+                    "premultiplied alpha in an image_map is not supported by hexant");
         } else {
             const runtime::Vector3Function uv = to_vector3(v, name);
-            const double u = to_constant(Value{uv.c[0]}, name), w = to_constant(Value{uv.c[1]}, name);
+            const double u = to_constant(Value{uv.c[0]}, name),
+                         w = to_constant(Value{uv.c[1]}, name);
             if (name == "repeat") {
-                if (!(u > 0.0) || !(w > 0.0)) throw ValueError("an image_map's repeat must be positive, as in POV-Ray");
+                if (!(u > 0.0) || !(w > 0.0))
+                    throw ValueError("an image_map's repeat must be positive, as in POV-Ray");
                 b.map.repeat_u = u;
                 b.map.repeat_v = w;
             } else {
@@ -131,17 +145,22 @@ struct action<g::image_map_flag> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         std::string flag = in.string();
-        while (!flag.empty() && std::isspace(static_cast<unsigned char>(flag.back()))) flag.pop_back();
+        while (!flag.empty() && std::isspace(static_cast<unsigned char>(flag.back())))
+            flag.pop_back();
         auto& b = st.block<ImageMapBuilder>(in.position(), flag.c_str());
-        if (flag == "once") b.map.once = true;
+        if (flag == "once")
+            b.map.once = true;
         else if (flag == "use_index")
-            throw UnsupportedError("use_index in an image_map is not supported by hexant (it reads colours)");
+            throw UnsupportedError(
+                "use_index in an image_map is not supported by hexant (it reads colours)");
     }
 };
 template <>
 struct action<g::image_map_all> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { st.block<ImageMapBuilder>(in.position(), "all").all_next = true; }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        st.block<ImageMapBuilder>(in.position(), "all").all_next = true;
+    }
 };
 template <>
 struct action<g::image_map_filter> {
@@ -153,9 +172,13 @@ struct action<g::image_map_filter> {
         const bool all = b.all_next;
         b.all_next = false;
         if (!all || args.size() != 1)
-            throw UnsupportedError(name + " of one palette entry is not supported by hexant (it reads a palette "
-                                   "image's colours); " + name + " all AMOUNT is");
-        (name == "filter" ? b.map.filter_all : b.map.transmit_all) = to_float(args[0], name + " all");
+            throw UnsupportedError(
+                name +
+                " of one palette entry is not supported by hexant (it reads a palette "
+                "image's colours); " +
+                name + " all AMOUNT is");
+        (name == "filter" ? b.map.filter_all : b.map.transmit_all) =
+            to_float(args[0], name + " all");
         if (name == "transmit") b.map.transmit_all_written = true;
     }
 };
@@ -167,7 +190,8 @@ struct action<g::image_map_block> {
         st.blocks.pop_back();
         auto map = std::make_shared<runtime::pattern::ImageMap>(std::move(b.map));
         // (Each distinct file decoded once.)
-        std::map<const image::StoredImage*, std::shared_ptr<const runtime::pattern::ImagePixels>> decoded;
+        std::map<const image::StoredImage*, std::shared_ptr<const runtime::pattern::ImagePixels>>
+            decoded;
         for (const auto& [time, stored] : b.stored) {
             auto& pixels = decoded[stored.get()];
             if (!pixels)
@@ -189,14 +213,18 @@ struct action<g::image_map_block> {
 template <>
 struct action<g::colour_map_open> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { (void)in; st.blocks.emplace_back(std::in_place_type<runtime::ColourMap>); }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)in;
+        st.blocks.emplace_back(std::in_place_type<runtime::ColourMap>);
+    }
 };
 template <>
 struct action<g::colour_map_base> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.pop();
-        if (!v.is<runtime::ColourMap>()) throw ValueError("color_map { } starts with a color_map, not a " + type_name(v));
+        if (!v.is<runtime::ColourMap>())
+            throw ValueError("color_map { } starts with a color_map, not a " + type_name(v));
         st.block<runtime::ColourMap>(in.position(), "a color_map") = v.as<runtime::ColourMap>();
     }
 };
@@ -216,10 +244,12 @@ struct action<g::colour_map_entry> {
             map.entries.push_back({to_float(items[1], "a color_map entry's second value"),
                                    to_colour(items[3], "a color_map entry's second colour")});
         } else {
-            throw ValueError("a color_map entry is [value colour] (or [value1, value2 colour1 colour2]), not " +
-                             std::to_string(items.size()) + " values");
+            throw ValueError(
+                "a color_map entry is [value colour] (or [value1, value2 colour1 colour2]), not " +
+                std::to_string(items.size()) + " values");
         }
-        if (map.entries.size() > 256) throw ValueError("a color_map has at most 256 entries, as in POV-Ray");
+        if (map.entries.size() > 256)
+            throw ValueError("a color_map has at most 256 entries, as in POV-Ray");
     }
 };
 template <>
@@ -239,8 +269,10 @@ struct action<g::pigment_colour_map> {
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.pop();
         auto& pigment = st.block<runtime::Pigment>(in.position(), "color_map");
-        if (pigment.patterned.kind && pigment.patterned.kind->argument == runtime::pattern::Kind::Argument::Colours)
-            throw ValueError(std::string("a color_map cannot go with ") + std::string(pigment.patterned.kind->name) +
+        if (pigment.patterned.kind &&
+            pigment.patterned.kind->argument == runtime::pattern::Kind::Argument::Colours)
+            throw ValueError(std::string("a color_map cannot go with ") +
+                             std::string(pigment.patterned.kind->name) +
                              " (its colours follow its name), as in POV-Ray");
         pigment.colour_map = v.as<runtime::ColourMap>();
     }
@@ -252,13 +284,15 @@ struct action<g::unsupported_pattern> {
         if (!st.blocks.empty() && std::holds_alternative<runtime::Normal>(st.blocks.back())) {
             auto& normal = st.block<runtime::Normal>(in.position(), "a pattern");
             normal.unsupported_name = st.pop_name();
-            normal.unsupported_place = {in.position().source, in.position().line, in.position().column};
+            normal.unsupported_place = {in.position().source, in.position().line,
+                                        in.position().column};
             return;
         }
         auto& pigment = st.block<runtime::Pigment>(in.position(), "a pattern");
         pigment.pattern = runtime::Pigment::Pattern::Unsupported;
         pigment.unsupported_name = st.pop_name();
-        pigment.unsupported_place = {in.position().source, in.position().line, in.position().column};
+        pigment.unsupported_place = {in.position().source, in.position().line,
+                                     in.position().column};
     }
 };
 template <>
@@ -270,8 +304,10 @@ struct action<g::pigment_block> {
         // A block pattern given fewer pigments than it takes: the rest are
         // its default colours (POV-Ray's Parse_Blend_List).
         const auto* kind = pigment.patterned.kind;
-        if (kind && kind->argument == runtime::pattern::Kind::Argument::Colours && !pigment.pigment_map.empty())
-            for (std::size_t i = pigment.pigment_map.size(); i < pigment.colour_map.entries.size(); ++i) {
+        if (kind && kind->argument == runtime::pattern::Kind::Argument::Colours &&
+            !pigment.pigment_map.empty())
+            for (std::size_t i = pigment.pigment_map.size(); i < pigment.colour_map.entries.size();
+                 ++i) {
                 auto solid = std::make_shared<runtime::Pigment>();
                 solid->colours = {pigment.colour_map.entries[i].colour};
                 pigment.pigment_map.push_back({static_cast<double>(i), std::move(solid)});
@@ -286,14 +322,18 @@ struct action<g::pigment_block> {
 template <>
 struct action<g::finish_open> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { (void)in; st.blocks.emplace_back(std::in_place_type<runtime::Finish>); }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)in;
+        st.blocks.emplace_back(std::in_place_type<runtime::Finish>);
+    }
 };
 template <>
 struct action<g::finish_base> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.pop();
-        if (!v.is<runtime::Finish>()) throw ValueError("finish { } starts with a finish, not a " + type_name(v));
+        if (!v.is<runtime::Finish>())
+            throw ValueError("finish { } starts with a finish, not a " + type_name(v));
         st.block<runtime::Finish>(in.position(), "a finish") = v.as<runtime::Finish>();
     }
 };
@@ -312,14 +352,22 @@ struct action<g::finish_setting> {
         } else {
             x = to_float(v, name);
         }
-        if (name == "ambient") f.ambient = x;
-        else if (name == "diffuse") f.diffuse = x;
-        else if (name == "brilliance") f.brilliance = x;
-        else if (name == "phong") f.phong = x;
-        else if (name == "phong_size") f.phong_size = x;
-        else if (name == "specular") f.specular = x;
-        else if (name == "roughness") f.roughness = x;
-        else if (name == "emission") f.emission = x;
+        if (name == "ambient")
+            f.ambient = x;
+        else if (name == "diffuse")
+            f.diffuse = x;
+        else if (name == "brilliance")
+            f.brilliance = x;
+        else if (name == "phong")
+            f.phong = x;
+        else if (name == "phong_size")
+            f.phong_size = x;
+        else if (name == "specular")
+            f.specular = x;
+        else if (name == "roughness")
+            f.roughness = x;
+        else if (name == "emission")
+            f.emission = x;
         // crand and metallic are read and ignored.
     }
 };
@@ -341,7 +389,10 @@ struct action<g::reflection_value> {
 template <>
 struct action<g::ignored_value> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { (void)in; st.pop(); }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)in;
+        st.pop();
+    }
 };
 template <>
 struct action<g::finish_block> {
@@ -357,21 +408,27 @@ struct action<g::finish_block> {
 template <>
 struct action<g::interior_open> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { (void)in; st.blocks.emplace_back(std::in_place_type<runtime::Interior>); }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)in;
+        st.blocks.emplace_back(std::in_place_type<runtime::Interior>);
+    }
 };
 template <>
 struct action<g::interior_base> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.pop();
-        if (!v.is<runtime::Interior>()) throw ValueError("interior { } starts with an interior, not a " + type_name(v));
+        if (!v.is<runtime::Interior>())
+            throw ValueError("interior { } starts with an interior, not a " + type_name(v));
         st.block<runtime::Interior>(in.position(), "an interior") = v.as<runtime::Interior>();
     }
 };
 template <>
 struct action<g::ior_setting> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { st.block<runtime::Interior>(in.position(), "ior").ior = to_float(st.pop(), "ior"); }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        st.block<runtime::Interior>(in.position(), "ior").ior = to_float(st.pop(), "ior");
+    }
 };
 template <>
 struct action<g::interior_block> {
@@ -389,7 +446,8 @@ template <>
 struct action<g::uv_mapping> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        if (st.blocks.empty()) throw ValueError("uv_mapping belongs in a pigment, a normal or a texture");
+        if (st.blocks.empty())
+            throw ValueError("uv_mapping belongs in a pigment, a normal or a texture");
         auto& b = st.blocks.back();
         // (What follows is a pigment or normal of its own, POV-Ray's
         // Parse_Item_Into_Blend_List from the default: nothing written
@@ -400,16 +458,20 @@ struct action<g::uv_mapping> {
         } else if (auto* normal = std::get_if<runtime::Normal>(&b)) {
             *normal = runtime::Normal();
             normal->uv_mapping = runtime::UvMapping::Open;
-        }
-        else if (auto* texture = std::get_if<runtime::Texture>(&b)) texture->uv_mapping = runtime::UvMapping::Open;
-        else throw ValueError("uv_mapping belongs in a pigment, a normal or a texture");
+        } else if (auto* texture = std::get_if<runtime::Texture>(&b))
+            texture->uv_mapping = runtime::UvMapping::Open;
+        else
+            throw ValueError("uv_mapping belongs in a pigment, a normal or a texture");
         (void)in;
     }
 };
 template <>
 struct action<g::texture_open> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { (void)in; st.blocks.emplace_back(std::in_place_type<runtime::Texture>); }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)in;
+        st.blocks.emplace_back(std::in_place_type<runtime::Texture>);
+    }
 };
 template <>
 struct action<g::texture_base> {
@@ -417,20 +479,29 @@ struct action<g::texture_base> {
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.pop();
         auto& t = st.block<runtime::Texture>(in.position(), "a texture");
-        if (v.is<runtime::Texture>()) t = v.as<runtime::Texture>();
-        else if (v.is<runtime::Pigment>()) t.pigment = v.as<runtime::Pigment>();
-        else throw ValueError("texture { } starts with a texture, not a " + type_name(v));
+        if (v.is<runtime::Texture>())
+            t = v.as<runtime::Texture>();
+        else if (v.is<runtime::Pigment>())
+            t.pigment = v.as<runtime::Pigment>();
+        else
+            throw ValueError("texture { } starts with a texture, not a " + type_name(v));
     }
 };
 template <>
 struct action<g::texture_pigment> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { Value v = st.pop(); st.block<runtime::Texture>(in.position(), "pigment").pigment = v.as<runtime::Pigment>(); }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        Value v = st.pop();
+        st.block<runtime::Texture>(in.position(), "pigment").pigment = v.as<runtime::Pigment>();
+    }
 };
 template <>
 struct action<g::texture_finish> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { Value v = st.pop(); st.block<runtime::Texture>(in.position(), "finish").finish = v.as<runtime::Finish>(); }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        Value v = st.pop();
+        st.block<runtime::Texture>(in.position(), "finish").finish = v.as<runtime::Finish>();
+    }
 };
 template <>
 struct action<g::texture_block> {
@@ -466,12 +537,19 @@ struct action<g::material_value> {
 template <>
 struct action<g::material_open> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { (void)in; st.blocks.emplace_back(std::in_place_type<MaterialBuilder>); }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)in;
+        st.blocks.emplace_back(std::in_place_type<MaterialBuilder>);
+    }
 };
 template <>
 struct action<g::material_base> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { (void)st; throw ValueError("declared materials are not supported; declare its texture and interior"); (void)in; }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)st;
+        throw ValueError("declared materials are not supported; declare its texture and interior");
+        (void)in;
+    }
 };
 template <>
 struct action<g::material_texture> {
@@ -480,14 +558,18 @@ struct action<g::material_texture> {
         Value v = st.pop();
         auto& material = st.block<MaterialBuilder>(in.position(), "texture");
         auto texture = v.as<runtime::Texture>();
-        material.texture = material.texture ? layered(std::move(texture), std::move(*material.texture)) : std::move(texture);
+        material.texture = material.texture
+                               ? layered(std::move(texture), std::move(*material.texture))
+                               : std::move(texture);
     }
 };
 template <>
 struct action<g::material_interior> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { Value v = st.pop(); st.block<MaterialBuilder>(in.position(), "interior").interior = v.as<runtime::Interior>(); }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        Value v = st.pop();
+        st.block<MaterialBuilder>(in.position(), "interior").interior = v.as<runtime::Interior>();
+    }
 };
-
 
 }  // namespace hexant::language

@@ -24,26 +24,34 @@ struct open_mesh {
         st.blocks.emplace_back(std::move(record));
     }
 };
-template <> struct action<g::mesh_open> : open_mesh {};
-template <> struct action<g::mesh2_open> : open_mesh {};
+template <>
+struct action<g::mesh_open> : open_mesh {};
+template <>
+struct action<g::mesh2_open> : open_mesh {};
 template <>
 struct action<g::mesh_triangle> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.pop();
-        if (!v.is<runtime::ObjectPtr>()) throw ValueError("a mesh holds triangles and smooth_triangles only");
+        if (!v.is<runtime::ObjectPtr>())
+            throw ValueError("a mesh holds triangles and smooth_triangles only");
         add_mesh_triangle(mesh_data(st, in.position()), *v.as<runtime::ObjectPtr>());
     }
 };
 template <>
 struct action<g::mesh_inside_vector_value> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { set_inside_vector(mesh_data(st, in.position()), st.pop()); }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        set_inside_vector(mesh_data(st, in.position()), st.pop());
+    }
 };
 template <>
 struct action<g::mesh_hierarchy_value> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { (void)to_constant(st.pop(), "hierarchy"); (void)in; }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)to_constant(st.pop(), "hierarchy");
+        (void)in;
+    }
 };
 template <>
 struct action<g::mesh2_section_name> {
@@ -74,7 +82,9 @@ struct action<g::mesh2_values> {
 template <>
 struct action<g::mesh2_texture_list> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { read_mesh2_textures(mesh_data(st, in.position()), st.close_frame()); }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        read_mesh2_textures(mesh_data(st, in.position()), st.close_frame());
+    }
 };
 // The hierarchy is built once all faces are read, before the modifiers'
 // object is pushed as a value.
@@ -88,8 +98,10 @@ struct close_mesh {
 };
 inline constexpr char kMeshWord[] = "mesh";
 inline constexpr char kMesh2Word[] = "mesh2";
-template <> struct action<g::mesh_block> : close_mesh<kMeshWord> {};
-template <> struct action<g::mesh2_block> : close_mesh<kMesh2Word> {};
+template <>
+struct action<g::mesh_block> : close_mesh<kMeshWord> {};
+template <>
+struct action<g::mesh2_block> : close_mesh<kMesh2Word> {};
 
 // blob { }: its components are added as they are read
 // (runtime/objects/blob/blob.hpp).
@@ -138,15 +150,18 @@ struct action<g::blob_old_component> {
         add_blob_component(record, "component", values, st, in.position());
     }
 };
-template <> struct action<g::blob_block> : finish_object {};
+template <>
+struct action<g::blob_block> : finish_object {};
 
 // The texture an object modifier changes, made if the object has none.
 inline runtime::Texture& object_texture(Interpreter& st, const p::position& where) {
     auto& record = st.block<runtime::ObjectRecord>(where, "a texture");
     if (!record.texture) record.texture = runtime::Texture{};
     if (record.texture->is_patterned())
-        throw ValueError("a pigment, normal or finish cannot be added to a patterned texture (texture_map), as in "
-                         "POV-Ray");
+        throw ValueError(
+            "a pigment, normal or finish cannot be added to a patterned texture (texture_map), as "
+            "in "
+            "POV-Ray");
     return *record.texture;
 }
 
@@ -158,28 +173,42 @@ struct action<g::object_texture> {
         auto& record = st.block<runtime::ObjectRecord>(in.position(), "a texture");
         auto texture = v.as<runtime::Texture>();
         // A texture on an object that has one is a layer on top, as in POV-Ray.
-        record.texture = record.texture ? layered(std::move(texture), std::move(*record.texture)) : std::move(texture);
+        record.texture = record.texture ? layered(std::move(texture), std::move(*record.texture))
+                                        : std::move(texture);
     }
 };
 template <>
 struct action<g::object_pigment> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { Value v = st.pop(); object_texture(st, in.position()).pigment = v.as<runtime::Pigment>(); }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        Value v = st.pop();
+        object_texture(st, in.position()).pigment = v.as<runtime::Pigment>();
+    }
 };
 template <>
 struct action<g::object_normal> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { Value v = st.pop(); object_texture(st, in.position()).normal = v.as<runtime::Normal>(); }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        Value v = st.pop();
+        object_texture(st, in.position()).normal = v.as<runtime::Normal>();
+    }
 };
 template <>
 struct action<g::object_finish> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { Value v = st.pop(); object_texture(st, in.position()).finish = v.as<runtime::Finish>(); }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        Value v = st.pop();
+        object_texture(st, in.position()).finish = v.as<runtime::Finish>();
+    }
 };
 template <>
 struct action<g::object_interior> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { Value v = st.pop(); st.block<runtime::ObjectRecord>(in.position(), "interior").interior = v.as<runtime::Interior>(); }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        Value v = st.pop();
+        st.block<runtime::ObjectRecord>(in.position(), "interior").interior =
+            v.as<runtime::Interior>();
+    }
 };
 template <>
 struct action<g::object_material> {
@@ -202,9 +231,12 @@ struct action<g::object_flag> {
         if (!st.blocks.empty() && std::holds_alternative<runtime::LightRecord>(st.blocks.back()))
             throw ValueError("'" + name + "' does not belong in a light_source");
         auto& record = st.block<runtime::ObjectRecord>(in.position(), name.c_str());
-        if (name == "no_shadow") record.no_shadow = on;
-        else if (name == "hollow") record.hollow = on;
-        else if (name == "inverse") record.inverse = on;
+        if (name == "no_shadow")
+            record.no_shadow = on;
+        else if (name == "hollow")
+            record.hollow = on;
+        else if (name == "inverse")
+            record.inverse = on;
         // sturm, no_image, no_reflection, no_radiosity, double_illuminate: read, no effect.
     }
 };
@@ -227,8 +259,9 @@ struct action<g::shape_vectors_setting> : action<g::shape_setting> {};
 template <>
 struct action<g::object_ignored_block> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { st.warn(in.position(), word(in) + " { } is read and ignored"); }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        st.warn(in.position(), word(in) + " { } is read and ignored");
+    }
 };
-
 
 }  // namespace hexant::language

@@ -16,7 +16,8 @@ runtime::SourcePlace source_place(const ActionInput& in) {
 }
 
 runtime::ObjectRecord make_shape(const std::string& kind, std::vector<std::string> options,
-                                 std::vector<Value>& args, Interpreter& st, const p::position& where);
+                                 std::vector<Value>& args, Interpreter& st,
+                                 const p::position& where);
 void set_shape_setting(runtime::ObjectRecord& record, const std::string& name,
                        std::vector<Value>& values, Interpreter& st, const p::position& where);
 void add_blob_component(runtime::ObjectRecord& record, const std::string& kind,
@@ -30,7 +31,8 @@ struct action<g::shape_arguments> {
         const std::string kind = st.pop_name();
         std::vector<std::string> options = std::move(st.shape_options.back());
         st.shape_options.pop_back();
-        runtime::ObjectRecord record = make_shape(kind, std::move(options), args, st, in.position());
+        runtime::ObjectRecord record =
+            make_shape(kind, std::move(options), args, st, in.position());
         record.place = st.shape_place;
         st.blocks.emplace_back(std::move(record));
     }
@@ -53,8 +55,10 @@ struct finish_object {
         // A variant of its kind that hexant lacks: usable only where nothing uses it.
         const auto lacking = std::visit(
             [](const auto& shape) -> std::optional<std::string> {
-                if constexpr (std::is_same_v<std::decay_t<decltype(shape)>, runtime::Csg>) return std::nullopt;
-                else return runtime::objects::unsupported_variant(shape);
+                if constexpr (std::is_same_v<std::decay_t<decltype(shape)>, runtime::Csg>)
+                    return std::nullopt;
+                else
+                    return runtime::objects::unsupported_variant(shape);
             },
             record.shape);
         if (lacking) {
@@ -72,12 +76,16 @@ struct finish_object {
                                       " deep (a union built up in a loop? a union of the "
                                       "objects side by side, or an array of them, does not nest)");
         }
-        st.push(Value{runtime::ObjectPtr(std::make_shared<runtime::ObjectRecord>(std::move(record)))});
+        st.push(
+            Value{runtime::ObjectPtr(std::make_shared<runtime::ObjectRecord>(std::move(record)))});
     }
 };
-template <> struct action<g::shape_block> : finish_object {};
-template <> struct action<g::csg_block> : finish_object {};
-template <> struct action<g::object_block> : finish_object {};
+template <>
+struct action<g::shape_block> : finish_object {};
+template <>
+struct action<g::csg_block> : finish_object {};
+template <>
+struct action<g::object_block> : finish_object {};
 
 template <>
 struct action<g::csg_open> {
@@ -123,8 +131,8 @@ struct action<g::object_base> {
         } else if (v.is<Unevaluated>()) {
             const auto& u = v.as<Unevaluated>();
             throw UnsupportedError("this " + u.what + " (written at " + u.where.source + ":" +
-                             std::to_string(u.where.line) + ":" + std::to_string(u.where.column) +
-                             ") is not supported by hexant");
+                                   std::to_string(u.where.line) + ":" +
+                                   std::to_string(u.where.column) + ") is not supported by hexant");
         } else {
             throw ValueError("object { } needs an object, not a " + type_name(v));
         }
@@ -138,10 +146,10 @@ struct action<g::charset_name> {
         const std::string name = in.string();
         // POV-Ray 3.7 on Unix knows ascii and utf8 ("sys" has no conversion there).
         if (name != "ascii" && name != "utf8")
-            throw ValueError("charset '" + name + "' is not supported (ascii or utf8, as POV-Ray 3.7 on Unix)");
+            throw ValueError("charset '" + name +
+                             "' is not supported (ascii or utf8, as POV-Ray 3.7 on Unix)");
         st.charset = name;
     }
 };
-
 
 }  // namespace hexant::language

@@ -11,10 +11,15 @@ namespace hexant::language {
 template <TimeOp Op>
 struct unary_action {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { (void)in; st.push(unary_op(Op, st.pop())); }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)in;
+        st.push(unary_op(Op, st.pop()));
+    }
 };
-template <> struct action<g::negation> : unary_action<TimeOp::Negate> {};
-template <> struct action<g::logical_not> : unary_action<TimeOp::Not> {};
+template <>
+struct action<g::negation> : unary_action<TimeOp::Negate> {};
+template <>
+struct action<g::logical_not> : unary_action<TimeOp::Not> {};
 
 template <TimeOp Op>
 struct binary_action {
@@ -26,18 +31,30 @@ struct binary_action {
         st.push(binary_op(Op, a, b));
     }
 };
-template <> struct action<g::multiplication> : binary_action<TimeOp::Multiply> {};
-template <> struct action<g::division> : binary_action<TimeOp::Divide> {};
-template <> struct action<g::addition> : binary_action<TimeOp::Add> {};
-template <> struct action<g::subtraction> : binary_action<TimeOp::Subtract> {};
-template <> struct action<g::less_equal> : binary_action<TimeOp::LessEqual> {};
-template <> struct action<g::greater_equal> : binary_action<TimeOp::GreaterEqual> {};
-template <> struct action<g::not_equal> : binary_action<TimeOp::NotEqual> {};
-template <> struct action<g::less> : binary_action<TimeOp::Less> {};
-template <> struct action<g::greater> : binary_action<TimeOp::Greater> {};
-template <> struct action<g::equal> : binary_action<TimeOp::Equal> {};
-template <> struct action<g::logical_and> : binary_action<TimeOp::And> {};
-template <> struct action<g::logical_or> : binary_action<TimeOp::Or> {};
+template <>
+struct action<g::multiplication> : binary_action<TimeOp::Multiply> {};
+template <>
+struct action<g::division> : binary_action<TimeOp::Divide> {};
+template <>
+struct action<g::addition> : binary_action<TimeOp::Add> {};
+template <>
+struct action<g::subtraction> : binary_action<TimeOp::Subtract> {};
+template <>
+struct action<g::less_equal> : binary_action<TimeOp::LessEqual> {};
+template <>
+struct action<g::greater_equal> : binary_action<TimeOp::GreaterEqual> {};
+template <>
+struct action<g::not_equal> : binary_action<TimeOp::NotEqual> {};
+template <>
+struct action<g::less> : binary_action<TimeOp::Less> {};
+template <>
+struct action<g::greater> : binary_action<TimeOp::Greater> {};
+template <>
+struct action<g::equal> : binary_action<TimeOp::Equal> {};
+template <>
+struct action<g::logical_and> : binary_action<TimeOp::And> {};
+template <>
+struct action<g::logical_or> : binary_action<TimeOp::Or> {};
 
 template <>
 struct action<g::conditional_tail> {
@@ -50,6 +67,5 @@ struct action<g::conditional_tail> {
         st.push(conditional(a, b, c));
     }
 };
-
 
 }  // namespace hexant::language

@@ -69,12 +69,16 @@ void replace_uv_mapping(Record& r) {
     r.transform = {};
 }
 
-inline PatternSlot pattern_slot(Interpreter& st, const p::position& at, const char* what, bool starts = false) {
+inline PatternSlot pattern_slot(Interpreter& st, const p::position& at, const char* what,
+                                bool starts = false) {
     if (!st.blocks.empty()) {
-        if (auto* n = std::get_if<runtime::Normal>(&st.blocks.back())) return {n->patterned, n->transform, nullptr, n};
+        if (auto* n = std::get_if<runtime::Normal>(&st.blocks.back()))
+            return {n->patterned, n->transform, nullptr, n};
         if (auto* t = std::get_if<runtime::Texture>(&st.blocks.back())) {
             if (t->patterned.kind == nullptr && !starts)
-                throw ValueError(std::string(what) + " in a texture follows a pattern (texture { PATTERN texture_map { } })");
+                throw ValueError(
+                    std::string(what) +
+                    " in a texture follows a pattern (texture { PATTERN texture_map { } })");
             return {t->patterned, t->transform, nullptr, nullptr, t};
         }
     }
@@ -117,10 +121,13 @@ struct action<g::pattern_kind> {
         }
         const auto count = [&](std::size_t lo, std::size_t hi, const char* what) {
             if (args.size() < lo || args.size() > hi)
-                throw ValueError(name + " takes " + what + ", not " + std::to_string(args.size()) + " values");
+                throw ValueError(name + " takes " + what + ", not " + std::to_string(args.size()) +
+                                 " values");
         };
         switch (kind->argument) {
-            case A::None: count(0, 0, slot.normal ? "at most an amount" : "no value after it"); break;
+            case A::None:
+                count(0, 0, slot.normal ? "at most an amount" : "no value after it");
+                break;
             case A::Vector: {
                 count(1, 1, "one vector (its direction)");
                 // POV-Ray normalizes the direction.
@@ -135,7 +142,8 @@ struct action<g::pattern_kind> {
             case A::Number:
                 count(1, 1, "one number");
                 // (POV-Ray keeps the arms and the iterations as integers.)
-                slot.pattern.number[0] = TimeFunction::apply(TimeOp::Int, to_float(args[0], name + "'s number"));
+                slot.pattern.number[0] =
+                    TimeFunction::apply(TimeOp::Int, to_float(args[0], name + "'s number"));
                 break;
             case A::Colours: {
                 // (In a normal or a texture, the normals or textures follow
@@ -171,24 +179,29 @@ struct action<g::pattern_kind> {
 
 // A kind's own modifier, as its file under runtime/texture/pattern/kinds/
 // declares it (POV-Ray refuses one the pattern does not have).
-inline void set_kind_setting(runtime::pattern::Pattern& pattern, const std::string& name, const Value& v) {
+inline void set_kind_setting(runtime::pattern::Pattern& pattern, const std::string& name,
+                             const Value& v) {
     namespace pt = runtime::pattern;
     const pt::Setting* setting = pattern.kind ? pt::find_setting(*pattern.kind, name) : nullptr;
     if (setting == nullptr) {
         std::string owners;
         for (const pt::Kind* k : pt::all_kinds())
-            if (pt::find_setting(*k, name)) owners += (owners.empty() ? "" : " or ") + std::string(k->name);
-        throw ValueError(name + " belongs to " + owners + ", not to " +
-                         (pattern.kind ? std::string(pattern.kind->name) : std::string("a plain colour")));
+            if (pt::find_setting(*k, name))
+                owners += (owners.empty() ? "" : " or ") + std::string(k->name);
+        throw ValueError(
+            name + " belongs to " + owners + ", not to " +
+            (pattern.kind ? std::string(pattern.kind->name) : std::string("a plain colour")));
     }
     if (setting->type == pt::Setting::Type::Vector) {
         const runtime::Vector3Function value = to_vector3(v, name);
-        if (setting->constant && value.depends_on_time()) throw ValueError(name + " cannot move with clock");
+        if (setting->constant && value.depends_on_time())
+            throw ValueError(name + " cannot move with clock");
         pattern.vector = value;
         return;
     }
     const TimeFunction value = to_float(v, name);
-    if (setting->constant && value.depends_on_time()) throw ValueError(name + " cannot move with clock");
+    if (setting->constant && value.depends_on_time())
+        throw ValueError(name + " cannot move with clock");
     pattern.number[static_cast<std::size_t>(setting->slot)] = value;
 }
 
@@ -205,15 +218,21 @@ struct action<g::pattern_setting> {
             if (!pattern.turbulence) pattern.turbulence.emplace();
             return *pattern.turbulence;
         };
-        if (name == "frequency") pattern.frequency = to_float(v, "frequency");
-        else if (name == "phase") pattern.phase = to_float(v, "phase");
-        else if (name == "turbulence") turbulence().amount = to_vector3(v, "turbulence");
-        else if (name == "octaves") turbulence().octaves = to_float(v, "octaves");
-        else if (name == "omega") turbulence().omega = to_float(v, "omega");
-        else if (name == "lambda") turbulence().lambda = to_float(v, "lambda");
+        if (name == "frequency")
+            pattern.frequency = to_float(v, "frequency");
+        else if (name == "phase")
+            pattern.phase = to_float(v, "phase");
+        else if (name == "turbulence")
+            turbulence().amount = to_vector3(v, "turbulence");
+        else if (name == "octaves")
+            turbulence().octaves = to_float(v, "octaves");
+        else if (name == "omega")
+            turbulence().omega = to_float(v, "omega");
+        else if (name == "lambda")
+            turbulence().lambda = to_float(v, "lambda");
         else if (name == "noise_generator") {
-            pattern.noise_generator =
-                static_cast<int>(checked_integer(to_constant(v, "noise_generator"), "noise_generator", 1, 3));
+            pattern.noise_generator = static_cast<int>(
+                checked_integer(to_constant(v, "noise_generator"), "noise_generator", 1, 3));
         } else {
             set_kind_setting(pattern, name, v);
         }
@@ -235,7 +254,8 @@ struct action<g::pattern_wave> {
                        : name == "scallop_wave"  ? W::Scallop
                        : name == "cubic_wave"    ? W::Cubic
                                                  : W::Poly;
-        if (name == "poly_wave") pattern.exponent = args.empty() ? TimeFunction(1.0) : to_float(args[0], "poly_wave");
+        if (name == "poly_wave")
+            pattern.exponent = args.empty() ? TimeFunction(1.0) : to_float(args[0], "poly_wave");
     }
 };
 
@@ -271,12 +291,14 @@ struct action<g::warp_setting> {
         Value v = st.pop();
         const std::string name = st.pop_name();
         auto& turbulence = pattern_slot(st, in.position(), "warp").pattern.warps.back().turbulence;
-        if (name == "octaves") turbulence.octaves = to_float(v, "octaves");
-        else if (name == "omega") turbulence.omega = to_float(v, "omega");
-        else turbulence.lambda = to_float(v, "lambda");
+        if (name == "octaves")
+            turbulence.octaves = to_float(v, "octaves");
+        else if (name == "omega")
+            turbulence.omega = to_float(v, "omega");
+        else
+            turbulence.lambda = to_float(v, "lambda");
     }
 };
-
 
 // ---- normal { }
 template <>
@@ -285,9 +307,11 @@ struct action<g::normal_open> {
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
         std::optional<runtime::Normal> start;
-        if (const runtime::Texture* texture = texture_being_written(st)) start = texture->normal;
+        if (const runtime::Texture* texture = texture_being_written(st))
+            start = texture->normal;
         else if (!st.blocks.empty())
-            if (const auto* camera = std::get_if<runtime::CameraRecord>(&st.blocks.back())) start = camera->normal;
+            if (const auto* camera = std::get_if<runtime::CameraRecord>(&st.blocks.back()))
+                start = camera->normal;
         st.blocks.emplace_back(start ? std::move(*start) : runtime::Normal());
     }
 };
@@ -296,7 +320,8 @@ struct action<g::normal_base> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.pop();
-        if (!v.is<runtime::Normal>()) throw ValueError("normal { } starts with a normal, not a " + type_name(v));
+        if (!v.is<runtime::Normal>())
+            throw ValueError("normal { } starts with a normal, not a " + type_name(v));
         st.block<runtime::Normal>(in.position(), "a normal") = v.as<runtime::Normal>();
     }
 };
@@ -307,14 +332,18 @@ struct action<g::normal_setting> {
         Value v = st.pop();
         const std::string name = st.pop_name();
         auto& normal = st.block<runtime::Normal>(in.position(), name.c_str());
-        if (name == "bump_size") normal.amount = to_float(v, "bump_size");
-        else normal.accuracy = to_float(v, "accuracy");
+        if (name == "bump_size")
+            normal.amount = to_float(v, "bump_size");
+        else
+            normal.accuracy = to_float(v, "accuracy");
     }
 };
 template <>
 struct action<g::normal_no_bump_scale> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { st.block<runtime::Normal>(in.position(), "no_bump_scale").no_bump_scale = true; }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        st.block<runtime::Normal>(in.position(), "no_bump_scale").no_bump_scale = true;
+    }
 };
 template <>
 struct action<g::normal_block> {
@@ -332,7 +361,10 @@ struct action<g::normal_block> {
 template <>
 struct action<g::texture_normal> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { Value v = st.pop(); st.block<runtime::Texture>(in.position(), "normal").normal = v.as<runtime::Normal>(); }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        Value v = st.pop();
+        st.block<runtime::Texture>(in.position(), "normal").normal = v.as<runtime::Normal>();
+    }
 };
 template <>
 struct action<g::camera_normal> {
@@ -366,15 +398,16 @@ inline void check_patterned_texture(const runtime::Texture& t) {
 // under's. Nothing is layered over or under a patterned texture.
 inline runtime::Texture layered(runtime::Texture top, runtime::Texture under) {
     if (under.is_patterned())
-        throw ValueError("a texture cannot be layered over a patterned one (texture_map), as in POV-Ray");
+        throw ValueError(
+            "a texture cannot be layered over a patterned one (texture_map), as in POV-Ray");
     if (top.is_patterned())
-        throw ValueError("a patterned texture (texture_map) cannot be layered over another, as in POV-Ray");
+        throw ValueError(
+            "a patterned texture (texture_map) cannot be layered over another, as in POV-Ray");
     std::vector<runtime::Texture> lower = std::move(under.below);
     under.below.clear();
     top.below.push_back(std::move(under));
     for (auto& layer : lower) top.below.push_back(std::move(layer));
     return top;
 }
-
 
 }  // namespace hexant::language

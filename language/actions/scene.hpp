@@ -11,14 +11,18 @@ namespace hexant::language {
 template <>
 struct action<g::camera_open> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { (void)in; st.blocks.emplace_back(std::in_place_type<runtime::CameraRecord>); }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)in;
+        st.blocks.emplace_back(std::in_place_type<runtime::CameraRecord>);
+    }
 };
 template <>
 struct action<g::camera_base> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.pop();
-        if (!v.is<runtime::CameraRecord>()) throw ValueError("camera { } starts with a camera, not a " + type_name(v));
+        if (!v.is<runtime::CameraRecord>())
+            throw ValueError("camera { } starts with a camera, not a " + type_name(v));
         st.block<runtime::CameraRecord>(in.position(), "a camera") = v.as<runtime::CameraRecord>();
     }
 };
@@ -31,9 +35,12 @@ struct action<g::camera_setting> {
         auto& camera = st.block<runtime::CameraRecord>(in.position(), name.c_str());
         runtime::CameraItem item;
         using K = runtime::CameraItem::Kind;
-        item.kind = name == "location" ? K::Location : name == "look_at" ? K::LookAt
-                    : name == "direction" ? K::Direction : name == "right" ? K::Right
-                    : name == "up" ? K::Up : K::Sky;
+        item.kind = name == "location"    ? K::Location
+                    : name == "look_at"   ? K::LookAt
+                    : name == "direction" ? K::Direction
+                    : name == "right"     ? K::Right
+                    : name == "up"        ? K::Up
+                                          : K::Sky;
         item.vector = to_vector3(v, "the camera's " + name);
         camera.items.push_back(std::move(item));
     }
@@ -43,8 +50,10 @@ struct action<g::camera_unsupported_type> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)st;
-        Interpreter::fail(in.position(), word(in) + " cameras are not supported by hexant (perspective, orthographic, "
-                                                    "fisheye, panoramic and spherical are)");
+        Interpreter::fail(in.position(),
+                          word(in) +
+                              " cameras are not supported by hexant (perspective, orthographic, "
+                              "fisheye, panoramic and spherical are)");
     }
 };
 template <>
@@ -56,17 +65,21 @@ struct action<g::camera_type> {
         // POV-Ray reads the type before any other item (the last of several
         // types in a row wins), and not at all after a camera identifier
         // (then only transforms may follow).
-        const bool only_types = std::all_of(camera.items.begin(), camera.items.end(), [](const auto& item) {
-            return item.kind == runtime::CameraItem::Kind::Type;
-        });
+        const bool only_types = std::all_of(
+            camera.items.begin(), camera.items.end(),
+            [](const auto& item) { return item.kind == runtime::CameraItem::Kind::Type; });
         if (!only_types || !camera.pieces.empty() || camera.normal)
-            throw ValueError("the camera's type (" + name + ") must come first in camera { }, before its other "
+            throw ValueError("the camera's type (" + name +
+                             ") must come first in camera { }, before its other "
                              "items and not after a declared camera (as POV-Ray requires)");
         runtime::CameraItem item;
         item.kind = runtime::CameraItem::Kind::Type;
         using T = runtime::CameraType;
-        item.type = name == "orthographic" ? T::Orthographic : name == "fisheye" ? T::Fisheye
-                    : name == "panoramic" ? T::Panoramic : name == "spherical" ? T::Spherical : T::Perspective;
+        item.type = name == "orthographic" ? T::Orthographic
+                    : name == "fisheye"    ? T::Fisheye
+                    : name == "panoramic"  ? T::Panoramic
+                    : name == "spherical"  ? T::Spherical
+                                           : T::Perspective;
         camera.items.push_back(std::move(item));
     }
 };
@@ -80,14 +93,18 @@ struct action<g::camera_angle> {
         T type = T::Perspective;
         for (const auto& item : camera.items)
             if (item.kind == runtime::CameraItem::Kind::Type) type = item.type;
-        const char* name = type == T::Perspective ? "perspective" : type == T::Orthographic ? "orthographic"
-                           : type == T::Fisheye ? "fisheye" : type == T::Panoramic ? "panoramic" : "spherical";
+        const char* name = type == T::Perspective    ? "perspective"
+                           : type == T::Orthographic ? "orthographic"
+                           : type == T::Fisheye      ? "fisheye"
+                           : type == T::Panoramic    ? "panoramic"
+                                                     : "spherical";
         // POV-Ray's Parse_Camera: an orthographic angle may be left out (0);
         // only a spherical camera takes a second (vertical) angle.
         if (given.empty() && type != T::Orthographic)
             throw ValueError(std::string("a ") + name + " camera's angle needs a value");
         if (given.size() > 1 && type != T::Spherical)
-            throw ValueError(std::string("a ") + name + " camera's angle takes one value (two: a spherical camera's)");
+            throw ValueError(std::string("a ") + name +
+                             " camera's angle takes one value (two: a spherical camera's)");
         runtime::CameraItem item;
         item.kind = runtime::CameraItem::Kind::Angle;
         item.angle = given.empty() ? TimeFunction(0.0) : to_float(given[0], "the camera's angle");
@@ -97,7 +114,8 @@ struct action<g::camera_angle> {
                 throw ValueError("a perspective camera's angle must lie between 0 and 180 degrees");
             if (type == T::Orthographic && (a < 0.0 || a >= 180.0))
                 throw ValueError("an orthographic camera's angle must lie in [0, 180) degrees");
-            if (!(a >= 0.0)) throw ValueError(std::string("a ") + name + " camera's angle must not be negative");
+            if (!(a >= 0.0))
+                throw ValueError(std::string("a ") + name + " camera's angle must not be negative");
         }
         camera.items.push_back(item);
         if (given.size() > 1) {
@@ -119,8 +137,7 @@ struct action<g::camera_blur_setting> {
         auto& camera = st.block<runtime::CameraRecord>(in.position(), name.c_str());
         runtime::CameraItem item;
         using K = runtime::CameraItem::Kind;
-        if (given.size() > 1 && name != "blur_samples")
-            throw ValueError(name + " takes one value");
+        if (given.size() > 1 && name != "blur_samples") throw ValueError(name + " takes one value");
         if (name == "focal_point") {
             item.kind = K::FocalPoint;
             item.vector = to_vector3(given[0], "the camera's focal_point");
@@ -137,7 +154,9 @@ struct action<g::camera_blur_setting> {
                     if (!f.is_constant()) continue;
                     const double v = std::trunc(f.constant());
                     if (!(v >= 1.0))
-                        throw ValueError("blur_samples must be 1 or more (POV-Ray: illegal number of focal blur samples)");
+                        throw ValueError(
+                            "blur_samples must be 1 or more (POV-Ray: illegal number of focal blur "
+                            "samples)");
                     (k + 1 == given.size() ? most : least) = v;
                 }
                 if (given.size() > 1 && least > most)
@@ -151,7 +170,8 @@ template <>
 struct action<g::camera_ignored_setting> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        st.warn(in.position(), word(in) + " is read and ignored (hexant samples by --spp or --target-error)");
+        st.warn(in.position(),
+                word(in) + " is read and ignored (hexant samples by --spp or --target-error)");
     }
 };
 template <>
@@ -181,19 +201,24 @@ struct action<g::background_colour> {
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
         ++st.background_sets;
-        st.scene.background = to_colour(st.pop(), "the background"); }
+        st.scene.background = to_colour(st.pop(), "the background");
+    }
 };
 template <>
 struct action<g::sky_sphere_open> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { (void)in; st.blocks.emplace_back(std::in_place_type<runtime::SkySphere>); }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)in;
+        st.blocks.emplace_back(std::in_place_type<runtime::SkySphere>);
+    }
 };
 template <>
 struct action<g::sky_sphere_base> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.pop();
-        if (!v.is<runtime::SkySphere>()) throw ValueError("sky_sphere { } starts with a sky_sphere, not a " + type_name(v));
+        if (!v.is<runtime::SkySphere>())
+            throw ValueError("sky_sphere { } starts with a sky_sphere, not a " + type_name(v));
         st.block<runtime::SkySphere>(in.position(), "a sky_sphere") = v.as<runtime::SkySphere>();
     }
 };
@@ -205,7 +230,8 @@ struct action<g::sky_sphere_pigment> {
         // (POV-Ray: "The 'uv_mapping' pattern cannot be used" without a surface.)
         if (v.as<runtime::Pigment>().uv_mapping != runtime::UvMapping::Off)
             throw ValueError("uv_mapping needs a surface's (u, v): not in a sky_sphere");
-        st.block<runtime::SkySphere>(in.position(), "a pigment").pigments.push_back(v.as<runtime::Pigment>());
+        st.block<runtime::SkySphere>(in.position(), "a pigment")
+            .pigments.push_back(v.as<runtime::Pigment>());
     }
 };
 template <>
@@ -221,7 +247,8 @@ struct action<g::sky_sphere_block> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         auto& sky = st.block<runtime::SkySphere>(in.position(), "a sky_sphere");
-        if (sky.pigments.empty()) throw ValueError("a sky_sphere needs a pigment (POV-Ray: empty sky_sphere statement)");
+        if (sky.pigments.empty())
+            throw ValueError("a sky_sphere needs a pigment (POV-Ray: empty sky_sphere statement)");
         Value v{std::move(sky)};
         st.blocks.pop_back();
         st.push(std::move(v));
@@ -257,18 +284,27 @@ struct action<g::fog_setting> {
             if (!fog.turbulence) fog.turbulence.emplace();
             return *fog.turbulence;
         };
-        if (name == "distance") fog.distance = to_float(v, "distance");
+        if (name == "distance")
+            fog.distance = to_float(v, "distance");
         else if (name == "fog_type") {
-            fog.type = static_cast<int>(checked_integer(to_constant(v, "fog_type"), "fog_type", 1, 2));
-        }
-        else if (name == "fog_alt") fog.alt = to_float(v, "fog_alt");
-        else if (name == "fog_offset") fog.offset = to_float(v, "fog_offset");
-        else if (name == "turb_depth") fog.turb_depth = to_float(v, "turb_depth");
-        else if (name == "up") fog.up = to_vector3(v, "up");
-        else if (name == "turbulence") turbulence().amount = to_vector3(v, "turbulence");
-        else if (name == "octaves") turbulence().octaves = to_float(v, "octaves");
-        else if (name == "omega") turbulence().omega = to_float(v, "omega");
-        else turbulence().lambda = to_float(v, "lambda");
+            fog.type =
+                static_cast<int>(checked_integer(to_constant(v, "fog_type"), "fog_type", 1, 2));
+        } else if (name == "fog_alt")
+            fog.alt = to_float(v, "fog_alt");
+        else if (name == "fog_offset")
+            fog.offset = to_float(v, "fog_offset");
+        else if (name == "turb_depth")
+            fog.turb_depth = to_float(v, "turb_depth");
+        else if (name == "up")
+            fog.up = to_vector3(v, "up");
+        else if (name == "turbulence")
+            turbulence().amount = to_vector3(v, "turbulence");
+        else if (name == "octaves")
+            turbulence().octaves = to_float(v, "octaves");
+        else if (name == "omega")
+            turbulence().omega = to_float(v, "omega");
+        else
+            turbulence().lambda = to_float(v, "lambda");
     }
 };
 template <>
@@ -280,7 +316,8 @@ struct action<g::fog_colour> {
         // A bare number is the distance, as POV-Ray reads it (with its
         // warning to write `distance`).
         if (v.is<TimeFunction>()) {
-            st.warn(in.position(), "a number in fog { } is its distance: write `distance` (as POV-Ray warns)");
+            st.warn(in.position(),
+                    "a number in fog { } is its distance: write `distance` (as POV-Ray warns)");
             fog.distance = v.as<TimeFunction>();
         } else {
             fog.colour = to_colour(v, "a fog's colour");
@@ -304,11 +341,13 @@ struct action<g::global_motion_blur> {
         st.require_whole_time(in.position(), "a global setting");
         std::vector<Value> items = st.close_frame();
         auto& g = st.scene.global;
-        g.motion_blur_samples = static_cast<int>(
-            checked_integer(to_constant(items.at(0), "motion_blur's samples"), "motion_blur's samples", 1, 1 << 20));
+        g.motion_blur_samples =
+            static_cast<int>(checked_integer(to_constant(items.at(0), "motion_blur's samples"),
+                                             "motion_blur's samples", 1, 1 << 20));
         g.motion_blur_time = to_constant(items.at(1), "motion_blur's time");
         if (!(*g.motion_blur_time >= 0.0) || !std::isfinite(*g.motion_blur_time))
-            throw ValueError("motion_blur's time must be a finite number of clock units, at least 0");
+            throw ValueError(
+                "motion_blur's time must be a finite number of clock units, at least 0");
     }
 };
 
@@ -319,25 +358,28 @@ struct action<g::global_setting> {
         st.require_whole_time(in.position(), "a global setting");
         Value v = st.pop();
         const std::string name = st.pop_name();
-        if (name == "assumed_gamma") st.scene.global.assumed_gamma = to_constant(v, name);
+        if (name == "assumed_gamma")
+            st.scene.global.assumed_gamma = to_constant(v, name);
         else if (name == "noise_generator") {
             st.scene.global.noise_generator =
                 static_cast<int>(checked_integer(to_constant(v, name), name, 1, 3));
             if (st.patterns_written > 0)
-                st.warn(in.position(), "global noise_generator after patterns: hexant applies it to the patterns "
-                                       "written after it (POV-Ray to all; put global_settings first)");
-        }
-        else if (name == "max_trace_level") {
+                st.warn(in.position(),
+                        "global noise_generator after patterns: hexant applies it to the patterns "
+                        "written after it (POV-Ray to all; put global_settings first)");
+        } else if (name == "max_trace_level") {
             // As POV-Ray 3.7 (parser.cpp): at least 1, and above its limit
             // of 256 a warning and 256.
-            long long level = checked_integer(to_constant(v, name), name, -kMaxExactInteger, kMaxExactInteger);
+            long long level =
+                checked_integer(to_constant(v, name), name, -kMaxExactInteger, kMaxExactInteger);
             if (level > 256) {
-                st.warn(in.position(), "max_trace_level " + std::to_string(level) + " is above the limit: 256 used");
+                st.warn(in.position(), "max_trace_level " + std::to_string(level) +
+                                           " is above the limit: 256 used");
                 level = 256;
             }
             st.scene.global.max_trace_level = static_cast<int>(std::max(1LL, level));
-        }
-        else st.scene.global.ambient_light = to_colour(v, name);
+        } else
+            st.scene.global.ambient_light = to_colour(v, name);
     }
 };
 template <>
@@ -351,8 +393,9 @@ struct action<g::global_ignored_setting> {
 template <>
 struct action<g::unsupported_block> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { st.push(Value{Unevaluated{st.pop_name(), in.position()}}); }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        st.push(Value{Unevaluated{st.pop_name(), in.position()}});
+    }
 };
-
 
 }  // namespace hexant::language

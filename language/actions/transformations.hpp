@@ -18,12 +18,20 @@ inline runtime::TransformStep make_step(TransformKind kind, const runtime::Vecto
 template <>
 struct action<g::translate_step> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { st.apply_transform(make_step(TransformKind::Translate, to_vector3(st.pop(), "translate's amount")), in.position()); }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        st.apply_transform(
+            make_step(TransformKind::Translate, to_vector3(st.pop(), "translate's amount")),
+            in.position());
+    }
 };
 template <>
 struct action<g::rotate_step> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { st.apply_transform(make_step(TransformKind::Rotate, to_vector3(st.pop(), "rotate's angles")), in.position()); }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        st.apply_transform(
+            make_step(TransformKind::Rotate, to_vector3(st.pop(), "rotate's angles")),
+            in.position());
+    }
 };
 template <>
 struct action<g::scale_step> {
@@ -36,7 +44,8 @@ struct action<g::scale_step> {
         static const char* const kAxis[] = {"X", "Y", "Z"};
         for (int i = 0; i < 3; ++i)
             if (v.c[i].is_constant() && v.c[i].constant() == 0.0) {
-                st.warn(in.position(), std::string("scale ") + kAxis[i] + " by 0.0: changed to 1.0, as POV-Ray does");
+                st.warn(in.position(), std::string("scale ") + kAxis[i] +
+                                           " by 0.0: changed to 1.0, as POV-Ray does");
                 v.c[i] = runtime::TimeFunction(1.0);
             }
         st.apply_transform(make_step(TransformKind::Scale, v), in.position());
@@ -60,21 +69,27 @@ struct action<g::transform_step> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.pop();
-        if (!v.is<runtime::Transform>()) throw ValueError("transform needs a transform, not a " + type_name(v));
-        for (const auto& step : v.as<runtime::Transform>().steps()) st.apply_transform(step, in.position());
+        if (!v.is<runtime::Transform>())
+            throw ValueError("transform needs a transform, not a " + type_name(v));
+        for (const auto& step : v.as<runtime::Transform>().steps())
+            st.apply_transform(step, in.position());
     }
 };
 template <>
 struct action<g::transform_open> {
     template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) { (void)in; st.blocks.emplace_back(std::in_place_type<runtime::Transform>); }
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)in;
+        st.blocks.emplace_back(std::in_place_type<runtime::Transform>);
+    }
 };
 template <>
 struct action<g::transform_base> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.pop();
-        if (!v.is<runtime::Transform>()) throw ValueError("transform { } starts with a transform, not a " + type_name(v));
+        if (!v.is<runtime::Transform>())
+            throw ValueError("transform { } starts with a transform, not a " + type_name(v));
         st.block<runtime::Transform>(in.position(), "a transform") = v.as<runtime::Transform>();
     }
 };
@@ -104,12 +119,13 @@ struct action<g::deformation> {
         const auto axis = to_vector3(st.pop(), "the deformation's axis");
         const std::string name = st.pop_name();
         runtime::TransformStep step;
-        step.kind = name == "twist" ? TransformKind::Twist : name == "taper" ? TransformKind::Taper : TransformKind::Bend;
+        step.kind = name == "twist"   ? TransformKind::Twist
+                    : name == "taper" ? TransformKind::Taper
+                                      : TransformKind::Bend;
         step.vector = axis;
         step.amount = amount;
         st.apply_deformation(step, in.position());
     }
 };
-
 
 }  // namespace hexant::language

@@ -31,12 +31,12 @@ struct declared_value_item {};
 HEXANT_CUSTOM_RULE(declared_value_rule, declare_value);
 struct declared_value : declared_value_rule<declared_value_item> {};
 // POV-Ray 3.7: #declare deprecated [once] "message" NAME = ...
-struct declare_deprecation
-    : p::seq<TAO_PEGTL_KEYWORD("deprecated"), ws, p::opt<TAO_PEGTL_KEYWORD("once"), ws>,
-             p::must<ignored_value>> {};
+struct declare_deprecation : p::seq<TAO_PEGTL_KEYWORD("deprecated"), ws,
+                                    p::opt<TAO_PEGTL_KEYWORD("once"), ws>, p::must<ignored_value>> {
+};
 struct declare_directive
-    : p::seq<declare_kind, p::opt<declare_deprecation>, p::must<declare_target>, p::must<declare_equals>,
-             p::must<declared_value>, p::opt<semicolon>> {};
+    : p::seq<declare_kind, p::opt<declare_deprecation>, p::must<declare_target>,
+             p::must<declare_equals>, p::must<declared_value>, p::opt<semicolon>> {};
 
 struct undef_name : identifier {};
 struct undef_directive : p::seq<kw_undef, p::must<undef_name>> {};
@@ -65,9 +65,8 @@ struct for_bound : p::seq<expression> {};
 struct for_header
     : p::seq<lparen, p::must<for_variable>, p::must<comma>, p::must<for_bound>, p::must<comma>,
              p::must<for_bound>, p::opt<comma, p::must<for_bound>>, p::must<condition_close>> {};
-struct range_header
-    : p::seq<lparen, p::must<condition_value>, p::must<comma>, p::must<condition_value>,
-             p::must<condition_close>> {};
+struct range_header : p::seq<lparen, p::must<condition_value>, p::must<comma>,
+                             p::must<condition_value>, p::must<condition_close>> {};
 struct macro_body_end : p::eof {};
 struct include_end : p::eof {};
 
@@ -81,12 +80,10 @@ struct unknown_directive : p::seq<p::not_at<skip::divider_word>, p::identifier_f
 struct default_block;
 template <typename Item>
 struct directive
-    : p::seq<hash,
-             p::sor<declare_directive, if_directive<Item>, ifdef_directive<Item>,
-                    while_directive<Item>, for_directive<Item>, switch_directive<Item>,
-                    include_directive<Item>, macro_definition, undef_directive, version_directive,
-                    debug_directive, warning_directive, error_directive, default_block,
-                    unsupported_directive, unknown_directive>> {};
-
+    : p::seq<hash, p::sor<declare_directive, if_directive<Item>, ifdef_directive<Item>,
+                          while_directive<Item>, for_directive<Item>, switch_directive<Item>,
+                          include_directive<Item>, macro_definition, undef_directive,
+                          version_directive, debug_directive, warning_directive, error_directive,
+                          default_block, unsupported_directive, unknown_directive>> {};
 
 }  // namespace hexant::language::grammar

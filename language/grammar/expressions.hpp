@@ -50,22 +50,28 @@ struct vector_literal
 // Built-in functions; the name picks the implementation (builtins.cpp).
 struct function_words {
     static constexpr std::array<std::string_view, 53> list = {
-        "abs", "acos", "asc", "asin", "atan", "atan2", "bitwise_and", "bitwise_or", "bitwise_xor",
-        "ceil", "chr", "concat", "cos", "cosh", "degrees", "dimension_size", "dimensions", "div",
-        "exp", "file_exists", "floor", "int", "ln", "log", "max", "max_extent", "min", "min_extent", "mod", "pow",
-        "radians",
-        "rand", "seed", "select", "sin", "sinh", "sqrt", "str", "strcmp", "strlen", "strlwr", "strupr",
-        "substr", "tan", "tanh", "val", "vaxis_rotate", "vcross", "vdot", "vlength", "vnormalize",
-        "vrotate", "vstr"};
+        "abs",         "acos",       "asc",          "asin",
+        "atan",        "atan2",      "bitwise_and",  "bitwise_or",
+        "bitwise_xor", "ceil",       "chr",          "concat",
+        "cos",         "cosh",       "degrees",      "dimension_size",
+        "dimensions",  "div",        "exp",          "file_exists",
+        "floor",       "int",        "ln",           "log",
+        "max",         "max_extent", "min",          "min_extent",
+        "mod",         "pow",        "radians",      "rand",
+        "seed",        "select",     "sin",          "sinh",
+        "sqrt",        "str",        "strcmp",       "strlen",
+        "strlwr",      "strupr",     "substr",       "tan",
+        "tanh",        "val",        "vaxis_rotate", "vcross",
+        "vdot",        "vlength",    "vnormalize",   "vrotate",
+        "vstr"};
 };
 struct function_name : one_word_of<function_words> {};
 struct call_open : lparen {};
 struct call_close : rparen {};
 struct call_argument : p::seq<value> {};
 struct call_arguments : p::opt<call_argument, p::star<comma, p::must<call_argument>>> {};
-struct function_call
-    : p::seq<function_name, ws, p::must<call_open>, frame_open, call_arguments,
-             p::must<call_close>> {};
+struct function_call : p::seq<function_name, ws, p::must<call_open>, frame_open, call_arguments,
+                              p::must<call_close>> {};
 
 // defined(IDENT): whether a name is declared.
 HEXANT_KEYWORD(kw_defined, "defined");
@@ -74,32 +80,54 @@ struct defined_call
     : p::seq<kw_defined, p::must<lparen>, p::must<defined_name>, p::must<paren_close>> {};
 
 struct builtin_constant_words {
-    static constexpr std::array<std::string_view, 25> list = {
-        "clock", "clock_delta", "clock_on", "false", "final_clock", "final_frame", "frame_number",
-        "image_height", "image_width", "initial_clock", "initial_frame", "no", "off", "on", "pi",
-        "t", "tau", "true", "u", "v", "version", "x", "y", "yes", "z"};
+    static constexpr std::array<std::string_view, 25> list = {"clock",
+                                                              "clock_delta",
+                                                              "clock_on",
+                                                              "false",
+                                                              "final_clock",
+                                                              "final_frame",
+                                                              "frame_number",
+                                                              "image_height",
+                                                              "image_width",
+                                                              "initial_clock",
+                                                              "initial_frame",
+                                                              "no",
+                                                              "off",
+                                                              "on",
+                                                              "pi",
+                                                              "t",
+                                                              "tau",
+                                                              "true",
+                                                              "u",
+                                                              "v",
+                                                              "version",
+                                                              "x",
+                                                              "y",
+                                                              "yes",
+                                                              "z"};
 };
 struct builtin_constant_name : one_word_of<builtin_constant_words> {};
 struct builtin_constant : p::seq<builtin_constant_name, ws> {};
 
 // Colours: rgb <..>, rgbf, rgbt, rgbft, srgb..., and `color red 1 green .5`.
 struct colour_model_words {
-    static constexpr std::array<std::string_view, 8> list = {
-        "rgb", "rgbf", "rgbft", "rgbt", "srgb", "srgbf", "srgbft", "srgbt"};
+    static constexpr std::array<std::string_view, 8> list = {"rgb",  "rgbf",  "rgbft",  "rgbt",
+                                                             "srgb", "srgbf", "srgbft", "srgbt"};
 };
 struct colour_model : one_word_of<colour_model_words> {};
 // POV-Ray's rgb takes a whole sum: rgb <.1,.2,.3> + .5 leaves filter at 0.
 struct colour_model_argument : p::seq<sum> {};
 struct colour_model_literal : p::seq<colour_model, ws, p::must<colour_model_argument>> {};
 struct colour_component_words {
-    static constexpr std::array<std::string_view, 5> list = {
-        "blue", "filter", "green", "red", "transmit"};
+    static constexpr std::array<std::string_view, 5> list = {"blue", "filter", "green", "red",
+                                                             "transmit"};
 };
 struct colour_component_name : one_word_of<colour_component_words> {};
 struct colour_component_value : p::seq<unary> {};
 struct colour_component_setting
     : p::seq<colour_component_name, ws, p::must<colour_component_value>> {};
-struct colour_keyword : p::seq<p::sor<TAO_PEGTL_KEYWORD("color"), TAO_PEGTL_KEYWORD("colour")>, ws> {};
+struct colour_keyword
+    : p::seq<p::sor<TAO_PEGTL_KEYWORD("color"), TAO_PEGTL_KEYWORD("colour")>, ws> {};
 struct colour_base : p::seq<p::not_at<colour_component_name>, unary> {};
 struct colour_expression
     : p::seq<colour_keyword, p::opt<colour_base>, p::star<colour_component_setting>> {};
@@ -110,17 +138,16 @@ struct value_item;
 // A declared name used as a value.
 struct reference : identifier {};
 
-struct primary
-    : p::sor<number, string_literal, vector_literal, paren_expression, function_call,
-             colour_model_literal, colour_expression, defined_call, builtin_constant,
-             macro_call<value_item>, reference> {};
+struct primary : p::sor<number, string_literal, vector_literal, paren_expression, function_call,
+                        colour_model_literal, colour_expression, defined_call, builtin_constant,
+                        macro_call<value_item>, reference> {};
 
 struct component_name
     : p::sor<TAO_PEGTL_KEYWORD("x"), TAO_PEGTL_KEYWORD("y"), TAO_PEGTL_KEYWORD("z"),
              TAO_PEGTL_KEYWORD("t"), TAO_PEGTL_KEYWORD("u"), TAO_PEGTL_KEYWORD("v"),
              TAO_PEGTL_KEYWORD("red"), TAO_PEGTL_KEYWORD("green"), TAO_PEGTL_KEYWORD("blue"),
-             TAO_PEGTL_KEYWORD("filter"), TAO_PEGTL_KEYWORD("transmit"),
-             TAO_PEGTL_KEYWORD("gray"), TAO_PEGTL_KEYWORD("grey")> {};
+             TAO_PEGTL_KEYWORD("filter"), TAO_PEGTL_KEYWORD("transmit"), TAO_PEGTL_KEYWORD("gray"),
+             TAO_PEGTL_KEYWORD("grey")> {};
 struct component_access : p::seq<p::one<'.'>, component_name, ws> {};
 struct index_close : rbracket {};
 struct index_value : p::seq<expression> {};
@@ -161,10 +188,8 @@ struct logical_or : p::seq<p::one<'|'>, ws, p::must<comparison_operand>> {};
 struct disjunction : p::seq<comparison, p::star<p::sor<logical_and, logical_or>>> {};
 
 struct conditional_branch : p::seq<expression> {};
-struct conditional_tail
-    : p::seq<p::one<'?'>, ws, p::must<conditional_branch>, p::must<colon>,
-             p::must<conditional_branch>> {};
+struct conditional_tail : p::seq<p::one<'?'>, ws, p::must<conditional_branch>, p::must<colon>,
+                                 p::must<conditional_branch>> {};
 struct expression : p::seq<disjunction, p::opt<conditional_tail>> {};
-
 
 }  // namespace hexant::language::grammar

@@ -1,5 +1,5 @@
-// Lexical rules: blanks and comments, words and keywords, names, and the custom rules the interpreter reads.
-// Part of the grammar (language/grammar.hpp).
+// Lexical rules: blanks and comments, words and keywords, names, and the custom rules the
+// interpreter reads. Part of the grammar (language/grammar.hpp).
 #pragma once
 
 #include <algorithm>
@@ -60,8 +60,9 @@ struct block_comment_body {
         return false;
     }
 };
-struct block_comment
-    : p::sor<block_comment_body, p::seq<p::at<p::string<'/', '*'>>, p::raise<unterminated_comment>>> {};
+struct block_comment : p::sor<block_comment_body,
+                              p::seq<p::at<p::string<'/', '*'>>, p::raise<unterminated_comment>>> {
+};
 struct separator : p::sor<p::space, line_comment, block_comment> {};
 struct ws : p::star<separator> {};
 
@@ -135,24 +136,23 @@ struct name {
 // A declared name, its trailing blanks consumed.
 struct identifier : p::seq<name, ws> {};
 
-
 // Custom rules whose reading the interpreter does (interpreter_state.hpp):
 // each hands the input to one member of the parse state. Without a state
 // (grammar analysis, grammar tests) they match nothing.
-#define HEXANT_CUSTOM_RULE(rule, member)                                                        \
-    template <typename Item>                                                                   \
-    struct rule {                                                                              \
-        using rule_t = rule;                                                                   \
-        using subs_t = p::empty_list;                                                          \
-        template <p::apply_mode, p::rewind_mode, template <typename...> class Action,          \
+#define HEXANT_CUSTOM_RULE(rule, member)                                                         \
+    template <typename Item>                                                                     \
+    struct rule {                                                                                \
+        using rule_t = rule;                                                                     \
+        using subs_t = p::empty_list;                                                            \
+        template <p::apply_mode, p::rewind_mode, template <typename...> class Action,            \
                   template <typename...> class Control, typename ParseInput, typename... States> \
-        static bool match(ParseInput& in, States&... st) {                                     \
-            if constexpr (sizeof...(States) == 0) {                                            \
-                return false;                                                                  \
-            } else {                                                                           \
-                return (st.template member<Item, Action, Control>(in), ...);                   \
-            }                                                                                  \
-        }                                                                                      \
+        static bool match(ParseInput& in, States&... st) {                                       \
+            if constexpr (sizeof...(States) == 0) {                                              \
+                return false;                                                                    \
+            } else {                                                                             \
+                return (st.template member<Item, Action, Control>(in), ...);                     \
+            }                                                                                    \
+        }                                                                                        \
     }
 
 HEXANT_CUSTOM_RULE(macro_call, call_macro);
@@ -166,6 +166,5 @@ HEXANT_CUSTOM_RULE(include_directive, run_include);
 struct macro_definition_item {};
 HEXANT_CUSTOM_RULE(macro_definition_rule, define_macro);
 struct macro_definition : macro_definition_rule<macro_definition_item> {};
-
 
 }  // namespace hexant::language::grammar

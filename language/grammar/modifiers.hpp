@@ -22,9 +22,8 @@ struct scale_step : p::seq<kw_scale, p::must<transform_amount>> {};
 struct matrix_entry : p::seq<sum> {};
 struct matrix_open : langle {};
 struct matrix_close : rangle {};
-struct matrix_step
-    : p::seq<kw_matrix, p::must<matrix_open>, frame_open, p::must<matrix_entry>,
-             p::star<comma, p::must<matrix_entry>>, p::must<matrix_close>> {};
+struct matrix_step : p::seq<kw_matrix, p::must<matrix_open>, frame_open, p::must<matrix_entry>,
+                            p::star<comma, p::must<matrix_entry>>, p::must<matrix_close>> {};
 struct transform_block;
 struct transform_reference : p::seq<expression> {};
 struct transform_argument : p::sor<transform_block, transform_reference> {};
@@ -35,9 +34,8 @@ struct transformation
 // transform { [IDENT] steps [inverse] }
 struct transform_open : p::seq<lbrace> {};
 struct transform_inverse : kw_inverse {};
-struct transform_item
-    : p::sor<directive<transform_item>, macro_call<transform_item>, transformation,
-             transform_inverse> {};
+struct transform_item : p::sor<directive<transform_item>, macro_call<transform_item>,
+                               transformation, transform_inverse> {};
 struct transform_base : p::seq<p::not_at<kw_inverse>, expression> {};
 struct transform_block
     : p::seq<transform_open, p::opt<transform_base>, p::star<transform_item>, p::must<rbrace>> {};
@@ -49,9 +47,7 @@ struct deformation_name
     : p::sor<TAO_PEGTL_KEYWORD("twist"), TAO_PEGTL_KEYWORD("taper"), TAO_PEGTL_KEYWORD("bend")> {};
 struct deformation_axis : p::seq<sum> {};
 struct deformation_amount : p::seq<expression> {};
-struct deformation
-    : p::seq<deformation_name, ws, p::must<deformation_axis>, p::must<comma>,
-             p::must<deformation_amount>> {};
-
+struct deformation : p::seq<deformation_name, ws, p::must<deformation_axis>, p::must<comma>,
+                            p::must<deformation_amount>> {};
 
 }  // namespace hexant::language::grammar

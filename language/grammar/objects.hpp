@@ -56,9 +56,8 @@ struct shape_option_words {
 struct shape_keyword : one_word_of<shape_keyword_words> {};
 struct shape_open : p::seq<shape_keyword, ws, p::must<lbrace>> {};
 struct shape_option : p::seq<one_word_of<shape_option_words>, ws> {};
-struct shape_block
-    : p::seq<shape_open, p::star<shape_option>, p::must<shape_arguments>, object_modifiers,
-             p::must<object_close>> {};
+struct shape_block : p::seq<shape_open, p::star<shape_option>, p::must<shape_arguments>,
+                            object_modifiers, p::must<object_close>> {};
 
 HEXANT_KEYWORD(kw_union, "union");
 HEXANT_KEYWORD(kw_merge, "merge");
@@ -69,29 +68,25 @@ struct csg_kind : p::sor<kw_union, kw_merge, kw_intersection, kw_difference, kw_
 struct csg_open : p::seq<csg_kind, p::must<lbrace>> {};
 struct unsupported_block;
 struct csg_child : p::sor<object_value, unsupported_block> {};
-struct csg_item
-    : p::sor<directive<csg_item>, macro_call<csg_item>, csg_child, object_modifier> {};
+struct csg_item : p::sor<directive<csg_item>, macro_call<csg_item>, csg_child, object_modifier> {};
 struct csg_block : p::seq<csg_open, p::star<csg_item>, p::must<object_close>> {};
 
 // object { IDENT modifiers } or object { shape modifiers }
 HEXANT_KEYWORD(kw_object, "object");
 struct object_base : p::sor<object_value, expression> {};
-struct object_block
-    : p::seq<kw_object, p::must<lbrace>, p::must<object_base>, object_modifiers,
-             p::must<object_close>> {};
+struct object_block : p::seq<kw_object, p::must<lbrace>, p::must<object_base>, object_modifiers,
+                             p::must<object_close>> {};
 
 // light_source { <position>, colour modifiers }
 HEXANT_KEYWORD(kw_light_source, "light_source");
 // The colour may be left out (POV-Ray: white).
-struct light_arguments
-    : p::seq<frame_open, p::must<shape_argument>,
-             p::opt<p::opt<comma>, p::not_at<macro_ahead>, shape_argument>> {};
-struct light_flag
-    : p::seq<p::sor<TAO_PEGTL_KEYWORD("shadowless"), TAO_PEGTL_KEYWORD("spotlight"),
-                    TAO_PEGTL_KEYWORD("cylinder"), TAO_PEGTL_KEYWORD("parallel"),
-                    TAO_PEGTL_KEYWORD("jitter"), TAO_PEGTL_KEYWORD("circular"),
-                    TAO_PEGTL_KEYWORD("orient")>,
-             ws> {};
+struct light_arguments : p::seq<frame_open, p::must<shape_argument>,
+                                p::opt<p::opt<comma>, p::not_at<macro_ahead>, shape_argument>> {};
+struct light_flag : p::seq<p::sor<TAO_PEGTL_KEYWORD("shadowless"), TAO_PEGTL_KEYWORD("spotlight"),
+                                  TAO_PEGTL_KEYWORD("cylinder"), TAO_PEGTL_KEYWORD("parallel"),
+                                  TAO_PEGTL_KEYWORD("jitter"), TAO_PEGTL_KEYWORD("circular"),
+                                  TAO_PEGTL_KEYWORD("orient")>,
+                           ws> {};
 struct light_setting_name
     : p::sor<TAO_PEGTL_KEYWORD("point_at"), TAO_PEGTL_KEYWORD("radius"),
              TAO_PEGTL_KEYWORD("falloff"), TAO_PEGTL_KEYWORD("tightness"),
@@ -110,26 +105,24 @@ struct area_light
 // to the light before its modifiers (looks_like_base).
 struct looks_like_base : object_base {};
 struct light_looks_like
-    : p::seq<TAO_PEGTL_KEYWORD("looks_like"), ws, p::must<lbrace>, p::must<looks_like_base>, object_modifiers,
-             p::must<object_close>> {};
+    : p::seq<TAO_PEGTL_KEYWORD("looks_like"), ws, p::must<lbrace>, p::must<looks_like_base>,
+             object_modifiers, p::must<object_close>> {};
 struct light_projected_through
     : p::seq<TAO_PEGTL_KEYWORD("projected_through"), ws, p::must<skipped_block>, ws> {};
-struct light_item
-    : p::sor<directive<light_item>, macro_call<light_item>, light_flag, light_setting,
-             area_light, light_looks_like, light_projected_through, transformation> {};
-struct light_block
-    : p::seq<kw_light_source, p::must<lbrace>, p::must<light_arguments>, p::star<light_item>,
-             p::must<object_close>> {};
+struct light_item : p::sor<directive<light_item>, macro_call<light_item>, light_flag, light_setting,
+                           area_light, light_looks_like, light_projected_through, transformation> {
+};
+struct light_block : p::seq<kw_light_source, p::must<lbrace>, p::must<light_arguments>,
+                            p::star<light_item>, p::must<object_close>> {};
 
 // Object kinds POV-Ray has and hexant does not: kept as source, an error
 // only where used. Also `function { }` and the *_map blocks.
 struct unsupported_kind_words {
     static constexpr std::array<std::string_view, 23> list = {
-        "bicubic_patch", "color_map", "colour_map", "cubic", "density", "density_map",
-        "function", "isosurface", "julia_fractal", "lemon",
-        "media", "normal_map", "ovus", "parametric", "photons", "pigment_map",
-        "poly", "polynomial", "quadric", "quartic", "rainbow", "slope_map",
-        "texture_map"};
+        "bicubic_patch", "color_map",  "colour_map",    "cubic",       "density",    "density_map",
+        "function",      "isosurface", "julia_fractal", "lemon",       "media",      "normal_map",
+        "ovus",          "parametric", "photons",       "pigment_map", "poly",       "polynomial",
+        "quadric",       "quartic",    "rainbow",       "slope_map",   "texture_map"};
 };
 struct unsupported_kind : one_word_of<unsupported_kind_words> {};
 struct unsupported_block
@@ -144,11 +137,9 @@ struct mesh_inside_vector
     : p::seq<TAO_PEGTL_KEYWORD("inside_vector"), ws, p::must<mesh_inside_vector_value>> {};
 // hierarchy on|off: read; hexant's mesh always has its hierarchy.
 struct mesh_hierarchy_value : p::seq<expression> {};
-struct mesh_hierarchy
-    : p::seq<TAO_PEGTL_KEYWORD("hierarchy"), ws, p::opt<mesh_hierarchy_value>> {};
-struct mesh_item
-    : p::sor<directive<mesh_item>, macro_call<mesh_item>, mesh_inside_vector, mesh_hierarchy,
-             mesh_triangle, object_modifier> {};
+struct mesh_hierarchy : p::seq<TAO_PEGTL_KEYWORD("hierarchy"), ws, p::opt<mesh_hierarchy_value>> {};
+struct mesh_item : p::sor<directive<mesh_item>, macro_call<mesh_item>, mesh_inside_vector,
+                          mesh_hierarchy, mesh_triangle, object_modifier> {};
 struct mesh_block : p::seq<mesh_open, p::star<mesh_item>, p::must<object_close>> {};
 
 // mesh2 { vertex_vectors { N, <..> ... } normal_vectors { } uv_vectors { }
@@ -172,7 +163,8 @@ struct mesh2_section
 struct mesh2_texture_count : p::seq<sum> {};
 struct mesh2_texture_list
     : p::seq<TAO_PEGTL_KEYWORD("texture_list"), ws, p::must<lbrace>, frame_open,
-             p::must<mesh2_texture_count>, p::star<p::opt<comma>, texture_block>, p::must<rbrace>> {};
+             p::must<mesh2_texture_count>, p::star<p::opt<comma>, texture_block>, p::must<rbrace>> {
+};
 struct mesh2_item
     : p::sor<directive<mesh2_item>, macro_call<mesh2_item>, mesh2_section, mesh2_texture_list,
              mesh_inside_vector, mesh_hierarchy, object_modifier> {};
@@ -187,26 +179,25 @@ struct blob_component_kind : p::sor<TAO_PEGTL_KEYWORD("sphere"), TAO_PEGTL_KEYWO
 struct blob_strength_word : p::seq<TAO_PEGTL_KEYWORD("strength"), ws> {};
 // A component's own modifiers, which POV-Ray reads and hexant refuses.
 struct blob_component_modifier
-    : p::sor<TAO_PEGTL_KEYWORD("texture"), TAO_PEGTL_KEYWORD("pigment"), TAO_PEGTL_KEYWORD("normal"),
-             TAO_PEGTL_KEYWORD("finish"), TAO_PEGTL_KEYWORD("translate"), TAO_PEGTL_KEYWORD("rotate"),
-             TAO_PEGTL_KEYWORD("scale"), TAO_PEGTL_KEYWORD("matrix"), TAO_PEGTL_KEYWORD("transform")> {};
+    : p::sor<
+          TAO_PEGTL_KEYWORD("texture"), TAO_PEGTL_KEYWORD("pigment"), TAO_PEGTL_KEYWORD("normal"),
+          TAO_PEGTL_KEYWORD("finish"), TAO_PEGTL_KEYWORD("translate"), TAO_PEGTL_KEYWORD("rotate"),
+          TAO_PEGTL_KEYWORD("scale"), TAO_PEGTL_KEYWORD("matrix"), TAO_PEGTL_KEYWORD("transform")> {
+};
 struct blob_component_item;
-struct blob_component_item
-    : p::sor<directive<blob_component_item>, comma, blob_strength_word, blob_component_modifier,
-             shape_argument> {};
-struct blob_component
-    : p::seq<blob_component_kind, ws, p::must<lbrace>, frame_open, p::star<blob_component_item>,
-             p::must<rbrace>> {};
+struct blob_component_item : p::sor<directive<blob_component_item>, comma, blob_strength_word,
+                                    blob_component_modifier, shape_argument> {};
+struct blob_component : p::seq<blob_component_kind, ws, p::must<lbrace>, frame_open,
+                               p::star<blob_component_item>, p::must<rbrace>> {};
 struct blob_old_component
-    : p::seq<TAO_PEGTL_KEYWORD("component"), ws, frame_open, p::must<shape_argument>,
-             p::opt<comma>, p::must<shape_argument>, p::opt<comma>, p::must<shape_argument>> {};
-struct blob_item
-    : p::sor<directive<blob_item>, macro_call<blob_item>, blob_component, blob_old_component,
-             object_modifier> {};
+    : p::seq<TAO_PEGTL_KEYWORD("component"), ws, frame_open, p::must<shape_argument>, p::opt<comma>,
+             p::must<shape_argument>, p::opt<comma>, p::must<shape_argument>> {};
+struct blob_item : p::sor<directive<blob_item>, macro_call<blob_item>, blob_component,
+                          blob_old_component, object_modifier> {};
 struct blob_block : p::seq<blob_open, p::star<blob_item>, p::must<object_close>> {};
 
-struct object_value
-    : p::sor<mesh_block, mesh2_block, blob_block, shape_block, csg_block, object_block, light_block> {};
+struct object_value : p::sor<mesh_block, mesh2_block, blob_block, shape_block, csg_block,
+                             object_block, light_block> {};
 
 // Things that modify an object, in any order.
 struct object_texture : p::seq<texture_block> {};
@@ -241,10 +232,9 @@ struct object_ignored_block
                     TAO_PEGTL_KEYWORD("photons"), TAO_PEGTL_KEYWORD("radiosity")>,
              ws, p::must<skipped_block>, ws> {};
 struct object_modifier
-    : p::sor<directive<object_modifier>, macro_call<object_modifier>, transformation,
-             deformation, object_texture, object_pigment, object_finish, object_normal,
-             object_interior, object_material, object_flag, shape_vectors_setting, shape_setting,
+    : p::sor<directive<object_modifier>, macro_call<object_modifier>, transformation, deformation,
+             object_texture, object_pigment, object_finish, object_normal, object_interior,
+             object_material, object_flag, shape_vectors_setting, shape_setting,
              object_ignored_block> {};
-
 
 }  // namespace hexant::language::grammar

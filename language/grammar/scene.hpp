@@ -11,10 +11,9 @@ namespace hexant::language::grammar {
 HEXANT_KEYWORD(kw_camera, "camera");
 struct camera_open : p::seq<kw_camera, p::must<lbrace>> {};
 struct camera_base : p::seq<expression> {};
-struct camera_vector_name
-    : p::sor<TAO_PEGTL_KEYWORD("location"), TAO_PEGTL_KEYWORD("look_at"),
-             TAO_PEGTL_KEYWORD("direction"), TAO_PEGTL_KEYWORD("right"), TAO_PEGTL_KEYWORD("up"),
-             TAO_PEGTL_KEYWORD("sky")> {};
+struct camera_vector_name : p::sor<TAO_PEGTL_KEYWORD("location"), TAO_PEGTL_KEYWORD("look_at"),
+                                   TAO_PEGTL_KEYWORD("direction"), TAO_PEGTL_KEYWORD("right"),
+                                   TAO_PEGTL_KEYWORD("up"), TAO_PEGTL_KEYWORD("sky")> {};
 struct camera_vector_value : p::seq<expression> {};
 struct camera_setting : p::seq<camera_vector_name, ws, p::must<camera_vector_value>> {};
 // angle [A] (orthographic: the value may be left out, POV-Ray's
@@ -24,30 +23,28 @@ struct camera_angle
     : p::seq<TAO_PEGTL_KEYWORD("angle"), ws, frame_open,
              p::opt<camera_angle_value, p::opt<p::opt<comma>, camera_angle_value>>> {};
 // The projection (POV-Ray's camera types; the type comes first).
-struct camera_type
-    : p::sor<TAO_PEGTL_KEYWORD("perspective"), TAO_PEGTL_KEYWORD("orthographic"),
-             TAO_PEGTL_KEYWORD("fisheye"), TAO_PEGTL_KEYWORD("panoramic"),
-             TAO_PEGTL_KEYWORD("spherical")> {};
+struct camera_type : p::sor<TAO_PEGTL_KEYWORD("perspective"), TAO_PEGTL_KEYWORD("orthographic"),
+                            TAO_PEGTL_KEYWORD("fisheye"), TAO_PEGTL_KEYWORD("panoramic"),
+                            TAO_PEGTL_KEYWORD("spherical")> {};
 struct camera_unsupported_type
     : p::sor<TAO_PEGTL_KEYWORD("ultra_wide_angle"), TAO_PEGTL_KEYWORD("omnimax"),
              TAO_PEGTL_KEYWORD("cylinder")> {};
 // Focal blur: aperture A, focal_point <P>, blur_samples [MIN,] MAX;
 // confidence and variance are POV-Ray's stopping rule, read and ignored
 // (hexant's samples are --spp or --target-error's).
-struct camera_blur_name
-    : p::sor<TAO_PEGTL_KEYWORD("aperture"), TAO_PEGTL_KEYWORD("blur_samples"),
-             TAO_PEGTL_KEYWORD("focal_point")> {};
+struct camera_blur_name : p::sor<TAO_PEGTL_KEYWORD("aperture"), TAO_PEGTL_KEYWORD("blur_samples"),
+                                 TAO_PEGTL_KEYWORD("focal_point")> {};
 struct camera_blur_argument : p::seq<sum> {};
 struct camera_blur_setting
     : p::seq<camera_blur_name, ws, frame_open, p::must<camera_blur_argument>,
              p::opt<p::opt<comma>, p::not_at<camera_blur_name>, camera_blur_argument>> {};
 struct camera_ignored_setting
-    : p::seq<p::sor<TAO_PEGTL_KEYWORD("confidence"), TAO_PEGTL_KEYWORD("variance")>,
-             ws, p::must<ignored_value>> {};
+    : p::seq<p::sor<TAO_PEGTL_KEYWORD("confidence"), TAO_PEGTL_KEYWORD("variance")>, ws,
+             p::must<ignored_value>> {};
 struct camera_item
-    : p::sor<directive<camera_item>, macro_call<camera_item>, p::seq<camera_type, ws>, camera_setting,
-             camera_angle, camera_blur_setting, camera_ignored_setting, camera_normal, transformation,
-             camera_unsupported_type> {};
+    : p::sor<directive<camera_item>, macro_call<camera_item>, p::seq<camera_type, ws>,
+             camera_setting, camera_angle, camera_blur_setting, camera_ignored_setting,
+             camera_normal, transformation, camera_unsupported_type> {};
 struct camera_block
     : p::seq<camera_open, p::opt<camera_base>, p::star<camera_item>, p::must<rbrace>> {};
 
@@ -60,21 +57,22 @@ struct background_block
 struct sky_sphere_open : p::seq<TAO_PEGTL_KEYWORD("sky_sphere"), ws, p::must<lbrace>> {};
 struct sky_sphere_base : p::seq<expression> {};
 struct sky_sphere_pigment : p::seq<pigment_block> {};
-struct sky_sphere_emission : p::seq<TAO_PEGTL_KEYWORD("emission"), ws, p::must<pattern_setting_value>> {};
-struct sky_sphere_item
-    : p::sor<directive<sky_sphere_item>, macro_call<sky_sphere_item>, sky_sphere_pigment,
-             sky_sphere_emission, transformation> {};
+struct sky_sphere_emission
+    : p::seq<TAO_PEGTL_KEYWORD("emission"), ws, p::must<pattern_setting_value>> {};
+struct sky_sphere_item : p::sor<directive<sky_sphere_item>, macro_call<sky_sphere_item>,
+                                sky_sphere_pigment, sky_sphere_emission, transformation> {};
 struct sky_sphere_block
-    : p::seq<sky_sphere_open, p::opt<sky_sphere_base>, p::star<sky_sphere_item>, p::must<rbrace>> {};
+    : p::seq<sky_sphere_open, p::opt<sky_sphere_base>, p::star<sky_sphere_item>, p::must<rbrace>> {
+};
 
 // fog { [COLOUR] distance D fog_type 1|2 fog_offset fog_alt up turbulence
 // octaves omega lambda turb_depth rotate scale }
 struct fog_open : p::seq<TAO_PEGTL_KEYWORD("fog"), ws, p::must<lbrace>> {};
-struct fog_setting_name
-    : p::sor<TAO_PEGTL_KEYWORD("distance"), TAO_PEGTL_KEYWORD("fog_type"), TAO_PEGTL_KEYWORD("fog_alt"),
-             TAO_PEGTL_KEYWORD("fog_offset"), TAO_PEGTL_KEYWORD("turb_depth"), TAO_PEGTL_KEYWORD("up"),
-             TAO_PEGTL_KEYWORD("turbulence"), TAO_PEGTL_KEYWORD("octaves"), TAO_PEGTL_KEYWORD("omega"),
-             TAO_PEGTL_KEYWORD("lambda")> {};
+struct fog_setting_name : p::sor<TAO_PEGTL_KEYWORD("distance"), TAO_PEGTL_KEYWORD("fog_type"),
+                                 TAO_PEGTL_KEYWORD("fog_alt"), TAO_PEGTL_KEYWORD("fog_offset"),
+                                 TAO_PEGTL_KEYWORD("turb_depth"), TAO_PEGTL_KEYWORD("up"),
+                                 TAO_PEGTL_KEYWORD("turbulence"), TAO_PEGTL_KEYWORD("octaves"),
+                                 TAO_PEGTL_KEYWORD("omega"), TAO_PEGTL_KEYWORD("lambda")> {};
 struct fog_setting : p::seq<fog_setting_name, ws, p::must<pattern_setting_value>> {};
 struct fog_colour : p::seq<expression> {};
 struct fog_item
@@ -95,18 +93,17 @@ struct global_ignored_setting
     : p::seq<global_ignored_name, frame_open, p::sor<p::seq<skip::braced, ws>, expression>> {};
 // MegaPOV's motion_blur SAMPLES, TIME (real-animation case 17).
 struct global_motion_blur
-    : p::seq<TAO_PEGTL_KEYWORD("motion_blur"), ws, frame_open, p::must<global_setting_value>, p::opt<comma>,
-             p::must<global_setting_value>> {};
-struct global_item
-    : p::sor<directive<global_item>, global_setting, global_charset, global_motion_blur,
-             global_ignored_setting> {};
+    : p::seq<TAO_PEGTL_KEYWORD("motion_blur"), ws, frame_open, p::must<global_setting_value>,
+             p::opt<comma>, p::must<global_setting_value>> {};
+struct global_item : p::sor<directive<global_item>, global_setting, global_charset,
+                            global_motion_blur, global_ignored_setting> {};
 struct global_settings_block
     : p::seq<kw_global_settings, p::must<lbrace>, p::star<global_item>, p::must<rbrace>> {};
 
 // #default { texture { } | pigment { } | finish { } }
 struct default_item : p::sor<texture_block, pigment_block, finish_block> {};
-struct default_block
-    : p::seq<kw_default, p::must<lbrace>, p::star<default_item>, p::must<rbrace>> {};
+struct default_block : p::seq<kw_default, p::must<lbrace>, p::star<default_item>, p::must<rbrace>> {
+};
 
 // ---------------------------------------------------------------- values
 
@@ -136,8 +133,7 @@ struct spline_key
     : p::seq<spline_key_time, p::opt<comma>, p::must<spline_key_value>, p::opt<comma>> {};
 struct spline_item : p::sor<directive<spline_item>, spline_kind, spline_key> {};
 // spline { S ... } starts from a declared spline S.
-struct spline_base
-    : p::seq<p::at<reference, p::sor<rbrace, spline_kind>>, p::seq<expression>> {};
+struct spline_base : p::seq<p::at<reference, p::sor<rbrace, spline_kind>>, p::seq<expression>> {};
 struct spline_block
     : p::seq<spline_open, p::opt<spline_base>, p::star<spline_item>, p::must<rbrace>> {};
 
@@ -148,10 +144,9 @@ struct material_value : p::seq<material_block> {};
 struct texture_value : p::seq<texture_block, p::star<texture_layer>> {};
 
 struct value
-    : p::sor<object_value, camera_block, texture_value, pigment_block, normal_block, colour_map_block,
-             sky_sphere_block, finish_block,
-             interior_block, material_value, transform_value, array_value, spline_block,
-             unsupported_block, expression> {};
+    : p::sor<object_value, camera_block, texture_value, pigment_block, normal_block,
+             colour_map_block, sky_sphere_block, finish_block, interior_block, material_value,
+             transform_value, array_value, spline_block, unsupported_block, expression> {};
 
 // A macro called where a value is wanted holds values (and directives).
 struct value_item : p::sor<directive<value_item>, value> {};
@@ -162,12 +157,10 @@ struct scene_object : p::seq<object_value> {};
 struct scene_unsupported : p::seq<unsupported_block> {};
 struct scene_camera : p::seq<camera_block> {};
 struct scene_sky_sphere : p::seq<sky_sphere_block> {};
-struct scene_item
-    : p::sor<directive<scene_item>, macro_call<scene_item>, scene_object, scene_camera,
-             background_block, scene_sky_sphere, fog_block, global_settings_block, scene_unsupported,
-             semicolon> {};
+struct scene_item : p::sor<directive<scene_item>, macro_call<scene_item>, scene_object,
+                           scene_camera, background_block, scene_sky_sphere, fog_block,
+                           global_settings_block, scene_unsupported, semicolon> {};
 struct scene_end : p::eof {};
 struct scene_file : p::seq<ws, p::star<scene_item>, p::must<scene_end>> {};
-
 
 }  // namespace hexant::language::grammar

@@ -19,11 +19,11 @@ HEXANT_KEYWORD(kw_material, "material");
 // only where a scene uses them.
 struct unsupported_pattern_name
     : p::sor<TAO_PEGTL_KEYWORD("average"), TAO_PEGTL_KEYWORD("facets"),
-             TAO_PEGTL_KEYWORD("function"), TAO_PEGTL_KEYWORD("julia"), TAO_PEGTL_KEYWORD("pavement"),
-             TAO_PEGTL_KEYWORD("tiling"), TAO_PEGTL_KEYWORD("cubic"), TAO_PEGTL_KEYWORD("object"),
-             TAO_PEGTL_KEYWORD("slope"), TAO_PEGTL_KEYWORD("aoi"), TAO_PEGTL_KEYWORD("density_file"),
-             TAO_PEGTL_KEYWORD("image_pattern"), TAO_PEGTL_KEYWORD("bump_map"),
-             TAO_PEGTL_KEYWORD("wave")> {};
+             TAO_PEGTL_KEYWORD("function"), TAO_PEGTL_KEYWORD("julia"),
+             TAO_PEGTL_KEYWORD("pavement"), TAO_PEGTL_KEYWORD("tiling"), TAO_PEGTL_KEYWORD("cubic"),
+             TAO_PEGTL_KEYWORD("object"), TAO_PEGTL_KEYWORD("slope"), TAO_PEGTL_KEYWORD("aoi"),
+             TAO_PEGTL_KEYWORD("density_file"), TAO_PEGTL_KEYWORD("image_pattern"),
+             TAO_PEGTL_KEYWORD("bump_map"), TAO_PEGTL_KEYWORD("wave")> {};
 struct unsupported_pattern : p::seq<unsupported_pattern_name, skip::until_rbrace> {};
 // uv_mapping in a pigment, a normal or a texture: what follows in the
 // block is read at the surface's (u, v, 0) (runtime/texture/material.hpp).
@@ -34,18 +34,19 @@ struct uv_mapping : p::seq<TAO_PEGTL_KEYWORD("uv_mapping"), ws> {};
 // (gradient), a number (spiral1, spiral2, mandel) or a list of colours (the
 // block patterns).
 struct pattern_words {
-    static constexpr auto list = runtime::pattern::PatternWords<runtime::pattern::PatternKinds>::keywords;
+    static constexpr auto list =
+        runtime::pattern::PatternWords<runtime::pattern::PatternKinds>::keywords;
 };
 struct pattern_name : one_word_of<pattern_words> {};
 struct pattern_argument : p::seq<sum> {};
-struct pattern_kind
-    : p::seq<pattern_name, ws, frame_open,
-             p::opt<pattern_argument, p::star<p::opt<comma>, pattern_argument>>> {};
+struct pattern_kind : p::seq<pattern_name, ws, frame_open,
+                             p::opt<pattern_argument, p::star<p::opt<comma>, pattern_argument>>> {};
 // The pattern modifiers (POV-Ray's Parse_Pattern), each with one value:
 // those of every pattern, and the kinds' own (mortar, metric, ...: each
 // kind's file declares its settings).
 struct pattern_kind_setting_words {
-    static constexpr auto list = runtime::pattern::PatternWords<runtime::pattern::PatternKinds>::settings;
+    static constexpr auto list =
+        runtime::pattern::PatternWords<runtime::pattern::PatternKinds>::settings;
 };
 struct pattern_setting_name
     : p::sor<TAO_PEGTL_KEYWORD("frequency"), TAO_PEGTL_KEYWORD("phase"),
@@ -61,31 +62,30 @@ struct pattern_wave_name
 struct pattern_wave : p::seq<pattern_wave_name, ws, frame_open, p::opt<pattern_argument>> {};
 // warp { turbulence <x, y, z> [octaves N] [omega W] [lambda L] }
 struct warp_turbulence_keyword : TAO_PEGTL_KEYWORD("turbulence") {};
-struct warp_setting_name
-    : p::sor<TAO_PEGTL_KEYWORD("octaves"), TAO_PEGTL_KEYWORD("omega"), TAO_PEGTL_KEYWORD("lambda")> {};
+struct warp_setting_name : p::sor<TAO_PEGTL_KEYWORD("octaves"), TAO_PEGTL_KEYWORD("omega"),
+                                  TAO_PEGTL_KEYWORD("lambda")> {};
 struct warp_setting : p::seq<warp_setting_name, ws, p::must<pattern_setting_value>> {};
 struct warp_open : p::seq<TAO_PEGTL_KEYWORD("warp"), ws, p::must<lbrace>> {};
 struct warp_turbulence : p::seq<pattern_setting_value> {};
-struct warp_block
-    : p::seq<warp_open, p::must<warp_turbulence_keyword>, ws, p::must<warp_turbulence>,
-             p::star<warp_setting>, p::must<rbrace>> {};
+struct warp_block : p::seq<warp_open, p::must<warp_turbulence_keyword>, ws,
+                           p::must<warp_turbulence>, p::star<warp_setting>, p::must<rbrace>> {};
 
 // color_map { [value colour] ... }, or a declared one; POV-Ray's older
 // [value1, value2 colour1 colour2] too.
 struct colour_map_open
-    : p::seq<p::sor<TAO_PEGTL_KEYWORD("color_map"), TAO_PEGTL_KEYWORD("colour_map")>, ws, p::must<lbrace>> {};
+    : p::seq<p::sor<TAO_PEGTL_KEYWORD("color_map"), TAO_PEGTL_KEYWORD("colour_map")>, ws,
+             p::must<lbrace>> {};
 // (A name followed by '(' is a macro writing the entries, not a declared map.)
 struct colour_map_base : p::seq<p::not_at<p::identifier, ws, lparen>, expression> {};
 struct colour_map_item : p::seq<sum> {};
-struct colour_map_entry
-    : p::seq<lbracket, frame_open, p::must<colour_map_item>,
-             p::star<p::opt<comma>, colour_map_item>, p::must<rbracket>> {};
+struct colour_map_entry : p::seq<lbracket, frame_open, p::must<colour_map_item>,
+                                 p::star<p::opt<comma>, colour_map_item>, p::must<rbracket>> {};
 // (Directives and macros may write the entries: #for, #if, a macro that
 // expands to [v colour].)
 struct colour_map_element
     : p::sor<directive<colour_map_element>, macro_call<colour_map_element>, colour_map_entry> {};
-struct colour_map_block
-    : p::seq<colour_map_open, p::opt<colour_map_base>, p::star<colour_map_element>, p::must<rbrace>> {};
+struct colour_map_block : p::seq<colour_map_open, p::opt<colour_map_base>,
+                                 p::star<colour_map_element>, p::must<rbrace>> {};
 struct pigment_colour_map : p::seq<colour_map_block> {};
 
 struct pigment_open : p::seq<kw_pigment, p::must<lbrace>> {};
@@ -101,7 +101,8 @@ struct pigment_map_entry
 struct pigment_map_open : p::seq<TAO_PEGTL_KEYWORD("pigment_map"), ws, p::must<lbrace>> {};
 struct pigment_map_element
     : p::sor<directive<pigment_map_element>, macro_call<pigment_map_element>, pigment_map_entry> {};
-struct pigment_map_block : p::seq<pigment_map_open, p::star<pigment_map_element>, p::must<rbrace>> {};
+struct pigment_map_block : p::seq<pigment_map_open, p::star<pigment_map_element>, p::must<rbrace>> {
+};
 // image_map { [TYPE] "file" [gamma G] [premultiplied B] settings }: POV-Ray's
 // Parse_Image and Parse_Image_Map.
 struct image_map_open : p::seq<TAO_PEGTL_KEYWORD("image_map"), ws, p::must<lbrace>> {};
@@ -113,44 +114,45 @@ struct image_file_type
              ws> {};
 struct image_map_file : p::seq<sum> {};
 struct image_map_setting_name
-    : p::sor<TAO_PEGTL_KEYWORD("map_type"), TAO_PEGTL_KEYWORD("interpolate"), TAO_PEGTL_KEYWORD("premultiplied"),
-             TAO_PEGTL_KEYWORD("repeat"), TAO_PEGTL_KEYWORD("offset")> {};
+    : p::sor<TAO_PEGTL_KEYWORD("map_type"), TAO_PEGTL_KEYWORD("interpolate"),
+             TAO_PEGTL_KEYWORD("premultiplied"), TAO_PEGTL_KEYWORD("repeat"),
+             TAO_PEGTL_KEYWORD("offset")> {};
 struct image_map_setting : p::seq<image_map_setting_name, ws, p::must<pattern_setting_value>> {};
 // gamma G, or gamma srgb.
 struct image_map_gamma_srgb : p::seq<TAO_PEGTL_KEYWORD("srgb"), ws> {};
-struct image_map_gamma
-    : p::seq<TAO_PEGTL_KEYWORD("gamma"), ws, p::sor<image_map_gamma_srgb, p::must<pattern_setting_value>>> {};
+struct image_map_gamma : p::seq<TAO_PEGTL_KEYWORD("gamma"), ws,
+                                p::sor<image_map_gamma_srgb, p::must<pattern_setting_value>>> {};
 struct image_map_flag
-    : p::seq<p::sor<TAO_PEGTL_KEYWORD("once"), TAO_PEGTL_KEYWORD("use_colour"), TAO_PEGTL_KEYWORD("use_color"),
-                    TAO_PEGTL_KEYWORD("use_index")>,
+    : p::seq<p::sor<TAO_PEGTL_KEYWORD("once"), TAO_PEGTL_KEYWORD("use_colour"),
+                    TAO_PEGTL_KEYWORD("use_color"), TAO_PEGTL_KEYWORD("use_index")>,
              ws> {};
 // filter all F, transmit all T; filter N F (a palette entry's).
 struct image_map_all : p::seq<TAO_PEGTL_KEYWORD("all"), ws> {};
 struct image_map_amount : p::seq<sum> {};
-struct image_map_filter_name : p::sor<TAO_PEGTL_KEYWORD("filter"), TAO_PEGTL_KEYWORD("transmit")> {};
+struct image_map_filter_name : p::sor<TAO_PEGTL_KEYWORD("filter"), TAO_PEGTL_KEYWORD("transmit")> {
+};
 struct image_map_filter
-    : p::seq<image_map_filter_name, ws, frame_open,
-             p::opt<image_map_all>, p::must<image_map_amount>, p::opt<p::opt<comma>, image_map_amount>> {};
-struct image_map_item : p::sor<image_map_gamma, image_map_setting, image_map_flag, image_map_filter> {};
-struct image_map_block
-    : p::seq<image_map_open, p::opt<image_file_type>, p::must<image_map_file>, p::star<image_map_item>,
-             p::must<rbrace>> {};
+    : p::seq<image_map_filter_name, ws, frame_open, p::opt<image_map_all>,
+             p::must<image_map_amount>, p::opt<p::opt<comma>, image_map_amount>> {};
+struct image_map_item
+    : p::sor<image_map_gamma, image_map_setting, image_map_flag, image_map_filter> {};
+struct image_map_block : p::seq<image_map_open, p::opt<image_file_type>, p::must<image_map_file>,
+                                p::star<image_map_item>, p::must<rbrace>> {};
 struct pigment_block;
 // A block pattern's pigments: checker pigment { } pigment { }.
 struct pigment_list_pigment : p::seq<pigment_block, p::opt<comma>> {};
 struct pigment_item
     : p::sor<directive<pigment_item>, macro_call<pigment_item>, pattern_kind, pattern_setting,
-             pattern_wave, warp_block, pigment_colour_map, pigment_map_block, image_map_block, pigment_list_pigment,
-             uv_mapping, unsupported_pattern, transformation> {};
+             pattern_wave, warp_block, pigment_colour_map, pigment_map_block, image_map_block,
+             pigment_list_pigment, uv_mapping, unsupported_pattern, transformation> {};
 struct pigment_block
     : p::seq<pigment_open, p::opt<pigment_base>, p::star<pigment_item>, p::must<rbrace>> {};
 
-struct finish_setting_name
-    : p::sor<TAO_PEGTL_KEYWORD("ambient"), TAO_PEGTL_KEYWORD("diffuse"),
-             TAO_PEGTL_KEYWORD("brilliance"), TAO_PEGTL_KEYWORD("phong_size"),
-             TAO_PEGTL_KEYWORD("phong"), TAO_PEGTL_KEYWORD("specular"),
-             TAO_PEGTL_KEYWORD("roughness"), TAO_PEGTL_KEYWORD("emission"),
-             TAO_PEGTL_KEYWORD("crand")> {};
+struct finish_setting_name : p::sor<TAO_PEGTL_KEYWORD("ambient"), TAO_PEGTL_KEYWORD("diffuse"),
+                                    TAO_PEGTL_KEYWORD("brilliance"),
+                                    TAO_PEGTL_KEYWORD("phong_size"), TAO_PEGTL_KEYWORD("phong"),
+                                    TAO_PEGTL_KEYWORD("specular"), TAO_PEGTL_KEYWORD("roughness"),
+                                    TAO_PEGTL_KEYWORD("emission"), TAO_PEGTL_KEYWORD("crand")> {};
 struct finish_setting_value : p::seq<expression> {};
 struct finish_setting : p::seq<finish_setting_name, ws, p::must<finish_setting_value>> {};
 struct reflection_value : p::seq<expression> {};
@@ -161,23 +163,21 @@ struct reflection_option
              p::seq<TAO_PEGTL_KEYWORD("fresnel"), ws, p::opt<ignored_value>>,
              p::seq<comma, p::opt<ignored_value>>> {};  // the maximum: hexant uses the minimum
 struct reflection_ignored_option : reflection_option {};
-struct reflection_block
-    : p::seq<lbrace, p::must<reflection_value>, p::star<reflection_ignored_option>,
-             p::must<rbrace>> {};
+struct reflection_block : p::seq<lbrace, p::must<reflection_value>,
+                                 p::star<reflection_ignored_option>, p::must<rbrace>> {};
 struct reflection_amount : p::sor<reflection_block, reflection_value> {};
 struct reflection_setting
     : p::seq<TAO_PEGTL_KEYWORD("reflection"), ws, p::must<reflection_amount>> {};
-struct finish_flag
-    : p::seq<p::sor<TAO_PEGTL_KEYWORD("conserve_energy"), TAO_PEGTL_KEYWORD("fresnel"),
-                    TAO_PEGTL_KEYWORD("metallic")>,
-             ws, p::opt<ignored_value>> {};
+struct finish_flag : p::seq<p::sor<TAO_PEGTL_KEYWORD("conserve_energy"),
+                                   TAO_PEGTL_KEYWORD("fresnel"), TAO_PEGTL_KEYWORD("metallic")>,
+                            ws, p::opt<ignored_value>> {};
 struct finish_ignored_block
-    : p::seq<p::sor<TAO_PEGTL_KEYWORD("irid"), TAO_PEGTL_KEYWORD("subsurface")>, ws, skip::braced, ws> {};
+    : p::seq<p::sor<TAO_PEGTL_KEYWORD("irid"), TAO_PEGTL_KEYWORD("subsurface")>, ws, skip::braced,
+             ws> {};
 struct finish_open : p::seq<kw_finish, p::must<lbrace>> {};
 struct finish_base : p::seq<expression> {};
-struct finish_item
-    : p::sor<directive<finish_item>, macro_call<finish_item>, finish_setting, reflection_setting,
-             finish_flag, finish_ignored_block> {};
+struct finish_item : p::sor<directive<finish_item>, macro_call<finish_item>, finish_setting,
+                            reflection_setting, finish_flag, finish_ignored_block> {};
 struct finish_block
     : p::seq<finish_open, p::opt<finish_base>, p::star<finish_item>, p::must<rbrace>> {};
 
@@ -185,7 +185,8 @@ struct finish_block
 // pattern rules as a pigment's, with bump_size, accuracy, no_bump_scale.
 struct normal_open : p::seq<kw_normal, p::must<lbrace>> {};
 struct normal_base : p::seq<p::not_at<pattern_name>, expression> {};
-struct normal_setting_name : p::sor<TAO_PEGTL_KEYWORD("bump_size"), TAO_PEGTL_KEYWORD("accuracy")> {};
+struct normal_setting_name : p::sor<TAO_PEGTL_KEYWORD("bump_size"), TAO_PEGTL_KEYWORD("accuracy")> {
+};
 struct normal_setting : p::seq<normal_setting_name, ws, p::must<pattern_setting_value>> {};
 struct normal_no_bump_scale : p::seq<TAO_PEGTL_KEYWORD("no_bump_scale"), ws> {};
 struct normal_item;
@@ -193,17 +194,16 @@ struct normal_item;
 struct normal_map_value : p::seq<sum> {};
 struct normal_map_normal_open : p::success {};
 struct normal_map_entry
-    : p::seq<lbracket, p::must<normal_map_value>, p::opt<comma>, normal_map_normal_open, p::opt<normal_base>,
-             p::star<normal_item>, p::must<rbracket>> {};
+    : p::seq<lbracket, p::must<normal_map_value>, p::opt<comma>, normal_map_normal_open,
+             p::opt<normal_base>, p::star<normal_item>, p::must<rbracket>> {};
 struct normal_map_open : p::seq<TAO_PEGTL_KEYWORD("normal_map"), ws, p::must<lbrace>> {};
 struct normal_map_element
     : p::sor<directive<normal_map_element>, macro_call<normal_map_element>, normal_map_entry> {};
 struct normal_map_block : p::seq<normal_map_open, p::star<normal_map_element>, p::must<rbrace>> {};
 // slope_map { [value <height, slope>] ... }
 struct slope_map_item : p::seq<sum> {};
-struct slope_map_entry
-    : p::seq<lbracket, frame_open, p::must<slope_map_item>, p::opt<comma>, p::must<slope_map_item>,
-             p::must<rbracket>> {};
+struct slope_map_entry : p::seq<lbracket, frame_open, p::must<slope_map_item>, p::opt<comma>,
+                                p::must<slope_map_item>, p::must<rbracket>> {};
 struct slope_map_open : p::seq<TAO_PEGTL_KEYWORD("slope_map"), ws, p::must<lbrace>> {};
 struct slope_map_element
     : p::sor<directive<slope_map_element>, macro_call<slope_map_element>, slope_map_entry> {};
@@ -212,10 +212,12 @@ struct normal_block;
 // A block pattern's normals: checker normal { } normal { }.
 struct normal_list_normal : p::seq<normal_block, p::opt<comma>> {};
 struct normal_item
-    : p::sor<directive<normal_item>, macro_call<normal_item>, pattern_kind, pattern_setting, pattern_wave,
-             warp_block, normal_setting, normal_no_bump_scale, normal_map_block, slope_map_block,
-             normal_list_normal, uv_mapping, unsupported_pattern, transformation> {};
-struct normal_block : p::seq<normal_open, p::opt<normal_base>, p::star<normal_item>, p::must<rbrace>> {};
+    : p::sor<directive<normal_item>, macro_call<normal_item>, pattern_kind, pattern_setting,
+             pattern_wave, warp_block, normal_setting, normal_no_bump_scale, normal_map_block,
+             slope_map_block, normal_list_normal, uv_mapping, unsupported_pattern, transformation> {
+};
+struct normal_block
+    : p::seq<normal_open, p::opt<normal_base>, p::star<normal_item>, p::must<rbrace>> {};
 struct texture_normal : p::seq<normal_block> {};
 struct object_normal : p::seq<normal_block> {};
 struct camera_normal : p::seq<normal_block> {};
@@ -231,9 +233,8 @@ struct interior_ignored_setting
                            TAO_PEGTL_KEYWORD("fade_color"), TAO_PEGTL_KEYWORD("fade_colour")>,
                     ws, p::must<ignored_value>>,
              p::seq<TAO_PEGTL_KEYWORD("media"), ws, p::must<skipped_block>, ws>> {};
-struct interior_item
-    : p::sor<directive<interior_item>, macro_call<interior_item>, ior_setting,
-             interior_ignored_setting> {};
+struct interior_item : p::sor<directive<interior_item>, macro_call<interior_item>, ior_setting,
+                              interior_ignored_setting> {};
 struct interior_block
     : p::seq<interior_open, p::opt<interior_base>, p::star<interior_item>, p::must<rbrace>> {};
 
@@ -251,15 +252,16 @@ struct texture_map_entry
 struct texture_map_open : p::seq<TAO_PEGTL_KEYWORD("texture_map"), ws, p::must<lbrace>> {};
 struct texture_map_element
     : p::sor<directive<texture_map_element>, macro_call<texture_map_element>, texture_map_entry> {};
-struct texture_map_block : p::seq<texture_map_open, p::star<texture_map_element>, p::must<rbrace>> {};
+struct texture_map_block : p::seq<texture_map_open, p::star<texture_map_element>, p::must<rbrace>> {
+};
 struct texture_block;
 // A block pattern's textures: checker texture { } texture { }.
 struct texture_list_texture : p::seq<texture_block, p::opt<comma>> {};
 // A patterned texture: a pattern and its modifiers, then its map.
 struct texture_item
     : p::sor<directive<texture_item>, macro_call<texture_item>, texture_pigment, texture_finish,
-             texture_normal, pattern_kind, pattern_setting, pattern_wave, warp_block, texture_map_block,
-             texture_list_texture, uv_mapping, transformation> {};
+             texture_normal, pattern_kind, pattern_setting, pattern_wave, warp_block,
+             texture_map_block, texture_list_texture, uv_mapping, transformation> {};
 struct texture_block
     : p::seq<texture_open, p::opt<texture_base>, p::star<texture_item>, p::must<rbrace>> {};
 
@@ -272,6 +274,5 @@ struct material_item
     : p::sor<directive<material_item>, material_texture, material_interior, transformation> {};
 struct material_block
     : p::seq<material_open, p::opt<material_base>, p::star<material_item>, p::must<rbrace>> {};
-
 
 }  // namespace hexant::language::grammar

@@ -1,7 +1,9 @@
-// The Interpreter's #if, #ifdef and #ifndef, and the split of the animation's time where a condition depends on clock.
-// Part of the Interpreter (language/interpreter_state.hpp), whose end includes it.
+// The Interpreter's #if, #ifdef and #ifndef, and the split of the animation's time where a
+// condition depends on clock. Part of the Interpreter (language/interpreter_state.hpp), whose end
+// includes it.
 #pragma once
 
+#include "language/interpreter/reading.hpp"
 #include "language/interpreter_state.hpp"
 
 namespace hexant::language {
@@ -30,8 +32,8 @@ TimeFunction Interpreter::timed_condition(ParseInput& in, const char* directive)
     }
 }
 
-template <typename Item, template <typename...> class Action,
-          template <typename...> class Control, typename ParseInput>
+template <typename Item, template <typename...> class Action, template <typename...> class Control,
+          typename ParseInput>
 bool Interpreter::run_if(ParseInput& in) {
     const auto opened = directive_position(in);
     if (!keyword(in, "if")) return false;
@@ -40,18 +42,21 @@ bool Interpreter::run_if(ParseInput& in) {
     return true;
 }
 
-template <typename Item, template <typename...> class Action,
-          template <typename...> class Control, typename ParseInput>
+template <typename Item, template <typename...> class Action, template <typename...> class Control,
+          typename ParseInput>
 void Interpreter::if_chain(ParseInput& in, const p::position& opened, const p::position& at,
                            const TimeFunction& c) {
-    if (c.is_constant()) return if_rest<Item, Action, Control>(in, opened, runtime::pov_true(c.constant()));
+    if (c.is_constant())
+        return if_rest<Item, Action, Control>(in, opened, runtime::pov_true(c.constant()));
     const runtime::TruthPieces pieces = split_domain(c, at);
-    if (const auto whole = whole_truth(pieces)) return if_rest<Item, Action, Control>(in, opened, *whole);
-    split_time(in, at, c, pieces, [&](bool taken) { if_rest<Item, Action, Control>(in, opened, taken); });
+    if (const auto whole = whole_truth(pieces))
+        return if_rest<Item, Action, Control>(in, opened, *whole);
+    split_time(in, at, c, pieces,
+               [&](bool taken) { if_rest<Item, Action, Control>(in, opened, taken); });
 }
 
-template <typename Item, template <typename...> class Action,
-          template <typename...> class Control, typename ParseInput>
+template <typename Item, template <typename...> class Action, template <typename...> class Control,
+          typename ParseInput>
 void Interpreter::if_rest(ParseInput& in, const p::position& opened, bool taken) {
     bool seen_else = false;
     for (;;) {
@@ -111,9 +116,10 @@ void Interpreter::split_time(ParseInput& in, const p::position& at, const TimeFu
     std::optional<runtime::ObjectRecord> top_before;
     if (!blocks.empty()) {
         if (!std::holds_alternative<runtime::ObjectRecord>(blocks.back()))
-            fail(at, "a branch whose condition depends on clock inside this block; hexant makes "
-                     "objects, their CSG members, floats and vectors piecewise in time, not yet "
-                     "what this block holds");
+            fail(at,
+                 "a branch whose condition depends on clock inside this block; hexant makes "
+                 "objects, their CSG members, floats and vectors piecewise in time, not yet "
+                 "what this block holds");
         top_before = std::get<runtime::ObjectRecord>(blocks.back());
     }
     std::optional<TimeSide> sides[2];  // [0]: where c holds
@@ -134,8 +140,9 @@ void Interpreter::split_time(ParseInput& in, const p::position& at, const TimeFu
         camera_sets = camera_count;
         background_sets = background_count;
         if (stack_.size() >= stack_base) {
-            side.pushed.assign(std::make_move_iterator(stack_.begin() + static_cast<std::ptrdiff_t>(stack_base)),
-                               std::make_move_iterator(stack_.end()));
+            side.pushed.assign(
+                std::make_move_iterator(stack_.begin() + static_cast<std::ptrdiff_t>(stack_base)),
+                std::make_move_iterator(stack_.end()));
         }
         const bool balanced = stack_.size() >= stack_base && blocks.size() == block_count;
         stack_.resize(std::min(stack_.size(), stack_base));
@@ -162,13 +169,15 @@ void Interpreter::split_time(ParseInput& in, const p::position& at, const TimeFu
             // Where in time the error is: from this side's first instant
             // (POV-Ray stops at that clock's frame).
             std::ostringstream note;
-            note << std::setprecision(17) << e.message() << " (at clock " << when.pieces().front().lo
-                 << ", on a side of the branch on clock at line " << at.line << ")";
+            note << std::setprecision(17) << e.message() << " (at clock "
+                 << when.pieces().front().lo << ", on a side of the branch on clock at line "
+                 << at.line << ")";
             domain = outer;
             watched_block_ = watched;
             watched_edits_ = edits;
             (void)restore();
-            if (e.message().find(" (at clock ") != std::string_view::npos) throw;  // said once, innermost
+            if (e.message().find(" (at clock ") != std::string_view::npos)
+                throw;  // said once, innermost
             p::parse_error amended(note.str(), e.positions().front());
             for (std::size_t i = 1; i < e.positions().size(); ++i)
                 amended.add_position(p::position(e.positions()[i]));
@@ -187,8 +196,9 @@ void Interpreter::split_time(ParseInput& in, const p::position& at, const TimeFu
         done.top_edited = edited;
         if (!balanced) {
             domain = outer;
-            fail(at, "a branch whose condition depends on clock that uses values from before it "
-                     "or leaves a block open; hexant cannot yet make that piecewise in time");
+            fail(at,
+                 "a branch whose condition depends on clock that uses values from before it "
+                 "or leaves a block open; hexant cannot yet make that piecewise in time");
         }
         done.when = when;
         sides[side] = std::move(done);
@@ -199,20 +209,23 @@ void Interpreter::split_time(ParseInput& in, const p::position& at, const TimeFu
     merge_time_sides(at, c, sides, top_before, camera_before, background_before);
 }
 
-template <typename Item, template <typename...> class Action,
-          template <typename...> class Control, typename ParseInput>
+template <typename Item, template <typename...> class Action, template <typename...> class Control,
+          typename ParseInput>
 bool Interpreter::run_ifdef(ParseInput& in) {
     const auto opened = directive_position(in);
     bool negate = false;
-    if (keyword(in, "ifndef")) negate = true;
-    else if (!keyword(in, "ifdef")) return false;
+    if (keyword(in, "ifndef"))
+        negate = true;
+    else if (!keyword(in, "ifdef"))
+        return false;
     const char* name = negate ? "#ifndef" : "#ifdef";
     read<grammar::lparen, Action, Control>(in);
     const std::string id = identifier(in, "a name in #ifdef ( )");
     read<grammar::condition_close, Action, Control>(in);
     const auto rest = [&](bool taken) {
         Divider d = taken ? run_body<Item, Action, Control>(in) : skip_body<Control>(in);
-        if (d == Divider::Else) d = taken ? skip_body<Control>(in) : run_body<Item, Action, Control>(in);
+        if (d == Divider::Else)
+            d = taken ? skip_body<Control>(in) : run_body<Item, Action, Control>(in);
         if (d != Divider::End) unclosed(opened, name, d, in);
     };
     const runtime::Lifetime* when = declared_when(id);
@@ -225,10 +238,11 @@ bool Interpreter::run_ifdef(ParseInput& in) {
     if (negate) c = TimeFunction::apply(runtime::TimeOp::Not, c);
     // (The split is the directive's, as an #if's is.)
     const runtime::TruthPieces pieces = split_domain(c, opened);
-    if (const auto whole = whole_truth(pieces)) rest(*whole);
-    else split_time(in, opened, c, pieces, rest);
+    if (const auto whole = whole_truth(pieces))
+        rest(*whole);
+    else
+        split_time(in, opened, c, pieces, rest);
     return true;
 }
-
 
 }  // namespace hexant::language

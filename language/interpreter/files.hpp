@@ -2,12 +2,13 @@
 // Part of the Interpreter (language/interpreter_state.hpp), whose end includes it.
 #pragma once
 
+#include "language/interpreter/reading.hpp"
 #include "language/interpreter_state.hpp"
 
 namespace hexant::language {
 
-template <typename Item, template <typename...> class Action,
-          template <typename...> class Control, typename ParseInput>
+template <typename Item, template <typename...> class Action, template <typename...> class Control,
+          typename ParseInput>
 bool Interpreter::declare_value(ParseInput& in) {
     const auto start = in.iterator();
     const std::size_t values = stack_.size(), block_count = blocks.size(),
@@ -25,14 +26,14 @@ bool Interpreter::declare_value(ParseInput& in) {
         const auto where = in.position();
         (void)p::match<grammar::skip::declaration, p::apply_mode::nothing, p::rewind_mode::dontcare,
                        p::nothing, Control>(in, *this);
-        push(Value{Unevaluated{"declaration that hexant cannot evaluate (" + std::string(e.message()) + ")",
-                               where}});
+        push(Value{Unevaluated{
+            "declaration that hexant cannot evaluate (" + std::string(e.message()) + ")", where}});
         return true;
     }
 }
 
-template <typename Item, template <typename...> class Action,
-          template <typename...> class Control, typename ParseInput>
+template <typename Item, template <typename...> class Action, template <typename...> class Control,
+          typename ParseInput>
 bool Interpreter::run_include(ParseInput& in) {
     const auto opened = directive_position(in);
     if (!keyword(in, "include")) return false;
@@ -52,18 +53,21 @@ bool Interpreter::run_include(ParseInput& in) {
     return true;
 }
 
-template <typename Item, template <typename...> class Action,
-          template <typename...> class Control, typename ParseInput>
-void Interpreter::include_by_clock(ParseInput& in, const p::position& opened, const TimedString& name) {
+template <typename Item, template <typename...> class Action, template <typename...> class Control,
+          typename ParseInput>
+void Interpreter::include_by_clock(ParseInput& in, const p::position& opened,
+                                   const TimedString& name) {
     // Each file read for the time its name holds, as the sides of a branch
     // on clock: the first name against the rest, then the rest in turn.
     std::vector<double> instants;  // for `hexant check`, as split_domain records them
     for (std::size_t i = 1; i < name.pieces.size(); ++i)
         if (domain.contains(name.pieces[i].time.lo)) instants.push_back(name.pieces[i].time.lo);
-    if (!instants.empty()) scene.time_splits.push_back({{opened.source, opened.line, opened.column}, instants});
+    if (!instants.empty())
+        scene.time_splits.push_back({{opened.source, opened.line, opened.column}, instants});
     std::vector<std::pair<std::string, runtime::Lifetime>> files;
     for (auto& [file, when] : name.by_text()) {
-        runtime::Lifetime here = runtime::Lifetime::of(when.within(animation_time())).intersect(domain);
+        runtime::Lifetime here =
+            runtime::Lifetime::of(when.within(animation_time())).intersect(domain);
         if (!here.is_never()) files.push_back({file, std::move(here)});
     }
     const auto from = [&](const auto& self, std::size_t k) -> void {
@@ -75,18 +79,20 @@ void Interpreter::include_by_clock(ParseInput& in, const p::position& opened, co
         pieces.when_true = files[k].second;
         std::vector<runtime::Interval> rest;
         for (std::size_t j = k + 1; j < files.size(); ++j)
-            rest.insert(rest.end(), files[j].second.pieces().begin(), files[j].second.pieces().end());
+            rest.insert(rest.end(), files[j].second.pieces().begin(),
+                        files[j].second.pieces().end());
         pieces.when_false = runtime::Lifetime::of(std::move(rest));
         split_time(in, opened, indicator(pieces.when_true), pieces, [&](bool first) {
-            if (first) include_file<Item, Action, Control>(opened, files[k].first);
-            else self(self, k + 1);
+            if (first)
+                include_file<Item, Action, Control>(opened, files[k].first);
+            else
+                self(self, k + 1);
         });
     };
     from(from, 0);
 }
 
-template <typename Item, template <typename...> class Action,
-          template <typename...> class Control>
+template <typename Item, template <typename...> class Action, template <typename...> class Control>
 void Interpreter::include_file(const p::position& opened, const std::string& file) {
     if (include_depth_ >= options.limits.include_depth)
         fail(opened, "#include nested more than " + std::to_string(options.limits.include_depth) +
@@ -106,18 +112,18 @@ void Interpreter::include_file(const p::position& opened, const std::string& fil
     --include_depth_;
 }
 
-template <typename Items, template <typename...> class Action,
-          template <typename...> class Control>
+template <typename Items, template <typename...> class Action, template <typename...> class Control>
 void Interpreter::read_file(const std::string& name, const std::string& text) {
     const std::string& stored = add_source(name, text);
     Input in(stored.data(), stored.data() + stored.size(), name, 0, 1, 1);
     try {
         if constexpr (std::is_same_v<Items, grammar::scene_item>)
-            (void)p::match<grammar::scene_file, p::apply_mode::action, p::rewind_mode::dontcare, Action,
-                     Control>(in, *this);
+            (void)p::match<grammar::scene_file, p::apply_mode::action, p::rewind_mode::dontcare,
+                           Action, Control>(in, *this);
         else
             (void)p::match<p::seq<grammar::ws, p::star<Items>, p::must<grammar::include_end>>,
-                     p::apply_mode::action, p::rewind_mode::dontcare, Action, Control>(in, *this);
+                           p::apply_mode::action, p::rewind_mode::dontcare, Action, Control>(in,
+                                                                                             *this);
     } catch (const p::parse_error& error) {
         throw to_scene_error(error);
     } catch (const std::bad_alloc&) {
@@ -126,6 +132,5 @@ void Interpreter::read_file(const std::string& name, const std::string& text) {
         throw to_scene_error(p::parse_error(kOutOfMemory, in.position()));
     }
 }
-
 
 }  // namespace hexant::language

@@ -1,13 +1,15 @@
-// The Interpreter's #while and #for: the condition read again at each turn, the body replayed from its stored source.
-// Part of the Interpreter (language/interpreter_state.hpp), whose end includes it.
+// The Interpreter's #while and #for: the condition read again at each turn, the body replayed from
+// its stored source. Part of the Interpreter (language/interpreter_state.hpp), whose end includes
+// it.
 #pragma once
 
+#include "language/interpreter/reading.hpp"
 #include "language/interpreter_state.hpp"
 
 namespace hexant::language {
 
-template <typename Item, template <typename...> class Action,
-          template <typename...> class Control, typename ParseInput>
+template <typename Item, template <typename...> class Action, template <typename...> class Control,
+          typename ParseInput>
 bool Interpreter::run_while(ParseInput& in) {
     const auto opened = directive_position(in);
     if (!keyword(in, "while")) return false;
@@ -16,8 +18,8 @@ bool Interpreter::run_while(ParseInput& in) {
     return true;
 }
 
-template <typename Item, template <typename...> class Action,
-          template <typename...> class Control, typename ParseInput, typename Iterator>
+template <typename Item, template <typename...> class Action, template <typename...> class Control,
+          typename ParseInput, typename Iterator>
 void Interpreter::while_from(ParseInput& in, const p::position& opened, const Iterator& start,
                              std::size_t count) {
     for (;; ++count) {
@@ -56,8 +58,8 @@ void Interpreter::while_from(ParseInput& in, const p::position& opened, const It
     }
 }
 
-template <typename Item, template <typename...> class Action,
-          template <typename...> class Control, typename ParseInput>
+template <typename Item, template <typename...> class Action, template <typename...> class Control,
+          typename ParseInput>
 bool Interpreter::run_for(ParseInput& in) {
     const auto opened = directive_position(in);
     if (!keyword(in, "for")) return false;
@@ -80,18 +82,19 @@ bool Interpreter::run_for(ParseInput& in) {
     return true;
 }
 
-template <typename Item, template <typename...> class Action,
-          template <typename...> class Control, typename ParseInput, typename Iterator>
+template <typename Item, template <typename...> class Action, template <typename...> class Control,
+          typename ParseInput, typename Iterator>
 void Interpreter::for_from(ParseInput& in, const p::position& opened, const Iterator& start,
-                           const std::string& variable, double v, double step, const TimeFunction& to,
-                           std::size_t count) {
+                           const std::string& variable, double v, double step,
+                           const TimeFunction& to, std::size_t count) {
     for (;; v += step) {
         // Goes on while v <= to (or >= for a negative step), within
         // POV-Ray's epsilon; an end on clock splits time turn by turn, as
         // a #while on clock does.
         const TimeFunction go =
-            step > 0 ? TimeFunction::apply(runtime::TimeOp::LessEqual, v, to + runtime::kPovEpsilon)
-                     : TimeFunction::apply(runtime::TimeOp::GreaterEqual, v, to - runtime::kPovEpsilon);
+            step > 0
+                ? TimeFunction::apply(runtime::TimeOp::LessEqual, v, to + runtime::kPovEpsilon)
+                : TimeFunction::apply(runtime::TimeOp::GreaterEqual, v, to - runtime::kPovEpsilon);
         const auto turn = [&](bool on) {
             // As in POV-Ray, the variable is left one step past the end.
             declare(variable, Value{TimeFunction(v)}, true);
@@ -123,8 +126,8 @@ void Interpreter::for_from(ParseInput& in, const p::position& opened, const Iter
             } else {
                 split_time(in, opened, go, pieces, [&](bool more) {
                     if (turn(more))
-                        for_from<Item, Action, Control>(in, opened, start, variable, v + step, step, to,
-                                                        count + 1);
+                        for_from<Item, Action, Control>(in, opened, start, variable, v + step, step,
+                                                        to, count + 1);
                 });
                 return;
             }
@@ -133,6 +136,5 @@ void Interpreter::for_from(ParseInput& in, const p::position& opened, const Iter
         ++count;
     }
 }
-
 
 }  // namespace hexant::language

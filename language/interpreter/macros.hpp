@@ -1,13 +1,13 @@
-// The Interpreter's #macro: definitions and calls, the body read from its stored source with its own positions.
-// Part of the Interpreter (language/interpreter_state.hpp), whose end includes it.
+// The Interpreter's #macro: definitions and calls, the body read from its stored source with its
+// own positions. Part of the Interpreter (language/interpreter_state.hpp), whose end includes it.
 #pragma once
 
 #include "language/interpreter_state.hpp"
 
 namespace hexant::language {
 
-template <typename Item, template <typename...> class Action,
-          template <typename...> class Control, typename ParseInput>
+template <typename Item, template <typename...> class Action, template <typename...> class Control,
+          typename ParseInput>
 bool Interpreter::define_macro(ParseInput& in) {
     const auto opened = directive_position(in);
     if (!keyword(in, "macro")) return false;
@@ -30,14 +30,14 @@ bool Interpreter::define_macro(ParseInput& in) {
     const char* body_end = in.current();
     const Divider d = next_divider(in);
     if (d != Divider::End) unclosed(opened, "#macro", d, in);
-    auto macro = std::make_shared<Macro>(Macro{std::move(name), std::move(parameters), body_begin,
-                                               body_end, body_position, opened});
+    auto macro = std::make_shared<Macro>(
+        Macro{std::move(name), std::move(parameters), body_begin, body_end, body_position, opened});
     declare(macro->name, Value{std::shared_ptr<const Macro>(macro)}, false);
     return true;
 }
 
-template <typename Item, template <typename...> class Action,
-          template <typename...> class Control, typename ParseInput>
+template <typename Item, template <typename...> class Action, template <typename...> class Control,
+          typename ParseInput>
 bool Interpreter::call_macro(ParseInput& in) {
     const char* b = in.current();
     const char* e = in.end();
@@ -50,8 +50,8 @@ bool Interpreter::call_macro(ParseInput& in) {
     const auto macro = v->as<std::shared_ptr<const Macro>>();
     const auto call_place = in.position();
     in.bump_in_this_line(static_cast<std::size_t>(q - b));
-    (void)p::match<grammar::ws, p::apply_mode::nothing, p::rewind_mode::dontcare, p::nothing, p::normal>(
-        in);
+    (void)p::match<grammar::ws, p::apply_mode::nothing, p::rewind_mode::dontcare, p::nothing,
+                   p::normal>(in);
     read<grammar::call_open, Action, Control>(in);
     open_frame();
     // An argument that is just a declared name is passed by reference, as in
@@ -62,8 +62,10 @@ bool Interpreter::call_macro(ParseInput& in) {
             const char* start = in.current();
             read<grammar::call_argument, Action, Control>(in);
             std::string text(start, in.current());
-            while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
-            const bool is_name = !text.empty() && !std::isdigit(static_cast<unsigned char>(text[0])) &&
+            while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back())))
+                text.pop_back();
+            const bool is_name = !text.empty() &&
+                                 !std::isdigit(static_cast<unsigned char>(text[0])) &&
                                  std::all_of(text.begin(), text.end(), [](char c) {
                                      return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
                                  });
@@ -98,7 +100,8 @@ bool Interpreter::call_macro(ParseInput& in) {
     Input body(macro->body_begin, macro->body_end, at.source, at.byte, at.line, at.column);
     try {
         (void)p::match<p::seq<grammar::ws, p::star<Item>, p::must<grammar::macro_body_end>>,
-                 p::apply_mode::action, p::rewind_mode::dontcare, Action, Control>(body, *this);
+                       p::apply_mode::action, p::rewind_mode::dontcare, Action, Control>(body,
+                                                                                         *this);
     } catch (const unsupported_use&) {
         // A #declare around the call may keep it as source and read on.
         --macro_depth_;
@@ -138,6 +141,5 @@ bool Interpreter::call_macro(ParseInput& in) {
     }
     return true;
 }
-
 
 }  // namespace hexant::language

@@ -1,5 +1,6 @@
-// The Interpreter's Reading helpers of the directives: the block being built, words, names and the dividers (#else, #end, ...).
-// Part of the Interpreter (language/interpreter_state.hpp), whose end includes it.
+// The Interpreter's Reading helpers of the directives: the block being built, words, names and the
+// dividers (#else, #end, ...). Part of the Interpreter (language/interpreter_state.hpp), whose end
+// includes it.
 #pragma once
 
 #include "language/interpreter_state.hpp"
@@ -31,14 +32,15 @@ void Interpreter::unclosed(const p::position& opened, const char* directive, Div
                            const ParseInput& in) {
     static const char* names[] = {"", "#else", "#elseif", "#end", "#case", "#range", "#break"};
     if (found == Divider::None) {
-        if (in.empty())
-            fail(opened, std::string(directive) + " has no matching #end");
+        if (in.empty()) fail(opened, std::string(directive) + " has no matching #end");
         fail(in.position(), std::string("this does not belong inside ") + directive +
                                 " here: expected an item of the enclosing block, a directive "
-                                "or #end" + found_text(in));
+                                "or #end" +
+                                found_text(in));
     }
-    fail(in.position(), std::string(names[static_cast<int>(found)]) + " does not belong here, in the " +
-                            directive + " opened at line " + std::to_string(opened.line));
+    fail(in.position(), std::string(names[static_cast<int>(found)]) +
+                            " does not belong here, in the " + directive + " opened at line " +
+                            std::to_string(opened.line));
 }
 
 template <typename ParseInput>
@@ -49,8 +51,8 @@ bool Interpreter::keyword(ParseInput& in, std::string_view word) {
     if (b + n != in.end() && (std::isalnum(static_cast<unsigned char>(b[n])) || b[n] == '_'))
         return false;
     in.bump_in_this_line(n);
-    (void)p::match<grammar::ws, p::apply_mode::nothing, p::rewind_mode::dontcare, p::nothing, p::normal>(
-        in);
+    (void)p::match<grammar::ws, p::apply_mode::nothing, p::rewind_mode::dontcare, p::nothing,
+                   p::normal>(in);
     return true;
 }
 
@@ -62,8 +64,8 @@ std::string Interpreter::identifier(ParseInput& in, const char* what) {
                   p::normal>(in))
         fail(position, std::string("expected ") + what + found_text(in));
     std::string result(b, in.current());
-    (void)p::match<grammar::ws, p::apply_mode::nothing, p::rewind_mode::dontcare, p::nothing, p::normal>(
-        in);
+    (void)p::match<grammar::ws, p::apply_mode::nothing, p::rewind_mode::dontcare, p::nothing,
+                   p::normal>(in);
     return result;
 }
 
@@ -78,18 +80,23 @@ Divider Interpreter::next_divider(ParseInput& in) {
     while (q != e && (std::isalnum(static_cast<unsigned char>(*q)) || *q == '_')) ++q;
     const std::string_view word(w, static_cast<std::size_t>(q - w));
     Divider d = Divider::None;
-    if (word == "else") d = Divider::Else;
-    else if (word == "elseif") d = Divider::Elseif;
-    else if (word == "end") d = Divider::End;
-    else if (word == "case") d = Divider::Case;
-    else if (word == "range") d = Divider::Range;
-    else if (word == "break") d = Divider::Break;
+    if (word == "else")
+        d = Divider::Else;
+    else if (word == "elseif")
+        d = Divider::Elseif;
+    else if (word == "end")
+        d = Divider::End;
+    else if (word == "case")
+        d = Divider::Case;
+    else if (word == "range")
+        d = Divider::Range;
+    else if (word == "break")
+        d = Divider::Break;
     if (d == Divider::None) return d;
     in.bump_in_this_line(static_cast<std::size_t>(q - b));
-    (void)p::match<grammar::ws, p::apply_mode::nothing, p::rewind_mode::dontcare, p::nothing, p::normal>(
-        in);
+    (void)p::match<grammar::ws, p::apply_mode::nothing, p::rewind_mode::dontcare, p::nothing,
+                   p::normal>(in);
     return d;
 }
-
 
 }  // namespace hexant::language

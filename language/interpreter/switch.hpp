@@ -2,12 +2,13 @@
 // Part of the Interpreter (language/interpreter_state.hpp), whose end includes it.
 #pragma once
 
+#include "language/interpreter/reading.hpp"
 #include "language/interpreter_state.hpp"
 
 namespace hexant::language {
 
-template <typename Item, template <typename...> class Action,
-          template <typename...> class Control, typename ParseInput>
+template <typename Item, template <typename...> class Action, template <typename...> class Control,
+          typename ParseInput>
 bool Interpreter::run_switch(ParseInput& in) {
     const auto opened = directive_position(in);
     if (!keyword(in, "switch")) return false;
@@ -16,8 +17,8 @@ bool Interpreter::run_switch(ParseInput& in) {
     return true;
 }
 
-template <typename Item, template <typename...> class Action,
-          template <typename...> class Control, typename ParseInput>
+template <typename Item, template <typename...> class Action, template <typename...> class Control,
+          typename ParseInput>
 void Interpreter::switch_from(ParseInput& in, const p::position& opened, const TimeFunction& value,
                               Divider d, bool matched, bool executing) {
     for (;;) {
@@ -37,9 +38,10 @@ void Interpreter::switch_from(ParseInput& in, const p::position& opened, const T
                     try {
                         const TimeFunction lo = to_float(r[0], "the low end of #range");
                         const TimeFunction hi = to_float(r[1], "the high end of #range");
-                        hit = TimeFunction::apply(runtime::TimeOp::And,
-                                                  TimeFunction::apply(runtime::TimeOp::GreaterEqual, value, lo),
-                                                  TimeFunction::apply(runtime::TimeOp::LessEqual, value, hi));
+                        hit = TimeFunction::apply(
+                            runtime::TimeOp::And,
+                            TimeFunction::apply(runtime::TimeOp::GreaterEqual, value, lo),
+                            TimeFunction::apply(runtime::TimeOp::LessEqual, value, hi));
                     } catch (const ValueError& e) {
                         fail(at, e.what());
                     }
@@ -48,13 +50,16 @@ void Interpreter::switch_from(ParseInput& in, const p::position& opened, const T
                 // it runs): the rest of the #switch once for each side.
                 std::optional<bool> decided;
                 runtime::TruthPieces pieces;
-                if (hit.is_constant()) decided = runtime::pov_true(hit.constant());
-                else if (!executing) decided = whole_truth(pieces = split_domain(hit, at));
+                if (hit.is_constant())
+                    decided = runtime::pov_true(hit.constant());
+                else if (!executing)
+                    decided = whole_truth(pieces = split_domain(hit, at));
                 if (!executing && !decided) {
                     split_time(in, at, hit, pieces, [&](bool taken) {
                         const Divider next =
                             taken ? run_body<Item, Action, Control>(in) : skip_body<Control>(in);
-                        switch_from<Item, Action, Control>(in, opened, value, next, matched || taken, taken);
+                        switch_from<Item, Action, Control>(in, opened, value, next,
+                                                           matched || taken, taken);
                     });
                     return;
                 }
@@ -78,11 +83,12 @@ void Interpreter::switch_from(ParseInput& in, const p::position& opened, const T
                 }
                 d = skip_body<Control>(in);
                 break;
-            case Divider::End: return;
-            default: unclosed(opened, "#switch", d, in);
+            case Divider::End:
+                return;
+            default:
+                unclosed(opened, "#switch", d, in);
         }
     }
 }
-
 
 }  // namespace hexant::language

@@ -9,11 +9,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <glm/vec3.hpp>
 #include <limits>
 
-#include "runtime/time/interval.hpp"
+#include <glm/vec3.hpp>
+
 #include "runtime/geometry/spacetime.hpp"
+#include "runtime/time/interval.hpp"
 
 namespace hexant::runtime {
 

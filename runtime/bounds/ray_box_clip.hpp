@@ -21,8 +21,8 @@ inline bool clip_ray_to_box(const glm::dvec3& origin, const glm::dvec3& directio
     constexpr double kWiden = 8.0 * 1.1102230246251565e-16;
     for (int i = 0; i < 3; ++i) {
         if (!(box[i].lo <= box[i].hi)) return false;
-        const double scale = std::max({std::fabs(box[i].lo), std::fabs(box[i].hi),
-                                       std::fabs(origin[i])});
+        const double scale =
+            std::max({std::fabs(box[i].lo), std::fabs(box[i].hi), std::fabs(origin[i])});
         const double lo = box[i].lo - kWiden * scale, hi = box[i].hi + kWiden * scale;
         if (direction[i] == 0.0) {
             if (origin[i] < lo || origin[i] > hi) return false;

@@ -64,10 +64,10 @@ class SlabRay {
 
   private:
     Ray4 ray_;
-    std::array<double, kSlabCount> origin_dot_;     // n · o
-    std::array<double, kSlabCount> inverse_dot_;    // 1 / (n · d); inf when n · d = 0
-    std::array<bool, kSlabCount> parallel_;         // n · d == 0
-    std::array<double, kSlabCount> origin_error_;   // bound of |computed - exact| n · o
+    std::array<double, kSlabCount> origin_dot_;    // n · o
+    std::array<double, kSlabCount> inverse_dot_;   // 1 / (n · d); inf when n · d = 0
+    std::array<bool, kSlabCount> parallel_;        // n · d == 0
+    std::array<double, kSlabCount> origin_error_;  // bound of |computed - exact| n · o
     std::array<double, kSlabCount> direction_error_;
 };
 

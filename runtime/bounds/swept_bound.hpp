@@ -9,10 +9,10 @@
 #include <algorithm>
 #include <vector>
 
-#include "runtime/time/interval.hpp"
-#include "runtime/objects/model_support.hpp"
 #include "runtime/bounds/slab_bound.hpp"
 #include "runtime/geometry/spacetime.hpp"
+#include "runtime/objects/model_support.hpp"
+#include "runtime/time/interval.hpp"
 
 namespace hexant::runtime {
 

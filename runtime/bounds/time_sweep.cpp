@@ -15,7 +15,8 @@ constexpr std::uint16_t kTop = 65535;
 // The float at or above x (+infinity past the floats' range or for NaN,
 // which makes a chord's box infinite: the cached piece is kept).
 float float_up(double x) {
-    if (!(x <= double(std::numeric_limits<float>::max()))) return std::numeric_limits<float>::infinity();
+    if (!(x <= double(std::numeric_limits<float>::max())))
+        return std::numeric_limits<float>::infinity();
     // Below the floats' range (a conversion there is undefined): the lowest float is above x.
     if (x < -double(std::numeric_limits<float>::max())) return -std::numeric_limits<float>::max();
     float f = float(x);
@@ -46,10 +47,14 @@ Box4 TimeSweep::whole() const {
 std::size_t TimeSweep::step_count() const {
     const std::size_t n = piece_count();
     switch (layout_) {
-        case Layout::Whole: return 0;
-        case Layout::Still: return 6 * n;
-        case Layout::Shared: return 6 * (n + 1);
-        case Layout::Separate: return 12 * n;
+        case Layout::Whole:
+            return 0;
+        case Layout::Still:
+            return 6 * n;
+        case Layout::Shared:
+            return 6 * (n + 1);
+        case Layout::Separate:
+            return 12 * n;
     }
     return 0;
 }
@@ -156,7 +161,8 @@ void TimeSweep::encode_pieces(const std::vector<MovingBox>& level) {
                 q += 12;
             }
             break;
-        case Layout::Whole: break;
+        case Layout::Whole:
+            break;
     }
 }
 
@@ -167,10 +173,17 @@ MovingBox TimeSweep::moving_piece(std::size_t i) const {
     const std::uint16_t* start = nullptr;
     const std::uint16_t* end = nullptr;
     switch (layout_) {
-        case Layout::Still: start = end = &steps_[6 * i]; break;
-        case Layout::Shared: start = &steps_[6 * i], end = start + 6; break;
-        case Layout::Separate: start = &steps_[12 * i], end = start + 6; break;
-        case Layout::Whole: break;
+        case Layout::Still:
+            start = end = &steps_[6 * i];
+            break;
+        case Layout::Shared:
+            start = &steps_[6 * i], end = start + 6;
+            break;
+        case Layout::Separate:
+            start = &steps_[12 * i], end = start + 6;
+            break;
+        case Layout::Whole:
+            break;
     }
     MovingBox m;
     m.time = t;
@@ -490,8 +503,9 @@ TimeSweep TimeSweep::of(const IntelligentObject& object, const Interval& time, i
                 const double area = 2.0 * (e.x * e.y + e.y * e.z + e.z * e.x);
                 saved += pricing.ray_density * area * piece_width * 0.5 * (1.0 - size / swept);
             }
-            if (needed && (!(pricing.ray_density > 0.0) ||
-                           saved * pricing.object_cost >= pricing.evaluation_cost * double(level.size())))
+            if (needed &&
+                (!(pricing.ray_density > 0.0) ||
+                 saved * pricing.object_cost >= pricing.evaluation_cost * double(level.size())))
                 break;
             level = std::move(coarser);
             --depth;

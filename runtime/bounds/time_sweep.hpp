@@ -44,15 +44,16 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <glm/vec3.hpp>
 #include <limits>
 #include <memory>
 #include <utility>
 #include <vector>
 
-#include "runtime/objects/intelligent_object.hpp"
+#include <glm/vec3.hpp>
+
 #include "runtime/bounds/moving_box.hpp"
 #include "runtime/geometry/spacetime.hpp"
+#include "runtime/objects/intelligent_object.hpp"
 
 namespace hexant::runtime {
 
@@ -73,14 +74,14 @@ inline double dyadic_time(const Interval& range, int level, std::uint64_t index)
 // ray_density * (its box's surface area) * (its time), the rays of an
 // animation spreading evenly over the scene's area and time.
 struct SweepPricing {
-    double ray_density = 0.0;       // rays per unit of area and of time; 0: free
+    double ray_density = 0.0;        // rays per unit of area and of time; 0: free
     double evaluation_cost = 100.0;  // one box evaluation (interval), in node tests
     double point_cost = 20.0;        // one placed box at an instant (doubles), in node tests
-    double object_cost = 3.0;       // one object test, in node tests
+    double object_cost = 3.0;        // one object test, in node tests
 };
 
 class TimeSweep {
-public:
+  public:
     TimeSweep() = default;
     // A sweep moved from is empty (its pieces went with the move).
     TimeSweep(TimeSweep&& other) noexcept { *this = std::move(other); }
@@ -148,7 +149,7 @@ public:
     // Heap and inline bytes this sweep takes.
     std::size_t bytes() const { return sizeof(*this) + step_count() * sizeof(std::uint16_t); }
 
-private:
+  private:
     // How the pieces are kept (the storage note above); Whole: one box held
     // still over the whole time, no pieces.
     enum class Layout : std::uint8_t { Whole, Still, Shared, Separate };

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+
 #include <glm/glm.hpp>
 
 #include "runtime/geometry/ray3.hpp"

@@ -12,8 +12,9 @@
 #pragma once
 
 #include <cmath>
-#include <glm/glm.hpp>
 #include <optional>
+
+#include <glm/glm.hpp>
 
 #include "runtime/geometry/ray3.hpp"
 #include "runtime/geometry/stable_arithmetic.hpp"

@@ -36,6 +36,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+
 #include <glm/glm.hpp>
 
 #include "runtime/geometry/ray3.hpp"
@@ -79,8 +80,8 @@ inline glm::dvec3 offset_ray(const glm::dvec3& p, const glm::dvec3& n) {
 // deformation's sines and cosines (a few ulps each, deformation.hpp) and
 // the way back into the shape's space of a secondary ray, for a
 // well-conditioned map. Formed once per shaded hit (Primitive::complete).
-inline glm::dvec3 world_error(const glm::dmat3& linear, const glm::dvec3& p, const glm::dvec3& world,
-                              const glm::dvec3& error) {
+inline glm::dvec3 world_error(const glm::dmat3& linear, const glm::dvec3& p,
+                              const glm::dvec3& world, const glm::dvec3& error) {
     const glm::dvec3 image = linear * p;
     glm::dvec3 out;
     for (int i = 0; i < 3; ++i) {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cmath>
+
 #include <glm/glm.hpp>
 
 namespace hexant::runtime::geometry {

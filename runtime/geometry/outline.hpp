@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cstddef>
+
 #include <glm/glm.hpp>
 
 #include "runtime/geometry/stable_arithmetic.hpp"

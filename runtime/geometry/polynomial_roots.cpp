@@ -141,8 +141,9 @@ double middle_double(double l, double r) {
     if (l == 0.0) l = 0.0;  // -0 and +0 share a key
     if (r == 0.0) r = 0.0;
     const std::int64_t a = ordered_key(l), b = ordered_key(r);
-    const std::int64_t mid = a + static_cast<std::int64_t>(
-                                     (static_cast<std::uint64_t>(b) - static_cast<std::uint64_t>(a)) / 2);
+    const std::int64_t mid =
+        a + static_cast<std::int64_t>(
+                (static_cast<std::uint64_t>(b) - static_cast<std::uint64_t>(a)) / 2);
     return from_key(mid);
 }
 
@@ -215,7 +216,8 @@ int solve(const Poly& p, double a, double b, double* out) {
             continue;
         }
         if (i + 1 < m && signs[i + 1] != 0 && signs[i + 1] != signs[i])
-            add(bracketed_root(p, xs[i], xs[i + 1], signs[i], values[i].value, values[i + 1].value));
+            add(bracketed_root(p, xs[i], xs[i + 1], signs[i], values[i].value,
+                               values[i + 1].value));
     }
     return count;
 }
@@ -249,13 +251,15 @@ PolynomialRoots polynomial_roots(std::span<const double> coefficients, double lo
     }
     if (n == 2) {
         const double a2 = coefficients[2], b1 = coefficients[1], c0 = coefficients[0];
-        const double disc = std::fma(b1, b1, -4.0 * a2 * c0) + std::fma(-4.0 * a2, c0, 4.0 * a2 * c0);
+        const double disc =
+            std::fma(b1, b1, -4.0 * a2 * c0) + std::fma(-4.0 * a2, c0, 4.0 * a2 * c0);
         if (std::isfinite(disc) && disc > 1e-8 * b1 * b1 && b1 != 0.0) {
             const double q = -0.5 * (b1 + std::copysign(std::sqrt(disc), b1));
             double x1 = q / a2, x2 = c0 / q;
             if (x1 > x2) std::swap(x1, x2);
             for (const double x : {x1, x2})
-                if (std::isfinite(x) && x >= lo && x <= hi && (roots.count == 0 || x != roots.root[0]))
+                if (std::isfinite(x) && x >= lo && x <= hi &&
+                    (roots.count == 0 || x != roots.root[0]))
                     roots.root[roots.count++] = x;
             return roots;
         }

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+
 #include <glm/glm.hpp>
 
 namespace hexant::runtime::geometry {

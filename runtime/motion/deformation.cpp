@@ -25,16 +25,14 @@ glm::dmat3 twist_jacobian(const glm::dvec3& p, const DeformationFrame<double>& f
     const double angle = k * q[0];
     const double cs = std::cos(angle), sn = std::sin(angle);
     const double s = q[1] * cs - q[2] * sn, c = q[1] * sn + q[2] * cs;
-    return to_object_frame(
-        from_rows({1.0, 0.0, 0.0}, {-k * c, cs, -sn}, {k * s, sn, cs}), f);
+    return to_object_frame(from_rows({1.0, 0.0, 0.0}, {-k * c, cs, -sn}, {k * s, sn, cs}), f);
 }
 
 glm::dmat3 taper_jacobian(const glm::dvec3& p, const DeformationFrame<double>& f, double amount) {
     const auto q = to_local(std::array<double, 3>{p.x, p.y, p.z}, f);
     const double factor = 1.0 + amount * q[0];
     return to_object_frame(
-        from_rows({1.0, 0.0, 0.0}, {amount * q[1], factor, 0.0}, {amount * q[2], 0.0, factor}),
-        f);
+        from_rows({1.0, 0.0, 0.0}, {amount * q[1], factor, 0.0}, {amount * q[2], 0.0, factor}), f);
 }
 
 // d(a S(θ))/da = d(sin(k a) / k)/da = cosθ, d(a C(θ))/da = sinθ.

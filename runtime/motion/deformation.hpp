@@ -367,8 +367,8 @@ inline Interval divide_by_factor(const Interval& x, const Interval& f) {
         r = hull(r, x / Interval(std::max(std::max(f.lo, 0.0), kMinTaperFactor),
                                  std::max(f.hi, kMinTaperFactor)));
     if (f.lo < 0.0)
-        r = hull(r, x / Interval(std::min(f.lo, -kMinTaperFactor),
-                                 std::min(f.hi, -kMinTaperFactor)));
+        r = hull(r,
+                 x / Interval(std::min(f.lo, -kMinTaperFactor), std::min(f.hi, -kMinTaperFactor)));
     return r;
 }
 

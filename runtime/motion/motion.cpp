@@ -1,4 +1,3 @@
-#include "runtime/work_counts.hpp"
 #include "runtime/motion/motion.hpp"
 
 #include <algorithm>
@@ -12,6 +11,7 @@
 #include <glm/matrix.hpp>
 
 #include "runtime/time/time_tape.hpp"
+#include "runtime/work_counts.hpp"
 
 namespace hexant::runtime {
 
@@ -177,8 +177,10 @@ struct MotionEvaluator {
             case TransformKind::Rotate: {
                 const auto v = vector(s);
                 if (!inverse)
-                    return axis_rotation(2, v[2]) * (axis_rotation(1, v[1]) * axis_rotation(0, v[0]));
-                return axis_rotation(0, -v[0]) * (axis_rotation(1, -v[1]) * axis_rotation(2, -v[2]));
+                    return axis_rotation(2, v[2]) *
+                           (axis_rotation(1, v[1]) * axis_rotation(0, v[0]));
+                return axis_rotation(0, -v[0]) *
+                       (axis_rotation(1, -v[1]) * axis_rotation(2, -v[2]));
             }
             case TransformKind::Matrix: {
                 // POV-Ray's row i (glm's column i) is the image of axis i;
@@ -187,7 +189,8 @@ struct MotionEvaluator {
                     for (int j = 0; j < 3; ++j) m.m[j][i] = amount(s, i * 3 + j);
                 return inverse ? inverse_of(m) : m;
             }
-            default: break;
+            default:
+                break;
         }
         throw std::logic_error("Motion: a deformation step in an affine stage");
     }
@@ -276,7 +279,8 @@ struct MotionEvaluator {
         ++this_thread_work.deformation_maps;
         const Motion::Deformation& d = motion.deformation_of(stage);
         const N amount = value(d.amount);
-        if (stage.fixed_frame) return deform_in(stage.kind, d.frame, p, amount, invert != stage.inverse);
+        if (stage.fixed_frame)
+            return deform_in(stage.kind, d.frame, p, amount, invert != stage.inverse);
         const std::array<N, 3> axis{value(d.axis[0]), value(d.axis[1]), value(d.axis[2])};
         return deform_in(stage.kind, deformation_frame(axis), p, amount, invert != stage.inverse);
     }
@@ -285,10 +289,14 @@ struct MotionEvaluator {
     static std::array<N, 3> deform_in(Motion::StageKind kind, const DeformationFrame<M>& f,
                                       const std::array<N, 3>& p, const N& amount, bool inverse) {
         switch (kind) {
-            case Motion::StageKind::Twist: return inverse ? untwist(p, f, amount) : twist(p, f, amount);
-            case Motion::StageKind::Taper: return inverse ? untaper(p, f, amount) : taper(p, f, amount);
-            case Motion::StageKind::Bend: return inverse ? unbend(p, f, amount) : bend(p, f, amount);
-            default: break;
+            case Motion::StageKind::Twist:
+                return inverse ? untwist(p, f, amount) : twist(p, f, amount);
+            case Motion::StageKind::Taper:
+                return inverse ? untaper(p, f, amount) : taper(p, f, amount);
+            case Motion::StageKind::Bend:
+                return inverse ? unbend(p, f, amount) : bend(p, f, amount);
+            default:
+                break;
         }
         return p;
     }
@@ -299,8 +307,10 @@ struct MotionEvaluator {
             case Motion::StageKind::Fixed:
                 return invert ? motion.fixed_of(stage).backward.apply(p)
                               : motion.fixed_of(stage).forward.apply(p);
-            case Motion::StageKind::Moving: return stage_map(stage, invert).apply(p);
-            default: return deform(stage, p, invert);
+            case Motion::StageKind::Moving:
+                return stage_map(stage, invert).apply(p);
+            default:
+                return deform(stage, p, invert);
         }
     }
 };
@@ -427,10 +437,16 @@ void Motion::finish_stages(const Arrays& a) {
 }
 
 Motion::Motion(const Motion& o)
-    : moving_(o.moving_), fixed_affine_(o.fixed_affine_), affine_(o.affine_),
-      identity_(o.identity_), stage_count_(o.stage_count_), fixed_count_(o.fixed_count_),
-      step_count_(o.step_count_), parameter_count_(o.parameter_count_),
-      deformation_count_(o.deformation_count_), tape_(o.tape_) {
+    : moving_(o.moving_),
+      fixed_affine_(o.fixed_affine_),
+      affine_(o.affine_),
+      identity_(o.identity_),
+      stage_count_(o.stage_count_),
+      fixed_count_(o.fixed_count_),
+      step_count_(o.step_count_),
+      parameter_count_(o.parameter_count_),
+      deformation_count_(o.deformation_count_),
+      tape_(o.tape_) {
     if (o.block_) {
         block_ = std::make_unique_for_overwrite<std::byte[]>(o.block_bytes());
         std::memcpy(block_.get(), o.block_.get(), o.block_bytes());
@@ -438,12 +454,16 @@ Motion::Motion(const Motion& o)
 }
 
 Motion::Motion(Motion&& o) noexcept
-    : moving_(std::exchange(o.moving_, false)), fixed_affine_(std::exchange(o.fixed_affine_, true)),
-      affine_(std::exchange(o.affine_, true)), identity_(std::exchange(o.identity_, true)),
-      stage_count_(std::exchange(o.stage_count_, 0)), fixed_count_(std::exchange(o.fixed_count_, 0)),
+    : moving_(std::exchange(o.moving_, false)),
+      fixed_affine_(std::exchange(o.fixed_affine_, true)),
+      affine_(std::exchange(o.affine_, true)),
+      identity_(std::exchange(o.identity_, true)),
+      stage_count_(std::exchange(o.stage_count_, 0)),
+      fixed_count_(std::exchange(o.fixed_count_, 0)),
       step_count_(std::exchange(o.step_count_, 0)),
       parameter_count_(std::exchange(o.parameter_count_, 0)),
-      deformation_count_(std::exchange(o.deformation_count_, 0)), block_(std::move(o.block_)),
+      deformation_count_(std::exchange(o.deformation_count_, 0)),
+      block_(std::move(o.block_)),
       tape_(std::move(o.tape_)) {}
 
 Motion& Motion::operator=(Motion&& o) noexcept {
@@ -573,8 +593,8 @@ std::vector<double> Motion::twist_reaches(const IntervalBox& object_box, const I
         if (stage.kind == StageKind::Twist && stage.fixed_frame) {
             const IntervalBox local = to_local(box, deformation_of(stage).frame);
             const double far = deformation_detail::section_radius(local).hi;
-            const double largest = std::max({local[0].magnitude(), local[1].magnitude(),
-                                             local[2].magnitude()});
+            const double largest =
+                std::max({local[0].magnitude(), local[1].magnitude(), local[2].magnitude()});
             if (std::isfinite(far) && std::isfinite(largest))
                 reach = interval_detail::next_up(far + kDrift * (far + largest));
         }
@@ -585,7 +605,7 @@ std::vector<double> Motion::twist_reaches(const IntervalBox& object_box, const I
 }
 
 std::optional<IntervalBox> Motion::to_object_within(const IntervalBox& p, const Interval& t,
-                                                     const std::vector<double>& reaches) const {
+                                                    const std::vector<double>& reaches) const {
     if (reaches.size() != stage_count_) return to_object(p, t);
     const MotionEvaluator<Interval> e(*this, t);
     IntervalBox q = p;
@@ -664,8 +684,8 @@ IntervalBox Motion::world_box(const IntervalBox& object_box, const Interval& t) 
     // inside both answers.
     IntervalBox whole = to_world(object_box, t);
     IntervalBox pieces{Interval(interval_detail::kInf, -interval_detail::kInf),
-                        Interval(interval_detail::kInf, -interval_detail::kInf),
-                        Interval(interval_detail::kInf, -interval_detail::kInf)};
+                       Interval(interval_detail::kInf, -interval_detail::kInf),
+                       Interval(interval_detail::kInf, -interval_detail::kInf)};
     for (int corner = 0; corner < 8; ++corner) {
         IntervalBox half;
         for (int i = 0; i < 3; ++i) {
@@ -698,17 +718,24 @@ glm::dmat3 Motion::jacobian_at(const glm::dvec3& object_point, double t) const {
             const Deformation& d = deformation_of(stage);
             const double amount = e.value(d.amount);
             const DeformationFrame<double> frame =
-                stage.fixed_frame ? d.frame
-                                  : deformation_frame(std::array<double, 3>{
-                                        e.value(d.axis[0]), e.value(d.axis[1]), e.value(d.axis[2])});
+                stage.fixed_frame
+                    ? d.frame
+                    : deformation_frame(std::array<double, 3>{
+                          e.value(d.axis[0]), e.value(d.axis[1]), e.value(d.axis[2])});
             // An inverse stage's Jacobian is the inverse of the forward one
             // at the stage's output, its preimage.
             const std::array<double, 3> at = stage.inverse ? e.through(stage, p, false) : p;
             const glm::dvec3 x(at[0], at[1], at[2]);
             switch (stage.kind) {
-                case StageKind::Twist: step = twist_jacobian(x, frame, amount); break;
-                case StageKind::Taper: step = taper_jacobian(x, frame, amount); break;
-                default: step = bend_jacobian(x, frame, amount); break;
+                case StageKind::Twist:
+                    step = twist_jacobian(x, frame, amount);
+                    break;
+                case StageKind::Taper:
+                    step = taper_jacobian(x, frame, amount);
+                    break;
+                default:
+                    step = bend_jacobian(x, frame, amount);
+                    break;
             }
             if (stage.inverse) step = glm::inverse(step);
         }

@@ -12,21 +12,22 @@
 
 #include <array>
 #include <cstdint>
-#include <glm/mat3x3.hpp>
-#include <glm/mat4x4.hpp>
-#include <glm/vec3.hpp>
 #include <memory>
 #include <optional>
 #include <span>
 #include <vector>
 
-#include "runtime/time/clock_line.hpp"
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
+
 #include "runtime/motion/deformation.hpp"
+#include "runtime/motion/transform.hpp"
+#include "runtime/time/clock_line.hpp"
 #include "runtime/time/dual.hpp"
 #include "runtime/time/interval.hpp"
 #include "runtime/time/interval_jet.hpp"
 #include "runtime/time/interval_matrix.hpp"
-#include "runtime/motion/transform.hpp"
 
 namespace hexant::runtime {
 
@@ -112,7 +113,7 @@ class Motion {
     // the object maps into it, which the box alone, turned into object
     // space, cannot show (a stiff twist's box comes out around the axis).
     std::optional<IntervalBox> to_object_within(const IntervalBox& p, const Interval& t,
-                                                 const std::vector<double>& reaches) const;
+                                                const std::vector<double>& reaches) const;
 
     // A box holding the images of all points of object_box at all times in
     // t. For deformations the box is also cut into a few pieces, and the

@@ -56,8 +56,7 @@ double linear(const Spline::Key& a, const Spline::Key& b, int k, double p) {
 }
 
 // The parabola through three keys, in Lagrange form.
-double parabola(const Spline::Key& a, const Spline::Key& b, const Spline::Key& c, int k,
-                double p) {
+double parabola(const Spline::Key& a, const Spline::Key& b, const Spline::Key& c, int k, double p) {
     const double la = (p - b.t) * (p - c.t) / ((a.t - b.t) * (a.t - c.t));
     const double lb = (p - a.t) * (p - c.t) / ((b.t - a.t) * (b.t - c.t));
     const double lc = (p - a.t) * (p - b.t) / ((c.t - a.t) * (c.t - b.t));
@@ -86,7 +85,8 @@ double catmull_rom(const std::vector<Spline::Key>& keys, std::size_t j, int k, d
 
 Spline::Spline(SplineKind kind, std::vector<Key> keys, int dimensions)
     : kind_(kind), dimensions_(dimensions) {
-    if (dimensions < 1 || dimensions > 5) throw std::invalid_argument("spline dimensions must be 1..5");
+    if (dimensions < 1 || dimensions > 5)
+        throw std::invalid_argument("spline dimensions must be 1..5");
     // Insert in the order given, as POV-Ray's parser does.
     for (const Key& key : keys) {
         const std::size_t i = segment_end(keys_, key.t);
@@ -158,7 +158,9 @@ Vector5 Spline::evaluate(double p) const {
 
     for (int k = 0; k < 5; ++k) {
         switch (kind_) {
-            case SplineKind::Linear: v[k] = linear(keys_[i - 1], keys_[i], k, p); break;
+            case SplineKind::Linear:
+                v[k] = linear(keys_[i - 1], keys_[i], k, p);
+                break;
             case SplineKind::Quadratic:
                 if (n == 2)
                     v[k] = linear(keys_[0], keys_[1], k, p);
@@ -179,7 +181,8 @@ Vector5 Spline::evaluate(double p) const {
                 v[k] = a.value[k] + x * (slope + x * (ma / 2 + x * (mb - ma) / (6 * h)));
                 break;
             }
-            case SplineKind::Cubic: break;
+            case SplineKind::Cubic:
+                break;
         }
     }
     return v;

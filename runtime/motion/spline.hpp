@@ -13,7 +13,7 @@ using Vector5 = std::array<double, 5>;
 enum class SplineKind { Linear, Quadratic, Cubic, Natural };
 
 class Spline {
-public:
+  public:
     struct Key {
         double t;
         Vector5 value;
@@ -29,7 +29,7 @@ public:
     // The spline's value at t, as POV-Ray computes S(t).
     Vector5 evaluate(double t) const;
 
-private:
+  private:
     SplineKind kind_;
     std::vector<Key> keys_;  // sorted by t, as POV-Ray keeps them
     int dimensions_;

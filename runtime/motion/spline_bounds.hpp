@@ -15,8 +15,8 @@
 #include <array>
 #include <vector>
 
-#include "runtime/time/interval.hpp"
 #include "runtime/motion/spline.hpp"
+#include "runtime/time/interval.hpp"
 
 namespace hexant::runtime {
 

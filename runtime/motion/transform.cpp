@@ -62,14 +62,15 @@ glm::dmat4 TransformStep::matrix_at(double t) const {
                 for (int j = 0; j < 3; ++j) m[i][j] = matrix[i * 3 + j](t);
             return inverse ? glm::inverse(m) : m;
         }
-        default: break;
+        default:
+            break;
     }
     throw std::logic_error("a deformation has no matrix");
 }
 
 TransformTooLong::TransformTooLong()
     : LimitError("a transform of more than " + std::to_string(kMaxTransformSteps) +
-                         " steps that depend on clock (built up in a loop?)") {}
+                 " steps that depend on clock (built up in a loop?)") {}
 
 namespace {
 

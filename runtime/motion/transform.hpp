@@ -32,13 +32,15 @@ enum class TransformKind {
 // 280 bytes per step in scenes of many objects. Reading an entry that was
 // never written gives 0.
 class MatrixEntries {
-public:
+  public:
     MatrixEntries() = default;
     MatrixEntries(const MatrixEntries& o)
-        : entries_(o.entries_ ? std::make_unique<std::array<TimeFunction, 12>>(*o.entries_) : nullptr) {}
+        : entries_(o.entries_ ? std::make_unique<std::array<TimeFunction, 12>>(*o.entries_)
+                              : nullptr) {}
     MatrixEntries& operator=(const MatrixEntries& o) {
         if (this != &o)
-            entries_ = o.entries_ ? std::make_unique<std::array<TimeFunction, 12>>(*o.entries_) : nullptr;
+            entries_ =
+                o.entries_ ? std::make_unique<std::array<TimeFunction, 12>>(*o.entries_) : nullptr;
         return *this;
     }
     MatrixEntries(MatrixEntries&&) noexcept = default;
@@ -59,16 +61,16 @@ public:
         return false;
     }
 
-private:
+  private:
     std::unique_ptr<std::array<TimeFunction, 12>> entries_;
 };
 
 struct TransformStep {
     TransformKind kind;
-    Vector3Function vector;             // translate, rotate, scale amounts; deformation axis
-    MatrixEntries matrix;               // Matrix only
-    TimeFunction amount;                // deformations only
-    bool inverse = false;               // apply the inverse of this step
+    Vector3Function vector;  // translate, rotate, scale amounts; deformation axis
+    MatrixEntries matrix;    // Matrix only
+    TimeFunction amount;     // deformations only
+    bool inverse = false;    // apply the inverse of this step
 
     bool is_deformation() const { return kind >= TransformKind::Twist; }
     bool depends_on_time() const;
@@ -93,7 +95,7 @@ struct TransformTooLong : LimitError {
 };
 
 class Transform {
-public:
+  public:
     void append(TransformStep step);
     void append(const Transform& other);
     // The transform that undoes this one: the steps reversed, each inverted.
@@ -108,7 +110,7 @@ public:
     // transforms without deformations.
     glm::dmat4 matrix_at(double t) const;
 
-private:
+  private:
     std::vector<TransformStep> steps_;
 };
 

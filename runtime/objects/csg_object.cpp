@@ -153,8 +153,7 @@ bool CsgObject::keeps(std::size_t index, const Event& event) const {
     return true;
 }
 
-std::optional<ObjectHit> CsgObject::intersect(const Ray4& ray, double s_min,
-                                              double s_max) const {
+std::optional<ObjectHit> CsgObject::intersect(const Ray4& ray, double s_min, double s_max) const {
     std::optional<ObjectHit> nearest;
     for (std::size_t i = 0; i < children_.size(); ++i) {
         double from = s_min;
@@ -190,9 +189,8 @@ bool CsgObject::inside(const Event& event) const {
                              [&](const auto& c) { return c->inside(event); });
             break;
         case Csg::Kind::Intersection:
-            in = !children_.empty() &&
-                 std::all_of(children_.begin(), children_.end(),
-                             [&](const auto& c) { return c->inside(event); });
+            in = !children_.empty() && std::all_of(children_.begin(), children_.end(),
+                                                   [&](const auto& c) { return c->inside(event); });
             break;
         case Csg::Kind::Difference:
             in = !children_.empty() && children_[0]->inside(event) &&
@@ -223,7 +221,8 @@ double CsgObject::occupancy(const Box4& region) const {
 }
 
 bool CsgObject::moves() const {
-    return std::any_of(children_.begin(), children_.end(), [](const auto& c) { return c->moves(); });
+    return std::any_of(children_.begin(), children_.end(),
+                       [](const auto& c) { return c->moves(); });
 }
 
 bool CsgObject::deformed() const {

@@ -12,7 +12,7 @@
 namespace hexant::runtime {
 
 class CsgObject final : public IntelligentObject {
-public:
+  public:
     CsgObject(Csg::Kind kind, std::vector<IntelligentObjectPtr> children, bool inverse);
 
     bool bounded() const override;
@@ -26,8 +26,7 @@ public:
     Box4 box_over(const Interval& t) const override;
     std::optional<ChordBound> chord_bound_over(const Interval& t) const override;
     Box4 placed_box_at(double t) const override;
-    std::optional<ObjectHit> intersect(const Ray4& ray, double s_min,
-                                       double s_max) const override;
+    std::optional<ObjectHit> intersect(const Ray4& ray, double s_min, double s_max) const override;
     SurfacePoint complete(const Ray4& ray, const ObjectHit& hit) const override;
     bool inside(const Event& event) const override;
     double occupancy(const Box4& region) const override;
@@ -41,16 +40,16 @@ public:
     Csg::Kind kind() const { return kind_; }
     const std::vector<IntelligentObjectPtr>& children() const { return children_; }
 
-private:
-  // The children whose placed boxes and chord bounds hold the surface.
-  std::vector<const IntelligentObject*> chord_children() const;
-  // Is a hit on child `index` a surface of the combined solid?
-  bool keeps(std::size_t index, const Event& event) const;
+  private:
+    // The children whose placed boxes and chord bounds hold the surface.
+    std::vector<const IntelligentObject*> chord_children() const;
+    // Is a hit on child `index` a surface of the combined solid?
+    bool keeps(std::size_t index, const Event& event) const;
 
-  Csg::Kind kind_;
-  std::vector<IntelligentObjectPtr> children_;
-  bool full_shadow_ = true;
-  bool inverse_;
+    Csg::Kind kind_;
+    std::vector<IntelligentObjectPtr> children_;
+    bool full_shadow_ = true;
+    bool inverse_;
 };
 
 }  // namespace hexant::runtime

@@ -9,13 +9,13 @@
 #include <optional>
 #include <vector>
 
-#include <glm/vec2.hpp>
 #include <glm/mat3x3.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-#include "runtime/texture/material_sample.hpp"
 #include "runtime/bounds/slab_bound.hpp"
 #include "runtime/geometry/spacetime.hpp"
+#include "runtime/texture/material_sample.hpp"
 
 namespace hexant::runtime {
 
@@ -27,8 +27,8 @@ struct ObjectHit {
     double s = 0.0;  // ray parameter: the event is ray.at(s)
     Event event{};
     const IntelligentObject* object = nullptr;  // the primitive hit (inside groups too)
-    glm::dvec3 object_point{};   // in the primitive's own (undeformed) space
-    glm::dvec3 object_normal{};  // geometric normal there, unit
+    glm::dvec3 object_point{};                  // in the primitive's own (undeformed) space
+    glm::dvec3 object_normal{};                 // geometric normal there, unit
     glm::dvec3 object_shading_normal{};
     glm::dvec2 uv{};
     int part = 0;  // which face, cap or side (per shape kind)
@@ -58,11 +58,12 @@ struct SurfacePoint {
     // The texture: the shader asks it for the material and the perturbed
     // normals at `event` after turning the normal to face the ray.
     const TextureEvaluator* texture = nullptr;
-    glm::dvec3 error{0.0};  // world bound of event's error (geometry::world_error): what a secondary ray must clear
+    glm::dvec3 error{0.0};  // world bound of event's error (geometry::world_error): what a
+                            // secondary ray must clear
 };
 
 class IntelligentObject {
-public:
+  public:
     virtual ~IntelligentObject() = default;
 
     // False for objects without a finite extent (a plane): the tracer keeps

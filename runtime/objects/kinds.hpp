@@ -31,7 +31,6 @@ namespace hexant::runtime {
 
 using ShapeKinds = objects::KindList<Sphere, Box, Plane, Polygon, Triangle, SmoothTriangle, Disc,
                                      Cylinder, Cone, Torus, Prism, Text, Mesh, Lathe, Sor,
-                                     Superellipsoid, HeightField, Blob,
-                                     SphereSweep>;
+                                     Superellipsoid, HeightField, Blob, SphereSweep>;
 
 }  // namespace hexant::runtime

@@ -4,8 +4,11 @@
 
 namespace hexant::runtime {
 
-LifetimeObject::LifetimeObject(IntelligentObjectPtr inner, Lifetime lifetime, bool inside_when_absent)
-    : inner_(std::move(inner)), lifetime_(std::move(lifetime)), inside_when_absent_(inside_when_absent) {}
+LifetimeObject::LifetimeObject(IntelligentObjectPtr inner, Lifetime lifetime,
+                               bool inside_when_absent)
+    : inner_(std::move(inner)),
+      lifetime_(std::move(lifetime)),
+      inside_when_absent_(inside_when_absent) {}
 
 void LifetimeObject::bound(const Box4& region, std::vector<SlabBound>& out) const {
     for (const Interval& piece : lifetime_.within(region.time())) {
@@ -22,7 +25,8 @@ Box4 LifetimeObject::box_over(const Interval& t) const {
     return box;
 }
 
-std::optional<IntelligentObject::ChordBound> LifetimeObject::chord_bound_over(const Interval& t) const {
+std::optional<IntelligentObject::ChordBound> LifetimeObject::chord_bound_over(
+    const Interval& t) const {
     // Chords join placed boxes at both ends: only across time it lives
     // through whole.
     if (!lifetime_.holds_all(t)) return std::nullopt;
@@ -60,7 +64,8 @@ void LifetimeObject::for_each_span(const Ray4& ray, double s_min, double s_max, 
     }
 }
 
-std::optional<ObjectHit> LifetimeObject::intersect(const Ray4& ray, double s_min, double s_max) const {
+std::optional<ObjectHit> LifetimeObject::intersect(const Ray4& ray, double s_min,
+                                                   double s_max) const {
     if (lifetime_.is_always()) return inner_->intersect(ray, s_min, s_max);
     std::optional<ObjectHit> found;
     for_each_span(ray, s_min, s_max, [&](double lo, double hi) {
@@ -74,7 +79,8 @@ std::optional<ObjectHit> LifetimeObject::intersect(const Ray4& ray, double s_min
 }
 
 bool LifetimeObject::occluded(const Ray4& ray, double s_min, double s_max) const {
-    if (ray.direction.w == 0.0) return lifetime_.contains(ray.origin.w) && inner_->occluded(ray, s_min, s_max);
+    if (ray.direction.w == 0.0)
+        return lifetime_.contains(ray.origin.w) && inner_->occluded(ray, s_min, s_max);
     return intersect(ray, s_min, s_max).has_value();
 }
 

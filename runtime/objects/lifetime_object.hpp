@@ -14,7 +14,7 @@
 namespace hexant::runtime {
 
 class LifetimeObject final : public IntelligentObject {
-public:
+  public:
     // `inside_when_absent`: what inside() answers outside the lifetime. An
     // intersection's member that does not exist must not empty the
     // intersection (POV-Ray intersects the members there are): true there;
@@ -46,7 +46,7 @@ public:
     bool filters_light() const override { return inner_->filters_light(); }
     bool casts_full_shadow() const override { return inner_->casts_full_shadow(); }
 
-private:
+  private:
     // Calls f(lo, hi) for each span of the ray's parameter in (s_min, s_max)
     // whose times are in the lifetime, nearest first; stops when f returns
     // true.

@@ -11,8 +11,8 @@
 
 #include <glm/vec3.hpp>
 
-#include "runtime/time/compiled_function.hpp"
 #include "runtime/geometry/ray3.hpp"
+#include "runtime/time/compiled_function.hpp"
 #include "runtime/time/interval.hpp"
 
 namespace hexant::runtime::objects {

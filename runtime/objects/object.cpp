@@ -15,17 +15,25 @@ const char* shape_name(const Shape& shape) {
     // Keywords are string literals: data() ends in a '\0'.
     return std::visit(
         [](const auto& s) -> const char* {
-            if constexpr (std::is_same_v<std::decay_t<decltype(s)>, Csg>) return "";
-            else return std::decay_t<decltype(s)>::keyword.data();
+            if constexpr (std::is_same_v<std::decay_t<decltype(s)>, Csg>)
+                return "";
+            else
+                return std::decay_t<decltype(s)>::keyword.data();
         },
         shape);
 }
 
 namespace {
 
-bool varies(const TimeFunction& f) { return f.depends_on_time(); }
-bool varies(const Vector3Function& v) { return v.depends_on_time(); }
-bool varies(const Vector2Function& v) { return v.depends_on_time(); }
+bool varies(const TimeFunction& f) {
+    return f.depends_on_time();
+}
+bool varies(const Vector3Function& v) {
+    return v.depends_on_time();
+}
+bool varies(const Vector2Function& v) {
+    return v.depends_on_time();
+}
 template <typename T>
 bool varies(const std::vector<T>& items) {
     for (const auto& item : items)
@@ -53,9 +61,13 @@ std::vector<std::string> ObjectRecord::timed_parameters() const {
     return names;
 }
 
-bool ObjectRecord::shape_depends_on_time() const { return !timed_parameters().empty(); }
+bool ObjectRecord::shape_depends_on_time() const {
+    return !timed_parameters().empty();
+}
 
-bool ObjectRecord::texture_depends_on_time() const { return texture && texture->depends_on_time(); }
+bool ObjectRecord::texture_depends_on_time() const {
+    return texture && texture->depends_on_time();
+}
 
 bool ObjectRecord::depends_on_time() const {
     return !lifetime.is_always() || shape_depends_on_time() || transform.depends_on_time() ||

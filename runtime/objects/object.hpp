@@ -7,12 +7,12 @@
 #include <string>
 #include <vector>
 
-#include "runtime/time/lifetime.hpp"
-#include "runtime/scene/light.hpp"
-#include "runtime/texture/material.hpp"
-#include "runtime/objects/shapes.hpp"
-#include "runtime/source_place.hpp"
 #include "runtime/motion/transform.hpp"
+#include "runtime/objects/shapes.hpp"
+#include "runtime/scene/light.hpp"
+#include "runtime/source_place.hpp"
+#include "runtime/texture/material.hpp"
+#include "runtime/time/lifetime.hpp"
 
 namespace hexant::runtime {
 
@@ -24,7 +24,7 @@ inline constexpr int kMaxObjectDepth = 10000;
 
 struct ObjectRecord {
     Shape shape;
-    Transform transform;  // object space to the parent's space
+    Transform transform;             // object space to the parent's space
     std::optional<Texture> texture;  // none: inherit the parent's, or the default
     std::optional<Interior> interior;
     bool no_shadow = false;

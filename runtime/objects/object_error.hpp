@@ -10,12 +10,12 @@
 namespace hexant::runtime {
 
 class ObjectError : public std::runtime_error {
-public:
+  public:
     ObjectError(const SourcePlace& place, const std::string& message)
         : std::runtime_error(place.to_string() + ": error: " + message), place_(place) {}
     const SourcePlace& place() const { return place_; }
 
-private:
+  private:
     SourcePlace place_;
 };
 

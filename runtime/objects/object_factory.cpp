@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "runtime/objects/csg_object.hpp"
-#include "runtime/objects/object_error.hpp"
 #include "runtime/objects/lifetime_object.hpp"
+#include "runtime/objects/object_error.hpp"
 #include "runtime/objects/primitive.hpp"
 
 namespace hexant::runtime {
@@ -75,10 +75,14 @@ IntelligentObjectPtr build_difference_by_base(const Csg& csg, const Inherited& d
         const Lifetime base = life.intersect(none_before);
         if (!base.is_never()) {
             std::vector<IntelligentObjectPtr> members;
-            for (std::size_t j = k; j < csg.children.size(); ++j) members.push_back(build(*csg.children[j], down));
-            auto part = std::make_unique<CsgObject>(Csg::Kind::Difference, std::move(members), inverse);
-            if (base.is_always()) parts.push_back(std::move(part));
-            else parts.push_back(std::make_unique<LifetimeObject>(std::move(part), base, false));
+            for (std::size_t j = k; j < csg.children.size(); ++j)
+                members.push_back(build(*csg.children[j], down));
+            auto part =
+                std::make_unique<CsgObject>(Csg::Kind::Difference, std::move(members), inverse);
+            if (base.is_always())
+                parts.push_back(std::move(part));
+            else
+                parts.push_back(std::make_unique<LifetimeObject>(std::move(part), base, false));
         }
         if (life.is_always()) break;
         none_before = none_before.intersect(life.complement_within(Interval::entire()));
@@ -128,7 +132,8 @@ IntelligentObjectPtr build_object(const ObjectRecord& record, const Inherited& p
             } else {
                 using Model = typename Kind::Model;
                 if constexpr (requires { shape.standalone_error(); })
-                    if (const auto refused = shape.standalone_error()) throw ObjectError(record.place, *refused);
+                    if (const auto refused = shape.standalone_error())
+                        throw ObjectError(record.place, *refused);
                 if (Primitive<Model>::kUnbounded && to_world.has_deformation())
                     throw ObjectError(record.place,
                                       "a " + std::string(Kind::keyword) +
@@ -143,9 +148,8 @@ IntelligentObjectPtr build_object(const ObjectRecord& record, const Inherited& p
                         world.transform_by(to_world);
                         parts.emplace_back(world, interior);
                     }
-                return std::make_unique<Primitive<Model>>(Model(shape), to_world,
-                                                          std::move(evaluator), options,
-                                                          std::move(parts));
+                return std::make_unique<Primitive<Model>>(
+                    Model(shape), to_world, std::move(evaluator), options, std::move(parts));
             }
         },
         record.shape);

@@ -48,13 +48,20 @@ Problem check(const std::array<TimeFunction, N>& c, const std::string& what, con
 
 const char* step_name(TransformKind kind) {
     switch (kind) {
-        case TransformKind::Translate: return "translate";
-        case TransformKind::Rotate: return "rotate";
-        case TransformKind::Scale: return "scale";
-        case TransformKind::Matrix: return "matrix";
-        case TransformKind::Twist: return "twist";
-        case TransformKind::Taper: return "taper";
-        case TransformKind::Bend: return "bend";
+        case TransformKind::Translate:
+            return "translate";
+        case TransformKind::Rotate:
+            return "rotate";
+        case TransformKind::Scale:
+            return "scale";
+        case TransformKind::Matrix:
+            return "matrix";
+        case TransformKind::Twist:
+            return "twist";
+        case TransformKind::Taper:
+            return "taper";
+        case TransformKind::Bend:
+            return "bend";
     }
     return "transform";
 }
@@ -86,13 +93,13 @@ Problem check(const Transform& transform, const std::string& whose, const Span& 
     for (const double t : {span.begin, span.end}) {
         const glm::dmat4 m = transform.matrix_at(t);
         const std::string at = transform.depends_on_time() ? " at clock = " + number(t) : "";
-        if (!finite(m)) return whose + " transform is infinite" + at + " (its steps together overflow)";
+        if (!finite(m))
+            return whose + " transform is infinite" + at + " (its steps together overflow)";
         const double det = glm::determinant(glm::dmat3(m));
         if (!(std::fabs(det) > 0.0) || !std::isfinite(det))
             return whose + " transform is singular" + at +
                    " (it flattens space: no inverse to take rays into it)";
-        if (!finite(glm::inverse(m)))
-            return whose + " transform's inverse is infinite" + at;
+        if (!finite(glm::inverse(m))) return whose + " transform's inverse is infinite" + at;
     }
     return std::nullopt;
 }
@@ -105,8 +112,8 @@ Problem check(const Texture& texture, const std::string& whose, const Span& span
     if (auto p = check(texture.pigment.transform, whose + " pigment's", span)) return p;
     const Finish& f = texture.finish;
     const std::pair<const TimeFunction*, const char*> values[] = {
-        {&f.ambient, "ambient"},   {&f.diffuse, "diffuse"},     {&f.brilliance, "brilliance"},
-        {&f.phong, "phong"},       {&f.phong_size, "phong_size"}, {&f.specular, "specular"},
+        {&f.ambient, "ambient"},     {&f.diffuse, "diffuse"},       {&f.brilliance, "brilliance"},
+        {&f.phong, "phong"},         {&f.phong_size, "phong_size"}, {&f.specular, "specular"},
         {&f.roughness, "roughness"}, {&f.emission, "emission"}};
     for (const auto& [value, name] : values)
         if (auto p = check(*value, whose + " finish's " + name, span)) return p;
@@ -176,11 +183,11 @@ std::optional<std::string> bad_parameter(const LightRecord& light, const Animati
     if (auto p = check(light.position.c, "the light's position", span)) return p;
     if (auto p = check(light.colour.c, "the light's colour", span)) return p;
     if (auto p = check(light.point_at.c, "the light's point_at", span)) return p;
-    for (const auto& [value, name] : {std::pair{&light.radius, "radius"},
-                                      std::pair{&light.falloff, "falloff"},
-                                      std::pair{&light.tightness, "tightness"},
-                                      std::pair{&light.fade_distance, "fade_distance"},
-                                      std::pair{&light.fade_power, "fade_power"}})
+    for (const auto& [value, name] :
+         {std::pair{&light.radius, "radius"}, std::pair{&light.falloff, "falloff"},
+          std::pair{&light.tightness, "tightness"},
+          std::pair{&light.fade_distance, "fade_distance"},
+          std::pair{&light.fade_power, "fade_power"}})
         if (auto p = check(*value, std::string("the light's ") + name, span)) return p;
     if (light.area) {
         if (auto p = check(light.area->axis1.c, "the area_light's first axis", span)) return p;
@@ -211,13 +218,15 @@ std::optional<std::string> bad_parameter(const CameraRecord& camera, const Anima
             case K::FocalPoint:
                 if (auto p = check(item.vector.c, "the camera's focal_point", span)) return p;
                 break;
-            case K::Transform: transform.append(item.step); break;
+            case K::Transform:
+                transform.append(item.step);
+                break;
             default: {
                 static const char* const names[] = {"location", "look_at", "direction",
                                                     "right",    "up",      "sky"};
-                if (auto p = check(item.vector.c,
-                                   std::string("the camera's ") + names[static_cast<int>(item.kind)],
-                                   span))
+                if (auto p = check(
+                        item.vector.c,
+                        std::string("the camera's ") + names[static_cast<int>(item.kind)], span))
                     return p;
                 if (item.kind == K::Location) location = &item;
                 if (item.kind == K::LookAt) look_at = &item;

@@ -12,10 +12,10 @@
 #include <optional>
 #include <string>
 
+#include "runtime/objects/object.hpp"
 #include "runtime/scene/animation.hpp"
 #include "runtime/scene/camera.hpp"
 #include "runtime/scene/light.hpp"
-#include "runtime/objects/object.hpp"
 
 namespace hexant::runtime {
 

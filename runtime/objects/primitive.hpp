@@ -11,23 +11,24 @@
 #pragma once
 
 #include <algorithm>
-#include <glm/geometric.hpp>
-#include <glm/mat3x3.hpp>
-#include <glm/mat4x4.hpp>
 #include <limits>
 #include <memory>
 #include <optional>
 #include <utility>
 
-#include "runtime/geometry/curved_path_root.hpp"
-#include "runtime/geometry/offset_ray.hpp"
-#include "runtime/objects/intelligent_object.hpp"
-#include "runtime/motion/motion.hpp"
-#include "runtime/motion/normal_transform.hpp"
-#include "runtime/objects/model_support.hpp"
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+
 #include "runtime/bounds/occupancy_sampling.hpp"
 #include "runtime/bounds/ray_box_clip.hpp"
 #include "runtime/bounds/swept_bound.hpp"
+#include "runtime/geometry/curved_path_root.hpp"
+#include "runtime/geometry/offset_ray.hpp"
+#include "runtime/motion/motion.hpp"
+#include "runtime/motion/normal_transform.hpp"
+#include "runtime/objects/intelligent_object.hpp"
+#include "runtime/objects/model_support.hpp"
 #include "runtime/texture/texture_evaluator.hpp"
 
 namespace hexant::runtime {
@@ -57,7 +58,7 @@ constexpr bool has_uv_mapping() {
 
 template <class Model>
 class Primitive final : public IntelligentObject {
-public:
+  public:
     using Geometry = typename Model::Geometry;
     static constexpr bool kUnbounded = is_unbounded_model<Model>();
     // A model made of parts with bounds of their own (a mesh's hierarchy).
@@ -71,11 +72,15 @@ public:
     // already in world terms.
     Primitive(Model model, const Transform& transform, TextureEvaluator texture,
               PrimitiveOptions options, std::vector<TextureEvaluator> part_textures = {})
-        : model_(std::move(model)), motion_(transform), texture_(std::move(texture)),
-          part_textures_(std::move(part_textures)), options_(options) {
+        : model_(std::move(model)),
+          motion_(transform),
+          texture_(std::move(texture)),
+          part_textures_(std::move(part_textures)),
+          options_(options) {
         moves_ = !model_.is_static() || !motion_.is_static();
         filters_light_ = !texture_.opaque();
-        for (const TextureEvaluator& part : part_textures_) filters_light_ = filters_light_ || !part.opaque();
+        for (const TextureEvaluator& part : part_textures_)
+            filters_light_ = filters_light_ || !part.opaque();
         if (model_.is_static()) {
             static_geometry_ = model_.at(0.0);
             if constexpr (!kUnbounded)
@@ -177,8 +182,7 @@ public:
                 Event(world[0].hi, world[1].hi, world[2].hi, t)};
     }
 
-    std::optional<ObjectHit> intersect(const Ray4& ray, double s_min,
-                                       double s_max) const override {
+    std::optional<ObjectHit> intersect(const Ray4& ray, double s_min, double s_max) const override {
         if (!(s_min < s_max)) return std::nullopt;
         const bool one_instant = ray.direction.w == 0.0 || !moves_;
         if (motion_.is_affine() && (one_instant || kUnbounded))
@@ -196,7 +200,7 @@ public:
 
     SurfacePoint complete(const Ray4& ray, const ObjectHit& hit) const override {
         const double t = hit.event.w;
-        const glm::dmat3 linear = hit.has_linear         ? hit.to_world_linear
+        const glm::dmat3 linear = hit.has_linear        ? hit.to_world_linear
                                   : motion_.is_affine() ? glm::dmat3(motion_.matrix_at(t))
                                                         : motion_.jacobian_at(hit.object_point, t);
         glm::dvec3 facing = -glm::dvec3(ray.direction);
@@ -210,9 +214,10 @@ public:
                                             hit.object_error);
         p.geometric_normal = transform_normal(linear, hit.object_normal, facing);
         // (Only a smooth triangle's shading normal differs from its own.)
-        p.shading_normal = hit.object_shading_normal == hit.object_normal
-                               ? p.geometric_normal
-                               : transform_normal(linear, hit.object_shading_normal, p.geometric_normal);
+        p.shading_normal =
+            hit.object_shading_normal == hit.object_normal
+                ? p.geometric_normal
+                : transform_normal(linear, hit.object_shading_normal, p.geometric_normal);
         if (hit.flipped) {
             p.geometric_normal = -p.geometric_normal;
             p.shading_normal = -p.shading_normal;
@@ -232,7 +237,8 @@ public:
         p.texture = &texture_;
         if constexpr (kHasPartTextures) {
             const int k = model_.texture_of(hit.part);
-            if (k >= 0 && static_cast<std::size_t>(k) < part_textures_.size()) p.texture = &part_textures_[k];
+            if (k >= 0 && static_cast<std::size_t>(k) < part_textures_.size())
+                p.texture = &part_textures_[k];
         }
         return p;
     }
@@ -271,7 +277,7 @@ public:
         return share * sampled_occupancy(near, inside_at);
     }
 
-private:
+  private:
     // Does the region hold the whole world box in space?
     static bool contains_box(const Box4& region, const IntervalBox& world) {
         for (int i = 0; i < 3; ++i)
@@ -281,8 +287,7 @@ private:
 
     // A conservative world box of the surface over every instant of t.
     IntervalBox world_box_over(const Interval& t) const {
-        const IntervalBox object_box =
-            model_.is_static() ? static_object_box_ : model_.box_over(t);
+        const IntervalBox object_box = model_.is_static() ? static_object_box_ : model_.box_over(t);
         return motion_.world_box(object_box, t);
     }
 
@@ -435,7 +440,8 @@ private:
                 const double u = std::clamp(hit->s, 0.0, 1.0);
                 if (u == used) break;
                 used = u;
-                hit = geometry::intersect(model_.at(ow + (s.lo + u * (s.hi - s.lo)) * dw), chord, u0, u1);
+                hit = geometry::intersect(model_.at(ow + (s.lo + u * (s.hi - s.lo)) * dw), chord,
+                                          u0, u1);
             }
             return hit;
         };
@@ -474,8 +480,9 @@ private:
         for (const auto& box : chosen) {
             pieces.clear();
             if (moves_)
-                swept_pieces(region, region.time(), 0,
-                             [&](const Interval& t) { return motion_.world_box(box, t); }, pieces);
+                swept_pieces(
+                    region, region.time(), 0,
+                    [&](const Interval& t) { return motion_.world_box(box, t); }, pieces);
             else
                 pieces.push_back(piece_box(motion_.world_box(box, time), region.time(), region));
             append_swept_bounds(pieces, region, out);  // a bound per part

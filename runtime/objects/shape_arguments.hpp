@@ -40,7 +40,8 @@ class ShapeArguments {
     // A file named `name`, found as an #include is (the scene's folder, the
     // library path, then POV-Ray's own folders), confined as includes are;
     // `kind` for messages ("font file").
-    virtual std::filesystem::path find_file(const std::string& name, const std::string& kind) const = 0;
+    virtual std::filesystem::path find_file(const std::string& name,
+                                            const std::string& kind) const = 0;
     // global_settings { charset ascii | utf8 }: how a string's bytes become
     // characters ("ascii", POV-Ray's default, or "utf8").
     virtual const std::string& charset() const = 0;

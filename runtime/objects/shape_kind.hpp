@@ -148,7 +148,8 @@ template <class... K>
 struct KindWords<KindList<K...>> {
   private:
     static constexpr auto all_keywords = kind_detail::concat(kind_detail::keyword_of<K>()...);
-    static constexpr auto all_block_keywords = kind_detail::concat(kind_detail::block_keyword_of<K>()...);
+    static constexpr auto all_block_keywords =
+        kind_detail::concat(kind_detail::block_keyword_of<K>()...);
     static constexpr auto all_options = kind_detail::concat(kind_detail::options_of<K>()...);
     static constexpr auto all_settings = kind_detail::concat(kind_detail::settings_of<K>()...);
 

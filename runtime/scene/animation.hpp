@@ -62,7 +62,9 @@ struct Animation {
         const double delta = clock_delta();
         return {clock_of_frame(frame), shutter * delta, rolling_shutter * delta, &shutter_curve};
     }
-    double sample_time(int frame, double row, double when) const { return frame_clock(frame).at(row, when); }
+    double sample_time(int frame, double row, double when) const {
+        return frame_clock(frame).at(row, when);
+    }
 };
 
 }  // namespace hexant::runtime

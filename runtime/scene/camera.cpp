@@ -30,9 +30,8 @@
 // rules above at time t.
 #include "runtime/scene/camera.hpp"
 
-#include <optional>
-
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include <glm/geometric.hpp>
@@ -91,8 +90,12 @@ CameraFrame CameraRecord::evaluate_items(const std::vector<CameraItem>& items, d
     // 1. Gather: the last value of each item wins; transforms compose.
     for (const CameraItem& item : items) {
         switch (item.kind) {
-            case CameraItem::Kind::Location: cam.location = item.vector(t); break;
-            case CameraItem::Kind::Direction: cam.direction = item.vector(t); break;
+            case CameraItem::Kind::Location:
+                cam.location = item.vector(t);
+                break;
+            case CameraItem::Kind::Direction:
+                cam.direction = item.vector(t);
+                break;
             case CameraItem::Kind::Right:
                 cam.right = item.vector(t);
                 has_right = true;
@@ -101,7 +104,9 @@ CameraFrame CameraRecord::evaluate_items(const std::vector<CameraItem>& items, d
                 cam.up = item.vector(t);
                 has_up = true;
                 break;
-            case CameraItem::Kind::Sky: cam.sky = item.vector(t); break;
+            case CameraItem::Kind::Sky:
+                cam.sky = item.vector(t);
+                break;
             case CameraItem::Kind::LookAt:
                 look_at = item.vector(t);
                 has_look_at = true;
@@ -114,11 +119,21 @@ CameraFrame CameraRecord::evaluate_items(const std::vector<CameraItem>& items, d
                 transform = item.step.matrix_at(t) * transform;
                 has_transform = true;
                 break;
-            case CameraItem::Kind::Aperture: cam.aperture = item.angle(t); break;
-            case CameraItem::Kind::FocalPoint: focal_point = item.vector(t); break;
-            case CameraItem::Kind::BlurSamples: blur_samples = item.angle(t); break;
-            case CameraItem::Kind::Type: cam.type = item.type; break;
-            case CameraItem::Kind::VerticalAngle: vertical_angle = item.angle(t); break;
+            case CameraItem::Kind::Aperture:
+                cam.aperture = item.angle(t);
+                break;
+            case CameraItem::Kind::FocalPoint:
+                focal_point = item.vector(t);
+                break;
+            case CameraItem::Kind::BlurSamples:
+                blur_samples = item.angle(t);
+                break;
+            case CameraItem::Kind::Type:
+                cam.type = item.type;
+                break;
+            case CameraItem::Kind::VerticalAngle:
+                vertical_angle = item.angle(t);
+                break;
         }
     }
     const bool flat = cam.type == CameraType::Perspective || cam.type == CameraType::Orthographic;

@@ -9,9 +9,9 @@
 
 #include <glm/vec3.hpp>
 
-#include "runtime/time/lifetime.hpp"
-#include "runtime/texture/material.hpp"
 #include "runtime/motion/transform.hpp"
+#include "runtime/texture/material.hpp"
+#include "runtime/time/lifetime.hpp"
 #include "runtime/time/vector_function.hpp"
 
 namespace hexant::runtime {
@@ -24,7 +24,21 @@ struct CameraItem {
     // (Aperture, FocalPoint, BlurSamples: POV-Ray's focal blur. Type: the
     // projection, first when given. VerticalAngle: a spherical camera's
     // second angle.)
-    enum class Kind { Location, LookAt, Direction, Right, Up, Sky, Angle, Transform, Aperture, FocalPoint, BlurSamples, Type, VerticalAngle };
+    enum class Kind {
+        Location,
+        LookAt,
+        Direction,
+        Right,
+        Up,
+        Sky,
+        Angle,
+        Transform,
+        Aperture,
+        FocalPoint,
+        BlurSamples,
+        Type,
+        VerticalAngle
+    };
     Kind kind;
     Vector3Function vector;  // Location .. Sky, FocalPoint
     // Angle: field of view in degrees (perspective and orthographic: the
@@ -34,7 +48,7 @@ struct CameraItem {
     // Aperture: the lens' aperture (scene units); BlurSamples: POV-Ray's
     // count (0 or less, or an aperture of 0: no focal blur).
     TimeFunction angle;
-    TransformStep step;      // Transform
+    TransformStep step;                         // Transform
     CameraType type = CameraType::Perspective;  // Type
 };
 
@@ -81,7 +95,7 @@ struct CameraRecord {
     // image's aspect ratio, and neither does hexant.
     CameraFrame evaluate(double t) const;
 
-private:
+  private:
     static CameraFrame evaluate_items(const std::vector<CameraItem>& items, double t);
 };
 

@@ -7,8 +7,8 @@
 
 #include <optional>
 
-#include "runtime/texture/pattern/pattern.hpp"
 #include "runtime/motion/transform.hpp"
+#include "runtime/texture/pattern/pattern.hpp"
 #include "runtime/time/vector_function.hpp"
 
 namespace hexant::runtime {

@@ -8,8 +8,8 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
-#include "runtime/time/lifetime.hpp"
 #include "runtime/motion/transform.hpp"
+#include "runtime/time/lifetime.hpp"
 #include "runtime/time/vector_function.hpp"
 
 namespace hexant::runtime {
@@ -79,8 +79,9 @@ struct LightRecord {
     // Whether anything of it but its lifetime changes with time.
     bool moves() const {
         return position.depends_on_time() || colour.depends_on_time() ||
-               transform.depends_on_time() || point_at.depends_on_time() || radius.depends_on_time() ||
-               falloff.depends_on_time() || tightness.depends_on_time() || fade_distance.depends_on_time() ||
+               transform.depends_on_time() || point_at.depends_on_time() ||
+               radius.depends_on_time() || falloff.depends_on_time() ||
+               tightness.depends_on_time() || fade_distance.depends_on_time() ||
                fade_power.depends_on_time() ||
                (area && (area->axis1.depends_on_time() || area->axis2.depends_on_time()));
     }

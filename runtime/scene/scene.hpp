@@ -5,12 +5,12 @@
 #include <string>
 #include <vector>
 
+#include "runtime/objects/object.hpp"
 #include "runtime/scene/animation.hpp"
 #include "runtime/scene/camera.hpp"
 #include "runtime/scene/fog.hpp"
 #include "runtime/scene/light.hpp"
 #include "runtime/scene/sky_sphere.hpp"
-#include "runtime/objects/object.hpp"
 #include "runtime/source_place.hpp"
 
 namespace hexant::runtime {
@@ -40,7 +40,7 @@ struct SceneDescription {
     CameraRecord camera;  // POV-Ray's default camera when the scene has none
     std::vector<LightRecord> lights;
     std::vector<ObjectPtr> objects;
-    ColourFunction background{};  // black
+    ColourFunction background{};          // black
     std::optional<SkySphere> sky_sphere;  // over the background
     std::vector<Fog> fogs;
     GlobalSettings global;

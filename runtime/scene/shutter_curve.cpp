@@ -28,29 +28,37 @@ double parse_number(const std::string& text, const std::string& what) {
 }  // namespace
 
 ShutterCurve::ShutterCurve(std::vector<Key> keys) : keys_(std::move(keys)) {
-    if (keys_.size() < 2) throw std::invalid_argument("a shutter curve needs at least two keys, at 0 and at 1");
+    if (keys_.size() < 2)
+        throw std::invalid_argument("a shutter curve needs at least two keys, at 0 and at 1");
     for (std::size_t i = 0; i < keys_.size(); ++i) {
         const Key& k = keys_[i];
-        const std::string which = "key " + std::to_string(i + 1) + " (" + number(k.u) + ":" + number(k.weight) + ")";
+        const std::string which =
+            "key " + std::to_string(i + 1) + " (" + number(k.u) + ":" + number(k.weight) + ")";
         if (!(k.weight >= 0.0) || !std::isfinite(k.weight))
             throw std::invalid_argument(which + ": a weight must be a finite number of at least 0");
-        if (!(k.u >= 0.0 && k.u <= 1.0)) throw std::invalid_argument(which + ": its time must lie in [0, 1]");
+        if (!(k.u >= 0.0 && k.u <= 1.0))
+            throw std::invalid_argument(which + ": its time must lie in [0, 1]");
         if (i > 0 && !(k.u > keys_[i - 1].u))
             throw std::invalid_argument(which + ": times must increase from key to key");
     }
     if (keys_.front().u != 0.0 || keys_.back().u != 1.0)
-        throw std::invalid_argument("a shutter curve's keys must begin at time 0 and end at time 1");
+        throw std::invalid_argument(
+            "a shutter curve's keys must begin at time 0 and end at time 1");
     area_.assign(keys_.size(), 0.0);
     for (std::size_t i = 1; i < keys_.size(); ++i)
-        area_[i] = area_[i - 1] + 0.5 * (keys_[i - 1].weight + keys_[i].weight) * (keys_[i].u - keys_[i - 1].u);
-    if (!(area_.back() > 0.0)) throw std::invalid_argument("a shutter curve must be open somewhere (a weight above 0)");
-    box_ = std::all_of(keys_.begin(), keys_.end(), [&](const Key& k) { return k.weight == keys_.front().weight; });
+        area_[i] = area_[i - 1] +
+                   0.5 * (keys_[i - 1].weight + keys_[i].weight) * (keys_[i].u - keys_[i - 1].u);
+    if (!(area_.back() > 0.0))
+        throw std::invalid_argument("a shutter curve must be open somewhere (a weight above 0)");
+    box_ = std::all_of(keys_.begin(), keys_.end(),
+                       [&](const Key& k) { return k.weight == keys_.front().weight; });
 }
 
 ShutterCurve ShutterCurve::parse(const std::string& text) {
     if (text == "box") return ShutterCurve();
     if (text == "triangle") return ShutterCurve({{0.0, 0.0}, {0.5, 1.0}, {1.0, 0.0}});
-    if (text == "trapezoid") return ShutterCurve({{0.0, 0.0}, {0.25, 1.0}, {0.75, 1.0}, {1.0, 0.0}});
+    if (text == "trapezoid")
+        return ShutterCurve({{0.0, 0.0}, {0.25, 1.0}, {0.75, 1.0}, {1.0, 0.0}});
     std::vector<Key> keys;
     std::size_t at = 0;
     while (at <= text.size()) {
@@ -58,8 +66,10 @@ ShutterCurve ShutterCurve::parse(const std::string& text) {
         const std::string item = text.substr(at, comma - at);
         const std::size_t colon = item.find(':');
         if (colon == std::string::npos)
-            throw std::invalid_argument("'" + item + "' is not a key u:w (or a shape: box, triangle, trapezoid)");
-        keys.push_back({parse_number(item.substr(0, colon), "the time"), parse_number(item.substr(colon + 1), "the weight")});
+            throw std::invalid_argument(
+                "'" + item + "' is not a key u:w (or a shape: box, triangle, trapezoid)");
+        keys.push_back({parse_number(item.substr(0, colon), "the time"),
+                        parse_number(item.substr(colon + 1), "the weight")});
         at = comma + 1;
     }
     return ShutterCurve(std::move(keys));

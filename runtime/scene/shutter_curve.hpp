@@ -15,7 +15,7 @@
 namespace hexant::runtime {
 
 class ShutterCurve {
-public:
+  public:
     struct Key {
         double u;       // in [0, 1] of the open interval
         double weight;  // >= 0, finite
@@ -39,7 +39,7 @@ public:
     // from 0. x itself for the box.
     double warp(double x) const { return box_ ? x : warp_keys(x); }
 
-private:
+  private:
     double warp_keys(double x) const;
     std::vector<Key> keys_{{0.0, 1.0}, {1.0, 1.0}};
     std::vector<double> area_;  // W at each key

@@ -8,8 +8,8 @@
 
 #include <vector>
 
-#include "runtime/texture/material.hpp"
 #include "runtime/motion/transform.hpp"
+#include "runtime/texture/material.hpp"
 #include "runtime/time/vector_function.hpp"
 
 namespace hexant::runtime {

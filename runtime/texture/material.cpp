@@ -12,9 +12,15 @@ namespace {
 // not depend on time, or the search would have stopped there. (A texture
 // and its pigment share an address: the kind is part of the key.)
 using Seen = std::set<std::pair<int, const void*>>;
-constexpr int kind_of(const Pigment*) { return 0; }
-constexpr int kind_of(const Normal*) { return 1; }
-constexpr int kind_of(const Texture*) { return 2; }
+constexpr int kind_of(const Pigment*) {
+    return 0;
+}
+constexpr int kind_of(const Normal*) {
+    return 1;
+}
+constexpr int kind_of(const Texture*) {
+    return 2;
+}
 bool depends(const Pigment& p, Seen& seen);
 bool depends(const Normal& n, Seen& seen);
 bool depends(const Texture& t, Seen& seen);
@@ -86,22 +92,26 @@ bool depends(const Pigment& p, Seen& seen) {
     if (p.pattern == Pattern::Solid) return p.colours.front().depends_on_time();
     if (p.pattern == Pattern::Unsupported) return false;
     if (p.pattern == Pattern::Image)
-        return p.patterned.depends_on_time() || p.transform.depends_on_time() || p.image_map->images.size() > 1 ||
-               p.image_map->filter_all.depends_on_time() || p.image_map->transmit_all.depends_on_time();
-    if (p.patterned.depends_on_time() || p.colour_map.depends_on_time() || p.transform.depends_on_time()) return true;
+        return p.patterned.depends_on_time() || p.transform.depends_on_time() ||
+               p.image_map->images.size() > 1 || p.image_map->filter_all.depends_on_time() ||
+               p.image_map->transmit_all.depends_on_time();
+    if (p.patterned.depends_on_time() || p.colour_map.depends_on_time() ||
+        p.transform.depends_on_time())
+        return true;
     for (const auto& e : p.pigment_map)
         if (e.value.depends_on_time() || entry_depends(*e.pigment, seen)) return true;
     return false;
 }
 
 bool depends(const Normal& n, Seen& seen) {
-    if (n.patterned.depends_on_time() || n.amount.depends_on_time() || n.accuracy.depends_on_time() ||
-        n.transform.depends_on_time())
+    if (n.patterned.depends_on_time() || n.amount.depends_on_time() ||
+        n.accuracy.depends_on_time() || n.transform.depends_on_time())
         return true;
     for (const auto& e : n.normal_map)
         if (e.value.depends_on_time() || entry_depends(*e.normal, seen)) return true;
     for (const auto& e : n.slope_map)
-        if (e.value.depends_on_time() || e.height.depends_on_time() || e.slope.depends_on_time()) return true;
+        if (e.value.depends_on_time() || e.height.depends_on_time() || e.slope.depends_on_time())
+            return true;
     return false;
 }
 
@@ -117,7 +127,6 @@ void Texture::transform_by(const TransformStep& step) {
     for (Texture& layer : below) layer.transform_by(step);
 }
 
-
 namespace {
 
 bool depends(const Texture& x, Seen& seen) {
@@ -130,8 +139,8 @@ bool depends(const Texture& x, Seen& seen) {
     }
     if (depends(x.pigment, seen) || (x.normal && depends(*x.normal, seen))) return true;
     const Finish& f = x.finish;
-    for (const TimeFunction* value : {&f.ambient, &f.diffuse, &f.brilliance, &f.phong, &f.phong_size, &f.specular,
-                                      &f.roughness, &f.emission})
+    for (const TimeFunction* value : {&f.ambient, &f.diffuse, &f.brilliance, &f.phong,
+                                      &f.phong_size, &f.specular, &f.roughness, &f.emission})
         if (value->depends_on_time()) return true;
     if (f.reflection.depends_on_time()) return true;
     for (const Texture& layer : x.below)

@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
+#include "runtime/motion/transform.hpp"
+#include "runtime/source_place.hpp"
 #include "runtime/texture/pattern/image_map.hpp"
 #include "runtime/texture/pattern/pattern.hpp"
-#include "runtime/source_place.hpp"
-#include "runtime/motion/transform.hpp"
 #include "runtime/time/vector_function.hpp"
 
 namespace hexant::runtime {

@@ -33,20 +33,25 @@ TextureEvaluator::CompiledColour TextureEvaluator::compile(const ColourFunction&
 std::shared_ptr<const TextureEvaluator::CompiledFinish> TextureEvaluator::compile(
     const Finish& f, const std::optional<Interior>& interior) {
     const auto make = [&] {
-        return std::make_shared<const CompiledFinish>(CompiledFinish{
-            CompiledScalar(f.ambient), CompiledScalar(f.diffuse), CompiledScalar(f.brilliance),
-            CompiledScalar(f.phong), CompiledScalar(f.phong_size), CompiledScalar(f.specular),
-            CompiledScalar(f.roughness), CompiledScalar(f.emission),
-            interior ? CompiledScalar(interior->ior) : CompiledScalar(1.0),
-            {CompiledScalar(f.reflection.c[0]), CompiledScalar(f.reflection.c[1]),
-             CompiledScalar(f.reflection.c[2])}});
+        return std::make_shared<const CompiledFinish>(
+            CompiledFinish{CompiledScalar(f.ambient),
+                           CompiledScalar(f.diffuse),
+                           CompiledScalar(f.brilliance),
+                           CompiledScalar(f.phong),
+                           CompiledScalar(f.phong_size),
+                           CompiledScalar(f.specular),
+                           CompiledScalar(f.roughness),
+                           CompiledScalar(f.emission),
+                           interior ? CompiledScalar(interior->ior) : CompiledScalar(1.0),
+                           {CompiledScalar(f.reflection.c[0]), CompiledScalar(f.reflection.c[1]),
+                            CompiledScalar(f.reflection.c[2])}});
     };
     using Key = std::array<double, 12>;
     Key key{};
     std::size_t n = 0;
     for (const TimeFunction* value :
-         {&f.ambient, &f.diffuse, &f.brilliance, &f.phong, &f.phong_size, &f.specular,
-          &f.roughness, &f.emission, &f.reflection.c[0], &f.reflection.c[1], &f.reflection.c[2]}) {
+         {&f.ambient, &f.diffuse, &f.brilliance, &f.phong, &f.phong_size, &f.specular, &f.roughness,
+          &f.emission, &f.reflection.c[0], &f.reflection.c[1], &f.reflection.c[2]}) {
         if (!value->is_constant()) return make();
         key[n++] = value->constant();
     }
@@ -71,7 +76,8 @@ std::shared_ptr<const TextureEvaluator::CompiledFinish> TextureEvaluator::compil
 }
 
 TextureEvaluator::CompiledTurbulence TextureEvaluator::compile(const pattern::Turbulence& t) {
-    return {{CompiledScalar(t.amount.c[0]), CompiledScalar(t.amount.c[1]), CompiledScalar(t.amount.c[2])},
+    return {{CompiledScalar(t.amount.c[0]), CompiledScalar(t.amount.c[1]),
+             CompiledScalar(t.amount.c[2])},
             CompiledScalar(t.octaves),
             CompiledScalar(t.omega),
             CompiledScalar(t.lambda)};
@@ -81,10 +87,11 @@ pattern::Octaves TextureEvaluator::CompiledTurbulence::at(double t) const {
     return pattern::octaves_of(octaves.at(t), omega.at(t), lambda.at(t));
 }
 
-TextureEvaluator::CompiledPattern::CompiledPattern(const pattern::Pattern& source, const Transform& last,
-                                                   const Transform& texture)
+TextureEvaluator::CompiledPattern::CompiledPattern(const pattern::Pattern& source,
+                                                   const Transform& last, const Transform& texture)
     : kind(source.kind), head(std::make_shared<const Motion>(head_transform(last, texture))) {
-    for (int i = 0; i < 3; ++i) vector[static_cast<std::size_t>(i)] = CompiledScalar(source.vector.c[i]);
+    for (int i = 0; i < 3; ++i)
+        vector[static_cast<std::size_t>(i)] = CompiledScalar(source.vector.c[i]);
     for (std::size_t i = 0; i < 2; ++i) number[i] = CompiledScalar(source.number[i]);
     if (source.turbulence) turbulence = compile(*source.turbulence);
     frequency = CompiledScalar(source.frequency);
@@ -94,8 +101,10 @@ TextureEvaluator::CompiledPattern::CompiledPattern(const pattern::Pattern& sourc
     if (source.noise_generator != 0) noise_generator = source.noise_generator;
     for (const pattern::Warp& w : source.warps) {
         CompiledWarp c;
-        if (w.transform) c.transform = std::make_shared<const Motion>(*w.transform);
-        else c.turbulence = compile(w.turbulence);
+        if (w.transform)
+            c.transform = std::make_shared<const Motion>(*w.transform);
+        else
+            c.turbulence = compile(w.turbulence);
         warps.push_back(std::move(c));
     }
     const bool still = !source.vector.depends_on_time() && !source.number[0].depends_on_time() &&
@@ -114,21 +123,23 @@ pattern::Values TextureEvaluator::CompiledPattern::values_at(double t) const {
     pattern::Values v;
     v.vector = {vector[0].at(t), vector[1].at(t), vector[2].at(t)};
     v.number = {number[0].at(t), number[1].at(t)};
-    if (kind != nullptr && kind->single_numbers) v.number = {pattern::single(v.number[0]), pattern::single(v.number[1])};
+    if (kind != nullptr && kind->single_numbers)
+        v.number = {pattern::single(v.number[0]), pattern::single(v.number[1])};
     v.frequency = pattern::single(frequency.at(t));
     v.phase = pattern::single(phase.at(t));
     v.noise_generator = noise_generator;
     if (turbulence) {
         v.has_turbulence = true;
-        v.turbulence = {turbulence->amount[0].at(t), turbulence->amount[1].at(t), turbulence->amount[2].at(t)};
+        v.turbulence = {turbulence->amount[0].at(t), turbulence->amount[1].at(t),
+                        turbulence->amount[2].at(t)};
         v.octaves = turbulence->at(t);
     }
     return v;
 }
 
 template <class OnMap>
-glm::dvec3 TextureEvaluator::CompiledPattern::walk(const glm::dvec3& world, double t, const pattern::Values& v,
-                                                   OnMap on_map) const {
+glm::dvec3 TextureEvaluator::CompiledPattern::walk(const glm::dvec3& world, double t,
+                                                   const pattern::Values& v, OnMap on_map) const {
     const auto q = head->to_object<double>({world.x, world.y, world.z}, t);
     glm::dvec3 p(q[0], q[1], q[2]);
     constexpr bool maps = !std::is_same_v<OnMap, NoMaps>;
@@ -140,24 +151,29 @@ glm::dvec3 TextureEvaluator::CompiledPattern::walk(const glm::dvec3& world, doub
             if constexpr (maps) on_map(w->transform->jacobian_at(p, t));
         } else {
             const CompiledTurbulence& turb = w->turbulence;
-            p = pattern::apply_turbulence(p, {turb.amount[0].at(t), turb.amount[1].at(t), turb.amount[2].at(t)},
-                                          turb.at(t));
+            p = pattern::apply_turbulence(
+                p, {turb.amount[0].at(t), turb.amount[1].at(t), turb.amount[2].at(t)}, turb.at(t));
         }
     }
-    if (v.has_turbulence && (kind == nullptr || !kind->own_turbulence)) p = pattern::apply_turbulence(p, v.turbulence, v.octaves);
+    if (v.has_turbulence && (kind == nullptr || !kind->own_turbulence))
+        p = pattern::apply_turbulence(p, v.turbulence, v.octaves);
     return p;
 }
 
-bool TextureEvaluator::CompiledPattern::depends_on_time() const { return !head->is_static(); }
+bool TextureEvaluator::CompiledPattern::depends_on_time() const {
+    return !head->is_static();
+}
 
 // The pattern-to-outside linear parts of a walk, outside first: a normal
 // goes in by the transpose of each (POV-Ray's MInvTransNormal of the
 // inverse), out by their inverse transposes, in reverse.
 class TextureEvaluator::NormalMaps {
-public:
+  public:
     void push(const glm::dmat3& m) {
-        if (count_ < kOnStack) stack_[count_] = m;
-        else heap_.push_back(m);
+        if (count_ < kOnStack)
+            stack_[count_] = m;
+        else
+            heap_.push_back(m);
         ++count_;
     }
     bool empty() const { return count_ == 0; }
@@ -170,9 +186,11 @@ public:
         return n;
     }
 
-private:
+  private:
     static constexpr std::size_t kOnStack = 8;
-    const glm::dmat3& at(std::size_t i) const { return i < kOnStack ? stack_[i] : heap_[i - kOnStack]; }
+    const glm::dmat3& at(std::size_t i) const {
+        return i < kOnStack ? stack_[i] : heap_[i - kOnStack];
+    }
     glm::dmat3 stack_[kOnStack];
     std::vector<glm::dmat3> heap_;
     std::size_t count_ = 0;
@@ -198,17 +216,19 @@ glm::dmat3 outer_jacobian(const Motion& outer, const glm::dvec3& where, double t
 // precision values).
 template <class Entries>
 pattern::BlendPick pick_entry(const Entries& entries, double value, double t) {
-    return pattern::search_blend_map(value, entries.size(),
-                                     [&](std::size_t i) { return pattern::single(entries[i].first.at(t)); });
+    return pattern::search_blend_map(value, entries.size(), [&](std::size_t i) {
+        return pattern::single(entries[i].first.at(t));
+    });
 }
 
 // A normal's pattern, or the error naming where a pattern hexant lacks was
 // written.
 const pattern::Pattern& supported(const Normal& n) {
     if (!n.unsupported_name.empty())
-        throw ObjectError(n.unsupported_place,
-                          "normal pattern '" + n.unsupported_name + "' is not supported by hexant's tracer");
-    if (n.patterned.kind == nullptr) throw std::logic_error("TextureEvaluator: a normal without its pattern");
+        throw ObjectError(n.unsupported_place, "normal pattern '" + n.unsupported_name +
+                                                   "' is not supported by hexant's tracer");
+    if (n.patterned.kind == nullptr)
+        throw std::logic_error("TextureEvaluator: a normal without its pattern");
     return n.patterned;
 }
 
@@ -221,8 +241,9 @@ struct TextureEvaluator::Shared {
     // The entry compiled from `record` (in its pattern's space: nothing
     // outside it), once.
     template <class Compiled, class Record, class... Extra>
-    std::shared_ptr<const Compiled> entry(std::map<const Record*, std::shared_ptr<const Compiled>>& done,
-                                          const Record& record, const Extra&... extra) {
+    std::shared_ptr<const Compiled> entry(
+        std::map<const Record*, std::shared_ptr<const Compiled>>& done, const Record& record,
+        const Extra&... extra) {
         auto& slot = done[&record];
         if (!slot) slot = std::make_shared<const Compiled>(record, Transform{}, extra..., *this);
         return slot;
@@ -238,14 +259,16 @@ TextureEvaluator::TextureEvaluator(const Texture& texture, const std::optional<I
       opaque_(texture.opaque()) {}
 
 TextureEvaluator::CompiledTexture::CompiledTexture(const Texture& texture, const Transform& outside,
-                                                   const std::optional<Interior>& interior, Shared& shared) {
+                                                   const std::optional<Interior>& interior,
+                                                   Shared& shared) {
     if (texture.is_patterned()) {
         if (texture.patterned.kind == nullptr)
             throw std::logic_error("TextureEvaluator: a texture_map without its pattern");
         // (A uv-mapped one: in uv space, through its own transforms alone.)
         uv = texture.uv_mapping != UvMapping::Off;
         pattern.emplace(texture.patterned, texture.transform, uv ? Transform{} : outside);
-        if (uv && !texture.uv_outside.empty()) outer = std::make_shared<const Motion>(texture.uv_outside);
+        if (uv && !texture.uv_outside.empty())
+            outer = std::make_shared<const Motion>(texture.uv_outside);
         // (The entries live in this pattern's space: nothing outside it.)
         for (const auto& e : texture.texture_map) {
             auto entry = shared.entry(shared.textures, *e.texture, interior);
@@ -276,34 +299,45 @@ TextureEvaluator::CompiledTexture::CompiledTexture(const Texture& texture, const
     add(texture, placed(texture));
     for (const Texture& below : texture.below) {
         if (below.is_patterned() || !below.below.empty())
-            throw std::logic_error("TextureEvaluator: a layer under a texture is one plain texture");
+            throw std::logic_error(
+                "TextureEvaluator: a layer under a texture is one plain texture");
         add(below, placed(below));
     }
 }
 
-TextureEvaluator::CompiledNormal::CompiledNormal(const Normal& n, const Transform& texture, Shared& shared)
+TextureEvaluator::CompiledNormal::CompiledNormal(const Normal& n, const Transform& texture,
+                                                 Shared& shared)
     : pattern(supported(n), n.transform, n.uv_mapping != UvMapping::Off ? Transform{} : texture),
-      amount(n.amount), accuracy(n.accuracy), no_bump_scale(n.no_bump_scale),
+      amount(n.amount),
+      accuracy(n.accuracy),
+      no_bump_scale(n.no_bump_scale),
       uv(n.uv_mapping != UvMapping::Off) {
     // (Each entry of a normal map in the space of this pattern.)
     for (const auto& e : n.normal_map)
         normals.push_back({CompiledScalar(e.value), shared.entry(shared.normals, *e.normal)});
-    const bool still = std::all_of(n.slope_map.begin(), n.slope_map.end(), [](const SlopeMapEntry& e) {
-        return e.value.is_constant() && e.height.is_constant() && e.slope.is_constant();
-    });
+    const bool still =
+        std::all_of(n.slope_map.begin(), n.slope_map.end(), [](const SlopeMapEntry& e) {
+            return e.value.is_constant() && e.height.is_constant() && e.slope.is_constant();
+        });
     for (const auto& e : n.slope_map) {
-        if (still) fixed_slopes.push_back({pattern::single(e.value.constant()), e.height.constant(), e.slope.constant()});
-        else slopes.push_back({CompiledScalar(e.value), CompiledScalar(e.height), CompiledScalar(e.slope)});
+        if (still)
+            fixed_slopes.push_back(
+                {pattern::single(e.value.constant()), e.height.constant(), e.slope.constant()});
+        else
+            slopes.push_back(
+                {CompiledScalar(e.value), CompiledScalar(e.height), CompiledScalar(e.slope)});
     }
 }
 
 TextureEvaluator::CompiledPigment::CompiledPigment(const Pigment& pigment, const Transform& texture,
                                                    Shared& shared) {
     if (pigment.pattern == Pigment::Pattern::Unsupported)
-        throw ObjectError(pigment.unsupported_place,
-                          "pigment pattern '" + pigment.unsupported_name + "' is not supported by hexant's tracer");
+        throw ObjectError(pigment.unsupported_place, "pigment pattern '" +
+                                                         pigment.unsupported_name +
+                                                         "' is not supported by hexant's tracer");
     if (pigment.pattern == Pigment::Pattern::Solid) {
-        if (pigment.colours.empty()) throw std::logic_error("TextureEvaluator: a solid pigment without its colour");
+        if (pigment.colours.empty())
+            throw std::logic_error("TextureEvaluator: a solid pigment without its colour");
         solid = compile(pigment.colours.front());
         return;
     }
@@ -316,11 +350,13 @@ TextureEvaluator::CompiledPigment::CompiledPigment(const Pigment& pigment, const
         transmit_all = CompiledScalar(image->transmit_all);
         return;
     }
-    if (pattern->kind == nullptr) throw std::logic_error("TextureEvaluator: a pattern without its kind");
+    if (pattern->kind == nullptr)
+        throw std::logic_error("TextureEvaluator: a pattern without its kind");
     if (!pigment.pigment_map.empty()) {
         // (Each in the space of this pattern: no texture transform of its own.)
         for (const auto& e : pigment.pigment_map)
-            pigments.push_back({CompiledScalar(e.value), shared.entry(shared.pigments, *e.pigment)});
+            pigments.push_back(
+                {CompiledScalar(e.value), shared.entry(shared.pigments, *e.pigment)});
         return;
     }
     const ColourMap& map = pigment.colour_map;
@@ -333,13 +369,17 @@ TextureEvaluator::CompiledPigment::CompiledPigment(const Pigment& pigment, const
             fixed_map.push_back(entry);
         }
     } else {
-        for (const auto& e : map.entries) this->map.push_back({CompiledScalar(e.value), compile(e.colour)});
+        for (const auto& e : map.entries)
+            this->map.push_back({CompiledScalar(e.value), compile(e.colour)});
     }
 }
 
-std::array<double, 5> TextureEvaluator::CompiledPigment::colour(const glm::dvec3& where, const glm::dvec2& surface_uv,
+std::array<double, 5> TextureEvaluator::CompiledPigment::colour(const glm::dvec3& where,
+                                                                const glm::dvec2& surface_uv,
                                                                 double t) const {
-    if (solid) return {solid->c[0].at(t), solid->c[1].at(t), solid->c[2].at(t), solid->c[3].at(t), solid->c[4].at(t)};
+    if (solid)
+        return {solid->c[0].at(t), solid->c[1].at(t), solid->c[2].at(t), solid->c[3].at(t),
+                solid->c[4].at(t)};
     const CompiledPattern& p = *pattern;
     const pattern::Values v = p.values(t);
     const glm::dvec3 point = p.point(uv ? glm::dvec3(surface_uv, 0.0) : where, t, v);
@@ -362,12 +402,14 @@ std::array<double, 5> TextureEvaluator::CompiledPigment::colour(const glm::dvec3
     std::vector<pattern::MapEntry> entries;
     entries.reserve(map.size());
     for (const auto& [entry_value, colour] : map)
-        entries.push_back({pattern::single(entry_value.at(t)), {colour.c[0].at(t), colour.c[1].at(t), colour.c[2].at(t),
-                                                                colour.c[3].at(t), colour.c[4].at(t)}});
+        entries.push_back({pattern::single(entry_value.at(t)),
+                           {colour.c[0].at(t), colour.c[1].at(t), colour.c[2].at(t),
+                            colour.c[3].at(t), colour.c[4].at(t)}});
     return pattern::map_colour(entries, value);
 }
 
-glm::dvec3 TextureEvaluator::CompiledNormal::perturb(const glm::dvec3& normal, const glm::dvec3& where,
+glm::dvec3 TextureEvaluator::CompiledNormal::perturb(const glm::dvec3& normal,
+                                                     const glm::dvec3& where,
                                                      const glm::dvec2& surface_uv, double t) const {
     const CompiledPattern& p = pattern;
     const pattern::Values v = p.values(t);
@@ -393,8 +435,11 @@ glm::dvec3 TextureEvaluator::CompiledNormal::perturb(const glm::dvec3& normal, c
         std::vector<pattern::SlopeEntry> moving;
         for (const auto& [value, height, slope] : slopes)
             moving.push_back({pattern::single(value.at(t)), height.at(t), slope.at(t)});
-        const auto* slope_map = !fixed_slopes.empty() ? &fixed_slopes : !moving.empty() ? &moving : nullptr;
-        bumped = pattern::slope_normal(*p.kind, point, v, p.wave, p.exponent_at(t), pattern::single(amount.at(t)),
+        const auto* slope_map = !fixed_slopes.empty() ? &fixed_slopes
+                                : !moving.empty()     ? &moving
+                                                      : nullptr;
+        bumped = pattern::slope_normal(*p.kind, point, v, p.wave, p.exponent_at(t),
+                                       pattern::single(amount.at(t)),
                                        pattern::single(accuracy.at(t)), pn, slope_map);
     }
     const glm::dvec3 out = maps.out_of(unit_unless(no_bump_scale, bumped));
@@ -404,15 +449,16 @@ glm::dvec3 TextureEvaluator::CompiledNormal::perturb(const glm::dvec3& normal, c
     return out / l;
 }
 
-MaterialSample TextureEvaluator::CompiledLayer::material(const glm::dvec3& point, const glm::dvec2& surface_uv,
-                                                        double t) const {
+MaterialSample TextureEvaluator::CompiledLayer::material(const glm::dvec3& point,
+                                                         const glm::dvec2& surface_uv,
+                                                         double t) const {
     MaterialSample m;
     fill(m, point, surface_uv, t);
     return m;
 }
 
-void TextureEvaluator::CompiledLayer::fill(MaterialSample& m, const glm::dvec3& point, const glm::dvec2& surface_uv,
-                                          double t) const {
+void TextureEvaluator::CompiledLayer::fill(MaterialSample& m, const glm::dvec3& point,
+                                           const glm::dvec2& surface_uv, double t) const {
     const auto c = pigment->colour(at(point, surface_uv), surface_uv, t);
     m.colour = {c[0], c[1], c[2]};
     m.filter = c[3];
@@ -431,19 +477,22 @@ void TextureEvaluator::CompiledLayer::fill(MaterialSample& m, const glm::dvec3& 
 }
 
 glm::dvec3 TextureEvaluator::CompiledLayer::perturbed(const glm::dvec3& n, const glm::dvec3& point,
-                                                     const glm::dvec2& surface_uv, double t) const {
+                                                      const glm::dvec2& surface_uv,
+                                                      double t) const {
     if (!normal) return n;
     if (!outer) return normal->perturb(n, at(point, surface_uv), surface_uv, t);
     NormalMaps maps;
     maps.push(outer_jacobian(*outer, point, t));
-    const glm::dvec3 back = maps.out_of(normal->perturb(unit_unless(false, maps.into(n)), at(point, surface_uv),
-                                                        surface_uv, t));
+    const glm::dvec3 back = maps.out_of(
+        normal->perturb(unit_unless(false, maps.into(n)), at(point, surface_uv), surface_uv, t));
     const double l = glm::length(back);
     return l > 0.0 && std::isfinite(l) ? back / l : n;
 }
 
-void TextureEvaluator::CompiledTexture::sample(const glm::dvec3& where, const glm::dvec2& surface_uv, double t,
-                                               const glm::dvec3& normal, double weight, TextureSample& out) const {
+void TextureEvaluator::CompiledTexture::sample(const glm::dvec3& where,
+                                               const glm::dvec2& surface_uv, double t,
+                                               const glm::dvec3& normal, double weight,
+                                               TextureSample& out) const {
     if (!pattern) {
         out.plains.push_back({weight, out.layers.size(), layers.size()});
         for (const CompiledLayer& layer : layers) {
@@ -462,8 +511,9 @@ void TextureEvaluator::CompiledTexture::sample(const glm::dvec3& where, const gl
     NormalMaps maps;
     const glm::dvec3 start = uv ? glm::dvec3(surface_uv, 0.0) : where;
     if (outer && has_normal) maps.push(outer_jacobian(*outer, where, t));
-    const glm::dvec3 point =
-        has_normal ? p.walk(start, t, v, [&](const glm::dmat3& m) { maps.push(m); }) : p.point(start, t, v);
+    const glm::dvec3 point = has_normal
+                                 ? p.walk(start, t, v, [&](const glm::dmat3& m) { maps.push(m); })
+                                 : p.point(start, t, v);
     const pattern::BlendPick pick = pick_entry(entries, p.value(point, t, v), t);
     const bool turn = has_normal && !maps.empty();
     const glm::dvec3 inside = turn ? unit_unless(false, maps.into(normal)) : normal;
@@ -471,7 +521,8 @@ void TextureEvaluator::CompiledTexture::sample(const glm::dvec3& where, const gl
     const double share = pick.prev == pick.cur ? 1.0 : pick.f;
     entries[pick.cur].second->sample(point, surface_uv, t, inside, weight * share, out);
     if (pick.prev != pick.cur)
-        entries[pick.prev].second->sample(point, surface_uv, t, inside, weight * (1.0 - share), out);
+        entries[pick.prev].second->sample(point, surface_uv, t, inside, weight * (1.0 - share),
+                                          out);
     if (!turn) return;
     for (std::size_t i = first; i < out.layers.size(); ++i) {
         const glm::dvec3 back = maps.out_of(out.layers[i].normal);
@@ -480,10 +531,8 @@ void TextureEvaluator::CompiledTexture::sample(const glm::dvec3& where, const gl
     }
 }
 
-const TextureEvaluator::CompiledLayer& TextureEvaluator::CompiledTexture::picked_top(const glm::dvec3& where,
-                                                                                    const glm::dvec2& surface_uv,
-                                                                                    double t,
-                                                                                    glm::dvec3& at) const {
+const TextureEvaluator::CompiledLayer& TextureEvaluator::CompiledTexture::picked_top(
+    const glm::dvec3& where, const glm::dvec2& surface_uv, double t, glm::dvec3& at) const {
     at = where;
     if (!pattern) return layers.front();
     const pattern::Values v = pattern->values(t);
@@ -504,15 +553,19 @@ void TextureEvaluator::sample_layer(const glm::dvec3& world_point, const glm::dv
     out.normal = layer.perturbed(normal, world_point, uv, t);
 }
 
-MaterialSample TextureEvaluator::at(const glm::dvec3& world_point, const glm::dvec2& uv, double t) const {
+MaterialSample TextureEvaluator::at(const glm::dvec3& world_point, const glm::dvec2& uv,
+                                    double t) const {
     glm::dvec3 point;
     const CompiledLayer& layer = texture_->picked_top(world_point, uv, t, point);
     return layer.material(point, uv, t);
 }
 
-bool TextureEvaluator::has_normal() const { return !texture_->pattern && texture_->layers.front().normal != nullptr; }
+bool TextureEvaluator::has_normal() const {
+    return !texture_->pattern && texture_->layers.front().normal != nullptr;
+}
 
-glm::dvec3 TextureEvaluator::perturb(const glm::dvec3& normal, const glm::dvec3& world_point, double t) const {
+glm::dvec3 TextureEvaluator::perturb(const glm::dvec3& normal, const glm::dvec3& world_point,
+                                     double t) const {
     if (!has_normal()) return normal;
     return texture_->layers.front().normal->perturb(normal, world_point, glm::dvec2(0.0), t);
 }

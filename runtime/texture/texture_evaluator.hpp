@@ -12,10 +12,10 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-#include "runtime/time/compiled_function.hpp"
+#include "runtime/motion/motion.hpp"
 #include "runtime/texture/material.hpp"
 #include "runtime/texture/material_sample.hpp"
-#include "runtime/motion/motion.hpp"
+#include "runtime/time/compiled_function.hpp"
 
 namespace hexant::runtime {
 
@@ -44,7 +44,7 @@ struct TextureSample {
 };
 
 class TextureEvaluator {
-public:
+  public:
     // `texture.transform` maps texture space to the world (the object's
     // transforms written after the texture are already appended, so the
     // texture moves with the object). Throws ObjectError, naming the place,
@@ -57,14 +57,14 @@ public:
     // layers and their perturbed normals, to `out`. The weights sum to 1.
     // `uv`: the surface's (u, v) there (SurfacePoint::uv), which a
     // uv-mapped pigment, normal or texture reads as the point (u, v, 0).
-    void sample(const glm::dvec3& world_point, const glm::dvec2& uv, double t, const glm::dvec3& normal,
-                TextureSample& out) const;
+    void sample(const glm::dvec3& world_point, const glm::dvec2& uv, double t,
+                const glm::dvec3& normal, TextureSample& out) const;
 
     // Whether the texture is one plain layer (no texture_map, no layers
     // under it): then sample_layer gives its one layer, as sample would.
     bool single_layer() const { return !texture_->pattern && texture_->layers.size() == 1; }
-    void sample_layer(const glm::dvec3& world_point, const glm::dvec2& uv, double t, const glm::dvec3& normal,
-                      TextureSample::Layer& out) const;
+    void sample_layer(const glm::dvec3& world_point, const glm::dvec2& uv, double t,
+                      const glm::dvec3& normal, TextureSample::Layer& out) const;
 
     // The top layer's material of the plain texture picked at the point
     // (for a texture_map the entry at or above the pattern's value, without
@@ -83,7 +83,7 @@ public:
     // UnWarp_Normal. A bump that cancels the normal leaves it as it was.
     glm::dvec3 perturb(const glm::dvec3& normal, const glm::dvec3& world_point, double t) const;
 
-private:
+  private:
     struct CompiledColour {
         std::array<CompiledScalar, 5> c;
     };
@@ -127,7 +127,8 @@ private:
         std::optional<pattern::Values> fixed;
         double fixed_exponent = 1.0;
 
-        CompiledPattern(const pattern::Pattern& source, const Transform& last, const Transform& texture);
+        CompiledPattern(const pattern::Pattern& source, const Transform& last,
+                        const Transform& texture);
         bool depends_on_time() const;
         // The parameters at t.
         pattern::Values values(double t) const { return fixed ? *fixed : values_at(t); }
@@ -150,7 +151,8 @@ private:
         // The same, handing each transform's pattern-to-outside linear part
         // (head first) to on_map: what a normal goes through.
         template <class OnMap>
-        glm::dvec3 walk(const glm::dvec3& outside, double t, const pattern::Values& v, OnMap on_map) const;
+        glm::dvec3 walk(const glm::dvec3& outside, double t, const pattern::Values& v,
+                        OnMap on_map) const;
     };
     // The linear maps a normal goes through into a pattern's space, outside
     // first (on the stack for the usual few).
@@ -209,10 +211,11 @@ private:
         std::shared_ptr<const Motion> outer;
         // The shading normal `normal` (in the space around it) with this
         // layer's normal { } at `point` (there too).
-        glm::dvec3 perturbed(const glm::dvec3& normal, const glm::dvec3& point, const glm::dvec2& surface_uv,
-                             double t) const;
+        glm::dvec3 perturbed(const glm::dvec3& normal, const glm::dvec3& point,
+                             const glm::dvec2& surface_uv, double t) const;
         MaterialSample material(const glm::dvec3& point, const glm::dvec2& uv, double t) const;
-        void fill(MaterialSample& m, const glm::dvec3& point, const glm::dvec2& uv, double t) const;  // (in place)
+        void fill(MaterialSample& m, const glm::dvec3& point, const glm::dvec2& uv,
+                  double t) const;  // (in place)
         // The point its pigment and normal read.
         glm::dvec3 at(const glm::dvec3& point, const glm::dvec2& surface_uv) const {
             return uv ? glm::dvec3(surface_uv, 0.0) : point;
@@ -227,10 +230,10 @@ private:
         bool uv = false;          // a uv-mapped patterned texture: its pattern at (u, v, 0)
         std::shared_ptr<const Motion> outer;  // as CompiledLayer::outer
 
-        CompiledTexture(const Texture& texture, const Transform& outside, const std::optional<Interior>& interior,
-                        Shared& shared);
-        void sample(const glm::dvec3& point, const glm::dvec2& uv, double t, const glm::dvec3& normal,
-                    double weight, TextureSample& out) const;
+        CompiledTexture(const Texture& texture, const Transform& outside,
+                        const std::optional<Interior>& interior, Shared& shared);
+        void sample(const glm::dvec3& point, const glm::dvec2& uv, double t,
+                    const glm::dvec3& normal, double weight, TextureSample& out) const;
         const CompiledLayer& picked_top(const glm::dvec3& point, const glm::dvec2& uv, double t,
                                         glm::dvec3& at) const;
     };

@@ -14,15 +14,15 @@
 #include <cstdint>
 #include <optional>
 
+#include "runtime/time/interval_jet.hpp"
 #include "runtime/time/time_function.hpp"
 #include "runtime/time/time_ops.hpp"
 #include "runtime/time/time_ops_generic.hpp"
-#include "runtime/time/interval_jet.hpp"
 
 namespace hexant::runtime {
 
 class ClockLine {
-public:
+  public:
     ClockLine() = default;  // the constant 0
     static ClockLine constant(double value) {
         ClockLine line;
@@ -82,7 +82,7 @@ public:
         return v;
     }
 
-private:
+  private:
     enum class Op : std::uint8_t { Constant, None, Add, Subtract, Multiply, Divide };
     double offset_ = 0.0;  // a (the constant's value for a constant)
     double scale_ = 1.0;   // k

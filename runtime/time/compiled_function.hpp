@@ -4,8 +4,9 @@
 #pragma once
 
 #include <array>
-#include <glm/vec3.hpp>
 #include <memory>
+
+#include <glm/vec3.hpp>
 
 #include "runtime/time/dual.hpp"
 #include "runtime/time/interval.hpp"

@@ -135,7 +135,6 @@ inline Interval intersect(const Interval& a, const Interval& b) {
 
 // Arithmetic.
 
-
 inline Interval operator-(const Interval& a) {
     return {-a.hi, -a.lo};
 }
@@ -193,7 +192,9 @@ inline Interval sparse_dot(double m0, double m1, double m2, const std::array<Int
     Interval sum(0.0);
     for (int j = 0; j < 3; ++j) {
         if (m[j] == 0.0) continue;
-        const Interval term = m[j] == 1.0 ? p[j] : m[j] == -1.0 ? -p[j] : interval_detail::scaled(p[j], m[j]);
+        const Interval term = m[j] == 1.0    ? p[j]
+                              : m[j] == -1.0 ? -p[j]
+                                             : interval_detail::scaled(p[j], m[j]);
         sum = sum + term;
     }
     return sum;
@@ -213,7 +214,6 @@ inline Interval operator*(const Interval& a, const Interval& b) {
     const double p1 = a.lo * b.lo, p2 = a.lo * b.hi, p3 = a.hi * b.lo, p4 = a.hi * b.hi;
     return {next_down(min4(p1, p2, p3, p4)), next_up(max4(p1, p2, p3, p4))};
 }
-
 
 inline Interval operator/(const Interval& a, const Interval& b) {
     using namespace interval_detail;

@@ -82,7 +82,8 @@ bool Lifetime::operator==(const Lifetime& other) const {
     if (always_ != other.always_) return false;
     if (pieces_.size() != other.pieces_.size()) return false;
     for (std::size_t i = 0; i < pieces_.size(); ++i)
-        if (pieces_[i].lo != other.pieces_[i].lo || pieces_[i].hi != other.pieces_[i].hi) return false;
+        if (pieces_[i].lo != other.pieces_[i].lo || pieces_[i].hi != other.pieces_[i].hi)
+            return false;
     return true;
 }
 

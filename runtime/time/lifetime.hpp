@@ -1,9 +1,9 @@
 // When something exists: a set of time intervals. An object, light or value
 // made under a branch whose condition depends on `clock` exists only during
 // the pieces of time where that branch holds (the interpreter's time
-// domain, Interpreter::domain in language/interpreter_state.hpp); the tracer's bounds are empty outside
-// them, so the spacetime hierarchy never holds the object there (Glassner
-// 1988: a hierarchy in spacetime holds an object only where it exists).
+// domain, Interpreter::domain in language/interpreter_state.hpp); the tracer's bounds are empty
+// outside them, so the spacetime hierarchy never holds the object there (Glassner 1988: a hierarchy
+// in spacetime holds an object only where it exists).
 //
 // The pieces are closed intervals of doubles, sorted and disjoint. Two
 // pieces that meet at neighbouring doubles (a branch that holds up to a and
@@ -19,7 +19,7 @@
 namespace hexant::runtime {
 
 class Lifetime {
-public:
+  public:
     // Always: no restriction (the default, and what costs nothing).
     Lifetime() = default;
     static Lifetime always() { return {}; }
@@ -50,7 +50,7 @@ public:
     // "always", "never" or "[0, 0.3137] u [0.5, 1]", for messages and dumps.
     std::string to_string() const;
 
-private:
+  private:
     bool always_ = true;
     std::vector<Interval> pieces_;
 };

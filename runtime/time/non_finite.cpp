@@ -16,28 +16,37 @@ constexpr int kBudget = 4000;
 // Doubles tried one by one in an interval this narrow.
 constexpr int kLastDoubles = 16;
 
-bool finite(const Interval& v) { return std::isfinite(v.lo) && std::isfinite(v.hi); }
-bool contains_zero(const Interval& v) { return v.lo <= 0.0 && v.hi >= 0.0; }
+bool finite(const Interval& v) {
+    return std::isfinite(v.lo) && std::isfinite(v.hi);
+}
+bool contains_zero(const Interval& v) {
+    return v.lo <= 0.0 && v.hi >= 0.0;
+}
 
 // Whether an operation may leave its domain (or meet 0 times infinity)
 // somewhere in its arguments' intervals, where the interval evaluator
 // clamps instead of giving NaN.
 bool may_leave_domain(TimeOp op, const Interval& a, const Interval& b) {
     switch (op) {
-        case TimeOp::Sqrt: return a.lo < 0.0;
+        case TimeOp::Sqrt:
+            return a.lo < 0.0;
         case TimeOp::Ln:
-        case TimeOp::Log10: return a.lo <= 0.0;
+        case TimeOp::Log10:
+            return a.lo <= 0.0;
         case TimeOp::Asin:
-        case TimeOp::Acos: return a.lo < -1.0 || a.hi > 1.0;
+        case TimeOp::Acos:
+            return a.lo < -1.0 || a.hi > 1.0;
         case TimeOp::Pow:
             return (a.lo < 0.0 && !(b.is_point() && std::floor(b.lo) == b.lo)) ||
                    (contains_zero(a) && b.lo < 0.0);
         case TimeOp::Mod:
         case TimeOp::IntDiv:
-        case TimeOp::Divide: return contains_zero(b);
+        case TimeOp::Divide:
+            return contains_zero(b);
         case TimeOp::Multiply:
             return (contains_zero(a) && !finite(b)) || (contains_zero(b) && !finite(a));
-        default: return false;
+        default:
+            return false;
     }
 }
 

@@ -28,8 +28,12 @@ struct PointRange {
 
 namespace point_range_detail {
 
-inline double low(double x) { return x != x ? -std::numeric_limits<double>::infinity() : x; }
-inline double high(double x) { return x != x ? std::numeric_limits<double>::infinity() : x; }
+inline double low(double x) {
+    return x != x ? -std::numeric_limits<double>::infinity() : x;
+}
+inline double high(double x) {
+    return x != x ? std::numeric_limits<double>::infinity() : x;
+}
 
 inline Interval sum(const Interval& a, const Interval& b) {
     return {low(a.lo + b.lo), high(a.hi + b.hi)};
@@ -56,11 +60,16 @@ inline PointRange apply_op(TimeOp op, const PointRange& a, const PointRange& b =
                            const PointRange& c = 0.0) {
     namespace d = point_range_detail;
     switch (op) {
-        case TimeOp::Add: return PointRange(d::sum(a.v, b.v));
-        case TimeOp::Subtract: return PointRange(d::sum(a.v, -b.v));
-        case TimeOp::Multiply: return PointRange(d::product(a.v, b.v));
-        case TimeOp::Divide: return PointRange(d::quotient(a.v, b.v));
-        default: return PointRange(apply_op(op, a.v, b.v, c.v));
+        case TimeOp::Add:
+            return PointRange(d::sum(a.v, b.v));
+        case TimeOp::Subtract:
+            return PointRange(d::sum(a.v, -b.v));
+        case TimeOp::Multiply:
+            return PointRange(d::product(a.v, b.v));
+        case TimeOp::Divide:
+            return PointRange(d::quotient(a.v, b.v));
+        default:
+            return PointRange(apply_op(op, a.v, b.v, c.v));
     }
 }
 

@@ -20,7 +20,7 @@ namespace {
 // one instant from their values there.
 template <typename Labeller>
 class Splitter {
-public:
+  public:
     using Label = typename Labeller::Label;
 
     Splitter(const std::vector<TimeFunction>& functions, std::size_t max_pieces, Labeller labeller)
@@ -52,8 +52,9 @@ public:
             std::snprintf(where, sizeof where, "%.17g", t.lo);
             throw LimitError(std::string(Labeller::kWhat) +
                              " that depends on clock could not be split into pieces of "
-                             "constant value within " + std::to_string(max_evaluations_) +
-                             " evaluations: near clock " + where +
+                             "constant value within " +
+                             std::to_string(max_evaluations_) + " evaluations: near clock " +
+                             where +
                              " it changes without end, or stays within rounding of changing "
                              "(write it so that it is clearly one side there)");
         }
@@ -87,7 +88,7 @@ public:
     std::vector<std::pair<Interval, Label>>& pieces() { return pieces_; }
     std::vector<double>& instants() { return instants_; }
 
-private:
+  private:
     void push(const Interval& t, Label label) {
         if (open_ && !pieces_.empty() && pieces_.back().second == label) {
             pieces_.back().first.hi = t.hi;
@@ -97,7 +98,8 @@ private:
         open_ = true;
         pieces_.push_back({t, std::move(label)});
         if (instants_.size() > max_pieces_)
-            throw LimitError(std::string(Labeller::kWhat) + " that depends on clock changes more than " +
+            throw LimitError(std::string(Labeller::kWhat) +
+                             " that depends on clock changes more than " +
                              std::to_string(max_pieces_) +
                              " times over the animation (--max-time-pieces N raises the limit)");
     }

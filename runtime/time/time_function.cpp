@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include "runtime/motion/spline.hpp"
@@ -20,46 +20,86 @@ int arity(TimeOp op) {
 
 const char* name(TimeOp op) {
     switch (op) {
-        case TimeOp::Constant: return "constant";
-        case TimeOp::Clock: return "clock";
-        case TimeOp::Negate: return "-";
-        case TimeOp::Not: return "!";
-        case TimeOp::Abs: return "abs";
-        case TimeOp::Sin: return "sin";
-        case TimeOp::Cos: return "cos";
-        case TimeOp::Tan: return "tan";
-        case TimeOp::Asin: return "asin";
-        case TimeOp::Acos: return "acos";
-        case TimeOp::Atan: return "atan";
-        case TimeOp::Sqrt: return "sqrt";
-        case TimeOp::Exp: return "exp";
-        case TimeOp::Log10: return "log";
-        case TimeOp::Ln: return "ln";
-        case TimeOp::Int: return "int";
-        case TimeOp::Floor: return "floor";
-        case TimeOp::Ceil: return "ceil";
-        case TimeOp::SrgbDecode: return "srgb";
-        case TimeOp::Add: return "+";
-        case TimeOp::Subtract: return "-";
-        case TimeOp::Multiply: return "*";
-        case TimeOp::Divide: return "/";
-        case TimeOp::Pow: return "pow";
-        case TimeOp::Atan2: return "atan2";
-        case TimeOp::Min: return "min";
-        case TimeOp::Max: return "max";
-        case TimeOp::Mod: return "mod";
-        case TimeOp::IntDiv: return "div";
-        case TimeOp::Less: return "<";
-        case TimeOp::LessEqual: return "<=";
-        case TimeOp::Equal: return "=";
-        case TimeOp::NotEqual: return "!=";
-        case TimeOp::GreaterEqual: return ">=";
-        case TimeOp::Greater: return ">";
-        case TimeOp::And: return "&";
-        case TimeOp::Or: return "|";
-        case TimeOp::Select: return "select";
-        case TimeOp::Conditional: return "?:";
-        case TimeOp::SplineComponent: return "spline";
+        case TimeOp::Constant:
+            return "constant";
+        case TimeOp::Clock:
+            return "clock";
+        case TimeOp::Negate:
+            return "-";
+        case TimeOp::Not:
+            return "!";
+        case TimeOp::Abs:
+            return "abs";
+        case TimeOp::Sin:
+            return "sin";
+        case TimeOp::Cos:
+            return "cos";
+        case TimeOp::Tan:
+            return "tan";
+        case TimeOp::Asin:
+            return "asin";
+        case TimeOp::Acos:
+            return "acos";
+        case TimeOp::Atan:
+            return "atan";
+        case TimeOp::Sqrt:
+            return "sqrt";
+        case TimeOp::Exp:
+            return "exp";
+        case TimeOp::Log10:
+            return "log";
+        case TimeOp::Ln:
+            return "ln";
+        case TimeOp::Int:
+            return "int";
+        case TimeOp::Floor:
+            return "floor";
+        case TimeOp::Ceil:
+            return "ceil";
+        case TimeOp::SrgbDecode:
+            return "srgb";
+        case TimeOp::Add:
+            return "+";
+        case TimeOp::Subtract:
+            return "-";
+        case TimeOp::Multiply:
+            return "*";
+        case TimeOp::Divide:
+            return "/";
+        case TimeOp::Pow:
+            return "pow";
+        case TimeOp::Atan2:
+            return "atan2";
+        case TimeOp::Min:
+            return "min";
+        case TimeOp::Max:
+            return "max";
+        case TimeOp::Mod:
+            return "mod";
+        case TimeOp::IntDiv:
+            return "div";
+        case TimeOp::Less:
+            return "<";
+        case TimeOp::LessEqual:
+            return "<=";
+        case TimeOp::Equal:
+            return "=";
+        case TimeOp::NotEqual:
+            return "!=";
+        case TimeOp::GreaterEqual:
+            return ">=";
+        case TimeOp::Greater:
+            return ">";
+        case TimeOp::And:
+            return "&";
+        case TimeOp::Or:
+            return "|";
+        case TimeOp::Select:
+            return "select";
+        case TimeOp::Conditional:
+            return "?:";
+        case TimeOp::SplineComponent:
+            return "spline";
     }
     return "?";
 }
@@ -113,9 +153,8 @@ void TimeFunction::release() noexcept {
 }
 
 TimeFunctionTooDeep::TimeFunctionTooDeep()
-    : LimitError("a function of clock nested more than " +
-                         std::to_string(kMaxTimeFunctionDepth) +
-                         " operations deep (built up step by step, in a loop?)") {}
+    : LimitError("a function of clock nested more than " + std::to_string(kMaxTimeFunctionDepth) +
+                 " operations deep (built up step by step, in a loop?)") {}
 
 namespace {
 
@@ -157,8 +196,8 @@ TimeFunction TimeFunction::apply(TimeOp op, const TimeFunction& a, const TimeFun
     // <0 * f, f, 0 * f>), and a zero is what the scene means there, a constant
     // that costs no evaluation, not a function of time. (Where g is not
     // finite POV-Ray's product is NaN; g's own uses are checked there.)
-    if (op == TimeOp::Multiply && ((a.is_constant() && a.constant() == 0.0) ||
-                                   (b.is_constant() && b.constant() == 0.0)))
+    if (op == TimeOp::Multiply &&
+        ((a.is_constant() && a.constant() == 0.0) || (b.is_constant() && b.constant() == 0.0)))
         return TimeFunction(0.0);
     auto node = std::make_unique<Node>();
     node->op = op;
@@ -198,13 +237,18 @@ double TimeFunction::operator()(double t) const {
     if (is_constant()) return constant();
     const Node& n = *node();
     switch (n.op) {
-        case TimeOp::Clock: return t;
-        case TimeOp::SplineComponent: return n.spline->evaluate(n.args[0](t))[n.component];
-        default: break;
+        case TimeOp::Clock:
+            return t;
+        case TimeOp::SplineComponent:
+            return n.spline->evaluate(n.args[0](t))[n.component];
+        default:
+            break;
     }
     switch (arity(n.op)) {
-        case 1: return apply_op(n.op, n.args[0](t));
-        case 2: return apply_op(n.op, n.args[0](t), n.args[1](t));
+        case 1:
+            return apply_op(n.op, n.args[0](t));
+        case 2:
+            return apply_op(n.op, n.args[0](t), n.args[1](t));
         default: {
             // Evaluate only the branch taken, as POV-Ray does.
             double a = n.args[0](t);
@@ -222,16 +266,20 @@ std::string TimeFunction::to_string() const {
     }
     const Node& n = *node();
     switch (n.op) {
-        case TimeOp::Clock: return "clock";
-        case TimeOp::Negate: return "-" + n.args[0].to_string();
-        case TimeOp::Not: return "!" + n.args[0].to_string();
+        case TimeOp::Clock:
+            return "clock";
+        case TimeOp::Negate:
+            return "-" + n.args[0].to_string();
+        case TimeOp::Not:
+            return "!" + n.args[0].to_string();
         case TimeOp::SplineComponent:
             out << "spline(" << n.args[0].to_string() << ")[" << n.component << "]";
             return out.str();
         case TimeOp::Conditional:
             return "(" + n.args[0].to_string() + " ? " + n.args[1].to_string() + " : " +
                    n.args[2].to_string() + ")";
-        default: break;
+        default:
+            break;
     }
     if (n.op >= TimeOp::Add && n.op <= TimeOp::Divide) {
         return "(" + n.args[0].to_string() + " " + name(n.op) + " " + n.args[1].to_string() + ")";
@@ -263,6 +311,8 @@ TimeFunction operator/(const TimeFunction& a, const TimeFunction& b) {
     if (b.is_constant() && b.constant() == 1.0) return a;
     return TimeFunction::apply(TimeOp::Divide, a, b);
 }
-TimeFunction operator-(const TimeFunction& a) { return TimeFunction::apply(TimeOp::Negate, a); }
+TimeFunction operator-(const TimeFunction& a) {
+    return TimeFunction::apply(TimeOp::Negate, a);
+}
 
 }  // namespace hexant::runtime

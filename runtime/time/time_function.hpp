@@ -81,7 +81,7 @@ const char* name(TimeOp op);
 // happen to read so is stored as the quiet NaN instead (the payload of a
 // NaN has no meaning in the language). Nodes count their references.
 class TimeFunction {
-public:
+  public:
     // A constant function.
     TimeFunction(double value = 0.0);  // NOLINT: implicit on purpose, numbers are functions
     static TimeFunction clock();
@@ -116,7 +116,7 @@ public:
         return is_constant() ? nullptr : reinterpret_cast<const Node*>(bits_ & kPointerBits);
     }
 
-private:
+  private:
     static constexpr std::uint64_t kNodeTag = 0x7FF4;
     static constexpr std::uint64_t kPointerBits = (std::uint64_t(1) << 48) - 1;
 

@@ -19,12 +19,12 @@
 #include <memory>
 #include <vector>
 
+#include "runtime/motion/spline.hpp"
+#include "runtime/motion/spline_bounds.hpp"
 #include "runtime/time/dual.hpp"
 #include "runtime/time/interval.hpp"
 #include "runtime/time/interval_jet.hpp"
 #include "runtime/time/point_range.hpp"
-#include "runtime/motion/spline.hpp"
-#include "runtime/motion/spline_bounds.hpp"
 #include "runtime/time/time_function.hpp"
 
 namespace hexant::runtime {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+
 #include <glm/vec3.hpp>
 
 #include "runtime/motion/spline.hpp"
@@ -28,9 +29,7 @@ struct Vector2Function {
 struct ColourFunction {
     std::array<TimeFunction, 5> c;
 
-    Vector5 operator()(double t) const {
-        return {c[0](t), c[1](t), c[2](t), c[3](t), c[4](t)};
-    }
+    Vector5 operator()(double t) const { return {c[0](t), c[1](t), c[2](t), c[3](t), c[4](t)}; }
     bool depends_on_time() const {
         for (const auto& f : c)
             if (f.depends_on_time()) return true;

@@ -1,11 +1,11 @@
 // The command line's shape: POV-Ray .ini files apply in order, then flags.
-#include <catch2/catch.hpp>
+#include "app/command_line.hpp"
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 
-#include "app/command_line.hpp"
+#include <catch2/catch.hpp>
 
 namespace fs = std::filesystem;
 
@@ -32,7 +32,9 @@ hexant::app::SceneArguments parse(const std::string& flags) {
     return arguments;
 }
 
-auto resolved(const std::string& flags) { return hexant::app::resolve(parse(flags)); }
+auto resolved(const std::string& flags) {
+    return hexant::app::resolve(parse(flags));
+}
 
 }  // namespace
 
@@ -99,8 +101,8 @@ TEST_CASE("bad .ini values and flags are errors naming the place", "[app][ini]")
     const auto bad = write("bad.ini", "Width=126\nHeight=lots\n");
     hexant::app::SceneArguments arguments;
     arguments.files = {"scene.pov", bad.string()};
-    REQUIRE_THROWS_WITH(hexant::app::resolve(arguments), Catch::Contains("bad.ini:2") &&
-                                                             Catch::Contains("Height"));
+    REQUIRE_THROWS_WITH(hexant::app::resolve(arguments),
+                        Catch::Contains("bad.ini:2") && Catch::Contains("Height"));
     hexant::app::SceneArguments two_scenes;
     two_scenes.files = {"a.pov", "b.pov"};
     REQUIRE_THROWS_WITH(hexant::app::resolve(two_scenes), Catch::Contains("more than one scene"));
@@ -120,7 +122,8 @@ TEST_CASE("bad .ini values and flags are errors naming the place", "[app][ini]")
     hexant::app::SceneArguments too_many_frames;
     too_many_frames.files = {"a.pov"};
     too_many_frames.frame_count = 2147483647;
-    REQUIRE_THROWS_WITH(hexant::app::resolve(too_many_frames), Catch::Contains("more than 1000000 frames"));
+    REQUIRE_THROWS_WITH(hexant::app::resolve(too_many_frames),
+                        Catch::Contains("more than 1000000 frames"));
     too_many_frames.frame_count = 1'000'000;
     CHECK(hexant::app::resolve(too_many_frames).options.animation.final_frame == 1'000'000);
     hexant::app::SceneArguments nan_shutter;
@@ -142,11 +145,11 @@ TEST_CASE("the loop limit flag takes 1 to 10^12, never a wrapped -1", "[app]") {
 
 TEST_CASE("every limit has a flag, and frames and pixels are checked before any work",
           "[app][limits]") {
-    const auto limits =
-        resolved("--max-iterations 7 --max-macro-depth 8 --max-include-depth 9 "
-                 "--max-string-length 10 --max-array-memory 11 --max-frames 12 "
-                 "--max-pixels 130000 --max-loop-iterations 14 --max-text-read 15")
-            .options.limits;
+    const auto limits = resolved(
+                            "--max-iterations 7 --max-macro-depth 8 --max-include-depth 9 "
+                            "--max-string-length 10 --max-array-memory 11 --max-frames 12 "
+                            "--max-pixels 130000 --max-loop-iterations 14 --max-text-read 15")
+                            .options.limits;
     CHECK(limits.total_iterations == 7);
     CHECK(limits.macro_depth == 8);
     CHECK(limits.include_depth == 9);
@@ -156,21 +159,21 @@ TEST_CASE("every limit has a flag, and frames and pixels are checked before any 
     CHECK(limits.image_pixels == 130000);
     CHECK(limits.loop_iterations == 14);
     CHECK(limits.text_read == 15);
-    for (const char* wrapped : {"--max-iterations -1", "--max-text-read -1", "--max-string-length -1",
-                                "--max-array-memory -1", "--max-frames 0", "--max-pixels 0",
-                                "--max-macro-depth -1"})
+    for (const char* wrapped :
+         {"--max-iterations -1", "--max-text-read -1", "--max-string-length -1",
+          "--max-array-memory -1", "--max-frames 0", "--max-pixels 0", "--max-macro-depth -1"})
         CHECK_THROWS(parse(wrapped));
 
     // -W 100000 -H 100000 ended in std::bad_alloc; now it is refused by name.
-    REQUIRE_THROWS_WITH(resolved("-W 100000 -H 100000"),
-                        Catch::Contains("100000 by 100000 pixels") &&
-                            Catch::Contains("--max-pixels"));
+    REQUIRE_THROWS_WITH(
+        resolved("-W 100000 -H 100000"),
+        Catch::Contains("100000 by 100000 pixels") && Catch::Contains("--max-pixels"));
     CHECK_NOTHROW(resolved("-W 10000 -H 10000"));
     CHECK_NOTHROW(resolved("-W 100000 -H 100000 --max-pixels 10000000000"));
     // --frame-count 2147483647 overflowed an int loop over frames.
-    REQUIRE_THROWS_WITH(resolved("--frame-count 2147483647"),
-                        Catch::Contains("more than 1000000 frames") &&
-                            Catch::Contains("--max-frames"));
+    REQUIRE_THROWS_WITH(
+        resolved("--frame-count 2147483647"),
+        Catch::Contains("more than 1000000 frames") && Catch::Contains("--max-frames"));
     CHECK_THROWS(resolved("--frame-count 13 --max-frames 12"));
     CHECK_NOTHROW(resolved("--frame-count 12 --max-frames 12"));
     // From an .ini file too: the whole range of int.
@@ -185,6 +188,7 @@ TEST_CASE("command-line numbers are finite: the clock and the shutter", "[app][p
     CHECK_THROWS_WITH(resolved("--clock 0:inf --frame-count 2"), Catch::Contains("finite"));
     CHECK_THROWS_WITH(resolved("--clock nan"), Catch::Contains("finite"));
     CHECK_THROWS_WITH(resolved("--shutter nan"), Catch::Contains("[0, 1]"));
-    CHECK_THROWS_WITH(resolved("--clock -1e308:1e308 --frame-count 2"), Catch::Contains("overflows"));
+    CHECK_THROWS_WITH(resolved("--clock -1e308:1e308 --frame-count 2"),
+                      Catch::Contains("overflows"));
     CHECK_NOTHROW(resolved("--clock -1e300:1e300 --frame-count 2"));
 }

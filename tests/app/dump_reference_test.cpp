@@ -2,8 +2,6 @@
 // scene whose parameters and transforms depend on clock, with an animation so
 // that clock is symbolic, and its output compared with what POV-Ray printed at
 // the same clock (dump_reference/README.md).
-#include <catch2/catch.hpp>
-
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -11,6 +9,8 @@
 #include <map>
 #include <regex>
 #include <sstream>
+
+#include <catch2/catch.hpp>
 
 namespace {
 
@@ -29,7 +29,8 @@ std::string run(const std::string& command) {
 std::vector<double> numbers(const std::string& text) {
     std::vector<double> out;
     const std::regex number(R"([-+]?[0-9]*\.?[0-9]+(?:[eE][-+]?[0-9]+)?)");
-    for (auto it = std::sregex_iterator(text.begin(), text.end(), number); it != std::sregex_iterator(); ++it)
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), number);
+         it != std::sregex_iterator(); ++it)
         out.push_back(std::stod(it->str()));
     return out;
 }

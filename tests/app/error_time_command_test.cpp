@@ -2,12 +2,13 @@
 // error falling as samples grow, the reference cached, bad lists refused.
 #include "app/error_time_command.hpp"
 
-#include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
 #include <string>
+
+#include <catch2/catch.hpp>
 
 #include "app/log_log_plot.hpp"
 
@@ -54,10 +55,12 @@ TEST_CASE("error-time measures each mode at each sample count against a cached r
 
     // One row per mode and sample count.
     const std::string csv = read_text(folder / "out/error_time.csv");
-    REQUIRE(csv.rfind("mode,spp,seconds,build_seconds,render_seconds,rays,rmse,relative_mse,estimated_rmse,"
-                      "target,mean_spp\n",
-                      0) == 0);
-    std::map<std::string, double> rmse;       // "mode spp" -> rmse
+    REQUIRE(
+        csv.rfind(
+            "mode,spp,seconds,build_seconds,render_seconds,rays,rmse,relative_mse,estimated_rmse,"
+            "target,mean_spp\n",
+            0) == 0);
+    std::map<std::string, double> rmse;           // "mode spp" -> rmse
     std::map<std::string, std::string> estimate;  // "mode spp" -> the estimate's field
     std::istringstream rows(csv);
     std::string row;
@@ -100,7 +103,8 @@ TEST_CASE("error-time measures each mode at each sample count against a cached r
     CHECK(out.str().find("(cached)") != std::string::npos);
     // ... and again for another shutter: its curve or a rolling shutter
     // change the image (a fresh user found the cached one reused).
-    for (const auto& [curve, rolling] : {std::pair<std::string, double>{"triangle", 0.0}, {"box", 0.5}}) {
+    for (const auto& [curve, rolling] :
+         {std::pair<std::string, double>{"triangle", 0.0}, {"box", 0.5}}) {
         ErrorTimeArguments other = a;
         other.scene.shutter_curve = curve;
         other.scene.rolling_shutter = rolling;

@@ -2,7 +2,8 @@
 // them (each array task with its SLURM_ARRAY_TASK_ID, then the join),
 // give the frames, contact sheet and animation one run gives, byte for
 // byte. (Submitting to a real Slurm: the `cluster` test, not here.)
-#include <catch2/catch.hpp>
+#include "app/farm_command.hpp"
+
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -10,9 +11,9 @@
 #include <sstream>
 #include <string>
 
+#include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
-#include "app/farm_command.hpp"
 #include "app/merge_stats.hpp"
 
 namespace fs = std::filesystem;
@@ -36,8 +37,9 @@ sphere { <-2 + 4 * clock, 0.5, 0>, 0.5 pigment { rgb <0.9, 0.3, 0.2> } }
 }  // namespace
 
 TEST_CASE("farm's flags are its own, the rest passes to render as written", "[app][farm]") {
-    const auto a = split_farm_arguments({"s.pov", "--windows", "4", "--spp=8", "--partition=short", "--time",
-                                         "00:10:00", "--contact-sheet", "sheet.png", "-W", "64", "--submit"});
+    const auto a =
+        split_farm_arguments({"s.pov", "--windows", "4", "--spp=8", "--partition=short", "--time",
+                              "00:10:00", "--contact-sheet", "sheet.png", "-W", "64", "--submit"});
     CHECK(a.windows == 4);
     CHECK(a.partition == "short");
     CHECK(a.time_limit == "00:10:00");
@@ -45,38 +47,63 @@ TEST_CASE("farm's flags are its own, the rest passes to render as written", "[ap
     CHECK(a.submit);
     CHECK(a.render == std::vector<std::string>{"s.pov", "--spp=8", "-W", "64"});
     CHECK_THROWS_WITH(split_farm_arguments({"s.pov"}), Catch::Contains("--windows"));
-    CHECK_THROWS_WITH(split_farm_arguments({"s.pov", "--windows", "0"}), Catch::Contains("at least 1"));
-    CHECK_THROWS_WITH(split_farm_arguments({"s.pov", "--windows", "2", "--window", "0/2"}), Catch::Contains("--window"));
-    CHECK_THROWS_WITH(split_farm_arguments({"s.pov", "--windows", "2", "--time"}), Catch::Contains("needs a value"));
+    CHECK_THROWS_WITH(split_farm_arguments({"s.pov", "--windows", "0"}),
+                      Catch::Contains("at least 1"));
+    CHECK_THROWS_WITH(split_farm_arguments({"s.pov", "--windows", "2", "--window", "0/2"}),
+                      Catch::Contains("--window"));
+    CHECK_THROWS_WITH(split_farm_arguments({"s.pov", "--windows", "2", "--time"}),
+                      Catch::Contains("needs a value"));
     CHECK(hexant::app::shell_quote("it's a 'b'") == "'it'\\''s a '\\''b'\\'''");
     // (Found by a fresh user: a newline in a value became a command of the
     // script; sbatch's own lines split at blanks.)
     CHECK_THROWS_WITH(split_farm_arguments({"s.pov", "--windows", "2", "--time", "1:00\necho x"}),
                       Catch::Contains("control character"));
-    CHECK_THROWS_WITH(split_farm_arguments({"s.pov\necho x", "--windows", "2"}), Catch::Contains("control character"));
+    CHECK_THROWS_WITH(split_farm_arguments({"s.pov\necho x", "--windows", "2"}),
+                      Catch::Contains("control character"));
     CHECK_THROWS_WITH(split_farm_arguments({"s.pov", "--windows", "2", "--partition", "a #b"}),
                       Catch::Contains("#SBATCH"));
-    CHECK_THROWS_WITH(split_farm_arguments({"s.pov", "--windows", "2", "--windows", "3"}), Catch::Contains("twice"));
-    CHECK_THROWS_WITH(split_farm_arguments({"s.pov", "--windows", "2", "--compare"}), Catch::Contains("--compare"));
+    CHECK_THROWS_WITH(split_farm_arguments({"s.pov", "--windows", "2", "--windows", "3"}),
+                      Catch::Contains("twice"));
+    CHECK_THROWS_WITH(split_farm_arguments({"s.pov", "--windows", "2", "--compare"}),
+                      Catch::Contains("--compare"));
 }
 
-TEST_CASE("a farm's array tasks and join, run as Slurm runs them, give one run's bytes", "[app][farm]") {
+TEST_CASE("a farm's array tasks and join, run as Slurm runs them, give one run's bytes",
+          "[app][farm]") {
     const fs::path folder = fs::temp_directory_path() / "hexant_farm_test";
     fs::remove_all(folder);
     fs::create_directories(folder);
     std::ofstream(folder / "scene.pov") << kScene;
     const std::string hexant = HEXANT_BINARY;
-    const std::string common = (folder / "scene.pov").string() + " -W 32 -H 24 --frame-count 10 --spp 4";
-    REQUIRE(std::system((hexant + " render " + common + " -o " + (folder / "one/f_####.png").string() +
-                         " --contact-sheet " + (folder / "one.png").string() + " --animation " +
-                         (folder / "one.gif").string() + " --stats-json " + (folder / "one.json").string() +
-                         " > /dev/null 2>&1")
-                            .c_str()) == 0);
+    const std::string common =
+        (folder / "scene.pov").string() + " -W 32 -H 24 --frame-count 10 --spp 4";
+    REQUIRE(
+        std::system((hexant + " render " + common + " -o " + (folder / "one/f_####.png").string() +
+                     " --contact-sheet " + (folder / "one.png").string() + " --animation " +
+                     (folder / "one.gif").string() + " --stats-json " +
+                     (folder / "one.json").string() + " > /dev/null 2>&1")
+                        .c_str()) == 0);
 
-    auto args = split_farm_arguments({(folder / "scene.pov").string(), "-W", "32", "-H", "24", "--frame-count", "10",
-                                      "--spp", "4", "-o", (folder / "farm/f_####.png").string(), "--windows", "4",
-                                      "--partition", "debug", "--contact-sheet", (folder / "farm.png").string(),
-                                      "--animation", (folder / "farm.gif").string(), "--farm-dir",
+    auto args = split_farm_arguments({(folder / "scene.pov").string(),
+                                      "-W",
+                                      "32",
+                                      "-H",
+                                      "24",
+                                      "--frame-count",
+                                      "10",
+                                      "--spp",
+                                      "4",
+                                      "-o",
+                                      (folder / "farm/f_####.png").string(),
+                                      "--windows",
+                                      "4",
+                                      "--partition",
+                                      "debug",
+                                      "--contact-sheet",
+                                      (folder / "farm.png").string(),
+                                      "--animation",
+                                      (folder / "farm.gif").string(),
+                                      "--farm-dir",
                                       (folder / "scripts").string()});
     args.hexant = hexant;
     std::ostringstream out, err;
@@ -86,15 +113,18 @@ TEST_CASE("a farm's array tasks and join, run as Slurm runs them, give one run's
     CHECK(array.find("#SBATCH --array=0-3\n") != std::string::npos);
     CHECK(array.find("#SBATCH --partition=debug\n") != std::string::npos);
     CHECK(array.find("--window \"${SLURM_ARRAY_TASK_ID}/4\" --resume") != std::string::npos);
-    CHECK(bytes(folder / "scripts/submit.sh").find("--dependency=afterok:$array") != std::string::npos);
+    CHECK(bytes(folder / "scripts/submit.sh").find("--dependency=afterok:$array") !=
+          std::string::npos);
 
     for (int task = 0; task < 4; ++task)
         REQUIRE(std::system(("SLURM_ARRAY_TASK_ID=" + std::to_string(task) + " bash " +
                              (folder / "scripts/array.sbatch").string() + " > /dev/null 2>&1")
                                 .c_str()) == 0);
     // Each window wrote its statistics.
-    for (int task = 0; task < 4; ++task) CHECK(fs::exists(folder / ("scripts/window_" + std::to_string(task) + ".json")));
-    REQUIRE(std::system(("bash " + (folder / "scripts/join.sbatch").string() + " > /dev/null 2>&1").c_str()) == 0);
+    for (int task = 0; task < 4; ++task)
+        CHECK(fs::exists(folder / ("scripts/window_" + std::to_string(task) + ".json")));
+    REQUIRE(std::system(("bash " + (folder / "scripts/join.sbatch").string() + " > /dev/null 2>&1")
+                            .c_str()) == 0);
     for (int k = 1; k <= 10; ++k) {
         char name[32];
         std::snprintf(name, sizeof name, "f_%04d.png", k);
@@ -111,7 +141,8 @@ TEST_CASE("a farm's array tasks and join, run as Slurm runs them, give one run's
         CHECK(merged[row].get<double>() == one[row].get<double>());
     double builds = 0.0;
     for (int task = 0; task < 4; ++task) {
-        const auto w = nlohmann::json::parse(bytes(folder / ("scripts/window_" + std::to_string(task) + ".json")))["spacetime"];
+        const auto w = nlohmann::json::parse(
+            bytes(folder / ("scripts/window_" + std::to_string(task) + ".json")))["spacetime"];
         builds += w["build time (s)"].get<double>();
     }
     CHECK(merged["build time (s)"].get<double>() == Approx(builds).epsilon(1e-12));
@@ -123,8 +154,7 @@ TEST_CASE("a farm's array tasks and join, run as Slurm runs them, give one run's
     // in the join, after all the rendering): flags, output names, too many
     // windows.
     const std::string scene = (folder / "scene.pov").string();
-    for (const auto& [words, said] :
-         std::vector<std::pair<std::vector<std::string>, std::string>>{
+    for (const auto& [words, said] : std::vector<std::pair<std::vector<std::string>, std::string>>{
              {{scene, "--spp", "0"}, "--spp"},
              {{scene, "--frame-count", "10", "-o", (folder / "x/f.png").string()}, "####"},
              {{scene, "--frame-count", "10", "--animation", (folder / "a.png").string()}, "a.png"},
@@ -149,27 +179,34 @@ TEST_CASE("merge-stats refuses what is not one mode's statistics, naming the fil
     const fs::path folder = fs::temp_directory_path() / "hexant_merge_stats_test";
     fs::remove_all(folder);
     fs::create_directories(folder);
-    std::ofstream(folder / "a.json") << R"({"spacetime": {"primary rays": 10, "per frame": [{"frame": 1}]}})";
+    std::ofstream(folder / "a.json")
+        << R"({"spacetime": {"primary rays": 10, "per frame": [{"frame": 1}]}})";
     std::ofstream(folder / "b.json") << R"({"frames": {"primary rays": 5}})";
     std::ofstream(folder / "c.json") << "not json";
     const std::string out = (folder / "m.json").string();
     using hexant::app::merge_stats;
-    CHECK_THROWS_WITH(merge_stats({(folder / "a.json").string(), (folder / "b.json").string()}, out),
-                      Catch::Contains("b.json") && Catch::Contains("frames render"));
+    CHECK_THROWS_WITH(
+        merge_stats({(folder / "a.json").string(), (folder / "b.json").string()}, out),
+        Catch::Contains("b.json") && Catch::Contains("frames render"));
     CHECK_THROWS_WITH(merge_stats({(folder / "c.json").string()}, out), Catch::Contains("c.json"));
-    CHECK_THROWS_WITH(merge_stats({(folder / "none.json").string()}, out), Catch::Contains("none.json"));
+    CHECK_THROWS_WITH(merge_stats({(folder / "none.json").string()}, out),
+                      Catch::Contains("none.json"));
     CHECK_FALSE(fs::exists(out));
     // (Found by a fresh user: a file named twice was counted twice, the
     // output could overwrite a window's file, a row of text merged to
     // nothing, and the objects were summed.)
-    CHECK_THROWS_WITH(merge_stats({(folder / "a.json").string(), (folder / "a.json").string()}, out),
-                      Catch::Contains("named twice"));
+    CHECK_THROWS_WITH(
+        merge_stats({(folder / "a.json").string(), (folder / "a.json").string()}, out),
+        Catch::Contains("named twice"));
     CHECK_THROWS_WITH(merge_stats({(folder / "a.json").string()}, (folder / "a.json").string()),
                       Catch::Contains("one of the windows"));
     std::ofstream(folder / "d.json") << R"({"spacetime": {"objects": "eight"}})";
-    CHECK_THROWS_WITH(merge_stats({(folder / "d.json").string()}, out), Catch::Contains("not a number"));
-    std::ofstream(folder / "a2.json") << R"({"spacetime": {"primary rays": 10, "objects": 8, "per frame": [{"frame": 2}]}})";
-    std::ofstream(folder / "a3.json") << R"({"spacetime": {"primary rays": 7, "objects": 8, "per frame": [{"frame": 3}]}})";
+    CHECK_THROWS_WITH(merge_stats({(folder / "d.json").string()}, out),
+                      Catch::Contains("not a number"));
+    std::ofstream(folder / "a2.json")
+        << R"({"spacetime": {"primary rays": 10, "objects": 8, "per frame": [{"frame": 2}]}})";
+    std::ofstream(folder / "a3.json")
+        << R"({"spacetime": {"primary rays": 7, "objects": 8, "per frame": [{"frame": 3}]}})";
     merge_stats({(folder / "a2.json").string(), (folder / "a3.json").string()}, out);
     const auto merged = nlohmann::json::parse(bytes(out))["spacetime"];
     CHECK(merged["primary rays"] == 17);  // (a whole number, as render writes counts)

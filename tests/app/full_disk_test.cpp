@@ -5,11 +5,6 @@
 // temporary). Mounting a tmpfs needs root (CAP_SYS_ADMIN): elsewhere the
 // test says so and passes without running; the file size limit test in
 // tests/tracer/whole_file_test.cpp covers the same paths unprivileged.
-#include <sys/mount.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <catch2/catch.hpp>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -18,6 +13,11 @@
 #include <set>
 #include <sstream>
 #include <string>
+
+#include <catch2/catch.hpp>
+#include <sys/mount.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "image/image_format.hpp"
 
@@ -52,7 +52,9 @@ std::string read_text(const fs::path& path) {
     return text.str();
 }
 
-std::uintmax_t pages(std::uintmax_t bytes) { return (bytes + 4095) / 4096 * 4096; }
+std::uintmax_t pages(std::uintmax_t bytes) {
+    return (bytes + 4095) / 4096 * 4096;
+}
 
 struct Remove {
     fs::path where;
@@ -89,7 +91,8 @@ TEST_CASE("a full disk: the run fails at the frame that does not fit, the others
         INFO(extension);
         const auto name = [&](int frame) { return "f_000" + std::to_string(frame) + extension; };
         // The same frames on an ordinary folder first: their sizes.
-        REQUIRE(run(render + (folder / ("f_####" + extension)).string() + " > /dev/null 2>&1") == 0);
+        REQUIRE(run(render + (folder / ("f_####" + extension)).string() + " > /dev/null 2>&1") ==
+                0);
         const std::uintmax_t first = pages(fs::file_size(folder / name(1)));
         const std::uintmax_t second = pages(fs::file_size(folder / name(2)));
         const std::uintmax_t third = pages(fs::file_size(folder / name(3)));
@@ -114,7 +117,8 @@ TEST_CASE("a full disk: the run fails at the frame that does not fit, the others
         for (const auto& entry : fs::directory_iterator(disk)) left.insert(entry.path().filename());
         CHECK(left == std::set<std::string>{name(1), name(2)});
         for (const int frame : {1, 2}) {
-            const hexant::image::StoredImage image = hexant::image::read_stored_image(disk / name(frame));
+            const hexant::image::StoredImage image =
+                hexant::image::read_stored_image(disk / name(frame));
             CHECK((image.width == 160 && image.height == 120));
             CHECK(fs::file_size(disk / name(frame)) == fs::file_size(folder / name(frame)));
         }

@@ -2,12 +2,13 @@
 // and clear errors (naming the flag or the place) with nothing half-written.
 #include "app/render_command.hpp"
 
-#include <catch2/catch.hpp>
 #include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <sstream>
+
+#include <catch2/catch.hpp>
 
 namespace fs = std::filesystem;
 using hexant::app::RenderArguments;
@@ -38,7 +39,8 @@ fs::path fresh_output(const fs::path& scene) {
 // A sphere moving along x as the clock runs, lit and seen from the front.
 std::string moving_sphere(const std::string& centre) {
     return "camera { location <0, 0, -5> look_at 0 }\nlight_source { <0, 5, -5>, rgb 1 }\n"
-           "sphere { " + centre + ", 1 pigment { rgb 1 } }\n";
+           "sphere { " +
+           centre + ", 1 pigment { rgb 1 } }\n";
 }
 
 RenderArguments arguments_for(const fs::path& scene, const fs::path& out) {
@@ -75,7 +77,8 @@ TEST_CASE("render writes the frames, the contact sheet and the table rows", "[ap
     CHECK(text.find("ratio") != std::string::npos);
     // The same figures for tools: one object per mode, the rows as keys.
     std::ifstream json(out / "stats.json");
-    const std::string stats((std::istreambuf_iterator<char>(json)), std::istreambuf_iterator<char>());
+    const std::string stats((std::istreambuf_iterator<char>(json)),
+                            std::istreambuf_iterator<char>());
     CHECK(stats.find("\"frames\": {") != std::string::npos);
     CHECK(stats.find("\"spacetime\": {") != std::string::npos);
     CHECK(stats.find("\"primary rays\": 384") != std::string::npos);  // 2 frames of 16 x 12
@@ -119,33 +122,42 @@ TEST_CASE("render reports bad requests clearly and writes nothing", "[app][rende
         INFO(e.str());
         CHECK(e.str().find(says) != std::string::npos);
     };
-    refused(scene, [](RenderArguments& a) { a.frames = "2:9"; }, "--frames 2:9");
-    refused(scene, [&](RenderArguments& a) { a.output = (out / "same_name.png").string(); }, "####");
-    refused(scene, [&](RenderArguments& a) { a.output = (out / "a_##_b_####.png").string(); },
-            "one run of # is the frame number");
-    refused(scene, [](RenderArguments& a) { a.mode = "fast"; }, "fast");
+    refused(
+        scene, [](RenderArguments& a) { a.frames = "2:9"; }, "--frames 2:9");
+    refused(
+        scene, [&](RenderArguments& a) { a.output = (out / "same_name.png").string(); }, "####");
+    refused(
+        scene, [&](RenderArguments& a) { a.output = (out / "a_##_b_####.png").string(); },
+        "one run of # is the frame number");
+    refused(
+        scene, [](RenderArguments& a) { a.mode = "fast"; }, "fast");
     // A name of no image format is refused before the first frame.
-    refused(scene, [&](RenderArguments& a) { a.output = (out / "f_##.tif").string(); },
-            "f_##.tif: no image format");
-    refused(scene, [&](RenderArguments& a) { a.animation = (out / "movie.mp4").string(); },
-            "movie.mp4: an animation is written as .gif");
+    refused(
+        scene, [&](RenderArguments& a) { a.output = (out / "f_##.tif").string(); },
+        "f_##.tif: no image format");
+    refused(
+        scene, [&](RenderArguments& a) { a.animation = (out / "movie.mp4").string(); },
+        "movie.mp4: an animation is written as .gif");
     // Outputs that would overwrite each other, and a GIF too wide for its
     // 16-bit sides, are refused before the first frame too.
-    refused(scene,
-            [&](RenderArguments& a) {
-                a.output = (out / "f_##.png").string();
-                a.contact_sheet = (out / "f_01.png").string();
-            },
-            "f_01.png: --contact-sheet names frame 1's file");
-    refused(scene,
-            [&](RenderArguments& a) {
-                a.scene.width = 70000;
-                a.scene.height = 1;
-                a.animation = (out / "wide.gif").string();
-            },
-            "a GIF is at most 65535 pixels a side");
+    refused(
+        scene,
+        [&](RenderArguments& a) {
+            a.output = (out / "f_##.png").string();
+            a.contact_sheet = (out / "f_01.png").string();
+        },
+        "f_01.png: --contact-sheet names frame 1's file");
+    refused(
+        scene,
+        [&](RenderArguments& a) {
+            a.scene.width = 70000;
+            a.scene.height = 1;
+            a.animation = (out / "wide.gif").string();
+        },
+        "a GIF is at most 65535 pixels a side");
     // A scene error names its place.
-    refused(scene_file("sphere { 0, 1 \n"), [](RenderArguments&) {}, "scene.pov:");
+    refused(
+        scene_file("sphere { 0, 1 \n"), [](RenderArguments&) {}, "scene.pov:");
     CHECK_FALSE(fs::exists(out));
 }
 
@@ -169,11 +181,13 @@ TEST_CASE("render --seed gives an independent estimate of the same frame", "[app
     CHECK(first != other);  // other samples where the sphere blurs
 }
 
-TEST_CASE("MegaPOV's motion_blur sets the defaults of --spp and --shutter, and says so", "[app][render]") {
+TEST_CASE("MegaPOV's motion_blur sets the defaults of --spp and --shutter, and says so",
+          "[app][render]") {
     // real-animation case 17: global_settings { motion_blur SAMPLES, TIME }.
     // Three frames over clock 0 to 1 step by 0.5: TIME 0.1 is a shutter
     // of 0.2 of the step; the flags given win.
-    const fs::path scene = scene_file("global_settings { motion_blur 8, 0.1 }\n" + moving_sphere("<2 * clock, 0, 0>"));
+    const fs::path scene =
+        scene_file("global_settings { motion_blur 8, 0.1 }\n" + moving_sphere("<2 * clock, 0, 0>"));
     const fs::path out = fresh_output(scene);
     RenderArguments a = arguments_for(scene, out);
     a.frames = "1";
@@ -198,7 +212,8 @@ TEST_CASE("MegaPOV's motion_blur sets the defaults of --spp and --shutter, and s
     CHECK(e2.str().find("--spp") == std::string::npos);
 }
 
-TEST_CASE("render estimates each frame's error and writes its error image", "[app][render][estimate]") {
+TEST_CASE("render estimates each frame's error and writes its error image",
+          "[app][render][estimate]") {
     const fs::path scene = scene_file(moving_sphere("<2 * clock - 1, 0, 0>"));
     const fs::path out = fresh_output(scene);
     RenderArguments a = arguments_for(scene, out);
@@ -236,7 +251,8 @@ TEST_CASE("render estimates each frame's error and writes its error image", "[ap
     CHECK_FALSE(fs::exists(none / "f_01.png"));
 }
 
-TEST_CASE("render samples adaptively to a target error, and by default", "[app][render][adaptive]") {
+TEST_CASE("render samples adaptively to a target error, and by default",
+          "[app][render][adaptive]") {
     const fs::path scene = scene_file(moving_sphere("<2 * clock - 1, 0, 0>"));
     const fs::path out = fresh_output(scene);
     RenderArguments a = arguments_for(scene, out);
@@ -254,7 +270,8 @@ TEST_CASE("render samples adaptively to a target error, and by default", "[app][
     CHECK(fs::exists(out / "n_03.png"));
     // Each frame in the JSON, under keys no row has.
     std::ifstream json(out / "stats.json");
-    const std::string stats((std::istreambuf_iterator<char>(json)), std::istreambuf_iterator<char>());
+    const std::string stats((std::istreambuf_iterator<char>(json)),
+                            std::istreambuf_iterator<char>());
     CHECK(stats.find("\"per frame\": [") != std::string::npos);
     CHECK(stats.find("{\"frame\": 3, \"seconds\": ") != std::string::npos);
     CHECK(stats.find("\"estimated rmse\": ") != std::string::npos);
@@ -293,11 +310,13 @@ TEST_CASE("render samples adaptively to a target error, and by default", "[app][
     clash.samples_image = clash.error_image;
     std::ostringstream o2, e2;
     CHECK(run_render(clash, o2, e2) != 0);
-    CHECK(e2.str().find("--samples-image names --error-image's file for frame 1") != std::string::npos);
+    CHECK(e2.str().find("--samples-image names --error-image's file for frame 1") !=
+          std::string::npos);
     CHECK_FALSE(fs::exists(none / "f_01.png"));
 }
 
-TEST_CASE("render's adaptive flags refuse what makes no sense, naming the flag", "[app][render][adaptive]") {
+TEST_CASE("render's adaptive flags refuse what makes no sense, naming the flag",
+          "[app][render][adaptive]") {
     using hexant::app::parse_target_error;
     CHECK(parse_target_error("0.01") == 0.01);
     CHECK(parse_target_error("1/128") == 1.0 / 128.0);
@@ -306,7 +325,8 @@ TEST_CASE("render's adaptive flags refuse what makes no sense, naming the flag",
 
     const fs::path scene = scene_file(moving_sphere("<2 * clock - 1, 0, 0>"));
     const fs::path out = fresh_output(scene);
-    const auto refused = [&](const std::function<void(RenderArguments&)>& change, const std::string& says) {
+    const auto refused = [&](const std::function<void(RenderArguments&)>& change,
+                             const std::string& says) {
         RenderArguments a = arguments_for(scene, out);
         a.samples_per_pixel = 4;
         change(a);
@@ -317,38 +337,48 @@ TEST_CASE("render's adaptive flags refuse what makes no sense, naming the flag",
         CHECK_FALSE(fs::exists(out / "f_01.png"));
     };
     // No output may take another's file, whatever its kind.
-    refused([&](RenderArguments& a) {
-        a.frames = "1";
-        a.samples_image = (out / "sheet.png").string();
-        a.contact_sheet = (out / "sheet.png").string();
-    }, "--contact-sheet names --samples-image's file for frame 1");
+    refused(
+        [&](RenderArguments& a) {
+            a.frames = "1";
+            a.samples_image = (out / "sheet.png").string();
+            a.contact_sheet = (out / "sheet.png").string();
+        },
+        "--contact-sheet names --samples-image's file for frame 1");
     refused([&](RenderArguments& a) { a.stats_json = (out / "f_02.png").string(); },
             "--stats-json names frame 2's file");
-    refused([&](RenderArguments& a) {
-        a.error_image = (out / "e_##.png").string();
-        a.stats_json = (out / "e_03.png").string();
-    }, "--stats-json names --error-image's file for frame 3");
+    refused(
+        [&](RenderArguments& a) {
+            a.error_image = (out / "e_##.png").string();
+            a.stats_json = (out / "e_03.png").string();
+        },
+        "--stats-json names --error-image's file for frame 3");
     // A name of no format or an empty one says which flag it was.
-    refused([&](RenderArguments& a) { a.samples_image = (out / "s_##.jpg").string(); }, "--samples-image ");
+    refused([&](RenderArguments& a) { a.samples_image = (out / "s_##.jpg").string(); },
+            "--samples-image ");
     refused([&](RenderArguments& a) { a.stats_json = ""; }, "--stats-json: an empty file name");
     // A folder that cannot be made fails before the first frame.
     const fs::path plain = scene.parent_path() / "plain.txt";
     std::ofstream(plain) << "a file, not a folder\n";
-    refused([&](RenderArguments& a) { a.samples_image = (plain / "s_##.png").string(); }, "cannot write in");
+    refused([&](RenderArguments& a) { a.samples_image = (plain / "s_##.png").string(); },
+            "cannot write in");
     CHECK_FALSE(fs::exists(out));  // (and nothing made on the way)
     // The default ceiling is named as such.
-    refused([&](RenderArguments& a) {
-        a.samples_per_pixel.reset();
-        a.no_jitter = true;
-        a.target_error = 0.01;
-    }, "the default ceiling is 256, with --no-jitter");
+    refused(
+        [&](RenderArguments& a) {
+            a.samples_per_pixel.reset();
+            a.no_jitter = true;
+            a.target_error = 0.01;
+        },
+        "the default ceiling is 256, with --no-jitter");
 }
 
-TEST_CASE("render says when tiles reach the ceiling above the target, and its JSON holds no infinity",
-          "[app][render][adaptive]") {
+TEST_CASE(
+    "render says when tiles reach the ceiling above the target, and its JSON holds no infinity",
+    "[app][render][adaptive]") {
     // Colours that overflow the estimate: JSON has no inf, so null.
-    const fs::path scene = scene_file("camera { location <0, 0, -5> look_at 0 }\nbackground { rgb 1e300 }\n"
-                                      "sphere { <2 * clock - 1, 0, 0>, 1 pigment { rgb 0 } }\n");
+    const fs::path scene = scene_file(
+        "camera { location <0, 0, -5> look_at 0 }\nbackground { rgb 1e300 }\n"
+        "sphere { <2 * clock - 1, 0, 0>, 1 pigment { rgb 0 } }\n");
     const fs::path out = fresh_output(scene);
     RenderArguments a = arguments_for(scene, out);
     a.frames = "2";
@@ -360,7 +390,8 @@ TEST_CASE("render says when tiles reach the ceiling above the target, and its JS
     INFO(e.str());
     CHECK(e.str().find("tiles reached --spp 8 above the target") != std::string::npos);
     std::ifstream json(out / "stats.json");
-    const std::string stats((std::istreambuf_iterator<char>(json)), std::istreambuf_iterator<char>());
+    const std::string stats((std::istreambuf_iterator<char>(json)),
+                            std::istreambuf_iterator<char>());
     CHECK(stats.find("inf") == std::string::npos);
     CHECK(stats.find("\"estimated rmse\": null") != std::string::npos);
     CHECK(stats.find("\"tiles over target\": ") != std::string::npos);

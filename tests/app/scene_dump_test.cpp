@@ -1,25 +1,28 @@
 // The `hexant dump` format, line by line, on scene records built by hand.
-#include <algorithm>
-#include <catch2/catch.hpp>
+#include "app/scene_dump.hpp"
 
+#include <algorithm>
 #include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
 
-#include "app/scene_dump.hpp"
+#include <catch2/catch.hpp>
 
 namespace rt = hexant::runtime;
 
 namespace {
 
-rt::TimeFunction symbolic_clock() { return rt::TimeFunction::clock(); }
+rt::TimeFunction symbolic_clock() {
+    return rt::TimeFunction::clock();
+}
 
 rt::Vector3Function vec(rt::TimeFunction x, rt::TimeFunction y, rt::TimeFunction z) {
     return rt::Vector3Function{{x, y, z}};
 }
 
-rt::TransformStep step(rt::TransformKind kind, rt::Vector3Function v, rt::TimeFunction amount = 0.0) {
+rt::TransformStep step(rt::TransformKind kind, rt::Vector3Function v,
+                       rt::TimeFunction amount = 0.0) {
     rt::TransformStep s{};
     s.kind = kind;
     s.vector = v;
@@ -47,11 +50,13 @@ const std::string kFlags = "no_shadow=0 hollow=0 inverse=0";
 
 }  // namespace
 
-TEST_CASE("dump: an empty scene is POV-Ray's default camera and a black background", "[app][dump]") {
+TEST_CASE("dump: an empty scene is POV-Ray's default camera and a black background",
+          "[app][dump]") {
     const auto lines = dump(rt::SceneDescription{}, 0.0);
     REQUIRE(lines.size() == 2);
-    CHECK(lines[0] == "camera location=<0, 0, 0> direction=<0, 0, 1> right=<1.33, 0, 0> up=<0, 1, 0> "
-                      "sky=<0, 1, 0>");
+    CHECK(lines[0] ==
+          "camera location=<0, 0, 0> direction=<0, 0, 1> right=<1.33, 0, 0> up=<0, 1, 0> "
+          "sky=<0, 1, 0>");
     CHECK(lines[1] == "background colour=<0, 0, 0, 0, 0>");
 }
 
@@ -71,8 +76,9 @@ TEST_CASE("dump: the camera, background and lights at the clock asked for", "[ap
     scene.lights.push_back(rt::LightRecord{});
     const auto lines = dump(scene, 0.5);
     REQUIRE(lines.size() == 4);
-    CHECK(lines[0] == "camera location=<0, 0, -5> direction=<0, 0, 1> right=<1.33, 0, 0> up=<0, 1, 0> "
-                      "sky=<0, 1, 0>");
+    CHECK(lines[0] ==
+          "camera location=<0, 0, -5> direction=<0, 0, 1> right=<1.33, 0, 0> up=<0, 1, 0> "
+          "sky=<0, 1, 0>");
     CHECK(lines[1] == "background colour=<0.5, 0.5, 1, 0, 0.25>");
     CHECK(lines[2] == "light[0] position=<0.5, 10, 0> colour=<1, 1, 1, 0, 0> shadowless=1");
     CHECK(lines[3] == "light[1] position=<0, 0, 0> colour=<0, 0, 0, 0, 0> shadowless=0");
@@ -94,7 +100,8 @@ TEST_CASE("dump: a moving sphere with its matrix and texture", "[app][dump]") {
     const auto lines = dump(scene, 0.25);
     REQUIRE(lines.size() == 3);
     CHECK(lines[2] ==
-          "object[0] sphere center=<0.5, 0, 0> radius=0.75 transform=[2, 0, 0, 0, 2, 0, 0, 0, 2, 2, 4, 6] "
+          "object[0] sphere center=<0.5, 0, 0> radius=0.75 transform=[2, 0, 0, 0, 2, 0, 0, 0, 2, "
+          "2, 4, 6] "
           "pigment=solid<1, 0.5, 0.25, 0, 0> finish=ambient:0.1,diffuse:0.6,brilliance:1,phong:1,"
           "phong_size:40,specular:0,roughness:0.05,reflection:<0.25, 0.25, 0.25> "
           "no_shadow=1 hollow=0 inverse=0");
@@ -105,24 +112,34 @@ TEST_CASE("dump: numbers as %.10g, never -0", "[app][dump]") {
     scene.objects.push_back(object(rt::Sphere{vec(1.0 / 3.0, -0.0, 1e-12), 123456789012.0}));
     const auto lines = dump(scene, 0.0);
     REQUIRE(lines.size() == 3);
-    CHECK(lines[2] == "object[0] sphere center=<0.3333333333, 0, 1e-12> radius=1.23456789e+11 " + kIdentity +
-                          " " + kFlags);
+    CHECK(lines[2] == "object[0] sphere center=<0.3333333333, 0, 1e-12> radius=1.23456789e+11 " +
+                          kIdentity + " " + kFlags);
 }
 
 TEST_CASE("dump: each shape's own keys", "[app][dump]") {
     rt::SceneDescription scene;
     scene.objects.push_back(object(rt::Box{vec(-1.0, -1.0, -1.0), vec(1.0, 2.0, 3.0)}));
     scene.objects.push_back(object(rt::Plane{vec(0.0, 1.0, 0.0), -symbolic_clock()}));
-    scene.objects.push_back(object(rt::Polygon{{vec(0.0, 0.0, 0.0), vec(1.0, 0.0, 0.0), vec(0.0, 1.0, 0.0)}}));
-    scene.objects.push_back(object(rt::Triangle{{vec(0.0, 0.0, 0.0), vec(1.0, 0.0, 0.0), vec(0.0, 1.0, 0.0)}, std::nullopt}));
-    scene.objects.push_back(object(rt::SmoothTriangle{{vec(0.0, 0.0, 0.0), vec(1.0, 0.0, 0.0), vec(0.0, 1.0, 0.0)},
-                                                      {vec(0.0, 0.0, 1.0), vec(0.0, 0.0, 2.0), vec(0.0, 0.0, 3.0)},
-                                                      std::nullopt}));
+    scene.objects.push_back(
+        object(rt::Polygon{{vec(0.0, 0.0, 0.0), vec(1.0, 0.0, 0.0), vec(0.0, 1.0, 0.0)}}));
+    scene.objects.push_back(object(
+        rt::Triangle{{vec(0.0, 0.0, 0.0), vec(1.0, 0.0, 0.0), vec(0.0, 1.0, 0.0)}, std::nullopt}));
+    scene.objects.push_back(
+        object(rt::SmoothTriangle{{vec(0.0, 0.0, 0.0), vec(1.0, 0.0, 0.0), vec(0.0, 1.0, 0.0)},
+                                  {vec(0.0, 0.0, 1.0), vec(0.0, 0.0, 2.0), vec(0.0, 0.0, 3.0)},
+                                  std::nullopt}));
     scene.objects.push_back(object(rt::Disc{vec(0.0, 0.0, 0.0), vec(0.0, 1.0, 0.0), 2.0, 0.5}));
-    scene.objects.push_back(object(rt::Cylinder{vec(0.0, 0.0, 0.0), vec(0.0, symbolic_clock(), 0.0), 0.5, true}));
-    scene.objects.push_back(object(rt::Cone{vec(0.0, 0.0, 0.0), 1.0, vec(0.0, 1.0, 0.0), 0.0, false}));
+    scene.objects.push_back(
+        object(rt::Cylinder{vec(0.0, 0.0, 0.0), vec(0.0, symbolic_clock(), 0.0), 0.5, true}));
+    scene.objects.push_back(
+        object(rt::Cone{vec(0.0, 0.0, 0.0), 1.0, vec(0.0, 1.0, 0.0), 0.0, false}));
     scene.objects.push_back(object(rt::Torus{2.0, 0.25}));
-    scene.objects.push_back(object(rt::Prism{0.0, 1.0, {rt::Vector2Function{{0.0, 0.0}}, rt::Vector2Function{{1.0, symbolic_clock()}}}, false, {}}));
+    scene.objects.push_back(object(
+        rt::Prism{0.0,
+                  1.0,
+                  {rt::Vector2Function{{0.0, 0.0}}, rt::Vector2Function{{1.0, symbolic_clock()}}},
+                  false,
+                  {}}));
     const auto lines = dump(scene, 2.0);
     REQUIRE(lines.size() == 12);
     const std::vector<std::string> shapes = {
@@ -130,32 +147,39 @@ TEST_CASE("dump: each shape's own keys", "[app][dump]") {
         "object[1] plane normal=<0, 1, 0> distance=-2",
         "object[2] polygon points=<0, 0, 0>;<1, 0, 0>;<0, 1, 0>",
         "object[3] triangle p1=<0, 0, 0> p2=<1, 0, 0> p3=<0, 1, 0>",
-        "object[4] smooth_triangle p1=<0, 0, 0> n1=<0, 0, 1> p2=<1, 0, 0> n2=<0, 0, 2> p3=<0, 1, 0> n3=<0, 0, 3>",
+        "object[4] smooth_triangle p1=<0, 0, 0> n1=<0, 0, 1> p2=<1, 0, 0> n2=<0, 0, 2> p3=<0, 1, "
+        "0> n3=<0, 0, 3>",
         "object[5] disc center=<0, 0, 0> normal=<0, 1, 0> radius=2 hole_radius=0.5",
         "object[6] cylinder base=<0, 0, 0> cap=<0, 2, 0> radius=0.5 open=1",
         "object[7] cone base=<0, 0, 0> base_radius=1 cap=<0, 1, 0> cap_radius=0 open=0",
         "object[8] torus major_radius=2 minor_radius=0.25",
         "object[9] prism height1=0 height2=1 points=<0, 0>;<1, 2> open=0",
     };
-    for (std::size_t i = 0; i < shapes.size(); ++i) CHECK(lines[i + 2] == shapes[i] + " " + kIdentity + " " + kFlags);
+    for (std::size_t i = 0; i < shapes.size(); ++i)
+        CHECK(lines[i + 2] == shapes[i] + " " + kIdentity + " " + kFlags);
 }
 
 TEST_CASE("dump: CSG children on the lines after their parent, numbered by path", "[app][dump]") {
     rt::SceneDescription scene;
-    auto inner = object(rt::Csg{rt::Csg::Kind::Difference,
-                                {object(rt::Torus{1.0, 0.5}), object(rt::Sphere{vec(0.0, 0.0, 0.0), 1.0})}});
+    auto inner =
+        object(rt::Csg{rt::Csg::Kind::Difference,
+                       {object(rt::Torus{1.0, 0.5}), object(rt::Sphere{vec(0.0, 0.0, 0.0), 1.0})}});
     inner->inverse = true;
-    auto outer = object(rt::Csg{rt::Csg::Kind::Union, {object(rt::Box{vec(0.0, 0.0, 0.0), vec(1.0, 1.0, 1.0)}), inner}});
+    auto outer = object(rt::Csg{rt::Csg::Kind::Union,
+                                {object(rt::Box{vec(0.0, 0.0, 0.0), vec(1.0, 1.0, 1.0)}), inner}});
     outer->transform.append(step(rt::TransformKind::Translate, vec(0.0, 0.0, 5.0)));
     outer->hollow = true;
     scene.objects.push_back(object(rt::Sphere{vec(0.0, 0.0, 0.0), 1.0}));
     scene.objects.push_back(outer);
     const auto lines = dump(scene, 0.0);
     REQUIRE(lines.size() == 8);
-    CHECK(lines[3] == "object[1] union children=2 transform=[1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 5] "
-                      "no_shadow=0 hollow=1 inverse=0");
-    CHECK(lines[4].rfind("object[1.0] box corner1=<0, 0, 0> corner2=<1, 1, 1> " + kIdentity, 0) == 0);
-    CHECK(lines[5] == "object[1.1] difference children=2 " + kIdentity + " no_shadow=0 hollow=0 inverse=1");
+    CHECK(lines[3] ==
+          "object[1] union children=2 transform=[1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 5] "
+          "no_shadow=0 hollow=1 inverse=0");
+    CHECK(lines[4].rfind("object[1.0] box corner1=<0, 0, 0> corner2=<1, 1, 1> " + kIdentity, 0) ==
+          0);
+    CHECK(lines[5] ==
+          "object[1.1] difference children=2 " + kIdentity + " no_shadow=0 hollow=0 inverse=1");
     CHECK(lines[6].rfind("object[1.1.0] torus ", 0) == 0);
     CHECK(lines[7].rfind("object[1.1.1] sphere ", 0) == 0);
 }
@@ -164,7 +188,8 @@ TEST_CASE("dump: a deformed object lists its steps instead of a matrix", "[app][
     rt::SceneDescription scene;
     auto box = object(rt::Box{vec(-1.0, -1.0, -1.0), vec(1.0, 1.0, 1.0)});
     box->transform.append(step(rt::TransformKind::Translate, vec(0.0, 1.0, 0.0)));
-    box->transform.append(step(rt::TransformKind::Twist, vec(0.0, 1.0, 0.0), symbolic_clock() * 90.0));
+    box->transform.append(
+        step(rt::TransformKind::Twist, vec(0.0, 1.0, 0.0), symbolic_clock() * 90.0));
     rt::TransformStep matrix = step(rt::TransformKind::Matrix, vec(0.0, 0.0, 0.0));
     for (int i = 0; i < 12; ++i) matrix.matrix[i] = static_cast<double>(i);
     matrix.inverse = true;
@@ -173,13 +198,15 @@ TEST_CASE("dump: a deformed object lists its steps instead of a matrix", "[app][
     scene.objects.push_back(box);
     const auto lines = dump(scene, 0.5);
     REQUIRE(lines.size() == 3);
-    CHECK(lines[2] == "object[0] box corner1=<-1, -1, -1> corner2=<1, 1, 1> "
-                      "steps=translate(<0, 1, 0>);twist(axis=<0, 1, 0>,amount=45);"
-                      "matrix^-1([0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11]);bend(axis=<1, 0, 0>,amount=30) " +
-                          kFlags);
+    CHECK(lines[2] ==
+          "object[0] box corner1=<-1, -1, -1> corner2=<1, 1, 1> "
+          "steps=translate(<0, 1, 0>);twist(axis=<0, 1, 0>,amount=45);"
+          "matrix^-1([0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11]);bend(axis=<1, 0, 0>,amount=30) " +
+              kFlags);
 }
 
-TEST_CASE("dump: a pattern's kind and modifiers, normals, the sky, fog and a parallel light", "[app][dump]") {
+TEST_CASE("dump: a pattern's kind and modifiers, normals, the sky, fog and a parallel light",
+          "[app][dump]") {
     rt::SceneDescription scene;
     auto o = object(rt::Sphere{{{0.0, 0.0, 0.0}}, 1.0});
     rt::Texture texture;
@@ -224,10 +251,12 @@ TEST_CASE("dump: a texture_map's entries and a layered texture's layers", "[app]
     scene.objects = {a, b};
     const auto lines = dump(scene, 0.0);
     REQUIRE(lines.size() >= 2);
-    const auto& layered = *std::find_if(lines.begin(), lines.end(), [](const auto& l) { return l.find("object[0]") == 0; });
+    const auto& layered = *std::find_if(lines.begin(), lines.end(),
+                                        [](const auto& l) { return l.find("object[0]") == 0; });
     CHECK(layered.find("pigment=solid<1, 0, 0, 0, 0.5>") != std::string::npos);
     CHECK(layered.find("under [pigment=solid<0, 0, 1, 0, 0>") != std::string::npos);
-    const auto& mapped = *std::find_if(lines.begin(), lines.end(), [](const auto& l) { return l.find("object[1]") == 0; });
+    const auto& mapped = *std::find_if(lines.begin(), lines.end(),
+                                       [](const auto& l) { return l.find("object[1]") == 0; });
     CHECK(mapped.find("texture_map=gradient") != std::string::npos);
     CHECK(mapped.find(" 0.25[pigment=solid<1, 0, 0, 0, 0.5>") != std::string::npos);
     CHECK(mapped.find(" 0.75[pigment=solid<0, 0, 1, 0, 0>") != std::string::npos);
@@ -244,7 +273,8 @@ TEST_CASE("dump: a map entry used twice is printed once and named after", "[app]
     a->texture = map;
     scene.objects = {a};
     const auto lines = dump(scene, 0.0);
-    const auto& line = *std::find_if(lines.begin(), lines.end(), [](const auto& l) { return l.find("object[0]") == 0; });
+    const auto& line = *std::find_if(lines.begin(), lines.end(),
+                                     [](const auto& l) { return l.find("object[0]") == 0; });
     CHECK(line.find(" 0[#1 pigment=solid") != std::string::npos);
     CHECK(line.find(" 1[#1]") != std::string::npos);
 }

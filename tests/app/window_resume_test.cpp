@@ -2,7 +2,6 @@
 // hierarchy over its own time, writes the very bytes one run over all
 // frames writes; --resume after a SIGKILL at any moment loses no frame,
 // renders none twice and leaves no temporary.
-#include <catch2/catch.hpp>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -12,6 +11,7 @@
 #include <sstream>
 #include <string>
 
+#include <catch2/catch.hpp>
 #include <unistd.h>
 
 #include "app/render_command.hpp"
@@ -84,7 +84,8 @@ void check_same_frames(const fs::path& a_dir, const fs::path& b_dir, int frames)
 
 }  // namespace
 
-TEST_CASE("windows split the frames evenly, in order, and refuse what is not I/N", "[app][window]") {
+TEST_CASE("windows split the frames evenly, in order, and refuse what is not I/N",
+          "[app][window]") {
     const std::vector<int> frames{1, 2, 3, 4, 5, 6, 7, 8, 9, 10};
     std::vector<int> joined;
     for (int i = 0; i < 3; ++i) {
@@ -98,7 +99,8 @@ TEST_CASE("windows split the frames evenly, in order, and refuse what is not I/N
     std::size_t total = 0;
     for (int i = 0; i < 16; ++i) total += window_frames(std::to_string(i) + "/16", frames).size();
     CHECK(total == frames.size());
-    for (const char* bad : {"3/3", "-1/3", "1/0", "1", "a/b", "1/3x", "1/ 3/", " 1/3", "+1/3", "1/3 "})
+    for (const char* bad :
+         {"3/3", "-1/3", "1/0", "1", "a/b", "1/3x", "1/ 3/", " 1/3", "+1/3", "1/3 "})
         CHECK_THROWS_WITH(window_frames(bad, frames), Catch::Contains("--window"));
     // (Found by a fresh user: I K overflowed 64 bits, losing the last frame.)
     CHECK(window_frames("99999999999999998/99999999999999999", frames) == std::vector<int>{10});
@@ -126,7 +128,8 @@ TEST_CASE("frames rendered in windows are byte-identical to one run's", "[app][w
             a.window = std::to_string(i) + "/3";
             REQUIRE(render(a) == 0);
         }
-        check_same_frames(folder / (std::string("one_") + mode), folder / (std::string("windows_") + mode), 12);
+        check_same_frames(folder / (std::string("one_") + mode),
+                          folder / (std::string("windows_") + mode), 12);
     }
     // A window with nothing in it writes nothing and says so; outputs that
     // need every frame are refused with it.
@@ -143,35 +146,41 @@ TEST_CASE("frames rendered in windows are byte-identical to one run's", "[app][w
     CHECK(err.str().find("--window") != std::string::npos);
 }
 
-TEST_CASE("resuming after SIGKILL at a random moment loses no frame and leaves no temporary", "[app][resume]") {
+TEST_CASE("resuming after SIGKILL at a random moment loses no frame and leaves no temporary",
+          "[app][resume]") {
     const fs::path folder = folder_for("resume");
     REQUIRE(render(arguments(folder, "one")) == 0);
     // How long a whole run takes, to kill within it.
-    const std::string command = std::string(HEXANT_BINARY) + " render " + (folder / "scene.pov").string() +
-                                " -W 40 -H 30 --frame-count 12 -o " + (folder / "killed" / "f_####.png").string();
+    const std::string command =
+        std::string(HEXANT_BINARY) + " render " + (folder / "scene.pov").string() +
+        " -W 40 -H 30 --frame-count 12 -o " + (folder / "killed" / "f_####.png").string();
     const auto start = std::chrono::steady_clock::now();
     REQUIRE(std::system((command + " > /dev/null 2>&1").c_str()) == 0);
-    const double whole = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double whole =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::mt19937 random(std::random_device{}());
     for (int attempt = 0; attempt < 3; ++attempt) {
         fs::remove_all(folder / "killed");
         const double delay = std::uniform_real_distribution<double>(0.0, whole)(random);
         INFO("killed after " << delay << " s of a " << whole << " s run");
-        const std::string killed = "( " + command + " > /dev/null 2>&1 & pid=$!; sleep " + std::to_string(delay) +
+        const std::string killed = "( " + command + " > /dev/null 2>&1 & pid=$!; sleep " +
+                                   std::to_string(delay) +
                                    "; kill -9 $pid 2> /dev/null; wait $pid ) 2> /dev/null";
         std::system(killed.c_str());
         // What the kill left: whole frames, perhaps a temporary.
         int whole_frames = 0;
         if (fs::exists(folder / "killed"))
             for (const auto& entry : fs::directory_iterator(folder / "killed"))
-                if (entry.path().extension() == ".png" && entry.path().filename().string()[0] != '.') ++whole_frames;
+                if (entry.path().extension() == ".png" &&
+                    entry.path().filename().string()[0] != '.')
+                    ++whole_frames;
         RenderArguments again = arguments(folder, "killed");
         again.resume = true;
         std::ostringstream out, err;
         REQUIRE(run_render(again, out, err) == 0);
         // Only the frames missing were rendered again.
-        CHECK(out.str().find("--resume: " + std::to_string(whole_frames) + " of 12 frames already written") !=
-              std::string::npos);
+        CHECK(out.str().find("--resume: " + std::to_string(whole_frames) +
+                             " of 12 frames already written") != std::string::npos);
         check_same_frames(folder / "one", folder / "killed", 12);
     }
     // A frame cut short, a file that is no image, a frame of another size:
@@ -179,13 +188,15 @@ TEST_CASE("resuming after SIGKILL at a random moment loses no frame and leaves n
     std::ofstream(folder / "killed/f_0002.png", std::ios::trunc) << "not a png";
     {
         const std::string whole = bytes(folder / "killed/f_0003.png");
-        std::ofstream(folder / "killed/f_0003.png", std::ios::binary | std::ios::trunc) << whole.substr(0, 300);
+        std::ofstream(folder / "killed/f_0003.png", std::ios::binary | std::ios::trunc)
+            << whole.substr(0, 300);
     }
     RenderArguments other = arguments(folder, "small");
     other.scene.width = 20;
     other.scene.height = 15;
     REQUIRE(render(other) == 0);
-    fs::copy_file(folder / "small/f_0004.png", folder / "killed/f_0004.png", fs::copy_options::overwrite_existing);
+    fs::copy_file(folder / "small/f_0004.png", folder / "killed/f_0004.png",
+                  fs::copy_options::overwrite_existing);
     {
         RenderArguments again = arguments(folder, "killed");
         again.resume = true;

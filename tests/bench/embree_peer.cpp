@@ -284,7 +284,8 @@ class Converter {
             if (l.kind != runtime::LightKind::Point || l.area || l.parallel ||
                 !l.fade_power.is_constant() || l.fade_power.constant() > 0.0)
                 throw std::runtime_error(
-                    "only plain point lights are supported (no spotlight, cylinder, parallel, area light or fade)");
+                    "only plain point lights are supported (no spotlight, cylinder, parallel, area "
+                    "light or fade)");
             out_.lights.push_back({l.position, l.transform, l.colour, l.shadowless});
         }
         return std::move(out_);
@@ -310,9 +311,11 @@ class Converter {
     std::uint32_t add_material(const runtime::Texture& texture,
                                const std::optional<runtime::Interior>& interior,
                                const runtime::ObjectRecord& record) {
-        if (texture.is_patterned() || !texture.below.empty()) refuse(record, "texture_map or layered texture");
+        if (texture.is_patterned() || !texture.below.empty())
+            refuse(record, "texture_map or layered texture");
         if (texture.normal) refuse(record, "normal { }");
-        if (texture.uv_mapping != runtime::UvMapping::Off || texture.pigment.uv_mapping != runtime::UvMapping::Off)
+        if (texture.uv_mapping != runtime::UvMapping::Off ||
+            texture.pigment.uv_mapping != runtime::UvMapping::Off)
             refuse(record, "uv_mapping");
         for (int k = 0; k < 3; ++k)
             if (!is_zero(texture.finish.reflection.c[k])) refuse(record, "reflection");

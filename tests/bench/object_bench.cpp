@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "runtime/objects/sphere/sphere_geometry.hpp"
 #include "runtime/object_test_support.hpp"
+#include "runtime/objects/sphere/sphere_geometry.hpp"
 
 using namespace object_test;
 
@@ -132,8 +132,8 @@ int main(int argc, char** argv) {
             if (kind.keyword == "plane" && std::string(variant.name) == "deformed") continue;
             if (!options.kind.empty() && options.kind != kind.keyword) continue;
             if (!options.variant.empty() && options.variant != variant.name) continue;
-            const std::string sdl =
-                std::string(kPath) + kind.keyword + " { " + kind.fixed + " " + variant.transform + " }\n";
+            const std::string sdl = std::string(kPath) + kind.keyword + " { " + kind.fixed + " " +
+                                    variant.transform + " }\n";
             const Parsed parsed = parse(sdl);
             const rt::IntelligentObject& object = *parsed.objects.front();
             int hits = 0;
@@ -207,8 +207,9 @@ int main(int argc, char** argv) {
         }
         g_sink = g_sink + sum;
     });
-    std::printf("\nstatic sphere without transform: %.1f ns per intersect as an object, "
-                "%.1f ns by the plain routine (ratio %.2f)\n",
-                object_ns, plain_ns, object_ns / plain_ns);
+    std::printf(
+        "\nstatic sphere without transform: %.1f ns per intersect as an object, "
+        "%.1f ns by the plain routine (ratio %.2f)\n",
+        object_ns, plain_ns, object_ns / plain_ns);
     return 0;
 }

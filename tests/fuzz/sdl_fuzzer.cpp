@@ -51,12 +51,24 @@ hexant::language::ParseOptions fuzz_options(std::ostream& messages) {
 // Pieces the structure-aware mutator splices in: deep nesting (which the
 // byte mutations almost never build) and the numbers that break
 // arithmetic.
-const char* const kNumbers[] = {"sqrt(-1)", "1e308*10", "-1e308*10", "1/0", "0/0", "1e-320",
-                                "2147483648", "-2147483649", "9007199254740993", "1e300",
-                                "(clock-0.5)", "1/(clock-0.5)", "sqrt(0.5-clock)", "nan", "inf"};
-const char* const kOpeners[][2] = {{"(", ")"},       {"<", ",0,0>"},        {"-", ""},
-                                   {"union{", "}"},  {"#if(1)", "#end"},    {"/*", "*/"},
-                                   {"{", "}"},       {"sin(", ")"},         {"array[1]{", "}"}};
+const char* const kNumbers[] = {"sqrt(-1)",
+                                "1e308*10",
+                                "-1e308*10",
+                                "1/0",
+                                "0/0",
+                                "1e-320",
+                                "2147483648",
+                                "-2147483649",
+                                "9007199254740993",
+                                "1e300",
+                                "(clock-0.5)",
+                                "1/(clock-0.5)",
+                                "sqrt(0.5-clock)",
+                                "nan",
+                                "inf"};
+const char* const kOpeners[][2] = {{"(", ")"},      {"<", ",0,0>"},     {"-", ""},
+                                   {"union{", "}"}, {"#if(1)", "#end"}, {"/*", "*/"},
+                                   {"{", "}"},      {"sin(", ")"},      {"array[1]{", "}"}};
 
 }  // namespace
 

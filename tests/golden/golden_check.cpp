@@ -85,7 +85,8 @@ int main(int argc, char** argv) {
     int failures = 0;
     for (const int frame : frame_list(frames)) {
         const fs::path fresh = tr::frame_path(*render.output, frame);
-        const fs::path golden = tr::frame_path((fs::path(golden_dir) / "frame_####.png").string(), frame);
+        const fs::path golden =
+            tr::frame_path((fs::path(golden_dir) / "frame_####.png").string(), frame);
         if (update) {
             fs::create_directories(golden.parent_path());
             fs::copy_file(fresh, golden, fs::copy_options::overwrite_existing);
@@ -104,14 +105,16 @@ int main(int argc, char** argv) {
             tr::compare_images(fresh, golden, tolerance.warn, tolerance.warn);
         const double warning_fraction = double(stored.warning) / double(stored.pixels);
         const bool ok = linear.failing == 0 && warning_fraction <= tolerance.max_warning;
-        std::printf("frame %d: %s  rms %.5f, max %.4f at (%d, %d) in 8-bit sRGB; "
-                    "%zu pixels beyond %.3f in linear light (none allowed), "
-                    "%zu beyond 2 steps (%.2f%%, up to %.2f%% allowed)\n",
-                    frame, ok ? "ok" : "DIFFERENT", stored.rms, stored.max, stored.max_x,
-                    stored.max_y, linear.failing, tolerance.fail, stored.warning,
-                    100.0 * warning_fraction, 100.0 * tolerance.max_warning);
+        std::printf(
+            "frame %d: %s  rms %.5f, max %.4f at (%d, %d) in 8-bit sRGB; "
+            "%zu pixels beyond %.3f in linear light (none allowed), "
+            "%zu beyond 2 steps (%.2f%%, up to %.2f%% allowed)\n",
+            frame, ok ? "ok" : "DIFFERENT", stored.rms, stored.max, stored.max_x, stored.max_y,
+            linear.failing, tolerance.fail, stored.warning, 100.0 * warning_fraction,
+            100.0 * tolerance.max_warning);
         if (!ok) {
-            const fs::path difference = fs::path(out_dir) / ("difference_" + fresh.filename().string());
+            const fs::path difference =
+                fs::path(out_dir) / ("difference_" + fresh.filename().string());
             tr::write_difference_image(fresh, golden, difference, 4.0);
             std::cout << "  new image:  " << fresh.string() << "\n  golden:     " << golden.string()
                       << "\n  difference: " << difference.string() << " (x4)\n";

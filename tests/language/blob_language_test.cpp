@@ -1,10 +1,10 @@
 // blob { } as the language reads it (runtime/objects/blob/blob.hpp, the
 // grammar's blob_block): POV-Ray 3.7's component syntaxes, the threshold,
 // time functions, and the refusals.
-#include <catch2/catch.hpp>
-
 #include <algorithm>
 #include <string>
+
+#include <catch2/catch.hpp>
 
 #include "language/interpreter.hpp"
 #include "runtime/objects/shapes.hpp"

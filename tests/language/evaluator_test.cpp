@@ -1,13 +1,13 @@
 // The interpreter as a whole: directives as they run, scoping, include
 // search, the chain of places in errors, the records each scene item makes,
 // and clock as a symbol.
-#include <catch2/catch.hpp>
-
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <random>
 #include <sstream>
+
+#include <catch2/catch.hpp>
 
 #include "language/interpreter.hpp"
 #include "scene_text.hpp"
@@ -54,16 +54,22 @@ const Shape& shape(const SceneDescription& scene, std::size_t i) {
 }  // namespace
 
 TEST_CASE("directives run as the scene is read", "[evaluator]") {
-    CHECK(debug("#declare I = 0; #while (I < 3) #debug str(I, 0, 0) #declare I = I + 1; #end") == "012");
+    CHECK(debug("#declare I = 0; #while (I < 3) #debug str(I, 0, 0) #declare I = I + 1; #end") ==
+          "012");
     CHECK(debug("#for (I, 5, 1, -2) #debug str(I, 0, 0) #end #debug str(I, 0, 0)") == "531-1");
     CHECK(debug("#for (I, 1, 0) #debug \"never\" #end #debug \"after\"") == "after");
     CHECK(debug("#if (0) #debug \"a\" #elseif (1) #debug \"b\" #else #debug \"c\" #end") == "b");
-    CHECK(debug("#if (0) #if (1) #debug \"x\" #else #debug \"y\" #end #else #debug \"z\" #end") == "z");
-    CHECK(debug("#declare A = 1; #ifdef (A) #debug \"d\" #end #ifndef (B) #debug \"n\" #end") == "dn");
-    CHECK(debug("#declare A = 1; #undef A #ifdef (A) #debug \"still\" #else #debug \"gone\" #end") == "gone");
+    CHECK(debug("#if (0) #if (1) #debug \"x\" #else #debug \"y\" #end #else #debug \"z\" #end") ==
+          "z");
+    CHECK(debug("#declare A = 1; #ifdef (A) #debug \"d\" #end #ifndef (B) #debug \"n\" #end") ==
+          "dn");
+    CHECK(
+        debug("#declare A = 1; #undef A #ifdef (A) #debug \"still\" #else #debug \"gone\" #end") ==
+        "gone");
     // #switch: the first matching clause runs to #break; without #break it falls through.
-    const std::string s = "#switch (V) #case (1) #debug \"one\" #case (2) #debug \"two\" #break "
-                          "#range (3, 5) #debug \"few\" #break #else #debug \"many\" #end";
+    const std::string s =
+        "#switch (V) #case (1) #debug \"one\" #case (2) #debug \"two\" #break "
+        "#range (3, 5) #debug \"few\" #break #else #debug \"many\" #end";
     CHECK(debug("#declare V = 1; " + s) == "onetwo");
     CHECK(debug("#declare V = 2; " + s) == "two");
     CHECK(debug("#declare V = 4; " + s) == "few");
@@ -75,15 +81,16 @@ TEST_CASE("directives run as the scene is read", "[evaluator]") {
 // parameters, while one whose branch starts with a modifier (or a macro
 // call) is read among the modifiers as before.
 TEST_CASE("conditional directives among a shape's parameters", "[evaluator]") {
-    const auto r = run("#declare Flip = 1; #declare A = 0; #declare Corner = <0, 2, 0>;\n"
-                       "#macro Move() translate z #end\n"
-                       "smooth_triangle {\n"
-                       "  #if (Flip) <0,0,0>, -y, <1,0,0>, -y, <0,1,0>, -y\n"
-                       "  #else <0,0,0>, y, <1,0,0>, y, <0,1,0>, y #end\n"
-                       "}\n"
-                       "sphere { #ifndef (Undefined) Corner #end, #if (A) 3 #else 0.5 #end\n"
-                       "  #if (1) translate x #end #if (1) Move() #end }\n"
-                       "cylinder { 0, #if (A) x #else vrotate(y, 90 * z) #end, 1 }\n");
+    const auto r =
+        run("#declare Flip = 1; #declare A = 0; #declare Corner = <0, 2, 0>;\n"
+            "#macro Move() translate z #end\n"
+            "smooth_triangle {\n"
+            "  #if (Flip) <0,0,0>, -y, <1,0,0>, -y, <0,1,0>, -y\n"
+            "  #else <0,0,0>, y, <1,0,0>, y, <0,1,0>, y #end\n"
+            "}\n"
+            "sphere { #ifndef (Undefined) Corner #end, #if (A) 3 #else 0.5 #end\n"
+            "  #if (1) translate x #end #if (1) Move() #end }\n"
+            "cylinder { 0, #if (A) x #else vrotate(y, 90 * z) #end, 1 }\n");
     REQUIRE(r.scene.objects.size() == 3);
     const auto& triangle = shape<hexant::runtime::SmoothTriangle>(r.scene, 0);
     CHECK(triangle.normals[0](0.0).y == -1.0);
@@ -100,12 +107,16 @@ TEST_CASE("conditional directives among a shape's parameters", "[evaluator]") {
 
 TEST_CASE("macros: values, objects, modifiers, locals and references", "[evaluator]") {
     CHECK(debug("#macro Sq(X) (X * X) #end #debug str(Sq(3) + 1, 0, 0)") == "10");
-    CHECK(debug("#macro Pick(A, B) #if (A > B) A #else B #end #end #debug str(Pick(2, 7), 0, 0)") == "7");
-    CHECK(debug("#macro F() #local T = 4; T #end #declare T = 1; #debug str(F() + T, 0, 0)") == "5");
-    CHECK(debug("#macro Bump(V) #declare V = V + 1; #end #declare N = 1; Bump(N) #debug str(N, 0, 0)") == "2");
-    const auto r = run("#macro Move() translate <1, 2, 3> #end\n"
-                       "#macro Ball(R) sphere { 0, R Move() } #end\n"
-                       "Ball(2)\n#declare B = Ball(3);\nobject { B }\n");
+    CHECK(debug("#macro Pick(A, B) #if (A > B) A #else B #end #end #debug str(Pick(2, 7), 0, 0)") ==
+          "7");
+    CHECK(debug("#macro F() #local T = 4; T #end #declare T = 1; #debug str(F() + T, 0, 0)") ==
+          "5");
+    CHECK(debug("#macro Bump(V) #declare V = V + 1; #end #declare N = 1; Bump(N) #debug str(N, 0, "
+                "0)") == "2");
+    const auto r =
+        run("#macro Move() translate <1, 2, 3> #end\n"
+            "#macro Ball(R) sphere { 0, R Move() } #end\n"
+            "Ball(2)\n#declare B = Ball(3);\nobject { B }\n");
     REQUIRE(r.scene.objects.size() == 2);
     CHECK(shape<hexant::runtime::Sphere>(r.scene, 0).radius.constant() == 2.0);
     const auto m = r.scene.objects[1]->transform.matrix_at(0.0);
@@ -116,7 +127,8 @@ TEST_CASE("macros: values, objects, modifiers, locals and references", "[evaluat
 TEST_CASE("runaway loops and recursion stop at the stated limits", "[evaluator]") {
     ParseOptions options;
     options.limits.loop_iterations = 1000;
-    CHECK(std::string(error_of("#while (1) #end", options).message()).find("1000") != std::string::npos);
+    CHECK(std::string(error_of("#while (1) #end", options).message()).find("1000") !=
+          std::string::npos);
     options.limits.macro_depth = 20;
     CHECK(std::string(error_of("#macro R() R() #end R()", options).message()).find("20 deep") !=
           std::string::npos);
@@ -129,8 +141,9 @@ TEST_CASE("#include searches the scene's folder, then each include path, then he
     fs::create_directories(root / "scene");
     fs::create_directories(root / "first");
     fs::create_directories(root / "second");
-    std::ofstream(root / "scene" / "main.pov") << "#include \"a.inc\" #include \"b.inc\" #include \"colors.inc\"\n"
-                                                  "#debug concat(A, B) #debug str(Red.red, 0, 0)\n";
+    std::ofstream(root / "scene" / "main.pov")
+        << "#include \"a.inc\" #include \"b.inc\" #include \"colors.inc\"\n"
+           "#debug concat(A, B) #debug str(Red.red, 0, 0)\n";
     std::ofstream(root / "scene" / "a.inc") << "#declare A = \"scene\";";
     std::ofstream(root / "first" / "a.inc") << "#declare A = \"first\";";
     std::ofstream(root / "first" / "b.inc") << "#declare B = \"first\";";
@@ -152,7 +165,8 @@ TEST_CASE("#include searches the scene's folder, then each include path, then he
     }
 }
 
-TEST_CASE("an error reports its place first, then the chain that led there", "[evaluator][include]") {
+TEST_CASE("an error reports its place first, then the chain that led there",
+          "[evaluator][include]") {
     const fs::path root = fs::temp_directory_path() / "hexant_chain_test";
     fs::create_directories(root);
     std::ofstream(root / "lib.inc") << "#macro Ball()\n  sphere { 0, Oops }\n#end\n";
@@ -168,28 +182,30 @@ TEST_CASE("an error reports its place first, then the chain that led there", "[e
         CHECK(e.places()[1].line == 3);
         CHECK(e.places()[1].note.find("macro 'Ball'") != std::string::npos);
         const std::string text = e.formatted();
-        CHECK(text.find((root / "lib.inc").string() + ":2:15: error: undeclared identifier 'Oops'") !=
-              std::string::npos);
+        CHECK(text.find((root / "lib.inc").string() +
+                        ":2:15: error: undeclared identifier 'Oops'") != std::string::npos);
         CHECK(text.find("  sphere { 0, Oops }\n") != std::string::npos);
         CHECK(text.find("              ^") != std::string::npos);
     }
 }
 
 TEST_CASE("each scene item makes its record", "[evaluator]") {
-    const auto r = run(
-        "camera { location <0, 1, -5> look_at 0 }\n"
-        "light_source { <1, 2, 3>, rgb <1, 0.5, 0> shadowless }\n"
-        "background { rgb <0, 0, 0.5> }\n"
-        "global_settings { assumed_gamma 2.2 max_trace_level 9 ambient_light rgb 0.5 radiosity { } }\n"
-        "sphere { <1, 2, 3>, 4 }\n"
-        "box { <0, 0, 0>, 1 }\n"
-        "cylinder { 0, y, 0.5 open }\n"
-        "polygon { 3, <0, 0>, <1, 0>, <0, 1> }\n"
-        "prism { 0, 2, 3, <0, 0>, <1, 0>, <0, 1> }\n"
-        "union { sphere { 0, 1 } light_source { <0, 1, 0>, rgb 1 } translate x * 5 }\n"
-        "difference { box { -1, 1 } sphere { 0, 1.2 } }\n"
-        "sphere { 0, 1 texture { pigment { checker rgb 1, rgb 0 } finish { phong 0.5 reflection 0.25 } } "
-        "interior { ior 1.5 } no_shadow }\n");
+    const auto r =
+        run("camera { location <0, 1, -5> look_at 0 }\n"
+            "light_source { <1, 2, 3>, rgb <1, 0.5, 0> shadowless }\n"
+            "background { rgb <0, 0, 0.5> }\n"
+            "global_settings { assumed_gamma 2.2 max_trace_level 9 ambient_light rgb 0.5 radiosity "
+            "{ } }\n"
+            "sphere { <1, 2, 3>, 4 }\n"
+            "box { <0, 0, 0>, 1 }\n"
+            "cylinder { 0, y, 0.5 open }\n"
+            "polygon { 3, <0, 0>, <1, 0>, <0, 1> }\n"
+            "prism { 0, 2, 3, <0, 0>, <1, 0>, <0, 1> }\n"
+            "union { sphere { 0, 1 } light_source { <0, 1, 0>, rgb 1 } translate x * 5 }\n"
+            "difference { box { -1, 1 } sphere { 0, 1.2 } }\n"
+            "sphere { 0, 1 texture { pigment { checker rgb 1, rgb 0 } finish { phong 0.5 "
+            "reflection 0.25 } } "
+            "interior { ior 1.5 } no_shadow }\n");
     const auto& s = r.scene;
     CHECK(s.lights.size() == 2);
     CHECK(s.lights[0].shadowless);
@@ -220,8 +236,10 @@ TEST_CASE("each scene item makes its record", "[evaluator]") {
 }
 
 TEST_CASE("clock is a symbol in an animation and a number in a still", "[evaluator][time]") {
-    const auto r = run("sphere { vrotate(3 * x, 360 * clock * z), 1 + clock }\n"
-                       "box { 0, 1 twist y, 90 * clock }\n", animation());
+    const auto r =
+        run("sphere { vrotate(3 * x, 360 * clock * z), 1 + clock }\n"
+            "box { 0, 1 twist y, 90 * clock }\n",
+            animation());
     const auto& sphere = shape<hexant::runtime::Sphere>(r.scene, 0);
     CHECK(sphere.center.depends_on_time());
     CHECK(sphere.center(0.25).x == Approx(0.0).margin(1e-12));
@@ -251,26 +269,31 @@ TEST_CASE("clock is a symbol in an animation and a number in a still", "[evaluat
     // (#if, #elseif, #while, #switch, a #for's end and an index read on clock
     // split time: tests/language/time_branch_test.cpp; str() and the string
     // functions: timed_string_test.cpp.)
-    for (const char* needs_a_number :
-         {"#declare A = array[2] {1, 2}; #declare A[clock] = 3;", "#declare S = seed(clock);",
-          "#for (I, clock, 1) #end"}) {
+    for (const char* needs_a_number : {"#declare A = array[2] {1, 2}; #declare A[clock] = 3;",
+                                       "#declare S = seed(clock);", "#for (I, clock, 1) #end"}) {
         INFO(needs_a_number);
-        CHECK(std::string(error_of(needs_a_number, animation()).message()).find("depends on clock") !=
-              std::string::npos);
+        CHECK(
+            std::string(error_of(needs_a_number, animation()).message()).find("depends on clock") !=
+            std::string::npos);
     }
 }
 
 TEST_CASE("what a scene declares but never uses cannot fail", "[evaluator]") {
-    const auto r = run("#declare F = function(x) { x }\n#declare G = F(2);\n"
-                       "#declare P = pigment { julia <0.3, 0.2> 20 }\n#declare I = isosurface { function { x } }\n"
-                       "#declare T = texture { pigment { rgb 1 } } texture { pigment { rgbt 1 } }\n"
-                       "sphere { 0, 1 }\n");
+    const auto r = run(
+        "#declare F = function(x) { x }\n#declare G = F(2);\n"
+        "#declare P = pigment { julia <0.3, 0.2> 20 }\n#declare I = isosurface { function { x } }\n"
+        "#declare T = texture { pigment { rgb 1 } } texture { pigment { rgbt 1 } }\n"
+        "sphere { 0, 1 }\n");
     CHECK(r.scene.objects.size() == 1);
-    const auto used = error_of("#declare P = pigment { julia <0.3, 0.2> 20 }\nsphere { 0, 1 pigment { P } }\n");
+    const auto used =
+        error_of("#declare P = pigment { julia <0.3, 0.2> 20 }\nsphere { 0, 1 pigment { P } }\n");
     CHECK(used.places()[0].line == 2);
     CHECK(used.message().find("test.pov:1:") != std::string::npos);  // where it was written
-    CHECK(error_of("#declare I = isosurface { function { x } }\nobject { I }\n").places()[0].line == 2);
-    CHECK(error_of("#declare F = function { x }\n#declare G = F(1);\nsphere { 0, G }\n").places()[0].line == 3);
+    CHECK(error_of("#declare I = isosurface { function { x } }\nobject { I }\n").places()[0].line ==
+          2);
+    CHECK(error_of("#declare F = function { x }\n#declare G = F(1);\nsphere { 0, G }\n")
+              .places()[0]
+              .line == 3);
 }
 
 TEST_CASE("no input makes the reader crash: it either reads or says where it fails",
@@ -286,9 +309,12 @@ TEST_CASE("no input makes the reader crash: it either reads or says where it fai
         std::string text = valid;
         const int kind = trial % 3;
         const std::size_t at = random() % text.size();
-        if (kind == 0) text.resize(at);                                      // truncated
-        else if (kind == 1) text[at] = alphabet[random() % alphabet.size()];  // one character changed
-        else text.erase(at, 1 + random() % 5);                               // a few characters gone
+        if (kind == 0)
+            text.resize(at);  // truncated
+        else if (kind == 1)
+            text[at] = alphabet[random() % alphabet.size()];  // one character changed
+        else
+            text.erase(at, 1 + random() % 5);  // a few characters gone
         INFO(text);
         try {
             hexant::language::ParseOptions options;
@@ -301,13 +327,15 @@ TEST_CASE("no input makes the reader crash: it either reads or says where it fai
     }
 }
 
-TEST_CASE("a declared light is copied with its modifiers, and looks_like places its object at the light",
-          "[evaluator]") {
-    const auto r = run(
-        "#declare L = light_source { <0, 5, -3>, rgb <1, 0.5, 0.25> spotlight point_at 0 }\n"
-        "light_source { L translate x * 2 }\n"
-        "light_source { <1, 2, 3>, rgb 1 looks_like { sphere { 0, 0.5 } } translate y }\n"
-        "union { sphere { 0, 1 } light_source { 0, rgb 1 looks_like { box { -1, 1 } } } translate z * 4 }\n");
+TEST_CASE(
+    "a declared light is copied with its modifiers, and looks_like places its object at the light",
+    "[evaluator]") {
+    const auto r =
+        run("#declare L = light_source { <0, 5, -3>, rgb <1, 0.5, 0.25> spotlight point_at 0 }\n"
+            "light_source { L translate x * 2 }\n"
+            "light_source { <1, 2, 3>, rgb 1 looks_like { sphere { 0, 0.5 } } translate y }\n"
+            "union { sphere { 0, 1 } light_source { 0, rgb 1 looks_like { box { -1, 1 } } } "
+            "translate z * 4 }\n");
     const auto& s = r.scene;
     REQUIRE(s.lights.size() == 3);
     // The copy keeps the declared light's kind and colour; its translate

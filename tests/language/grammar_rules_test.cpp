@@ -1,14 +1,13 @@
 // The grammar rule by rule, without actions or state: what each rule accepts
 // and what it rejects. (Directives and macro calls are custom rules that need
 // the interpreter; they are tested through it in evaluator_test.cpp.)
-#include <catch2/catch.hpp>
-
 #include <filesystem>
 #include <fstream>
-#include <vector>
 #include <regex>
 #include <sstream>
+#include <vector>
 
+#include <catch2/catch.hpp>
 #include <tao/pegtl.hpp>
 #include <tao/pegtl/contrib/analyze.hpp>
 
@@ -49,7 +48,8 @@ TEST_CASE("every keyword of the grammar is a reserved word", "[grammar]") {
     std::stringstream text;
     const std::filesystem::path root = std::filesystem::path(HEXANT_SOURCE_DIR) / "language";
     std::vector<std::filesystem::path> files = {root / "grammar.hpp"};
-    for (const auto& entry : std::filesystem::directory_iterator(root / "grammar")) files.push_back(entry.path());
+    for (const auto& entry : std::filesystem::directory_iterator(root / "grammar"))
+        files.push_back(entry.path());
     REQUIRE(files.size() > 1);
     for (const auto& file : files) {
         std::ifstream in(file);
@@ -142,12 +142,30 @@ TEST_CASE("names are identifiers that are not keywords", "[grammar]") {
 }
 
 TEST_CASE("expressions of every shape", "[grammar]") {
-    for (const char* ok :
-         {"1+2*3", "-x.y", "(1 < 2) & (3 >= 2) | !0", "a ? b : c", "<1, 2, 3>.x",
-          "<1,2>", "<1,2,3,4,5>", "vrotate(x, <0, 90, 0>)", "max(1, 2, 3)", "pi * clock",
-          "A[1][2]", "S(0.5).y", "1 = 1 != 0", "2 * -3", "+1", "rgb <1, 0, 0>", "rgbft 1",
-          "srgb <.5, .5, .5> + rgb 1", "color red 1 green .5", "colour Red blue 1",
-          "defined(Foo)", "\"a\"", "str(1, 0, 2)", "a.red + b.filter * c.u"}) {
+    for (const char* ok : {"1+2*3",
+                           "-x.y",
+                           "(1 < 2) & (3 >= 2) | !0",
+                           "a ? b : c",
+                           "<1, 2, 3>.x",
+                           "<1,2>",
+                           "<1,2,3,4,5>",
+                           "vrotate(x, <0, 90, 0>)",
+                           "max(1, 2, 3)",
+                           "pi * clock",
+                           "A[1][2]",
+                           "S(0.5).y",
+                           "1 = 1 != 0",
+                           "2 * -3",
+                           "+1",
+                           "rgb <1, 0, 0>",
+                           "rgbft 1",
+                           "srgb <.5, .5, .5> + rgb 1",
+                           "color red 1 green .5",
+                           "colour Red blue 1",
+                           "defined(Foo)",
+                           "\"a\"",
+                           "str(1, 0, 2)",
+                           "a.red + b.filter * c.u"}) {
         INFO(ok);
         CHECK(whole<g::expression>(ok));
     }

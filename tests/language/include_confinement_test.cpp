@@ -3,13 +3,13 @@
 // folders, after `..` and symbolic links are resolved; never a device, a
 // FIFO or a system file; and an error never shows a refused file's
 // contents. --declare takes a value, never scene text.
-#include <sys/stat.h>
-
-#include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+
+#include <catch2/catch.hpp>
+#include <sys/stat.h>
 
 #include "language/interpreter.hpp"
 
@@ -84,7 +84,8 @@ TEST_CASE("#include reads only from the folders a scene may read", "[language][i
     CHECK(f.read("#include \"secret.inc\"\n", searched).find("TOPSECRET") != std::string::npos);
 }
 
-TEST_CASE("declared values from the command line are values, never scene text", "[language][include]") {
+TEST_CASE("declared values from the command line are values, never scene text",
+          "[language][include]") {
     const auto declare = [](const std::string& name, const std::string& value) -> std::string {
         ParseOptions options;
         std::ostringstream messages;

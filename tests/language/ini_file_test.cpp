@@ -2,12 +2,12 @@
 // settings land on ParseOptions. The section rules were checked against
 // povray 3.7 (`povray res.ini` reads only the unlabelled lines,
 // `povray 'res.ini[high]'` those and the [High] section).
-#include <catch2/catch.hpp>
+#include "language/ini_file.hpp"
 
 #include <filesystem>
 #include <fstream>
 
-#include "language/ini_file.hpp"
+#include <catch2/catch.hpp>
 
 namespace fs = std::filesystem;
 using hexant::language::ini_reference;
@@ -22,15 +22,16 @@ hexant::language::IniSettings parse(const std::string& text, const std::string& 
 }  // namespace
 
 TEST_CASE("ini: keys in any case, comments, blanks and quotes", "[language][ini]") {
-    const auto s = parse("; the options\n"
-                         "Input_File_Name = \"scene.pov\"  ; the scene\n"
-                         "WIDTH=126\n"
-                         "height=96\n"
-                         "Initial_Frame=1\nFinal_Frame=64\n"
-                         "Initial_Clock=-0.5\nFinal_Clock=2.5e0\n"
-                         "Cyclic_Animation=On\n"
-                         "Library_Path=lib\nLibrary_Path=/abs\n"
-                         "Declare=Speed=3\nDeclare = Name = 1 + 2\n");
+    const auto s = parse(
+        "; the options\n"
+        "Input_File_Name = \"scene.pov\"  ; the scene\n"
+        "WIDTH=126\n"
+        "height=96\n"
+        "Initial_Frame=1\nFinal_Frame=64\n"
+        "Initial_Clock=-0.5\nFinal_Clock=2.5e0\n"
+        "Cyclic_Animation=On\n"
+        "Library_Path=lib\nLibrary_Path=/abs\n"
+        "Declare=Speed=3\nDeclare = Name = 1 + 2\n");
     REQUIRE(s.input_file);
     CHECK(*s.input_file == fs::path("folder") / "scene.pov");
     CHECK(s.width == 126);
@@ -49,7 +50,8 @@ TEST_CASE("ini: keys in any case, comments, blanks and quotes", "[language][ini]
     CHECK(s.warnings.empty());
 }
 
-TEST_CASE("ini: an option not given stays empty, the last of one given twice wins", "[language][ini]") {
+TEST_CASE("ini: an option not given stays empty, the last of one given twice wins",
+          "[language][ini]") {
     const auto s = parse("Width=10\nWidth=20\n");
     CHECK(s.width == 20);
     CHECK_FALSE(s.height);
@@ -59,13 +61,15 @@ TEST_CASE("ini: an option not given stays empty, the last of one given twice win
 }
 
 TEST_CASE("ini: every boolean spelling", "[language][ini]") {
-    for (const char* on : {"on", "TRUE", "yes", "1"}) CHECK(parse(std::string("Cyclic_Animation=") + on).cyclic == true);
+    for (const char* on : {"on", "TRUE", "yes", "1"})
+        CHECK(parse(std::string("Cyclic_Animation=") + on).cyclic == true);
     for (const char* off : {"off", "False", "NO", "0"})
         CHECK(parse(std::string("Cyclic_Animation=") + off).cyclic == false);
 }
 
 TEST_CASE("ini: POV-Ray's switches, several on a line", "[language][ini]") {
-    const auto s = parse("+W320 +H240 ; size\n+KFI2 +KFF9\n+KI0.5 +KF1.5\n+KC\n+Linc\n+Iscene.pov\n");
+    const auto s =
+        parse("+W320 +H240 ; size\n+KFI2 +KFF9\n+KI0.5 +KF1.5\n+KC\n+Linc\n+Iscene.pov\n");
     CHECK(s.width == 320);
     CHECK(s.height == 240);
     CHECK(s.initial_frame == 2);
@@ -93,12 +97,14 @@ TEST_CASE("ini: switches and options hexant does not use are warnings", "[langua
 }
 
 TEST_CASE("ini: only the unlabelled lines, unless a section is selected", "[language][ini]") {
-    const std::string res = "; RES.INI\n+W120 +H100\n[Low]\n+W80 +H60\n[High]\n+W640\n[Really High]\n+W800 +H600\n";
+    const std::string res =
+        "; RES.INI\n+W120 +H100\n[Low]\n+W80 +H60\n[High]\n+W640\n[Really High]\n+W800 +H600\n";
     const auto plain = parse(res);
     CHECK(plain.width == 120);
     CHECK(plain.height == 100);
     REQUIRE(plain.warnings.size() == 3);  // one per section not read
-    CHECK(plain.warnings[0] == "test.ini:3: section [Low] is read only when selected, as test.ini[Low]");
+    CHECK(plain.warnings[0] ==
+          "test.ini:3: section [Low] is read only when selected, as test.ini[Low]");
     const auto high = parse(res, "high");  // labels in any case
     CHECK(high.width == 640);
     CHECK(high.height == 100);  // the unlabelled lines are read too
@@ -106,7 +112,8 @@ TEST_CASE("ini: only the unlabelled lines, unless a section is selected", "[lang
     const auto really = parse(res, "Really High");  // labels may hold blanks
     CHECK(really.width == 800);
     CHECK(really.height == 600);
-    REQUIRE_THROWS_WITH(parse(res, "Medium"), Catch::Contains("test.ini") && Catch::Contains("[Medium]"));
+    REQUIRE_THROWS_WITH(parse(res, "Medium"),
+                        Catch::Contains("test.ini") && Catch::Contains("[Medium]"));
 }
 
 TEST_CASE("ini: a bad value names the file, the line and the option", "[language][ini]") {
@@ -114,13 +121,17 @@ TEST_CASE("ini: a bad value names the file, the line and the option", "[language
                         "test.ini:2: Height needs a whole number, not 'lots'");
     REQUIRE_THROWS_WITH(parse("\n\nWidth=12.5\n"), Catch::StartsWith("test.ini:3: Width"));
     REQUIRE_THROWS_WITH(parse("Width=\n"), Catch::StartsWith("test.ini:1: Width"));
-    REQUIRE_THROWS_WITH(parse("Final_Clock=1x\n"), Catch::StartsWith("test.ini:1: Final_Clock needs a number"));
+    REQUIRE_THROWS_WITH(parse("Final_Clock=1x\n"),
+                        Catch::StartsWith("test.ini:1: Final_Clock needs a number"));
     REQUIRE_THROWS_WITH(parse("Initial_Clock=nan\n"), Catch::StartsWith("test.ini:1:"));
     REQUIRE_THROWS_WITH(parse("Cyclic_Animation=maybe\n"),
                         "test.ini:1: Cyclic_Animation needs on or off, not 'maybe'");
-    REQUIRE_THROWS_WITH(parse("Declare=Speed\n"), Catch::StartsWith("test.ini:1: Declare needs NAME=VALUE"));
-    REQUIRE_THROWS_WITH(parse("Declare==3\n"), Catch::StartsWith("test.ini:1: Declare needs NAME=VALUE"));
-    REQUIRE_THROWS_WITH(parse("+W640\n+KFFten\n"), Catch::StartsWith("test.ini:2: +KFFten needs a whole number"));
+    REQUIRE_THROWS_WITH(parse("Declare=Speed\n"),
+                        Catch::StartsWith("test.ini:1: Declare needs NAME=VALUE"));
+    REQUIRE_THROWS_WITH(parse("Declare==3\n"),
+                        Catch::StartsWith("test.ini:1: Declare needs NAME=VALUE"));
+    REQUIRE_THROWS_WITH(parse("+W640\n+KFFten\n"),
+                        Catch::StartsWith("test.ini:2: +KFFten needs a whole number"));
 }
 
 TEST_CASE("ini: which command-line words name .ini files", "[language][ini]") {
@@ -138,7 +149,8 @@ TEST_CASE("ini: which command-line words name .ini files", "[language][ini]") {
     CHECK_FALSE(ini_reference("ini"));
 }
 
-TEST_CASE("ini: settings replace what they set, and paths and declarations append", "[language][ini]") {
+TEST_CASE("ini: settings replace what they set, and paths and declarations append",
+          "[language][ini]") {
     hexant::language::ParseOptions options;
     options.animation.width = 640;
     options.animation.final_clock = 3.0;
@@ -167,5 +179,6 @@ TEST_CASE("ini: a file on disk, relative paths from its folder", "[language][ini
     const auto s = hexant::language::read_ini_file(file);
     CHECK(s.input_file == folder / "scene.pov");
     CHECK(s.width == 7);
-    REQUIRE_THROWS_WITH(hexant::language::read_ini_file(folder / "missing.ini"), Catch::Contains("cannot read"));
+    REQUIRE_THROWS_WITH(hexant::language::read_ini_file(folder / "missing.ini"),
+                        Catch::Contains("cannot read"));
 }

@@ -1,22 +1,20 @@
 // Each limit of language/limits.hpp: a scene that passes it stops with an
 // error at the place it did so, and one just inside it reads.
-#include <catch2/catch.hpp>
-
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
+#include <catch2/catch.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include "language/interpreter.hpp"
 #include "runtime/motion/transform.hpp"
 #include "scene_text.hpp"
 #include "tests/sanitizer.hpp"
-
-#include <glm/gtc/matrix_transform.hpp>
 
 using hexant::language::ParseOptions;
 using hexant::language::SceneError;
@@ -36,9 +34,10 @@ TEST_CASE("the total iteration budget spans nested loops and macro calls", "[lim
     ParseOptions options;
     options.limits.loop_iterations = 100;  // each loop alone stays inside it
     options.limits.total_iterations = 1000;
-    const std::string nested = "#declare I = 0;\n#while (I < 40)\n  #declare J = 0;\n"
-                               "  #while (J < 40) #declare J = J + 1; #end\n"
-                               "  #declare I = I + 1;\n#end\n";
+    const std::string nested =
+        "#declare I = 0;\n#while (I < 40)\n  #declare J = 0;\n"
+        "  #while (J < 40) #declare J = J + 1; #end\n"
+        "  #declare I = I + 1;\n#end\n";
     const SceneError e = error_of(nested, options);
     CHECK(contains(e, "more than 1000 loop iterations and macro calls"));
     CHECK(contains(e, "--max-iterations"));
@@ -64,9 +63,8 @@ TEST_CASE("the text read is bounded: a loop's turns, macro calls and includes re
     const std::string body = "#declare X = 0; /*" + std::string(10'000, '.') + "*/";
     ParseOptions options;
     options.limits.text_read = 1'000'000;
-    const SceneError w = error_of("#declare I = 0;\n#while (1)\n  #switch (I) #case (1) " + body +
-                                      " #end\n#end\n",
-                                  options);
+    const SceneError w = error_of(
+        "#declare I = 0;\n#while (1)\n  #switch (I) #case (1) " + body + " #end\n#end\n", options);
     CHECK(contains(w, "more than 1000000 bytes of text"));
     CHECK(contains(w, "--max-text-read"));
     CHECK(w.places().front().line == 2);  // the loop that read it again
@@ -84,13 +82,13 @@ TEST_CASE("the text read is bounded: a loop's turns, macro calls and includes re
     hexant::language::ErrorPlace middle{"long.pov", 1, 5001, std::string(10'000, 'a'), {}};
     middle.source_line[5000] = 'X';
     const std::string shown = SceneError("bad", middle).formatted();
-    CHECK(shown.find("\n    ..." + std::string(80, 'a') + "X" + std::string(79, 'a') + "...\n    ..." +
-                     std::string(80, ' ') + "^\n") != std::string::npos);
+    CHECK(shown.find("\n    ..." + std::string(80, 'a') + "X" + std::string(79, 'a') +
+                     "...\n    ..." + std::string(80, ' ') + "^\n") != std::string::npos);
     // A place keeps only that part of its line (a runaway recursion makes
     // hundreds of places on one line), and reports the same; at the line's
     // start and end too.
-    for (const std::size_t column : {std::size_t(1), std::size_t(3), std::size_t(5001), std::size_t(9990),
-                                     std::size_t(10'001)}) {
+    for (const std::size_t column : {std::size_t(1), std::size_t(3), std::size_t(5001),
+                                     std::size_t(9990), std::size_t(10'001)}) {
         hexant::language::ErrorPlace whole = middle, kept = middle;
         whole.column = kept.column = column;
         kept.set_source_line(middle.source_line);
@@ -112,15 +110,17 @@ TEST_CASE("the text read is bounded: a loop's turns, macro calls and includes re
     options.messages = &messages;
     CHECK_NOTHROW(hexant::language::parse_scene_file(folder / "twice.pov", options));
     // Refused before it is read: the limit is checked against its size.
-    CHECK_THROWS_WITH(hexant::language::parse_scene_file(folder / "many.pov", options),
-                      Catch::Contains("long.inc': its 10020 bytes would take the scene's reading over "
-                                      "its limit of text"));
+    CHECK_THROWS_WITH(
+        hexant::language::parse_scene_file(folder / "many.pov", options),
+        Catch::Contains("long.inc': its 10020 bytes would take the scene's reading over "
+                        "its limit of text"));
     fs::remove_all(folder);
 }
 
 TEST_CASE("an error's source line is shown as the terminal should see it", "[limits]") {
     // One space a character under the line, not a byte: the caret under BAD.
-    const std::string u8 = error_of("#declare S = \"h\xC3\xA9llo w\xC3\xB6rld\";  BAD\n").formatted();
+    const std::string u8 =
+        error_of("#declare S = \"h\xC3\xA9llo w\xC3\xB6rld\";  BAD\n").formatted();
     CHECK(u8.find("\n    " + std::string(29, ' ') + "^\n") != std::string::npos);
     // Control characters (a bare carriage return, an escape, a NUL) are
     // shown as '?', and a NUL in the way is named, not printed.
@@ -157,8 +157,10 @@ TEST_CASE("the scene file itself: a regular file, within the text a reading may 
     fs::create_directories(folder);
     std::ofstream(folder / "big.pov") << "// " << std::string(5000, '.') << "\n";
     options.limits.text_read = 4000;
-    CHECK_THROWS_WITH(hexant::language::parse_scene_file(folder / "big.pov", options),
-                      Catch::Contains("5004 bytes would take the scene's reading over its limit of text, 4000 bytes left"));
+    CHECK_THROWS_WITH(
+        hexant::language::parse_scene_file(folder / "big.pov", options),
+        Catch::Contains(
+            "5004 bytes would take the scene's reading over its limit of text, 4000 bytes left"));
     options.limits.text_read = 6000;
     CHECK_NOTHROW(hexant::language::parse_scene_file(folder / "big.pov", options));
     fs::remove_all(folder);
@@ -167,18 +169,19 @@ TEST_CASE("the scene file itself: a regular file, within the text a reading may 
 TEST_CASE("a string longer than the limit stops where it would be made", "[limits]") {
     ParseOptions options;
     options.limits.string_length = 1000;
-    const SceneError e = error_of("#declare S = \"abcdefgh\";\n#while (1)\n"
-                                  "  #declare S = concat(S, S);\n#end\n",
-                                  options);
+    const SceneError e = error_of(
+        "#declare S = \"abcdefgh\";\n#while (1)\n"
+        "  #declare S = concat(S, S);\n#end\n",
+        options);
     CHECK(contains(e, "concat()'s result would be 1024 characters long"));
     CHECK(contains(e, "--max-string-length"));
     CHECK(e.places().front().line == 3);
-    reads("#declare S = concat(\"" + std::string(500, 'a') + "\", \"" + std::string(500, 'b') + "\");",
+    reads("#declare S = concat(\"" + std::string(500, 'a') + "\", \"" + std::string(500, 'b') +
+              "\");",
           options);
     // Any function's string: vstr of a long separator.
-    const SceneError v = error_of("#declare S = vstr(5, <1,2,3,4,5>, \"" + std::string(300, '-') +
-                                      "\", 0, 0);",
-                                  options);
+    const SceneError v = error_of(
+        "#declare S = vstr(5, <1,2,3,4,5>, \"" + std::string(300, '-') + "\", 0, 0);", options);
     CHECK(contains(v, "vstr()'s result"));
 }
 
@@ -194,9 +197,10 @@ TEST_CASE("the arrays' memory is held against its limit, and given back", "[limi
     reads("#for (I, 1, 100) #declare A = array[10000]; #end\n", options);
     // Values set in an array count: strings of 1000 characters.
     options.limits.array_memory = 200'000;
-    const SceneError s = error_of("#declare A = array[1000]\n#for (I, 0, 999)\n"
-                                  "  #declare A[I] = str(I, 1000, 0);\n#end\n",
-                                  options);
+    const SceneError s = error_of(
+        "#declare A = array[1000]\n#for (I, 0, 999)\n"
+        "  #declare A[I] = str(I, 1000, 0);\n#end\n",
+        options);
     CHECK(contains(s, "arrays and strings would hold more than"));
     CHECK(s.places().front().line == 3);
 }
@@ -206,8 +210,9 @@ TEST_CASE("strings held in variables count against the same memory, and are give
     ParseOptions options;
     options.limits.array_memory = 1 << 20;
     // S: 163,840 characters (ten, doubled fourteen times).
-    const std::string s = "#declare S = \"0123456789\";\n"
-                          "#for (K, 1, 14) #declare S = concat(S, S); #end\n";
+    const std::string s =
+        "#declare S = \"0123456789\";\n"
+        "#for (K, 1, 14) #declare S = concat(S, S); #end\n";
     // S and five copies hold 983,040 bytes; the sixth copy passes 1 MiB.
     const SceneError e = error_of(s + "#declare S1 = S;\n#declare S2 = S;\n#declare S3 = S;\n"
                                       "#declare S4 = S;\n#declare S5 = S;\n#declare S6 = S;\n",
@@ -220,9 +225,9 @@ TEST_CASE("strings held in variables count against the same memory, and are give
     reads(s + "#for (I, 1, 100) #declare T = concat(S, str(I, 0, 0)); #end\n", options);
     reads(s + "#for (I, 1, 100) #declare T = concat(S, S, S); #undef T #end\n", options);
     reads(s + "#macro M(A) #local L = concat(A, A); #end\n#for (I, 1, 100) M(S) #end\n", options);
-    CHECK(contains(error_of(s + "#macro M(A) #local L = concat(A, A, A, A, A, A); #end\nM(S)\n",
-                            options),
-                   "arrays and strings would hold more than 1.0 MiB"));
+    CHECK(contains(
+        error_of(s + "#macro M(A) #local L = concat(A, A, A, A, A, A); #end\nM(S)\n", options),
+        "arrays and strings would hold more than 1.0 MiB"));
 }
 
 TEST_CASE("include and macro depths stop at their limits", "[limits]") {
@@ -233,11 +238,11 @@ TEST_CASE("include and macro depths stop at their limits", "[limits]") {
     CHECK(contains(m, "--max-macro-depth"));
     // The report shows the first and last ten calls, not all of them.
     options.limits.macro_depth = 60;
-    const std::string report =
-        error_of("#macro R(N) R(N + 1) #end\nR(0)\n", options).formatted();
+    const std::string report = error_of("#macro R(N) R(N + 1) #end\nR(0)\n", options).formatted();
     CHECK(report.find("... 40 more places like these ...") != std::string::npos);
     std::size_t notes = 0;
-    for (auto at = report.find(": note:"); at != std::string::npos; at = report.find(": note:", at + 1))
+    for (auto at = report.find(": note:"); at != std::string::npos;
+         at = report.find(": note:", at + 1))
         ++notes;
     CHECK(notes == 20);
 }
@@ -248,7 +253,9 @@ TEST_CASE("running out of memory while reading is an error at the place", "[limi
     // In a child whose address space is capped at 1 GiB, so that the test
     // asks for no more than that whatever the machine.
     if (hexant::test::kAddressSanitizer) {
-        WARN("not run under AddressSanitizer: its shadow memory needs more address space than the cap");
+        WARN(
+            "not run under AddressSanitizer: its shadow memory needs more address space than the "
+            "cap");
         return;
     }
     const pid_t child = fork();
@@ -285,7 +292,8 @@ TEST_CASE("a transform built up in a loop costs the same at every turn, or stops
     // keep a short transform (each turn copied all of it before: quadratic).
     const std::string turtle =
         "#declare T = transform { translate 0 };\n"
-        "#for (I, 1, 20000) #declare T = transform { T translate <0.0001, 0, 0> rotate y * 0.01 }; #end\n"
+        "#for (I, 1, 20000) #declare T = transform { T translate <0.0001, 0, 0> rotate y * 0.01 }; "
+        "#end\n"
         "sphere { 0, 1 transform T }\n";
     ParseOptions options;
     const auto scene = hexant::language::parse_scene_text(turtle, "turtle.pov", options);

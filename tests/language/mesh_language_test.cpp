@@ -1,8 +1,8 @@
 // mesh { } and mesh2 { } as the language reads them (language/mesh_reading.*):
 // POV-Ray 3.7's rules for sections, indices and normals, and the refusals.
-#include <catch2/catch.hpp>
-
 #include <string>
+
+#include <catch2/catch.hpp>
 
 #include "language/interpreter.hpp"
 #include "runtime/objects/shapes.hpp"
@@ -56,14 +56,16 @@ TEST_CASE("mesh2 reads its sections by POV-Ray's rules", "[language][mesh]") {
 }
 
 TEST_CASE("a mesh's refusals name what is wrong", "[language][mesh]") {
-    CHECK(says("mesh { sphere { 0, 1 } }", "a mesh holds triangles and smooth_triangles, not a sphere"));
+    CHECK(says("mesh { sphere { 0, 1 } }",
+               "a mesh holds triangles and smooth_triangles, not a sphere"));
     CHECK(says("mesh { triangle { 0, x, y translate x } }", "cannot be transformed"));
     CHECK(says("mesh { }", "mesh has no triangles"));
     CHECK(says(std::string("mesh2 { ") + kQuad + "face_indices { 1, <0, 1, 5> } }",
                "face 0's vertex index 5 is beyond the 4 vertex_vectors"));
     CHECK(says("mesh2 { vertex_vectors { 3, <0,0,0>, <1,0,0>, <1,1,0>, <0,1,0> } }",
                "vertex_vectors says it has 3 but lists 4"));
-    CHECK(says(std::string("mesh2 { ") + kQuad + "normal_vectors { 2, y, y } face_indices { 1, <0, 1, 2> } }",
+    CHECK(says(std::string("mesh2 { ") + kQuad +
+                   "normal_vectors { 2, y, y } face_indices { 1, <0, 1, 2> } }",
                "no normal_indices section"));
     CHECK(says(std::string("mesh2 { ") + kQuad + "normal_indices { 1, <0, 1, 2> } }",
                "normal_indices must come after face_indices"));

@@ -1,9 +1,10 @@
 // Deep nesting is an error at its place, never a crash (issue 17): scenes a
 // generator could write, each far deeper than the reader's stack allows,
 // and the same constructs at depths real scenes use, which still read.
-#include <catch2/catch.hpp>
 #include <sstream>
 #include <string>
+
+#include <catch2/catch.hpp>
 
 #include "language/interpreter.hpp"
 #include "runtime/objects/object.hpp"
@@ -44,10 +45,9 @@ struct Deep {
 
 TEST_CASE("nesting beyond the reader's stack is an error, not a crash", "[language][nesting]") {
     const Deep cases[] = {
-        {"parentheses", "#declare X = ", "1", ";"}, {"vectors", "#declare V = ", "1", ";"},
-        {"unary minus", "#declare X = ", "1", ";"},
-        {"#if", "", "sphere { 0, 1 }", ""},         {"skipped #while", "#if (0) ", "", " #end"},
-        {"unions", "", "sphere { 0, 1 }", ""},
+        {"parentheses", "#declare X = ", "1", ";"},  {"vectors", "#declare V = ", "1", ";"},
+        {"unary minus", "#declare X = ", "1", ";"},  {"#if", "", "sphere { 0, 1 }", ""},
+        {"skipped #while", "#if (0) ", "", " #end"}, {"unions", "", "sphere { 0, 1 }", ""},
     };
     for (const Deep& d : cases) {
         const std::string what = d.what;

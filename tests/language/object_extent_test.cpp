@@ -3,9 +3,9 @@
 // appear and vanish with clock, POV-Ray's +-BOUND_HUGE / 2 for a plane, and
 // a clear error where the box would move continuously. The look against
 // POV-Ray 3.7 is the pov_reference test's (text/extent.pov).
-#include <catch2/catch.hpp>
-
 #include <string>
+
+#include <catch2/catch.hpp>
 
 #include "language/interpreter.hpp"
 #include "runtime/objects/shapes.hpp"
@@ -52,7 +52,8 @@ sphere { max_extent(R), 0.1 }
     CHECK(rhi.y == Approx(1.0).margin(1e-12));
 }
 
-TEST_CASE("the box of an object whose parts come and go with clock changes with them", "[language]") {
+TEST_CASE("the box of an object whose parts come and go with clock changes with them",
+          "[language]") {
     // A second ball exists only before clock 0.5: the union's upper corner
     // is the far ball's then, the near one's after.
     const auto scene = read(R"(
@@ -73,10 +74,12 @@ TEST_CASE("a plane's box is POV-Ray's huge one", "[language]") {
 }
 
 TEST_CASE("min_extent of a moving object or of no object is an error naming it", "[language]") {
-    CHECK_THAT(error_of("#declare M = sphere { 0, 1 translate x * clock }\n#declare V = min_extent(M);\n",
-                        animation())
-                   .formatted(),
-               Catch::Contains("min_extent()") && Catch::Contains("move with clock") && Catch::Contains("test.pov:2"));
+    CHECK_THAT(
+        error_of("#declare M = sphere { 0, 1 translate x * clock }\n#declare V = min_extent(M);\n",
+                 animation())
+            .formatted(),
+        Catch::Contains("min_extent()") && Catch::Contains("move with clock") &&
+            Catch::Contains("test.pov:2"));
     CHECK_THAT(error_of("#declare V = max_extent(3);\n").formatted(),
                Catch::Contains("max_extent() takes one object"));
 }

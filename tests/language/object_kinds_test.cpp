@@ -1,10 +1,10 @@
 // The object kinds registered in runtime/objects/kinds.hpp, as the language
 // sees them: every kind's keyword, option words and settings come from the
 // registration alone.
-#include <catch2/catch.hpp>
-
 #include <string>
 #include <string_view>
+
+#include <catch2/catch.hpp>
 
 #include "language/grammar.hpp"
 #include "language/interpreter.hpp"
@@ -57,7 +57,8 @@ TEST_CASE("every registered kind is read by its keyword, names itself and is res
 
 TEST_CASE("a kind's option words and settings reach that kind only", "[language][object-kinds]") {
     using hexant::language::parse_scene_text;
-    const auto prism = parse_scene_text("prism { linear_sweep linear_spline 0, 1, 3, <0,0>, <1,0>, <0,1> open }", "t.pov", {});
+    const auto prism = parse_scene_text(
+        "prism { linear_sweep linear_spline 0, 1, 3, <0,0>, <1,0>, <0,1> open }", "t.pov", {});
     const auto& p = std::get<rt::Prism>(only_shape(prism));
     CHECK(p.open);
     CHECK(p.points.size() == 3);
@@ -69,7 +70,8 @@ TEST_CASE("a kind's option words and settings reach that kind only", "[language]
 
     // A setting of other kinds: the message names them.
     const auto e = error_of("sphere { 0, 1 open }");
-    CHECK(std::string(e.what()).find("'open' belongs to a cylinder, cone, prism or sor, not a sphere") !=
+    CHECK(std::string(e.what()).find(
+              "'open' belongs to a cylinder, cone, prism or sor, not a sphere") !=
           std::string::npos);
     // smooth is height_field's; double_illuminate (POV-Ray's word) any object's.
     const auto smooth = error_of("sphere { 0, 1 smooth }");
@@ -81,7 +83,11 @@ TEST_CASE("a kind's option words and settings reach that kind only", "[language]
     const auto o = error_of("sphere { linear_spline 0, 1 }");
     CHECK(std::string(o.what()).find("sphere takes no 'linear_spline'") != std::string::npos);
     // A variant the kind lacks is kept unevaluated: an error only where used.
-    hexant::test::reads("#declare P = prism { cubic_spline 0, 1, 6, <0,0>, <1,0>, <1,1>, <0,1>, <0,0>, <1,0> }");
-    const auto used = error_of("#declare P = prism { cubic_spline 0, 1, 6, <0,0>, <1,0>, <1,1>, <0,1>, <0,0>, <1,0> }\nobject { P }");
-    CHECK(std::string(used.what()).find("prism with linear_sweep and cubic_spline") != std::string::npos);
+    hexant::test::reads(
+        "#declare P = prism { cubic_spline 0, 1, 6, <0,0>, <1,0>, <1,1>, <0,1>, <0,0>, <1,0> }");
+    const auto used = error_of(
+        "#declare P = prism { cubic_spline 0, 1, 6, <0,0>, <1,0>, <1,1>, <0,1>, <0,0>, <1,0> "
+        "}\nobject { P }");
+    CHECK(std::string(used.what()).find("prism with linear_sweep and cubic_spline") !=
+          std::string::npos);
 }

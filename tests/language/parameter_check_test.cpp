@@ -1,9 +1,9 @@
 // Scene parameters the renderer cannot use are errors at their place, with
 // the instant when they depend on clock (runtime/objects/parameter_check.hpp), and
 // parameters that only look risky are not.
-#include <catch2/catch.hpp>
-
 #include <sstream>
+
+#include <catch2/catch.hpp>
 
 #include "language/interpreter.hpp"
 #include "scene_text.hpp"
@@ -48,8 +48,9 @@ TEST_CASE("NaN, infinite and singular transforms are errors", "[parameters]") {
     using Catch::Contains;
     CHECK_THAT(message_at("sphere { 0, 1 translate <1e300 * 1e300, 0, 0> }", 1, 1),
                Contains("the sphere's translate is infinite"));
-    CHECK_THAT(message_at("sphere { 0, 1 matrix <1, 0, 0, 0, sqrt(-1), 0, 0, 0, 1, 0, 0, 0> }", 1, 1),
-               Contains("the sphere's matrix is NaN"));
+    CHECK_THAT(
+        message_at("sphere { 0, 1 matrix <1, 0, 0, 0, sqrt(-1), 0, 0, 0, 1, 0, 0, 0> }", 1, 1),
+        Contains("the sphere's matrix is NaN"));
     CHECK_THAT(message_at("sphere { 0, 1 matrix <1, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0> }", 1, 1),
                Contains("transform is singular"));
     CHECK_THAT(message_at("sphere { 0, 1 scale 1e200 scale 1e200 }", 1, 1),
@@ -77,7 +78,8 @@ TEST_CASE("NaN and infinite colours, finishes and lights are errors", "[paramete
 TEST_CASE("a camera with no direction, or looking at its own location, is an error",
           "[parameters]") {
     using Catch::Contains;
-    CHECK_THAT(message_at("camera { direction 0 }", 1, 1), Contains("direction is the zero vector"));
+    CHECK_THAT(message_at("camera { direction 0 }", 1, 1),
+               Contains("direction is the zero vector"));
     CHECK_THAT(message_at("camera { location <1, 2, 3> look_at <1, 2, 3> }", 1, 1),
                Contains("look_at is its location"));
     CHECK_THAT(message_at("camera { location <0, 0, sqrt(-1)> }", 1, 1),

@@ -3,13 +3,13 @@
 // texture evaluator's Kind, and the language sets a kind's own settings by
 // their names. The defaults are POV-Ray 3.7's (Parse_Pattern, pigment.cpp),
 // as the registry held them before each kind had its file.
-#include <catch2/catch.hpp>
-
 #include <algorithm>
 #include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include <catch2/catch.hpp>
 
 #include "language/interpreter.hpp"
 #include "runtime/texture/pattern/kinds.hpp"
@@ -49,9 +49,12 @@ TEST_CASE("the grammar's pattern words are the registered kinds' keywords", "[pa
     }
     CHECK(pt::find_kind("no_such_pattern") == nullptr);
     // The kinds' own settings, each once.
-    for (const char* s : {"agate_turb", "brick_size", "control0", "control1", "form", "metric", "mortar", "offset"})
-        CHECK(std::binary_search(Words::settings.begin(), Words::settings.end(), std::string_view(s)));
-    CHECK(std::adjacent_find(Words::settings.begin(), Words::settings.end()) == Words::settings.end());
+    for (const char* s :
+         {"agate_turb", "brick_size", "control0", "control1", "form", "metric", "mortar", "offset"})
+        CHECK(std::binary_search(Words::settings.begin(), Words::settings.end(),
+                                 std::string_view(s)));
+    CHECK(std::adjacent_find(Words::settings.begin(), Words::settings.end()) ==
+          Words::settings.end());
 }
 
 TEST_CASE("each kind's file gives POV-Ray's defaults", "[pattern][registry]") {
@@ -85,7 +88,8 @@ TEST_CASE("each kind's file gives POV-Ray's defaults", "[pattern][registry]") {
     CHECK(pt::find_kind("spotted")->single_numbers);
 }
 
-TEST_CASE("a kind's settings are set by name and refused on another kind", "[language][pattern][registry]") {
+TEST_CASE("a kind's settings are set by name and refused on another kind",
+          "[language][pattern][registry]") {
     const auto scene = read(R"(
 sphere { 0, 1 pigment { brick mortar 0.1 + 0.2 * clock brick_size <1, 2, 3> } }
 sphere { 0, 1 pigment { crackle metric 1 offset 0.25 form <1, 0, 0> } }
@@ -110,9 +114,12 @@ sphere { 0, 1 pigment { agate agate_turb 0.5 } }
         INFO(message);
         return message.find(what) != std::string::npos;
     };
-    CHECK(says("sphere { 0, 1 pigment { bozo mortar 0.2 } }", "mortar belongs to brick, not to bozo"));
-    CHECK(says("sphere { 0, 1 pigment { rgb 1 metric 2 } }", "metric belongs to crackle, not to a plain colour"));
-    CHECK(says("sphere { 0, 1 pigment { brick form <1, 0, 0> } }", "form belongs to crackle, not to brick"));
+    CHECK(says("sphere { 0, 1 pigment { bozo mortar 0.2 } }",
+               "mortar belongs to brick, not to bozo"));
+    CHECK(says("sphere { 0, 1 pigment { rgb 1 metric 2 } }",
+               "metric belongs to crackle, not to a plain colour"));
+    CHECK(says("sphere { 0, 1 pigment { brick form <1, 0, 0> } }",
+               "form belongs to crackle, not to brick"));
 }
 
 TEST_CASE("square paves the x-z plane with POV-Ray's four colours", "[pattern][registry]") {
@@ -120,7 +127,9 @@ TEST_CASE("square paves the x-z plane with POV-Ray's four colours", "[pattern][r
     // square's centre (tests/tracer/pov_reference/README.md, "Patterns").
     const pt::Kind& square = *pt::find_kind("square");
     const pt::Values v;
-    const auto at = [&](double x, double y, double z) { return square.value(glm::dvec3(x, y, z), v); };
+    const auto at = [&](double x, double y, double z) {
+        return square.value(glm::dvec3(x, y, z), v);
+    };
     CHECK(at(0.5, 0.0, 0.5) == 0.0);
     CHECK(at(0.5, 0.0, 1.5) == 1.0);
     CHECK(at(1.5, 0.0, 1.5) == 2.0);
@@ -139,6 +148,8 @@ TEST_CASE("square paves the x-z plane with POV-Ray's four colours", "[pattern][r
     CHECK_FALSE(square.frequency);
     REQUIRE(square.default_map.size() == 4);
     CHECK(square.default_map[3].colour == std::array<double, 5>{1, 1, 0, 0, 0});
-    CHECK(hexant::test::error_of("sphere { 0, 1 pigment { square rgb 1, rgb 0, rgb 1, rgb 0, rgb 1 } }")
-              .what() == std::string("test.pov:1:25: square takes at most 4 colours, not 5 values"));
+    CHECK(hexant::test::error_of(
+              "sphere { 0, 1 pigment { square rgb 1, rgb 0, rgb 1, rgb 0, rgb 1 } }")
+              .what() ==
+          std::string("test.pov:1:25: square takes at most 4 colours, not 5 values"));
 }

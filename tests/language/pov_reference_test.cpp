@@ -2,13 +2,13 @@
 // pov_reference/ #debugs values, and NAME.expected holds what povray printed
 // (commands in pov_reference/README.md). hexant must print the same names and
 // the same numbers.
-#include <catch2/catch.hpp>
-
 #include <cmath>
 #include <fstream>
 #include <regex>
 #include <set>
 #include <sstream>
+
+#include <catch2/catch.hpp>
 
 #include "language/interpreter.hpp"
 

@@ -2,10 +2,11 @@
 // that it reads. Its #debug and #warning output is kept out of the test's.
 #pragma once
 
-#include <catch2/catch.hpp>
 #include <optional>
 #include <sstream>
 #include <string>
+
+#include <catch2/catch.hpp>
 
 #include "language/interpreter.hpp"
 

@@ -6,9 +6,9 @@
 // what POV-Ray refuses, a pattern hexant lacks in a normal is an error when
 // the scene is checked, and global_settings { noise_generator } reaches
 // the patterns after it.
-#include <catch2/catch.hpp>
-
 #include <string>
+
+#include <catch2/catch.hpp>
 
 #include "language/interpreter.hpp"
 #include "runtime/texture/texture_evaluator.hpp"
@@ -67,8 +67,10 @@ TEST_CASE("layered textures keep every layer, the last written on top", "[langua
     // The object's transform after its textures moves every layer; a
     // declared layered texture brings all its layers.
     const auto scene = read(
-        "#declare T = texture { pigment { rgb <0, 1, 0> } } texture { pigment { rgbt <0, 0, 1, 0.5> } }\n"
-        "sphere { 0, 1 texture { pigment { rgb 1 } } texture { pigment { rgbt <1, 0, 0, 0.5> } } translate x }\n"
+        "#declare T = texture { pigment { rgb <0, 1, 0> } } texture { pigment { rgbt <0, 0, 1, "
+        "0.5> } }\n"
+        "sphere { 0, 1 texture { pigment { rgb 1 } } texture { pigment { rgbt <1, 0, 0, 0.5> } } "
+        "translate x }\n"
         "sphere { 0, 1 texture { T } texture { pigment { rgbf <1, 1, 0, 0.2> } } }\n"
         "sphere { 0, 1 material { texture { pigment { rgb 1 } } texture { T } } }\n");
     const rt::Texture& a = texture_of(scene, 0);
@@ -88,15 +90,19 @@ TEST_CASE("layered textures keep every layer, the last written on top", "[langua
     CHECK(c.below[1].pigment.colours[0].c[0].constant() == 1.0);
 }
 
-TEST_CASE("texture_map, normal_map, slope_map and block lists read as POV-Ray reads them", "[language][pattern]") {
+TEST_CASE("texture_map, normal_map, slope_map and block lists read as POV-Ray reads them",
+          "[language][pattern]") {
     const auto scene = read(
         "#declare R = texture { pigment { rgb 1 } normal { bumps } }\n"
-        "sphere { 0, 1 texture { gradient y texture_map { [0.2 R] [0.8 pigment { rgb 0 } finish { phong 1 }] }"
+        "sphere { 0, 1 texture { gradient y texture_map { [0.2 R] [0.8 pigment { rgb 0 } finish { "
+        "phong 1 }] }"
         " phase clock scale 2 } }\n"
-        "sphere { 0, 1 texture { checker texture { pigment { rgb 1 } }, texture { R } scale 0.5 } }\n"
+        "sphere { 0, 1 texture { checker texture { pigment { rgb 1 } }, texture { R } scale 0.5 } "
+        "}\n"
         "sphere { 0, 1 normal { marble normal_map { [0 dents 0.3] [1 ripples scale 2] } }"
         " normal { marble normal_map { [0 dents 0.3] [1 ripples scale 2] } } }\n"
-        "sphere { 0, 1 normal { granite 0.6 slope_map { [0 <0, 1>] [0.5, <1, 0>] [1 <0, -1>] } } }\n"
+        "sphere { 0, 1 normal { granite 0.6 slope_map { [0 <0, 1>] [0.5, <1, 0>] [1 <0, -1>] } } "
+        "}\n"
         "sphere { 0, 1 normal { hexagon normal { bumps } normal { dents } normal { waves } } }\n");
     const rt::Texture& a = texture_of(scene, 0);
     REQUIRE(a.is_patterned());
@@ -122,13 +128,15 @@ TEST_CASE("texture_map, normal_map, slope_map and block lists read as POV-Ray re
     CHECK(texture_of(scene, 4).normal->normal_map.size() == 3);
 }
 
-TEST_CASE("an image_map whose file changes with clock is an image sequence", "[language][pattern][image]") {
+TEST_CASE("an image_map whose file changes with clock is an image sequence",
+          "[language][pattern][image]") {
     // A branch on clock sets the file's name: one image before clock 0.5,
     // another after (an image sequence, as str(frame_number) names one).
     hexant::language::ParseOptions options = hexant::test::animation();
     std::ostringstream messages;
     options.messages = &messages;
-    options.include_paths = {std::string(HEXANT_SOURCE_DIR) + "/tests/tracer/pov_reference/textures"};
+    options.include_paths = {std::string(HEXANT_SOURCE_DIR) +
+                             "/tests/tracer/pov_reference/textures"};
     const auto scene = hexant::language::parse_scene_text(
         "#declare F = \"tiles.png\";\n#if (clock > 0.5) #declare F = \"gamma18.png\"; #end\n"
         "sphere { 0, 1 pigment { image_map { png F } } }\n",
@@ -143,14 +151,16 @@ TEST_CASE("an image_map whose file changes with clock is an image sequence", "[l
     CHECK(map.file.find("tiles.png") != std::string::npos);
 }
 
-TEST_CASE("a declared chain of maps sharing their entries costs its length, not 2^length", "[language][pattern]") {
+TEST_CASE("a declared chain of maps sharing their entries costs its length, not 2^length",
+          "[language][pattern]") {
     // T(k) a checker of T(k-1) and T(k-1) scaled: 60 levels are 2^60 paths
     // as a tree. Reading, checking, compiling and asking whether it moves
     // visit each declared texture once (a tree walk would not finish).
     std::string text = "#declare T0 = texture { pigment { rgb <1, 0, 0> } normal { bumps } }\n";
     for (int k = 1; k <= 60; ++k)
-        text += "#declare T" + std::to_string(k) + " = texture { checker texture { T" + std::to_string(k - 1) +
-                " } texture { T" + std::to_string(k - 1) + " scale 1.01 } }\n";
+        text += "#declare T" + std::to_string(k) + " = texture { checker texture { T" +
+                std::to_string(k - 1) + " } texture { T" + std::to_string(k - 1) +
+                " scale 1.01 } }\n";
     text += "sphere { 0, 1 texture { T60 } }\n";
     const auto scene = read(text);
     const rt::Texture& t = texture_of(scene, 0);
@@ -162,7 +172,8 @@ TEST_CASE("a declared chain of maps sharing their entries costs its length, not 
     CHECK(sample.layers.front().material.colour.x == 1.0);
 }
 
-TEST_CASE("what POV-Ray refuses in textures is an error where it is written", "[language][pattern]") {
+TEST_CASE("what POV-Ray refuses in textures is an error where it is written",
+          "[language][pattern]") {
     const auto error = [](const std::string& text, const char* words,
                           hexant::language::ParseOptions options = {}) {
         const auto e = error_of(text, options);
@@ -171,37 +182,53 @@ TEST_CASE("what POV-Ray refuses in textures is an error where it is written", "[
         CHECK(e.formatted().find(words) != std::string::npos);
     };
     const std::string map = "texture_map { [0 pigment { rgb 0 }] [1 pigment { rgb 1 }] }";
-    error("sphere { 0, 1 texture { gradient x " + map + " } texture { pigment { rgb 1 } } }\n", "layered over a patterned");
-    error("sphere { 0, 1 texture { pigment { rgb 1 } } texture { gradient x " + map + " } }\n", "cannot be layered");
+    error("sphere { 0, 1 texture { gradient x " + map + " } texture { pigment { rgb 1 } } }\n",
+          "layered over a patterned");
+    error("sphere { 0, 1 texture { pigment { rgb 1 } } texture { gradient x " + map + " } }\n",
+          "cannot be layered");
     error("sphere { 0, 1 texture { gradient x } }\n", "needs a texture_map");
-    error("sphere { 0, 1 texture { checker texture { pigment { rgb 1 } } } }\n", "needs 2 textures");
+    error("sphere { 0, 1 texture { checker texture { pigment { rgb 1 } } } }\n",
+          "needs 2 textures");
     error("sphere { 0, 1 texture { checker " + map + " } }\n", "cannot go with checker");
-    error("sphere { 0, 1 texture { pigment { rgb 1 } texture { pigment { rgb 0 } } } }\n", "block pattern");
+    error("sphere { 0, 1 texture { pigment { rgb 1 } texture { pigment { rgb 0 } } } }\n",
+          "block pattern");
     error("sphere { 0, 1 texture { turbulence 0.5 } }\n", "follows a pattern");
-    error("sphere { 0, 1 texture { gradient x " + map + " } pigment { rgb 1 } }\n", "patterned texture");
-    error("sphere { 0, 1 normal { checker normal_map { [0 bumps] } } }\n", "cannot go with checker");
+    error("sphere { 0, 1 texture { gradient x " + map + " } pigment { rgb 1 } }\n",
+          "patterned texture");
+    error("sphere { 0, 1 normal { checker normal_map { [0 bumps] } } }\n",
+          "cannot go with checker");
     error("sphere { 0, 1 normal { gradient x slope_map { [0 1 2 3] } } }\n", "slope_map");
     // image_map: a file that is missing or outside what a scene may read,
     // a type hexant does not read, a palette entry's filter, a map type
     // POV-Ray does not have.
-    error("sphere { 0, 1 pigment { image_map { png \"no_such_image.png\" } } }\n", "image file 'no_such_image.png' not found");
-    error("sphere { 0, 1 pigment { image_map { png \"/etc/hostname\" } } }\n", "outside the folders");
-    error("sphere { 0, 1 pigment { image_map { jpeg \"x.jpg\" } } }\n", "jpeg images are not supported");
+    error("sphere { 0, 1 pigment { image_map { png \"no_such_image.png\" } } }\n",
+          "image file 'no_such_image.png' not found");
+    error("sphere { 0, 1 pigment { image_map { png \"/etc/hostname\" } } }\n",
+          "outside the folders");
+    error("sphere { 0, 1 pigment { image_map { jpeg \"x.jpg\" } } }\n",
+          "jpeg images are not supported");
     hexant::language::ParseOptions with_tiles;  // (tiles.png found on the include path)
-    with_tiles.include_paths = {std::string(HEXANT_SOURCE_DIR) + "/tests/tracer/pov_reference/textures"};
-    error("sphere { 0, 1 pigment { image_map { png \"tiles.png\" filter 3, 0.5 } } }\n", "palette entry", with_tiles);
-    error("sphere { 0, 1 pigment { image_map { png \"tiles.png\" map_type 3 } } }\n", "map_type is", with_tiles);
-    error("sphere { 0, 1 pigment { image_map { \"tiles.png\" interpolate 1 } } }\n", "interpolate is", with_tiles);
-    hexant::test::reads("sphere { 0, 1 pigment { image_map { \"tiles.png\" gamma srgb once } } }\n", with_tiles);
+    with_tiles.include_paths = {std::string(HEXANT_SOURCE_DIR) +
+                                "/tests/tracer/pov_reference/textures"};
+    error("sphere { 0, 1 pigment { image_map { png \"tiles.png\" filter 3, 0.5 } } }\n",
+          "palette entry", with_tiles);
+    error("sphere { 0, 1 pigment { image_map { png \"tiles.png\" map_type 3 } } }\n", "map_type is",
+          with_tiles);
+    error("sphere { 0, 1 pigment { image_map { \"tiles.png\" interpolate 1 } } }\n",
+          "interpolate is", with_tiles);
+    hexant::test::reads("sphere { 0, 1 pigment { image_map { \"tiles.png\" gamma srgb once } } }\n",
+                        with_tiles);
     // A normal pattern hexant lacks: at check, not only at render; in a
     // normal_map's entry too.
     error("sphere { 0, 1 normal { facets } }\n", "facets");
     error("sphere { 0, 1 normal { gradient x normal_map { [0 facets] [1 bumps] } } }\n", "facets");
 }
 
-TEST_CASE("global_settings { noise_generator } reaches the patterns after it", "[language][pattern]") {
-    const auto scene = read("global_settings { noise_generator 3 }\nsphere { 0, 1 pigment { bozo } }\n"
-                            "sphere { 0, 1 pigment { bozo noise_generator 1 } }\n");
+TEST_CASE("global_settings { noise_generator } reaches the patterns after it",
+          "[language][pattern]") {
+    const auto scene = read(
+        "global_settings { noise_generator 3 }\nsphere { 0, 1 pigment { bozo } }\n"
+        "sphere { 0, 1 pigment { bozo noise_generator 1 } }\n");
     CHECK(texture_of(scene, 0).pigment.patterned.noise_generator == 3);
     CHECK(texture_of(scene, 1).pigment.patterned.noise_generator == 1);
 }

@@ -3,10 +3,10 @@
 // side live only then, switching between two neighbouring doubles where
 // the condition's point value changes; variables set on the sides become
 // piecewise in time; what cannot yet be piecewise is an error at its place.
-#include <catch2/catch.hpp>
-
 #include <cmath>
 #include <string>
+
+#include <catch2/catch.hpp>
 
 #include "language/interpreter.hpp"
 #include "runtime/time/interval.hpp"
@@ -25,7 +25,9 @@ SceneDescription read(const std::string& text, ParseOptions options = animation(
     return hexant::language::parse_scene_text(text, "test.pov", options);
 }
 
-double before(double t) { return rt::interval_detail::next_down(t); }
+double before(double t) {
+    return rt::interval_detail::next_down(t);
+}
 
 const rt::Sphere& sphere(const SceneDescription& scene, std::size_t i) {
     return std::get<rt::Sphere>(scene.objects.at(i)->shape);
@@ -158,7 +160,8 @@ TEST_CASE("a switch on a vector's length: vlength(C) != 0", "[language][time]") 
     CHECK(scene.time_splits[0].instants.size() == 2);
 }
 
-TEST_CASE("a static scene and one without clock in its conditions split nothing", "[language][time]") {
+TEST_CASE("a static scene and one without clock in its conditions split nothing",
+          "[language][time]") {
     const auto scene = read(R"(
 #declare A = clock;
 #if (1 > 0) sphere { <A, 0, 0>, 1 } #end
@@ -176,22 +179,26 @@ TEST_CASE("what cannot yet be piecewise in time is an error at the branch", "[la
 #else
   #declare S = spline { linear_spline 0, <0, 0, 0>, 1, <2, 1, 1> }
 #end
-)", animation());
+)",
+                            animation());
     CHECK(e.formatted().find("test.pov:2:5") != std::string::npos);
     CHECK(e.formatted().find("piecewise") != std::string::npos);
     // The object's own texture replaced under a branch inside its block
     // (it was kept from before the branch, silently, when the block had
     // one already): refused at the branch.
-    const auto own = error_of("sphere { 0, 1 pigment { rgb 1 } #if (clock > 0.5) pigment { rgb 0 } #end }\n",
-                              animation());
+    const auto own =
+        error_of("sphere { 0, 1 pigment { rgb 1 } #if (clock > 0.5) pigment { rgb 0 } #end }\n",
+                 animation());
     CHECK(own.formatted().find("test.pov:1:37") != std::string::npos);
     // A texture set differently on the two sides.
     const auto texture = error_of(
-        "#if (clock > 0.5) #declare T = pigment { rgb 1 }; #else #declare T = pigment { rgb 0 }; #end\n",
+        "#if (clock > 0.5) #declare T = pigment { rgb 1 }; #else #declare T = pigment { rgb 0 }; "
+        "#end\n",
         animation());
     CHECK(texture.formatted().find("test.pov:1:5") != std::string::npos);
     // A condition that flickers without end stops at the limit, at its place.
-    const auto flicker = error_of("#if (sin(1 / (clock - 0.5)) > 0) sphere { 0, 1 } #end\n", animation());
+    const auto flicker =
+        error_of("#if (sin(1 / (clock - 0.5)) > 0) sphere { 0, 1 } #end\n", animation());
     CHECK(flicker.formatted().find("test.pov:1:5") != std::string::npos);
 }
 
@@ -207,7 +214,8 @@ union {
   #if (Count > 9) sphere { 0, 1 } #end
   box { 0, 1 }
 }
-)", options);
+)",
+                                options);
         INFO(frames << " frames");
         REQUIRE(scene.time_splits.size() == 1);
         REQUIRE(scene.time_splits[0].instants.size() == 1);
@@ -224,7 +232,8 @@ union {
         for (int k = 1; k <= frames; ++k) {
             const double t = frame.animation.clock_of_frame(k);
             CHECK(sphere(frame, 0).radius(t) == k);
-            if (k < frames) CHECK(sphere(frame, 0).radius(before(frame.animation.clock_of_frame(k + 1))) == k);
+            if (k < frames)
+                CHECK(sphere(frame, 0).radius(before(frame.animation.clock_of_frame(k + 1))) == k);
         }
     }
 }
@@ -336,7 +345,8 @@ camera { location <0, 0, -9> look_at 0 }
     CHECK(scene.background(0.75)[0] == 1.0);
 }
 
-TEST_CASE("#for to a clock-dependent end, in a macro, with an #if on clock inside", "[language][time]") {
+TEST_CASE("#for to a clock-dependent end, in a macro, with an #if on clock inside",
+          "[language][time]") {
     const auto scene = read(R"(
 #macro Row(N)
   #for (I, 1, N)
@@ -391,19 +401,22 @@ object { Shapes[min(clock * 2, 1)] }
     CHECK(alive(before(0.5)) == "sphere");
     CHECK(alive(0.5) == "box");
     // Out of range at some clock: an error at its place.
-    const auto e = error_of("#declare A = array[2] { 1, 2 }\nsphere { 0, A[clock * 4] }\n", animation());
+    const auto e =
+        error_of("#declare A = array[2] { 1, 2 }\nsphere { 0, A[clock * 4] }\n", animation());
     CHECK(e.formatted().find("test.pov:2:") != std::string::npos);
 }
 
 TEST_CASE("a name declared on one side only is declared only on its pieces", "[language][time]") {
     // Used where it is not declared: the error POV-Ray gives at that clock,
     // naming it.
-    const auto e = error_of("#if (clock > 0.5) #declare V = <1, 2, 3>; #end\nsphere { V, 1 }\n", animation());
+    const auto e =
+        error_of("#if (clock > 0.5) #declare V = <1, 2, 3>; #end\nsphere { V, 1 }\n", animation());
     CHECK(e.formatted().find("test.pov:2:10") != std::string::npos);
     CHECK(e.formatted().find("not declared at clock 0") != std::string::npos);
     // Used only where it is: fine.
-    hexant::test::reads("#if (clock > 0.5) #declare V = 2; #end\n#if (clock > 0.6) sphere { 0, V } #end\n",
-                        animation());
+    hexant::test::reads(
+        "#if (clock > 0.5) #declare V = 2; #end\n#if (clock > 0.6) sphere { 0, V } #end\n",
+        animation());
     // #ifdef, #ifndef and defined() split on where it is declared; #undef on
     // one side undeclares it there only.
     const auto scene = read(R"(
@@ -460,7 +473,8 @@ Posts(4)
     // The sphere of post 0 starts exactly where sin(2 pi clock) > 0.5 does.
     bool found = false;
     for (const auto& object : scene.objects)
-        if (std::string(rt::shape_name(object->shape)) == "sphere" && object->lifetime.contains(0.2)) {
+        if (std::string(rt::shape_name(object->shape)) == "sphere" &&
+            object->lifetime.contains(0.2)) {
             const double start = object->lifetime.pieces().front().lo;
             CHECK(std::fabs(start - a) < 1e-15);
             CHECK(std::sin(2 * M_PI * start) > 0.5);

@@ -4,13 +4,13 @@
 // the integer part) changes; a branch on clock that sets two strings makes
 // one piecewise string; #include of such a name reads each file for the
 // time its name holds.
-#include <catch2/catch.hpp>
-
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+
+#include <catch2/catch.hpp>
 
 #include "language/builtins.hpp"
 #include "language/interpreter.hpp"
@@ -40,8 +40,12 @@ SceneDescription read(const std::string& text, std::ostringstream* messages = nu
     return hexant::language::parse_scene_text(text, "test.pov", options);
 }
 
-double before(double t) { return rt::interval_detail::next_down(t); }
-double after(double t) { return rt::interval_detail::next_up(t); }
+double before(double t) {
+    return rt::interval_detail::next_down(t);
+}
+double after(double t) {
+    return rt::interval_detail::next_up(t);
+}
 
 }  // namespace
 
@@ -81,7 +85,8 @@ TEST_CASE("str(frame_number), chr() and val() give each frame's value", "[langua
     REQUIRE(scene.objects.size() == 3);
     // Frame 3 holds its clock up to frame 4's (the shutter of frame n opens
     // at its clock, about (n - 1)/7, and lasts to the next).
-    const double start3 = scene.animation.clock_of_frame(3), start4 = scene.animation.clock_of_frame(4),
+    const double start3 = scene.animation.clock_of_frame(3),
+                 start4 = scene.animation.clock_of_frame(4),
                  start5 = scene.animation.clock_of_frame(5);
     const rt::Lifetime& three = scene.objects[0]->lifetime;
     CHECK(three.contains(start3));
@@ -97,7 +102,8 @@ TEST_CASE("str(frame_number), chr() and val() give each frame's value", "[langua
     CHECK(scene.objects[2]->lifetime.contains(1.0));
 }
 
-TEST_CASE("a branch on clock that sets two strings makes one piecewise string", "[language][time]") {
+TEST_CASE("a branch on clock that sets two strings makes one piecewise string",
+          "[language][time]") {
     std::ostringstream messages;
     const auto scene = read(R"(
 #if (clock < 0.5) #declare T = "early"; #else #declare T = "late"; #end
@@ -106,7 +112,8 @@ TEST_CASE("a branch on clock that sets two strings makes one piecewise string", 
 #if (strcmp(U, "LATE") = 0) sphere { 0, 1 } #end
 #if (clock < 0.5) #declare Same = "x"; #else #declare Same = "x"; #end
 #if (strcmp(Same, "x") != 0) box { 0, 1 } #end
-)", &messages);
+)",
+                            &messages);
     REQUIRE(scene.objects.size() == 1);
     CHECK(scene.objects[0]->lifetime.contains(0.5));
     CHECK_FALSE(scene.objects[0]->lifetime.contains(before(0.5)));
@@ -125,8 +132,9 @@ TEST_CASE("#include of a name on clock reads each file for its time", "[language
     for (int i = 1; i <= 8; ++i)
         std::ofstream(root / ("f" + std::to_string(i) + ".inc"))
             << "sphere { <" << i << ", 0, 0>, 0.3 } #declare Last = " << i << ";\n";
-    std::ofstream(root / "main.pov") << "#include concat(\"f\", str(frame_number, 0, 0), \".inc\")\n"
-                                        "sphere { <Last, 1, 0>, 0.1 }\n";
+    std::ofstream(root / "main.pov")
+        << "#include concat(\"f\", str(frame_number, 0, 0), \".inc\")\n"
+           "sphere { <Last, 1, 0>, 0.1 }\n";
     ParseOptions options = animation();
     std::ostringstream messages;
     options.messages = &messages;
@@ -164,7 +172,8 @@ TEST_CASE("strings on clock: the piece limit and where one string is needed", "[
     CHECK(font.formatted().find("test.pov:1:") != std::string::npos);
 }
 
-TEST_CASE("frame_number of a clock that runs backwards, and the last shutter closing", "[language][time]") {
+TEST_CASE("frame_number of a clock that runs backwards, and the last shutter closing",
+          "[language][time]") {
     ParseOptions options = animation();
     options.animation.final_frame = 3;
     options.animation.initial_clock = 2.0;
@@ -185,14 +194,17 @@ TEST_CASE("frame_number of a clock that runs backwards, and the last shutter clo
     CHECK(messages.str().find("] 7") != std::string::npos);
 }
 
-TEST_CASE("str() with a negative precision and strcmp() as POV-Ray gives them", "[language][time]") {
+TEST_CASE("str() with a negative precision and strcmp() as POV-Ray gives them",
+          "[language][time]") {
     std::ostringstream messages;
-    read("#debug concat(str(1/3, 0, -2), \"|\", str(2, 5, -1), \"|\", str(strcmp(\"a\", \"c\"), 0, 0), \"|\",\n"
-         "             str(strcmp(\"abc\", \"ab\"), 0, 0), \"|\", str(strcmp(\"ab\", \"ab\"), 0, 0), \"\\n\")\n",
-         &messages);
+    read(
+        "#debug concat(str(1/3, 0, -2), \"|\", str(2, 5, -1), \"|\", str(strcmp(\"a\", \"c\"), 0, "
+        "0), \"|\",\n"
+        "             str(strcmp(\"abc\", \"ab\"), 0, 0), \"|\", str(strcmp(\"ab\", \"ab\"), 0, "
+        "0), \"\\n\")\n",
+        &messages);
     // POV-Ray's Parse_Str prints "%f" (six places) for any negative
     // precision; UCS2_strcmp gives the difference of the first characters
     // that differ.
     CHECK(messages.str() == "0.333333|2.000000|-2|99|0\n");
 }
-

@@ -12,11 +12,12 @@
 // ground) and 11 (a floor of one triangle, smooth triangle or polygon whose
 // vertices lie Half from the origin), at the radii and halves the issue
 // names: 10 to 1e8.
-#include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
+
+#include <catch2/catch.hpp>
 
 #include "language/interpreter.hpp"
 #include "tracer/renderer.hpp"
@@ -128,9 +129,11 @@ TEST_CASE("a floor of huge triangles does not shadow itself", "[robust]") {
         };
         for (const std::string& floor : floors) {
             INFO("Half = " << half << ": " << floor.substr(0, floor.find(' ')));
-            check_no_self_shadow("camera { location <0, 2.2, -6> look_at <0, 0.3, 0> angle 45 }\n"
-                                 "LIGHT\n"
-                                 "background { rgb <0.3, 0.4, 0.6> }\n" + floor + "\n");
+            check_no_self_shadow(
+                "camera { location <0, 2.2, -6> look_at <0, 0.3, 0> angle 45 }\n"
+                "LIGHT\n"
+                "background { rgb <0.3, 0.4, 0.6> }\n" +
+                floor + "\n");
         }
     }
 }
@@ -168,10 +171,12 @@ TEST_CASE("the modes agree on a moving floor of huge triangles", "[robust]") {
         const std::string sdl =
             "camera { location <0, 2.2, -6> look_at <0, 0.3, 0> angle 45 }\n"
             "light_source { <-4, 7, -5>, rgb 1 }\n"
-            "triangle { <-" + h + ", 0, -" + h + ">, <" + h + ", 0, -" + h + ">, <" + h + ", 0, " + h +
-            ">" + move + " pigment { rgb 0.8 } }\n"
-            "triangle { <-" + h + ", 0, -" + h + ">, <" + h + ", 0, " + h + ">, <-" + h + ", 0, " + h +
-            ">" + move + " pigment { rgb 0.7 } }\n"
+            "triangle { <-" +
+            h + ", 0, -" + h + ">, <" + h + ", 0, -" + h + ">, <" + h + ", 0, " + h + ">" + move +
+            " pigment { rgb 0.8 } }\n"
+            "triangle { <-" +
+            h + ", 0, -" + h + ">, <" + h + ", 0, " + h + ">, <-" + h + ", 0, " + h + ">" + move +
+            " pigment { rgb 0.7 } }\n"
             "sphere { <0, 0.5, 0>, 0.5 pigment { rgb <1, 0.4, 0.2> } }\n";
         const auto spacetime = render_all(sdl, tr::Mode::Spacetime, 4);
         const auto frames = render_all(sdl, tr::Mode::Frames, 4);
@@ -194,8 +199,10 @@ TEST_CASE("big grounds of every kind do not shadow themselves", "[robust]") {
             "cone { <-" + rs + ", -" + rs + ", 0>, " + rs + ", <" + rs + ", -" + rs + ", 0>, " + rs,
             "disc { 0, y, " + rs,
             "plane { y, 0 scale " + rs,
-            "torus { " + number(2 * r) + ", " + rs + " translate <0, -" + rs + ", " + number(2 * r) + ">",
-            "prism { -" + rs + ", 0, 4, <-" + rs + ", -" + rs + ">, <" + rs + ", -" + rs + ">, <0, " + rs + ">, <-" + rs + ", -" + rs + ">",
+            "torus { " + number(2 * r) + ", " + rs + " translate <0, -" + rs + ", " +
+                number(2 * r) + ">",
+            "prism { -" + rs + ", 0, 4, <-" + rs + ", -" + rs + ">, <" + rs + ", -" + rs +
+                ">, <0, " + rs + ">, <-" + rs + ", -" + rs + ">",
             // Deformed: the curved-path search (a slight twist keeps the top
             // flat enough to be lit everywhere).
             "box { -1, <1, 0, 1> twist y, 1 scale " + rs,
@@ -237,11 +244,14 @@ TEST_CASE("a checkered plane on a cell boundary renders alike at every world sca
             const std::string s = number(sc);
             return "camera { location <0, 2.5, -6> * " + s + " look_at <0, 0.3, 0> * " + s +
                    " angle 40 }\n"
-                   "light_source { <-5, 8, -6> * " + s + ", rgb 1 }\n"
-                   "plane { y, " + std::string(y) +
-                   " pigment { checker rgb 0.8, rgb 0.45 } scale " + s + " }\n"
-                   "sphere { 0, 0.5 pigment { rgb <1, 0.4, 0.2> } translate <0.3, " + std::string(y) +
-                   " + 0.5, 0> scale " + s + " }\n";
+                   "light_source { <-5, 8, -6> * " +
+                   s +
+                   ", rgb 1 }\n"
+                   "plane { y, " +
+                   std::string(y) + " pigment { checker rgb 0.8, rgb 0.45 } scale " + s +
+                   " }\n"
+                   "sphere { 0, 0.5 pigment { rgb <1, 0.4, 0.2> } translate <0.3, " +
+                   std::string(y) + " + 0.5, 0> scale " + s + " }\n";
         };
         const tr::Image unit = render(scene(1.0), tr::Mode::Spacetime);
         for (const double sc : {1e-6, 1e-3, 1e5, 3e5, 5e5, 1e6, 1e9}) {
@@ -259,8 +269,9 @@ TEST_CASE("a checkered plane on a cell boundary renders alike at every world sca
 // frames' instants (shutter closed): each frame shows the plain sphere
 // (a sphere mirrored in y is itself), in every mode.
 TEST_CASE("a scale through zero keeps the object at every instant", "[robust]") {
-    const std::string lights = "camera { location <0, 1, -5> look_at 0 }\n"
-                               "light_source { <-3, 5, -4>, rgb 1 }\n";
+    const std::string lights =
+        "camera { location <0, 1, -5> look_at 0 }\n"
+        "light_source { <-3, 5, -4>, rgb 1 }\n";
     const auto frames_of = [&](const std::string& object, tr::Mode mode) {
         hexant::language::ParseOptions options;
         options.animation.width = 48;
@@ -268,7 +279,8 @@ TEST_CASE("a scale through zero keeps the object at every instant", "[robust]") 
         options.animation.initial_frame = 1;
         options.animation.final_frame = 3;
         options.animation.shutter = 0.0;
-        const auto scene = hexant::language::parse_scene_text(lights + object, "robust.pov", options);
+        const auto scene =
+            hexant::language::parse_scene_text(lights + object, "robust.pov", options);
         tr::RenderSettings settings;
         settings.mode = mode;
         tr::Renderer renderer(scene, settings);
@@ -280,7 +292,8 @@ TEST_CASE("a scale through zero keeps the object at every instant", "[robust]") 
     for (const tr::Mode mode : {tr::Mode::Spacetime, tr::Mode::Frames, tr::Mode::Brute}) {
         const auto moving =
             frames_of("sphere { 0, 1 pigment { rgb 0.8 } scale <1, 2 * clock - 1, 1> }\n", mode);
-        const auto constant = frames_of("sphere { 0, 1 pigment { rgb 0.8 } scale <1, 0, 1> }\n", mode);
+        const auto constant =
+            frames_of("sphere { 0, 1 pigment { rgb 0.8 } scale <1, 0, 1> }\n", mode);
         for (int k = 0; k < 3; ++k) {
             INFO("frame " << k + 1 << ", mode " << int(mode));
             // Tolerance 1e-6: the mirrored sphere's normals and points are
@@ -302,18 +315,20 @@ TEST_CASE("a smooth triangle shades alike whichever way its normals point", "[ro
         const auto n = [&](const char* v) { return "<" + std::string(v) + "> * " + number(sign); };
         return "camera { location <0, 3, -4> look_at 0 }\n"
                "light_source { <-2, 6, -3>, rgb 1 }\n"
-               "smooth_triangle { <-2, 0, -1>, " + n("0.6, 1, 0") + ", <2, 0, -1>, " + n("-0.6, 1, 0") +
-               ", <0, 0, 2>, " + n("0, 1, -0.5") + " pigment { rgb 0.8 } finish { phong 0.5 } }\n";
+               "smooth_triangle { <-2, 0, -1>, " +
+               n("0.6, 1, 0") + ", <2, 0, -1>, " + n("-0.6, 1, 0") + ", <0, 0, 2>, " +
+               n("0, 1, -0.5") + " pigment { rgb 0.8 } finish { phong 0.5 } }\n";
     };
     const tr::Image up = render(scene(1.0), tr::Mode::Spacetime);
     const tr::Image down = render(scene(-1.0), tr::Mode::Spacetime);
     CHECK(differing(up, down, 1e-6) == 0);
     // The shading does follow the normals: a flat triangle differs.
-    const tr::Image flat = render("camera { location <0, 3, -4> look_at 0 }\n"
-                                  "light_source { <-2, 6, -3>, rgb 1 }\n"
-                                  "triangle { <-2, 0, -1>, <2, 0, -1>, <0, 0, 2> pigment { rgb 0.8 }"
-                                  " finish { phong 0.5 } }\n",
-                                  tr::Mode::Spacetime);
+    const tr::Image flat = render(
+        "camera { location <0, 3, -4> look_at 0 }\n"
+        "light_source { <-2, 6, -3>, rgb 1 }\n"
+        "triangle { <-2, 0, -1>, <2, 0, -1>, <0, 0, 2> pigment { rgb 0.8 }"
+        " finish { phong 0.5 } }\n",
+        tr::Mode::Spacetime);
     CHECK(differing(up, flat, 1e-3) > 100);
 }
 
@@ -327,18 +342,25 @@ TEST_CASE("a smooth triangle shades alike whichever way its normals point", "[ro
 TEST_CASE("a scene renders alike at every world scale in every mode", "[robust]") {
     const auto scene = [](double sc) {
         const std::string s = number(sc);
-        return "camera { location <1, 3, -7> * " + s + " look_at <0, 0.5, 0> * " + s + " angle 45 }\n"
-               "light_source { <-4, 8, -5> * " + s + ", rgb 1 }\n"
+        return "camera { location <1, 3, -7> * " + s + " look_at <0, 0.5, 0> * " + s +
+               " angle 45 }\n"
+               "light_source { <-4, 8, -5> * " +
+               s +
+               ", rgb 1 }\n"
                "#declare Objects = union {\n"
                "  plane { y, 0 pigment { checker rgb 0.8, rgb 0.45 } }\n"
-               "  sphere { <-1.5, 0.6, 0>, 0.6 pigment { rgb <1, 0.4, 0.2> } finish { phong 0.6 } }\n"
-               "  box { <-0.4, 0, -0.4>, <0.4, 0.8, 0.4> rotate y * 30 translate <0, 0, 1.2> pigment { rgb <0.3, 0.6, 1> } }\n"
+               "  sphere { <-1.5, 0.6, 0>, 0.6 pigment { rgb <1, 0.4, 0.2> } finish { phong 0.6 } "
+               "}\n"
+               "  box { <-0.4, 0, -0.4>, <0.4, 0.8, 0.4> rotate y * 30 translate <0, 0, 1.2> "
+               "pigment { rgb <0.3, 0.6, 1> } }\n"
                "  cylinder { <1.2, 0, 0>, <1.2, 1.2, 0>, 0.3 pigment { rgb <0.4, 0.9, 0.4> } }\n"
                "  torus { 0.5, 0.15 translate <0, 0.15, -1.2> pigment { rgb 0.9 } }\n"
                "  triangle { <2, 0, 1>, <3, 0, 1>, <2.5, 1.2, 1.5> pigment { rgb <1, 1, 0.3> } }\n"
-               "  sphere { 0, 0.3 translate <2 * clock - 1, 0.3, -2> pigment { rgb <0.9, 0.2, 0.9> } }\n"
+               "  sphere { 0, 0.3 translate <2 * clock - 1, 0.3, -2> pigment { rgb <0.9, 0.2, 0.9> "
+               "} }\n"
                "}\n"
-               "object { Objects scale " + s + " }\n";
+               "object { Objects scale " +
+               s + " }\n";
     };
     const auto unit = render_all(scene(1.0), tr::Mode::Spacetime, 2);
     for (const double sc : {1e-6, 1e-3, 1e3, 1e6, 1e9}) {

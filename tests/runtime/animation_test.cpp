@@ -23,9 +23,9 @@
 // POV-Ray carries the clock in single precision (0.3333333433) and
 // clock_delta through a 6-digit string (0.333333); hexant keeps doubles, so
 // the comparisons below allow 1e-6.
-#include <catch2/catch.hpp>
-
 #include "runtime/scene/animation.hpp"
+
+#include <catch2/catch.hpp>
 
 using hexant::runtime::Animation;
 

@@ -25,21 +25,22 @@
 // v = 0.5 - (j + 0.5) / 3, which is what the recorded directions are
 // compared with. Only directions are observable this way, so these tests fix
 // the camera up to a common scale of direction, right and up.
-#include <catch2/catch.hpp>
+#include "runtime/scene/camera.hpp"
 
 #include <cmath>
 #include <string>
 #include <vector>
 
+#include <catch2/catch.hpp>
 #include <glm/geometric.hpp>
-
-#include "runtime/scene/camera.hpp"
 
 using namespace hexant::runtime;
 
 namespace {
 
-Vector3Function vec(glm::dvec3 v) { return Vector3Function{{TimeFunction(v.x), TimeFunction(v.y), TimeFunction(v.z)}}; }
+Vector3Function vec(glm::dvec3 v) {
+    return Vector3Function{{TimeFunction(v.x), TimeFunction(v.y), TimeFunction(v.z)}};
+}
 
 CameraItem item(CameraItem::Kind kind, glm::dvec3 v) {
     CameraItem it;
@@ -47,12 +48,24 @@ CameraItem item(CameraItem::Kind kind, glm::dvec3 v) {
     it.vector = vec(v);
     return it;
 }
-CameraItem loc(glm::dvec3 v) { return item(CameraItem::Kind::Location, v); }
-CameraItem look(glm::dvec3 v) { return item(CameraItem::Kind::LookAt, v); }
-CameraItem dir(glm::dvec3 v) { return item(CameraItem::Kind::Direction, v); }
-CameraItem right(glm::dvec3 v) { return item(CameraItem::Kind::Right, v); }
-CameraItem up(glm::dvec3 v) { return item(CameraItem::Kind::Up, v); }
-CameraItem sky(glm::dvec3 v) { return item(CameraItem::Kind::Sky, v); }
+CameraItem loc(glm::dvec3 v) {
+    return item(CameraItem::Kind::Location, v);
+}
+CameraItem look(glm::dvec3 v) {
+    return item(CameraItem::Kind::LookAt, v);
+}
+CameraItem dir(glm::dvec3 v) {
+    return item(CameraItem::Kind::Direction, v);
+}
+CameraItem right(glm::dvec3 v) {
+    return item(CameraItem::Kind::Right, v);
+}
+CameraItem up(glm::dvec3 v) {
+    return item(CameraItem::Kind::Up, v);
+}
+CameraItem sky(glm::dvec3 v) {
+    return item(CameraItem::Kind::Sky, v);
+}
 CameraItem angle(TimeFunction a) {
     CameraItem it;
     it.kind = CameraItem::Kind::Angle;
@@ -68,66 +81,172 @@ CameraItem xf(TransformKind kind, glm::dvec3 v) {
 }
 
 struct Recorded {
-    const char* camera;            // the items as written for POV-Ray
+    const char* camera;             // the items as written for POV-Ray
     std::vector<CameraItem> items;  // the same items for hexant
-    glm::dvec3 location;           // where the camera ends up
-    glm::dvec3 rays[9];            // unit ray directions, row by row from the top
+    glm::dvec3 location;            // where the camera ends up
+    glm::dvec3 rays[9];             // unit ray directions, row by row from the top
 };
 
 std::vector<Recorded> recorded() {
     return {
-    {"", {}, {0, 0, 0},
-     {{-0.38769, 0.29149, 0.87448}, {0.00002, 0.31621, 0.94867}, {0.38769, 0.29149, 0.87448},
-      {-0.40529, 0.00002, 0.91418}, {0.00002, 0.00002, 1.00000}, {0.40529, 0.00002, 0.91418},
-      {-0.38769, -0.29149, 0.87448}, {0.00002, -0.31621, 0.94867}, {0.38769, -0.29149, 0.87448}}},
-    {"location <1,2,-3> look_at <0,1,2>",
-     {loc({1,2,-3}), look({0,1,2})},
-     {1,2,-3},
-     {{-0.55947, 0.11775, 0.82046}, {-0.19451, 0.12773, 0.97253}, {0.20085, 0.11775, 0.97250}, {-0.57336, -0.17592, 0.80020}, {-0.19246, -0.19246, 0.96225}, {0.22148, -0.17592, 0.95917}, {-0.53747, -0.45434, 0.71044}, {-0.17064, -0.49288, 0.85321}, {0.22286, -0.45434, 0.86249}}},
-    {"location <1,2,-3> look_at <0,1,2> angle 60",
-     {loc({1,2,-3}), look({0,1,2}), angle(60)},
-     {1,2,-3},
-     {{-0.52328, 0.08248, 0.84817}, {-0.19536, 0.08794, 0.97678}, {0.15682, 0.08248, 0.98419}, {-0.53185, -0.17961, 0.82757}, {-0.19246, -0.19246, 0.96225}, {0.17263, -0.17961, 0.96847}, {-0.50359, -0.42925, 0.74975}, {-0.17436, -0.45766, 0.87185}, {0.17650, -0.42925, 0.88577}}},
-    {"look_at <0,1,2> angle 60 location <1,2,-3>",
-     {look({0,1,2}), angle(60), loc({1,2,-3})},
-     {1,2,-3},
-     {{-0.52328, 0.08248, 0.84817}, {-0.19536, 0.08794, 0.97678}, {0.15682, 0.08248, 0.98419}, {-0.53185, -0.17961, 0.82757}, {-0.19246, -0.19246, 0.96225}, {0.17263, -0.17961, 0.96847}, {-0.50359, -0.42925, 0.74975}, {-0.17436, -0.45766, 0.87185}, {0.17650, -0.42925, 0.88577}}},
-    {"sky <1,1,0> location <0,0,-5> look_at <0,0,0> right x*1 up y*2",
-     {sky({1,1,0}), loc({0,0,-5}), look({0,0,0}), right({1,0,0}), up({0,2,0})},
-     {0,0,-5},
-     {{0.18898, 0.56695, 0.80179}, {0.39223, 0.39223, 0.83206}, {0.56695, 0.18898, 0.80179}, {-0.22362, 0.22362, 0.94867}, {0.00002, 0.00002, 1.00000}, {0.22362, -0.22362, 0.94867}, {-0.56695, -0.18898, 0.80179}, {-0.39223, -0.39223, 0.83206}, {-0.18898, -0.56695, 0.80179}}},
-    {"right -1.33*x location <0,0,-5> look_at <1,1,0>",
-     {right({-1.33,0,0}), loc({0,0,-5}), look({1,1,0})},
-     {0,0,-5},
-     {{0.53747, 0.45434, 0.71044}, {0.17064, 0.49288, 0.85321}, {-0.22286, 0.45434, 0.86249}, {0.57336, 0.17592, 0.80020}, {0.19246, 0.19246, 0.96225}, {-0.22148, 0.17592, 0.95917}, {0.55947, -0.11775, 0.82046}, {0.19451, -0.12773, 0.97253}, {-0.20085, -0.11775, 0.97250}}},
-    {"location <0,0,-5> look_at <0,0,0> rotate y*30 translate <1,0,0>",
-     {loc({0,0,-5}), look({0,0,0}), xf(TransformKind::Rotate, {0,30,0}), xf(TransformKind::Translate, {1,0,0})},
-     {-1.5,0,-4.330127018922193},
-     {{0.10149, 0.29149, 0.95117}, {0.47433, 0.31621, 0.82159}, {0.77301, 0.29149, 0.56347}, {0.10610, 0.00002, 0.99435}, {0.49999, 0.00002, 0.86603}, {0.80807, 0.00002, 0.58907}, {0.10149, -0.29149, 0.95117}, {0.47433, -0.31621, 0.82159}, {0.77301, -0.29149, 0.56347}}},
-    {"rotate y*30 translate <1,0,0> location <0,0,-5> look_at <0,0,0>",
-     {xf(TransformKind::Rotate, {0,30,0}), xf(TransformKind::Translate, {1,0,0}), loc({0,0,-5}), look({0,0,0})},
-     {-1.5,0,-4.330127018922193},
-     {{0.10149, 0.29149, 0.95117}, {0.47433, 0.31621, 0.82159}, {0.77301, 0.29149, 0.56347}, {0.10610, 0.00002, 0.99435}, {0.49999, 0.00002, 0.86603}, {0.80807, 0.00002, 0.58907}, {0.10149, -0.29149, 0.95117}, {0.47433, -0.31621, 0.82159}, {0.77301, -0.29149, 0.56347}}},
-    {"direction <0,0,2> right <2,0,0> up <0,1.5,0> location 0 look_at <1,1,1>",
-     {dir({0,0,2}), right({2,0,0}), up({0,1.5,0}), loc({0,0,0}), look({1,1,1})},
-     {0,0,0},
-     {{0.22115, 0.72137, 0.65631}, {0.46111, 0.75814, 0.46111}, {0.65631, 0.72137, 0.22115}, {0.32412, 0.54772, 0.77133}, {0.57736, 0.57736, 0.57736}, {0.77133, 0.54772, 0.32412}, {0.40957, 0.34450, 0.84472}, {0.65911, 0.36208, 0.65911}, {0.84472, 0.34450, 0.40957}}},
-    {"location 0 look_at <0,5,0>",
-     {loc({0,0,0}), look({0,5,0})},
-     {0,0,0},
-     {{-0.38769, 0.87448, -0.29149}, {0.00002, 0.94867, -0.31621}, {0.38769, 0.87448, -0.29149}, {-0.40529, 0.91418, 0.00002}, {0.00002, 1.00000, 0.00002}, {0.40529, 0.91418, 0.00002}, {-0.38769, 0.87448, 0.29149}, {0.00002, 0.94867, 0.31621}, {0.38769, 0.87448, 0.29149}}},
-    {"location <0,1,-4> look_at 0 scale <1,2,1>",
-     {loc({0,1,-4}), look({0,0,0}), xf(TransformKind::Scale, {1,2,1})},
-     {0,2,-4},
-     {{-0.38482, 0.14034, 0.91226}, {0.00002, 0.15206, 0.98837}, {0.38482, 0.14034, 0.91226}, {-0.37835, -0.41396, 0.82794}, {0.00002, -0.44723, 0.89444}, {0.37835, -0.41396, 0.82794}, {-0.29436, -0.75149, 0.59045}, {0.00002, -0.78631, 0.61782}, {0.29436, -0.75149, 0.59045}}},
-    {"angle 90",
-     {angle(90)},
-     {0,0,0},
-     {{-0.51196, 0.38494, 0.76794}, {0.00002, 0.44811, 0.89398}, {0.51196, 0.38494, 0.76794}, {-0.55471, 0.00002, 0.83206}, {0.00002, 0.00002, 1.00000}, {0.55471, 0.00002, 0.83206}, {-0.51196, -0.38494, 0.76794}, {0.00002, -0.44811, 0.89398}, {0.51196, -0.38494, 0.76794}}},
-    {"location <0,0,-5> look_at <0,0,0> angle 45 direction <0,0,3> right <1,0,0>",
-     {loc({0,0,-5}), look({0,0,0}), angle(45), dir({0,0,3}), right({1,0,0})},
-     {0,0,-5},
-     {{-0.25722, 0.25722, 0.93149}, {0.00002, 0.26619, 0.96393}, {0.25722, 0.25722, 0.93149}, {-0.26619, 0.00002, 0.96393}, {0.00002, 0.00002, 1.00000}, {0.26619, 0.00002, 0.96393}, {-0.25722, -0.25722, 0.93149}, {0.00002, -0.26619, 0.96393}, {0.25722, -0.25722, 0.93149}}},
+        {"",
+         {},
+         {0, 0, 0},
+         {{-0.38769, 0.29149, 0.87448},
+          {0.00002, 0.31621, 0.94867},
+          {0.38769, 0.29149, 0.87448},
+          {-0.40529, 0.00002, 0.91418},
+          {0.00002, 0.00002, 1.00000},
+          {0.40529, 0.00002, 0.91418},
+          {-0.38769, -0.29149, 0.87448},
+          {0.00002, -0.31621, 0.94867},
+          {0.38769, -0.29149, 0.87448}}},
+        {"location <1,2,-3> look_at <0,1,2>",
+         {loc({1, 2, -3}), look({0, 1, 2})},
+         {1, 2, -3},
+         {{-0.55947, 0.11775, 0.82046},
+          {-0.19451, 0.12773, 0.97253},
+          {0.20085, 0.11775, 0.97250},
+          {-0.57336, -0.17592, 0.80020},
+          {-0.19246, -0.19246, 0.96225},
+          {0.22148, -0.17592, 0.95917},
+          {-0.53747, -0.45434, 0.71044},
+          {-0.17064, -0.49288, 0.85321},
+          {0.22286, -0.45434, 0.86249}}},
+        {"location <1,2,-3> look_at <0,1,2> angle 60",
+         {loc({1, 2, -3}), look({0, 1, 2}), angle(60)},
+         {1, 2, -3},
+         {{-0.52328, 0.08248, 0.84817},
+          {-0.19536, 0.08794, 0.97678},
+          {0.15682, 0.08248, 0.98419},
+          {-0.53185, -0.17961, 0.82757},
+          {-0.19246, -0.19246, 0.96225},
+          {0.17263, -0.17961, 0.96847},
+          {-0.50359, -0.42925, 0.74975},
+          {-0.17436, -0.45766, 0.87185},
+          {0.17650, -0.42925, 0.88577}}},
+        {"look_at <0,1,2> angle 60 location <1,2,-3>",
+         {look({0, 1, 2}), angle(60), loc({1, 2, -3})},
+         {1, 2, -3},
+         {{-0.52328, 0.08248, 0.84817},
+          {-0.19536, 0.08794, 0.97678},
+          {0.15682, 0.08248, 0.98419},
+          {-0.53185, -0.17961, 0.82757},
+          {-0.19246, -0.19246, 0.96225},
+          {0.17263, -0.17961, 0.96847},
+          {-0.50359, -0.42925, 0.74975},
+          {-0.17436, -0.45766, 0.87185},
+          {0.17650, -0.42925, 0.88577}}},
+        {"sky <1,1,0> location <0,0,-5> look_at <0,0,0> right x*1 up y*2",
+         {sky({1, 1, 0}), loc({0, 0, -5}), look({0, 0, 0}), right({1, 0, 0}), up({0, 2, 0})},
+         {0, 0, -5},
+         {{0.18898, 0.56695, 0.80179},
+          {0.39223, 0.39223, 0.83206},
+          {0.56695, 0.18898, 0.80179},
+          {-0.22362, 0.22362, 0.94867},
+          {0.00002, 0.00002, 1.00000},
+          {0.22362, -0.22362, 0.94867},
+          {-0.56695, -0.18898, 0.80179},
+          {-0.39223, -0.39223, 0.83206},
+          {-0.18898, -0.56695, 0.80179}}},
+        {"right -1.33*x location <0,0,-5> look_at <1,1,0>",
+         {right({-1.33, 0, 0}), loc({0, 0, -5}), look({1, 1, 0})},
+         {0, 0, -5},
+         {{0.53747, 0.45434, 0.71044},
+          {0.17064, 0.49288, 0.85321},
+          {-0.22286, 0.45434, 0.86249},
+          {0.57336, 0.17592, 0.80020},
+          {0.19246, 0.19246, 0.96225},
+          {-0.22148, 0.17592, 0.95917},
+          {0.55947, -0.11775, 0.82046},
+          {0.19451, -0.12773, 0.97253},
+          {-0.20085, -0.11775, 0.97250}}},
+        {"location <0,0,-5> look_at <0,0,0> rotate y*30 translate <1,0,0>",
+         {loc({0, 0, -5}), look({0, 0, 0}), xf(TransformKind::Rotate, {0, 30, 0}),
+          xf(TransformKind::Translate, {1, 0, 0})},
+         {-1.5, 0, -4.330127018922193},
+         {{0.10149, 0.29149, 0.95117},
+          {0.47433, 0.31621, 0.82159},
+          {0.77301, 0.29149, 0.56347},
+          {0.10610, 0.00002, 0.99435},
+          {0.49999, 0.00002, 0.86603},
+          {0.80807, 0.00002, 0.58907},
+          {0.10149, -0.29149, 0.95117},
+          {0.47433, -0.31621, 0.82159},
+          {0.77301, -0.29149, 0.56347}}},
+        {"rotate y*30 translate <1,0,0> location <0,0,-5> look_at <0,0,0>",
+         {xf(TransformKind::Rotate, {0, 30, 0}), xf(TransformKind::Translate, {1, 0, 0}),
+          loc({0, 0, -5}), look({0, 0, 0})},
+         {-1.5, 0, -4.330127018922193},
+         {{0.10149, 0.29149, 0.95117},
+          {0.47433, 0.31621, 0.82159},
+          {0.77301, 0.29149, 0.56347},
+          {0.10610, 0.00002, 0.99435},
+          {0.49999, 0.00002, 0.86603},
+          {0.80807, 0.00002, 0.58907},
+          {0.10149, -0.29149, 0.95117},
+          {0.47433, -0.31621, 0.82159},
+          {0.77301, -0.29149, 0.56347}}},
+        {"direction <0,0,2> right <2,0,0> up <0,1.5,0> location 0 look_at <1,1,1>",
+         {dir({0, 0, 2}), right({2, 0, 0}), up({0, 1.5, 0}), loc({0, 0, 0}), look({1, 1, 1})},
+         {0, 0, 0},
+         {{0.22115, 0.72137, 0.65631},
+          {0.46111, 0.75814, 0.46111},
+          {0.65631, 0.72137, 0.22115},
+          {0.32412, 0.54772, 0.77133},
+          {0.57736, 0.57736, 0.57736},
+          {0.77133, 0.54772, 0.32412},
+          {0.40957, 0.34450, 0.84472},
+          {0.65911, 0.36208, 0.65911},
+          {0.84472, 0.34450, 0.40957}}},
+        {"location 0 look_at <0,5,0>",
+         {loc({0, 0, 0}), look({0, 5, 0})},
+         {0, 0, 0},
+         {{-0.38769, 0.87448, -0.29149},
+          {0.00002, 0.94867, -0.31621},
+          {0.38769, 0.87448, -0.29149},
+          {-0.40529, 0.91418, 0.00002},
+          {0.00002, 1.00000, 0.00002},
+          {0.40529, 0.91418, 0.00002},
+          {-0.38769, 0.87448, 0.29149},
+          {0.00002, 0.94867, 0.31621},
+          {0.38769, 0.87448, 0.29149}}},
+        {"location <0,1,-4> look_at 0 scale <1,2,1>",
+         {loc({0, 1, -4}), look({0, 0, 0}), xf(TransformKind::Scale, {1, 2, 1})},
+         {0, 2, -4},
+         {{-0.38482, 0.14034, 0.91226},
+          {0.00002, 0.15206, 0.98837},
+          {0.38482, 0.14034, 0.91226},
+          {-0.37835, -0.41396, 0.82794},
+          {0.00002, -0.44723, 0.89444},
+          {0.37835, -0.41396, 0.82794},
+          {-0.29436, -0.75149, 0.59045},
+          {0.00002, -0.78631, 0.61782},
+          {0.29436, -0.75149, 0.59045}}},
+        {"angle 90",
+         {angle(90)},
+         {0, 0, 0},
+         {{-0.51196, 0.38494, 0.76794},
+          {0.00002, 0.44811, 0.89398},
+          {0.51196, 0.38494, 0.76794},
+          {-0.55471, 0.00002, 0.83206},
+          {0.00002, 0.00002, 1.00000},
+          {0.55471, 0.00002, 0.83206},
+          {-0.51196, -0.38494, 0.76794},
+          {0.00002, -0.44811, 0.89398},
+          {0.51196, -0.38494, 0.76794}}},
+        {"location <0,0,-5> look_at <0,0,0> angle 45 direction <0,0,3> right <1,0,0>",
+         {loc({0, 0, -5}), look({0, 0, 0}), angle(45), dir({0, 0, 3}), right({1, 0, 0})},
+         {0, 0, -5},
+         {{-0.25722, 0.25722, 0.93149},
+          {0.00002, 0.26619, 0.96393},
+          {0.25722, 0.25722, 0.93149},
+          {-0.26619, 0.00002, 0.96393},
+          {0.00002, 0.00002, 1.00000},
+          {0.26619, 0.00002, 0.96393},
+          {-0.25722, -0.25722, 0.93149},
+          {0.00002, -0.26619, 0.96393},
+          {0.25722, -0.25722, 0.93149}}},
     };
 }
 
@@ -179,9 +298,9 @@ TEST_CASE("angle sets direction's length to |right| / (2 tan(angle / 2))", "[cam
 }
 
 TEST_CASE("look_at keeps the lengths and the handedness", "[camera]") {
-    const CameraFrame cam =
-        camera_of({dir({0, 0, 2}), right({-3, 0, 0}), up({0, 0.5, 0}), loc({1, 1, 1}), look({1, 1, 5})})
-            .evaluate(0.0);
+    const CameraFrame cam = camera_of({dir({0, 0, 2}), right({-3, 0, 0}), up({0, 0.5, 0}),
+                                       loc({1, 1, 1}), look({1, 1, 5})})
+                                .evaluate(0.0);
     CHECK(glm::length(cam.direction - glm::dvec3(0, 0, 2)) < 1e-12);
     CHECK(glm::length(cam.right - glm::dvec3(-3, 0, 0)) < 1e-12);
     CHECK(glm::length(cam.up - glm::dvec3(0, 0.5, 0)) < 1e-12);
@@ -194,7 +313,8 @@ TEST_CASE("the last of a repeated camera item wins", "[camera]") {
 
 TEST_CASE("a camera driven by clock is evaluated at each time", "[camera]") {
     CameraItem moving = loc({0, 0, -5});
-    moving.vector.c[0] = TimeFunction::apply(TimeOp::Multiply, TimeFunction(4.0), TimeFunction::clock());
+    moving.vector.c[0] =
+        TimeFunction::apply(TimeOp::Multiply, TimeFunction(4.0), TimeFunction::clock());
     CameraRecord record = camera_of({moving, look({0, 0, 0})});
     CHECK(record.depends_on_time());
     CHECK_FALSE(camera_of({loc({0, 0, -5}), look({0, 0, 0})}).depends_on_time());
@@ -208,8 +328,10 @@ TEST_CASE("location equal to look_at is an error", "[camera]") {
     CHECK_THROWS(camera_of({loc({1, 1, 1}), look({1, 1, 1})}).evaluate(0.0));
 }
 
-TEST_CASE("focal blur: the focal distance from focal_point before the transforms, an aperture only with samples",
-          "[runtime][camera]") {
+TEST_CASE(
+    "focal blur: the focal distance from focal_point before the transforms, an aperture only with "
+    "samples",
+    "[runtime][camera]") {
     // POV-Ray's Parse_Camera: |focal_point - location| before the camera's
     // transforms (a scale does not change it), else the direction's
     // length; no focal blur without blur_samples.
@@ -238,7 +360,8 @@ TEST_CASE("focal blur: the focal distance from focal_point before the transforms
     CHECK(f.focal_distance == Approx(1.33 / std::tan(30.0 * 3.14159265358979323846 / 180.0) / 2.0));
 }
 
-TEST_CASE("the focal distance without a focal_point is POV-Ray's Direction_Length", "[runtime][camera]") {
+TEST_CASE("the focal distance without a focal_point is POV-Ray's Direction_Length",
+          "[runtime][camera]") {
     // Parse_Camera's Direction_Length is 1 unless angle or look_at set it:
     // a direction given alone does not (hexant took its length before).
     CameraRecord c;
@@ -248,7 +371,8 @@ TEST_CASE("the focal distance without a focal_point is POV-Ray's Direction_Lengt
     CHECK(c.evaluate(0.0).focal_distance == Approx(3.0));
 }
 
-TEST_CASE("camera types: the orthographic resize and the wide projections' angles", "[runtime][camera]") {
+TEST_CASE("camera types: the orthographic resize and the wide projections' angles",
+          "[runtime][camera]") {
     CameraItem type;
     type.kind = CameraItem::Kind::Type;
     // Orthographic with neither up nor right: right and up scaled by

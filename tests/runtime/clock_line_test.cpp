@@ -4,8 +4,9 @@
 // else is not taken for a line.
 #include "runtime/time/clock_line.hpp"
 
-#include <catch2/catch.hpp>
 #include <vector>
+
+#include <catch2/catch.hpp>
 
 #include "runtime/time/time_tape.hpp"
 #include "same_bits.hpp"
@@ -20,7 +21,6 @@ using hexant::runtime::TimeTape;
 using hexant::test::same_bits;
 
 namespace {
-
 
 template <class N>
 N on_tape(const TimeTape& tape, const N& t) {
@@ -85,8 +85,8 @@ TEST_CASE("only constants and lines in clock are taken for lines", "[clock_line]
     CHECK(constant->constant_value() == 2.5);
     CHECK(constant->at(0.7) == 2.5);
     for (const TimeFunction& f : {t * t, TimeFunction(2.0) / t, t + t, -t, t * 2.0 * 3.0,
-                                  (t + 1.0) * 2.0, TimeFunction::apply(TimeOp::Sin, t),
-                                  t * 2.0 + t, TimeFunction(1.0) + (TimeFunction(2.0) + t)}) {
+                                  (t + 1.0) * 2.0, TimeFunction::apply(TimeOp::Sin, t), t * 2.0 + t,
+                                  TimeFunction(1.0) + (TimeFunction(2.0) + t)}) {
         INFO(f.to_string());
         CHECK_FALSE(ClockLine::of(f));
     }

@@ -2,8 +2,9 @@
 // it is written (issue 17: 8,000 nested intersections crashed the render);
 // the depth real scenes use builds, and unions, split apart, are not
 // counted.
-#include <catch2/catch.hpp>
 #include <string>
+
+#include <catch2/catch.hpp>
 
 #include "object_test_support.hpp"
 #include "runtime/objects/object_error.hpp"

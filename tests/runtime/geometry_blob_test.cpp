@@ -1,11 +1,12 @@
 // blob's static geometry (runtime/objects/blob/blob_geometry.hpp): the
 // field as POV-Ray's components compute it, hits against sampling the field
 // along the ray, normals against the field's gradient, inside, bounds.
-#include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
 #include <optional>
 #include <random>
+
+#include <catch2/catch.hpp>
 
 #include "runtime/objects/blob/blob_geometry.hpp"
 
@@ -73,8 +74,11 @@ glm::dvec3 random_unit(std::mt19937_64& rng) {
 
 // The first sign change of field - threshold along the ray in (0, t_end),
 // sampled at n points and refined by bisection.
-std::optional<double> sampled_crossing(const BlobGeometry& b, const Ray3& ray, double t_end, int n) {
-    const auto f = [&](double t) { return geo::blob_field(b, ray.origin + t * ray.direction) - b.threshold; };
+std::optional<double> sampled_crossing(const BlobGeometry& b, const Ray3& ray, double t_end,
+                                       int n) {
+    const auto f = [&](double t) {
+        return geo::blob_field(b, ray.origin + t * ray.direction) - b.threshold;
+    };
     double t0 = 0.0, f0 = f(0.0);
     for (int i = 1; i <= n; ++i) {
         const double t1 = t_end * i / n, f1 = f(t1);
@@ -106,7 +110,8 @@ TEST_CASE("blob: the field is POV-Ray's", "[geometry][blob]") {
         const glm::dvec3 p(u(rng), u(rng), u(rng));
         // Sphere: c0 d^4 + c1 d^2 + c2 with POV-Ray's Make_Blob coefficients.
         const double d2 = glm::dot(p - s.a, p - s.a), r2 = s.radius * s.radius;
-        const double want = d2 < r2 ? d2 * (d2 * s.strength / (r2 * r2) - 2.0 * s.strength / r2) + s.strength : 0.0;
+        const double want =
+            d2 < r2 ? d2 * (d2 * s.strength / (r2 * r2) - 2.0 * s.strength / r2) + s.strength : 0.0;
         REQUIRE(geo::blob_field({1.0, {s}}, p) == Approx(want).margin(1e-12));
         REQUIRE(geo::blob_field({1.0, {c}}, p) == Approx(pov_cylinder_field(c, p)).margin(1e-12));
         REQUIRE(geo::blob_field({1.0, {s, c}}, p) ==
@@ -151,7 +156,8 @@ TEST_CASE("blob: a cylinder is a capsule", "[geometry][blob]") {
     REQUIRE(h->s == Approx(6.0 - r).epsilon(1e-14));
     h = geo::intersect(b, Ray3{{0.3 * r, -4, 0}, {0, 1, 0}}, 0.0, kInf);  // the base cap, off axis
     REQUIRE(h);
-    REQUIRE(glm::length(h->point - glm::dvec3(0.3 * r, -std::sqrt(r * r - 0.09 * r * r), 0)) < 1e-12);
+    REQUIRE(glm::length(h->point - glm::dvec3(0.3 * r, -std::sqrt(r * r - 0.09 * r * r), 0)) <
+            1e-12);
 }
 
 TEST_CASE("blob: hits against sampling the field along the ray", "[geometry][blob]") {
@@ -162,7 +168,8 @@ TEST_CASE("blob: hits against sampling the field along the ray", "[geometry][blo
         const BlobGeometry b = random_blob(rng);
         const Box3 box = geo::object_bounds(b);
         for (int i = 0; i < 100; ++i) {
-            const glm::dvec3 target = box.lo + glm::dvec3(u(rng), u(rng), u(rng)) * (box.hi - box.lo);
+            const glm::dvec3 target =
+                box.lo + glm::dvec3(u(rng), u(rng), u(rng)) * (box.hi - box.lo);
             const glm::dvec3 origin = target + 6.0 * random_unit(rng);
             const Ray3 ray{origin, (target - origin) * (0.25 + u(rng))};
             const double t_end = 14.0 / glm::length(ray.direction);
@@ -198,13 +205,16 @@ TEST_CASE("blob: hits against sampling the field along the ray", "[geometry][blo
                 for (int a = 0; a < 3; ++a) {
                     glm::dvec3 dp(0.0);
                     dp[a] = e;
-                    grad[a] = (geo::blob_field(b, got->point + dp) - geo::blob_field(b, got->point - dp)) / (2 * e);
+                    grad[a] = (geo::blob_field(b, got->point + dp) -
+                               geo::blob_field(b, got->point - dp)) /
+                              (2 * e);
                 }
                 if (glm::length(grad) > 1e-3)
                     REQUIRE(glm::length(got->normal + glm::normalize(grad)) < 1e-5);
                 // Inside where the field exceeds the threshold.
                 const glm::dvec3 step = 1e-6 * got->normal;
-                REQUIRE(geo::inside(b, got->point - step) == (geo::blob_field(b, got->point - step) > b.threshold - 1e-6));
+                REQUIRE(geo::inside(b, got->point - step) ==
+                        (geo::blob_field(b, got->point - step) > b.threshold - 1e-6));
             } else {
                 REQUIRE_FALSE(want);
             }
@@ -238,6 +248,7 @@ TEST_CASE("blob: surface_may_meet and random rays", "[geometry][blob]") {
         REQUIRE_FALSE(geo::surface_may_meet(b, Box3{box.lo - 3.0, box.lo - 2.0}));
     }
     const BlobGeometry one{0.5, {sphere({0, 0, 0}, 2.0, 2.0)}};
-    REQUIRE_FALSE(geo::surface_may_meet(one, Box3{glm::dvec3(-0.1), glm::dvec3(0.1)}));  // all inside
+    REQUIRE_FALSE(
+        geo::surface_may_meet(one, Box3{glm::dvec3(-0.1), glm::dvec3(0.1)}));  // all inside
     REQUIRE(geo::surface_may_meet(one, Box3{glm::dvec3(-2.0), glm::dvec3(2.0)}));
 }

@@ -3,8 +3,8 @@
 // sampled face points at every scale, inside() against the ray parity, and
 // surface_may_meet around surface points.
 #include "geometry_test_support.hpp"
-#include "runtime/objects/box/box_geometry.hpp"
 #include "runtime/geometry/box_queries.hpp"
+#include "runtime/objects/box/box_geometry.hpp"
 #include "runtime/objects/plane/plane_geometry.hpp"
 
 using namespace geometry_test;

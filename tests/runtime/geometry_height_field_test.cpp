@@ -1,10 +1,6 @@
 // height_field (runtime/objects/height_field): the hierarchy against every
 // triangle tested, normals, smooth normals, inside, bounds, the water cut,
 // POV-Ray's pixel-to-height rules and reading PNG files.
-#include <png.h>
-#include <unistd.h>
-
-#include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -14,6 +10,10 @@
 #include <random>
 #include <string>
 #include <vector>
+
+#include <catch2/catch.hpp>
+#include <png.h>
+#include <unistd.h>
 
 #include "runtime/objects/height_field/height_field_data.hpp"
 #include "runtime/objects/height_field/height_field_geometry.hpp"
@@ -45,8 +45,10 @@ std::shared_ptr<const HeightFieldData> random_field(int w, int d, std::uint64_t 
     std::vector<std::uint16_t> h(static_cast<std::size_t>(w) * static_cast<std::size_t>(d));
     for (int z = 0; z < d; ++z)
         for (int x = 0; x < w; ++x) {
-            const double v = 30000.0 + 15000.0 * std::sin(0.3 * x) * std::cos(0.21 * z) + noise(rng);
-            h[static_cast<std::size_t>(z * w + x)] = static_cast<std::uint16_t>(std::clamp(v, 0.0, 65535.0));
+            const double v =
+                30000.0 + 15000.0 * std::sin(0.3 * x) * std::cos(0.21 * z) + noise(rng);
+            h[static_cast<std::size_t>(z * w + x)] =
+                static_cast<std::uint16_t>(std::clamp(v, 0.0, 65535.0));
         }
     return field_of(w, d, h);
 }
@@ -103,8 +105,9 @@ void compare_with_brute_force(const HeightFieldGeometry& g, int count, std::uint
     for (int i = 0; i < count; ++i) {
         // Aimed at a point over the field from around it, or random.
         const glm::dvec3 target(u(rng), u(rng) * 0.9, u(rng));
-        const glm::dvec3 origin = i % 3 == 0 ? glm::dvec3(u(rng) * 3 - 1, u(rng) * 3 - 1, u(rng) * 3 - 1)
-                                             : target + (0.2 + 2.0 * u(rng)) * random_unit(rng);
+        const glm::dvec3 origin = i % 3 == 0
+                                      ? glm::dvec3(u(rng) * 3 - 1, u(rng) * 3 - 1, u(rng) * 3 - 1)
+                                      : target + (0.2 + 2.0 * u(rng)) * random_unit(rng);
         glm::dvec3 dir = target - origin;
         if (i % 17 == 0) dir = {0.0, -1.0, 0.0};  // straight down
         if (i % 19 == 0) dir.y = 0.0;             // level
@@ -144,8 +147,7 @@ void write_png(const fs::path& path, int w, int h, int colour, int bits,
     png_init_io(png, f);
     png_set_IHDR(png, info, w, h, bits, colour, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
                  PNG_FILTER_TYPE_DEFAULT);
-    if (!palette.empty())
-        png_set_PLTE(png, info, palette.data(), static_cast<int>(palette.size()));
+    if (!palette.empty()) png_set_PLTE(png, info, palette.data(), static_cast<int>(palette.size()));
     png_write_info(png, info);
     const int per_pixel = colour == PNG_COLOR_TYPE_RGB ? 3 : 1;
     const int bytes = bits / 8;
@@ -168,7 +170,8 @@ void write_png(const fs::path& path, int w, int h, int colour, int bits,
 }
 
 fs::path temp_folder() {
-    const fs::path dir = fs::temp_directory_path() / ("hexant_hf_test_" + std::to_string(::getpid()));
+    const fs::path dir =
+        fs::temp_directory_path() / ("hexant_hf_test_" + std::to_string(::getpid()));
     fs::create_directories(dir);
     return dir;
 }
@@ -198,7 +201,8 @@ TEST_CASE("height_field: grid, vertices and quadtree", "[geometry][height_field]
     REQUIRE_THROWS_AS(HeightFieldData(1, 5, std::vector<std::uint16_t>(5)), HeightFieldError);
 }
 
-TEST_CASE("height_field: hierarchy finds what testing every triangle finds", "[geometry][height_field]") {
+TEST_CASE("height_field: hierarchy finds what testing every triangle finds",
+          "[geometry][height_field]") {
     for (int smooth = 0; smooth < 2; ++smooth) {
         const auto d = random_field(41, 29, 2);
         HeightFieldGeometry g{d, geo::height_field_floor(*d, 0.0), smooth == 1};
@@ -272,7 +276,8 @@ TEST_CASE("height_field: smooth normals", "[geometry][height_field]") {
     // quantization), and so is the blend.
     std::vector<std::uint16_t> tilt;
     for (int z = 0; z < 6; ++z)
-        for (int x = 0; x < 9; ++x) tilt.push_back(static_cast<std::uint16_t>(1000 + 700 * x + 300 * z));
+        for (int x = 0; x < 9; ++x)
+            tilt.push_back(static_cast<std::uint16_t>(1000 + 700 * x + 300 * z));
     const auto d = field_of(9, 6, tilt);
     const glm::dvec3 plane = glm::normalize(glm::dvec3(-700.0 * 8, 65536.0, -300.0 * 5));
     std::mt19937_64 rng(10);
@@ -309,7 +314,8 @@ TEST_CASE("height_field: smooth normals", "[geometry][height_field]") {
     HeightFieldGeometry g{peak, geo::height_field_floor(*peak, 0.0), true};
     const auto h = geo::intersect(g, Ray3{{0.3, 1.0, 0.2}, {0.0, -1.0, 0.0}}, 0.0, kInf);
     REQUIRE(h);
-    REQUIRE(glm::length(h->shading_normal - geo::height_field_smooth_normal(*peak, h->point)) < 1e-15);
+    REQUIRE(glm::length(h->shading_normal - geo::height_field_smooth_normal(*peak, h->point)) <
+            1e-15);
     REQUIRE(h->shading_normal != h->normal);
 }
 
@@ -451,8 +457,9 @@ TEST_CASE("height_field: POV-Ray's heights from pixels", "[height_field][image]"
     }
     {
         // 16-bit RGB: POV-Ray's GREY_SCALE3 (0.297, 0.589, 0.114).
-        const std::vector<float> v{1.0f, 0.0f, 0.0f, float(1000 / 65535.0), float(2000 / 65535.0),
-                                   float(3000 / 65535.0), 1.0f, 1.0f, 1.0f};
+        const std::vector<float> v{
+            1.0f, 0.0f, 0.0f, float(1000 / 65535.0), float(2000 / 65535.0), float(3000 / 65535.0),
+            1.0f, 1.0f, 1.0f};
         const auto h = obj::heights_from_image(image(StoredImage::Source::Rgb, 16, v));
         REQUIRE(h[0] == 19463);
         REQUIRE(h[1] == 1817);
@@ -498,7 +505,8 @@ TEST_CASE("height_field: reading PNG files", "[height_field][image]") {
     REQUIRE(d->height(0, 0) == 40000);
     REQUIRE(d->height(1, 0) == 65535);
     // 8-bit RGB.
-    write_png(dir / "rgb.png", 2, 2, PNG_COLOR_TYPE_RGB, 8, {1, 2, 9, 3, 0, 9, 17, 250, 0, 0, 0, 0});
+    write_png(dir / "rgb.png", 2, 2, PNG_COLOR_TYPE_RGB, 8,
+              {1, 2, 9, 3, 0, 9, 17, 250, 0, 0, 0, 0});
     d = obj::read_height_field(dir / "rgb.png", "png");
     REQUIRE(d->height(0, 1) == 258);
     REQUIRE(d->height(1, 1) == 768);
@@ -506,7 +514,8 @@ TEST_CASE("height_field: reading PNG files", "[height_field][image]") {
     // Paletted: the index * 256, whatever the colours.
     std::vector<png_color> palette(8);
     for (int i = 0; i < 8; ++i)
-        palette[static_cast<std::size_t>(i)] = {static_cast<png_byte>(255 - i), 0, static_cast<png_byte>(i)};
+        palette[static_cast<std::size_t>(i)] = {static_cast<png_byte>(255 - i), 0,
+                                                static_cast<png_byte>(i)};
     write_png(dir / "palette.png", 2, 2, PNG_COLOR_TYPE_PALETTE, 8, {0, 7, 3, 5}, palette);
     d = obj::read_height_field(dir / "palette.png", "png");
     REQUIRE(d->height(0, 1) == 0);
@@ -516,7 +525,8 @@ TEST_CASE("height_field: reading PNG files", "[height_field][image]") {
     // Refusals, naming what was refused.
     REQUIRE_THROWS_WITH(obj::read_height_field(dir / "gray.png", "tga"), Catch::Contains("'tga'"));
     REQUIRE_THROWS_WITH(obj::read_height_field(dir / "x.jpg", ""), Catch::Contains(".jpg"));
-    REQUIRE_THROWS_WITH(obj::read_height_field(dir / "gray.png", "exr"), Catch::Contains("OpenEXR"));
+    REQUIRE_THROWS_WITH(obj::read_height_field(dir / "gray.png", "exr"),
+                        Catch::Contains("OpenEXR"));
     REQUIRE_THROWS_AS(obj::read_height_field(dir / "missing.png", "png"), HeightFieldError);
     write_png(dir / "dot.png", 1, 1, PNG_COLOR_TYPE_GRAY, 8, {5});
     REQUIRE_THROWS_WITH(obj::read_height_field(dir / "dot.png", "png"), Catch::Contains("2 x 2"));

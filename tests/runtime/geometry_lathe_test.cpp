@@ -28,21 +28,20 @@ std::vector<glm::dvec2> profile(LatheSpline spline) {
         case LatheSpline::linear:
             return {{0.0, 0.0}, {1.0, 0.0}, {1.4, 0.8}, {0.6, 1.5}, {0.9, 2.2}, {0.0, 2.2}};
         case LatheSpline::quadratic:
-            return {{0.0, -0.5}, {0.0, 0.0}, {1.0, 0.2}, {1.3, 1.0}, {0.9, 1.4}, {0.5, 1.9},
-                    {0.0, 2.1}};
+            return {{0.0, -0.5}, {0.0, 0.0}, {1.0, 0.2}, {1.3, 1.0},
+                    {0.9, 1.4},  {0.5, 1.9}, {0.0, 2.1}};
         case LatheSpline::cubic:
-            return {{0.0, -0.5}, {0.0, 0.0}, {1.0, 0.1}, {1.2, 1.0}, {0.4, 1.6}, {0.8, 2.1},
-                    {0.0, 2.3}, {0.0, 3.0}};
+            return {{0.0, -0.5}, {0.0, 0.0}, {1.0, 0.1}, {1.2, 1.0},
+                    {0.4, 1.6},  {0.8, 2.1}, {0.0, 2.3}, {0.0, 3.0}};
         case LatheSpline::bezier:
-            return {{0.0, 0.0}, {0.8, 0.0}, {1.4, 0.4}, {1.2, 1.0},
-                    {1.2, 1.0}, {1.0, 1.6}, {0.3, 1.4}, {0.6, 2.0},
-                    {0.6, 2.0}, {0.4, 2.3}, {0.2, 2.2}, {0.0, 2.2}};
+            return {{0.0, 0.0}, {0.8, 0.0}, {1.4, 0.4}, {1.2, 1.0}, {1.2, 1.0}, {1.0, 1.6},
+                    {0.3, 1.4}, {0.6, 2.0}, {0.6, 2.0}, {0.4, 2.3}, {0.2, 2.2}, {0.0, 2.2}};
     }
     return {};
 }
 
-constexpr LatheSpline kSplines[] = {LatheSpline::linear, LatheSpline::quadratic,
-                                    LatheSpline::cubic, LatheSpline::bezier};
+constexpr LatheSpline kSplines[] = {LatheSpline::linear, LatheSpline::quadratic, LatheSpline::cubic,
+                                    LatheSpline::bezier};
 
 // The profile refined into straight pieces in long double (r, y).
 struct Piece {
@@ -75,7 +74,8 @@ std::optional<long double> reference_hit(const std::vector<Piece>& pieces, glm::
     auto consider = [&](long double k, const Piece& p) {
         if (!(k > k_min) || (best && k >= *best)) return;
         const long double y = oy + k * uy;
-        const long double rho = std::sqrt((ox + k * ux) * (ox + k * ux) + (oz + k * uz) * (oz + k * uz));
+        const long double rho =
+            std::sqrt((ox + k * ux) * (ox + k * ux) + (oz + k * uz) * (oz + k * uz));
         if (p.y1 != p.y0) {
             const long double s = (y - p.y0) / (p.y1 - p.y0);
             if (s < 0 || s > 1) return;
@@ -146,7 +146,10 @@ double surface_distance(const LatheGeometry& g, glm::dvec3 p) {
         double lo = std::max(0.0, bt - 1.0 / 400), hi = std::min(1.0, bt + 1.0 / 400);
         for (int i = 0; i < 200; ++i) {
             const double a = lo + (hi - lo) / 3, b = hi - (hi - lo) / 3;
-            if (dist(a) < dist(b)) hi = b; else lo = a;
+            if (dist(a) < dist(b))
+                hi = b;
+            else
+                lo = a;
         }
         best = std::min({best, bd, dist(0.5 * (lo + hi))});
     }
@@ -165,15 +168,25 @@ TEST_CASE("lathe: segments follow POV-Ray's interpolation", "[geometry][lathe]")
     for (const LatheSpline spline : kSplines) {
         const auto points = profile(spline);
         const LatheGeometry g = make_lathe(spline, points);
-        REQUIRE(g.segments.size() == static_cast<std::size_t>(lathe_segment_count(spline, points.size())));
+        REQUIRE(g.segments.size() ==
+                static_cast<std::size_t>(lathe_segment_count(spline, points.size())));
         for (std::size_t i = 0; i < g.segments.size(); ++i) {
             const auto& s = g.segments[i];
             glm::dvec2 start, end;
             switch (spline) {
-                case LatheSpline::linear: start = points[i]; end = points[i + 1]; break;
+                case LatheSpline::linear:
+                    start = points[i];
+                    end = points[i + 1];
+                    break;
                 case LatheSpline::quadratic:
-                case LatheSpline::cubic: start = points[i + 1]; end = points[i + 2]; break;
-                case LatheSpline::bezier: start = points[4 * i]; end = points[4 * i + 3]; break;
+                case LatheSpline::cubic:
+                    start = points[i + 1];
+                    end = points[i + 2];
+                    break;
+                case LatheSpline::bezier:
+                    start = points[4 * i];
+                    end = points[4 * i + 3];
+                    break;
             }
             CHECK(glm::length(s.at(0.0) - start) < 1e-15);
             CHECK(glm::length(s.at(1.0) - end) < 1e-14);
@@ -184,7 +197,8 @@ TEST_CASE("lathe: segments follow POV-Ray's interpolation", "[geometry][lathe]")
             if (spline == LatheSpline::quadratic)  // POV-Ray's: slope (P2 - P0)/2 at the start
                 CHECK(glm::length(s.slope(0.0) - 0.5 * (points[i + 2] - points[i])) < 1e-14);
             if (spline == LatheSpline::bezier)
-                CHECK(glm::length(s.slope(0.0) - 3.0 * (points[4 * i + 1] - points[4 * i])) < 1e-14);
+                CHECK(glm::length(s.slope(0.0) - 3.0 * (points[4 * i + 1] - points[4 * i])) <
+                      1e-14);
         }
     }
 }
@@ -274,7 +288,8 @@ TEST_CASE("lathe: normals against finite differences, outward", "[geometry][lath
         const LatheGeometry g = make_lathe(spline, profile(spline));
         int checked = 0;
         for (int i = 0; i < 400; ++i) {
-            const std::size_t j = static_cast<std::size_t>(random.integer(0, (int)g.segments.size() - 1));
+            const std::size_t j =
+                static_cast<std::size_t>(random.integer(0, (int)g.segments.size() - 1));
             const double t = random.uniform(0.02, 0.98), angle = random.uniform(0.0, 2.0 * kPi);
             const auto& s = g.segments[j];
             if (std::fabs(s.at(t).x) < 0.05) continue;  // near the axis
@@ -329,13 +344,15 @@ TEST_CASE("lathe: aimed rays, bounds and extreme rays at every scale", "[geometr
                 const double size = 3.0 * scale;
                 auto sample = [&](Random& r) {
                     SurfaceSample q;
-                    const auto& s = g.segments[static_cast<std::size_t>(r.integer(0, (int)g.segments.size() - 1))];
+                    const auto& s = g.segments[static_cast<std::size_t>(
+                        r.integer(0, (int)g.segments.size() - 1))];
                     const double t = r.uniform(0.0, 1.0), angle = r.uniform(0.0, 2.0 * kPi);
                     q.point = revolve(s.at(t), angle);
                     const double h = 1e-7;
                     const glm::dvec3 along = revolve(s.at(std::min(t + h, 1.0)), angle) -
                                              revolve(s.at(std::max(t - h, 0.0)), angle);
-                    const glm::dvec3 around = revolve(s.at(t), angle + h) - revolve(s.at(t), angle - h);
+                    const glm::dvec3 around =
+                        revolve(s.at(t), angle + h) - revolve(s.at(t), angle - h);
                     const glm::dvec3 n = glm::cross(along, around);
                     q.normal = glm::length(n) > 0.0 ? glm::normalize(n) : glm::dvec3(0, 1, 0);
                     if (!inside(g, q.point - 1e-7 * size * q.normal)) q.normal = -q.normal;
@@ -346,8 +363,10 @@ TEST_CASE("lathe: aimed rays, bounds and extreme rays at every scale", "[geometr
                 };
                 auto residual = [&](const glm::dvec3& p) { return surface_distance(g, p); };
                 INFO("spline " << static_cast<int>(spline) << " scale " << scale);
-                const AimStats near = aim_at_surface(g, sample, residual, size, 2.0 * size, false, 150, random);
-                const AimStats far = aim_at_surface(g, sample, residual, size, 1e6 * size, false, 150, random);
+                const AimStats near =
+                    aim_at_surface(g, sample, residual, size, 2.0 * size, false, 150, random);
+                const AimStats far =
+                    aim_at_surface(g, sample, residual, size, 1e6 * size, false, 150, random);
                 CHECK(near.max_residual < 1e-11);
                 CHECK(far.max_residual < 1e-9);
                 report("lathe near", near);
@@ -356,9 +375,11 @@ TEST_CASE("lathe: aimed rays, bounds and extreme rays at every scale", "[geometr
                 const Box3 b = object_bounds(g);
                 for (int i = 0; i < 500; ++i) {
                     const glm::dvec3 p = sample(random).point;
-                    REQUIRE(hexant::runtime::geometry::contains(hexant::runtime::geometry::widened(b, 1e-15 * size), p));
+                    REQUIRE(hexant::runtime::geometry::contains(
+                        hexant::runtime::geometry::widened(b, 1e-15 * size), p));
                 }
-                random_rays_are_finite(g, size, offset * scale + glm::dvec3(0, scale, 0), 400, random);
+                random_rays_are_finite(g, size, offset * scale + glm::dvec3(0, scale, 0), 400,
+                                       random);
             }
         }
     }

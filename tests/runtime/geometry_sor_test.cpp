@@ -17,7 +17,8 @@ using hexant::runtime::geometry::SorGeometry;
 namespace {
 
 std::vector<glm::dvec2> vase() {
-    return {{0.0, -0.5}, {0.6, 0.0}, {1.0, 0.4}, {0.5, 1.0}, {0.45, 1.3}, {0.9, 1.8}, {0.8, 2.0}, {1.2, 2.5}};
+    return {{0.0, -0.5}, {0.6, 0.0}, {1.0, 0.4}, {0.5, 1.0},
+            {0.45, 1.3}, {0.9, 1.8}, {0.8, 2.0}, {1.2, 2.5}};
 }
 
 // The segment holding y (POV-Ray's inside rule: the first in order).
@@ -37,7 +38,8 @@ long double excess(const SorGeometry& g, glm::dvec3 o, glm::dvec3 u, long double
 }
 
 // The first sign change of the excess (or a cap crossing) by fine sampling.
-std::optional<double> reference_hit(const SorGeometry& g, glm::dvec3 o, glm::dvec3 u, double k_max) {
+std::optional<double> reference_hit(const SorGeometry& g, glm::dvec3 o, glm::dvec3 u,
+                                    double k_max) {
     std::optional<double> best;
     const int n = 200000;
     long double previous = excess(g, o, u, 0.0L);
@@ -69,8 +71,10 @@ double surface_residual(const SorGeometry& g, glm::dvec3 p) {
     }
     if (!g.open) {
         const double rho = std::hypot(p.x, p.z);
-        if (rho <= std::sqrt(g.base_radius_squared) * (1 + 1e-12)) best = std::min(best, std::fabs(p.y - g.height1));
-        if (rho <= std::sqrt(g.cap_radius_squared) * (1 + 1e-12)) best = std::min(best, std::fabs(p.y - g.height2));
+        if (rho <= std::sqrt(g.base_radius_squared) * (1 + 1e-12))
+            best = std::min(best, std::fabs(p.y - g.height1));
+        if (rho <= std::sqrt(g.cap_radius_squared) * (1 + 1e-12))
+            best = std::min(best, std::fabs(p.y - g.height2));
     }
     return best;
 }
@@ -85,10 +89,12 @@ TEST_CASE("sor: r^2 interpolates the points with POV-Ray's slopes", "[geometry][
         const auto& s = g.segments[i];
         CHECK(s.r2(p[i + 1].y) == Approx(p[i + 1].x * p[i + 1].x).margin(1e-12));
         CHECK(s.r2(p[i + 2].y) == Approx(p[i + 2].x * p[i + 2].x).margin(1e-12));
-        CHECK(s.r2_slope(p[i + 1].y) ==
-              Approx(2.0 * p[i + 1].x * (p[i + 2].x - p[i].x) / (p[i + 2].y - p[i].y)).margin(1e-11));
+        CHECK(
+            s.r2_slope(p[i + 1].y) ==
+            Approx(2.0 * p[i + 1].x * (p[i + 2].x - p[i].x) / (p[i + 2].y - p[i].y)).margin(1e-11));
         CHECK(s.r2_slope(p[i + 2].y) ==
-              Approx(2.0 * p[i + 2].x * (p[i + 3].x - p[i + 1].x) / (p[i + 3].y - p[i + 1].y)).margin(1e-11));
+              Approx(2.0 * p[i + 2].x * (p[i + 3].x - p[i + 1].x) / (p[i + 3].y - p[i + 1].y))
+                  .margin(1e-11));
     }
     CHECK(g.height1 == 0.0);
     CHECK(g.height2 == 2.0);
@@ -107,7 +113,8 @@ TEST_CASE("sor: first hits against fine sampling, caps and open", "[geometry][so
         const SorGeometry g = make_sor(vase(), open);
         int hits = 0;
         for (int i = 0; i < 300; ++i) {
-            const glm::dvec3 target{random.uniform(-1.0, 1.0), random.uniform(-0.2, 2.2), random.uniform(-1.0, 1.0)};
+            const glm::dvec3 target{random.uniform(-1.0, 1.0), random.uniform(-0.2, 2.2),
+                                    random.uniform(-1.0, 1.0)};
             const glm::dvec3 origin = target + random.uniform(2.0, 4.0) * random.unit_vector();
             const glm::dvec3 dir = glm::normalize(target - origin);
             const auto ours = intersect(g, Ray3{origin, dir}, 0.0, kInf);
@@ -120,7 +127,8 @@ TEST_CASE("sor: first hits against fine sampling, caps and open", "[geometry][so
                 CHECK(surface_residual(g, ours->point) < 1e-12);
             }
             if (ours && ref) {
-                if (std::fabs(glm::dot(ours->normal, dir)) > 0.05) CHECK(std::fabs(ours->s - *ref) < 1e-4);
+                if (std::fabs(glm::dot(ours->normal, dir)) > 0.05)
+                    CHECK(std::fabs(ours->s - *ref) < 1e-4);
             } else if (ours || ref) {
                 const double k = ours ? ours->s : *ref;
                 // Only a graze: the excess hardly changes sign.
@@ -162,9 +170,10 @@ TEST_CASE("sor: normals against the gradient, outward", "[geometry][sor]") {
         const glm::dvec3 p{r * std::cos(angle), y, r * std::sin(angle)};
         const double h = 1e-6;
         auto f = [&](glm::dvec3 q) { return q.x * q.x + q.z * q.z - s.r2(q.y); };
-        const glm::dvec3 grad = glm::normalize(glm::dvec3(f(p + glm::dvec3(h, 0, 0)) - f(p - glm::dvec3(h, 0, 0)),
-                                                          f(p + glm::dvec3(0, h, 0)) - f(p - glm::dvec3(0, h, 0)),
-                                                          f(p + glm::dvec3(0, 0, h)) - f(p - glm::dvec3(0, 0, h))));
+        const glm::dvec3 grad =
+            glm::normalize(glm::dvec3(f(p + glm::dvec3(h, 0, 0)) - f(p - glm::dvec3(h, 0, 0)),
+                                      f(p + glm::dvec3(0, h, 0)) - f(p - glm::dvec3(0, h, 0)),
+                                      f(p + glm::dvec3(0, 0, h)) - f(p - glm::dvec3(0, 0, h))));
         const auto hit = intersect(g, Ray3{p + 0.3 * grad, -grad}, 0.0, kInf);
         if (!hit || std::fabs(hit->s - 0.3) > 1e-9) continue;
         ++checked;
@@ -195,8 +204,10 @@ TEST_CASE("sor: aimed rays, bounds and extreme rays at every scale", "[geometry]
         };
         auto residual = [&](const glm::dvec3& p) { return surface_residual(g, p); };
         INFO("scale " << scale);
-        const AimStats near = aim_at_surface(g, sample, residual, size, 2.0 * size, false, 200, random);
-        const AimStats far = aim_at_surface(g, sample, residual, size, 1e6 * size, false, 200, random);
+        const AimStats near =
+            aim_at_surface(g, sample, residual, size, 2.0 * size, false, 200, random);
+        const AimStats far =
+            aim_at_surface(g, sample, residual, size, 1e6 * size, false, 200, random);
         CHECK(near.max_residual < 1e-10);
         CHECK(far.max_residual < 1e-8);
         report("sor near", near);
@@ -204,8 +215,8 @@ TEST_CASE("sor: aimed rays, bounds and extreme rays at every scale", "[geometry]
         boxes_around_surface(g, sample, size, 200, random);
         const Box3 b = object_bounds(g);
         for (int i = 0; i < 500; ++i)
-            REQUIRE(hexant::runtime::geometry::contains(hexant::runtime::geometry::widened(b, 1e-15 * size),
-                                                        sample(random).point));
+            REQUIRE(hexant::runtime::geometry::contains(
+                hexant::runtime::geometry::widened(b, 1e-15 * size), sample(random).point));
         random_rays_are_finite(g, size, glm::dvec3(0, scale, 0), 400, random);
     }
 }

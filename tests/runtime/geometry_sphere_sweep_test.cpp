@@ -33,11 +33,17 @@ Spheres spheres(SweepSpline spline) {
             return {{{-1.5, 0.0, 0.0}, {-0.3, 0.6, 0.2}, {0.8, 0.1, -0.4}, {1.4, 1.0, 0.3}},
                     {0.5, 0.25, -0.35, 0.2}};
         case SweepSpline::b_spline:
-            return {{{-2.0, -0.5, 0.0}, {-1.0, 0.8, 0.3}, {0.0, -0.4, -0.3}, {1.0, 0.7, 0.2},
+            return {{{-2.0, -0.5, 0.0},
+                     {-1.0, 0.8, 0.3},
+                     {0.0, -0.4, -0.3},
+                     {1.0, 0.7, 0.2},
                      {2.0, -0.2, 0.5}},
                     {0.3, 0.6, 0.4, 0.5, 0.2}};
         case SweepSpline::cubic:
-            return {{{-2.0, 0.0, 0.0}, {-1.0, 0.0, 0.0}, {0.0, 0.9, 0.4}, {1.0, 0.0, -0.3},
+            return {{{-2.0, 0.0, 0.0},
+                     {-1.0, 0.0, 0.0},
+                     {0.0, 0.9, 0.4},
+                     {1.0, 0.0, -0.3},
                      {2.0, 0.5, 0.0}},
                     {0.2, 0.3, 0.45, -0.25, 0.3}};
     }
@@ -137,13 +143,16 @@ SurfaceSample sample_surface(const SphereSweepGeometry& g, const Ref& ref, Rando
     const std::size_t j = static_cast<std::size_t>(random.integer(0, (int)g.segments.size() - 1));
     const double u = random.uniform();
     const auto& s = ref.segs[j];
-    const glm::dvec3 c((double)Ref::at(s, 0, u), (double)Ref::at(s, 1, u), (double)Ref::at(s, 2, u));
+    const glm::dvec3 c((double)Ref::at(s, 0, u), (double)Ref::at(s, 1, u),
+                       (double)Ref::at(s, 2, u));
     const glm::dvec3 n = random.unit_vector();
     LD lo = 0, hi = 4.0L * ref.size;
     for (int it = 0; it < 64; ++it) {
         const LD mid = 0.5L * (lo + hi);
-        if (ref.f(c.x + mid * n.x, c.y + mid * n.y, c.z + mid * n.z) <= 0) lo = mid;
-        else hi = mid;
+        if (ref.f(c.x + mid * n.x, c.y + mid * n.y, c.z + mid * n.z) <= 0)
+            lo = mid;
+        else
+            hi = mid;
     }
     SurfaceSample q;
     q.point = c + (double)lo * n;
@@ -152,7 +161,8 @@ SurfaceSample sample_surface(const SphereSweepGeometry& g, const Ref& ref, Rando
 }
 
 // The analytic capsule: first k > 0 along unit u from o, in long double.
-std::optional<LD> capsule_hit(glm::dvec3 a, glm::dvec3 b, double radius, glm::dvec3 o, glm::dvec3 u) {
+std::optional<LD> capsule_hit(glm::dvec3 a, glm::dvec3 b, double radius, glm::dvec3 o,
+                              glm::dvec3 u) {
     std::optional<LD> best;
     auto take = [&](LD k) {
         if (k > 0 && (!best || k < *best)) best = k;
@@ -173,7 +183,8 @@ std::optional<LD> capsule_hit(glm::dvec3 a, glm::dvec3 b, double radius, glm::dv
     const LD wx = (LD)o.x - ax, wy = (LD)o.y - ay, wz = (LD)o.z - az;
     const LD we = wx * ex + wy * ey + wz * ez, ue = (LD)u.x * ex + (LD)u.y * ey + (LD)u.z * ez;
     const LD px = wx - we / len2 * ex, py = wy - we / len2 * ey, pz = wz - we / len2 * ez;
-    const LD qx = (LD)u.x - ue / len2 * ex, qy = (LD)u.y - ue / len2 * ey, qz = (LD)u.z - ue / len2 * ez;
+    const LD qx = (LD)u.x - ue / len2 * ex, qy = (LD)u.y - ue / len2 * ey,
+             qz = (LD)u.z - ue / len2 * ez;
     const LD A = qx * qx + qy * qy + qz * qz, B = px * qx + py * qy + pz * qz,
              C = px * px + py * py + pz * pz - r2;
     if (A > 0) {
@@ -200,15 +211,21 @@ TEST_CASE("sphere_sweep segments follow POV-Ray's matrices", "[geometry][sphere_
         const Spheres sp = spheres(spline);
         const SphereSweepGeometry g = make_sphere_sweep(spline, sp.centres, sp.radii);
         const Ref ref(g);
-        REQUIRE(ref.segs.size() == (std::size_t)sphere_sweep_segment_count(spline, sp.radii.size()));
+        REQUIRE(ref.segs.size() ==
+                (std::size_t)sphere_sweep_segment_count(spline, sp.radii.size()));
         for (std::size_t i = 0; i < ref.segs.size(); ++i) {
             for (int k = 0; k < 4; ++k) {
                 auto P = [&](std::size_t j) { return k < 3 ? sp.centres[j][k] : sp.radii[j]; };
-                const double start = (double)Ref::at(ref.segs[i], k, 0), end = (double)Ref::at(ref.segs[i], k, 1);
+                const double start = (double)Ref::at(ref.segs[i], k, 0),
+                             end = (double)Ref::at(ref.segs[i], k, 1);
                 double want_start = 0, want_end = 0;
                 switch (spline) {
-                    case SweepSpline::linear: want_start = P(i), want_end = P(i + 1); break;
-                    case SweepSpline::cubic: want_start = P(i + 1), want_end = P(i + 2); break;
+                    case SweepSpline::linear:
+                        want_start = P(i), want_end = P(i + 1);
+                        break;
+                    case SweepSpline::cubic:
+                        want_start = P(i + 1), want_end = P(i + 2);
+                        break;
                     case SweepSpline::b_spline:
                         want_start = (P(i) + 4 * P(i + 1) + P(i + 2)) / 6;
                         want_end = (P(i + 1) + 4 * P(i + 2) + P(i + 3)) / 6;
@@ -220,8 +237,10 @@ TEST_CASE("sphere_sweep segments follow POV-Ray's matrices", "[geometry][sphere_
         }
     }
     // Too few spheres, or a non-finite number: empty.
-    CHECK(make_sphere_sweep(SweepSpline::b_spline, {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}, {1, 1, 1}).segments.empty());
-    CHECK(make_sphere_sweep(SweepSpline::linear, {{0, 0, 0}, {kInf, 0, 0}}, {1, 1}).segments.empty());
+    CHECK(make_sphere_sweep(SweepSpline::b_spline, {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}}, {1, 1, 1})
+              .segments.empty());
+    CHECK(
+        make_sphere_sweep(SweepSpline::linear, {{0, 0, 0}, {kInf, 0, 0}}, {1, 1}).segments.empty());
 }
 
 TEST_CASE("sphere_sweep: linear, equal radii is a capsule", "[geometry][sphere_sweep]") {
@@ -236,7 +255,8 @@ TEST_CASE("sphere_sweep: linear, equal radii is a capsule", "[geometry][sphere_s
             const double t = std::clamp(glm::dot(o - a, b - a) / glm::dot(b - a, b - a), 0.0, 1.0);
             if (glm::length(o - (a + t * (b - a))) <= radius) continue;
         }
-        glm::dvec3 u = i % 3 == 0 ? glm::normalize(0.5 * (a + b) + random.in_cube(1.0) - o) : random.unit_vector();
+        glm::dvec3 u = i % 3 == 0 ? glm::normalize(0.5 * (a + b) + random.in_cube(1.0) - o)
+                                  : random.unit_vector();
         const auto want = capsule_hit(a, b, radius, o, u);
         const auto hit = intersect(g, Ray3{o, u}, 0.0, kInf);
         // Grazing rays may go either way.
@@ -282,7 +302,8 @@ TEST_CASE("sphere_sweep: first hits against sphere tracing", "[geometry][sphere_
             if (ref.f(o) <= 1e-9L) continue;  // origins outside only
             // Aim at a surface point half the time (rays that hit), else anywhere.
             glm::dvec3 u = random.unit_vector();
-            if (i % 2 == 0) u = glm::normalize(sample_surface(g, ref, random).point + random.in_cube(0.05) - o);
+            if (i % 2 == 0)
+                u = glm::normalize(sample_surface(g, ref, random).point + random.in_cube(0.05) - o);
             ++checked;
             const Trace t = trace(ref, o, u, 10.0 * g.size);
             const auto hit = intersect(g, Ray3{o, u * 2.0}, 0.0, kInf);
@@ -397,7 +418,8 @@ TEST_CASE("sphere_sweep: inside against the distance function", "[geometry][sphe
     }
 }
 
-TEST_CASE("sphere_sweep: bounds and surface_may_meet hold the surface", "[geometry][sphere_sweep]") {
+TEST_CASE("sphere_sweep: bounds and surface_may_meet hold the surface",
+          "[geometry][sphere_sweep]") {
     Random random(21);
     for (const SweepSpline spline : kSplines) {
         const Spheres sp = spheres(spline);

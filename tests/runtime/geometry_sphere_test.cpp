@@ -6,8 +6,8 @@
 #include "runtime/objects/sphere/sphere_geometry.hpp"
 
 using namespace geometry_test;
-using hexant::runtime::geometry::SphereGeometry;
 using hexant::runtime::geometry::sphere_uv;
+using hexant::runtime::geometry::SphereGeometry;
 
 namespace {
 

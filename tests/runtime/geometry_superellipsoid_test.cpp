@@ -25,9 +25,9 @@ struct Exponents {
 };
 
 // Round, boxy, pinched, starry, a cube, near-cube and extreme ones.
-const std::vector<Exponents> kShapes = {{1.0, 1.0},  {0.25, 0.25}, {0.05, 0.6}, {2.0, 2.0},
-                                        {3.0, 0.5},  {4.0, 4.0},   {0.0, 0.0},  {1e-3, 1e-3},
-                                        {0.5, 2.5},  {1.0, 0.02},  {8.0, 1.0},  {2.0, 1e-4}};
+const std::vector<Exponents> kShapes = {{1.0, 1.0}, {0.25, 0.25}, {0.05, 0.6}, {2.0, 2.0},
+                                        {3.0, 0.5}, {4.0, 4.0},   {0.0, 0.0},  {1e-3, 1e-3},
+                                        {0.5, 2.5}, {1.0, 0.02},  {8.0, 1.0},  {2.0, 1e-4}};
 
 // (|x|^(2/e) + |y|^(2/e))^(e/n) + |z|^(2/n) - 1, in long double; e or n of
 // 0 as the limit (max).
@@ -152,7 +152,8 @@ TEST_CASE("superellipsoid: POV-Ray's powers and limits", "[geometry][superellips
     CHECK(geo::superellipsoid_function(sphere, {0.0, 0.0, 0.0}) == -1.0);
 }
 
-TEST_CASE("superellipsoid: the sphere case against the analytic sphere", "[geometry][superellipsoid]") {
+TEST_CASE("superellipsoid: the sphere case against the analytic sphere",
+          "[geometry][superellipsoid]") {
     const auto g = make_superellipsoid(1.0, 1.0);
     Random random(11);
     for (int i = 0; i < 2000; ++i) {
@@ -181,7 +182,8 @@ TEST_CASE("superellipsoid: the sphere case against the analytic sphere", "[geome
     }
 }
 
-TEST_CASE("superellipsoid: first hits against the sampled reference", "[geometry][superellipsoid]") {
+TEST_CASE("superellipsoid: first hits against the sampled reference",
+          "[geometry][superellipsoid]") {
     Random random(5);
     int compared = 0, extra = 0;
     for (const auto& s : kShapes) {
@@ -200,7 +202,8 @@ TEST_CASE("superellipsoid: first hits against the sampled reference", "[geometry
                 const glm::dvec3 grad = reference_gradient(s, hit->point, 1e-7);
                 const double gl = glm::length(grad);
                 if (gl > 1e-3 && std::isfinite(gl)) CHECK(res / gl < 1e-9);
-                CHECK(glm::length(origin + hit->s * dir - hit->point) < 1e-12 * (1.0 + glm::length(origin)));
+                CHECK(glm::length(origin + hit->s * dir - hit->point) <
+                      1e-12 * (1.0 + glm::length(origin)));
             }
             if (expected > 0.0) {
                 ++compared;
@@ -219,8 +222,9 @@ TEST_CASE("superellipsoid: first hits against the sampled reference", "[geometry
                 }
             } else if (hit) {
                 ++extra;
-                const double near = reference_hit(s, {origin, dir}, hit->s - 1e-6 / glm::length(dir),
-                                                  hit->s + 1e-6 / glm::length(dir), 20000);
+                const double near =
+                    reference_hit(s, {origin, dir}, hit->s - 1e-6 / glm::length(dir),
+                                  hit->s + 1e-6 / glm::length(dir), 20000);
                 CHECK(near > 0.0);
             }
         }
@@ -240,10 +244,12 @@ TEST_CASE("superellipsoid: thin grazing hits are found", "[geometry][superellips
     // Along the edge direction, just inside the rounded edge region.
     const glm::dvec3 p = surface_point({0.1, 0.1}, glm::normalize(glm::dvec3(1.0, 1.0, 0.0)));
     const glm::dvec3 inward = p * (1.0 - 1e-8);
-    const auto edge = geo::intersect(round_cube, {inward + glm::dvec3(0, 0, -5), {0, 0, 1}}, 0.0, kInf);
+    const auto edge =
+        geo::intersect(round_cube, {inward + glm::dvec3(0, 0, -5), {0, 0, 1}}, 0.0, kInf);
     REQUIRE(edge);
     CHECK(edge->s > 4.0);
-    CHECK_FALSE(geo::intersect(round_cube, {p * (1.0 + 1e-8) + glm::dvec3(0, 0, -5), {0, 0, 1}}, 0.0, kInf));
+    CHECK_FALSE(geo::intersect(round_cube, {p * (1.0 + 1e-8) + glm::dvec3(0, 0, -5), {0, 0, 1}},
+                               0.0, kInf));
 }
 
 TEST_CASE("superellipsoid: normals are the function's gradient", "[geometry][superellipsoid]") {
@@ -317,9 +323,11 @@ TEST_CASE("superellipsoid: bounds and surface_may_meet", "[geometry][superellips
 }
 
 TEST_CASE("superellipsoid: volume", "[geometry][superellipsoid]") {
-    CHECK(geo::superellipsoid_volume(make_superellipsoid(1.0, 1.0)) == Approx(4.0 * kPi / 3.0).epsilon(1e-12));
+    CHECK(geo::superellipsoid_volume(make_superellipsoid(1.0, 1.0)) ==
+          Approx(4.0 * kPi / 3.0).epsilon(1e-12));
     CHECK(geo::superellipsoid_volume(make_superellipsoid(0.0, 0.0)) == Approx(8.0).epsilon(1e-12));
-    CHECK(geo::superellipsoid_volume(make_superellipsoid(2.0, 2.0)) == Approx(4.0 / 3.0).epsilon(1e-12));
+    CHECK(geo::superellipsoid_volume(make_superellipsoid(2.0, 2.0)) ==
+          Approx(4.0 / 3.0).epsilon(1e-12));
     CHECK(geo::superellipsoid_volume(make_superellipsoid(-1.0, 2.0)) == -1.0);
     Random random(17);
     for (const auto& s : kShapes) {

@@ -6,12 +6,12 @@
 #include <vector>
 
 #include "geometry_test_support.hpp"
-#include "runtime/objects/box/box_geometry.hpp"
-#include "runtime/objects/cylinder/cylinder_geometry.hpp"
 #include "runtime/geometry/offset_ray.hpp"
 #include "runtime/geometry/outline.hpp"
-#include "runtime/objects/sphere/sphere_geometry.hpp"
 #include "runtime/geometry/stable_arithmetic.hpp"
+#include "runtime/objects/box/box_geometry.hpp"
+#include "runtime/objects/cylinder/cylinder_geometry.hpp"
+#include "runtime/objects/sphere/sphere_geometry.hpp"
 #include "runtime/objects/torus/torus_geometry.hpp"
 #include "runtime/objects/triangle/triangle_geometry.hpp"
 

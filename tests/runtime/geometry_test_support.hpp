@@ -3,15 +3,16 @@
 // rays aimed at sampled surface points and boxes around them.
 #pragma once
 
-#include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <glm/glm.hpp>
 #include <limits>
 #include <optional>
 #include <random>
+
+#include <catch2/catch.hpp>
+#include <glm/glm.hpp>
 
 #include "runtime/geometry/ray3.hpp"
 

@@ -5,12 +5,14 @@
 // divides by zero), filter and transmit all, and points that are not
 // finite. And an image_map file's decoding (language/image_map_file.cpp):
 // sRGB, a gAMA chunk's power, the scene's gamma, assumed_gamma, alpha.
-#include <catch2/catch.hpp>
+#include "runtime/texture/pattern/image_map.hpp"
+
 #include <cmath>
 #include <limits>
 
+#include <catch2/catch.hpp>
+
 #include "language/image_map_file.hpp"
-#include "runtime/texture/pattern/image_map.hpp"
 
 namespace pt = hexant::runtime::pattern;
 
@@ -27,7 +29,8 @@ pt::ImageMap two_by_two() {
     return map;
 }
 
-double red(const pt::ImageMap& map, double x, double y, double filter = 0.0, double transmit = 0.0) {
+double red(const pt::ImageMap& map, double x, double y, double filter = 0.0,
+           double transmit = 0.0) {
     return pt::image_colour(map, {x, y, 0.0}, 0.0, filter, transmit)[0];
 }
 
@@ -51,16 +54,19 @@ TEST_CASE("image_map: once shows the image one time and is clear outside", "[pat
     pt::ImageMap map = two_by_two();
     map.once = true;
     CHECK(red(map, 0.25, 0.75) == Approx(0.1));
-    for (const auto& p : {glm::dvec3(1.5, 0.5, 0), glm::dvec3(0.5, -0.5, 0), glm::dvec3(-0.1, 0.5, 0)}) {
+    for (const auto& p :
+         {glm::dvec3(1.5, 0.5, 0), glm::dvec3(0.5, -0.5, 0), glm::dvec3(-0.1, 0.5, 0)}) {
         const auto c = pt::image_colour(map, p, 0.0, 0.0, 0.0);
         CHECK(c[0] == 1.0);
         CHECK(c[4] == 1.0);
     }
 }
 
-TEST_CASE("image_map: interpolations agree with the pixel at its centre and stay finite", "[pattern][image]") {
-    for (const auto how : {pt::ImageMap::Interpolate::Bilinear, pt::ImageMap::Interpolate::NormalizedDistance,
-                           pt::ImageMap::Interpolate::Bicubic}) {
+TEST_CASE("image_map: interpolations agree with the pixel at its centre and stay finite",
+          "[pattern][image]") {
+    for (const auto how :
+         {pt::ImageMap::Interpolate::Bilinear, pt::ImageMap::Interpolate::NormalizedDistance,
+          pt::ImageMap::Interpolate::Bicubic}) {
         pt::ImageMap map = two_by_two();
         map.interpolate = how;
         INFO("interpolate " << static_cast<int>(how));
@@ -77,26 +83,31 @@ TEST_CASE("image_map: interpolations agree with the pixel at its centre and stay
 }
 
 TEST_CASE("image_map: a point that is not finite reads clear, never NaN", "[pattern][image]") {
-    const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+    const double inf = std::numeric_limits<double>::infinity(),
+                 nan = std::numeric_limits<double>::quiet_NaN();
     for (const auto type : {pt::ImageMap::MapType::Planar, pt::ImageMap::MapType::Spherical,
                             pt::ImageMap::MapType::Cylindrical, pt::ImageMap::MapType::Torus}) {
         pt::ImageMap map = two_by_two();
         map.map_type = type;
-        for (const glm::dvec3 p : {glm::dvec3(inf, 0, 0), glm::dvec3(nan, 0.5, 0), glm::dvec3(0, 0, 0),
-                                   glm::dvec3(1e300, -1e300, 1e300), glm::dvec3(1, 0, 0)}) {
+        for (const glm::dvec3 p :
+             {glm::dvec3(inf, 0, 0), glm::dvec3(nan, 0.5, 0), glm::dvec3(0, 0, 0),
+              glm::dvec3(1e300, -1e300, 1e300), glm::dvec3(1, 0, 0)}) {
             const auto c = pt::image_colour(map, p, 0.0, 0.0, 0.0);
             for (const double v : c) CHECK(std::isfinite(v));
         }
     }
 }
 
-TEST_CASE("image_map: an image sequence shows the image of each piece of time", "[pattern][image]") {
+TEST_CASE("image_map: an image sequence shows the image of each piece of time",
+          "[pattern][image]") {
     pt::ImageMap map = two_by_two();
     auto other = std::make_shared<pt::ImagePixels>(*map.images[0].pixels);
     other->rgbt[0] = 0.9f;
     map.images = {{hexant::runtime::Interval(0.0, 0.5), map.images[0].pixels},
                   {hexant::runtime::Interval(0.5 + 1e-12, 1.0), other}};
-    const auto top_left = [&](double t) { return pt::image_colour(map, {0.25, 0.75, 0.0}, t, 0.0, 0.0)[0]; };
+    const auto top_left = [&](double t) {
+        return pt::image_colour(map, {0.25, 0.75, 0.0}, t, 0.0, 0.0)[0];
+    };
     CHECK(top_left(0.25) == Approx(0.1));
     CHECK(top_left(0.75) == Approx(0.9));
     CHECK(top_left(-1.0) == Approx(0.1));  // before the first piece: the first
@@ -109,9 +120,11 @@ TEST_CASE("image_map's file: decoded as POV-Ray 3.7 decodes it", "[pattern][imag
     stored.height = 1;
     stored.channels = 4;
     stored.values = {0.5f, 0.04f, 1.0f, 0.25f, 0.0f, 0.2f, 0.8f, 1.0f};
-    using hexant::language::ImageGamma;
     using hexant::language::image_pixels;
-    const auto srgb = [](double x) { return x <= 0.04045 ? x / 12.92 : std::pow((x + 0.055) / 1.055, 2.4); };
+    using hexant::language::ImageGamma;
+    const auto srgb = [](double x) {
+        return x <= 0.04045 ? x / 12.92 : std::pow((x + 0.055) / 1.055, 2.4);
+    };
     // No word from the file: sRGB; alpha 0.25 is transmit 0.75.
     auto p = image_pixels(stored, ImageGamma{}, 1.0);
     CHECK(p.rgbt[0] == Approx(srgb(0.5)));

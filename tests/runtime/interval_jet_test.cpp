@@ -6,9 +6,10 @@
 // smooth exactly where they cannot change.
 #include "runtime/time/interval_jet.hpp"
 
-#include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
+
+#include <catch2/catch.hpp>
 
 #include "runtime/time/dual.hpp"
 

@@ -4,13 +4,14 @@
 // tight over short intervals and exact at their extremes.
 #include "runtime/time/interval.hpp"
 
-#include <catch2/catch.hpp>
 #include <cmath>
 #include <functional>
 #include <limits>
 #include <random>
 #include <string>
 #include <vector>
+
+#include <catch2/catch.hpp>
 
 using hexant::runtime::Interval;
 

@@ -5,9 +5,10 @@
 // differences.
 #include "runtime/motion/motion.hpp"
 
-#include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
+
+#include <catch2/catch.hpp>
 
 #include "runtime/motion/deformation.hpp"
 #include "runtime/motion/transform.hpp"
@@ -50,8 +51,11 @@ TransformStep random_step(Random& r, bool moving) {
                                          : TimeFunction(r.uniform(lo, hi));
     };
     switch (r.integer(0, 3)) {
-        case 0: return step(TransformKind::Translate, value(-5, 5), value(-5, 5), value(-5, 5));
-        case 1: return step(TransformKind::Rotate, value(-720, 720), value(-720, 720), value(-720, 720));
+        case 0:
+            return step(TransformKind::Translate, value(-5, 5), value(-5, 5), value(-5, 5));
+        case 1:
+            return step(TransformKind::Rotate, value(-720, 720), value(-720, 720),
+                        value(-720, 720));
         case 2: {
             const auto positive = [&] { return TimeFunction(r.uniform(0.3, 3.0)); };
             return step(TransformKind::Scale, positive(), positive(), positive());
@@ -59,7 +63,8 @@ TransformStep random_step(Random& r, bool moving) {
         default: {
             TransformStep s = step(TransformKind::Matrix, 0.0, 0.0, 0.0);
             for (int i = 0; i < 12; ++i)
-                s.matrix[i] = TimeFunction((i < 9 && i % 4 == 0 ? 1.0 : 0.0) + r.uniform(-0.4, 0.4));
+                s.matrix[i] =
+                    TimeFunction((i < 9 && i % 4 == 0 ? 1.0 : 0.0) + r.uniform(-0.4, 0.4));
             if (moving) s.matrix[10] = clock_times(r.uniform(-3, 3));
             return s;
         }
@@ -141,7 +146,7 @@ TEST_CASE("motion: interval bounds hold every point at every time", "[motion]") 
         if (trial % 2 == 0) {
             // A deformation among the affine steps, its amount moving too.
             const int kind = r.integer(0, 2);
-            const TransformKind k = kind == 0 ? TransformKind::Twist
+            const TransformKind k = kind == 0   ? TransformKind::Twist
                                     : kind == 1 ? TransformKind::Taper
                                                 : TransformKind::Bend;
             const double rate = kind == 0 ? 720.0 : kind == 1 ? 0.2 : 20.0;
@@ -153,7 +158,7 @@ TEST_CASE("motion: interval bounds hold every point at every time", "[motion]") 
         const double t0 = r.uniform(0.0, 1.0);
         const Interval t(t0, t0 + r.uniform(0.0, 0.3));
         const IntervalBox box{Interval(-1.0, r.uniform(-1.0, 1.0)), Interval(-0.5, 0.5),
-                               Interval(0.2, r.uniform(0.2, 2.0))};
+                              Interval(0.2, r.uniform(0.2, 2.0))};
         const IntervalBox world = motion.world_box(box, t);
         for (int k = 0; k < 300; ++k) {
             const double tk = k == 0 ? t.lo : k == 1 ? t.hi : r.uniform(t.lo, t.hi);
@@ -198,8 +203,8 @@ TEST_CASE("motion: deformations are undone by their inverses and their Jacobians
             transform.append(random_step(r, false));
             const Motion motion(transform);
             REQUIRE_FALSE(motion.is_affine());
-            const glm::dvec3 p = glm::dvec3(r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)) *
-                                 0.55;
+            const glm::dvec3 p =
+                glm::dvec3(r.uniform(-1, 1), r.uniform(-1, 1), r.uniform(-1, 1)) * 0.55;
             const double t = r.uniform(0.0, 1.0);
             const glm::dvec3 w = motion.to_world(p, t);
             const glm::dvec3 back = motion.to_object(w, t);
@@ -211,10 +216,11 @@ TEST_CASE("motion: deformations are undone by their inverses and their Jacobians
             for (int c = 0; c < 3; ++c) {
                 glm::dvec3 e(0.0);
                 e[c] = h;
-                const glm::dvec3 diff = (motion.to_world(p + e, t) - motion.to_world(p - e, t)) /
-                                        (2.0 * h);
+                const glm::dvec3 diff =
+                    (motion.to_world(p + e, t) - motion.to_world(p - e, t)) / (2.0 * h);
                 const double scale = 1.0 + glm::length(diff);
-                REQUIRE(glm::length(diff - j[c]) <= 1e-5 * scale * (1.0 + std::fabs(amount) / 100.0));
+                REQUIRE(glm::length(diff - j[c]) <=
+                        1e-5 * scale * (1.0 + std::fabs(amount) / 100.0));
             }
         }
     }
@@ -256,14 +262,14 @@ TEST_CASE("motion: a twist's interval image holds every point and stays within i
     Random r(13);
     for (int trial = 0; trial < 300; ++trial) {
         Transform transform;
-        transform.append(step(TransformKind::Twist, 0.0, 1.0, 0.0,
-                              TimeFunction(r.uniform(-8640.0, 8640.0))));
+        transform.append(
+            step(TransformKind::Twist, 0.0, 1.0, 0.0, TimeFunction(r.uniform(-8640.0, 8640.0))));
         const Motion motion(transform);
         const double radius = r.uniform(0.1, 2.0), angle = r.uniform(0.0, 6.3);
         const double y = r.uniform(-1.0, 1.0), h = r.uniform(0.0, 0.05);
         const glm::dvec3 c(radius * std::cos(angle), y, radius * std::sin(angle));
         const IntervalBox box{Interval(c.x - h * std::fabs(std::sin(angle)), c.x),
-                               Interval(y, y + h), Interval(c.z)};
+                              Interval(y, y + h), Interval(c.z)};
         const auto image = motion.to_object<Interval>(box, Interval(0.0));
         const double reach = std::sqrt(std::max(c.x * c.x, box[0].lo * box[0].lo) + c.z * c.z);
         CHECK(image[0].magnitude() <= reach * (1.0 + 1e-13));
@@ -303,7 +309,7 @@ TEST_CASE("motion: a box beyond a twist's reach holds no image of the object", "
             const auto w = motion.to_world(p, 0.0);
             const double h = r.uniform(0.0, 0.2), push = k % 4 == 0 ? 0.0 : r.uniform(0.0, 2.0);
             const IntervalBox box{Interval(w[0] + push, w[0] + push + h), Interval(w[1] - h, w[1]),
-                                   Interval(w[2] + push - h, w[2] + push)};
+                                  Interval(w[2] + push - h, w[2] + push)};
             const auto within = motion.to_object_within(box, Interval(0.0), reaches);
             // A box holding an image is never dropped.
             if (push == 0.0) REQUIRE(within);
@@ -359,16 +365,18 @@ TEST_CASE("motion: an inverse deformation step inverts the deformation", "[motio
     CHECK(std::fabs(q.x) < 1e-15);
 }
 
-TEST_CASE("motion: a copy is the same map and outlives its original, a moved one keeps it and "
-          "leaves the identity",
-          "[motion]") {
+TEST_CASE(
+    "motion: a copy is the same map and outlives its original, a moved one keeps it and "
+    "leaves the identity",
+    "[motion]") {
     // The stages, maps, steps, amounts and deformations live in one block
     // the motion owns: a copy must own its own (under AddressSanitizer a
     // shared block would be read after the original freed it).
     Random r(29);
     for (int trial = 0; trial < 100; ++trial) {
         Transform transform;
-        for (int i = 0, n = r.integer(1, 5); i < n; ++i) transform.append(random_step(r, trial % 2));
+        for (int i = 0, n = r.integer(1, 5); i < n; ++i)
+            transform.append(random_step(r, trial % 2));
         if (trial % 3 == 0)
             transform.append(step(TransformKind::Twist, 0.0, 1.0, 0.0, clock_times(90.0, 10.0)));
         const double t = r.uniform(0.0, 1.0);

@@ -3,8 +3,9 @@
 // an interval only might hold one.
 #include "runtime/time/non_finite.hpp"
 
-#include <catch2/catch.hpp>
 #include <cmath>
+
+#include <catch2/catch.hpp>
 
 #include "runtime/time/time_function.hpp"
 
@@ -16,7 +17,9 @@ namespace {
 
 const TimeFunction t = TimeFunction::clock();
 
-TimeFunction sqrt_of(const TimeFunction& f) { return TimeFunction::apply(TimeOp::Sqrt, f); }
+TimeFunction sqrt_of(const TimeFunction& f) {
+    return TimeFunction::apply(TimeOp::Sqrt, f);
+}
 
 }  // namespace
 

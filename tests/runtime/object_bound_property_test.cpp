@@ -11,9 +11,10 @@
 //   HEXANT_PROPERTY_SAMPLES=10000000 build/tests/hexant_tests "[property]"
 // for 10^7 per variant.
 #include <cstdio>
-#include <catch2/catch.hpp>
 #include <string>
 #include <vector>
+
+#include <catch2/catch.hpp>
 
 #include "object_test_support.hpp"
 #include "runtime/bounds/slab_bound.hpp"
@@ -64,8 +65,8 @@ void check_kind(const KindScene& kind) {
         // The variant is what it says: moving unless static, deformed when so named.
         const std::string name = variant.name;
         CHECK(object.moves() == (name != "static"));
-        CHECK(object.deformed() == (name.find("twist") != std::string::npos || name == "taper" ||
-                                    name == "bend"));
+        CHECK(object.deformed() ==
+              (name.find("twist") != std::string::npos || name == "taper" || name == "bend"));
 
         // The root region: the object's own bound over [0, 1], widened a little.
         rt::Box4 everywhere;
@@ -106,10 +107,10 @@ void check_kind(const KindScene& kind) {
                 ++checked;
                 if (!inside_some(bounds, e)) {
                     INFO("event " << e.x << ' ' << e.y << ' ' << e.z << ' ' << e.w << " region "
-                                  << region.lo.x << ' ' << region.lo.y << ' ' << region.lo.z
-                                  << ' ' << region.lo.w << " .. " << region.hi.x << ' '
-                                  << region.hi.y << ' ' << region.hi.z << ' ' << region.hi.w
-                                  << ", " << bounds.size() << " bounds");
+                                  << region.lo.x << ' ' << region.lo.y << ' ' << region.lo.z << ' '
+                                  << region.lo.w << " .. " << region.hi.x << ' ' << region.hi.y
+                                  << ' ' << region.hi.z << ' ' << region.hi.w << ", "
+                                  << bounds.size() << " bounds");
                     FAIL("a surface event outside the bounds");
                 }
             }
@@ -183,7 +184,8 @@ TEST_CASE("bound holds the surface: sphere_sweep", "[object][property]") {
     check_kind(kind_scene("sphere_sweep"));
 }
 
-TEST_CASE("a mesh answers a small region with several smaller bounds (the star cluster)", "[object]") {
+TEST_CASE("a mesh answers a small region with several smaller bounds (the star cluster)",
+          "[object]") {
     // A 40 x 40 grid of quads in the x-y plane from 0 to 4: its hierarchy's
     // nodes are its bound's pieces where the region is small against it.
     std::string sdl = "mesh {\n";
@@ -194,7 +196,8 @@ TEST_CASE("a mesh answers a small region with several smaller bounds (the star c
             std::snprintf(quad, sizeof quad,
                           "triangle { <%g, %g, %g>, <%g, %g, 0>, <%g, %g, 0> } "
                           "triangle { <%g, %g, 0>, <%g, %g, 0>, <%g, %g, %g> }\n",
-                          x, y, z, x + 0.1, y, x, y + 0.1, x + 0.1, y, x + 0.1, y + 0.1, x, y + 0.1, z);
+                          x, y, z, x + 0.1, y, x, y + 0.1, x + 0.1, y, x + 0.1, y + 0.1, x, y + 0.1,
+                          z);
             sdl += quad;
         }
     sdl += "}\n";

@@ -11,10 +11,11 @@
 //  - rays that travel in time through moving spheres, against the same
 //    dense sampling;
 //  - rays of extreme magnitudes: nothing NaN or Inf ever comes out.
-#include <catch2/catch.hpp>
 #include <cmath>
 #include <optional>
 #include <string>
+
+#include <catch2/catch.hpp>
 
 #include "object_test_support.hpp"
 #include "runtime/geometry/curved_path_root.hpp"
@@ -86,7 +87,8 @@ TEST_CASE("rays aimed at surface events hit at or before them, for every kind an
                 const double distance = std::pow(10.0, random.uniform(0.3, 6.0));
                 const rt::Ray4 ray =
                     ray_at_instant(glm::dvec3(target) - distance * direction, direction, t);
-                const auto hit = object.intersect(ray, 0.0, std::numeric_limits<double>::infinity());
+                const auto hit =
+                    object.intersect(ray, 0.0, std::numeric_limits<double>::infinity());
                 // Rounding of the far origin (ulps of the distance) and of the
                 // shape's own size; the curved-path solver stops at 1e-6 of the
                 // size with a chord that is second-order close.
@@ -149,12 +151,13 @@ TEST_CASE("spheres: analytic answers at radii 1e-6 to 1e6, far and grazing rays,
             // an axis ten radii away; the scale is uniform, so the world
             // shape is a sphere of radius 2 r at the mapped centre.
             char sdl[512];
-            std::snprintf(sdl, sizeof sdl,
-                          moving ? "sphere { <%.17g, 0, 0>, %.17g translate <%.17g * clock, 0, 0> "
-                                   "rotate <0, 3600 * clock, 0> scale 2 translate <%.17g, %.17g, 0> }\n"
-                                 : "sphere { <%.17g, 0, 0>, %.17g translate <%.17g, 0, 0> "
-                                   "rotate <0, 30, 0> scale 2 translate <%.17g, %.17g, 0> }\n",
-                          10.0 * radius, radius, 10.0 * radius, radius * 3.0, -radius);
+            std::snprintf(
+                sdl, sizeof sdl,
+                moving ? "sphere { <%.17g, 0, 0>, %.17g translate <%.17g * clock, 0, 0> "
+                         "rotate <0, 3600 * clock, 0> scale 2 translate <%.17g, %.17g, 0> }\n"
+                       : "sphere { <%.17g, 0, 0>, %.17g translate <%.17g, 0, 0> "
+                         "rotate <0, 30, 0> scale 2 translate <%.17g, %.17g, 0> }\n",
+                10.0 * radius, radius, 10.0 * radius, radius * 3.0, -radius);
             INFO(sdl);
             const Parsed parsed = parse(sdl);
             const rt::IntelligentObject& object = *parsed.objects.front();
@@ -170,20 +173,23 @@ TEST_CASE("spheres: analytic answers at radii 1e-6 to 1e6, far and grazing rays,
                 // of the rays within 1e-6 of tangent (grazing).
                 const glm::dvec3 d = random.unit_vector();
                 glm::dvec3 side = glm::normalize(glm::cross(d, random.unit_vector()));
-                const double impact = i % 2 ? r * (1.0 + random.uniform(-1e-6, 1e-6))
-                                            : r * random.uniform(0.0, 1.2);
+                const double impact =
+                    i % 2 ? r * (1.0 + random.uniform(-1e-6, 1e-6)) : r * random.uniform(0.0, 1.2);
                 const double distance = r * std::pow(10.0, random.uniform(0.5, 6.0));
                 const glm::dvec3 origin = centre + impact * side - distance * d;
                 const rt::Ray4 ray = ray_at_instant(origin, d, t);
                 const auto expected = sphere_reference(origin, d, centre, r);
-                const auto hit = object.intersect(ray, 0.0, std::numeric_limits<double>::infinity());
+                const auto hit =
+                    object.intersect(ray, 0.0, std::numeric_limits<double>::infinity());
                 // The precise routine's error: a few ulps of the origin's
                 // distance and of the radius.
                 const double tolerance =
                     8e-16 * (distance + glm::length(origin) + glm::length(centre)) + 1e-12 * r;
                 const double margin = 1.0 - impact / r;  // > 0 inside the silhouette
                 INFO("radius " << radius << " ray " << i << " impact/r " << impact / r);
-                if (hit) check_hit_is_sane(object, ray, *hit, 0.0, std::numeric_limits<double>::infinity());
+                if (hit)
+                    check_hit_is_sane(object, ray, *hit, 0.0,
+                                      std::numeric_limits<double>::infinity());
                 if (std::fabs(margin) < 1e-9) continue;  // a tangent within rounding: either answer
                 if (expected) {
                     REQUIRE(hit);
@@ -256,7 +262,9 @@ struct Reference {
         return std::nullopt;
     }
     // Inside changes across s (a real surface crossing near it).
-    bool crosses_at(double s, double epsilon) const { return inside(s - epsilon) != inside(s + epsilon); }
+    bool crosses_at(double s, double epsilon) const {
+        return inside(s - epsilon) != inside(s + epsilon);
+    }
 };
 
 }  // namespace
@@ -278,8 +286,10 @@ TEST_CASE("deformed solids against dense sampling: stiff twists, tapers, bends, 
         {"cylinder { <0, -0.8, 0>, <0, 0.8, 0>, 0.4 taper <0, 1, 0>, 0.9 * clock - 0.2 }", 600},
         {"sphere { <0.1, 0, 0>, 0.6 taper <1, 1, 0>, -0.6 }", 600},
         {"cylinder { <0, -0.8, 0>, <0, 0.8, 0>, 0.3 bend <0, 1, 0>, 80 * clock }", 600},
-        {"box { <-0.2, -0.9, -0.2>, <0.2, 0.9, 0.2> bend <0, 1, 0>, -90 twist <0, 1, 0>, 180 }", 600},
-        {"box { <-0.2, -0.9, -0.2>, <0.2, 0.9, 0.2> twist <0, 1, 0>, 720 rotate <0, 0, 360 * clock> "
+        {"box { <-0.2, -0.9, -0.2>, <0.2, 0.9, 0.2> bend <0, 1, 0>, -90 twist <0, 1, 0>, 180 }",
+         600},
+        {"box { <-0.2, -0.9, -0.2>, <0.2, 0.9, 0.2> twist <0, 1, 0>, 720 rotate <0, 0, 360 * "
+         "clock> "
          "translate <clock, 0, 0> }",
          600, true},
     };
@@ -308,7 +318,8 @@ TEST_CASE("deformed solids against dense sampling: stiff twists, tapers, bends, 
             const double half = std::sqrt(std::max(0.0, 1.6 * 1.6 - across2));
             const auto expected = reference.first_crossing(along - half, along + half, c.steps);
             const auto hit = object.intersect(ray, 0.0, std::numeric_limits<double>::infinity());
-            if (hit) check_hit_is_sane(object, ray, *hit, 0.0, std::numeric_limits<double>::infinity());
+            if (hit)
+                check_hit_is_sane(object, ray, *hit, 0.0, std::numeric_limits<double>::infinity());
             const double tolerance = 1e-8;
             INFO("ray " << i << " t " << t);
             if (expected) {
@@ -412,11 +423,11 @@ TEST_CASE("rays of extreme magnitudes never bring out NaN or Inf", "[object][int
             const int rays = object.deformed() ? 30 : 300;
             for (int i = 0; i < rays; ++i) {
                 const double scale = std::pow(10.0, random.uniform(-150.0, 150.0));
-                const glm::dvec3 origin = std::pow(10.0, random.uniform(-150.0, 150.0)) *
-                                          random.unit_vector();
+                const glm::dvec3 origin =
+                    std::pow(10.0, random.uniform(-150.0, 150.0)) * random.unit_vector();
                 glm::dvec3 d = scale * random.unit_vector();
                 if (i % 5 == 0) d = scale * glm::dvec3(0.0, 1.0, 0.0);  // parallel to axes
-                if (i % 7 == 0) d = -origin;                           // straight at the origin
+                if (i % 7 == 0) d = -origin;                            // straight at the origin
                 const rt::Ray4 ray = ray_at_instant(origin, d, random.uniform(0.0, 1.0));
                 const double s_max = i % 3 ? std::numeric_limits<double>::infinity() : 1e3;
                 const auto hit = object.intersect(ray, 0.0, s_max);
@@ -446,7 +457,8 @@ TEST_CASE("a twist too stiff to resolve gives up at once, a stiff one never", "[
             const glm::dvec3 origin(-4.0, -0.6 + 0.06 * i, 0.05);
             const rt::Ray4 ray = ray_at_instant(origin, glm::dvec3(1.0, 0.0, 0.0), 0.25);
             const auto hit = object.intersect(ray, 0.0, std::numeric_limits<double>::infinity());
-            if (hit) check_hit_is_sane(object, ray, *hit, 0.0, std::numeric_limits<double>::infinity());
+            if (hit)
+                check_hit_is_sane(object, ray, *hit, 0.0, std::numeric_limits<double>::infinity());
         }
         give_ups = rt::curved_path_give_ups() - give_ups0;
         const std::uint64_t solves = rt::curved_path_solves() - solves0;
@@ -454,14 +466,14 @@ TEST_CASE("a twist too stiff to resolve gives up at once, a stiff one never", "[
         return double(rt::curved_path_pieces() - pieces0) / double(solves);
     };
     std::uint64_t give_ups = 0;
-    const double unresolved =
-        pieces_per_solve("box { <-0.5, -0.8, -0.3>, <0.5, 0.8, 0.3> twist <0, 1, 0>, 1e18 }", give_ups);
+    const double unresolved = pieces_per_solve(
+        "box { <-0.5, -0.8, -0.3>, <0.5, 0.8, 0.3> twist <0, 1, 0>, 1e18 }", give_ups);
     CHECK(give_ups > 0);
     // The unresolved pieces and the halvings down to them (about 50 for a
     // path of unit length), each with its sibling.
     CHECK(unresolved < 400.0);
-    const double stiff =
-        pieces_per_solve("box { <-0.5, -0.8, -0.3>, <0.5, 0.8, 0.3> twist <0, 1, 0>, 10800 }", give_ups);
+    const double stiff = pieces_per_solve(
+        "box { <-0.5, -0.8, -0.3>, <0.5, 0.8, 0.3> twist <0, 1, 0>, 10800 }", give_ups);
     CHECK(give_ups == 0);
     INFO("pieces per solve: unresolvable " << unresolved << ", 30 turns a unit " << stiff);
     CHECK(stiff > 0.0);

@@ -4,9 +4,10 @@
 // its object), occupancy() (exact for a static solid inside the region,
 // sampled otherwise), CSG (union, intersection, difference, inverse) and
 // what a group passes down to its children.
-#include <catch2/catch.hpp>
 #include <cmath>
 #include <string>
+
+#include <catch2/catch.hpp>
 
 #include "object_test_support.hpp"
 #include "runtime/geometry/curved_path_root.hpp"
@@ -21,7 +22,8 @@ namespace {
 
 // The material the object's texture gives at a hit it returned (the top
 // layer of what is picked there).
-rt::MaterialSample material(const rt::IntelligentObject& object, const rt::Ray4& ray, const rt::ObjectHit& hit) {
+rt::MaterialSample material(const rt::IntelligentObject& object, const rt::Ray4& ray,
+                            const rt::ObjectHit& hit) {
     const rt::SurfacePoint p = object.complete(ray, hit);
     return p.texture->at(glm::dvec3(p.event), p.uv, p.event.w);
 }
@@ -42,7 +44,8 @@ rt::Box4 box4(const glm::dvec3& lo, const glm::dvec3& hi, double t0 = 0.0, doubl
 }  // namespace
 
 TEST_CASE("complete: the normal of a scaled sphere is the ellipsoid's gradient", "[object]") {
-    const Parsed parsed = parse("sphere { <0, 0, 0>, 1 scale <1, 2, 3> rotate <0, 0, 90 * clock> }\n");
+    const Parsed parsed =
+        parse("sphere { <0, 0, 0>, 1 scale <1, 2, 3> rotate <0, 0, 90 * clock> }\n");
     const auto& object = *parsed.objects.front();
     Random random(3);
     for (int i = 0; i < 500; ++i) {
@@ -85,7 +88,9 @@ TEST_CASE("complete: a twisted box's normals match finite differences of the sur
         glm::dvec3 u, v;
         perpendicular_pair(n, u, v);
         const double h = 1e-6;
-        const auto world = [&](const glm::dvec3& q) { return reference_to_world(record.transform, q, 0.0); };
+        const auto world = [&](const glm::dvec3& q) {
+            return reference_to_world(record.transform, q, 0.0);
+        };
         const glm::dvec3 tu = (world(o + h * u) - world(o - h * u)) / (2 * h);
         const glm::dvec3 tv = (world(o + h * v) - world(o - h * v)) / (2 * h);
         REQUIRE(std::fabs(glm::dot(p.geometric_normal, glm::normalize(tu))) < 1e-6);
@@ -142,7 +147,8 @@ TEST_CASE("occupancy: exact for a static solid in the region, sampled otherwise"
     const double pi = kPi;
     // The sphere of radius 0.5 inside a cube of side 2: exactly its share.
     const rt::Box4 cube = box4({-1, -1, -1}, {1, 1, 1});
-    CHECK(parsed.objects[0]->occupancy(cube) == Approx(4.0 / 3.0 * pi * 0.125 / 8.0).epsilon(1e-12));
+    CHECK(parsed.objects[0]->occupancy(cube) ==
+          Approx(4.0 / 3.0 * pi * 0.125 / 8.0).epsilon(1e-12));
     // Half of the unit box inside [0.5, 1.5]^3 x [0, 1]: an eighth of it,
     // by 256 stratified samples (4 standard errors of a fraction: 0.125).
     const rt::Box4 corner = box4({0.5, 0.5, 0.5}, {1.5, 1.5, 1.5});
@@ -288,12 +294,12 @@ TEST_CASE("only deformed objects and time-travelling rays enter the curved-path 
     CHECK(rt::curved_path_solves() == before + 2);
 }
 
-TEST_CASE("a deformation that is none at the ray's instant costs a straight-ray test",
-          "[object]") {
+TEST_CASE("a deformation that is none at the ray's instant costs a straight-ray test", "[object]") {
     // The twist starts from nothing at clock 0: a ray at that instant meets
     // a plain box, found by the straight-ray routine (a ray lying in a face
     // plane once cost the curved search tens of thousands of pieces there).
-    const Parsed twisting = parse("box { <-0.3, 0, -0.3>, <0.3, 2, 0.3> twist y, 360 * 12 * clock }\n");
+    const Parsed twisting =
+        parse("box { <-0.3, 0, -0.3>, <0.3, 2, 0.3> twist y, 360 * 12 * clock }\n");
     const Parsed plain = parse("box { <-0.3, 0, -0.3>, <0.3, 2, 0.3> }\n");
     const auto& object = *twisting.objects.front();
     Random random(3);
@@ -345,8 +351,9 @@ TEST_CASE("secondary rays offset from a hit do not find the surface they leave",
         for (int i = 0; i < 2000; ++i) {
             const double t = k == 1 ? random.uniform(0.0, 1.0) : 0.0;
             const double angle = 36000.0 * t * kDegree;
-            const glm::dvec3 c = k == 1 ? glm::dvec3(2.0 * std::cos(angle), 0.0, -2.0 * std::sin(angle))
-                                        : centres[k];
+            const glm::dvec3 c =
+                k == 1 ? glm::dvec3(2.0 * std::cos(angle), 0.0, -2.0 * std::sin(angle))
+                       : centres[k];
             const glm::dvec3 d = random.unit_vector();
             const double size = k == 1 ? 1e-4 : 1.0;
             const rt::Ray4 r = ray(c - 10.0 * size * d + 0.9 * size * random.unit_vector(), d, t);

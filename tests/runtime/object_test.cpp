@@ -1,15 +1,17 @@
 // Object records: the shape's name, and what about an object depends on time.
-#include <catch2/catch.hpp>
+#include "runtime/objects/object.hpp"
 
 #include <memory>
 
-#include "runtime/objects/object.hpp"
+#include <catch2/catch.hpp>
 
 namespace rt = hexant::runtime;
 
 namespace {
 
-rt::TimeFunction symbolic_clock() { return rt::TimeFunction::clock(); }
+rt::TimeFunction symbolic_clock() {
+    return rt::TimeFunction::clock();
+}
 
 rt::Vector3Function vec(rt::TimeFunction x, rt::TimeFunction y, rt::TimeFunction z) {
     return rt::Vector3Function{{x, y, z}};

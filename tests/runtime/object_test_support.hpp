@@ -71,7 +71,8 @@ inline Parsed parse(const std::string& sdl) {
     options.animation.final_frame = 2;
     Parsed parsed{hexant::language::parse_scene_text(sdl, "object-test.pov", options), {}};
     for (const auto& record : parsed.scene.objects)
-        parsed.objects.push_back(rt::make_intelligent_object(*record, parsed.scene.default_texture));
+        parsed.objects.push_back(
+            rt::make_intelligent_object(*record, parsed.scene.default_texture));
     return parsed;
 }
 
@@ -114,7 +115,8 @@ inline glm::dvec3 sample_object_surface(const rt::Shape& shape, double t, Random
     }
     if (const auto* p = std::get_if<rt::Polygon>(&shape)) {
         std::vector<glm::dvec3> outline;
-        for (std::size_t i = 0; i + 1 < p->points.size(); ++i) outline.push_back(vec(p->points[i], t));
+        for (std::size_t i = 0; i + 1 < p->points.size(); ++i)
+            outline.push_back(vec(p->points[i], t));
         return in_convex_fan(outline, random);
     }
     const auto barycentric = [&](const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
@@ -171,7 +173,8 @@ inline glm::dvec3 sample_object_surface(const rt::Shape& shape, double t, Random
         if (glm::length(outline.front() - outline.back()) == 0.0) outline.pop_back();
         const int part = pr->open ? 0 : random.integer(0, 2);
         if (part == 0) {
-            const std::size_t i = static_cast<std::size_t>(random.integer(0, int(outline.size()) - 1));
+            const std::size_t i =
+                static_cast<std::size_t>(random.integer(0, int(outline.size()) - 1));
             const glm::dvec3 a = outline[i], b = outline[(i + 1) % outline.size()];
             glm::dvec3 p = a + random.uniform() * (b - a);
             p.y = random.uniform(std::min(h1, h2), std::max(h1, h2));
@@ -188,14 +191,16 @@ inline glm::dvec3 sample_object_surface(const rt::Shape& shape, double t, Random
         std::vector<const rt::geometry::TextGlyph*> glyphs;
         for (const auto& g : tx->glyphs)
             if (!g.segments.empty()) glyphs.push_back(&g);
-        if (glyphs.empty()) throw std::logic_error("sample_object_surface: a text without outlines");
+        if (glyphs.empty())
+            throw std::logic_error("sample_object_surface: a text without outlines");
         const rt::geometry::TextGlyph& g = *glyphs[random.integer(0, int(glyphs.size()) - 1)];
         const double depth = tx->thickness(t);
         const int part = random.integer(0, 2);
         if (part == 0) {
             const auto& seg = g.segments[random.integer(0, int(g.segments.size()) - 1)];
             const double u = random.uniform();
-            const glm::dvec2 q = seg.quadratic ? (1 - u) * (1 - u) * seg.p0 + 2 * u * (1 - u) * seg.control + u * u * seg.p2
+            const glm::dvec2 q = seg.quadratic ? (1 - u) * (1 - u) * seg.p0 +
+                                                     2 * u * (1 - u) * seg.control + u * u * seg.p2
                                                : seg.p0 + u * (seg.p2 - seg.p0);
             return {q.x, q.y, random.uniform(std::min(0.0, depth), std::max(0.0, depth))};
         }
@@ -208,13 +213,15 @@ inline glm::dvec3 sample_object_surface(const rt::Shape& shape, double t, Random
     if (const auto* mesh = std::get_if<rt::Mesh>(&shape)) {
         // A random face, a random point of it.
         const auto& m = *mesh->data;
-        const auto& f = m.faces[static_cast<std::size_t>(random.integer(0, int(m.faces.size()) - 1))];
+        const auto& f =
+            m.faces[static_cast<std::size_t>(random.integer(0, int(m.faces.size()) - 1))];
         double u = random.uniform(), v = random.uniform();
         if (u + v > 1.0) {
             u = 1.0 - u;
             v = 1.0 - v;
         }
-        const glm::dvec3 a = m.vertices[f.vertex[0]], b = m.vertices[f.vertex[1]], c = m.vertices[f.vertex[2]];
+        const glm::dvec3 a = m.vertices[f.vertex[0]], b = m.vertices[f.vertex[1]],
+                         c = m.vertices[f.vertex[2]];
         return a + u * (b - a) + v * (c - a);
     }
     const auto points_at = [&](const std::vector<rt::Vector2Function>& points) {
@@ -225,7 +232,8 @@ inline glm::dvec3 sample_object_surface(const rt::Shape& shape, double t, Random
     if (const auto* lathe = std::get_if<rt::Lathe>(&shape)) {
         // A point of a segment's profile, turned about y.
         const auto g = rt::geometry::make_lathe(lathe->spline, points_at(lathe->points));
-        const auto& seg = g.segments[static_cast<std::size_t>(random.integer(0, int(g.segments.size()) - 1))];
+        const auto& seg =
+            g.segments[static_cast<std::size_t>(random.integer(0, int(g.segments.size()) - 1))];
         const glm::dvec2 q = seg.at(random.uniform());
         const double phi = random.uniform(0.0, 2.0 * kPi), r = std::fabs(q.x);
         return {r * std::cos(phi), q.y, r * std::sin(phi)};
@@ -236,7 +244,8 @@ inline glm::dvec3 sample_object_surface(const rt::Shape& shape, double t, Random
         const double phi = random.uniform(0.0, 2.0 * kPi);
         const int part = sor->open ? 0 : random.integer(0, 2);
         if (part == 0) {
-            const auto& seg = g.segments[static_cast<std::size_t>(random.integer(0, int(g.segments.size()) - 1))];
+            const auto& seg =
+                g.segments[static_cast<std::size_t>(random.integer(0, int(g.segments.size()) - 1))];
             const double y = random.uniform(seg.y_lo, seg.y_hi);
             const double r = std::sqrt(std::max(0.0, seg.r2(y)));
             return {r * std::cos(phi), y, r * std::sin(phi)};
@@ -258,7 +267,8 @@ inline glm::dvec3 sample_object_surface(const rt::Shape& shape, double t, Random
         const auto& data = *hf->data;
         const double floor = rt::geometry::height_field_floor(data, hf->water_level(t));
         for (int tries = 0; tries < 100000; ++tries) {
-            const int x = random.integer(0, data.width() - 2), z = random.integer(0, data.depth() - 2);
+            const int x = random.integer(0, data.width() - 2),
+                      z = random.integer(0, data.depth() - 2);
             double u = random.uniform(), v = random.uniform();
             if (u + v > 1.0) {
                 u = 1.0 - u;
@@ -286,7 +296,8 @@ inline glm::dvec3 sample_object_surface(const rt::Shape& shape, double t, Random
         const auto box = rt::geometry::object_bounds(g);
         const double span = glm::length(box.hi - box.lo);
         for (int tries = 0; tries < 100000; ++tries) {
-            const auto& c = g.components[static_cast<std::size_t>(random.integer(0, int(g.components.size()) - 1))];
+            const auto& c = g.components[static_cast<std::size_t>(
+                random.integer(0, int(g.components.size()) - 1))];
             glm::dvec3 in = c.a + random.uniform() * (c.b - c.a);
             if (!(rt::geometry::blob_field(g, in) > g.threshold)) continue;
             glm::dvec3 out = in + 2.0 * span * random.unit_vector();
@@ -309,7 +320,8 @@ inline glm::dvec3 sample_object_surface(const rt::Shape& shape, double t, Random
             radii.push_back(sweep->radii[i](t));
         }
         const auto g = rt::geometry::make_sphere_sweep(sweep->spline, centres, radii);
-        const auto& seg = g.segments[static_cast<std::size_t>(random.integer(0, int(g.segments.size()) - 1))];
+        const auto& seg =
+            g.segments[static_cast<std::size_t>(random.integer(0, int(g.segments.size()) - 1))];
         const glm::dvec4 c = seg.at(random.uniform());
         return g.origin + g.scale * (glm::dvec3(c) + std::fabs(c.w) * random.unit_vector());
     }
@@ -430,60 +442,58 @@ struct KindScene {
 
 inline const std::vector<KindScene>& kind_scenes() {
     static const std::vector<KindScene> list = {
-        {"sphere",
-         "<0.2, 0.1, 0>, 0.8",
-         "<0.3 * sin(6 * clock), 0, 0>, 0.5 + 0.3 * clock"},
-        {"box",
-         "<-0.5, -0.7, -0.4>, <0.6, 0.5, 0.3>",
+        {"sphere", "<0.2, 0.1, 0>, 0.8", "<0.3 * sin(6 * clock), 0, 0>, 0.5 + 0.3 * clock"},
+        {"box", "<-0.5, -0.7, -0.4>, <0.6, 0.5, 0.3>",
          "<-0.5, -0.7, -0.4>, <0.6 + clock, 0.5, 0.3 - 0.5 * clock>"},
         {"polygon",
          "5, <-0.5, -0.5, 0>, <0.5, -0.5, 0>, <0.6, 0.4, 0>, <-0.4, 0.5, 0>, <-0.5, -0.5, 0>",
-         "5, <-0.5, -0.5, 0>, <0.5, -0.5, 0>, <0.6 + clock, 0.4, 0>, <-0.4, 0.5, 0>, <-0.5, -0.5, 0>"},
-        {"triangle",
-         "<-0.5, 0, 0>, <0.5, 0.1, 0>, <0, 0.7, 0.3>",
+         "5, <-0.5, -0.5, 0>, <0.5, -0.5, 0>, <0.6 + clock, 0.4, 0>, <-0.4, 0.5, 0>, <-0.5, -0.5, "
+         "0>"},
+        {"triangle", "<-0.5, 0, 0>, <0.5, 0.1, 0>, <0, 0.7, 0.3>",
          "<-0.5, 0, 0>, <0.5, 0.1, clock>, <0, 0.7 - clock, 0.3>"},
         {"smooth_triangle",
          "<-0.5, 0, 0>, <0, 0, 1>, <0.5, 0.1, 0>, <0.1, 0, 1>, <0, 0.7, 0.3>, <0, 0.2, 1>",
          "<-0.5, 0, 0>, <0, 0, 1>, <0.5, 0.1, clock>, <0.1, 0, 1>, <0, 0.7, 0.3>, <0, 0.2, 1>"},
-        {"disc",
-         "<0, 0, 0>, <0.3, 1, 0.2>, 0.8, 0.2",
+        {"disc", "<0, 0, 0>, <0.3, 1, 0.2>, 0.8, 0.2",
          "<0, clock, 0>, <0.3, 1, 0.2 + clock>, 0.8 - 0.3 * clock, 0.2"},
-        {"cylinder",
-         "<0, -0.5, 0>, <0.2, 0.6, 0.1>, 0.3",
+        {"cylinder", "<0, -0.5, 0>, <0.2, 0.6, 0.1>, 0.3",
          "<0, -0.5, 0>, <0.2, 0.6 + clock, 0.1>, 0.3 + 0.2 * clock"},
-        {"cone",
-         "<0, -0.5, 0>, 0.5, <0, 0.6, 0.2>, 0.1",
+        {"cone", "<0, -0.5, 0>, 0.5, <0, 0.6, 0.2>, 0.1",
          "<0, -0.5, 0>, 0.5 - 0.2 * clock, <0, 0.6, 0.2 + clock>, 0.1"},
-        {"torus",
-         "0.7, 0.2",
-         "0.7 - 0.3 * clock, 0.2 + 0.1 * clock"},
+        {"torus", "0.7, 0.2", "0.7 - 0.3 * clock, 0.2 + 0.1 * clock"},
         {"prism",
-         "linear_sweep linear_spline -0.5, 0.5, 5, <-0.5, -0.5>, <0.5, -0.5>, <0.6, 0.4>, <-0.4, 0.5>, <-0.5, -0.5>",
-         "linear_sweep linear_spline -0.5, 0.5 + clock, 5, <-0.5, -0.5>, <0.5, -0.5>, <0.6, 0.4 + clock>, <-0.4, 0.5>, <-0.5, -0.5>"},
+         "linear_sweep linear_spline -0.5, 0.5, 5, <-0.5, -0.5>, <0.5, -0.5>, <0.6, 0.4>, <-0.4, "
+         "0.5>, <-0.5, -0.5>",
+         "linear_sweep linear_spline -0.5, 0.5 + clock, 5, <-0.5, -0.5>, <0.5, -0.5>, <0.6, 0.4 + "
+         "clock>, <-0.4, 0.5>, <-0.5, -0.5>"},
         // Two glyphs of POV-Ray's timrom.ttf (Debian's fonts-povray), one
         // with a hole; the thickness moves.
-        {"text",
-         "ttf \"timrom.ttf\" \"Ag\", 0.5, 0",
+        {"text", "ttf \"timrom.ttf\" \"Ag\", 0.5, 0",
          "ttf \"timrom.ttf\" \"Ag\", 0.3 + 0.4 * clock, 0"},
         {"lathe",
          "cubic_spline 6, <0, -0.6>, <0.5, -0.5>, <0.7, 0>, <0.4, 0.4>, <0.5, 0.7>, <0, 0.9>",
-         "cubic_spline 6, <0, -0.6>, <0.5, -0.5>, <0.7 - 0.3 * clock, 0>, <0.4, 0.4>, <0.5, 0.7 + clock>, <0, 0.9>"},
-        {"sor",
-         "6, <0.3, -0.7>, <0.4, -0.5>, <0.6, -0.1>, <0.3, 0.3>, <0.5, 0.6>, <0.6, 0.8>",
-         "6, <0.3, -0.7>, <0.4, -0.5>, <0.6, -0.1>, <0.3 + 0.2 * clock, 0.3>, <0.5, 0.6>, <0.6, 0.8>"},
+         "cubic_spline 6, <0, -0.6>, <0.5, -0.5>, <0.7 - 0.3 * clock, 0>, <0.4, 0.4>, <0.5, 0.7 + "
+         "clock>, <0, 0.9>"},
+        {"sor", "6, <0.3, -0.7>, <0.4, -0.5>, <0.6, -0.1>, <0.3, 0.3>, <0.5, 0.6>, <0.6, 0.8>",
+         "6, <0.3, -0.7>, <0.4, -0.5>, <0.6, -0.1>, <0.3 + 0.2 * clock, 0.3>, <0.5, 0.6>, <0.6, "
+         "0.8>"},
         // A closed mesh of five faces, one smooth, with an inside; its
         // triangles cannot move, so its moving case moves it whole.
         {"mesh",
          "triangle { <-0.5, -0.4, -0.4>, <0.6, -0.5, -0.3>, <0, 0.7, 0> } "
          "triangle { <0.6, -0.5, -0.3>, <0.1, -0.3, 0.6>, <0, 0.7, 0> } "
-         "smooth_triangle { <0.1, -0.3, 0.6>, <0, 0.2, 1>, <-0.5, -0.4, -0.4>, <-1, 0.2, 0>, <0, 0.7, 0>, <0, 1, 0> } "
+         "smooth_triangle { <0.1, -0.3, 0.6>, <0, 0.2, 1>, <-0.5, -0.4, -0.4>, <-1, 0.2, 0>, <0, "
+         "0.7, 0>, <0, 1, 0> } "
          "triangle { <-0.5, -0.4, -0.4>, <0.1, -0.3, 0.6>, <0.6, -0.5, -0.3> } "
-         "triangle { <-0.5, -0.4, -0.4>, <0.6, -0.5, -0.3>, <0.2, -0.45, -0.35> } inside_vector <0.1, 1, 0.2>",
+         "triangle { <-0.5, -0.4, -0.4>, <0.6, -0.5, -0.3>, <0.2, -0.45, -0.35> } inside_vector "
+         "<0.1, 1, 0.2>",
          "triangle { <-0.5, -0.4, -0.4>, <0.6, -0.5, -0.3>, <0, 0.7, 0> } "
          "triangle { <0.6, -0.5, -0.3>, <0.1, -0.3, 0.6>, <0, 0.7, 0> } "
-         "smooth_triangle { <0.1, -0.3, 0.6>, <0, 0.2, 1>, <-0.5, -0.4, -0.4>, <-1, 0.2, 0>, <0, 0.7, 0>, <0, 1, 0> } "
+         "smooth_triangle { <0.1, -0.3, 0.6>, <0, 0.2, 1>, <-0.5, -0.4, -0.4>, <-1, 0.2, 0>, <0, "
+         "0.7, 0>, <0, 1, 0> } "
          "triangle { <-0.5, -0.4, -0.4>, <0.1, -0.3, 0.6>, <0.6, -0.5, -0.3> } "
-         "triangle { <-0.5, -0.4, -0.4>, <0.6, -0.5, -0.3>, <0.2, -0.45, -0.35> } inside_vector <0.1, 1, 0.2> "
+         "triangle { <-0.5, -0.4, -0.4>, <0.6, -0.5, -0.3>, <0.2, -0.45, -0.35> } inside_vector "
+         "<0.1, 1, 0.2> "
          "translate <0.5 * clock, 0, -0.3 * clock>"},
         // Two spheres and a cylinder merged; moving: one sphere moves
         // through the others, a strength and the threshold change.
@@ -491,20 +501,19 @@ inline const std::vector<KindScene>& kind_scenes() {
          "threshold 0.6 sphere { <-0.4, 0, 0>, 0.8, 1 } sphere { <0.4, 0.1, 0>, 0.8, 1 } "
          "cylinder { <0, -0.5, 0>, <0, 0.5, 0.2>, 0.4, 1 }",
          "threshold 0.5 + 0.2 * clock sphere { <-0.9 + 0.8 * clock, 0, 0>, 0.8, 1 } "
-         "sphere { <0.4, 0.1, 0>, 0.8, 1 - 0.5 * clock } cylinder { <0, -0.5, 0>, <0, 0.5, 0.2>, 0.4, 1 }"},
+         "sphere { <0.4, 0.1, 0>, 0.8, 1 - 0.5 * clock } cylinder { <0, -0.5, 0>, <0, 0.5, 0.2>, "
+         "0.4, 1 }"},
         // A b_spline sweep of five spheres; its middle one moves and swells.
         {"sphere_sweep",
-         "b_spline 5, <-0.8, 0, 0>, 0.2, <-0.4, 0.4, 0>, 0.3, <0, 0, 0.2>, 0.35, <0.4, 0.3, 0>, 0.25, <0.8, 0, 0>, 0.2",
-         "b_spline 5, <-0.8, 0, 0>, 0.2, <-0.4, 0.4, 0>, 0.3, <0, 0.6 * clock, 0.2>, 0.25 + 0.2 * clock, "
+         "b_spline 5, <-0.8, 0, 0>, 0.2, <-0.4, 0.4, 0>, 0.3, <0, 0, 0.2>, 0.35, <0.4, 0.3, 0>, "
+         "0.25, <0.8, 0, 0>, 0.2",
+         "b_spline 5, <-0.8, 0, 0>, 0.2, <-0.4, 0.4, 0>, 0.3, <0, 0.6 * clock, 0.2>, 0.25 + 0.2 * "
+         "clock, "
          "<0.4, 0.3, 0>, 0.25, <0.8, 0, 0>, 0.2"},
-        {"superellipsoid",
-         "<0.4, 1.5>",
-         "<0.3 + 0.8 * clock, 1.2 - 0.9 * clock>"},
+        {"superellipsoid", "<0.4, 1.5>", "<0.3 + 0.8 * clock, 1.2 - 0.9 * clock>"},
         // The height_field still's 32 x 32 bump (on parse()'s include
         // path); the water level rises through it.
-        {"height_field",
-         "png \"bump.png\" smooth",
-         "png \"bump.png\" water_level 0.6 * clock"},
+        {"height_field", "png \"bump.png\" smooth", "png \"bump.png\" water_level 0.6 * clock"},
     };
     return list;
 }

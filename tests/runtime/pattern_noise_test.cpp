@@ -9,13 +9,13 @@
 // 3.6e-15 each) carried through the gradient's sum: the same operations in
 // the same order agree to rounding, a wrong table entry or corner order is
 // off by 1e-3 or more.
-#include <catch2/catch.hpp>
-
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include <catch2/catch.hpp>
 
 #include "runtime/texture/pattern/noise.hpp"
 #include "runtime/texture/pattern/pattern.hpp"
@@ -67,7 +67,8 @@ TEST_CASE("noise at lattice points is POV-Ray's, entry by entry", "[pattern][noi
     for (const auto& r : rows("lattice_dnoise.txt")) {
         INFO(r[0] << " " << r[1] << " " << r[2]);
         for (int axis = 0; axis < 3; ++axis)
-            CHECK(std::fabs(warped_gradient({r[0], r[1], r[2]}, axis, one) - r[3 + axis]) < kTolerance);
+            CHECK(std::fabs(warped_gradient({r[0], r[1], r[2]}, axis, one) - r[3 + axis]) <
+                  kTolerance);
     }
 }
 
@@ -81,7 +82,8 @@ TEST_CASE("noise, vector noise and turbulence off the lattice match POV-Ray", "[
             const pt::Octaves one{1, 0.5, 2.0};
             for (int axis = 0; axis < 3; ++axis)
                 CHECK(std::fabs(warped_gradient(p, axis, one) - r[4 + axis]) < kTolerance);
-            CHECK(std::fabs(warped_gradient(p, 0, pt::octaves_of(4, 0.6, 2.5)) - r[7]) < kTolerance);
+            CHECK(std::fabs(warped_gradient(p, 0, pt::octaves_of(4, 0.6, 2.5)) - r[7]) <
+                  kTolerance);
             // marble turbulence 0.7 octaves 5: its own turbulence, then the
             // triangle wave.
             pt::Values m;
@@ -89,8 +91,8 @@ TEST_CASE("noise, vector noise and turbulence off the lattice match POV-Ray", "[
             m.turbulence = {0.7, 0.7, 0.7};
             m.octaves = {5, 0.5, 2.0};
             m.noise_generator = generator;
-            CHECK(std::fabs(pt::evaluate(*pt::find_kind("marble"), p, m, pt::Wave::Triangle, 1.0) - r[8]) <
-                  kTolerance);
+            CHECK(std::fabs(pt::evaluate(*pt::find_kind("marble"), p, m, pt::Wave::Triangle, 1.0) -
+                            r[8]) < kTolerance);
         }
     }
 }

@@ -5,7 +5,7 @@
 // sign change on a fine grid (evaluated in __float128) must hold a reported
 // root, and whose every reported root must be a sign change or a zero of
 // the 113-bit polynomial within a few ulps.
-#include <catch2/catch.hpp>
+#include "runtime/geometry/polynomial_roots.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +13,7 @@
 #include <random>
 #include <vector>
 
-#include "runtime/geometry/polynomial_roots.hpp"
+#include <catch2/catch.hpp>
 
 using hexant::runtime::geometry::evaluate_polynomial;
 using hexant::runtime::geometry::polynomial_roots;
@@ -242,7 +242,8 @@ TEST_CASE("polynomial roots: random polynomials against a 113-bit sign scan", "[
             std::vector<double> roots;
             for (int i = 0; i < degree; ++i) {
                 if (i > 0 && trial % 3 == 0 && i % 2 == 1)
-                    roots.push_back(roots.back() + std::pow(10.0, -3.0 - 10.0 * (unit(engine) + 1.0) / 2.0));
+                    roots.push_back(roots.back() +
+                                    std::pow(10.0, -3.0 - 10.0 * (unit(engine) + 1.0) / 2.0));
                 else
                     roots.push_back(unit(engine));
             }

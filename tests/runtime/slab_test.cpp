@@ -3,9 +3,10 @@
 // along its segment is never reported as a miss (brute-force sampling of the
 // segment against point containment), including rays lying in a slab's face,
 // parallel to slabs, from far away and travelling in time.
-#include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
+
+#include <catch2/catch.hpp>
 
 #include "runtime/bounds/slab_bound.hpp"
 #include "runtime/bounds/slab_ray.hpp"
@@ -40,8 +41,8 @@ struct Random {
 TEST_CASE("slab normals: four principal, eight auxiliary of unit length", "[slab]") {
     const auto& n = slab_normals();
     for (int k = 0; k < kSlabCount; ++k) {
-        const double length = std::sqrt(n[k].x * n[k].x + n[k].y * n[k].y + n[k].z * n[k].z +
-                                         n[k].w * n[k].w);
+        const double length =
+            std::sqrt(n[k].x * n[k].x + n[k].y * n[k].y + n[k].z * n[k].z + n[k].w * n[k].w);
         CHECK(length == 1.0);
         if (k >= 4) CHECK(n[k].x == 0.5);
     }
@@ -71,8 +72,9 @@ TEST_CASE("slab bounds hold every event and box added, at every scale", "[slab]"
         for (int i = 0; i < 16; ++i) {
             const Box4 corner = box.child(i);
             REQUIRE(bound.contains((i & 1) ? corner.hi : corner.lo));
-            const Event inside(random.uniform(box.lo.x, box.hi.x), random.uniform(box.lo.y, box.hi.y),
-                               random.uniform(box.lo.z, box.hi.z), random.uniform(box.lo.w, box.hi.w));
+            const Event inside(
+                random.uniform(box.lo.x, box.hi.x), random.uniform(box.lo.y, box.hi.y),
+                random.uniform(box.lo.z, box.hi.z), random.uniform(box.lo.w, box.hi.w));
             REQUIRE(bound.contains(inside));
         }
         // A point well outside the principal box is outside.
@@ -165,7 +167,8 @@ TEST_CASE("rays lying in a slab face or touching a corner are not lost", "[slab]
     // auxiliary slab (.5,.5,.5,.5)'s face: n · d = 0.
     CHECK(SlabRay(Ray4{{2.0, 0.0, 1.0, 1.0}, {-1.0, 1.0, 0.0, 0.0}}).intersect(bound, 0.0, 10.0));
     // Through the corner (0,0,0,0) diagonally in time and space.
-    CHECK(SlabRay(Ray4{{-1.0, -1.0, -1.0, 1.0}, {1.0, 1.0, 1.0, -1.0}}).intersect(bound, 0.0, 10.0));
+    CHECK(
+        SlabRay(Ray4{{-1.0, -1.0, -1.0, 1.0}, {1.0, 1.0, 1.0, -1.0}}).intersect(bound, 0.0, 10.0));
     // A segment that ends just before the box is a miss; one that ends at
     // its face is a hit.
     const Ray4 along_x{{-2.0, 0.5, 0.5, 0.5}, {1.0, 0.0, 0.0, 0.0}};

@@ -4,13 +4,14 @@
 #include "runtime/motion/spline_bounds.hpp"
 
 #include <algorithm>
-#include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
 #include <vector>
 
-#include "runtime/time/interval.hpp"
+#include <catch2/catch.hpp>
+
 #include "runtime/motion/spline.hpp"
+#include "runtime/time/interval.hpp"
 
 using hexant::runtime::Interval;
 using hexant::runtime::Spline;

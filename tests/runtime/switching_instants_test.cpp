@@ -4,11 +4,13 @@
 // evaluation of the condition changes; for a continuous condition that is
 // within a few ulps of the exact root. And lifetimes (runtime/time/lifetime.hpp)
 // hold every double of a split exactly once.
-#include <catch2/catch.hpp>
+#include "runtime/time/switching_instants.hpp"
+
 #include <cmath>
 
+#include <catch2/catch.hpp>
+
 #include "runtime/time/lifetime.hpp"
-#include "runtime/time/switching_instants.hpp"
 #include "runtime/time/time_ops.hpp"
 
 namespace rt = hexant::runtime;
@@ -19,7 +21,9 @@ namespace {
 
 const TimeFunction t = TimeFunction::clock();
 
-double before(double x) { return rt::interval_detail::next_down(x); }
+double before(double x) {
+    return rt::interval_detail::next_down(x);
+}
 
 // Every instant is a switch of the point evaluator's truth, and the pieces
 // agree with it at their ends and middles.
@@ -42,7 +46,9 @@ void check_exact(const TimeFunction& c, const rt::TruthPieces& p, const rt::Inte
     }
 }
 
-double ulps_apart(double a, double b) { return std::fabs(a - b) / std::fabs(std::nextafter(b, 2 * b) - b); }
+double ulps_apart(double a, double b) {
+    return std::fabs(a - b) / std::fabs(std::nextafter(b, 2 * b) - b);
+}
 
 }  // namespace
 
@@ -70,7 +76,8 @@ TEST_CASE("sin(2*pi*clock) > 0.5 holds between 1/12 and 5/12", "[runtime][switch
     check_exact(c, p, range);
 }
 
-TEST_CASE("vlength(C) != 0 is false only within POV-Ray's epsilon of the zero", "[runtime][switching]") {
+TEST_CASE("vlength(C) != 0 is false only within POV-Ray's epsilon of the zero",
+          "[runtime][switching]") {
     // C = <clock - 0.5, 0, 0>: |C| != 0 is false where |clock - 0.5| < 1e-10.
     const TimeFunction x = t - 0.5;
     const TimeFunction length = TimeFunction::apply(TimeOp::Sqrt, x * x);
@@ -98,8 +105,8 @@ TEST_CASE("a step function switches at its jumps exactly", "[runtime][switching]
     CHECK(p.instants[3] == 1.0);
     check_exact(c, p, range);
     // div(floor(clock * 4), 2) = 1: on [0.5, 1).
-    const TimeFunction half = TimeFunction::apply(
-        TimeOp::Equal, TimeFunction::apply(TimeOp::IntDiv, step, 2.0), 1.0);
+    const TimeFunction half =
+        TimeFunction::apply(TimeOp::Equal, TimeFunction::apply(TimeOp::IntDiv, step, 2.0), 1.0);
     const rt::TruthPieces q = rt::split_by_truth(half, {range}, 10000);
     REQUIRE(q.instants.size() == 2);
     CHECK(q.instants[0] == 0.5);

@@ -100,7 +100,8 @@ std::vector<Contour> hand_made_contours(bool reverse_square) {
                       line({0, 1}, {0, 0})};
     if (reverse_square) {
         Contour r;
-        for (auto it = square.rbegin(); it != square.rend(); ++it) r.push_back(line(it->p2, it->p0));
+        for (auto it = square.rbegin(); it != square.rend(); ++it)
+            r.push_back(line(it->p2, it->p0));
         square = r;
     }
     const Contour hole = {line({0.25, 0.25}, {0.25, 0.75}), line({0.25, 0.75}, {0.75, 0.75}),
@@ -149,8 +150,8 @@ struct HandCase {
         const double th = g.thickness;
         if (random.uniform() < 0.4) {
             for (;;) {
-                const glm::dvec2 q = shift + scale * glm::dvec2(random.uniform(0.0, 2.75),
-                                                                random.uniform(0.0, 1.0));
+                const glm::dvec2 q =
+                    shift + scale * glm::dvec2(random.uniform(0.0, 2.75), random.uniform(0.0, 1.0));
                 if (!inside_by_polyline(contours, q)) continue;
                 const double edge = edge_distance(q);
                 if (edge < 1e-4 * scale) continue;
@@ -266,10 +267,10 @@ TEST_CASE("text geometry: hand-made square with a hole and a quadratic", "[runti
     CHECK(b.lo == glm::dvec3(0.0, 0.0, 0.0));
     CHECK(b.hi == glm::dvec3(3.5, 1.0, 0.5));
     CHECK(surface_may_meet(g, Box3{{0.4, 0.1, -1.0}, {0.45, 0.15, 1.0}}));
-    CHECK_FALSE(surface_may_meet(g, Box3{{0.4, 0.4, 0.1}, {0.6, 0.6, 0.4}}));  // in the hole
+    CHECK_FALSE(surface_may_meet(g, Box3{{0.4, 0.4, 0.1}, {0.6, 0.6, 0.4}}));    // in the hole
     CHECK_FALSE(surface_may_meet(g, Box3{{0.05, 0.05, 0.1}, {0.2, 0.2, 0.4}}));  // inside the solid
-    CHECK(surface_may_meet(g, Box3{{0.05, 0.05, 0.1}, {0.2, 0.2, 0.5}}));  // reaches the cap
-    CHECK_FALSE(surface_may_meet(g, Box3{{3.0, 0.9, 0.0}, {3.4, 1.0, 0.5}}));  // beside the curve
+    CHECK(surface_may_meet(g, Box3{{0.05, 0.05, 0.1}, {0.2, 0.2, 0.5}}));        // reaches the cap
+    CHECK_FALSE(surface_may_meet(g, Box3{{3.0, 0.9, 0.0}, {3.4, 1.0, 0.5}}));    // beside the curve
 }
 
 TEST_CASE("text geometry: contour direction, thickness <= 0, empty text", "[runtime][geometry]") {
@@ -323,8 +324,7 @@ TEST_CASE("text geometry: contour direction, thickness <= 0, empty text", "[runt
 TEST_CASE("text geometry: quadratic split at its extreme in y, inside vs polyline",
           "[runtime][geometry]") {
     // A glyph whose quadratic bulges beyond its ends in y.
-    const std::vector<Contour> contours = {
-        {line({0, 0}, {2, 0}), quad({2, 0}, {1, 3}, {0, 0})}};
+    const std::vector<Contour> contours = {{line({0, 0}, {2, 0}), quad({2, 0}, {1, 3}, {0, 0})}};
     const TextGlyph glyph = make_text_glyph(contours);
     REQUIRE(glyph.segments.size() == 3);  // the line and the quadratic's two halves
     for (const TextSegment& s : glyph.segments) {
@@ -368,8 +368,8 @@ TEST_CASE("text geometry: aimed rays at every scale, random rays, may-meet",
         const glm::dvec3 mid(sc.shift.x + 1.5 * sc.scale, sc.shift.y + 0.5 * sc.scale,
                              0.25 * sc.scale);
         CHECK(random_rays_are_finite(c.g, 3.0 * sc.scale, mid, 2000, random) > 20);
-        boxes_around_surface(c.g, [&](Random& r) { return c.sample(r); }, 3.0 * sc.scale, 400,
-                             random);
+        boxes_around_surface(
+            c.g, [&](Random& r) { return c.sample(r); }, 3.0 * sc.scale, 400, random);
     }
 }
 
@@ -448,8 +448,8 @@ struct Coverage {
 Coverage rasterize(FT_Library library, FT_Face face, unsigned glyph_index) {
     REQUIRE(FT_Load_Glyph(face, glyph_index, FT_LOAD_NO_SCALE | FT_LOAD_NO_HINTING) == 0);
     FT_Outline outline;
-    REQUIRE(FT_Outline_New(library, face->glyph->outline.n_points,
-                           face->glyph->outline.n_contours, &outline) == 0);
+    REQUIRE(FT_Outline_New(library, face->glyph->outline.n_points, face->glyph->outline.n_contours,
+                           &outline) == 0);
     REQUIRE(FT_Outline_Copy(&face->glyph->outline, &outline) == 0);
     FT_BBox box;
     FT_Outline_Get_CBox(&outline, &box);
@@ -479,7 +479,8 @@ Coverage rasterize(FT_Library library, FT_Face face, unsigned glyph_index) {
 
 }  // namespace
 
-TEST_CASE("text geometry: glyphs of POV-Ray's fonts against FreeType", "[runtime][geometry][font]") {
+TEST_CASE("text geometry: glyphs of POV-Ray's fonts against FreeType",
+          "[runtime][geometry][font]") {
     const std::filesystem::path dir = font_dir();
     if (!std::filesystem::exists(dir / "timrom.ttf")) {
         // Catch2 v2 has no SKIP: the project's way (tests/app/full_disk_test.cpp).
@@ -506,7 +507,8 @@ TEST_CASE("text geometry: glyphs of POV-Ray's fonts against FreeType", "[runtime
                 const glm::dvec2 f = (q - glyph.translation) * upem;  // font units
                 const int expected = cov.at(f.x, f.y);
                 if (expected < 0) continue;
-                const auto hit = intersect(text, Ray3{{q.x, q.y, -2.0}, {0.0, 0.0, 1.0}}, 0.0, kInf);
+                const auto hit =
+                    intersect(text, Ray3{{q.x, q.y, -2.0}, {0.0, 0.0, 1.0}}, 0.0, kInf);
                 // Another glyph may overlap this one's box.
                 bool other = false;
                 for (const TextGlyph& g2 : text.glyphs)
@@ -581,11 +583,12 @@ TEST_CASE("text geometry: glyphs of POV-Ray's fonts against FreeType", "[runtime
     }
 }
 
-TEST_CASE("text geometry: a 20-glyph string, bounds, may-meet, speed", "[runtime][geometry][font]") {
+TEST_CASE("text geometry: a 20-glyph string, bounds, may-meet, speed",
+          "[runtime][geometry][font]") {
     const std::filesystem::path dir = font_dir();
     if (!std::filesystem::exists(dir / "timrom.ttf")) {
         WARN("not run: POV-Ray's fonts not found in " << dir.string()
-                                                       << " (set HEXANT_POV_FONT_DIR)");
+                                                      << " (set HEXANT_POV_FONT_DIR)");
         return;
     }
     const auto font = objects::TrueTypeFont::load(dir / "timrom.ttf");

@@ -4,9 +4,10 @@
 // another's numbers, nor a time-dependent finish a frozen one.
 #include "runtime/texture/texture_evaluator.hpp"
 
-#include <catch2/catch.hpp>
 #include <memory>
 #include <vector>
+
+#include <catch2/catch.hpp>
 
 namespace rt = hexant::runtime;
 

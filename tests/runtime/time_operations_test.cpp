@@ -1,11 +1,11 @@
 // Time functions through every operation: folding of constants, symbolic
 // functions of clock, and POV-Ray's meaning of each operator.
-#include <catch2/catch.hpp>
-
 #include <bit>
 #include <cmath>
 #include <cstdint>
 #include <vector>
+
+#include <catch2/catch.hpp>
 
 #include "runtime/motion/spline.hpp"
 #include "runtime/time/time_function.hpp"
@@ -19,12 +19,15 @@ using hexant::runtime::TimeOp;
 namespace {
 
 // Arguments that are valid for every operation (asin/acos/log/sqrt ...).
-double argument(int i, double t) { return 0.3 + 0.2 * i + 0.1 * t; }
+double argument(int i, double t) {
+    return 0.3 + 0.2 * i + 0.1 * t;
+}
 
 }  // namespace
 
 TEST_CASE("every operation folds constants and evaluates symbolically alike", "[time]") {
-    for (int k = static_cast<int>(TimeOp::Negate); k <= static_cast<int>(TimeOp::Conditional); ++k) {
+    for (int k = static_cast<int>(TimeOp::Negate); k <= static_cast<int>(TimeOp::Conditional);
+         ++k) {
         const TimeOp op = static_cast<TimeOp>(k);
         INFO(hexant::runtime::name(op));
         const int n = arity(op);
@@ -45,7 +48,8 @@ TEST_CASE("every operation folds constants and evaluates symbolically alike", "[
                                         : TimeFunction::apply(op, x, y, z);
         CHECK(f.depends_on_time());
         for (double time : {0.0, 0.25, 0.5, 1.0, 2.5}) {
-            const double want = apply_op(op, argument(0, time), argument(1, time), argument(2, time));
+            const double want =
+                apply_op(op, argument(0, time), argument(1, time), argument(2, time));
             const double got = f(time);
             CHECK(got == Approx(want).margin(1e-12));
         }
@@ -56,13 +60,13 @@ TEST_CASE("POV-Ray's comparisons and truth", "[time]") {
     CHECK(apply_op(TimeOp::Equal, 1.0, 1.0 + 1e-11) == 1.0);  // = has a tolerance
     CHECK(apply_op(TimeOp::Equal, 1.0, 1.0 + 1e-9) == 0.0);
     CHECK(apply_op(TimeOp::NotEqual, 1.0, 1.0 + 1e-11) == 0.0);
-    CHECK(apply_op(TimeOp::Less, 1.0, 1.0 + 1e-11) == 1.0);   // < has none
+    CHECK(apply_op(TimeOp::Less, 1.0, 1.0 + 1e-11) == 1.0);  // < has none
     CHECK(apply_op(TimeOp::Not, 0.5) == 0.0);
     CHECK(apply_op(TimeOp::And, 1.0, 1e-11) == 0.0);
     CHECK(apply_op(TimeOp::Or, 0.0, -2.0) == 1.0);
-    CHECK(apply_op(TimeOp::Int, -1.5) == -1.0);      // int truncates
+    CHECK(apply_op(TimeOp::Int, -1.5) == -1.0);  // int truncates
     CHECK(apply_op(TimeOp::Floor, -1.5) == -2.0);
-    CHECK(apply_op(TimeOp::Mod, -7.0, 3.0) == -1.0); // fmod's sign
+    CHECK(apply_op(TimeOp::Mod, -7.0, 3.0) == -1.0);  // fmod's sign
     CHECK(apply_op(TimeOp::IntDiv, -7.0, 2.0) == -3.0);
     CHECK(apply_op(TimeOp::Log10, 100.0) == Approx(2.0));
     CHECK(apply_op(TimeOp::Select, -1.0, 5.0, 6.0) == 5.0);
@@ -129,8 +133,9 @@ TEST_CASE("a time function holds any double, and counts its node's owners", "[ti
     }
     // A signalling NaN with the node's tag and a plausible address in its
     // payload, and the quiet NaN arithmetic makes.
-    for (const std::uint64_t bits : {std::uint64_t(0x7FF4000012345678), std::uint64_t(0x7FF4000000000000),
-                                     std::bit_cast<std::uint64_t>(std::sqrt(-1.0))}) {
+    for (const std::uint64_t bits :
+         {std::uint64_t(0x7FF4000012345678), std::uint64_t(0x7FF4000000000000),
+          std::bit_cast<std::uint64_t>(std::sqrt(-1.0))}) {
         const TimeFunction f(std::bit_cast<double>(bits));
         CHECK(f.is_constant());
         CHECK(f.node() == nullptr);

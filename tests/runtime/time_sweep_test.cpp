@@ -14,9 +14,10 @@
 #include "runtime/bounds/time_sweep.hpp"
 
 #include <array>
-#include <catch2/catch.hpp>
 #include <string>
 #include <vector>
+
+#include <catch2/catch.hpp>
 
 #include "object_test_support.hpp"
 #include "runtime/bounds/swept_bound.hpp"
@@ -236,13 +237,15 @@ TEST_CASE("a sweep keeps 12 bytes a piece: chords share their ends, still pieces
     // six 16-bit steps each.
     const Parsed orbit =
         parse("sphere { <5, 0, 0>, 0.1 rotate y * 1440 * clock rotate <30, 0, 20> }\n");
-    const rt::TimeSweep chords = rt::TimeSweep::of(*orbit.objects.front(), rt::Interval(0.0, 1.0), 4);
+    const rt::TimeSweep chords =
+        rt::TimeSweep::of(*orbit.objects.front(), rt::Interval(0.0, 1.0), 4);
     REQUIRE(chords.depth() == 4);
     CHECK(chords.bytes() == header + 12 * (16 + 1));
     // A deformed object has no chord bound: its pieces are boxes held
     // still, six steps each.
-    const Parsed twisted = parse("sphere { <1, 0, 0>, 0.5 translate <4 * clock, 0, 0> "
-                                 "twist <0, 1, 0>, 90 * clock }\n");
+    const Parsed twisted = parse(
+        "sphere { <1, 0, 0>, 0.5 translate <4 * clock, 0, 0> "
+        "twist <0, 1, 0>, 90 * clock }\n");
     const rt::TimeSweep boxes =
         rt::TimeSweep::of(*twisted.objects.front(), rt::Interval(0.0, 1.0), 3);
     REQUIRE(boxes.depth() > 0);

@@ -5,16 +5,17 @@
 // matches finite differences where the function is smooth.
 #include "runtime/time/time_tape.hpp"
 
-#include <catch2/catch.hpp>
 #include <cmath>
 #include <memory>
 #include <random>
 #include <vector>
 
+#include <catch2/catch.hpp>
+
+#include "runtime/motion/spline.hpp"
 #include "runtime/time/compiled_function.hpp"
 #include "runtime/time/dual.hpp"
 #include "runtime/time/interval.hpp"
-#include "runtime/motion/spline.hpp"
 #include "runtime/time/time_function.hpp"
 #include "runtime/time/time_ops.hpp"
 #include "runtime/time/time_ops_generic.hpp"

@@ -41,11 +41,10 @@
 // rotate_inverse = -0.2623107749, 2.2979853471, 2.9411658236
 // vaxis_rotate = 2.1276474699, 0.8723525301, 2.9516296019
 // vinv_transform = -0.7253958041, 3.4212967543, -3.1240564838
-#include <catch2/catch.hpp>
-
-#include <glm/vec4.hpp>
-
 #include "runtime/motion/transform.hpp"
+
+#include <catch2/catch.hpp>
+#include <glm/vec4.hpp>
 
 using namespace hexant::runtime;
 
@@ -130,10 +129,10 @@ TEST_CASE("a rotation driven by clock is evaluated at each time", "[transform]")
     // rotate y*360*clock at clock 0.25 is rotate <0, 90, 0>.
     TransformStep s;
     s.kind = TransformKind::Rotate;
-    s.vector = Vector3Function{{TimeFunction(0.0),
-                                TimeFunction::apply(TimeOp::Multiply, TimeFunction(360.0),
-                                                    TimeFunction::clock()),
-                                TimeFunction(0.0)}};
+    s.vector = Vector3Function{
+        {TimeFunction(0.0),
+         TimeFunction::apply(TimeOp::Multiply, TimeFunction(360.0), TimeFunction::clock()),
+         TimeFunction(0.0)}};
     Transform t;
     t.append(s);
     CHECK(t.depends_on_time());

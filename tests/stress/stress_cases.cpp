@@ -9,7 +9,6 @@
 //
 // HEXANT_STRESS_RAYS=N runs N rays per case instead of 1500 (the long run:
 // README.md, "What hexant guarantees numerically").
-#include <catch2/catch.hpp>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -19,6 +18,8 @@
 #include <random>
 #include <string>
 #include <vector>
+
+#include <catch2/catch.hpp>
 
 #include "language/interpreter.hpp"
 #include "runtime/geometry/curved_path_root.hpp"
@@ -40,9 +41,9 @@ int rays_per_case() {
 }
 
 struct Case {
-    std::string sdl;        // objects only; a camera is added for the render
+    std::string sdl;  // objects only; a camera is added for the render
     std::string camera = "camera { location <0, 1, -8> look_at 0 }\n";
-    double shutter = 1.0;   // of each frame's clock step
+    double shutter = 1.0;  // of each frame's clock step
     int frames = 4;
     bool cyclic = false;
 };
@@ -62,12 +63,13 @@ rt::SceneDescription parse(const Case& c) {
 struct Work {
     double tests_per_ray = 0.0;  // bound and object tests of the spacetime mode
     int hits = 0;
-    double ns_per_ray = 0.0;     // spacetime first hits, timed apart; printed, never asserted
-    double maps_per_ray = 0.0;   // points and boxes through a deformation in that pass (asserted)
+    double ns_per_ray = 0.0;    // spacetime first hits, timed apart; printed, never asserted
+    double maps_per_ray = 0.0;  // points and boxes through a deformation in that pass (asserted)
 };
 
 // The box an object occupies at one instant (nothing for unbounded ones).
-std::optional<rt::Box4> box_at(const rt::IntelligentObject& object, const rt::Box4& root, double t) {
+std::optional<rt::Box4> box_at(const rt::IntelligentObject& object, const rt::Box4& root,
+                               double t) {
     if (!object.bounded()) return std::nullopt;
     rt::Box4 region = root;
     region.lo.w = region.hi.w = t;
@@ -77,7 +79,8 @@ std::optional<rt::Box4> box_at(const rt::IntelligentObject& object, const rt::Bo
     for (const auto& b : bounds) {
         if (b.is_empty()) continue;
         const rt::Box4 one = b.box();
-        if (!box) box = one;
+        if (!box)
+            box = one;
         else
             for (int i = 0; i < 4; ++i) {
                 box->lo[i] = std::min(box->lo[i], one.lo[i]);
@@ -158,8 +161,8 @@ Work check_case(const Case& c) {
                 origin = aim - 3.0 * reach * d;
                 break;
             default:  // in a cell wall of the first three levels
-                aim[i % 3] = root.lo[i % 3] +
-                             (root.hi[i % 3] - root.lo[i % 3]) * double(1 + i % 7) / 8.0;
+                aim[i % 3] =
+                    root.lo[i % 3] + (root.hi[i % 3] - root.lo[i % 3]) * double(1 + i % 7) / 8.0;
                 d = in_plane(i % 3);
                 origin = aim - 3.0 * reach * d;
                 break;
@@ -187,15 +190,15 @@ Work check_case(const Case& c) {
     }
     // No curved-path search gave up at its limit of pieces (a miss by fiat).
     CHECK(rt::curved_path_give_ups() == give_ups);
-    result.tests_per_ray =
-        double(b.counters.bound_tests + b.counters.object_tests) / double(count);
+    result.tests_per_ray = double(b.counters.bound_tests + b.counters.object_tests) / double(count);
     // The spacetime mode's first hits again, alone: its deformation maps
     // counted, and timed (printed only).
     const std::uint64_t maps = rt::this_thread_work.deformation_maps;
     const auto start = std::chrono::steady_clock::now();
     for (const rt::Ray4& ray : rays) (void)spacetime->first_hit(ray, 0.0, kInf, b);
-    result.ns_per_ray = std::chrono::duration<double, std::nano>(
-                            std::chrono::steady_clock::now() - start).count() / double(count);
+    result.ns_per_ray =
+        std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count() /
+        double(count);
     result.maps_per_ray = double(rt::this_thread_work.deformation_maps - maps) / double(count);
 
     // A small render: nothing NaN or Inf reaches a pixel.
@@ -245,10 +248,11 @@ double tame_work() {
 void run(const Case& c) {
     const Work w = check_case(c);
     if (std::getenv("HEXANT_STRESS_VERBOSE"))
-        std::printf("%s: %d of %d rays hit, %.2f tests per ray (tame %.2f), %.0f ns per ray, "
-                    "%.1f deformation maps per ray\n",
-                    Catch::getResultCapture().getCurrentTestName().c_str(), w.hits,
-                    rays_per_case(), w.tests_per_ray, tame_work(), w.ns_per_ray, w.maps_per_ray);
+        std::printf(
+            "%s: %d of %d rays hit, %.2f tests per ray (tame %.2f), %.0f ns per ray, "
+            "%.1f deformation maps per ray\n",
+            Catch::getResultCapture().getCurrentTestName().c_str(), w.hits, rays_per_case(),
+            w.tests_per_ray, tame_work(), w.ns_per_ray, w.maps_per_ray);
     INFO("tests per ray " << w.tests_per_ray << ", tame " << tame_work() << ", hits " << w.hits);
     CHECK(w.hits > 0);
     CHECK(w.tests_per_ray <= kWorkFactor * tame_work());

@@ -11,14 +11,13 @@
 // ThreadSanitizer here, hides its own synchronisation from it, so the
 // renderer's TBB threads give false reports; the builds before the race
 // run on one thread).
-#include <catch2/catch.hpp>
+#include <atomic>
 #include <cmath>
 #include <string>
+#include <thread>
 #include <vector>
 
-#include <atomic>
-#include <thread>
-
+#include <catch2/catch.hpp>
 #include <tbb/global_control.h>
 
 #include "../runtime/object_test_support.hpp"
@@ -80,7 +79,7 @@ TEST_CASE("lazy and eager builds, both criteria and every bound style make the s
         int frame;
     };
     // A frame of each where things move fast or bounce.
-    const Example examples[] = {{"atom", 22}, {"bounce", 4}, {"dino", 33},
+    const Example examples[] = {{"atom", 22},   {"bounce", 4},  {"dino", 33},
                                 {"twister", 5}, {"glider", 12}, {"spinner", 1}};
     for (const Example& e : examples) {
         INFO("example " << e.name << " frame " << e.frame);
@@ -105,9 +104,8 @@ TEST_CASE("a cold lazy hierarchy built by many threads at once gives one thread'
     // Many small moving objects, so that many cells are built while the
     // threads race through the first rays.
     const auto scene = example("swarm", 48, {"N=300"});
-    const tr::Image reference =
-        render(scene, options(tr::Criterion::Cost, tr::BuildKind::Eager, tr::BoundStyle::Auto), 3,
-               2, 1);
+    const tr::Image reference = render(
+        scene, options(tr::Criterion::Cost, tr::BuildKind::Eager, tr::BoundStyle::Auto), 3, 2, 1);
     for (int run = 0; run < 12; ++run) {
         INFO("run " << run);
         tr::BuildOptions lazy = options(run % 2 ? tr::Criterion::Paper : tr::Criterion::Cost,
@@ -180,8 +178,10 @@ TEST_CASE("threads racing through a cold lazy hierarchy find what one thread fin
     }
 }
 
-TEST_CASE("a renderer built for some frames' time gives the whole animation's images, and "
-          "refuses other frames", "[tracer][build]") {
+TEST_CASE(
+    "a renderer built for some frames' time gives the whole animation's images, and "
+    "refuses other frames",
+    "[tracer][build]") {
     const auto scene = example("atom", 32);
     tr::RenderSettings whole;
     whole.samples_per_pixel = 2;
@@ -196,8 +196,10 @@ TEST_CASE("a renderer built for some frames' time gives the whole animation's im
     CHECK_THROWS_AS(tr::Renderer(scene, outside), std::out_of_range);
 }
 
-TEST_CASE("a lazy hierarchy lets go of the slabs of frames done: memory stays a frame's, the "
-          "images stay the same, in any order of frames", "[tracer][lazy]") {
+TEST_CASE(
+    "a lazy hierarchy lets go of the slabs of frames done: memory stays a frame's, the "
+    "images stay the same, in any order of frames",
+    "[tracer][lazy]") {
     // Enough spheres that nodes fill many of the arena's 64 KB blocks.
     const auto scene = example("swarm", 32, {"N=1500"});
     tr::RenderSettings settings;
@@ -221,7 +223,8 @@ TEST_CASE("a lazy hierarchy lets go of the slabs of frames done: memory stays a 
     lazy.measure_memory();
     // The most a lazy hierarchy held at once: about a frame's slabs (two at
     // a frame's start, the next not yet let go of) out of the animation's.
-    INFO("lazy " << lazy.counters().node_bytes << " B, eager " << eager.counters().node_bytes << " B");
+    INFO("lazy " << lazy.counters().node_bytes << " B, eager " << eager.counters().node_bytes
+                 << " B");
     CHECK(lazy.counters().node_bytes * 4 < eager.counters().node_bytes);
     // A full build counts each slab once, however often it was built.
     eager.count_full_hierarchy();
@@ -236,8 +239,8 @@ TEST_CASE("a swarm priced from a sample makes the same images, lazy or eager, ei
           "[tracer][build]") {
     const auto scene = example("swarm", 40, {"N=6000"});
     REQUIRE(scene.objects.size() > 4096);
-    const tr::Image reference =
-        render(scene, options(tr::Criterion::Cost, tr::BuildKind::Lazy, tr::BoundStyle::Auto), 5, 2);
+    const tr::Image reference = render(
+        scene, options(tr::Criterion::Cost, tr::BuildKind::Lazy, tr::BoundStyle::Auto), 5, 2);
     for (const auto criterion : {tr::Criterion::Cost, tr::Criterion::Paper})
         for (const auto build : {tr::BuildKind::Lazy, tr::BuildKind::Eager}) {
             INFO("criterion " << int(criterion) << " build " << int(build));

@@ -4,8 +4,9 @@
 // short axis ever thinner, and a ray crossing that axis crossed 2^depth
 // cells (fuzz_found/flat_cells*.pov: over 100 s and gigabytes for an 8 by
 // 8 frame at the default depth 24).
-#include <catch2/catch.hpp>
 #include <string>
+
+#include <catch2/catch.hpp>
 
 #include "language/interpreter.hpp"
 #include "tracer/renderer.hpp"
@@ -21,7 +22,9 @@ hexant::runtime::SceneDescription flat_scene(double width) {
     const std::string text =
         "camera { location <0, 1, -6> look_at <0, 2, 0> }\n"
         "light_source { <-5, 9, -7>, rgb 1 }\n"
-        "box { <-" + w + ", 0, -" + w + ">, <" + w + ", 3, 0.45> pigment { rgb 0.5 } }\n"
+        "box { <-" +
+        w + ", 0, -" + w + ">, <" + w +
+        ", 3, 0.45> pigment { rgb 0.5 } }\n"
         "#for (I, 0, 63)\n"
         "  box { <mod(I, 8) - 4, 0, div(I, 8) - 4>, <mod(I, 8) - 3.6, 3, div(I, 8) - 3.6>\n"
         "        pigment { rgb 1 } }\n"
@@ -48,7 +51,8 @@ tr::Counters render_counters(const hexant::runtime::SceneDescription& scene, int
 
 }  // namespace
 
-TEST_CASE("a ray through a flat scene crosses a few cells a level, not 2^depth", "[tracer][cells]") {
+TEST_CASE("a ray through a flat scene crosses a few cells a level, not 2^depth",
+          "[tracer][cells]") {
     // 10^12 wide and 3 high; at depth 16 halving every axis gave slices
     // 3 / 2^16 high. With cells near cubes, each of the 64 rays (and its
     // shadow ray) meets a bounded number of cells a level: allow 8 a level.

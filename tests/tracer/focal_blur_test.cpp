@@ -1,12 +1,12 @@
 // POV-Ray's focal blur (tracer/focal_blur.hpp): lens points fill the disc
 // of radius 0.5 evenly, and every ray through a screen point meets the
 // others on the plane in focus.
-#include <catch2/catch.hpp>
+#include "tracer/focal_blur.hpp"
+
 #include <cmath>
 
+#include <catch2/catch.hpp>
 #include <glm/geometric.hpp>
-
-#include "tracer/focal_blur.hpp"
 
 namespace tr = hexant::tracer;
 
@@ -25,7 +25,8 @@ TEST_CASE("lens points fill the disc of radius 0.5 evenly", "[tracer][camera]") 
     CHECK(double(inner) / total == Approx(0.25).margin(0.01));
 }
 
-TEST_CASE("focal blur's rays through one screen point meet on the plane in focus", "[tracer][camera]") {
+TEST_CASE("focal blur's rays through one screen point meet on the plane in focus",
+          "[tracer][camera]") {
     hexant::runtime::CameraFrame camera;
     camera.location = {1, 2, -5};
     camera.direction = {0, 0, 2};
@@ -37,7 +38,8 @@ TEST_CASE("focal blur's rays through one screen point meet on the plane in focus
     // Where the pinhole ray through this screen point meets the plane 6
     // along the view: every lens ray passes there.
     const glm::dvec3 focus = camera.location + screen * (6.0 / 2.0);
-    for (const glm::dvec2 lens : {glm::dvec2(0.5, 0.0), glm::dvec2(-0.3, 0.4), glm::dvec2(0.0, -0.5)}) {
+    for (const glm::dvec2 lens :
+         {glm::dvec2(0.5, 0.0), glm::dvec2(-0.3, 0.4), glm::dvec2(0.0, -0.5)}) {
         const tr::CameraRay ray = tr::focal_blur_ray(camera, screen, lens);
         // The eye moved across the view by up to aperture / 4.
         CHECK(std::fabs(ray.origin.z - camera.location.z) < 1e-12);

@@ -3,13 +3,15 @@
 // arithmetic, the same image and estimate for any thread count, and the
 // estimate against the true RMSE of the frame against a reference of many
 // more samples.
-#include <catch2/catch.hpp>
+#include "tracer/frame_estimate.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
 
+#include <catch2/catch.hpp>
+
 #include "language/interpreter.hpp"
-#include "tracer/frame_estimate.hpp"
 #include "tracer/renderer.hpp"
 #include "tracer/sample_pattern.hpp"
 
@@ -63,13 +65,15 @@ Rendered render(const hexant::runtime::SceneDescription& scene, int spp, int set
 double rmse(const tr::Image& a, const tr::Image& b) {
     REQUIRE(a.rgb.size() == b.rgb.size());
     double sum = 0.0;
-    for (std::size_t i = 0; i < a.rgb.size(); ++i) sum += double(a.rgb[i] - b.rgb[i]) * (a.rgb[i] - b.rgb[i]);
+    for (std::size_t i = 0; i < a.rgb.size(); ++i)
+        sum += double(a.rgb[i] - b.rgb[i]) * (a.rgb[i] - b.rgb[i]);
     return std::sqrt(sum / double(a.rgb.size()));
 }
 
 }  // namespace
 
-TEST_CASE("a frame estimate sums its squared errors over a fixed grid of tiles", "[tracer][estimate]") {
+TEST_CASE("a frame estimate sums its squared errors over a fixed grid of tiles",
+          "[tracer][estimate]") {
     // 20 x 18 pixels: tiles of 16 at x 0, 16 and y 0, 16; one pixel of
     // squared error 4 in the tile at (16, 16), the rest 0.
     std::vector<double> squared(20 * 18, 0.0);
@@ -93,7 +97,8 @@ TEST_CASE("the second sample set's seed is none that --seed gives", "[tracer][es
     }
 }
 
-TEST_CASE("two sample sets give the same image and estimate on 1, 2 and 8 threads", "[tracer][estimate]") {
+TEST_CASE("two sample sets give the same image and estimate on 1, 2 and 8 threads",
+          "[tracer][estimate]") {
     const auto scene = parse_scene();
     const Rendered one = render(scene, 4, 2, 1);
     REQUIRE(one.estimate);
@@ -198,8 +203,9 @@ TEST_CASE("adaptive sampling gives the same image, estimate and samples on 1, 2 
     }
 }
 
-TEST_CASE("a tile's rounds are the uniform render's samples: an unreachable target is the uniform image",
-          "[tracer][estimate][adaptive]") {
+TEST_CASE(
+    "a tile's rounds are the uniform render's samples: an unreachable target is the uniform image",
+    "[tracer][estimate][adaptive]") {
     const auto scene = parse_adaptive_scene();
     // Target far below any tile's error: every tile doubles to the ceiling
     // and takes exactly the uniform render's samples, in the same order.
@@ -240,8 +246,8 @@ TEST_CASE("adaptive sampling reaches its target with fewer samples than uniform 
         // is worse: the adaptive sampler put them where the error was.
         const int even = 2 * int(std::ceil(mean / 2.0));
         const double uniform = rmse(render(scene, even, 2).image, reference);
-        INFO("target " << target << " true " << truth << " estimated " << a.estimate.rmse << " mean spp " << mean
-                       << " uniform at " << even << ": " << uniform);
+        INFO("target " << target << " true " << truth << " estimated " << a.estimate.rmse
+                       << " mean spp " << mean << " uniform at " << even << ": " << uniform);
         CHECK(truth <= 1.2 * target);
         CHECK(uniform > truth);
     }

@@ -5,11 +5,12 @@
 // compare did (mean, RMS, worst pixel, failing and warning pixels).
 #include "image/image_format.hpp"
 
-#include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
+
+#include <catch2/catch.hpp>
 
 #include "tracer/gif_animation.hpp"
 #include "tracer/image_compare.hpp"
@@ -78,9 +79,7 @@ TEST_CASE("a name of no format, a damaged file and a file of no format are error
         fs::resize_file(cut, fs::file_size(cut) / 2);
         CHECK_THROWS_WITH(hexant::image::read_stored_image(cut), Catch::Contains(cut.string()));
     }
-    {
-        std::ofstream(folder / "text.png") << "not an image at all";
-    }
+    { std::ofstream(folder / "text.png") << "not an image at all"; }
     CHECK_THROWS_WITH(hexant::image::read_stored_image(folder / "text.png"),
                       Catch::Contains("text.png") && Catch::Contains("not a .png, .exr file"));
     CHECK_THROWS_WITH(hexant::image::read_stored_image(folder / "missing.png"),
@@ -121,8 +120,7 @@ TEST_CASE("a comparison measures mean, RMS, worst pixel, failing and warning pix
     for (int c = 0; c < 3; ++c) b.rgb[(0 * 4 + 1) * 3 + c] = 0.375f;
     tr::write_image(a, folder / "a.exr");
     tr::write_image(b, folder / "b.exr");
-    const tr::ImageDifference d =
-        tr::compare_images(folder / "a.exr", folder / "b.exr", 0.25, 0.1);
+    const tr::ImageDifference d = tr::compare_images(folder / "a.exr", folder / "b.exr", 0.25, 0.1);
     CHECK(d.pixels == 8);
     CHECK(d.failing == 1);
     CHECK(d.warning == 2);
@@ -140,8 +138,7 @@ TEST_CASE("a comparison measures mean, RMS, worst pixel, failing and warning pix
     for (float& v : white.rgb) v = 1.0f;
     tr::write_image(grey, folder / "grey.png");
     tr::write_image(white, folder / "white.png");
-    const double stored =
-        tr::compare_images(folder / "grey.png", folder / "white.png", 1, 1).max;
+    const double stored = tr::compare_images(folder / "grey.png", folder / "white.png", 1, 1).max;
     const double linear =
         tr::compare_images(folder / "grey.png", folder / "white.png", 1, 1, tr::ImageSpace::Linear)
             .max;

@@ -2,10 +2,11 @@
 // a branch on clock: a blurred frame that holds a switching instant shows
 // each side for its share of the shutter, the three modes agree, and
 // lights that shine part of the time light only then.
-#include <catch2/catch.hpp>
 #include <cmath>
 #include <string>
 #include <utility>
+
+#include <catch2/catch.hpp>
 
 #include "language/interpreter.hpp"
 #include "tracer/renderer.hpp"
@@ -48,7 +49,9 @@ std::pair<tr::Image, tr::Image> first_and_last(const std::string& text) {
 // `at`, a black background before.
 std::string switching_scene(double at) {
     return "camera { location <0, 0, -5> look_at 0 }\n"
-           "#if (clock > " + std::to_string(at) + ")\n"
+           "#if (clock > " +
+           std::to_string(at) +
+           ")\n"
            "  box { <-10, -10, 0>, <10, 10, 1> pigment { rgb 1 } finish { ambient 1 diffuse 0 } }\n"
            "#end\n";
 }
@@ -142,9 +145,9 @@ difference {
     auto scene = parse(text);
     scene.animation.shutter = 0.0;
     const int cx = sphere_only.width / 2, cy = sphere_only.height / 2;
-    CHECK(sphere_only.at(cx, cy).x == 1.0f);         // the sphere
-    CHECK(sphere_only.at(cx / 2, cy).x == 0.0f);     // nothing else
-    CHECK(box_less_sphere.at(cx / 2, cy).x == 1.0f); // the box
-    CHECK(box_less_sphere.at(cx, cy).x == 1.0f);     // the hole's floor, inside the box
+    CHECK(sphere_only.at(cx, cy).x == 1.0f);          // the sphere
+    CHECK(sphere_only.at(cx / 2, cy).x == 0.0f);      // nothing else
+    CHECK(box_less_sphere.at(cx / 2, cy).x == 1.0f);  // the box
+    CHECK(box_less_sphere.at(cx, cy).x == 1.0f);      // the hole's floor, inside the box
     CHECK(render(scene, tr::Mode::Brute, 2).rgb == render(scene, tr::Mode::Spacetime, 2).rgb);
 }

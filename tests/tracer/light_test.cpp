@@ -3,14 +3,14 @@
 // cylinder's beam, fade, and the area light's grid: its rows' weights as
 // POV-Ray's full subdivision gives them, jitter within cells, the circular
 // grid's disc and orient's axes across the light's ray.
-#include <catch2/catch.hpp>
+#include "tracer/light.hpp"
+
 #include <cmath>
 #include <map>
 #include <numbers>
 
+#include <catch2/catch.hpp>
 #include <glm/geometric.hpp>
-
-#include "tracer/light.hpp"
 
 namespace tr = hexant::tracer;
 namespace rt = hexant::runtime;
@@ -31,7 +31,8 @@ double smooth_step(double low, double high, double x) {
 
 }  // namespace
 
-TEST_CASE("a spotlight lights its cone, steps smoothly to its falloff and dims by tightness", "[tracer][light]") {
+TEST_CASE("a spotlight lights its cone, steps smoothly to its falloff and dims by tightness",
+          "[tracer][light]") {
     rt::LightRecord r = light_at({0, 10, 0});
     r.kind = rt::LightKind::Spotlight;
     r.point_at = rt::Vector3Function{{0.0, 0.0, 0.0}};
@@ -46,13 +47,15 @@ TEST_CASE("a spotlight lights its cone, steps smoothly to its falloff and dims b
     const auto rad = [](double d) { return std::cos(d * std::numbers::pi / 180.0); };
     CHECK(at_angle(0.0) == Approx(1.0));
     CHECK(at_angle(10.0) == Approx(std::pow(rad(10.0), 3.0)));
-    CHECK(at_angle(30.0) == Approx(std::pow(rad(30.0), 3.0) * smooth_step(rad(40.0), rad(20.0), rad(30.0))));
+    CHECK(at_angle(30.0) ==
+          Approx(std::pow(rad(30.0), 3.0) * smooth_step(rad(40.0), rad(20.0), rad(30.0))));
     CHECK(at_angle(45.0) == 0.0);
     // Behind the light: dark.
     CHECK(light.attenuation({0, 20, 0}, light.ray_from({0, 20, 0}, 0.0), 0.0) == 0.0);
 }
 
-TEST_CASE("a cylinder light is a beam along its axis, parallel, and dark behind", "[tracer][light]") {
+TEST_CASE("a cylinder light is a beam along its axis, parallel, and dark behind",
+          "[tracer][light]") {
     rt::LightRecord r = light_at({0, 10, 0});
     r.kind = rt::LightKind::Cylinder;
     r.parallel = true;
@@ -67,7 +70,7 @@ TEST_CASE("a cylinder light is a beam along its axis, parallel, and dark behind"
         CHECK(ray.direction.y == Approx(1.0));  // straight up the beam
         CHECK(ray.depth == Approx(10.0));       // to the plane through the light
         const double d = 1.0 - off / 2.0;
-        const double expected = off >= 2.0   ? 0.0
+        const double expected = off >= 2.0  ? 0.0
                                 : off > 1.0 ? d * d * smooth_step(0.0, 0.5, d)
                                             : d * d;
         CHECK(light.attenuation(p, ray, 0.0) == Approx(expected).margin(1e-12));
@@ -82,11 +85,13 @@ TEST_CASE("fade_distance and fade_power dim a light by 2 / (1 + (d / D)^P)", "[t
     const tr::ShadedLight light(r);
     for (const double d : {1.0, 2.0, 6.0}) {
         const glm::dvec3 p(d, 0.0, 0.0);
-        CHECK(light.attenuation(p, light.ray_from(p, 0.0), 0.0) == Approx(2.0 / (1.0 + (d / 2) * (d / 2))));
+        CHECK(light.attenuation(p, light.ray_from(p, 0.0), 0.0) ==
+              Approx(2.0 / (1.0 + (d / 2) * (d / 2))));
     }
     // A fade power of 0 (only a distance given) fades nothing, as POV-Ray.
     r.fade_power = 0.0;
-    CHECK(tr::ShadedLight(r).attenuation({6, 0, 0}, tr::ShadedLight(r).ray_from({6, 0, 0}, 0.0), 0.0) == 1.0);
+    CHECK(tr::ShadedLight(r).attenuation({6, 0, 0}, tr::ShadedLight(r).ray_from({6, 0, 0}, 0.0),
+                                         0.0) == 1.0);
 }
 
 TEST_CASE("an area light's grid rows weigh as POV-Ray's full subdivision", "[tracer][light]") {
@@ -95,13 +100,15 @@ TEST_CASE("an area light's grid rows weigh as POV-Ray's full subdivision", "[tra
     // 1/8 of the time (the middle rows shared by two quarters at each
     // subdivision), each of 4 a quarter.
     rt::LightRecord r = light_at({0, 5, 0});
-    r.area = rt::AreaLight{rt::Vector3Function{{2.0, 0.0, 0.0}}, rt::Vector3Function{{0.0, 0.0, 3.0}}, 5, 4};
+    r.area = rt::AreaLight{rt::Vector3Function{{2.0, 0.0, 0.0}},
+                           rt::Vector3Function{{0.0, 0.0, 3.0}}, 5, 4};
     const tr::ShadedLight light(r);
     const tr::LightRay centre = light.ray_from({0, 0, 0}, 0.0);
     std::map<double, int> along_x, along_z;
     const int n = 4000;
     for (int i = 0; i < n; ++i) {
-        const glm::dvec3 o = light.area_offset({(i + 0.5) / n, (i * 0.618034 - std::floor(i * 0.618034))}, centre, 0.0);
+        const glm::dvec3 o = light.area_offset(
+            {(i + 0.5) / n, (i * 0.618034 - std::floor(i * 0.618034))}, centre, 0.0);
         CHECK(o.y == 0.0);
         ++along_x[o.x];
         ++along_z[o.z];
@@ -111,15 +118,18 @@ TEST_CASE("an area light's grid rows weigh as POV-Ray's full subdivision", "[tra
     CHECK(along_x.rbegin()->first == Approx(1.0));
     const double expected_x[] = {0.125, 0.25, 0.25, 0.25, 0.125};
     int k = 0;
-    for (const auto& [x, count] : along_x) CHECK(double(count) / n == Approx(expected_x[k++]).margin(0.002));
+    for (const auto& [x, count] : along_x)
+        CHECK(double(count) / n == Approx(expected_x[k++]).margin(0.002));
     REQUIRE(along_z.size() == 4);
     for (const auto& [z, count] : along_z) CHECK(double(count) / n == Approx(0.25).margin(0.01));
 }
 
-TEST_CASE("jitter spreads an area light's points over their cells, and circular maps them into a disc",
-          "[tracer][light]") {
+TEST_CASE(
+    "jitter spreads an area light's points over their cells, and circular maps them into a disc",
+    "[tracer][light]") {
     rt::LightRecord r = light_at({0, 5, 0});
-    r.area = rt::AreaLight{rt::Vector3Function{{2.0, 0.0, 0.0}}, rt::Vector3Function{{0.0, 0.0, 2.0}}, 3, 3};
+    r.area = rt::AreaLight{rt::Vector3Function{{2.0, 0.0, 0.0}},
+                           rt::Vector3Function{{0.0, 0.0, 2.0}}, 3, 3};
     r.jitter = true;
     const tr::ShadedLight jittered(r);
     const tr::LightRay centre = jittered.ray_from({0, 0, 0}, 0.0);
@@ -150,7 +160,8 @@ TEST_CASE("jitter spreads an area light's points over their cells, and circular 
 
 TEST_CASE("orient turns an area light's axes across the ray to the lit point", "[tracer][light]") {
     rt::LightRecord r = light_at({3, 4, 0});
-    r.area = rt::AreaLight{rt::Vector3Function{{1.0, 0.0, 0.0}}, rt::Vector3Function{{0.0, 1.0, 0.0}}, 3, 3};
+    r.area = rt::AreaLight{rt::Vector3Function{{1.0, 0.0, 0.0}},
+                           rt::Vector3Function{{0.0, 1.0, 0.0}}, 3, 3};
     r.orient = true;
     const tr::ShadedLight light(r);
     const tr::LightRay centre = light.ray_from({0, 0, 0}, 0.0);
@@ -166,7 +177,8 @@ TEST_CASE("orient alone makes an area light circular, as POV-Ray does", "[tracer
     // POV-Ray warns "This area light is now circular" and renders orient
     // as circular orient.
     rt::LightRecord r = light_at({3, 4, 0});
-    r.area = rt::AreaLight{rt::Vector3Function{{1.0, 0.0, 0.0}}, rt::Vector3Function{{0.0, 1.0, 0.0}}, 4, 4};
+    r.area = rt::AreaLight{rt::Vector3Function{{1.0, 0.0, 0.0}},
+                           rt::Vector3Function{{0.0, 1.0, 0.0}}, 4, 4};
     r.orient = true;
     const tr::ShadedLight orient(r);
     r.circular = true;
@@ -177,7 +189,8 @@ TEST_CASE("orient alone makes an area light circular, as POV-Ray does", "[tracer
             CHECK(orient.area_offset({u, v}, centre, 0.0) == both.area_offset({u, v}, centre, 0.0));
 }
 
-TEST_CASE("a point_at within POV-Ray's 1e-10 of the light gives it no direction", "[tracer][light]") {
+TEST_CASE("a point_at within POV-Ray's 1e-10 of the light gives it no direction",
+          "[tracer][light]") {
     rt::LightRecord r = light_at({0, 6, -2});
     r.kind = rt::LightKind::Spotlight;
     r.radius = 10.0;

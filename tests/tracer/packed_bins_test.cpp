@@ -1,13 +1,13 @@
 // Packed bins (tracer/packed_bins.hpp): every unpacked bin holds the bin it
 // was packed from, at most a step of the hull wider per side; empty bins
 // stay empty; a flat or unbounded hull keeps what it can.
-#include <catch2/catch.hpp>
+#include "tracer/packed_bins.hpp"
 
 #include <cmath>
 #include <limits>
 #include <random>
 
-#include "tracer/packed_bins.hpp"
+#include <catch2/catch.hpp>
 
 using hexant::tracer::BinBox;
 using hexant::tracer::PackedBins;

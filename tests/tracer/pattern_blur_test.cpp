@@ -4,9 +4,10 @@
 // frame, against the brute-force mean of stills at 64 instants across the
 // same shutter. The texture is evaluated at each sample's own time
 // (runtime/texture/texture_evaluator.cpp).
-#include <catch2/catch.hpp>
 #include <cmath>
 #include <string>
+
+#include <catch2/catch.hpp>
 
 #include "language/interpreter.hpp"
 #include "tracer/renderer.hpp"

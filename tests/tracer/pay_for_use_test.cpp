@@ -3,8 +3,9 @@
 // same hierarchy as in 3D; without deformations nothing is ever mapped
 // through one; without reflection or refraction only shadow rays follow the
 // primary ones; declarations a scene never uses are never built.
-#include <catch2/catch.hpp>
 #include <string>
+
+#include <catch2/catch.hpp>
 
 #include "language/interpreter.hpp"
 #include "tracer/renderer.hpp"
@@ -53,8 +54,7 @@ box { <-4, -0.2, -2>, <4, 0, 3> pigment { rgb 0.5 } }
 
 }  // namespace
 
-TEST_CASE("a static scene builds no time splits and the same hierarchy as in 3D",
-          "[tracer][pay]") {
+TEST_CASE("a static scene builds no time splits and the same hierarchy as in 3D", "[tracer][pay]") {
     const auto scene = parse(kCamera + kStaticObjects, 2);
     // Built whole, so that the cells are counted alike, by the paper's rule,
     // which cuts thirteen objects into cells whatever the rays (the cost
@@ -76,8 +76,8 @@ TEST_CASE("a static scene builds no time splits and the same hierarchy as in 3D"
     CHECK(spacetime.bound_tests == frames.bound_tests);
     CHECK(spacetime.object_tests == frames.object_tests);
     // Something moving does split time.
-    const auto moving = parse(kCamera + kStaticObjects +
-                              "sphere { <2 * clock, 2, -1>, 0.3 pigment { rgb 1 } }\n");
+    const auto moving =
+        parse(kCamera + kStaticObjects + "sphere { <2 * clock, 2, -1>, 0.3 pigment { rgb 1 } }\n");
     CHECK(counters_of(moving, tr::Mode::Spacetime).time_splits > 0);
 }
 
@@ -99,16 +99,19 @@ TEST_CASE("without mirrors or glass only shadow rays follow the primary rays", "
     CHECK(c.reflected_rays == 0);
     CHECK(c.refracted_rays == 0);
     const tr::Counters mirror = counters_of(
-        parse(kCamera + kStaticObjects +
-                  "sphere { <0, 1, -2>, 0.8 pigment { rgb 0.2 } finish { reflection 0.5 } }\n"
-                  "sphere { <2, 1, -2>, 0.6 pigment { rgbf <1, 1, 1, 0.9> } interior { ior 1.5 } }\n",
-              1),
+        parse(
+            kCamera + kStaticObjects +
+                "sphere { <0, 1, -2>, 0.8 pigment { rgb 0.2 } finish { reflection 0.5 } }\n"
+                "sphere { <2, 1, -2>, 0.6 pigment { rgbf <1, 1, 1, 0.9> } interior { ior 1.5 } }\n",
+            1),
         tr::Mode::Spacetime);
     CHECK(mirror.reflected_rays > 0);
     CHECK(mirror.refracted_rays > 0);
 }
 
-TEST_CASE("only transparent objects filter shadow rays, and only finite light runs rays through time", "[tracer][pay]") {
+TEST_CASE(
+    "only transparent objects filter shadow rays, and only finite light runs rays through time",
+    "[tracer][pay]") {
     // A scene of opaque objects under instant light: its shadow rays ask
     // only whether something blocks them, and every ray is at one instant.
     const tr::Counters c = counters_of(parse(kCamera + kStaticObjects, 1), tr::Mode::Spacetime);
@@ -141,10 +144,10 @@ TEST_CASE("branches that do not split time cost nothing", "[tracer][pay]") {
     // as the scene written without them (a split's pieces cost only where
     // an object lives part of the time: tests/tracer/lifetime_render_test).
     const tr::Counters plain = counters_of(parse(kCamera + kStaticObjects), tr::Mode::Spacetime);
-    const tr::Counters constant =
-        counters_of(parse(kCamera + "#if (1 > 0)\n" + kStaticObjects + "#end\n"), tr::Mode::Spacetime);
-    const tr::Counters always =
-        counters_of(parse(kCamera + "#if (clock > -1)\n" + kStaticObjects + "#end\n"), tr::Mode::Spacetime);
+    const tr::Counters constant = counters_of(
+        parse(kCamera + "#if (1 > 0)\n" + kStaticObjects + "#end\n"), tr::Mode::Spacetime);
+    const tr::Counters always = counters_of(
+        parse(kCamera + "#if (clock > -1)\n" + kStaticObjects + "#end\n"), tr::Mode::Spacetime);
     for (const tr::Counters* c : {&constant, &always}) {
         CHECK(c->time_splits == plain.time_splits);
         CHECK(c->cells == plain.cells);

@@ -2,13 +2,14 @@
 // pixel's centre at the frame's clock (--spp 1 --no-jitter --shutter 0),
 // hexant's image must match the one POV-Ray made of the same scene (stored
 // here; the command that made it is in pov_reference/README.md).
-#include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
+
+#include <catch2/catch.hpp>
 
 #include "image/image_format.hpp"
 
@@ -49,11 +50,12 @@ Agreement agree(const Pixels& ours, const Pixels& pov) {
             d = std::max(d, std::abs(int(ours.rgb[i * 3 + c]) - int(pov.rgb[i * 3 + c])));
         a.worst = std::max(a.worst, d);
         sum += d;
-        if (d <= 2) ++a.within;
+        if (d <= 2)
+            ++a.within;
         else if (std::getenv("HEXANT_POV_DIFF"))
-            std::printf("%d %d: %d  ours %d %d %d pov %d %d %d\n", i % ours.width, i / ours.width, d,
-                        ours.rgb[i * 3], ours.rgb[i * 3 + 1], ours.rgb[i * 3 + 2], pov.rgb[i * 3],
-                        pov.rgb[i * 3 + 1], pov.rgb[i * 3 + 2]);
+            std::printf("%d %d: %d  ours %d %d %d pov %d %d %d\n", i % ours.width, i / ours.width,
+                        d, ours.rgb[i * 3], ours.rgb[i * 3 + 1], ours.rgb[i * 3 + 2],
+                        pov.rgb[i * 3], pov.rgb[i * 3 + 1], pov.rgb[i * 3 + 2]);
     }
     a.mean = sum / a.total;
     return a;
@@ -69,7 +71,8 @@ Agreement agree(const Pixels& ours, const Pixels& pov) {
 // or should not be there) moves dozens to thousands.
 // HEXANT_POV_DIFF=1 lists the pixels beyond the tolerance.
 void check_agreement(const Agreement& a) {
-    INFO("within " << a.within << " of " << a.total << ", mean " << a.mean << ", worst " << a.worst);
+    INFO("within " << a.within << " of " << a.total << ", mean " << a.mean << ", worst "
+                   << a.worst);
     CHECK(a.within >= a.total * 998 / 1000);
     CHECK(a.mean < 0.2);
 }
@@ -77,14 +80,15 @@ void check_agreement(const Agreement& a) {
 // hexant's render with `flags`, written to a temporary PNG named `name`,
 // frame number `frame` in its name (0: a still).
 Pixels render(const fs::path& scene, const std::string& flags, const std::string& name, int frame,
-              const std::string& size = "-W 96 -H 72", const std::string& sampling = "--spp 1 --no-jitter") {
+              const std::string& size = "-W 96 -H 72",
+              const std::string& sampling = "--spp 1 --no-jitter") {
     const fs::path pattern = fs::temp_directory_path() / (name + (frame ? "_####.png" : ".png"));
     char number[16];
     std::snprintf(number, sizeof number, "_%04d.png", frame);
     const fs::path out = frame ? fs::temp_directory_path() / (name + number) : pattern;
     fs::remove(out);
-    const std::string command = std::string(HEXANT_BINARY) + " render " + scene.string() +
-                                " " + size + " " + sampling + " --shutter 0 " + flags + " -o " +
+    const std::string command = std::string(HEXANT_BINARY) + " render " + scene.string() + " " +
+                                size + " " + sampling + " --shutter 0 " + flags + " -o " +
                                 pattern.string() + " > /dev/null";
     REQUIRE(std::system(command.c_str()) == 0);
     return read_png(out);
@@ -92,13 +96,14 @@ Pixels render(const fs::path& scene, const std::string& flags, const std::string
 
 // A 64 by 48 still of `folder/name.pov` at each clock (plus `flags`) against
 // POV-Ray's `folder/name_<clock>.png`, with the still's tolerance.
-void check_stills(const std::string& folder, const std::string& name, std::initializer_list<const char*> clocks,
-                  const std::string& flags = "") {
+void check_stills(const std::string& folder, const std::string& name,
+                  std::initializer_list<const char*> clocks, const std::string& flags = "") {
     for (const char* clock : clocks) {
         INFO(name << " at clock " << clock);
-        check_agreement(agree(render(kFolder / folder / (name + ".pov"), "--clock " + std::string(clock) + flags,
-                                     "hexant_pov_" + name, 0, "-W 64 -H 48"),
-                              read_png(kFolder / folder / (name + "_" + clock + ".png"))));
+        check_agreement(agree(
+            render(kFolder / folder / (name + ".pov"), "--clock " + std::string(clock) + flags,
+                   "hexant_pov_" + name, 0, "-W 64 -H 48"),
+            read_png(kFolder / folder / (name + "_" + clock + ".png"))));
     }
 }
 
@@ -109,7 +114,8 @@ TEST_CASE("a still agrees with POV-Ray 3.7's render of it pixel by pixel", "[tra
                           read_png(kFolder / "still.pov.png")));
 }
 
-TEST_CASE("scenes that switch with clock agree with POV-Ray 3.7 at each clock", "[tracer][pov][time]") {
+TEST_CASE("scenes that switch with clock agree with POV-Ray 3.7 at each clock",
+          "[tracer][pov][time]") {
     // real-animation case 01 (an #if in a macro picks the bounce's formula,
     // switching at 0.5) and 04 (an arrow that exists while a cross product
     // is not zero: absent at 0.5 only, within POV-Ray's epsilon), each as
@@ -122,19 +128,21 @@ TEST_CASE("scenes that switch with clock agree with POV-Ray 3.7 at each clock", 
         for (const char* clock : {"0.25", "0.4999", "0.5", "0.5001", "0.75"}) {
             const int frame = int(std::lround(std::stod(clock) * 10000)) + 1;
             INFO(scene << " at clock " << clock);
-            check_agreement(agree(render(folder / (std::string(scene) + ".pov"),
-                                         "--clock 0:1 --frame-count 10001 --frames " + std::to_string(frame),
-                                         std::string("hexant_pov_") + scene, frame),
-                                  read_png(folder / (std::string(scene) + "_" + clock + ".png"))));
+            check_agreement(
+                agree(render(folder / (std::string(scene) + ".pov"),
+                             "--clock 0:1 --frame-count 10001 --frames " + std::to_string(frame),
+                             std::string("hexant_pov_") + scene, frame),
+                      read_png(folder / (std::string(scene) + "_" + clock + ".png"))));
         }
     // real-animation case 06 (a countdown on frame_number, a text object per
     // digit from str()): frames 2 and 3 of 8, on either side of the tens'
     // switch.
     for (const int frame : {2, 3}) {
         INFO("case06 frame " << frame);
-        check_agreement(agree(render(folder / "case06.pov", "--frame-count 8 --frames " + std::to_string(frame),
-                                     "hexant_pov_case06", frame),
-                              read_png(folder / ("case06_" + std::to_string(frame) + ".png"))));
+        check_agreement(
+            agree(render(folder / "case06.pov", "--frame-count 8 --frames " + std::to_string(frame),
+                         "hexant_pov_case06", frame),
+                  read_png(folder / ("case06_" + std::to_string(frame) + ".png"))));
     }
 }
 
@@ -155,7 +163,8 @@ TEST_CASE("min_extent and max_extent place objects as POV-Ray 3.7's do", "[trace
     check_stills("text", "extent", {"0", "0.5"});
 }
 
-TEST_CASE("mesh and mesh2 agree with POV-Ray 3.7's render of them, at two clocks", "[tracer][pov][mesh]") {
+TEST_CASE("mesh and mesh2 agree with POV-Ray 3.7's render of them, at two clocks",
+          "[tracer][pov][mesh]") {
     // shapes/mesh.pov: a mesh of flat and smooth triangles with a face's
     // own texture, turning; a mesh2 ball written by #for loops (normals per
     // vertex, a texture_list), moving; a mesh2 whose equal normals make its
@@ -164,7 +173,8 @@ TEST_CASE("mesh and mesh2 agree with POV-Ray 3.7's render of them, at two clocks
     check_stills("shapes", "mesh", {"0", "0.5"});
 }
 
-TEST_CASE("lathe and sor agree with POV-Ray 3.7's render of them, at two clocks", "[tracer][pov][lathe]") {
+TEST_CASE("lathe and sor agree with POV-Ray 3.7's render of them, at two clocks",
+          "[tracer][pov][lathe]") {
     // shapes/lathe_sor.pov: a lathe of each spline type (linear, quadratic,
     // cubic, bezier; two with a point moving with clock), a closed sor whose
     // neck widens with clock and an open one turned to show its inside. The
@@ -195,14 +205,16 @@ TEST_CASE("blob agrees with POV-Ray 3.7's render of it, at two clocks", "[tracer
     check_stills("shapes", "blob", {"0", "0.5"});
 }
 
-TEST_CASE("sphere_sweep agrees with POV-Ray 3.7's render of it, at two clocks", "[tracer][pov][sphere_sweep]") {
+TEST_CASE("sphere_sweep agrees with POV-Ray 3.7's render of it, at two clocks",
+          "[tracer][pov][sphere_sweep]") {
     // shapes/sphere_sweep.pov: a linear_spline sweep, a b_spline one whose
     // middle sphere moves with clock, a cubic_spline one turning. The
     // still's tolerance; both clocks agree exactly here (and at 320x240).
     check_stills("shapes", "sphere_sweep", {"0", "0.5"});
 }
 
-TEST_CASE("POV-Ray's sample animations agree with POV-Ray 3.7 at clock 0.5", "[tracer][pov][animations]") {
+TEST_CASE("POV-Ray's sample animations agree with POV-Ray 3.7 at clock 0.5",
+          "[tracer][pov][animations]") {
     // Debian's povray-examples, scenes/animations/: 16 of its 17 animations
     // as they are, at 64x48 with POV-Ray's include folder on the path,
     // against POV-Ray's own render (animations/NAME_0.5.png). The 17th,
@@ -215,11 +227,12 @@ TEST_CASE("POV-Ray's sample animations agree with POV-Ray 3.7 at clock 0.5", "[t
         WARN("not run: POV-Ray's sample animations are not installed (Debian: povray-examples)");
         return;
     }
-    for (const char* name : {"ambient", "camera2", "clockd", "diffuse", "float1", "float2", "float3",
-                             "float4", "fractalzoom", "l_o", "quilted", "reflection", "speclr",
-                             "splinefollow", "vect1", "vect2"}) {
+    for (const char* name : {"ambient", "camera2", "clockd", "diffuse", "float1", "float2",
+                             "float3", "float4", "fractalzoom", "l_o", "quilted", "reflection",
+                             "speclr", "splinefollow", "vect1", "vect2"}) {
         // quilted's scene is plotqlt.pov.
-        const std::string file = std::string(name) == "quilted" ? "plotqlt.pov" : std::string(name) + ".pov";
+        const std::string file =
+            std::string(name) == "quilted" ? "plotqlt.pov" : std::string(name) + ".pov";
         INFO(name);
         check_agreement(agree(render(scenes / name / file, "--clock 0.5 -L " + includes.string(),
                                      std::string("hexant_pov_animation_") + name, 0, "-W 64 -H 48"),
@@ -227,7 +240,8 @@ TEST_CASE("POV-Ray's sample animations agree with POV-Ray 3.7 at clock 0.5", "[t
     }
 }
 
-TEST_CASE("every pattern agrees with POV-Ray 3.7's render of it, at two clocks", "[tracer][pov][pattern]") {
+TEST_CASE("every pattern agrees with POV-Ray 3.7's render of it, at two clocks",
+          "[tracer][pov][pattern]") {
     // patterns/patterns.pov with P = 0 to 27: each of hexant's 26 patterns
     // (and a warp, the wave shapes and the older two-colour map entries)
     // on a wall and a ball lit by ambient light only, at clock 0 and 0.5
@@ -241,10 +255,10 @@ TEST_CASE("every pattern agrees with POV-Ray 3.7's render of it, at two clocks",
     for (int p = 0; p <= 27; ++p)
         for (const char* clock : {"0", "0.5"}) {
             INFO("P=" << p << " at clock " << clock);
-            check_agreement(agree(render(scene, "--clock " + std::string(clock) + " --declare P=" + std::to_string(p),
-                                         "hexant_pov_pattern", 0, "-W 64 -H 48"),
-                                  read_png(kFolder / "patterns" /
-                                           ("p" + std::to_string(p) + "_" + clock + ".png"))));
+            check_agreement(agree(
+                render(scene, "--clock " + std::string(clock) + " --declare P=" + std::to_string(p),
+                       "hexant_pov_pattern", 0, "-W 64 -H 48"),
+                read_png(kFolder / "patterns" / ("p" + std::to_string(p) + "_" + clock + ".png"))));
         }
 }
 
@@ -256,19 +270,22 @@ TEST_CASE("a sky_sphere over the background agrees with POV-Ray 3.7's", "[tracer
     check_stills("sky", "sky", {"0", "0.5"});
 }
 
-TEST_CASE("a checker face on a cell boundary takes POV-Ray's side (real-animation case 13)", "[tracer][pov][pattern]") {
+TEST_CASE("a checker face on a cell boundary takes POV-Ray's side (real-animation case 13)",
+          "[tracer][pov][pattern]") {
     // The box's side faces lie on checker boundaries (scale 0.5): POV-Ray
     // floors each coordinate after adding 1e-10, so a face takes one cell
     // whichever way its hit points rounded. Frame 8 of the cyclic
     // animation speckled in 76 pixels before; the same tolerance as the
     // still (it agrees exactly).
     const fs::path folder = kFolder / "patterns";
-    check_agreement(agree(render(folder / "case13.pov", (folder / "case13.ini").string() + " --frames 8",
-                                 "hexant_pov_case13", 8),
-                          read_png(folder / "case13_8.png")));
+    check_agreement(
+        agree(render(folder / "case13.pov", (folder / "case13.ini").string() + " --frames 8",
+                     "hexant_pov_case13", 8),
+              read_png(folder / "case13_8.png")));
 }
 
-TEST_CASE("normal perturbations agree with POV-Ray 3.7's, on objects and on the camera", "[tracer][pov][pattern]") {
+TEST_CASE("normal perturbations agree with POV-Ray 3.7's, on objects and on the camera",
+          "[tracer][pov][pattern]") {
     // normals/normals.pov with N = 0 to 12: the six normal-only patterns
     // (bumps, dents, ripples, waves, wrinkles, quilted), the slope of
     // others (gradient, marble, bozo, leopard, granite with its accuracy,
@@ -283,20 +300,22 @@ TEST_CASE("normal perturbations agree with POV-Ray 3.7's, on objects and on the 
     for (int n = 0; n <= 12; ++n)
         for (const char* clock : {"0", "0.5"}) {
             INFO("N=" << n << " at clock " << clock);
-            check_agreement(agree(render(folder / "normals.pov",
-                                         "--clock " + std::string(clock) + " --declare N=" + std::to_string(n),
-                                         "hexant_pov_normal", 0, "-W 64 -H 48"),
-                                  read_png(folder / ("n" + std::to_string(n) + "_" + clock + ".png"))));
+            check_agreement(
+                agree(render(folder / "normals.pov",
+                             "--clock " + std::string(clock) + " --declare N=" + std::to_string(n),
+                             "hexant_pov_normal", 0, "-W 64 -H 48"),
+                      read_png(folder / ("n" + std::to_string(n) + "_" + clock + ".png"))));
         }
     for (const char* clock : {"0", "0.5"}) {
         INFO("case10 at clock " << clock);
-        check_agreement(agree(render(folder / "case10.pov", "--clock " + std::string(clock), "hexant_pov_case10", 0,
-                                     "-W 64 -H 48"),
+        check_agreement(agree(render(folder / "case10.pov", "--clock " + std::string(clock),
+                                     "hexant_pov_case10", 0, "-W 64 -H 48"),
                               read_png(folder / ("case10_" + std::string(clock) + ".png"))));
     }
 }
 
-TEST_CASE("fog agrees with POV-Ray 3.7's: constant, ground, and with turbulence", "[tracer][pov][pattern]") {
+TEST_CASE("fog agrees with POV-Ray 3.7's: constant, ground, and with turbulence",
+          "[tracer][pov][pattern]") {
     // fog/fog.pov with F = 0 (constant fog, filtering), 1 (ground fog,
     // transmitting, its up vector turned) and 2 (both, the ground fog with
     // turbulence), distances moving with clock; rays that miss go POV-Ray's
@@ -306,10 +325,11 @@ TEST_CASE("fog agrees with POV-Ray 3.7's: constant, ground, and with turbulence"
     for (int f = 0; f <= 2; ++f)
         for (const char* clock : {"0", "0.5"}) {
             INFO("F=" << f << " at clock " << clock);
-            check_agreement(agree(render(folder / "fog.pov",
-                                         "--clock " + std::string(clock) + " --declare F=" + std::to_string(f),
-                                         "hexant_pov_fog", 0, "-W 64 -H 48"),
-                                  read_png(folder / ("f" + std::to_string(f) + "_" + clock + ".png"))));
+            check_agreement(
+                agree(render(folder / "fog.pov",
+                             "--clock " + std::string(clock) + " --declare F=" + std::to_string(f),
+                             "hexant_pov_fog", 0, "-W 64 -H 48"),
+                      read_png(folder / ("f" + std::to_string(f) + "_" + clock + ".png"))));
         }
 }
 
@@ -321,7 +341,8 @@ TEST_CASE("a parallel light agrees with POV-Ray 3.7's", "[tracer][pov]") {
     check_stills("lights", "parallel", {"0", "0.5"});
 }
 
-TEST_CASE("spotlights, cylinder lights and fading lights agree with POV-Ray 3.7's", "[tracer][pov]") {
+TEST_CASE("spotlights, cylinder lights and fading lights agree with POV-Ray 3.7's",
+          "[tracer][pov]") {
     // lights/spot.pov: a spotlight whose aim, cone and tightness move with
     // clock, a cylinder light moving across, a light fading with distance
     // (POV-Ray's Attenuate_Light), a shadowless fill. The still's tolerance
@@ -367,8 +388,8 @@ TEST_CASE("area lights' soft shadows agree with POV-Ray 3.7's", "[tracer][pov]")
     const fs::path folder = kFolder / "lights";
     for (const char* clock : {"0", "0.5"}) {
         INFO("area.pov at clock " << clock);
-        const Pixels ours = render(folder / "area.pov", "--clock " + std::string(clock), "hexant_pov_area", 0,
-                                   "-W 64 -H 48", "--spp 512");
+        const Pixels ours = render(folder / "area.pov", "--clock " + std::string(clock),
+                                   "hexant_pov_area", 0, "-W 64 -H 48", "--spp 512");
         const Pixels pov = read_png(folder / ("area_" + std::string(clock) + ".png"));
         const Pixels single = read_png(folder / ("area_noaa_" + std::string(clock) + ".png"));
         REQUIRE(ours.rgb.size() == pov.rgb.size());
@@ -378,7 +399,8 @@ TEST_CASE("area lights' soft shadows agree with POV-Ray 3.7's", "[tracer][pov]")
         for (std::size_t i = 0; i < pov.rgb.size() / 3; ++i) {
             int edge = 0, d = 0;
             for (int c = 0; c < 3; ++c) {
-                edge = std::max(edge, std::abs(int(pov.rgb[i * 3 + c]) - int(single.rgb[i * 3 + c])));
+                edge =
+                    std::max(edge, std::abs(int(pov.rgb[i * 3 + c]) - int(single.rgb[i * 3 + c])));
                 d = std::max(d, std::abs(int(pov.rgb[i * 3 + c]) - int(ours.rgb[i * 3 + c])));
             }
             if (edge > 2) continue;
@@ -386,7 +408,8 @@ TEST_CASE("area lights' soft shadows agree with POV-Ray 3.7's", "[tracer][pov]")
             sum += d;
             if (d > 2) ++beyond;
         }
-        INFO(interior << " interior pixels, " << beyond << " beyond 2 steps, mean " << sum / interior);
+        INFO(interior << " interior pixels, " << beyond << " beyond 2 steps, mean "
+                      << sum / interior);
         CHECK(interior > int(pov.rgb.size() / 3) * 9 / 10);
         CHECK(beyond <= interior / 200);
         CHECK(sum / interior < 0.15);
@@ -408,16 +431,19 @@ TEST_CASE("focal blur agrees with POV-Ray 3.7's", "[tracer][pov]") {
     const fs::path folder = kFolder / "camera";
     for (const char* clock : {"0", "0.5"}) {
         INFO("focal_blur.pov at clock " << clock);
-        const Pixels ours = render(folder / "focal_blur.pov", "--clock " + std::string(clock), "hexant_pov_focal_blur",
-                                   0, "-W 64 -H 48", "--spp 1024");
-        const Agreement a = agree(ours, read_png(folder / ("focal_blur_" + std::string(clock) + ".png")));
-        INFO("within 2 steps " << a.within << " of " << a.total << ", mean " << a.mean << ", worst " << a.worst);
+        const Pixels ours = render(folder / "focal_blur.pov", "--clock " + std::string(clock),
+                                   "hexant_pov_focal_blur", 0, "-W 64 -H 48", "--spp 1024");
+        const Agreement a =
+            agree(ours, read_png(folder / ("focal_blur_" + std::string(clock) + ".png")));
+        INFO("within 2 steps " << a.within << " of " << a.total << ", mean " << a.mean << ", worst "
+                               << a.worst);
         CHECK(a.mean < 1.2);
         CHECK(a.total - a.within <= a.total * 12 / 100);
     }
 }
 
-TEST_CASE("orthographic, fisheye, panoramic and spherical cameras agree with POV-Ray 3.7's", "[tracer][pov][camera]") {
+TEST_CASE("orthographic, fisheye, panoramic and spherical cameras agree with POV-Ray 3.7's",
+          "[tracer][pov][camera]") {
     // camera/*.pov: each projection with parameters that move with clock
     // (an orthographic view resized as POV-Ray resizes it, one sized by
     // right and up, a fisheye widening past 180 degrees, a panoramic
@@ -425,7 +451,8 @@ TEST_CASE("orthographic, fisheye, panoramic and spherical cameras agree with POV
     // tolerance: every pixel was exact when this was written; a half-pixel
     // shift, a flipped axis or an angle taken in the wrong unit moves
     // hundreds.
-    for (const char* name : {"orthographic", "orthographic_sized", "fisheye", "panoramic", "spherical"})
+    for (const char* name :
+         {"orthographic", "orthographic_sized", "fisheye", "panoramic", "spherical"})
         check_stills("camera", name, {"0", "0.5"});
 }
 

@@ -3,13 +3,15 @@
 // rotation, objects crossing cell walls, objects spanning many cells, a
 // plane), for rays in general position, rays lying in cell walls and rays at
 // the instants where the time splits fall; shadow queries too.
-#include <catch2/catch.hpp>
+#include "tracer/ray_query.hpp"
+
 #include <cmath>
 #include <string>
 #include <vector>
 
+#include <catch2/catch.hpp>
+
 #include "../runtime/object_test_support.hpp"
-#include "tracer/ray_query.hpp"
 
 using namespace object_test;
 namespace tr = hexant::tracer;
@@ -46,7 +48,8 @@ std::string moving_scene() {
         "cylinder { <-3.5, 0.1, -3>, <3.5, 0.3, 3>, 0.05 }\n"
         "triangle { <-1, 2, -1>, <1, 2.5, -1>, <0, 3, 1> translate <0, -clock, 0> }\n"
         "triangle { <2, -2, 2>, <3, -1, 2>, <2.5, -2, 3> }\n"
-        "box { <-0.3, -1, -0.3>, <0.3, 1, 0.3> twist <0, 1, 0>, 180 * clock translate <-2, 0, 2> }\n"
+        "box { <-0.3, -1, -0.3>, <0.3, 1, 0.3> twist <0, 1, 0>, 180 * clock translate <-2, 0, 2> "
+        "}\n"
         "torus { 0.6, 0.15 rotate <90, 0, 0> translate Path(clock) }\n"
         "union { sphere { <0, 0, 0>, 0.3 } sphere { <0.5, 0, 0>, 0.2 } translate <2, 2, -2> "
         "rotate <0, 0, 720 * clock> }\n"
@@ -122,8 +125,8 @@ TEST_CASE("spacetime, frames and brute force find the same first hits on a movin
                 glm::dvec3 d = glm::normalize(aim - origin);
                 if (i % 5 == 0) {
                     const int axis = i % 3;
-                    const double wall =
-                        root.lo[axis] + (root.hi[axis] - root.lo[axis]) * random.integer(1, 7) / 8.0;
+                    const double wall = root.lo[axis] + (root.hi[axis] - root.lo[axis]) *
+                                                            random.integer(1, 7) / 8.0;
                     origin[axis] = wall;
                     d[axis] = 0.0;
                     if (glm::length(d) == 0.0) continue;
@@ -177,10 +180,12 @@ TEST_CASE("rays that travel in time take the double-precision walk and find the 
         int hits = 0;
         for (int i = 0; i < 150; ++i) {
             const glm::dvec3 origin = 6.0 * random.unit_vector();
-            const glm::dvec3 aim(random.uniform(-3, 3), random.uniform(-3, 3), random.uniform(-3, 3));
+            const glm::dvec3 aim(random.uniform(-3, 3), random.uniform(-3, 3),
+                                 random.uniform(-3, 3));
             const glm::dvec3 d = glm::normalize(aim - origin);
-            const hexant::runtime::Ray4 ray{hexant::runtime::Event(origin, random.uniform(0.1, 0.5)),
-                                            hexant::runtime::Event(d, 0.02)};
+            const hexant::runtime::Ray4 ray{
+                hexant::runtime::Event(origin, random.uniform(0.1, 0.5)),
+                hexant::runtime::Event(d, 0.02)};
             INFO("ray " << i);
             // A finite segment: time stays inside the animation.
             const auto expected = brute->first_hit(ray, 0.0, 12.0, a);
@@ -193,9 +198,10 @@ TEST_CASE("rays that travel in time take the double-precision walk and find the 
 
 TEST_CASE("each object is tested at most once per ray however many cells hold it", "[tracer]") {
     // A long cylinder crosses many cells; a ray along it meets it in all.
-    const Parsed parsed = parse("cylinder { <-4.5, 0.01, 0.01>, <4.5, 0.01, 0.01>, 0.3 }\n"
-                                "sphere { <0, 3, 0>, 0.5 } sphere { <0, -3, 0>, 0.5 }\n"
-                                "sphere { <3, 3, 0>, 0.5 } sphere { <-3, -3, 0>, 0.5 }\n");
+    const Parsed parsed = parse(
+        "cylinder { <-4.5, 0.01, 0.01>, <4.5, 0.01, 0.01>, 0.3 }\n"
+        "sphere { <0, 3, 0>, 0.5 } sphere { <0, -3, 0>, 0.5 }\n"
+        "sphere { <3, 3, 0>, 0.5 } sphere { <-3, -3, 0>, 0.5 }\n");
     tr::Counters counters;
     const auto set = tr::ObjectSet::of(parsed.objects);
     const hexant::runtime::Box4 root = root_box(set);

@@ -1,11 +1,12 @@
 // The renderer: the three modes make the same image of a moving scene; the
 // image does not depend on the thread count; frames are written whole
 // (temporary name, then rename) where the pattern says.
-#include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
+
+#include <catch2/catch.hpp>
 
 #include "language/interpreter.hpp"
 #include "tracer/image_output.hpp"
@@ -48,7 +49,8 @@ hexant::runtime::SceneDescription parse_scene() {
 double largest_difference(const tr::Image& a, const tr::Image& b) {
     REQUIRE(a.rgb.size() == b.rgb.size());
     double d = 0.0;
-    for (std::size_t i = 0; i < a.rgb.size(); ++i) d = std::max(d, double(std::fabs(a.rgb[i] - b.rgb[i])));
+    for (std::size_t i = 0; i < a.rgb.size(); ++i)
+        d = std::max(d, double(std::fabs(a.rgb[i] - b.rgb[i])));
     return d;
 }
 
@@ -108,9 +110,11 @@ TEST_CASE("the image does not depend on the thread count", "[tracer][render]") {
     CHECK(largest_difference(one, eight) == 0.0);
 }
 
-TEST_CASE("area lights, focal blur, a shaped rolling shutter and finite light: images independent of the thread count, "
-          "the three modes agreeing",
-          "[tracer][render]") {
+TEST_CASE(
+    "area lights, focal blur, a shaped rolling shutter and finite light: images independent of the "
+    "thread count, "
+    "the three modes agreeing",
+    "[tracer][render]") {
     // Every dimension a sample draws (pixel, time, lens, each light's grid
     // point per depth) is a function of (frame, pixel, sample), and every
     // mode answers the same rays.
@@ -127,7 +131,8 @@ light_source { <-2 + 4 * clock, 5, -2>, rgb 1 area_light x, z, 4, 4 circular ori
 plane { y, 0 pigment { checker rgb 0.8, rgb 0.3 } }
 sphere { <0, 0.6, 0>, 0.6 pigment { rgbf <0.9, 0.5, 0.3, 0.7> } interior { ior 1.3 } translate x * clock }
 box { <-1.5, 0, 0.5>, <-0.8, 1, 1> rotate y * 90 * clock pigment { rgb <0.2, 0.5, 0.9> } finish { reflection 0.3 } }
-)", "joint-dimensions.pov", options);
+)",
+                                                          "joint-dimensions.pov", options);
     const auto image = [&](tr::Mode mode, int threads) {
         tr::RenderSettings settings;
         settings.mode = mode;
@@ -145,7 +150,8 @@ box { <-1.5, 0, 0.5>, <-0.8, 1, 1> rotate y * 90 * clock pigment { rgb <0.2, 0.5
     CHECK(largest_difference(one, image(tr::Mode::Brute, 2)) == 0.0);
 }
 
-TEST_CASE("motion blur: a sample's time is its own, within the frame's shutter", "[tracer][render]") {
+TEST_CASE("motion blur: a sample's time is its own, within the frame's shutter",
+          "[tracer][render]") {
     // A sphere crossing the whole view during frame 1's shutter leaves a
     // streak: many pixels partly covered; at shutter 0 it is a sharp disc.
     hexant::language::ParseOptions options;
@@ -153,9 +159,10 @@ TEST_CASE("motion blur: a sample's time is its own, within the frame's shutter",
     options.animation.height = 16;
     options.animation.initial_frame = 1;
     options.animation.final_frame = 2;
-    const char* text = "camera { location <0, 0, -10> look_at 0 }\n"
-                       "light_source { <0, 0, -10>, rgb 1 }\n"
-                       "sphere { <-4 + 8 * clock, 0, 0>, 0.8 pigment { rgb 1 } finish { ambient 1 diffuse 0 } }\n";
+    const char* text =
+        "camera { location <0, 0, -10> look_at 0 }\n"
+        "light_source { <0, 0, -10>, rgb 1 }\n"
+        "sphere { <-4 + 8 * clock, 0, 0>, 0.8 pigment { rgb 1 } finish { ambient 1 diffuse 0 } }\n";
     auto scene = hexant::language::parse_scene_text(text, "blur.pov", options);
     const auto partial_pixels = [&](double shutter) {
         scene.animation.shutter = shutter;
@@ -247,8 +254,10 @@ TEST_CASE("a parallel light pointed at itself lights nothing, as in POV-Ray", "[
         options.animation.height = 6;
         const auto scene = hexant::language::parse_scene_text(
             "camera { location <0, 2, -4> look_at 0 }\n"
-            "light_source { <0, 5, 0>, rgb 1 parallel point_at " + point_at + " }\n"
-            "sphere { 0, 1 pigment { rgb 1 } finish { ambient 0 } }\n",
+            "light_source { <0, 5, 0>, rgb 1 parallel point_at " +
+                point_at +
+                " }\n"
+                "sphere { 0, 1 pigment { rgb 1 } finish { ambient 0 } }\n",
             "parallel.pov", options);
         double sum = 0.0;
         for (float v : render(scene, tr::Mode::Spacetime, 1).rgb) sum += v;

@@ -2,10 +2,11 @@
 // (runtime/scene/animation.hpp): a curve draws the samples' times with its
 // density, a box changes nothing, and a rolling shutter slants a vertical
 // bar that moves sideways by the angle its readout time gives.
-#include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
 #include <string>
+
+#include <catch2/catch.hpp>
 
 #include "app/command_line.hpp"
 #include "language/interpreter.hpp"
@@ -23,7 +24,9 @@ double integral(const rt::ShutterCurve& curve, double u) {
     const auto& k = curve.keys();
     const auto w = [&](double x) {
         for (std::size_t i = 1; i < k.size(); ++i)
-            if (x <= k[i].u) return k[i - 1].weight + (k[i].weight - k[i - 1].weight) * (x - k[i - 1].u) / (k[i].u - k[i - 1].u);
+            if (x <= k[i].u)
+                return k[i - 1].weight +
+                       (k[i].weight - k[i - 1].weight) * (x - k[i - 1].u) / (k[i].u - k[i - 1].u);
         return k.back().weight;
     };
     constexpr int kSteps = 200000;
@@ -70,7 +73,8 @@ background { rgb 0 }
 }  // namespace
 
 TEST_CASE("a shutter curve's warp inverts its integral", "[tracer][shutter]") {
-    for (const std::string text : {"triangle", "trapezoid", "0:0,1:1", "0:2,0.3:0,0.7:0,1:1", "0:0,0.1:1,0.9:1,1:0"}) {
+    for (const std::string text :
+         {"triangle", "trapezoid", "0:0,1:1", "0:2,0.3:0,0.7:0,1:1", "0:0,0.1:1,0.9:1,1:0"}) {
         INFO(text);
         const rt::ShutterCurve curve = rt::ShutterCurve::parse(text);
         CHECK_FALSE(curve.is_box());
@@ -93,7 +97,8 @@ TEST_CASE("a shutter curve's warp inverts its integral", "[tracer][shutter]") {
     CHECK(rt::ShutterCurve::parse("triangle").warp(0.125) == Approx(0.25).epsilon(1e-12));
 }
 
-TEST_CASE("a box shutter curve and no rolling give the sample times they always gave", "[tracer][shutter]") {
+TEST_CASE("a box shutter curve and no rolling give the sample times they always gave",
+          "[tracer][shutter]") {
     // Today's formula, bit for bit: open + when * (shutter * clock_delta).
     rt::Animation a = two_frames(8, 8);
     a.initial_clock = 0.3;
@@ -114,7 +119,8 @@ TEST_CASE("a box shutter curve and no rolling give the sample times they always 
     }
     // And the images: a box written as keys renders the default's pixels.
     const std::string scene = std::string(kFlatView) +
-                              "sphere { <-0.3 + 0.6 * clock, 0, 0>, 0.1 pigment { rgb 1 } finish { ambient 1 diffuse 0 } }";
+                              "sphere { <-0.3 + 0.6 * clock, 0, 0>, 0.1 pigment { rgb 1 } finish { "
+                              "ambient 1 diffuse 0 } }";
     rt::Animation keyed = two_frames(24, 24);
     keyed.shutter_curve = rt::ShutterCurve::parse("0:1,1:1");
     const tr::Image plain = render(scene.c_str(), two_frames(24, 24), 8);
@@ -122,13 +128,15 @@ TEST_CASE("a box shutter curve and no rolling give the sample times they always 
     CHECK(plain.rgb == boxed.rgb);
 }
 
-TEST_CASE("a shutter curve weights the samples' times: a ramp blurs toward the late end", "[tracer][shutter]") {
+TEST_CASE("a shutter curve weights the samples' times: a ramp blurs toward the late end",
+          "[tracer][shutter]") {
     // A small glowing sphere sweeps x from -0.3 to 0.3 over the shutter.
     // Its smear's brightness-weighted centre lies where the sphere is at
     // the mean time of the curve's density: 1/2 for the box, 2/3 for the
     // ramp 0:0,1:1 (w(u) = u, mean of u^2 / (1/2) = 2/3).
     const std::string scene = std::string(kFlatView) +
-                              "sphere { <-0.3 + 0.6 * clock, 0, 0>, 0.05 pigment { rgb 1 } finish { ambient 1 diffuse 0 } }";
+                              "sphere { <-0.3 + 0.6 * clock, 0, 0>, 0.05 pigment { rgb 1 } finish "
+                              "{ ambient 1 diffuse 0 } }";
     constexpr int kSize = 64;
     const auto centre = [&](const rt::Animation& a) {
         const tr::Image image = render(scene.c_str(), a, 64);
@@ -149,16 +157,18 @@ TEST_CASE("a shutter curve weights the samples' times: a ramp blurs toward the l
     CHECK(centre(ramp) == Approx(-0.3 + 0.6 * 2.0 / 3.0).margin(0.1 / kSize));
 }
 
-TEST_CASE("a rolling shutter slants a vertical bar moving sideways by its readout time", "[tracer][shutter]") {
+TEST_CASE("a rolling shutter slants a vertical bar moving sideways by its readout time",
+          "[tracer][shutter]") {
     // The bar moves at v = 0.5 scene units per clock unit; the shutter is
     // an instant, the rows open over 0.5 of the clock step (1): the bottom
     // row sees the bar 0.25 further right than the top row. On z = 0 a
     // scene unit is the image's width, so the bar's column shifts by
     // 0.25 W over H rows: a slope of 0.25 W / H columns per row, the bar
     // leaning by atan(0.25) from the vertical.
-    const std::string scene = std::string(kFlatView) +
-                              "box { <-0.03, -1, -0.01>, <0.03, 1, 0.01> translate x * (-0.125 + 0.5 * clock) "
-                              "pigment { rgb 1 } finish { ambient 1 diffuse 0 } }";
+    const std::string scene =
+        std::string(kFlatView) +
+        "box { <-0.03, -1, -0.01>, <0.03, 1, 0.01> translate x * (-0.125 + 0.5 * clock) "
+        "pigment { rgb 1 } finish { ambient 1 diffuse 0 } }";
     constexpr int kWidth = 96, kHeight = 64;
     rt::Animation a = two_frames(kWidth, kHeight);
     a.shutter = 0.0;
@@ -185,7 +195,8 @@ TEST_CASE("a rolling shutter slants a vertical bar moving sideways by its readou
     // (1%: each row's centre is exact to a small fraction of a pixel at 16
     // samples; over 64 rows the fitted slope's error is far below that.)
     CHECK(slope == Approx(expected).epsilon(0.01));
-    CHECK(std::atan(slope * kHeight / kWidth) * 180.0 / M_PI == Approx(std::atan(0.25) * 180.0 / M_PI).epsilon(0.01));
+    CHECK(std::atan(slope * kHeight / kWidth) * 180.0 / M_PI ==
+          Approx(std::atan(0.25) * 180.0 / M_PI).epsilon(0.01));
     // A global shutter: upright.
     a.rolling_shutter = 0.0;
     const tr::Image upright = render(scene.c_str(), a, 16);
@@ -199,7 +210,9 @@ TEST_CASE("a rolling shutter slants a vertical bar moving sideways by its readou
     CHECK(top / top_sum == Approx(bottom / bottom_sum).margin(0.05));
 }
 
-TEST_CASE("the shutter curve and rolling shutter flags refuse what they cannot use, naming the fault", "[tracer][shutter][app]") {
+TEST_CASE(
+    "the shutter curve and rolling shutter flags refuse what they cannot use, naming the fault",
+    "[tracer][shutter][app]") {
     const auto resolve = [](const std::string& curve, double rolling) {
         hexant::app::SceneArguments arguments;
         arguments.files = {"a.pov"};
@@ -209,9 +222,12 @@ TEST_CASE("the shutter curve and rolling shutter flags refuse what they cannot u
     };
     CHECK(resolve("trapezoid", 0.25).options.animation.rolling_shutter == 0.25);
     CHECK_FALSE(resolve("trapezoid", 0.0).options.animation.shutter_curve.is_box());
-    CHECK_THROWS_WITH(resolve("round", 0.0), Catch::Contains("--shutter-curve") && Catch::Contains("'round'"));
-    CHECK_THROWS_WITH(resolve("0:1,0.5:-1,1:1", 0.0), Catch::Contains("key 2") && Catch::Contains("at least 0"));
-    CHECK_THROWS_WITH(resolve("0:1,0.7:1,0.5:1,1:1", 0.0), Catch::Contains("key 3") && Catch::Contains("increase"));
+    CHECK_THROWS_WITH(resolve("round", 0.0),
+                      Catch::Contains("--shutter-curve") && Catch::Contains("'round'"));
+    CHECK_THROWS_WITH(resolve("0:1,0.5:-1,1:1", 0.0),
+                      Catch::Contains("key 2") && Catch::Contains("at least 0"));
+    CHECK_THROWS_WITH(resolve("0:1,0.7:1,0.5:1,1:1", 0.0),
+                      Catch::Contains("key 3") && Catch::Contains("increase"));
     CHECK_THROWS_WITH(resolve("0.1:1,1:1", 0.0), Catch::Contains("begin at time 0"));
     CHECK_THROWS_WITH(resolve("0:0,1:0", 0.0), Catch::Contains("open somewhere"));
     CHECK_THROWS_WITH(resolve("0:nan,1:1", 0.0), Catch::Contains("finite"));

@@ -1,12 +1,14 @@
 // The split criteria (tracer/split_criterion.hpp): the paper's rule as the
 // paper states it, and the cost criterion's choices on summaries whose best
 // answer is known, with and without pricing the build against the rays.
-#include <catch2/catch.hpp>
+#include "tracer/split_criterion.hpp"
+
 #include <string>
+
+#include <catch2/catch.hpp>
 
 #include "../runtime/object_test_support.hpp"
 #include "tracer/ray_query.hpp"
-#include "tracer/split_criterion.hpp"
 
 namespace tr = hexant::tracer;
 
@@ -61,8 +63,10 @@ TEST_CASE("the paper's criterion: count, then density, time only where something
     CHECK(tr::paper_needs_occupancy(s, 3));
 }
 
-TEST_CASE("the cost criterion cuts objects whose boxes it tightens, keeps the rest together, and "
-          "weighs the build against the rays", "[tracer][split]") {
+TEST_CASE(
+    "the cost criterion cuts objects whose boxes it tightens, keeps the rest together, and "
+    "weighs the build against the rays",
+    "[tracer][split]") {
     tr::CostPrices free;
     // 16 long diagonal objects across the cell: their pieces in the octants
     // hug them (a fortieth of each box's area per octant): splitting pays.

@@ -21,7 +21,8 @@ constexpr double kDegenerateLength = 1.0e-10;
 
 bool usable(const BlobComponent& c) {
     return c.radius > 0.0 && std::isfinite(c.radius) && c.strength != 0.0 &&
-           std::isfinite(c.strength) && is_finite(c.a) && (c.kind == BlobComponent::Kind::sphere || is_finite(c.b));
+           std::isfinite(c.strength) && is_finite(c.a) &&
+           (c.kind == BlobComponent::Kind::sphere || is_finite(c.b));
 }
 
 bool is_cylinder(const BlobComponent& c) {
@@ -55,7 +56,8 @@ struct Piece {
 };
 
 // Where |w + t d|^2 <= r2 for unit or smaller d (d may be zero).
-bool quadratic_interval(const glm::dvec3& w, const glm::dvec3& d, double r2, double& lo, double& hi) {
+bool quadratic_interval(const glm::dvec3& w, const glm::dvec3& d, double r2, double& lo,
+                        double& hi) {
     const double dd = glm::dot(d, d);
     if (!(dd > 1e-300)) {
         if (glm::dot(w, w) < r2) {
@@ -133,7 +135,8 @@ void add_quartic(const Piece& piece, const glm::dvec3& p0, const glm::dvec3& d,
     }
     const BlobComponent& c = *piece.component;
     const double k = 1.0 / (c.radius * c.radius);
-    const double a = 1.0 - k * glm::dot(w, w), b = -k * 2.0 * glm::dot(w, e), cc = -k * glm::dot(e, e);
+    const double a = 1.0 - k * glm::dot(w, w), b = -k * 2.0 * glm::dot(w, e),
+                 cc = -k * glm::dot(e, e);
     const double s = c.strength;
     sum[0] += s * a * a;
     sum[1] += s * 2.0 * a * b;
@@ -168,7 +171,8 @@ glm::dvec3 blob_field_descent(const BlobGeometry& blob, const glm::dvec3& p) {
 
 std::optional<SurfaceHit> intersect(const BlobGeometry& blob, const Ray3& ray, double s_min,
                                     double s_max) {
-    if (!(s_min < s_max) || !is_finite(ray.origin) || !is_finite(ray.direction)) return std::nullopt;
+    if (!(s_min < s_max) || !is_finite(ray.origin) || !is_finite(ray.direction))
+        return std::nullopt;
     const double length = glm::length(ray.direction);
     if (!(length > 0.0) || !std::isfinite(length)) return std::nullopt;
     // A unit direction, parameter t = s |D|.
@@ -284,7 +288,8 @@ bool surface_may_meet(const BlobGeometry& blob, const Box3& box) {
     const double f = blob_field(blob, c);
     // (blob_field_descent is POV-Ray's half of -grad f.)
     const glm::dvec3 g = -2.0 * blob_field_descent(blob, c);
-    const double linear = std::fabs(g.x) * half.x + std::fabs(g.y) * half.y + std::fabs(g.z) * half.z;
+    const double linear =
+        std::fabs(g.x) * half.x + std::fabs(g.y) * half.y + std::fabs(g.z) * half.z;
     const double reach = linear + 0.5 * m * glm::dot(half, half);
     if (!std::isfinite(reach) || !std::isfinite(f)) return true;
     // Rounding: the field and gradient sums, a few ulps of the magnitude.

@@ -34,7 +34,8 @@ class BlobModel {
         g.components.reserve(parts_.size());
         for (const auto& p : parts_)
             // POV-Ray squares the radius: a negative one is its magnitude.
-            g.components.push_back({p.kind, p.a.at(t), p.b.at(t), std::fabs(p.radius.at(t)), p.strength.at(t)});
+            g.components.push_back(
+                {p.kind, p.a.at(t), p.b.at(t), std::fabs(p.radius.at(t)), p.strength.at(t)});
         return g;
     }
     // The union of the components' reaches over t (POV-Ray finds the
@@ -45,7 +46,8 @@ class BlobModel {
         for (const auto& p : parts_) {
             const Interval r(0.0, p.radius.over(t).magnitude());
             box = hull(box, ball_box(p.a.over(t), r));
-            if (p.kind == geometry::BlobComponent::Kind::cylinder) box = hull(box, ball_box(p.b.over(t), r));
+            if (p.kind == geometry::BlobComponent::Kind::cylinder)
+                box = hull(box, ball_box(p.b.over(t), r));
         }
         return box;
     }

@@ -11,8 +11,9 @@
 // the face's own value exactly and s is good to a few ulps.
 #pragma once
 
-#include <glm/glm.hpp>
 #include <optional>
+
+#include <glm/glm.hpp>
 
 #include "runtime/geometry/ray3.hpp"
 

@@ -3,14 +3,14 @@
 
 #include <cmath>
 
+#include "runtime/objects/box/box.hpp"
 #include "runtime/objects/box/box_geometry.hpp"
 #include "runtime/objects/model_support.hpp"
-#include "runtime/objects/box/box.hpp"
 
 namespace hexant::runtime::objects {
 
 class BoxModel {
-public:
+  public:
     using Geometry = geometry::BoxGeometry;
     static constexpr bool kSolid = true;
     static constexpr bool kUvMapping = true;  // POV-Ray 3.7 maps it (primitive.hpp)
@@ -31,7 +31,7 @@ public:
         return e.x * e.y * e.z;
     }
 
-private:
+  private:
     CompiledVector3 corner1_, corner2_;
 };
 

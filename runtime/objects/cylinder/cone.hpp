@@ -31,7 +31,9 @@ struct Cone {
         return {a.vector3(0, "cone's base point"), a.number(1, "cone's base radius"),
                 a.vector3(2, "cone's cap point"), a.number(3, "cone's cap radius")};
     }
-    void set(std::string_view, const objects::ShapeArguments& value) { open = objects::flag(value); }
+    void set(std::string_view, const objects::ShapeArguments& value) {
+        open = objects::flag(value);
+    }
     template <class F>
     void parameters(F&& f) const {
         f("base", "base point", base);

@@ -16,8 +16,9 @@
 // axis tilted by the slope.
 #pragma once
 
-#include <glm/glm.hpp>
 #include <optional>
+
+#include <glm/glm.hpp>
 
 #include "runtime/geometry/ray3.hpp"
 

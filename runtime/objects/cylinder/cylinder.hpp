@@ -29,7 +29,9 @@ struct Cylinder {
         return {a.vector3(0, "cylinder's base point"), a.vector3(1, "cylinder's cap point"),
                 a.number(2, "cylinder's radius")};
     }
-    void set(std::string_view, const objects::ShapeArguments& value) { open = objects::flag(value); }
+    void set(std::string_view, const objects::ShapeArguments& value) {
+        open = objects::flag(value);
+    }
     template <class F>
     void parameters(F&& f) const {
         f("base", "base point", base);

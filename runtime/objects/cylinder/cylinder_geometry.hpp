@@ -15,8 +15,9 @@
 // origins 1e6 away; a ray parallel to the axis hits only the caps.
 #pragma once
 
-#include <glm/glm.hpp>
 #include <optional>
+
+#include <glm/glm.hpp>
 
 #include "runtime/geometry/ray3.hpp"
 

@@ -3,12 +3,12 @@
 
 #include <numbers>
 
+#include "runtime/objects/cylinder/cone.hpp"
 #include "runtime/objects/cylinder/cone_geometry.hpp"
+#include "runtime/objects/cylinder/cylinder.hpp"
 #include "runtime/objects/cylinder/cylinder_geometry.hpp"
 #include "runtime/objects/disc/disc_model.hpp"
 #include "runtime/objects/model_support.hpp"
-#include "runtime/objects/cylinder/cone.hpp"
-#include "runtime/objects/cylinder/cylinder.hpp"
 
 namespace hexant::runtime::objects {
 
@@ -20,12 +20,15 @@ inline Vector3Function axis_function(const Vector3Function& base, const Vector3F
 }
 
 class CylinderModel {
-public:
+  public:
     using Geometry = geometry::CylinderGeometry;
     static constexpr bool kSolid = true;
 
     explicit CylinderModel(const Cylinder& c)
-        : base_(c.base), cap_(c.cap), axis_(axis_function(c.base, c.cap)), radius_(c.radius),
+        : base_(c.base),
+          cap_(c.cap),
+          axis_(axis_function(c.base, c.cap)),
+          radius_(c.radius),
           open_(c.open) {}
 
     bool is_static() const {
@@ -48,20 +51,24 @@ public:
                               : 0.0;
     }
 
-private:
+  private:
     CompiledVector3 base_, cap_, axis_;
     CompiledScalar radius_;
     bool open_;
 };
 
 class ConeModel {
-public:
+  public:
     using Geometry = geometry::ConeGeometry;
     static constexpr bool kSolid = true;
 
     explicit ConeModel(const Cone& c)
-        : base_(c.base), cap_(c.cap), axis_(axis_function(c.base, c.cap)),
-          base_radius_(c.base_radius), cap_radius_(c.cap_radius), open_(c.open) {}
+        : base_(c.base),
+          cap_(c.cap),
+          axis_(axis_function(c.base, c.cap)),
+          base_radius_(c.base_radius),
+          cap_radius_(c.cap_radius),
+          open_(c.open) {}
 
     bool is_static() const {
         return base_.is_constant() && cap_.is_constant() && base_radius_.is_constant() &&
@@ -75,8 +82,7 @@ public:
                     ball_box(cap_.over(t), abs(cap_radius_.over(t))));
     }
     double surface_motion(const Interval& t, const Geometry& mid) const {
-        const double r =
-            std::max(abs(base_radius_.over(t)).hi, abs(cap_radius_.over(t)).hi);
+        const double r = std::max(abs(base_radius_.over(t)).hi, abs(cap_radius_.over(t)).hi);
         return std::max(deviation(base_, t, mid.base), deviation(cap_, t, mid.cap)) +
                r * direction_deviation(axis_, t, mid.cap - mid.base) +
                std::max(deviation(base_radius_, t, mid.base_radius),
@@ -88,7 +94,7 @@ public:
         return std::numbers::pi * glm::length(g.cap - g.base) * (a * a + a * b + b * b) / 3.0;
     }
 
-private:
+  private:
     CompiledVector3 base_, cap_, axis_;
     CompiledScalar base_radius_, cap_radius_;
     bool open_;

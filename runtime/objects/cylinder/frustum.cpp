@@ -5,10 +5,10 @@
 #include <limits>
 
 #include "runtime/geometry/box_queries.hpp"
-#include "runtime/objects/disc/disc_geometry.hpp"
 #include "runtime/geometry/local_ray.hpp"
 #include "runtime/geometry/orthonormal_basis.hpp"
 #include "runtime/geometry/stable_arithmetic.hpp"
+#include "runtime/objects/disc/disc_geometry.hpp"
 
 namespace hexant::runtime::geometry {
 

@@ -3,8 +3,9 @@
 // cylinder.cpp and cone.cpp; see cone.hpp for the conventions.
 #pragma once
 
-#include <glm/glm.hpp>
 #include <optional>
+
+#include <glm/glm.hpp>
 
 #include "runtime/geometry/ray3.hpp"
 

@@ -12,8 +12,9 @@
 // parallel to the plane has no hit (no division by zero).
 #pragma once
 
-#include <glm/glm.hpp>
 #include <optional>
+
+#include <glm/glm.hpp>
 
 #include "runtime/geometry/local_ray.hpp"
 #include "runtime/geometry/ray3.hpp"

@@ -1,9 +1,9 @@
 // The disc's time functions: centre, normal, radius and hole radius.
 #pragma once
 
+#include "runtime/objects/disc/disc.hpp"
 #include "runtime/objects/disc/disc_geometry.hpp"
 #include "runtime/objects/model_support.hpp"
-#include "runtime/objects/disc/disc.hpp"
 
 namespace hexant::runtime::objects {
 
@@ -26,7 +26,7 @@ inline double direction_deviation(const CompiledVector3& v, const Interval& t,
 }
 
 class DiscModel {
-public:
+  public:
     using Geometry = geometry::DiscGeometry;
     static constexpr bool kSolid = false;
 
@@ -37,7 +37,9 @@ public:
         return center_.is_constant() && normal_.is_constant() && radius_.is_constant() &&
                hole_.is_constant();
     }
-    Geometry at(double t) const { return {center_.at(t), normal_.at(t), radius_.at(t), hole_.at(t)}; }
+    Geometry at(double t) const {
+        return {center_.at(t), normal_.at(t), radius_.at(t), hole_.at(t)};
+    }
     IntervalBox box_over(const Interval& t) const {
         return ball_box(center_.over(t), radius_.over(t));
     }
@@ -48,7 +50,7 @@ public:
     }
     static double volume(const Geometry&) { return 0.0; }
 
-private:
+  private:
     CompiledVector3 center_, normal_;
     CompiledScalar radius_, hole_;
 };

@@ -29,8 +29,9 @@ class HeightFieldModel;
 struct HeightField {
     static constexpr std::string_view keyword = "height_field";
     // POV-Ray 3.7's image type words (Parse_Image).
-    static constexpr std::array<std::string_view, 13> options{
-        "bmp", "exr", "gif", "hdr", "iff", "jpeg", "pgm", "png", "pot", "ppm", "sys", "tga", "tiff"};
+    static constexpr std::array<std::string_view, 13> options{"bmp",  "exr", "gif", "hdr", "iff",
+                                                              "jpeg", "pgm", "png", "pot", "ppm",
+                                                              "sys",  "tga", "tiff"};
     static constexpr std::array<std::string_view, 3> settings{"hierarchy", "smooth", "water_level"};
     using Model = objects::HeightFieldModel;
 

@@ -136,7 +136,8 @@ std::vector<std::uint16_t> heights_from_image(const image::StoredImage& image,
     const bool palette = image.source == Source::Palette && !image.linear;
     if (palette && (!indices || indices->size() != out.size()))
         throw HeightFieldError("height_field: a paletted image's indices are missing");
-    const bool gray = !image.linear && (image.source == Source::Gray || image.source == Source::GrayAlpha);
+    const bool gray =
+        !image.linear && (image.source == Source::Gray || image.source == Source::GrayAlpha);
     const bool deep = !image.linear && image.source_bits > 8;
     for (int row = 0; row < h; ++row) {
         // POV-Ray's z = 0 is the image's bottom row.
@@ -167,8 +168,8 @@ std::vector<std::uint16_t> heights_from_image(const image::StoredImage& image,
                 const double value = (double(r) * 256.0 + double(g)) * 255.0;
                 height = std::isfinite(value) ? to_height(value) : 0;
             }
-            out[static_cast<std::size_t>(z) * static_cast<std::size_t>(w) + static_cast<std::size_t>(x)] =
-                height;
+            out[static_cast<std::size_t>(z) * static_cast<std::size_t>(w) +
+                static_cast<std::size_t>(x)] = height;
         }
     }
     return out;

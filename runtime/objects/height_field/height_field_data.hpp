@@ -81,7 +81,8 @@ class HeightFieldData {
             const std::uint32_t i = stack.back();
             stack.pop_back();
             if (!visit(i)) continue;
-            for (std::uint32_t c = 0; c < nodes_[i].count; ++c) stack.push_back(nodes_[i].first + c);
+            for (std::uint32_t c = 0; c < nodes_[i].count; ++c)
+                stack.push_back(nodes_[i].first + c);
         }
     }
 

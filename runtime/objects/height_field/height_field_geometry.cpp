@@ -80,10 +80,10 @@ glm::dvec3 height_field_smooth_normal(const HeightFieldData& d, const glm::dvec3
     const auto& normals = d.smooth_normals();
     const double gx = point.x * d.x_scale(), gz = point.z * d.z_scale();
     // (int) truncation, clamped to the last cell (HField::Normal).
-    const int px = std::clamp(std::isfinite(gx) ? static_cast<int>(std::clamp(gx, -1.0, 1e9)) : 0, 0,
-                              d.width() - 2);
-    const int pz = std::clamp(std::isfinite(gz) ? static_cast<int>(std::clamp(gz, -1.0, 1e9)) : 0, 0,
-                              d.depth() - 2);
+    const int px = std::clamp(std::isfinite(gx) ? static_cast<int>(std::clamp(gx, -1.0, 1e9)) : 0,
+                              0, d.width() - 2);
+    const int pz = std::clamp(std::isfinite(gz) ? static_cast<int>(std::clamp(gz, -1.0, 1e9)) : 0,
+                              0, d.depth() - 2);
     const double x = gx - px, z = gz - pz;
     const auto corner = [&](int cx, int cz) {
         const auto& s = normals[static_cast<std::size_t>(cz) * static_cast<std::size_t>(d.width()) +
@@ -134,9 +134,9 @@ std::optional<SurfaceHit> intersect(const HeightFieldGeometry& field, const Ray3
             for (auto z = node.z0; z < node.z1; ++z)
                 for (auto x = node.x0; x < node.x1; ++x) {
                     const int cx = static_cast<int>(x), cz = static_cast<int>(z);
-                    const double top_height = std::max(
-                        {d.height(cx, cz), d.height(cx + 1, cz), d.height(cx, cz + 1),
-                         d.height(cx + 1, cz + 1)});
+                    const double top_height =
+                        std::max({d.height(cx, cz), d.height(cx + 1, cz), d.height(cx, cz + 1),
+                                  d.height(cx + 1, cz + 1)});
                     if (top_height < floor_height) continue;
                     for (int which = 0; which < 2; ++which) {
                         const CellTriangle t = cell_triangle(d, cx, cz, which);
@@ -191,7 +191,9 @@ bool inside(const HeightFieldGeometry& field, glm::dvec3 p) {
     if (test.y < water) return true;
     int px = static_cast<int>(test.x), pz = static_cast<int>(test.z);
     const double x = test.x - px, z = test.z - pz;
-    const auto h = [&](int cx, int cz) { return std::max(static_cast<double>(d.height(cx, cz)), water); };
+    const auto h = [&](int cx, int cz) {
+        return std::max(static_cast<double>(d.height(cx, cz)), water);
+    };
     glm::dvec3 origin, normal;
     if (x + z < 1.0) {
         const double y1 = h(px, pz), y2 = h(px + 1, pz), y3 = h(px, pz + 1);

@@ -51,6 +51,7 @@ bool surface_may_meet(const HeightFieldGeometry& field, const Box3& box);
 
 // The shading normal `smooth` gives at an object-space point (exposed for
 // tests).
-glm::dvec3 height_field_smooth_normal(const objects::HeightFieldData& data, const glm::dvec3& point);
+glm::dvec3 height_field_smooth_normal(const objects::HeightFieldData& data,
+                                      const glm::dvec3& point);
 
 }  // namespace hexant::runtime::geometry

@@ -46,9 +46,8 @@ class HeightFieldModel {
     template <class Refine, class Emit>
     void pieces(Refine&& refine, Emit&& emit) const {
         if (!data_) return;
-        const double floor = water_.is_constant()
-                                 ? geometry::height_field_floor(*data_, water_.constant())
-                                 : -1.0;
+        const double floor =
+            water_.is_constant() ? geometry::height_field_floor(*data_, water_.constant()) : -1.0;
         const double floor_height = floor * 65536.0;
         const auto& nodes = data_->nodes();
         data_->descend([&](std::uint32_t i) {

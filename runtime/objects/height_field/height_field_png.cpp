@@ -1,13 +1,13 @@
 // A paletted PNG's indices for height_field (POV-Ray takes a palette
 // image's heights from its indices, not its colours, which
 // image::read_stored_image expands to). libpng directly.
-#include <png.h>
-
 #include <csetjmp>
 #include <cstdio>
 #include <memory>
 #include <string>
 #include <vector>
+
+#include <png.h>
 
 #include "runtime/objects/height_field/height_field_data.hpp"
 

@@ -15,11 +15,16 @@ Lathe Lathe::read(const objects::ShapeArguments& a) {
     using geometry::LatheSpline;
     Lathe lathe;
     for (const auto& word : a.options()) {
-        if (word == "linear_spline") lathe.spline = LatheSpline::linear;
-        else if (word == "quadratic_spline") lathe.spline = LatheSpline::quadratic;
-        else if (word == "cubic_spline") lathe.spline = LatheSpline::cubic;
-        else if (word == "bezier_spline") lathe.spline = LatheSpline::bezier;
-        else a.fail("lathe takes no '" + word + "'");
+        if (word == "linear_spline")
+            lathe.spline = LatheSpline::linear;
+        else if (word == "quadratic_spline")
+            lathe.spline = LatheSpline::quadratic;
+        else if (word == "cubic_spline")
+            lathe.spline = LatheSpline::cubic;
+        else if (word == "bezier_spline")
+            lathe.spline = LatheSpline::bezier;
+        else
+            a.fail("lathe takes no '" + word + "'");
     }
     if (a.size() < 1) a.need(1, 1, "a point count and the points");
     const long long n = a.count(0, "lathe's point count", -100'000'000, 100'000'000);

@@ -44,8 +44,8 @@ void cubic_range(const Cubic& p, double& lo, double& hi) {
 }
 
 bool valid(const LatheGeometry& lathe) {
-    return !lathe.segments.empty() && std::isfinite(lathe.radius) &&
-           std::isfinite(lathe.height1) && std::isfinite(lathe.height2);
+    return !lathe.segments.empty() && std::isfinite(lathe.radius) && std::isfinite(lathe.height1) &&
+           std::isfinite(lathe.height2);
 }
 
 double size_of(const LatheGeometry& lathe) {
@@ -91,9 +91,7 @@ glm::dvec2 lathe_uv(const LatheGeometry& lathe, const glm::dvec3& p, int segment
 // The ray's image: height and distance from the axis at k.
 struct RayTerms {
     glm::dvec3 o, u;
-    double rho(double k) const {
-        return std::hypot(std::fma(k, u.x, o.x), std::fma(k, u.z, o.z));
-    }
+    double rho(double k) const { return std::hypot(std::fma(k, u.x, o.x), std::fma(k, u.z, o.z)); }
     double rho_slope(double k, double rho_k) const {
         if (!(rho_k > 0.0)) return 0.0;
         return (std::fma(k, u.x, o.x) * u.x + std::fma(k, u.z, o.z) * u.z) / rho_k;
@@ -146,10 +144,18 @@ int lathe_segment_count(LatheSpline spline, std::size_t points) {
     const long long n = static_cast<long long>(points);
     long long segments = 0;
     switch (spline) {
-        case LatheSpline::linear: segments = n - 1; break;
-        case LatheSpline::quadratic: segments = n - 2; break;
-        case LatheSpline::cubic: segments = n - 3; break;
-        case LatheSpline::bezier: segments = n / 4; break;
+        case LatheSpline::linear:
+            segments = n - 1;
+            break;
+        case LatheSpline::quadratic:
+            segments = n - 2;
+            break;
+        case LatheSpline::cubic:
+            segments = n - 3;
+            break;
+        case LatheSpline::bezier:
+            segments = n / 4;
+            break;
     }
     return static_cast<int>(std::max(segments, 0LL));
 }
@@ -230,8 +236,9 @@ std::optional<SurfaceHit> intersect(const LatheGeometry& lathe, const Ray3& ray,
         }
         const double reach = s.r_hi + slack;
         if (r > 0.0) {
-            const QuadraticRoots ring = solve_quadratic(r, m, difference_of_squares(rho0, reach),
-                                                        difference_of_squares(reach * root_r, across));
+            const QuadraticRoots ring =
+                solve_quadratic(r, m, difference_of_squares(rho0, reach),
+                                difference_of_squares(reach * root_r, across));
             if (ring.count == 0) continue;
             a = std::max(a, ring.t[0] - slack);
             b = std::min(b, ring.t[ring.count - 1] + slack);
@@ -351,7 +358,8 @@ bool surface_may_meet(const LatheGeometry& lathe, const Box3& box) {
     const Box3 wide = widened(box, meet_slack(box, size_of(lathe)) + 1e-12 * size_of(lathe));
     if (!overlaps(wide, bounds)) return false;
     // The box's range of distance from the axis and of height.
-    const double nx = std::clamp(0.0, wide.lo.x, wide.hi.x), nz = std::clamp(0.0, wide.lo.z, wide.hi.z);
+    const double nx = std::clamp(0.0, wide.lo.x, wide.hi.x),
+                 nz = std::clamp(0.0, wide.lo.z, wide.hi.z);
     const double rho_lo = std::hypot(nx, nz);
     const double rho_hi = std::hypot(std::max(std::fabs(wide.lo.x), std::fabs(wide.hi.x)),
                                      std::max(std::fabs(wide.lo.z), std::fabs(wide.hi.z)));
@@ -364,7 +372,8 @@ bool surface_may_meet(const LatheGeometry& lathe, const Box3& box) {
     };
     for (std::size_t j = 0; j < lathe.segments.size(); ++j) {
         const LatheSegment& s = lathe.segments[j];
-        if (s.r_hi < rho_lo || s.r_lo > rho_hi || s.y_hi < wide.lo.y || s.y_lo > wide.hi.y) continue;
+        if (s.r_hi < rho_lo || s.r_lo > rho_hi || s.y_hi < wide.lo.y || s.y_lo > wide.hi.y)
+            continue;
         Piece stack[64];
         int top = 0;
         stack[top++] = {j, 0.0, 1.0, 0};
@@ -382,7 +391,8 @@ bool surface_may_meet(const LatheGeometry& lathe, const Box3& box) {
                 16.0 * kEpsilon * (glm::abs(s.a) + glm::abs(s.b) + glm::abs(s.c) + glm::abs(s.d));
             const double x_lo = at.x - margin.x, x_hi = at.x + margin.x;
             const double r_hi = std::max(std::fabs(x_lo), std::fabs(x_hi));
-            const double r_lo = x_lo <= 0.0 && x_hi >= 0.0 ? 0.0 : std::min(std::fabs(x_lo), std::fabs(x_hi));
+            const double r_lo =
+                x_lo <= 0.0 && x_hi >= 0.0 ? 0.0 : std::min(std::fabs(x_lo), std::fabs(x_hi));
             if (r_hi < rho_lo || r_lo > rho_hi || at.y + margin.y < wide.lo.y ||
                 at.y - margin.y > wide.hi.y)
                 continue;

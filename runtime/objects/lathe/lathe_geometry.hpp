@@ -31,9 +31,10 @@
 // size whatever the ray's slope.
 #pragma once
 
-#include <glm/glm.hpp>
 #include <optional>
 #include <vector>
+
+#include <glm/glm.hpp>
 
 #include "runtime/geometry/ray3.hpp"
 
@@ -53,7 +54,7 @@ struct LatheSegment {
 
 struct LatheGeometry {
     std::vector<LatheSegment> segments;
-    double radius = 0.0;                 // the largest |r(t)|
+    double radius = 0.0;                  // the largest |r(t)|
     double height1 = 0.0, height2 = 0.0;  // the height range
 };
 

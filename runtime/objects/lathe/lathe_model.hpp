@@ -11,7 +11,7 @@
 namespace hexant::runtime::objects {
 
 class LatheModel {
-public:
+  public:
     using Geometry = geometry::LatheGeometry;
     static constexpr bool kSolid = true;
     static constexpr bool kUvMapping = true;  // POV-Ray 3.7 maps it (primitive.hpp)
@@ -75,16 +75,16 @@ public:
         (void)mid;
         double m = 0.0;
         for (const auto& p : points_) m = std::max(m, deviation(p, t, p.at(t.mid())));
-        const double weights = spline_ == geometry::LatheSpline::linear ||
-                                       spline_ == geometry::LatheSpline::bezier
-                                   ? 1.0
-                                   : 2.25;
+        const double weights =
+            spline_ == geometry::LatheSpline::linear || spline_ == geometry::LatheSpline::bezier
+                ? 1.0
+                : 2.25;
         return weights * m;
     }
     // Sampled by the caller (the profile may cross itself).
     static double volume(const Geometry&) { return -1.0; }
 
-private:
+  private:
     geometry::LatheSpline spline_;
     std::vector<CompiledVector3> points_;
     bool is_static_ = true;

@@ -37,9 +37,12 @@ struct Mesh {
     const std::vector<Texture>& part_textures() const { return data->textures; }
     template <class F>
     void parameters(F&& f) const {
-        f("triangles", "triangles", objects::DescribedParameter{std::to_string(data->faces.size())});
-        f("vertices", "vertices", objects::DescribedParameter{std::to_string(data->vertices.size())});
-        f("textures", "textures", objects::DescribedParameter{std::to_string(data->textures.size())});
+        f("triangles", "triangles",
+          objects::DescribedParameter{std::to_string(data->faces.size())});
+        f("vertices", "vertices",
+          objects::DescribedParameter{std::to_string(data->vertices.size())});
+        f("textures", "textures",
+          objects::DescribedParameter{std::to_string(data->textures.size())});
         if (data->inside_vector) {
             const glm::dvec3 v = *data->inside_vector;
             f("inside_vector", "inside_vector", Vector3Function{{v.x, v.y, v.z}});

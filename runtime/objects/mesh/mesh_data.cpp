@@ -5,7 +5,8 @@ namespace hexant::runtime::objects {
 std::size_t MeshData::bytes() const {
     return vertices.capacity() * sizeof(glm::dvec3) + normals.capacity() * sizeof(glm::dvec3) +
            uvs.capacity() * sizeof(glm::dvec2) + faces.capacity() * sizeof(MeshFace) +
-           hierarchy.nodes().capacity() * sizeof(MeshHierarchy::Node) + textures.size() * sizeof(Texture);
+           hierarchy.nodes().capacity() * sizeof(MeshHierarchy::Node) +
+           textures.size() * sizeof(Texture);
 }
 
 }  // namespace hexant::runtime::objects

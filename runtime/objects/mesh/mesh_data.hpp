@@ -12,8 +12,8 @@
 
 #include <glm/glm.hpp>
 
-#include "runtime/texture/material.hpp"
 #include "runtime/objects/mesh/mesh_hierarchy.hpp"
+#include "runtime/texture/material.hpp"
 
 namespace hexant::runtime::objects {
 

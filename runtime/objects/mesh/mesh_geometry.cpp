@@ -30,34 +30,37 @@ std::optional<SurfaceHit> intersect(const MeshGeometry& mesh, const Ray3& ray, d
     const objects::MeshData& m = *mesh.data;
     std::optional<BarycentricHit> best;
     std::uint32_t best_face = 0;
-    m.hierarchy.traverse(ray, s_min, s_max, [&](std::uint32_t first, std::uint32_t count, double s_far) {
-        for (std::uint32_t i = first; i < first + count; ++i) {
-            const auto& f = m.faces[i];
-            const auto hit = intersect_barycentric(m.vertices[f.vertex[0]], m.vertices[f.vertex[1]],
-                                                   m.vertices[f.vertex[2]], ray, s_min, s_far);
-            if (hit) {
-                best = hit;
-                best_face = i;
-                s_far = hit->s;
+    m.hierarchy.traverse(
+        ray, s_min, s_max, [&](std::uint32_t first, std::uint32_t count, double s_far) {
+            for (std::uint32_t i = first; i < first + count; ++i) {
+                const auto& f = m.faces[i];
+                const auto hit =
+                    intersect_barycentric(m.vertices[f.vertex[0]], m.vertices[f.vertex[1]],
+                                          m.vertices[f.vertex[2]], ray, s_min, s_far);
+                if (hit) {
+                    best = hit;
+                    best_face = i;
+                    s_far = hit->s;
+                }
             }
-        }
-        return s_far;
-    });
+            return s_far;
+        });
     if (!best) return std::nullopt;
     const auto& f = m.faces[best_face];
-    const glm::dvec3 &p1 = m.vertices[f.vertex[0]], &p2 = m.vertices[f.vertex[1]], &p3 = m.vertices[f.vertex[2]];
+    const glm::dvec3 &p1 = m.vertices[f.vertex[0]], &p2 = m.vertices[f.vertex[1]],
+                     &p3 = m.vertices[f.vertex[2]];
     SurfaceHit hit;
     if (!unit(glm::cross(p2 - p1, p3 - p1), hit.normal)) return std::nullopt;  // a sliver: no hit
     hit.s = best->s;
     hit.shading_normal = hit.normal;
     glm::dvec3 blend;
-    if (f.smooth() &&
-        unit(best->b1 * m.normals[f.normal[0]] + best->b2 * m.normals[f.normal[1]] +
-                 best->b3 * m.normals[f.normal[2]],
-             blend))
+    if (f.smooth() && unit(best->b1 * m.normals[f.normal[0]] + best->b2 * m.normals[f.normal[1]] +
+                               best->b3 * m.normals[f.normal[2]],
+                           blend))
         hit.shading_normal = blend;
-    hit.uv = f.uv[0] >= 0 ? best->b1 * m.uvs[f.uv[0]] + best->b2 * m.uvs[f.uv[1]] + best->b3 * m.uvs[f.uv[2]]
-                          : glm::dvec2(0.0);
+    hit.uv = f.uv[0] >= 0
+                 ? best->b1 * m.uvs[f.uv[0]] + best->b2 * m.uvs[f.uv[1]] + best->b3 * m.uvs[f.uv[2]]
+                 : glm::dvec2(0.0);
     hit.part = static_cast<int>(best_face);
     hit.point = best->b1 * p1 + best->b2 * p2 + best->b3 * p3;
     hit.error = barycentric_error(*best, p1, p2, p3);
@@ -71,16 +74,17 @@ bool inside(const MeshGeometry& mesh, glm::dvec3 p) {
     // Every crossing along the inside_vector from p, counted once per face.
     const Ray3 ray{p, *m.inside_vector};
     int crossings = 0;
-    m.hierarchy.traverse(ray, 0.0, std::numeric_limits<double>::infinity(),
-                         [&](std::uint32_t first, std::uint32_t count, double s_far) {
-                             for (std::uint32_t i = first; i < first + count; ++i) {
-                                 const auto& f = m.faces[i];
-                                 if (intersect_barycentric(m.vertices[f.vertex[0]], m.vertices[f.vertex[1]],
-                                                           m.vertices[f.vertex[2]], ray, 0.0, s_far))
-                                     ++crossings;
-                             }
-                             return s_far;
-                         });
+    m.hierarchy.traverse(
+        ray, 0.0, std::numeric_limits<double>::infinity(),
+        [&](std::uint32_t first, std::uint32_t count, double s_far) {
+            for (std::uint32_t i = first; i < first + count; ++i) {
+                const auto& f = m.faces[i];
+                if (intersect_barycentric(m.vertices[f.vertex[0]], m.vertices[f.vertex[1]],
+                                          m.vertices[f.vertex[2]], ray, 0.0, s_far))
+                    ++crossings;
+            }
+            return s_far;
+        });
     return crossings % 2 == 1;
 }
 
@@ -99,7 +103,8 @@ bool surface_may_meet(const MeshGeometry& mesh, const Box3& box) {
         if (node.count == 0) return true;
         for (std::uint32_t i = node.first; i < node.first + node.count && !met; ++i) {
             const auto& f = m.faces[i];
-            met = triangle_may_meet(m.vertices[f.vertex[0]], m.vertices[f.vertex[1]], m.vertices[f.vertex[2]], box);
+            met = triangle_may_meet(m.vertices[f.vertex[0]], m.vertices[f.vertex[1]],
+                                    m.vertices[f.vertex[2]], box);
         }
         return false;
     });

@@ -17,7 +17,8 @@ struct Builder {
     std::vector<MeshHierarchy::Node>& nodes;
 
     geometry::Box3 face_box(const MeshFace& f) const {
-        const glm::dvec3 &a = vertices[f.vertex[0]], &b = vertices[f.vertex[1]], &c = vertices[f.vertex[2]];
+        const glm::dvec3 &a = vertices[f.vertex[0]], &b = vertices[f.vertex[1]],
+                         &c = vertices[f.vertex[2]];
         return {glm::min(a, glm::min(b, c)), glm::max(a, glm::max(b, c))};
     }
 
@@ -40,12 +41,15 @@ struct Builder {
         // The median of the centres along the widest axis of their box:
         // balanced, so the depth is log2 of the leaves.
         const glm::dvec3 extent = centre_box.hi - centre_box.lo;
-        const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : extent.y >= extent.z ? 1 : 2;
+        const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0
+                         : extent.y >= extent.z                       ? 1
+                                                                      : 2;
         const std::uint32_t mid = first + n / 2;
         std::vector<std::uint32_t> order(n);
         for (std::uint32_t i = 0; i < n; ++i) order[i] = first + i;
-        std::nth_element(order.begin(), order.begin() + (mid - first), order.end(),
-                         [&](std::uint32_t a, std::uint32_t b) { return centres[a][axis] < centres[b][axis]; });
+        std::nth_element(
+            order.begin(), order.begin() + (mid - first), order.end(),
+            [&](std::uint32_t a, std::uint32_t b) { return centres[a][axis] < centres[b][axis]; });
         std::vector<MeshFace> f(n);
         std::vector<glm::dvec3> c(n);
         for (std::uint32_t i = 0; i < n; ++i) {
@@ -68,14 +72,16 @@ struct Builder {
 
 }  // namespace
 
-MeshHierarchy MeshHierarchy::build(const std::vector<glm::dvec3>& vertices, std::vector<MeshFace>& faces) {
+MeshHierarchy MeshHierarchy::build(const std::vector<glm::dvec3>& vertices,
+                                   std::vector<MeshFace>& faces) {
     MeshHierarchy h;
     if (faces.empty()) return h;
     h.nodes_.reserve(2 * (faces.size() / kMeshLeafSize + 1));
     Builder b{vertices, faces, {}, h.nodes_};
     b.centres.reserve(faces.size());
     for (const auto& f : faces)
-        b.centres.push_back((vertices[f.vertex[0]] + vertices[f.vertex[1]] + vertices[f.vertex[2]]) / 3.0);
+        b.centres.push_back(
+            (vertices[f.vertex[0]] + vertices[f.vertex[1]] + vertices[f.vertex[2]]) / 3.0);
     h.nodes_.emplace_back();
     b.build(0, 0, static_cast<std::uint32_t>(faces.size()));
     return h;

@@ -32,7 +32,8 @@ class MeshHierarchy {
     };
 
     // Reorders `faces` into the tree's leaf order.
-    static MeshHierarchy build(const std::vector<glm::dvec3>& vertices, std::vector<MeshFace>& faces);
+    static MeshHierarchy build(const std::vector<glm::dvec3>& vertices,
+                               std::vector<MeshFace>& faces);
 
     bool empty() const { return nodes_.empty(); }
     const std::vector<Node>& nodes() const { return nodes_; }
@@ -70,7 +71,8 @@ bool ray_meets_box(const geometry::Box3& box, const glm::dvec3& origin, const gl
                    double s_min, double s_max, double& entry);
 
 template <class Leaf>
-void MeshHierarchy::traverse(const geometry::Ray3& ray, double s_min, double s_max, Leaf&& leaf) const {
+void MeshHierarchy::traverse(const geometry::Ray3& ray, double s_min, double s_max,
+                             Leaf&& leaf) const {
     if (nodes_.empty()) return;
     const glm::dvec3 inverse = 1.0 / ray.direction;
     struct Pending {

@@ -11,7 +11,7 @@ namespace hexant::runtime::objects {
 class MeshModel {
   public:
     using Geometry = geometry::MeshGeometry;
-    static constexpr bool kSolid = true;  // with an inside_vector; inside() says
+    static constexpr bool kSolid = true;      // with an inside_vector; inside() says
     static constexpr bool kUvMapping = true;  // POV-Ray 3.7 maps it (primitive.hpp)
 
     explicit MeshModel(const Mesh& mesh) : data_(mesh.data) {}

@@ -12,8 +12,9 @@
 // that fails any finite s_max, never an Inf or NaN.
 #pragma once
 
-#include <glm/glm.hpp>
 #include <optional>
+
+#include <glm/glm.hpp>
 
 #include "runtime/geometry/ray3.hpp"
 

@@ -2,14 +2,14 @@
 // keeps planes outside the hierarchy.
 #pragma once
 
-#include "runtime/objects/plane/plane_geometry.hpp"
 #include "runtime/objects/model_support.hpp"
 #include "runtime/objects/plane/plane.hpp"
+#include "runtime/objects/plane/plane_geometry.hpp"
 
 namespace hexant::runtime::objects {
 
 class PlaneModel {
-public:
+  public:
     using Geometry = geometry::PlaneGeometry;
     static constexpr bool kSolid = true;
     static constexpr bool kUnbounded = true;
@@ -27,7 +27,7 @@ public:
     }
     static double volume(const Geometry&) { return std::numeric_limits<double>::infinity(); }
 
-private:
+  private:
     CompiledVector3 normal_;
     CompiledScalar distance_;
 };

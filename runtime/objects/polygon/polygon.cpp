@@ -14,7 +14,8 @@ Polygon Polygon::read(const objects::ShapeArguments& a) {
     Polygon polygon;
     polygon.points.reserve(a.size() - 1);
     // A 2-vector point has z = 0 (POV-Ray pads it).
-    for (std::size_t i = 1; i < a.size(); ++i) polygon.points.push_back(a.vector3(i, "a polygon point"));
+    for (std::size_t i = 1; i < a.size(); ++i)
+        polygon.points.push_back(a.vector3(i, "a polygon point"));
     return polygon;
 }
 

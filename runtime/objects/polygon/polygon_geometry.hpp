@@ -21,9 +21,10 @@
 // |vertex - ray origin|, which from a far origin is coarser than the point.
 #pragma once
 
-#include <glm/glm.hpp>
 #include <optional>
 #include <vector>
+
+#include <glm/glm.hpp>
 
 #include "runtime/geometry/ray3.hpp"
 

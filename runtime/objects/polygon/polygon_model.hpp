@@ -3,14 +3,14 @@
 
 #include <vector>
 
-#include "runtime/objects/polygon/polygon_geometry.hpp"
 #include "runtime/objects/model_support.hpp"
 #include "runtime/objects/polygon/polygon.hpp"
+#include "runtime/objects/polygon/polygon_geometry.hpp"
 
 namespace hexant::runtime::objects {
 
 class PolygonModel {
-public:
+  public:
     using Geometry = geometry::PolygonGeometry;
     static constexpr bool kSolid = false;
 
@@ -43,7 +43,7 @@ public:
     }
     static double volume(const Geometry&) { return 0.0; }
 
-private:
+  private:
     std::vector<CompiledVector3> points_;
     bool is_static_ = true;
 };

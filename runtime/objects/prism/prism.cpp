@@ -8,7 +8,8 @@ Prism Prism::read(const objects::ShapeArguments& a) {
     // The last sweep and the last spline written count (POV-Ray's parser
     // reads them in any order and keeps the last of each).
     std::string sweep = "linear_sweep", spline = "linear_spline";
-    for (const auto& word : a.options()) (word.find("sweep") != std::string::npos ? sweep : spline) = word;
+    for (const auto& word : a.options())
+        (word.find("sweep") != std::string::npos ? sweep : spline) = word;
     Prism prism;
     if (a.size() < 3) a.need(3, 3, "two heights, a point count and the points");
     prism.height1 = a.number(0, "prism's first height");
@@ -22,7 +23,8 @@ Prism Prism::read(const objects::ShapeArguments& a) {
         a.fail("prism says it has " + std::to_string(n) + " points but lists " +
                std::to_string(a.size() - 3));
     prism.points.reserve(a.size() - 3);
-    for (std::size_t i = 3; i < a.size(); ++i) prism.points.push_back(a.vector2(i, "a prism point"));
+    for (std::size_t i = 3; i < a.size(); ++i)
+        prism.points.push_back(a.vector2(i, "a prism point"));
     return prism;
 }
 

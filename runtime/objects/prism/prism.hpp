@@ -4,9 +4,9 @@
 #pragma once
 
 #include <array>
-#include <string_view>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "runtime/objects/shape_kind.hpp"
@@ -20,9 +20,9 @@ class PrismModel;
 
 struct Prism {
     static constexpr std::string_view keyword = "prism";
-    static constexpr std::array<std::string_view, 6> options{
-        "bezier_spline", "conic_sweep", "cubic_spline", "linear_spline", "linear_sweep",
-        "quadratic_spline"};
+    static constexpr std::array<std::string_view, 6> options{"bezier_spline", "conic_sweep",
+                                                             "cubic_spline",  "linear_spline",
+                                                             "linear_sweep",  "quadratic_spline"};
     static constexpr std::array<std::string_view, 1> settings{"open"};
     using Model = objects::PrismModel;
 
@@ -34,7 +34,9 @@ struct Prism {
     std::string lacking;
 
     static Prism read(const objects::ShapeArguments& a);
-    void set(std::string_view, const objects::ShapeArguments& value) { open = objects::flag(value); }
+    void set(std::string_view, const objects::ShapeArguments& value) {
+        open = objects::flag(value);
+    }
     std::optional<std::string> unsupported() const {
         if (lacking.empty()) return std::nullopt;
         return lacking;

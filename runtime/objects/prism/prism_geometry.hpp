@@ -19,9 +19,10 @@
 // to a few ulps, from an origin moved next to the prism.
 #pragma once
 
-#include <glm/glm.hpp>
 #include <optional>
 #include <vector>
+
+#include <glm/glm.hpp>
 
 #include "runtime/geometry/ray3.hpp"
 

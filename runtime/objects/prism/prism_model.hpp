@@ -3,19 +3,18 @@
 
 #include <vector>
 
-#include "runtime/objects/prism/prism_geometry.hpp"
 #include "runtime/objects/model_support.hpp"
 #include "runtime/objects/prism/prism.hpp"
+#include "runtime/objects/prism/prism_geometry.hpp"
 
 namespace hexant::runtime::objects {
 
 class PrismModel {
-public:
+  public:
     using Geometry = geometry::PrismGeometry;
     static constexpr bool kSolid = true;
 
-    explicit PrismModel(const Prism& p)
-        : height1_(p.height1), height2_(p.height2), open_(p.open) {
+    explicit PrismModel(const Prism& p) : height1_(p.height1), height2_(p.height2), open_(p.open) {
         is_static_ = height1_.is_constant() && height2_.is_constant();
         points_.reserve(p.points.size());
         for (const auto& point : p.points) {
@@ -49,15 +48,15 @@ public:
     double surface_motion(const Interval& t, const Geometry& mid) const {
         double m = 0.0;
         for (std::size_t i = 0; i < points_.size(); ++i)
-            m = std::max(m, deviation(points_[i], t,
-                                      glm::dvec3(mid.points[i].x, 0.0, mid.points[i].y)));
-        return m + std::max(deviation(height1_, t, mid.height1),
-                            deviation(height2_, t, mid.height2));
+            m = std::max(
+                m, deviation(points_[i], t, glm::dvec3(mid.points[i].x, 0.0, mid.points[i].y)));
+        return m +
+               std::max(deviation(height1_, t, mid.height1), deviation(height2_, t, mid.height2));
     }
     // Nested outlines under the even-odd rule: sampled by the caller.
     static double volume(const Geometry&) { return -1.0; }
 
-private:
+  private:
     CompiledScalar height1_, height2_;
     std::vector<CompiledVector3> points_;
     bool open_;

@@ -26,7 +26,8 @@ Sor Sor::read(const objects::ShapeArguments& a) {
         sor.points.push_back(a.vector2(i, "a sor point"));
         const std::size_t k = i - 1;  // POV-Ray's index
         const auto& p = sor.points.back().c;
-        if (known(p[0]) && p[0].constant() < 0.0) a.fail("Incorrect point in surface of revolution.");
+        if (known(p[0]) && p[0].constant() < 0.0)
+            a.fail("Incorrect point in surface of revolution.");
         if (k > 1 && k < static_cast<std::size_t>(n) - 1) {
             const auto& before = sor.points[k - 1].c;
             if (known(p[1]) && known(before[1]) && p[1].constant() <= before[1].constant())

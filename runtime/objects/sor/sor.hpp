@@ -27,7 +27,9 @@ struct Sor {
     bool open = false;
 
     static Sor read(const objects::ShapeArguments& a);
-    void set(std::string_view, const objects::ShapeArguments& value) { open = objects::flag(value); }
+    void set(std::string_view, const objects::ShapeArguments& value) {
+        open = objects::flag(value);
+    }
     template <class F>
     void parameters(F&& f) const {
         f("points", "point", points);

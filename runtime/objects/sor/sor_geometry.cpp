@@ -16,16 +16,16 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kTwoPi = 6.28318530717958647692;
-constexpr double kPovEpsilon = 1e-10;         // POV-Ray's EPSILON
-constexpr double kPovDepthTolerance = 1e-4;   // sor.cpp's DEPTH_TOLERANCE
+constexpr double kPovEpsilon = 1e-10;        // POV-Ray's EPSILON
+constexpr double kPovDepthTolerance = 1e-4;  // sor.cpp's DEPTH_TOLERANCE
 
 bool valid(const SorGeometry& sor) {
     return !sor.segments.empty() && std::isfinite(sor.radius);
 }
 
 double size_of(const SorGeometry& sor) {
-    return std::max({sor.radius, std::fabs(sor.height1), std::fabs(sor.height2),
-                     sor.height2 - sor.height1});
+    return std::max(
+        {sor.radius, std::fabs(sor.height1), std::fabs(sor.height2), sor.height2 - sor.height1});
 }
 
 double coefficient_size(const SorSegment& s, double y) {
@@ -91,8 +91,10 @@ SorGeometry make_sor(const std::vector<glm::dvec2>& points, bool open) {
         s.y_hi = p2.y;
         double r2_hi = std::max(s.r2(s.y_lo), s.r2(s.y_hi));
         const std::array<double, 3> slope{s.c, 2.0 * s.b, 3.0 * s.a};
-        for (const double y : polynomial_roots(slope, s.y_lo, s.y_hi)) r2_hi = std::max(r2_hi, s.r2(y));
-        r2_hi += 16.0 * kEpsilon * coefficient_size(s, std::max(std::fabs(s.y_lo), std::fabs(s.y_hi)));
+        for (const double y : polynomial_roots(slope, s.y_lo, s.y_hi))
+            r2_hi = std::max(r2_hi, s.r2(y));
+        r2_hi +=
+            16.0 * kEpsilon * coefficient_size(s, std::max(std::fabs(s.y_lo), std::fabs(s.y_hi)));
         s.r_hi = std::sqrt(std::max(r2_hi, 0.0)) * (1.0 + 4.0 * kEpsilon);
         g.radius = std::max(g.radius, s.r_hi);
         g.height1 = std::min(g.height1, s.y_lo);
@@ -155,8 +157,9 @@ std::optional<SurfaceHit> intersect(const SorGeometry& sor, const Ray3& ray, dou
         }
         const double reach = s.r_hi + slack;
         if (r > 0.0) {
-            const QuadraticRoots ring = solve_quadratic(r, m, difference_of_squares(rho0, reach),
-                                                        difference_of_squares(reach * root_r, across));
+            const QuadraticRoots ring =
+                solve_quadratic(r, m, difference_of_squares(rho0, reach),
+                                difference_of_squares(reach * root_r, across));
             if (ring.count == 0) continue;
             a = std::max(a, ring.t[0] - slack);
             b = std::min(b, ring.t[ring.count - 1] + slack);
@@ -174,7 +177,8 @@ std::optional<SurfaceHit> intersect(const SorGeometry& sor, const Ray3& ray, dou
         // The excess x^2 + z^2 - r^2(y) along the ray, evaluated directly
         // (not from the rounded coefficients above), for a Newton polish.
         const auto excess = [&](double k, double& slope) {
-            const double x = std::fma(k, u.x, o.x), z = std::fma(k, u.z, o.z), y = std::fma(k, w, y0);
+            const double x = std::fma(k, u.x, o.x), z = std::fma(k, u.z, o.z),
+                         y = std::fma(k, w, y0);
             slope = 2.0 * (x * u.x + z * u.z) - s.r2_slope(y) * w;
             return x * x + z * z - s.r2(y);
         };
@@ -209,7 +213,8 @@ std::optional<SurfaceHit> intersect(const SorGeometry& sor, const Ray3& ray, dou
     if (part < 2) {
         p.y = part == 0 ? sor.height1 : sor.height2;
         hit.normal = {0.0, part == 0 ? -1.0 : 1.0, 0.0};
-        const double radius = std::sqrt(part == 0 ? sor.base_radius_squared : sor.cap_radius_squared);
+        const double radius =
+            std::sqrt(part == 0 ? sor.base_radius_squared : sor.cap_radius_squared);
         hit.uv = {sor_u(p), part == 0 ? rho / radius - 1.0 : 2.0 - rho / radius};
     } else {
         const SorSegment& s = sor.segments[static_cast<std::size_t>(segment)];
@@ -245,11 +250,13 @@ bool surface_may_meet(const SorGeometry& sor, const Box3& box) {
     const double size = size_of(sor);
     const Box3 wide = widened(box, meet_slack(box, size) + 1e-12 * size);
     if (!overlaps(wide, object_bounds(sor))) return false;
-    const double nx = std::clamp(0.0, wide.lo.x, wide.hi.x), nz = std::clamp(0.0, wide.lo.z, wide.hi.z);
+    const double nx = std::clamp(0.0, wide.lo.x, wide.hi.x),
+                 nz = std::clamp(0.0, wide.lo.z, wide.hi.z);
     const double rho_lo = std::hypot(nx, nz);
     const double rho_hi = std::hypot(std::max(std::fabs(wide.lo.x), std::fabs(wide.hi.x)),
                                      std::max(std::fabs(wide.lo.z), std::fabs(wide.hi.z)));
-    const double lo2 = rho_lo * rho_lo * (1.0 - 4.0 * kEpsilon), hi2 = rho_hi * rho_hi * (1.0 + 4.0 * kEpsilon);
+    const double lo2 = rho_lo * rho_lo * (1.0 - 4.0 * kEpsilon),
+                 hi2 = rho_hi * rho_hi * (1.0 + 4.0 * kEpsilon);
     if (!sor.open) {
         if (wide.lo.y <= sor.height1 && sor.height1 <= wide.hi.y && lo2 <= sor.base_radius_squared)
             return true;

@@ -27,9 +27,10 @@
 // coefficients' rounding.
 #pragma once
 
-#include <glm/glm.hpp>
 #include <optional>
 #include <vector>
+
+#include <glm/glm.hpp>
 
 #include "runtime/geometry/ray3.hpp"
 

@@ -12,7 +12,7 @@
 namespace hexant::runtime::objects {
 
 class SorModel {
-public:
+  public:
     using Geometry = geometry::SorGeometry;
     static constexpr bool kSolid = true;
     static constexpr bool kUvMapping = true;  // POV-Ray 3.7 maps it (primitive.hpp)
@@ -47,21 +47,26 @@ public:
         std::vector<IntervalBox> p;
         p.reserve(n);
         for (const auto& q : points_) p.push_back(q.over(t));
-        Interval height(std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity());
+        Interval height(std::numeric_limits<double>::infinity(),
+                        -std::numeric_limits<double>::infinity());
         for (std::size_t i = 1; i + 1 < n; ++i) height = hull(height, p[i][1]);
         const double ymax = height.magnitude();
         const double snap = 1e-10 * (1.0 + ymax + ymax * ymax + ymax * ymax * ymax) * 1.01;
         double r2 = 0.0;
         for (std::size_t i = 0; i + 3 < n; ++i) {
             const Interval k0 = sqr(p[i + 1][0]), k1 = sqr(p[i + 2][0]);
-            const Interval k2 = Interval(2.0) * p[i + 1][0] * ((p[i + 2][0] - p[i][0]) / (p[i + 2][1] - p[i][1]));
-            const Interval k3 = Interval(2.0) * p[i + 2][0] * ((p[i + 3][0] - p[i + 1][0]) / (p[i + 3][1] - p[i + 1][1]));
+            const Interval k2 =
+                Interval(2.0) * p[i + 1][0] * ((p[i + 2][0] - p[i][0]) / (p[i + 2][1] - p[i][1]));
+            const Interval k3 = Interval(2.0) * p[i + 2][0] *
+                                ((p[i + 3][0] - p[i + 1][0]) / (p[i + 3][1] - p[i + 1][1]));
             const Interval h = p[i + 2][1] - p[i + 1][1];
             const Interval bound = k0.magnitude() + k1.magnitude() +
-                                   Interval(4.0 / 27.0 * 1.0000001) * h.magnitude() * (k2.magnitude() + k3.magnitude());
+                                   Interval(4.0 / 27.0 * 1.0000001) * h.magnitude() *
+                                       (k2.magnitude() + k3.magnitude());
             r2 = std::max(r2, bound.hi);
         }
-        const double radius = std::nextafter(std::sqrt(r2 + snap) * (1.0 + 1e-15), std::numeric_limits<double>::infinity());
+        const double radius = std::nextafter(std::sqrt(r2 + snap) * (1.0 + 1e-15),
+                                             std::numeric_limits<double>::infinity());
         const Interval across(-radius, radius);
         return {across, height, across};
     }
@@ -79,7 +84,7 @@ public:
     }
     static double volume(const Geometry&) { return -1.0; }
 
-private:
+  private:
     std::vector<CompiledVector3> points_;
     bool open_;
     bool is_static_ = true;

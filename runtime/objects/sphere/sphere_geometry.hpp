@@ -13,8 +13,9 @@
 // for radii from 1e-6 to 1e6 and origins 1e6 away alike.
 #pragma once
 
-#include <glm/glm.hpp>
 #include <optional>
+
+#include <glm/glm.hpp>
 
 #include "runtime/geometry/ray3.hpp"
 

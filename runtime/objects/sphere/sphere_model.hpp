@@ -6,10 +6,10 @@
 #include <limits>
 #include <numbers>
 
-#include "runtime/objects/sphere/sphere_geometry.hpp"
-#include "runtime/time/interval_matrix.hpp"
 #include "runtime/objects/model_support.hpp"
 #include "runtime/objects/sphere/sphere.hpp"
+#include "runtime/objects/sphere/sphere_geometry.hpp"
+#include "runtime/time/interval_matrix.hpp"
 
 namespace hexant::runtime::objects {
 

@@ -15,16 +15,21 @@ SphereSweep SphereSweep::read(const objects::ShapeArguments& a) {
     SphereSweep sweep;
     const auto& words = a.options();
     if (words.empty())
-        a.fail("sphere_sweep needs its type of interpolation first (linear_spline, b_spline or "
-               "cubic_spline): Invalid type of interpolation.");
+        a.fail(
+            "sphere_sweep needs its type of interpolation first (linear_spline, b_spline or "
+            "cubic_spline): Invalid type of interpolation.");
     if (words.size() > 1)
         a.fail("sphere_sweep takes one type of interpolation, but '" + words[0] + "' and '" +
                words[1] + "' were given");
     const std::string& word = words.front();
-    if (word == "linear_spline") sweep.spline = SweepSpline::linear;
-    else if (word == "b_spline") sweep.spline = SweepSpline::b_spline;
-    else if (word == "cubic_spline") sweep.spline = SweepSpline::cubic;
-    else a.fail("sphere_sweep takes no '" + word + "'");
+    if (word == "linear_spline")
+        sweep.spline = SweepSpline::linear;
+    else if (word == "b_spline")
+        sweep.spline = SweepSpline::b_spline;
+    else if (word == "cubic_spline")
+        sweep.spline = SweepSpline::cubic;
+    else
+        a.fail("sphere_sweep takes no '" + word + "'");
 
     if (a.size() < 1) a.need(1, 1, "a sphere count and the spheres");
     const long long n = a.count(0, "sphere_sweep's sphere count", -100'000'000, 100'000'000);

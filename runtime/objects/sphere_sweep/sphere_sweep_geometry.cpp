@@ -64,7 +64,8 @@ bool valid(const SphereSweepGeometry& g) {
 
 // Product of two polynomials (ascending coefficients).
 template <std::size_t A, std::size_t B>
-std::array<double, A + B - 1> times(const std::array<double, A>& a, const std::array<double, B>& b) {
+std::array<double, A + B - 1> times(const std::array<double, A>& a,
+                                    const std::array<double, B>& b) {
     std::array<double, A + B - 1> out{};
     for (std::size_t i = 0; i < A; ++i)
         for (std::size_t j = 0; j < B; ++j) out[i + j] = std::fma(a[i], b[j], out[i + j]);
@@ -125,7 +126,8 @@ void segment_stretches(const SweepSegment& s, int index, const glm::dvec3& o, co
     const auto lead = times(times(m1, m1), D);
     const auto tail = times(D1, D1);
     std::array<double, 11> P{};
-    for (std::size_t i = 0; i < P.size(); ++i) P[i] = 4.0 * lead[i] - (i < tail.size() ? tail[i] : 0.0);
+    for (std::size_t i = 0; i < P.size(); ++i)
+        P[i] = 4.0 * lead[i] - (i < tail.size() ? tail[i] : 0.0);
 
     const PolynomialRoots d_roots = polynomial_roots(D, 0.0, 1.0);
     const PolynomialRoots critical = polynomial_roots(P, 0.0, 1.0);
@@ -413,15 +415,16 @@ bool surface_may_meet(const SphereSweepGeometry& g, const Box3& box) {
         for (const double u : {0.0, 0.5, 1.0}) {
             const glm::dvec4 at = s.at(u);
             const Box3 point{glm::dvec3(at), glm::dvec3(at)};
-            const double slack = 16.0 * kEpsilon * (max_abs(glm::dvec3(at)) + std::fabs(at.w) + 1.0);
+            const double slack =
+                16.0 * kEpsilon * (max_abs(glm::dvec3(at)) + std::fabs(at.w) + 1.0);
             if (farthest(point, wide) + slack < std::fabs(at.w)) return false;
         }
     }
     int budget = kPieceBudget;
     for (const SweepSegment& s : g.segments) {
         if (!overlaps(s.box, wide)) continue;
-        const glm::dvec4 size = glm::abs(s.coef[0]) + glm::abs(s.coef[1]) + glm::abs(s.coef[2]) +
-                                glm::abs(s.coef[3]);
+        const glm::dvec4 size =
+            glm::abs(s.coef[0]) + glm::abs(s.coef[1]) + glm::abs(s.coef[2]) + glm::abs(s.coef[3]);
         Piece stack[kMaxDepth + 2];
         int top = 0;
         stack[top++] = {0.0, 1.0, 0};
@@ -435,7 +438,8 @@ bool surface_may_meet(const SphereSweepGeometry& g, const Box3& box) {
             const glm::dvec4 slope_bound = 3.0 * glm::abs(s.coef[3]) * umax * umax +
                                            2.0 * glm::abs(s.coef[2]) * umax + glm::abs(s.coef[1]);
             const glm::dvec4 margin = slope_bound * half + 16.0 * kEpsilon * size;
-            const Box3 centres{glm::dvec3(at) - glm::dvec3(margin), glm::dvec3(at) + glm::dvec3(margin)};
+            const Box3 centres{glm::dvec3(at) - glm::dvec3(margin),
+                               glm::dvec3(at) + glm::dvec3(margin)};
             const double r_hi = std::fabs(at.w) + margin.w;
             const double r_lo = std::fabs(at.w) - margin.w;
             if (nearest(centres, wide) > r_hi * (1.0 + 4.0 * kEpsilon)) continue;  // out of reach

@@ -41,9 +41,10 @@
 // the sweep's size, so no number depends on the scene's scale.
 #pragma once
 
-#include <glm/glm.hpp>
 #include <optional>
 #include <vector>
+
+#include <glm/glm.hpp>
 
 #include "runtime/geometry/ray3.hpp"
 
@@ -67,7 +68,7 @@ struct SphereSweepGeometry {
     // within about [-1, 1]^3.
     std::vector<SweepSegment> segments;
     glm::dvec3 origin{0.0};
-    double scale = 1.0, inverse_scale = 1.0;  // powers of two
+    double scale = 1.0, inverse_scale = 1.0;        // powers of two
     Box3 bounds{glm::dvec3(0.0), glm::dvec3(0.0)};  // in object space
     double size = 0.0;                              // the bounds' half diagonal
 };

@@ -57,7 +57,8 @@ class SphereSweepModel {
         for (int i = 0; i < count; ++i) {
             Interval p[4][4];
             geometry::sphere_sweep_polynomial<Interval>(
-                spline_, i, [&](int j, int k) { return ranges[static_cast<std::size_t>(j)][k]; }, p);
+                spline_, i, [&](int j, int k) { return ranges[static_cast<std::size_t>(j)][k]; },
+                p);
             Interval hulls[4];
             for (int k = 0; k < 4; ++k) {
                 const Interval b0 = p[0][k];

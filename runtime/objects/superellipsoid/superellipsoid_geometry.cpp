@@ -29,13 +29,23 @@ double power(double x, double e) {
     if (e >= 0.0 && e <= 6.0 && e == std::floor(e)) {
         double b = x;
         switch (static_cast<int>(e)) {
-            case 0: return 1.0;
-            case 1: return b;
-            case 2: return b * b;
-            case 3: return b * b * b;
-            case 4: b *= b; return b * b;
-            case 5: b *= b; return b * b * x;
-            case 6: b *= b; return b * b * b;
+            case 0:
+                return 1.0;
+            case 1:
+                return b;
+            case 2:
+                return b * b;
+            case 3:
+                return b * b * b;
+            case 4:
+                b *= b;
+                return b * b;
+            case 5:
+                b *= b;
+                return b * b * x;
+            case 6:
+                b *= b;
+                return b * b * b;
         }
     }
     return std::pow(x, e);
@@ -142,7 +152,8 @@ double superellipsoid_volume(const SuperellipsoidGeometry& g) {
     // 2 n e B(n/2 + 1, n) B(e/2, e/2)
     //   = 8 G(n/2 + 1) G(n + 1) / G(3n/2 + 1) * G(e/2 + 1)^2 / G(e + 1).
     const double e = g.e, n = g.n;
-    const double ln = std::lgamma(0.5 * n + 1.0) + std::lgamma(n + 1.0) - std::lgamma(1.5 * n + 1.0);
+    const double ln =
+        std::lgamma(0.5 * n + 1.0) + std::lgamma(n + 1.0) - std::lgamma(1.5 * n + 1.0);
     const double le = 2.0 * std::lgamma(0.5 * e + 1.0) - std::lgamma(e + 1.0);
     const double v = 8.0 * std::exp(ln + le);
     return std::isfinite(v) ? v : -1.0;

@@ -33,8 +33,9 @@
 // the ends of the pieces it holds.
 #pragma once
 
-#include <glm/glm.hpp>
 #include <optional>
+
+#include <glm/glm.hpp>
 
 #include "runtime/geometry/ray3.hpp"
 

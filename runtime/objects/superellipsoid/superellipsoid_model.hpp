@@ -11,7 +11,7 @@
 namespace hexant::runtime::objects {
 
 class SuperellipsoidModel {
-public:
+  public:
     using Geometry = geometry::SuperellipsoidGeometry;
     static constexpr bool kSolid = true;
 
@@ -31,7 +31,7 @@ public:
     }
     static double volume(const Geometry& g) { return geometry::superellipsoid_volume(g); }
 
-private:
+  private:
     CompiledScalar e_, n_;
 };
 

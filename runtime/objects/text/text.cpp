@@ -31,8 +31,9 @@ Text Text::read(const objects::ShapeArguments& a) {
     const bool internal = options.size() == 1 && options.front() == "internal";
     if (!internal && (options.size() != 1 || options.front() != "ttf"))
         a.fail("text needs its font as ttf \"FILE.ttf\" (or internal N) before the string");
-    a.need(4, 4, internal ? "a font number, a string, a thickness and an offset"
-                          : "a font file, a string, a thickness and an offset");
+    a.need(4, 4,
+           internal ? "a font number, a string, a thickness and an offset"
+                    : "a font file, a string, a thickness and an offset");
     Text text;
     if (internal) {
         const long long id = a.count(0, "text's internal font", 0, 3);
@@ -44,16 +45,19 @@ Text Text::read(const objects::ShapeArguments& a) {
     text.thickness = a.number(2, "text's thickness");
     const Vector3Function offset = a.vector3(3, "text's offset");
     if (offset.depends_on_time())
-        a.fail("text's offset depends on clock; it places the glyphs, which hexant lays out "
-               "once (move or scale the text instead)");
+        a.fail(
+            "text's offset depends on clock; it places the glyphs, which hexant lays out "
+            "once (move or scale the text instead)");
     text.offset = offset(0.0);
     // POV-Ray adds ".ttf" to a name without an extension.
     std::string name = text.font;
     if (std::filesystem::path(name).extension().empty()) name += ".ttf";
-    const auto encoding = a.charset() == "utf8" ? objects::TextEncoding::utf8 : objects::TextEncoding::ascii;
+    const auto encoding =
+        a.charset() == "utf8" ? objects::TextEncoding::utf8 : objects::TextEncoding::ascii;
     try {
         const auto font = font_at(a.find_file(name, "font file"));
-        geometry::TextGeometry laid = objects::lay_out_text(*font, text.string, 1.0, text.offset, encoding);
+        geometry::TextGeometry laid =
+            objects::lay_out_text(*font, text.string, 1.0, text.offset, encoding);
         text.glyphs = laid.glyphs;
     } catch (const objects::FontError& e) {
         a.fail(e.what());

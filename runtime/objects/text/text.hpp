@@ -16,9 +16,9 @@
 #include <string_view>
 #include <vector>
 
+#include "runtime/motion/transform.hpp"
 #include "runtime/objects/shape_kind.hpp"
 #include "runtime/objects/text/text_geometry.hpp"
-#include "runtime/motion/transform.hpp"
 #include "runtime/time/vector_function.hpp"
 
 namespace hexant::runtime {

@@ -119,8 +119,7 @@ bool filled_right_of(const TextGlyph& glyph, std::size_t hit_index, double hit_s
         int skip = -1;
         if (j == hit_index) {  // the hit's own root: the one nearest hit_s
             skip = 0;
-            if (roots.count == 2 &&
-                std::fabs(roots.s[1] - hit_s) < std::fabs(roots.s[0] - hit_s)) {
+            if (roots.count == 2 && std::fabs(roots.s[1] - hit_s) < std::fabs(roots.s[0] - hit_s)) {
                 skip = 1;
             }
             if (roots.count == 0) skip = -1;

@@ -40,10 +40,11 @@
 #pragma once
 
 #include <cstdint>
-#include <glm/glm.hpp>
 #include <memory>
 #include <optional>
 #include <vector>
+
+#include <glm/glm.hpp>
 
 #include "runtime/geometry/ray3.hpp"
 
@@ -88,8 +89,8 @@ class TextGlyphs {
 };
 
 struct TextGeometry {
-    TextGlyphs glyphs;  // glyphs without segments (spaces) may be present
-    double thickness = 1.0;         // caps at z = 0 and z = thickness (see above for <= 0)
+    TextGlyphs glyphs;       // glyphs without segments (spaces) may be present
+    double thickness = 1.0;  // caps at z = 0 and z = thickness (see above for <= 0)
 };
 
 // A glyph from closed contours, each a list of segments in order (each

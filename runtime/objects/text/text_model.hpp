@@ -30,7 +30,8 @@ class TextModel {
     IntervalBox box_over(const Interval& t) const {
         if (outline_[0].is_empty()) return empty_interval_box();
         const Interval depth = thickness_.over(t);
-        return {outline_[0], outline_[1], Interval(std::min(0.0, depth.lo), std::max(0.0, depth.hi))};
+        return {outline_[0], outline_[1],
+                Interval(std::min(0.0, depth.lo), std::max(0.0, depth.hi))};
     }
     // Only the cap at z = thickness moves.
     double surface_motion(const Interval& t, const Geometry& mid) const {

@@ -119,8 +119,12 @@ std::u16string pov_text_to_ucs2(std::string_view text, TextEncoding encoding) {
                                                   0x03C82080UL, 0xFA082080UL, 0x82082080UL};
     for (std::size_t i = 0; i < text.size(); ++i) {
         const auto lead = static_cast<unsigned char>(text[i]);
-        const int length = lead < 0xC0 ? 0 : lead < 0xE0 ? 1 : lead < 0xF0 ? 2 : lead < 0xF8 ? 3
-                                                                       : lead < 0xFC ? 4 : 5;
+        const int length = lead < 0xC0   ? 0
+                           : lead < 0xE0 ? 1
+                           : lead < 0xF0 ? 2
+                           : lead < 0xF8 ? 3
+                           : lead < 0xFC ? 4
+                                         : 5;
         if (length > 0 && i + length >= text.size()) {
             break;  // cut off by the end of the string (POV-Ray reads past it)
         }
@@ -146,7 +150,7 @@ struct TrueTypeFont::Impl {
     unsigned units_per_em = 0;
     unsigned num_glyphs = 0;
     int index_to_loc_format = 0;
-    std::vector<std::uint32_t> loca;  // numGlyphs + 1 entries (as present)
+    std::vector<std::uint32_t> loca;                           // numGlyphs + 1 entries (as present)
     std::vector<std::pair<std::uint16_t, std::int16_t>> hmtx;  // per glyph: advance, lsb
     Table glyf, cmap;
     std::vector<KernSubtable> kern;
@@ -252,8 +256,8 @@ struct TrueTypeFont::Impl {
     }
 
     FT_GlyphSlot load_raw(unsigned index) const {
-        const FT_Error error = FT_Load_Glyph(
-            face, index, FT_LOAD_NO_SCALE | FT_LOAD_NO_HINTING | FT_LOAD_NO_RECURSE);
+        const FT_Error error =
+            FT_Load_Glyph(face, index, FT_LOAD_NO_SCALE | FT_LOAD_NO_HINTING | FT_LOAD_NO_RECURSE);
         if (error != 0) {
             fail("glyph " + std::to_string(index) + " cannot be read (FreeType error " +
                  std::to_string(error) + ")");
@@ -399,10 +403,14 @@ std::shared_ptr<const TrueTypeFont> TrueTypeFont::load(const std::filesystem::pa
     const Table hmtx = load_table(face, TTAG_hmtx);
     const Table loca = load_table(face, TTAG_loca);
     impl->cmap = load_table(face, TTAG_cmap);
-    for (const auto& [table, name] :
-         {std::pair{&head, "head"}, {&maxp, "maxp"}, {&hhea, "hhea"}, {&hmtx, "hmtx"},
-          {&loca, "loca"}, {&impl->cmap, "cmap"}}) {
-        if (!table->present) impl->fail(std::string("the required table '") + name + "' is missing");
+    for (const auto& [table, name] : {std::pair{&head, "head"},
+                                      {&maxp, "maxp"},
+                                      {&hhea, "hhea"},
+                                      {&hmtx, "hmtx"},
+                                      {&loca, "loca"},
+                                      {&impl->cmap, "cmap"}}) {
+        if (!table->present)
+            impl->fail(std::string("the required table '") + name + "' is missing");
     }
     // ProcessHeadTable (1050-1105).
     if (head.bytes.size() < 54 || head.u32(12) != 0x5F0F3CF5) impl->fail("damaged 'head' table");

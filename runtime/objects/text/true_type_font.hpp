@@ -29,12 +29,13 @@
 
 #include <cstdint>
 #include <filesystem>
-#include <glm/glm.hpp>
 #include <memory>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include <glm/glm.hpp>
 
 #include "runtime/objects/text/text_geometry.hpp"
 
@@ -72,8 +73,8 @@ struct FontGlyph {
         glm::dvec2 p;
         bool on_curve;
     };
-    unsigned glyph_index = 0;    // the character map's answer (0: missing)
-    unsigned metrics_index = 0;  // whose hmtx entry gives the metrics
+    unsigned glyph_index = 0;                        // the character map's answer (0: missing)
+    unsigned metrics_index = 0;                      // whose hmtx entry gives the metrics
     int x_min = 0, y_min = 0, x_max = 0, y_max = 0;  // the header box, font units
     int advance_width = 0, left_side_bearing = 0;    // hmtx, font units
     std::vector<std::vector<Point>> contours;

@@ -3,14 +3,14 @@
 
 #include <numbers>
 
-#include "runtime/objects/torus/torus_geometry.hpp"
 #include "runtime/objects/model_support.hpp"
 #include "runtime/objects/torus/torus.hpp"
+#include "runtime/objects/torus/torus_geometry.hpp"
 
 namespace hexant::runtime::objects {
 
 class TorusModel {
-public:
+  public:
     using Geometry = geometry::TorusGeometry;
     static constexpr bool kSolid = true;
     static constexpr bool kUvMapping = true;  // POV-Ray 3.7 maps it (primitive.hpp)
@@ -38,7 +38,7 @@ public:
         return 2.0 * std::numbers::pi * std::numbers::pi * g.major * g.minor * g.minor;
     }
 
-private:
+  private:
     CompiledScalar major_, minor_;
 };
 

@@ -51,7 +51,8 @@ struct SmoothTriangle {
     }
     std::optional<std::string> standalone_error() const {
         if (!uv_vectors) return std::nullopt;
-        return std::string("uv_vectors belong to a smooth_triangle in a mesh (POV-Ray 3.7 reads them only there)");
+        return std::string(
+            "uv_vectors belong to a smooth_triangle in a mesh (POV-Ray 3.7 reads them only there)");
     }
 };
 

@@ -9,8 +9,9 @@
 // Accuracy: as the triangle (the same watertight test).
 #pragma once
 
-#include <glm/glm.hpp>
 #include <optional>
+
+#include <glm/glm.hpp>
 
 #include "runtime/geometry/ray3.hpp"
 

@@ -44,7 +44,8 @@ struct Triangle {
     }
     std::optional<std::string> standalone_error() const {
         if (!uv_vectors) return std::nullopt;
-        return std::string("uv_vectors belong to a triangle in a mesh (POV-Ray 3.7 reads them only there)");
+        return std::string(
+            "uv_vectors belong to a triangle in a mesh (POV-Ray 3.7 reads them only there)");
     }
 };
 

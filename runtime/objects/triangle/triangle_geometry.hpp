@@ -14,8 +14,9 @@
 // ulps of the vertices, however far the origin).
 #pragma once
 
-#include <glm/glm.hpp>
 #include <optional>
+
+#include <glm/glm.hpp>
 
 #include "runtime/geometry/ray3.hpp"
 

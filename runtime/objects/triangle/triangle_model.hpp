@@ -4,11 +4,11 @@
 
 #include <algorithm>
 
-#include "runtime/objects/triangle/smooth_triangle_geometry.hpp"
-#include "runtime/objects/triangle/triangle_geometry.hpp"
 #include "runtime/objects/model_support.hpp"
 #include "runtime/objects/triangle/smooth_triangle.hpp"
+#include "runtime/objects/triangle/smooth_triangle_geometry.hpp"
 #include "runtime/objects/triangle/triangle.hpp"
+#include "runtime/objects/triangle/triangle_geometry.hpp"
 
 namespace hexant::runtime::objects {
 
@@ -35,7 +35,7 @@ struct CompiledVertices {
 };
 
 class TriangleModel {
-public:
+  public:
     using Geometry = geometry::TriangleGeometry;
     static constexpr bool kSolid = false;
 
@@ -44,19 +44,21 @@ public:
                    CompiledVector3(tri.points[2])}} {}
 
     bool is_static() const { return points_.is_static(); }
-    Geometry at(double t) const { return {points_.v[0].at(t), points_.v[1].at(t), points_.v[2].at(t)}; }
+    Geometry at(double t) const {
+        return {points_.v[0].at(t), points_.v[1].at(t), points_.v[2].at(t)};
+    }
     IntervalBox box_over(const Interval& t) const { return points_.box_over(t); }
     double surface_motion(const Interval& t, const Geometry& mid) const {
         return points_.motion(t, {mid.p1, mid.p2, mid.p3});
     }
     static double volume(const Geometry&) { return 0.0; }
 
-private:
+  private:
     CompiledVertices<3> points_;
 };
 
 class SmoothTriangleModel {
-public:
+  public:
     using Geometry = geometry::SmoothTriangleGeometry;
     static constexpr bool kSolid = false;
 
@@ -68,8 +70,8 @@ public:
 
     bool is_static() const { return points_.is_static() && normals_.is_static(); }
     Geometry at(double t) const {
-        return {points_.v[0].at(t), normals_.v[0].at(t), points_.v[1].at(t),
-                normals_.v[1].at(t), points_.v[2].at(t), normals_.v[2].at(t)};
+        return {points_.v[0].at(t),  normals_.v[0].at(t), points_.v[1].at(t),
+                normals_.v[1].at(t), points_.v[2].at(t),  normals_.v[2].at(t)};
     }
     IntervalBox box_over(const Interval& t) const { return points_.box_over(t); }
     double surface_motion(const Interval& t, const Geometry& mid) const {
@@ -77,7 +79,7 @@ public:
     }
     static double volume(const Geometry&) { return 0.0; }
 
-private:
+  private:
     CompiledVertices<3> points_;
     CompiledVertices<3> normals_;
 };

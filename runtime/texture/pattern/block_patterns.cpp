@@ -1,9 +1,9 @@
 // Patterns whose value picks one of a list of colours (POV-Ray's blend
 // lists): checker and brick (2), hexagon (3). Their value is the colour's
 // index; frequency is 0 for them, so no wave reshapes it.
-#include "runtime/texture/pattern/families.hpp"
-
 #include <cmath>
+
+#include "runtime/texture/pattern/families.hpp"
 
 namespace hexant::runtime::pattern {
 
@@ -27,8 +27,8 @@ double checker_value(const glm::dvec3& p, const Values&) {
     // space takes the upper cell whichever way its points rounded. In the
     // pattern's own units (one cell): it holds at every scale.
     constexpr double kBoundary = 1.0e-10;
-    const double sum = std::floor(p.x + kBoundary) + std::floor(p.y + kBoundary) +
-                       std::floor(p.z + kBoundary);
+    const double sum =
+        std::floor(p.x + kBoundary) + std::floor(p.y + kBoundary) + std::floor(p.z + kBoundary);
     // fmod of an integer-valued double is exact; no int overflow far away.
     return std::fabs(std::fmod(sum, 2.0)) == 1.0 ? 1.0 : 0.0;
 }
@@ -68,16 +68,22 @@ double hexagon_value(const glm::dvec3& p, const Values&) {
     double value = 0.0;
     switch (xm) {
         case 0:
-        case 5: value = (zm == 0 || zm == 5) ? 0 : (zm <= 2) ? 1 : 2; break;
+        case 5:
+            value = (zm == 0 || zm == 5) ? 0 : (zm <= 2) ? 1 : 2;
+            break;
         case 2:
-        case 3: value = (zm <= 1) ? 2 : (zm <= 3) ? 0 : 1; break;
+        case 3:
+            value = (zm <= 1) ? 2 : (zm <= 3) ? 0 : 1;
+            break;
         default: {  // 1, 4: split along a diagonal
             double xl = xs - xm;
             const double zl = zs - zm;
             if ((xm + zm) % 2 == 1) xl = 1.0 - xl;
             if (xl == 0.0) xl = 0.0001;
-            if (zl / xl < 1.0) value = (zm == 0 || zm == 3) ? 0 : (zm == 2 || zm == 5) ? 1 : 2;
-            else value = (zm == 0 || zm == 3) ? 2 : (zm == 2 || zm == 5) ? 0 : 1;
+            if (zl / xl < 1.0)
+                value = (zm == 0 || zm == 3) ? 0 : (zm == 2 || zm == 5) ? 1 : 2;
+            else
+                value = (zm == 0 || zm == 3) ? 2 : (zm == 2 || zm == 5) ? 0 : 1;
         }
     }
     return std::fmod(value, 3.0);

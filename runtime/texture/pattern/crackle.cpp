@@ -5,13 +5,13 @@
 // its corner plus three entries of PatternRands, a table of 32,768 doubles
 // from Boost's mt19937 with its default seed through uniform_real on [0, 1)
 // (backend/support/randomsequences.cpp), picked by the noise's lattice hash.
-#include "runtime/texture/pattern/families.hpp"
-
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <random>
 #include <vector>
+
+#include "runtime/texture/pattern/families.hpp"
 
 namespace hexant::runtime::pattern {
 
@@ -35,7 +35,8 @@ const std::vector<std::array<int, 3>>& neighbours() {
         for (int x = -2; x <= 2; ++x)
             for (int y = -2; y <= 2; ++y)
                 for (int z = -2; z <= 2; ++z)
-                    if ((std::abs(x) == 2) + (std::abs(y) == 2) + (std::abs(z) == 2) <= 1) out.push_back({x, y, z});
+                    if ((std::abs(x) == 2) + (std::abs(y) == 2) + (std::abs(z) == 2) <= 1)
+                        out.push_back({x, y, z});
         return out;
     }();
     return list;
@@ -49,7 +50,8 @@ double cells_value(const glm::dvec3& p, const Values&) {
     const double fx = std::floor(p.x + kPovEpsilon), fy = std::floor(p.y + kPovEpsilon),
                  fz = std::floor(p.z + kPovEpsilon);
     if (!(std::fabs(fx) < 1.0e9 && std::fabs(fy) < 1.0e9 && std::fabs(fz) < 1.0e9)) return 0.0;
-    const int seed = lattice_hash3(static_cast<int>(fx), static_cast<int>(fy), static_cast<int>(fz));
+    const int seed =
+        lattice_hash3(static_cast<int>(fx), static_cast<int>(fy), static_cast<int>(fz));
     return std::min(pattern_rands()[static_cast<std::size_t>(seed)], 1.0);
 }
 
@@ -65,13 +67,15 @@ double crackle_value(const glm::dvec3& p, const Values& v) {
     const auto distance = [&](const glm::dvec3& d) {
         if (square) return d.x * d.x + d.y * d.y + d.z * d.z;
         if (unity) return std::fabs(d.x) + std::fabs(d.y) + std::fabs(d.z);
-        return std::pow(std::fabs(d.x), metric) + std::pow(std::fabs(d.y), metric) + std::pow(std::fabs(d.z), metric);
+        return std::pow(std::fabs(d.x), metric) + std::pow(std::fabs(d.y), metric) +
+               std::pow(std::fabs(d.z), metric);
     };
     double m1 = 0.0, m2 = 0.0, m3 = 0.0;
     int i = 0;
     for (const auto& n : neighbours()) {
         const int x = cx + n[0], y = cy + n[1], z = cz + n[2];
-        const std::size_t seed = static_cast<std::size_t>(lattice_hash3(x & 0xFFF, y & 0xFFF, z & 0xFFF));
+        const std::size_t seed =
+            static_cast<std::size_t>(lattice_hash3(x & 0xFFF, y & 0xFFF, z & 0xFFF));
         const glm::dvec3 point(x + rands[seed], y + rands[seed + 1], z + rands[seed + 2]);
         const double sum = distance(point - p);
         // The nearest three, kept as POV-Ray keeps them.
@@ -102,9 +106,13 @@ double crackle_value(const glm::dvec3& p, const Values& v) {
     }
     const glm::dvec3 form = v.vector;
     double value;
-    if (square) value = form.x * std::sqrt(m1) + form.y * std::sqrt(m2) + form.z * std::sqrt(m3);
-    else if (unity) value = form.x * m1 + form.y * m2 + form.z * m3;
-    else value = form.x * std::pow(m1, 1.0 / metric) + form.y * std::pow(m2, 1.0 / metric) + form.z * std::pow(m3, 1.0 / metric);
+    if (square)
+        value = form.x * std::sqrt(m1) + form.y * std::sqrt(m2) + form.z * std::sqrt(m3);
+    else if (unity)
+        value = form.x * m1 + form.y * m2 + form.z * m3;
+    else
+        value = form.x * std::pow(m1, 1.0 / metric) + form.y * std::pow(m2, 1.0 / metric) +
+                form.z * std::pow(m3, 1.0 / metric);
     return std::max(std::min(value, 1.0), 0.0);
 }
 

@@ -42,7 +42,8 @@ double mandel_value(const glm::dvec3& p, const Values& v);
 // normal_patterns.cpp: the normal-only patterns' perturbations
 glm::dvec3 bumps_normal(const glm::dvec3& p, const Values& v, double amount, const glm::dvec3& n);
 glm::dvec3 dents_normal(const glm::dvec3& p, const Values& v, double amount, const glm::dvec3& n);
-glm::dvec3 wrinkles_normal(const glm::dvec3& p, const Values& v, double amount, const glm::dvec3& n);
+glm::dvec3 wrinkles_normal(const glm::dvec3& p, const Values& v, double amount,
+                           const glm::dvec3& n);
 glm::dvec3 quilted_normal(const glm::dvec3& p, const Values& v, double amount, const glm::dvec3& n);
 glm::dvec3 ripples_normal(const glm::dvec3& p, const Values& v, double amount, const glm::dvec3& n);
 glm::dvec3 waves_normal(const glm::dvec3& p, const Values& v, double amount, const glm::dvec3& n);

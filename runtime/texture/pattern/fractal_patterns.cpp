@@ -1,9 +1,9 @@
 // Fractal patterns (POV-Ray 3.7's pattern.cpp): mandel, with POV-Ray's
 // default colouring (outside: the iteration it escaped at over the
 // iterations; inside: 1).
-#include "runtime/texture/pattern/families.hpp"
-
 #include <cmath>
+
+#include "runtime/texture/pattern/families.hpp"
 
 namespace hexant::runtime::pattern {
 

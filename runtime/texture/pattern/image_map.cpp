@@ -23,7 +23,8 @@ double wrap(double val, double upper) {
 // special cases on the x axis).
 double turn(double x, double z, double len) {
     double theta;
-    if (z == 0.0) theta = x > 0.0 ? 0.0 : std::numbers::pi;
+    if (z == 0.0)
+        theta = x > 0.0 ? 0.0 : std::numbers::pi;
     else {
         theta = std::acos(x / len);
         if (z < 0.0) theta = kTwoPi - theta;
@@ -38,13 +39,15 @@ struct Span {
     double width, height, offset_u, offset_v;
 };
 Span span_of(const ImageMap& map, const ImagePixels& image) {
-    return {static_cast<float>(image.width * map.repeat_u), static_cast<float>(image.height * map.repeat_v),
-            map.offset_u * -image.width, map.offset_v * -image.height};
+    return {static_cast<float>(image.width * map.repeat_u),
+            static_cast<float>(image.height * map.repeat_v), map.offset_u * -image.width,
+            map.offset_v * -image.height};
 }
 
 // The image coordinates (u, v) of a point by the map type; false where the
 // map has none (POV-Ray's planar_image_map and its siblings).
-bool map_coordinates(const ImageMap& map, const Span& span, const glm::dvec3& p, double& u, double& v) {
+bool map_coordinates(const ImageMap& map, const Span& span, const glm::dvec3& p, double& u,
+                     double& v) {
     double x = p.x, y = p.y, z = p.z;
     switch (map.map_type) {
         case ImageMap::MapType::Planar:
@@ -114,14 +117,17 @@ Rgbft pixel(const ImageMap& map, const ImagePixels& image, double x, double y, d
         ix = static_cast<int>(wrap(x, image.width));
         iy = static_cast<int>(wrap(y, image.height));
     }
-    const float* p = image.rgbt.data() + (static_cast<std::size_t>(iy) * static_cast<std::size_t>(image.width) +
-                                          static_cast<std::size_t>(ix)) * 4;
+    const float* p =
+        image.rgbt.data() + (static_cast<std::size_t>(iy) * static_cast<std::size_t>(image.width) +
+                             static_cast<std::size_t>(ix)) *
+                                4;
     Rgbft out;
     out.c[0] = p[0];
     out.c[1] = p[1];
     out.c[2] = p[2];
     out.c[3] = static_cast<float>(0.0 + filter_all);
-    out.c[4] = static_cast<float>(image.palette && map.transmit_all_written ? transmit_all : p[3] + transmit_all);
+    out.c[4] = static_cast<float>(image.palette && map.transmit_all_written ? transmit_all
+                                                                            : p[3] + transmit_all);
     return out;
 }
 
@@ -169,8 +175,8 @@ const ImagePixels& ImageMap::at(double t) const {
     return *(after == images.begin() ? images.front() : *(after - 1)).pixels;
 }
 
-std::array<double, 5> image_colour(const ImageMap& map, const glm::dvec3& point, double t, double filter_all,
-                                   double transmit_all) {
+std::array<double, 5> image_colour(const ImageMap& map, const glm::dvec3& point, double t,
+                                   double filter_all, double transmit_all) {
     const ImagePixels& image = map.at(t);
     const Span span = span_of(map, image);
     double u = 0.0, v = 0.0;
@@ -196,10 +202,11 @@ std::array<double, 5> image_colour(const ImageMap& map, const glm::dvec3& point,
             x += 0.5;
             y += 0.5;
             const int ix = static_cast<int>(x), iy = static_cast<int>(y);
-            const Rgbft corners[4] = {pixel(map, image, ix, iy, filter_all, transmit_all),
-                                      pixel(map, image, ix - 1.0, iy, filter_all, transmit_all),
-                                      pixel(map, image, ix, iy - 1.0, filter_all, transmit_all),
-                                      pixel(map, image, ix - 1.0, iy - 1.0, filter_all, transmit_all)};
+            const Rgbft corners[4] = {
+                pixel(map, image, ix, iy, filter_all, transmit_all),
+                pixel(map, image, ix - 1.0, iy, filter_all, transmit_all),
+                pixel(map, image, ix, iy - 1.0, filter_all, transmit_all),
+                pixel(map, image, ix - 1.0, iy - 1.0, filter_all, transmit_all)};
             double w[4];
             corner_weights(map.interpolate, x, y, w);
             for (int i = 0; i < 4; ++i)
@@ -215,7 +222,8 @@ std::array<double, 5> image_colour(const ImageMap& map, const glm::dvec3& point,
             cubic_weights(y, fy);
             for (int i = 0; i < 4; ++i)
                 for (int j = 0; j < 4; ++j) {
-                    const Rgbft corner = pixel(map, image, ix + i - 2.0, iy + j - 2.0, filter_all, transmit_all);
+                    const Rgbft corner =
+                        pixel(map, image, ix + i - 2.0, iy + j - 2.0, filter_all, transmit_all);
                     for (int c = 0; c < 5; ++c) sum.c[c] += corner.c[c] * (fx[i] * fy[j]);
                 }
             break;

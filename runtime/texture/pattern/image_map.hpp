@@ -67,7 +67,7 @@ struct ImageMap {
 // after its transforms and warps) at time t: red, green, blue, filter,
 // transmit. Outside an image used `once`, clear (white, transmit 1), as
 // POV-Ray.
-std::array<double, 5> image_colour(const ImageMap& map, const glm::dvec3& point, double t, double filter_all,
-                                   double transmit_all);
+std::array<double, 5> image_colour(const ImageMap& map, const glm::dvec3& point, double t,
+                                   double filter_all, double transmit_all);
 
 }  // namespace hexant::runtime::pattern

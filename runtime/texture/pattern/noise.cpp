@@ -37,7 +37,8 @@ struct Tables {
 
     Tables() {
         // The lattice hash: a shuffle of 0..4095, then repeated.
-        for (int i = 0; i < 4096; ++i) hash[static_cast<std::size_t>(i)] = static_cast<unsigned short>(i);
+        for (int i = 0; i < 4096; ++i)
+            hash[static_cast<std::size_t>(i)] = static_cast<unsigned short>(i);
         Generator g{0};
         for (int i = 4095; i >= 0; --i) {
             const int j = g.next() % 4096;
@@ -100,7 +101,9 @@ Lattice lattice(double v) {
     return {static_cast<int>((c + kLatticeOffset) & 0xFFF), v - cell};
 }
 
-double scurve(double a) { return a * a * (3.0 - 2.0 * a); }
+double scurve(double a) {
+    return a * a * (3.0 - 2.0 * a);
+}
 
 // One corner's term: s * (m[1] + m[2] x + m[4] y + m[6] z), in POV-Ray's order.
 double corner(const double* m, double s, double x, double y, double z) {
@@ -126,7 +129,8 @@ Cell cell_of(const glm::dvec3& p) {
     c.ty = 1.0 - c.sy;
     c.tz = 1.0 - c.sz;
     const auto hash2 = [&](int a, int b) {
-        return static_cast<int>(t.hash[static_cast<std::size_t>(t.hash[static_cast<std::size_t>(a)] ^ b)]);
+        return static_cast<int>(
+            t.hash[static_cast<std::size_t>(t.hash[static_cast<std::size_t>(a)] ^ b)]);
     };
     c.h00 = hash2(c.lx.index, c.ly.index);
     c.h10 = hash2(c.lx.index + 1, c.ly.index);
@@ -137,7 +141,8 @@ Cell cell_of(const glm::dvec3& p) {
 
 const double* entry(int hash, int iz) {
     const Tables& t = tables();
-    return &t.offsets[static_cast<std::size_t>((t.hash[static_cast<std::size_t>(hash ^ iz)] & 0xFF) * 2)];
+    return &t.offsets[static_cast<std::size_t>(
+        (t.hash[static_cast<std::size_t>(hash ^ iz)] & 0xFF) * 2)];
 }
 
 double original_noise(const glm::dvec3& p) {
@@ -157,7 +162,9 @@ double original_noise(const glm::dvec3& p) {
     return sum;
 }
 
-double lerp(double t, double a, double b) { return a + t * (b - a); }
+double lerp(double t, double a, double b) {
+    return a + t * (b - a);
+}
 
 double solid_noise(const glm::dvec3& p) {
     const Tables& t = tables();
@@ -179,7 +186,8 @@ double solid_noise(const glm::dvec3& p) {
         return rx * q.x + ry * q.y + rz * q.z;
     };
     const int i = perm(b0[0]), j = perm(b1[0]);
-    const int b00 = perm(i + b0[1]), b10 = perm(j + b0[1]), b01 = perm(i + b1[1]), b11 = perm(j + b1[1]);
+    const int b00 = perm(i + b0[1]), b10 = perm(j + b0[1]), b01 = perm(i + b1[1]),
+              b11 = perm(j + b1[1]);
     const double sx = scurve(r0[0]), sy = scurve(r0[1]), sz = scurve(r0[2]);
     double a = lerp(sx, at(b00 + b0[2], r0[0], r0[1], r0[2]), at(b10 + b0[2], r1[0], r0[1], r0[2]));
     double b = lerp(sx, at(b01 + b0[2], r0[0], r1[1], r0[2]), at(b11 + b0[2], r1[0], r1[1], r0[2]));
@@ -289,8 +297,9 @@ glm::dvec3 dturbulence(const glm::dvec3& p, const Octaves& o) {
 
 int lattice_hash3(int a, int b, int c) {
     const auto& h = tables().hash;
-    return h[static_cast<std::size_t>(h[static_cast<std::size_t>(h[static_cast<std::size_t>(a & 0xFFF)] ^ (b & 0xFFF))] ^
-                                      (c & 0xFFF))];
+    return h[static_cast<std::size_t>(
+        h[static_cast<std::size_t>(h[static_cast<std::size_t>(a & 0xFFF)] ^ (b & 0xFFF))] ^
+        (c & 0xFFF))];
 }
 
 double cycloidal(double v) {

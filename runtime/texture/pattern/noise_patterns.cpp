@@ -1,14 +1,16 @@
 // Patterns read straight from POV-Ray's noise (pattern.cpp in POV-Ray 3.7:
 // bozo, spotted and bumps are Noise itself; dents, wrinkles, granite and
 // agate shape it).
-#include "runtime/texture/pattern/families.hpp"
-
 #include <algorithm>
 #include <cmath>
 
+#include "runtime/texture/pattern/families.hpp"
+
 namespace hexant::runtime::pattern {
 
-double noise_value(const glm::dvec3& p, const Values& v) { return noise(p, v.noise_generator); }
+double noise_value(const glm::dvec3& p, const Values& v) {
+    return noise(p, v.noise_generator);
+}
 
 double dents_value(const glm::dvec3& p, const Values& v) {
     const double n = noise(p, v.noise_generator);

@@ -1,8 +1,8 @@
 // Normal perturbations (POV-Ray 3.7's normal.cpp): the normal-only
 // patterns' own functions, and the slope of any other pattern's value.
-#include "runtime/texture/pattern/families.hpp"
-
 #include <cmath>
+
+#include "runtime/texture/pattern/families.hpp"
 
 namespace hexant::runtime::pattern {
 
@@ -28,13 +28,17 @@ glm::dvec3 wrinkles_normal(const glm::dvec3& p, const Values&, double amount, co
     return n + amount * sum;
 }
 
-glm::dvec3 quilted_normal(const glm::dvec3& p, const Values& v, double amount, const glm::dvec3& n) {
-    glm::dvec3 q(p.x - std::floor(p.x) - 0.5, p.y - std::floor(p.y) - 0.5, p.z - std::floor(p.z) - 0.5);
-    const double t = quilt_shape(std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z), v.number[0], v.number[1]);
+glm::dvec3 quilted_normal(const glm::dvec3& p, const Values& v, double amount,
+                          const glm::dvec3& n) {
+    glm::dvec3 q(p.x - std::floor(p.x) - 0.5, p.y - std::floor(p.y) - 0.5,
+                 p.z - std::floor(p.z) - 0.5);
+    const double t =
+        quilt_shape(std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z), v.number[0], v.number[1]);
     return n + amount * (q * t);
 }
 
-glm::dvec3 ripples_normal(const glm::dvec3& p, const Values& v, double amount, const glm::dvec3& n) {
+glm::dvec3 ripples_normal(const glm::dvec3& p, const Values& v, double amount,
+                          const glm::dvec3& n) {
     glm::dvec3 out = n;
     for (std::size_t i = 0; i < kWaveSources; ++i) {
         const glm::dvec3 d = p - wave_source(i);
@@ -80,7 +84,8 @@ glm::dvec3 slope_normal(const Kind& kind, const glm::dvec3& point, const Values&
 
 double slope_map_value(const std::vector<SlopeEntry>& map, double value) {
     if (map.empty()) return value;
-    const BlendPick pick = search_blend_map(value, map.size(), [&](std::size_t i) { return map[i].value; });
+    const BlendPick pick =
+        search_blend_map(value, map.size(), [&](std::size_t i) { return map[i].value; });
     const SlopeEntry& cur = map[pick.cur];
     if (pick.prev == pick.cur) return cur.height;
     const SlopeEntry& prev = map[pick.prev];

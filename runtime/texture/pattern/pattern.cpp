@@ -25,7 +25,8 @@ bool Pattern::depends_on_time() const {
         return true;
     if (turbulence && turbulence->depends_on_time()) return true;
     for (const Warp& w : warps)
-        if (w.transform ? w.transform->depends_on_time() : w.turbulence.depends_on_time()) return true;
+        if (w.transform ? w.transform->depends_on_time() : w.turbulence.depends_on_time())
+            return true;
     return false;
 }
 
@@ -33,15 +34,27 @@ double evaluate(const Kind& kind, const glm::dvec3& point, const Values& values,
                 double exponent) {
     double value = kind.value(point, values);
     // POV-Ray's fmod by 1.00001, not 1: a value of exactly 1 stays 1.
-    if (values.frequency != 0.0) value = std::fmod(value * values.frequency + values.phase, 1.00001);
+    if (values.frequency != 0.0)
+        value = std::fmod(value * values.frequency + values.phase, 1.00001);
     if (value < 0.0) value -= std::floor(value);
     switch (wave) {
-        case Wave::Ramp: break;
-        case Wave::Sine: value = (1.0 + cycloidal(value)) * 0.5; break;
-        case Wave::Triangle: value = triangle_wave(value); break;
-        case Wave::Scallop: value = std::fabs(cycloidal(value * 0.5)); break;
-        case Wave::Cubic: value = value * value * ((-2.0 * value) + 3.0); break;
-        case Wave::Poly: value = std::pow(value, exponent); break;
+        case Wave::Ramp:
+            break;
+        case Wave::Sine:
+            value = (1.0 + cycloidal(value)) * 0.5;
+            break;
+        case Wave::Triangle:
+            value = triangle_wave(value);
+            break;
+        case Wave::Scallop:
+            value = std::fabs(cycloidal(value * 0.5));
+            break;
+        case Wave::Cubic:
+            value = value * value * ((-2.0 * value) + 3.0);
+            break;
+        case Wave::Poly:
+            value = std::pow(value, exponent);
+            break;
     }
     return value;
 }
@@ -54,7 +67,8 @@ glm::dvec3 apply_turbulence(const glm::dvec3& point, const glm::dvec3& amount, c
 
 std::array<double, 5> map_colour(const std::vector<MapEntry>& map, double value) {
     if (map.empty()) return {};
-    const BlendPick pick = search_blend_map(value, map.size(), [&](std::size_t i) { return map[i].value; });
+    const BlendPick pick =
+        search_blend_map(value, map.size(), [&](std::size_t i) { return map[i].value; });
     if (pick.prev == pick.cur) return map[pick.cur].colour;
     const auto& a = map[pick.prev].colour;
     const auto& b = map[pick.cur].colour;

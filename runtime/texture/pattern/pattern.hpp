@@ -3,8 +3,8 @@
 // one file under kinds/ (pattern_kind.hpp says what it declares), listed
 // once in kinds.hpp; kinds of one family share their helpers' files
 // (noise_patterns.cpp, shape_patterns.cpp, block_patterns.cpp,
-// fractal_patterns.cpp, crackle.cpp, normal_patterns.cpp). The pipeline around the kind's function is POV-Ray
-// 3.7's (Compute_Pigment, Warp_EPoint, Evaluate_TPat in its sources):
+// fractal_patterns.cpp, crackle.cpp, normal_patterns.cpp). The pipeline around the kind's function
+// is POV-Ray 3.7's (Compute_Pigment, Warp_EPoint, Evaluate_TPat in its sources):
 //
 //   world point -> the pattern's transforms and warps, inverted, last
 //   written first -> classic turbulence (unless the kind reads it itself)
@@ -23,8 +23,8 @@
 
 #include <glm/vec3.hpp>
 
-#include "runtime/texture/pattern/noise.hpp"
 #include "runtime/motion/transform.hpp"
+#include "runtime/texture/pattern/noise.hpp"
 #include "runtime/time/vector_function.hpp"
 
 namespace hexant::runtime::pattern {
@@ -198,7 +198,8 @@ BlendPick search_blend_map(double value, std::size_t count, ValueAt value_at) {
             at_prev = at_cur;
             at_cur = value_at(pick.cur);
         }
-        if (value != at_cur && pick.prev != pick.cur) pick.f = (value - at_prev) / (at_cur - at_prev);
+        if (value != at_cur && pick.prev != pick.cur)
+            pick.f = (value - at_prev) / (at_cur - at_prev);
     }
     if (value == at_cur) pick.prev = pick.cur;
     return pick;

@@ -42,64 +42,87 @@ template <class... K>
 struct PatternKindList {};
 
 // POV-Ray's default colour map (pigment.cpp): black to white.
-inline constexpr std::array<MapEntry, 2> kGrayMap = {MapEntry{0.0, {0, 0, 0, 0, 0}}, MapEntry{1.0, {1, 1, 1, 0, 0}}};
+inline constexpr std::array<MapEntry, 2> kGrayMap = {MapEntry{0.0, {0, 0, 0, 0, 0}},
+                                                     MapEntry{1.0, {1, 1, 1, 0, 0}}};
 
 namespace pattern_kind_detail {
 
 template <class K>
 constexpr Kind::Argument argument_of() {
-    if constexpr (requires { K::argument; }) return K::argument;
-    else return Kind::Argument::None;
+    if constexpr (requires { K::argument; })
+        return K::argument;
+    else
+        return Kind::Argument::None;
 }
 template <class K>
 constexpr int colours_of() {
-    if constexpr (requires { K::colours; }) return K::colours;
-    else return 0;
+    if constexpr (requires { K::colours; })
+        return K::colours;
+    else
+        return 0;
 }
 template <class K>
 constexpr Wave wave_of() {
-    if constexpr (requires { K::wave; }) return K::wave;
-    else return Wave::Ramp;
+    if constexpr (requires { K::wave; })
+        return K::wave;
+    else
+        return Wave::Ramp;
 }
 template <class K>
 constexpr bool frequency_of() {
-    if constexpr (requires { K::frequency; }) return K::frequency;
-    else return true;
+    if constexpr (requires { K::frequency; })
+        return K::frequency;
+    else
+        return true;
 }
 template <class K>
 constexpr bool own_turbulence_of() {
-    if constexpr (requires { K::own_turbulence; }) return K::own_turbulence;
-    else return false;
+    if constexpr (requires { K::own_turbulence; })
+        return K::own_turbulence;
+    else
+        return false;
 }
 template <class K>
 constexpr bool single_numbers_of() {
-    if constexpr (requires { K::single_numbers; }) return K::single_numbers;
-    else return true;
+    if constexpr (requires { K::single_numbers; })
+        return K::single_numbers;
+    else
+        return true;
 }
 template <class K>
 constexpr auto settings_of() {
-    if constexpr (requires { K::settings; }) return K::settings;
-    else return std::array<Setting, 0>{};
+    if constexpr (requires { K::settings; })
+        return K::settings;
+    else
+        return std::array<Setting, 0>{};
 }
 template <class K>
 constexpr auto default_map_of() {
-    if constexpr (requires { K::default_map; }) return K::default_map;
-    else return kGrayMap;
+    if constexpr (requires { K::default_map; })
+        return K::default_map;
+    else
+        return kGrayMap;
 }
 template <class K>
 constexpr NormalFunction normal_of() {
-    if constexpr (requires { K::normal; }) return K::normal;
-    else return nullptr;
+    if constexpr (requires { K::normal; })
+        return K::normal;
+    else
+        return nullptr;
 }
 template <class K>
 constexpr std::array<double, 2> number_of() {
-    if constexpr (requires { K::number; }) return K::number;
-    else return {};
+    if constexpr (requires { K::number; })
+        return K::number;
+    else
+        return {};
 }
 template <class K>
 constexpr std::array<double, 3> vector_of() {
-    if constexpr (requires { K::vector; }) return K::vector;
-    else return {};
+    if constexpr (requires { K::vector; })
+        return K::vector;
+    else
+        return {};
 }
 
 template <class K>
@@ -146,8 +169,10 @@ struct PatternWords;
 template <class... K>
 struct PatternWords<PatternKindList<K...>> {
   private:
-    static constexpr auto all_keywords = pattern_kind_detail::concat_sorted(std::array{K::keyword}...);
-    static constexpr auto all_settings = pattern_kind_detail::concat_sorted(pattern_kind_detail::setting_names<K>()...);
+    static constexpr auto all_keywords =
+        pattern_kind_detail::concat_sorted(std::array{K::keyword}...);
+    static constexpr auto all_settings =
+        pattern_kind_detail::concat_sorted(pattern_kind_detail::setting_names<K>()...);
 
   public:
     static constexpr auto keywords = all_keywords;
@@ -177,8 +202,10 @@ Kind make_kind() {
     const std::array<double, 3> v = vector_of<K>();
     kind.vector = glm::dvec3(v[0], v[1], v[2]);
     for (const Setting& s : kind.settings) {
-        if (s.type == Setting::Type::Number) kind.number[static_cast<std::size_t>(s.slot)] = s.number;
-        else kind.vector = glm::dvec3(s.vector[0], s.vector[1], s.vector[2]);
+        if (s.type == Setting::Type::Number)
+            kind.number[static_cast<std::size_t>(s.slot)] = s.number;
+        else
+            kind.vector = glm::dvec3(s.vector[0], s.vector[1], s.vector[2]);
     }
     kind.normal = normal_of<K>();
     kind.single_numbers = single_numbers_of<K>();

@@ -2,14 +2,14 @@
 // spherical, cylindrical and boxed (1 at the centre to 0 at 1), gradient,
 // onion, radial, leopard, quilted, the spirals, marble and wood (bands
 // bent by their own turbulence), waves and ripples (ten wave sources).
-#include "runtime/texture/pattern/families.hpp"
-
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 
 #include <glm/geometric.hpp>
+
+#include "runtime/texture/pattern/families.hpp"
 
 namespace hexant::runtime::pattern {
 
@@ -41,7 +41,8 @@ struct WaveSources {
     WaveSources() {
         std::uint32_t r = static_cast<std::uint32_t>(-560851967);
         for (int i = 0; i < static_cast<int>(kWaveSources); ++i) {
-            at[static_cast<std::size_t>(i)] = glm::normalize(dnoise({static_cast<double>(i), 0.0, 0.0}));
+            at[static_cast<std::size_t>(i)] =
+                glm::normalize(dnoise({static_cast<double>(i), 0.0, 0.0}));
             r = r * 1812433253u + 12345u;
             frequency[static_cast<std::size_t>(i)] =
                 static_cast<double>((r >> 16) & 0x7FFF) * 0.000030518509476 + 0.01;
@@ -55,8 +56,12 @@ const WaveSources& sources() {
 
 }  // namespace
 
-const glm::dvec3& wave_source(std::size_t i) { return sources().at[i]; }
-double wave_frequency(std::size_t i) { return sources().frequency[i]; }
+const glm::dvec3& wave_source(std::size_t i) {
+    return sources().at[i];
+}
+double wave_frequency(std::size_t i) {
+    return sources().frequency[i];
+}
 
 double quilt_shape(double t, double control0, double control1) {
     // A cubic from 0 to 1 with control points control0 and control1,
@@ -78,16 +83,22 @@ double distance_or_one(const glm::dvec3& p, const glm::dvec3& q) {
 namespace {
 // POV-Ray's CLIP_DENSITY: 1 at the centre falling to 0 at distance 1, 0
 // beyond.
-double density(double r) { return r < 0.0 ? 1.0 : r > 1.0 ? 0.0 : 1.0 - r; }
+double density(double r) {
+    return r < 0.0 ? 1.0 : r > 1.0 ? 0.0 : 1.0 - r;
+}
 }  // namespace
 
-double planar_value(const glm::dvec3& p, const Values&) { return density(std::fabs(p.y)); }
+double planar_value(const glm::dvec3& p, const Values&) {
+    return density(std::fabs(p.y));
+}
 
 double spherical_value(const glm::dvec3& p, const Values&) {
     return density(std::sqrt(p.x * p.x + p.y * p.y + p.z * p.z));
 }
 
-double cylindrical_value(const glm::dvec3& p, const Values&) { return density(std::sqrt(p.x * p.x + p.z * p.z)); }
+double cylindrical_value(const glm::dvec3& p, const Values&) {
+    return density(std::sqrt(p.x * p.x + p.z * p.z));
+}
 
 double boxed_value(const glm::dvec3& p, const Values&) {
     return density(std::max(std::fabs(p.x), std::max(std::fabs(p.y), std::fabs(p.z))));
@@ -113,8 +124,10 @@ double leopard_value(const glm::dvec3& p, const Values&) {
 }
 
 double quilted_value(const glm::dvec3& p, const Values& v) {
-    glm::dvec3 q(p.x - std::floor(p.x) - 0.5, p.y - std::floor(p.y) - 0.5, p.z - std::floor(p.z) - 0.5);
-    const double t = quilt_shape(std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z), v.number[0], v.number[1]);
+    glm::dvec3 q(p.x - std::floor(p.x) - 0.5, p.y - std::floor(p.y) - 0.5,
+                 p.z - std::floor(p.z) - 0.5);
+    const double t =
+        quilt_shape(std::sqrt(q.x * q.x + q.y * q.y + q.z * q.z), v.number[0], v.number[1]);
     q *= t;
     return (std::fabs(q.x) + std::fabs(q.y) + std::fabs(q.z)) / 3.0;
 }
@@ -128,11 +141,14 @@ double spiral1_value(const glm::dvec3& p, const Values& v) {
 double spiral2_value(const glm::dvec3& p, const Values& v) {
     const double shift = turbulence_shift(p, v);
     const double r = std::sqrt(p.x * p.x + p.y * p.y);
-    const double band = triangle_wave(p.z + r + v.number[0] * spiral_angle(p.x, p.y, r) / kTwoPi + shift);
+    const double band =
+        triangle_wave(p.z + r + v.number[0] * spiral_angle(p.x, p.y, r) / kTwoPi + shift);
     return triangle_wave(r) + band;
 }
 
-double marble_value(const glm::dvec3& p, const Values& v) { return p.x + turbulence_shift(p, v); }
+double marble_value(const glm::dvec3& p, const Values& v) {
+    return p.x + turbulence_shift(p, v);
+}
 
 double wood_value(const glm::dvec3& p, const Values& v) {
     glm::dvec3 q(0.0);
@@ -159,7 +175,8 @@ double waves_value(const glm::dvec3& p, const Values& v) {
 double ripples_value(const glm::dvec3& p, const Values& v) {
     const WaveSources& s = sources();
     double sum = 0.0;
-    for (std::size_t i = 0; i < kWaveSources; ++i) sum += cycloidal(distance_or_one(p, s.at[i]) * v.frequency + v.phase);
+    for (std::size_t i = 0; i < kWaveSources; ++i)
+        sum += cycloidal(distance_or_one(p, s.at[i]) * v.frequency + v.phase);
     return 0.5 * (1.0 + (sum / 10.0));
 }
 

@@ -13,7 +13,9 @@ struct Agate {
     static constexpr int kAgateTurb = 0;  // Values::number[0]
     static constexpr std::array settings = {Setting::of_number("agate_turb", kAgateTurb, 1.0)};
     static constexpr std::array default_map = {
-        MapEntry{0.0, {1, 1, 1, 0, 0}}, MapEntry{0.5, {0.95, 0.75, 0.5, 0, 0}}, MapEntry{0.5, {0.9, 0.7, 0.5, 0, 0}}, MapEntry{0.6, {0.9, 0.7, 0.4, 0, 0}}, MapEntry{0.6, {1, 0.7, 0.4, 0, 0}}, MapEntry{1.0, {0.6, 0.3, 0, 0, 0}}};
+        MapEntry{0.0, {1, 1, 1, 0, 0}},       MapEntry{0.5, {0.95, 0.75, 0.5, 0, 0}},
+        MapEntry{0.5, {0.9, 0.7, 0.5, 0, 0}}, MapEntry{0.6, {0.9, 0.7, 0.4, 0, 0}},
+        MapEntry{0.6, {1, 0.7, 0.4, 0, 0}},   MapEntry{1.0, {0.6, 0.3, 0, 0, 0}}};
     static constexpr Function value = agate_value;
 };
 

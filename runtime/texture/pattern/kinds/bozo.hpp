@@ -11,7 +11,9 @@ namespace hexant::runtime::pattern::kinds {
 struct Bozo {
     static constexpr std::string_view keyword = "bozo";
     static constexpr std::array default_map = {
-        MapEntry{0.4, {1, 1, 1, 0, 0}}, MapEntry{0.4, {0, 1, 0, 0, 0}}, MapEntry{0.6, {0, 1, 0, 0, 0}}, MapEntry{0.6, {0, 0, 1, 0, 0}}, MapEntry{0.8, {0, 0, 1, 0, 0}}, MapEntry{0.8, {1, 0, 0, 0, 0}}};
+        MapEntry{0.4, {1, 1, 1, 0, 0}}, MapEntry{0.4, {0, 1, 0, 0, 0}},
+        MapEntry{0.6, {0, 1, 0, 0, 0}}, MapEntry{0.6, {0, 0, 1, 0, 0}},
+        MapEntry{0.8, {0, 0, 1, 0, 0}}, MapEntry{0.8, {1, 0, 0, 0, 0}}};
     static constexpr Function value = noise_value;
 };
 

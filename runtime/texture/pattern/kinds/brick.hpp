@@ -15,9 +15,10 @@ struct Brick {
     static constexpr bool frequency = false;
     // The default mortar is POV-Ray's 0.5 - 2 EPSILON.
     static constexpr int kMortar = 0;  // Values::number[0]
-    static constexpr std::array settings = {Setting::of_number("mortar", kMortar, 0.5 - 2.0e-10), Setting::of_vector("brick_size", {8.0, 3.0, 4.5})};
-    static constexpr std::array default_map = {
-        MapEntry{0.0, {0.5, 0.5, 0.5, 0, 0}}, MapEntry{1.0, {0.6, 0.15, 0.15, 0, 0}}};
+    static constexpr std::array settings = {Setting::of_number("mortar", kMortar, 0.5 - 2.0e-10),
+                                            Setting::of_vector("brick_size", {8.0, 3.0, 4.5})};
+    static constexpr std::array default_map = {MapEntry{0.0, {0.5, 0.5, 0.5, 0, 0}},
+                                               MapEntry{1.0, {0.6, 0.15, 0.15, 0, 0}}};
     static constexpr Function value = brick_value;
 };
 

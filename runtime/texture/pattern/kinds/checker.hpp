@@ -14,8 +14,8 @@ struct Checker {
     static constexpr int colours = 2;
     static constexpr bool frequency = false;
     // (POV-Ray's checker default reads the hexagon's first two entries.)
-    static constexpr std::array default_map = {
-        MapEntry{0.0, {0, 0, 1, 0, 0}}, MapEntry{1.0, {0, 1, 0, 0, 0}}};
+    static constexpr std::array default_map = {MapEntry{0.0, {0, 0, 1, 0, 0}},
+                                               MapEntry{1.0, {0, 1, 0, 0, 0}}};
     static constexpr Function value = checker_value;
 };
 

@@ -15,7 +15,9 @@ struct Crackle {
     static constexpr bool single_numbers = false;
     static constexpr int kMetric = 0;  // Values::number[0]
     static constexpr int kOffset = 1;  // Values::number[1]
-    static constexpr std::array settings = {Setting::of_number("metric", kMetric, 2.0), Setting::of_number("offset", kOffset, 0.0), Setting::of_vector("form", {-1.0, 1.0, 0.0})};
+    static constexpr std::array settings = {Setting::of_number("metric", kMetric, 2.0),
+                                            Setting::of_number("offset", kOffset, 0.0),
+                                            Setting::of_vector("form", {-1.0, 1.0, 0.0})};
     static constexpr Function value = crackle_value;
 };
 

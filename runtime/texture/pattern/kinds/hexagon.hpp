@@ -13,8 +13,9 @@ struct Hexagon {
     static constexpr Kind::Argument argument = Kind::Argument::Colours;
     static constexpr int colours = 3;
     static constexpr bool frequency = false;
-    static constexpr std::array default_map = {
-        MapEntry{0.0, {0, 0, 1, 0, 0}}, MapEntry{1.0, {0, 1, 0, 0, 0}}, MapEntry{2.0, {1, 0, 0, 0, 0}}};
+    static constexpr std::array default_map = {MapEntry{0.0, {0, 0, 1, 0, 0}},
+                                               MapEntry{1.0, {0, 1, 0, 0, 0}},
+                                               MapEntry{2.0, {1, 0, 0, 0, 0}}};
     static constexpr Function value = hexagon_value;
 };
 

@@ -12,7 +12,9 @@ struct Mandel {
     static constexpr std::string_view keyword = "mandel";
     static constexpr Kind::Argument argument = Kind::Argument::Number;
     static constexpr std::array default_map = {
-        MapEntry{0.001, {0, 0, 0, 0, 0}}, MapEntry{0.001, {0, 1, 1, 0, 0}}, MapEntry{0.012, {1, 1, 0, 0, 0}}, MapEntry{0.015, {1, 0, 1, 0, 0}}, MapEntry{0.1, {0, 1, 1, 0, 0}}};
+        MapEntry{0.001, {0, 0, 0, 0, 0}}, MapEntry{0.001, {0, 1, 1, 0, 0}},
+        MapEntry{0.012, {1, 1, 0, 0, 0}}, MapEntry{0.015, {1, 0, 1, 0, 0}},
+        MapEntry{0.1, {0, 1, 1, 0, 0}}};
     static constexpr Function value = mandel_value;
 };
 

@@ -12,8 +12,9 @@ struct Marble {
     static constexpr std::string_view keyword = "marble";
     static constexpr Wave wave = Wave::Triangle;
     static constexpr bool own_turbulence = true;
-    static constexpr std::array default_map = {
-        MapEntry{0.0, {0.9, 0.8, 0.8, 0, 0}}, MapEntry{0.9, {0.9, 0.08, 0.08, 0, 0}}, MapEntry{0.9, {0, 0, 0, 0, 0}}};
+    static constexpr std::array default_map = {MapEntry{0.0, {0.9, 0.8, 0.8, 0, 0}},
+                                               MapEntry{0.9, {0.9, 0.08, 0.08, 0, 0}},
+                                               MapEntry{0.9, {0, 0, 0, 0, 0}}};
     static constexpr Function value = marble_value;
 };
 

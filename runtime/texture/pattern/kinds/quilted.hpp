@@ -14,7 +14,8 @@ struct Quilted {
     static constexpr bool frequency = false;
     static constexpr int kControl0 = 0;  // Values::number[0]
     static constexpr int kControl1 = 1;  // Values::number[1]
-    static constexpr std::array settings = {Setting::of_number("control0", kControl0, 1.0), Setting::of_number("control1", kControl1, 1.0)};
+    static constexpr std::array settings = {Setting::of_number("control0", kControl0, 1.0),
+                                            Setting::of_number("control1", kControl1, 1.0)};
     static constexpr NormalFunction normal = quilted_normal;
     static constexpr Function value = quilted_value;
 };

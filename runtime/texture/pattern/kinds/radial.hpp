@@ -11,7 +11,8 @@ namespace hexant::runtime::pattern::kinds {
 struct Radial {
     static constexpr std::string_view keyword = "radial";
     static constexpr std::array default_map = {
-        MapEntry{0.0, {0, 1, 1, 0, 0}}, MapEntry{0.333, {1, 1, 0, 0, 0}}, MapEntry{0.666, {1, 0, 1, 0, 0}}, MapEntry{1.0, {0, 1, 1, 0, 0}}};
+        MapEntry{0.0, {0, 1, 1, 0, 0}}, MapEntry{0.333, {1, 1, 0, 0, 0}},
+        MapEntry{0.666, {1, 0, 1, 0, 0}}, MapEntry{1.0, {0, 1, 1, 0, 0}}};
     static constexpr Function value = radial_value;
 };
 

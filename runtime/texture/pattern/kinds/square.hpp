@@ -18,8 +18,9 @@ struct Square {
     static constexpr Kind::Argument argument = Kind::Argument::Colours;
     static constexpr int colours = 4;
     static constexpr bool frequency = false;
-    static constexpr std::array default_map = {MapEntry{0.0, {1, 0, 0, 0, 0}}, MapEntry{1.0, {0, 1, 0, 0, 0}},
-                                               MapEntry{2.0, {0, 0, 1, 0, 0}}, MapEntry{3.0, {1, 1, 0, 0, 0}}};
+    static constexpr std::array default_map = {
+        MapEntry{0.0, {1, 0, 0, 0, 0}}, MapEntry{1.0, {0, 1, 0, 0, 0}},
+        MapEntry{2.0, {0, 0, 1, 0, 0}}, MapEntry{3.0, {1, 1, 0, 0, 0}}};
 
     static double value(const glm::dvec3& p, const Values&) {
         // The parity of each floor from fmod, exact for every double:

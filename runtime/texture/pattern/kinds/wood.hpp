@@ -12,8 +12,8 @@ struct Wood {
     static constexpr std::string_view keyword = "wood";
     static constexpr Wave wave = Wave::Triangle;
     static constexpr bool own_turbulence = true;
-    static constexpr std::array default_map = {
-        MapEntry{0.6, {0.666, 0.312, 0.2, 0, 0}}, MapEntry{0.6, {0.4, 0.1333, 0.066, 0, 0}}};
+    static constexpr std::array default_map = {MapEntry{0.6, {0.666, 0.312, 0.2, 0, 0}},
+                                               MapEntry{0.6, {0.4, 0.1333, 0.066, 0, 0}}};
     static constexpr Function value = wood_value;
 };
 
