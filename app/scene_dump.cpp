@@ -326,8 +326,8 @@ void dump_scene(const runtime::SceneDescription& scene, double t, std::ostream& 
         const glm::dmat4 m =
             light.transform.has_deformation() ? glm::dmat4(1.0) : light.transform.matrix_at(t);
         const auto vec3 = [&](const runtime::Vector3Function& v, double w) {
-            const glm::dvec4 p = m * glm::dvec4(v.c[0](t), v.c[1](t), v.c[2](t), w);
-            return "<" + number(p.x) + ", " + number(p.y) + ", " + number(p.z) + ">";
+            const glm::dvec4 q = m * glm::dvec4(v.c[0](t), v.c[1](t), v.c[2](t), w);
+            return "<" + number(q.x) + ", " + number(q.y) + ", " + number(q.z) + ">";
         };
         if (light.kind != runtime::LightKind::Point)
             out << (light.kind == runtime::LightKind::Spotlight ? " spotlight" : " cylinder")

@@ -204,13 +204,13 @@ Child Hierarchy::Builder::group_range(const Leaf& leaf, std::vector<LeafItem>& i
     // own disjoint runs of the items).
     std::vector<Child> grouped(clusters.size());
     std::vector<Counters> each(clusters.size());
-    const auto make = [&](std::size_t n) {
-        grouped[n] = group_range(leaf, items, clusters[n].begin, clusters[n].end, each[n]);
+    const auto make = [&](std::size_t c) {
+        grouped[c] = group_range(leaf, items, clusters[c].begin, clusters[c].end, each[c]);
     };
     if (end - begin >= kParallelGrain)
         tbb::parallel_for(std::size_t(0), clusters.size(), make);
     else
-        for (std::size_t n = 0; n < clusters.size(); ++n) make(n);
+        for (std::size_t c = 0; c < clusters.size(); ++c) make(c);
     for (const Counters& c : each) counters += c;
     Child merged{{}, TimeBins::empty(1 << leaf.k)};
     for (const Child& c : grouped) merged.bins.add(c.bins);

@@ -336,11 +336,11 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
             if (known.state == ShadingScratch::Light::State::Placed) {
                 known.state = ShadingScratch::Light::State::Seen;
                 if (!light.shadowless()) {
-                    const glm::dvec3 through = shadow_filter(i, h, known, state);
-                    if (through == glm::dvec3(0.0))
+                    const glm::dvec3 passed = shadow_filter(i, h, known, state);
+                    if (passed == glm::dvec3(0.0))
                         known.state = ShadingScratch::Light::State::Shadowed;
-                    else if (through != glm::dvec3(1.0))
-                        known.colour *= through;
+                    else if (passed != glm::dvec3(1.0))
+                        known.colour *= passed;
                 }
             }
             if (known.state == ShadingScratch::Light::State::Shadowed) continue;

@@ -123,10 +123,10 @@ struct action<g::function_call> {
             if (const auto zero = vnormalize_zero_at(args, st.animation_time())) {
                 std::ostringstream note;
                 note << "vnormalize() of a zero-length vector gives <0, 0, 0>, as in POV-Ray";
-                bool timed = false;
+                bool moves = false;
                 const Vector v = to_vector(args.at(0), "the argument of vnormalize()");
-                for (int i = 0; i < v.size; ++i) timed = timed || v.c[i].depends_on_time();
-                if (timed)
+                for (int i = 0; i < v.size; ++i) moves = moves || v.c[i].depends_on_time();
+                if (moves)
                     note << " (at clock " << std::setprecision(17) << *zero
                          << " and wherever else it is zero)";
                 st.warn(in.position(), note.str());

@@ -2,6 +2,7 @@
 // own positions. Part of the Interpreter (language/interpreter_state.hpp), whose end includes it.
 #pragma once
 
+#include "language/interpreter/reading.hpp"
 #include "language/interpreter_state.hpp"
 
 namespace hexant::language {
@@ -40,9 +41,9 @@ template <typename Item, template <typename...> class Action, template <typename
           typename ParseInput>
 bool Interpreter::call_macro(ParseInput& in) {
     const char* b = in.current();
-    const char* e = in.end();
+    const char* end = in.end();
     const char* q = b;
-    while (q != e && (std::isalnum(static_cast<unsigned char>(*q)) || *q == '_')) ++q;
+    while (q != end && (std::isalnum(static_cast<unsigned char>(*q)) || *q == '_')) ++q;
     if (q == b || std::isdigit(static_cast<unsigned char>(*b))) return false;
     const std::string name(b, q);
     const Value* v = lookup(name);

@@ -359,18 +359,18 @@ TextureEvaluator::CompiledPigment::CompiledPigment(const Pigment& pigment, const
                 {CompiledScalar(e.value), shared.entry(shared.pigments, *e.pigment)});
         return;
     }
-    const ColourMap& map = pigment.colour_map;
-    if (map.entries.empty()) {
+    const ColourMap& written = pigment.colour_map;
+    if (written.entries.empty()) {
         fixed_map = pigment.patterned.kind->default_map;
-    } else if (!map.depends_on_time()) {
-        for (const auto& e : map.entries) {
+    } else if (!written.depends_on_time()) {
+        for (const auto& e : written.entries) {
             pattern::MapEntry entry{pattern::single(e.value.constant()), {}};
             for (std::size_t i = 0; i < 5; ++i) entry.colour[i] = e.colour.c[i].constant();
             fixed_map.push_back(entry);
         }
     } else {
-        for (const auto& e : map.entries)
-            this->map.push_back({CompiledScalar(e.value), compile(e.colour)});
+        for (const auto& e : written.entries)
+            map.push_back({CompiledScalar(e.value), compile(e.colour)});
     }
 }
 

@@ -187,9 +187,9 @@ TEST_CASE("resuming after SIGKILL at a random moment loses no frame and leaves n
     // rendered again, not taken as written (found by a fresh user).
     std::ofstream(folder / "killed/f_0002.png", std::ios::trunc) << "not a png";
     {
-        const std::string whole = bytes(folder / "killed/f_0003.png");
+        const std::string written = bytes(folder / "killed/f_0003.png");
         std::ofstream(folder / "killed/f_0003.png", std::ios::binary | std::ios::trunc)
-            << whole.substr(0, 300);
+            << written.substr(0, 300);
     }
     RenderArguments other = arguments(folder, "small");
     other.scene.width = 20;

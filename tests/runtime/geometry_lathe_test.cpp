@@ -172,7 +172,7 @@ TEST_CASE("lathe: segments follow POV-Ray's interpolation", "[geometry][lathe]")
                 static_cast<std::size_t>(lathe_segment_count(spline, points.size())));
         for (std::size_t i = 0; i < g.segments.size(); ++i) {
             const auto& s = g.segments[i];
-            glm::dvec2 start, end;
+            glm::dvec2 start(0.0), end(0.0);
             switch (spline) {
                 case LatheSpline::linear:
                     start = points[i];

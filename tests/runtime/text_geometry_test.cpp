@@ -527,12 +527,12 @@ TEST_CASE("text geometry: glyphs of POV-Ray's fonts against FreeType",
             // directions in the plane; each wall hit on FreeType's outline.
             for (int i = 0; i < 600; ++i) {
                 const double angle = random.uniform(0.0, 2.0 * kPi);
-                const glm::dvec2 dir(std::cos(angle), std::sin(angle));
+                const glm::dvec2 heading(std::cos(angle), std::sin(angle));
                 const glm::dvec2 target{random.uniform(glyph.lo.x, glyph.hi.x),
                                         random.uniform(glyph.lo.y, glyph.hi.y)};
-                const glm::dvec2 from = target - 2.0 * dir;
+                const glm::dvec2 from = target - 2.0 * heading;
                 const double z = random.uniform(0.01, 0.39);
-                const auto hit = intersect(text, Ray3{{from, z}, {dir, 0.0}}, 0.0, kInf);
+                const auto hit = intersect(text, Ray3{{from, z}, {heading, 0.0}}, 0.0, kInf);
                 if (!hit) continue;
                 REQUIRE(well_formed(*hit));
                 REQUIRE(hit->part == 2);

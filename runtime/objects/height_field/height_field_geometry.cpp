@@ -160,8 +160,12 @@ std::optional<SurfaceHit> intersect(const HeightFieldGeometry& field, const Ray3
             if (meets_box(d.node_box(child, field.floor), ray.origin, inverse, s_min, s_max, e))
                 children[n++] = {node.first + c, e};
         }
-        std::sort(children, children + n,
-                  [](const Pending& a, const Pending& b) { return a.entry > b.entry; });
+        // Farthest entry first, by insertion (at most four; the order
+        // std::sort gave, which for so few is this same insertion sort,
+        // without GCC 12's false -Warray-bounds about its unrolled one).
+        for (int i = 1; i < n; ++i)
+            for (int j = i; j > 0 && children[j].entry > children[j - 1].entry; --j)
+                std::swap(children[j], children[j - 1]);
         for (int i = 0; i < n && top < 256; ++i) stack[top++] = children[i];
     }
     if (!best) return std::nullopt;
