@@ -43,6 +43,7 @@
 #include <vector>
 
 #include "runtime/objects/shape_arguments.hpp"
+#include "runtime/sorted_words.hpp"
 #include "runtime/time/time_ops.hpp"
 #include "runtime/time/vector_function.hpp"
 
@@ -56,6 +57,28 @@ struct DescribedParameter {
 
 template <class... Kinds>
 struct KindList {};
+
+// The index in a list of kinds of the kind whose keyword is `keyword`, or
+// the list's size when none has it.
+template <class... K>
+constexpr std::size_t kind_index(KindList<K...>, std::string_view keyword) {
+    constexpr std::array<std::string_view, sizeof...(K)> keywords{K::keyword...};
+    for (std::size_t i = 0; i < keywords.size(); ++i)
+        if (keywords[i] == keyword) return i;
+    return keywords.size();
+}
+
+template <class... K>
+constexpr std::size_t kind_count(KindList<K...>) {
+    return sizeof...(K);
+}
+
+// The keyword of the kind at `index` of a list of kinds.
+template <class... K>
+constexpr std::string_view kind_keyword(KindList<K...>, std::size_t index) {
+    constexpr std::array<std::string_view, sizeof...(K)> keywords{K::keyword...};
+    return keywords.at(index);
+}
 
 // A setting that is a flag (`open`, `open off`, `open 0`): on unless its
 // value is POV-Ray's false.
@@ -111,32 +134,6 @@ constexpr auto settings_of() {
         return std::array<std::string_view, 0>{};
 }
 
-template <class... A>
-constexpr auto concat(const A&... arrays) {
-    std::array<std::string_view, (0 + ... + std::tuple_size_v<A>)> out{};
-    std::size_t at = 0;
-    ((std::copy(arrays.begin(), arrays.end(), out.begin() + at), at += arrays.size()), ...);
-    std::sort(out.begin(), out.end());
-    return out;
-}
-
-template <std::size_t N>
-constexpr std::size_t count_unique(const std::array<std::string_view, N>& sorted) {
-    std::size_t n = 0;
-    for (std::size_t i = 0; i < N; ++i)
-        if (i == 0 || sorted[i] != sorted[i - 1]) ++n;
-    return n;
-}
-
-template <std::size_t M, std::size_t N>
-constexpr std::array<std::string_view, M> unique(const std::array<std::string_view, N>& sorted) {
-    std::array<std::string_view, M> out{};
-    std::size_t n = 0;
-    for (std::size_t i = 0; i < N; ++i)
-        if (i == 0 || sorted[i] != sorted[i - 1]) out[n++] = sorted[i];
-    return out;
-}
-
 }  // namespace kind_detail
 
 // The sorted keywords, option words and setting words of a list of kinds
@@ -147,23 +144,23 @@ struct KindWords;
 template <class... K>
 struct KindWords<KindList<K...>> {
   private:
-    static constexpr auto all_keywords = kind_detail::concat(kind_detail::keyword_of<K>()...);
+    static constexpr auto all_keywords = sorted_words::concat(kind_detail::keyword_of<K>()...);
     static constexpr auto all_block_keywords =
-        kind_detail::concat(kind_detail::block_keyword_of<K>()...);
-    static constexpr auto all_options = kind_detail::concat(kind_detail::options_of<K>()...);
-    static constexpr auto all_settings = kind_detail::concat(kind_detail::settings_of<K>()...);
+        sorted_words::concat(kind_detail::block_keyword_of<K>()...);
+    static constexpr auto all_options = sorted_words::concat(kind_detail::options_of<K>()...);
+    static constexpr auto all_settings = sorted_words::concat(kind_detail::settings_of<K>()...);
 
   public:
     // Every kind's keyword (reserved words), and those of the kinds the
     // generic shape block reads.
     static constexpr auto keywords =
-        kind_detail::unique<kind_detail::count_unique(all_keywords)>(all_keywords);
+        sorted_words::unique<sorted_words::count_unique(all_keywords)>(all_keywords);
     static constexpr auto block_keywords =
-        kind_detail::unique<kind_detail::count_unique(all_block_keywords)>(all_block_keywords);
+        sorted_words::unique<sorted_words::count_unique(all_block_keywords)>(all_block_keywords);
     static constexpr auto options =
-        kind_detail::unique<kind_detail::count_unique(all_options)>(all_options);
+        sorted_words::unique<sorted_words::count_unique(all_options)>(all_options);
     static constexpr auto settings =
-        kind_detail::unique<kind_detail::count_unique(all_settings)>(all_settings);
+        sorted_words::unique<sorted_words::count_unique(all_settings)>(all_settings);
 };
 
 template <class K>

@@ -33,6 +33,7 @@
 #include <string_view>
 #include <vector>
 
+#include "runtime/sorted_words.hpp"
 #include "runtime/texture/pattern/pattern.hpp"
 
 namespace hexant::runtime::pattern {
@@ -133,32 +134,6 @@ constexpr auto setting_names() {
     return out;
 }
 
-template <class... A>
-constexpr auto concat_sorted(const A&... arrays) {
-    std::array<std::string_view, (0 + ... + std::tuple_size_v<A>)> out{};
-    std::size_t at = 0;
-    ((std::copy(arrays.begin(), arrays.end(), out.begin() + at), at += arrays.size()), ...);
-    std::sort(out.begin(), out.end());
-    return out;
-}
-
-template <std::size_t N>
-constexpr std::size_t count_unique(const std::array<std::string_view, N>& sorted) {
-    std::size_t n = 0;
-    for (std::size_t i = 0; i < N; ++i)
-        if (i == 0 || sorted[i] != sorted[i - 1]) ++n;
-    return n;
-}
-
-template <std::size_t M, std::size_t N>
-constexpr std::array<std::string_view, M> unique(const std::array<std::string_view, N>& sorted) {
-    std::array<std::string_view, M> out{};
-    std::size_t n = 0;
-    for (std::size_t i = 0; i < N; ++i)
-        if (i == 0 || sorted[i] != sorted[i - 1]) out[n++] = sorted[i];
-    return out;
-}
-
 }  // namespace pattern_kind_detail
 
 // The sorted keywords and setting words of a list of kinds (the grammar's
@@ -169,16 +144,15 @@ struct PatternWords;
 template <class... K>
 struct PatternWords<PatternKindList<K...>> {
   private:
-    static constexpr auto all_keywords =
-        pattern_kind_detail::concat_sorted(std::array{K::keyword}...);
+    static constexpr auto all_keywords = sorted_words::concat(std::array{K::keyword}...);
     static constexpr auto all_settings =
-        pattern_kind_detail::concat_sorted(pattern_kind_detail::setting_names<K>()...);
+        sorted_words::concat(pattern_kind_detail::setting_names<K>()...);
 
   public:
     static constexpr auto keywords = all_keywords;
     static constexpr auto settings =
-        pattern_kind_detail::unique<pattern_kind_detail::count_unique(all_settings)>(all_settings);
-    static_assert(pattern_kind_detail::count_unique(all_keywords) == all_keywords.size(),
+        sorted_words::unique<sorted_words::count_unique(all_settings)>(all_settings);
+    static_assert(sorted_words::count_unique(all_keywords) == all_keywords.size(),
                   "two pattern kinds share a keyword");
 };
 
