@@ -245,17 +245,20 @@ class BlockArguments final : public runtime::objects::ShapeArguments {
     p::position where_;
 };
 
+// Reads the kind at `index` of the list (kinds with a rule of their own
+// are never read here).
 template <class... Kinds>
-void read_shape(const std::string& keyword, const runtime::objects::ShapeArguments& args,
+void read_shape(std::size_t index, const runtime::objects::ShapeArguments& args,
                 runtime::ObjectRecord& record, runtime::objects::KindList<Kinds...>) {
-    // (Kinds with a rule of their own are never read here.)
+    std::size_t i = 0;
     const bool found =
-        ((keyword == Kinds::keyword
+        ((i++ == index
               ? (
                     [&] {
                         if constexpr (!runtime::objects::kind_detail::own_syntax<Kinds>()) {
                             record.shape = Kinds::read(args);
-                            // What POV-Ray applies before the scene's own transformations.
+                            // What POV-Ray applies before the scene's
+                            // own transformations.
                             if constexpr (requires { Kinds::placement(); })
                                 record.transform = Kinds::placement();
                         }
@@ -263,7 +266,7 @@ void read_shape(const std::string& keyword, const runtime::objects::ShapeArgumen
                     true)
               : false) ||
          ...);
-    if (!found) throw std::logic_error("hexant: unknown shape " + keyword);
+    if (!found) throw std::logic_error("hexant: no shape kind " + std::to_string(index));
 }
 
 // The most objects one shape may become by strings that change with clock
@@ -272,9 +275,9 @@ constexpr std::size_t kMaxTimedStringObjects = 100'000;
 
 }  // namespace
 
-runtime::ObjectRecord make_shape(const std::string& kind, std::vector<std::string> options,
-                                 std::vector<Value>& args, Interpreter& st,
-                                 const p::position& where) {
+runtime::ObjectRecord make_shape(const Interpreter::ShapeOpening& shape, std::vector<Value>& args,
+                                 Interpreter& st, const p::position& where) {
+    const std::string kind(runtime::objects::kind_keyword(runtime::ShapeKinds{}, shape.kind));
     // A string value that changes with clock (str(clock, 0, 2), a branch on
     // clock naming two fonts): one object per text, each living while its
     // text holds, together in a union. (Further such strings split each.)
@@ -290,9 +293,9 @@ runtime::ObjectRecord make_shape(const std::string& kind, std::vector<std::strin
         for (const auto& [text, life] : texts) {
             std::vector<Value> one = args;
             one[i] = Value{text};
-            runtime::ObjectRecord child = make_shape(kind, options, one, st, where);
+            runtime::ObjectRecord child = make_shape(shape, one, st, where);
             child.lifetime = child.lifetime.intersect(life);
-            child.place = st.shape_place;
+            child.place = shape.place;
             group.children.push_back(
                 std::make_shared<const runtime::ObjectRecord>(std::move(child)));
         }
@@ -300,9 +303,9 @@ runtime::ObjectRecord make_shape(const std::string& kind, std::vector<std::strin
         record.shape = std::move(group);
         return record;
     }
-    const BlockArguments arguments(kind, std::move(options), args, st, where);
+    const BlockArguments arguments(kind, shape.options, args, st, where);
     runtime::ObjectRecord record;
-    read_shape(kind, arguments, record, runtime::ShapeKinds{});
+    read_shape(shape.kind, arguments, record, runtime::ShapeKinds{});
     return record;
 }
 

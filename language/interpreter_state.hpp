@@ -202,12 +202,17 @@ class Interpreter {
     std::vector<MeshValue> mesh2_values;
     // global_settings { charset }: "ascii" (POV-Ray's default) or "utf8".
     std::string charset = "ascii";
-    // The option words read before a shape's values (prism's linear_sweep),
-    // one list per shape being read.
-    std::vector<std::vector<std::string>> shape_options;
+    // The shape blocks being read, the innermost last: each one's kind (its
+    // index in runtime::ShapeKinds), the option words read before its values
+    // (prism's linear_sweep) and where it was written.
+    struct ShapeOpening {
+        std::size_t kind;
+        std::vector<std::string> options;
+        runtime::SourcePlace place;
+    };
+    std::vector<ShapeOpening> shapes_open;
     // Patterns read so far (a global noise_generator after them is warned).
     std::size_t patterns_written = 0;
-    runtime::SourcePlace shape_place;  // where the shape being read was written
 
     // ---- directives, called by the custom rules in grammar.hpp
     template <typename Item, template <typename...> class Action,

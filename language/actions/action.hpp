@@ -104,26 +104,24 @@ struct action<g::image_map_setting_name> : name_action {};
 template <>
 struct action<g::image_map_filter_name> : name_action {};
 
-// A shape's keyword: remembers which shape and where it was written.
-template <typename ActionInput>
-void shape_keyword(const ActionInput& in, Interpreter& st) {
-    st.push_name(word(in));
-    const auto p = in.position();
-    st.shape_place = {p.source, p.line, p.column};
-}
+// A shape's keyword (one of runtime::ShapeKinds', the rule's words): opens
+// the shape, its kind as its index in the list, and where it was written.
 template <>
 struct action<g::shape_keyword> {
     template <typename ActionInput>
     static void apply(const ActionInput& in, Interpreter& st) {
-        shape_keyword(in, st);
-        st.shape_options.emplace_back();
+        const std::size_t kind = runtime::objects::kind_index(runtime::ShapeKinds{}, word(in));
+        if (kind == runtime::objects::kind_count(runtime::ShapeKinds{}))
+            throw std::logic_error("hexant: shape_keyword matched '" + word(in) + "', no kind");
+        const auto p = in.position();
+        st.shapes_open.push_back({kind, {}, {p.source, p.line, p.column}});
     }
 };
 template <>
 struct action<g::shape_option> {
     template <typename ActionInput>
     static void apply(const ActionInput& in, Interpreter& st) {
-        st.shape_options.back().push_back(word(in));
+        st.shapes_open.back().options.push_back(word(in));
     }
 };
 

@@ -15,9 +15,8 @@ runtime::SourcePlace source_place(const ActionInput& in) {
     return {p.source, p.line, p.column};
 }
 
-runtime::ObjectRecord make_shape(const std::string& kind, std::vector<std::string> options,
-                                 std::vector<Value>& args, Interpreter& st,
-                                 const p::position& where);
+runtime::ObjectRecord make_shape(const Interpreter::ShapeOpening& shape, std::vector<Value>& args,
+                                 Interpreter& st, const p::position& where);
 void set_shape_setting(runtime::ObjectRecord& record, const std::string& name,
                        std::vector<Value>& values, Interpreter& st, const p::position& where);
 void add_blob_component(runtime::ObjectRecord& record, const std::string& kind,
@@ -28,12 +27,10 @@ struct action<g::shape_arguments> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         std::vector<Value> args = st.close_frame();
-        const std::string kind = st.pop_name();
-        std::vector<std::string> options = std::move(st.shape_options.back());
-        st.shape_options.pop_back();
-        runtime::ObjectRecord record =
-            make_shape(kind, std::move(options), args, st, in.position());
-        record.place = st.shape_place;
+        const Interpreter::ShapeOpening shape = std::move(st.shapes_open.back());
+        st.shapes_open.pop_back();
+        runtime::ObjectRecord record = make_shape(shape, args, st, in.position());
+        record.place = shape.place;
         st.blocks.emplace_back(std::move(record));
     }
 };

@@ -35,6 +35,10 @@ TEST_CASE("every registered kind is read by its keyword, names itself and is res
           "[language][object-kinds]") {
     int kinds = 0;
     each_kind(rt::ShapeKinds{}, [&]<class Kind>(Kind*) {
+        // Its index in the list (how a shape block carries its kind) and back.
+        const std::size_t index = rt::objects::kind_index(rt::ShapeKinds{}, Kind::keyword);
+        CHECK(index == static_cast<std::size_t>(kinds));
+        CHECK(rt::objects::kind_keyword(rt::ShapeKinds{}, index) == Kind::keyword);
         ++kinds;
         const std::string keyword(Kind::keyword);
         INFO(keyword);
@@ -51,6 +55,8 @@ TEST_CASE("every registered kind is read by its keyword, names itself and is res
         CHECK(std::string(wrong.what()).find(keyword) != std::string::npos);
     });
     CHECK(kinds == static_cast<int>(Words::keywords.size()));
+    CHECK(rt::objects::kind_index(rt::ShapeKinds{}, "no_such_kind") ==
+          rt::objects::kind_count(rt::ShapeKinds{}));
     CHECK(std::is_sorted(Words::options.begin(), Words::options.end()));
     CHECK(std::is_sorted(Words::settings.begin(), Words::settings.end()));
 }
