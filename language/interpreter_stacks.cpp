@@ -1,4 +1,4 @@
-// The Interpreter's value stack, and the transforms a block collects.
+// The transforms a block collects (the value stack is language/value_stack.hpp).
 // Part of the Interpreter (language/interpreter_state.hpp).
 #include <cmath>
 #include <cstdlib>
@@ -16,36 +16,6 @@
 namespace hexant::language {
 
 // ------------------------------------------------------------------ stacks
-
-Value Interpreter::pop() {
-    if (stack_.empty()) throw std::logic_error("hexant: value stack underflow");
-    Value v = std::move(stack_.back());
-    stack_.pop_back();
-    return v;
-}
-
-Value& Interpreter::top() {
-    if (stack_.empty()) throw std::logic_error("hexant: value stack underflow");
-    return stack_.back();
-}
-
-std::vector<Value> Interpreter::close_frame() {
-    if (frames_.empty()) throw std::logic_error("hexant: frame stack underflow");
-    const std::size_t begin = frames_.back();
-    frames_.pop_back();
-    std::vector<Value> values(
-        std::make_move_iterator(stack_.begin() + static_cast<std::ptrdiff_t>(begin)),
-        std::make_move_iterator(stack_.end()));
-    stack_.resize(begin);
-    return values;
-}
-
-std::string Interpreter::pop_name() {
-    if (names_.empty()) throw std::logic_error("hexant: name stack underflow");
-    std::string n = std::move(names_.back());
-    names_.pop_back();
-    return n;
-}
 
 void Interpreter::apply_transform(runtime::TransformStep step, const p::position& where) {
     if (blocks.empty()) fail(where, "a transformation does not belong here");

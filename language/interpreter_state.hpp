@@ -38,6 +38,7 @@
 #include "language/time_branch.hpp"
 #include "language/value.hpp"
 #include "language/value_ops.hpp"
+#include "language/value_stack.hpp"
 #include "runtime/scene/scene.hpp"
 #include "runtime/time/switching_instants.hpp"
 
@@ -111,15 +112,8 @@ class Interpreter {
     void warn(const p::position& position, const std::string& message);
     std::ostream& messages() const;
 
-    // ---- the value stack
-    void push(Value v) { stack_.push_back(std::move(v)); }
-    Value pop();
-    Value& top();
-    std::size_t depth() const { return stack_.size(); }
-    void open_frame() { frames_.push_back(stack_.size()); }
-    std::vector<Value> close_frame();
-    void push_name(std::string name) { names_.push_back(std::move(name)); }
-    std::string pop_name();
+    // ---- the value stack (language/value_stack.hpp)
+    ValueStack values;
 
     // ---- blocks under construction
     std::vector<Block> blocks;
@@ -514,9 +508,6 @@ class Interpreter {
                           const std::optional<runtime::ObjectRecord>& top_before,
                           const runtime::CameraRecord& camera_before,
                           const runtime::ColourFunction& background_before);
-    std::vector<Value> stack_;
-    std::vector<std::size_t> frames_;
-    std::vector<std::string> names_;
     std::filesystem::path scene_folder_;
     int macro_depth_ = 0;
     int include_depth_ = 0;

@@ -144,27 +144,26 @@ void Interpreter::merge_time_sides(const p::position& at, const TimeFunction& c,
         for (const auto& [key, unused] : changed) {
             (void)unused;
             const std::optional<Held> before = variable_at(key);
-            std::optional<Held> values[2];
+            std::optional<Held> held[2];
             for (int side = 0; side < 2; ++side) {
                 if (!sides[side]) continue;
                 const auto found = sides[side]->after.find(key);
-                values[side] = found != sides[side]->after.end() ? found->second : before;
+                held[side] = found != sides[side]->after.end() ? found->second : before;
             }
             std::optional<Held> merged;
             if (!sides[1])
-                merged = values[0];
+                merged = held[0];
             else if (!sides[0])
-                merged = values[1];
-            else if (values[0] || values[1]) {
+                merged = held[1];
+            else if (held[0] || held[1]) {
                 // Declared where either side has it, on that side's pieces.
                 std::vector<runtime::Interval> declared;
                 std::optional<Value> value[2];
                 for (int side = 0; side < 2; ++side) {
-                    if (!values[side]) continue;
-                    value[side] = values[side]->value;
-                    for (const auto& piece : values[side]
-                                                 ->defined.intersect(sides[side]->when)
-                                                 .within(animation_time()))
+                    if (!held[side]) continue;
+                    value[side] = held[side]->value;
+                    for (const auto& piece :
+                         held[side]->defined.intersect(sides[side]->when).within(animation_time()))
                         declared.push_back(piece);
                 }
                 runtime::Lifetime defined = runtime::Lifetime::of(std::move(declared));
@@ -186,12 +185,12 @@ void Interpreter::merge_time_sides(const p::position& at, const TimeFunction& c,
                                              : 0;
         for (std::size_t i = 0; i < count; ++i) {
             if (!sides[1])
-                push(sides[0]->pushed[i]);
+                values.push(sides[0]->pushed[i]);
             else if (!sides[0])
-                push(sides[1]->pushed[i]);
+                values.push(sides[1]->pushed[i]);
             else
-                push(*merge_sides("the value this branch gives", c, sides[0]->pushed[i],
-                                  sides[0]->when, sides[1]->pushed[i], sides[1]->when));
+                values.push(*merge_sides("the value this branch gives", c, sides[0]->pushed[i],
+                                         sides[0]->when, sides[1]->pushed[i], sides[1]->when));
         }
         // The object around the branch: the CSG members and lights each side
         // added (each living on its side's pieces, finish_object), and

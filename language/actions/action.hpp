@@ -42,7 +42,7 @@ std::string word(const ActionInput& in) {
 struct name_action {
     template <typename ActionInput>
     static void apply(const ActionInput& in, Interpreter& st) {
-        st.push_name(word(in));
+        st.values.push_name(word(in));
     }
 };
 template <>

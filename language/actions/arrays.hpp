@@ -13,7 +13,7 @@ struct action<g::array_dimensions> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        std::vector<Value> sizes = st.close_frame();
+        std::vector<Value> sizes = st.values.close_frame();
         auto array = std::make_shared<Array>();
         array->charge.attach(st.array_memory());
         std::size_t total = 1;
@@ -28,7 +28,7 @@ struct action<g::array_dimensions> {
         }
         array->charge.add(total * kArraySlotBytes);
         array->elements.resize(total);
-        st.push(Value{array});
+        st.values.push(Value{array});
     }
 };
 template <>
@@ -36,14 +36,14 @@ struct action<g::array_initializer> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        std::vector<Value> items = st.close_frame();
+        std::vector<Value> items = st.values.close_frame();
         auto list = std::make_shared<Array>();  // no dimensions: an initializer list
         list->charge.attach(st.array_memory());
         for (auto& item : items) {
             list->charge.add(kArraySlotBytes + element_bytes(item));
             list->elements.emplace_back(std::make_shared<Value>(std::move(item)));
         }
-        st.push(Value{list});
+        st.values.push(Value{list});
     }
 };
 void fill_array(Array& array, const Array& list, std::size_t dimension, std::size_t& next);
@@ -52,16 +52,16 @@ struct action<g::array_value> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        Value top = st.pop();
+        Value top = st.values.pop();
         auto list = top.as<std::shared_ptr<Array>>();
         if (!list->dimensions.empty()) {  // no initializer
-            st.push(std::move(top));
+            st.values.push(std::move(top));
             return;
         }
-        auto array = st.pop().as<std::shared_ptr<Array>>();
+        auto array = st.values.pop().as<std::shared_ptr<Array>>();
         std::size_t next = 0;
         fill_array(*array, *list, 0, next);
-        st.push(Value{array});
+        st.values.push(Value{array});
     }
 };
 template <>
@@ -76,7 +76,7 @@ template <>
 struct action<g::spline_base> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
+        Value v = st.values.pop();
         if (!v.is<std::shared_ptr<const runtime::Spline>>())
             throw ValueError("spline { } starts with a spline, not a " + type_name(v));
         const auto& base = *v.as<std::shared_ptr<const runtime::Spline>>();
@@ -103,8 +103,8 @@ template <>
 struct action<g::spline_key> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
-        const double t = to_constant(st.pop(), "a spline key's time");
+        Value v = st.values.pop();
+        const double t = to_constant(st.values.pop(), "a spline key's time");
         auto& s = st.block<SplineBuilder>(in.position(), "a spline key");
         runtime::Spline::Key key{t, {0, 0, 0, 0, 0}};
         int dims = 1;
@@ -130,7 +130,7 @@ struct action<g::spline_block> {
         SplineBuilder b = std::get<SplineBuilder>(st.blocks.back());
         st.blocks.pop_back();
         if (b.keys.empty()) Interpreter::fail(in.position(), "a spline needs at least one key");
-        st.push(Value{std::shared_ptr<const runtime::Spline>(
+        st.values.push(Value{std::shared_ptr<const runtime::Spline>(
             std::make_shared<runtime::Spline>(b.kind, std::move(b.keys), b.dimensions))});
     }
 };
@@ -139,7 +139,7 @@ template <>
 struct action<g::scene_object> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
+        Value v = st.values.pop();
         if (v.is<runtime::LightRecord>()) {
             if (auto problem =
                     runtime::bad_parameter(v.as<runtime::LightRecord>(), st.scene.animation))
@@ -157,7 +157,7 @@ struct action<g::scene_unsupported> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        throw ValueError(st.pop().as<Unevaluated>().what + " is not supported by hexant");
+        throw ValueError(st.values.pop().as<Unevaluated>().what + " is not supported by hexant");
     }
 };
 

@@ -12,11 +12,11 @@ template <>
 struct action<g::declare_directive> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        std::vector<Value> frame = st.close_frame();  // indices..., value
+        std::vector<Value> frame = st.values.close_frame();  // indices..., value
         Value value = std::move(frame.back());
         frame.pop_back();
-        const std::string name = st.pop_name();
-        const bool local = st.pop_name() == "local";
+        const std::string name = st.values.pop_name();
+        const bool local = st.values.pop_name() == "local";
         if (value.is<std::shared_ptr<Array>>())
             value = Value{std::make_shared<Array>(*value.as<std::shared_ptr<Array>>())};
         if (frame.empty()) {
@@ -40,7 +40,7 @@ struct action<g::version_value> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        st.version = to_constant(st.pop(), "#version");
+        st.version = to_constant(st.values.pop(), "#version");
     }
 };
 
@@ -63,7 +63,7 @@ struct action<g::debug_directive> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        st.messages() << message_text(st.pop(), "#debug's text");
+        st.messages() << message_text(st.values.pop(), "#debug's text");
     }
 };
 
@@ -71,7 +71,7 @@ template <>
 struct action<g::warning_directive> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        st.warn(in.position(), message_text(st.pop(), "#warning's text"));
+        st.warn(in.position(), message_text(st.values.pop(), "#warning's text"));
     }
 };
 
@@ -79,7 +79,8 @@ template <>
 struct action<g::error_directive> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Interpreter::fail(in.position(), "#error: " + message_text(st.pop(), "#error's text"));
+        Interpreter::fail(in.position(),
+                          "#error: " + message_text(st.values.pop(), "#error's text"));
     }
 };
 
@@ -108,7 +109,7 @@ struct action<g::default_item> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         st.require_whole_time(in.position(), "#default");
-        Value v = st.pop();
+        Value v = st.values.pop();
         auto& texture = st.scene.default_texture;
         if (v.is<runtime::Texture>())
             texture = v.as<runtime::Texture>();

@@ -12,7 +12,7 @@ template <>
 struct action<g::light_arguments> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        std::vector<Value> args = st.close_frame();
+        std::vector<Value> args = st.values.close_frame();
         // light_source { L modifiers }: a copy of the declared light, as
         // POV-Ray's Parse_Light_Source starts from a LIGHT_SOURCE_ID.
         if (args[0].is<runtime::LightRecord>()) {
@@ -72,8 +72,8 @@ template <>
 struct action<g::light_setting> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
-        const std::string name = st.pop_name();
+        Value v = st.values.pop();
+        const std::string name = st.values.pop_name();
         auto& light = st.block<runtime::LightRecord>(in.position(), name.c_str());
         const bool shaped = light.kind != runtime::LightKind::Point;
         // (POV-Ray refuses these on a standard light, its Not_With.)
@@ -103,7 +103,7 @@ template <>
 struct action<g::area_light> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        std::vector<Value> given = st.close_frame();
+        std::vector<Value> given = st.values.close_frame();
         auto& light = st.block<runtime::LightRecord>(in.position(), "area_light");
         runtime::AreaLight area;
         area.axis1 = to_vector3(given.at(0), "area_light's first axis");
@@ -152,7 +152,7 @@ struct action<g::light_looks_like> {
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         // (The object's block, closed as object { } closes.)
         finish_object::apply(in, st);
-        Value v = st.pop();
+        Value v = st.values.pop();
         if (!v.is<runtime::ObjectPtr>())
             throw ValueError("looks_like { } needs an object, not a " + type_name(v));
         auto& light = st.block<runtime::LightRecord>(in.position(), "looks_like");

@@ -14,7 +14,7 @@ struct action<g::number_text> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        st.push(Value{TimeFunction(std::strtod(in.string().c_str(), nullptr))});
+        st.values.push(Value{TimeFunction(std::strtod(in.string().c_str(), nullptr))});
     }
 };
 
@@ -60,7 +60,7 @@ struct action<g::string_content> {
                     break;
             }
         }
-        st.push(Value{out});
+        st.values.push(Value{out});
     }
 };
 
@@ -69,7 +69,7 @@ struct action<g::frame_open> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        st.open_frame();
+        st.values.open_frame();
     }
 };
 
@@ -77,14 +77,14 @@ template <>
 struct action<g::vector_literal> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        std::vector<Value> items = st.close_frame();
+        std::vector<Value> items = st.values.close_frame();
         if (items.size() < 2 || items.size() > 5)
             throw ValueError("a vector has 2 to 5 components, not " + std::to_string(items.size()));
         Vector v;
         v.size = static_cast<int>(items.size());
         for (std::size_t i = 0; i < items.size(); ++i)
             v.c[i] = to_float(items[i], "a vector component");
-        st.push(Value{v});
+        st.values.push(Value{v});
     }
 };
 
@@ -93,8 +93,8 @@ struct action<g::function_call> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        std::vector<Value> args = st.close_frame();
-        const std::string name = st.pop_name();
+        std::vector<Value> args = st.values.close_frame();
+        const std::string name = st.values.pop_name();
         // concat() is checked before it is built: a string doubled each time
         // would otherwise reach the allocator's limit first.
         if (name == "concat") {
@@ -109,8 +109,8 @@ struct action<g::function_call> {
         if (name == "min_extent" || name == "max_extent") {
             if (args.size() != 1 || !args[0].is<runtime::ObjectPtr>())
                 throw ValueError(name + "() takes one object, as in POV-Ray");
-            st.push(object_extent(*args[0].as<runtime::ObjectPtr>(), name == "max_extent",
-                                  st.animation_time(), st.options.limits.time_pieces));
+            st.values.push(object_extent(*args[0].as<runtime::ObjectPtr>(), name == "max_extent",
+                                         st.animation_time(), st.options.limits.time_pieces));
             return;
         }
         // (A string function of arguments that depend on clock: once a
@@ -135,7 +135,7 @@ struct action<g::function_call> {
             st.check_string_length(result.as<std::string>().size(), name + "()'s result");
         if (result.is<TimedString>())
             st.check_string_length(result.as<TimedString>().longest(), name + "()'s result");
-        st.push(std::move(result));
+        st.values.push(std::move(result));
     }
 };
 
@@ -145,8 +145,8 @@ struct action<g::defined_call> {
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
         // (Declared part of the time: 1 on those pieces, language/time_branch.hpp.)
-        const runtime::Lifetime* when = st.declared_when(st.pop_name());
-        st.push(Value{when ? indicator(*when) : TimeFunction(0.0)});
+        const runtime::Lifetime* when = st.declared_when(st.values.pop_name());
+        st.values.push(Value{when ? indicator(*when) : TimeFunction(0.0)});
     }
 };
 
@@ -156,7 +156,7 @@ struct action<g::builtin_constant_name> {
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         const std::string w = in.string();
         const auto& a = st.options.animation;
-        auto f = [&](double v) { st.push(Value{TimeFunction(v)}); };
+        auto f = [&](double v) { st.values.push(Value{TimeFunction(v)}); };
         if (w == "pi")
             f(3.14159265358979323846);
         else if (w == "tau")
@@ -166,23 +166,24 @@ struct action<g::builtin_constant_name> {
         else if (w == "false" || w == "no" || w == "off")
             f(0.0);
         else if (w == "x")
-            st.push(make_vector({1.0, 0.0, 0.0}));
+            st.values.push(make_vector({1.0, 0.0, 0.0}));
         else if (w == "y")
-            st.push(make_vector({0.0, 1.0, 0.0}));
+            st.values.push(make_vector({0.0, 1.0, 0.0}));
         else if (w == "z")
-            st.push(make_vector({0.0, 0.0, 1.0}));
+            st.values.push(make_vector({0.0, 0.0, 1.0}));
         else if (w == "t")
-            st.push(make_vector({0.0, 0.0, 0.0, 1.0}));
+            st.values.push(make_vector({0.0, 0.0, 0.0, 1.0}));
         else if (w == "u")
-            st.push(make_vector({1.0, 0.0}));
+            st.values.push(make_vector({1.0, 0.0}));
         else if (w == "v")
-            st.push(make_vector({0.0, 1.0}));
+            st.values.push(make_vector({0.0, 1.0}));
         else if (w == "image_width")
             f(a.width);
         else if (w == "image_height")
             f(a.height);
         else if (w == "clock")
-            st.push(Value{a.clock_runs() ? TimeFunction::clock() : TimeFunction(a.initial_clock)});
+            st.values.push(
+                Value{a.clock_runs() ? TimeFunction::clock() : TimeFunction(a.initial_clock)});
         else if (w == "clock_delta")
             f(a.clock_delta());
         else if (w == "clock_on")
@@ -223,8 +224,8 @@ struct action<g::builtin_constant_name> {
                 const TimeFunction before_start =
                     TimeFunction::apply(forward ? TimeOp::Less : TimeOp::Greater, t, start);
                 const TimeFunction exact = n + past_next - before_start;
-                st.push(Value{TimeFunction::apply(TimeOp::Min, exact + double(a.initial_frame),
-                                                  double(a.final_frame))});
+                st.values.push(Value{TimeFunction::apply(
+                    TimeOp::Min, exact + double(a.initial_frame), double(a.final_frame))});
             }
         }
     }
@@ -235,8 +236,8 @@ struct action<g::colour_model_literal> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        Value v = st.pop();
-        st.push(colour_model(st.pop_name(), v));
+        Value v = st.values.pop();
+        st.values.push(colour_model(st.values.pop_name(), v));
     }
 };
 
@@ -247,7 +248,7 @@ struct action<g::colour_keyword> {
         (void)in;
         Vector black;
         black.size = 5;
-        st.push(Value{black});
+        st.values.push(Value{black});
     }
 };
 
@@ -256,12 +257,12 @@ struct action<g::colour_base> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        Value v = st.pop();
+        Value v = st.values.pop();
         const runtime::ColourFunction c = to_colour(v, "the colour after 'color'");
         Vector r;
         r.size = 5;
         for (int i = 0; i < 5; ++i) r.c[i] = c.c[i];
-        st.top() = Value{r};
+        st.values.top() = Value{r};
     }
 };
 
@@ -270,9 +271,9 @@ struct action<g::colour_component_setting> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        const TimeFunction v = to_float(st.pop(), "a colour component");
-        const std::string name = st.pop_name();
-        Vector& c = st.top().as<Vector>();
+        const TimeFunction v = to_float(st.values.pop(), "a colour component");
+        const std::string name = st.values.pop_name();
+        Vector& c = st.values.top().as<Vector>();
         const int i = name == "red"      ? 0
                       : name == "green"  ? 1
                       : name == "blue"   ? 2
@@ -299,10 +300,10 @@ struct action<g::reference> {
         }
         if (v->is<std::shared_ptr<Array>>()) {
             // Arrays are values: a copy, so that changing it leaves the original alone.
-            st.push(Value{std::make_shared<Array>(*v->as<std::shared_ptr<Array>>())});
+            st.values.push(Value{std::make_shared<Array>(*v->as<std::shared_ptr<Array>>())});
             return;
         }
-        st.push(*v);
+        st.values.push(*v);
     }
 };
 
@@ -311,8 +312,8 @@ struct action<g::component_access> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        Value v = st.pop();
-        st.push(component(v, st.pop_name()));
+        Value v = st.values.pop();
+        st.values.push(component(v, st.values.pop_name()));
     }
 };
 
@@ -363,13 +364,13 @@ struct action<g::index_suffix> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        const TimeFunction index_f = to_float(st.pop(), "an array index");
-        Value a = st.pop();
+        const TimeFunction index_f = to_float(st.values.pop(), "an array index");
+        Value a = st.values.pop();
         if (!a.is<std::shared_ptr<Array>>())
             throw ValueError("'[ ]' needs an array, not a " + type_name(a));
         auto array = a.as<std::shared_ptr<Array>>();
         if (index_f.depends_on_time()) {
-            st.push(element_by_clock(*array, index_f, st));
+            st.values.push(element_by_clock(*array, index_f, st));
             return;
         }
         const double index = index_f.constant();
@@ -386,13 +387,13 @@ struct action<g::index_suffix> {
             sub->elements.assign(
                 array->elements.begin() + static_cast<std::ptrdiff_t>(start),
                 array->elements.begin() + static_cast<std::ptrdiff_t>(start + stride));
-            st.push(Value{sub});
+            st.values.push(Value{sub});
             return;
         }
         const std::size_t i = element_index(*array, {index});
         if (!array->elements[i])
             throw ValueError("array element " + std::to_string(i) + " is used before it is set");
-        st.push(**array->elements[i]);
+        st.values.push(**array->elements[i]);
     }
 };
 
@@ -401,8 +402,8 @@ struct action<g::spline_call> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        std::vector<Value> args = st.close_frame();
-        Value s = st.pop();
+        std::vector<Value> args = st.values.close_frame();
+        Value s = st.values.pop();
         if (!s.is<std::shared_ptr<const runtime::Spline>>())
             throw ValueError("only a spline can be called like this, not a " + type_name(s));
         if (args.empty() || args.size() > 2)
@@ -413,7 +414,7 @@ struct action<g::spline_call> {
         Vector v;
         v.size = std::max(spline->dimensions(), 2);
         for (int i = 0; i < v.size; ++i) v.c[i] = TimeFunction::spline_component(spline, i, t);
-        st.push(Value{v});
+        st.values.push(Value{v});
     }
 };
 

@@ -17,7 +17,7 @@ void close_map_entry(Interpreter& st, const p::position& at, const std::string& 
     const std::string what = "a " + map + " entry";
     auto entry = std::make_shared<Record>(std::move(st.block<Record>(at, what.c_str())));
     st.blocks.pop_back();
-    const TimeFunction value = to_float(st.pop(), what + "'s value");
+    const TimeFunction value = to_float(st.values.pop(), what + "'s value");
     auto& outer = st.block<Record>(at, what.c_str());
     (outer.*entries).push_back({value, std::move(entry)});
     if ((outer.*entries).size() > 256)
@@ -51,7 +51,7 @@ template <>
 struct action<g::pigment_list_pigment> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        auto entry = std::make_shared<runtime::Pigment>(st.pop().as<runtime::Pigment>());
+        auto entry = std::make_shared<runtime::Pigment>(st.values.pop().as<runtime::Pigment>());
         auto& outer = st.block<runtime::Pigment>(in.position(), "a pigment");
         add_to_block_list(outer.pigment_map, outer.patterned,
                           std::shared_ptr<const runtime::Pigment>(std::move(entry)), "pigment");
@@ -88,7 +88,7 @@ template <>
 struct action<g::normal_list_normal> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        auto entry = std::make_shared<runtime::Normal>(st.pop().as<runtime::Normal>());
+        auto entry = std::make_shared<runtime::Normal>(st.values.pop().as<runtime::Normal>());
         auto& outer = st.block<runtime::Normal>(in.position(), "a normal");
         add_to_block_list(outer.normal_map, outer.patterned,
                           std::shared_ptr<const runtime::Normal>(std::move(entry)), "normal");
@@ -107,7 +107,7 @@ template <>
 struct action<g::slope_map_entry> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        std::vector<Value> items = st.close_frame();
+        std::vector<Value> items = st.values.close_frame();
         // [value <height, slope>] (a 2-vector; a bare pair of numbers too).
         runtime::SlopeMapEntry e;
         if (items.size() == 2) {
@@ -160,7 +160,7 @@ template <>
 struct action<g::texture_list_texture> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        auto entry = std::make_shared<runtime::Texture>(st.pop().as<runtime::Texture>());
+        auto entry = std::make_shared<runtime::Texture>(st.values.pop().as<runtime::Texture>());
         auto& outer = st.block<runtime::Texture>(in.position(), "a texture");
         add_to_block_list(outer.texture_map, outer.patterned,
                           std::shared_ptr<const runtime::Texture>(std::move(entry)), "texture");

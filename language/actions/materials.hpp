@@ -33,7 +33,7 @@ template <>
 struct action<g::image_map_file> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
+        Value v = st.values.pop();
         auto& b = st.block<ImageMapBuilder>(in.position(), "image_map's file");
         const auto read = [&](const std::string& name) {
             const std::filesystem::path path =
@@ -90,7 +90,7 @@ struct action<g::image_map_gamma> {
             b.gamma_srgb_next = false;
             return;
         }
-        const double g = to_constant(st.pop(), "gamma");
+        const double g = to_constant(st.values.pop(), "gamma");
         if (!(g > 0.0) || !std::isfinite(g))
             throw ValueError("an image's gamma must be positive, as in POV-Ray");
         b.gamma = ImageGamma{g, false};
@@ -100,8 +100,8 @@ template <>
 struct action<g::image_map_setting> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
-        const std::string name = st.pop_name();
+        Value v = st.values.pop();
+        const std::string name = st.values.pop_name();
         auto& b = st.block<ImageMapBuilder>(in.position(), name.c_str());
         using M = runtime::pattern::ImageMap;
         if (name == "map_type") {
@@ -166,8 +166,8 @@ template <>
 struct action<g::image_map_filter> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        std::vector<Value> args = st.close_frame();
-        const std::string name = st.pop_name();
+        std::vector<Value> args = st.values.close_frame();
+        const std::string name = st.values.pop_name();
         auto& b = st.block<ImageMapBuilder>(in.position(), name.c_str());
         const bool all = b.all_next;
         b.all_next = false;
@@ -222,7 +222,7 @@ template <>
 struct action<g::colour_map_base> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
+        Value v = st.values.pop();
         if (!v.is<runtime::ColourMap>())
             throw ValueError("color_map { } starts with a color_map, not a " + type_name(v));
         st.block<runtime::ColourMap>(in.position(), "a color_map") = v.as<runtime::ColourMap>();
@@ -232,7 +232,7 @@ template <>
 struct action<g::colour_map_entry> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        std::vector<Value> items = st.close_frame();
+        std::vector<Value> items = st.values.close_frame();
         auto& map = st.block<runtime::ColourMap>(in.position(), "a color_map entry");
         // [value colour], or POV-Ray's older [value1, value2 colour1 colour2].
         if (items.size() == 2) {
@@ -260,14 +260,14 @@ struct action<g::colour_map_block> {
         if (map.entries.empty()) throw ValueError("a color_map needs at least one entry");
         Value v{std::move(map)};
         st.blocks.pop_back();
-        st.push(std::move(v));
+        st.values.push(std::move(v));
     }
 };
 template <>
 struct action<g::pigment_colour_map> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
+        Value v = st.values.pop();
         auto& pigment = st.block<runtime::Pigment>(in.position(), "color_map");
         if (pigment.patterned.kind &&
             pigment.patterned.kind->argument == runtime::pattern::Kind::Argument::Colours)
@@ -283,14 +283,14 @@ struct action<g::unsupported_pattern> {
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         if (!st.blocks.empty() && std::holds_alternative<runtime::Normal>(st.blocks.back())) {
             auto& normal = st.block<runtime::Normal>(in.position(), "a pattern");
-            normal.unsupported_name = st.pop_name();
+            normal.unsupported_name = st.values.pop_name();
             normal.unsupported_place = {in.position().source, in.position().line,
                                         in.position().column};
             return;
         }
         auto& pigment = st.block<runtime::Pigment>(in.position(), "a pattern");
         pigment.pattern = runtime::Pigment::Pattern::Unsupported;
-        pigment.unsupported_name = st.pop_name();
+        pigment.unsupported_name = st.values.pop_name();
         pigment.unsupported_place = {in.position().source, in.position().line,
                                      in.position().column};
     }
@@ -315,7 +315,7 @@ struct action<g::pigment_block> {
         close_uv_mapping(pigment.uv_mapping);
         Value v{pigment};
         st.blocks.pop_back();
-        st.push(std::move(v));
+        st.values.push(std::move(v));
     }
 };
 
@@ -331,7 +331,7 @@ template <>
 struct action<g::finish_base> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
+        Value v = st.values.pop();
         if (!v.is<runtime::Finish>())
             throw ValueError("finish { } starts with a finish, not a " + type_name(v));
         st.block<runtime::Finish>(in.position(), "a finish") = v.as<runtime::Finish>();
@@ -341,8 +341,8 @@ template <>
 struct action<g::finish_setting> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
-        const std::string name = st.pop_name();
+        Value v = st.values.pop();
+        const std::string name = st.values.pop_name();
         auto& f = st.block<runtime::Finish>(in.position(), name.c_str());
         TimeFunction x;
         if (v.is<Vector>()) {
@@ -375,7 +375,7 @@ template <>
 struct action<g::reflection_value> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
+        Value v = st.values.pop();
         auto& f = st.block<runtime::Finish>(in.position(), "reflection");
         if (v.is<TimeFunction>()) {
             const TimeFunction x = v.as<TimeFunction>();
@@ -391,7 +391,7 @@ struct action<g::ignored_value> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        st.pop();
+        st.values.pop();
     }
 };
 template <>
@@ -401,7 +401,7 @@ struct action<g::finish_block> {
         (void)in;
         Value v{std::get<runtime::Finish>(st.blocks.back())};
         st.blocks.pop_back();
-        st.push(std::move(v));
+        st.values.push(std::move(v));
     }
 };
 
@@ -417,7 +417,7 @@ template <>
 struct action<g::interior_base> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
+        Value v = st.values.pop();
         if (!v.is<runtime::Interior>())
             throw ValueError("interior { } starts with an interior, not a " + type_name(v));
         st.block<runtime::Interior>(in.position(), "an interior") = v.as<runtime::Interior>();
@@ -427,7 +427,7 @@ template <>
 struct action<g::ior_setting> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        st.block<runtime::Interior>(in.position(), "ior").ior = to_float(st.pop(), "ior");
+        st.block<runtime::Interior>(in.position(), "ior").ior = to_float(st.values.pop(), "ior");
     }
 };
 template <>
@@ -437,7 +437,7 @@ struct action<g::interior_block> {
         (void)in;
         Value v{std::get<runtime::Interior>(st.blocks.back())};
         st.blocks.pop_back();
-        st.push(std::move(v));
+        st.values.push(std::move(v));
     }
 };
 
@@ -477,7 +477,7 @@ template <>
 struct action<g::texture_base> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
+        Value v = st.values.pop();
         auto& t = st.block<runtime::Texture>(in.position(), "a texture");
         if (v.is<runtime::Texture>())
             t = v.as<runtime::Texture>();
@@ -491,7 +491,7 @@ template <>
 struct action<g::texture_pigment> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
+        Value v = st.values.pop();
         st.block<runtime::Texture>(in.position(), "pigment").pigment = v.as<runtime::Pigment>();
     }
 };
@@ -499,7 +499,7 @@ template <>
 struct action<g::texture_finish> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
+        Value v = st.values.pop();
         st.block<runtime::Texture>(in.position(), "finish").finish = v.as<runtime::Finish>();
     }
 };
@@ -512,7 +512,7 @@ struct action<g::texture_block> {
         close_uv_mapping(std::get<runtime::Texture>(st.blocks.back()).uv_mapping);
         Value v{std::get<runtime::Texture>(st.blocks.back())};
         st.blocks.pop_back();
-        st.push(std::move(v));
+        st.values.push(std::move(v));
     }
 };
 template <>
@@ -521,9 +521,9 @@ struct action<g::texture_layer> {
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         // texture { A } texture { B }: B on top of A.
         (void)in;
-        runtime::Texture top = st.pop().as<runtime::Texture>();
-        if (st.top().is<Unevaluated>()) return;
-        st.top() = Value{layered(std::move(top), st.top().as<runtime::Texture>())};
+        runtime::Texture top = st.values.pop().as<runtime::Texture>();
+        if (st.values.top().is<Unevaluated>()) return;
+        st.values.top() = Value{layered(std::move(top), st.values.top().as<runtime::Texture>())};
     }
 };
 template <>
@@ -531,7 +531,7 @@ struct action<g::material_value> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         st.blocks.pop_back();
-        st.push(Value{Unevaluated{"material", in.position()}});
+        st.values.push(Value{Unevaluated{"material", in.position()}});
     }
 };
 template <>
@@ -555,7 +555,7 @@ template <>
 struct action<g::material_texture> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
+        Value v = st.values.pop();
         auto& material = st.block<MaterialBuilder>(in.position(), "texture");
         auto texture = v.as<runtime::Texture>();
         material.texture = material.texture
@@ -567,7 +567,7 @@ template <>
 struct action<g::material_interior> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
+        Value v = st.values.pop();
         st.block<MaterialBuilder>(in.position(), "interior").interior = v.as<runtime::Interior>();
     }
 };

@@ -32,7 +32,7 @@ template <>
 struct action<g::mesh_triangle> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
+        Value v = st.values.pop();
         if (!v.is<runtime::ObjectPtr>())
             throw ValueError("a mesh holds triangles and smooth_triangles only");
         add_mesh_triangle(mesh_data(st, in.position()), *v.as<runtime::ObjectPtr>());
@@ -42,14 +42,14 @@ template <>
 struct action<g::mesh_inside_vector_value> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        set_inside_vector(mesh_data(st, in.position()), st.pop());
+        set_inside_vector(mesh_data(st, in.position()), st.values.pop());
     }
 };
 template <>
 struct action<g::mesh_hierarchy_value> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        (void)to_constant(st.pop(), "hierarchy");
+        (void)to_constant(st.values.pop(), "hierarchy");
         (void)in;
     }
 };
@@ -57,7 +57,7 @@ template <>
 struct action<g::mesh2_section_name> {
     template <typename ActionInput>
     static void apply(const ActionInput& in, Interpreter& st) {
-        st.push_name(word(in));
+        st.values.push_name(word(in));
     }
 };
 template <>
@@ -65,15 +65,15 @@ struct action<g::mesh2_value> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        st.mesh2_values.push_back(mesh_value(st.pop(), "a mesh2 section"));
+        st.mesh2_values.push_back(mesh_value(st.values.pop(), "a mesh2 section"));
     }
 };
 template <>
 struct action<g::mesh2_values> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        (void)st.close_frame();  // each value was taken as it was read
-        const std::string section = st.pop_name();
+        (void)st.values.close_frame();  // each value was taken as it was read
+        const std::string section = st.values.pop_name();
         std::vector<MeshValue> values = std::move(st.mesh2_values);
         st.mesh2_values.clear();
         read_mesh2_section(mesh_data(st, in.position()), section, values);
@@ -83,7 +83,7 @@ template <>
 struct action<g::mesh2_texture_list> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        read_mesh2_textures(mesh_data(st, in.position()), st.close_frame());
+        read_mesh2_textures(mesh_data(st, in.position()), st.values.close_frame());
     }
 };
 // The hierarchy is built once all faces are read, before the modifiers'
@@ -119,7 +119,7 @@ template <>
 struct action<g::blob_component_kind> {
     template <typename ActionInput>
     static void apply(const ActionInput& in, Interpreter& st) {
-        st.push_name(word(in));
+        st.values.push_name(word(in));
     }
 };
 template <>
@@ -135,8 +135,8 @@ template <>
 struct action<g::blob_component> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        std::vector<Value> values = st.close_frame();
-        const std::string kind = st.pop_name();
+        std::vector<Value> values = st.values.close_frame();
+        const std::string kind = st.values.pop_name();
         auto& record = st.block<runtime::ObjectRecord>(in.position(), "a blob component");
         add_blob_component(record, kind, values, st, in.position());
     }
@@ -145,7 +145,7 @@ template <>
 struct action<g::blob_old_component> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        std::vector<Value> values = st.close_frame();
+        std::vector<Value> values = st.values.close_frame();
         auto& record = st.block<runtime::ObjectRecord>(in.position(), "a blob component");
         add_blob_component(record, "component", values, st, in.position());
     }
@@ -169,7 +169,7 @@ template <>
 struct action<g::object_texture> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
+        Value v = st.values.pop();
         auto& record = st.block<runtime::ObjectRecord>(in.position(), "a texture");
         auto texture = v.as<runtime::Texture>();
         // A texture on an object that has one is a layer on top, as in POV-Ray.
@@ -181,7 +181,7 @@ template <>
 struct action<g::object_pigment> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
+        Value v = st.values.pop();
         object_texture(st, in.position()).pigment = v.as<runtime::Pigment>();
     }
 };
@@ -189,7 +189,7 @@ template <>
 struct action<g::object_normal> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
+        Value v = st.values.pop();
         object_texture(st, in.position()).normal = v.as<runtime::Normal>();
     }
 };
@@ -197,7 +197,7 @@ template <>
 struct action<g::object_finish> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
+        Value v = st.values.pop();
         object_texture(st, in.position()).finish = v.as<runtime::Finish>();
     }
 };
@@ -205,7 +205,7 @@ template <>
 struct action<g::object_interior> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
+        Value v = st.values.pop();
         st.block<runtime::ObjectRecord>(in.position(), "interior").interior =
             v.as<runtime::Interior>();
     }
@@ -225,8 +225,8 @@ template <>
 struct action<g::object_flag> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        std::vector<Value> given = st.close_frame();
-        const std::string name = st.pop_name();
+        std::vector<Value> given = st.values.close_frame();
+        const std::string name = st.values.pop_name();
         const bool on = given.empty() || runtime::pov_true(to_constant(given[0], name));
         if (!st.blocks.empty() && std::holds_alternative<runtime::LightRecord>(st.blocks.back()))
             throw ValueError("'" + name + "' does not belong in a light_source");
@@ -245,8 +245,8 @@ template <>
 struct action<g::shape_setting> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        std::vector<Value> given = st.close_frame();
-        const std::string name = st.pop_name();
+        std::vector<Value> given = st.values.close_frame();
+        const std::string name = st.values.pop_name();
         if (!st.blocks.empty() && std::holds_alternative<runtime::LightRecord>(st.blocks.back()))
             throw ValueError("'" + name + "' does not belong in a light_source");
         auto& record = st.block<runtime::ObjectRecord>(in.position(), name.c_str());

@@ -26,7 +26,7 @@ template <>
 struct action<g::shape_arguments> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        std::vector<Value> args = st.close_frame();
+        std::vector<Value> args = st.values.close_frame();
         const Interpreter::ShapeOpening shape = std::move(st.shapes_open.back());
         st.shapes_open.pop_back();
         runtime::ObjectRecord record = make_shape(shape, args, st, in.position());
@@ -44,7 +44,7 @@ struct finish_object {
         // Made under clock-dependent branches: it exists while they hold.
         if (auto* light = std::get_if<runtime::LightRecord>(&b)) {
             light->lifetime = light->lifetime.intersect(st.domain);
-            st.push(Value{std::move(*light)});
+            st.values.push(Value{std::move(*light)});
             return;
         }
         auto& record = std::get<runtime::ObjectRecord>(b);
@@ -59,7 +59,7 @@ struct finish_object {
             },
             record.shape);
         if (lacking) {
-            st.push(Value{Unevaluated{*lacking, in.position()}});
+            st.values.push(Value{Unevaluated{*lacking, in.position()}});
             return;
         }
         if (const auto* csg = std::get_if<runtime::Csg>(&record.shape)) {
@@ -73,7 +73,7 @@ struct finish_object {
                                       " deep (a union built up in a loop? a union of the "
                                       "objects side by side, or an array of them, does not nest)");
         }
-        st.push(
+        st.values.push(
             Value{runtime::ObjectPtr(std::make_shared<runtime::ObjectRecord>(std::move(record)))});
     }
 };
@@ -88,7 +88,7 @@ template <>
 struct action<g::csg_open> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        const std::string kind = st.pop_name();
+        const std::string kind = st.values.pop_name();
         runtime::Csg csg;
         csg.kind = kind == "intersection" ? runtime::Csg::Kind::Intersection
                    : kind == "difference" ? runtime::Csg::Kind::Difference
@@ -104,7 +104,7 @@ template <>
 struct action<g::csg_child> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
+        Value v = st.values.pop();
         auto& record = st.member_block(in.position());
         if (v.is<runtime::LightRecord>()) {
             record.lights.push_back(v.as<runtime::LightRecord>());
@@ -119,7 +119,7 @@ template <>
 struct action<g::object_base> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
+        Value v = st.values.pop();
         if (v.is<runtime::ObjectPtr>()) {
             runtime::ObjectRecord copy = *v.as<runtime::ObjectPtr>();
             st.blocks.emplace_back(std::move(copy));

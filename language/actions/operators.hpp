@@ -13,7 +13,7 @@ struct unary_action {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        st.push(unary_op(Op, st.pop()));
+        st.values.push(unary_op(Op, st.values.pop()));
     }
 };
 template <>
@@ -26,9 +26,9 @@ struct binary_action {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        Value b = st.pop();
-        Value a = st.pop();
-        st.push(binary_op(Op, a, b));
+        Value b = st.values.pop();
+        Value a = st.values.pop();
+        st.values.push(binary_op(Op, a, b));
     }
 };
 template <>
@@ -61,10 +61,10 @@ struct action<g::conditional_tail> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        Value c = st.pop();
-        Value b = st.pop();
-        Value a = st.pop();
-        st.push(conditional(a, b, c));
+        Value c = st.values.pop();
+        Value b = st.values.pop();
+        Value a = st.values.pop();
+        st.values.push(conditional(a, b, c));
     }
 };
 

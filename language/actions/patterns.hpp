@@ -33,7 +33,7 @@ template <>
 struct action<g::pigment_base> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
+        Value v = st.values.pop();
         auto& pigment = st.block<runtime::Pigment>(in.position(), "a pigment");
         if (v.is<runtime::Pigment>()) {
             pigment = v.as<runtime::Pigment>();
@@ -90,8 +90,8 @@ template <>
 struct action<g::pattern_kind> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        std::vector<Value> args = st.close_frame();
-        const std::string name = st.pop_name();
+        std::vector<Value> args = st.values.close_frame();
+        const std::string name = st.values.pop_name();
         const PatternSlot slot = pattern_slot(st, in.position(), "a pattern", true);
         const runtime::pattern::Kind* kind = runtime::pattern::find_kind(name);
         if (kind == nullptr) throw ValueError("no pattern " + name);
@@ -209,8 +209,8 @@ template <>
 struct action<g::pattern_setting> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
-        const std::string name = st.pop_name();
+        Value v = st.values.pop();
+        const std::string name = st.values.pop_name();
         const PatternSlot slot = pattern_slot(st, in.position(), name.c_str());
         runtime::pattern::Pattern& pattern = slot.pattern;
         // Classic turbulence, made by the first of its settings (POV-Ray's Check_Turb).
@@ -243,8 +243,8 @@ template <>
 struct action<g::pattern_wave> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        std::vector<Value> args = st.close_frame();
-        const std::string name = st.pop_name();
+        std::vector<Value> args = st.values.close_frame();
+        const std::string name = st.values.pop_name();
         runtime::pattern::Pattern& pattern = pattern_slot(st, in.position(), name.c_str()).pattern;
         using W = runtime::pattern::Wave;
         if (name != "poly_wave" && !args.empty()) throw ValueError(name + " takes no value");
@@ -279,7 +279,7 @@ template <>
 struct action<g::warp_turbulence> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
+        Value v = st.values.pop();
         pattern_slot(st, in.position(), "warp").pattern.warps.back().turbulence.amount =
             to_vector3(v, "warp's turbulence");
     }
@@ -288,8 +288,8 @@ template <>
 struct action<g::warp_setting> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
-        const std::string name = st.pop_name();
+        Value v = st.values.pop();
+        const std::string name = st.values.pop_name();
         auto& turbulence = pattern_slot(st, in.position(), "warp").pattern.warps.back().turbulence;
         if (name == "octaves")
             turbulence.octaves = to_float(v, "octaves");
@@ -319,7 +319,7 @@ template <>
 struct action<g::normal_base> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
+        Value v = st.values.pop();
         if (!v.is<runtime::Normal>())
             throw ValueError("normal { } starts with a normal, not a " + type_name(v));
         st.block<runtime::Normal>(in.position(), "a normal") = v.as<runtime::Normal>();
@@ -329,8 +329,8 @@ template <>
 struct action<g::normal_setting> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
-        const std::string name = st.pop_name();
+        Value v = st.values.pop();
+        const std::string name = st.values.pop_name();
         auto& normal = st.block<runtime::Normal>(in.position(), name.c_str());
         if (name == "bump_size")
             normal.amount = to_float(v, "bump_size");
@@ -355,14 +355,14 @@ struct action<g::normal_block> {
         close_uv_mapping(normal.uv_mapping);
         Value v{std::move(normal)};
         st.blocks.pop_back();
-        st.push(std::move(v));
+        st.values.push(std::move(v));
     }
 };
 template <>
 struct action<g::texture_normal> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
+        Value v = st.values.pop();
         st.block<runtime::Texture>(in.position(), "normal").normal = v.as<runtime::Normal>();
     }
 };
@@ -370,7 +370,7 @@ template <>
 struct action<g::camera_normal> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
+        Value v = st.values.pop();
         check_normal(v.as<runtime::Normal>());
         // (POV-Ray: "The 'uv_mapping' pattern cannot be used" without a surface.)
         if (v.as<runtime::Normal>().uv_mapping != runtime::UvMapping::Off)

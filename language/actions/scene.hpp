@@ -20,7 +20,7 @@ template <>
 struct action<g::camera_base> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
+        Value v = st.values.pop();
         if (!v.is<runtime::CameraRecord>())
             throw ValueError("camera { } starts with a camera, not a " + type_name(v));
         st.block<runtime::CameraRecord>(in.position(), "a camera") = v.as<runtime::CameraRecord>();
@@ -30,8 +30,8 @@ template <>
 struct action<g::camera_setting> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
-        const std::string name = st.pop_name();
+        Value v = st.values.pop();
+        const std::string name = st.values.pop_name();
         auto& camera = st.block<runtime::CameraRecord>(in.position(), name.c_str());
         runtime::CameraItem item;
         using K = runtime::CameraItem::Kind;
@@ -87,7 +87,7 @@ template <>
 struct action<g::camera_angle> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        std::vector<Value> given = st.close_frame();
+        std::vector<Value> given = st.values.close_frame();
         auto& camera = st.block<runtime::CameraRecord>(in.position(), "angle");
         using T = runtime::CameraType;
         T type = T::Perspective;
@@ -132,8 +132,8 @@ template <>
 struct action<g::camera_blur_setting> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        std::vector<Value> given = st.close_frame();
-        const std::string name = st.pop_name();
+        std::vector<Value> given = st.values.close_frame();
+        const std::string name = st.values.pop_name();
         auto& camera = st.block<runtime::CameraRecord>(in.position(), name.c_str());
         runtime::CameraItem item;
         using K = runtime::CameraItem::Kind;
@@ -181,7 +181,7 @@ struct action<g::camera_block> {
         (void)in;
         Value v{std::get<runtime::CameraRecord>(st.blocks.back())};
         st.blocks.pop_back();
-        st.push(std::move(v));
+        st.values.push(std::move(v));
     }
 };
 template <>
@@ -190,7 +190,7 @@ struct action<g::scene_camera> {
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
         ++st.camera_sets;  // (under a branch on clock: piecewise, split_time)
-        st.scene.camera = st.pop().as<runtime::CameraRecord>();
+        st.scene.camera = st.values.pop().as<runtime::CameraRecord>();
         if (auto problem = runtime::bad_parameter(st.scene.camera, st.scene.animation))
             throw ValueError(*problem);
     }
@@ -201,7 +201,7 @@ struct action<g::background_colour> {
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
         ++st.background_sets;
-        st.scene.background = to_colour(st.pop(), "the background");
+        st.scene.background = to_colour(st.values.pop(), "the background");
     }
 };
 template <>
@@ -216,7 +216,7 @@ template <>
 struct action<g::sky_sphere_base> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
+        Value v = st.values.pop();
         if (!v.is<runtime::SkySphere>())
             throw ValueError("sky_sphere { } starts with a sky_sphere, not a " + type_name(v));
         st.block<runtime::SkySphere>(in.position(), "a sky_sphere") = v.as<runtime::SkySphere>();
@@ -226,7 +226,7 @@ template <>
 struct action<g::sky_sphere_pigment> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
+        Value v = st.values.pop();
         // (POV-Ray: "The 'uv_mapping' pattern cannot be used" without a surface.)
         if (v.as<runtime::Pigment>().uv_mapping != runtime::UvMapping::Off)
             throw ValueError("uv_mapping needs a surface's (u, v): not in a sky_sphere");
@@ -238,7 +238,7 @@ template <>
 struct action<g::sky_sphere_emission> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
+        Value v = st.values.pop();
         st.block<runtime::SkySphere>(in.position(), "emission").emission = to_colour(v, "emission");
     }
 };
@@ -251,7 +251,7 @@ struct action<g::sky_sphere_block> {
             throw ValueError("a sky_sphere needs a pigment (POV-Ray: empty sky_sphere statement)");
         Value v{std::move(sky)};
         st.blocks.pop_back();
-        st.push(std::move(v));
+        st.values.push(std::move(v));
     }
 };
 template <>
@@ -259,7 +259,7 @@ struct action<g::scene_sky_sphere> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         st.require_whole_time(in.position(), "a sky_sphere");
-        runtime::SkySphere sky = st.pop().as<runtime::SkySphere>();
+        runtime::SkySphere sky = st.values.pop().as<runtime::SkySphere>();
         for (const auto& pigment : sky.pigments) check_pigment(pigment);
         st.scene.sky_sphere = std::move(sky);
     }
@@ -277,8 +277,8 @@ template <>
 struct action<g::fog_setting> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
-        const std::string name = st.pop_name();
+        Value v = st.values.pop();
+        const std::string name = st.values.pop_name();
         auto& fog = st.block<runtime::Fog>(in.position(), name.c_str());
         const auto turbulence = [&]() -> runtime::pattern::Turbulence& {
             if (!fog.turbulence) fog.turbulence.emplace();
@@ -311,7 +311,7 @@ template <>
 struct action<g::fog_colour> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
+        Value v = st.values.pop();
         auto& fog = st.block<runtime::Fog>(in.position(), "a fog's colour");
         // A bare number is the distance, as POV-Ray reads it (with its
         // warning to write `distance`).
@@ -339,7 +339,7 @@ struct action<g::global_motion_blur> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         st.require_whole_time(in.position(), "a global setting");
-        std::vector<Value> items = st.close_frame();
+        std::vector<Value> items = st.values.close_frame();
         auto& g = st.scene.global;
         g.motion_blur_samples =
             static_cast<int>(checked_integer(to_constant(items.at(0), "motion_blur's samples"),
@@ -356,8 +356,8 @@ struct action<g::global_setting> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         st.require_whole_time(in.position(), "a global setting");
-        Value v = st.pop();
-        const std::string name = st.pop_name();
+        Value v = st.values.pop();
+        const std::string name = st.values.pop_name();
         if (name == "assumed_gamma")
             st.scene.global.assumed_gamma = to_constant(v, name);
         else if (name == "noise_generator") {
@@ -386,15 +386,15 @@ template <>
 struct action<g::global_ignored_setting> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        st.close_frame();
-        st.warn(in.position(), "global setting '" + st.pop_name() + "' is read and ignored");
+        st.values.close_frame();
+        st.warn(in.position(), "global setting '" + st.values.pop_name() + "' is read and ignored");
     }
 };
 template <>
 struct action<g::unsupported_block> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        st.push(Value{Unevaluated{st.pop_name(), in.position()}});
+        st.values.push(Value{Unevaluated{st.values.pop_name(), in.position()}});
     }
 };
 

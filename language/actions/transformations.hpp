@@ -20,7 +20,7 @@ struct action<g::translate_step> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         st.apply_transform(
-            make_step(TransformKind::Translate, to_vector3(st.pop(), "translate's amount")),
+            make_step(TransformKind::Translate, to_vector3(st.values.pop(), "translate's amount")),
             in.position());
     }
 };
@@ -29,7 +29,7 @@ struct action<g::rotate_step> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         st.apply_transform(
-            make_step(TransformKind::Rotate, to_vector3(st.pop(), "rotate's angles")),
+            make_step(TransformKind::Rotate, to_vector3(st.values.pop(), "rotate's angles")),
             in.position());
     }
 };
@@ -37,7 +37,7 @@ template <>
 struct action<g::scale_step> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        auto v = to_vector3(st.pop(), "scale's factors");
+        auto v = to_vector3(st.values.pop(), "scale's factors");
         // POV-Ray 3.7 warns and scales by 1 instead (parser_expressions.cpp);
         // a factor that only passes through 0 is handled where it is
         // evaluated (runtime/motion/motion.cpp, scale_factor).
@@ -55,7 +55,7 @@ template <>
 struct action<g::matrix_step> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        std::vector<Value> entries = st.close_frame();
+        std::vector<Value> entries = st.values.close_frame();
         if (entries.size() != 12)
             throw ValueError("matrix needs 12 numbers, not " + std::to_string(entries.size()));
         runtime::TransformStep step;
@@ -68,7 +68,7 @@ template <>
 struct action<g::transform_step> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
+        Value v = st.values.pop();
         if (!v.is<runtime::Transform>())
             throw ValueError("transform needs a transform, not a " + type_name(v));
         for (const auto& step : v.as<runtime::Transform>().steps())
@@ -87,7 +87,7 @@ template <>
 struct action<g::transform_base> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.pop();
+        Value v = st.values.pop();
         if (!v.is<runtime::Transform>())
             throw ValueError("transform { } starts with a transform, not a " + type_name(v));
         st.block<runtime::Transform>(in.position(), "a transform") = v.as<runtime::Transform>();
@@ -108,16 +108,16 @@ struct action<g::transform_block> {
         (void)in;
         Value v{std::get<runtime::Transform>(st.blocks.back())};
         st.blocks.pop_back();
-        st.push(std::move(v));
+        st.values.push(std::move(v));
     }
 };
 template <>
 struct action<g::deformation> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        const TimeFunction amount = to_float(st.pop(), "the deformation's amount");
-        const auto axis = to_vector3(st.pop(), "the deformation's axis");
-        const std::string name = st.pop_name();
+        const TimeFunction amount = to_float(st.values.pop(), "the deformation's amount");
+        const auto axis = to_vector3(st.values.pop(), "the deformation's axis");
+        const std::string name = st.values.pop_name();
         runtime::TransformStep step;
         step.kind = name == "twist"   ? TransformKind::Twist
                     : name == "taper" ? TransformKind::Taper

@@ -14,7 +14,7 @@ double Interpreter::condition(ParseInput& in, const char* directive) {
     const auto position = in.position();
     read<grammar::condition, Action, Control>(in);
     try {
-        return to_constant(pop(), std::string("the condition of ") + directive);
+        return to_constant(values.pop(), std::string("the condition of ") + directive);
     } catch (const ValueError& e) {
         fail(position, e.what());
     }
@@ -26,7 +26,7 @@ TimeFunction Interpreter::timed_condition(ParseInput& in, const char* directive)
     const auto position = in.position();
     read<grammar::condition, Action, Control>(in);
     try {
-        return to_float(pop(), std::string("the condition of ") + directive);
+        return to_float(values.pop(), std::string("the condition of ") + directive);
     } catch (const ValueError& e) {
         fail(position, e.what());
     }
@@ -108,7 +108,7 @@ void Interpreter::split_time(ParseInput& in, const p::position& at, const TimeFu
     // What a side may change besides variables: values it leaves on the
     // stack (an #if inside a macro that returns a value), and the object
     // being built around it (CSG members it adds).
-    const std::size_t stack_base = stack_.size();
+    const std::size_t stack_base = values.depth();
     const runtime::CameraRecord camera_before = scene.camera;
     const runtime::ColourFunction background_before = scene.background;
     const std::size_t camera_count = camera_sets, background_count = background_sets;
@@ -139,13 +139,8 @@ void Interpreter::split_time(ParseInput& in, const p::position& at, const TimeFu
             side.background = std::exchange(scene.background, background_before);
         camera_sets = camera_count;
         background_sets = background_count;
-        if (stack_.size() >= stack_base) {
-            side.pushed.assign(
-                std::make_move_iterator(stack_.begin() + static_cast<std::ptrdiff_t>(stack_base)),
-                std::make_move_iterator(stack_.end()));
-        }
-        const bool balanced = stack_.size() >= stack_base && blocks.size() == block_count;
-        stack_.resize(std::min(stack_.size(), stack_base));
+        const bool balanced = values.depth() >= stack_base && blocks.size() == block_count;
+        side.pushed = values.take_above(stack_base);
         if (blocks.size() == block_count && top_before) {
             side.top = std::move(std::get<runtime::ObjectRecord>(blocks.back()));
             blocks.back() = *top_before;

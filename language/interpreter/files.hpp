@@ -11,22 +11,20 @@ template <typename Item, template <typename...> class Action, template <typename
           typename ParseInput>
 bool Interpreter::declare_value(ParseInput& in) {
     const auto start = in.iterator();
-    const std::size_t values = stack_.size(), block_count = blocks.size(),
-                      frame_count = frames_.size(), name_count = names_.size();
+    const ValueStack::Mark mark = values.mark();
+    const std::size_t block_count = blocks.size();
     try {
         return p::match<grammar::value, p::apply_mode::action, p::rewind_mode::required, Action,
                         Control>(in, *this);
     } catch (const unsupported_use& e) {
         // Keep the declaration as source: an error only where it is used.
         in.iterator() = start;
-        stack_.erase(stack_.begin() + static_cast<std::ptrdiff_t>(values), stack_.end());
+        values.rewind(mark);
         blocks.erase(blocks.begin() + static_cast<std::ptrdiff_t>(block_count), blocks.end());
-        frames_.resize(frame_count);
-        names_.resize(name_count);
         const auto where = in.position();
         (void)p::match<grammar::skip::declaration, p::apply_mode::nothing, p::rewind_mode::dontcare,
                        p::nothing, Control>(in, *this);
-        push(Value{Unevaluated{
+        values.push(Value{Unevaluated{
             "declaration that hexant cannot evaluate (" + std::string(e.message()) + ")", where}});
         return true;
     }
@@ -38,7 +36,7 @@ bool Interpreter::run_include(ParseInput& in) {
     const auto opened = directive_position(in);
     if (!keyword(in, "include")) return false;
     read<grammar::include_name, Action, Control>(in);
-    const Value name = pop();
+    const Value name = values.pop();
     if (name.is<TimedString>()) {
         include_by_clock<Item, Action, Control>(in, opened, name.as<TimedString>());
         return true;

@@ -63,10 +63,10 @@ template <typename Item, template <typename...> class Action, template <typename
 bool Interpreter::run_for(ParseInput& in) {
     const auto opened = directive_position(in);
     if (!keyword(in, "for")) return false;
-    open_frame();
+    values.open_frame();
     read<grammar::for_header, Action, Control>(in);
-    std::vector<Value> bounds = close_frame();
-    const std::string variable = pop_name();
+    std::vector<Value> bounds = values.close_frame();
+    const std::string variable = values.pop_name();
     double from, step = 1.0;
     TimeFunction to;
     try {

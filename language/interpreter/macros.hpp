@@ -54,7 +54,7 @@ bool Interpreter::call_macro(ParseInput& in) {
     (void)p::match<grammar::ws, p::apply_mode::nothing, p::rewind_mode::dontcare, p::nothing,
                    p::normal>(in);
     read<grammar::call_open, Action, Control>(in);
-    open_frame();
+    values.open_frame();
     // An argument that is just a declared name is passed by reference, as in
     // POV-Ray: what the macro #declares to its parameter goes back to it.
     std::vector<std::string> references;
@@ -75,7 +75,7 @@ bool Interpreter::call_macro(ParseInput& in) {
                           p::nothing, p::normal>(in));
     }
     read<grammar::call_close, Action, Control>(in);
-    std::vector<Value> args = close_frame();
+    std::vector<Value> args = values.close_frame();
     if (args.size() != macro->parameters.size())
         fail(call_place, "macro '" + name + "' takes " + std::to_string(macro->parameters.size()) +
                              " argument" + (macro->parameters.size() == 1 ? "" : "s") + ", not " +
@@ -96,7 +96,7 @@ bool Interpreter::call_macro(ParseInput& in) {
         fail(call_place, e.what());
     }
     ++macro_depth_;
-    const std::size_t before = depth();
+    const std::size_t before = values.depth();
     const auto& at = macro->body_position;
     Input body(macro->body_begin, macro->body_end, at.source, at.byte, at.line, at.column);
     try {
@@ -136,9 +136,9 @@ bool Interpreter::call_macro(ParseInput& in) {
     }
     scopes_.pop_back();
     if constexpr (std::is_same_v<Item, grammar::value_item>) {
-        if (depth() != before + 1)
+        if (values.depth() != before + 1)
             fail(call_place, "macro '" + name + "' is used as a value but gives " +
-                                 std::to_string(depth() - before) + " values");
+                                 std::to_string(values.depth() - before) + " values");
     }
     return true;
 }

@@ -32,9 +32,9 @@ void Interpreter::switch_from(ParseInput& in, const p::position& opened, const T
                     hit = TimeFunction::apply(runtime::TimeOp::Equal, value,
                                               timed_condition<Action, Control>(in, "#case"));
                 } else {
-                    open_frame();
+                    values.open_frame();
                     read<grammar::range_header, Action, Control>(in);
-                    auto r = close_frame();
+                    auto r = values.close_frame();
                     try {
                         const TimeFunction lo = to_float(r[0], "the low end of #range");
                         const TimeFunction hi = to_float(r[1], "the high end of #range");
