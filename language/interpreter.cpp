@@ -28,12 +28,10 @@ std::filesystem::path bundled_include_dir() {
 
 Interpreter::Interpreter(const ParseOptions& options_in, runtime::SceneDescription& scene_in,
                          std::filesystem::path scene_folder)
-    : scene(scene_in),
+    : symbols(std::make_shared<MemoryBudget>(options_in.limits.array_memory)),
+      scene(scene_in),
       options(options_in),
-      scene_folder_(std::move(scene_folder)),
-      array_memory_(std::make_shared<MemoryBudget>(options_in.limits.array_memory)) {
-    scopes_.emplace_back();  // the global table
-}
+      scene_folder_(std::move(scene_folder)) {}
 
 void Interpreter::check_string_length(std::size_t length, const std::string& what) const {
     if (length > options.limits.string_length)

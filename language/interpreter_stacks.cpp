@@ -19,7 +19,7 @@ namespace hexant::language {
 
 void Interpreter::apply_transform(runtime::TransformStep step, const p::position& where) {
     if (blocks.empty()) fail(where, "a transformation does not belong here");
-    Block& b = blocks.back();
+    Block& b = blocks.top();
     if (auto* object = std::get_if<runtime::ObjectRecord>(&b)) {
         // As in POV-Ray, an object's texture moves with it.
         if (object->texture) object->texture->transform_by(step);
@@ -57,7 +57,7 @@ void Interpreter::apply_transform(runtime::TransformStep step, const p::position
 }
 
 void Interpreter::apply_deformation(runtime::TransformStep step, const p::position& where) {
-    if (blocks.empty() || !std::holds_alternative<runtime::ObjectRecord>(blocks.back()))
+    if (blocks.empty() || !std::holds_alternative<runtime::ObjectRecord>(blocks.top()))
         fail(where, "a deformation belongs in an object");
     apply_transform(std::move(step), where);
 }

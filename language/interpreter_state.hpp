@@ -29,12 +29,14 @@
 
 #include <tao/pegtl.hpp>
 
+#include "language/block_stack.hpp"
 #include "language/builtins.hpp"
 #include "language/errors.hpp"
 #include "language/grammar.hpp"
 #include "language/image_map_file.hpp"
 #include "language/interpreter.hpp"
 #include "language/mesh_reading.hpp"
+#include "language/symbol_table.hpp"
 #include "language/time_branch.hpp"
 #include "language/value.hpp"
 #include "language/value_ops.hpp"
@@ -46,35 +48,6 @@ namespace hexant::language {
 
 namespace p = tao::pegtl;
 using Input = p::memory_input<p::tracking_mode::eager, p::eol::lf_crlf, std::string>;
-
-struct SplineBuilder {
-    runtime::SplineKind kind = runtime::SplineKind::Linear;
-    std::vector<runtime::Spline::Key> keys;
-    int dimensions = 1;
-};
-
-struct MaterialBuilder {
-    std::optional<runtime::Texture> texture;
-    std::optional<runtime::Interior> interior;
-};
-
-// image_map { } being read: the map, the file as read (decoded when the
-// block closes, after its gamma), and what was said of it.
-struct ImageMapBuilder {
-    runtime::pattern::ImageMap map;
-    // The files as read, over their pieces of time (one piece for a file
-    // named once), and each distinct file once.
-    std::vector<std::pair<runtime::Interval, std::shared_ptr<const image::StoredImage>>> stored;
-    ImageGamma gamma;
-    bool gamma_srgb_next = false;  // `gamma srgb` just read
-    bool all_next = false;         // `filter all` / `transmit all` being read
-};
-
-// A block under construction: `sphere { ... }`, `texture { ... }` ...
-using Block = std::variant<runtime::ObjectRecord, runtime::LightRecord, runtime::CameraRecord,
-                           runtime::Texture, runtime::Pigment, runtime::Normal, runtime::ColourMap,
-                           runtime::SkySphere, runtime::Fog, runtime::Finish, runtime::Interior,
-                           runtime::Transform, SplineBuilder, MaterialBuilder, ImageMapBuilder>;
 
 // What a std::bad_alloc while reading becomes, at its place.
 inline constexpr const char* kOutOfMemory =
@@ -115,36 +88,20 @@ class Interpreter {
     // ---- the value stack (language/value_stack.hpp)
     ValueStack values;
 
-    // ---- blocks under construction
-    std::vector<Block> blocks;
-    template <typename T>
-    T& block(const p::position& where, const char* what);
-    // The object block a CSG member or light joins: block() without
-    // counting an edit (members added under a time split live on its
-    // pieces; other edits there are refused, split_time).
-    runtime::ObjectRecord& member_block(const p::position& where) {
-        const std::size_t watched = watched_block_;
-        watched_block_ = 0;
-        runtime::ObjectRecord& record = block<runtime::ObjectRecord>(where, "an object");
-        watched_block_ = watched;
-        return record;
-    }
+    // ---- blocks under construction (language/block_stack.hpp)
+    BlockStack blocks;
     void apply_transform(runtime::TransformStep step, const p::position& where);
     void apply_deformation(runtime::TransformStep step, const p::position& where);
 
-    // ---- symbols
-    const Value* lookup(const std::string& name) const;
-    // When `name` is declared (always, or some pieces of time: see
-    // Variable::defined); null when it is not declared at all.
-    const runtime::Lifetime* declared_when(const std::string& name) const;
+    // ---- symbols (language/symbol_table.hpp)
+    SymbolTable symbols;
     // Throws ValueError when `name`, declared only part of the time, is used
     // where the domain reaches beyond that time (POV-Ray stops there on an
     // undeclared identifier).
     void check_declared(const std::string& name) const;
-    void declare(const std::string& name, Value value, bool local);
+    // An array element set: `name[indices] = value`; errors at `where`.
     void assign_element(const std::string& name, const std::vector<Value>& indices, Value value,
                         const p::position& where);
-    bool undefine(const std::string& name);
 
     // A finished top-level object joins the scene; its lights join the
     // scene's lights, and a pattern hexant lacks is an error here, where used.
@@ -251,7 +208,7 @@ class Interpreter {
         const char* q = b;
         while (q != in.end() && (std::isalnum(static_cast<unsigned char>(*q)) || *q == '_')) ++q;
         if (q == b) return false;
-        const Value* v = lookup(std::string(b, q));
+        const Value* v = symbols.lookup(std::string(b, q));
         return v != nullptr && v->is<std::shared_ptr<const Macro>>();
     }
 
@@ -325,7 +282,7 @@ class Interpreter {
             while (q != in.end() && (*q == ' ' || *q == '\t')) ++q;
             return q != in.end() && *q == '(';  // a function: sin(...), vrotate(...)
         }
-        const Value* v = lookup(word);
+        const Value* v = symbols.lookup(word);
         return v == nullptr || !v->is<std::shared_ptr<const Macro>>();
     }
 
@@ -345,7 +302,7 @@ class Interpreter {
 
     // The arrays' memory (Limits::array_memory): every array of this
     // reading is charged to it.
-    const std::shared_ptr<MemoryBudget>& array_memory() const { return array_memory_; }
+    const std::shared_ptr<MemoryBudget>& array_memory() const { return symbols.memory(); }
     // A string about to be made of `length` characters, against
     // Limits::string_length; throws ValueError naming `what`.
     void check_string_length(std::size_t length, const std::string& what) const;
@@ -455,46 +412,12 @@ class Interpreter {
                                const ParseInput& in);
 
     std::deque<std::pair<std::string, std::string>> sources_;
-    // A variable: its value, and what its string's characters are charged
-    // to the memory budget (array_memory_; an array charges itself).
-    struct Variable {
-        Value value;
-        MemoryCharge charge;
-        // When it is declared: always, or (set or #undef-ed on one side of
-        // a branch on clock only) the pieces of time where it is.
-        runtime::Lifetime defined;
-    };
-    using Scope = std::unordered_map<std::string, Variable>;
-    // Sets the scope's variable `name` to `value`, charging a string's
-    // characters; throws ValueError past the budget, changing nothing.
-    void set_variable(Scope& scope, const std::string& name, Value value);
-    std::vector<Scope> scopes_;
-    // While one side of a time split is read: the variables of the scopes
-    // older than the split that it changed, with what they held before
-    // (none: undefined), so that the next side starts from the same state.
-    using VariableKey = std::pair<std::size_t, std::string>;  // scope, name
-    struct Held {  // a variable's value and when it is declared
-        Value value;
-        runtime::Lifetime defined;
-    };
-    struct BranchLog {
-        std::size_t scopes = 0;  // scopes_.size() when the side began
-        std::map<VariableKey, std::optional<Held>> before;
-    };
-    std::vector<BranchLog> branch_logs_;
-    bool restoring_ = false;  // writing back a log: not itself logged
-    // The depth of the object block a side of a time split reads inside
-    // (0: none), and how many times block() handed it out for an edit.
-    std::size_t watched_block_ = 0, watched_edits_ = 0;
-    void log_change(const Scope& scope, const std::string& name);
-    std::optional<Held> variable_at(const VariableKey& key) const;
-    void set_variable_at(const VariableKey& key, const std::optional<Held>& held);
     // One side of a time split, read: its pieces, the variables it changed
     // (as they were when it ended), the values it left on the stack and the
     // object block around it as it left it.
     struct TimeSide {
         runtime::Lifetime when;
-        std::map<VariableKey, std::optional<Held>> after;
+        SymbolTable::Changes after;
         std::vector<Value> pushed;
         std::optional<runtime::ObjectRecord> top;
         bool top_edited = false;                            // beyond adding members
@@ -513,7 +436,6 @@ class Interpreter {
     int include_depth_ = 0;
     std::size_t steps_ = 0;
     std::size_t text_read_ = 0;
-    std::shared_ptr<MemoryBudget> array_memory_;
 };
 
 }  // namespace hexant::language

@@ -1,5 +1,6 @@
-// The Interpreter's symbols: scopes, declarations, the time split of a value, and #include's
-// reading of files. Part of the Interpreter (language/interpreter_state.hpp).
+// The Interpreter's use of its symbols (the checks that need time and places), the merge of
+// a time split's sides, and #include's reading of files. Part of the Interpreter
+// (language/interpreter_state.hpp).
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -19,24 +20,8 @@ namespace hexant::language {
 
 // ------------------------------------------------------------------ symbols
 
-const Value* Interpreter::lookup(const std::string& name) const {
-    for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it) {
-        auto found = it->find(name);
-        if (found != it->end()) return &found->second.value;
-    }
-    return nullptr;
-}
-
-const runtime::Lifetime* Interpreter::declared_when(const std::string& name) const {
-    for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it) {
-        auto found = it->find(name);
-        if (found != it->end()) return &found->second.defined;
-    }
-    return nullptr;
-}
-
 void Interpreter::check_declared(const std::string& name) const {
-    const runtime::Lifetime* when = declared_when(name);
+    const runtime::Lifetime* when = symbols.declared_when(name);
     if (when == nullptr || when->is_always()) return;
     for (const runtime::Interval& piece : domain.within(animation_time()))
         if (!when->holds_all(piece)) {
@@ -51,38 +36,9 @@ void Interpreter::check_declared(const std::string& name) const {
         }
 }
 
-void Interpreter::log_change(const Scope& scope, const std::string& name) {
-    if (branch_logs_.empty() || restoring_) return;
-    BranchLog& log = branch_logs_.back();
-    const std::size_t index = static_cast<std::size_t>(&scope - scopes_.data());
-    if (index >= log.scopes) return;  // a scope of this side's own (a macro's)
-    VariableKey key{index, name};
-    if (log.before.count(key)) return;
-    log.before.emplace(key, variable_at(key));
-}
-
-std::optional<Interpreter::Held> Interpreter::variable_at(const VariableKey& key) const {
-    if (key.first >= scopes_.size()) return std::nullopt;
-    const Scope& scope = scopes_[key.first];
-    const auto found = scope.find(key.second);
-    if (found == scope.end()) return std::nullopt;
-    return Held{found->second.value, found->second.defined};
-}
-
-void Interpreter::set_variable_at(const VariableKey& key, const std::optional<Held>& held) {
-    Scope& scope = scopes_[key.first];
-    if (held) {
-        set_variable(scope, key.second, held->value);
-        scope[key.second].defined = held->defined;
-    } else {
-        log_change(scope, key.second);
-        scope.erase(key.second);
-    }
-}
-
 namespace {
 
-// What block() does not count (Interpreter::watched_edits_): the kind of
+// What BlockStack::edit() does not count: the kind of
 // shape and the transform (apply_transform edits the block directly). A
 // side of a time split may change neither (not yet piecewise in time).
 bool same_but_members(const runtime::ObjectRecord& a, const runtime::ObjectRecord& b) {
@@ -137,20 +93,20 @@ void Interpreter::merge_time_sides(const p::position& at, const TimeFunction& c,
             ++background_sets;
         }
         // The variables either side changed.
-        std::map<VariableKey, bool> changed;
+        std::map<SymbolTable::Key, bool> changed;
         for (const auto& s : sides)
             if (s)
                 for (const auto& entry : s->after) changed[entry.first] = true;
         for (const auto& [key, unused] : changed) {
             (void)unused;
-            const std::optional<Held> before = variable_at(key);
-            std::optional<Held> held[2];
+            const std::optional<SymbolTable::Held> before = symbols.held(key);
+            std::optional<SymbolTable::Held> held[2];
             for (int side = 0; side < 2; ++side) {
                 if (!sides[side]) continue;
                 const auto found = sides[side]->after.find(key);
                 held[side] = found != sides[side]->after.end() ? found->second : before;
             }
-            std::optional<Held> merged;
+            std::optional<SymbolTable::Held> merged;
             if (!sides[1])
                 merged = held[0];
             else if (!sides[0])
@@ -168,11 +124,11 @@ void Interpreter::merge_time_sides(const p::position& at, const TimeFunction& c,
                 }
                 runtime::Lifetime defined = runtime::Lifetime::of(std::move(declared));
                 if (defined.holds_all(animation_time())) defined = runtime::Lifetime::always();
-                merged = Held{*merge_sides("'" + key.second + "'", c, value[0], sides[0]->when,
-                                           value[1], sides[1]->when),
-                              std::move(defined)};
+                merged = SymbolTable::Held{*merge_sides("'" + key.second + "'", c, value[0],
+                                                        sides[0]->when, value[1], sides[1]->when),
+                                           std::move(defined)};
             }
-            set_variable_at(key, merged);
+            symbols.set_held(key, merged);
         }
         // The values they left (a macro's result): one each, side by side.
         if (sides[0] && sides[1] && sides[0]->pushed.size() != sides[1]->pushed.size())
@@ -218,7 +174,7 @@ void Interpreter::merge_time_sides(const p::position& at, const TimeFunction& c,
                     s->top->lights.begin() + static_cast<std::ptrdiff_t>(top_before->lights.size()),
                     s->top->lights.end());
             }
-            blocks.back() = std::move(merged);
+            blocks.top() = std::move(merged);
         }
     } catch (const ValueError& e) {
         fail(at, e.what());
@@ -247,49 +203,11 @@ void Interpreter::require_whole_time(const p::position& where, const char* what)
                     "objects, lights, floats and vectors piecewise in time, not yet this");
 }
 
-void Interpreter::set_variable(Scope& scope, const std::string& name, Value value) {
-    log_change(scope, name);
-    const std::size_t bytes = string_bytes(value);
-    auto [slot, added] = scope.try_emplace(name);
-    Variable& variable = slot->second;
-    variable.charge.attach(array_memory_);
-    try {
-        variable.charge.set(bytes);
-    } catch (const ValueError&) {
-        if (added) scope.erase(slot);  // past the budget: no variable made
-        throw;
-    }
-    variable.value = std::move(value);
-    variable.defined = runtime::Lifetime::always();  // declared now
-}
-
-void Interpreter::declare(const std::string& name, Value value, bool local) {
-    // #declare of a name local to the current macro or file changes that
-    // local (a macro's parameter, say); otherwise it is global.
-    if (!local && scopes_.size() > 1 && scopes_.back().count(name)) local = true;
-    auto& table = local ? scopes_.back() : scopes_.front();
-    set_variable(table, name, std::move(value));
-}
-
 void Interpreter::assign_element(const std::string& name, const std::vector<Value>& indices,
                                  Value value, const p::position& where) {
-    Value* target = nullptr;
-    for (auto it = scopes_.rbegin(); it != scopes_.rend() && !target; ++it) {
-        auto found = it->find(name);
-        if (found != it->end()) target = &found->second.value;
-    }
-    if (!target) fail(where, "undeclared array '" + name + "'");
-    // (An array is shared, not copied, by the sides of a time split: an
-    // element set on one side would be seen on the other.)
-    if (!branch_logs_.empty())
-        fail(where,
-             "an array element set under a branch whose condition depends on clock; "
-             "hexant cannot yet make an array piecewise in time (declare a float or "
-             "vector under the branch instead)");
-    if (!target->is<std::shared_ptr<Array>>()) fail(where, "'" + name + "' is not an array");
-    auto& array = *target->as<std::shared_ptr<Array>>();
-    std::vector<double> at;
     try {
+        Array& array = symbols.array_for_element(name);
+        std::vector<double> at;
         for (const auto& i : indices) at.push_back(to_constant(i, "an array index"));
         auto& slot = array.elements[element_index(array, at)];
         array.charge.add(element_bytes(value));
@@ -298,16 +216,6 @@ void Interpreter::assign_element(const std::string& name, const std::vector<Valu
     } catch (const ValueError& e) {
         fail(where, e.what());
     }
-}
-
-bool Interpreter::undefine(const std::string& name) {
-    for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it)
-        if (it->count(name)) {
-            log_change(*it, name);
-            it->erase(name);
-            return true;
-        }
-    return false;
 }
 
 const char* const kPovRayIncludeDir = "/usr/share/povray-3.7/include";

@@ -69,7 +69,7 @@ struct action<g::spline_open> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        st.blocks.emplace_back(std::in_place_type<SplineBuilder>);
+        st.blocks.open(std::in_place_type<SplineBuilder>);
     }
 };
 template <>
@@ -80,7 +80,7 @@ struct action<g::spline_base> {
         if (!v.is<std::shared_ptr<const runtime::Spline>>())
             throw ValueError("spline { } starts with a spline, not a " + type_name(v));
         const auto& base = *v.as<std::shared_ptr<const runtime::Spline>>();
-        auto& s = st.block<SplineBuilder>(in.position(), "a spline");
+        auto& s = st.blocks.edit<SplineBuilder>(in.position(), "a spline");
         s.kind = base.kind();
         s.keys = base.keys();
         s.dimensions = base.dimensions();
@@ -91,7 +91,7 @@ struct action<g::spline_kind> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         const std::string w = word(in);
-        auto& s = st.block<SplineBuilder>(in.position(), w.c_str());
+        auto& s = st.blocks.edit<SplineBuilder>(in.position(), w.c_str());
         using K = runtime::SplineKind;
         s.kind = w == "linear_spline"      ? K::Linear
                  : w == "quadratic_spline" ? K::Quadratic
@@ -105,7 +105,7 @@ struct action<g::spline_key> {
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.values.pop();
         const double t = to_constant(st.values.pop(), "a spline key's time");
-        auto& s = st.block<SplineBuilder>(in.position(), "a spline key");
+        auto& s = st.blocks.edit<SplineBuilder>(in.position(), "a spline key");
         runtime::Spline::Key key{t, {0, 0, 0, 0, 0}};
         int dims = 1;
         if (v.is<TimeFunction>()) {
@@ -127,8 +127,8 @@ template <>
 struct action<g::spline_block> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        SplineBuilder b = std::get<SplineBuilder>(st.blocks.back());
-        st.blocks.pop_back();
+        SplineBuilder b = std::get<SplineBuilder>(st.blocks.top());
+        st.blocks.close();
         if (b.keys.empty()) Interpreter::fail(in.position(), "a spline needs at least one key");
         st.values.push(Value{std::shared_ptr<const runtime::Spline>(
             std::make_shared<runtime::Spline>(b.kind, std::move(b.keys), b.dimensions))});

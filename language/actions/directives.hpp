@@ -20,7 +20,7 @@ struct action<g::declare_directive> {
         if (value.is<std::shared_ptr<Array>>())
             value = Value{std::make_shared<Array>(*value.as<std::shared_ptr<Array>>())};
         if (frame.empty()) {
-            st.declare(name, std::move(value), local);
+            st.symbols.declare(name, std::move(value), local);
         } else {
             st.assign_element(name, frame, std::move(value), in.position());
         }
@@ -31,7 +31,7 @@ template <>
 struct action<g::undef_name> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        st.undefine(word(in));
+        st.symbols.undefine(word(in));
     }
 };
 

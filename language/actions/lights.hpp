@@ -18,7 +18,7 @@ struct action<g::light_arguments> {
         if (args[0].is<runtime::LightRecord>()) {
             if (args.size() > 1)
                 throw ValueError("a declared light_source takes modifiers after it, not a colour");
-            st.blocks.emplace_back(args[0].as<runtime::LightRecord>());
+            st.blocks.open(args[0].as<runtime::LightRecord>());
             return;
         }
         runtime::LightRecord light;
@@ -28,7 +28,7 @@ struct action<g::light_arguments> {
         else
             light.colour.c = {1.0, 1.0, 1.0, 0.0, 0.0};  // POV-Ray's default: white
         (void)in;
-        st.blocks.emplace_back(std::move(light));
+        st.blocks.open(std::move(light));
     }
 };
 template <>
@@ -36,7 +36,7 @@ struct action<g::light_flag> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         const std::string w = word(in);
-        auto& light = st.block<runtime::LightRecord>(in.position(), w.c_str());
+        auto& light = st.blocks.edit<runtime::LightRecord>(in.position(), w.c_str());
         // (POV-Ray's Parse_Light_Source: the kind's keyword sets its
         // defaults, so radius, falloff and tightness come after it.)
         // shadowless is POV-Ray's fill light, a type of its own: it turns
@@ -74,7 +74,7 @@ struct action<g::light_setting> {
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.values.pop();
         const std::string name = st.values.pop_name();
-        auto& light = st.block<runtime::LightRecord>(in.position(), name.c_str());
+        auto& light = st.blocks.edit<runtime::LightRecord>(in.position(), name.c_str());
         const bool shaped = light.kind != runtime::LightKind::Point;
         // (POV-Ray refuses these on a standard light, its Not_With.)
         if (((name == "radius" || name == "falloff" || name == "tightness") && !shaped) ||
@@ -104,7 +104,7 @@ struct action<g::area_light> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         std::vector<Value> given = st.values.close_frame();
-        auto& light = st.block<runtime::LightRecord>(in.position(), "area_light");
+        auto& light = st.blocks.edit<runtime::LightRecord>(in.position(), "area_light");
         runtime::AreaLight area;
         area.axis1 = to_vector3(given.at(0), "area_light's first axis");
         area.axis2 = to_vector3(given.at(1), "area_light's second axis");
@@ -136,12 +136,12 @@ struct action<g::looks_like_base> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         action<g::object_base>::apply(in, st);
-        if (st.blocks.size() < 2 ||
-            !std::holds_alternative<runtime::LightRecord>(st.blocks[st.blocks.size() - 2]) ||
-            !std::holds_alternative<runtime::ObjectRecord>(st.blocks.back()))
+        const Block* around = st.blocks.around_top();
+        if (around == nullptr || !std::holds_alternative<runtime::LightRecord>(*around) ||
+            !std::holds_alternative<runtime::ObjectRecord>(st.blocks.top()))
             throw ValueError("looks_like { } needs an object");
-        const auto& light = std::get<runtime::LightRecord>(st.blocks[st.blocks.size() - 2]);
-        std::get<runtime::ObjectRecord>(st.blocks.back())
+        const auto& light = std::get<runtime::LightRecord>(*around);
+        std::get<runtime::ObjectRecord>(st.blocks.top())
             .transform.append(runtime::TransformStep{
                 runtime::TransformKind::Translate, light.position, {}, {}, false});
     }
@@ -155,7 +155,7 @@ struct action<g::light_looks_like> {
         Value v = st.values.pop();
         if (!v.is<runtime::ObjectPtr>())
             throw ValueError("looks_like { } needs an object, not a " + type_name(v));
-        auto& light = st.block<runtime::LightRecord>(in.position(), "looks_like");
+        auto& light = st.blocks.edit<runtime::LightRecord>(in.position(), "looks_like");
         if (light.looks_like)
             throw ValueError("only one looks_like is allowed per light_source (POV-Ray's rule)");
         light.looks_like = v.as<runtime::ObjectPtr>();

@@ -145,7 +145,7 @@ struct action<g::defined_call> {
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
         // (Declared part of the time: 1 on those pieces, language/time_branch.hpp.)
-        const runtime::Lifetime* when = st.declared_when(st.values.pop_name());
+        const runtime::Lifetime* when = st.symbols.declared_when(st.values.pop_name());
         st.values.push(Value{when ? indicator(*when) : TimeFunction(0.0)});
     }
 };
@@ -288,7 +288,7 @@ struct action<g::reference> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         const std::string name = word(in);
-        const Value* v = st.lookup(name);
+        const Value* v = st.symbols.lookup(name);
         if (v == nullptr) throw ValueError("undeclared identifier '" + name + "'");
         st.check_declared(name);
         if (v->is<Unevaluated>()) {

@@ -15,10 +15,10 @@ template <class Record, class Entry>
 void close_map_entry(Interpreter& st, const p::position& at, const std::string& map,
                      std::vector<Entry> Record::*entries) {
     const std::string what = "a " + map + " entry";
-    auto entry = std::make_shared<Record>(std::move(st.block<Record>(at, what.c_str())));
-    st.blocks.pop_back();
+    auto entry = std::make_shared<Record>(std::move(st.blocks.edit<Record>(at, what.c_str())));
+    st.blocks.close();
     const TimeFunction value = to_float(st.values.pop(), what + "'s value");
-    auto& outer = st.block<Record>(at, what.c_str());
+    auto& outer = st.blocks.edit<Record>(at, what.c_str());
     (outer.*entries).push_back({value, std::move(entry)});
     if ((outer.*entries).size() > 256)
         throw ValueError("a " + map + " has at most 256 entries, as in POV-Ray");
@@ -52,7 +52,7 @@ struct action<g::pigment_list_pigment> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         auto entry = std::make_shared<runtime::Pigment>(st.values.pop().as<runtime::Pigment>());
-        auto& outer = st.block<runtime::Pigment>(in.position(), "a pigment");
+        auto& outer = st.blocks.edit<runtime::Pigment>(in.position(), "a pigment");
         add_to_block_list(outer.pigment_map, outer.patterned,
                           std::shared_ptr<const runtime::Pigment>(std::move(entry)), "pigment");
     }
@@ -61,7 +61,7 @@ template <>
 struct action<g::normal_map_open> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        auto& normal = st.block<runtime::Normal>(in.position(), "normal_map");
+        auto& normal = st.blocks.edit<runtime::Normal>(in.position(), "normal_map");
         check_map_pattern(normal.patterned, "normal_map");
         normal.normal_map.clear();
     }
@@ -71,14 +71,14 @@ struct action<g::normal_map_normal_open> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        st.blocks.emplace_back(std::in_place_type<runtime::Normal>);
+        st.blocks.open(std::in_place_type<runtime::Normal>);
     }
 };
 template <>
 struct action<g::normal_map_entry> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        auto& written = st.block<runtime::Normal>(in.position(), "a normal_map entry");
+        auto& written = st.blocks.edit<runtime::Normal>(in.position(), "a normal_map entry");
         if (written.patterned.kind == nullptr && written.unsupported_name.empty())
             throw ValueError("a normal_map entry needs a pattern (POV-Ray: no normal type given)");
         close_map_entry(st, in.position(), "normal_map", &runtime::Normal::normal_map);
@@ -89,7 +89,7 @@ struct action<g::normal_list_normal> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         auto entry = std::make_shared<runtime::Normal>(st.values.pop().as<runtime::Normal>());
-        auto& outer = st.block<runtime::Normal>(in.position(), "a normal");
+        auto& outer = st.blocks.edit<runtime::Normal>(in.position(), "a normal");
         add_to_block_list(outer.normal_map, outer.patterned,
                           std::shared_ptr<const runtime::Normal>(std::move(entry)), "normal");
     }
@@ -98,7 +98,7 @@ template <>
 struct action<g::slope_map_open> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        auto& normal = st.block<runtime::Normal>(in.position(), "slope_map");
+        auto& normal = st.blocks.edit<runtime::Normal>(in.position(), "slope_map");
         check_map_pattern(normal.patterned, "slope_map");
         normal.slope_map.clear();
     }
@@ -120,7 +120,7 @@ struct action<g::slope_map_entry> {
             throw ValueError("a slope_map entry is [value <height, slope>], not " +
                              std::to_string(items.size()) + " values");
         }
-        auto& normal = st.block<runtime::Normal>(in.position(), "a slope_map entry");
+        auto& normal = st.blocks.edit<runtime::Normal>(in.position(), "a slope_map entry");
         normal.slope_map.push_back(std::move(e));
         if (normal.slope_map.size() > 256)
             throw ValueError("a slope_map has at most 256 entries, as in POV-Ray");
@@ -131,7 +131,7 @@ template <>
 struct action<g::texture_map_open> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        auto& texture = st.block<runtime::Texture>(in.position(), "texture_map");
+        auto& texture = st.blocks.edit<runtime::Texture>(in.position(), "texture_map");
         if (texture.patterned.kind == nullptr)
             throw ValueError(
                 "a texture_map follows its pattern (texture { PATTERN texture_map { } })");
@@ -144,14 +144,14 @@ struct action<g::texture_map_texture_open> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        st.blocks.emplace_back(std::in_place_type<runtime::Texture>);
+        st.blocks.open(std::in_place_type<runtime::Texture>);
     }
 };
 template <>
 struct action<g::texture_map_entry> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        auto& written = st.block<runtime::Texture>(in.position(), "a texture_map entry");
+        auto& written = st.blocks.edit<runtime::Texture>(in.position(), "a texture_map entry");
         check_patterned_texture(written);
         close_map_entry(st, in.position(), "texture_map", &runtime::Texture::texture_map);
     }
@@ -161,7 +161,7 @@ struct action<g::texture_list_texture> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         auto entry = std::make_shared<runtime::Texture>(st.values.pop().as<runtime::Texture>());
-        auto& outer = st.block<runtime::Texture>(in.position(), "a texture");
+        auto& outer = st.blocks.edit<runtime::Texture>(in.position(), "a texture");
         add_to_block_list(outer.texture_map, outer.patterned,
                           std::shared_ptr<const runtime::Texture>(std::move(entry)), "texture");
     }
@@ -171,7 +171,7 @@ template <>
 struct action<g::pigment_map_open> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        auto& pigment = st.block<runtime::Pigment>(in.position(), "pigment_map");
+        auto& pigment = st.blocks.edit<runtime::Pigment>(in.position(), "pigment_map");
         if (pigment.patterned.kind &&
             pigment.patterned.kind->argument == runtime::pattern::Kind::Argument::Colours)
             throw ValueError(std::string("a pigment_map cannot go with ") +
@@ -184,7 +184,7 @@ struct action<g::pigment_map_pigment_open> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        st.blocks.emplace_back(std::in_place_type<runtime::Pigment>);
+        st.blocks.open(std::in_place_type<runtime::Pigment>);
     }
 };
 template <>

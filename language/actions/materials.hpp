@@ -11,8 +11,8 @@ template <>
 struct action<g::image_map_open> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        st.block<runtime::Pigment>(in.position(), "image_map");
-        st.blocks.emplace_back(std::in_place_type<ImageMapBuilder>);
+        st.blocks.edit<runtime::Pigment>(in.position(), "image_map");
+        st.blocks.open(std::in_place_type<ImageMapBuilder>);
     }
 };
 template <>
@@ -34,7 +34,7 @@ struct action<g::image_map_file> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.values.pop();
-        auto& b = st.block<ImageMapBuilder>(in.position(), "image_map's file");
+        auto& b = st.blocks.edit<ImageMapBuilder>(in.position(), "image_map's file");
         const auto read = [&](const std::string& name) {
             const std::filesystem::path path =
                 st.resolve_include(name, in.position(), "image file");
@@ -77,14 +77,14 @@ template <>
 struct action<g::image_map_gamma_srgb> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        st.block<ImageMapBuilder>(in.position(), "gamma").gamma_srgb_next = true;
+        st.blocks.edit<ImageMapBuilder>(in.position(), "gamma").gamma_srgb_next = true;
     }
 };
 template <>
 struct action<g::image_map_gamma> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        auto& b = st.block<ImageMapBuilder>(in.position(), "gamma");
+        auto& b = st.blocks.edit<ImageMapBuilder>(in.position(), "gamma");
         if (b.gamma_srgb_next) {
             b.gamma = ImageGamma{std::nullopt, true};
             b.gamma_srgb_next = false;
@@ -102,7 +102,7 @@ struct action<g::image_map_setting> {
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.values.pop();
         const std::string name = st.values.pop_name();
-        auto& b = st.block<ImageMapBuilder>(in.position(), name.c_str());
+        auto& b = st.blocks.edit<ImageMapBuilder>(in.position(), name.c_str());
         using M = runtime::pattern::ImageMap;
         if (name == "map_type") {
             // (POV-Ray takes the integer part.)
@@ -147,7 +147,7 @@ struct action<g::image_map_flag> {
         std::string flag = in.string();
         while (!flag.empty() && std::isspace(static_cast<unsigned char>(flag.back())))
             flag.pop_back();
-        auto& b = st.block<ImageMapBuilder>(in.position(), flag.c_str());
+        auto& b = st.blocks.edit<ImageMapBuilder>(in.position(), flag.c_str());
         if (flag == "once")
             b.map.once = true;
         else if (flag == "use_index")
@@ -159,7 +159,7 @@ template <>
 struct action<g::image_map_all> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        st.block<ImageMapBuilder>(in.position(), "all").all_next = true;
+        st.blocks.edit<ImageMapBuilder>(in.position(), "all").all_next = true;
     }
 };
 template <>
@@ -168,7 +168,7 @@ struct action<g::image_map_filter> {
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         std::vector<Value> args = st.values.close_frame();
         const std::string name = st.values.pop_name();
-        auto& b = st.block<ImageMapBuilder>(in.position(), name.c_str());
+        auto& b = st.blocks.edit<ImageMapBuilder>(in.position(), name.c_str());
         const bool all = b.all_next;
         b.all_next = false;
         if (!all || args.size() != 1)
@@ -186,8 +186,8 @@ template <>
 struct action<g::image_map_block> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        ImageMapBuilder b = std::move(std::get<ImageMapBuilder>(st.blocks.back()));
-        st.blocks.pop_back();
+        ImageMapBuilder b = std::move(std::get<ImageMapBuilder>(st.blocks.top()));
+        st.blocks.close();
         auto map = std::make_shared<runtime::pattern::ImageMap>(std::move(b.map));
         // (Each distinct file decoded once.)
         std::map<const image::StoredImage*, std::shared_ptr<const runtime::pattern::ImagePixels>>
@@ -199,7 +199,7 @@ struct action<g::image_map_block> {
                     image_pixels(*stored, b.gamma, st.scene.global.assumed_gamma));
             map->images.push_back({time, pixels});
         }
-        auto& pigment = st.block<runtime::Pigment>(in.position(), "image_map");
+        auto& pigment = st.blocks.edit<runtime::Pigment>(in.position(), "image_map");
         replace_uv_mapping(pigment);
         // (The pigment's modifiers, turbulence and warps, place the image.)
         pigment.pattern = runtime::Pigment::Pattern::Image;
@@ -215,7 +215,7 @@ struct action<g::colour_map_open> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        st.blocks.emplace_back(std::in_place_type<runtime::ColourMap>);
+        st.blocks.open(std::in_place_type<runtime::ColourMap>);
     }
 };
 template <>
@@ -225,7 +225,8 @@ struct action<g::colour_map_base> {
         Value v = st.values.pop();
         if (!v.is<runtime::ColourMap>())
             throw ValueError("color_map { } starts with a color_map, not a " + type_name(v));
-        st.block<runtime::ColourMap>(in.position(), "a color_map") = v.as<runtime::ColourMap>();
+        st.blocks.edit<runtime::ColourMap>(in.position(), "a color_map") =
+            v.as<runtime::ColourMap>();
     }
 };
 template <>
@@ -233,7 +234,7 @@ struct action<g::colour_map_entry> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         std::vector<Value> items = st.values.close_frame();
-        auto& map = st.block<runtime::ColourMap>(in.position(), "a color_map entry");
+        auto& map = st.blocks.edit<runtime::ColourMap>(in.position(), "a color_map entry");
         // [value colour], or POV-Ray's older [value1, value2 colour1 colour2].
         if (items.size() == 2) {
             map.entries.push_back({to_float(items[0], "a color_map entry's value"),
@@ -256,10 +257,10 @@ template <>
 struct action<g::colour_map_block> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        auto& map = st.block<runtime::ColourMap>(in.position(), "a color_map");
+        auto& map = st.blocks.edit<runtime::ColourMap>(in.position(), "a color_map");
         if (map.entries.empty()) throw ValueError("a color_map needs at least one entry");
         Value v{std::move(map)};
-        st.blocks.pop_back();
+        st.blocks.close();
         st.values.push(std::move(v));
     }
 };
@@ -268,7 +269,7 @@ struct action<g::pigment_colour_map> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.values.pop();
-        auto& pigment = st.block<runtime::Pigment>(in.position(), "color_map");
+        auto& pigment = st.blocks.edit<runtime::Pigment>(in.position(), "color_map");
         if (pigment.patterned.kind &&
             pigment.patterned.kind->argument == runtime::pattern::Kind::Argument::Colours)
             throw ValueError(std::string("a color_map cannot go with ") +
@@ -281,14 +282,14 @@ template <>
 struct action<g::unsupported_pattern> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        if (!st.blocks.empty() && std::holds_alternative<runtime::Normal>(st.blocks.back())) {
-            auto& normal = st.block<runtime::Normal>(in.position(), "a pattern");
+        if (!st.blocks.empty() && std::holds_alternative<runtime::Normal>(st.blocks.top())) {
+            auto& normal = st.blocks.edit<runtime::Normal>(in.position(), "a pattern");
             normal.unsupported_name = st.values.pop_name();
             normal.unsupported_place = {in.position().source, in.position().line,
                                         in.position().column};
             return;
         }
-        auto& pigment = st.block<runtime::Pigment>(in.position(), "a pattern");
+        auto& pigment = st.blocks.edit<runtime::Pigment>(in.position(), "a pattern");
         pigment.pattern = runtime::Pigment::Pattern::Unsupported;
         pigment.unsupported_name = st.values.pop_name();
         pigment.unsupported_place = {in.position().source, in.position().line,
@@ -300,7 +301,7 @@ struct action<g::pigment_block> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        auto& pigment = std::get<runtime::Pigment>(st.blocks.back());
+        auto& pigment = std::get<runtime::Pigment>(st.blocks.top());
         // A block pattern given fewer pigments than it takes: the rest are
         // its default colours (POV-Ray's Parse_Blend_List).
         const auto* kind = pigment.patterned.kind;
@@ -314,7 +315,7 @@ struct action<g::pigment_block> {
             }
         close_uv_mapping(pigment.uv_mapping);
         Value v{pigment};
-        st.blocks.pop_back();
+        st.blocks.close();
         st.values.push(std::move(v));
     }
 };
@@ -324,7 +325,7 @@ struct action<g::finish_open> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        st.blocks.emplace_back(std::in_place_type<runtime::Finish>);
+        st.blocks.open(std::in_place_type<runtime::Finish>);
     }
 };
 template <>
@@ -334,7 +335,7 @@ struct action<g::finish_base> {
         Value v = st.values.pop();
         if (!v.is<runtime::Finish>())
             throw ValueError("finish { } starts with a finish, not a " + type_name(v));
-        st.block<runtime::Finish>(in.position(), "a finish") = v.as<runtime::Finish>();
+        st.blocks.edit<runtime::Finish>(in.position(), "a finish") = v.as<runtime::Finish>();
     }
 };
 template <>
@@ -343,7 +344,7 @@ struct action<g::finish_setting> {
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.values.pop();
         const std::string name = st.values.pop_name();
-        auto& f = st.block<runtime::Finish>(in.position(), name.c_str());
+        auto& f = st.blocks.edit<runtime::Finish>(in.position(), name.c_str());
         TimeFunction x;
         if (v.is<Vector>()) {
             // A colour amount (ambient rgb <..>): hexant keeps its mean.
@@ -376,7 +377,7 @@ struct action<g::reflection_value> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.values.pop();
-        auto& f = st.block<runtime::Finish>(in.position(), "reflection");
+        auto& f = st.blocks.edit<runtime::Finish>(in.position(), "reflection");
         if (v.is<TimeFunction>()) {
             const TimeFunction x = v.as<TimeFunction>();
             f.reflection = runtime::ColourFunction{{x, x, x, 0.0, 0.0}};
@@ -399,8 +400,8 @@ struct action<g::finish_block> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        Value v{std::get<runtime::Finish>(st.blocks.back())};
-        st.blocks.pop_back();
+        Value v{std::get<runtime::Finish>(st.blocks.top())};
+        st.blocks.close();
         st.values.push(std::move(v));
     }
 };
@@ -410,7 +411,7 @@ struct action<g::interior_open> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        st.blocks.emplace_back(std::in_place_type<runtime::Interior>);
+        st.blocks.open(std::in_place_type<runtime::Interior>);
     }
 };
 template <>
@@ -420,14 +421,15 @@ struct action<g::interior_base> {
         Value v = st.values.pop();
         if (!v.is<runtime::Interior>())
             throw ValueError("interior { } starts with an interior, not a " + type_name(v));
-        st.block<runtime::Interior>(in.position(), "an interior") = v.as<runtime::Interior>();
+        st.blocks.edit<runtime::Interior>(in.position(), "an interior") = v.as<runtime::Interior>();
     }
 };
 template <>
 struct action<g::ior_setting> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        st.block<runtime::Interior>(in.position(), "ior").ior = to_float(st.values.pop(), "ior");
+        st.blocks.edit<runtime::Interior>(in.position(), "ior").ior =
+            to_float(st.values.pop(), "ior");
     }
 };
 template <>
@@ -435,8 +437,8 @@ struct action<g::interior_block> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        Value v{std::get<runtime::Interior>(st.blocks.back())};
-        st.blocks.pop_back();
+        Value v{std::get<runtime::Interior>(st.blocks.top())};
+        st.blocks.close();
         st.values.push(std::move(v));
     }
 };
@@ -448,7 +450,7 @@ struct action<g::uv_mapping> {
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         if (st.blocks.empty())
             throw ValueError("uv_mapping belongs in a pigment, a normal or a texture");
-        auto& b = st.blocks.back();
+        auto& b = st.blocks.top();
         // (What follows is a pigment or normal of its own, POV-Ray's
         // Parse_Item_Into_Blend_List from the default: nothing written
         // before in this block, or in one it modifies, carries over.)
@@ -470,7 +472,7 @@ struct action<g::texture_open> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        st.blocks.emplace_back(std::in_place_type<runtime::Texture>);
+        st.blocks.open(std::in_place_type<runtime::Texture>);
     }
 };
 template <>
@@ -478,7 +480,7 @@ struct action<g::texture_base> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.values.pop();
-        auto& t = st.block<runtime::Texture>(in.position(), "a texture");
+        auto& t = st.blocks.edit<runtime::Texture>(in.position(), "a texture");
         if (v.is<runtime::Texture>())
             t = v.as<runtime::Texture>();
         else if (v.is<runtime::Pigment>())
@@ -492,7 +494,8 @@ struct action<g::texture_pigment> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.values.pop();
-        st.block<runtime::Texture>(in.position(), "pigment").pigment = v.as<runtime::Pigment>();
+        st.blocks.edit<runtime::Texture>(in.position(), "pigment").pigment =
+            v.as<runtime::Pigment>();
     }
 };
 template <>
@@ -500,7 +503,7 @@ struct action<g::texture_finish> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.values.pop();
-        st.block<runtime::Texture>(in.position(), "finish").finish = v.as<runtime::Finish>();
+        st.blocks.edit<runtime::Texture>(in.position(), "finish").finish = v.as<runtime::Finish>();
     }
 };
 template <>
@@ -508,10 +511,10 @@ struct action<g::texture_block> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        check_patterned_texture(std::get<runtime::Texture>(st.blocks.back()));
-        close_uv_mapping(std::get<runtime::Texture>(st.blocks.back()).uv_mapping);
-        Value v{std::get<runtime::Texture>(st.blocks.back())};
-        st.blocks.pop_back();
+        check_patterned_texture(std::get<runtime::Texture>(st.blocks.top()));
+        close_uv_mapping(std::get<runtime::Texture>(st.blocks.top()).uv_mapping);
+        Value v{std::get<runtime::Texture>(st.blocks.top())};
+        st.blocks.close();
         st.values.push(std::move(v));
     }
 };
@@ -530,7 +533,7 @@ template <>
 struct action<g::material_value> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        st.blocks.pop_back();
+        st.blocks.close();
         st.values.push(Value{Unevaluated{"material", in.position()}});
     }
 };
@@ -539,7 +542,7 @@ struct action<g::material_open> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        st.blocks.emplace_back(std::in_place_type<MaterialBuilder>);
+        st.blocks.open(std::in_place_type<MaterialBuilder>);
     }
 };
 template <>
@@ -556,7 +559,7 @@ struct action<g::material_texture> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.values.pop();
-        auto& material = st.block<MaterialBuilder>(in.position(), "texture");
+        auto& material = st.blocks.edit<MaterialBuilder>(in.position(), "texture");
         auto texture = v.as<runtime::Texture>();
         material.texture = material.texture
                                ? layered(std::move(texture), std::move(*material.texture))
@@ -568,7 +571,8 @@ struct action<g::material_interior> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.values.pop();
-        st.block<MaterialBuilder>(in.position(), "interior").interior = v.as<runtime::Interior>();
+        st.blocks.edit<MaterialBuilder>(in.position(), "interior").interior =
+            v.as<runtime::Interior>();
     }
 };
 

@@ -10,7 +10,7 @@ namespace hexant::language {
 
 // The mesh being read: the object on top of the block stack.
 inline runtime::objects::MeshData& mesh_data(Interpreter& st, const p::position& where) {
-    auto& record = st.block<runtime::ObjectRecord>(where, "a mesh's part");
+    auto& record = st.blocks.edit<runtime::ObjectRecord>(where, "a mesh's part");
     auto* mesh = std::get_if<runtime::Mesh>(&record.shape);
     if (!mesh) throw ValueError("this belongs in a mesh or mesh2");
     return *mesh->data;
@@ -21,7 +21,7 @@ struct open_mesh {
         runtime::ObjectRecord record;
         record.shape = runtime::Mesh{};
         record.place = source_place(in);
-        st.blocks.emplace_back(std::move(record));
+        st.blocks.open(std::move(record));
     }
 };
 template <>
@@ -112,7 +112,7 @@ struct action<g::blob_open> {
         runtime::ObjectRecord record;
         record.shape = runtime::Blob{};
         record.place = source_place(in);
-        st.blocks.emplace_back(std::move(record));
+        st.blocks.open(std::move(record));
     }
 };
 template <>
@@ -137,7 +137,7 @@ struct action<g::blob_component> {
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         std::vector<Value> values = st.values.close_frame();
         const std::string kind = st.values.pop_name();
-        auto& record = st.block<runtime::ObjectRecord>(in.position(), "a blob component");
+        auto& record = st.blocks.edit<runtime::ObjectRecord>(in.position(), "a blob component");
         add_blob_component(record, kind, values, st, in.position());
     }
 };
@@ -146,7 +146,7 @@ struct action<g::blob_old_component> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         std::vector<Value> values = st.values.close_frame();
-        auto& record = st.block<runtime::ObjectRecord>(in.position(), "a blob component");
+        auto& record = st.blocks.edit<runtime::ObjectRecord>(in.position(), "a blob component");
         add_blob_component(record, "component", values, st, in.position());
     }
 };
@@ -155,7 +155,7 @@ struct action<g::blob_block> : finish_object {};
 
 // The texture an object modifier changes, made if the object has none.
 inline runtime::Texture& object_texture(Interpreter& st, const p::position& where) {
-    auto& record = st.block<runtime::ObjectRecord>(where, "a texture");
+    auto& record = st.blocks.edit<runtime::ObjectRecord>(where, "a texture");
     if (!record.texture) record.texture = runtime::Texture{};
     if (record.texture->is_patterned())
         throw ValueError(
@@ -170,7 +170,7 @@ struct action<g::object_texture> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.values.pop();
-        auto& record = st.block<runtime::ObjectRecord>(in.position(), "a texture");
+        auto& record = st.blocks.edit<runtime::ObjectRecord>(in.position(), "a texture");
         auto texture = v.as<runtime::Texture>();
         // A texture on an object that has one is a layer on top, as in POV-Ray.
         record.texture = record.texture ? layered(std::move(texture), std::move(*record.texture))
@@ -206,7 +206,7 @@ struct action<g::object_interior> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.values.pop();
-        st.block<runtime::ObjectRecord>(in.position(), "interior").interior =
+        st.blocks.edit<runtime::ObjectRecord>(in.position(), "interior").interior =
             v.as<runtime::Interior>();
     }
 };
@@ -214,9 +214,9 @@ template <>
 struct action<g::object_material> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        MaterialBuilder m = std::get<MaterialBuilder>(st.blocks.back());
-        st.blocks.pop_back();
-        auto& record = st.block<runtime::ObjectRecord>(in.position(), "material");
+        MaterialBuilder m = std::get<MaterialBuilder>(st.blocks.top());
+        st.blocks.close();
+        auto& record = st.blocks.edit<runtime::ObjectRecord>(in.position(), "material");
         if (m.texture) record.texture = m.texture;
         if (m.interior) record.interior = m.interior;
     }
@@ -228,9 +228,9 @@ struct action<g::object_flag> {
         std::vector<Value> given = st.values.close_frame();
         const std::string name = st.values.pop_name();
         const bool on = given.empty() || runtime::pov_true(to_constant(given[0], name));
-        if (!st.blocks.empty() && std::holds_alternative<runtime::LightRecord>(st.blocks.back()))
+        if (!st.blocks.empty() && std::holds_alternative<runtime::LightRecord>(st.blocks.top()))
             throw ValueError("'" + name + "' does not belong in a light_source");
-        auto& record = st.block<runtime::ObjectRecord>(in.position(), name.c_str());
+        auto& record = st.blocks.edit<runtime::ObjectRecord>(in.position(), name.c_str());
         if (name == "no_shadow")
             record.no_shadow = on;
         else if (name == "hollow")
@@ -247,9 +247,9 @@ struct action<g::shape_setting> {
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         std::vector<Value> given = st.values.close_frame();
         const std::string name = st.values.pop_name();
-        if (!st.blocks.empty() && std::holds_alternative<runtime::LightRecord>(st.blocks.back()))
+        if (!st.blocks.empty() && std::holds_alternative<runtime::LightRecord>(st.blocks.top()))
             throw ValueError("'" + name + "' does not belong in a light_source");
-        auto& record = st.block<runtime::ObjectRecord>(in.position(), name.c_str());
+        auto& record = st.blocks.edit<runtime::ObjectRecord>(in.position(), name.c_str());
         set_shape_setting(record, name, given, st, in.position());
     }
 };

@@ -31,7 +31,7 @@ struct action<g::shape_arguments> {
         st.shapes_open.pop_back();
         runtime::ObjectRecord record = make_shape(shape, args, st, in.position());
         record.place = shape.place;
-        st.blocks.emplace_back(std::move(record));
+        st.blocks.open(std::move(record));
     }
 };
 
@@ -39,8 +39,8 @@ struct action<g::shape_arguments> {
 struct finish_object {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Block b = std::move(st.blocks.back());
-        st.blocks.pop_back();
+        Block b = std::move(st.blocks.top());
+        st.blocks.close();
         // Made under clock-dependent branches: it exists while they hold.
         if (auto* light = std::get_if<runtime::LightRecord>(&b)) {
             light->lifetime = light->lifetime.intersect(st.domain);
@@ -97,7 +97,7 @@ struct action<g::csg_open> {
         runtime::ObjectRecord record;
         record.shape = std::move(csg);
         record.place = source_place(in);
-        st.blocks.emplace_back(std::move(record));
+        st.blocks.open(std::move(record));
     }
 };
 template <>
@@ -105,7 +105,7 @@ struct action<g::csg_child> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.values.pop();
-        auto& record = st.member_block(in.position());
+        auto& record = st.blocks.join(in.position());
         if (v.is<runtime::LightRecord>()) {
             record.lights.push_back(v.as<runtime::LightRecord>());
             return;
@@ -122,9 +122,9 @@ struct action<g::object_base> {
         Value v = st.values.pop();
         if (v.is<runtime::ObjectPtr>()) {
             runtime::ObjectRecord copy = *v.as<runtime::ObjectPtr>();
-            st.blocks.emplace_back(std::move(copy));
+            st.blocks.open(std::move(copy));
         } else if (v.is<runtime::LightRecord>()) {
-            st.blocks.emplace_back(v.as<runtime::LightRecord>());
+            st.blocks.open(v.as<runtime::LightRecord>());
         } else if (v.is<Unevaluated>()) {
             const auto& u = v.as<Unevaluated>();
             throw UnsupportedError("this " + u.what + " (written at " + u.where.source + ":" +

@@ -13,8 +13,8 @@ namespace hexant::language {
 // has), it does not start over.
 inline const runtime::Texture* texture_being_written(const Interpreter& st) {
     if (st.blocks.empty()) return nullptr;
-    if (const auto* t = std::get_if<runtime::Texture>(&st.blocks.back())) return t;
-    if (const auto* o = std::get_if<runtime::ObjectRecord>(&st.blocks.back()))
+    if (const auto* t = std::get_if<runtime::Texture>(&st.blocks.top())) return t;
+    if (const auto* o = std::get_if<runtime::ObjectRecord>(&st.blocks.top()))
         return o->texture ? &*o->texture : nullptr;
     return nullptr;
 }
@@ -26,7 +26,7 @@ struct action<g::pigment_open> {
         (void)in;
         const runtime::Texture* texture = texture_being_written(st);
         runtime::Pigment start = texture ? texture->pigment : runtime::Pigment();
-        st.blocks.emplace_back(std::move(start));
+        st.blocks.open(std::move(start));
     }
 };
 template <>
@@ -34,7 +34,7 @@ struct action<g::pigment_base> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.values.pop();
-        auto& pigment = st.block<runtime::Pigment>(in.position(), "a pigment");
+        auto& pigment = st.blocks.edit<runtime::Pigment>(in.position(), "a pigment");
         if (v.is<runtime::Pigment>()) {
             pigment = v.as<runtime::Pigment>();
         } else {
@@ -72,9 +72,9 @@ void replace_uv_mapping(Record& r) {
 inline PatternSlot pattern_slot(Interpreter& st, const p::position& at, const char* what,
                                 bool starts = false) {
     if (!st.blocks.empty()) {
-        if (auto* n = std::get_if<runtime::Normal>(&st.blocks.back()))
+        if (auto* n = std::get_if<runtime::Normal>(&st.blocks.top()))
             return {n->patterned, n->transform, nullptr, n};
-        if (auto* t = std::get_if<runtime::Texture>(&st.blocks.back())) {
+        if (auto* t = std::get_if<runtime::Texture>(&st.blocks.top())) {
             if (t->patterned.kind == nullptr && !starts)
                 throw ValueError(
                     std::string(what) +
@@ -82,7 +82,7 @@ inline PatternSlot pattern_slot(Interpreter& st, const p::position& at, const ch
             return {t->patterned, t->transform, nullptr, nullptr, t};
         }
     }
-    auto& pigment = st.block<runtime::Pigment>(at, what);
+    auto& pigment = st.blocks.edit<runtime::Pigment>(at, what);
     return {pigment.patterned, pigment.transform, &pigment};
 }
 
@@ -310,9 +310,9 @@ struct action<g::normal_open> {
         if (const runtime::Texture* texture = texture_being_written(st))
             start = texture->normal;
         else if (!st.blocks.empty())
-            if (const auto* camera = std::get_if<runtime::CameraRecord>(&st.blocks.back()))
+            if (const auto* camera = std::get_if<runtime::CameraRecord>(&st.blocks.top()))
                 start = camera->normal;
-        st.blocks.emplace_back(start ? std::move(*start) : runtime::Normal());
+        st.blocks.open(start ? std::move(*start) : runtime::Normal());
     }
 };
 template <>
@@ -322,7 +322,7 @@ struct action<g::normal_base> {
         Value v = st.values.pop();
         if (!v.is<runtime::Normal>())
             throw ValueError("normal { } starts with a normal, not a " + type_name(v));
-        st.block<runtime::Normal>(in.position(), "a normal") = v.as<runtime::Normal>();
+        st.blocks.edit<runtime::Normal>(in.position(), "a normal") = v.as<runtime::Normal>();
     }
 };
 template <>
@@ -331,7 +331,7 @@ struct action<g::normal_setting> {
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.values.pop();
         const std::string name = st.values.pop_name();
-        auto& normal = st.block<runtime::Normal>(in.position(), name.c_str());
+        auto& normal = st.blocks.edit<runtime::Normal>(in.position(), name.c_str());
         if (name == "bump_size")
             normal.amount = to_float(v, "bump_size");
         else
@@ -342,19 +342,19 @@ template <>
 struct action<g::normal_no_bump_scale> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        st.block<runtime::Normal>(in.position(), "no_bump_scale").no_bump_scale = true;
+        st.blocks.edit<runtime::Normal>(in.position(), "no_bump_scale").no_bump_scale = true;
     }
 };
 template <>
 struct action<g::normal_block> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        auto& normal = st.block<runtime::Normal>(in.position(), "a normal");
+        auto& normal = st.blocks.edit<runtime::Normal>(in.position(), "a normal");
         if (normal.patterned.kind == nullptr && normal.unsupported_name.empty())
             throw ValueError("a normal needs a pattern (POV-Ray: no normal type given)");
         close_uv_mapping(normal.uv_mapping);
         Value v{std::move(normal)};
-        st.blocks.pop_back();
+        st.blocks.close();
         st.values.push(std::move(v));
     }
 };
@@ -363,7 +363,7 @@ struct action<g::texture_normal> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.values.pop();
-        st.block<runtime::Texture>(in.position(), "normal").normal = v.as<runtime::Normal>();
+        st.blocks.edit<runtime::Texture>(in.position(), "normal").normal = v.as<runtime::Normal>();
     }
 };
 template <>
@@ -375,7 +375,8 @@ struct action<g::camera_normal> {
         // (POV-Ray: "The 'uv_mapping' pattern cannot be used" without a surface.)
         if (v.as<runtime::Normal>().uv_mapping != runtime::UvMapping::Off)
             throw ValueError("uv_mapping needs a surface's (u, v): not in the camera's normal");
-        st.block<runtime::CameraRecord>(in.position(), "normal").normal = v.as<runtime::Normal>();
+        st.blocks.edit<runtime::CameraRecord>(in.position(), "normal").normal =
+            v.as<runtime::Normal>();
     }
 };
 

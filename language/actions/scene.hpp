@@ -13,7 +13,7 @@ struct action<g::camera_open> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        st.blocks.emplace_back(std::in_place_type<runtime::CameraRecord>);
+        st.blocks.open(std::in_place_type<runtime::CameraRecord>);
     }
 };
 template <>
@@ -23,7 +23,8 @@ struct action<g::camera_base> {
         Value v = st.values.pop();
         if (!v.is<runtime::CameraRecord>())
             throw ValueError("camera { } starts with a camera, not a " + type_name(v));
-        st.block<runtime::CameraRecord>(in.position(), "a camera") = v.as<runtime::CameraRecord>();
+        st.blocks.edit<runtime::CameraRecord>(in.position(), "a camera") =
+            v.as<runtime::CameraRecord>();
     }
 };
 template <>
@@ -32,7 +33,7 @@ struct action<g::camera_setting> {
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.values.pop();
         const std::string name = st.values.pop_name();
-        auto& camera = st.block<runtime::CameraRecord>(in.position(), name.c_str());
+        auto& camera = st.blocks.edit<runtime::CameraRecord>(in.position(), name.c_str());
         runtime::CameraItem item;
         using K = runtime::CameraItem::Kind;
         item.kind = name == "location"    ? K::Location
@@ -61,7 +62,7 @@ struct action<g::camera_type> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         const std::string name = word(in);
-        auto& camera = st.block<runtime::CameraRecord>(in.position(), name.c_str());
+        auto& camera = st.blocks.edit<runtime::CameraRecord>(in.position(), name.c_str());
         // POV-Ray reads the type before any other item (the last of several
         // types in a row wins), and not at all after a camera identifier
         // (then only transforms may follow).
@@ -88,7 +89,7 @@ struct action<g::camera_angle> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         std::vector<Value> given = st.values.close_frame();
-        auto& camera = st.block<runtime::CameraRecord>(in.position(), "angle");
+        auto& camera = st.blocks.edit<runtime::CameraRecord>(in.position(), "angle");
         using T = runtime::CameraType;
         T type = T::Perspective;
         for (const auto& item : camera.items)
@@ -134,7 +135,7 @@ struct action<g::camera_blur_setting> {
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         std::vector<Value> given = st.values.close_frame();
         const std::string name = st.values.pop_name();
-        auto& camera = st.block<runtime::CameraRecord>(in.position(), name.c_str());
+        auto& camera = st.blocks.edit<runtime::CameraRecord>(in.position(), name.c_str());
         runtime::CameraItem item;
         using K = runtime::CameraItem::Kind;
         if (given.size() > 1 && name != "blur_samples") throw ValueError(name + " takes one value");
@@ -179,8 +180,8 @@ struct action<g::camera_block> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        Value v{std::get<runtime::CameraRecord>(st.blocks.back())};
-        st.blocks.pop_back();
+        Value v{std::get<runtime::CameraRecord>(st.blocks.top())};
+        st.blocks.close();
         st.values.push(std::move(v));
     }
 };
@@ -209,7 +210,7 @@ struct action<g::sky_sphere_open> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        st.blocks.emplace_back(std::in_place_type<runtime::SkySphere>);
+        st.blocks.open(std::in_place_type<runtime::SkySphere>);
     }
 };
 template <>
@@ -219,7 +220,8 @@ struct action<g::sky_sphere_base> {
         Value v = st.values.pop();
         if (!v.is<runtime::SkySphere>())
             throw ValueError("sky_sphere { } starts with a sky_sphere, not a " + type_name(v));
-        st.block<runtime::SkySphere>(in.position(), "a sky_sphere") = v.as<runtime::SkySphere>();
+        st.blocks.edit<runtime::SkySphere>(in.position(), "a sky_sphere") =
+            v.as<runtime::SkySphere>();
     }
 };
 template <>
@@ -230,7 +232,7 @@ struct action<g::sky_sphere_pigment> {
         // (POV-Ray: "The 'uv_mapping' pattern cannot be used" without a surface.)
         if (v.as<runtime::Pigment>().uv_mapping != runtime::UvMapping::Off)
             throw ValueError("uv_mapping needs a surface's (u, v): not in a sky_sphere");
-        st.block<runtime::SkySphere>(in.position(), "a pigment")
+        st.blocks.edit<runtime::SkySphere>(in.position(), "a pigment")
             .pigments.push_back(v.as<runtime::Pigment>());
     }
 };
@@ -239,18 +241,19 @@ struct action<g::sky_sphere_emission> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.values.pop();
-        st.block<runtime::SkySphere>(in.position(), "emission").emission = to_colour(v, "emission");
+        st.blocks.edit<runtime::SkySphere>(in.position(), "emission").emission =
+            to_colour(v, "emission");
     }
 };
 template <>
 struct action<g::sky_sphere_block> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        auto& sky = st.block<runtime::SkySphere>(in.position(), "a sky_sphere");
+        auto& sky = st.blocks.edit<runtime::SkySphere>(in.position(), "a sky_sphere");
         if (sky.pigments.empty())
             throw ValueError("a sky_sphere needs a pigment (POV-Ray: empty sky_sphere statement)");
         Value v{std::move(sky)};
-        st.blocks.pop_back();
+        st.blocks.close();
         st.values.push(std::move(v));
     }
 };
@@ -270,7 +273,7 @@ struct action<g::fog_open> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         st.require_whole_time(in.position(), "a fog");
-        st.blocks.emplace_back(std::in_place_type<runtime::Fog>);
+        st.blocks.open(std::in_place_type<runtime::Fog>);
     }
 };
 template <>
@@ -279,7 +282,7 @@ struct action<g::fog_setting> {
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.values.pop();
         const std::string name = st.values.pop_name();
-        auto& fog = st.block<runtime::Fog>(in.position(), name.c_str());
+        auto& fog = st.blocks.edit<runtime::Fog>(in.position(), name.c_str());
         const auto turbulence = [&]() -> runtime::pattern::Turbulence& {
             if (!fog.turbulence) fog.turbulence.emplace();
             return *fog.turbulence;
@@ -312,7 +315,7 @@ struct action<g::fog_colour> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.values.pop();
-        auto& fog = st.block<runtime::Fog>(in.position(), "a fog's colour");
+        auto& fog = st.blocks.edit<runtime::Fog>(in.position(), "a fog's colour");
         // A bare number is the distance, as POV-Ray reads it (with its
         // warning to write `distance`).
         if (v.is<TimeFunction>()) {
@@ -329,8 +332,8 @@ struct action<g::fog_block> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        st.scene.fogs.push_back(std::move(std::get<runtime::Fog>(st.blocks.back())));
-        st.blocks.pop_back();
+        st.scene.fogs.push_back(std::move(std::get<runtime::Fog>(st.blocks.top())));
+        st.blocks.close();
     }
 };
 

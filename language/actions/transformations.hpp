@@ -80,7 +80,7 @@ struct action<g::transform_open> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        st.blocks.emplace_back(std::in_place_type<runtime::Transform>);
+        st.blocks.open(std::in_place_type<runtime::Transform>);
     }
 };
 template <>
@@ -90,14 +90,15 @@ struct action<g::transform_base> {
         Value v = st.values.pop();
         if (!v.is<runtime::Transform>())
             throw ValueError("transform { } starts with a transform, not a " + type_name(v));
-        st.block<runtime::Transform>(in.position(), "a transform") = v.as<runtime::Transform>();
+        st.blocks.edit<runtime::Transform>(in.position(), "a transform") =
+            v.as<runtime::Transform>();
     }
 };
 template <>
 struct action<g::transform_inverse> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        auto& t = st.block<runtime::Transform>(in.position(), "inverse");
+        auto& t = st.blocks.edit<runtime::Transform>(in.position(), "inverse");
         t = t.inverse();
     }
 };
@@ -106,8 +107,8 @@ struct action<g::transform_block> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        Value v{std::get<runtime::Transform>(st.blocks.back())};
-        st.blocks.pop_back();
+        Value v{std::get<runtime::Transform>(st.blocks.top())};
+        st.blocks.close();
         st.values.push(std::move(v));
     }
 };

@@ -99,7 +99,7 @@ void Interpreter::split_time(ParseInput& in, const p::position& at, const TimeFu
                              const runtime::TruthPieces& pieces, Read read) {
     // Each split re-reads its text once a side and nests the next inside
     // it: bounded like macro calls (a chain of #elseif each on clock).
-    if (branch_logs_.size() >= static_cast<std::size_t>(options.limits.macro_depth))
+    if (symbols.sides_open() >= static_cast<std::size_t>(options.limits.macro_depth))
         fail(at, "clock-dependent branches nested more than " +
                      std::to_string(options.limits.macro_depth) +
                      " deep (--max-macro-depth N raises the limit)");
@@ -112,38 +112,31 @@ void Interpreter::split_time(ParseInput& in, const p::position& at, const TimeFu
     const runtime::CameraRecord camera_before = scene.camera;
     const runtime::ColourFunction background_before = scene.background;
     const std::size_t camera_count = camera_sets, background_count = background_sets;
-    const std::size_t block_count = blocks.size();
+    const std::size_t block_count = blocks.depth();
     std::optional<runtime::ObjectRecord> top_before;
     if (!blocks.empty()) {
-        if (!std::holds_alternative<runtime::ObjectRecord>(blocks.back()))
+        if (!std::holds_alternative<runtime::ObjectRecord>(blocks.top()))
             fail(at,
                  "a branch whose condition depends on clock inside this block; hexant makes "
                  "objects, their CSG members, floats and vectors piecewise in time, not yet "
                  "what this block holds");
-        top_before = std::get<runtime::ObjectRecord>(blocks.back());
+        top_before = std::get<runtime::ObjectRecord>(blocks.top());
     }
     std::optional<TimeSide> sides[2];  // [0]: where c holds
     auto end = start;
     const auto restore = [&] {
-        BranchLog log = std::move(branch_logs_.back());
-        branch_logs_.pop_back();
         TimeSide side;
-        restoring_ = true;
-        for (auto& [key, before] : log.before) {
-            side.after[key] = variable_at(key);
-            set_variable_at(key, before);
-        }
-        restoring_ = false;
+        side.after = symbols.end_side();
         if (camera_sets != camera_count) side.camera = std::exchange(scene.camera, camera_before);
         if (background_sets != background_count)
             side.background = std::exchange(scene.background, background_before);
         camera_sets = camera_count;
         background_sets = background_count;
-        const bool balanced = values.depth() >= stack_base && blocks.size() == block_count;
+        const bool balanced = values.depth() >= stack_base && blocks.depth() == block_count;
         side.pushed = values.take_above(stack_base);
-        if (blocks.size() == block_count && top_before) {
-            side.top = std::move(std::get<runtime::ObjectRecord>(blocks.back()));
-            blocks.back() = *top_before;
+        if (blocks.depth() == block_count && top_before) {
+            side.top = std::move(std::get<runtime::ObjectRecord>(blocks.top()));
+            blocks.top() = *top_before;
         }
         return std::pair{std::move(side), balanced};
     };
@@ -154,10 +147,8 @@ void Interpreter::split_time(ParseInput& in, const p::position& at, const TimeFu
         // (A condition true, or false, over all of the domain: no split.)
         const bool whole = (side == 0 ? pieces.when_false : pieces.when_true).is_never();
         domain = whole ? outer : when;
-        branch_logs_.push_back({scopes_.size(), {}});
-        const std::size_t watched = watched_block_, edits = watched_edits_;
-        watched_block_ = top_before ? block_count : 0;
-        watched_edits_ = 0;
+        symbols.begin_side();
+        const BlockStack::Watch watch = blocks.watch(top_before ? block_count : 0);
         try {
             read(side == 0);
         } catch (const p::parse_error& e) {
@@ -168,8 +159,7 @@ void Interpreter::split_time(ParseInput& in, const p::position& at, const TimeFu
                  << when.pieces().front().lo << ", on a side of the branch on clock at line "
                  << at.line << ")";
             domain = outer;
-            watched_block_ = watched;
-            watched_edits_ = edits;
+            blocks.abandon_watch(watch);
             (void)restore();
             if (e.message().find(" (at clock ") != std::string_view::npos)
                 throw;  // said once, innermost
@@ -179,14 +169,11 @@ void Interpreter::split_time(ParseInput& in, const p::position& at, const TimeFu
             throw amended;
         } catch (...) {
             domain = outer;
-            watched_block_ = watched;
-            watched_edits_ = edits;
+            blocks.abandon_watch(watch);
             (void)restore();
             throw;
         }
-        const bool edited = watched_edits_ > 0;
-        watched_block_ = watched;
-        watched_edits_ = edits + (edited ? 1 : 0);
+        const bool edited = blocks.end_watch(watch);
         auto [done, balanced] = restore();
         done.top_edited = edited;
         if (!balanced) {
@@ -223,7 +210,7 @@ bool Interpreter::run_ifdef(ParseInput& in) {
             d = taken ? skip_body<Control>(in) : run_body<Item, Action, Control>(in);
         if (d != Divider::End) unclosed(opened, name, d, in);
     };
-    const runtime::Lifetime* when = declared_when(id);
+    const runtime::Lifetime* when = symbols.declared_when(id);
     if (when == nullptr || when->is_always()) {
         rest((when != nullptr) != negate);
         return true;

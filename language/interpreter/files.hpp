@@ -12,7 +12,7 @@ template <typename Item, template <typename...> class Action, template <typename
 bool Interpreter::declare_value(ParseInput& in) {
     const auto start = in.iterator();
     const ValueStack::Mark mark = values.mark();
-    const std::size_t block_count = blocks.size();
+    const std::size_t block_count = blocks.depth();
     try {
         return p::match<grammar::value, p::apply_mode::action, p::rewind_mode::required, Action,
                         Control>(in, *this);
@@ -20,7 +20,7 @@ bool Interpreter::declare_value(ParseInput& in) {
         // Keep the declaration as source: an error only where it is used.
         in.iterator() = start;
         values.rewind(mark);
-        blocks.erase(blocks.begin() + static_cast<std::ptrdiff_t>(block_count), blocks.end());
+        blocks.rewind(block_count);
         const auto where = in.position();
         (void)p::match<grammar::skip::declaration, p::apply_mode::nothing, p::rewind_mode::dontcare,
                        p::nothing, Control>(in, *this);
@@ -99,14 +99,14 @@ void Interpreter::include_file(const p::position& opened, const std::string& fil
     const std::filesystem::path path = resolve_include(file, opened);
     const std::string text = read_include(path, opened);
     ++include_depth_;
-    scopes_.emplace_back();
+    symbols.open_scope();
     try {
         read_file<Item, Action, Control>(path.string(), text);
     } catch (SceneError& scene_error) {
         scene_error.add_context(place(opened, "included from here"));
         throw;
     }
-    scopes_.pop_back();
+    symbols.close_scope();
     --include_depth_;
 }
 

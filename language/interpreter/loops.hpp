@@ -97,7 +97,7 @@ void Interpreter::for_from(ParseInput& in, const p::position& opened, const Iter
                 : TimeFunction::apply(runtime::TimeOp::GreaterEqual, v, to - runtime::kPovEpsilon);
         const auto turn = [&](bool on) {
             // As in POV-Ray, the variable is left one step past the end.
-            declare(variable, Value{TimeFunction(v)}, true);
+            symbols.declare(variable, Value{TimeFunction(v)}, true);
             if (!on) {
                 if (count == 0) {
                     const Divider d = skip_body<Control>(in);

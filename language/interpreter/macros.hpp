@@ -33,7 +33,7 @@ bool Interpreter::define_macro(ParseInput& in) {
     if (d != Divider::End) unclosed(opened, "#macro", d, in);
     auto macro = std::make_shared<Macro>(
         Macro{std::move(name), std::move(parameters), body_begin, body_end, body_position, opened});
-    declare(macro->name, Value{std::shared_ptr<const Macro>(macro)}, false);
+    symbols.declare(macro->name, Value{std::shared_ptr<const Macro>(macro)}, false);
     return true;
 }
 
@@ -46,7 +46,7 @@ bool Interpreter::call_macro(ParseInput& in) {
     while (q != end && (std::isalnum(static_cast<unsigned char>(*q)) || *q == '_')) ++q;
     if (q == b || std::isdigit(static_cast<unsigned char>(*b))) return false;
     const std::string name(b, q);
-    const Value* v = lookup(name);
+    const Value* v = symbols.lookup(name);
     if (v == nullptr || !v->is<std::shared_ptr<const Macro>>()) return false;
     const auto macro = v->as<std::shared_ptr<const Macro>>();
     const auto call_place = in.position();
@@ -70,7 +70,7 @@ bool Interpreter::call_macro(ParseInput& in) {
                                  std::all_of(text.begin(), text.end(), [](char c) {
                                      return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
                                  });
-            references.push_back(is_name && lookup(text) ? text : std::string());
+            references.push_back(is_name && symbols.lookup(text) ? text : std::string());
         } while (p::match<grammar::comma, p::apply_mode::nothing, p::rewind_mode::required,
                           p::nothing, p::normal>(in));
     }
@@ -87,12 +87,12 @@ bool Interpreter::call_macro(ParseInput& in) {
                              "limit)");
     count_step(call_place);
     count_text(static_cast<std::size_t>(macro->body_end - macro->body_begin), call_place);
-    scopes_.emplace_back();
+    symbols.open_scope();
     try {
         for (std::size_t i = 0; i < args.size(); ++i)
-            set_variable(scopes_.back(), macro->parameters[i], std::move(args[i]));
+            symbols.declare(macro->parameters[i], std::move(args[i]), true);
     } catch (const ValueError& e) {
-        scopes_.pop_back();
+        symbols.close_scope();
         fail(call_place, e.what());
     }
     ++macro_depth_;
@@ -106,7 +106,7 @@ bool Interpreter::call_macro(ParseInput& in) {
     } catch (const unsupported_use&) {
         // A #declare around the call may keep it as source and read on.
         --macro_depth_;
-        scopes_.pop_back();
+        symbols.close_scope();
         throw;
     } catch (const p::parse_error& error) {
         SceneError scene_error = to_scene_error(error);
@@ -119,22 +119,16 @@ bool Interpreter::call_macro(ParseInput& in) {
     --macro_depth_;
     for (std::size_t i = 0; i < references.size(); ++i) {
         if (references[i].empty()) continue;
-        auto found = scopes_.back().find(macro->parameters[i]);
-        if (found == scopes_.back().end()) continue;
-        for (std::size_t level = scopes_.size() - 1; level-- > 0;) {
-            auto target = scopes_[level].find(references[i]);
-            if (target != scopes_[level].end()) {
-                try {
-                    set_variable(scopes_[level], references[i], found->second.value);
-                } catch (const ValueError& e) {
-                    scopes_.pop_back();
-                    fail(call_place, e.what());
-                }
-                break;
-            }
+        const Value* value = symbols.innermost(macro->parameters[i]);
+        if (value == nullptr) continue;
+        try {
+            symbols.set_outer(references[i], *value);
+        } catch (const ValueError& e) {
+            symbols.close_scope();
+            fail(call_place, e.what());
         }
     }
-    scopes_.pop_back();
+    symbols.close_scope();
     if constexpr (std::is_same_v<Item, grammar::value_item>) {
         if (values.depth() != before + 1)
             fail(call_place, "macro '" + name + "' is used as a value but gives " +

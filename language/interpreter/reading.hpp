@@ -1,4 +1,4 @@
-// The Interpreter's Reading helpers of the directives: the block being built, words, names and the
+// The Interpreter's reading helpers of the directives: words, names and the
 // dividers (#else, #end, ...). Part of the Interpreter (language/interpreter_state.hpp), whose end
 // includes it.
 #pragma once
@@ -6,15 +6,6 @@
 #include "language/interpreter_state.hpp"
 
 namespace hexant::language {
-
-template <typename T>
-T& Interpreter::block(const p::position& where, const char* what) {
-    if (blocks.empty() || !std::holds_alternative<T>(blocks.back()))
-        fail(where, std::string(what) + " does not belong here");
-    // (A side of a time split editing the object around it: split_time.)
-    if (blocks.size() == watched_block_) ++watched_edits_;
-    return std::get<T>(blocks.back());
-}
 
 // Where a directive starts: at its '#', just before the input's position.
 template <typename ParseInput>
