@@ -136,7 +136,16 @@ void Interpreter::check_parameters(const runtime::ObjectRecord& object,
     });
 }
 
-void Interpreter::add_object(const runtime::ObjectPtr& object, const p::position& where) {
+void Interpreter::add_object(const runtime::ObjectPtr& given, const p::position& where) {
+    runtime::ObjectPtr object = given;
+    // An object without a texture takes the #default texture as it is now,
+    // not as a later #default leaves it (POV-Ray copies it as it reads the
+    // object: Parse_Object_Mods).
+    if (!object->texture && defaults_set > 0) {
+        auto textured = std::make_shared<runtime::ObjectRecord>(*object);
+        textured->texture = scene.default_texture;
+        object = std::move(textured);
+    }
     try {
         check_patterns(*object);
     } catch (const ValueError& e) {

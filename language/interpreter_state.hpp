@@ -162,6 +162,8 @@ class Interpreter {
         runtime::SourcePlace place;
     };
     std::vector<ShapeOpening> shapes_open;
+    // How many #default directives were read.
+    std::size_t defaults_set = 0;
     // Patterns read so far (a global noise_generator after them is warned).
     std::size_t patterns_written = 0;
 

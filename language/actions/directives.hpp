@@ -111,16 +111,30 @@ struct action<g::default_item> {
         st.require_whole_time(in.position(), "#default");
         Value v = st.values.pop();
         auto& texture = st.scene.default_texture;
-        if (v.is<runtime::Texture>())
-            texture = v.as<runtime::Texture>();
-        else if (v.is<runtime::Pigment>())
+        // (Each part was read into the default's own: pigment_open,
+        // finish_open.) POV-Ray's Parse_Default refuses a patterned or a
+        // layered default texture.
+        if (v.is<runtime::Texture>()) {
+            const auto& given = v.as<runtime::Texture>();
+            if (given.is_patterned())
+                Interpreter::fail(in.position(),
+                                  "the #default texture cannot be a texture_map or block pattern "
+                                  "(as in POV-Ray)");
+            if (!given.below.empty())
+                Interpreter::fail(in.position(),
+                                  "the #default texture cannot be layered (as in POV-Ray)");
+            texture = given;
+        } else if (v.is<runtime::Pigment>())
             texture.pigment = v.as<runtime::Pigment>();
+        else if (v.is<runtime::Normal>())
+            texture.normal = v.as<runtime::Normal>();
         else if (v.is<runtime::Finish>())
             texture.finish = v.as<runtime::Finish>();
         // Checked here, at the #default: the objects that take it are
         // checked for their own parameters only.
         if (auto problem = runtime::bad_parameter(texture, "the #default", st.scene.animation))
             Interpreter::fail(in.position(), *problem);
+        ++st.defaults_set;
     }
 };
 

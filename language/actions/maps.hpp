@@ -144,7 +144,8 @@ struct action<g::texture_map_texture_open> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        st.blocks.open(std::in_place_type<runtime::Texture>);
+        // A copy of the #default texture, as POV-Ray's Parse_Texture.
+        st.blocks.open(st.scene.default_texture);
     }
 };
 template <>

@@ -325,7 +325,11 @@ struct action<g::finish_open> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        st.blocks.open(std::in_place_type<runtime::Finish>);
+        // Into the finish it modifies, as POV-Ray's Parse_Finish: a texture's
+        // (texture { T finish { phong 1 } } keeps T's other settings), or the
+        // #default one's.
+        const runtime::Texture* texture = texture_being_written(st);
+        st.blocks.open(texture ? texture->finish : runtime::Finish());
     }
 };
 template <>
@@ -472,7 +476,8 @@ struct action<g::texture_open> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        st.blocks.open(std::in_place_type<runtime::Texture>);
+        // A copy of the #default texture, as POV-Ray's Parse_Texture.
+        st.blocks.open(st.scene.default_texture);
     }
 };
 template <>

@@ -153,10 +153,11 @@ struct action<g::blob_old_component> {
 template <>
 struct action<g::blob_block> : finish_object {};
 
-// The texture an object modifier changes, made if the object has none.
+// The texture an object modifier changes, made if the object has none: a
+// copy of the #default texture, as POV-Ray's Parse_Object_Mods.
 inline runtime::Texture& object_texture(Interpreter& st, const p::position& where) {
     auto& record = st.blocks.edit<runtime::ObjectRecord>(where, "a texture");
-    if (!record.texture) record.texture = runtime::Texture{};
+    if (!record.texture) record.texture = st.scene.default_texture;
     if (record.texture->is_patterned())
         throw ValueError(
             "a pigment, normal or finish cannot be added to a patterned texture (texture_map), as "

@@ -11,11 +11,17 @@ namespace hexant::language {
 // The pigment or normal an object, a texture or the camera already has:
 // a second pigment { } there modifies it (POV-Ray parses into the one it
 // has), it does not start over.
+//
+// Where POV-Ray starts from a copy of the #default texture instead (an
+// object without a texture yet, a pigment, normal or finish declared or
+// given to #default: Parse_Object_Mods, Parse_Declare and Parse_Default in
+// its parser.cpp), the start is the scene's default texture. Elsewhere
+// (sky_sphere, rainbow: its Create_Pigment) there is none.
 inline const runtime::Texture* texture_being_written(const Interpreter& st) {
-    if (st.blocks.empty()) return nullptr;
+    if (st.blocks.empty()) return &st.scene.default_texture;
     if (const auto* t = std::get_if<runtime::Texture>(&st.blocks.top())) return t;
     if (const auto* o = std::get_if<runtime::ObjectRecord>(&st.blocks.top()))
-        return o->texture ? &*o->texture : nullptr;
+        return o->texture ? &*o->texture : &st.scene.default_texture;
     return nullptr;
 }
 

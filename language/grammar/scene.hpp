@@ -100,8 +100,8 @@ struct global_item : p::sor<directive<global_item>, global_setting, global_chars
 struct global_settings_block
     : p::seq<kw_global_settings, p::must<lbrace>, p::star<global_item>, p::must<rbrace>> {};
 
-// #default { texture { } | pigment { } | finish { } }
-struct default_item : p::sor<texture_block, pigment_block, finish_block> {};
+// #default { texture { } | pigment { } | normal { } | finish { } }
+struct default_item : p::sor<texture_block, pigment_block, normal_block, finish_block> {};
 struct default_block : p::seq<kw_default, p::must<lbrace>, p::star<default_item>, p::must<rbrace>> {
 };
 
