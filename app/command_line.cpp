@@ -36,6 +36,9 @@ void add_scene_arguments(CLI::App& command, SceneArguments& a) {
     command.add_option("--allow-read", a.read_paths,
                        "Folder #include may also read from (POV-Ray's Read_Paths); otherwise only "
                        "the scene's folder, -L folders and the include folders");
+    command.add_flag("--strict", a.strict,
+                     "Every warning an error at its place: refuse a scene that uses what hexant "
+                     "does not render as POV-Ray does");
     command.add_option("--declare", a.declares,
                        "NAME=VALUE, as POV-Ray's Declare=: a number, a vector <a, b, c> or a "
                        "\"string\"");
@@ -155,6 +158,7 @@ ResolvedScene resolve(const SceneArguments& arguments) {
     if (arguments.rolling_shutter) a.rolling_shutter = *arguments.rolling_shutter;
     for (const auto& path : arguments.include_paths) r.options.include_paths.emplace_back(path);
     for (const auto& path : arguments.read_paths) r.options.read_paths.emplace_back(path);
+    r.options.strict = arguments.strict;
     for (const auto& d : arguments.declares) {
         const auto eq = d.find('=');
         if (eq == std::string::npos || eq == 0)

@@ -29,6 +29,7 @@ struct SceneArguments {
     std::vector<std::string> include_paths;
     std::vector<std::string> read_paths;
     std::vector<std::string> declares;  // NAME=VALUE
+    bool strict = false;                // every warning an error
     // Limits (language/limits.hpp); each raises or lowers one default.
     std::optional<std::size_t> max_loop_iterations, max_iterations, max_time_pieces, max_text_read,
         max_string_length, max_array_memory_mib;

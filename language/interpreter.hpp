@@ -29,6 +29,9 @@ struct ParseOptions {
     std::ostream* messages = nullptr;
     // Stated limits that stop runaway scenes with a clear error.
     Limits limits;
+    // Every warning an error at its place (--strict): a scene that uses
+    // what hexant does not render as POV-Ray does is refused.
+    bool strict = false;
 };
 
 // Throws SceneError for any problem in the scene.

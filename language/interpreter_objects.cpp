@@ -136,6 +136,47 @@ void Interpreter::check_parameters(const runtime::ObjectRecord& object,
     });
 }
 
+namespace {
+
+// Calls visit(note) for what a texture asks for that hexant lacks: its
+// finish's, its layers' and its map's entries' (each texture once).
+template <class Visit>
+void for_each_unrendered(const runtime::Texture& texture, std::set<const void*>& seen,
+                         Visit& visit) {
+    if (!seen.insert(&texture).second) return;
+    for (const auto& note : texture.finish.unrendered) visit(note);
+    for (const auto& layer : texture.below) for_each_unrendered(layer, seen, visit);
+    for (const auto& entry : texture.texture_map) for_each_unrendered(*entry.texture, seen, visit);
+}
+
+}  // namespace
+
+void Interpreter::report_unrendered(const runtime::ObjectRecord& object, const p::position& where) {
+    std::set<const void*> seen;
+    auto visit = [&](const runtime::Unrendered& note) {
+        if (!unrendered_reported_.insert(note.place.to_string() + note.message).second) return;
+        const std::string used = where.source + ":" + std::to_string(where.line);
+        const std::string at = note.place.to_string();
+        if (options.strict) {
+            SceneError error(note.message + " (an error under --strict)", place(note.place));
+            if (note.place.file != where.source || note.place.line != where.line)
+                error.add_context(place(where, "in the object added to the scene here"));
+            throw error;
+        }
+        std::string text = at + ": warning: " + note.message;
+        if (note.place.file != where.source || note.place.line != where.line)
+            text += " (used by the object at " + used + ")";
+        messages() << text << "\n";
+        scene.warnings.push_back(std::move(text));
+    };
+    for_each_nested(object, [&](const runtime::ObjectRecord& record) {
+        for (const auto& note : record.unrendered) visit(note);
+        if (record.interior)
+            for (const auto& note : record.interior->unrendered) visit(note);
+        if (record.texture) for_each_unrendered(*record.texture, seen, visit);
+    });
+}
+
 void Interpreter::add_object(const runtime::ObjectPtr& given, const p::position& where) {
     runtime::ObjectPtr object = given;
     // An object without a texture takes the #default texture as it is now,
@@ -152,6 +193,7 @@ void Interpreter::add_object(const runtime::ObjectPtr& given, const p::position&
         fail(where, e.what());
     }
     check_parameters(*object, where);
+    report_unrendered(*object, where);
     std::vector<runtime::LightRecord> lights;
     collect_lights(*object, lights);
     scene.objects.push_back(object);

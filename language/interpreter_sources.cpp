@@ -11,6 +11,7 @@
 #include "language/checked_integer.hpp"
 #include "language/interpreter.hpp"
 #include "language/interpreter_state.hpp"
+#include "language/keyword_rules.hpp"
 #include "runtime/objects/parameter_check.hpp"
 
 namespace hexant::language {
@@ -92,10 +93,25 @@ std::ostream& Interpreter::messages() const {
 }
 
 void Interpreter::warn(const p::position& position, const std::string& message) {
+    if (options.strict) fail(position, message + " (an error under --strict)");
     std::string text = position.source + ":" + std::to_string(position.line) + ":" +
                        std::to_string(position.column) + ": warning: " + message;
     messages() << text << "\n";
     scene.warnings.push_back(std::move(text));
+}
+
+runtime::Unrendered Interpreter::unrendered(const p::position& where, std::string_view word) const {
+    const KeywordRuleEntry* entry = find_keyword_rule(word);
+    if (entry == nullptr || entry->rule != KeywordRule::Warned)
+        throw std::logic_error("unrendered: '" + std::string(word) +
+                               "' is not a word whose rule is to warn");
+    return {{where.source, where.line, where.column},
+            "'" + std::string(word) +
+                "' is read but not rendered as POV-Ray renders it: " + std::string(entry->note)};
+}
+
+void Interpreter::not_rendered(const p::position& where, std::string_view word) {
+    warn(where, unrendered(where, word).message);
 }
 
 }  // namespace hexant::language

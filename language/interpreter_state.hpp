@@ -20,6 +20,7 @@
 #include <new>
 #include <optional>
 #include <ostream>
+#include <set>
 #include <sstream>
 #include <string>
 #include <unordered_map>
@@ -82,7 +83,19 @@ class Interpreter {
     [[noreturn]] static void fail(const p::position& position, const std::string& message) {
         throw p::parse_error(message, position);
     }
+    // A warning at `position` (an error under ParseOptions::strict).
     void warn(const p::position& position, const std::string& message);
+    // `word`, one of POV-Ray's words whose KeywordRule is Warned
+    // (language/keyword_rules.hpp), read at `where`: what hexant does
+    // instead, to keep with what it belongs to and warn where that is used
+    // (report_unrendered). std::logic_error for any other word.
+    runtime::Unrendered unrendered(const p::position& where, std::string_view word) const;
+    // The same, warned now (a global setting, a camera's, a light's).
+    void not_rendered(const p::position& where, std::string_view word);
+    // Warns (once each in the reading) what `object` and what it holds
+    // (its textures, their layers and maps, its interior, its members) ask
+    // for that hexant lacks; `where` is the item that added it to the scene.
+    void report_unrendered(const runtime::ObjectRecord& object, const p::position& where);
     std::ostream& messages() const;
 
     // ---- the value stack (language/value_stack.hpp)
@@ -434,6 +447,7 @@ class Interpreter {
                           const runtime::CameraRecord& camera_before,
                           const runtime::ColourFunction& background_before);
     std::filesystem::path scene_folder_;
+    std::set<std::string> unrendered_reported_;  // place and message, once each
     int macro_depth_ = 0;
     int include_depth_ = 0;
     std::size_t steps_ = 0;

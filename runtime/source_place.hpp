@@ -17,4 +17,12 @@ struct SourcePlace {
     }
 };
 
+// Something read that hexant does not render as POV-Ray renders it, kept
+// with the finish, interior or object it belongs to: warned where the scene
+// uses it (a declaration an include file never uses says nothing).
+struct Unrendered {
+    SourcePlace place;
+    std::string message;
+};
+
 }  // namespace hexant::runtime

@@ -24,6 +24,17 @@ glm::dvec3 rgb(const runtime::ColourFunction& c, double t) {
 // adc_bailout (1/255).
 constexpr double kBailout = 1.0 / 255.0;
 
+// What `metallic` (an amount) makes of white light at a surface whose
+// pigment is `colour`, lit or seen at `cosine` from its normal: POV-Ray
+// 3.7's empirical Fresnel curve (trace.cpp, ComputePhongColour,
+// ComputeSpecularColour and ComputeReflection, "[DB 9/94]"): the colour
+// blended in by metallic * (1 - F), F rising to 1 at grazing angles.
+glm::dvec3 metallic_tint(double metallic, double cosine, const glm::dvec3& colour) {
+    const double x = std::acos(std::clamp(cosine, -1.0, 1.0)) / (0.5 * M_PI);
+    const double f = std::clamp(0.014567225 / ((x - 1.12) * (x - 1.12)) - 0.011612903, 0.0, 1.0);
+    return glm::dvec3(1.0) + metallic * (1.0 - f) * (colour - glm::dvec3(1.0));
+}
+
 }  // namespace
 
 Shader::Shader(const runtime::SceneDescription& scene, const RayQuery& query, LightTravel travel,
@@ -348,15 +359,18 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
             const double shade = m.brilliance == 1.0 ? cosine : std::pow(cosine, m.brilliance);
             glm::dvec3 lit = m.diffuse * shade * m.colour * opaque;
             // POV-Ray's shadowless lights are fill lights: no highlights.
+            // A metallic finish tints them by the pigment.
+            const glm::dvec3 highlight =
+                m.metallic > 0.0 ? metallic_tint(m.metallic, cosine, m.colour) : glm::dvec3(1.0);
             if (m.phong > 0.0 && !light.shadowless()) {
                 const glm::dvec3 reflected = h.d - 2.0 * glm::dot(h.d, n) * n;
                 const double c = glm::dot(reflected, known.to_light);
-                if (c > 0.0) lit += glm::dvec3(m.phong * std::pow(c, m.phong_size));
+                if (c > 0.0) lit += m.phong * std::pow(c, m.phong_size) * highlight;
             }
             if (m.specular > 0.0 && !light.shadowless()) {
                 const glm::dvec3 half = glm::normalize(known.to_light - h.d);
                 const double c = glm::dot(half, n);
-                if (c > 0.0) lit += glm::dvec3(m.specular * std::pow(c, 1.0 / m.roughness));
+                if (c > 0.0) lit += m.specular * std::pow(c, 1.0 / m.roughness) * highlight;
             }
             own += lit * known.colour;
         }
@@ -411,7 +425,13 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
         if (reflect_weight < kBailout) continue;
         ++state.counters.reflected_rays;
         const Ray4 reflected = travel_.ray(h.start, h.time, reflect(h.d, layer.normal, h.raw));
-        colour += reflection * radiance(reflected, h.depth + 1, reflect_weight, state);
+        // (reflection { metallic }: the weight above is POV-Ray's, untinted.)
+        const glm::dvec3 tint =
+            layer.material.reflection_metallic != 0.0
+                ? metallic_tint(layer.material.reflection_metallic, -glm::dot(h.d, layer.normal),
+                                layer.material.colour)
+                : glm::dvec3(1.0);
+        colour += reflection * tint * radiance(reflected, h.depth + 1, reflect_weight, state);
     }
     return colour;
 }

@@ -14,6 +14,7 @@
 #include "language/checked_integer.hpp"
 #include "language/grammar.hpp"
 #include "language/interpreter_state.hpp"
+#include "language/keyword_rules.hpp"
 #include "language/mesh_reading.hpp"
 #include "language/object_extent.hpp"
 #include "language/timed_call.hpp"

@@ -124,7 +124,7 @@ template <>
 struct action<g::light_projected_through> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        st.warn(in.position(), word(in) + " { } is read and ignored");
+        st.not_rendered(in.position(), word(in));
     }
 };
 // POV-Ray's Parse_Light_Source: the object is moved to the light's centre,

@@ -354,6 +354,15 @@ struct action<g::finish_setting> {
             // A colour amount (ambient rgb <..>): hexant keeps its mean.
             const auto c = to_colour(v, name);
             x = (c.c[0] + c.c[1] + c.c[2]) / 3.0;
+            const auto constant = [&](int i) { return c.c[i].is_constant(); };
+            const bool grey = constant(0) && constant(1) && constant(2) &&
+                              c.c[0].constant() == c.c[1].constant() &&
+                              c.c[1].constant() == c.c[2].constant();
+            if (!grey)
+                f.unrendered.push_back(
+                    {{in.position().source, in.position().line, in.position().column},
+                     name + " is a colour here; hexant renders the mean of its red, green and "
+                            "blue, not the colour"});
         } else {
             x = to_float(v, name);
         }
@@ -373,7 +382,8 @@ struct action<g::finish_setting> {
             f.roughness = x;
         else if (name == "emission")
             f.emission = x;
-        // crand and metallic are read and ignored.
+        else if (name == "crand")
+            f.unrendered.push_back(st.unrendered(in.position(), name));
     }
 };
 template <>
@@ -389,6 +399,69 @@ struct action<g::reflection_value> {
             f.reflection = to_colour(v, "reflection");
             f.reflection.c[3] = f.reflection.c[4] = 0.0;
         }
+    }
+};
+// metallic [AMOUNT] in a finish, or in its reflection { }: 1 when no
+// amount is written (POV-Ray's Allow_Float(1.0)).
+inline TimeFunction metallic_amount(Interpreter& st) {
+    std::vector<Value> given = st.values.close_frame();
+    return given.empty() ? TimeFunction(1.0) : to_float(given[0], "metallic");
+}
+template <>
+struct action<g::finish_metallic> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        const TimeFunction amount = metallic_amount(st);
+        st.blocks.edit<runtime::Finish>(in.position(), "metallic").metallic = amount;
+    }
+};
+template <>
+struct action<g::reflection_metallic> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        const TimeFunction amount = metallic_amount(st);
+        st.blocks.edit<runtime::Finish>(in.position(), "metallic").reflection_metallic = amount;
+    }
+};
+// conserve_energy, fresnel, irid { }, subsurface { }: kept with the finish,
+// warned where it is used.
+template <>
+struct action<g::finish_flag> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        const std::string w = word(in);
+        st.blocks.edit<runtime::Finish>(in.position(), w.c_str())
+            .unrendered.push_back(st.unrendered(in.position(), w));
+    }
+};
+template <>
+struct action<g::finish_ignored_block> : action<g::finish_flag> {};
+// caustics, dispersion, fade_*, media in an interior.
+template <>
+struct action<g::interior_ignored_setting> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        const std::string w = word(in);
+        st.blocks.edit<runtime::Interior>(in.position(), w.c_str())
+            .unrendered.push_back(st.unrendered(in.position(), w));
+    }
+};
+// In reflection { }: falloff, exponent, fresnel, and a maximum after a
+// comma (variable reflection); metallic is rendered (reflection_metallic).
+template <>
+struct action<g::reflection_ignored_option> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        const std::string w = word(in);
+        if (w == "metallic") return;
+        auto& f = st.blocks.edit<runtime::Finish>(in.position(), "reflection");
+        if (w.empty())
+            f.unrendered.push_back(
+                {{in.position().source, in.position().line, in.position().column},
+                 "a variable reflection's maximum is read but not rendered as POV-Ray renders "
+                 "it: hexant reflects by the minimum at every angle"});
+        else
+            f.unrendered.push_back(st.unrendered(in.position(), w));
     }
 };
 template <>

@@ -238,7 +238,10 @@ struct action<g::object_flag> {
             record.hollow = on;
         else if (name == "inverse")
             record.inverse = on;
-        // sturm, no_image, no_reflection, no_radiosity, double_illuminate: read, no effect.
+        else if (on &&
+                 (name == "no_image" || name == "no_reflection" || name == "double_illuminate"))
+            record.unrendered.push_back(st.unrendered(in.position(), name));
+        // sturm and no_radiosity cannot change the image (language/keyword_rules.cpp).
     }
 };
 // A setting of the object's kind (runtime/objects/shape_kind.hpp).
@@ -261,7 +264,9 @@ template <>
 struct action<g::object_ignored_block> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        st.warn(in.position(), word(in) + " { } is read and ignored");
+        const std::string w = word(in);
+        st.blocks.edit<runtime::ObjectRecord>(in.position(), w.c_str())
+            .unrendered.push_back(st.unrendered(in.position(), w));
     }
 };
 

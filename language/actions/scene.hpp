@@ -171,8 +171,7 @@ template <>
 struct action<g::camera_ignored_setting> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        st.warn(in.position(),
-                word(in) + " is read and ignored (hexant samples by --spp or --target-error)");
+        st.not_rendered(in.position(), word(in));
     }
 };
 template <>
@@ -390,7 +389,14 @@ struct action<g::global_ignored_setting> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         st.values.close_frame();
-        st.warn(in.position(), "global setting '" + st.values.pop_name() + "' is read and ignored");
+        const std::string name = st.values.pop_name();
+        // POV-Ray's other global settings are warned (or harmless); any
+        // other word is no global setting at all, an error there.
+        const KeywordRuleEntry* rule = find_keyword_rule(name);
+        if (rule != nullptr && rule->rule == KeywordRule::Warned)
+            st.not_rendered(in.position(), name);
+        else if (rule == nullptr || rule->rule != KeywordRule::Harmless)
+            throw ValueError("'" + name + "' is not a global setting");
     }
 };
 template <>

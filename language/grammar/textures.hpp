@@ -156,10 +156,14 @@ struct finish_setting_name : p::sor<TAO_PEGTL_KEYWORD("ambient"), TAO_PEGTL_KEYW
 struct finish_setting_value : p::seq<expression> {};
 struct finish_setting : p::seq<finish_setting_name, ws, p::must<finish_setting_value>> {};
 struct reflection_value : p::seq<expression> {};
+// metallic [AMOUNT]: POV-Ray's Allow_Float(1.0).
+struct metallic_amount : p::seq<p::not_at<p::one<'<'>>, expression> {};
+struct reflection_metallic
+    : p::seq<TAO_PEGTL_KEYWORD("metallic"), ws, frame_open, p::opt<metallic_amount>> {};
 struct reflection_option
-    : p::sor<p::seq<p::sor<TAO_PEGTL_KEYWORD("falloff"), TAO_PEGTL_KEYWORD("exponent"),
-                           TAO_PEGTL_KEYWORD("metallic")>,
-                    ws, p::must<ignored_value>>,
+    : p::sor<reflection_metallic,
+             p::seq<p::sor<TAO_PEGTL_KEYWORD("falloff"), TAO_PEGTL_KEYWORD("exponent")>, ws,
+                    p::must<ignored_value>>,
              p::seq<TAO_PEGTL_KEYWORD("fresnel"), ws, p::opt<ignored_value>>,
              p::seq<comma, p::opt<ignored_value>>> {};  // the maximum: hexant uses the minimum
 struct reflection_ignored_option : reflection_option {};
@@ -168,16 +172,19 @@ struct reflection_block : p::seq<lbrace, p::must<reflection_value>,
 struct reflection_amount : p::sor<reflection_block, reflection_value> {};
 struct reflection_setting
     : p::seq<TAO_PEGTL_KEYWORD("reflection"), ws, p::must<reflection_amount>> {};
-struct finish_flag : p::seq<p::sor<TAO_PEGTL_KEYWORD("conserve_energy"),
-                                   TAO_PEGTL_KEYWORD("fresnel"), TAO_PEGTL_KEYWORD("metallic")>,
-                            ws, p::opt<ignored_value>> {};
+struct finish_flag
+    : p::seq<p::sor<TAO_PEGTL_KEYWORD("conserve_energy"), TAO_PEGTL_KEYWORD("fresnel")>, ws,
+             p::opt<ignored_value>> {};
+struct finish_metallic
+    : p::seq<TAO_PEGTL_KEYWORD("metallic"), ws, frame_open, p::opt<metallic_amount>> {};
 struct finish_ignored_block
     : p::seq<p::sor<TAO_PEGTL_KEYWORD("irid"), TAO_PEGTL_KEYWORD("subsurface")>, ws, skip::braced,
              ws> {};
 struct finish_open : p::seq<kw_finish, p::must<lbrace>> {};
 struct finish_base : p::seq<expression> {};
-struct finish_item : p::sor<directive<finish_item>, macro_call<finish_item>, finish_setting,
-                            reflection_setting, finish_flag, finish_ignored_block> {};
+struct finish_item
+    : p::sor<directive<finish_item>, macro_call<finish_item>, finish_setting, reflection_setting,
+             finish_metallic, finish_flag, finish_ignored_block> {};
 struct finish_block
     : p::seq<finish_open, p::opt<finish_base>, p::star<finish_item>, p::must<rbrace>> {};
 

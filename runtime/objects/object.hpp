@@ -41,6 +41,8 @@ struct ObjectRecord {
     // Light sources written inside a CSG move with it.
     std::vector<LightRecord> lights;
     SourcePlace place;  // where the object was written
+    // What its own modifiers ask for that hexant lacks (clipped_by, ...).
+    std::vector<Unrendered> unrendered;
 
     bool depends_on_time() const;  // anything about it
     bool shape_depends_on_time() const;

@@ -112,9 +112,11 @@ Problem check(const Texture& texture, const std::string& whose, const Span& span
     if (auto p = check(texture.pigment.transform, whose + " pigment's", span)) return p;
     const Finish& f = texture.finish;
     const std::pair<const TimeFunction*, const char*> values[] = {
-        {&f.ambient, "ambient"},     {&f.diffuse, "diffuse"},       {&f.brilliance, "brilliance"},
-        {&f.phong, "phong"},         {&f.phong_size, "phong_size"}, {&f.specular, "specular"},
-        {&f.roughness, "roughness"}, {&f.emission, "emission"}};
+        {&f.ambient, "ambient"},       {&f.diffuse, "diffuse"},
+        {&f.brilliance, "brilliance"}, {&f.phong, "phong"},
+        {&f.phong_size, "phong_size"}, {&f.specular, "specular"},
+        {&f.roughness, "roughness"},   {&f.emission, "emission"},
+        {&f.metallic, "metallic"},     {&f.reflection_metallic, "reflection's metallic"}};
     for (const auto& [value, name] : values)
         if (auto p = check(*value, whose + " finish's " + name, span)) return p;
     if (auto p = check(f.reflection.c, whose + " finish's reflection", span)) return p;

@@ -139,8 +139,9 @@ bool depends(const Texture& x, Seen& seen) {
     }
     if (depends(x.pigment, seen) || (x.normal && depends(*x.normal, seen))) return true;
     const Finish& f = x.finish;
-    for (const TimeFunction* value : {&f.ambient, &f.diffuse, &f.brilliance, &f.phong,
-                                      &f.phong_size, &f.specular, &f.roughness, &f.emission})
+    for (const TimeFunction* value :
+         {&f.ambient, &f.diffuse, &f.brilliance, &f.phong, &f.phong_size, &f.specular, &f.roughness,
+          &f.emission, &f.metallic, &f.reflection_metallic})
         if (value->depends_on_time()) return true;
     if (f.reflection.depends_on_time()) return true;
     for (const Texture& layer : x.below)

@@ -89,10 +89,17 @@ struct Finish {
     TimeFunction roughness = 0.05;
     ColourFunction reflection{};  // rgb; zero means none
     TimeFunction emission = 0.0;
+    // POV-Ray's metallic: highlights (finish) and the reflection
+    // (reflection { metallic }) take on the pigment's colour, by its
+    // empirical Fresnel curve (shader.cpp, metallic_tint); 0 is none.
+    TimeFunction metallic = 0.0;
+    TimeFunction reflection_metallic = 0.0;
+    std::vector<Unrendered> unrendered;  // what it asks for that hexant lacks
 };
 
 struct Interior {
     TimeFunction ior = 1.0;
+    std::vector<Unrendered> unrendered;  // what it asks for that hexant lacks
 };
 
 struct Normal;

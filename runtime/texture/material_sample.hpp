@@ -20,7 +20,9 @@ struct MaterialSample {
     double roughness = 0.05;
     glm::dvec3 reflection{0.0};
     double emission = 0.0;
-    double ior = 1.0;  // the interior's index of refraction
+    double metallic = 0.0;             // highlights' tint by the pigment
+    double reflection_metallic = 0.0;  // the reflection's
+    double ior = 1.0;                  // the interior's index of refraction
 };
 
 }  // namespace hexant::runtime

@@ -42,16 +42,19 @@ std::shared_ptr<const TextureEvaluator::CompiledFinish> TextureEvaluator::compil
                            CompiledScalar(f.specular),
                            CompiledScalar(f.roughness),
                            CompiledScalar(f.emission),
+                           CompiledScalar(f.metallic),
+                           CompiledScalar(f.reflection_metallic),
                            interior ? CompiledScalar(interior->ior) : CompiledScalar(1.0),
                            {CompiledScalar(f.reflection.c[0]), CompiledScalar(f.reflection.c[1]),
                             CompiledScalar(f.reflection.c[2])}});
     };
-    using Key = std::array<double, 12>;
+    using Key = std::array<double, 14>;
     Key key{};
     std::size_t n = 0;
     for (const TimeFunction* value :
          {&f.ambient, &f.diffuse, &f.brilliance, &f.phong, &f.phong_size, &f.specular, &f.roughness,
-          &f.emission, &f.reflection.c[0], &f.reflection.c[1], &f.reflection.c[2]}) {
+          &f.emission, &f.metallic, &f.reflection_metallic, &f.reflection.c[0], &f.reflection.c[1],
+          &f.reflection.c[2]}) {
         if (!value->is_constant()) return make();
         key[n++] = value->constant();
     }
@@ -473,6 +476,8 @@ void TextureEvaluator::CompiledLayer::fill(MaterialSample& m, const glm::dvec3& 
     m.roughness = f.roughness.at(t);
     m.reflection = {f.reflection[0].at(t), f.reflection[1].at(t), f.reflection[2].at(t)};
     m.emission = f.emission.at(t);
+    m.metallic = f.metallic.at(t);
+    m.reflection_metallic = f.reflection_metallic.at(t);
     m.ior = f.ior.at(t);
 }
 

@@ -94,7 +94,7 @@ class TextureEvaluator {
     // that differ in colour keeps one), so an object pays a pointer for it.
     struct CompiledFinish {
         CompiledScalar ambient, diffuse, brilliance, phong, phong_size, specular, roughness,
-            emission, ior;
+            emission, metallic, reflection_metallic, ior;
         std::array<CompiledScalar, 3> reflection;
     };
     static std::shared_ptr<const CompiledFinish> compile(const Finish& finish,

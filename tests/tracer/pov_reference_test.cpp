@@ -511,6 +511,14 @@ TEST_CASE("#default reaches every part of a texture as in POV-Ray 3.7", "[tracer
     check_stills("textures", "default", {"0", "0.5"});
 }
 
+TEST_CASE("metallic tints highlights and reflections as in POV-Ray 3.7", "[tracer][pov]") {
+    // textures/metallic.pov: metallic with phong, with specular (its
+    // amount moving with clock) and in reflection { }, at clock 0 and 0.5.
+    // The still's tolerance (exact when written). Before, metallic was read
+    // and ignored: 10% of the pixels beyond 2/255 (white highlights).
+    check_stills("textures", "metallic", {"0", "0.5"});
+}
+
 TEST_CASE("image_map agrees with POV-Ray 3.7's", "[tracer][pov][pattern][image]") {
     // textures/image_map.pov: an 8 x 6 RGBA PNG tiled on the floor
     // (bilinear) and moving, once on a wall over a checker layer (alpha and

@@ -1,0 +1,250 @@
+// Every one of POV-Ray 3.7's reserved words has a rule (issue 42: nothing
+// dropped in silence), and the rule holds: a Warned word used in its place
+// gives a warning at that line (an error under --strict), a Harmless one
+// reads silently, a Refused one is an error wherever it is written, and a
+// Rendered one is a word hexant's grammar knows.
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include <catch2/catch.hpp>
+
+#include "language/grammar.hpp"
+#include "language/interpreter.hpp"
+#include "language/keyword_rules.hpp"
+
+namespace lang = hexant::language;
+
+namespace {
+
+const std::string kWords =
+    std::string(HEXANT_SOURCE_DIR) + "/tests/language/pov_reference/reserved_words_3.7.txt";
+
+std::vector<std::string> pov_words() {
+    std::ifstream in(kWords);
+    std::vector<std::string> words;
+    for (std::string line; std::getline(in, line);)
+        if (!line.empty() && line[0] != '#') words.push_back(line);
+    return words;
+}
+
+// A use of each Warned or Harmless word in its place, written on line 2, and
+// the word the warning names: the word itself, or the block it is read with
+// (radiosity { }, photons { }, media { }, irid { }, subsurface { }).
+struct Probe {
+    std::string text;
+    std::string named;
+};
+
+const std::map<std::string, Probe>& probes() {
+    static const std::map<std::string, Probe> kProbes = [] {
+        std::map<std::string, Probe> p;
+        const auto self = [&](const std::string& word, const std::string& text) {
+            p[word] = {text, word};
+        };
+        self("bounded_by", "sphere { 0, 1 bounded_by { box { -1, 1 } } }");
+        self("clipped_by", "sphere { 0, 1 clipped_by { plane { y, 0 } } }");
+        self("photons", "sphere { 0, 1 photons { target } }");
+        self("radiosity", "global_settings { radiosity { } }");
+        self("projected_through", "light_source { 0, 1 projected_through { sphere { 0, 1 } } }");
+        self("confidence", "camera { location -5 look_at 0 confidence 0.9 }");
+        self("variance", "camera { location -5 look_at 0 variance 0.001 }");
+        self("conserve_energy", "sphere { 0, 1 finish { conserve_energy } }");
+        self("fresnel", "sphere { 0, 1 finish { reflection { 0.5 fresnel on } } }");
+        self("crand", "sphere { 0, 1 finish { crand 0.1 } }");
+        self("falloff", "sphere { 0, 1 finish { reflection { 0.1 falloff 2 } } }");
+        self("exponent", "sphere { 0, 1 finish { reflection { 0.3 exponent 2 } } }");
+        self("irid", "sphere { 0, 1 finish { irid { 0.3 } } }");
+        self("subsurface", "sphere { 0, 1 finish { subsurface { translucency 0.5 } } }");
+        p["thickness"] = {"sphere { 0, 1 finish { irid { 0.3 thickness 0.2 } } }", "irid"};
+        p["translucency"] = {"sphere { 0, 1 finish { subsurface { translucency 0.5 } } }",
+                             "subsurface"};
+        self("caustics", "sphere { 0, 1 interior { caustics 1 } }");
+        self("dispersion", "sphere { 0, 1 interior { ior 1.5 dispersion 1.1 } }");
+        self("dispersion_samples", "sphere { 0, 1 interior { dispersion_samples 10 } }");
+        self("fade_distance", "sphere { 0, 1 interior { fade_distance 2 } }");
+        self("fade_power", "sphere { 0, 1 interior { fade_power 2 } }");
+        self("fade_color", "sphere { 0, 1 interior { fade_color rgb <1, 0, 0> } }");
+        self("fade_colour", "sphere { 0, 1 interior { fade_colour rgb <1, 0, 0> } }");
+        self("media", "sphere { 0, 1 hollow interior { media { emission 1 } } }");
+        for (const auto& [word, inside] : std::map<std::string, std::string>{
+                 {"absorption", "absorption 1"},
+                 {"scattering", "scattering { 1, 0.5 }"},
+                 {"method", "method 3"},
+                 {"intervals", "intervals 2"},
+                 {"ratio", "ratio 0.9"},
+                 {"eccentricity", "scattering { 5, 1 eccentricity 0.5 }"},
+                 {"extinction", "scattering { 1, 1 extinction 0.5 }"},
+                 {"aa_level", "aa_level 3"},
+                 {"aa_threshold", "aa_threshold 0.1"},
+                 {"samples", "samples 2, 2"}})
+            p[word] = {"sphere { 0, 1 hollow interior { media { " + inside + " } } }", "media"};
+        for (const char* word : {"no_image", "no_reflection", "double_illuminate"})
+            self(word, std::string("sphere { 0, 1 ") + word + " }");
+        self("adc_bailout", "global_settings { adc_bailout 0.01 }");
+        self("irid_wavelength", "global_settings { irid_wavelength rgb <0.25, 0.18, 0.14> }");
+        self("number_of_waves", "global_settings { number_of_waves 5 }");
+        self("mm_per_unit", "global_settings { mm_per_unit 10 }");
+        self("hf_gray_16", "global_settings { hf_gray_16 on }");
+        p["importance"] = {"sphere { 0, 1 radiosity { importance 0.5 } }", "radiosity"};
+        for (const char* word :
+             {"count", "always_sample", "brightness", "error_bound", "gray_threshold",
+              "low_error_factor", "max_sample", "maximum_reuse", "minimum_reuse", "nearest_count",
+              "pretrace_start", "pretrace_end", "recursion_limit"})
+            p[word] = {std::string("global_settings { radiosity { ") + word + " 1 } }",
+                       "radiosity"};
+        for (const char* word : {"save_file", "load_file"})
+            p[word] = {std::string("global_settings { radiosity { ") + word + " \"a.rad\" } }",
+                       "radiosity"};
+        for (const char* word : {"spacing", "gather", "autostop", "expand_thresholds"})
+            p[word] = {std::string("global_settings { photons { ") + word + " 0.1 } }",
+                       "photons"};
+        for (const char* word : {"collect", "pass_through", "split_union", "target", "refraction"})
+            p[word] = {std::string("sphere { 0, 1 photons { ") + word + " on } }", "photons"};
+        // Harmless: no warning.
+        for (const auto& [word, text] : std::map<std::string, std::string>{
+                 {"sturm", "sphere { 0, 1 sturm }"},
+                 {"no_radiosity", "sphere { 0, 1 no_radiosity }"},
+                 {"jitter", "light_source { 0, 1 area_light x, y, 2, 2 jitter }"},
+                 {"adaptive", "light_source { 0, 1 area_light x, y, 2, 2 adaptive 1 }"},
+                 {"media_interaction", "light_source { 0, 1 media_interaction off }"},
+                 {"media_attenuation", "light_source { 0, 1 media_attenuation on }"},
+                 {"max_intersections", "global_settings { max_intersections 64 }"},
+                 {"debug", "#debug \"a line\\n\""},
+                 {"hierarchy",
+                  "mesh { triangle { <0, 0, 0>, <1, 0, 0>, <0, 1, 0> } hierarchy off }"}})
+            p[word] = {text, ""};
+        return p;
+    }();
+    return kProbes;
+}
+
+struct Reading {
+    std::vector<std::string> warnings;
+    std::optional<lang::SceneError> error;
+};
+
+Reading read(const std::string& line2, bool strict = false) {
+    lang::ParseOptions options;
+    options.strict = strict;
+    std::ostringstream messages;
+    options.messages = &messages;
+    Reading r;
+    try {
+        r.warnings = lang::parse_scene_text("#version 3.7;\n" + line2 + "\n", "probe.pov", options)
+                         .warnings;
+    } catch (const lang::SceneError& e) {
+        r.error = e;
+    }
+    return r;
+}
+
+}  // namespace
+
+TEST_CASE("every POV-Ray 3.7 reserved word has a rule, each once", "[language][keywords]") {
+    const std::vector<std::string> words = pov_words();
+    REQUIRE(words.size() == 503);  // the recorded list, read whole
+    const auto rules = lang::keyword_rules();
+    std::vector<std::string> ruled;
+    for (const auto& entry : rules) ruled.emplace_back(entry.word);
+    CHECK(ruled == words);
+    for (const auto& word : words) {
+        INFO(word);
+        const lang::KeywordRuleEntry* entry = lang::find_keyword_rule(word);
+        REQUIRE(entry != nullptr);
+        CHECK(entry->word == word);
+        // A note says what hexant does instead, where it does not render.
+        if (entry->rule == lang::KeywordRule::Warned || entry->rule == lang::KeywordRule::Harmless)
+            CHECK(!entry->note.empty());
+    }
+    CHECK(lang::find_keyword_rule("not_a_pov_word") == nullptr);
+}
+
+TEST_CASE("a rendered word is one hexant's grammar reads", "[language][keywords]") {
+    for (const auto& entry : lang::keyword_rules())
+        if (entry.rule == lang::KeywordRule::Rendered) {
+            INFO(entry.word);
+            CHECK(lang::grammar::is_reserved_word(entry.word));
+        }
+}
+
+TEST_CASE("a warned word warns at its line, and --strict refuses it", "[language][keywords]") {
+    std::size_t probed = 0;
+    for (const auto& entry : lang::keyword_rules()) {
+        if (entry.rule != lang::KeywordRule::Warned) continue;
+        INFO(entry.word);
+        const auto found = probes().find(std::string(entry.word));
+        REQUIRE(found != probes().end());  // every warned word has its probe
+        const Probe& probe = found->second;
+        INFO(probe.text);
+        const Reading r = read(probe.text);
+        REQUIRE_FALSE(r.error);
+        bool named = false;
+        for (const auto& w : r.warnings)
+            named = named || (w.rfind("probe.pov:2:", 0) == 0 &&
+                              w.find("'" + probe.named + "' is read but not rendered") !=
+                                  std::string::npos);
+        CHECK(named);
+        const Reading strict = read(probe.text, true);
+        REQUIRE(strict.error);
+        CHECK(strict.error->places().front().line == 2);
+        ++probed;
+    }
+    CHECK(probed > 50);
+}
+
+TEST_CASE("a harmless word reads silently", "[language][keywords]") {
+    for (const auto& entry : lang::keyword_rules()) {
+        if (entry.rule != lang::KeywordRule::Harmless) continue;
+        INFO(entry.word);
+        const auto found = probes().find(std::string(entry.word));
+        REQUIRE(found != probes().end());
+        const Reading r = read(found->second.text, true);
+        CHECK_FALSE(r.error);
+        CHECK(r.warnings.empty());
+    }
+}
+
+TEST_CASE("a refused word is an error wherever it is written", "[language][keywords]") {
+    // At the top level, in an object, in its pigment, finish and interior,
+    // in a camera, in global_settings and as a value: each an error, none
+    // read in silence.
+    const std::vector<std::string> places = {
+        "WORD",
+        "sphere { 0, 1 WORD }",
+        "sphere { 0, 1 pigment { WORD } }",
+        "sphere { 0, 1 finish { WORD } }",
+        "sphere { 0, 1 interior { WORD } }",
+        "camera { WORD }",
+        "global_settings { WORD 1 }",
+        "#declare V = WORD;",
+    };
+    std::size_t refused = 0;
+    for (const auto& entry : lang::keyword_rules()) {
+        if (entry.rule != lang::KeywordRule::Refused) continue;
+        ++refused;
+        for (std::string text : places) {
+            text.replace(text.find("WORD"), 4, entry.word);
+            INFO(text);
+            const Reading r = read(text);
+            CHECK(r.error);
+        }
+    }
+    CHECK(refused > 100);
+}
+
+TEST_CASE("a declaration hexant cannot render warns only where it is used",
+          "[language][keywords]") {
+    // An include file's declared glass (glass.inc's fade_distance) says
+    // nothing until an object uses it; then the warning names the
+    // declaration's line and the object's.
+    const std::string declared = "#declare I = interior { ior 1.5 fade_distance 2 }";
+    CHECK(read(declared).warnings.empty());
+    const Reading used = read(declared + "\nsphere { 0, 1 interior { I } }\n"
+                                         "sphere { 2, 1 interior { I } }");
+    REQUIRE(used.warnings.size() == 1);  // once, however many use it
+    CHECK(used.warnings[0].rfind("probe.pov:2:", 0) == 0);
+    CHECK(used.warnings[0].find("(used by the object at probe.pov:3)") != std::string::npos);
+}
