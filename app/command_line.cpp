@@ -177,7 +177,10 @@ ResolvedScene resolve(const SceneArguments& arguments) {
     if (arguments.max_frames) limits.frames = *arguments.max_frames;
     if (arguments.max_pixels) limits.image_pixels = *arguments.max_pixels;
     // A single clock value on a still is POV-Ray's +K: the still's clock.
-    if (r.at_clock && !a.is_animation()) a.initial_clock = *r.at_clock;
+    if (r.at_clock && !a.is_animation()) {
+        a.initial_clock = *r.at_clock;
+        a.clock_given = true;
+    }
     if (a.width < 1 || a.height < 1)
         throw std::runtime_error("the image size must be at least 1 by 1");
     // Checked here, before any pixel is allocated: -W 100000 -H 100000

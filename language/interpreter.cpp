@@ -86,6 +86,7 @@ runtime::SceneDescription parse(const std::string& text, const std::string& name
                                                                            source);
     }
     interpreter.read_file<grammar::scene_item, action, action_control>(name, text);
+    interpreter.finish_reading(name);
     return scene;
 }
 

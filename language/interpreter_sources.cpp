@@ -114,4 +114,20 @@ void Interpreter::not_rendered(const p::position& where, std::string_view word) 
     warn(where, unrendered(where, word).message);
 }
 
+void Interpreter::finish_reading(const std::string& name) {
+    // POV-Ray 3.7 (parse.cpp, after parsing; its EffectiveLanguageVersion
+    // is 3.62 until a #version is read): a scene whose version ends below
+    // 3.7 and that sets no assumed_gamma is rendered with no gamma
+    // correction at all, and its image files are read undecoded.
+    const double effective = version_set ? version : 3.62;
+    // (A scene with nothing to see, only #debug text, has no colours.)
+    if (effective < 3.7 && !assumed_gamma_set && !scene.objects.empty())
+        warn(p::position(p::internal::iterator(), name),
+             "the scene " +
+                 std::string(version_set ? "ends with a #version below 3.7" : "has no #version") +
+                 " and sets no assumed_gamma: POV-Ray 3.7 then renders it without gamma "
+                 "correction (its legacy rule, brighter mid-tones here), hexant with 3.7's; "
+                 "add `#version 3.7;` or global_settings { assumed_gamma 1 } to make them agree");
+}
+
 }  // namespace hexant::language

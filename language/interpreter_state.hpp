@@ -162,6 +162,13 @@ class Interpreter {
     const ParseOptions& options;
     RandomStreams random;
     double version = 3.7;
+    // Whether a #version was read (anywhere, as POV-Ray's languageVersionSet)
+    // and global_settings { assumed_gamma }: without either POV-Ray 3.7 reads
+    // a scene with its legacy gamma rule (finish_reading).
+    bool version_set = false, assumed_gamma_set = false;
+    // After the whole scene is read: what holds only then (the legacy
+    // gamma rule's warning).
+    void finish_reading(const std::string& name);
     // The values of the mesh2 section being read (language/mesh_reading.hpp).
     std::vector<MeshValue> mesh2_values;
     // global_settings { charset }: "ascii" (POV-Ray's default) or "utf8".

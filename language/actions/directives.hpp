@@ -41,6 +41,7 @@ struct action<g::version_value> {
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
         st.version = to_constant(st.values.pop(), "#version");
+        st.version_set = true;
     }
 };
 

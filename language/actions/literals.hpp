@@ -187,7 +187,7 @@ struct action<g::builtin_constant_name> {
         else if (w == "clock_delta")
             f(a.clock_delta());
         else if (w == "clock_on")
-            f(a.clock_runs() ? 1.0 : 0.0);
+            f(a.clock_runs() || a.clock_given ? 1.0 : 0.0);
         // In a still, POV-Ray reads these four (and frame_number) as 0.
         else if (w == "initial_clock")
             f(a.clock_runs() ? a.initial_clock : 0.0);

@@ -360,9 +360,10 @@ struct action<g::global_setting> {
         st.require_whole_time(in.position(), "a global setting");
         Value v = st.values.pop();
         const std::string name = st.values.pop_name();
-        if (name == "assumed_gamma")
+        if (name == "assumed_gamma") {
             st.scene.global.assumed_gamma = to_constant(v, name);
-        else if (name == "noise_generator") {
+            st.assumed_gamma_set = true;
+        } else if (name == "noise_generator") {
             st.scene.global.noise_generator =
                 static_cast<int>(checked_integer(to_constant(v, name), name, 1, 3));
             if (st.patterns_written > 0)

@@ -18,6 +18,10 @@ struct Animation {
     double initial_clock = 0.0;
     double final_clock = 1.0;
     bool cyclic = false;
+    // Whether a still's clock was given (POV-Ray's +K, hexant's --clock C):
+    // POV-Ray's clock_on is 1 then, as in an animation (its Parser's
+    // useClock: whether the Clock option exists).
+    bool clock_given = false;
     double shutter = 1.0;
     // How the shutter opens and closes over its open interval (a box: fully
     // open throughout).

@@ -4,8 +4,11 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include <catch2/catch.hpp>
+
+#include "language/interpreter.hpp"
 
 namespace fs = std::filesystem;
 
@@ -95,6 +98,20 @@ TEST_CASE("a single --clock value is POV-Ray's +K for a still", "[app][ini]") {
     CHECK(*r.at_clock == 0.25);
     CHECK(r.options.animation.initial_clock == 0.25);
     CHECK_FALSE(r.options.animation.is_animation());
+    // clock_on as POV-Ray 3.7 reads it (tests/runtime/animation_test.cpp):
+    // 1 under +K0.25, 0 in a still without it.
+    const auto clock_on = [](const hexant::language::ParseOptions& options) {
+        hexant::language::ParseOptions quiet = options;
+        std::ostringstream messages;
+        quiet.messages = &messages;
+        const auto scene = hexant::language::parse_scene_text("#if (clock_on) sphere { 0, 1 } #end",
+                                                              "test.pov", quiet);
+        return scene.objects.size();
+    };
+    CHECK(clock_on(r.options) == 1);
+    hexant::app::SceneArguments still;
+    still.files = {"scene.pov"};
+    CHECK(clock_on(hexant::app::resolve(still).options) == 0);
 }
 
 TEST_CASE("bad .ini values and flags are errors naming the place", "[app][ini]") {

@@ -3,6 +3,8 @@
 // gives a warning at that line (an error under --strict), a Harmless one
 // reads silently, a Refused one is an error wherever it is written, and a
 // Rendered one is a word hexant's grammar knows.
+#include "language/keyword_rules.hpp"
+
 #include <fstream>
 #include <map>
 #include <set>
@@ -13,7 +15,6 @@
 
 #include "language/grammar.hpp"
 #include "language/interpreter.hpp"
-#include "language/keyword_rules.hpp"
 
 namespace lang = hexant::language;
 
@@ -99,8 +100,7 @@ const std::map<std::string, Probe>& probes() {
             p[word] = {std::string("global_settings { radiosity { ") + word + " \"a.rad\" } }",
                        "radiosity"};
         for (const char* word : {"spacing", "gather", "autostop", "expand_thresholds"})
-            p[word] = {std::string("global_settings { photons { ") + word + " 0.1 } }",
-                       "photons"};
+            p[word] = {std::string("global_settings { photons { ") + word + " 0.1 } }", "photons"};
         for (const char* word : {"collect", "pass_through", "split_union", "target", "refraction"})
             p[word] = {std::string("sphere { 0, 1 photons { ") + word + " on } }", "photons"};
         // Harmless: no warning.
@@ -133,8 +133,8 @@ Reading read(const std::string& line2, bool strict = false) {
     options.messages = &messages;
     Reading r;
     try {
-        r.warnings = lang::parse_scene_text("#version 3.7;\n" + line2 + "\n", "probe.pov", options)
-                         .warnings;
+        r.warnings =
+            lang::parse_scene_text("#version 3.7;\n" + line2 + "\n", "probe.pov", options).warnings;
     } catch (const lang::SceneError& e) {
         r.error = e;
     }
@@ -183,9 +183,9 @@ TEST_CASE("a warned word warns at its line, and --strict refuses it", "[language
         REQUIRE_FALSE(r.error);
         bool named = false;
         for (const auto& w : r.warnings)
-            named = named || (w.rfind("probe.pov:2:", 0) == 0 &&
-                              w.find("'" + probe.named + "' is read but not rendered") !=
-                                  std::string::npos);
+            named = named ||
+                    (w.rfind("probe.pov:2:", 0) == 0 &&
+                     w.find("'" + probe.named + "' is read but not rendered") != std::string::npos);
         CHECK(named);
         const Reading strict = read(probe.text, true);
         REQUIRE(strict.error);
@@ -242,9 +242,32 @@ TEST_CASE("a declaration hexant cannot render warns only where it is used",
     // declaration's line and the object's.
     const std::string declared = "#declare I = interior { ior 1.5 fade_distance 2 }";
     CHECK(read(declared).warnings.empty());
-    const Reading used = read(declared + "\nsphere { 0, 1 interior { I } }\n"
-                                         "sphere { 2, 1 interior { I } }");
+    const Reading used = read(declared +
+                              "\nsphere { 0, 1 interior { I } }\n"
+                              "sphere { 2, 1 interior { I } }");
     REQUIRE(used.warnings.size() == 1);  // once, however many use it
     CHECK(used.warnings[0].rfind("probe.pov:2:", 0) == 0);
     CHECK(used.warnings[0].find("(used by the object at probe.pov:3)") != std::string::npos);
+}
+
+TEST_CASE("a scene POV-Ray reads with its legacy gamma rule says so", "[language][keywords]") {
+    // POV-Ray 3.7 renders a scene whose #version ends below 3.7 (3.62 when
+    // there is none) and that sets no assumed_gamma without gamma
+    // correction; hexant uses 3.7's rule and warns, at line 1.
+    const auto warnings = [](const std::string& text) {
+        lang::ParseOptions options;
+        std::ostringstream messages;
+        options.messages = &messages;
+        return lang::parse_scene_text(text, "legacy.pov", options).warnings;
+    };
+    const std::string object = "sphere { 0, 1 pigment { rgb 0.5 } }\n";
+    const auto none = warnings(object);
+    REQUIRE(none.size() == 1);
+    CHECK(none[0].rfind("legacy.pov:1:1: warning: the scene has no #version", 0) == 0);
+    CHECK(warnings("#version 3.6;\n" + object).size() == 1);
+    CHECK(warnings("#version 3.7;\n" + object).empty());
+    CHECK(warnings("global_settings { assumed_gamma 1 }\n" + object).empty());
+    // A version changed and restored, as colors.inc does, leaves 3.7.
+    CHECK(warnings("#declare V = version; #version 3.5; #version V;\n" + object).empty());
+    CHECK(warnings("#debug \"nothing to see\"\n").empty());
 }
