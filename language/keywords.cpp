@@ -245,6 +245,8 @@ constexpr auto kReserved = std::to_array<std::string_view>({
     "quadratic_spline",
     "quadric",
     "quartic",
+    "quick_color",
+    "quick_colour",
     "radians",
     "radiosity",
     "radius",

@@ -210,6 +210,26 @@ struct action<g::image_map_block> {
     }
 };
 
+// red, green, blue, filter or transmit A in a pigment: the component of its
+// plain colour (POV-Ray's Parse_Colour, which reads on after a colour).
+template <>
+struct action<g::pigment_component> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        const TimeFunction v = to_float(st.values.pop(), "a colour component");
+        const std::string name = st.values.pop_name();
+        auto& pigment = st.blocks.edit<runtime::Pigment>(in.position(), name.c_str());
+        if (pigment.pattern != runtime::Pigment::Pattern::Solid || pigment.colours.size() != 1)
+            throw ValueError("'" + name +
+                             "' sets a component of a plain colour; this pigment has a pattern");
+        const int i = name == "red"      ? 0
+                      : name == "green"  ? 1
+                      : name == "blue"   ? 2
+                      : name == "filter" ? 3
+                                         : 4;
+        pigment.colours[0].c[i] = v;
+    }
+};
 template <>
 struct action<g::colour_map_open> {
     template <typename ActionInput>

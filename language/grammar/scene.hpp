@@ -100,7 +100,9 @@ struct global_item : p::sor<directive<global_item>, global_setting, global_chars
 struct global_settings_block
     : p::seq<kw_global_settings, p::must<lbrace>, p::star<global_item>, p::must<rbrace>> {};
 
-// #default { texture { } | pigment { } | normal { } | finish { } }
+// #default { texture { } | pigment { } | normal { } | finish { } }, also
+// written without its '#' (POV-Ray 3.7 reads both: the distribution's
+// colors.pov and laser.pov).
 struct default_item : p::sor<texture_block, pigment_block, normal_block, finish_block> {};
 struct default_block : p::seq<kw_default, p::must<lbrace>, p::star<default_item>, p::must<rbrace>> {
 };
@@ -159,7 +161,7 @@ struct scene_camera : p::seq<camera_block> {};
 struct scene_sky_sphere : p::seq<sky_sphere_block> {};
 struct scene_item : p::sor<directive<scene_item>, macro_call<scene_item>, scene_object,
                            scene_camera, background_block, scene_sky_sphere, fog_block,
-                           global_settings_block, scene_unsupported, semicolon> {};
+                           global_settings_block, default_block, scene_unsupported, semicolon> {};
 struct scene_end : p::eof {};
 struct scene_file : p::seq<ws, p::star<scene_item>, p::must<scene_end>> {};
 

@@ -141,10 +141,20 @@ struct image_map_block : p::seq<image_map_open, p::opt<image_file_type>, p::must
 struct pigment_block;
 // A block pattern's pigments: checker pigment { } pigment { }.
 struct pigment_list_pigment : p::seq<pigment_block, p::opt<comma>> {};
+// A colour component after a plain pigment's colour, or alone: `White
+// filter 0.9`, `red 0.7 green 0.2` (POV-Ray's Parse_Colour goes on reading
+// components after a colour).
+struct pigment_component : p::seq<colour_component_name, ws, p::must<colour_component_value>> {};
+// quick_color COLOUR: POV-Ray's colour for its quality levels below 6;
+// read and not used (language/keyword_rules.cpp: harmless).
+struct pigment_quick_colour
+    : p::seq<p::sor<TAO_PEGTL_KEYWORD("quick_color"), TAO_PEGTL_KEYWORD("quick_colour")>, ws,
+             p::must<ignored_value>> {};
 struct pigment_item
     : p::sor<directive<pigment_item>, macro_call<pigment_item>, pattern_kind, pattern_setting,
              pattern_wave, warp_block, pigment_colour_map, pigment_map_block, image_map_block,
-             pigment_list_pigment, uv_mapping, unsupported_pattern, transformation> {};
+             pigment_list_pigment, pigment_quick_colour, pigment_component, uv_mapping,
+             unsupported_pattern, transformation> {};
 struct pigment_block
     : p::seq<pigment_open, p::opt<pigment_base>, p::star<pigment_item>, p::must<rbrace>> {};
 

@@ -113,6 +113,8 @@ const std::map<std::string, Probe>& probes() {
                  {"media_attenuation", "light_source { 0, 1 media_attenuation on }"},
                  {"max_intersections", "global_settings { max_intersections 64 }"},
                  {"debug", "#debug \"a line\\n\""},
+                 {"quick_color", "sphere { 0, 1 pigment { rgb 1 quick_color rgb 0.5 } }"},
+                 {"quick_colour", "sphere { 0, 1 pigment { rgb 1 quick_colour rgb 0.5 } }"},
                  {"hierarchy",
                   "mesh { triangle { <0, 0, 0>, <1, 0, 0>, <0, 1, 0> } hierarchy off }"}})
             p[word] = {text, ""};

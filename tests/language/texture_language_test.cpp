@@ -6,6 +6,7 @@
 // what POV-Ray refuses, a pattern hexant lacks in a normal is an error when
 // the scene is checked, and global_settings { noise_generator } reaches
 // the patterns after it.
+#include <array>
 #include <string>
 
 #include <catch2/catch.hpp>
@@ -231,4 +232,50 @@ TEST_CASE("global_settings { noise_generator } reaches the patterns after it",
         "sphere { 0, 1 pigment { bozo noise_generator 1 } }\n");
     CHECK(texture_of(scene, 0).pigment.patterned.noise_generator == 3);
     CHECK(texture_of(scene, 1).pigment.patterned.noise_generator == 1);
+}
+
+TEST_CASE("#default reaches every part of a texture, with or without its #", "[language]") {
+    // POV-Ray 3.7's Parse_Texture and Parse_Object_Mods start from a copy of
+    // the #default texture as it is then (tests/tracer/pov_reference/
+    // textures/default.pov is the image of it); `default { }` is the same.
+    const auto scene = read(R"(
+default { finish { ambient 0.3 phong 0.5 } }
+sphere { 0, 1 pigment { rgb 1 } }
+sphere { 0, 1 texture { pigment { rgb 1 } finish { diffuse 0.2 } } }
+#default { normal { bumps 0.5 } }
+sphere { 0, 1 pigment { rgb 1 } }
+)");
+    const rt::Finish& first = texture_of(scene, 0).finish;
+    CHECK(first.ambient.constant() == 0.3);
+    CHECK(first.phong.constant() == 0.5);
+    const rt::Finish& second = texture_of(scene, 1).finish;
+    CHECK(second.ambient.constant() == 0.3);  // kept from the default
+    CHECK(second.diffuse.constant() == 0.2);
+    CHECK_FALSE(texture_of(scene, 1).normal);  // the normal came later
+    CHECK(texture_of(scene, 2).normal);
+    CHECK(error_of("#default { texture { checker texture { } texture { } } }")
+              .places()
+              .front()
+              .line == 1);
+}
+
+TEST_CASE("colour components after a pigment's colour, as POV-Ray reads them", "[language]") {
+    // POV-Ray's Parse_Colour reads on after a colour (the distribution's
+    // chess2, drums, ballbox1, crystal, shadows): `White filter 0.25`,
+    // `red 0.75 green 0.5` from the default black, `rgb 1 transmit 0.3`.
+    const auto scene = read(R"(
+#declare White = rgb 1;
+sphere { 0, 1 pigment { White filter 0.25 } }
+sphere { 0, 1 pigment { red 0.75 green 0.5 } }
+sphere { 0, 1 pigment { rgb 1 transmit 0.3 } }
+)");
+    const auto colour = [&](std::size_t i) {
+        const auto& c = texture_of(scene, i).pigment.colours.at(0).c;
+        return std::array<double, 5>{c[0].constant(), c[1].constant(), c[2].constant(),
+                                     c[3].constant(), c[4].constant()};
+    };
+    CHECK(colour(0) == std::array<double, 5>{1, 1, 1, 0.25, 0});
+    CHECK(colour(1) == std::array<double, 5>{0.75, 0.5, 0, 0, 0});
+    CHECK(colour(2) == std::array<double, 5>{1, 1, 1, 0, 0.3});
+    CHECK(error_of("sphere { 0, 1 pigment { checker red 1 } }").places().front().line == 1);
 }
