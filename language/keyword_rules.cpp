@@ -466,7 +466,7 @@ constexpr auto kRules = std::to_array<KeywordRuleEntry>({
     {"transmit", KeywordRule::Rendered, ""},
     {"triangle", KeywordRule::Rendered, ""},
     {"triangle_wave", KeywordRule::Rendered, ""},
-    {"triangular", KeywordRule::Refused, ""},
+    {"triangular", KeywordRule::Rendered, ""},
     {"true", KeywordRule::Rendered, ""},
     {"ttf", KeywordRule::Rendered, ""},
     {"turb_depth", KeywordRule::Rendered, ""},

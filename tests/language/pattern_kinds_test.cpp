@@ -153,3 +153,24 @@ TEST_CASE("square paves the x-z plane with POV-Ray's four colours", "[pattern][r
               .what() ==
           std::string("test.pov:1:25: square takes at most 4 colours, not 5 values"));
 }
+
+TEST_CASE("triangular tiles the x-z plane with POV-Ray's six colours", "[pattern][registry]") {
+    // POV-Ray 3.7's triangular_pattern: around the vertex at the origin the
+    // six triangles are 0 (above, between x = 0 and 1), 1, ..., and the
+    // fold repeats every 3 along x and sqrt(3) along z.
+    const pt::Kind& triangular = *pt::find_kind("triangular");
+    const pt::Values v;
+    const auto at = [&](double x, double z) { return triangular.value(glm::dvec3(x, 0.0, z), v); };
+    CHECK(at(0.5, 0.2) == 0.0);  // the triangle standing on [0, 1]
+    CHECK(at(0.1, 0.7) == 1.0);  // left of it (above the edge from x = 0)
+    CHECK(at(0.9, 0.7) == 3.0);  // right of it
+    CHECK(at(1.5, 0.2) == 4.0);  // the next column's, numbered on by 2
+    CHECK(at(0.5, 1.5) == 5.0);  // the upper half mirrors: 5 - 0
+    CHECK(at(3.5, 0.2) == at(0.5, 0.2));
+    CHECK(at(0.5, 0.2 + std::sqrt(3.0)) == at(0.5, 0.2));
+    CHECK(at(std::numeric_limits<double>::quiet_NaN(), 0.0) == 0.0);
+    CHECK(triangular.colours == 6);
+    CHECK_FALSE(triangular.frequency);
+    REQUIRE(triangular.default_map.size() == 6);
+    CHECK(triangular.default_map[5].colour == std::array<double, 5>{1, 0, 1, 0, 0});
+}

@@ -475,6 +475,15 @@ TEST_CASE("square agrees with POV-Ray 3.7's", "[tracer][pov][pattern]") {
     check_stills("patterns", "square", {"0", "0.5"});
 }
 
+TEST_CASE("triangular agrees with POV-Ray 3.7's", "[tracer][pov][pattern]") {
+    // patterns/triangular.pov: the default colours moving along x, six of
+    // its own (one changing with clock) turned with clock, and under
+    // turbulence, at clock 0 and 0.5. The still's tolerance (exact when
+    // written); a triangle numbered the wrong way round its vertex, or the
+    // upper half not mirrored, moves a sixth of the plane's pixels.
+    check_stills("patterns", "triangular", {"0", "0.5"});
+}
+
 TEST_CASE("a pigment_map agrees with POV-Ray 3.7's", "[tracer][pov][pattern]") {
     // patterns/pigment_map.pov: pigments (declared, a colour, patterns of
     // their own) blended by gradient and by marble, in the outer pattern's

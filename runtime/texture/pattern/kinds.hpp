@@ -31,6 +31,7 @@
 #include "runtime/texture/pattern/kinds/spiral2.hpp"
 #include "runtime/texture/pattern/kinds/spotted.hpp"
 #include "runtime/texture/pattern/kinds/square.hpp"
+#include "runtime/texture/pattern/kinds/triangular.hpp"
 #include "runtime/texture/pattern/kinds/waves.hpp"
 #include "runtime/texture/pattern/kinds/wood.hpp"
 #include "runtime/texture/pattern/kinds/wrinkles.hpp"
@@ -68,6 +69,7 @@ using PatternKinds = PatternKindList<
     kinds::Spiral2,
     kinds::Spotted,
     kinds::Square,
+    kinds::Triangular,
     kinds::Waves,
     kinds::Wood,
     kinds::Wrinkles>;
