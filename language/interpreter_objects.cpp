@@ -7,6 +7,7 @@
 #include <regex>
 #include <set>
 #include <sstream>
+#include <variant>
 
 #include "language/checked_integer.hpp"
 #include "language/interpreter.hpp"
@@ -174,6 +175,14 @@ void Interpreter::report_unrendered(const runtime::ObjectRecord& object, const p
         if (record.interior)
             for (const auto& note : record.interior->unrendered) visit(note);
         if (record.texture) for_each_unrendered(*record.texture, seen, visit);
+        // A kind's own parts' textures (a mesh's faces).
+        std::visit(
+            [&](const auto& shape) {
+                if constexpr (requires { shape.part_textures(); })
+                    for (const auto& part : shape.part_textures())
+                        for_each_unrendered(part, seen, visit);
+            },
+            record.shape);
     });
 }
 

@@ -250,6 +250,12 @@ TEST_CASE("a declaration hexant cannot render warns only where it is used",
     REQUIRE(used.warnings.size() == 1);  // once, however many use it
     CHECK(used.warnings[0].rfind("probe.pov:2:", 0) == 0);
     CHECK(used.warnings[0].find("(used by the object at probe.pov:3)") != std::string::npos);
+    // A mesh face's own texture is used by the mesh.
+    const Reading face = read(
+        "#declare T = texture { pigment { rgb 1 } finish { crand 0.1 } }\n"
+        "mesh { triangle { <0, 0, 0>, <1, 0, 0>, <0, 1, 0> texture { T } } }");
+    REQUIRE(face.warnings.size() == 1);
+    CHECK(face.warnings[0].find("'crand'") != std::string::npos);
 }
 
 TEST_CASE("a scene POV-Ray reads with its legacy gamma rule says so", "[language][keywords]") {
