@@ -39,6 +39,20 @@ std::string word(const ActionInput& in) {
     return s.substr(0, n);
 }
 
+// A word hexant reads but does not render as POV-Ray does (its keyword
+// rule Warned), kept with the block it belongs to (a finish, an interior,
+// an object) and warned where an object uses it
+// (Interpreter::report_unrendered).
+template <class Record>
+struct unrendered_action {
+    template <typename ActionInput>
+    static void apply(const ActionInput& in, Interpreter& st) {
+        const std::string w = word(in);
+        st.blocks.edit<Record>(in.position(), w.c_str())
+            .unrendered.push_back(st.unrendered(in.position(), w));
+    }
+};
+
 // Rules whose action is to remember the word they matched.
 struct name_action {
     template <typename ActionInput>

@@ -266,6 +266,11 @@ struct action<g::colour_base> {
     }
 };
 
+// red, green, blue, filter, transmit: the component's index in a colour.
+inline int colour_component_index(const std::string& name) {
+    return name == "red" ? 0 : name == "green" ? 1 : name == "blue" ? 2 : name == "filter" ? 3 : 4;
+}
+
 template <>
 struct action<g::colour_component_setting> {
     template <typename ActionInput>
@@ -274,12 +279,7 @@ struct action<g::colour_component_setting> {
         const TimeFunction v = to_float(st.values.pop(), "a colour component");
         const std::string name = st.values.pop_name();
         Vector& c = st.values.top().as<Vector>();
-        const int i = name == "red"      ? 0
-                      : name == "green"  ? 1
-                      : name == "blue"   ? 2
-                      : name == "filter" ? 3
-                                         : 4;
-        c.c[i] = v;
+        c.c[colour_component_index(name)] = v;
     }
 };
 

@@ -222,12 +222,7 @@ struct action<g::pigment_component> {
         if (pigment.pattern != runtime::Pigment::Pattern::Solid || pigment.colours.size() != 1)
             throw ValueError("'" + name +
                              "' sets a component of a plain colour; this pigment has a pattern");
-        const int i = name == "red"      ? 0
-                      : name == "green"  ? 1
-                      : name == "blue"   ? 2
-                      : name == "filter" ? 3
-                                         : 4;
-        pigment.colours[0].c[i] = v;
+        pigment.colours[0].c[colour_component_index(name)] = v;
     }
 };
 template <>
@@ -446,26 +441,12 @@ struct action<g::reflection_metallic> {
 // conserve_energy, fresnel, irid { }, subsurface { }: kept with the finish,
 // warned where it is used.
 template <>
-struct action<g::finish_flag> {
-    template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        const std::string w = word(in);
-        st.blocks.edit<runtime::Finish>(in.position(), w.c_str())
-            .unrendered.push_back(st.unrendered(in.position(), w));
-    }
-};
+struct action<g::finish_flag> : unrendered_action<runtime::Finish> {};
 template <>
-struct action<g::finish_ignored_block> : action<g::finish_flag> {};
+struct action<g::finish_ignored_block> : unrendered_action<runtime::Finish> {};
 // caustics, dispersion, fade_*, media in an interior.
 template <>
-struct action<g::interior_ignored_setting> {
-    template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        const std::string w = word(in);
-        st.blocks.edit<runtime::Interior>(in.position(), w.c_str())
-            .unrendered.push_back(st.unrendered(in.position(), w));
-    }
-};
+struct action<g::interior_ignored_setting> : unrendered_action<runtime::Interior> {};
 // In reflection { }: falloff, exponent, fresnel, and a maximum after a
 // comma (variable reflection); metallic is rendered (reflection_metallic).
 template <>

@@ -261,13 +261,6 @@ struct action<g::shape_setting> {
 template <>
 struct action<g::shape_vectors_setting> : action<g::shape_setting> {};
 template <>
-struct action<g::object_ignored_block> {
-    template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        const std::string w = word(in);
-        st.blocks.edit<runtime::ObjectRecord>(in.position(), w.c_str())
-            .unrendered.push_back(st.unrendered(in.position(), w));
-    }
-};
+struct action<g::object_ignored_block> : unrendered_action<runtime::ObjectRecord> {};
 
 }  // namespace hexant::language
