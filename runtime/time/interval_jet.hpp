@@ -222,6 +222,7 @@ inline IntervalJet apply_op(TimeOp op, const IntervalJet& a, const IntervalJet& 
     switch (op) {
         case TimeOp::Constant:
         case TimeOp::Clock:
+        case TimeOp::Argument:
         case TimeOp::SplineComponent:
             return a;
         case TimeOp::Negate:

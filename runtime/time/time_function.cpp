@@ -1,10 +1,14 @@
 #include "runtime/time/time_function.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
 
 #include "runtime/motion/spline.hpp"
 #include "runtime/time/time_ops.hpp"
@@ -12,7 +16,7 @@
 namespace hexant::runtime {
 
 int arity(TimeOp op) {
-    if (op == TimeOp::Constant || op == TimeOp::Clock) return 0;
+    if (op == TimeOp::Constant || op == TimeOp::Clock || op == TimeOp::Argument) return 0;
     if (op <= TimeOp::SrgbDecode || op == TimeOp::SplineComponent) return 1;
     if (op <= TimeOp::Or) return 2;
     return 3;
@@ -100,6 +104,8 @@ const char* name(TimeOp op) {
             return "?:";
         case TimeOp::SplineComponent:
             return "spline";
+        case TimeOp::Argument:
+            return "argument";
     }
     return "?";
 }
@@ -179,6 +185,24 @@ TimeFunction TimeFunction::clock() {
     return the_clock;
 }
 
+TimeFunction TimeFunction::argument(int index) {
+    if (index < 0 || index >= kMaxArguments)
+        throw std::out_of_range("a function has at most " + std::to_string(kMaxArguments) +
+                                " parameters");
+    // One node per index, as for clock: a tape computes each once.
+    static const std::array<TimeFunction, kMaxArguments> arguments = [] {
+        std::array<TimeFunction, kMaxArguments> all;
+        for (int i = 0; i < kMaxArguments; ++i) {
+            auto node = std::make_unique<Node>();
+            node->op = TimeOp::Argument;
+            node->component = i;
+            all[i] = TimeFunction(node.release());
+        }
+        return all;
+    }();
+    return arguments[index];
+}
+
 TimeFunction TimeFunction::apply(TimeOp op, const TimeFunction& a) {
     if (a.is_constant()) return TimeFunction(apply_op(op, a.constant()));
     auto node = std::make_unique<Node>();
@@ -241,6 +265,8 @@ double TimeFunction::operator()(double t) const {
             return t;
         case TimeOp::SplineComponent:
             return n.spline->evaluate(n.args[0](t))[n.component];
+        case TimeOp::Argument:
+            throw std::logic_error("a user function's argument read as a function of time");
         default:
             break;
     }
@@ -268,6 +294,9 @@ std::string TimeFunction::to_string() const {
     switch (n.op) {
         case TimeOp::Clock:
             return "clock";
+        case TimeOp::Argument:
+            if (n.component < 3) return std::string(1, static_cast<char>('x' + n.component));
+            return "argument" + std::to_string(n.component + 1);
         case TimeOp::Negate:
             return "-" + n.args[0].to_string();
         case TimeOp::Not:
@@ -291,6 +320,84 @@ std::string TimeFunction::to_string() const {
     for (int i = 0; i < arity(n.op); ++i) out << (i ? ", " : "") << n.args[i].to_string();
     out << ")";
     return out.str();
+}
+
+namespace {
+
+// Visits f's nodes children first, each once, without recursion (bodies can
+// be deep); visit(node) sees every argument's node visited before it.
+template <class Visit>
+void post_order(const TimeFunction& f, Visit&& visit) {
+    if (f.is_constant()) return;
+    std::unordered_set<const TimeFunction::Node*> done;
+    std::vector<const TimeFunction::Node*> stack{f.node()};
+    while (!stack.empty()) {
+        const TimeFunction::Node* node = stack.back();
+        if (done.count(node)) {
+            stack.pop_back();
+            continue;
+        }
+        bool ready = true;
+        for (int i = 0; i < arity(node->op); ++i) {
+            const TimeFunction::Node* arg = node->args[i].node();
+            if (arg != nullptr && !done.count(arg)) {
+                stack.push_back(arg);
+                ready = false;
+            }
+        }
+        if (!ready) continue;
+        visit(node);
+        done.insert(node);
+        stack.pop_back();
+    }
+}
+
+}  // namespace
+
+TimeFunction substitute_arguments(const TimeFunction& f,
+                                  const std::vector<TimeFunction>& arguments) {
+    if (f.is_constant()) return f;
+    std::unordered_map<const TimeFunction::Node*, TimeFunction> made;
+    const auto rebuilt = [&](const TimeFunction& a) {
+        return a.is_constant() ? a : made.at(a.node());
+    };
+    post_order(f, [&](const TimeFunction::Node* node) {
+        TimeFunction out;
+        switch (node->op) {
+            case TimeOp::Argument:
+                out = arguments.at(static_cast<std::size_t>(node->component));
+                break;
+            case TimeOp::Clock:
+                out = TimeFunction::clock();
+                break;
+            case TimeOp::SplineComponent:
+                out = TimeFunction::spline_component(node->spline, node->component,
+                                                     rebuilt(node->args[0]));
+                break;
+            default:
+                switch (arity(node->op)) {
+                    case 1:
+                        out = TimeFunction::apply(node->op, rebuilt(node->args[0]));
+                        break;
+                    case 2:
+                        out = TimeFunction::apply(node->op, rebuilt(node->args[0]),
+                                                  rebuilt(node->args[1]));
+                        break;
+                    default:
+                        out = TimeFunction::apply(node->op, rebuilt(node->args[0]),
+                                                  rebuilt(node->args[1]), rebuilt(node->args[2]));
+                }
+        }
+        made.emplace(node, std::move(out));
+    });
+    return made.at(f.node());
+}
+
+bool uses_arguments(const TimeFunction& f) {
+    bool found = false;
+    post_order(
+        f, [&](const TimeFunction::Node* node) { found = found || node->op == TimeOp::Argument; });
+    return found;
 }
 
 TimeFunction operator+(const TimeFunction& a, const TimeFunction& b) {

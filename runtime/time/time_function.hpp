@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "runtime/time/limit_error.hpp"
 
@@ -67,6 +68,12 @@ enum class TimeOp {
     Conditional,
     // spline component: SplineComponent(t) = spline(t)[component]
     SplineComponent,
+    // A user function's argument number `component` (x, y, z are 0, 1, 2
+    // in POV-Ray's default function(x, y, z)): nullary, as clock. Only a
+    // user function's body holds it (runtime/time/user_function.hpp); a
+    // call substitutes the arguments, and the tape of an isosurface's
+    // function is evaluated with them.
+    Argument,
 };
 
 int arity(TimeOp op);
@@ -85,6 +92,9 @@ class TimeFunction {
     // A constant function.
     TimeFunction(double value = 0.0);  // NOLINT: implicit on purpose, numbers are functions
     static TimeFunction clock();
+    // Argument number `index` of a user function (0 <= index < kMaxArguments).
+    static TimeFunction argument(int index);
+    static constexpr int kMaxArguments = 64;
 
     TimeFunction(const TimeFunction& other) noexcept;
     TimeFunction(TimeFunction&& other) noexcept : bits_(other.bits_) { other.bits_ = 0; }
@@ -146,6 +156,15 @@ inline constexpr int kMaxTimeFunctionDepth = 10000;
 struct TimeFunctionTooDeep : LimitError {
     TimeFunctionTooDeep();
 };
+
+// f with each Argument(k) replaced by arguments[k] (a user function's call:
+// its body with the call's arguments in place), folding what becomes
+// constant. Shared sub-functions stay shared. Throws std::out_of_range for
+// an argument index past arguments' end.
+TimeFunction substitute_arguments(const TimeFunction& f,
+                                  const std::vector<TimeFunction>& arguments);
+// Whether f holds an Argument (a user function's body that reads x, y, z).
+bool uses_arguments(const TimeFunction& f);
 
 TimeFunction operator+(const TimeFunction& a, const TimeFunction& b);
 TimeFunction operator-(const TimeFunction& a, const TimeFunction& b);

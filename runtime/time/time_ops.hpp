@@ -24,6 +24,7 @@ inline double apply_op(TimeOp op, double a, double b = 0.0, double c = 0.0) {
     switch (op) {
         case TimeOp::Constant:
         case TimeOp::Clock:
+        case TimeOp::Argument:
         case TimeOp::SplineComponent:
             return a;
         case TimeOp::Negate:

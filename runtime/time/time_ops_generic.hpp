@@ -103,6 +103,7 @@ inline Interval apply_op(TimeOp op, const Interval& a, const Interval& b = 0.0,
     switch (op) {
         case TimeOp::Constant:
         case TimeOp::Clock:
+        case TimeOp::Argument:
         case TimeOp::SplineComponent:
             return a;
         case TimeOp::Negate:
@@ -200,6 +201,7 @@ inline Dual apply_op(TimeOp op, const Dual& a, const Dual& b = 0.0, const Dual& 
     switch (op) {
         case TimeOp::Constant:
         case TimeOp::Clock:
+        case TimeOp::Argument:
         case TimeOp::SplineComponent:
             return a;
         case TimeOp::Negate:

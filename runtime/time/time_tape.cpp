@@ -1,5 +1,6 @@
 #include "runtime/time/time_tape.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <optional>
 #include <stdexcept>
@@ -17,6 +18,7 @@ class TapeBuilder {
   public:
     std::vector<TimeTape::Instruction> code;
     std::vector<std::shared_ptr<const Spline>> splines;
+    int arguments = 0;  // 1 + the largest argument index read
 
     std::uint32_t constant(double value) {
         const auto key = std::bit_cast<std::uint64_t>(value);  // -0 and 0 stay apart
@@ -39,7 +41,7 @@ class TapeBuilder {
                 stack.pop_back();
                 continue;
             }
-            const int n = node->op == TimeOp::Clock ? 0 : arity(node->op);
+            const int n = arity(node->op);
             bool ready = true;
             for (int i = 0; i < n; ++i) {
                 const TimeFunction& arg = node->args[i];
@@ -72,6 +74,10 @@ class TapeBuilder {
             case TimeOp::Clock:
                 if (!clock_) clock_ = emit(in);
                 return *clock_;
+            case TimeOp::Argument:
+                in.component = node.component;
+                arguments = std::max(arguments, node.component + 1);
+                return emit(in);
             case TimeOp::Constant:
                 throw std::logic_error("a constant time function node");
             case TimeOp::SplineComponent: {
@@ -111,6 +117,7 @@ TimeTape TimeTape::compile(const std::vector<TimeFunction>& outputs) {
     for (const TimeFunction& f : outputs) tape.outputs_.push_back(builder.slot(f));
     tape.code_ = std::move(builder.code);
     tape.splines_ = std::move(builder.splines);
+    tape.argument_count_ = builder.arguments;
     for (const auto& spline : tape.splines_) tape.spline_bounds_.emplace_back(*spline);
     return tape;
 }
@@ -140,6 +147,14 @@ IntervalJet TimeTape::spline_value(const Instruction& in, const IntervalJet& p) 
 
 template <class Number>
 void TimeTape::evaluate(Number t, Number* outputs, Number* scratch) const {
+    if (argument_count_ > 0)
+        throw std::logic_error("a tape of a user function evaluated without its arguments");
+    evaluate_with<Number>(t, nullptr, outputs, scratch);
+}
+
+template <class Number>
+void TimeTape::evaluate_with(Number t, const Number* arguments, Number* outputs,
+                             Number* scratch) const {
     const std::size_t n = code_.size();
     for (std::size_t i = 0; i < n; ++i) {
         const Instruction& in = code_[i];
@@ -149,6 +164,9 @@ void TimeTape::evaluate(Number t, Number* outputs, Number* scratch) const {
                 break;
             case TimeOp::Clock:
                 scratch[i] = t;
+                break;
+            case TimeOp::Argument:
+                scratch[i] = arguments[in.component];
                 break;
             case TimeOp::SplineComponent:
                 scratch[i] = spline_value(in, scratch[in.a]);
@@ -181,6 +199,10 @@ template void TimeTape::evaluate<PointRange>(PointRange, PointRange*, PointRange
 template void TimeTape::evaluate<Interval>(Interval, Interval*, Interval*) const;
 template void TimeTape::evaluate<Dual>(Dual, Dual*, Dual*) const;
 template void TimeTape::evaluate<IntervalJet>(IntervalJet, IntervalJet*, IntervalJet*) const;
+template void TimeTape::evaluate_with<double>(double, const double*, double*, double*) const;
+template void TimeTape::evaluate_with<Interval>(Interval, const Interval*, Interval*,
+                                                Interval*) const;
+template void TimeTape::evaluate_with<Dual>(Dual, const Dual*, Dual*, Dual*) const;
 template void TimeTape::evaluate<double>(double, double*) const;
 template void TimeTape::evaluate<Interval>(Interval, Interval*) const;
 template void TimeTape::evaluate<Dual>(Dual, Dual*) const;

@@ -57,6 +57,13 @@ class TimeTape {
     template <class Number>
     void evaluate(Number t, Number* outputs, Number* scratch) const;
 
+    // A user function's tape (runtime/time/user_function.hpp): arguments[k]
+    // is its argument k, for k < argument_count(). evaluate() refuses such
+    // a tape.
+    template <class Number>
+    void evaluate_with(Number t, const Number* arguments, Number* outputs, Number* scratch) const;
+    int argument_count() const { return argument_count_; }
+
     // As above, with scratch on the stack for small tapes.
     template <class Number>
     void evaluate(Number t, Number* outputs) const;
@@ -70,6 +77,7 @@ class TimeTape {
 
     std::vector<Instruction> code_;
     std::vector<std::uint32_t> outputs_;
+    int argument_count_ = 0;
     std::vector<std::shared_ptr<const Spline>> splines_;
     std::vector<SplineBounds> spline_bounds_;  // beside splines_
 };
@@ -80,6 +88,10 @@ extern template void TimeTape::evaluate<PointRange>(PointRange, PointRange*, Poi
 extern template void TimeTape::evaluate<Interval>(Interval, Interval*, Interval*) const;
 extern template void TimeTape::evaluate<Dual>(Dual, Dual*, Dual*) const;
 extern template void TimeTape::evaluate<IntervalJet>(IntervalJet, IntervalJet*, IntervalJet*) const;
+extern template void TimeTape::evaluate_with<double>(double, const double*, double*, double*) const;
+extern template void TimeTape::evaluate_with<Interval>(Interval, const Interval*, Interval*,
+                                                       Interval*) const;
+extern template void TimeTape::evaluate_with<Dual>(Dual, const Dual*, Dual*, Dual*) const;
 extern template void TimeTape::evaluate<double>(double, double*) const;
 extern template void TimeTape::evaluate<Interval>(Interval, Interval*) const;
 extern template void TimeTape::evaluate<Dual>(Dual, Dual*) const;
