@@ -2,7 +2,8 @@
 // the grammar, working on the Interpreter's value stack and block stack. They
 // live in language/actions/, one file a part beside its rules' part of the
 // grammar, each including the one before it: action, literals, operators, directives,
-// transformations, patterns, maps, materials, objects, meshes, lights, scene, arrays.
+// transformations, patterns, maps, materials, objects, meshes, lights, scene, arrays,
+// functions, isosurfaces.
 #pragma once
 
-#include "language/actions/arrays.hpp"
+#include "language/actions/isosurfaces.hpp"

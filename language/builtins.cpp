@@ -165,6 +165,27 @@ const std::map<std::string, Builtin>& table() {
         {"sinh", hyperbolic(-1.0, false)},
         {"cosh", hyperbolic(1.0, false)},
         {"tanh", hyperbolic(1.0, true)},
+        // The inverses by their logarithms (POV-Ray calls the C library's).
+        {"asinh",
+         [](const std::string& n, const Args& a, RandomStreams&) {
+             expect_count(n, a, 1, 1);
+             const TimeFunction x = arg_float(n, a, 0);
+             return Value{TimeFunction::apply(TimeOp::Ln,
+                                              x + TimeFunction::apply(TimeOp::Sqrt, x * x + 1.0))};
+         }},
+        {"acosh",
+         [](const std::string& n, const Args& a, RandomStreams&) {
+             expect_count(n, a, 1, 1);
+             const TimeFunction x = arg_float(n, a, 0);
+             return Value{TimeFunction::apply(TimeOp::Ln,
+                                              x + TimeFunction::apply(TimeOp::Sqrt, x * x - 1.0))};
+         }},
+        {"atanh",
+         [](const std::string& n, const Args& a, RandomStreams&) {
+             expect_count(n, a, 1, 1);
+             const TimeFunction x = arg_float(n, a, 0);
+             return Value{TimeFunction::apply(TimeOp::Ln, (1.0 + x) / (1.0 - x)) * 0.5};
+         }},
         {"atan2", binary(TimeOp::Atan2)},
         {"pow", binary(TimeOp::Pow)},
         {"mod", binary(TimeOp::Mod)},

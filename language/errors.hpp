@@ -95,6 +95,11 @@ HEXANT_ERROR(mesh_inside_vector_value, "expected the inside_vector's direction")
 HEXANT_ERROR(shape_argument, "expected a parameter");
 HEXANT_ERROR(first_shape_argument, "expected a parameter");
 HEXANT_ERROR(object_close, "expected '}' or a modifier that belongs in this object");
+HEXANT_ERROR(function_parameter, "expected a parameter's name after ','");
+HEXANT_ERROR(function_internal_number, "expected internal()'s number");
+HEXANT_ERROR(function_close, "expected '}' to end the function's body");
+HEXANT_ERROR(contained_by_shape, "expected box { corner, corner } or sphere { centre, radius }");
+HEXANT_ERROR(function_content, "expected the function's body, an expression of its parameters");
 HEXANT_ERROR(object_base, "expected an object or a declared object's name");
 HEXANT_ERROR(looks_like_base, "expected an object or a declared object's name");
 HEXANT_ERROR(light_arguments, "expected the light's position and colour");

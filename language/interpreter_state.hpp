@@ -169,6 +169,20 @@ class Interpreter {
     // After the whole scene is read: what holds only then (the legacy
     // gamma rule's warning).
     void finish_reading(const std::string& name);
+    // The user functions being read, innermost last: each one's parameter
+    // names (grammar/functions.hpp), and the names of the one whose head is
+    // being read (given: whether it wrote a list, empty or not).
+    std::vector<std::vector<std::string>> functions_open;
+    std::vector<std::string> function_parameter_names;
+    bool function_parameters_given = false;
+    // The index of `name` among the parameters of the function being read.
+    std::optional<int> function_parameter(const std::string& name) const {
+        if (functions_open.empty()) return std::nullopt;
+        const auto& names = functions_open.back();
+        for (std::size_t i = 0; i < names.size(); ++i)
+            if (names[i] == name) return static_cast<int>(i);
+        return std::nullopt;
+    }
     // The values of the mesh2 section being read (language/mesh_reading.hpp).
     std::vector<MeshValue> mesh2_values;
     // global_settings { charset }: "ascii" (POV-Ray's default) or "utf8".

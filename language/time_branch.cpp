@@ -67,6 +67,9 @@ bool same_value(const Value& a, const Value& b) {
                b.as<std::shared_ptr<const runtime::Spline>>();
     if (a.is<std::shared_ptr<const Macro>>())
         return a.as<std::shared_ptr<const Macro>>() == b.as<std::shared_ptr<const Macro>>();
+    if (a.is<std::shared_ptr<const runtime::UserFunction>>())
+        return a.as<std::shared_ptr<const runtime::UserFunction>>() ==
+               b.as<std::shared_ptr<const runtime::UserFunction>>();
     return false;
 }
 

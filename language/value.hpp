@@ -20,6 +20,7 @@
 #include "runtime/scene/light.hpp"
 #include "runtime/scene/sky_sphere.hpp"
 #include "runtime/texture/material.hpp"
+#include "runtime/time/user_function.hpp"
 
 namespace hexant::language {
 
@@ -61,7 +62,7 @@ struct Value {
                      runtime::Pigment, runtime::Normal, runtime::ColourMap, runtime::SkySphere,
                      runtime::Finish, runtime::Interior, runtime::Transform, std::shared_ptr<Array>,
                      std::shared_ptr<const runtime::Spline>, std::shared_ptr<const Macro>,
-                     Unevaluated>;
+                     std::shared_ptr<const runtime::UserFunction>, Unevaluated>;
     Variant v;
 
     template <typename T>

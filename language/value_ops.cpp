@@ -30,6 +30,9 @@ std::string type_name(const Value& value) {
             return "spline";
         }
         std::string operator()(const std::shared_ptr<const Macro>&) const { return "macro"; }
+        std::string operator()(const std::shared_ptr<const runtime::UserFunction>&) const {
+            return "function";
+        }
         std::string operator()(const Unevaluated& u) const { return u.what; }
     };
     return std::visit(Namer{}, value.v);

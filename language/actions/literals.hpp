@@ -95,6 +95,18 @@ struct action<g::function_call> {
         (void)in;
         std::vector<Value> args = st.values.close_frame();
         const std::string name = st.values.pop_name();
+        // POV-Ray's function bodies know its float functions only
+        // (parser/fnsyntax.cpp): a string or vector one is an error there.
+        static constexpr std::array<std::string_view, 29> kInBodies = {
+            "abs",  "acos", "acosh", "asin",    "asinh", "atan", "atan2",   "atanh",
+            "ceil", "cos",  "cosh",  "degrees", "div",   "exp",  "floor",   "int",
+            "ln",   "log",  "max",   "min",     "mod",   "pow",  "radians", "select",
+            "sin",  "sinh", "sqrt",  "tan",     "tanh"};
+        if (!st.functions_open.empty() &&
+            std::find(kInBodies.begin(), kInBodies.end(), name) == kInBodies.end())
+            throw ValueError("'" + name +
+                             "' cannot be used in a function's body (POV-Ray's "
+                             "functions take float functions only)");
         // concat() is checked before it is built: a string doubled each time
         // would otherwise reach the allocator's limit first.
         if (name == "concat") {
@@ -155,6 +167,11 @@ struct action<g::builtin_constant_name> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         const std::string w = in.string();
+        // A user function's parameter (x, y, z by default) in its body.
+        if (const auto k = st.function_parameter(w)) {
+            st.values.push(Value{TimeFunction::argument(*k)});
+            return;
+        }
         const auto& a = st.options.animation;
         auto f = [&](double v) { st.values.push(Value{TimeFunction(v)}); };
         if (w == "pi")
@@ -288,6 +305,10 @@ struct action<g::reference> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         const std::string name = word(in);
+        if (const auto k = st.function_parameter(name)) {
+            st.values.push(Value{TimeFunction::argument(*k)});
+            return;
+        }
         const Value* v = st.symbols.lookup(name);
         if (v == nullptr) throw ValueError("undeclared identifier '" + name + "'");
         st.check_declared(name);
@@ -397,6 +418,20 @@ struct action<g::index_suffix> {
     }
 };
 
+// F(a, b, ...): the body with the arguments in place (folded to a number
+// when they are numbers). POV-Ray wants one argument per parameter.
+inline Value call_user_function(const runtime::UserFunction& f, const std::vector<Value>& args) {
+    if (!f.unimplemented.empty())
+        throw UnsupportedError("the internal function " + f.unimplemented +
+                               " is not implemented by hexant");
+    if (args.size() != f.parameters.size())
+        throw ValueError("this function takes " + std::to_string(f.parameters.size()) +
+                         " arguments, not " + std::to_string(args.size()));
+    std::vector<TimeFunction> values;
+    for (const Value& a : args) values.push_back(to_float(a, "a function's argument"));
+    return Value{runtime::substitute_arguments(f.body, values)};
+}
+
 template <>
 struct action<g::spline_call> {
     template <typename ActionInput>
@@ -404,6 +439,11 @@ struct action<g::spline_call> {
         (void)in;
         std::vector<Value> args = st.values.close_frame();
         Value s = st.values.pop();
+        if (s.is<std::shared_ptr<const runtime::UserFunction>>()) {
+            st.values.push(
+                call_user_function(*s.as<std::shared_ptr<const runtime::UserFunction>>(), args));
+            return;
+        }
         if (!s.is<std::shared_ptr<const runtime::Spline>>())
             throw ValueError("only a spline can be called like this, not a " + type_name(s));
         if (args.empty() || args.size() > 2)

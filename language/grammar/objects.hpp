@@ -2,6 +2,7 @@
 // Part of the grammar (language/grammar.hpp).
 #pragma once
 
+#include "language/grammar/functions.hpp"
 #include "language/grammar/textures.hpp"
 
 namespace hexant::language::grammar {
@@ -118,11 +119,11 @@ struct light_block : p::seq<kw_light_source, p::must<lbrace>, p::must<light_argu
 // Object kinds POV-Ray has and hexant does not: kept as source, an error
 // only where used. Also `function { }` and the *_map blocks.
 struct unsupported_kind_words {
-    static constexpr std::array<std::string_view, 23> list = {
-        "bicubic_patch", "color_map",  "colour_map",    "cubic",       "density",    "density_map",
-        "function",      "isosurface", "julia_fractal", "lemon",       "media",      "normal_map",
-        "ovus",          "parametric", "photons",       "pigment_map", "poly",       "polynomial",
-        "quadric",       "quartic",    "rainbow",       "slope_map",   "texture_map"};
+    static constexpr std::array<std::string_view, 22> list = {
+        "bicubic_patch", "color_map",     "colour_map",  "cubic",      "density",    "density_map",
+        "function",      "julia_fractal", "lemon",       "media",      "normal_map", "ovus",
+        "parametric",    "photons",       "pigment_map", "poly",       "polynomial", "quadric",
+        "quartic",       "rainbow",       "slope_map",   "texture_map"};
 };
 struct unsupported_kind : one_word_of<unsupported_kind_words> {};
 struct unsupported_block
@@ -196,8 +197,30 @@ struct blob_item : p::sor<directive<blob_item>, macro_call<blob_item>, blob_comp
                           blob_old_component, object_modifier> {};
 struct blob_block : p::seq<blob_open, p::star<blob_item>, p::must<object_close>> {};
 
-struct object_value : p::sor<mesh_block, mesh2_block, blob_block, shape_block, csg_block,
-                             object_block, light_block> {};
+// isosurface { function { F } contained_by { box { A, B } | sphere { C, R } }
+// evaluate a, b, c  modifiers } (runtime/objects/isosurface/): threshold,
+// accuracy, max_gradient, max_trace, all_intersections and open are the
+// kind's settings, read among its modifiers.
+struct isosurface_open : p::seq<TAO_PEGTL_KEYWORD("isosurface"), ws, p::must<lbrace>> {};
+struct isosurface_function : p::seq<function_value> {};
+struct contained_by_kind : p::sor<TAO_PEGTL_KEYWORD("box"), TAO_PEGTL_KEYWORD("sphere")> {};
+struct contained_by_shape
+    : p::seq<contained_by_kind, ws, p::must<lbrace>, frame_open, p::must<shape_argument>,
+             p::opt<comma>, p::must<shape_argument>, p::must<rbrace>> {};
+struct isosurface_contained_by : p::seq<TAO_PEGTL_KEYWORD("contained_by"), ws, p::must<lbrace>,
+                                        p::must<contained_by_shape>, p::must<rbrace>> {};
+struct isosurface_evaluate
+    : p::seq<TAO_PEGTL_KEYWORD("evaluate"), ws, frame_open, p::must<shape_argument>, p::opt<comma>,
+             p::must<shape_argument>, p::opt<comma>, p::must<shape_argument>> {};
+struct isosurface_item;
+struct isosurface_item
+    : p::sor<directive<isosurface_item>, macro_call<isosurface_item>, isosurface_function,
+             isosurface_contained_by, isosurface_evaluate, object_modifier> {};
+struct isosurface_block : p::seq<isosurface_open, p::star<isosurface_item>, p::must<object_close>> {
+};
+
+struct object_value : p::sor<mesh_block, mesh2_block, blob_block, isosurface_block, shape_block,
+                             csg_block, object_block, light_block> {};
 
 // Things that modify an object, in any order.
 struct object_texture : p::seq<texture_block> {};

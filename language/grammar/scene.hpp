@@ -145,10 +145,10 @@ struct texture_layer : p::seq<texture_block> {};
 struct material_value : p::seq<material_block> {};
 struct texture_value : p::seq<texture_block, p::star<texture_layer>> {};
 
-struct value
-    : p::sor<object_value, camera_block, texture_value, pigment_block, normal_block,
-             colour_map_block, sky_sphere_block, finish_block, interior_block, material_value,
-             transform_value, array_value, spline_block, unsupported_block, expression> {};
+struct value : p::sor<object_value, camera_block, texture_value, pigment_block, normal_block,
+                      colour_map_block, sky_sphere_block, finish_block, interior_block,
+                      material_value, transform_value, array_value, spline_block, function_value,
+                      unsupported_block, expression> {};
 
 // A macro called where a value is wanted holds values (and directives).
 struct value_item : p::sor<directive<value_item>, value> {};

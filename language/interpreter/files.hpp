@@ -13,6 +13,7 @@ bool Interpreter::declare_value(ParseInput& in) {
     const auto start = in.iterator();
     const ValueStack::Mark mark = values.mark();
     const std::size_t block_count = blocks.depth();
+    const std::size_t functions_count = functions_open.size();
     try {
         return p::match<grammar::value, p::apply_mode::action, p::rewind_mode::required, Action,
                         Control>(in, *this);
@@ -21,6 +22,9 @@ bool Interpreter::declare_value(ParseInput& in) {
         in.iterator() = start;
         values.rewind(mark);
         blocks.rewind(block_count);
+        functions_open.resize(functions_count);
+        function_parameter_names.clear();
+        function_parameters_given = false;
         const auto where = in.position();
         (void)p::match<grammar::skip::declaration, p::apply_mode::nothing, p::rewind_mode::dontcare,
                        p::nothing, Control>(in, *this);

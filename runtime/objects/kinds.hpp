@@ -12,6 +12,7 @@
 #include "runtime/objects/cylinder/cylinder.hpp"
 #include "runtime/objects/disc/disc.hpp"
 #include "runtime/objects/height_field/height_field.hpp"
+#include "runtime/objects/isosurface/isosurface.hpp"
 #include "runtime/objects/lathe/lathe.hpp"
 #include "runtime/objects/mesh/mesh.hpp"
 #include "runtime/objects/plane/plane.hpp"
@@ -31,6 +32,6 @@ namespace hexant::runtime {
 
 using ShapeKinds = objects::KindList<Sphere, Box, Plane, Polygon, Triangle, SmoothTriangle, Disc,
                                      Cylinder, Cone, Torus, Prism, Text, Mesh, Lathe, Sor,
-                                     Superellipsoid, HeightField, Blob, SphereSweep>;
+                                     Superellipsoid, HeightField, Blob, SphereSweep, Isosurface>;
 
 }  // namespace hexant::runtime

@@ -75,6 +75,7 @@ TEST_CASE("a blob's refusals name what is wrong", "[language][blob]") {
     CHECK(says("blob { cylinder { 0, y, 1 } }", "two ends, a radius and a strength"));
     CHECK(says("blob { sphere { 0, 1, 1 pigment { rgb 1 } } }", "blob component's own 'pigment'"));
     CHECK(says("blob { sphere { 0, 1, 1 scale 2 } }", "blob component's own 'scale'"));
-    CHECK(says("sphere { 0, 1 threshold 2 }", "'threshold' belongs to a blob, not a sphere"));
+    CHECK(says("sphere { 0, 1 threshold 2 }",
+               "'threshold' belongs to a blob or isosurface, not a sphere"));
     CHECK(says("blob { sphere { \"a\", 1, 1 } }", "blob sphere's centre"));
 }

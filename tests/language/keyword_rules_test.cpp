@@ -116,7 +116,11 @@ const std::map<std::string, Probe>& probes() {
                  {"quick_color", "sphere { 0, 1 pigment { rgb 1 quick_color rgb 0.5 } }"},
                  {"quick_colour", "sphere { 0, 1 pigment { rgb 1 quick_colour rgb 0.5 } }"},
                  {"hierarchy",
-                  "mesh { triangle { <0, 0, 0>, <1, 0, 0>, <0, 1, 0> } hierarchy off }"}})
+                  "mesh { triangle { <0, 0, 0>, <1, 0, 0>, <0, 1, 0> } hierarchy off }"},
+                 {"max_gradient", "isosurface { function { x } max_gradient 2 }"},
+                 {"evaluate", "isosurface { function { x } evaluate 1, 10, 0.99 }"},
+                 {"max_trace", "isosurface { function { x } max_trace 2 }"},
+                 {"all_intersections", "isosurface { function { x } all_intersections }"}})
             p[word] = {text, ""};
         return p;
     }();

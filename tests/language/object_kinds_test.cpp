@@ -77,7 +77,7 @@ TEST_CASE("a kind's option words and settings reach that kind only", "[language]
     // A setting of other kinds: the message names them.
     const auto e = error_of("sphere { 0, 1 open }");
     CHECK(std::string(e.what()).find(
-              "'open' belongs to a cylinder, cone, prism or sor, not a sphere") !=
+              "'open' belongs to a cylinder, cone, prism, sor or isosurface, not a sphere") !=
           std::string::npos);
     // smooth is height_field's; double_illuminate (POV-Ray's word) any object's.
     const auto smooth = error_of("sphere { 0, 1 smooth }");

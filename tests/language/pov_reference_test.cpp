@@ -71,7 +71,8 @@ std::string run(const std::string& scene, ParseOptions options) {
 
 TEST_CASE("expressions, functions, vectors, colours and control flow agree with POV-Ray",
           "[language][povray]") {
-    for (const char* name : {"arithmetic", "functions", "vectors", "srgb", "control", "splines"}) {
+    for (const char* name :
+         {"arithmetic", "functions", "vectors", "srgb", "control", "splines", "user_functions"}) {
         SECTION(name) {
             const std::string scene = std::string(name) + ".pov";
             compare(scene, run(scene, ParseOptions{}), read(kFolder + name + ".expected"));

@@ -172,6 +172,10 @@ TEST_CASE("bound holds the surface: superellipsoid", "[object][property]") {
     check_kind(kind_scene("superellipsoid"));
 }
 
+TEST_CASE("bound holds the surface: isosurface", "[object][property]") {
+    check_kind(kind_scene("isosurface"));
+}
+
 TEST_CASE("bound holds the surface: height_field", "[object][property]") {
     check_kind(kind_scene("height_field"));
 }

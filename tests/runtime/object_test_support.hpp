@@ -310,6 +310,39 @@ inline glm::dvec3 sample_object_surface(const rt::Shape& shape, double t, Random
         }
         throw std::logic_error("sample_object_surface: a blob without a surface");
     }
+    if (const auto* iso = std::get_if<rt::Isosurface>(&shape)) {
+        // The solid is the container where F - T <= 0; from a point of it,
+        // outward to beyond the container: bisection on membership ends on
+        // its boundary (F = T, or a wall). F is evaluated by folding its
+        // body with the point's coordinates (not by the tape under test).
+        const double threshold = iso->threshold(t);
+        const glm::dvec3 c1 = iso->corner1(t), c2 = iso->corner2(t), centre = iso->center(t);
+        const double radius = iso->radius(t);
+        const auto in_solid = [&](const glm::dvec3& p) {
+            if (iso->sphere_container ? glm::length(p - centre) > radius
+                                      : glm::any(glm::lessThan(p, glm::min(c1, c2))) ||
+                                            glm::any(glm::greaterThan(p, glm::max(c1, c2))))
+                return false;
+            const rt::TimeFunction v = rt::substitute_arguments(*iso->function, {p.x, p.y, p.z});
+            return v(t) - threshold <= 0.0;
+        };
+        const glm::dvec3 lo = iso->sphere_container ? centre - radius : glm::min(c1, c2);
+        const glm::dvec3 hi = iso->sphere_container ? centre + radius : glm::max(c1, c2);
+        const double span = glm::length(hi - lo);
+        for (int tries = 0; tries < 100000; ++tries) {
+            glm::dvec3 in(random.uniform(lo.x, hi.x), random.uniform(lo.y, hi.y),
+                          random.uniform(lo.z, hi.z));
+            if (!in_solid(in)) continue;
+            glm::dvec3 out = in + 2.0 * span * random.unit_vector();
+            for (int k = 0; k < 200; ++k) {
+                const glm::dvec3 mid = 0.5 * (in + out);
+                if (mid == in || mid == out) break;
+                (in_solid(mid) ? in : out) = mid;
+            }
+            return in;
+        }
+        throw std::logic_error("sample_object_surface: an isosurface without a solid");
+    }
     if (const auto* sweep = std::get_if<rt::SphereSweep>(&shape)) {
         // A point of one of the swept spheres: on the surface or inside the
         // solid, so a ray through it meets the surface at or before it.
@@ -511,6 +544,14 @@ inline const std::vector<KindScene>& kind_scenes() {
          "clock, "
          "<0.4, 0.3, 0>, 0.25, <0.8, 0, 0>, 0.2"},
         {"superellipsoid", "<0.4, 1.5>", "<0.3 + 0.8 * clock, 1.2 - 0.9 * clock>"},
+        // A wavy ellipsoid cut by its box (closed: the walls are surface);
+        // moving: a sphere that swells with clock, a threshold that moves,
+        // in a sphere container.
+        {"isosurface",
+         "function { x * x + 1.5 * y * y + z * z + 0.1 * sin(6 * x) } threshold 0.6 "
+         "contained_by { box { <-1, -0.5, -1>, <1, 0.5, 0.7> } }",
+         "function { x * x + y * y + z * z - 0.2 - 0.5 * clock } threshold 0.1 * clock "
+         "contained_by { sphere { <0.1, 0, 0>, 0.9 } }"},
         // The height_field still's 32 x 32 bump (on parse()'s include
         // path); the water level rises through it.
         {"height_field", "png \"bump.png\" smooth", "png \"bump.png\" water_level 0.6 * clock"},

@@ -197,6 +197,18 @@ TEST_CASE("superellipsoid and height_field agree with POV-Ray 3.7's render of th
     check_stills("shapes", "height_field", {"0", "0.5"});
 }
 
+TEST_CASE("isosurface agrees with POV-Ray 3.7's render of it, at two clocks",
+          "[tracer][pov][isosurface]") {
+    // shapes/isosurface.pov: a wavy torus (internal f_torus) whose ripples
+    // move with clock, two spheres' field cut by its box closed and open, a
+    // sphere container whose threshold grows with clock, a rounded box
+    // turned with clock. The still's tolerance; at 64x48 77 and 53 pixels
+    // differ by a few steps (mean 8e-5 and 6e-5): POV-Ray finds roots by
+    // sampling to its accuracy 0.001 and differences its normal by it,
+    // where hexant's roots and gradients are exact.
+    check_stills("shapes", "isosurface", {"0", "0.5"});
+}
+
 TEST_CASE("blob agrees with POV-Ray 3.7's render of it, at two clocks", "[tracer][pov][blob]") {
     // shapes/blob.pov: two spheres that move together and merge, a cylinder
     // with a sphere and a negative sphere's dent turning, the old component

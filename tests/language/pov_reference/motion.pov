@@ -29,3 +29,8 @@
 #debug concat("colour_fade.x = ", str(R.x, 0, 10), "\n")
 #debug concat("colour_fade.y = ", str(R.y, 0, 10), "\n")
 #debug concat("colour_fade.z = ", str(R.z, 0, 10), "\n")
+// User functions of clock: a body that reads clock, and one called with it.
+#declare F_clock = function(a) { a * clock + sin(3 * clock) }
+#declare F_plain = function(a, b) { a * a - b }
+#debug concat("function_clock = ", str(F_clock(2), 0, 10), "\n")
+#debug concat("function_of_clock = ", str(F_plain(clock, 0.5 * clock), 0, 10), "\n")

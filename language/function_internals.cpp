@@ -1,0 +1,227 @@
+#include "language/function_internals.hpp"
+
+#include <array>
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "language/value_ops.hpp"
+
+namespace hexant::language {
+
+namespace {
+
+using runtime::TimeFunction;
+using runtime::TimeOp;
+using F = TimeFunction;
+using Params = std::vector<TimeFunction>;  // x, y, z, then the function's own
+
+F sqrt_(const F& a) {
+    return F::apply(TimeOp::Sqrt, a);
+}
+F abs_(const F& a) {
+    return F::apply(TimeOp::Abs, a);
+}
+F pow_(const F& a, const F& b) {
+    return F::apply(TimeOp::Pow, a, b);
+}
+F min_(const F& a, const F& b) {
+    return F::apply(TimeOp::Min, a, b);
+}
+F max_(const F& a, const F& b) {
+    return F::apply(TimeOp::Max, a, b);
+}
+F atan2_(const F& a, const F& b) {
+    return F::apply(TimeOp::Atan2, a, b);
+}
+F less_(const F& a, const F& b) {
+    return F::apply(TimeOp::Less, a, b);
+}
+F greater_(const F& a, const F& b) {
+    return F::apply(TimeOp::Greater, a, b);
+}
+F choose(const F& condition, const F& yes, const F& no) {
+    return F::apply(TimeOp::Conditional, condition, yes, no);
+}
+// POV-Ray's min(10., max(P0 * r, -10.)) of the algebraic surfaces.
+F clamp_field(const F& strength, const F& r) {
+    return min_(10.0, max_(strength * r, -10.0));
+}
+
+// Each as in fnintern.cpp, operation for operation.
+F f_ellipsoid(const Params& p) {  // 17
+    return sqrt_(p[0] * p[0] * p[3] * p[3] + p[1] * p[1] * p[4] * p[4] + p[2] * p[2] * p[5] * p[5]);
+}
+F f_heart(const Params& p) {  // 23
+    const F x2 = p[0] * p[0], y2 = p[1] * p[1], z2 = p[2] * p[2];
+    const F a = 2.0 * x2 + y2 + z2 - 1.0;
+    const F r = -(a * a * a - 0.1 * x2 * z2 * p[2] - y2 * z2 * p[2]);
+    return clamp_field(p[3], r);
+}
+F f_paraboloid(const Params& p) {  // 45
+    return clamp_field(p[3], -(p[0] * p[0] - p[1] + p[2] * p[2]));
+}
+F f_ph(const Params& p) {  // 47
+    return atan2_(sqrt_(p[0] * p[0] + p[2] * p[2]), p[1]);
+}
+F f_pillow(const Params& p) {  // 48
+    const F x2 = p[0] * p[0], y2 = p[1] * p[1], z2 = p[2] * p[2];
+    return clamp_field(p[3], x2 * x2 + y2 * y2 + z2 * z2 - (x2 + y2 + z2));
+}
+F f_r(const Params& p) {  // 57
+    return sqrt_(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+}
+F f_rounded_box(const Params& p) {  // 60
+    const F& r = p[3];
+    F d[3];
+    for (int i = 0; i < 3; ++i) {
+        const F far_side = p[4 + i] - r;
+        const F beyond = choose(less_(p[i], far_side), 0.0, p[i] - far_side);
+        const F near_side = r - p[4 + i];
+        const F before = choose(greater_(p[i], near_side), 0.0, near_side - p[i]);
+        d[i] = max_(before, beyond);
+    }
+    return -r + sqrt_(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) - 1e-6;
+}
+F f_sphere(const Params& p) {  // 61
+    return -p[3] + sqrt_(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+}
+F f_superellipsoid(const Params& p) {  // 68
+    const F e = 2.0 / p[3], n = 1.0 / p[4];
+    return 1.0 - pow_(pow_(pow_(abs_(p[0]), e) + pow_(abs_(p[1]), e), p[3] * n) +
+                          pow_(abs_(p[2]), 2.0 * n),
+                      p[4] * 0.5);
+}
+F f_th(const Params& p) {  // 69
+    return atan2_(p[0], p[2]);
+}
+F f_torus(const Params& p) {  // 70
+    const F ring = sqrt_(p[0] * p[0] + p[2] * p[2]) - p[3];
+    return -p[4] + sqrt_(ring * ring + p[1] * p[1]);
+}
+F f_torus2(const Params& p) {  // 71
+    const F x2 = p[0] * p[0], y2 = p[1] * p[1], z2 = p[2] * p[2];
+    const F ph = p[4] * p[4], th = p[5] * p[5];
+    const F r = -(x2 * x2 + y2 * y2 + z2 * z2 + 2.0 * x2 * y2 + 2.0 * x2 * z2 + 2.0 * y2 * z2 -
+                  2.0 * (ph + th) * x2 + 2.0 * (ph - th) * y2 - 2.0 * (ph + th) * z2 +
+                  (ph - th) * (ph - th));
+    return clamp_field(p[3], r);
+}
+
+struct Internal {
+    std::string_view name;
+    int extra;                              // parameters after x, y, z
+    std::function<F(const Params&)> build;  // empty where hexant lacks it
+};
+
+// POVFPU_TrapTable, in its order: N is the index.
+const std::array<Internal, 79>& internals() {
+    static const std::array<Internal, 79> table = {{
+        {"f_algbr_cyl1", 5, {}},
+        {"f_algbr_cyl2", 5, {}},
+        {"f_algbr_cyl3", 5, {}},
+        {"f_algbr_cyl4", 5, {}},
+        {"f_bicorn", 2, {}},
+        {"f_bifolia", 2, {}},
+        {"f_blob", 5, {}},
+        {"f_blob2", 4, {}},
+        {"f_boy_surface", 2, {}},
+        {"f_comma", 1, {}},
+        {"f_cross_ellipsoids", 4, {}},
+        {"f_crossed_trough", 1, {}},
+        {"f_cubic_saddle", 1, {}},
+        {"f_cushion", 1, {}},
+        {"f_devils_curve", 1, {}},
+        {"f_devils_curve_2d", 6, {}},
+        {"f_dupin_cyclid", 6, {}},
+        {"f_ellipsoid", 3, f_ellipsoid},
+        {"f_enneper", 1, {}},
+        {"f_flange_cover", 4, {}},
+        {"f_folium_surface", 3, {}},
+        {"f_folium_surface_2d", 6, {}},
+        {"f_glob", 1, {}},
+        {"f_heart", 1, f_heart},
+        {"f_helical_torus", 10, {}},
+        {"f_helix1", 7, {}},
+        {"f_helix2", 7, {}},
+        {"f_hex_x", 1, {}},
+        {"f_hex_y", 1, {}},
+        {"f_hetero_mf", 6, {}},
+        {"f_hunt_surface", 1, {}},
+        {"f_hyperbolic_torus", 3, {}},
+        {"f_isect_ellipsoids", 4, {}},
+        {"f_kampyle_of_eudoxus", 3, {}},
+        {"f_kampyle_of_eudoxus_2d", 6, {}},
+        {"f_klein_bottle", 1, {}},
+        {"f_kummer_surface_v1", 1, {}},
+        {"f_kummer_surface_v2", 4, {}},
+        {"f_lemniscate_of_gerono", 1, {}},
+        {"f_lemniscate_of_gerono_2d", 6, {}},
+        {"f_mesh1", 5, {}},
+        {"f_mitre", 1, {}},
+        {"f_nodal_cubic", 1, {}},
+        {"f_odd", 1, {}},
+        {"f_ovals_of_cassini", 4, {}},
+        {"f_paraboloid", 1, f_paraboloid},
+        {"f_parabolic_torus", 3, {}},
+        {"f_ph", 0, f_ph},
+        {"f_pillow", 1, f_pillow},
+        {"f_piriform", 1, {}},
+        {"f_piriform_2d", 7, {}},
+        {"f_poly4", 5, {}},
+        {"f_polytubes", 6, {}},
+        {"f_quantum", 1, {}},
+        {"f_quartic_paraboloid", 1, {}},
+        {"f_quartic_saddle", 1, {}},
+        {"f_quartic_cylinder", 3, {}},
+        {"f_r", 0, f_r},
+        {"f_ridge", 6, {}},
+        {"f_ridged_mf", 6, {}},
+        {"f_rounded_box", 4, f_rounded_box},
+        {"f_sphere", 1, f_sphere},
+        {"f_spikes", 5, {}},
+        {"f_spikes_2d", 4, {}},
+        {"f_spiral", 6, {}},
+        {"f_steiners_roman", 1, {}},
+        {"f_strophoid", 4, {}},
+        {"f_strophoid_2d", 7, {}},
+        {"f_superellipsoid", 2, f_superellipsoid},
+        {"f_th", 0, f_th},
+        {"f_torus", 2, f_torus},
+        {"f_torus2", 3, f_torus2},
+        {"f_torus_gumdrop", 1, {}},
+        {"f_umbrella", 1, {}},
+        {"f_witch_of_agnesi", 2, {}},
+        {"f_witch_of_agnesi_2d", 6, {}},
+        {"f_noise3d", 0, {}},
+        {"f_pattern", 0, {}},
+        {"f_noise_generator", 1, {}},
+    }};
+    return table;
+}
+
+}  // namespace
+
+std::shared_ptr<const runtime::UserFunction> internal_function(int n) {
+    const auto& table = internals();
+    if (n < 0 || n >= static_cast<int>(table.size()))
+        throw ValueError("internal(" + std::to_string(n) +
+                         ") is no internal function of POV-Ray 3.7 (0 to " +
+                         std::to_string(table.size() - 1) + ")");
+    const Internal& entry = table[static_cast<std::size_t>(n)];
+    auto f = std::make_shared<runtime::UserFunction>();
+    f->parameters = {"x", "y", "z"};
+    for (int i = 0; i < entry.extra; ++i) f->parameters.push_back("P" + std::to_string(i));
+    if (!entry.build) {
+        f->unimplemented = std::string(entry.name) + " (internal(" + std::to_string(n) + "))";
+        return f;
+    }
+    Params p;
+    for (std::size_t i = 0; i < f->parameters.size(); ++i)
+        p.push_back(TimeFunction::argument(static_cast<int>(i)));
+    f->body = entry.build(p);
+    return f;
+}
+
+}  // namespace hexant::language

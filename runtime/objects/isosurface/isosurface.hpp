@@ -1,0 +1,74 @@
+// POV-Ray's isosurface { function { F } contained_by { box | sphere }
+// threshold T accuracy A max_gradient G evaluate a, b, c open max_trace N
+// all_intersections }: the solid where F(x, y, z) <= T inside its
+// container (POV-Ray's IsoSurface::Inside), its surface F = T, closed by
+// the container's walls where F < T unless `open`. The object kind
+// (runtime/objects/shape_kind.hpp); its block has its own rule in the
+// grammar (kOwnSyntax).
+//
+// F is a user function (runtime/time/user_function.hpp) and may read
+// clock, as may T and the container: the surface moves through time. The
+// search for hits does not need max_gradient (isosurface_geometry.hpp
+// bounds F by interval arithmetic), so max_gradient, evaluate, max_trace
+// and all_intersections are read and change nothing: they tune POV-Ray's
+// own search, whose correct result hexant gives whatever they are.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "runtime/objects/shape_kind.hpp"
+#include "runtime/time/vector_function.hpp"
+
+namespace hexant::runtime {
+
+namespace objects {
+class IsosurfaceModel;
+}  // namespace objects
+
+struct Isosurface {
+    static constexpr std::string_view keyword = "isosurface";
+    static constexpr bool kOwnSyntax = true;
+    static constexpr std::array<std::string_view, 6> settings{
+        "accuracy", "all_intersections", "max_gradient", "max_trace", "open", "threshold"};
+    using Model = objects::IsosurfaceModel;
+
+    // F's body: arguments 0, 1, 2 are x, y, z. Unset until `function` is read.
+    std::optional<TimeFunction> function;
+    TimeFunction threshold = 0.0;
+    double accuracy = 0.001;  // POV-Ray's default, in the object's units
+    bool open = false;
+    // contained_by: a box (POV-Ray's default, <-1, -1, -1> to <1, 1, 1>) or a sphere.
+    bool sphere_container = false;
+    Vector3Function corner1{{-1.0, -1.0, -1.0}}, corner2{{1.0, 1.0, 1.0}};
+    Vector3Function center{{0.0, 0.0, 0.0}};
+    TimeFunction radius = 1.0;
+
+    void set(std::string_view setting, const objects::ShapeArguments& value);
+    std::optional<std::string> standalone_error() const {
+        if (!function) return "an isosurface needs its function { }";
+        return std::nullopt;
+    }
+    template <class F>
+    void parameters(F&& f) const {
+        if (function) {
+            std::string text = function->to_string();
+            if (text.size() > 200) text = text.substr(0, 200) + "...";
+            f("function", "function", objects::DescribedParameter{text});
+        }
+        f("threshold", "threshold", threshold);
+        if (sphere_container) {
+            f("center", "container's centre", center);
+            f("radius", "container's radius", radius);
+        } else {
+            f("corner1", "container's first corner", corner1);
+            f("corner2", "container's second corner", corner2);
+        }
+    }
+};
+
+}  // namespace hexant::runtime
+
+#include "runtime/objects/isosurface/isosurface_model.hpp"
