@@ -10,6 +10,10 @@ CsgObject::CsgObject(Csg::Kind kind, std::vector<IntelligentObjectPtr> children,
     full_shadow_ = casts_shadow() && !filters_light();
 }
 
+// An intersection's surface lies in the solid of each member, so one
+// member whose solid is bounded bounds it; a difference's lies on its
+// first member's surface or inside its solid (`inverse` members, whose
+// solids are everything outside them, do not count).
 bool CsgObject::bounded() const {
     switch (kind_) {
         case Csg::Kind::Union:
@@ -18,9 +22,23 @@ bool CsgObject::bounded() const {
                                [](const auto& c) { return c->bounded(); });
         case Csg::Kind::Intersection:
             return std::any_of(children_.begin(), children_.end(),
-                               [](const auto& c) { return c->bounded(); });
+                               [](const auto& c) { return c->solid_bounded(); });
         case Csg::Kind::Difference:
-            return !children_.empty() && children_.front()->bounded();
+            return !children_.empty() && children_.front()->solid_bounded();
+    }
+    return false;
+}
+
+bool CsgObject::solid_bounded() const {
+    if (inverse_) return false;
+    switch (kind_) {
+        case Csg::Kind::Union:
+        case Csg::Kind::Merge:
+            return std::all_of(children_.begin(), children_.end(),
+                               [](const auto& c) { return c->solid_bounded(); });
+        case Csg::Kind::Intersection:
+        case Csg::Kind::Difference:
+            return bounded();
     }
     return false;
 }
@@ -41,7 +59,7 @@ void CsgObject::bound(const Box4& region, std::vector<SlabBound>& out) const {
             double best_volume = 0.0;
             bool found = false;
             for (const auto& c : children_) {
-                if (!c->bounded()) continue;
+                if (!c->solid_bounded()) continue;
                 mine.clear();
                 c->bound(region, mine);
                 double volume = 0.0;
@@ -76,7 +94,7 @@ Box4 CsgObject::box_over(const Interval& t) const {
             // the box of its surface.
             std::optional<Box4> box;
             for (const auto& c : children_) {
-                if (!c->bounded()) continue;
+                if (!c->solid_bounded()) continue;
                 const Box4 b = c->box_over(t);
                 box = box ? box->intersection(b) : b;
             }
@@ -97,7 +115,7 @@ Box4 CsgObject::box_over(const Interval& t) const {
 std::vector<const IntelligentObject*> CsgObject::chord_children() const {
     std::vector<const IntelligentObject*> out;
     for (const auto& c : children_) {
-        if (kind_ == Csg::Kind::Intersection && !c->bounded()) continue;
+        if (kind_ == Csg::Kind::Intersection && !c->solid_bounded()) continue;
         out.push_back(c.get());
         if (kind_ == Csg::Kind::Difference) break;
     }

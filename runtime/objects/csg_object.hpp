@@ -16,9 +16,11 @@ class CsgObject final : public IntelligentObject {
     CsgObject(Csg::Kind kind, std::vector<IntelligentObjectPtr> children, bool inverse);
 
     bool bounded() const override;
+    bool solid_bounded() const override;
     // A union answers with its children's bounds (several, each tight); an
-    // intersection with the smallest bounded child's; a difference with its
-    // first child's: every surface event of the result lies in those.
+    // intersection with the smallest of those of its children whose solids
+    // are bounded; a difference with its first child's (whose solid must
+    // be bounded): every surface event of the result lies in those.
     void bound(const Box4& region, std::vector<SlabBound>& out) const override;
     // The same rule for boxes: a union's is the hull of its children's; an
     // intersection's the common part of its bounded children's; a

@@ -69,6 +69,12 @@ class IntelligentObject {
     // False for objects without a finite extent (a plane): the tracer keeps
     // them outside the hierarchy and tests them on every ray.
     virtual bool bounded() const { return true; }
+    // Does its solid (where inside() holds) lie inside the box of its
+    // surface (box_over, bound)? Then what must be inside it (an
+    // intersection's surface, a clipped object's) is bounded by its
+    // bounds. Not for an unbounded object, nor an `inverse` one (its solid
+    // is all that lies outside its surface).
+    virtual bool solid_bounded() const { return bounded(); }
 
     // Appends to `out` one or more 12-slab bounds that together contain every
     // surface event of the object inside `region`. Conservative always; an

@@ -29,6 +29,7 @@ class LifetimeObject final : public IntelligentObject {
     // the intersection (CsgObject takes its bounded members' bounds), so
     // it answers as an unbounded member does.
     bool bounded() const override { return !inside_when_absent_ && inner_->bounded(); }
+    bool solid_bounded() const override { return !inside_when_absent_ && inner_->solid_bounded(); }
     void bound(const Box4& region, std::vector<SlabBound>& out) const override;
     Box4 box_over(const Interval& t) const override;
     std::optional<ChordBound> chord_bound_over(const Interval& t) const override;

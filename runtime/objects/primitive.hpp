@@ -95,6 +95,7 @@ class Primitive final : public IntelligentObject {
     }
 
     bool bounded() const override { return !kUnbounded; }
+    bool solid_bounded() const override { return !kUnbounded && !options_.inverse; }
     bool moves() const override { return moves_; }
     bool deformed() const override { return !motion_.is_affine(); }
     bool casts_shadow() const override { return !options_.no_shadow; }
