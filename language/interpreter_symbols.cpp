@@ -48,7 +48,7 @@ bool same_but_members(const runtime::ObjectRecord& a, const runtime::ObjectRecor
     return a.transform.steps().size() == b.transform.steps().size() &&
            a.texture.has_value() == b.texture.has_value() &&
            a.interior.has_value() == b.interior.has_value() && a.no_shadow == b.no_shadow &&
-           a.hollow == b.hollow && a.inverse == b.inverse;
+           a.hollow == b.hollow && a.inverse == b.inverse && a.limits == b.limits;
 }
 
 }  // namespace

@@ -364,6 +364,7 @@ constexpr auto kReserved = std::to_array<std::string_view>({
     "while",
     "write",
     "x",
+    "xyz",
     "y",
     "yes",
     "z",

@@ -35,6 +35,14 @@ struct action<g::shape_arguments> {
     }
 };
 
+// The host object's limits, to be changed (shared between copies).
+inline runtime::ObjectLimits& edit_limits(runtime::ObjectRecord& host) {
+    auto limits = host.limits ? std::make_shared<runtime::ObjectLimits>(*host.limits)
+                              : std::make_shared<runtime::ObjectLimits>();
+    runtime::ObjectLimits& edited = *limits;
+    host.limits = std::move(limits);
+    return edited;
+}
 // Finishes the object on top of the block stack and pushes it as a value.
 struct finish_object {
     template <typename ActionInput>
@@ -62,10 +70,16 @@ struct finish_object {
             st.values.push(Value{Unevaluated{*lacking, in.position()}});
             return;
         }
-        if (const auto* csg = std::get_if<runtime::Csg>(&record.shape)) {
+        const auto* csg = std::get_if<runtime::Csg>(&record.shape);
+        if (csg || record.limits) {
             record.depth = 1;
-            for (const auto& child : csg->children)
-                record.depth = std::max(record.depth, child->depth + 1);
+            if (csg)
+                for (const auto& child : csg->children)
+                    record.depth = std::max(record.depth, child->depth + 1);
+            if (record.limits)
+                for (const auto* list : {&record.limits->clipped_by, &record.limits->bounded_by})
+                    for (const auto& limit : *list)
+                        record.depth = std::max(record.depth, limit->depth + 1);
             if (record.depth > runtime::kMaxObjectDepth)
                 Interpreter::fail(in.position(),
                                   "objects nested more than " +
@@ -113,6 +127,65 @@ struct action<g::csg_child> {
         if (v.is<Unevaluated>())
             throw UnsupportedError(v.as<Unevaluated>().what + " is not supported by hexant");
         std::get<runtime::Csg>(record.shape).children.push_back(v.as<runtime::ObjectPtr>());
+    }
+};
+// clipped_by { } and bounded_by { }: the word stays on the name stack
+// while the block is read (its objects may hold blocks of their own).
+template <>
+struct action<g::limit_word> : name_action {};
+template <>
+struct action<g::limit_block> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, Interpreter& st) {
+        (void)st.values.pop_name();
+    }
+};
+// `bounded_by { clipped_by }` and `clipped_by { bounded_by }`: the other
+// list as it is now (POV-Ray's Parse_Object_Mods, with its errors).
+template <>
+struct action<g::limit_same> {
+    template <typename ActionInput>
+    static void apply(const ActionInput& in, Interpreter& st) {
+        const std::string which = st.values.pop_name();
+        st.values.push_name(which);
+        const std::string other = word(in);
+        if (other == which)
+            throw ValueError(which + " { " + other + " } names itself; write the objects");
+        runtime::ObjectRecord& host =
+            st.blocks.edit<runtime::ObjectRecord>(in.position(), which.c_str());
+        runtime::ObjectLimits& limits = edit_limits(host);
+        auto& mine = which == "clipped_by" ? limits.clipped_by : limits.bounded_by;
+        const auto& theirs = which == "clipped_by" ? limits.bounded_by : limits.clipped_by;
+        if (!mine.empty())
+            throw ValueError("cannot link " + other + " with the " + which +
+                             " written before (as POV-Ray)");
+        mine = theirs;
+    }
+};
+template <>
+struct action<g::limit_object> {
+    template <typename ActionInput>
+    static void apply(const ActionInput& in, Interpreter& st) {
+        Value v = st.values.pop();
+        const std::string which = st.values.pop_name();
+        st.values.push_name(which);
+        if (v.is<Unevaluated>())
+            throw UnsupportedError(v.as<Unevaluated>().what + " is not supported by hexant");
+        if (!v.is<runtime::ObjectPtr>())
+            throw ValueError(which + " { } takes objects, not a " + type_name(v));
+        runtime::ObjectRecord& host =
+            st.blocks.edit<runtime::ObjectRecord>(in.position(), which.c_str());
+        runtime::ObjectRecord limit = *v.as<runtime::ObjectPtr>();
+        // Written in the space around the host: into its object space, so
+        // that its later transforms move the limit with it.
+        if (!host.transform.empty()) limit.transform.append(host.transform.inverse());
+        auto shared = std::make_shared<const runtime::ObjectRecord>(std::move(limit));
+        runtime::ObjectLimits& limits = edit_limits(host);
+        auto& list = which == "clipped_by" ? limits.clipped_by : limits.bounded_by;
+        if (!list.empty() && limits.clipped_by == limits.bounded_by)
+            throw ValueError("cannot add to " + which +
+                             " after linking clipped_by and bounded_by (as POV-Ray)");
+        list.push_back(std::move(shared));
     }
 };
 template <>

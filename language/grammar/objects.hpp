@@ -119,11 +119,10 @@ struct light_block : p::seq<kw_light_source, p::must<lbrace>, p::must<light_argu
 // Object kinds POV-Ray has and hexant does not: kept as source, an error
 // only where used. Also `function { }` and the *_map blocks.
 struct unsupported_kind_words {
-    static constexpr std::array<std::string_view, 22> list = {
-        "bicubic_patch", "color_map",     "colour_map",  "cubic",      "density",    "density_map",
-        "function",      "julia_fractal", "lemon",       "media",      "normal_map", "ovus",
-        "parametric",    "photons",       "pigment_map", "poly",       "polynomial", "quadric",
-        "quartic",       "rainbow",       "slope_map",   "texture_map"};
+    static constexpr std::array<std::string_view, 17> list = {
+        "bicubic_patch", "color_map",   "colour_map", "density",    "density_map", "function",
+        "julia_fractal", "lemon",       "media",      "normal_map", "ovus",        "parametric",
+        "photons",       "pigment_map", "rainbow",    "slope_map",  "texture_map"};
 };
 struct unsupported_kind : one_word_of<unsupported_kind_words> {};
 struct unsupported_block
@@ -219,8 +218,32 @@ struct isosurface_item
 struct isosurface_block : p::seq<isosurface_open, p::star<isosurface_item>, p::must<object_close>> {
 };
 
-struct object_value : p::sor<mesh_block, mesh2_block, blob_block, isosurface_block, shape_block,
-                             csg_block, object_block, light_block> {};
+// cubic { <20 coefficients> }, quartic { <35> }, poly { ORDER, <..> } and
+// polynomial { ORDER, xyz(i, j, k): c, ... } (runtime/objects/poly/poly.hpp);
+// quadric is a generic shape.
+struct poly_keyword : p::sor<TAO_PEGTL_KEYWORD("cubic"), TAO_PEGTL_KEYWORD("quartic"),
+                             TAO_PEGTL_KEYWORD("polynomial"), TAO_PEGTL_KEYWORD("poly")> {};
+struct poly_open : p::seq<poly_keyword, ws, p::must<lbrace>> {};
+struct poly_order : p::seq<sum> {};
+struct poly_coefficients
+    : p::seq<vector_open, frame_open, p::must<vector_component>,
+             p::star<p::sor<p::seq<comma, p::not_at<vector_close>, p::must<vector_component>>,
+                            vector_component>>,
+             p::opt<comma>, p::must<vector_close>> {};
+struct polynomial_power : p::seq<sum> {};
+struct polynomial_coefficient : p::seq<sum> {};
+struct polynomial_term
+    : p::seq<TAO_PEGTL_KEYWORD("xyz"), ws, p::must<lparen>, frame_open, p::must<polynomial_power>,
+             p::must<comma>, p::must<polynomial_power>, p::must<comma>, p::must<polynomial_power>,
+             p::must<rparen>, p::must<colon>, p::must<polynomial_coefficient>> {};
+struct poly_values
+    : p::sor<poly_coefficients, p::seq<polynomial_term, p::star<p::opt<comma>, polynomial_term>>> {
+};
+struct poly_block : p::seq<poly_open, p::opt<p::not_at<p::one<'<'>>, poly_order, p::opt<comma>>,
+                           p::must<poly_values>, object_modifiers, p::must<object_close>> {};
+
+struct object_value : p::sor<mesh_block, mesh2_block, blob_block, isosurface_block, poly_block,
+                             shape_block, csg_block, object_block, light_block> {};
 
 // Things that modify an object, in any order.
 struct object_texture : p::seq<texture_block> {};
@@ -251,13 +274,25 @@ struct shape_vectors_setting
     : p::seq<shape_vectors_setting_name, ws, frame_open, p::must<shape_vectors_setting_value>,
              p::star<comma, p::must<shape_vectors_setting_value>>> {};
 struct object_ignored_block
-    : p::seq<p::sor<TAO_PEGTL_KEYWORD("bounded_by"), TAO_PEGTL_KEYWORD("clipped_by"),
-                    TAO_PEGTL_KEYWORD("photons"), TAO_PEGTL_KEYWORD("radiosity")>,
-             ws, p::must<skipped_block>, ws> {};
+    : p::seq<p::sor<TAO_PEGTL_KEYWORD("photons"), TAO_PEGTL_KEYWORD("radiosity")>, ws,
+             p::must<skipped_block>, ws> {};
+// clipped_by { OBJECTS } and bounded_by { OBJECTS } (runtime/objects/object.hpp,
+// ObjectLimits); `clipped_by { bounded_by }` clips by the bound and
+// `bounded_by { clipped_by }` bounds by the clip (POV-Ray's Parse_Object_Mods).
+struct limit_word : p::sor<TAO_PEGTL_KEYWORD("clipped_by"), TAO_PEGTL_KEYWORD("bounded_by")> {};
+struct limit_open : p::seq<limit_word, ws, p::must<lbrace>> {};
+struct limit_same
+    : p::seq<p::sor<TAO_PEGTL_KEYWORD("clipped_by"), TAO_PEGTL_KEYWORD("bounded_by")>, ws> {};
+struct limit_object : p::sor<object_value, unsupported_block> {};
+struct limit_item;
+struct limit_item : p::sor<directive<limit_item>, macro_call<limit_item>, limit_object> {};
+struct limit_close : rbrace {};
+struct limit_block
+    : p::seq<limit_open, p::sor<limit_same, p::star<limit_item>>, p::must<limit_close>> {};
 struct object_modifier
     : p::sor<directive<object_modifier>, macro_call<object_modifier>, transformation, deformation,
              object_texture, object_pigment, object_finish, object_normal, object_interior,
-             object_material, object_flag, shape_vectors_setting, shape_setting,
+             object_material, object_flag, shape_vectors_setting, shape_setting, limit_block,
              object_ignored_block> {};
 
 }  // namespace hexant::language::grammar

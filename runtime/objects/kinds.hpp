@@ -16,6 +16,7 @@
 #include "runtime/objects/lathe/lathe.hpp"
 #include "runtime/objects/mesh/mesh.hpp"
 #include "runtime/objects/plane/plane.hpp"
+#include "runtime/objects/poly/poly.hpp"
 #include "runtime/objects/polygon/polygon.hpp"
 #include "runtime/objects/prism/prism.hpp"
 #include "runtime/objects/shape_kind.hpp"
@@ -30,8 +31,9 @@
 
 namespace hexant::runtime {
 
-using ShapeKinds = objects::KindList<Sphere, Box, Plane, Polygon, Triangle, SmoothTriangle, Disc,
-                                     Cylinder, Cone, Torus, Prism, Text, Mesh, Lathe, Sor,
-                                     Superellipsoid, HeightField, Blob, SphereSweep, Isosurface>;
+using ShapeKinds =
+    objects::KindList<Sphere, Box, Plane, Polygon, Triangle, SmoothTriangle, Disc, Cylinder, Cone,
+                      Torus, Prism, Text, Mesh, Lathe, Sor, Superellipsoid, HeightField, Blob,
+                      SphereSweep, Isosurface, Quadric, Cubic, Quartic, Poly, Polynomial>;
 
 }  // namespace hexant::runtime

@@ -70,8 +70,14 @@ bool ObjectRecord::texture_depends_on_time() const {
 }
 
 bool ObjectRecord::depends_on_time() const {
-    return !lifetime.is_always() || shape_depends_on_time() || transform.depends_on_time() ||
-           texture_depends_on_time() || (interior && varies(interior->ior));
+    if (!lifetime.is_always() || shape_depends_on_time() || transform.depends_on_time() ||
+        texture_depends_on_time() || (interior && varies(interior->ior)))
+        return true;
+    if (limits)
+        for (const auto* list : {&limits->clipped_by, &limits->bounded_by})
+            for (const auto& clip : *list)
+                if (clip->depends_on_time()) return true;
+    return false;
 }
 
 }  // namespace hexant::runtime

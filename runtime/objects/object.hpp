@@ -22,6 +22,20 @@ namespace hexant::runtime {
 // 8 MB stack; 15,000 levels overflowed it.
 inline constexpr int kMaxObjectDepth = 10000;
 
+// An object's clipped_by and bounded_by objects (POV-Ray's Clip and Bound
+// lists), in the object's own space: written in the space around it, they
+// are moved there by the inverse of the transforms the object had when
+// they were read, so the object's later transforms move them with it (as
+// POV-Ray's Parse_Object_Mods applies later transforms to them).
+struct ObjectLimits {
+    // Its surface is kept only inside every one of these (clipped_by).
+    std::vector<std::shared_ptr<const ObjectRecord>> clipped_by;
+    // It is tested only for rays that meet every one of these or start
+    // inside it (bounded_by: POV-Ray's Ray_In_Bound), which cuts an object
+    // larger than its bound the way POV-Ray does.
+    std::vector<std::shared_ptr<const ObjectRecord>> bounded_by;
+};
+
 struct ObjectRecord {
     Shape shape;
     Transform transform;             // object space to the parent's space
@@ -41,8 +55,11 @@ struct ObjectRecord {
     // Light sources written inside a CSG move with it.
     std::vector<LightRecord> lights;
     SourcePlace place;  // where the object was written
-    // What its own modifiers ask for that hexant lacks (clipped_by, ...).
+    // What its own modifiers ask for that hexant lacks (photons, ...).
     std::vector<Unrendered> unrendered;
+    // clipped_by and bounded_by; shared between copies, null when neither
+    // is written (most objects: a pointer keeps records small).
+    std::shared_ptr<const ObjectLimits> limits;
 
     bool depends_on_time() const;  // anything about it
     bool shape_depends_on_time() const;

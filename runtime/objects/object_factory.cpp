@@ -1,5 +1,6 @@
 #include "runtime/objects/object_factory.hpp"
 
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -7,6 +8,8 @@
 #include <variant>
 #include <vector>
 
+#include "runtime/objects/bounded_object.hpp"
+#include "runtime/objects/clipped_object.hpp"
 #include "runtime/objects/csg_object.hpp"
 #include "runtime/objects/lifetime_object.hpp"
 #include "runtime/objects/object_error.hpp"
@@ -60,6 +63,7 @@ Inherited handed_down(const ObjectRecord& record, const Inherited& parent) {
 }
 
 IntelligentObjectPtr build_object(const ObjectRecord& record, const Inherited& parent);
+IntelligentObjectPtr build_shape(const ObjectRecord& record, const Inherited& parent);
 IntelligentObjectPtr build(const ObjectRecord& record, const Inherited& parent);
 
 // A difference whose first member lives part of the time (made under a
@@ -100,7 +104,70 @@ IntelligentObjectPtr build(const ObjectRecord& record, const Inherited& parent) 
     return std::make_unique<LifetimeObject>(std::move(object), lifetime, parent.in_intersection);
 }
 
+// An object's clipped_by and bounded_by objects as intelligent objects,
+// built once under its transform (`own`: what the record hands down) and
+// shared by the members of a union split apart.
+struct BuiltLimits {
+    ClippedObject::Limits clips;
+    BoundedObject::Limits bounds;
+};
+BuiltLimits build_limits(const ObjectRecord& record, const Inherited& own, int csg_depth) {
+    BuiltLimits built;
+    if (!record.limits) return built;
+    if (csg_depth >= kMaxCsgDepth)
+        throw ObjectError(record.place, "clipped_by, bounded_by and CSG nested more than " +
+                                            std::to_string(kMaxCsgDepth) + " levels deep");
+    // Written in the object's space (ObjectLimits); one that does not exist
+    // at some instant limits nothing then.
+    Inherited down = own;
+    down.csg_depth = csg_depth + 1;
+    down.lifetime = Lifetime::always();
+    down.in_intersection = true;
+    const auto make = [&](const std::vector<ObjectPtr>& records) {
+        std::vector<IntelligentObjectPtr> objects;
+        objects.reserve(records.size());
+        for (const auto& r : records) objects.push_back(build(*r, down));
+        return std::make_shared<const std::vector<IntelligentObjectPtr>>(std::move(objects));
+    };
+    if (!record.limits->clipped_by.empty()) built.clips = make(record.limits->clipped_by);
+    if (!record.limits->bounded_by.empty()) built.bounds = make(record.limits->bounded_by);
+    return built;
+}
+
+// POV-Ray tests the bounds before the object and the clips on each hit.
+// `exact`, `box_always`: BoundedObject's.
+IntelligentObjectPtr limited(IntelligentObjectPtr object, const BuiltLimits& limits, bool exact,
+                             bool box_always) {
+    if (limits.bounds)
+        object =
+            std::make_unique<BoundedObject>(std::move(object), limits.bounds, exact, box_always);
+    if (limits.clips) object = std::make_unique<ClippedObject>(std::move(object), limits.clips);
+    return object;
+}
+
+// Where POV-Ray keeps an object's bounded_by (Link_To_Frame, with
+// Remove_Bounds on): inside a CSG object or a clip (never linked to the
+// frame), and on a CSG object, a poly (and a quadric) or a text at the top.
+bool keeps_bounds(const ObjectRecord& record, const Inherited& parent) {
+    if (parent.csg_depth > 0) return true;
+    return std::visit(
+        [](const auto& shape) {
+            using Kind = std::decay_t<decltype(shape)>;
+            return std::is_same_v<Kind, Csg> || std::is_same_v<Kind, Text> ||
+                   std::is_base_of_v<PolySurface, Kind>;
+        },
+        record.shape);
+}
+
 IntelligentObjectPtr build_object(const ObjectRecord& record, const Inherited& parent) {
+    IntelligentObjectPtr object = build_shape(record, parent);
+    if (!record.limits) return object;
+    return limited(std::move(object),
+                   build_limits(record, handed_down(record, parent), parent.csg_depth),
+                   keeps_bounds(record, parent), false);
+}
+
+IntelligentObjectPtr build_shape(const ObjectRecord& record, const Inherited& parent) {
     const Inherited own = handed_down(record, parent);
     const Transform& to_world = own.to_world;
     const std::optional<Interior>& interior = own.interior;
@@ -166,7 +233,25 @@ void build_split(const ObjectRecord& record, const Inherited& parent,
     }
     Inherited down = handed_down(record, parent);
     down.lifetime = record.lifetime.intersect(parent.lifetime);
-    for (const auto& child : csg->children) build_split(*child, down, out);
+    if (!record.limits) {
+        for (const auto& child : csg->children) build_split(*child, down, out);
+        return;
+    }
+    // Clipping or bounding a union is clipping or bounding each member (a
+    // point is in the union's surface where it is in a member's; a ray
+    // meets the bounds or not whichever member it tests). POV-Ray splits a
+    // bounded union whose members all have a finite extent and drops its
+    // bounds ("Bounded CSG union split"); it keeps a clipped one whole, and
+    // a bounded one with a member of no finite extent, whose box is then
+    // everything.
+    const BuiltLimits limits = build_limits(record, down, parent.csg_depth);
+    std::vector<IntelligentObjectPtr> members;
+    for (const auto& child : csg->children) build_split(*child, down, members);
+    const bool finite =
+        std::all_of(members.begin(), members.end(), [](const auto& m) { return m->bounded(); });
+    BuiltLimits kept = limits;
+    if (!limits.clips && finite) kept.bounds.reset();
+    for (auto& member : members) out.push_back(limited(std::move(member), kept, true, !finite));
 }
 
 }  // namespace

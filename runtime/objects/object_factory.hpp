@@ -21,8 +21,9 @@ IntelligentObjectPtr make_intelligent_object(const ObjectRecord& record,
 // bounds and separates them like any objects, rather than testing a whole
 // union whenever a ray meets its bound. A union is kept whole where
 // splitting would change it: `inverse` (its inside matters to no parent
-// here, but its flipped normals must stay flipped together) and merge,
-// intersection and difference (their surfaces depend on each other).
+// here, but its flipped normals must stay flipped together), clipped_by
+// or bounded_by (one clip for the whole), and merge, intersection and
+// difference (their surfaces depend on each other).
 // Appends to `out`.
 void make_intelligent_objects(const ObjectRecord& record, const Texture& default_texture,
                               std::vector<IntelligentObjectPtr>& out);

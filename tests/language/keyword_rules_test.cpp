@@ -45,8 +45,6 @@ const std::map<std::string, Probe>& probes() {
         const auto self = [&](const std::string& word, const std::string& text) {
             p[word] = {text, word};
         };
-        self("bounded_by", "sphere { 0, 1 bounded_by { box { -1, 1 } } }");
-        self("clipped_by", "sphere { 0, 1 clipped_by { plane { y, 0 } } }");
         self("photons", "sphere { 0, 1 photons { target } }");
         self("radiosity", "global_settings { radiosity { } }");
         self("projected_through", "light_source { 0, 1 projected_through { sphere { 0, 1 } } }");
