@@ -239,19 +239,16 @@ void build_split(const ObjectRecord& record, const Inherited& parent,
     }
     // Clipping or bounding a union is clipping or bounding each member (a
     // point is in the union's surface where it is in a member's; a ray
-    // meets the bounds or not whichever member it tests). POV-Ray splits a
-    // bounded union whose members all have a finite extent and drops its
-    // bounds ("Bounded CSG union split"); it keeps a clipped one whole, and
-    // a bounded one with a member of no finite extent, whose box is then
-    // everything.
+    // meets the bounds or not whichever member it tests). POV-Ray keeps a
+    // clipped or bounded union whole, with its bounds (its Split_Unions is
+    // off by default); one with a member of no finite extent has a box of
+    // everything, so the bounds' box always gates it.
     const BuiltLimits limits = build_limits(record, down, parent.csg_depth);
     std::vector<IntelligentObjectPtr> members;
     for (const auto& child : csg->children) build_split(*child, down, members);
     const bool finite =
         std::all_of(members.begin(), members.end(), [](const auto& m) { return m->bounded(); });
-    BuiltLimits kept = limits;
-    if (!limits.clips && finite) kept.bounds.reset();
-    for (auto& member : members) out.push_back(limited(std::move(member), kept, true, !finite));
+    for (auto& member : members) out.push_back(limited(std::move(member), limits, true, !finite));
 }
 
 }  // namespace
