@@ -36,6 +36,9 @@ void add_scene_arguments(CLI::App& command, SceneArguments& a) {
     command.add_option("--allow-read", a.read_paths,
                        "Folder #include may also read from (POV-Ray's Read_Paths); otherwise only "
                        "the scene's folder, -L folders and the include folders");
+    command.add_option("--allow-write", a.write_paths,
+                       "Folder #fopen may also write to (POV-Ray's Write_Paths); otherwise only "
+                       "the scene's output folder, that of -o (out/SCENE by default)");
     command.add_flag("--strict", a.strict,
                      "Every warning an error at its place: refuse a scene that uses what hexant "
                      "does not render as POV-Ray does");
@@ -158,6 +161,9 @@ ResolvedScene resolve(const SceneArguments& arguments) {
     if (arguments.rolling_shutter) a.rolling_shutter = *arguments.rolling_shutter;
     for (const auto& path : arguments.include_paths) r.options.include_paths.emplace_back(path);
     for (const auto& path : arguments.read_paths) r.options.read_paths.emplace_back(path);
+    for (const auto& path : arguments.write_paths) r.options.write_paths.emplace_back(path);
+    // The default output folder, as render's default -o (render sets its own).
+    r.options.output_folder = std::filesystem::path("out") / std::filesystem::path(r.scene).stem();
     r.options.strict = arguments.strict;
     for (const auto& d : arguments.declares) {
         const auto eq = d.find('=');

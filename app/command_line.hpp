@@ -28,6 +28,7 @@ struct SceneArguments {
     std::optional<double> rolling_shutter;
     std::vector<std::string> include_paths;
     std::vector<std::string> read_paths;
+    std::vector<std::string> write_paths;
     std::vector<std::string> declares;  // NAME=VALUE
     bool strict = false;                // every warning an error
     // Limits (language/limits.hpp); each raises or lowers one default.

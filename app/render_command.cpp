@@ -654,6 +654,11 @@ int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err
     return run_reporting_errors(err, [&] {
         ResolvedScene resolved = resolve(args.scene);
         for (const auto& warning : resolved.warnings) err << warning << "\n";
+        // The scene's files go beside its images.
+        if (args.output) {
+            const std::filesystem::path folder = std::filesystem::path(*args.output).parent_path();
+            resolved.options.output_folder = folder.empty() ? std::filesystem::path(".") : folder;
+        }
         runtime::SceneDescription scene =
             language::parse_scene_file(resolved.scene, resolved.options);
         apply_scene_defaults(args, scene, err);

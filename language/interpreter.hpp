@@ -22,6 +22,12 @@ struct ParseOptions {
     // scene's folder, the include paths and the include folders of hexant
     // and POV-Ray.
     std::vector<std::filesystem::path> read_paths;
+    // Where #fopen may write (language/file_io.hpp): the scene's output
+    // folder (the folder of its images; a relative name is made there) and
+    // the --allow-write folders. Empty: a scene may not write at all (text
+    // read from memory, the fuzzer).
+    std::filesystem::path output_folder;
+    std::vector<std::filesystem::path> write_paths;
     // NAME=VALUE pairs (POV-Ray's Declare=); VALUE is a number, a vector of
     // numbers or a string, never scene text.
     std::vector<std::pair<std::string, std::string>> declares;

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <deque>
 #include <filesystem>
@@ -33,6 +34,7 @@
 #include "language/block_stack.hpp"
 #include "language/builtins.hpp"
 #include "language/errors.hpp"
+#include "language/file_io.hpp"
 #include "language/grammar.hpp"
 #include "language/image_map_file.hpp"
 #include "language/interpreter.hpp"
@@ -183,6 +185,20 @@ class Interpreter {
             if (names[i] == name) return static_cast<int>(i);
         return std::nullopt;
     }
+    // User functions' calls made so far (language/actions/literals.hpp,
+    // call_user_function): keyed by the function's and the arguments'
+    // addresses (a constant argument by its bits, its lowest bit flipped).
+    using FunctionCall = std::vector<std::uint64_t>;
+    struct CalledFunction {
+        std::shared_ptr<const runtime::UserFunction> function;
+        std::vector<TimeFunction> arguments;
+        TimeFunction result;
+    };
+    std::map<FunctionCall, CalledFunction> function_calls;
+    // The files #fopen opened (language/file_io.hpp), and whether the
+    // #read being read has met its file's end.
+    UserFiles user_files;
+    bool file_read_ended = false;
     // The values of the mesh2 section being read (language/mesh_reading.hpp).
     std::vector<MeshValue> mesh2_values;
     // global_settings { charset }: "ascii" (POV-Ray's default) or "utf8".

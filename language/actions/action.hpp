@@ -5,6 +5,7 @@
 #pragma once
 
 #include <algorithm>
+#include <bit>
 #include <iomanip>
 #include <iostream>
 #include <sstream>

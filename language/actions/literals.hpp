@@ -419,17 +419,34 @@ struct action<g::index_suffix> {
 };
 
 // F(a, b, ...): the body with the arguments in place (folded to a number
-// when they are numbers). POV-Ray wants one argument per parameter.
-inline Value call_user_function(const runtime::UserFunction& f, const std::vector<Value>& args) {
-    if (!f.unimplemented.empty())
-        throw UnsupportedError("the internal function " + f.unimplemented +
+// when they are numbers). POV-Ray wants one argument per parameter. A call
+// made before with the same arguments (the same nodes) gives the same
+// node (Interpreter::function_calls), so a function that calls another
+// twice, G = F(x, y, z) + F(x, y, z), shares F's body instead of copying
+// it: a chain of such functions stays linear in size, not exponential.
+inline Value call_user_function(Interpreter& st,
+                                const std::shared_ptr<const runtime::UserFunction>& f,
+                                const std::vector<Value>& args) {
+    if (!f->unimplemented.empty())
+        throw UnsupportedError("the internal function " + f->unimplemented +
                                " is not implemented by hexant");
-    if (args.size() != f.parameters.size())
-        throw ValueError("this function takes " + std::to_string(f.parameters.size()) +
+    if (args.size() != f->parameters.size())
+        throw ValueError("this function takes " + std::to_string(f->parameters.size()) +
                          " arguments, not " + std::to_string(args.size()));
     std::vector<TimeFunction> values;
     for (const Value& a : args) values.push_back(to_float(a, "a function's argument"));
-    return Value{runtime::substitute_arguments(f.body, values)};
+    Interpreter::FunctionCall key;
+    key.push_back(reinterpret_cast<std::uintptr_t>(f.get()));
+    for (const TimeFunction& v : values)
+        key.push_back(v.is_constant() ? std::bit_cast<std::uint64_t>(v.constant()) ^ 1u
+                                      : reinterpret_cast<std::uintptr_t>(v.node()));
+    if (const auto it = st.function_calls.find(key); it != st.function_calls.end())
+        return Value{it->second.result};
+    TimeFunction result = runtime::substitute_arguments(f->body, values);
+    // The entry keeps the function and the arguments alive, so that no
+    // other takes their addresses while it stands.
+    st.function_calls.emplace(std::move(key), Interpreter::CalledFunction{f, values, result});
+    return Value{result};
 }
 
 template <>
@@ -441,7 +458,7 @@ struct action<g::spline_call> {
         Value s = st.values.pop();
         if (s.is<std::shared_ptr<const runtime::UserFunction>>()) {
             st.values.push(
-                call_user_function(*s.as<std::shared_ptr<const runtime::UserFunction>>(), args));
+                call_user_function(st, s.as<std::shared_ptr<const runtime::UserFunction>>(), args));
             return;
         }
         if (!s.is<std::shared_ptr<const runtime::Spline>>())

@@ -70,10 +70,33 @@ struct range_header : p::seq<lparen, p::must<condition_value>, p::must<comma>,
 struct macro_body_end : p::eof {};
 struct include_end : p::eof {};
 
+// #fopen NAME "file" read|write|append, #fclose NAME, #write (NAME, items)
+// and #read (NAME, identifiers) (language/file_io.hpp).
+struct fopen_id : identifier {};
+struct fopen_path : p::seq<expression> {};
+struct fopen_mode
+    : p::sor<TAO_PEGTL_KEYWORD("read"), TAO_PEGTL_KEYWORD("write"), TAO_PEGTL_KEYWORD("append")> {};
+struct fopen_directive : p::seq<TAO_PEGTL_KEYWORD("fopen"), ws, p::must<fopen_id>,
+                                p::must<fopen_path>, p::must<fopen_mode>, ws> {};
+struct fclose_id : identifier {};
+struct fclose_directive : p::seq<TAO_PEGTL_KEYWORD("fclose"), ws, p::must<fclose_id>> {};
+struct file_id : identifier {};
+struct write_binary_word : p::sor<TAO_PEGTL_KEYWORD("sint8"), TAO_PEGTL_KEYWORD("uint8"),
+                                  TAO_PEGTL_KEYWORD("sint16be"), TAO_PEGTL_KEYWORD("sint16le"),
+                                  TAO_PEGTL_KEYWORD("uint16be"), TAO_PEGTL_KEYWORD("uint16le"),
+                                  TAO_PEGTL_KEYWORD("sint32be"), TAO_PEGTL_KEYWORD("sint32le")> {};
+struct write_binary_value : p::seq<expression> {};
+struct write_binary : p::seq<write_binary_word, ws, p::must<write_binary_value>> {};
+struct write_value : p::seq<expression> {};
+struct file_close : rparen {};
+struct write_directive
+    : p::seq<TAO_PEGTL_KEYWORD("write"), ws, p::must<lparen>, p::must<file_id>,
+             p::star<p::sor<comma, write_binary, write_value>>, p::must<file_close>> {};
+struct read_target : identifier {};
+struct read_directive : p::seq<TAO_PEGTL_KEYWORD("read"), ws, p::must<lparen>, p::must<file_id>,
+                               p::star<p::sor<comma, read_target>>, p::must<file_close>> {};
 struct unsupported_directive
-    : p::sor<TAO_PEGTL_KEYWORD("fopen"), TAO_PEGTL_KEYWORD("fclose"), TAO_PEGTL_KEYWORD("read"),
-             TAO_PEGTL_KEYWORD("write"), TAO_PEGTL_KEYWORD("render"),
-             TAO_PEGTL_KEYWORD("statistics")> {};
+    : p::sor<TAO_PEGTL_KEYWORD("render"), TAO_PEGTL_KEYWORD("statistics")> {};
 // Anything after '#' that is not a directive, nor a block's divider.
 struct unknown_directive : p::seq<p::not_at<skip::divider_word>, p::identifier_first> {};
 
@@ -84,6 +107,7 @@ struct directive
                           while_directive<Item>, for_directive<Item>, switch_directive<Item>,
                           include_directive<Item>, macro_definition, undef_directive,
                           version_directive, debug_directive, warning_directive, error_directive,
-                          default_block, unsupported_directive, unknown_directive>> {};
+                          default_block, fopen_directive, fclose_directive, write_directive,
+                          read_directive, unsupported_directive, unknown_directive>> {};
 
 }  // namespace hexant::language::grammar

@@ -3,6 +3,7 @@
 // includes it.
 #pragma once
 
+#include "language/array_index.hpp"
 #include "language/interpreter/reading.hpp"
 #include "language/interpreter_state.hpp"
 
@@ -203,6 +204,17 @@ bool Interpreter::run_ifdef(ParseInput& in) {
     const char* name = negate ? "#ifndef" : "#ifdef";
     read<grammar::lparen, Action, Control>(in);
     const std::string id = identifier(in, "a name in #ifdef ( )");
+    // #ifdef (A[i][j]): whether that element of an array is set.
+    std::vector<double> indices;
+    while (!in.empty() && in.peek_char() == '[') {
+        const auto where = in.position();
+        read<grammar::declare_index, Action, Control>(in);
+        try {
+            indices.push_back(to_constant(values.pop(), "an array index in #ifdef ( )"));
+        } catch (const ValueError& e) {
+            fail(where, e.what());
+        }
+    }
     read<grammar::condition_close, Action, Control>(in);
     const auto rest = [&](bool taken) {
         Divider d = taken ? run_body<Item, Action, Control>(in) : skip_body<Control>(in);
@@ -210,6 +222,24 @@ bool Interpreter::run_ifdef(ParseInput& in) {
             d = taken ? skip_body<Control>(in) : run_body<Item, Action, Control>(in);
         if (d != Divider::End) unclosed(opened, name, d, in);
     };
+    if (!indices.empty()) {
+        const Value* v = symbols.lookup(id);
+        if (v == nullptr) {
+            rest(negate);
+            return true;
+        }
+        if (!v->is<std::shared_ptr<Array>>())
+            fail(opened, std::string(name) + " (" + id + "[...]): '" + id + "' is not an array");
+        const Array& array = *v->as<std::shared_ptr<Array>>();
+        bool set = false;
+        try {
+            set = array.elements[element_index(array, indices)].has_value();
+        } catch (const ValueError& e) {
+            fail(opened, std::string(name) + ": " + e.what());
+        }
+        rest(set != negate);
+        return true;
+    }
     const runtime::Lifetime* when = symbols.declared_when(id);
     if (when == nullptr || when->is_always()) {
         rest((when != nullptr) != negate);

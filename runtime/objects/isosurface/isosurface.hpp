@@ -20,6 +20,7 @@
 #include <string_view>
 
 #include "runtime/objects/shape_kind.hpp"
+#include "runtime/time/time_tape.hpp"
 #include "runtime/time/vector_function.hpp"
 
 namespace hexant::runtime {
@@ -54,9 +55,12 @@ struct Isosurface {
     template <class F>
     void parameters(F&& f) const {
         if (function) {
-            std::string text = function->to_string();
-            if (text.size() > 200) text = text.substr(0, 200) + "...";
-            f("function", "function", objects::DescribedParameter{text});
+            // Its size, not its text: a body that calls functions is a
+            // graph whose text can be exponentially longer than it.
+            const TimeTape tape = TimeTape::compile({*function});
+            f("function", "function",
+              objects::DescribedParameter{"a user function of " + std::to_string(tape.size()) +
+                                          " operations"});
         }
         f("threshold", "threshold", threshold);
         if (sphere_container) {
