@@ -24,6 +24,15 @@ std::string timing(const runtime::ObjectRecord& object) {
     if (object.transform.depends_on_time()) parts.push_back("transform");
     if (object.texture_depends_on_time()) parts.push_back("texture");
     if (object.interior && object.interior->ior.depends_on_time()) parts.push_back("ior");
+    if (object.limits) {
+        const auto moves = [](const auto& list) {
+            for (const auto& limit : list)
+                if (limit->depends_on_time()) return true;
+            return false;
+        };
+        if (moves(object.limits->clipped_by)) parts.push_back("clipped_by");
+        if (moves(object.limits->bounded_by)) parts.push_back("bounded_by");
+    }
     std::string s;
     for (const auto& p : parts) s += (s.empty() ? "" : ", ") + p;
     s = parts.empty() ? "static" : s + (parts.size() == 1 ? " depends" : " depend") + " on time";
