@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <system_error>
 
+#include "language/source_files.hpp"
 #include "language/value_ops.hpp"
 
 namespace hexant::language {
@@ -13,16 +14,6 @@ namespace hexant::language {
 namespace fs = std::filesystem;
 
 namespace {
-
-// Is `file` inside `folder` (both absolute and normal)?
-bool lies_in(const fs::path& file, const fs::path& folder) {
-    auto f = file.begin();
-    for (auto d = folder.begin(); d != folder.end(); ++d, ++f) {
-        if (d->empty()) continue;
-        if (f == file.end() || *f != *d) return false;
-    }
-    return true;
-}
 
 // The path with `..` and every symbolic link of its existing part
 // resolved (the file itself too, when it exists: a link there points
@@ -56,8 +47,7 @@ fs::path writable_path(const std::string& name, const fs::path& output_folder,
     if (name.empty()) throw ValueError("a file needs a name");
     const fs::path given(name);
     const fs::path file = real_path(given.is_absolute() ? given : output_folder / given);
-    for (const fs::path system : {"/proc", "/sys", "/dev"})
-        if (lies_in(file, system)) throw ValueError("it is a system file: refused");
+    if (is_system_path(file)) throw ValueError("it is a system file: refused");
     std::vector<fs::path> allowed{output_folder};
     allowed.insert(allowed.end(), also.begin(), also.end());
     for (const auto& folder : allowed)

@@ -221,10 +221,7 @@ void Interpreter::assign_element(const std::string& name, const std::vector<Valu
 const char* const kPovRayIncludeDir = "/usr/share/povray-3.7/include";
 const char* const kPovRayFontDir = "/usr/share/fonts/truetype/povray";
 
-namespace {
-
-// Is `file` inside `folder` (both canonical)?
-bool inside(const std::filesystem::path& file, const std::filesystem::path& folder) {
+bool lies_in(const std::filesystem::path& file, const std::filesystem::path& folder) {
     auto f = file.begin();
     for (auto d = folder.begin(); d != folder.end(); ++d, ++f) {
         if (d->empty()) continue;  // a trailing separator
@@ -233,7 +230,11 @@ bool inside(const std::filesystem::path& file, const std::filesystem::path& fold
     return true;
 }
 
-}  // namespace
+bool is_system_path(const std::filesystem::path& file) {
+    for (const std::filesystem::path system : {"/proc", "/sys", "/dev"})
+        if (lies_in(file, system)) return true;
+    return false;
+}
 
 std::string read_source_text(const std::filesystem::path& path, std::size_t max_bytes) {
     namespace fs = std::filesystem;
@@ -313,11 +314,10 @@ std::filesystem::path Interpreter::resolve_include(
     std::vector<fs::path> allowed = folders;
     allowed.push_back(kPovRayIncludeDir);
     allowed.insert(allowed.end(), options.read_paths.begin(), options.read_paths.end());
-    for (const fs::path system : {"/proc", "/sys", "/dev"})
-        if (inside(real, system)) fail(where, what + " '" + name + "' is a system file: refused");
+    if (is_system_path(real)) fail(where, what + " '" + name + "' is a system file: refused");
     for (const auto& folder : allowed) {
         const fs::path root = fs::weakly_canonical(folder.empty() ? fs::path(".") : folder, error);
-        if (!error && inside(real, root)) return real;
+        if (!error && lies_in(real, root)) return real;
     }
     fail(where, what + " '" + name +
                     "' is outside the folders a scene may read (its own "

@@ -21,4 +21,11 @@ extern const char* const kPovRayFontDir;
 // saying what is wrong with it.
 std::string read_source_text(const std::filesystem::path& path, std::size_t max_bytes);
 
+// Is `file` inside `folder` (both absolute, with `..` and symbolic links
+// resolved)? The confinement of every file a scene reads or writes.
+bool lies_in(const std::filesystem::path& file, const std::filesystem::path& folder);
+// Is `file` (resolved) under /proc, /sys or /dev, which a scene never
+// reads or writes?
+bool is_system_path(const std::filesystem::path& file);
+
 }  // namespace hexant::language

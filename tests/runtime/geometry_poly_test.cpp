@@ -21,9 +21,6 @@ PolyGeometry poly(int order, const std::vector<std::pair<std::array<int, 3>, dou
     PolyGeometry g;
     g.order = order;
     g.coefficients.assign(static_cast<std::size_t>(rt::poly_term_count(order)), 0.0);
-    for (int i = order; i >= 0; --i)
-        for (int j = order - i; j >= 0; --j)
-            for (int k = order - i - j; k >= 0; --k) g.powers.push_back({i, j, k});
     for (const auto& [e, c] : terms)
         g.coefficients[static_cast<std::size_t>(rt::poly_term_index(order, e[0], e[1], e[2]))] += c;
     return g;
@@ -48,6 +45,14 @@ PolyGeometry torus(double R, double r) {
 }  // namespace
 
 TEST_CASE("poly terms come in POV-Ray's order", "[geometry][poly]") {
+    // The geometry's table and the language's index agree term by term.
+    for (int order = 2; order <= 15; ++order) {
+        const auto& terms = rt::geometry::poly_terms(order);
+        REQUIRE(static_cast<int>(terms.size()) == rt::poly_term_count(order));
+        for (std::size_t n = 0; n < terms.size(); ++n)
+            CHECK(rt::poly_term_index(order, terms[n][0], terms[n][1], terms[n][2]) ==
+                  static_cast<int>(n));
+    }
     // The cubic's twenty terms as POV-Ray's documentation lists them.
     const std::vector<std::array<int, 3>> cubic = {
         {3, 0, 0}, {2, 1, 0}, {2, 0, 1}, {2, 0, 0}, {1, 2, 0}, {1, 1, 1}, {1, 1, 0},

@@ -31,10 +31,23 @@ void powers_of_line(double a, double b, int order, std::array<Coefficients, kMax
 
 }  // namespace
 
+const std::vector<std::array<int, 3>>& poly_terms(int order) {
+    static const auto tables = [] {
+        std::array<std::vector<std::array<int, 3>>, kMaxOrder + 1> all;
+        for (int n = 1; n <= kMaxOrder; ++n)
+            for (int i = n; i >= 0; --i)
+                for (int j = n - i; j >= 0; --j)
+                    for (int k = n - i - j; k >= 0; --k) all[n].push_back({i, j, k});
+        return all;
+    }();
+    return tables.at(static_cast<std::size_t>(order));
+}
+
 double evaluate(const PolyGeometry& g, const glm::dvec3& p) {
+    const auto& terms = poly_terms(g.order);
     double sum = 0.0;
     for (std::size_t n = 0; n < g.coefficients.size(); ++n) {
-        const auto& e = g.powers[n];
+        const auto& e = terms[n];
         if (g.coefficients[n] == 0.0) continue;
         sum += g.coefficients[n] * std::pow(p.x, e[0]) * std::pow(p.y, e[1]) * std::pow(p.z, e[2]);
     }
@@ -42,11 +55,12 @@ double evaluate(const PolyGeometry& g, const glm::dvec3& p) {
 }
 
 glm::dvec3 gradient(const PolyGeometry& g, const glm::dvec3& p) {
+    const auto& terms = poly_terms(g.order);
     glm::dvec3 d(0.0);
     for (std::size_t n = 0; n < g.coefficients.size(); ++n) {
         const double c = g.coefficients[n];
         if (c == 0.0) continue;
-        const auto& e = g.powers[n];
+        const auto& e = terms[n];
         const double px = std::pow(p.x, e[0]), py = std::pow(p.y, e[1]), pz = std::pow(p.z, e[2]);
         if (e[0] > 0) d.x += c * e[0] * std::pow(p.x, e[0] - 1) * py * pz;
         if (e[1] > 0) d.y += c * e[1] * px * std::pow(p.y, e[1] - 1) * pz;
@@ -61,6 +75,7 @@ std::optional<SurfaceHit> intersect(const PolyGeometry& g, const Ray3& ray, doub
     // Polys are written about the object's origin, at about unit size.
     const auto local = local_ray(ray, glm::dvec3(0.0), 1.0);
     if (!local) return std::nullopt;
+    const auto& terms = poly_terms(g.order);
     std::array<Coefficients, kMaxOrder + 1> px, py, pz;
     powers_of_line(local->origin.x, local->unit.x, g.order, px);
     powers_of_line(local->origin.y, local->unit.y, g.order, py);
@@ -69,7 +84,7 @@ std::optional<SurfaceHit> intersect(const PolyGeometry& g, const Ray3& ray, doub
     for (std::size_t n = 0; n < g.coefficients.size(); ++n) {
         const double c = g.coefficients[n];
         if (c == 0.0) continue;
-        const auto& e = g.powers[n];
+        const auto& e = terms[n];
         // x^i y^j z^k along the ray: the product of three polynomials in t.
         Coefficients xy{};
         for (int a = 0; a <= e[0]; ++a)
@@ -109,6 +124,7 @@ bool inside(const PolyGeometry& g, glm::dvec3 p) {
 // p over the box by interval arithmetic: where its range excludes 0, the
 // surface does not meet the box.
 bool surface_may_meet(const PolyGeometry& g, const Box3& box) {
+    const auto& terms = poly_terms(g.order);
     const Interval x(box.lo.x, box.hi.x), y(box.lo.y, box.hi.y), z(box.lo.z, box.hi.z);
     const auto power = [](const Interval& v, int k) {
         Interval r(1.0);
@@ -118,7 +134,7 @@ bool surface_may_meet(const PolyGeometry& g, const Box3& box) {
     Interval sum(0.0);
     for (std::size_t n = 0; n < g.coefficients.size(); ++n) {
         if (g.coefficients[n] == 0.0) continue;
-        const auto& e = g.powers[n];
+        const auto& e = terms[n];
         sum = sum + Interval(g.coefficients[n]) * power(x, e[0]) * power(y, e[1]) * power(z, e[2]);
     }
     return !(sum.lo > 0.0 || sum.hi < 0.0);

@@ -23,11 +23,14 @@ namespace hexant::runtime::geometry {
 
 struct PolyGeometry {
     int order = 2;
-    // poly_term_count(order) coefficients in POV-Ray's order, with each
-    // term's powers beside it.
+    // poly_term_count(order) coefficients in POV-Ray's order (poly_terms).
     std::vector<double> coefficients;
-    std::vector<std::array<int, 3>> powers;
 };
+
+// The powers (i, j, k) of x^i y^j z^k of each term of a polynomial of
+// `order` (1 to kMaxPolynomialDegree), in POV-Ray's order: one table per
+// order, made once.
+const std::vector<std::array<int, 3>>& poly_terms(int order);
 
 std::optional<SurfaceHit> intersect(const PolyGeometry& g, const Ray3& ray, double s_min,
                                     double s_max);

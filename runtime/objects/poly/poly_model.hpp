@@ -20,9 +20,6 @@ class PolyModel {
 
     explicit PolyModel(const PolySurface& s) : order_(s.order) {
         for (const TimeFunction& c : s.coefficients) coefficients_.emplace_back(c);
-        for (int i = order_; i >= 0; --i)
-            for (int j = order_ - i; j >= 0; --j)
-                for (int k = order_ - i - j; k >= 0; --k) powers_.push_back({i, j, k});
     }
 
     bool is_static() const {
@@ -33,7 +30,7 @@ class PolyModel {
     Geometry at(double t) const {
         Geometry g;
         g.order = order_;
-        g.powers = powers_;
+        g.coefficients.reserve(coefficients_.size());
         for (const auto& c : coefficients_) g.coefficients.push_back(c.at(t));
         return g;
     }
@@ -49,7 +46,6 @@ class PolyModel {
   private:
     int order_;
     std::vector<CompiledScalar> coefficients_;
-    std::vector<std::array<int, 3>> powers_;
 };
 
 }  // namespace hexant::runtime::objects
