@@ -289,6 +289,19 @@ void dump_scene(const runtime::SceneDescription& scene, double t, std::ostream& 
         case runtime::CameraType::Spherical:
             out << " spherical angle=" << number(camera.h_angle) << "," << number(camera.v_angle);
             break;
+        case runtime::CameraType::UltraWideAngle:
+            out << " ultra_wide_angle angle=" << number(camera.angle);
+            break;
+        case runtime::CameraType::Omnimax:
+            out << " omnimax";
+            break;
+        case runtime::CameraType::Cylinder1:
+        case runtime::CameraType::Cylinder2:
+        case runtime::CameraType::Cylinder3:
+        case runtime::CameraType::Cylinder4:
+            out << " cylinder " << 1 + int(camera.type) - int(runtime::CameraType::Cylinder1)
+                << " angle=" << number(camera.angle);
+            break;
     }
     if (camera.aperture != 0.0)
         out << " aperture=" << number(camera.aperture)

@@ -19,6 +19,7 @@
 #include <tao/pegtl.hpp>
 
 #include "language/image_map_file.hpp"
+#include "language/value.hpp"
 #include "runtime/scene/scene.hpp"
 
 namespace hexant::language {
@@ -29,10 +30,7 @@ struct SplineBuilder {
     int dimensions = 1;
 };
 
-struct MaterialBuilder {
-    std::optional<runtime::Texture> texture;
-    std::optional<runtime::Interior> interior;
-};
+using MaterialBuilder = Material;
 
 // image_map { } being read: the map, the file as read (decoded when the
 // block closes, after its gamma), and what was said of it.

@@ -8,6 +8,7 @@
 
 #include "language/checked_integer.hpp"
 #include "language/value_ops.hpp"
+#include "runtime/texture/pattern/noise.hpp"
 #include "runtime/time/switching_instants.hpp"
 
 namespace hexant::language {
@@ -249,6 +250,22 @@ const std::map<std::string, Builtin>& table() {
              expect_count(n, a, 2, 2);
              const auto c = cross(arg_vector(n, a, 0), arg_vector(n, a, 1));
              return vec3(c.c[0], c.c[1], c.c[2]);
+         }},
+        {"vturbulence",
+         [](const std::string& n, const Args& a, RandomStreams&) {
+             // vturbulence(Lambda, Omega, Octaves, V): POV-Ray's DTurbulence
+             // at V, the octaves truncated and clamped to 1..10
+             // (parser_expressions.cpp).
+             expect_count(n, a, 4, 4);
+             const auto v = arg_vector(n, a, 3);
+             if (v.depends_on_time())
+                 throw ValueError(
+                     "vturbulence() at a point that moves with clock is not "
+                     "supported by hexant");
+             const runtime::pattern::Octaves o = runtime::pattern::octaves_of(
+                 arg_constant(n, a, 2), arg_constant(n, a, 1), arg_constant(n, a, 0));
+             const glm::dvec3 d = runtime::pattern::dturbulence(v(0.0), o);
+             return vec3(d.x, d.y, d.z);
          }},
         {"vrotate",
          [](const std::string& n, const Args& a, RandomStreams&) {

@@ -29,6 +29,7 @@ HEXANT_ERROR(vector_close, "expected ',' or '>' to close the vector");
 HEXANT_ERROR(call_open, "expected '(' after the function's name");
 HEXANT_ERROR(call_argument, "expected an argument after ','");
 HEXANT_ERROR(call_close, "expected ',' or ')' after the argument");
+HEXANT_ERROR(trace_normal_name, "expected the name of a declared vector for trace()'s normal");
 HEXANT_ERROR(defined_name, "expected a name inside defined( )");
 HEXANT_ERROR(colour_model_argument, "expected a colour value after the colour keyword");
 HEXANT_ERROR(colour_component_value, "expected a value after the colour component keyword");
@@ -76,7 +77,7 @@ HEXANT_ERROR(warp_turbulence_keyword,
              "expected turbulence in warp { } (hexant's warps are turbulence; repeat, black_hole "
              "and the mapping warps are not supported)");
 HEXANT_ERROR(warp_turbulence, "expected the turbulence's amount (a vector or a number)");
-HEXANT_ERROR(colour_map_item, "expected a value and a colour in the colour map's entry");
+HEXANT_ERROR(colour_map_value, "expected a value and a colour in the colour map's entry");
 HEXANT_ERROR(pigment_map_value, "expected the value of the pigment map's entry");
 HEXANT_ERROR(texture_map_value, "expected the value of the texture map's entry");
 HEXANT_ERROR(normal_map_value, "expected the value of the normal map's entry");
@@ -117,6 +118,7 @@ HEXANT_ERROR(looks_like_base, "expected an object or a declared object's name");
 HEXANT_ERROR(light_arguments, "expected the light's position and colour");
 HEXANT_ERROR(light_setting_value, "expected a value after the light setting");
 HEXANT_ERROR(area_light_argument, "expected area_light <axis1>, <axis2>, size1, size2");
+HEXANT_ERROR(camera_cylinder_value, "expected the cylinder camera's type (1 to 4)");
 HEXANT_ERROR(camera_blur_argument, "expected a value for aperture, focal_point or blur_samples");
 HEXANT_ERROR(camera_vector_value, "expected a value after the camera setting");
 HEXANT_ERROR(background_colour, "expected a colour in background { }");

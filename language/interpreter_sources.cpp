@@ -114,20 +114,26 @@ void Interpreter::not_rendered(const p::position& where, std::string_view word) 
     warn(where, unrendered(where, word).message);
 }
 
-void Interpreter::finish_reading(const std::string& name) {
+void Interpreter::finish_reading([[maybe_unused]] const std::string& name) {
     // POV-Ray 3.7 (parse.cpp, after parsing; its EffectiveLanguageVersion
     // is 3.62 until a #version is read): a scene whose version ends below
     // 3.7 and that sets no assumed_gamma is rendered with no gamma
     // correction at all, and its image files are read undecoded.
     const double effective = version_set ? version : 3.62;
-    // (A scene with nothing to see, only #debug text, has no colours.)
-    if (effective < 3.7 && !assumed_gamma_set && !scene.objects.empty())
-        warn(p::position(p::internal::iterator(), name),
-             "the scene " +
-                 std::string(version_set ? "ends with a #version below 3.7" : "has no #version") +
-                 " and sets no assumed_gamma: POV-Ray 3.7 then renders it without gamma "
-                 "correction (its legacy rule, brighter mid-tones here), hexant with 3.7's; "
-                 "add `#version 3.7;` or global_settings { assumed_gamma 1 } to make them agree");
+    // hexant renders it so (GlobalSettings::gamma_correction); image maps
+    // read before the end were decoded as 3.7 decodes them, which POV-Ray
+    // does not do for such a scene: warned at each.
+    if (effective < 3.7 && !assumed_gamma_set) {
+        scene.global.gamma_correction = false;
+        for (const p::position& place : image_maps_read)
+            warn(place,
+                 "this image is decoded to linear light as POV-Ray 3.7 decodes it, but the scene " +
+                     std::string(version_set ? "ends with a #version below 3.7"
+                                             : "has no #version") +
+                     " and sets no assumed_gamma, so POV-Ray reads it undecoded (its legacy "
+                     "rule); add `#version 3.7;` and global_settings { assumed_gamma 1 } to "
+                     "make them agree");
+    }
 }
 
 }  // namespace hexant::language

@@ -39,6 +39,7 @@
 #include "language/image_map_file.hpp"
 #include "language/interpreter.hpp"
 #include "language/mesh_reading.hpp"
+#include "language/scene_queries.hpp"
 #include "language/symbol_table.hpp"
 #include "language/time_branch.hpp"
 #include "language/value.hpp"
@@ -168,6 +169,8 @@ class Interpreter {
     // and global_settings { assumed_gamma }: without either POV-Ray 3.7 reads
     // a scene with its legacy gamma rule (finish_reading).
     bool version_set = false, assumed_gamma_set = false;
+    // Where image maps were read (warned at the end in a legacy-gamma scene).
+    std::vector<p::position> image_maps_read;
     // After the whole scene is read: what holds only then (the legacy
     // gamma rule's warning).
     void finish_reading(const std::string& name);
@@ -195,6 +198,8 @@ class Interpreter {
         TimeFunction result;
     };
     std::map<FunctionCall, CalledFunction> function_calls;
+    // The objects trace() and inside() have asked of (language/scene_queries.hpp).
+    QueriedObjects queried_objects;
     // The files #fopen opened (language/file_io.hpp), and whether the
     // #read being read has met its file's end.
     UserFiles user_files;

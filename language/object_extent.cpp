@@ -45,6 +45,15 @@ std::string corner_name(bool max) {
 
 }  // namespace
 
+bool changes_with_clock(const runtime::ObjectRecord& object, const runtime::Interval& time) {
+    if (!placed_still(object)) return true;
+    std::vector<double> edges;
+    lifetime_edges(object, edges);
+    for (double e : edges)
+        if (e > time.lo && e <= time.hi) return true;
+    return false;
+}
+
 Value object_extent(const runtime::ObjectRecord& object, bool max, const runtime::Interval& time,
                     std::size_t max_pieces) {
     if (!placed_still(object))
@@ -58,6 +67,21 @@ Value object_extent(const runtime::ObjectRecord& object, bool max, const runtime
     const auto corner = [&](double t) {
         if (!placed->bounded()) return glm::dvec3(max ? kHalfBoundHuge : -kHalfBoundHuge);
         const runtime::Box4 box = placed->box_over(runtime::Interval(t));
+        // A text of blanks has no surface; POV-Ray's box for it is the
+        // thickness along z at the origin, placed by the transforms, and an
+        // empty string's is unbounded (truetype.cpp's Compute_BBox).
+        if (box.is_empty())
+            if (const auto* text = std::get_if<runtime::Text>(&object.shape)) {
+                if (text->string.empty()) return glm::dvec3(max ? kHalfBoundHuge : -kHalfBoundHuge);
+                const glm::dmat4 m = object.transform.matrix_at(t);
+                glm::dvec3 lo(INFINITY), hi(-INFINITY);
+                for (double z : {0.0, text->thickness(t)}) {
+                    const glm::dvec3 p(m * glm::dvec4(0.0, 0.0, z, 1.0));
+                    lo = glm::min(lo, p);
+                    hi = glm::max(hi, p);
+                }
+                return max ? hi : lo;
+            }
         if (box.is_empty())
             throw ValueError(corner_name(max) + " of an object that has no surface at clock " +
                              std::to_string(t));

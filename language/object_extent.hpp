@@ -22,6 +22,10 @@ namespace hexant::language {
 // `max_pieces` pieces. Throws ValueError for an object whose shape or
 // transforms move with clock (its box would be a function of time that
 // hexant does not form yet), or that has no surface at some instant.
+// Whether the object's shape, transforms or parts (their lifetimes) change
+// anywhere over `time`.
+bool changes_with_clock(const runtime::ObjectRecord& object, const runtime::Interval& time);
+
 Value object_extent(const runtime::ObjectRecord& object, bool max, const runtime::Interval& time,
                     std::size_t max_pieces);
 

@@ -63,6 +63,15 @@ const Value* SymbolTable::innermost(const std::string& name) const {
     return found == scopes_.back().end() ? nullptr : &found->second.value;
 }
 
+void SymbolTable::assign(const std::string& name, Value value) {
+    for (auto it = scopes_.rbegin(); it != scopes_.rend(); ++it)
+        if (it->count(name)) {
+            set(*it, name, std::move(value));
+            return;
+        }
+    throw ValueError("'" + name + "' is not declared");
+}
+
 void SymbolTable::set_outer(const std::string& name, const Value& value) {
     for (std::size_t level = scopes_.size() - 1; level-- > 0;)
         if (scopes_[level].count(name)) {

@@ -47,6 +47,10 @@ class SymbolTable {
     // when it is undeclared or not an array, or when a side of a time split
     // is being read (the sides would share the array).
     Array& array_for_element(const std::string& name);
+    // Sets `name` where it is declared, from the innermost scope out (an
+    // output argument: trace()'s normal). Throws ValueError when it is not
+    // declared.
+    void assign(const std::string& name, Value value);
     // #undef: whether `name` was declared.
     bool undefine(const std::string& name);
 

@@ -48,6 +48,13 @@ struct Macro {
     tao::pegtl::position defined_at;
 };
 
+// material { texture { } interior { } }: what it gives an object, each
+// part only when written (POV-Ray's MATERIAL).
+struct Material {
+    std::optional<runtime::Texture> texture;
+    std::optional<runtime::Interior> interior;
+};
+
 struct Value;
 struct Array {
     std::vector<int> dimensions;
@@ -56,13 +63,12 @@ struct Array {
 };
 
 struct Value {
-    using Variant =
-        std::variant<TimeFunction, Vector, std::string, TimedString, runtime::ObjectPtr,
-                     runtime::LightRecord, runtime::CameraRecord, runtime::Texture,
-                     runtime::Pigment, runtime::Normal, runtime::ColourMap, runtime::SkySphere,
-                     runtime::Finish, runtime::Interior, runtime::Transform, std::shared_ptr<Array>,
-                     std::shared_ptr<const runtime::Spline>, std::shared_ptr<const Macro>,
-                     std::shared_ptr<const runtime::UserFunction>, Unevaluated>;
+    using Variant = std::variant<
+        TimeFunction, Vector, std::string, TimedString, runtime::ObjectPtr, runtime::LightRecord,
+        runtime::CameraRecord, runtime::Texture, runtime::Pigment, runtime::Normal,
+        runtime::ColourMap, runtime::SkySphere, runtime::Finish, runtime::Interior, Material,
+        runtime::Transform, std::shared_ptr<Array>, std::shared_ptr<const runtime::Spline>,
+        std::shared_ptr<const Macro>, std::shared_ptr<const runtime::UserFunction>, Unevaluated>;
     Variant v;
 
     template <typename T>

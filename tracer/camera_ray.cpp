@@ -69,6 +69,77 @@ std::optional<ScreenRay> projected_camera_ray(const runtime::CameraFrame& camera
                              rotate(tilted, glm::normalize(camera.up), longitude),
                              {longitude, latitude}};
         }
+        case CameraType::UltraWideAngle: {
+            // Dan Farmer's: both screen axes are angles, the vertical one
+            // scaled by |up| / |right| (POV-Ray's aspectRatio for it).
+            const double across = x0 * camera.angle * kPi / 180.0;
+            const double height = y0 * camera.angle * kPi / 180.0 * glm::length(camera.up) /
+                                  glm::length(camera.right);
+            return ScreenRay{
+                camera.location,
+                std::sin(across) * glm::normalize(camera.right) +
+                    std::sin(height) * glm::normalize(camera.up) +
+                    std::cos(across) * std::cos(height) * glm::normalize(camera.direction),
+                {across, height}};
+        }
+        case CameraType::Omnimax: {
+            // The dome's projection: the screen from -1 to 1, widened and
+            // shifted up by the aspect ratio |right| / |up| beyond 1.283458,
+            // the radius mapped to the angle off the view by POV-Ray's
+            // quintic; below 45 degrees under the axis no ray.
+            const double aspect = glm::length(camera.right) / glm::length(camera.up);
+            double x = 2.0 * x0, y = 2.0 * y0;
+            if (aspect > 1.0) {
+                const double a = aspect > 1.283458 ? 1.283458 : aspect;
+                if (aspect > 1.283458) x *= aspect / 1.283458;
+                y = (y - 1.0) / a + 1.0;
+            } else {
+                y /= aspect;
+            }
+            const double rad = std::sqrt(x * x + y * y);
+            if (rad > 1.0) return std::nullopt;
+            const double phi = rad == 0.0 ? 0.0
+                               : x < 0.0  ? kPi - std::asin(y / rad)
+                                          : std::asin(y / rad);
+            const double theta =
+                1.411269 * rad - 0.09439 * rad * rad * rad + 0.25674 * std::pow(rad, 5.0);
+            if (std::sin(phi) * std::sin(theta) < std::tan(135.0 * kPi / 180.0) * std::cos(theta))
+                return std::nullopt;
+            return ScreenRay{camera.location,
+                             std::cos(phi) * std::sin(theta) * glm::normalize(camera.right) +
+                                 std::sin(phi) * std::sin(theta) * glm::normalize(camera.up) +
+                                 std::cos(theta) * glm::normalize(camera.direction),
+                             {phi, theta}};
+        }
+        case CameraType::Cylinder1:
+        case CameraType::Cylinder2:
+        case CameraType::Cylinder3:
+        case CameraType::Cylinder4: {
+            // POV-Ray's four cylinder cameras: the axis along up (1, 3) or
+            // right (2, 4); the other screen axis an angle around it. Types
+            // 1 and 2 look from the location; 3 and 4 slide the location
+            // along the axis (parallel rays that way), |up| or |right| long.
+            const glm::dvec3 right = glm::normalize(camera.right), up = glm::normalize(camera.up);
+            const glm::dvec3 direction = glm::normalize(camera.direction);
+            const bool up_axis =
+                camera.type == CameraType::Cylinder1 || camera.type == CameraType::Cylinder3;
+            const bool parallel =
+                camera.type == CameraType::Cylinder3 || camera.type == CameraType::Cylinder4;
+            if (up_axis) {
+                const double around = x0 * camera.angle * kPi / 180.0;
+                const double along = y0 * glm::length(camera.up);
+                const glm::dvec3 turned = std::sin(around) * right + std::cos(around) * direction;
+                if (parallel)
+                    return ScreenRay{camera.location + along * up, turned, {around, along}};
+                return ScreenRay{camera.location, turned + along * up, {around, along}};
+            }
+            const double around = y0 * camera.angle * kPi / 180.0;
+            const double along = x0 * glm::length(camera.right);
+            const glm::dvec3 turned = std::sin(around) * up + std::cos(around) * direction;
+            if (parallel)
+                return ScreenRay{camera.location + along * right, turned, {along, around}};
+            return ScreenRay{camera.location, along * right + turned, {along, around}};
+        }
         case CameraType::Perspective:
             // (camera_ray makes the pinhole's own.)
             return ScreenRay{

@@ -1,11 +1,10 @@
 // POV-Ray 3.7's primary rays (TracePixel::CreateCameraRay, tracepixel.cpp)
 // for the projections hexant makes: perspective, orthographic, fisheye,
-// panoramic and spherical. A screen point is (x0, y0) in [-0.5, 0.5]^2,
-// x to the right and y up, as POV-Ray forms it from the pixel; each
-// projection turns it into an origin and a direction (not normalized: the
-// focal blur scales it first, as POV-Ray's JitterCameraRay does), or into
-// no ray (a fisheye's corners, outside its circle: POV-Ray leaves those
-// samples black).
+// panoramic, spherical, ultra_wide_angle, omnimax and cylinder 1 to 4. A screen point is (x0, y0)
+// in [-0.5, 0.5]^2, x to the right and y up, as POV-Ray forms it from the pixel; each projection
+// turns it into an origin and a direction (not normalized: the focal blur scales it first, as
+// POV-Ray's JitterCameraRay does), or into no ray (a fisheye's corners, outside its circle: POV-Ray
+// leaves those samples black).
 #pragma once
 
 #include <cmath>
@@ -76,7 +75,7 @@ template <class Lens>
 
 // Calls add(p) with every point a camera's rays start from or that bounds
 // them: the location, the lens around it (focal blur) and, orthographic,
-// the film's corners.
+// the film's corners (cylinder 3 and 4: the film's edge along the axis).
 template <class Add>
 void eye_extent(const runtime::CameraFrame& camera, Add&& add) {
     add(camera.location);
@@ -84,6 +83,8 @@ void eye_extent(const runtime::CameraFrame& camera, Add&& add) {
     glm::dvec3 spread(r);
     if (camera.type == runtime::CameraType::Orthographic)
         spread += 0.5 * (glm::abs(camera.right) + glm::abs(camera.up));
+    if (camera.type == runtime::CameraType::Cylinder3) spread += 0.5 * glm::abs(camera.up);
+    if (camera.type == runtime::CameraType::Cylinder4) spread += 0.5 * glm::abs(camera.right);
     if (spread != glm::dvec3(0.0)) {
         add(camera.location - spread);
         add(camera.location + spread);

@@ -15,6 +15,7 @@
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
+#include "image/colour_transfer.hpp"
 #include "runtime/objects/object_factory.hpp"
 #include "runtime/work_counts.hpp"
 #include "tracer/camera_ray.hpp"
@@ -288,7 +289,15 @@ Image Renderer::render_frame(int frame) {
     // assumed_gamma G: the scene's colours and all the shading are in a
     // space of gamma G; the pixel leaves it (POV-Ray 3.7 decodes the working
     // gamma before it encodes the file's).
+    // Without gamma correction (a legacy scene), the value computed is the
+    // one the file holds: decoded here so that the sRGB encoding of 8-bit
+    // output gives it back (an OpenEXR frame then holds it decoded).
+    const bool raw = !scene_.global.gamma_correction;
     const auto linear = [&](glm::dvec3 c) {
+        if (raw) {
+            for (int k = 0; k < 3; ++k) c[k] = image::srgb_decode(std::max(c[k], 0.0));
+            return c;
+        }
         if (working_gamma != 1.0)
             for (int k = 0; k < 3; ++k) c[k] = std::pow(std::max(c[k], 0.0), working_gamma);
         return c;

@@ -89,6 +89,46 @@ struct action<g::vector_literal> {
 };
 
 template <>
+struct action<g::trace_normal_name> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        // (Kept with the arguments, as the name of the vector to set.)
+        st.values.push(Value{word(in)});
+    }
+};
+// trace(OBJECT, A, B [, N]) (language/scene_queries.hpp): the hit point, or
+// <0, 0, 0> on a miss; N, a declared vector, gets the normal (or <0, 0, 0>).
+template <>
+struct action<g::trace_call> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        std::vector<Value> args = st.values.close_frame();
+        if (!args[0].is<runtime::ObjectPtr>())
+            throw ValueError("trace() needs an object first, as in POV-Ray");
+        const auto origin = to_vector3(args[1], "trace()'s start point");
+        const auto direction = to_vector3(args[2], "trace()'s direction");
+        if (origin.depends_on_time() || direction.depends_on_time())
+            throw ValueError(
+                "trace() of a ray that moves with clock is not supported by "
+                "hexant yet");
+        const auto& object = st.queried_objects.placed(args[0].as<runtime::ObjectPtr>(),
+                                                       st.animation_time(), "trace()");
+        const double t = st.animation_time().lo;
+        const std::optional<TraceHit> hit = trace_object(object, origin(t), direction(t), t);
+        const glm::dvec3 point = hit ? hit->point : glm::dvec3(0.0);
+        const glm::dvec3 normal = hit ? hit->normal : glm::dvec3(0.0);
+        if (args.size() == 4) {
+            const std::string& target = args[3].as<std::string>();
+            const Value* held = st.symbols.lookup(target);
+            if (!held)
+                throw ValueError("trace()'s normal goes into '" + target +
+                                 "', which is not declared (POV-Ray needs a declared vector)");
+            st.symbols.assign(target, make_vector({normal.x, normal.y, normal.z}));
+        }
+        st.values.push(make_vector({point.x, point.y, point.z}));
+    }
+};
+template <>
 struct action<g::function_call> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
@@ -123,6 +163,21 @@ struct action<g::function_call> {
                 throw ValueError(name + "() takes one object, as in POV-Ray");
             st.values.push(object_extent(*args[0].as<runtime::ObjectPtr>(), name == "max_extent",
                                          st.animation_time(), st.options.limits.time_pieces));
+            return;
+        }
+        // inside(OBJECT, P) (language/scene_queries.hpp).
+        if (name == "inside") {
+            if (args.size() != 2 || !args[0].is<runtime::ObjectPtr>())
+                throw ValueError("inside() takes an object and a point, as in POV-Ray");
+            const auto point = to_vector3(args[1], "the point of inside()");
+            if (point.depends_on_time())
+                throw ValueError(
+                    "inside() of a point that moves with clock is not supported "
+                    "by hexant yet");
+            const auto& object = st.queried_objects.placed(args[0].as<runtime::ObjectPtr>(),
+                                                           st.animation_time(), "inside()");
+            const double t = st.animation_time().lo;
+            st.values.push(Value{inside_object(object, point(t), t) ? 1.0 : 0.0});
             return;
         }
         // (A string function of arguments that depend on clock: once a
@@ -269,6 +324,10 @@ struct action<g::colour_keyword> {
     }
 };
 
+// Components alone, as in a colour_map entry: they change black.
+template <>
+struct action<g::bare_colour_start> : action<g::colour_keyword> {};
+
 template <>
 struct action<g::colour_base> {
     template <typename ActionInput>
@@ -295,6 +354,16 @@ struct action<g::colour_component_setting> {
         (void)in;
         const TimeFunction v = to_float(st.values.pop(), "a colour component");
         const std::string name = st.values.pop_name();
+        // (A float or vector before it becomes a colour, as POV-Ray's
+        // Parse_Colour promotes it.)
+        if (!st.values.top().is<Vector>() || st.values.top().as<Vector>().size != 5) {
+            const runtime::ColourFunction colour =
+                to_colour(st.values.top(), "the colour '" + name + "' changes");
+            Vector promoted;
+            promoted.size = 5;
+            for (int i = 0; i < 5; ++i) promoted.c[i] = colour.c[i];
+            st.values.top() = Value{promoted};
+        }
         Vector& c = st.values.top().as<Vector>();
         c.c[colour_component_index(name)] = v;
     }

@@ -188,6 +188,7 @@ struct action<g::image_map_block> {
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         ImageMapBuilder b = std::move(std::get<ImageMapBuilder>(st.blocks.top()));
         st.blocks.close();
+        st.image_maps_read.push_back(in.position());
         auto map = std::make_shared<runtime::pattern::ImageMap>(std::move(b.map));
         // (Each distinct file decoded once.)
         std::map<const image::StoredImage*, std::shared_ptr<const runtime::pattern::ImagePixels>>
@@ -450,6 +451,17 @@ struct action<g::interior_ignored_setting> : unrendered_action<runtime::Interior
 // In reflection { }: falloff, exponent, fresnel, and a maximum after a
 // comma (variable reflection); metallic is rendered (reflection_metallic).
 template <>
+struct action<g::reflection_maximum> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        auto& f = st.blocks.edit<runtime::Finish>(in.position(), "reflection");
+        f.unrendered.push_back(
+            {{in.position().source, in.position().line, in.position().column},
+             "a variable reflection's maximum is read but not rendered as POV-Ray renders "
+             "it: hexant reflects by the minimum at every angle"});
+    }
+};
+template <>
 struct action<g::reflection_ignored_option> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
@@ -612,8 +624,10 @@ template <>
 struct action<g::material_value> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)in;
+        Value v{std::get<MaterialBuilder>(st.blocks.top())};
         st.blocks.close();
-        st.values.push(Value{Unevaluated{"material", in.position()}});
+        st.values.push(std::move(v));
     }
 };
 template <>
@@ -628,9 +642,11 @@ template <>
 struct action<g::material_base> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        (void)st;
-        throw ValueError("declared materials are not supported; declare its texture and interior");
-        (void)in;
+        // material { M ... }: a copy of the declared material, then its changes.
+        Value v = st.values.pop();
+        if (!v.is<Material>())
+            throw ValueError("material { } starts with a material, not a " + type_name(v));
+        st.blocks.edit<MaterialBuilder>(in.position(), "material") = v.as<Material>();
     }
 };
 template <>

@@ -54,34 +54,61 @@ struct action<g::camera_unsupported_type> {
         Interpreter::fail(in.position(),
                           word(in) +
                               " cameras are not supported by hexant (perspective, orthographic, "
-                              "fisheye, panoramic and spherical are)");
+                              "fisheye, panoramic, spherical, ultra_wide_angle, omnimax "
+                              "and cylinder are)");
     }
 };
+// The camera's type item. POV-Ray reads the type before any other item
+// (the last of several types in a row wins), and not at all after a camera
+// identifier (then only transforms may follow).
+template <typename Position>
+void add_camera_type(const Position& position, Interpreter& st, const std::string& name,
+                     runtime::CameraType type) {
+    auto& camera = st.blocks.edit<runtime::CameraRecord>(position, name.c_str());
+    const bool only_types =
+        std::all_of(camera.items.begin(), camera.items.end(),
+                    [](const auto& item) { return item.kind == runtime::CameraItem::Kind::Type; });
+    if (!only_types || !camera.pieces.empty() || camera.normal)
+        throw ValueError("the camera's type (" + name +
+                         ") must come first in camera { }, before its other "
+                         "items and not after a declared camera (as POV-Ray requires)");
+    runtime::CameraItem item;
+    item.kind = runtime::CameraItem::Kind::Type;
+    item.type = type;
+    camera.items.push_back(std::move(item));
+}
 template <>
 struct action<g::camera_type> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         const std::string name = word(in);
-        auto& camera = st.blocks.edit<runtime::CameraRecord>(in.position(), name.c_str());
-        // POV-Ray reads the type before any other item (the last of several
-        // types in a row wins), and not at all after a camera identifier
-        // (then only transforms may follow).
-        const bool only_types = std::all_of(
-            camera.items.begin(), camera.items.end(),
-            [](const auto& item) { return item.kind == runtime::CameraItem::Kind::Type; });
-        if (!only_types || !camera.pieces.empty() || camera.normal)
-            throw ValueError("the camera's type (" + name +
-                             ") must come first in camera { }, before its other "
-                             "items and not after a declared camera (as POV-Ray requires)");
-        runtime::CameraItem item;
-        item.kind = runtime::CameraItem::Kind::Type;
         using T = runtime::CameraType;
-        item.type = name == "orthographic" ? T::Orthographic
-                    : name == "fisheye"    ? T::Fisheye
-                    : name == "panoramic"  ? T::Panoramic
-                    : name == "spherical"  ? T::Spherical
-                                           : T::Perspective;
-        camera.items.push_back(std::move(item));
+        add_camera_type(in.position(), st, name,
+                        name == "orthographic"       ? T::Orthographic
+                        : name == "fisheye"          ? T::Fisheye
+                        : name == "panoramic"        ? T::Panoramic
+                        : name == "spherical"        ? T::Spherical
+                        : name == "ultra_wide_angle" ? T::UltraWideAngle
+                        : name == "omnimax"          ? T::Omnimax
+                                                     : T::Perspective);
+    }
+};
+template <>
+struct action<g::camera_cylinder> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        std::vector<Value> given = st.values.close_frame();
+        // POV-Ray's Parse_Float, truncated to an integer (parser.cpp).
+        const double kind = to_constant(given.at(0), "the cylinder camera's type");
+        using T = runtime::CameraType;
+        const int n = std::isfinite(kind) ? static_cast<int>(std::trunc(kind)) : 0;
+        if (n < 1 || n > 4)
+            throw ValueError("invalid cylinder camera type, valid are types 1 to 4 (as POV-Ray's)");
+        add_camera_type(in.position(), st, "cylinder",
+                        n == 1   ? T::Cylinder1
+                        : n == 2 ? T::Cylinder2
+                        : n == 3 ? T::Cylinder3
+                                 : T::Cylinder4);
     }
 };
 template <>
@@ -94,11 +121,14 @@ struct action<g::camera_angle> {
         T type = T::Perspective;
         for (const auto& item : camera.items)
             if (item.kind == runtime::CameraItem::Kind::Type) type = item.type;
-        const char* name = type == T::Perspective    ? "perspective"
-                           : type == T::Orthographic ? "orthographic"
-                           : type == T::Fisheye      ? "fisheye"
-                           : type == T::Panoramic    ? "panoramic"
-                                                     : "spherical";
+        const char* name = type == T::Perspective      ? "perspective"
+                           : type == T::Orthographic   ? "orthographic"
+                           : type == T::Fisheye        ? "fisheye"
+                           : type == T::Panoramic      ? "panoramic"
+                           : type == T::Spherical      ? "spherical"
+                           : type == T::UltraWideAngle ? "ultra_wide_angle"
+                           : type == T::Omnimax        ? "omnimax"
+                                                       : "cylinder";
         // POV-Ray's Parse_Camera: an orthographic angle may be left out (0);
         // only a spherical camera takes a second (vertical) angle.
         if (given.empty() && type != T::Orthographic)

@@ -49,7 +49,7 @@ struct vector_literal
 
 // Built-in functions; the name picks the implementation (builtins.cpp).
 struct function_words {
-    static constexpr std::array<std::string_view, 56> list = {"abs",
+    static constexpr std::array<std::string_view, 58> list = {"abs",
                                                               "acos",
                                                               "acosh",
                                                               "asc",
@@ -73,6 +73,7 @@ struct function_words {
                                                               "exp",
                                                               "file_exists",
                                                               "floor",
+                                                              "inside",
                                                               "int",
                                                               "ln",
                                                               "log",
@@ -104,7 +105,8 @@ struct function_words {
                                                               "vlength",
                                                               "vnormalize",
                                                               "vrotate",
-                                                              "vstr"};
+                                                              "vstr",
+                                                              "vturbulence"};
 };
 struct function_name : one_word_of<function_words> {};
 struct call_open : lparen {};
@@ -113,6 +115,13 @@ struct call_argument : p::seq<value> {};
 struct call_arguments : p::opt<call_argument, p::star<comma, p::must<call_argument>>> {};
 struct function_call : p::seq<function_name, ws, p::must<call_open>, frame_open, call_arguments,
                               p::must<call_close>> {};
+// trace(OBJECT, A, B [, N]): N names a declared vector that receives the
+// normal (POV-Ray's Parse_Trace).
+struct trace_normal_name : identifier {};
+struct trace_call
+    : p::seq<TAO_PEGTL_KEYWORD("trace"), ws, p::must<call_open>, frame_open, p::must<call_argument>,
+             p::must<comma>, p::must<call_argument>, p::must<comma>, p::must<call_argument>,
+             p::opt<comma, p::must<trace_normal_name>>, p::must<call_close>> {};
 
 // defined(IDENT): whether a name is declared.
 HEXANT_KEYWORD(kw_defined, "defined");
@@ -180,8 +189,8 @@ struct value_item;
 struct reference : identifier {};
 
 struct primary : p::sor<number, string_literal, vector_literal, paren_expression, function_call,
-                        colour_model_literal, colour_expression, defined_call, builtin_constant,
-                        macro_call<value_item>, reference> {};
+                        trace_call, colour_model_literal, colour_expression, defined_call,
+                        builtin_constant, macro_call<value_item>, reference> {};
 
 struct component_name
     : p::sor<TAO_PEGTL_KEYWORD("x"), TAO_PEGTL_KEYWORD("y"), TAO_PEGTL_KEYWORD("z"),

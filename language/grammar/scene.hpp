@@ -25,10 +25,13 @@ struct camera_angle
 // The projection (POV-Ray's camera types; the type comes first).
 struct camera_type : p::sor<TAO_PEGTL_KEYWORD("perspective"), TAO_PEGTL_KEYWORD("orthographic"),
                             TAO_PEGTL_KEYWORD("fisheye"), TAO_PEGTL_KEYWORD("panoramic"),
-                            TAO_PEGTL_KEYWORD("spherical")> {};
-struct camera_unsupported_type
-    : p::sor<TAO_PEGTL_KEYWORD("ultra_wide_angle"), TAO_PEGTL_KEYWORD("omnimax"),
-             TAO_PEGTL_KEYWORD("cylinder")> {};
+                            TAO_PEGTL_KEYWORD("spherical"), TAO_PEGTL_KEYWORD("ultra_wide_angle"),
+                            TAO_PEGTL_KEYWORD("omnimax")> {};
+// cylinder N: POV-Ray's cylinder cameras 1 to 4.
+struct camera_cylinder_value : p::seq<sum> {};
+struct camera_cylinder
+    : p::seq<TAO_PEGTL_KEYWORD("cylinder"), ws, frame_open, p::must<camera_cylinder_value>> {};
+struct camera_unsupported_type : p::sor<TAO_PEGTL_KEYWORD("mesh_camera")> {};
 // Focal blur: aperture A, focal_point <P>, blur_samples [MIN,] MAX;
 // confidence and variance are POV-Ray's stopping rule, read and ignored
 // (hexant's samples are --spp or --target-error's).
@@ -43,8 +46,8 @@ struct camera_ignored_setting
              p::must<ignored_value>> {};
 struct camera_item
     : p::sor<directive<camera_item>, macro_call<camera_item>, p::seq<camera_type, ws>,
-             camera_setting, camera_angle, camera_blur_setting, camera_ignored_setting,
-             camera_normal, transformation, camera_unsupported_type> {};
+             camera_cylinder, camera_setting, camera_angle, camera_blur_setting,
+             camera_ignored_setting, camera_normal, transformation, camera_unsupported_type> {};
 struct camera_block
     : p::seq<camera_open, p::opt<camera_base>, p::star<camera_item>, p::must<rbrace>> {};
 
@@ -95,8 +98,17 @@ struct global_ignored_setting
 struct global_motion_blur
     : p::seq<TAO_PEGTL_KEYWORD("motion_blur"), ws, frame_open, p::must<global_setting_value>,
              p::opt<comma>, p::must<global_setting_value>> {};
+// hf_gray_16 [on|off|FLOAT]: POV-Ray 3.7 reads and ignores it (grey output
+// is a command-line option there), and so does hexant.
+struct global_hf_gray_16
+    : p::seq<p::sor<TAO_PEGTL_KEYWORD("hf_gray_16"), TAO_PEGTL_KEYWORD("hf_grey_16")>, ws,
+             p::opt<p::sor<p::at<p::sor<TAO_PEGTL_KEYWORD("on"), TAO_PEGTL_KEYWORD("off"),
+                                        TAO_PEGTL_KEYWORD("true"), TAO_PEGTL_KEYWORD("false"),
+                                        TAO_PEGTL_KEYWORD("yes"), TAO_PEGTL_KEYWORD("no")>>,
+                           p::not_at<p::identifier>>,
+                    ignored_value>> {};
 struct global_item : p::sor<directive<global_item>, global_setting, global_charset,
-                            global_motion_blur, global_ignored_setting> {};
+                            global_motion_blur, global_hf_gray_16, global_ignored_setting> {};
 struct global_settings_block
     : p::seq<kw_global_settings, p::must<lbrace>, p::star<global_item>, p::must<rbrace>> {};
 
@@ -116,10 +128,15 @@ struct array_dimension : p::seq<lbracket, p::must<array_size>, p::must<index_clo
 struct array_dimensions : p::seq<frame_open, p::plus<array_dimension>> {};
 struct array_element;
 struct array_initializer_close : rbrace {};
+// Commas between elements are optional (POV-Ray's Parse_Comma), and an
+// element is a sum, not a comparison (its Parse_Rel_Factor): a vector
+// followed by the next one's '<' ends there (`<1, 2> <3, 4>`).
 struct array_initializer
-    : p::seq<lbrace, frame_open, p::opt<array_element, p::star<comma, array_element>>,
+    : p::seq<lbrace, frame_open, p::opt<array_element, p::star<p::opt<comma>, array_element>>,
              p::opt<comma>, p::must<array_initializer_close>> {};
-struct array_element : p::sor<array_initializer, value> {};
+struct array_vector_element
+    : p::seq<p::at<vector_literal, ws, p::one<'<'>, p::not_at<p::one<'='>>>, sum> {};
+struct array_element : p::sor<array_initializer, array_vector_element, value> {};
 struct array_value : p::seq<kw_array, p::must<array_dimensions>, p::opt<array_initializer>> {};
 
 // spline { [kind] t, value ... }
@@ -141,7 +158,7 @@ struct spline_block
 
 // texture { } texture { } ...: POV-Ray's layered texture.
 struct texture_layer : p::seq<texture_block> {};
-// A declared material is kept as source (hexant has no material values yet).
+// A declared material: its texture and interior, each when written.
 struct material_value : p::seq<material_block> {};
 struct texture_value : p::seq<texture_block, p::star<texture_layer>> {};
 
@@ -150,8 +167,10 @@ struct value : p::sor<object_value, camera_block, texture_value, pigment_block, 
                       material_value, transform_value, array_value, spline_block, function_value,
                       unsupported_block, expression> {};
 
-// A macro called where a value is wanted holds values (and directives).
-struct value_item : p::sor<directive<value_item>, value> {};
+// A macro called where a value is wanted holds values (and directives);
+// a ';' after its value is read and dropped, as POV-Ray does with a macro
+// that ends `Q;` (tracevines.pov).
+struct value_item : p::sor<directive<value_item>, value, semicolon> {};
 
 // ---------------------------------------------------------------- the scene
 

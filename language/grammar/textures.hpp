@@ -77,8 +77,16 @@ struct colour_map_open
              p::must<lbrace>> {};
 // (A name followed by '(' is a macro writing the entries, not a declared map.)
 struct colour_map_base : p::seq<p::not_at<p::identifier, ws, lparen>, expression> {};
-struct colour_map_item : p::seq<sum> {};
-struct colour_map_entry : p::seq<lbracket, frame_open, p::must<colour_map_item>,
+// An entry's colour may be components alone, from black (`[0 blue 0.4]`),
+// or a colour they change (`[0.5 White filter 0.5]`): POV-Ray's
+// Parse_Colour.
+struct bare_colour_start : p::success {};
+struct bare_colour
+    : p::seq<p::at<colour_component_name>, bare_colour_start, p::plus<colour_component_setting>> {};
+struct colour_map_item : p::sor<bare_colour, p::seq<sum, p::star<colour_component_setting>>> {};
+// (The first item is the entry's value: components after it start a colour.)
+struct colour_map_value : p::seq<sum> {};
+struct colour_map_entry : p::seq<lbracket, frame_open, p::must<colour_map_value>,
                                  p::star<p::opt<comma>, colour_map_item>, p::must<rbracket>> {};
 // (Directives and macros may write the entries: #for, #if, a macro that
 // expands to [v colour].)
@@ -147,9 +155,13 @@ struct pigment_list_pigment : p::seq<pigment_block, p::opt<comma>> {};
 struct pigment_component : p::seq<colour_component_name, ws, p::must<colour_component_value>> {};
 // quick_color COLOUR: POV-Ray's colour for its quality levels below 6;
 // read and not used (language/keyword_rules.cpp: harmless).
+// Components may follow the colour or stand alone, as in any colour of
+// POV-Ray's (`quick_color red 0.95 green 0.62`).
+struct quick_colour_component : p::seq<colour_component_name, ws, p::must<ignored_value>> {};
 struct pigment_quick_colour
     : p::seq<p::sor<TAO_PEGTL_KEYWORD("quick_color"), TAO_PEGTL_KEYWORD("quick_colour")>, ws,
-             p::must<ignored_value>> {};
+             p::sor<p::plus<quick_colour_component>,
+                    p::seq<p::must<ignored_value>, p::star<quick_colour_component>>>> {};
 struct pigment_item
     : p::sor<directive<pigment_item>, macro_call<pigment_item>, pattern_kind, pattern_setting,
              pattern_wave, warp_block, pigment_colour_map, pigment_map_block, image_map_block,
@@ -177,7 +189,15 @@ struct reflection_option
              p::seq<TAO_PEGTL_KEYWORD("fresnel"), ws, p::opt<ignored_value>>,
              p::seq<comma, p::opt<ignored_value>>> {};  // the maximum: hexant uses the minimum
 struct reflection_ignored_option : reflection_option {};
-struct reflection_block : p::seq<lbrace, p::must<reflection_value>,
+// The maximum with or without its comma (POV-Ray's Parse_Comma is
+// optional): { 0.0 1.0 fresnel on }.
+struct reflection_maximum
+    : p::seq<p::opt<comma>,
+             p::not_at<
+                 p::sor<TAO_PEGTL_KEYWORD("metallic"), TAO_PEGTL_KEYWORD("falloff"),
+                        TAO_PEGTL_KEYWORD("exponent"), TAO_PEGTL_KEYWORD("fresnel"), p::one<'}'>>>,
+             ignored_value> {};
+struct reflection_block : p::seq<lbrace, p::must<reflection_value>, p::opt<reflection_maximum>,
                                  p::star<reflection_ignored_option>, p::must<rbrace>> {};
 struct reflection_amount : p::sor<reflection_block, reflection_value> {};
 struct reflection_setting

@@ -14,6 +14,24 @@ bool Interpreter::declare_value(ParseInput& in) {
     const ValueStack::Mark mark = values.mark();
     const std::size_t block_count = blocks.depth();
     const std::size_t functions_count = functions_open.size();
+    // `#declare X = #if (..) A #else B #end`: POV-Ray's directives act on
+    // the token stream, so a branch may choose the value itself. The taken
+    // branch must leave exactly one value.
+    using branch_opening =
+        p::seq<grammar::hash, p::sor<TAO_PEGTL_KEYWORD("if"), TAO_PEGTL_KEYWORD("ifdef"),
+                                     TAO_PEGTL_KEYWORD("ifndef"), TAO_PEGTL_KEYWORD("switch")>>;
+    if (p::match<p::at<branch_opening>, p::apply_mode::nothing, p::rewind_mode::required,
+                 p::nothing, Control>(in, *this)) {
+        const auto where = in.position();
+        const std::size_t depth = values.depth();
+        (void)p::match<grammar::directive<grammar::value_item>, p::apply_mode::action,
+                       p::rewind_mode::required, Action, Control>(in, *this);
+        if (values.depth() != depth + 1)
+            fail(where, "the branch taken here gives " +
+                            std::to_string(values.depth() - std::min(values.depth(), depth)) +
+                            " values; a #declare's value chosen by a directive must be one");
+        return true;
+    }
     try {
         return p::match<grammar::value, p::apply_mode::action, p::rewind_mode::required, Action,
                         Control>(in, *this);

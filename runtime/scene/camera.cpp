@@ -151,7 +151,7 @@ CameraFrame CameraRecord::evaluate_items(const std::vector<CameraItem>& items, d
             direction_length = glm::length(cam.right) / std::tan(angle * kPi / 360.0) / 2.0;
             cam.direction = glm::normalize(cam.direction) * direction_length;
         }
-        if (cam.type == CameraType::Fisheye) cam.angle = angle;
+        if (!flat && cam.type != CameraType::Spherical) cam.angle = angle;
         if (cam.type == CameraType::Spherical) {
             cam.h_angle = angle;
             cam.v_angle = vertical_angle ? *vertical_angle : angle * 0.5;

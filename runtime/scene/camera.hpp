@@ -18,7 +18,20 @@ namespace hexant::runtime {
 
 // POV-Ray's projections (its camera types) that hexant makes rays for
 // (tracer/camera_ray.hpp).
-enum class CameraType { Perspective, Orthographic, Fisheye, Panoramic, Spherical };
+// Cylinder1..4 are POV-Ray's `cylinder 1` to `cylinder 4`.
+enum class CameraType {
+    Perspective,
+    Orthographic,
+    Fisheye,
+    Panoramic,
+    Spherical,
+    UltraWideAngle,
+    Omnimax,
+    Cylinder1,
+    Cylinder2,
+    Cylinder3,
+    Cylinder4
+};
 
 struct CameraItem {
     // (Aperture, FocalPoint, BlurSamples: POV-Ray's focal blur. Type: the
@@ -68,7 +81,8 @@ struct CameraFrame {
     // direction's length (POV-Ray's Parse_Camera).
     double aperture = 0.0;
     double focal_distance = 1.0;
-    // Fisheye: the circle's field of view in degrees (POV-Ray's default 90).
+    // Fisheye, ultra_wide_angle, omnimax and the cylinders: the camera's
+    // angle in degrees (POV-Ray's default 90).
     double angle = 90.0;
     // Spherical: the horizontal and vertical fields of view in degrees
     // (POV-Ray's defaults 360 and 180).

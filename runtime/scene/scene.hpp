@@ -17,6 +17,10 @@ namespace hexant::runtime {
 
 struct GlobalSettings {
     double assumed_gamma = 1.0;
+    // False for a scene read with POV-Ray's legacy rule (language version
+    // below 3.7 and no assumed_gamma; its parser.cpp): no gamma correction
+    // at all, the colours it computes are the file's values.
+    bool gamma_correction = true;
     int max_trace_level = 5;
     ColourFunction ambient_light{{1.0, 1.0, 1.0, 0.0, 0.0}};
     // MegaPOV's global_settings { motion_blur SAMPLES, TIME }: hexant blurs

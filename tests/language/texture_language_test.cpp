@@ -279,3 +279,43 @@ sphere { 0, 1 pigment { rgb 1 transmit 0.3 } }
     CHECK(colour(2) == std::array<double, 5>{1, 1, 1, 0, 0.3});
     CHECK(error_of("sphere { 0, 1 pigment { checker red 1 } }").places().front().line == 1);
 }
+
+TEST_CASE("a declared material gives its texture and interior", "[language][pattern]") {
+    // glasschess.pov and var_reflection.pov declare materials; a material
+    // may start from a declared one and change a part; a part it does not
+    // write leaves the object's own.
+    const auto scene = read(
+        "#declare M = material { texture { pigment { rgb <1, 0, 0> } } interior { ior 1.5 } }\n"
+        "sphere { 0, 1 material { M } }\n"
+        "sphere { 0, 1 material { M interior { ior 1.2 } } }\n"
+        "#declare N = material { interior { ior 1.3 } }\n"
+        "sphere { 0, 1 pigment { rgb <0, 0, 1> } material { N } }\n");
+    CHECK(texture_of(scene, 0).pigment.colours[0].c[0].constant() == 1.0);
+    REQUIRE(scene.objects[0]->interior);
+    CHECK(scene.objects[0]->interior->ior.constant() == 1.5);
+    CHECK(texture_of(scene, 1).pigment.colours[0].c[0].constant() == 1.0);
+    CHECK(scene.objects[1]->interior->ior.constant() == Approx(1.2));
+    CHECK(texture_of(scene, 2).pigment.colours[0].c[2].constant() == 1.0);
+    CHECK(scene.objects[2]->interior->ior.constant() == Approx(1.3));
+    CHECK(std::string(error_of("#declare T = texture { pigment { rgb 1 } }\n"
+                               "sphere { 0, 1 material { T } }")
+                          .what())
+              .find("material") != std::string::npos);
+}
+
+TEST_CASE("a colour_map entry's colour may be components alone", "[language][pattern]") {
+    // whiltile.pov: [0.00 blue 0.4]; POV-Ray's Parse_Colour starts from
+    // black; components after a colour change it.
+    const auto scene = read(
+        "#declare W = rgb 1;\n"
+        "sphere { 0, 1 pigment { radial color_map { [0 blue 0.4] [0.5 W filter 0.5] "
+        "[1 red 1 green 0.5] } } }\n");
+    const auto& map = texture_of(scene, 0).pigment.colour_map.entries;
+    REQUIRE(map.size() == 3);
+    CHECK(map[0].colour.c[0].constant() == 0.0);
+    CHECK(map[0].colour.c[2].constant() == Approx(0.4));
+    CHECK(map[1].colour.c[1].constant() == 1.0);
+    CHECK(map[1].colour.c[3].constant() == Approx(0.5));
+    CHECK(map[2].colour.c[1].constant() == Approx(0.5));
+    CHECK(map[2].colour.c[2].constant() == 0.0);
+}

@@ -15,6 +15,10 @@
 #include "tracer/renderer.hpp"
 #include "tracer/sample_pattern.hpp"
 
+// The scenes use POV-Ray 3.7's rules (without #version, POV-Ray reads a
+// scene with its legacy gamma rule).
+constexpr const char* kVersion37 = "#version 3.7;\n";
+
 namespace tr = hexant::tracer;
 
 namespace {
@@ -41,7 +45,8 @@ hexant::runtime::SceneDescription parse_scene() {
     options.animation.height = 30;
     options.animation.initial_frame = 1;
     options.animation.final_frame = 4;
-    return hexant::language::parse_scene_text(kScene, "estimate-test.pov", options);
+    return hexant::language::parse_scene_text(std::string(kVersion37) + kScene, "estimate-test.pov",
+                                              options);
 }
 
 struct Rendered {
@@ -158,7 +163,8 @@ hexant::runtime::SceneDescription parse_adaptive_scene() {
     options.animation.height = 48;
     options.animation.initial_frame = 1;
     options.animation.final_frame = 4;
-    return hexant::language::parse_scene_text(kAdaptiveScene, "adaptive-test.pov", options);
+    return hexant::language::parse_scene_text(std::string(kVersion37) + kAdaptiveScene,
+                                              "adaptive-test.pov", options);
 }
 
 struct Adaptive {

@@ -11,6 +11,10 @@
 #include "language/interpreter.hpp"
 #include "tracer/renderer.hpp"
 
+// The scenes use POV-Ray 3.7's rules (without #version, POV-Ray reads a
+// scene with its legacy gamma rule).
+constexpr const char* kVersion37 = "#version 3.7;\n";
+
 namespace tr = hexant::tracer;
 
 namespace {
@@ -22,7 +26,8 @@ hexant::runtime::SceneDescription parse(const std::string& text) {
     options.animation.height = 16;
     options.animation.initial_frame = 1;
     options.animation.final_frame = 2;
-    return hexant::language::parse_scene_text(text, "lifetime.pov", options);
+    return hexant::language::parse_scene_text(std::string(kVersion37) + text, "lifetime.pov",
+                                              options);
 }
 
 tr::Image render(const hexant::runtime::SceneDescription& scene, tr::Mode mode, int spp) {

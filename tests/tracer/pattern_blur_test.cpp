@@ -12,6 +12,10 @@
 #include "language/interpreter.hpp"
 #include "tracer/renderer.hpp"
 
+// The scenes use POV-Ray 3.7's rules (without #version, POV-Ray reads a
+// scene with its legacy gamma rule).
+constexpr const char* kVersion37 = "#version 3.7;\n";
+
 namespace tr = hexant::tracer;
 
 namespace {
@@ -45,7 +49,8 @@ hexant::runtime::SceneDescription parse(const std::string& text, int frames, dou
     options.animation.height = 12;
     options.animation.initial_frame = 1;
     options.animation.final_frame = frames;
-    auto scene = hexant::language::parse_scene_text(text, "blur.pov", options);
+    auto scene =
+        hexant::language::parse_scene_text(std::string(kVersion37) + text, "blur.pov", options);
     scene.animation.shutter = shutter;
     return scene;
 }

@@ -13,6 +13,10 @@
 #include "tracer/renderer.hpp"
 #include "tracer/whole_file.hpp"
 
+// The scenes use POV-Ray 3.7's rules (without #version, POV-Ray reads a
+// scene with its legacy gamma rule).
+constexpr const char* kVersion37 = "#version 3.7;\n";
+
 namespace tr = hexant::tracer;
 namespace fs = std::filesystem;
 
@@ -43,7 +47,8 @@ hexant::runtime::SceneDescription parse_scene() {
     options.animation.height = 30;
     options.animation.initial_frame = 1;
     options.animation.final_frame = 4;
-    return hexant::language::parse_scene_text(kScene, "render-test.pov", options);
+    return hexant::language::parse_scene_text(std::string(kVersion37) + kScene, "render-test.pov",
+                                              options);
 }
 
 double largest_difference(const tr::Image& a, const tr::Image& b) {
@@ -92,7 +97,8 @@ TEST_CASE("a clock that runs backwards renders the same in the three modes", "[t
     options.animation.final_frame = 4;
     options.animation.initial_clock = 1.0;
     options.animation.final_clock = 0.0;
-    const auto scene = hexant::language::parse_scene_text(kScene, "render-test.pov", options);
+    const auto scene = hexant::language::parse_scene_text(std::string(kVersion37) + kScene,
+                                                          "render-test.pov", options);
     const tr::Image brute = render(scene, tr::Mode::Brute, 2);
     CHECK(largest_difference(render(scene, tr::Mode::Spacetime, 2), brute) == 0.0);
     CHECK(largest_difference(render(scene, tr::Mode::Frames, 2), brute) == 0.0);
@@ -125,7 +131,7 @@ TEST_CASE(
     options.animation.final_frame = 3;
     options.animation.shutter_curve = hexant::runtime::ShutterCurve::parse("trapezoid");
     options.animation.rolling_shutter = 0.3;
-    const auto scene = hexant::language::parse_scene_text(R"(
+    const auto scene = hexant::language::parse_scene_text(std::string(kVersion37) + R"(
 camera { fisheye location <0, 2, -5> look_at <0, 0.5, 0> angle 120 aperture 0.6 blur_samples 10 focal_point <0, 0.5, 0> }
 light_source { <-2 + 4 * clock, 5, -2>, rgb 1 area_light x, z, 4, 4 circular orient jitter }
 plane { y, 0 pigment { checker rgb 0.8, rgb 0.3 } }
@@ -163,7 +169,8 @@ TEST_CASE("motion blur: a sample's time is its own, within the frame's shutter",
         "camera { location <0, 0, -10> look_at 0 }\n"
         "light_source { <0, 0, -10>, rgb 1 }\n"
         "sphere { <-4 + 8 * clock, 0, 0>, 0.8 pigment { rgb 1 } finish { ambient 1 diffuse 0 } }\n";
-    auto scene = hexant::language::parse_scene_text(text, "blur.pov", options);
+    auto scene =
+        hexant::language::parse_scene_text(std::string(kVersion37) + text, "blur.pov", options);
     const auto partial_pixels = [&](double shutter) {
         scene.animation.shutter = shutter;
         tr::RenderSettings settings;
@@ -253,8 +260,9 @@ TEST_CASE("a parallel light pointed at itself lights nothing, as in POV-Ray", "[
         options.animation.width = 8;
         options.animation.height = 6;
         const auto scene = hexant::language::parse_scene_text(
-            "camera { location <0, 2, -4> look_at 0 }\n"
-            "light_source { <0, 5, 0>, rgb 1 parallel point_at " +
+            std::string(kVersion37) +
+                "camera { location <0, 2, -4> look_at 0 }\n"
+                "light_source { <0, 5, 0>, rgb 1 parallel point_at " +
                 point_at +
                 " }\n"
                 "sphere { 0, 1 pigment { rgb 1 } finish { ambient 0 } }\n",

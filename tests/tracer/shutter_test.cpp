@@ -13,6 +13,10 @@
 #include "runtime/scene/shutter_curve.hpp"
 #include "tracer/renderer.hpp"
 
+// The scenes use POV-Ray 3.7's rules (without #version, POV-Ray reads a
+// scene with its legacy gamma rule).
+constexpr const char* kVersion37 = "#version 3.7;\n";
+
 namespace rt = hexant::runtime;
 namespace tr = hexant::tracer;
 
@@ -38,7 +42,8 @@ double integral(const rt::ShutterCurve& curve, double u) {
 tr::Image render(const char* text, const rt::Animation& animation, int spp) {
     hexant::language::ParseOptions options;
     options.animation = animation;
-    const auto scene = hexant::language::parse_scene_text(text, "shutter-test.pov", options);
+    const auto scene = hexant::language::parse_scene_text(std::string(kVersion37) + text,
+                                                          "shutter-test.pov", options);
     tr::RenderSettings settings;
     settings.samples_per_pixel = spp;
     tr::Renderer renderer(scene, settings);

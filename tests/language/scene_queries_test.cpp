@@ -1,0 +1,150 @@
+// trace(), inside() and vturbulence() against the values POV-Ray 3.7
+// printed for the same calls (#debug with vstr(3, V, ",", 0, 9), povray
+// 3.7.0.10 on Debian), and array initializers and #declare values as
+// POV-Ray reads them.
+#include <sstream>
+#include <string>
+
+#include <catch2/catch.hpp>
+
+#include "language/interpreter.hpp"
+#include "scene_text.hpp"
+
+namespace {
+
+std::string message(const std::string& text, hexant::language::ParseOptions options = {}) {
+    return hexant::test::error_of("#version 3.7;\n" + text, options).what();
+}
+
+// Read as an animation, so that clock is not a constant.
+hexant::language::ParseOptions animation() {
+    hexant::language::ParseOptions options;
+    options.animation.final_frame = 10;
+    return options;
+}
+
+std::string debug(const std::string& text) {
+    std::ostringstream messages;
+    hexant::language::ParseOptions options;
+    options.messages = &messages;
+    (void)hexant::language::parse_scene_text("#version 3.7;\n" + text, "queries.pov", options);
+    return messages.str();
+}
+
+// The three numbers of a "x,y,z" line.
+std::vector<double> numbers(const std::string& s) {
+    std::vector<double> out;
+    std::stringstream in(s);
+    std::string part;
+    while (std::getline(in, part, ',')) out.push_back(std::stod(part));
+    return out;
+}
+
+void check_vector(const std::string& got, std::vector<double> want, double margin) {
+    INFO(got);
+    const auto v = numbers(got);
+    REQUIRE(v.size() == want.size());
+    for (std::size_t i = 0; i < v.size(); ++i) CHECK(v[i] == Approx(want[i]).margin(margin));
+}
+
+const std::string kObjects =
+    "#declare S = sphere { <1, 2, 3>, 2 scale <1, 0.5, 1> rotate 30 * z }\n"
+    "#declare D = difference { box { -1, 1 } sphere { <0, 0, -1>, 0.8 } translate x }\n"
+    "#declare N = <9, 9, 9>;\n";
+
+}  // namespace
+
+TEST_CASE("trace() finds the first hit and its outward normal, as POV-Ray's", "[language][trace]") {
+    // A scaled and turned sphere from above; a box's cut by a sphere (the
+    // normal of a difference's cut points out of the solid, into the hole);
+    // a miss, which gives <0, 0, 0> for both. POV-Ray printed 9 decimals;
+    // hexant's sphere and box are exact to ~1e-15, so 1e-8 is the print's
+    // rounding.
+    check_vector(debug(kObjects + "#declare P = trace(S, <1, 10, 3>, -y, N);\n"
+                                  "#debug vstr(3, P, \",\", 0, 9)"),
+                 {1.0, 2.657965716, 3.0}, 1e-8);
+    check_vector(debug(kObjects + "#declare P = trace(S, <1, 10, 3>, -y, N);\n"
+                                  "#debug vstr(3, N, \",\", 0, 9)"),
+                 {-0.166184623, 0.986094656, 0.0}, 1e-8);
+    check_vector(debug(kObjects + "#declare P = trace(D, <1.2, 0.1, -5>, z, N);\n"
+                                  "#debug vstr(3, P, \",\", 0, 9)"),
+                 {1.2, 0.1, -0.231885425}, 1e-8);
+    check_vector(debug(kObjects + "#declare P = trace(D, <1.2, 0.1, -5>, z, N);\n"
+                                  "#debug vstr(3, N, \",\", 0, 9)"),
+                 {-0.25, -0.125, -0.960143218}, 1e-8);
+    check_vector(debug(kObjects + "#declare P = trace(D, <1.2, 0.1, -5>, -z, N);\n"
+                                  "#debug concat(vstr(3, P, \",\", 0, 9), \",\", "
+                                  "vstr(3, N, \",\", 0, 9))"),
+                 {0, 0, 0, 0, 0, 0}, 0.0);
+    // Without the normal's name; a direction that is not unit.
+    check_vector(debug(kObjects + "#declare P = trace(S, <1, 10, 3>, -7 * y);\n"
+                                  "#debug vstr(3, P, \",\", 0, 9)"),
+                 {1.0, 2.657965716, 3.0}, 1e-8);
+    // The normal goes only into a declared name.
+    CHECK(message(kObjects + "#declare P = trace(S, <1, 10, 3>, -y, Nope);").find("not declared") !=
+          std::string::npos);
+    CHECK(message("#declare P = trace(<1, 2, 3>, <1, 10, 3>, -y);").find("object") !=
+          std::string::npos);
+    // An object that moves with clock would give a point that moves: refused.
+    CHECK(message("#declare M = sphere { 0, 1 translate clock * x }\n"
+                  "#declare P = trace(M, <0, 5, 0>, -y);",
+                  animation())
+              .find("change with clock") != std::string::npos);
+}
+
+TEST_CASE("inside() answers as POV-Ray's", "[language][trace]") {
+    // POV-Ray printed "1 0 1".
+    CHECK(debug(kObjects + "#debug concat(str(inside(D, <1.5, 0.9, 0>), 0, 0), str(inside(D, "
+                           "<1, 0, -0.9>), 0, 0), str(inside(S, <0, 1, 1.5>), 0, 0))") == "101");
+}
+
+TEST_CASE("vturbulence() is POV-Ray's DTurbulence", "[language][noise]") {
+    // POV-Ray printed these; the octaves 3.7 are truncated to 3.
+    check_vector(debug("#debug vstr(3, vturbulence(2, 0.5, 6, <0.3, 1.7, -2.2>), \",\", 0, 9)"),
+                 {0.089617971, 0.255222196, 0.123399333}, 2e-9);
+    check_vector(
+        debug("#debug vstr(3, vturbulence(2.5, 0.6, 3.7, <10.3, -1.7, 2.2>), \",\", 0, 9)"),
+        {0.152257591, -0.392745276, -0.358269132}, 2e-9);
+}
+
+TEST_CASE("array elements need no commas, and a vector ends before the next '<'",
+          "[language][array]") {
+    // lemon.inc and tiling.pov of POV-Ray's distribution write them so.
+    CHECK(debug("#declare A = array[4] { <1, 2>, <3, 4> <5, 6>\n <7, 8> }\n"
+                "#debug vstr(2, A[2], \",\", 0, 0)") == "5,6");
+    CHECK(debug("#declare R = 1; #declare G = 2;\n"
+                "#declare A = array[3] { R, G\n R }\n#debug str(A[1] + A[2], 0, 0)") == "3");
+    // A sum still joins its terms: POV-Ray reads `1 -2` as one element.
+    CHECK(debug("#declare A = array[1] { 1 -2 }\n#debug str(A[0], 0, 0)") == "-1");
+    CHECK(message("#declare A = array[2] { 1 2 3 }").find("array") != std::string::npos);
+}
+
+TEST_CASE("a #declare's value may be chosen by a directive", "[language][declare]") {
+    // whiltile.pov: #declare Tile = #ifdef (DO_SIMPLE) box { } #else ... #end
+    CHECK(debug("#declare X = #if (1) 4 #else 5 #end\n#debug str(X, 0, 0)") == "4");
+    CHECK(debug("#declare X = #ifdef (Nothing) 4 #else 5 #end;\n#debug str(X, 0, 0)") == "5");
+    CHECK(debug("#declare C = 2; #declare X = #switch (C) #case (1) 7 #break #case (2) 8 "
+                "#break #end\n#debug str(X, 0, 0)") == "8");
+    CHECK(debug("#declare O = #ifndef (Q) sphere { 0, 1 } #else box { 0, 1 } #end\n"
+                "#debug str(max_extent(O).x, 0, 0)") == "1");
+    CHECK(message("#declare X = #if (1) 4 5 #end").find("one") != std::string::npos);
+    CHECK(message("#declare X = #if (0) 4 #end").find("one") != std::string::npos);
+}
+
+TEST_CASE("a text of blanks has POV-Ray's box", "[language][text]") {
+    // shapes.inc's Circle_Text measures each character with max_extent,
+    // spaces too: POV-Ray printed 1,2,3 and 1,2,4 for this (the thickness
+    // along z, placed), and +-1e10 for an empty string.
+    CHECK(debug("#declare T = text { ttf \"timrom.ttf\" \" \" 0.5, 0 scale 2 translate <1,2,3> }\n"
+                "#debug concat(vstr(3, min_extent(T), \",\", 0, 4), \" \", "
+                "vstr(3, max_extent(T), \",\", 0, 4))") ==
+          "1.0000,2.0000,3.0000 1.0000,2.0000,4.0000");
+    CHECK(debug("#declare T = text { ttf \"timrom.ttf\" \"\" 0.5, 0 }\n"
+                "#debug str(max_extent(T).x, 0, 0)") == "10000000000");
+}
+
+TEST_CASE("a macro's value may end with a semicolon", "[language][declare]") {
+    // tracevines.pov's FindTmp ends `#if (Safety) Q; #else <0,0,0>; #end`.
+    CHECK(debug("#macro F(S) #local Q = 3; #if (S) Q; #else 4; #end #end\n"
+                "#declare X = F(1); #declare Y = F(0);\n#debug str(10 * X + Y, 0, 0)") == "34");
+}
