@@ -51,7 +51,7 @@ constexpr auto kRules = std::to_array<KeywordRuleEntry>({
     {"atan2", KeywordRule::Rendered, ""},
     {"atanh", KeywordRule::Rendered, ""},
     {"autostop", KeywordRule::Warned, "inside photons { }, which is warned as a whole"},
-    {"average", KeywordRule::Refused, ""},
+    {"average", KeywordRule::Rendered, ""},
     {"b_spline", KeywordRule::Rendered, ""},
     {"background", KeywordRule::Rendered, ""},
     {"bezier_spline", KeywordRule::Rendered, ""},

@@ -92,32 +92,67 @@ inline PatternSlot pattern_slot(Interpreter& st, const p::position& at, const ch
     return {pigment.patterned, pigment.transform, &pigment};
 }
 
+// average has no value of its own: it needs its map's entries to average
+// (POV-Ray's Parse_Pattern: "Average must have map").
+inline void check_average(const runtime::pattern::Pattern& pattern, bool has_map, const char* map) {
+    if (pattern.kind && pattern.kind->average && !has_map)
+        throw ValueError(std::string("average needs a ") + map +
+                         " of the entries it averages, as in POV-Ray");
+}
+
+// The pattern `name` starts in the block being written (a pigment's, a
+// normal's or a texture's), with its defaults: what follows its name sets
+// its arguments.
+inline PatternSlot start_pattern(Interpreter& st, const p::position& at, const std::string& name) {
+    const PatternSlot slot = pattern_slot(st, at, "a pattern", true);
+    const runtime::pattern::Kind* kind = runtime::pattern::find_kind(name);
+    if (kind == nullptr) throw ValueError("no pattern " + name);
+    if (slot.pigment) replace_uv_mapping(*slot.pigment);
+    if (slot.normal) replace_uv_mapping(*slot.normal);
+    slot.pattern = runtime::pattern::Pattern::of(*kind);
+    // (The scene's noise generator, global_settings { noise_generator }.)
+    slot.pattern.noise_generator = st.scene.global.noise_generator;
+    ++st.patterns_written;
+    if (slot.pigment) {
+        slot.pigment->pattern = runtime::Pigment::Pattern::Patterned;
+        slot.pigment->colour_map = {};
+    }
+    if (slot.texture) {
+        // (POV-Ray: a texture is plain or patterned; a pattern after
+        // its layers or in a declared plain one starts it over.)
+        if (!slot.texture->below.empty())
+            throw ValueError("a layered texture cannot take a pattern (" + name + ")");
+        slot.texture->texture_map.clear();
+    }
+    return slot;
+}
+
+// A pigment's block written (pigment { }, pigment_pattern { }): a block
+// pattern given fewer pigments than it takes has its default colours for
+// the rest (POV-Ray's Parse_Blend_List); an average has its map.
+inline void close_pigment(runtime::Pigment& pigment) {
+    const auto* kind = pigment.patterned.kind;
+    if (kind && kind->argument == runtime::pattern::Kind::Argument::Colours &&
+        !pigment.pigment_map.empty())
+        for (std::size_t i = pigment.pigment_map.size(); i < pigment.colour_map.entries.size();
+             ++i) {
+            auto solid = std::make_shared<runtime::Pigment>();
+            solid->colours = {pigment.colour_map.entries[i].colour};
+            pigment.pigment_map.push_back({static_cast<double>(i), std::move(solid)});
+        }
+    if (pigment.pattern == runtime::Pigment::Pattern::Patterned)
+        check_average(pigment.patterned, !pigment.pigment_map.empty(), "pigment_map");
+    close_uv_mapping(pigment.uv_mapping);
+}
+
 template <>
 struct action<g::pattern_kind> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         std::vector<Value> args = st.values.close_frame();
         const std::string name = st.values.pop_name();
-        const PatternSlot slot = pattern_slot(st, in.position(), "a pattern", true);
-        const runtime::pattern::Kind* kind = runtime::pattern::find_kind(name);
-        if (kind == nullptr) throw ValueError("no pattern " + name);
-        if (slot.pigment) replace_uv_mapping(*slot.pigment);
-        if (slot.normal) replace_uv_mapping(*slot.normal);
-        slot.pattern = runtime::pattern::Pattern::of(*kind);
-        // (The scene's noise generator, global_settings { noise_generator }.)
-        slot.pattern.noise_generator = st.scene.global.noise_generator;
-        ++st.patterns_written;
-        if (slot.pigment) {
-            slot.pigment->pattern = runtime::Pigment::Pattern::Patterned;
-            slot.pigment->colour_map = {};
-        }
-        if (slot.texture) {
-            // (POV-Ray: a texture is plain or patterned; a pattern after
-            // its layers or in a declared plain one starts it over.)
-            if (!slot.texture->below.empty())
-                throw ValueError("a layered texture cannot take a pattern (" + name + ")");
-            slot.texture->texture_map.clear();
-        }
+        const PatternSlot slot = start_pattern(st, in.position(), name);
+        const runtime::pattern::Kind* kind = slot.pattern.kind;
         using A = runtime::pattern::Kind::Argument;
         // In a normal, one more number may follow: the amount (bump_size).
         const std::size_t own = kind->argument == A::Vector || kind->argument == A::Number ? 1 : 0;
@@ -151,6 +186,8 @@ struct action<g::pattern_kind> {
                 slot.pattern.number[0] =
                     TimeFunction::apply(TimeOp::Int, to_float(args[0], name + "'s number"));
                 break;
+            case A::Own:  // (read by its own rule: never here)
+                throw ValueError(name + " is written " + name + " { ... }");
             case A::Colours: {
                 // (In a normal or a texture, the normals or textures follow
                 // as blocks.)
@@ -358,6 +395,7 @@ struct action<g::normal_block> {
         auto& normal = st.blocks.edit<runtime::Normal>(in.position(), "a normal");
         if (normal.patterned.kind == nullptr && normal.unsupported_name.empty())
             throw ValueError("a normal needs a pattern (POV-Ray: no normal type given)");
+        check_average(normal.patterned, !normal.normal_map.empty(), "normal_map");
         close_uv_mapping(normal.uv_mapping);
         Value v{std::move(normal)};
         st.blocks.close();

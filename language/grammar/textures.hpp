@@ -18,8 +18,7 @@ HEXANT_KEYWORD(kw_material, "material");
 // Patterns POV-Ray has and hexant does not: parsed, kept by name, an error
 // only where a scene uses them.
 struct unsupported_pattern_name
-    : p::sor<TAO_PEGTL_KEYWORD("average"), TAO_PEGTL_KEYWORD("facets"),
-             TAO_PEGTL_KEYWORD("function"), TAO_PEGTL_KEYWORD("julia"),
+    : p::sor<TAO_PEGTL_KEYWORD("facets"), TAO_PEGTL_KEYWORD("function"), TAO_PEGTL_KEYWORD("julia"),
              TAO_PEGTL_KEYWORD("pavement"), TAO_PEGTL_KEYWORD("tiling"), TAO_PEGTL_KEYWORD("cubic"),
              TAO_PEGTL_KEYWORD("object"), TAO_PEGTL_KEYWORD("slope"), TAO_PEGTL_KEYWORD("aoi"),
              TAO_PEGTL_KEYWORD("density_file"), TAO_PEGTL_KEYWORD("image_pattern"),
@@ -94,10 +93,12 @@ struct pigment_item;
 // pigment_map { [value PIGMENT_BODY] ... }: each entry a pigment's inside
 // (a declared pigment, a colour, or a pattern with its modifiers).
 struct pigment_map_value : p::seq<sum> {};
+// (An average's entry may leave its weight out: 1, POV-Ray's Allow_Float(1.0).)
+struct pigment_map_weight : p::success {};
 struct pigment_map_pigment_open : p::success {};
-struct pigment_map_entry
-    : p::seq<lbracket, p::must<pigment_map_value>, p::opt<comma>, pigment_map_pigment_open,
-             p::opt<pigment_base>, p::star<pigment_item>, p::must<rbracket>> {};
+struct pigment_map_entry : p::seq<lbracket, p::sor<pigment_map_value, pigment_map_weight>,
+                                  p::opt<comma>, pigment_map_pigment_open, p::opt<pigment_base>,
+                                  p::star<pigment_item>, p::must<rbracket>> {};
 struct pigment_map_open : p::seq<TAO_PEGTL_KEYWORD("pigment_map"), ws, p::must<lbrace>> {};
 struct pigment_map_element
     : p::sor<directive<pigment_map_element>, macro_call<pigment_map_element>, pigment_map_entry> {};
@@ -209,10 +210,12 @@ struct normal_no_bump_scale : p::seq<TAO_PEGTL_KEYWORD("no_bump_scale"), ws> {};
 struct normal_item;
 // normal_map { [value NORMAL_BODY] ... }: each entry a normal's inside.
 struct normal_map_value : p::seq<sum> {};
+struct normal_map_weight : p::success {};  // (as pigment_map_weight)
 struct normal_map_normal_open : p::success {};
 struct normal_map_entry
-    : p::seq<lbracket, p::must<normal_map_value>, p::opt<comma>, normal_map_normal_open,
-             p::opt<normal_base>, p::star<normal_item>, p::must<rbracket>> {};
+    : p::seq<lbracket, p::sor<normal_map_value, normal_map_weight>, p::opt<comma>,
+             normal_map_normal_open, p::opt<normal_base>, p::star<normal_item>, p::must<rbracket>> {
+};
 struct normal_map_open : p::seq<TAO_PEGTL_KEYWORD("normal_map"), ws, p::must<lbrace>> {};
 struct normal_map_element
     : p::sor<directive<normal_map_element>, macro_call<normal_map_element>, normal_map_entry> {};
@@ -262,10 +265,11 @@ struct texture_finish : p::seq<finish_block> {};
 struct texture_item;
 // texture_map { [value TEXTURE_BODY] ... }: each entry a texture's inside.
 struct texture_map_value : p::seq<sum> {};
+struct texture_map_weight : p::success {};  // (as pigment_map_weight)
 struct texture_map_texture_open : p::success {};
-struct texture_map_entry
-    : p::seq<lbracket, p::must<texture_map_value>, p::opt<comma>, texture_map_texture_open,
-             p::opt<texture_base>, p::star<texture_item>, p::must<rbracket>> {};
+struct texture_map_entry : p::seq<lbracket, p::sor<texture_map_value, texture_map_weight>,
+                                  p::opt<comma>, texture_map_texture_open, p::opt<texture_base>,
+                                  p::star<texture_item>, p::must<rbracket>> {};
 struct texture_map_open : p::seq<TAO_PEGTL_KEYWORD("texture_map"), ws, p::must<lbrace>> {};
 struct texture_map_element
     : p::sor<directive<texture_map_element>, macro_call<texture_map_element>, texture_map_entry> {};

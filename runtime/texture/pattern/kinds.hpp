@@ -6,6 +6,7 @@
 #pragma once
 
 #include "runtime/texture/pattern/kinds/agate.hpp"
+#include "runtime/texture/pattern/kinds/average.hpp"
 #include "runtime/texture/pattern/kinds/boxed.hpp"
 #include "runtime/texture/pattern/kinds/bozo.hpp"
 #include "runtime/texture/pattern/kinds/brick.hpp"
@@ -44,6 +45,7 @@ namespace hexant::runtime::pattern {
 // clang-format off
 using PatternKinds = PatternKindList<
     kinds::Agate,
+    kinds::Average,
     kinds::Boxed,
     kinds::Bozo,
     kinds::Brick,

@@ -1,0 +1,75 @@
+// average (runtime/texture/pattern/kinds/average.hpp): its
+// values through the texture evaluator against POV-Ray 3.7's. The pigments'
+// colours are what POV-Ray 3.7.0.10 printed with eval_pigment (functions.inc)
+// at the same points.
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include <catch2/catch.hpp>
+
+#include "language/interpreter.hpp"
+#include "runtime/texture/texture_evaluator.hpp"
+#include "scene_text.hpp"
+
+namespace rt = hexant::runtime;
+
+namespace {
+
+rt::SceneDescription read(const std::string& text) {
+    hexant::language::ParseOptions options;
+    std::ostringstream messages;
+    options.messages = &messages;
+    return hexant::language::parse_scene_text(text, "test.pov", options);
+}
+
+// The colour of object i's texture at `point`, seen with the shading
+// normal `normal`.
+glm::dvec3 colour_at(const rt::SceneDescription& scene, std::size_t i, const glm::dvec3& point,
+                     const glm::dvec3& normal = {0.0, 1.0, 0.0}) {
+    REQUIRE(scene.objects.at(i)->texture);
+    const rt::TextureEvaluator evaluator(*scene.objects[i]->texture, std::nullopt);
+    rt::TextureSample sample;
+    evaluator.sample(point, {0.0, 0.0}, 0.0, normal, sample);
+    glm::dvec3 c(0.0);
+    for (const auto& plain : sample.plains)
+        c += plain.weight * sample.layers[plain.first].material.colour;
+    return c;
+}
+
+const glm::dvec3 kPoints[] = {
+    {0.25, 0.5, 0.25}, {1.3, 0.2, 0.7}, {-0.6, 1.7, 2.2}, {0.9, -0.4, -1.1}};
+
+}  // namespace
+
+TEST_CASE("average weighs its pigment_map's entries as POV-Ray's", "[language][pattern]") {
+    // POV-Ray's colours (1e-6: single precision). The entries are read at
+    // the average's scaled point; weights 1, 3 and 0.5.
+    const auto scene = read(R"(
+        sphere { 0, 1 pigment { average pigment_map { [1 rgb <1, 0, 0>]
+            [3 gradient x color_map { [0 rgb 0] [1 rgb <0, 1, 1>] }]
+            [0.5 checker rgb 1, rgb <0, 0, 0.5>] } scale 2 } })");
+    const glm::dvec3 expected[] = {{0.333333343, 0.194444448, 0.194444448},
+                                   {0.333333343, 0.544444382, 0.544444382},
+                                   {0.333333343, 0.577777743, 0.577777743},
+                                   {0.333333343, 0.411111087, 0.411111087}};
+    for (int k = 0; k < 4; ++k) {
+        INFO("point " << k);
+        const glm::dvec3 c = colour_at(scene, 0, kPoints[k]);
+        CHECK(c.x == Approx(expected[k].x).margin(1e-6));
+        CHECK(c.y == Approx(expected[k].y).margin(1e-6));
+        CHECK(c.z == Approx(expected[k].z).margin(1e-6));
+    }
+}
+
+TEST_CASE("what POV-Ray refuses of average is an error", "[language][pattern]") {
+    const auto error = [](const std::string& text, const char* words) {
+        const auto e = hexant::test::error_of(text);
+        INFO(e.formatted());
+        CHECK(e.formatted().find(words) != std::string::npos);
+    };
+    error("sphere { 0, 1 pigment { average } }", "average needs a pigment_map");
+    error("sphere { 0, 1 pigment { average color_map { [0 rgb 0] [1 rgb 1] } } }",
+          "a color_map cannot go with average");
+    error("sphere { 0, 1 normal { average } }", "average needs a normal_map");
+}
