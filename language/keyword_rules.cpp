@@ -324,7 +324,7 @@ constexpr auto kRules = std::to_array<KeywordRuleEntry>({
     {"pi", KeywordRule::Rendered, ""},
     {"pigment", KeywordRule::Rendered, ""},
     {"pigment_map", KeywordRule::Rendered, ""},
-    {"pigment_pattern", KeywordRule::Refused, ""},
+    {"pigment_pattern", KeywordRule::Rendered, ""},
     {"planar", KeywordRule::Rendered, ""},
     {"plane", KeywordRule::Rendered, ""},
     {"png", KeywordRule::Rendered, ""},

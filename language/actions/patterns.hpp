@@ -220,6 +220,42 @@ struct action<g::pattern_kind> {
     }
 };
 
+// ---- patterns of their own syntax: pigment_pattern { }
+
+// [,] AMOUNT after one, in a normal (POV-Ray reads it after any pattern).
+template <>
+struct action<g::own_pattern_amount> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        Value v = st.values.pop();
+        const PatternSlot slot = pattern_slot(st, in.position(), "an amount");
+        if (slot.normal == nullptr)
+            throw ValueError("a number after a pattern is its amount, only in a normal");
+        slot.normal->amount = to_float(v, std::string(slot.pattern.kind->name) + "'s amount");
+    }
+};
+
+template <>
+struct action<g::pigment_pattern_open> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)in;
+        // (A fresh pigment, as POV-Ray's Create_Pigment: not the default.)
+        st.blocks.open(std::in_place_type<runtime::Pigment>);
+    }
+};
+template <>
+struct action<g::pigment_pattern_body> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        auto& written = st.blocks.edit<runtime::Pigment>(in.position(), "pigment_pattern");
+        close_pigment(written);
+        auto pigment = std::make_shared<const runtime::Pigment>(std::move(written));
+        st.blocks.close();
+        start_pattern(st, in.position(), "pigment_pattern").pattern.pigment = std::move(pigment);
+    }
+};
+
 // A kind's own modifier, as its file under runtime/texture/pattern/kinds/
 // declares it (POV-Ray refuses one the pattern does not have).
 inline void set_kind_setting(runtime::pattern::Pattern& pattern, const std::string& name,

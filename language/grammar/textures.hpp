@@ -69,6 +69,11 @@ struct warp_turbulence : p::seq<pattern_setting_value> {};
 struct warp_block : p::seq<warp_open, p::must<warp_turbulence_keyword>, ws,
                            p::must<warp_turbulence>, p::star<warp_setting>, p::must<rbrace>> {};
 
+// What may follow a pattern of its own syntax in a normal: [,] its amount
+// (POV-Ray's Parse_Pattern: Parse_Comma, Allow_Float after any pattern).
+struct own_pattern_amount : p::seq<sum> {};
+struct own_pattern_tail : p::opt<p::opt<comma>, own_pattern_amount> {};
+
 // color_map { [value colour] ... }, or a declared one; POV-Ray's older
 // [value1, value2 colour1 colour2] too.
 struct colour_map_open
@@ -139,6 +144,12 @@ struct image_map_item
     : p::sor<image_map_gamma, image_map_setting, image_map_flag, image_map_filter> {};
 struct image_map_block : p::seq<image_map_open, p::opt<image_file_type>, p::must<image_map_file>,
                                 p::star<image_map_item>, p::must<rbrace>> {};
+// pigment_pattern { PIGMENT_BODY }: a fresh pigment's inside, whose grey
+// is the value (runtime/texture/pattern/kinds/pigment_pattern.hpp).
+struct pigment_pattern_open : p::seq<TAO_PEGTL_KEYWORD("pigment_pattern"), ws, p::must<lbrace>> {};
+struct pigment_pattern_body
+    : p::seq<pigment_pattern_open, p::opt<pigment_base>, p::star<pigment_item>, p::must<rbrace>> {};
+struct pigment_pattern : p::seq<pigment_pattern_body, own_pattern_tail> {};
 struct pigment_block;
 // A block pattern's pigments: checker pigment { } pigment { }.
 struct pigment_list_pigment : p::seq<pigment_block, p::opt<comma>> {};
@@ -152,10 +163,10 @@ struct pigment_quick_colour
     : p::seq<p::sor<TAO_PEGTL_KEYWORD("quick_color"), TAO_PEGTL_KEYWORD("quick_colour")>, ws,
              p::must<ignored_value>> {};
 struct pigment_item
-    : p::sor<directive<pigment_item>, macro_call<pigment_item>, pattern_kind, pattern_setting,
-             pattern_wave, warp_block, pigment_colour_map, pigment_map_block, image_map_block,
-             pigment_list_pigment, pigment_quick_colour, pigment_component, uv_mapping,
-             unsupported_pattern, transformation> {};
+    : p::sor<directive<pigment_item>, macro_call<pigment_item>, pigment_pattern, pattern_kind,
+             pattern_setting, pattern_wave, warp_block, pigment_colour_map, pigment_map_block,
+             image_map_block, pigment_list_pigment, pigment_quick_colour, pigment_component,
+             uv_mapping, unsupported_pattern, transformation> {};
 struct pigment_block
     : p::seq<pigment_open, p::opt<pigment_base>, p::star<pigment_item>, p::must<rbrace>> {};
 
@@ -231,11 +242,10 @@ struct slope_map_block : p::seq<slope_map_open, p::star<slope_map_element>, p::m
 struct normal_block;
 // A block pattern's normals: checker normal { } normal { }.
 struct normal_list_normal : p::seq<normal_block, p::opt<comma>> {};
-struct normal_item
-    : p::sor<directive<normal_item>, macro_call<normal_item>, pattern_kind, pattern_setting,
-             pattern_wave, warp_block, normal_setting, normal_no_bump_scale, normal_map_block,
-             slope_map_block, normal_list_normal, uv_mapping, unsupported_pattern, transformation> {
-};
+struct normal_item : p::sor<directive<normal_item>, macro_call<normal_item>, pigment_pattern,
+                            pattern_kind, pattern_setting, pattern_wave, warp_block, normal_setting,
+                            normal_no_bump_scale, normal_map_block, slope_map_block,
+                            normal_list_normal, uv_mapping, unsupported_pattern, transformation> {};
 struct normal_block
     : p::seq<normal_open, p::opt<normal_base>, p::star<normal_item>, p::must<rbrace>> {};
 struct texture_normal : p::seq<normal_block> {};
@@ -281,8 +291,8 @@ struct texture_list_texture : p::seq<texture_block, p::opt<comma>> {};
 // A patterned texture: a pattern and its modifiers, then its map.
 struct texture_item
     : p::sor<directive<texture_item>, macro_call<texture_item>, texture_pigment, texture_finish,
-             texture_normal, pattern_kind, pattern_setting, pattern_wave, warp_block,
-             texture_map_block, texture_list_texture, uv_mapping, transformation> {};
+             texture_normal, pigment_pattern, pattern_kind, pattern_setting, pattern_wave,
+             warp_block, texture_map_block, texture_list_texture, uv_mapping, transformation> {};
 struct texture_block
     : p::seq<texture_open, p::opt<texture_base>, p::star<texture_item>, p::must<rbrace>> {};
 

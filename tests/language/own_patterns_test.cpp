@@ -1,4 +1,4 @@
-// average (runtime/texture/pattern/kinds/average.hpp): its
+// average and pigment_pattern (runtime/texture/pattern/kinds/): their
 // values through the texture evaluator against POV-Ray 3.7's. The pigments'
 // colours are what POV-Ray 3.7.0.10 printed with eval_pigment (functions.inc)
 // at the same points.
@@ -42,6 +42,24 @@ const glm::dvec3 kPoints[] = {
 
 }  // namespace
 
+TEST_CASE("pigment_pattern's value is its pigment's grey, as POV-Ray's", "[language][pattern]") {
+    // POV-Ray's values (single precision: 1e-6 covers its rounding of the
+    // colours and the grey; a wrong weight moves them by 1e-2 or more).
+    const auto scene = read(R"(
+        sphere { 0, 1 pigment { pigment_pattern { checker rgb <1, 0, 0>, rgb <0.2, 0.9, 1> }
+            color_map { [0 rgb 0] [1 rgb 1] } } }
+        sphere { 0, 1 pigment { pigment_pattern { gradient x
+            color_map { [0 rgb <0.5, 0, 1>] [1 rgb <1, 1, 0>] } } frequency 2
+            color_map { [0 rgb 0] [1 rgb 1] } } })");
+    const double checker[] = {0.296999991, 0.703499973, 0.296999991, 0.703499973};
+    const double gradient[] = {0.836749971, 0.899100006, 0.023790015, 0.647289991};
+    for (int k = 0; k < 4; ++k) {
+        INFO("point " << k);
+        CHECK(colour_at(scene, 0, kPoints[k]).x == Approx(checker[k]).margin(1e-6));
+        CHECK(colour_at(scene, 1, kPoints[k]).x == Approx(gradient[k]).margin(1e-6));
+    }
+}
+
 TEST_CASE("average weighs its pigment_map's entries as POV-Ray's", "[language][pattern]") {
     // POV-Ray's colours (1e-6: single precision). The entries are read at
     // the average's scaled point; weights 1, 3 and 0.5.
@@ -62,7 +80,8 @@ TEST_CASE("average weighs its pigment_map's entries as POV-Ray's", "[language][p
     }
 }
 
-TEST_CASE("what POV-Ray refuses of average is an error", "[language][pattern]") {
+TEST_CASE("what POV-Ray refuses of average and pigment_pattern is an error",
+          "[language][pattern]") {
     const auto error = [](const std::string& text, const char* words) {
         const auto e = hexant::test::error_of(text);
         INFO(e.formatted());
@@ -72,4 +91,5 @@ TEST_CASE("what POV-Ray refuses of average is an error", "[language][pattern]") 
     error("sphere { 0, 1 pigment { average color_map { [0 rgb 0] [1 rgb 1] } } }",
           "a color_map cannot go with average");
     error("sphere { 0, 1 normal { average } }", "average needs a normal_map");
+    error("sphere { 0, 1 pigment { pigment_pattern { bozo } 0.5 } }", "only in a normal");
 }

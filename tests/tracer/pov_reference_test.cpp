@@ -537,6 +537,15 @@ TEST_CASE("average agrees with POV-Ray 3.7's", "[tracer][pov][pattern]") {
     check_stills("patterns", "average", {"0", "0.5"});
 }
 
+TEST_CASE("pigment_pattern agrees with POV-Ray 3.7's", "[tracer][pov][pattern]") {
+    // patterns/pigment_pattern.pov: a checker's colours as greys (frequency
+    // 2 wrapping them) through a colour map, a pigment_map picked by a
+    // turbulent gradient's grey, normals from a bozo pigment's grey and
+    // from an average of pigments, and a texture_map picked by a pigment
+    // moving with clock, at clock 0 and 0.5. The still's tolerance.
+    check_stills("patterns", "pigment_pattern", {"0", "0.5"});
+}
+
 TEST_CASE("texture_map and layered textures agree with POV-Ray 3.7's", "[tracer][pov][pattern]") {
     // textures/texture_map.pov: a checker of two textures (one reflecting),
     // a texture_map of a declared texture with a bumpy normal and one

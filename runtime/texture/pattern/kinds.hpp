@@ -23,6 +23,7 @@
 #include "runtime/texture/pattern/kinds/mandel.hpp"
 #include "runtime/texture/pattern/kinds/marble.hpp"
 #include "runtime/texture/pattern/kinds/onion.hpp"
+#include "runtime/texture/pattern/kinds/pigment_pattern.hpp"
 #include "runtime/texture/pattern/kinds/planar.hpp"
 #include "runtime/texture/pattern/kinds/quilted.hpp"
 #include "runtime/texture/pattern/kinds/radial.hpp"
@@ -62,6 +63,7 @@ using PatternKinds = PatternKindList<
     kinds::Mandel,
     kinds::Marble,
     kinds::Onion,
+    kinds::PigmentPattern,
     kinds::Planar,
     kinds::Quilted,
     kinds::Radial,
