@@ -220,7 +220,7 @@ struct action<g::pattern_kind> {
     }
 };
 
-// ---- patterns of their own syntax: pigment_pattern { }
+// ---- patterns of their own syntax: slope { }, pigment_pattern { }
 
 // [,] AMOUNT after one, in a normal (POV-Ray reads it after any pattern).
 template <>
@@ -232,6 +232,104 @@ struct action<g::own_pattern_amount> {
         if (slot.normal == nullptr)
             throw ValueError("a number after a pattern is its amount, only in a normal");
         slot.normal->amount = to_float(v, std::string(slot.pattern.kind->name) + "'s amount");
+    }
+};
+
+template <>
+struct action<g::slope_keyword> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        start_pattern(st, in.position(), "slope");
+    }
+};
+template <>
+struct action<g::slope_point_at> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        using S = runtime::pattern::kinds::Slope;
+        pattern_slot(st, in.position(), "point_at").pattern.number[S::kPointAt] = 1.0;
+    }
+};
+// Whether a slope is written with point_at (its flag is a constant).
+inline bool slope_points_at(const runtime::pattern::Pattern& p) {
+    const TimeFunction& flag = p.number[runtime::pattern::kinds::Slope::kPointAt];
+    return flag.is_constant() && flag.constant() != 0.0;
+}
+// slope's and its altitude's numbers, each as written (the ranges are
+// made when the pattern closes).
+template <class Rule>
+struct slope_number_action {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        using S = runtime::pattern::kinds::Slope;
+        Value v = st.values.pop();
+        runtime::pattern::Pattern& p = pattern_slot(st, in.position(), "slope").pattern;
+        if constexpr (std::is_same_v<Rule, g::slope_direction>)
+            p.vector = to_vector3(v, slope_points_at(p) ? "slope's point_at" : "slope's direction");
+        else if constexpr (std::is_same_v<Rule, g::altitude_direction>)
+            p.vector2 = to_vector3(v, "slope's altitude");
+        else if constexpr (std::is_same_v<Rule, g::slope_low>)
+            p.more[S::kSlopeLow] = to_float(v, "slope's low slope");
+        else if constexpr (std::is_same_v<Rule, g::slope_high>)
+            p.more[S::kSlopeRange] = to_float(v, "slope's high slope");
+        else if constexpr (std::is_same_v<Rule, g::altitude_low>)
+            p.more[S::kAltitudeLow] = to_float(v, "slope's low altitude");
+        else
+            p.more[S::kAltitudeRange] = to_float(v, "slope's high altitude");
+    }
+};
+template <>
+struct action<g::slope_direction> : slope_number_action<g::slope_direction> {};
+template <>
+struct action<g::slope_low> : slope_number_action<g::slope_low> {};
+template <>
+struct action<g::slope_high> : slope_number_action<g::slope_high> {};
+template <>
+struct action<g::altitude_direction> : slope_number_action<g::altitude_direction> {};
+template <>
+struct action<g::altitude_low> : slope_number_action<g::altitude_low> {};
+template <>
+struct action<g::altitude_high> : slope_number_action<g::altitude_high> {};
+template <>
+struct action<g::altitude_keyword> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        if (slope_points_at(pattern_slot(st, in.position(), "altitude").pattern))
+            throw ValueError("slope's altitude cannot go with point_at, as in POV-Ray");
+    }
+};
+// LOW and HIGH into LOW and HIGH - LOW (POV-Ray: a range of zero, HIGH
+// equal to a LOW, is none, with a warning); no direction at all is an
+// error, as in POV-Ray ("Zero length for both slope and gradient").
+inline void close_slope_range(TimeFunction& low, TimeFunction& high, Interpreter& st,
+                              const p::position& at, const char* what) {
+    if (high.is_constant() && low.is_constant() && high.constant() != 0.0 &&
+        high.constant() == low.constant()) {
+        st.warn(at, std::string("zero ") + what + " range in slope, ignored (as POV-Ray)");
+        low = 0.0;
+        high = 0.0;
+        return;
+    }
+    high = high - low;
+}
+template <>
+struct action<g::slope_pattern> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        using S = runtime::pattern::kinds::Slope;
+        runtime::pattern::Pattern& p = pattern_slot(st, in.position(), "slope").pattern;
+        close_slope_range(p.more[S::kSlopeLow], p.more[S::kSlopeRange], st, in.position(), "slope");
+        close_slope_range(p.more[S::kAltitudeLow], p.more[S::kAltitudeRange], st, in.position(),
+                          "altitude");
+        if (!slope_points_at(p) && !p.vector.depends_on_time() && !p.vector2.depends_on_time()) {
+            bool zero = true;
+            for (int i = 0; i < 3; ++i)
+                zero = zero && p.vector.c[i].constant() == 0.0 && p.vector2.c[i].constant() == 0.0;
+            if (zero)
+                throw ValueError(
+                    "slope's direction and altitude are both of zero length, as "
+                    "POV-Ray refuses");
+        }
     }
 };
 

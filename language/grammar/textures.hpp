@@ -20,7 +20,7 @@ HEXANT_KEYWORD(kw_material, "material");
 struct unsupported_pattern_name
     : p::sor<TAO_PEGTL_KEYWORD("facets"), TAO_PEGTL_KEYWORD("function"), TAO_PEGTL_KEYWORD("julia"),
              TAO_PEGTL_KEYWORD("pavement"), TAO_PEGTL_KEYWORD("tiling"), TAO_PEGTL_KEYWORD("cubic"),
-             TAO_PEGTL_KEYWORD("object"), TAO_PEGTL_KEYWORD("slope"), TAO_PEGTL_KEYWORD("aoi"),
+             TAO_PEGTL_KEYWORD("object"), TAO_PEGTL_KEYWORD("aoi"),
              TAO_PEGTL_KEYWORD("density_file"), TAO_PEGTL_KEYWORD("image_pattern"),
              TAO_PEGTL_KEYWORD("bump_map"), TAO_PEGTL_KEYWORD("wave")> {};
 struct unsupported_pattern : p::seq<unsupported_pattern_name, skip::until_rbrace> {};
@@ -73,6 +73,27 @@ struct warp_block : p::seq<warp_open, p::must<warp_turbulence_keyword>, ws,
 // (POV-Ray's Parse_Pattern: Parse_Comma, Allow_Float after any pattern).
 struct own_pattern_amount : p::seq<sum> {};
 struct own_pattern_tail : p::opt<p::opt<comma>, own_pattern_amount> {};
+
+// slope { [point_at] DIRECTION [, LOW [, HIGH]] [altitude VECTOR [, LOW [, HIGH]]] },
+// or slope DIRECTION (POV-Ray's SLOPE_TOKEN in Parse_Pattern;
+// runtime/texture/pattern/kinds/slope.hpp).
+struct slope_keyword : p::seq<TAO_PEGTL_KEYWORD("slope"), ws> {};
+struct slope_point_at : p::seq<TAO_PEGTL_KEYWORD("point_at"), ws> {};
+struct slope_direction : p::seq<sum> {};
+struct slope_low : p::seq<sum> {};
+struct slope_high : p::seq<sum> {};
+struct altitude_keyword : p::seq<TAO_PEGTL_KEYWORD("altitude"), ws> {};
+struct altitude_direction : p::seq<sum> {};
+struct altitude_low : p::seq<sum> {};
+struct altitude_high : p::seq<sum> {};
+struct slope_altitude
+    : p::seq<altitude_keyword, p::must<altitude_direction>, p::opt<p::opt<comma>, altitude_low>,
+             p::opt<p::opt<comma>, altitude_high>> {};
+struct slope_braced : p::seq<lbrace, p::opt<slope_point_at>, p::must<slope_direction>,
+                             p::opt<p::opt<comma>, slope_low>, p::opt<p::opt<comma>, slope_high>,
+                             p::opt<slope_altitude>, p::must<rbrace>> {};
+struct slope_written : p::sor<slope_braced, slope_direction> {};
+struct slope_pattern : p::seq<slope_keyword, p::must<slope_written>, own_pattern_tail> {};
 
 // color_map { [value colour] ... }, or a declared one; POV-Ray's older
 // [value1, value2 colour1 colour2] too.
@@ -163,10 +184,10 @@ struct pigment_quick_colour
     : p::seq<p::sor<TAO_PEGTL_KEYWORD("quick_color"), TAO_PEGTL_KEYWORD("quick_colour")>, ws,
              p::must<ignored_value>> {};
 struct pigment_item
-    : p::sor<directive<pigment_item>, macro_call<pigment_item>, pigment_pattern, pattern_kind,
-             pattern_setting, pattern_wave, warp_block, pigment_colour_map, pigment_map_block,
-             image_map_block, pigment_list_pigment, pigment_quick_colour, pigment_component,
-             uv_mapping, unsupported_pattern, transformation> {};
+    : p::sor<directive<pigment_item>, macro_call<pigment_item>, slope_pattern, pigment_pattern,
+             pattern_kind, pattern_setting, pattern_wave, warp_block, pigment_colour_map,
+             pigment_map_block, image_map_block, pigment_list_pigment, pigment_quick_colour,
+             pigment_component, uv_mapping, unsupported_pattern, transformation> {};
 struct pigment_block
     : p::seq<pigment_open, p::opt<pigment_base>, p::star<pigment_item>, p::must<rbrace>> {};
 
@@ -242,10 +263,11 @@ struct slope_map_block : p::seq<slope_map_open, p::star<slope_map_element>, p::m
 struct normal_block;
 // A block pattern's normals: checker normal { } normal { }.
 struct normal_list_normal : p::seq<normal_block, p::opt<comma>> {};
-struct normal_item : p::sor<directive<normal_item>, macro_call<normal_item>, pigment_pattern,
-                            pattern_kind, pattern_setting, pattern_wave, warp_block, normal_setting,
-                            normal_no_bump_scale, normal_map_block, slope_map_block,
-                            normal_list_normal, uv_mapping, unsupported_pattern, transformation> {};
+struct normal_item
+    : p::sor<directive<normal_item>, macro_call<normal_item>, slope_pattern, pigment_pattern,
+             pattern_kind, pattern_setting, pattern_wave, warp_block, normal_setting,
+             normal_no_bump_scale, normal_map_block, slope_map_block, normal_list_normal,
+             uv_mapping, unsupported_pattern, transformation> {};
 struct normal_block
     : p::seq<normal_open, p::opt<normal_base>, p::star<normal_item>, p::must<rbrace>> {};
 struct texture_normal : p::seq<normal_block> {};
@@ -289,10 +311,11 @@ struct texture_block;
 // A block pattern's textures: checker texture { } texture { }.
 struct texture_list_texture : p::seq<texture_block, p::opt<comma>> {};
 // A patterned texture: a pattern and its modifiers, then its map.
-struct texture_item
-    : p::sor<directive<texture_item>, macro_call<texture_item>, texture_pigment, texture_finish,
-             texture_normal, pigment_pattern, pattern_kind, pattern_setting, pattern_wave,
-             warp_block, texture_map_block, texture_list_texture, uv_mapping, transformation> {};
+struct texture_item : p::sor<directive<texture_item>, macro_call<texture_item>, texture_pigment,
+                             texture_finish, texture_normal, slope_pattern, pigment_pattern,
+                             pattern_kind, pattern_setting, pattern_wave, warp_block,
+                             texture_map_block, texture_list_texture, uv_mapping, transformation> {
+};
 struct texture_block
     : p::seq<texture_open, p::opt<texture_base>, p::star<texture_item>, p::must<rbrace>> {};
 

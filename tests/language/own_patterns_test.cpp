@@ -1,7 +1,8 @@
-// average and pigment_pattern (runtime/texture/pattern/kinds/): their
+// average, pigment_pattern and slope (runtime/texture/pattern/kinds/): their
 // values through the texture evaluator against POV-Ray 3.7's. The pigments'
 // colours are what POV-Ray 3.7.0.10 printed with eval_pigment (functions.inc)
-// at the same points.
+// at the same points; slope's are worked from its slope_pattern (pattern.cpp)
+// at given normals, which eval_pigment cannot give (no surface there: 0).
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -80,8 +81,36 @@ TEST_CASE("average weighs its pigment_map's entries as POV-Ray's", "[language][p
     }
 }
 
-TEST_CASE("what POV-Ray refuses of average and pigment_pattern is an error",
-          "[language][pattern]") {
+TEST_CASE("slope reads the shading normal as POV-Ray's slope_pattern", "[language][pattern]") {
+    // A grey ramp shows the value. slope y: asin(N . y) from [-90, 90]
+    // degrees to [0, 1]; 1 itself is kept 1e-10 under 1. With a range
+    // [0.25, 0.75] the value is rescaled and wrapped into [0, 1). With an
+    // altitude of twice the slope's length (weights 1/3 and 2/3), the
+    // point's height in the pattern's space (scaled by 2) joins in.
+    const auto scene = read(R"(
+        sphere { 0, 1 pigment { slope y } }
+        sphere { 0, 1 pigment { slope { y, 0.25, 0.75 } } }
+        sphere { 0, 1 pigment { slope { y altitude y * 2, 0, 4 } scale 2 } }
+        sphere { 0, 1 pigment { slope { point_at <0, 10, 0> } } })");
+    const glm::dvec3 up(0, 1, 0), side(1, 0, 0);
+    const glm::dvec3 tilted = glm::normalize(glm::dvec3(1, 1, 0));  // 45 degrees: 0.75
+    CHECK(colour_at(scene, 0, {0, 0, 0}, up).x == 1.0 - 1e-10);
+    CHECK(colour_at(scene, 0, {0, 0, 0}, side).x == Approx(0.5).margin(1e-12));
+    CHECK(colour_at(scene, 0, {0, 0, 0}, tilted).x == Approx(0.75).margin(1e-12));
+    CHECK(colour_at(scene, 0, {0, 0, 0}, -tilted).x == Approx(0.25).margin(1e-12));
+    // 30 degrees up: 2/3, rescaled from [0.25, 0.75]: (2/3 - 0.25) / 0.5.
+    const glm::dvec3 thirty(std::sqrt(0.75), 0.5, 0.0);
+    CHECK(colour_at(scene, 1, {0, 0, 0}, thirty).x == Approx((2.0 / 3 - 0.25) / 0.5).margin(1e-12));
+    CHECK(colour_at(scene, 1, {0, 0, 0}, side).x == Approx(0.5).margin(1e-12));
+    // slope 0.5 at the side; altitude: the point (0, 2, 0) is y = 1 in
+    // pattern space, (1 - 0) / 4 = 0.25: 0.5 / 3 + 0.25 * 2 / 3.
+    CHECK(colour_at(scene, 2, {0, 2, 0}, side).x == Approx(0.5 / 3 + 0.5 / 3).margin(1e-12));
+    // point_at: the direction from the hit to the point; facing it, 1.
+    CHECK(colour_at(scene, 3, {0, 0, 0}, up).x == 1.0 - 1e-10);
+    CHECK(colour_at(scene, 3, {0, 0, 0}, side).x == Approx(0.5).margin(1e-12));
+}
+
+TEST_CASE("what POV-Ray refuses of average and slope is an error", "[language][pattern]") {
     const auto error = [](const std::string& text, const char* words) {
         const auto e = hexant::test::error_of(text);
         INFO(e.formatted());
@@ -91,5 +120,8 @@ TEST_CASE("what POV-Ray refuses of average and pigment_pattern is an error",
     error("sphere { 0, 1 pigment { average color_map { [0 rgb 0] [1 rgb 1] } } }",
           "a color_map cannot go with average");
     error("sphere { 0, 1 normal { average } }", "average needs a normal_map");
+    error("sphere { 0, 1 pigment { slope { 0 altitude 0 } } }", "both of zero length");
+    error("sphere { 0, 1 pigment { slope { point_at 1 altitude y } } }",
+          "altitude cannot go with point_at");
     error("sphere { 0, 1 pigment { pigment_pattern { bozo } 0.5 } }", "only in a normal");
 }

@@ -546,6 +546,15 @@ TEST_CASE("pigment_pattern agrees with POV-Ray 3.7's", "[tracer][pov][pattern]")
     check_stills("patterns", "pigment_pattern", {"0", "0.5"});
 }
 
+TEST_CASE("slope agrees with POV-Ray 3.7's", "[tracer][pov][pattern]") {
+    // patterns/slope.pov: the short form, a slope and altitude with their
+    // ranges (one moving with clock) in a texture_map, point_at, a slope
+    // scaled and turned over a bumpy normal (it reads the perturbed
+    // normal, and its transforms move the altitude only), at clock 0 and
+    // 0.5. The still's tolerance.
+    check_stills("patterns", "slope", {"0", "0.5"});
+}
+
 TEST_CASE("texture_map and layered textures agree with POV-Ray 3.7's", "[tracer][pov][pattern]") {
     // textures/texture_map.pov: a checker of two textures (one reflecting),
     // a texture_map of a declared texture with a bumpy normal and one

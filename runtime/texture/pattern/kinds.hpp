@@ -28,6 +28,7 @@
 #include "runtime/texture/pattern/kinds/quilted.hpp"
 #include "runtime/texture/pattern/kinds/radial.hpp"
 #include "runtime/texture/pattern/kinds/ripples.hpp"
+#include "runtime/texture/pattern/kinds/slope.hpp"
 #include "runtime/texture/pattern/kinds/spherical.hpp"
 #include "runtime/texture/pattern/kinds/spiral1.hpp"
 #include "runtime/texture/pattern/kinds/spiral2.hpp"
@@ -68,6 +69,7 @@ using PatternKinds = PatternKindList<
     kinds::Quilted,
     kinds::Radial,
     kinds::Ripples,
+    kinds::Slope,
     kinds::Spherical,
     kinds::Spiral1,
     kinds::Spiral2,
