@@ -79,6 +79,9 @@ HEXANT_ERROR(warp_turbulence_keyword,
 HEXANT_ERROR(warp_turbulence, "expected the turbulence's amount (a vector or a number)");
 HEXANT_ERROR(colour_map_value, "expected a value and a colour in the colour map's entry");
 HEXANT_ERROR(pigment_map_value, "expected the value of the pigment map's entry");
+HEXANT_ERROR(slope_written, "expected slope's direction, or its block { DIRECTION ... }");
+HEXANT_ERROR(slope_direction, "expected slope's direction (a vector)");
+HEXANT_ERROR(altitude_direction, "expected the altitude's direction (a vector) after 'altitude'");
 HEXANT_ERROR(texture_map_value, "expected the value of the texture map's entry");
 HEXANT_ERROR(normal_map_value, "expected the value of the normal map's entry");
 HEXANT_ERROR(slope_map_item, "expected a slope map entry: [value <height, slope>]");

@@ -20,6 +20,7 @@ constexpr auto kReserved = std::to_array<std::string_view>({
     "adaptive",
     "all",
     "all_intersections",
+    "altitude",
     "ambient",
     "ambient_light",
     "angle",

@@ -40,12 +40,47 @@ void add_to_block_list(std::vector<Entry>& map, const runtime::pattern::Pattern&
     map.push_back({static_cast<double>(map.size()), std::move(item)});
 }
 // A map's pattern must be one that gives values (POV-Ray refuses the block
-// patterns with a map).
+// patterns with a map, and average with a slope_map).
 inline void check_map_pattern(const runtime::pattern::Pattern& pattern, const char* map) {
     if (pattern.kind && pattern.kind->argument == runtime::pattern::Kind::Argument::Colours)
         throw ValueError(std::string("a ") + map + " cannot go with " +
                          std::string(pattern.kind->name) + ", as in POV-Ray");
+    if (pattern.kind && pattern.kind->average && std::string_view(map) == "slope_map")
+        throw ValueError("a slope_map cannot go with average, as in POV-Ray");
 }
+
+// A map entry written without its value: an average's weight of 1
+// (POV-Ray's Parse_Blend_Map: Allow_Float(1.0) for AVERAGE_PATTERN); any
+// other map's entry needs its value.
+template <class Record>
+void default_weight(Interpreter& st, const p::position& at, const char* map) {
+    const std::string what = std::string("expected the value of the ") + map + "'s entry";
+    const auto& outer = st.blocks.edit<Record>(at, what.c_str());
+    if (outer.patterned.kind == nullptr || !outer.patterned.kind->average)
+        throw ValueError(what + " (only average's entries may leave it out, weighing 1)");
+    st.values.push(Value{TimeFunction(1.0)});
+}
+template <>
+struct action<g::pigment_map_weight> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        default_weight<runtime::Pigment>(st, in.position(), "pigment map");
+    }
+};
+template <>
+struct action<g::normal_map_weight> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        default_weight<runtime::Normal>(st, in.position(), "normal map");
+    }
+};
+template <>
+struct action<g::texture_map_weight> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        default_weight<runtime::Texture>(st, in.position(), "texture map");
+    }
+};
 
 template <>
 struct action<g::pigment_list_pigment> {
@@ -81,6 +116,7 @@ struct action<g::normal_map_entry> {
         auto& written = st.blocks.edit<runtime::Normal>(in.position(), "a normal_map entry");
         if (written.patterned.kind == nullptr && written.unsupported_name.empty())
             throw ValueError("a normal_map entry needs a pattern (POV-Ray: no normal type given)");
+        check_average(written.patterned, !written.normal_map.empty(), "normal_map");
         close_map_entry(st, in.position(), "normal_map", &runtime::Normal::normal_map);
     }
 };
@@ -192,6 +228,9 @@ template <>
 struct action<g::pigment_map_entry> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        const auto& written =
+            st.blocks.edit<runtime::Pigment>(in.position(), "a pigment_map entry");
+        check_average(written.patterned, !written.pigment_map.empty(), "pigment_map");
         close_map_entry(st, in.position(), "pigment_map", &runtime::Pigment::pigment_map);
     }
 };

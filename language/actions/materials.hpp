@@ -291,6 +291,10 @@ struct action<g::pigment_colour_map> {
             throw ValueError(std::string("a color_map cannot go with ") +
                              std::string(pigment.patterned.kind->name) +
                              " (its colours follow its name), as in POV-Ray");
+        if (pigment.patterned.kind && pigment.patterned.kind->average)
+            throw ValueError(
+                "a color_map cannot go with average (it averages a pigment_map), "
+                "as in POV-Ray");
         pigment.colour_map = v.as<runtime::ColourMap>();
     }
 };
@@ -318,18 +322,7 @@ struct action<g::pigment_block> {
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
         auto& pigment = std::get<runtime::Pigment>(st.blocks.top());
-        // A block pattern given fewer pigments than it takes: the rest are
-        // its default colours (POV-Ray's Parse_Blend_List).
-        const auto* kind = pigment.patterned.kind;
-        if (kind && kind->argument == runtime::pattern::Kind::Argument::Colours &&
-            !pigment.pigment_map.empty())
-            for (std::size_t i = pigment.pigment_map.size(); i < pigment.colour_map.entries.size();
-                 ++i) {
-                auto solid = std::make_shared<runtime::Pigment>();
-                solid->colours = {pigment.colour_map.entries[i].colour};
-                pigment.pigment_map.push_back({static_cast<double>(i), std::move(solid)});
-            }
-        close_uv_mapping(pigment.uv_mapping);
+        close_pigment(pigment);
         Value v{pigment};
         st.blocks.close();
         st.values.push(std::move(v));

@@ -92,32 +92,67 @@ inline PatternSlot pattern_slot(Interpreter& st, const p::position& at, const ch
     return {pigment.patterned, pigment.transform, &pigment};
 }
 
+// average has no value of its own: it needs its map's entries to average
+// (POV-Ray's Parse_Pattern: "Average must have map").
+inline void check_average(const runtime::pattern::Pattern& pattern, bool has_map, const char* map) {
+    if (pattern.kind && pattern.kind->average && !has_map)
+        throw ValueError(std::string("average needs a ") + map +
+                         " of the entries it averages, as in POV-Ray");
+}
+
+// The pattern `name` starts in the block being written (a pigment's, a
+// normal's or a texture's), with its defaults: what follows its name sets
+// its arguments.
+inline PatternSlot start_pattern(Interpreter& st, const p::position& at, const std::string& name) {
+    const PatternSlot slot = pattern_slot(st, at, "a pattern", true);
+    const runtime::pattern::Kind* kind = runtime::pattern::find_kind(name);
+    if (kind == nullptr) throw ValueError("no pattern " + name);
+    if (slot.pigment) replace_uv_mapping(*slot.pigment);
+    if (slot.normal) replace_uv_mapping(*slot.normal);
+    slot.pattern = runtime::pattern::Pattern::of(*kind);
+    // (The scene's noise generator, global_settings { noise_generator }.)
+    slot.pattern.noise_generator = st.scene.global.noise_generator;
+    ++st.patterns_written;
+    if (slot.pigment) {
+        slot.pigment->pattern = runtime::Pigment::Pattern::Patterned;
+        slot.pigment->colour_map = {};
+    }
+    if (slot.texture) {
+        // (POV-Ray: a texture is plain or patterned; a pattern after
+        // its layers or in a declared plain one starts it over.)
+        if (!slot.texture->below.empty())
+            throw ValueError("a layered texture cannot take a pattern (" + name + ")");
+        slot.texture->texture_map.clear();
+    }
+    return slot;
+}
+
+// A pigment's block written (pigment { }, pigment_pattern { }): a block
+// pattern given fewer pigments than it takes has its default colours for
+// the rest (POV-Ray's Parse_Blend_List); an average has its map.
+inline void close_pigment(runtime::Pigment& pigment) {
+    const auto* kind = pigment.patterned.kind;
+    if (kind && kind->argument == runtime::pattern::Kind::Argument::Colours &&
+        !pigment.pigment_map.empty())
+        for (std::size_t i = pigment.pigment_map.size(); i < pigment.colour_map.entries.size();
+             ++i) {
+            auto solid = std::make_shared<runtime::Pigment>();
+            solid->colours = {pigment.colour_map.entries[i].colour};
+            pigment.pigment_map.push_back({static_cast<double>(i), std::move(solid)});
+        }
+    if (pigment.pattern == runtime::Pigment::Pattern::Patterned)
+        check_average(pigment.patterned, !pigment.pigment_map.empty(), "pigment_map");
+    close_uv_mapping(pigment.uv_mapping);
+}
+
 template <>
 struct action<g::pattern_kind> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         std::vector<Value> args = st.values.close_frame();
         const std::string name = st.values.pop_name();
-        const PatternSlot slot = pattern_slot(st, in.position(), "a pattern", true);
-        const runtime::pattern::Kind* kind = runtime::pattern::find_kind(name);
-        if (kind == nullptr) throw ValueError("no pattern " + name);
-        if (slot.pigment) replace_uv_mapping(*slot.pigment);
-        if (slot.normal) replace_uv_mapping(*slot.normal);
-        slot.pattern = runtime::pattern::Pattern::of(*kind);
-        // (The scene's noise generator, global_settings { noise_generator }.)
-        slot.pattern.noise_generator = st.scene.global.noise_generator;
-        ++st.patterns_written;
-        if (slot.pigment) {
-            slot.pigment->pattern = runtime::Pigment::Pattern::Patterned;
-            slot.pigment->colour_map = {};
-        }
-        if (slot.texture) {
-            // (POV-Ray: a texture is plain or patterned; a pattern after
-            // its layers or in a declared plain one starts it over.)
-            if (!slot.texture->below.empty())
-                throw ValueError("a layered texture cannot take a pattern (" + name + ")");
-            slot.texture->texture_map.clear();
-        }
+        const PatternSlot slot = start_pattern(st, in.position(), name);
+        const runtime::pattern::Kind* kind = slot.pattern.kind;
         using A = runtime::pattern::Kind::Argument;
         // In a normal, one more number may follow: the amount (bump_size).
         const std::size_t own = kind->argument == A::Vector || kind->argument == A::Number ? 1 : 0;
@@ -151,6 +186,8 @@ struct action<g::pattern_kind> {
                 slot.pattern.number[0] =
                     TimeFunction::apply(TimeOp::Int, to_float(args[0], name + "'s number"));
                 break;
+            case A::Own:  // (read by its own rule: never here)
+                throw ValueError(name + " is written " + name + " { ... }");
             case A::Colours: {
                 // (In a normal or a texture, the normals or textures follow
                 // as blocks.)
@@ -180,6 +217,140 @@ struct action<g::pattern_kind> {
                 break;
             }
         }
+    }
+};
+
+// ---- patterns of their own syntax: slope { }, pigment_pattern { }
+
+// [,] AMOUNT after one, in a normal (POV-Ray reads it after any pattern).
+template <>
+struct action<g::own_pattern_amount> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        Value v = st.values.pop();
+        const PatternSlot slot = pattern_slot(st, in.position(), "an amount");
+        if (slot.normal == nullptr)
+            throw ValueError("a number after a pattern is its amount, only in a normal");
+        slot.normal->amount = to_float(v, std::string(slot.pattern.kind->name) + "'s amount");
+    }
+};
+
+template <>
+struct action<g::slope_keyword> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        start_pattern(st, in.position(), "slope");
+    }
+};
+template <>
+struct action<g::slope_point_at> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        using S = runtime::pattern::kinds::Slope;
+        pattern_slot(st, in.position(), "point_at").pattern.number[S::kPointAt] = 1.0;
+    }
+};
+// Whether a slope is written with point_at (its flag is a constant).
+inline bool slope_points_at(const runtime::pattern::Pattern& p) {
+    const TimeFunction& flag = p.number[runtime::pattern::kinds::Slope::kPointAt];
+    return flag.is_constant() && flag.constant() != 0.0;
+}
+// slope's and its altitude's numbers, each as written (the ranges are
+// made when the pattern closes).
+template <class Rule>
+struct slope_number_action {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        using S = runtime::pattern::kinds::Slope;
+        Value v = st.values.pop();
+        runtime::pattern::Pattern& p = pattern_slot(st, in.position(), "slope").pattern;
+        if constexpr (std::is_same_v<Rule, g::slope_direction>)
+            p.vector = to_vector3(v, slope_points_at(p) ? "slope's point_at" : "slope's direction");
+        else if constexpr (std::is_same_v<Rule, g::altitude_direction>)
+            p.vector2 = to_vector3(v, "slope's altitude");
+        else if constexpr (std::is_same_v<Rule, g::slope_low>)
+            p.more[S::kSlopeLow] = to_float(v, "slope's low slope");
+        else if constexpr (std::is_same_v<Rule, g::slope_high>)
+            p.more[S::kSlopeRange] = to_float(v, "slope's high slope");
+        else if constexpr (std::is_same_v<Rule, g::altitude_low>)
+            p.more[S::kAltitudeLow] = to_float(v, "slope's low altitude");
+        else
+            p.more[S::kAltitudeRange] = to_float(v, "slope's high altitude");
+    }
+};
+template <>
+struct action<g::slope_direction> : slope_number_action<g::slope_direction> {};
+template <>
+struct action<g::slope_low> : slope_number_action<g::slope_low> {};
+template <>
+struct action<g::slope_high> : slope_number_action<g::slope_high> {};
+template <>
+struct action<g::altitude_direction> : slope_number_action<g::altitude_direction> {};
+template <>
+struct action<g::altitude_low> : slope_number_action<g::altitude_low> {};
+template <>
+struct action<g::altitude_high> : slope_number_action<g::altitude_high> {};
+template <>
+struct action<g::altitude_keyword> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        if (slope_points_at(pattern_slot(st, in.position(), "altitude").pattern))
+            throw ValueError("slope's altitude cannot go with point_at, as in POV-Ray");
+    }
+};
+// LOW and HIGH into LOW and HIGH - LOW (POV-Ray: a range of zero, HIGH
+// equal to a LOW, is none, with a warning); no direction at all is an
+// error, as in POV-Ray ("Zero length for both slope and gradient").
+inline void close_slope_range(TimeFunction& low, TimeFunction& high, Interpreter& st,
+                              const p::position& at, const char* what) {
+    if (high.is_constant() && low.is_constant() && high.constant() != 0.0 &&
+        high.constant() == low.constant()) {
+        st.warn(at, std::string("zero ") + what + " range in slope, ignored (as POV-Ray)");
+        low = 0.0;
+        high = 0.0;
+        return;
+    }
+    high = high - low;
+}
+template <>
+struct action<g::slope_pattern> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        using S = runtime::pattern::kinds::Slope;
+        runtime::pattern::Pattern& p = pattern_slot(st, in.position(), "slope").pattern;
+        close_slope_range(p.more[S::kSlopeLow], p.more[S::kSlopeRange], st, in.position(), "slope");
+        close_slope_range(p.more[S::kAltitudeLow], p.more[S::kAltitudeRange], st, in.position(),
+                          "altitude");
+        if (!slope_points_at(p) && !p.vector.depends_on_time() && !p.vector2.depends_on_time()) {
+            bool zero = true;
+            for (int i = 0; i < 3; ++i)
+                zero = zero && p.vector.c[i].constant() == 0.0 && p.vector2.c[i].constant() == 0.0;
+            if (zero)
+                throw ValueError(
+                    "slope's direction and altitude are both of zero length, as "
+                    "POV-Ray refuses");
+        }
+    }
+};
+
+template <>
+struct action<g::pigment_pattern_open> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)in;
+        // (A fresh pigment, as POV-Ray's Create_Pigment: not the default.)
+        st.blocks.open(std::in_place_type<runtime::Pigment>);
+    }
+};
+template <>
+struct action<g::pigment_pattern_body> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        auto& written = st.blocks.edit<runtime::Pigment>(in.position(), "pigment_pattern");
+        close_pigment(written);
+        auto pigment = std::make_shared<const runtime::Pigment>(std::move(written));
+        st.blocks.close();
+        start_pattern(st, in.position(), "pigment_pattern").pattern.pigment = std::move(pigment);
     }
 };
 
@@ -358,6 +529,7 @@ struct action<g::normal_block> {
         auto& normal = st.blocks.edit<runtime::Normal>(in.position(), "a normal");
         if (normal.patterned.kind == nullptr && normal.unsupported_name.empty())
             throw ValueError("a normal needs a pattern (POV-Ray: no normal type given)");
+        check_average(normal.patterned, !normal.normal_map.empty(), "normal_map");
         close_uv_mapping(normal.uv_mapping);
         Value v{std::move(normal)};
         st.blocks.close();

@@ -18,10 +18,9 @@ HEXANT_KEYWORD(kw_material, "material");
 // Patterns POV-Ray has and hexant does not: parsed, kept by name, an error
 // only where a scene uses them.
 struct unsupported_pattern_name
-    : p::sor<TAO_PEGTL_KEYWORD("average"), TAO_PEGTL_KEYWORD("facets"),
-             TAO_PEGTL_KEYWORD("function"), TAO_PEGTL_KEYWORD("julia"),
+    : p::sor<TAO_PEGTL_KEYWORD("facets"), TAO_PEGTL_KEYWORD("function"), TAO_PEGTL_KEYWORD("julia"),
              TAO_PEGTL_KEYWORD("pavement"), TAO_PEGTL_KEYWORD("tiling"), TAO_PEGTL_KEYWORD("cubic"),
-             TAO_PEGTL_KEYWORD("object"), TAO_PEGTL_KEYWORD("slope"), TAO_PEGTL_KEYWORD("aoi"),
+             TAO_PEGTL_KEYWORD("object"), TAO_PEGTL_KEYWORD("aoi"),
              TAO_PEGTL_KEYWORD("density_file"), TAO_PEGTL_KEYWORD("image_pattern"),
              TAO_PEGTL_KEYWORD("bump_map"), TAO_PEGTL_KEYWORD("wave")> {};
 struct unsupported_pattern : p::seq<unsupported_pattern_name, skip::until_rbrace> {};
@@ -70,6 +69,32 @@ struct warp_turbulence : p::seq<pattern_setting_value> {};
 struct warp_block : p::seq<warp_open, p::must<warp_turbulence_keyword>, ws,
                            p::must<warp_turbulence>, p::star<warp_setting>, p::must<rbrace>> {};
 
+// What may follow a pattern of its own syntax in a normal: [,] its amount
+// (POV-Ray's Parse_Pattern: Parse_Comma, Allow_Float after any pattern).
+struct own_pattern_amount : p::seq<sum> {};
+struct own_pattern_tail : p::opt<p::opt<comma>, own_pattern_amount> {};
+
+// slope { [point_at] DIRECTION [, LOW [, HIGH]] [altitude VECTOR [, LOW [, HIGH]]] },
+// or slope DIRECTION (POV-Ray's SLOPE_TOKEN in Parse_Pattern;
+// runtime/texture/pattern/kinds/slope.hpp).
+struct slope_keyword : p::seq<TAO_PEGTL_KEYWORD("slope"), ws> {};
+struct slope_point_at : p::seq<TAO_PEGTL_KEYWORD("point_at"), ws> {};
+struct slope_direction : p::seq<sum> {};
+struct slope_low : p::seq<sum> {};
+struct slope_high : p::seq<sum> {};
+struct altitude_keyword : p::seq<TAO_PEGTL_KEYWORD("altitude"), ws> {};
+struct altitude_direction : p::seq<sum> {};
+struct altitude_low : p::seq<sum> {};
+struct altitude_high : p::seq<sum> {};
+struct slope_altitude
+    : p::seq<altitude_keyword, p::must<altitude_direction>, p::opt<p::opt<comma>, altitude_low>,
+             p::opt<p::opt<comma>, altitude_high>> {};
+struct slope_braced : p::seq<lbrace, p::opt<slope_point_at>, p::must<slope_direction>,
+                             p::opt<p::opt<comma>, slope_low>, p::opt<p::opt<comma>, slope_high>,
+                             p::opt<slope_altitude>, p::must<rbrace>> {};
+struct slope_written : p::sor<slope_braced, slope_direction> {};
+struct slope_pattern : p::seq<slope_keyword, p::must<slope_written>, own_pattern_tail> {};
+
 // color_map { [value colour] ... }, or a declared one; POV-Ray's older
 // [value1, value2 colour1 colour2] too.
 struct colour_map_open
@@ -102,10 +127,12 @@ struct pigment_item;
 // pigment_map { [value PIGMENT_BODY] ... }: each entry a pigment's inside
 // (a declared pigment, a colour, or a pattern with its modifiers).
 struct pigment_map_value : p::seq<sum> {};
+// (An average's entry may leave its weight out: 1, POV-Ray's Allow_Float(1.0).)
+struct pigment_map_weight : p::success {};
 struct pigment_map_pigment_open : p::success {};
-struct pigment_map_entry
-    : p::seq<lbracket, p::must<pigment_map_value>, p::opt<comma>, pigment_map_pigment_open,
-             p::opt<pigment_base>, p::star<pigment_item>, p::must<rbracket>> {};
+struct pigment_map_entry : p::seq<lbracket, p::sor<pigment_map_value, pigment_map_weight>,
+                                  p::opt<comma>, pigment_map_pigment_open, p::opt<pigment_base>,
+                                  p::star<pigment_item>, p::must<rbracket>> {};
 struct pigment_map_open : p::seq<TAO_PEGTL_KEYWORD("pigment_map"), ws, p::must<lbrace>> {};
 struct pigment_map_element
     : p::sor<directive<pigment_map_element>, macro_call<pigment_map_element>, pigment_map_entry> {};
@@ -146,6 +173,12 @@ struct image_map_item
     : p::sor<image_map_gamma, image_map_setting, image_map_flag, image_map_filter> {};
 struct image_map_block : p::seq<image_map_open, p::opt<image_file_type>, p::must<image_map_file>,
                                 p::star<image_map_item>, p::must<rbrace>> {};
+// pigment_pattern { PIGMENT_BODY }: a fresh pigment's inside, whose grey
+// is the value (runtime/texture/pattern/kinds/pigment_pattern.hpp).
+struct pigment_pattern_open : p::seq<TAO_PEGTL_KEYWORD("pigment_pattern"), ws, p::must<lbrace>> {};
+struct pigment_pattern_body
+    : p::seq<pigment_pattern_open, p::opt<pigment_base>, p::star<pigment_item>, p::must<rbrace>> {};
+struct pigment_pattern : p::seq<pigment_pattern_body, own_pattern_tail> {};
 struct pigment_block;
 // A block pattern's pigments: checker pigment { } pigment { }.
 struct pigment_list_pigment : p::seq<pigment_block, p::opt<comma>> {};
@@ -163,10 +196,10 @@ struct pigment_quick_colour
              p::sor<p::plus<quick_colour_component>,
                     p::seq<p::must<ignored_value>, p::star<quick_colour_component>>>> {};
 struct pigment_item
-    : p::sor<directive<pigment_item>, macro_call<pigment_item>, pattern_kind, pattern_setting,
-             pattern_wave, warp_block, pigment_colour_map, pigment_map_block, image_map_block,
-             pigment_list_pigment, pigment_quick_colour, pigment_component, uv_mapping,
-             unsupported_pattern, transformation> {};
+    : p::sor<directive<pigment_item>, macro_call<pigment_item>, slope_pattern, pigment_pattern,
+             pattern_kind, pattern_setting, pattern_wave, warp_block, pigment_colour_map,
+             pigment_map_block, image_map_block, pigment_list_pigment, pigment_quick_colour,
+             pigment_component, uv_mapping, unsupported_pattern, transformation> {};
 struct pigment_block
     : p::seq<pigment_open, p::opt<pigment_base>, p::star<pigment_item>, p::must<rbrace>> {};
 
@@ -229,10 +262,12 @@ struct normal_no_bump_scale : p::seq<TAO_PEGTL_KEYWORD("no_bump_scale"), ws> {};
 struct normal_item;
 // normal_map { [value NORMAL_BODY] ... }: each entry a normal's inside.
 struct normal_map_value : p::seq<sum> {};
+struct normal_map_weight : p::success {};  // (as pigment_map_weight)
 struct normal_map_normal_open : p::success {};
 struct normal_map_entry
-    : p::seq<lbracket, p::must<normal_map_value>, p::opt<comma>, normal_map_normal_open,
-             p::opt<normal_base>, p::star<normal_item>, p::must<rbracket>> {};
+    : p::seq<lbracket, p::sor<normal_map_value, normal_map_weight>, p::opt<comma>,
+             normal_map_normal_open, p::opt<normal_base>, p::star<normal_item>, p::must<rbracket>> {
+};
 struct normal_map_open : p::seq<TAO_PEGTL_KEYWORD("normal_map"), ws, p::must<lbrace>> {};
 struct normal_map_element
     : p::sor<directive<normal_map_element>, macro_call<normal_map_element>, normal_map_entry> {};
@@ -249,10 +284,10 @@ struct normal_block;
 // A block pattern's normals: checker normal { } normal { }.
 struct normal_list_normal : p::seq<normal_block, p::opt<comma>> {};
 struct normal_item
-    : p::sor<directive<normal_item>, macro_call<normal_item>, pattern_kind, pattern_setting,
-             pattern_wave, warp_block, normal_setting, normal_no_bump_scale, normal_map_block,
-             slope_map_block, normal_list_normal, uv_mapping, unsupported_pattern, transformation> {
-};
+    : p::sor<directive<normal_item>, macro_call<normal_item>, slope_pattern, pigment_pattern,
+             pattern_kind, pattern_setting, pattern_wave, warp_block, normal_setting,
+             normal_no_bump_scale, normal_map_block, slope_map_block, normal_list_normal,
+             uv_mapping, unsupported_pattern, transformation> {};
 struct normal_block
     : p::seq<normal_open, p::opt<normal_base>, p::star<normal_item>, p::must<rbrace>> {};
 struct texture_normal : p::seq<normal_block> {};
@@ -282,10 +317,11 @@ struct texture_finish : p::seq<finish_block> {};
 struct texture_item;
 // texture_map { [value TEXTURE_BODY] ... }: each entry a texture's inside.
 struct texture_map_value : p::seq<sum> {};
+struct texture_map_weight : p::success {};  // (as pigment_map_weight)
 struct texture_map_texture_open : p::success {};
-struct texture_map_entry
-    : p::seq<lbracket, p::must<texture_map_value>, p::opt<comma>, texture_map_texture_open,
-             p::opt<texture_base>, p::star<texture_item>, p::must<rbracket>> {};
+struct texture_map_entry : p::seq<lbracket, p::sor<texture_map_value, texture_map_weight>,
+                                  p::opt<comma>, texture_map_texture_open, p::opt<texture_base>,
+                                  p::star<texture_item>, p::must<rbracket>> {};
 struct texture_map_open : p::seq<TAO_PEGTL_KEYWORD("texture_map"), ws, p::must<lbrace>> {};
 struct texture_map_element
     : p::sor<directive<texture_map_element>, macro_call<texture_map_element>, texture_map_entry> {};
@@ -295,10 +331,11 @@ struct texture_block;
 // A block pattern's textures: checker texture { } texture { }.
 struct texture_list_texture : p::seq<texture_block, p::opt<comma>> {};
 // A patterned texture: a pattern and its modifiers, then its map.
-struct texture_item
-    : p::sor<directive<texture_item>, macro_call<texture_item>, texture_pigment, texture_finish,
-             texture_normal, pattern_kind, pattern_setting, pattern_wave, warp_block,
-             texture_map_block, texture_list_texture, uv_mapping, transformation> {};
+struct texture_item : p::sor<directive<texture_item>, macro_call<texture_item>, texture_pigment,
+                             texture_finish, texture_normal, slope_pattern, pigment_pattern,
+                             pattern_kind, pattern_setting, pattern_wave, warp_block,
+                             texture_map_block, texture_list_texture, uv_mapping, transformation> {
+};
 struct texture_block
     : p::seq<texture_open, p::opt<texture_base>, p::star<texture_item>, p::must<rbrace>> {};
 

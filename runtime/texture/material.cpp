@@ -28,6 +28,10 @@ template <class Record>
 bool entry_depends(const Record& r, Seen& seen) {
     return seen.insert({kind_of(&r), &r}).second && depends(r, seen);
 }
+// A pattern's numbers, and the pigment a pigment_pattern reads.
+bool pattern_depends(const pattern::Pattern& p, Seen& seen) {
+    return p.depends_on_time() || (p.pigment && entry_depends(*p.pigment, seen));
+}
 
 }  // namespace
 
@@ -95,7 +99,7 @@ bool depends(const Pigment& p, Seen& seen) {
         return p.patterned.depends_on_time() || p.transform.depends_on_time() ||
                p.image_map->images.size() > 1 || p.image_map->filter_all.depends_on_time() ||
                p.image_map->transmit_all.depends_on_time();
-    if (p.patterned.depends_on_time() || p.colour_map.depends_on_time() ||
+    if (pattern_depends(p.patterned, seen) || p.colour_map.depends_on_time() ||
         p.transform.depends_on_time())
         return true;
     for (const auto& e : p.pigment_map)
@@ -104,7 +108,7 @@ bool depends(const Pigment& p, Seen& seen) {
 }
 
 bool depends(const Normal& n, Seen& seen) {
-    if (n.patterned.depends_on_time() || n.amount.depends_on_time() ||
+    if (pattern_depends(n.patterned, seen) || n.amount.depends_on_time() ||
         n.accuracy.depends_on_time() || n.transform.depends_on_time())
         return true;
     for (const auto& e : n.normal_map)
@@ -132,7 +136,7 @@ namespace {
 bool depends(const Texture& x, Seen& seen) {
     if (x.transform.depends_on_time() || x.uv_outside.depends_on_time()) return true;
     if (x.is_patterned()) {
-        if (x.patterned.depends_on_time()) return true;
+        if (pattern_depends(x.patterned, seen)) return true;
         for (const auto& e : x.texture_map)
             if (e.value.depends_on_time() || entry_depends(*e.texture, seen)) return true;
         return false;

@@ -10,6 +10,7 @@
 #include <glm/matrix.hpp>
 
 #include "runtime/objects/object_error.hpp"
+#include "runtime/texture/pattern/kinds/average.hpp"
 
 namespace hexant::runtime {
 
@@ -23,6 +24,22 @@ Transform head_transform(const Transform& last, const Transform& texture) {
 }
 
 }  // namespace
+
+struct TextureEvaluator::Shared {
+    std::map<const Texture*, std::shared_ptr<const CompiledTexture>> textures;
+    std::map<const Pigment*, std::shared_ptr<const CompiledPigment>> pigments;
+    std::map<const Normal*, std::shared_ptr<const CompiledNormal>> normals;
+    // The entry compiled from `record` (in its pattern's space: nothing
+    // outside it), once.
+    template <class Compiled, class Record, class... Extra>
+    std::shared_ptr<const Compiled> entry(
+        std::map<const Record*, std::shared_ptr<const Compiled>>& done, const Record& record,
+        const Extra&... extra) {
+        auto& slot = done[&record];
+        if (!slot) slot = std::make_shared<const Compiled>(record, Transform{}, extra..., *this);
+        return slot;
+    }
+};
 
 TextureEvaluator::CompiledColour TextureEvaluator::compile(const ColourFunction& colour) {
     CompiledColour out;
@@ -91,11 +108,17 @@ pattern::Octaves TextureEvaluator::CompiledTurbulence::at(double t) const {
 }
 
 TextureEvaluator::CompiledPattern::CompiledPattern(const pattern::Pattern& source,
-                                                   const Transform& last, const Transform& texture)
+                                                   const Transform& last, const Transform& texture,
+                                                   Shared& shared)
     : kind(source.kind), head(std::make_shared<const Motion>(head_transform(last, texture))) {
     for (int i = 0; i < 3; ++i)
         vector[static_cast<std::size_t>(i)] = CompiledScalar(source.vector.c[i]);
     for (std::size_t i = 0; i < 2; ++i) number[i] = CompiledScalar(source.number[i]);
+    for (int i = 0; i < 3; ++i)
+        vector2[static_cast<std::size_t>(i)] = CompiledScalar(source.vector2.c[i]);
+    for (std::size_t i = 0; i < more.size(); ++i) more[i] = CompiledScalar(source.more[i]);
+    // (pigment_pattern's pigment lives in this pattern's space.)
+    if (source.pigment) pigment = shared.entry(shared.pigments, *source.pigment);
     if (source.turbulence) turbulence = compile(*source.turbulence);
     frequency = CompiledScalar(source.frequency);
     phase = CompiledScalar(source.phase);
@@ -113,11 +136,21 @@ TextureEvaluator::CompiledPattern::CompiledPattern(const pattern::Pattern& sourc
     const bool still = !source.vector.depends_on_time() && !source.number[0].depends_on_time() &&
                        !source.number[1].depends_on_time() && !source.frequency.depends_on_time() &&
                        !source.phase.depends_on_time() && !source.exponent.depends_on_time() &&
+                       !source.vector2.depends_on_time() &&
+                       std::none_of(source.more.begin(), source.more.end(),
+                                    [](const TimeFunction& n) { return n.depends_on_time(); }) &&
                        !(source.turbulence && source.turbulence->depends_on_time());
     if (still) {
         fixed = values_at(0.0);
         fixed_exponent = pattern::single(exponent.at(0.0));
     }
+}
+
+pattern::Values TextureEvaluator::CompiledPattern::values(const pattern::Hit& hit) const {
+    pattern::Values v = fixed ? *fixed : values_at(hit.t);
+    v.hit = &hit;
+    v.pigment = pigment.get();
+    return v;
 }
 
 pattern::Values TextureEvaluator::CompiledPattern::values_at(double t) const {
@@ -126,6 +159,8 @@ pattern::Values TextureEvaluator::CompiledPattern::values_at(double t) const {
     pattern::Values v;
     v.vector = {vector[0].at(t), vector[1].at(t), vector[2].at(t)};
     v.number = {number[0].at(t), number[1].at(t)};
+    v.vector2 = {vector2[0].at(t), vector2[1].at(t), vector2[2].at(t)};
+    for (std::size_t i = 0; i < more.size(); ++i) v.more[i] = more[i].at(t);
     if (kind != nullptr && kind->single_numbers)
         v.number = {pattern::single(v.number[0]), pattern::single(v.number[1])};
     v.frequency = pattern::single(frequency.at(t));
@@ -237,22 +272,6 @@ const pattern::Pattern& supported(const Normal& n) {
 
 }  // namespace
 
-struct TextureEvaluator::Shared {
-    std::map<const Texture*, std::shared_ptr<const CompiledTexture>> textures;
-    std::map<const Pigment*, std::shared_ptr<const CompiledPigment>> pigments;
-    std::map<const Normal*, std::shared_ptr<const CompiledNormal>> normals;
-    // The entry compiled from `record` (in its pattern's space: nothing
-    // outside it), once.
-    template <class Compiled, class Record, class... Extra>
-    std::shared_ptr<const Compiled> entry(
-        std::map<const Record*, std::shared_ptr<const Compiled>>& done, const Record& record,
-        const Extra&... extra) {
-        auto& slot = done[&record];
-        if (!slot) slot = std::make_shared<const Compiled>(record, Transform{}, extra..., *this);
-        return slot;
-    }
-};
-
 TextureEvaluator::TextureEvaluator(const Texture& texture, const std::optional<Interior>& interior)
     : texture_([&] {
           Shared shared;
@@ -269,7 +288,7 @@ TextureEvaluator::CompiledTexture::CompiledTexture(const Texture& texture, const
             throw std::logic_error("TextureEvaluator: a texture_map without its pattern");
         // (A uv-mapped one: in uv space, through its own transforms alone.)
         uv = texture.uv_mapping != UvMapping::Off;
-        pattern.emplace(texture.patterned, texture.transform, uv ? Transform{} : outside);
+        pattern.emplace(texture.patterned, texture.transform, uv ? Transform{} : outside, shared);
         if (uv && !texture.uv_outside.empty())
             outer = std::make_shared<const Motion>(texture.uv_outside);
         // (The entries live in this pattern's space: nothing outside it.)
@@ -310,7 +329,8 @@ TextureEvaluator::CompiledTexture::CompiledTexture(const Texture& texture, const
 
 TextureEvaluator::CompiledNormal::CompiledNormal(const Normal& n, const Transform& texture,
                                                  Shared& shared)
-    : pattern(supported(n), n.transform, n.uv_mapping != UvMapping::Off ? Transform{} : texture),
+    : pattern(supported(n), n.transform, n.uv_mapping != UvMapping::Off ? Transform{} : texture,
+              shared),
       amount(n.amount),
       accuracy(n.accuracy),
       no_bump_scale(n.no_bump_scale),
@@ -346,7 +366,7 @@ TextureEvaluator::CompiledPigment::CompiledPigment(const Pigment& pigment, const
     }
     // (A uv-mapped one: in uv space, through its own transforms alone.)
     uv = pigment.uv_mapping != UvMapping::Off;
-    pattern.emplace(pigment.patterned, pigment.transform, uv ? Transform{} : texture);
+    pattern.emplace(pigment.patterned, pigment.transform, uv ? Transform{} : texture, shared);
     if (pigment.pattern == Pigment::Pattern::Image) {
         image = pigment.image_map;
         filter_all = CompiledScalar(image->filter_all);
@@ -378,15 +398,28 @@ TextureEvaluator::CompiledPigment::CompiledPigment(const Pigment& pigment, const
 }
 
 std::array<double, 5> TextureEvaluator::CompiledPigment::colour(const glm::dvec3& where,
-                                                                const glm::dvec2& surface_uv,
-                                                                double t) const {
+                                                                const pattern::Hit& hit) const {
+    const double t = hit.t;
     if (solid)
         return {solid->c[0].at(t), solid->c[1].at(t), solid->c[2].at(t), solid->c[3].at(t),
                 solid->c[4].at(t)};
     const CompiledPattern& p = *pattern;
-    const pattern::Values v = p.values(t);
-    const glm::dvec3 point = p.point(uv ? glm::dvec3(surface_uv, 0.0) : where, t, v);
+    const pattern::Values v = p.values(hit);
+    const glm::dvec3 point = p.point(uv ? glm::dvec3(hit.uv, 0.0) : where, t, v);
     if (image) return pattern::image_colour(*image, point, t, filter_all.at(t), transmit_all.at(t));
+    if (p.kind->average) {
+        // POV-Ray's Do_Average_Pigments: every entry at this pattern's
+        // point, weighted by its value.
+        std::array<double, 5> out{};
+        pattern::kinds::average_entries(
+            pigments.size(),
+            [&](std::size_t i) { return pattern::single(pigments[i].first.at(t)); },
+            [&](std::size_t i, double share) {
+                const auto c = pigments[i].second->colour(point, hit);
+                for (std::size_t k = 0; k < 5; ++k) out[k] += c[k] * share;
+            });
+        return out;
+    }
     const double value = p.value(point, t, v);
     if (!pigments.empty()) {
         // POV-Ray's Compute_Pigment with a pigment map: the neighbouring
@@ -394,9 +427,9 @@ std::array<double, 5> TextureEvaluator::CompiledPigment::colour(const glm::dvec3
         // (A sub-pigment sees the point warped by this pattern, but not
         // moved by turbulence that marble and wood read themselves.)
         const pattern::BlendPick pick = pick_entry(pigments, value, t);
-        const auto c = pigments[pick.cur].second->colour(point, surface_uv, t);
+        const auto c = pigments[pick.cur].second->colour(point, hit);
         if (pick.prev == pick.cur) return c;
-        const auto b = pigments[pick.prev].second->colour(point, surface_uv, t);
+        const auto b = pigments[pick.prev].second->colour(point, hit);
         std::array<double, 5> out;
         for (std::size_t i = 0; i < 5; ++i) out[i] = b[i] + pick.f * (c[i] - b[i]);
         return out;
@@ -413,23 +446,42 @@ std::array<double, 5> TextureEvaluator::CompiledPigment::colour(const glm::dvec3
 
 glm::dvec3 TextureEvaluator::CompiledNormal::perturb(const glm::dvec3& normal,
                                                      const glm::dvec3& where,
-                                                     const glm::dvec2& surface_uv, double t) const {
+                                                     const pattern::Hit& hit) const {
+    const std::optional<glm::dvec3> out = perturb_scaled(normal, where, hit);
+    // (A bump that cancels the normal, or a flat map: the normal unchanged.)
+    if (!out) return normal;
+    return *out / glm::length(*out);
+}
+
+std::optional<glm::dvec3> TextureEvaluator::CompiledNormal::perturb_scaled(
+    const glm::dvec3& normal, const glm::dvec3& where, const pattern::Hit& hit) const {
+    const double t = hit.t;
     const CompiledPattern& p = pattern;
-    const pattern::Values v = p.values(t);
+    const pattern::Values v = p.values(hit);
     NormalMaps maps;
     // (uv-mapped: POV-Ray perturbs the normal as it is at (u, v, 0): no
     // map between uv space and the surface's tangents.)
-    const glm::dvec3 start = uv ? glm::dvec3(surface_uv, 0.0) : where;
+    const glm::dvec3 start = uv ? glm::dvec3(hit.uv, 0.0) : where;
     const glm::dvec3 point = p.walk(start, t, v, [&](const glm::dmat3& m) { maps.push(m); });
     const glm::dvec3 pn = unit_unless(no_bump_scale, maps.into(unit_unless(no_bump_scale, normal)));
     glm::dvec3 bumped;
-    if (!normals.empty()) {
+    if (p.kind->average) {
+        // POV-Ray's Do_Average_Normals: every entry's normal (as its own
+        // Perturb_Normal leaves it) at this pattern's point, weighted by
+        // its value.
+        bumped = glm::dvec3(0.0);
+        pattern::kinds::average_entries(
+            normals.size(), [&](std::size_t i) { return pattern::single(normals[i].first.at(t)); },
+            [&](std::size_t i, double share) {
+                bumped += share * normals[i].second->perturb_scaled(pn, point, hit).value_or(pn);
+            });
+    } else if (!normals.empty()) {
         // POV-Ray's normal_map: the neighbouring entries' normals, each
         // perturbing this one in this pattern's space, blended linearly.
         const pattern::BlendPick pick = pick_entry(normals, p.value(point, t, v), t);
-        bumped = normals[pick.cur].second->perturb(pn, point, surface_uv, t);
+        bumped = normals[pick.cur].second->perturb(pn, point, hit);
         if (pick.prev != pick.cur) {
-            const glm::dvec3 other = normals[pick.prev].second->perturb(pn, point, surface_uv, t);
+            const glm::dvec3 other = normals[pick.prev].second->perturb(pn, point, hit);
             bumped = (1.0 - pick.f) * other + pick.f * bumped;
         }
     } else if (p.kind->normal != nullptr) {
@@ -447,22 +499,21 @@ glm::dvec3 TextureEvaluator::CompiledNormal::perturb(const glm::dvec3& normal,
     }
     const glm::dvec3 out = maps.out_of(unit_unless(no_bump_scale, bumped));
     const double l = glm::length(out);
-    // (A bump that cancels the normal, or a flat map: the normal unchanged.)
-    if (!(l > 0.0) || !std::isfinite(l)) return normal;
-    return out / l;
+    if (!(l > 0.0) || !std::isfinite(l)) return std::nullopt;
+    return no_bump_scale ? out : out / l;
 }
 
 MaterialSample TextureEvaluator::CompiledLayer::material(const glm::dvec3& point,
-                                                         const glm::dvec2& surface_uv,
-                                                         double t) const {
+                                                         const pattern::Hit& hit) const {
     MaterialSample m;
-    fill(m, point, surface_uv, t);
+    fill(m, point, hit);
     return m;
 }
 
 void TextureEvaluator::CompiledLayer::fill(MaterialSample& m, const glm::dvec3& point,
-                                           const glm::dvec2& surface_uv, double t) const {
-    const auto c = pigment->colour(at(point, surface_uv), surface_uv, t);
+                                           const pattern::Hit& hit) const {
+    const double t = hit.t;
+    const auto c = pigment->colour(at(point, hit.uv), hit);
     m.colour = {c[0], c[1], c[2]};
     m.filter = c[3];
     m.transmit = c[4];
@@ -482,52 +533,64 @@ void TextureEvaluator::CompiledLayer::fill(MaterialSample& m, const glm::dvec3& 
 }
 
 glm::dvec3 TextureEvaluator::CompiledLayer::perturbed(const glm::dvec3& n, const glm::dvec3& point,
-                                                      const glm::dvec2& surface_uv,
-                                                      double t) const {
+                                                      const pattern::Hit& hit) const {
     if (!normal) return n;
-    if (!outer) return normal->perturb(n, at(point, surface_uv), surface_uv, t);
+    if (!outer) return normal->perturb(n, at(point, hit.uv), hit);
     NormalMaps maps;
-    maps.push(outer_jacobian(*outer, point, t));
-    const glm::dvec3 back = maps.out_of(
-        normal->perturb(unit_unless(false, maps.into(n)), at(point, surface_uv), surface_uv, t));
+    maps.push(outer_jacobian(*outer, point, hit.t));
+    const glm::dvec3 back =
+        maps.out_of(normal->perturb(unit_unless(false, maps.into(n)), at(point, hit.uv), hit));
     const double l = glm::length(back);
     return l > 0.0 && std::isfinite(l) ? back / l : n;
 }
 
-void TextureEvaluator::CompiledTexture::sample(const glm::dvec3& where,
-                                               const glm::dvec2& surface_uv, double t,
+void TextureEvaluator::CompiledLayer::sample(TextureSample::Layer& out, const glm::dvec3& point,
+                                             const glm::dvec3& shading, pattern::Hit& hit) const {
+    out.normal = perturbed(shading, point, hit);
+    if (normal) hit.normal = out.normal;
+    fill(out.material, point, hit);
+}
+
+void TextureEvaluator::CompiledTexture::sample(const glm::dvec3& where, pattern::Hit& hit,
                                                const glm::dvec3& normal, double weight,
                                                TextureSample& out) const {
     if (!pattern) {
         out.plains.push_back({weight, out.layers.size(), layers.size()});
-        for (const CompiledLayer& layer : layers) {
-            TextureSample::Layer& l = out.layers.emplace_back();
-            layer.fill(l.material, where, surface_uv, t);
-            l.normal = layer.perturbed(normal, where, surface_uv, t);
-        }
+        for (const CompiledLayer& layer : layers)
+            layer.sample(out.layers.emplace_back(), where, normal, hit);
         return;
     }
     // POV-Ray's ComputeOneTextureColour for a patterned texture: the
     // neighbouring entries at the pattern's value, each in the pattern's
     // space, their colours blended; a normal below goes through this
     // pattern's transforms too (its Warp_Normal, UnWarp_Normal).
+    const double t = hit.t;
     const CompiledPattern& p = *pattern;
-    const pattern::Values v = p.values(t);
+    const pattern::Values v = p.values(hit);
     NormalMaps maps;
-    const glm::dvec3 start = uv ? glm::dvec3(surface_uv, 0.0) : where;
+    const glm::dvec3 start = uv ? glm::dvec3(hit.uv, 0.0) : where;
     if (outer && has_normal) maps.push(outer_jacobian(*outer, where, t));
     const glm::dvec3 point = has_normal
                                  ? p.walk(start, t, v, [&](const glm::dmat3& m) { maps.push(m); })
                                  : p.point(start, t, v);
-    const pattern::BlendPick pick = pick_entry(entries, p.value(point, t, v), t);
     const bool turn = has_normal && !maps.empty();
     const glm::dvec3 inside = turn ? unit_unless(false, maps.into(normal)) : normal;
     const std::size_t first = out.layers.size();
-    const double share = pick.prev == pick.cur ? 1.0 : pick.f;
-    entries[pick.cur].second->sample(point, surface_uv, t, inside, weight * share, out);
-    if (pick.prev != pick.cur)
-        entries[pick.prev].second->sample(point, surface_uv, t, inside, weight * (1.0 - share),
-                                          out);
+    if (p.kind->average) {
+        // POV-Ray's ComputeAverageTextureColours: every entry lit on its
+        // own at this pattern's point, the colours weighted by the values.
+        pattern::kinds::average_entries(
+            entries.size(), [&](std::size_t i) { return pattern::single(entries[i].first.at(t)); },
+            [&](std::size_t i, double share) {
+                entries[i].second->sample(point, hit, inside, weight * share, out);
+            });
+    } else {
+        const pattern::BlendPick pick = pick_entry(entries, p.value(point, t, v), t);
+        const double share = pick.prev == pick.cur ? 1.0 : pick.f;
+        entries[pick.cur].second->sample(point, hit, inside, weight * share, out);
+        if (pick.prev != pick.cur)
+            entries[pick.prev].second->sample(point, hit, inside, weight * (1.0 - share), out);
+    }
     if (!turn) return;
     for (std::size_t i = first; i < out.layers.size(); ++i) {
         const glm::dvec3 back = maps.out_of(out.layers[i].normal);
@@ -537,32 +600,48 @@ void TextureEvaluator::CompiledTexture::sample(const glm::dvec3& where,
 }
 
 const TextureEvaluator::CompiledLayer& TextureEvaluator::CompiledTexture::picked_top(
-    const glm::dvec3& where, const glm::dvec2& surface_uv, double t, glm::dvec3& at) const {
+    const glm::dvec3& where, const pattern::Hit& hit, glm::dvec3& at) const {
     at = where;
     if (!pattern) return layers.front();
-    const pattern::Values v = pattern->values(t);
-    const glm::dvec3 point = pattern->point(uv ? glm::dvec3(surface_uv, 0.0) : where, t, v);
-    const pattern::BlendPick pick = pick_entry(entries, pattern->value(point, t, v), t);
-    return entries[pick.cur].second->picked_top(point, surface_uv, t, at);
+    const pattern::Values v = pattern->values(hit);
+    const glm::dvec3 point = pattern->point(uv ? glm::dvec3(hit.uv, 0.0) : where, hit.t, v);
+    // (An average's first entry: no one entry is its material.)
+    if (pattern->kind->average) return entries.front().second->picked_top(point, hit, at);
+    const pattern::BlendPick pick = pick_entry(entries, pattern->value(point, hit.t, v), hit.t);
+    return entries[pick.cur].second->picked_top(point, hit, at);
 }
+
+namespace {
+
+// The surface event a texture is evaluated at (POV-Ray's Intersection,
+// PNormal starting as the viewer-facing normal).
+pattern::Hit surface_hit(const glm::dvec3& world_point, const glm::dvec3& normal,
+                         const glm::dvec2& uv, double t) {
+    return {world_point, normal, uv, t, true};
+}
+
+}  // namespace
 
 void TextureEvaluator::sample(const glm::dvec3& world_point, const glm::dvec2& uv, double t,
                               const glm::dvec3& normal, TextureSample& out) const {
-    texture_->sample(world_point, uv, t, normal, 1.0, out);
+    pattern::Hit hit = surface_hit(world_point, normal, uv, t);
+    texture_->sample(world_point, hit, normal, 1.0, out);
 }
 
 void TextureEvaluator::sample_layer(const glm::dvec3& world_point, const glm::dvec2& uv, double t,
                                     const glm::dvec3& normal, TextureSample::Layer& out) const {
-    const CompiledLayer& layer = texture_->layers.front();
-    layer.fill(out.material, world_point, uv, t);
-    out.normal = layer.perturbed(normal, world_point, uv, t);
+    pattern::Hit hit = surface_hit(world_point, normal, uv, t);
+    texture_->layers.front().sample(out, world_point, normal, hit);
 }
 
 MaterialSample TextureEvaluator::at(const glm::dvec3& world_point, const glm::dvec2& uv,
                                     double t) const {
+    // (No surface normal: a slope reads none, as POV-Ray's without an
+    // Intersection.)
+    const pattern::Hit hit{world_point, glm::dvec3(0.0), uv, t, false};
     glm::dvec3 point;
-    const CompiledLayer& layer = texture_->picked_top(world_point, uv, t, point);
-    return layer.material(point, uv, t);
+    const CompiledLayer& layer = texture_->picked_top(world_point, hit, point);
+    return layer.material(point, hit);
 }
 
 bool TextureEvaluator::has_normal() const {
@@ -572,7 +651,9 @@ bool TextureEvaluator::has_normal() const {
 glm::dvec3 TextureEvaluator::perturb(const glm::dvec3& normal, const glm::dvec3& world_point,
                                      double t) const {
     if (!has_normal()) return normal;
-    return texture_->layers.front().normal->perturb(normal, world_point, glm::dvec2(0.0), t);
+    // (The camera's: no surface, as POV-Ray's without an Intersection.)
+    const pattern::Hit hit{world_point, normal, glm::dvec2(0.0), t, false};
+    return texture_->layers.front().normal->perturb(normal, world_point, hit);
 }
 
 }  // namespace hexant::runtime

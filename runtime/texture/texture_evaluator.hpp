@@ -110,6 +110,8 @@ class TextureEvaluator {
         std::shared_ptr<const Motion> transform;  // else turbulence
         CompiledTurbulence turbulence;
     };
+    struct CompiledPigment;
+    struct Shared;
     struct CompiledPattern {
         const pattern::Kind* kind = nullptr;  // null: an image's placement, no value of its own
         // Its last transforms, then the texture's: pattern space to the
@@ -117,6 +119,8 @@ class TextureEvaluator {
         std::shared_ptr<const Motion> head;
         std::array<CompiledScalar, 3> vector;
         std::array<CompiledScalar, 2> number;
+        std::array<CompiledScalar, 3> vector2;
+        std::array<CompiledScalar, 4> more;
         std::optional<CompiledTurbulence> turbulence;
         CompiledScalar frequency, phase, exponent;
         pattern::Wave wave = pattern::Wave::Ramp;
@@ -126,12 +130,15 @@ class TextureEvaluator {
         // hit for time.
         std::optional<pattern::Values> fixed;
         double fixed_exponent = 1.0;
+        // pigment_pattern's pigment, in this pattern's space.
+        std::shared_ptr<const CompiledPigment> pigment;
 
         CompiledPattern(const pattern::Pattern& source, const Transform& last,
-                        const Transform& texture);
+                        const Transform& texture, Shared& shared);
         bool depends_on_time() const;
-        // The parameters at t.
-        pattern::Values values(double t) const { return fixed ? *fixed : values_at(t); }
+        // The parameters at the hit's time, reading that hit (and the
+        // pigment of a pigment_pattern).
+        pattern::Values values(const pattern::Hit& hit) const;
         pattern::Values values_at(double t) const;
         double exponent_at(double t) const {
             return fixed ? fixed_exponent : pattern::single(exponent.at(t));
@@ -158,14 +165,14 @@ class TextureEvaluator {
     // first (on the stack for the usual few).
     class NormalMaps;
 
-    // Map entries compiled once each while one texture is compiled: a
-    // scene may declare textures whose maps share entries (T1 a checker of
-    // T0 and T0 scaled, T2 of T1 ...), a graph that is exponential as a tree.
-    struct Shared;
+    // (Shared: map entries compiled once each while one texture is
+    // compiled: a scene may declare textures whose maps share entries (T1 a
+    // checker of T0 and T0 scaled, T2 of T1 ...), a graph that is
+    // exponential as a tree.)
 
     // A pigment: a colour, or a pattern through a colour map or a
     // pigment map of pigments (each evaluated in this pattern's space).
-    struct CompiledPigment {
+    struct CompiledPigment final : pattern::PigmentSource {
         std::optional<CompiledColour> solid;
         std::optional<CompiledPattern> pattern;
         // The colour map: fixed when nothing in it moves, else compiled.
@@ -178,8 +185,12 @@ class TextureEvaluator {
 
         CompiledPigment(const Pigment& pigment, const Transform& texture, Shared& shared);
         // The colour at `point` (in the space around it: the world for a
-        // texture's pigment), rgb, filter, transmit; `uv` the surface's.
-        std::array<double, 5> colour(const glm::dvec3& point, const glm::dvec2& uv, double t) const;
+        // texture's pigment), rgb, filter, transmit, at `hit`.
+        std::array<double, 5> colour(const glm::dvec3& point, const pattern::Hit& hit) const;
+        std::array<double, 5> colour_at(const glm::dvec3& point,
+                                        const pattern::Hit& hit) const override {
+            return colour(point, hit);
+        }
     };
     // A normal: a pattern's bumps or slope (through a slope map), or a
     // normal map of normals (each in this pattern's space).
@@ -196,9 +207,14 @@ class TextureEvaluator {
 
         CompiledNormal(const Normal& normal, const Transform& texture, Shared& shared);
         // `normal` (in the space around it) perturbed at `point` (there
-        // too); `uv` the surface's.
-        glm::dvec3 perturb(const glm::dvec3& normal, const glm::dvec3& point, const glm::dvec2& uv,
-                           double t) const;
+        // too), at `hit`: unit.
+        glm::dvec3 perturb(const glm::dvec3& normal, const glm::dvec3& point,
+                           const pattern::Hit& hit) const;
+        // The same before its length is set to one, where no_bump_scale
+        // keeps it (what an average of normals sums, POV-Ray's
+        // Perturb_Normal); null where the bump cancels the normal.
+        std::optional<glm::dvec3> perturb_scaled(const glm::dvec3& normal, const glm::dvec3& point,
+                                                 const pattern::Hit& hit) const;
     };
     // A plain texture's layer.
     struct CompiledLayer {
@@ -212,10 +228,16 @@ class TextureEvaluator {
         // The shading normal `normal` (in the space around it) with this
         // layer's normal { } at `point` (there too).
         glm::dvec3 perturbed(const glm::dvec3& normal, const glm::dvec3& point,
-                             const glm::dvec2& surface_uv, double t) const;
-        MaterialSample material(const glm::dvec3& point, const glm::dvec2& uv, double t) const;
-        void fill(MaterialSample& m, const glm::dvec3& point, const glm::dvec2& uv,
-                  double t) const;  // (in place)
+                             const pattern::Hit& hit) const;
+        MaterialSample material(const glm::dvec3& point, const pattern::Hit& hit) const;
+        void fill(MaterialSample& m, const glm::dvec3& point,
+                  const pattern::Hit& hit) const;  // (in place)
+        // Its normal, then its material, as POV-Ray's ComputeLightedTexture
+        // takes them: a layer with a normal { } leaves its perturbed normal
+        // in hit.normal (POV-Ray's PNormal) for its pigment and the layers
+        // after it.
+        void sample(TextureSample::Layer& out, const glm::dvec3& point, const glm::dvec3& shading,
+                    pattern::Hit& hit) const;
         // The point its pigment and normal read.
         glm::dvec3 at(const glm::dvec3& point, const glm::dvec2& surface_uv) const {
             return uv ? glm::dvec3(surface_uv, 0.0) : point;
@@ -232,9 +254,10 @@ class TextureEvaluator {
 
         CompiledTexture(const Texture& texture, const Transform& outside,
                         const std::optional<Interior>& interior, Shared& shared);
-        void sample(const glm::dvec3& point, const glm::dvec2& uv, double t,
-                    const glm::dvec3& normal, double weight, TextureSample& out) const;
-        const CompiledLayer& picked_top(const glm::dvec3& point, const glm::dvec2& uv, double t,
+        // (hit.normal: POV-Ray's PNormal, left by each layer's normal in turn.)
+        void sample(const glm::dvec3& point, pattern::Hit& hit, const glm::dvec3& normal,
+                    double weight, TextureSample& out) const;
+        const CompiledLayer& picked_top(const glm::dvec3& point, const pattern::Hit& hit,
                                         glm::dvec3& at) const;
     };
     static CompiledTurbulence compile(const pattern::Turbulence& turbulence);

@@ -529,6 +529,35 @@ TEST_CASE("a pigment_map agrees with POV-Ray 3.7's", "[tracer][pov][pattern]") {
     check_stills("patterns", "pigment_map", {"0", "0.5"});
 }
 
+TEST_CASE("average agrees with POV-Ray 3.7's", "[tracer][pov][pattern]") {
+    // patterns/average.pov: a pigment_map averaged by its weights (one
+    // moving with clock) in the average's turned space, a normal_map of
+    // three normals averaged, a texture_map of two textures each lit on
+    // its own (one with phong, one with a normal) and averaged, at clock 0
+    // and 0.5. The still's tolerance. Without average, hexant refused the
+    // scene; with the weights ignored (a plain mean) the plane and the
+    // textured sphere move by far more than 2/255.
+    check_stills("patterns", "average", {"0", "0.5"});
+}
+
+TEST_CASE("pigment_pattern agrees with POV-Ray 3.7's", "[tracer][pov][pattern]") {
+    // patterns/pigment_pattern.pov: a checker's colours as greys (frequency
+    // 2 wrapping them) through a colour map, a pigment_map picked by a
+    // turbulent gradient's grey, normals from a bozo pigment's grey and
+    // from an average of pigments, and a texture_map picked by a pigment
+    // moving with clock, at clock 0 and 0.5. The still's tolerance.
+    check_stills("patterns", "pigment_pattern", {"0", "0.5"});
+}
+
+TEST_CASE("slope agrees with POV-Ray 3.7's", "[tracer][pov][pattern]") {
+    // patterns/slope.pov: the short form, a slope and altitude with their
+    // ranges (one moving with clock) in a texture_map, point_at, a slope
+    // scaled and turned over a bumpy normal (it reads the perturbed
+    // normal, and its transforms move the altitude only), at clock 0 and
+    // 0.5. The still's tolerance.
+    check_stills("patterns", "slope", {"0", "0.5"});
+}
+
 TEST_CASE("texture_map and layered textures agree with POV-Ray 3.7's", "[tracer][pov][pattern]") {
     // textures/texture_map.pov: a checker of two textures (one reflecting),
     // a texture_map of a declared texture with a bumpy normal and one

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "runtime/texture/pattern/kinds/agate.hpp"
+#include "runtime/texture/pattern/kinds/average.hpp"
 #include "runtime/texture/pattern/kinds/boxed.hpp"
 #include "runtime/texture/pattern/kinds/bozo.hpp"
 #include "runtime/texture/pattern/kinds/brick.hpp"
@@ -22,10 +23,12 @@
 #include "runtime/texture/pattern/kinds/mandel.hpp"
 #include "runtime/texture/pattern/kinds/marble.hpp"
 #include "runtime/texture/pattern/kinds/onion.hpp"
+#include "runtime/texture/pattern/kinds/pigment_pattern.hpp"
 #include "runtime/texture/pattern/kinds/planar.hpp"
 #include "runtime/texture/pattern/kinds/quilted.hpp"
 #include "runtime/texture/pattern/kinds/radial.hpp"
 #include "runtime/texture/pattern/kinds/ripples.hpp"
+#include "runtime/texture/pattern/kinds/slope.hpp"
 #include "runtime/texture/pattern/kinds/spherical.hpp"
 #include "runtime/texture/pattern/kinds/spiral1.hpp"
 #include "runtime/texture/pattern/kinds/spiral2.hpp"
@@ -44,6 +47,7 @@ namespace hexant::runtime::pattern {
 // clang-format off
 using PatternKinds = PatternKindList<
     kinds::Agate,
+    kinds::Average,
     kinds::Boxed,
     kinds::Bozo,
     kinds::Brick,
@@ -60,10 +64,12 @@ using PatternKinds = PatternKindList<
     kinds::Mandel,
     kinds::Marble,
     kinds::Onion,
+    kinds::PigmentPattern,
     kinds::Planar,
     kinds::Quilted,
     kinds::Radial,
     kinds::Ripples,
+    kinds::Slope,
     kinds::Spherical,
     kinds::Spiral1,
     kinds::Spiral2,

@@ -21,8 +21,11 @@ Pattern Pattern::of(const Kind& kind) {
 
 bool Pattern::depends_on_time() const {
     if (vector.depends_on_time() || number[0].depends_on_time() || number[1].depends_on_time() ||
-        frequency.depends_on_time() || phase.depends_on_time() || exponent.depends_on_time())
+        frequency.depends_on_time() || phase.depends_on_time() || exponent.depends_on_time() ||
+        vector2.depends_on_time())
         return true;
+    for (const TimeFunction& n : more)
+        if (n.depends_on_time()) return true;
     if (turbulence && turbulence->depends_on_time()) return true;
     for (const Warp& w : warps)
         if (w.transform ? w.transform->depends_on_time() : w.turbulence.depends_on_time())

@@ -16,16 +16,22 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "runtime/motion/transform.hpp"
 #include "runtime/texture/pattern/noise.hpp"
 #include "runtime/time/vector_function.hpp"
+
+namespace hexant::runtime {
+struct Pigment;
+}
 
 namespace hexant::runtime::pattern {
 
@@ -47,11 +53,42 @@ struct Warp {
     Turbulence turbulence;
 };
 
+// What a pattern may read besides its point (POV-Ray's Intersection): the
+// surface event being shaded. `normal` is POV-Ray's PNormal: the shading
+// normal facing the viewer, as the latest normal { } of the texture being
+// evaluated left it (unit, in the space around that normal); `point` the
+// world point, `uv` the surface's (u, v), `t` the time. No surface (a sky's
+// pigment): POV-Ray's null Intersection.
+struct Hit {
+    glm::dvec3 point{0.0};
+    glm::dvec3 normal{0.0};
+    glm::dvec2 uv{0.0};
+    double t = 0.0;
+    bool surface = false;
+};
+
+// A pigment a pattern reads (pigment_pattern): its colour (r, g, b,
+// filter, transmit) at a point in the pattern's space, at `hit`.
+class PigmentSource {
+  public:
+    virtual std::array<double, 5> colour_at(const glm::dvec3& point, const Hit& hit) const = 0;
+
+  protected:
+    ~PigmentSource() = default;
+};
+
 // The parameters of one instant, as a kind's function reads them.
 struct Values {
     glm::dvec3 vector{0.0};          // gradient's direction, brick_size
     std::array<double, 2> number{};  // mortar, arms, iterations, control0/1, agate_turb
-    bool has_turbulence = false;     // classic turbulence given
+    // A kind with a block of its own (slope): a second vector, more numbers.
+    glm::dvec3 vector2{0.0};
+    std::array<double, 4> more{};
+    // The surface (slope) and the pigment (pigment_pattern) a kind may
+    // read: set for each evaluation, null where there is none.
+    const Hit* hit = nullptr;
+    const PigmentSource* pigment = nullptr;
+    bool has_turbulence = false;  // classic turbulence given
     glm::dvec3 turbulence{0.0};
     Octaves octaves;
     double frequency = 1.0;
@@ -99,10 +136,11 @@ struct Kind {
     std::string_view name;
     Function value;
     // What follows the name: nothing, a vector (gradient), a number
-    // (spiral1's arms, mandel's iterations), or a list of colours (the
+    // (spiral1's arms, mandel's iterations), a list of colours (the
     // block patterns: checker and brick 2, hexagon 3; their values are the
-    // index of a colour, POV-Ray's blend list).
-    enum class Argument { None, Vector, Number, Colours } argument = Argument::None;
+    // index of a colour, POV-Ray's blend list), or a syntax of its own that
+    // the grammar reads by its own rule (slope, pigment_pattern).
+    enum class Argument { None, Vector, Number, Colours, Own } argument = Argument::None;
     int colours = 0;
     Wave wave = Wave::Ramp;
     bool frequency = true;        // false: frequency 0 (block patterns, quilted)
@@ -118,6 +156,9 @@ struct Kind {
     // POV-Ray keeps the kinds' numbers in single precision, but crackle's
     // metric and offset in double.
     bool single_numbers = true;
+    // average: no value of its own; its map's entries are averaged by
+    // their weights (POV-Ray's AVERAGE_PATTERN).
+    bool average = false;
 };
 
 // The kind named `name`, or null.
@@ -139,6 +180,11 @@ struct Pattern {
     TimeFunction exponent = 1.0;  // poly_wave
     int noise_generator = 0;      // 0: the scene's
     std::vector<Warp> warps;      // before the last transforms (Pigment::transform)
+    // A kind with a block of its own: slope's altitude and its numbers.
+    Vector3Function vector2;
+    std::array<TimeFunction, 4> more{};
+    // pigment_pattern's pigment (its value is the pigment's grey).
+    std::shared_ptr<const Pigment> pigment;
 
     // A pattern of `kind` with its defaults.
     static Pattern of(const Kind& kind);

@@ -22,6 +22,7 @@
 //   static constexpr NormalFunction normal;    // in a normal { } [its slope]
 //   static constexpr std::array<double, 2> number;  // the argument's default [0]
 //   static constexpr std::array<double, 3> vector;  // the argument's default [0]
+//   static constexpr bool average;             // averages its map [false]
 //
 // The rules are POV-Ray 3.7's Parse_Pattern (parstxtr.cpp) and the defaults
 // its pigment.cpp's.
@@ -89,6 +90,13 @@ constexpr bool single_numbers_of() {
         return K::single_numbers;
     else
         return true;
+}
+template <class K>
+constexpr bool average_of() {
+    if constexpr (requires { K::average; })
+        return K::average;
+    else
+        return false;
 }
 template <class K>
 constexpr auto settings_of() {
@@ -183,6 +191,7 @@ Kind make_kind() {
     }
     kind.normal = normal_of<K>();
     kind.single_numbers = single_numbers_of<K>();
+    kind.average = average_of<K>();
     return kind;
 }
 
