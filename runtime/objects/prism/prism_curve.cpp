@@ -74,22 +74,41 @@ void scale_range(double lo, double hi, double ya, double yb, double& out_lo, dou
 }
 
 // Crossings of the outline with the half-line from q along axis `axis` (0:
-// x, 1: z) toward `sign`: roots of the other coordinate = q's in [0, 1),
-// counted where the distance along is >= 0 (skip < 0), or > skip.
+// x, 1: z) toward `sign`, counted where the distance along is >= 0 (skip <
+// 0), or > skip. A crossing is a change of side ("beyond q's line" or not,
+// the half-open rule of outline.hpp) along a segment, read at its exact
+// ends and between the roots of the other coordinate = q's: a joint on the
+// line is then counted once where the outline passes through it and twice
+// (or never) where it only touches, whichever of its two segments' roots
+// rounding puts at the joint.
 int crossings(const PrismGeometry& g, glm::dvec2 q, int axis, double sign, double skip) {
     const int other = 1 - axis;
     const double reach = std::max(skip, 0.0);
+    const double v = q[other];
+    auto counts = [&](double x) {
+        const double along = (x - q[axis]) * sign;
+        return skip < 0.0 ? along >= 0.0 : along > skip;
+    };
     int count = 0;
     for (const PrismSegment& s : g.segments) {
-        if (q[other] < s.lo[other] || q[other] > s.hi[other]) continue;
+        if (v < s.lo[other] || v > s.hi[other]) continue;
         if (sign > 0.0 ? s.hi[axis] - q[axis] < reach : q[axis] - s.lo[axis] < reach) continue;
         Cubic h = component(s, other);
-        h[0] -= q[other];
-        for (const double w : polynomial_roots(h, 0.0, 1.0)) {
-            if (w >= 1.0) continue;
-            const double along = (s.at(w)[axis] - q[axis]) * sign;
-            if (skip < 0.0 ? along >= 0.0 : along > skip) ++count;
+        h[0] -= v;
+        double breaks[8];
+        int n = 0;
+        breaks[n++] = 0.0;
+        for (const double w : polynomial_roots(h, 0.0, 1.0))
+            if (w > breaks[n - 1] && w < 1.0 && n < 7) breaks[n++] = w;
+        breaks[n++] = 1.0;
+        // Sides: the start, each piece between breaks (at its middle), the end.
+        bool side = s.start[other] > v;
+        for (int i = 0; i + 1 < n; ++i) {
+            const bool piece = s.at(0.5 * (breaks[i] + breaks[i + 1]))[other] > v;
+            if (piece != side && counts(i == 0 ? s.start[axis] : s.at(breaks[i])[axis])) ++count;
+            side = piece;
         }
+        if ((s.end[other] > v) != side && counts(s.end[axis])) ++count;
     }
     return count;
 }
@@ -125,6 +144,10 @@ std::vector<PrismSegment> prism_segments(PrismSpline spline, std::span<const glm
         s.b = {p.b[0], p.b[1]};
         s.c = {p.c[0], p.c[1]};
         s.d = {p.d[0], p.d[1]};
+        const bool ends_inside = spline == PrismSpline::quadratic || spline == PrismSpline::cubic;
+        const std::size_t last = spline == PrismSpline::linear ? 1 : 3;
+        s.start = points[index[ends_inside ? 1 : 0]];
+        s.end = points[index[ends_inside ? 2 : last]];
         set_box(s);
         if (!std::isfinite(s.lo.x + s.lo.y + s.hi.x + s.hi.y)) return {};
         segments.push_back(s);

@@ -12,9 +12,10 @@
 //   scaled by 1 / height, none at height 0);
 // - inside (POV-Ray's in_curve and Inside): between the heights, and the
 //   half-line from the point toward +x crosses the outline an odd number of
-//   times (roots of z(t) = z in [0, 1), counted where x(t) >= x; POV-Ray also
-//   counts t = 1, so it counts a shared joint twice), at x / y, z / y for a
-//   conic sweep;
+//   times (where z(t) = z and x(t) >= x; POV-Ray counts every root in
+//   [0, 1], so a joint on the line counts twice; hexant counts changes of
+//   side, see crossings in prism_curve.cpp), at x / y, z / y for a conic
+//   sweep;
 // - the normal (POV-Ray's Normal): <z'(t), 0, -x'(t)> for a linear sweep;
 //   for a conic one <z', x' z - z' x, -x'> (the cross product of the two
 //   tangents over y), turned outward by the inside rule (POV-Ray leaves it

@@ -43,10 +43,14 @@ namespace hexant::runtime::geometry {
 enum class PrismSweep { linear, conic };
 
 // One segment of the outline: <x, z>(t) = a t^3 + b t^2 + c t + d, t in
-// [0, 1]; lo and hi bound it over [0, 1] (slightly widened: conservative).
+// [0, 1]; lo and hi bound it over [0, 1] (slightly widened: conservative);
+// start and end are its ends as the points give them (exactly the same
+// numbers in the two segments that share an end, which the polynomial at 1
+// is not).
 struct PrismSegment {
     glm::dvec2 a{0.0}, b{0.0}, c{0.0}, d{0.0};
     glm::dvec2 lo{0.0}, hi{0.0};
+    glm::dvec2 start{0.0}, end{0.0};
 
     glm::dvec2 at(double t) const { return ((a * t + b) * t + c) * t + d; }
     glm::dvec2 slope(double t) const { return (3.0 * a * t + 2.0 * b) * t + c; }
