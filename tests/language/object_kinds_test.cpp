@@ -98,8 +98,7 @@ TEST_CASE("a kind's option words and settings reach that kind only", "[language]
     const auto& c = std::get<rt::Prism>(only_shape(conic));
     CHECK(c.spline == rt::geometry::PrismSpline::bezier);
     CHECK(c.sweep == rt::geometry::PrismSweep::conic);
-    const auto refused =
-        error_of("#declare P = prism { cubic_spline 0, 1, 6, <0,0>, <1,0>, <1,1>, <0,1>, <0,0>, <1,0> }");
-    CHECK(std::string(refused.what()).find("Too few points in prism.") !=
-          std::string::npos);
+    const auto refused = error_of(
+        "#declare P = prism { cubic_spline 0, 1, 6, <0,0>, <1,0>, <1,1>, <0,1>, <0,0>, <1,0> }");
+    CHECK(std::string(refused.what()).find("Too few points in prism.") != std::string::npos);
 }

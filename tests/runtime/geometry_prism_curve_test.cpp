@@ -17,9 +17,9 @@ namespace geo = hexant::runtime::geometry;
 namespace {
 
 // prism1.pov's quadratic list (12 points); its cubic list adds a first point.
-const std::vector<glm::dvec2> kQuadratic = {{0.2, -1}, {0.2, 0.2},  {1, -0.2},   {1, 0.2},
-                                            {0.2, 1},  {-0.2, 1},   {-1, 0.2},   {-1, -0.2},
-                                            {-0.2, 0.2}, {-0.2, -1}, {0.2, -1},  {0.2, 0.2}};
+const std::vector<glm::dvec2> kQuadratic = {{0.2, -1},   {0.2, 0.2}, {1, -0.2}, {1, 0.2},
+                                            {0.2, 1},    {-0.2, 1},  {-1, 0.2}, {-1, -0.2},
+                                            {-0.2, 0.2}, {-0.2, -1}, {0.2, -1}, {0.2, 0.2}};
 
 std::vector<glm::dvec2> cubic_list() {
     std::vector<glm::dvec2> p = {{-0.2, -1}};
@@ -59,8 +59,7 @@ TEST_CASE("prism outlines follow POV-Ray's rules", "[geometry][prism]") {
     // Refused as POV-Ray refuses: a quadratic outline that does not close, a
     // cubic one closing on its last point (no point steers it), counts.
     const std::vector<glm::dvec2> unclosed(kQuadratic.begin(), kQuadratic.begin() + 11);
-    CHECK(geo::prism_outline(PrismSpline::quadratic, unclosed).error ==
-          "Too few points in prism.");
+    CHECK(geo::prism_outline(PrismSpline::quadratic, unclosed).error == "Too few points in prism.");
     const std::vector<glm::dvec2> cubic6 = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}, {1, 0}};
     CHECK(geo::prism_outline(PrismSpline::cubic, cubic6).error == "Too few points in prism.");
     CHECK(geo::prism_count_error(PrismSpline::bezier, 6) ==
@@ -109,7 +108,6 @@ TEST_CASE("a ray along an outline's lowest joint sees no cap", "[geometry][prism
     const auto g = geo::make_prism(geo::PrismSpline::cubic, geo::PrismSweep::conic, 0.25, 1,
                                    cubic_list(), false);
     REQUIRE(g.segments.size() == 10);
-    for (const double x : {-1.7, -1.5, -1.2})
-        CHECK_FALSE(geo::inside(g, {x, 1.0, -1.0}));
+    for (const double x : {-1.7, -1.5, -1.2}) CHECK_FALSE(geo::inside(g, {x, 1.0, -1.0}));
     CHECK(geo::inside(g, {0.0, 1.0, 0.0}));
 }

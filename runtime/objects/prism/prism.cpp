@@ -50,7 +50,8 @@ Prism Prism::read(const objects::ShapeArguments& a) {
     if (constant) {
         std::vector<glm::dvec2> points;
         points.reserve(prism.points.size());
-        for (const auto& p : prism.points) points.emplace_back(p.c[0].constant(), p.c[1].constant());
+        for (const auto& p : prism.points)
+            points.emplace_back(p.c[0].constant(), p.c[1].constant());
         const geometry::PrismOutline outline = geometry::prism_outline(prism.spline, points);
         if (!outline.error.empty()) a.fail(outline.error);
     }

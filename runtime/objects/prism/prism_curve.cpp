@@ -45,9 +45,9 @@ void set_box(PrismSegment& s) {
     for (int k = 0; k < 2; ++k) {
         const double b[4] = {s.d[k], s.d[k] + s.c[k] / 3.0, s.d[k] + (2.0 * s.c[k] + s.b[k]) / 3.0,
                              s.a[k] + s.b[k] + s.c[k] + s.d[k]};
-        const double margin = 16.0 * kEpsilon *
-                              (std::fabs(s.a[k]) + std::fabs(s.b[k]) + std::fabs(s.c[k]) +
-                               std::fabs(s.d[k]));
+        const double margin =
+            16.0 * kEpsilon *
+            (std::fabs(s.a[k]) + std::fabs(s.b[k]) + std::fabs(s.c[k]) + std::fabs(s.d[k]));
         s.lo[k] = std::min({b[0], b[1], b[2], b[3]}) - margin;
         s.hi[k] = std::max({b[0], b[1], b[2], b[3]}) + margin;
     }
@@ -136,9 +136,8 @@ std::vector<PrismSegment> prism_segments(PrismSpline spline, std::span<const glm
     segments.reserve(outline.segments.size());
     for (const auto& index : outline.segments) {
         // lathe_polynomial's segment 0 reads points 0..3 of the window.
-        const auto p = lathe_polynomial<double>(spline, 0, [&](int j, int k) {
-            return points[index[static_cast<std::size_t>(j)]][k];
-        });
+        const auto p = lathe_polynomial<double>(
+            spline, 0, [&](int j, int k) { return points[index[static_cast<std::size_t>(j)]][k]; });
         PrismSegment s;
         s.a = {p.a[0], p.a[1]};
         s.b = {p.b[0], p.b[1]};
@@ -244,13 +243,14 @@ std::optional<SurfaceHit> intersect_curved(const PrismGeometry& g, const Ray3& r
         hit.point = conic ? glm::dvec3(y * f.x, y, y * f.y) : glm::dvec3(f.x, y, f.y);
         glm::dvec2 lo, hi;
         outline_box(g, lo, hi);
-        const double outline_size = std::max(max_abs({lo.x, lo.y, 0.0}), max_abs({hi.x, hi.y, 0.0}));
+        const double outline_size =
+            std::max(max_abs({lo.x, lo.y, 0.0}), max_abs({hi.x, hi.y, 0.0}));
         glm::dvec2 n2(tangent.y, -tangent.x);
         if (region_toward(g, f, n2, 1e-9 * outline_size)) n2 = -n2;
         // A conic sweep turns the outline by 180 degrees below its apex.
-        const glm::dvec3 n = conic ? (y < 0.0 ? -1.0 : 1.0) *
-                                         glm::dvec3(n2.x, -(f.x * n2.x + f.y * n2.y), n2.y)
-                                   : glm::dvec3(n2.x, 0.0, n2.y);
+        const glm::dvec3 n =
+            conic ? (y < 0.0 ? -1.0 : 1.0) * glm::dvec3(n2.x, -(f.x * n2.x + f.y * n2.y), n2.y)
+                  : glm::dvec3(n2.x, 0.0, n2.y);
         const double length = safe_length(n);
         hit.normal = length > 0.0 ? n / length : glm::dvec3(0.0, 1.0, 0.0);
         const double height = y1 - y0;

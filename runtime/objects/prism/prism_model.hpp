@@ -64,10 +64,10 @@ class PrismModel {
         (void)mid;
         double points = 0.0;
         for (const auto& p : points_) points = std::max(points, deviation(p, t, p.at(t.mid())));
-        const double weights = spline_ == geometry::PrismSpline::linear ||
-                                       spline_ == geometry::PrismSpline::bezier
-                                   ? 1.0
-                                   : 2.25;
+        const double weights =
+            spline_ == geometry::PrismSpline::linear || spline_ == geometry::PrismSpline::bezier
+                ? 1.0
+                : 2.25;
         const double heights = std::max(deviation(height1_, t, height1_.at(t.mid())),
                                         deviation(height2_, t, height2_.at(t.mid())));
         if (sweep_ == geometry::PrismSweep::linear) return weights * points + heights;
@@ -95,7 +95,8 @@ class PrismModel {
         for (std::size_t i = 0; i + width <= ranges.size(); i += step) {
             // lathe_polynomial's point j of segment s is point 4 s + j for
             // Bezier splines, s + j for the others.
-            const int segment = static_cast<int>(spline_ == geometry::PrismSpline::bezier ? i / 4 : i);
+            const int segment =
+                static_cast<int>(spline_ == geometry::PrismSpline::bezier ? i / 4 : i);
             const auto p = geometry::lathe_polynomial<Interval>(
                 spline_, segment,
                 [&](int j, int k) { return ranges[static_cast<std::size_t>(j)][k == 0 ? 0 : 2]; });
