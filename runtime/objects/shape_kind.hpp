@@ -28,8 +28,8 @@
 //       triangle's uv_vectors, read only in a mesh): the factory refuses
 //       the object on its own, naming its place
 //   std::optional<std::string> unsupported() const;
-//       set when the block asked for a variant hexant lacks ("prism with
-//       cubic_spline"): kept unevaluated, an error only where used.
+//       set when the block asked for a variant hexant lacks: kept
+//       unevaluated, an error only where used.
 #pragma once
 
 #include <algorithm>

@@ -112,6 +112,19 @@ LathePolynomial<T> lathe_polynomial(LatheSpline spline, int segment, At&& at) {
     return p;
 }
 
+// The hull over t in [0, 1] of a segment's component k (0 or 1): its
+// Bernstein control points, for T = Interval (a cubic spline overshoots its
+// points; its control hull does not).
+template <class T>
+T lathe_control_hull(const LathePolynomial<T>& p, int k) {
+    const T third = T(1.0) / T(3.0);
+    const T b0 = p.d[k];
+    const T b1 = p.d[k] + p.c[k] * third;
+    const T b2 = p.d[k] + (T(2.0) * p.c[k] + p.b[k]) * third;
+    const T b3 = p.a[k] + p.b[k] + p.c[k] + p.d[k];
+    return hull(hull(b0, b1), hull(b2, b3));
+}
+
 // The lathe from its spline and points (<r, y>); no segments when there are
 // too few points or a point is not finite.
 LatheGeometry make_lathe(LatheSpline spline, const std::vector<glm::dvec2>& points);

@@ -51,12 +51,7 @@ class LatheModel {
             const auto p = geometry::lathe_polynomial<Interval>(
                 spline_, i, [&](int j, int k) { return ranges[static_cast<std::size_t>(j)][k]; });
             for (int k = 0; k < 2; ++k) {
-                const Interval third = Interval(1.0) / Interval(3.0);
-                const Interval b0 = p.d[k];
-                const Interval b1 = p.d[k] + p.c[k] * third;
-                const Interval b2 = p.d[k] + (Interval(2.0) * p.c[k] + p.b[k]) * third;
-                const Interval b3 = p.a[k] + p.b[k] + p.c[k] + p.d[k];
-                const Interval all = hull(hull(b0, b1), hull(b2, b3));
+                const Interval all = geometry::lathe_control_hull(p, k);
                 if (k == 0)
                     radius = hull(radius, Interval(0.0, all.magnitude()));
                 else

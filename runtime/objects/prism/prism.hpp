@@ -1,14 +1,15 @@
-// POV-Ray's prism { [SWEEP] [SPLINE] HEIGHT1, HEIGHT2, N, POINT ... [open] }:
-// linear_sweep with linear_spline, the outline in x-z swept along y. The
-// object kind (runtime/objects/shape_kind.hpp).
+// POV-Ray's prism { [linear_sweep | conic_sweep] [linear_spline |
+// quadratic_spline | cubic_spline | bezier_spline] HEIGHT1, HEIGHT2, N,
+// POINT ... [open] }: the outline in x-z swept along y. The object kind
+// (runtime/objects/shape_kind.hpp); `sturm` is a modifier the language reads
+// for every object (hexant's solver needs no choice).
 #pragma once
 
 #include <array>
-#include <optional>
-#include <string>
 #include <string_view>
 #include <vector>
 
+#include "runtime/objects/prism/prism_geometry.hpp"
 #include "runtime/objects/shape_kind.hpp"
 #include "runtime/time/vector_function.hpp"
 
@@ -29,17 +30,12 @@ struct Prism {
     TimeFunction height1, height2;
     std::vector<Vector2Function> points;
     bool open = false;
-    // The sweep and spline asked for, when hexant lacks them (it has
-    // linear_sweep with linear_spline): then the points are not read.
-    std::string lacking;
+    geometry::PrismSpline spline = geometry::PrismSpline::linear;
+    geometry::PrismSweep sweep = geometry::PrismSweep::linear;
 
     static Prism read(const objects::ShapeArguments& a);
     void set(std::string_view, const objects::ShapeArguments& value) {
         open = objects::flag(value);
-    }
-    std::optional<std::string> unsupported() const {
-        if (lacking.empty()) return std::nullopt;
-        return lacking;
     }
     template <class F>
     void parameters(F&& f) const {

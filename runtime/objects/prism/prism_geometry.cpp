@@ -8,6 +8,7 @@
 #include "runtime/geometry/local_ray.hpp"
 #include "runtime/geometry/outline.hpp"
 #include "runtime/geometry/stable_arithmetic.hpp"
+#include "runtime/objects/prism/prism_curve.hpp"
 
 namespace hexant::runtime::geometry {
 
@@ -61,8 +62,16 @@ struct Candidate {
 
 }  // namespace
 
+PrismGeometry make_prism(PrismSpline spline, PrismSweep sweep, double height1, double height2,
+                         std::vector<glm::dvec2> points, bool open) {
+    PrismGeometry g{height1, height2, std::move(points), open, spline, sweep, {}};
+    if (curved(g)) g.segments = prism_segments(spline, g.points);
+    return g;
+}
+
 std::optional<SurfaceHit> intersect(const PrismGeometry& prism, const Ray3& ray, double s_min,
                                     double s_max) {
+    if (curved(prism)) return intersect_curved(prism, ray, s_min, s_max);
     if (!valid(prism)) return std::nullopt;
     const Box3 bounds = object_bounds(prism);
     const auto local = local_ray(ray, centre(bounds), half_diagonal(bounds));
@@ -148,6 +157,7 @@ std::optional<SurfaceHit> intersect(const PrismGeometry& prism, const Ray3& ray,
 }
 
 bool inside(const PrismGeometry& prism, glm::dvec3 p) {
+    if (curved(prism)) return inside_curved(prism, p);
     if (!valid(prism)) return false;
     const double y0 = std::min(prism.height1, prism.height2);
     const double y1 = std::max(prism.height1, prism.height2);
@@ -156,6 +166,7 @@ bool inside(const PrismGeometry& prism, glm::dvec3 p) {
 }
 
 Box3 object_bounds(const PrismGeometry& prism) {
+    if (curved(prism)) return curved_bounds(prism);
     Box3 b{{kInf, std::min(prism.height1, prism.height2), kInf},
            {-kInf, std::max(prism.height1, prism.height2), -kInf}};
     for (const glm::dvec2& q : prism.points) {
@@ -169,6 +180,7 @@ Box3 object_bounds(const PrismGeometry& prism) {
 }
 
 bool surface_may_meet(const PrismGeometry& prism, const Box3& box) {
+    if (curved(prism)) return curved_surface_may_meet(prism, box);
     if (!valid(prism)) return false;
     const Box3 bounds = object_bounds(prism);
     const double slack = meet_slack(box, std::max(max_abs(bounds.lo), max_abs(bounds.hi)));

@@ -5,5 +5,4 @@
 #declare Blob = isosurface { function { x } }
 #declare Layered = texture { pigment { rgb 1 } } texture { pigment { rgbt 1 } }
 #declare Glass = material { texture { pigment { rgbt 1 } } interior { ior 1.5 } }
-#declare Lumpy = prism { cubic_spline 0, 1, 6, <0, 0>, <1, 0>, <1, 1>, <0, 1>, <0, 0>, <1, 0> }
 sphere { 0, 1 }
