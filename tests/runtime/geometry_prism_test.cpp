@@ -53,7 +53,10 @@ Outlines test_outlines(double scale, glm::dvec2 offset) {
 }
 
 PrismGeometry make_prism(const Outlines& outlines, double h1, double h2, bool open) {
-    PrismGeometry g{h1, h2, {}, open};
+    PrismGeometry g;
+    g.height1 = h1;
+    g.height2 = h2;
+    g.open = open;
     for (const auto& outline : outlines) {
         g.points.insert(g.points.end(), outline.begin(), outline.end());
         g.points.push_back(outline.front());

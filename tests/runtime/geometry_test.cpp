@@ -283,7 +283,10 @@ TEST_CASE("geometry: wild inputs never give NaN or Inf", "[runtime][geometry]") 
         hits += fuzz_one(
             polygon, polygon.points[0] / 3.0 + polygon.points[1] / 3.0 + polygon.points[2] / 3.0,
             random);
-        geo::PrismGeometry prism{wild(random), wild(random), {}, random.uniform() < 0.5};
+        geo::PrismGeometry prism;
+        prism.height1 = wild(random);
+        prism.height2 = wild(random);
+        prism.open = random.uniform() < 0.5;
         for (int k = 0; k < 5; ++k) prism.points.push_back({wild(random), wild(random)});
         hits += fuzz_one(prism, glm::dvec3(prism.points[0].x, prism.height1, prism.points[0].y),
                          random);
