@@ -431,6 +431,11 @@ class Interpreter {
               template <typename...> class Control, typename ParseInput>
     void switch_from(ParseInput& in, const p::position& opened, const TimeFunction& value,
                      Divider d, bool matched, bool executing);
+    // A taken branch that opens a block the text after its #end closes:
+    // read with that text (conditions.hpp); false when its braces balance.
+    template <typename Item, template <typename...> class Action,
+              template <typename...> class Control, typename ParseInput>
+    bool read_opening_branch(ParseInput& in, const p::position& opened, const char* directive);
     // The same for a condition known to be `taken` over the whole domain.
     template <typename Item, template <typename...> class Action,
               template <typename...> class Control, typename ParseInput>
@@ -469,6 +474,9 @@ class Interpreter {
                                const ParseInput& in);
 
     std::deque<std::pair<std::string, std::string>> sources_;
+    // The copies read_opening_branch reads from (kept: macros declared in
+    // them point into them).
+    std::deque<std::string> spliced_texts_;
     // One side of a time split, read: its pieces, the variables it changed
     // (as they were when it ended), the values it left on the stack and the
     // object block around it as it left it.

@@ -316,6 +316,9 @@ struct action<g::unsupported_pattern> {
                                      in.position().column};
     }
 };
+// (The same in a pigment_map's entry.)
+template <>
+struct action<g::map_entry_unsupported_pattern> : action<g::unsupported_pattern> {};
 template <>
 struct action<g::pigment_block> {
     template <typename ActionInput>

@@ -122,17 +122,27 @@ struct colour_map_block : p::seq<colour_map_open, p::opt<colour_map_base>,
 struct pigment_colour_map : p::seq<colour_map_block> {};
 
 struct pigment_open : p::seq<kw_pigment, p::must<lbrace>> {};
-struct pigment_base : p::seq<p::not_at<pattern_name>, expression> {};
+struct pigment_base
+    : p::seq<p::not_at<pattern_name>, p::not_at<unsupported_pattern_name>, expression> {};
 struct pigment_item;
 // pigment_map { [value PIGMENT_BODY] ... }: each entry a pigment's inside
 // (a declared pigment, a colour, or a pattern with its modifiers).
-struct pigment_map_value : p::seq<sum> {};
-// (An average's entry may leave its weight out: 1, POV-Ray's Allow_Float(1.0).)
+struct pigment_map_value : p::seq<p::not_at<unsupported_pattern_name>, sum> {};
+// (An average's entry may leave its weight out: 1, POV-Ray's Allow_Float(1.0).
+// A pattern hexant lacks is not a weight: `[function { } ...]` is that
+// pattern's pigment, refused as such.)
 struct pigment_map_weight : p::success {};
 struct pigment_map_pigment_open : p::success {};
-struct pigment_map_entry : p::seq<lbracket, p::sor<pigment_map_value, pigment_map_weight>,
-                                  p::opt<comma>, pigment_map_pigment_open, p::opt<pigment_base>,
-                                  p::star<pigment_item>, p::must<rbracket>> {};
+// A pattern hexant lacks in an entry: kept by name as in a pigment, its
+// body skipped to the entry's ']' (not to the map's '}').
+struct map_entry_skipped
+    : p::sor<skip::braced, separator, skip::string_raw, p::not_one<'{', '}', ']'>> {};
+struct map_entry_unsupported_pattern
+    : p::seq<unsupported_pattern_name, p::star<map_entry_skipped>> {};
+struct pigment_map_entry
+    : p::seq<lbracket, p::sor<pigment_map_value, pigment_map_weight>, p::opt<comma>,
+             pigment_map_pigment_open, p::opt<pigment_base>, p::opt<map_entry_unsupported_pattern>,
+             p::star<pigment_item>, p::must<rbracket>> {};
 struct pigment_map_open : p::seq<TAO_PEGTL_KEYWORD("pigment_map"), ws, p::must<lbrace>> {};
 struct pigment_map_element
     : p::sor<directive<pigment_map_element>, macro_call<pigment_map_element>, pigment_map_entry> {};
@@ -261,7 +271,7 @@ struct normal_setting : p::seq<normal_setting_name, ws, p::must<pattern_setting_
 struct normal_no_bump_scale : p::seq<TAO_PEGTL_KEYWORD("no_bump_scale"), ws> {};
 struct normal_item;
 // normal_map { [value NORMAL_BODY] ... }: each entry a normal's inside.
-struct normal_map_value : p::seq<sum> {};
+struct normal_map_value : p::seq<p::not_at<unsupported_pattern_name>, sum> {};
 struct normal_map_weight : p::success {};  // (as pigment_map_weight)
 struct normal_map_normal_open : p::success {};
 struct normal_map_entry
@@ -316,7 +326,7 @@ struct texture_pigment : p::seq<pigment_block> {};
 struct texture_finish : p::seq<finish_block> {};
 struct texture_item;
 // texture_map { [value TEXTURE_BODY] ... }: each entry a texture's inside.
-struct texture_map_value : p::seq<sum> {};
+struct texture_map_value : p::seq<p::not_at<unsupported_pattern_name>, sum> {};
 struct texture_map_weight : p::success {};  // (as pigment_map_weight)
 struct texture_map_texture_open : p::success {};
 struct texture_map_entry : p::seq<lbracket, p::sor<texture_map_value, texture_map_weight>,

@@ -3,6 +3,9 @@
 // includes it.
 #pragma once
 
+#include <cctype>
+#include <string_view>
+
 #include "language/array_index.hpp"
 #include "language/interpreter/reading.hpp"
 #include "language/interpreter_state.hpp"
@@ -61,6 +64,7 @@ template <typename Item, template <typename...> class Action, template <typename
 void Interpreter::if_rest(ParseInput& in, const p::position& opened, bool taken) {
     bool seen_else = false;
     for (;;) {
+        if (taken && read_opening_branch<Item, Action, Control>(in, opened, "#if")) return;
         const Divider d = taken ? run_body<Item, Action, Control>(in) : skip_body<Control>(in);
         if (d == Divider::End) return;
         if (taken) {
@@ -78,6 +82,7 @@ void Interpreter::if_rest(ParseInput& in, const p::position& opened, bool taken)
             if (seen_else) unclosed(opened, "#if", d, in);
             seen_else = true;
             taken = true;
+            if (read_opening_branch<Item, Action, Control>(in, opened, "#if")) return;
             // After #else only #end may follow.
             const Divider last = run_body<Item, Action, Control>(in);
             if (last != Divider::End) unclosed(opened, "#if", last, in);
@@ -217,9 +222,12 @@ bool Interpreter::run_ifdef(ParseInput& in) {
     }
     read<grammar::condition_close, Action, Control>(in);
     const auto rest = [&](bool taken) {
+        if (taken && read_opening_branch<Item, Action, Control>(in, opened, name)) return;
         Divider d = taken ? run_body<Item, Action, Control>(in) : skip_body<Control>(in);
-        if (d == Divider::Else)
+        if (d == Divider::Else) {
+            if (!taken && read_opening_branch<Item, Action, Control>(in, opened, name)) return;
             d = taken ? skip_body<Control>(in) : run_body<Item, Action, Control>(in);
+        }
         if (d != Divider::End) unclosed(opened, name, d, in);
     };
     if (!indices.empty()) {
@@ -254,6 +262,87 @@ bool Interpreter::run_ifdef(ParseInput& in) {
         rest(*whole);
     else
         split_time(in, opened, c, pieces, rest);
+    return true;
+}
+
+// How many more '{' than '}' the text [b, e) holds, outside strings,
+// comments and the directives nested in it (#if, #ifdef, #ifndef, #while,
+// #for, #switch, #macro to their #end: their braces are their own).
+inline long brace_balance(const char* b, const char* e) {
+    long balance = 0;
+    int nested = 0;
+    for (const char* c = b; c < e; ++c) {
+        if (*c == '"') {
+            for (++c; c < e && *c != '"'; ++c)
+                if (*c == '\\') ++c;
+        } else if (*c == '/' && c + 1 < e && c[1] == '/') {
+            while (c < e && *c != '\n') ++c;
+        } else if (*c == '/' && c + 1 < e && c[1] == '*') {
+            for (c += 2; c + 1 < e && !(c[0] == '*' && c[1] == '/'); ++c) {
+            }
+            ++c;
+        } else if (*c == '#') {
+            const char* w = c + 1;
+            while (w < e && (*w == ' ' || *w == '\t')) ++w;
+            const char* w_end = w;
+            while (w_end < e && (std::isalnum(static_cast<unsigned char>(*w_end)) || *w_end == '_'))
+                ++w_end;
+            const std::string_view word(w, static_cast<std::size_t>(w_end - w));
+            if (word == "if" || word == "ifdef" || word == "ifndef" || word == "while" ||
+                word == "for" || word == "switch" || word == "macro")
+                ++nested;
+            else if (word == "end" && nested > 0)
+                --nested;
+            c = w_end - 1;
+        } else if (nested == 0 && *c == '{') {
+            ++balance;
+        } else if (nested == 0 && *c == '}') {
+            --balance;
+        }
+    }
+    return balance;
+}
+
+// POV-Ray's directives act on its token stream, so a taken branch may open
+// a block that the text after #end goes on to fill and close (shapes.inc's
+// `#if (UseMerge) merge { #else union { #end ... }`). When the braces of
+// the branch starting here open more than they close, the item it begins
+// is read from a copy of the input in which the directive's other parts
+// (from the branch's end through #end) are blanks, lines kept, so that
+// places stay the same; the input then resumes after that item. Returns
+// false, reading nothing, for a branch whose braces balance.
+template <typename Item, template <typename...> class Action, template <typename...> class Control,
+          typename ParseInput>
+bool Interpreter::read_opening_branch(ParseInput& in, const p::position& opened,
+                                      const char* directive) {
+    const auto start = in.iterator();
+    const char* body = in.current();
+    skip_text<Control>(in);
+    const char* body_end = in.current();
+    if (brace_balance(body, body_end) <= 0) {
+        in.iterator() = start;
+        return false;
+    }
+    // Through the directive's #end.
+    Divider d = next_divider(in);
+    while (d == Divider::Else || d == Divider::Elseif) d = skip_body<Control>(in);
+    if (d != Divider::End) unclosed(opened, directive, d, in);
+    const char* after_end = in.current();
+    std::string& copy = spliced_texts_.emplace_back(in.begin(), in.end());
+    for (const char* c = body_end; c < after_end; ++c)
+        if (*c != '\n' && *c != '\r') copy[static_cast<std::size_t>(c - in.begin())] = ' ';
+    const std::size_t offset = static_cast<std::size_t>(body - in.begin());
+    Input rest(copy.data() + offset, copy.data() + copy.size(), in.source(), start.byte, start.line,
+               start.column);
+    (void)p::match<Item, p::apply_mode::action, p::rewind_mode::dontcare, Action, Control>(rest,
+                                                                                           *this);
+    const std::size_t consumed = static_cast<std::size_t>(rest.current() - (copy.data() + offset));
+    if (consumed < static_cast<std::size_t>(body_end - body))
+        fail(opened, std::string("the branch taken here opens a block that the item it begins "
+                                 "does not close after ") +
+                         directive + "'s #end");
+    in.iterator() = start;
+    in.bump(consumed);
     return true;
 }
 

@@ -148,3 +148,32 @@ TEST_CASE("a macro's value may end with a semicolon", "[language][declare]") {
     CHECK(debug("#macro F(S) #local Q = 3; #if (S) Q; #else 4; #end #end\n"
                 "#declare X = F(1); #declare Y = F(0);\n#debug str(10 * X + Y, 0, 0)") == "34");
 }
+
+TEST_CASE("a branch may open a block that the text after #end closes", "[language][declare]") {
+    // shapes.inc's Circle_Text: #if (UseMerge) merge { #else union { #end
+    // ... }; a real animation's `#declare A = #if (..) object { #else union {
+    // object { .. } #end object { .. } };`. POV-Ray's directives act on its
+    // tokens, so either branch opens the object the rest fills.
+    const std::string macro =
+        "#macro Pair(UseMerge)\n"
+        "  #if (UseMerge)\n    merge {\n  #else\n    union {\n  #end\n"
+        "      sphere { 0, 1 } sphere { x, 1 }\n    }\n#end\n";
+    CHECK(debug(macro + "#declare A = Pair(1);\n#declare B = Pair(0);\n"
+                        "#debug str(max_extent(A).x + max_extent(B).x, 0, 0)") == "4");
+    CHECK(debug("#declare C = 1;\n"
+                "#declare O = #if (C = 0) object { #else union { object { sphere { 0, 1 } "
+                "translate y } #end object { sphere { 0, 1 } } };\n"
+                "#debug str(max_extent(O).y, 0, 0)") == "2");
+    CHECK(debug("#declare C = 0;\n"
+                "#declare O = #if (C = 0) object { #else union { object { sphere { 0, 1 } "
+                "translate y } #end sphere { 0, 1 } };\n"
+                "#debug str(max_extent(O).y, 0, 0)") == "1");
+    // The lines after it keep their numbers: an error there names its place.
+    const std::string bad = message(macro + "#declare A = Pair(1);\n#declare Z = nope;\n");
+    CHECK(bad.find("nope") != std::string::npos);
+    CHECK(hexant::test::error_of("#version 3.7;\n" + macro +
+                                 "#declare A = Pair(1);\n#declare Z = nope;\n")
+              .places()
+              .front()
+              .line == 12);
+}

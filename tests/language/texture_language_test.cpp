@@ -319,3 +319,18 @@ TEST_CASE("a colour_map entry's colour may be components alone", "[language][pat
     CHECK(map[2].colour.c[1].constant() == Approx(0.5));
     CHECK(map[2].colour.c[2].constant() == 0.0);
 }
+
+TEST_CASE("a pattern hexant lacks in a pigment_map entry is refused as itself",
+          "[language][pattern]") {
+    // The woods *_37 scenes average `[function { .. } color_map { .. }]`
+    // entries: the error names the function pattern, at its use, not a
+    // missing ']' far away.
+    const std::string text =
+        "#declare P = pigment { average pigment_map {\n"
+        "  [function { x } color_map { [0 rgb 0] [1 rgb 1] }]\n"
+        "  [gradient y] } }\n";
+    (void)read(text);  // declared and unused: nothing to say
+    const auto e = error_of(text + "sphere { 0, 1 pigment { P } }\n");
+    CHECK(std::string(e.what()).find("function") != std::string::npos);
+    CHECK(std::string(e.what()).find("expected ']'") == std::string::npos);
+}
