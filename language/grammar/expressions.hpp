@@ -173,7 +173,8 @@ struct colour_component_words {
                                                              "transmit"};
 };
 struct colour_component_name : one_word_of<colour_component_words> {};
-struct colour_component_value : p::seq<unary> {};
+// (A whole sum, as POV-Ray's Parse_Float: `transmit 1 - level`.)
+struct colour_component_value : p::seq<sum> {};
 struct colour_component_setting
     : p::seq<colour_component_name, ws, p::must<colour_component_value>> {};
 struct colour_keyword

@@ -334,3 +334,15 @@ TEST_CASE("a pattern hexant lacks in a pigment_map entry is refused as itself",
     CHECK(std::string(e.what()).find("function") != std::string::npos);
     CHECK(std::string(e.what()).find("expected ']'") == std::string::npos);
 }
+
+TEST_CASE("a colour component takes a whole sum", "[language][pattern]") {
+    // A real animation fades text with `pigment { rgb level transmit
+    // 1-level }`: POV-Ray reads the component with Parse_Float.
+    const auto scene = read(
+        "#declare L = 0.3;\n"
+        "sphere { 0, 1 pigment { rgb L transmit 1-L } }\n"
+        "sphere { 0, 1 pigment { color red 1 - L green 0.5 } }\n");
+    CHECK(texture_of(scene, 0).pigment.colours[0].c[4].constant() == Approx(0.7));
+    CHECK(texture_of(scene, 1).pigment.colours[0].c[0].constant() == Approx(0.7));
+    CHECK(texture_of(scene, 1).pigment.colours[0].c[1].constant() == Approx(0.5));
+}

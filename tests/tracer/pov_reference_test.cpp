@@ -114,6 +114,25 @@ TEST_CASE("a still agrees with POV-Ray 3.7's render of it pixel by pixel", "[tra
                           read_png(kFolder / "still.pov.png")));
 }
 
+TEST_CASE("real-animation case 10 agrees with POV-Ray 3.7 at two clocks", "[tracer][pov][time]") {
+    // cases/press_any_key.pov (../shared/cases/2026-12-03/10): read as the
+    // animation it is (clock 0 to 1, 10001 frames, zero shutter), the
+    // frames at clock 0.3 and 0.6 against POV-Ray's +K stills. Its
+    // #declare opens an object or a union in #if branches and its fade is
+    // `transmit 1-level`, a function of clock: both were refused before.
+    // Same tolerance as the other time scenes.
+    const fs::path folder = kFolder / "cases";
+    for (const char* clock : {"0.3", "0.6"}) {
+        const int frame = int(std::lround(std::stod(clock) * 10000)) + 1;
+        INFO("press_any_key at clock " << clock);
+        check_agreement(
+            agree(render(folder / "press_any_key.pov",
+                         "--clock 0:1 --frame-count 10001 --frames " + std::to_string(frame),
+                         "hexant_pov_press_any_key", frame),
+                  read_png(folder / (std::string("press_any_key_") + clock + ".png"))));
+    }
+}
+
 TEST_CASE("scenes that switch with clock agree with POV-Ray 3.7 at each clock",
           "[tracer][pov][time]") {
     // real-animation case 01 (an #if in a macro picks the bounce's formula,
