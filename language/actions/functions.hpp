@@ -4,6 +4,8 @@
 
 #include "language/actions/arrays.hpp"
 #include "language/function_internals.hpp"
+#include "runtime/objects/object_error.hpp"
+#include "runtime/texture/pigment_function.hpp"
 
 namespace hexant::language {
 
@@ -62,6 +64,29 @@ struct action<g::function_internal_number> {
         if (n != std::floor(n) || !(n >= 0.0) || n > 1e6)
             throw ValueError("internal() takes a function's number, not " + std::to_string(n));
         st.values.push(Value{internal_function(static_cast<int>(n))});
+    }
+};
+
+// function { pigment { } }: F(x, y, z) is the pigment's colour, five
+// components (POV-Ray's VECTFUNCT of return size 5).
+template <>
+struct action<g::function_pigment> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, Interpreter& st) {
+        const Value v = st.values.pop();
+        std::shared_ptr<const runtime::PointFunction> pigment;
+        try {
+            pigment = std::make_shared<const runtime::PigmentFunction>(v.as<runtime::Pigment>());
+        } catch (const runtime::ObjectError& e) {
+            throw UnsupportedError(std::string("a pigment function's pigment: ") + e.what());
+        }
+        auto f = std::make_shared<runtime::UserFunction>();
+        f->parameters = {"x", "y", "z"};
+        for (int c = 0; c < pigment->components(); ++c)
+            f->components.push_back(runtime::TimeFunction::point_call(
+                pigment, c, TimeFunction::argument(0), TimeFunction::argument(1),
+                TimeFunction::argument(2)));
+        st.values.push(Value{std::shared_ptr<const runtime::UserFunction>(std::move(f))});
     }
 };
 

@@ -35,9 +35,19 @@ struct action<g::isosurface_function> {
         if (!f.unimplemented.empty())
             throw UnsupportedError("the internal function " + f.unimplemented +
                                    " is not implemented by hexant");
+        if (!f.components.empty())
+            throw ValueError(
+                "an isosurface's function gives a number; this one gives a colour (pick a "
+                "component: F(x, y, z).red)");
         if (f.parameters.size() > 3)
             throw ValueError("an isosurface's function is one of x, y, z; this one takes " +
                              std::to_string(f.parameters.size()) + " parameters");
+        // (Its hits are found by interval evaluation: every part needs a bound.)
+        if (const auto* part = runtime::TimeTape::compile({f.body}).unbounded_point_function())
+            throw UnsupportedError("an isosurface whose function calls a " + part->name() +
+                                   ": hexant finds an isosurface's surface by interval "
+                                   "bounds of its function, and a " +
+                                   part->name() + " has none yet");
         isosurface_being_read(st, in.position()).function = f.body;
     }
 };

@@ -504,6 +504,15 @@ inline Value call_user_function(Interpreter& st,
                          " arguments, not " + std::to_string(args.size()));
     std::vector<TimeFunction> values;
     for (const Value& a : args) values.push_back(to_float(a, "a function's argument"));
+    if (!f->components.empty()) {
+        // (A pigment function's colour: its components, read by .red, .x, ...)
+        Vector v;
+        v.size = static_cast<int>(f->components.size());
+        for (int i = 0; i < v.size; ++i)
+            v.c[static_cast<std::size_t>(i)] =
+                runtime::substitute_arguments(f->components[static_cast<std::size_t>(i)], values);
+        return Value{v};
+    }
     Interpreter::FunctionCall key;
     key.push_back(reinterpret_cast<std::uintptr_t>(f.get()));
     for (const TimeFunction& v : values)

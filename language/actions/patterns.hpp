@@ -333,6 +333,24 @@ struct action<g::slope_pattern> {
     }
 };
 
+// function { EXPRESSION } as a pattern: its value is the function's at the
+// point in pattern space (runtime/texture/pattern/kinds/function.hpp).
+template <>
+struct action<g::function_pattern_body> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        const Value v = st.values.pop();
+        const auto& f = *v.as<std::shared_ptr<const runtime::UserFunction>>();
+        if (!f.unimplemented.empty())
+            throw UnsupportedError("the internal function " + f.unimplemented +
+                                   " is not implemented by hexant");
+        if (!f.components.empty() || f.parameters.size() > 3)
+            throw ValueError("a function pattern's function is a number of x, y, z");
+        start_pattern(st, in.position(), "function").pattern.function =
+            std::make_shared<const runtime::SpaceFunction>(f.body);
+    }
+};
+
 template <>
 struct action<g::pigment_pattern_open> {
     template <typename ActionInput>

@@ -2,6 +2,7 @@
 // Part of the grammar (language/grammar.hpp).
 #pragma once
 
+#include "language/grammar/functions.hpp"
 #include "language/grammar/modifiers.hpp"
 
 namespace hexant::language::grammar {
@@ -18,11 +19,11 @@ HEXANT_KEYWORD(kw_material, "material");
 // Patterns POV-Ray has and hexant does not: parsed, kept by name, an error
 // only where a scene uses them.
 struct unsupported_pattern_name
-    : p::sor<TAO_PEGTL_KEYWORD("facets"), TAO_PEGTL_KEYWORD("function"), TAO_PEGTL_KEYWORD("julia"),
-             TAO_PEGTL_KEYWORD("pavement"), TAO_PEGTL_KEYWORD("tiling"), TAO_PEGTL_KEYWORD("cubic"),
-             TAO_PEGTL_KEYWORD("object"), TAO_PEGTL_KEYWORD("aoi"),
-             TAO_PEGTL_KEYWORD("density_file"), TAO_PEGTL_KEYWORD("image_pattern"),
-             TAO_PEGTL_KEYWORD("bump_map"), TAO_PEGTL_KEYWORD("wave")> {};
+    : p::sor<TAO_PEGTL_KEYWORD("facets"), TAO_PEGTL_KEYWORD("julia"), TAO_PEGTL_KEYWORD("pavement"),
+             TAO_PEGTL_KEYWORD("tiling"), TAO_PEGTL_KEYWORD("cubic"), TAO_PEGTL_KEYWORD("object"),
+             TAO_PEGTL_KEYWORD("aoi"), TAO_PEGTL_KEYWORD("density_file"),
+             TAO_PEGTL_KEYWORD("image_pattern"), TAO_PEGTL_KEYWORD("bump_map"),
+             TAO_PEGTL_KEYWORD("wave")> {};
 struct unsupported_pattern : p::seq<unsupported_pattern_name, skip::until_rbrace> {};
 // uv_mapping in a pigment, a normal or a texture: what follows in the
 // block is read at the surface's (u, v, 0) (runtime/texture/material.hpp).
@@ -95,6 +96,11 @@ struct slope_braced : p::seq<lbrace, p::opt<slope_point_at>, p::must<slope_direc
 struct slope_written : p::sor<slope_braced, slope_direction> {};
 struct slope_pattern : p::seq<slope_keyword, p::must<slope_written>, own_pattern_tail> {};
 
+// function { EXPRESSION }: the function pattern, its body a user
+// function's (runtime/texture/pattern/kinds/function.hpp).
+struct function_pattern_body : p::seq<function_value> {};
+struct function_pattern : p::seq<function_pattern_body, own_pattern_tail> {};
+
 // color_map { [value colour] ... }, or a declared one; POV-Ray's older
 // [value1, value2 colour1 colour2] too.
 struct colour_map_open
@@ -127,7 +133,8 @@ struct pigment_base
 struct pigment_item;
 // pigment_map { [value PIGMENT_BODY] ... }: each entry a pigment's inside
 // (a declared pigment, a colour, or a pattern with its modifiers).
-struct pigment_map_value : p::seq<p::not_at<unsupported_pattern_name>, sum> {};
+struct pigment_map_value
+    : p::seq<p::not_at<unsupported_pattern_name>, p::not_at<kw_function>, sum> {};
 // (An average's entry may leave its weight out: 1, POV-Ray's Allow_Float(1.0).
 // A pattern hexant lacks is not a weight: `[function { } ...]` is that
 // pattern's pigment, refused as such.)
@@ -205,13 +212,17 @@ struct pigment_quick_colour
     : p::seq<p::sor<TAO_PEGTL_KEYWORD("quick_color"), TAO_PEGTL_KEYWORD("quick_colour")>, ws,
              p::sor<p::plus<quick_colour_component>,
                     p::seq<p::must<ignored_value>, p::star<quick_colour_component>>>> {};
-struct pigment_item
-    : p::sor<directive<pigment_item>, macro_call<pigment_item>, slope_pattern, pigment_pattern,
-             pattern_kind, pattern_setting, pattern_wave, warp_block, pigment_colour_map,
-             pigment_map_block, image_map_block, pigment_list_pigment, pigment_quick_colour,
-             pigment_component, uv_mapping, unsupported_pattern, transformation> {};
+struct pigment_item : p::sor<directive<pigment_item>, macro_call<pigment_item>, slope_pattern,
+                             pigment_pattern, function_pattern, pattern_kind, pattern_setting,
+                             pattern_wave, warp_block, pigment_colour_map, pigment_map_block,
+                             image_map_block, pigment_list_pigment, pigment_quick_colour,
+                             pigment_component, uv_mapping, unsupported_pattern, transformation> {};
 struct pigment_block
     : p::seq<pigment_open, p::opt<pigment_base>, p::star<pigment_item>, p::must<rbrace>> {};
+// function { pigment { } }: a pigment function, F(x, y, z) its colour
+// (runtime/texture/pigment_function.hpp).
+struct function_pigment_open : p::seq<kw_function, lbrace, p::at<kw_pigment>> {};
+struct function_pigment : p::seq<function_pigment_open, pigment_block, p::must<rbrace>> {};
 
 struct finish_setting_name : p::sor<TAO_PEGTL_KEYWORD("ambient"), TAO_PEGTL_KEYWORD("diffuse"),
                                     TAO_PEGTL_KEYWORD("brilliance"),
@@ -295,9 +306,9 @@ struct normal_block;
 struct normal_list_normal : p::seq<normal_block, p::opt<comma>> {};
 struct normal_item
     : p::sor<directive<normal_item>, macro_call<normal_item>, slope_pattern, pigment_pattern,
-             pattern_kind, pattern_setting, pattern_wave, warp_block, normal_setting,
-             normal_no_bump_scale, normal_map_block, slope_map_block, normal_list_normal,
-             uv_mapping, unsupported_pattern, transformation> {};
+             function_pattern, pattern_kind, pattern_setting, pattern_wave, warp_block,
+             normal_setting, normal_no_bump_scale, normal_map_block, slope_map_block,
+             normal_list_normal, uv_mapping, unsupported_pattern, transformation> {};
 struct normal_block
     : p::seq<normal_open, p::opt<normal_base>, p::star<normal_item>, p::must<rbrace>> {};
 struct texture_normal : p::seq<normal_block> {};
@@ -341,11 +352,11 @@ struct texture_block;
 // A block pattern's textures: checker texture { } texture { }.
 struct texture_list_texture : p::seq<texture_block, p::opt<comma>> {};
 // A patterned texture: a pattern and its modifiers, then its map.
-struct texture_item : p::sor<directive<texture_item>, macro_call<texture_item>, texture_pigment,
-                             texture_finish, texture_normal, slope_pattern, pigment_pattern,
-                             pattern_kind, pattern_setting, pattern_wave, warp_block,
-                             texture_map_block, texture_list_texture, uv_mapping, transformation> {
-};
+struct texture_item
+    : p::sor<directive<texture_item>, macro_call<texture_item>, texture_pigment, texture_finish,
+             texture_normal, slope_pattern, pigment_pattern, function_pattern, pattern_kind,
+             pattern_setting, pattern_wave, warp_block, texture_map_block, texture_list_texture,
+             uv_mapping, transformation> {};
 struct texture_block
     : p::seq<texture_open, p::opt<texture_base>, p::star<texture_item>, p::must<rbrace>> {};
 

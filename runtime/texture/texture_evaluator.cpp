@@ -119,6 +119,7 @@ TextureEvaluator::CompiledPattern::CompiledPattern(const pattern::Pattern& sourc
     for (std::size_t i = 0; i < more.size(); ++i) more[i] = CompiledScalar(source.more[i]);
     // (pigment_pattern's pigment lives in this pattern's space.)
     if (source.pigment) pigment = shared.entry(shared.pigments, *source.pigment);
+    function = source.function;
     if (source.turbulence) turbulence = compile(*source.turbulence);
     frequency = CompiledScalar(source.frequency);
     phase = CompiledScalar(source.phase);
@@ -150,6 +151,7 @@ pattern::Values TextureEvaluator::CompiledPattern::values(const pattern::Hit& hi
     pattern::Values v = fixed ? *fixed : values_at(hit.t);
     v.hit = &hit;
     v.pigment = pigment.get();
+    v.function = function.get();
     return v;
 }
 

@@ -132,6 +132,8 @@ class TextureEvaluator {
         double fixed_exponent = 1.0;
         // pigment_pattern's pigment, in this pattern's space.
         std::shared_ptr<const CompiledPigment> pigment;
+        // The function pattern's function.
+        std::shared_ptr<const SpaceFunction> function;
 
         CompiledPattern(const pattern::Pattern& source, const Transform& last,
                         const Transform& texture, Shared& shared);

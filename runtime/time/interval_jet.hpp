@@ -224,6 +224,7 @@ inline IntervalJet apply_op(TimeOp op, const IntervalJet& a, const IntervalJet& 
         case TimeOp::Clock:
         case TimeOp::Argument:
         case TimeOp::SplineComponent:
+        case TimeOp::PointCall:
             return a;
         case TimeOp::Negate:
             return -a;

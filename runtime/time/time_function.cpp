@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "runtime/motion/spline.hpp"
+#include "runtime/time/point_function.hpp"
 #include "runtime/time/time_ops.hpp"
 
 namespace hexant::runtime {
@@ -104,6 +105,8 @@ const char* name(TimeOp op) {
             return "?:";
         case TimeOp::SplineComponent:
             return "spline";
+        case TimeOp::PointCall:
+            return "point function";
         case TimeOp::Argument:
             return "argument";
     }
@@ -257,6 +260,20 @@ TimeFunction TimeFunction::spline_component(std::shared_ptr<const Spline> spline
     return TimeFunction(node.release());
 }
 
+TimeFunction TimeFunction::point_call(std::shared_ptr<const PointFunction> f, int component,
+                                      const TimeFunction& x, const TimeFunction& y,
+                                      const TimeFunction& z) {
+    if (x.is_constant() && y.is_constant() && z.is_constant() && !f->depends_on_time())
+        return TimeFunction(f->at(component, {x.constant(), y.constant(), z.constant()}, 0.0));
+    auto node = std::make_unique<Node>();
+    node->op = TimeOp::PointCall;
+    node->args = {x, y, z};
+    node->point_function = std::move(f);
+    node->component = component;
+    set_depth(*node);
+    return TimeFunction(node.release());
+}
+
 double TimeFunction::operator()(double t) const {
     if (is_constant()) return constant();
     const Node& n = *node();
@@ -265,6 +282,8 @@ double TimeFunction::operator()(double t) const {
             return t;
         case TimeOp::SplineComponent:
             return n.spline->evaluate(n.args[0](t))[n.component];
+        case TimeOp::PointCall:
+            return n.point_function->at(n.component, {n.args[0](t), n.args[1](t), n.args[2](t)}, t);
         case TimeOp::Argument:
             throw std::logic_error("a user function's argument read as a function of time");
         default:
@@ -303,6 +322,11 @@ std::string TimeFunction::to_string() const {
             return "!" + n.args[0].to_string();
         case TimeOp::SplineComponent:
             out << "spline(" << n.args[0].to_string() << ")[" << n.component << "]";
+            return out.str();
+        case TimeOp::PointCall:
+            out << n.point_function->name() << "(" << n.args[0].to_string() << ", "
+                << n.args[1].to_string() << ", " << n.args[2].to_string() << ")[" << n.component
+                << "]";
             return out.str();
         case TimeOp::Conditional:
             return "(" + n.args[0].to_string() + " ? " + n.args[1].to_string() + " : " +
@@ -373,6 +397,11 @@ TimeFunction substitute_arguments(const TimeFunction& f,
             case TimeOp::SplineComponent:
                 out = TimeFunction::spline_component(node->spline, node->component,
                                                      rebuilt(node->args[0]));
+                break;
+            case TimeOp::PointCall:
+                out = TimeFunction::point_call(node->point_function, node->component,
+                                               rebuilt(node->args[0]), rebuilt(node->args[1]),
+                                               rebuilt(node->args[2]));
                 break;
             default:
                 switch (arity(node->op)) {

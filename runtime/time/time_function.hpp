@@ -19,6 +19,7 @@
 namespace hexant::runtime {
 
 class Spline;
+class PointFunction;
 
 // The operations a time function is made of. Each has a fixed arity
 // (see arity()); evaluation of one operation lives in time_ops.hpp.
@@ -68,6 +69,9 @@ enum class TimeOp {
     Conditional,
     // spline component: SplineComponent(t) = spline(t)[component]
     SplineComponent,
+    // PointCall(x, y, z) = point_function(x, y, z, t)[component]: a pigment
+    // function's channel, a noise (runtime/time/point_function.hpp).
+    PointCall,
     // A user function's argument number `component` (x, y, z are 0, 1, 2
     // in POV-Ray's default function(x, y, z)): nullary, as clock. Only a
     // user function's body holds it (runtime/time/user_function.hpp); a
@@ -108,6 +112,12 @@ class TimeFunction {
                               const TimeFunction& c);
     static TimeFunction spline_component(std::shared_ptr<const Spline> spline, int component,
                                          const TimeFunction& t);
+    // Component `component` of f at the point (x, y, z), at the time the
+    // function is evaluated; a number when the point is and f does not
+    // move.
+    static TimeFunction point_call(std::shared_ptr<const PointFunction> f, int component,
+                                   const TimeFunction& x, const TimeFunction& y,
+                                   const TimeFunction& z);
 
     bool is_constant() const { return (bits_ >> 48) != kNodeTag; }
     // The value of a constant function; only valid when is_constant().
@@ -140,10 +150,11 @@ class TimeFunction {
 struct TimeFunction::Node {
     TimeOp op = TimeOp::Constant;
     int depth = 1;      // of the tree below: 1 + its deepest argument's
-    int component = 0;  // for SplineComponent
+    int component = 0;  // for SplineComponent, PointCall
     mutable std::atomic<std::uint32_t> references{0};
     std::array<TimeFunction, 3> args;
-    std::shared_ptr<const Spline> spline;  // for SplineComponent
+    std::shared_ptr<const Spline> spline;                 // for SplineComponent
+    std::shared_ptr<const PointFunction> point_function;  // for PointCall
 };
 
 // Functions of time are trees, and reading, compiling, printing and freeing

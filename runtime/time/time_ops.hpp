@@ -26,6 +26,7 @@ inline double apply_op(TimeOp op, double a, double b = 0.0, double c = 0.0) {
         case TimeOp::Clock:
         case TimeOp::Argument:
         case TimeOp::SplineComponent:
+        case TimeOp::PointCall:
             return a;
         case TimeOp::Negate:
             return -a;

@@ -105,6 +105,7 @@ inline Interval apply_op(TimeOp op, const Interval& a, const Interval& b = 0.0,
         case TimeOp::Clock:
         case TimeOp::Argument:
         case TimeOp::SplineComponent:
+        case TimeOp::PointCall:
             return a;
         case TimeOp::Negate:
             return -a;
@@ -203,6 +204,7 @@ inline Dual apply_op(TimeOp op, const Dual& a, const Dual& b = 0.0, const Dual& 
         case TimeOp::Clock:
         case TimeOp::Argument:
         case TimeOp::SplineComponent:
+        case TimeOp::PointCall:
             return a;
         case TimeOp::Negate:
             return -a;

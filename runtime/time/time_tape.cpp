@@ -18,6 +18,7 @@ class TapeBuilder {
   public:
     std::vector<TimeTape::Instruction> code;
     std::vector<std::shared_ptr<const Spline>> splines;
+    std::vector<std::shared_ptr<const PointFunction>> point_functions;
     int arguments = 0;  // 1 + the largest argument index read
 
     std::uint32_t constant(double value) {
@@ -93,6 +94,21 @@ class TapeBuilder {
                 in.component = node.component;
                 return emit(in);
             }
+            case TimeOp::PointCall: {
+                in.a = argument(node.args[0]);
+                in.b = argument(node.args[1]);
+                in.c = argument(node.args[2]);
+                const auto found = point_index_.find(node.point_function.get());
+                if (found != point_index_.end()) {
+                    in.spline = found->second;
+                } else {
+                    in.spline = static_cast<std::uint32_t>(point_functions.size());
+                    point_index_[node.point_function.get()] = in.spline;
+                    point_functions.push_back(node.point_function);
+                }
+                in.component = node.component;
+                return emit(in);
+            }
             default:
                 break;
         }
@@ -106,6 +122,7 @@ class TapeBuilder {
     std::unordered_map<std::uint64_t, std::uint32_t> constants_;
     std::unordered_map<const TimeFunction::Node*, std::uint32_t> nodes_;
     std::unordered_map<const Spline*, std::uint32_t> spline_index_;
+    std::unordered_map<const PointFunction*, std::uint32_t> point_index_;
     std::optional<std::uint32_t> clock_;
 };
 
@@ -117,6 +134,7 @@ TimeTape TimeTape::compile(const std::vector<TimeFunction>& outputs) {
     for (const TimeFunction& f : outputs) tape.outputs_.push_back(builder.slot(f));
     tape.code_ = std::move(builder.code);
     tape.splines_ = std::move(builder.splines);
+    tape.point_functions_ = std::move(builder.point_functions);
     tape.argument_count_ = builder.arguments;
     for (const auto& spline : tape.splines_) tape.spline_bounds_.emplace_back(*spline);
     return tape;
@@ -145,6 +163,61 @@ IntervalJet TimeTape::spline_value(const Instruction& in, const IntervalJet& p) 
     return IntervalJet::unknown(range);
 }
 
+bool TimeTape::reads_time() const {
+    for (const Instruction& in : code_)
+        if (in.op == TimeOp::Clock) return true;
+    for (const auto& f : point_functions_)
+        if (f->depends_on_time()) return true;
+    return false;
+}
+
+bool TimeTape::point_functions_bounded() const {
+    return unbounded_point_function() == nullptr;
+}
+
+const PointFunction* TimeTape::unbounded_point_function() const {
+    for (const auto& f : point_functions_)
+        if (!f->bounded()) return f.get();
+    return nullptr;
+}
+
+double TimeTape::point_value(const Instruction& in, double t, double x, double y, double z) const {
+    return point_functions_[in.spline]->at(in.component, {x, y, z}, t);
+}
+
+Interval TimeTape::point_value(const Instruction& in, const Interval& t, const Interval& x,
+                               const Interval& y, const Interval& z) const {
+    return point_functions_[in.spline]->over(in.component, {x, y, z}, t);
+}
+
+// The chain rule through the function's gradient (NaN where it has none).
+Dual TimeTape::point_value(const Instruction& in, const Dual& t, const Dual& x, const Dual& y,
+                           const Dual& z) const {
+    const PointFunction& f = *point_functions_[in.spline];
+    const glm::dvec3 p{x.v, y.v, z.v};
+    const double value = f.at(in.component, p, t.v);
+    if (x.d == 0.0 && y.d == 0.0 && z.d == 0.0 && (t.d == 0.0 || !f.depends_on_time()))
+        return {value, 0.0};
+    const std::array<double, 4> g = f.gradient(in.component, p, t.v);
+    double d = 0.0;
+    if (x.d != 0.0) d += g[0] * x.d;
+    if (y.d != 0.0) d += g[1] * y.d;
+    if (z.d != 0.0) d += g[2] * z.d;
+    if (t.d != 0.0 && f.depends_on_time()) d += g[3] * t.d;
+    return {value, d};
+}
+
+// Its range only, with no linear form (as a spline's).
+IntervalJet TimeTape::point_value(const Instruction& in, const IntervalJet& t, const IntervalJet& x,
+                                  const IntervalJet& y, const IntervalJet& z) const {
+    return IntervalJet::unknown(point_value(in, t.v, x.v, y.v, z.v));
+}
+
+PointRange TimeTape::point_value(const Instruction& in, const PointRange& t, const PointRange& x,
+                                 const PointRange& y, const PointRange& z) const {
+    return PointRange(point_value(in, t.v, x.v, y.v, z.v));
+}
+
 template <class Number>
 void TimeTape::evaluate(Number t, Number* outputs, Number* scratch) const {
     if (argument_count_ > 0)
@@ -170,6 +243,9 @@ void TimeTape::evaluate_with(Number t, const Number* arguments, Number* outputs,
                 break;
             case TimeOp::SplineComponent:
                 scratch[i] = spline_value(in, scratch[in.a]);
+                break;
+            case TimeOp::PointCall:
+                scratch[i] = point_value(in, t, scratch[in.a], scratch[in.b], scratch[in.c]);
                 break;
             default:
                 scratch[i] = apply_op(in.op, scratch[in.a], scratch[in.b], scratch[in.c]);

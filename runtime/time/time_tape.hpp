@@ -24,6 +24,7 @@
 #include "runtime/time/dual.hpp"
 #include "runtime/time/interval.hpp"
 #include "runtime/time/interval_jet.hpp"
+#include "runtime/time/point_function.hpp"
 #include "runtime/time/point_range.hpp"
 #include "runtime/time/time_function.hpp"
 
@@ -35,8 +36,9 @@ class TimeTape {
         TimeOp op = TimeOp::Constant;
         std::uint32_t a = 0, b = 0, c = 0;  // argument slots (earlier instructions)
         double constant = 0.0;              // for Constant
-        std::uint32_t spline = 0;           // for SplineComponent: index into the splines
-        int component = 0;                  // for SplineComponent
+        std::uint32_t spline = 0;           // for SplineComponent: index into the splines,
+                                            // for PointCall into the point functions
+        int component = 0;                  // for SplineComponent, PointCall
     };
 
     // One output per function, in order.
@@ -51,6 +53,14 @@ class TimeTape {
     // The constant value of an output; only valid when is_constant(output).
     double constant(std::size_t output) const { return code_[outputs_[output]].constant; }
     const std::vector<Instruction>& instructions() const { return code_; }
+    // Whether an output may change with t: the tape reads clock, or calls a
+    // point function that moves.
+    bool reads_time() const;
+    // Whether every point function it calls bounds itself
+    // (PointFunction::bounded): then its Interval evaluation is a bound.
+    bool point_functions_bounded() const;
+    // The first point function it calls that cannot bound itself, or null.
+    const PointFunction* unbounded_point_function() const;
 
     // Evaluate all outputs at t (a point, an interval of times, or a point
     // with derivative 1). scratch must hold size() numbers.
@@ -75,11 +85,23 @@ class TimeTape {
     IntervalJet spline_value(const Instruction& in, const IntervalJet& p) const;
     PointRange spline_value(const Instruction& in, const PointRange& p) const;
 
+    // PointCall at (x, y, z) (and the time t, for the derivative in t).
+    double point_value(const Instruction& in, double t, double x, double y, double z) const;
+    Interval point_value(const Instruction& in, const Interval& t, const Interval& x,
+                         const Interval& y, const Interval& z) const;
+    Dual point_value(const Instruction& in, const Dual& t, const Dual& x, const Dual& y,
+                     const Dual& z) const;
+    IntervalJet point_value(const Instruction& in, const IntervalJet& t, const IntervalJet& x,
+                            const IntervalJet& y, const IntervalJet& z) const;
+    PointRange point_value(const Instruction& in, const PointRange& t, const PointRange& x,
+                           const PointRange& y, const PointRange& z) const;
+
     std::vector<Instruction> code_;
     std::vector<std::uint32_t> outputs_;
     int argument_count_ = 0;
     std::vector<std::shared_ptr<const Spline>> splines_;
     std::vector<SplineBounds> spline_bounds_;  // beside splines_
+    std::vector<std::shared_ptr<const PointFunction>> point_functions_;
 };
 
 // Defined in time_tape.cpp for these three number types.

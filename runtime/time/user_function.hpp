@@ -26,6 +26,10 @@ namespace hexant::runtime {
 struct UserFunction {
     std::vector<std::string> parameters;  // names in order; x, y, z unless given
     TimeFunction body;                    // Argument(k) is parameters[k]
+    // A function of a vector's value (a pigment function's five channels,
+    // runtime/texture/pigment_function.hpp): its components, each a body;
+    // `body` is then unused. Empty for a float function.
+    std::vector<TimeFunction> components;
     // Set for an internal function hexant lacks ("f_boy_surface"): the
     // declaration reads (functions.inc declares them all), a call is an error.
     std::string unimplemented;
@@ -39,11 +43,10 @@ class SpaceFunction {
     explicit SpaceFunction(const TimeFunction& body)
         : tape_(std::make_shared<const TimeTape>(TimeTape::compile({body}))) {}
 
-    bool depends_on_time() const {
-        for (const auto& in : tape_->instructions())
-            if (in.op == TimeOp::Clock) return true;
-        return false;
-    }
+    bool depends_on_time() const { return tape_->reads_time(); }
+    // Null, or a function it calls that has no interval bound (a pigment):
+    // then over() is no bound.
+    const PointFunction* unbounded_part() const { return tape_->unbounded_point_function(); }
     std::size_t size() const { return tape_->size(); }
 
     // f(p) at time t.

@@ -5,7 +5,9 @@
 // matches finite differences where the function is smooth.
 #include "runtime/time/time_tape.hpp"
 
+#include <array>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <random>
 #include <vector>
@@ -16,6 +18,7 @@
 #include "runtime/time/compiled_function.hpp"
 #include "runtime/time/dual.hpp"
 #include "runtime/time/interval.hpp"
+#include "runtime/time/point_function.hpp"
 #include "runtime/time/time_function.hpp"
 #include "runtime/time/time_ops.hpp"
 #include "runtime/time/time_ops_generic.hpp"
@@ -358,4 +361,83 @@ TEST_CASE("compiled functions skip the tape when constant", "[runtime][time]") {
     const CompiledVector3 still(hexant::runtime::Vector3Function{{1.0, 2.0, 3.0}});
     CHECK(still.is_constant());
     CHECK(still.at(0.0) == glm::dvec3(1, 2, 3));
+}
+
+namespace {
+
+// f(p, t) = p.x * p.y + t * p.z, with its interval bound and gradient.
+struct TestPointFunction final : hexant::runtime::PointFunction {
+    bool moves = true;
+    std::string name() const override { return "test function"; }
+    int components() const override { return 1; }
+    bool depends_on_time() const override { return moves; }
+    double at(int, const glm::dvec3& p, double t) const override {
+        return p.x * p.y + (moves ? t : 0.0) * p.z;
+    }
+    bool bounded() const override { return true; }
+    Interval over(int, const std::array<Interval, 3>& p, const Interval& t) const override {
+        return p[0] * p[1] + (moves ? t : Interval(0.0)) * p[2];
+    }
+    std::array<double, 4> gradient(int, const glm::dvec3& p, double t) const override {
+        return {p.y, p.x, moves ? t : 0.0, moves ? p.z : 0.0};
+    }
+};
+
+// A function with no bound (a pigment's kind).
+struct UnboundedPointFunction final : hexant::runtime::PointFunction {
+    std::string name() const override { return "unbounded"; }
+    int components() const override { return 1; }
+    bool depends_on_time() const override { return false; }
+    double at(int, const glm::dvec3& p, double) const override { return p.x; }
+};
+
+}  // namespace
+
+TEST_CASE("a point call hands its point and time to its function", "[runtime][time]") {
+    using hexant::runtime::TimeOp;
+    using hexant::runtime::TimeTape;
+    const auto f = std::make_shared<const TestPointFunction>();
+    const TimeFunction t = TimeFunction::clock();
+    // f(t, 2t, 1) = 2 t^2 + t.
+    const TimeFunction g = TimeFunction::point_call(f, 0, t, t * 2.0, 1.0);
+    REQUIRE_FALSE(g.is_constant());
+    CHECK(g(0.5) == 1.0);
+    const TimeTape tape = TimeTape::compile({g});
+    CHECK(tape.reads_time());
+    CHECK(tape.point_functions_bounded());
+    double out = 0.0;
+    tape.evaluate<double>(0.75, &out);
+    CHECK(out == g(0.75));
+    Dual d(0.0);
+    tape.evaluate<Dual>(Dual(0.75, 1.0), &d);
+    CHECK(d.v == g(0.75));
+    CHECK(d.d == Approx(4 * 0.75 + 1));
+    Interval range(0.0);
+    tape.evaluate<Interval>(Interval(0.25, 0.5), &range);
+    for (double s = 0.25; s <= 0.5; s += 1.0 / 64) CHECK(range.contains(g(s)));
+
+    // A function of (x, y, z): a call substitutes its arguments.
+    const TimeFunction body = TimeFunction::point_call(
+        f, 0, TimeFunction::argument(0), TimeFunction::argument(1), TimeFunction::argument(2));
+    const TimeFunction call = hexant::runtime::substitute_arguments(body, {2.0, 3.0, t});
+    CHECK(call(0.5) == 6.25);
+    // A still function at a constant point folds to a number.
+    auto still = std::make_shared<TestPointFunction>();
+    still->moves = false;
+    const TimeFunction folded = TimeFunction::point_call(still, 0, 2.0, 3.0, 4.0);
+    REQUIRE(folded.is_constant());
+    CHECK(folded.constant() == 6.0);
+
+    // Without a bound the interval is everything and the tape says so.
+    const auto loose = std::make_shared<const UnboundedPointFunction>();
+    const TimeTape unbounded = TimeTape::compile(
+        {TimeFunction::point_call(loose, 0, TimeFunction::argument(0), 1.0, 1.0)});
+    CHECK(unbounded.unbounded_point_function() == loose.get());
+    CHECK_FALSE(unbounded.reads_time());
+    Interval everything(0.0);
+    const Interval x(0.0, 1.0);
+    std::vector<Interval> scratch(unbounded.size());
+    unbounded.evaluate_with<Interval>(Interval(0.0, 1.0), &x, &everything, scratch.data());
+    CHECK(everything.lo == -std::numeric_limits<double>::infinity());
+    CHECK(everything.hi == std::numeric_limits<double>::infinity());
 }

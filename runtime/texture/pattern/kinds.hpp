@@ -16,6 +16,7 @@
 #include "runtime/texture/pattern/kinds/crackle.hpp"
 #include "runtime/texture/pattern/kinds/cylindrical.hpp"
 #include "runtime/texture/pattern/kinds/dents.hpp"
+#include "runtime/texture/pattern/kinds/function.hpp"
 #include "runtime/texture/pattern/kinds/gradient.hpp"
 #include "runtime/texture/pattern/kinds/granite.hpp"
 #include "runtime/texture/pattern/kinds/hexagon.hpp"
@@ -57,6 +58,7 @@ using PatternKinds = PatternKindList<
     kinds::Crackle,
     kinds::Cylindrical,
     kinds::Dents,
+    kinds::FunctionPattern,
     kinds::Gradient,
     kinds::Granite,
     kinds::Hexagon,

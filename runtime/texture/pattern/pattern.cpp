@@ -27,6 +27,7 @@ bool Pattern::depends_on_time() const {
     for (const TimeFunction& n : more)
         if (n.depends_on_time()) return true;
     if (turbulence && turbulence->depends_on_time()) return true;
+    if (function && function->depends_on_time()) return true;
     for (const Warp& w : warps)
         if (w.transform ? w.transform->depends_on_time() : w.turbulence.depends_on_time())
             return true;

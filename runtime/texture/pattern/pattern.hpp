@@ -27,6 +27,7 @@
 
 #include "runtime/motion/transform.hpp"
 #include "runtime/texture/pattern/noise.hpp"
+#include "runtime/time/user_function.hpp"
 #include "runtime/time/vector_function.hpp"
 
 namespace hexant::runtime {
@@ -88,6 +89,8 @@ struct Values {
     // read: set for each evaluation, null where there is none.
     const Hit* hit = nullptr;
     const PigmentSource* pigment = nullptr;
+    // The function pattern's function of (x, y, z) and time.
+    const SpaceFunction* function = nullptr;
     bool has_turbulence = false;  // classic turbulence given
     glm::dvec3 turbulence{0.0};
     Octaves octaves;
@@ -185,6 +188,8 @@ struct Pattern {
     std::array<TimeFunction, 4> more{};
     // pigment_pattern's pigment (its value is the pigment's grey).
     std::shared_ptr<const Pigment> pigment;
+    // The function pattern's function.
+    std::shared_ptr<const SpaceFunction> function;
 
     // A pattern of `kind` with its defaults.
     static Pattern of(const Kind& kind);
