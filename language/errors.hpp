@@ -114,6 +114,11 @@ HEXANT_ERROR(object_close, "expected '}' or a modifier that belongs in this obje
 HEXANT_ERROR(function_parameter, "expected a parameter's name after ','");
 HEXANT_ERROR(function_internal_number, "expected internal()'s number");
 HEXANT_ERROR(function_close, "expected '}' to end the function's body");
+HEXANT_ERROR(height_field_function_size,
+             "expected the height_field function's grid size: function WIDTH, HEIGHT { }");
+HEXANT_ERROR(height_field_function_body,
+             "expected the height_field function's body in braces: an expression of x and y, "
+             "or a pigment { }");
 HEXANT_ERROR(contained_by_shape, "expected box { corner, corner } or sphere { centre, radius }");
 HEXANT_ERROR(function_content, "expected the function's body, an expression of its parameters");
 HEXANT_ERROR(object_base, "expected an object or a declared object's name");

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "language/value_ops.hpp"
+#include "runtime/texture/pattern/noise_function.hpp"
 
 namespace hexant::language {
 
@@ -203,6 +204,16 @@ const std::array<Internal, 79>& internals() {
 
 }  // namespace
 
+std::shared_ptr<const runtime::PointFunction> noise_function(int generator) {
+    // (One per generator, so that tapes calling it share it.)
+    static const std::array<std::shared_ptr<const runtime::PointFunction>, 4> all = {
+        std::make_shared<const runtime::pattern::NoiseFunction>(0),
+        std::make_shared<const runtime::pattern::NoiseFunction>(1),
+        std::make_shared<const runtime::pattern::NoiseFunction>(2),
+        std::make_shared<const runtime::pattern::NoiseFunction>(3)};
+    return all[static_cast<std::size_t>(generator & 3)];
+}
+
 std::shared_ptr<const runtime::UserFunction> internal_function(int n) {
     const auto& table = internals();
     if (n < 0 || n >= static_cast<int>(table.size()))
@@ -213,6 +224,15 @@ std::shared_ptr<const runtime::UserFunction> internal_function(int n) {
     auto f = std::make_shared<runtime::UserFunction>();
     f->parameters = {"x", "y", "z"};
     for (int i = 0; i < entry.extra; ++i) f->parameters.push_back("P" + std::to_string(i));
+    if (entry.name == std::string_view("f_noise3d") ||
+        entry.name == std::string_view("f_noise_generator")) {
+        f->noise = entry.extra == 0 ? runtime::UserFunction::Noise::SceneGenerator
+                                    : runtime::UserFunction::Noise::ArgumentGenerator;
+        f->body = TimeFunction::point_call(noise_function(runtime::pattern::kDefaultNoiseGenerator),
+                                           0, TimeFunction::argument(0), TimeFunction::argument(1),
+                                           TimeFunction::argument(2));
+        return f;
+    }
     if (!entry.build) {
         f->unimplemented = std::string(entry.name) + " (internal(" + std::to_string(n) + "))";
         return f;

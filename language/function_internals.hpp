@@ -14,5 +14,8 @@ namespace hexant::language {
 // Internal function N as a user function. Throws ValueError for an N that
 // POV-Ray 3.7 does not have.
 std::shared_ptr<const runtime::UserFunction> internal_function(int n);
+// POV-Ray's noise with `generator` (taken & 3, as f_noise_generator does)
+// as a function a user function calls (runtime/texture/pattern/noise_function.hpp).
+std::shared_ptr<const runtime::PointFunction> noise_function(int generator);
 
 }  // namespace hexant::language

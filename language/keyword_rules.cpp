@@ -313,7 +313,7 @@ constexpr auto kRules = std::to_array<KeywordRuleEntry>({
     {"parallel", KeywordRule::Rendered, ""},
     {"parametric", KeywordRule::Refused, ""},
     {"pass_through", KeywordRule::Warned, "inside photons { }, which is warned as a whole"},
-    {"pattern", KeywordRule::Refused, ""},
+    {"pattern", KeywordRule::Rendered, ""},
     {"pavement", KeywordRule::Refused, ""},
     {"perspective", KeywordRule::Rendered, ""},
     {"pgm", KeywordRule::Refused, ""},

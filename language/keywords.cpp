@@ -234,6 +234,7 @@ constexpr auto kReserved = std::to_array<std::string_view>({
     "panoramic",
     "parallel",
     "parametric",
+    "pattern",
     "pavement",
     "perspective",
     "pgm",

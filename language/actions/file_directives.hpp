@@ -3,6 +3,7 @@
 // Part of the actions (language/actions.hpp).
 #pragma once
 
+#include "language/actions/height_field_function.hpp"
 #include "language/actions/polys.hpp"
 #include "language/file_io.hpp"
 

@@ -90,4 +90,46 @@ struct action<g::function_pigment> {
     }
 };
 
+// function { pattern { } }: F(x, y, z) is the pattern's value, read through
+// a grey ramp (exact for values in [0, 1]: 0 + v * (1 - 0)), everything
+// else of a pigment's (transforms, warps, turbulence) as written.
+template <>
+struct action<g::function_pattern_value_open> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, Interpreter& st) {
+        st.blocks.open(std::in_place_type<runtime::Pigment>);
+    }
+};
+template <>
+struct action<g::function_pattern_value> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, Interpreter& st) {
+        auto& written = st.blocks.edit<runtime::Pigment>(in.position(), "a pattern function");
+        if (written.patterned.kind == nullptr)
+            throw ValueError("a pattern function needs its pattern: function { pattern { bozo } }");
+        close_pigment(written);
+        runtime::Pigment pigment = std::move(written);
+        st.blocks.close();
+        pigment.pigment_map.clear();
+        runtime::ColourMapEntry black, white;
+        black.value = 0.0;
+        white.value = 1.0;
+        for (std::size_t c = 0; c < 3; ++c) white.colour.c[c] = 1.0;
+        pigment.colour_map.entries.clear();
+        pigment.colour_map.entries.push_back(black);
+        pigment.colour_map.entries.push_back(white);
+        std::shared_ptr<const runtime::PointFunction> value;
+        try {
+            value = std::make_shared<const runtime::PigmentFunction>(pigment, "pattern function");
+        } catch (const runtime::ObjectError& e) {
+            throw UnsupportedError(std::string("a pattern function's pattern: ") + e.what());
+        }
+        auto f = std::make_shared<runtime::UserFunction>();
+        f->parameters = {"x", "y", "z"};
+        f->body = TimeFunction::point_call(value, 0, TimeFunction::argument(0),
+                                           TimeFunction::argument(1), TimeFunction::argument(2));
+        st.values.push(Value{std::shared_ptr<const runtime::UserFunction>(std::move(f))});
+    }
+};
+
 }  // namespace hexant::language

@@ -4,6 +4,7 @@
 
 #include "language/actions/action.hpp"
 #include "language/array_index.hpp"
+#include "language/function_internals.hpp"
 
 namespace hexant::language {
 
@@ -504,6 +505,20 @@ inline Value call_user_function(Interpreter& st,
                          " arguments, not " + std::to_string(args.size()));
     std::vector<TimeFunction> values;
     for (const Value& a : args) values.push_back(to_float(a, "a function's argument"));
+    if (f->noise != runtime::UserFunction::Noise::None) {
+        int generator = st.scene.global.noise_generator;
+        if (f->noise == runtime::UserFunction::Noise::ArgumentGenerator) {
+            const TimeFunction& g = values[3];
+            if (!g.is_constant())
+                throw UnsupportedError(
+                    "f_noise_generator's generator moves with clock; hexant needs it fixed");
+            if (!(std::fabs(g.constant()) < 1e9))
+                throw ValueError("f_noise_generator's generator is 1, 2 or 3");
+            generator = static_cast<int>(g.constant());
+        }
+        return Value{TimeFunction::point_call(noise_function(generator), 0, values[0], values[1],
+                                              values[2])};
+    }
     if (!f->components.empty()) {
         // (A pigment function's colour: its components, read by .red, .x, ...)
         Vector v;

@@ -242,8 +242,29 @@ struct poly_values
 struct poly_block : p::seq<poly_open, p::opt<p::not_at<p::one<'<'>>, poly_order, p::opt<comma>>,
                            p::must<poly_values>, object_modifiers, p::must<object_close>> {};
 
-struct object_value : p::sor<mesh_block, mesh2_block, blob_block, isosurface_block, poly_block,
-                             shape_block, csg_block, object_block, light_block> {};
+// height_field { function W, H { F } modifiers }, F an expression of x
+// and y or a pigment { }: the heights of F sampled on a W x H grid
+// (POV-Ray's Parse_Image FUNCTION_TOKEN, Make_Pattern_Image;
+// language/actions/height_field_function.hpp).
+struct height_field_function_head
+    : p::seq<TAO_PEGTL_KEYWORD("height_field"), ws, lbrace, kw_function> {};
+struct height_field_function_open : p::seq<height_field_function_head> {};
+struct height_field_function_size : p::seq<sum> {};
+struct height_field_function_pigment
+    : p::seq<lbrace, p::at<kw_pigment>, pigment_block, p::must<rbrace>> {};
+struct height_field_function_expression
+    : p::seq<lbrace, function_open, p::must<function_content>, p::must<function_close>> {};
+struct height_field_function_body
+    : p::sor<height_field_function_pigment, height_field_function_expression> {};
+struct height_field_function_block
+    : p::seq<p::at<height_field_function_head>, height_field_function_open,
+             p::must<height_field_function_size>, p::opt<comma>,
+             p::must<height_field_function_size>, p::must<height_field_function_body>,
+             object_modifiers, p::must<object_close>> {};
+
+struct object_value
+    : p::sor<mesh_block, mesh2_block, blob_block, isosurface_block, poly_block,
+             height_field_function_block, shape_block, csg_block, object_block, light_block> {};
 
 // Things that modify an object, in any order.
 struct object_texture : p::seq<texture_block> {};

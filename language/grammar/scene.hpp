@@ -165,7 +165,7 @@ struct texture_value : p::seq<texture_block, p::star<texture_layer>> {};
 struct value : p::sor<object_value, camera_block, texture_value, pigment_block, normal_block,
                       colour_map_block, sky_sphere_block, finish_block, interior_block,
                       material_value, transform_value, array_value, spline_block, function_pigment,
-                      function_value, unsupported_block, expression> {};
+                      function_pattern_value, function_value, unsupported_block, expression> {};
 
 // A macro called where a value is wanted holds values (and directives);
 // a ';' after its value is read and dropped, as POV-Ray does with a macro

@@ -223,6 +223,13 @@ struct pigment_block
 // (runtime/texture/pigment_function.hpp).
 struct function_pigment_open : p::seq<kw_function, lbrace, p::at<kw_pigment>> {};
 struct function_pigment : p::seq<function_pigment_open, pigment_block, p::must<rbrace>> {};
+// function { pattern { PATTERN modifiers } }: a pattern function, F(x, y, z)
+// the pattern's value there (POV-Ray's f_pattern).
+struct function_pattern_value_open
+    : p::seq<kw_function, lbrace, TAO_PEGTL_KEYWORD("pattern"), ws, lbrace> {};
+struct function_pattern_value
+    : p::seq<function_pattern_value_open, p::star<pigment_item>, p::must<rbrace>, p::must<rbrace>> {
+};
 
 struct finish_setting_name : p::sor<TAO_PEGTL_KEYWORD("ambient"), TAO_PEGTL_KEYWORD("diffuse"),
                                     TAO_PEGTL_KEYWORD("brilliance"),

@@ -14,9 +14,10 @@ Texture texture_of(const Pigment& pigment) {
 
 }  // namespace
 
-PigmentFunction::PigmentFunction(const Pigment& pigment)
+PigmentFunction::PigmentFunction(const Pigment& pigment, std::string name)
     : evaluator_(std::make_unique<const TextureEvaluator>(texture_of(pigment), std::nullopt)),
-      depends_on_time_(pigment.depends_on_time()) {}
+      depends_on_time_(pigment.depends_on_time()),
+      name_(std::move(name)) {}
 
 PigmentFunction::~PigmentFunction() = default;
 

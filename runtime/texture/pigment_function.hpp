@@ -21,10 +21,12 @@ class TextureEvaluator;
 class PigmentFunction final : public PointFunction {
   public:
     // Throws ObjectError, naming the place, for a pattern hexant lacks.
-    explicit PigmentFunction(const Pigment& pigment);
+    // `name` for messages: a pattern function is one too (its pigment a
+    // grey ramp of the pattern).
+    explicit PigmentFunction(const Pigment& pigment, std::string name = "pigment function");
     ~PigmentFunction() override;
 
-    std::string name() const override { return "pigment function"; }
+    std::string name() const override { return name_; }
     int components() const override { return 5; }
     bool depends_on_time() const override { return depends_on_time_; }
     double at(int component, const glm::dvec3& p, double t) const override;
@@ -32,6 +34,7 @@ class PigmentFunction final : public PointFunction {
   private:
     std::unique_ptr<const TextureEvaluator> evaluator_;
     bool depends_on_time_ = false;
+    std::string name_;
 };
 
 }  // namespace hexant::runtime

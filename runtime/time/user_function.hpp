@@ -30,6 +30,11 @@ struct UserFunction {
     // runtime/texture/pigment_function.hpp): its components, each a body;
     // `body` is then unused. Empty for a float function.
     std::vector<TimeFunction> components;
+    // functions.inc's f_noise3d and f_noise_generator: POV-Ray's noise, with
+    // the scene's generator (read where the function is called) or the
+    // call's fourth argument (language/actions/literals.hpp,
+    // call_user_function). `body` is the noise of the default generator.
+    enum class Noise { None, SceneGenerator, ArgumentGenerator } noise = Noise::None;
     // Set for an internal function hexant lacks ("f_boy_surface"): the
     // declaration reads (functions.inc declares them all), a call is an error.
     std::string unimplemented;

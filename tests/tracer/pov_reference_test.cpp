@@ -237,6 +237,19 @@ TEST_CASE("isosurface agrees with POV-Ray 3.7's render of it, at two clocks",
     check_stills("shapes", "isosurface", {"0", "0.5"});
 }
 
+TEST_CASE("noise isosurfaces, function height fields and pattern functions agree with POV-Ray",
+          "[tracer][pov][isosurface][function]") {
+    // shapes/functions.pov: isosurfaces of f_noise3d (moving with clock)
+    // and of f_noise_generator's Perlin noise, height fields of a float
+    // function and of a pigment function, and a floor coloured through a
+    // pattern function, at clock 0 and 0.5. The still's tolerance. When
+    // written, one pixel was 7 steps off, on a noise isosurface's edge
+    // (hexant shades with the function's exact gradient, POV-Ray with a
+    // forward difference of step `accuracy`); a wrong noise generator,
+    // bound or grid orientation moves hundreds.
+    check_stills("shapes", "functions", {"0", "0.5"});
+}
+
 TEST_CASE("clipped_by and bounded_by agree with POV-Ray 3.7's render of them, at two clocks",
           "[tracer][pov][clipped_by]") {
     // shapes/clipped_by.pov: a sphere cut by a plane that sinks with clock,

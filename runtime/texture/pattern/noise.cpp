@@ -218,6 +218,109 @@ double noise(const glm::dvec3& p, int generator) {
     return clamp01(sum + 0.5);
 }
 
+namespace {
+
+double dscurve(double a) {
+    return 6.0 * a * (1.0 - a);
+}
+
+// d/dp of original_noise (before its range correction and clamp).
+glm::dvec3 original_gradient(const glm::dvec3& p) {
+    const Cell c = cell_of(p);
+    const double f[3] = {c.lx.fraction, c.ly.fraction, c.lz.fraction};
+    const double s[3] = {c.sx, c.sy, c.sz};
+    const double ds[3] = {dscurve(f[0]), dscurve(f[1]), dscurve(f[2])};
+    const int hashes[2][2] = {{c.h00, c.h01}, {c.h10, c.h11}};  // [x side][y side]
+    glm::dvec3 g(0.0);
+    for (int hx = 0; hx < 2; ++hx)
+        for (int hy = 0; hy < 2; ++hy)
+            for (int hz = 0; hz < 2; ++hz) {
+                const int side[3] = {hx, hy, hz};
+                double w[3], dw[3], o[3];
+                for (int k = 0; k < 3; ++k) {
+                    w[k] = side[k] ? s[k] : 1.0 - s[k];
+                    dw[k] = side[k] ? ds[k] : -ds[k];
+                    o[k] = side[k] ? f[k] - 1.0 : f[k];
+                }
+                const double* m = entry(hashes[hx][hy], c.lz.index + hz);
+                const double a = m[1] + m[2] * o[0] + m[4] * o[1] + m[6] * o[2];
+                const double weight = w[0] * w[1] * w[2];
+                g.x += dw[0] * w[1] * w[2] * a + weight * m[2];
+                g.y += w[0] * dw[1] * w[2] * a + weight * m[4];
+                g.z += w[0] * w[1] * dw[2] * a + weight * m[6];
+            }
+    return g;
+}
+
+// d/dp of solid_noise.
+glm::dvec3 solid_gradient(const glm::dvec3& p) {
+    const Tables& t = tables();
+    int b[2][3];
+    double r[2][3];
+    for (int i = 0; i < 3; ++i) {
+        const double v = p[i] + kRollover;
+        const double f = std::floor(v);
+        const long long it = std::fabs(f) < 4.0e18 ? static_cast<long long>(f) : 0;
+        b[0][i] = static_cast<int>(it & (kSolidEntries - 1));
+        b[1][i] = (b[0][i] + 1) & (kSolidEntries - 1);
+        r[0][i] = v - static_cast<double>(it);
+        r[1][i] = r[0][i] - 1.0;
+    }
+    const auto perm = [&](int k) { return t.permutation[static_cast<std::size_t>(k)]; };
+    glm::dvec3 g(0.0);
+    for (int hx = 0; hx < 2; ++hx)
+        for (int hy = 0; hy < 2; ++hy)
+            for (int hz = 0; hz < 2; ++hz) {
+                const int side[3] = {hx, hy, hz};
+                double w[3], dw[3], o[3];
+                for (int k = 0; k < 3; ++k) {
+                    const double sk = scurve(r[0][k]);
+                    w[k] = side[k] ? sk : 1.0 - sk;
+                    dw[k] = side[k] ? dscurve(r[0][k]) : -dscurve(r[0][k]);
+                    o[k] = r[side[k]][k];
+                }
+                const int k = perm(perm(b[hx][0]) + b[hy][1]) + b[hz][2];
+                const glm::dvec3& q = t.gradients[static_cast<std::size_t>(k)];
+                const double a = o[0] * q.x + o[1] * q.y + o[2] * q.z;
+                const double weight = w[0] * w[1] * w[2];
+                g.x += dw[0] * w[1] * w[2] * a + weight * q.x;
+                g.y += w[0] * dw[1] * w[2] * a + weight * q.y;
+                g.z += w[0] * w[1] * dw[2] * a + weight * q.z;
+            }
+    return g;
+}
+
+}  // namespace
+
+glm::dvec3 noise_gradient(const glm::dvec3& p, int generator) {
+    if (generator == 3) {
+        const double v = 0.5 * (1.59 * solid_noise(p) + 0.985);
+        if (v < 0.0 || v > 1.0) return glm::dvec3(0.0);
+        return solid_gradient(p) * (0.5 * 1.59);
+    }
+    double v = original_noise(p);
+    v = generator == 2 ? (v + 1.05242) * 0.48985582 : v + 0.5;
+    if (v < 0.0 || v > 1.0) return glm::dvec3(0.0);
+    return original_gradient(p) * (generator == 2 ? 0.48985582 : 1.0);
+}
+
+double noise_slope_bound(int generator) {
+    static const double original = [] {
+        const Tables& t = tables();
+        double linear = 0.0, slope = 0.0;
+        for (int i = 0; i < 256; ++i) {
+            const double* m = &t.offsets[static_cast<std::size_t>(i * 2)];
+            linear = std::max(
+                linear, std::fabs(m[1]) + std::fabs(m[2]) + std::fabs(m[4]) + std::fabs(m[6]));
+            slope = std::max({slope, std::fabs(m[2]), std::fabs(m[4]), std::fabs(m[6])});
+        }
+        return 3.0 * linear + slope;
+    }();
+    // Solid noise: unit gradients, offsets within a unit cell (|o| <= sqrt 3).
+    if (generator == 3) return 0.5 * 1.59 * (3.0 * std::sqrt(3.0) + 1.0);
+    return original * (generator == 2 ? 0.48985582 : 1.0);
+}
+
 glm::dvec3 dnoise(const glm::dvec3& p) {
     const Cell c = cell_of(p);
     const double x0 = c.lx.fraction, y0 = c.ly.fraction, z0 = c.lz.fraction;

@@ -17,6 +17,17 @@ inline constexpr int kDefaultNoiseGenerator = 2;
 
 // The scalar noise at p: in [0, 1].
 double noise(const glm::dvec3& p, int generator);
+// The gradient of noise(p, generator), from the same terms (0 where the
+// value is clamped).
+glm::dvec3 noise_gradient(const glm::dvec3& p, int generator);
+// A bound on |d noise / d axis| for each axis, anywhere: noise is
+// continuous, and smooth within each lattice cell, so over a box of
+// half-widths h around c it lies within noise(c) +- this * (hx + hy + hz).
+// From the tables: each cell's weights' derivatives sum to at most
+// 2 * max scurve' = 3 along an axis, each corner's linear term is at most
+// max(|m1| + |m2| + |m4| + |m6|) there, and the weights sum to 1 over the
+// corners' slopes.
+double noise_slope_bound(int generator);
 // The vector noise at p (each component about in [-1, 1]); POV-Ray has
 // one generator for it.
 glm::dvec3 dnoise(const glm::dvec3& p);
