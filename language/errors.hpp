@@ -73,10 +73,14 @@ HEXANT_ERROR(deformation_amount, "expected an amount after the deformation's axi
 HEXANT_ERROR(pattern_setting_value, "expected a value after the pattern modifier");
 HEXANT_ERROR(shape_vectors_setting_value,
              "expected a <u, v> vector after uv_vectors (three, one a corner)");
-HEXANT_ERROR(warp_turbulence_keyword,
-             "expected turbulence in warp { } (hexant's warps are turbulence; repeat, black_hole "
-             "and the mapping warps are not supported)");
+HEXANT_ERROR(warp_kind,
+             "expected a warp in warp { }: turbulence, repeat, black_hole, planar, cylindrical, "
+             "spherical, toroidal or cubic");
 HEXANT_ERROR(warp_turbulence, "expected the turbulence's amount (a vector or a number)");
+HEXANT_ERROR(warp_repeat_direction, "expected the repeat's direction (a vector along one axis)");
+HEXANT_ERROR(warp_black_hole_center, "expected the black hole's centre (a vector)");
+HEXANT_ERROR(warp_black_hole_radius, "expected the black hole's radius after its centre");
+HEXANT_ERROR(warp_planar_distance, "expected the planar warp's distance after its normal");
 HEXANT_ERROR(colour_map_value, "expected a value and a colour in the colour map's entry");
 HEXANT_ERROR(pigment_map_value, "expected the value of the pigment map's entry");
 HEXANT_ERROR(slope_written, "expected slope's direction, or its block { DIRECTION ... }");

@@ -2,7 +2,7 @@
 // Part of the actions (language/actions.hpp).
 #pragma once
 
-#include "language/actions/patterns.hpp"
+#include "language/actions/warps.hpp"
 
 namespace hexant::language {
 

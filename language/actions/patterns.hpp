@@ -454,47 +454,6 @@ struct action<g::pattern_wave> {
     }
 };
 
-template <>
-struct action<g::warp_open> {
-    template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        // The transforms written so far come before this warp (applied
-        // after it, world to pattern): they become a step of their own.
-        const PatternSlot slot = pattern_slot(st, in.position(), "warp");
-        if (!slot.transform.empty()) {
-            runtime::pattern::Warp step;
-            step.transform = slot.transform;
-            slot.pattern.warps.push_back(std::move(step));
-            slot.transform = {};
-        }
-        slot.pattern.warps.push_back(runtime::pattern::Warp{});
-    }
-};
-template <>
-struct action<g::warp_turbulence> {
-    template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.values.pop();
-        pattern_slot(st, in.position(), "warp").pattern.warps.back().turbulence.amount =
-            to_vector3(v, "warp's turbulence");
-    }
-};
-template <>
-struct action<g::warp_setting> {
-    template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.values.pop();
-        const std::string name = st.values.pop_name();
-        auto& turbulence = pattern_slot(st, in.position(), "warp").pattern.warps.back().turbulence;
-        if (name == "octaves")
-            turbulence.octaves = to_float(v, "octaves");
-        else if (name == "omega")
-            turbulence.omega = to_float(v, "omega");
-        else
-            turbulence.lambda = to_float(v, "lambda");
-    }
-};
-
 // ---- normal { }
 template <>
 struct action<g::normal_open> {

@@ -60,15 +60,67 @@ struct pattern_wave_name
              TAO_PEGTL_KEYWORD("triangle_wave"), TAO_PEGTL_KEYWORD("scallop_wave"),
              TAO_PEGTL_KEYWORD("cubic_wave"), TAO_PEGTL_KEYWORD("poly_wave")> {};
 struct pattern_wave : p::seq<pattern_wave_name, ws, frame_open, p::opt<pattern_argument>> {};
-// warp { turbulence <x, y, z> [octaves N] [omega W] [lambda L] }
+// warp { ... } (POV-Ray's Parse_Warp): one warp a block, each kind's
+// settings after its keyword (runtime/texture/pattern/warps/).
+struct warp_open : p::seq<TAO_PEGTL_KEYWORD("warp"), ws, p::must<lbrace>> {};
+// A warp's setting with a value; Name lists those of its kind.
+template <class Name>
+struct warp_option : p::seq<Name, ws, p::must<pattern_setting_value>> {};
+// turbulence <x, y, z> [octaves N] [omega W] [lambda L]
 struct warp_turbulence_keyword : TAO_PEGTL_KEYWORD("turbulence") {};
 struct warp_setting_name : p::sor<TAO_PEGTL_KEYWORD("octaves"), TAO_PEGTL_KEYWORD("omega"),
                                   TAO_PEGTL_KEYWORD("lambda")> {};
 struct warp_setting : p::seq<warp_setting_name, ws, p::must<pattern_setting_value>> {};
-struct warp_open : p::seq<TAO_PEGTL_KEYWORD("warp"), ws, p::must<lbrace>> {};
 struct warp_turbulence : p::seq<pattern_setting_value> {};
-struct warp_block : p::seq<warp_open, p::must<warp_turbulence_keyword>, ws,
-                           p::must<warp_turbulence>, p::star<warp_setting>, p::must<rbrace>> {};
+struct warp_turbulence_body
+    : p::seq<warp_turbulence_keyword, ws, p::must<warp_turbulence>, p::star<warp_setting>> {};
+// repeat <direction> [offset <v>] [flip <v>]
+struct warp_repeat_keyword : TAO_PEGTL_KEYWORD("repeat") {};
+struct warp_repeat_direction : p::seq<pattern_setting_value> {};
+struct warp_repeat_option_name : p::sor<TAO_PEGTL_KEYWORD("offset"), TAO_PEGTL_KEYWORD("flip")> {};
+struct warp_repeat_body : p::seq<warp_repeat_keyword, ws, p::must<warp_repeat_direction>,
+                                 p::star<warp_option<warp_repeat_option_name>>> {};
+// black_hole <center> [,] radius [strength S] [falloff F] [inverse]
+// [repeat <v>] [turbulence <v>] [type T]
+struct warp_black_hole_keyword : TAO_PEGTL_KEYWORD("black_hole") {};
+struct warp_black_hole_center : p::seq<pattern_setting_value> {};
+struct warp_black_hole_radius : p::seq<pattern_setting_value> {};
+struct warp_black_hole_option_name
+    : p::sor<TAO_PEGTL_KEYWORD("strength"), TAO_PEGTL_KEYWORD("falloff"),
+             TAO_PEGTL_KEYWORD("repeat"), TAO_PEGTL_KEYWORD("turbulence"),
+             TAO_PEGTL_KEYWORD("type")> {};
+struct warp_black_hole_inverse : p::seq<TAO_PEGTL_KEYWORD("inverse"), ws> {};
+struct warp_black_hole_body
+    : p::seq<warp_black_hole_keyword, ws, p::must<warp_black_hole_center>, p::opt<comma>,
+             p::must<warp_black_hole_radius>,
+             p::star<p::sor<warp_black_hole_inverse, warp_option<warp_black_hole_option_name>>>> {};
+// planar [<normal> [,] distance]
+struct warp_planar_keyword : TAO_PEGTL_KEYWORD("planar") {};
+struct warp_planar_normal : p::seq<pattern_setting_value> {};
+struct warp_planar_distance : p::seq<pattern_setting_value> {};
+struct warp_planar_body
+    : p::seq<warp_planar_keyword, ws,
+             p::opt<warp_planar_normal, p::opt<comma>, p::must<warp_planar_distance>>> {};
+// cylindrical, spherical [orientation <v>] [dist_exp E]; toroidal, which
+// takes major_radius R too; cubic
+struct warp_round_keyword
+    : p::sor<TAO_PEGTL_KEYWORD("cylindrical"), TAO_PEGTL_KEYWORD("spherical")> {};
+struct warp_round_option_name
+    : p::sor<TAO_PEGTL_KEYWORD("orientation"), TAO_PEGTL_KEYWORD("dist_exp")> {};
+struct warp_round_body
+    : p::seq<warp_round_keyword, ws, p::star<warp_option<warp_round_option_name>>> {};
+struct warp_toroidal_keyword : TAO_PEGTL_KEYWORD("toroidal") {};
+struct warp_toroidal_option_name
+    : p::sor<TAO_PEGTL_KEYWORD("orientation"), TAO_PEGTL_KEYWORD("dist_exp"),
+             TAO_PEGTL_KEYWORD("major_radius")> {};
+struct warp_toroidal_body
+    : p::seq<warp_toroidal_keyword, ws, p::star<warp_option<warp_toroidal_option_name>>> {};
+struct warp_cubic_keyword : TAO_PEGTL_KEYWORD("cubic") {};
+struct warp_cubic_body : p::seq<warp_cubic_keyword, ws> {};
+struct warp_kind : p::sor<warp_turbulence_body, warp_repeat_body, warp_black_hole_body,
+                          warp_planar_body, warp_round_body, warp_toroidal_body, warp_cubic_body> {
+};
+struct warp_block : p::seq<warp_open, p::must<warp_kind>, p::must<rbrace>> {};
 
 // What may follow a pattern of its own syntax in a normal: [,] its amount
 // (POV-Ray's Parse_Pattern: Parse_Comma, Allow_Float after any pattern).

@@ -130,6 +130,8 @@ TextureEvaluator::CompiledPattern::CompiledPattern(const pattern::Pattern& sourc
         CompiledWarp c;
         if (w.transform)
             c.transform = std::make_shared<const Motion>(*w.transform);
+        else if (w.point)
+            c.point = std::make_shared<const pattern::CompiledPointWarp>(*w.point);
         else
             c.turbulence = compile(w.turbulence);
         warps.push_back(std::move(c));
@@ -189,6 +191,8 @@ glm::dvec3 TextureEvaluator::CompiledPattern::walk(const glm::dvec3& world, doub
             const auto r = w->transform->to_object<double>({p.x, p.y, p.z}, t);
             p = {r[0], r[1], r[2]};
             if constexpr (maps) on_map(w->transform->jacobian_at(p, t));
+        } else if (w->point) {
+            p = w->point->apply(p, t);
         } else {
             const CompiledTurbulence& turb = w->turbulence;
             p = pattern::apply_turbulence(

@@ -107,8 +107,10 @@ class TextureEvaluator {
         pattern::Octaves at(double t) const;
     };
     struct CompiledWarp {
-        std::shared_ptr<const Motion> transform;  // else turbulence
+        std::shared_ptr<const Motion> transform;  // else turbulence, or `point`
         CompiledTurbulence turbulence;
+        // repeat, black_hole, a mapping warp (which turn no normal).
+        std::shared_ptr<const pattern::CompiledPointWarp> point;
     };
     struct CompiledPigment;
     struct Shared;

@@ -8,6 +8,7 @@
 // the patterns after it.
 #include <array>
 #include <string>
+#include <variant>
 
 #include <catch2/catch.hpp>
 
@@ -352,4 +353,80 @@ TEST_CASE("a colour component takes a whole sum", "[language][pattern]") {
     CHECK(texture_of(scene, 0).pigment.colours[0].c[4].constant() == Approx(0.7));
     CHECK(texture_of(scene, 1).pigment.colours[0].c[0].constant() == Approx(0.7));
     CHECK(texture_of(scene, 1).pigment.colours[0].c[1].constant() == Approx(0.5));
+}
+
+TEST_CASE("warp { } reads each of POV-Ray 3.7's warps, in the order written",
+          "[language][pattern][warp]") {
+    // Transforms written before a warp are a step of their own; the
+    // black hole's repeat and turbulence keep their order (POV-Ray's
+    // parser checks them in it); numbers may move with clock.
+    hexant::language::ParseOptions animated;
+    animated.animation.initial_frame = 1;
+    animated.animation.final_frame = 2;
+    std::ostringstream messages;
+    animated.messages = &messages;
+    const auto scene = hexant::language::parse_scene_text(R"(
+sphere { 0, 1 pigment { checker scale 2
+  warp { repeat y * 2 offset <0.5, 0, 0> flip x }
+  warp { black_hole <1, 0, 0>, 0.5 + clock turbulence <0.1, 0, 0> strength 2 repeat <3, 0, 0>
+         inverse falloff 3 type 0 }
+  rotate y * 10
+  warp { toroidal major_radius 2 dist_exp 1 orientation <0, 2, 0> }
+  warp { planar z, 1 }
+  warp { cylindrical }
+  warp { cubic }
+  warp { turbulence 0.3 octaves 2 } } }
+)",
+                                                          "test.pov", animated);
+    const auto& warps = texture_of(scene, 0).pigment.patterned.warps;
+    REQUIRE(warps.size() == 9);
+    CHECK(warps[0].transform);
+    const auto& repeat = std::get<rt::pattern::RepeatWarp>(*warps[1].point);
+    CHECK(repeat.axis == 1);
+    CHECK(repeat.width.constant() == 2.0);
+    CHECK(repeat.offset.c[0].constant() == 0.5);
+    CHECK(repeat.flip.c[0].constant() == 1.0);
+    const auto& hole = std::get<rt::pattern::BlackHoleWarp>(*warps[2].point);
+    CHECK(hole.center.c[0].constant() == 1.0);
+    CHECK(hole.radius.depends_on_time());
+    CHECK(hole.strength.constant() == 2.0);
+    CHECK(hole.falloff.constant() == 3.0);
+    CHECK(hole.inverse);
+    REQUIRE(hole.placements.size() == 2);
+    CHECK_FALSE(hole.placements[0].repeat);
+    CHECK(hole.placements[1].repeat);
+    CHECK(warps[3].transform);
+    const auto& torus = std::get<rt::pattern::MappingWarp>(*warps[4].point);
+    CHECK(torus.shape == rt::pattern::MappingShape::Toroidal);
+    CHECK(torus.major_radius.constant() == 2.0);
+    CHECK(torus.dist_exp.constant() == 1.0);
+    CHECK(torus.orientation.c[1].constant() == 2.0);  // made unit when evaluated
+    const auto& plane = std::get<rt::pattern::MappingWarp>(*warps[5].point);
+    CHECK(plane.shape == rt::pattern::MappingShape::Planar);
+    CHECK(plane.distance.constant() == 1.0);
+    CHECK(std::get<rt::pattern::MappingWarp>(*warps[6].point).shape ==
+          rt::pattern::MappingShape::Cylindrical);
+    CHECK(std::get<rt::pattern::MappingWarp>(*warps[7].point).shape ==
+          rt::pattern::MappingShape::Cubic);
+    CHECK_FALSE(warps[8].point);
+    CHECK(warps[8].turbulence.octaves.constant() == 2.0);
+}
+
+TEST_CASE("a warp's settings belong to its kind", "[language][pattern][warp]") {
+    // POV-Ray's Parse_Warp reads one warp a block, with its own settings.
+    const auto error = [](const std::string& text, const char* words) {
+        const auto e = error_of(text);
+        INFO(e.formatted());
+        CHECK(e.formatted().find(words) != std::string::npos);
+    };
+    error("sphere { 0, 1 pigment { checker warp { repeat x flip y strength 2 } } }\n",
+          "expected '}'");
+    error("sphere { 0, 1 pigment { checker warp { cubic orientation y } } }\n", "expected '}'");
+    error("sphere { 0, 1 pigment { checker warp { spherical major_radius 2 } } }\n",
+          "expected '}'");
+    error("sphere { 0, 1 pigment { checker warp { repeat x turbulence 1 } } }\n", "expected '}'");
+    error("sphere { 0, 1 pigment { checker warp { repeat x cubic } } }\n", "expected '}'");
+    error("sphere { 0, 1 pigment { checker warp { black_hole <0, 0, 0> } } }\n",
+          "black hole's radius");
+    error("sphere { 0, 1 pigment { checker warp { } } }\n", "expected a warp");
 }

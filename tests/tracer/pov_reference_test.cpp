@@ -594,6 +594,21 @@ TEST_CASE("the function pattern and pigment functions agree with POV-Ray 3.7's",
     check_stills("patterns", "function", {"0", "0.5"});
 }
 
+TEST_CASE("the warps agree with POV-Ray 3.7's", "[tracer][pov][pattern][warp]") {
+    // patterns/warps.pov: warp { repeat } with offset (moving with clock)
+    // and flip, a black hole with inverse (its strength moving), repeated
+    // black holes whose centres turbulence jitters from WarpRands (their
+    // repeat widened by Check_BH_Parameters), and the planar (its distance
+    // moving), cylindrical, spherical, toroidal (its major radius moving)
+    // and cubic warps, and a bumpy normal through a repeat warp between a
+    // scale and a turn, at clock 0 and 0.5. The still's tolerance. Before,
+    // hexant refused every one; a flip taken on the wrong copies, a repeat
+    // width not kept in single precision, the holes' centres not moved as
+    // POV-Ray's parser moves them, an angle measured from the wrong axis
+    // or a normal turned by a warp moves whole panels.
+    check_stills("patterns", "warps", {"0", "0.5"});
+}
+
 TEST_CASE("pigment_pattern agrees with POV-Ray 3.7's", "[tracer][pov][pattern]") {
     // patterns/pigment_pattern.pov: a checker's colours as greys (frequency
     // 2 wrapping them) through a colour map, a pigment_map picked by a

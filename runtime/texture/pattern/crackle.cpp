@@ -15,8 +15,6 @@
 
 namespace hexant::runtime::pattern {
 
-namespace {
-
 const std::vector<double>& pattern_rands() {
     static const std::vector<double> table = [] {
         std::mt19937 generator;  // default seed 5489, as boost::mt19937
@@ -27,6 +25,8 @@ const std::vector<double>& pattern_rands() {
     }();
     return table;
 }
+
+namespace {
 
 // The 81 cubes within a "knight's move" (no more than one coordinate 2 away).
 const std::vector<std::array<int, 3>>& neighbours() {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <vector>
 
 #include "runtime/texture/pattern/pattern.hpp"
 
@@ -37,6 +38,9 @@ double hexagon_value(const glm::dvec3& p, const Values& v);
 // crackle.cpp
 double cells_value(const glm::dvec3& p, const Values& v);
 double crackle_value(const glm::dvec3& p, const Values& v);
+// POV-Ray's PatternRands: 32,768 doubles in [0, 1) (its black hole warp's
+// WarpRands is the same sequence).
+const std::vector<double>& pattern_rands();
 // fractal_patterns.cpp
 double mandel_value(const glm::dvec3& p, const Values& v);
 // normal_patterns.cpp: the normal-only patterns' perturbations

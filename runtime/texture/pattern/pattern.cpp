@@ -29,7 +29,9 @@ bool Pattern::depends_on_time() const {
     if (turbulence && turbulence->depends_on_time()) return true;
     if (function && function->depends_on_time()) return true;
     for (const Warp& w : warps)
-        if (w.transform ? w.transform->depends_on_time() : w.turbulence.depends_on_time())
+        if (w.transform ? w.transform->depends_on_time()
+            : w.point   ? pattern::depends_on_time(*w.point)
+                        : w.turbulence.depends_on_time())
             return true;
     return false;
 }

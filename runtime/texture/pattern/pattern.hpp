@@ -27,6 +27,7 @@
 
 #include "runtime/motion/transform.hpp"
 #include "runtime/texture/pattern/noise.hpp"
+#include "runtime/texture/pattern/warps/point_warp.hpp"
 #include "runtime/time/user_function.hpp"
 #include "runtime/time/vector_function.hpp"
 
@@ -48,10 +49,12 @@ struct Turbulence {
 };
 
 // One step of a pattern's warp list, in the order written: a transform
-// (consecutive ones composed) or a `warp { turbulence ... }`.
+// (consecutive ones composed), a `warp { turbulence ... }` or one of the
+// other warps (repeat, black_hole, the mapping warps: warps/point_warp.hpp).
 struct Warp {
-    std::optional<Transform> transform;  // else turbulence
+    std::optional<Transform> transform;  // else turbulence, or `point`
     Turbulence turbulence;
+    std::optional<PointWarp> point;
 };
 
 // What a pattern may read besides its point (POV-Ray's Intersection): the
