@@ -135,6 +135,24 @@ struct action<g::spline_block> {
     }
 };
 
+// function { spline { } }: F(t) is the spline's vector at t (POV-Ray's
+// spline function), a vector of the spline's dimensions (at least 2, as
+// S(t) is).
+template <>
+struct action<g::function_spline> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        const auto spline = st.values.pop().as<std::shared_ptr<const runtime::Spline>>();
+        auto f = std::make_shared<runtime::UserFunction>();
+        f->parameters = {"t"};
+        const int size = std::max(spline->dimensions(), 2);
+        for (int i = 0; i < size; ++i)
+            f->components.push_back(
+                TimeFunction::spline_component(spline, i, TimeFunction::argument(0)));
+        st.values.push(Value{std::shared_ptr<const runtime::UserFunction>(std::move(f))});
+    }
+};
+
 template <>
 struct action<g::scene_object> {
     template <typename ActionInput>

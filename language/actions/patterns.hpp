@@ -49,6 +49,8 @@ struct action<g::pigment_base> {
         }
     }
 };
+template <>
+struct action<g::pigment_late_colour> : action<g::pigment_base> {};
 // ---- patterns (runtime/texture/pattern/pattern.hpp), in a pigment or a normal
 
 // The pattern being written: a pigment's, a normal's or a texture's.

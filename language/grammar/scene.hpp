@@ -155,6 +155,10 @@ struct spline_item : p::sor<directive<spline_item>, spline_kind, spline_key> {};
 struct spline_base : p::seq<p::at<reference, p::sor<rbrace, spline_kind>>, p::seq<expression>> {};
 struct spline_block
     : p::seq<spline_open, p::opt<spline_base>, p::star<spline_item>, p::must<rbrace>> {};
+// function { spline { } }: a spline function, F(t) the spline's vector at t.
+struct function_spline_open
+    : p::seq<kw_function, lbrace, p::at<TAO_PEGTL_KEYWORD("spline"), ws, lbrace>> {};
+struct function_spline : p::seq<function_spline_open, spline_block, p::must<rbrace>> {};
 
 // texture { } texture { } ...: POV-Ray's layered texture.
 struct texture_layer : p::seq<texture_block> {};
@@ -162,10 +166,11 @@ struct texture_layer : p::seq<texture_block> {};
 struct material_value : p::seq<material_block> {};
 struct texture_value : p::seq<texture_block, p::star<texture_layer>> {};
 
-struct value : p::sor<object_value, camera_block, texture_value, pigment_block, normal_block,
-                      colour_map_block, sky_sphere_block, finish_block, interior_block,
-                      material_value, transform_value, array_value, spline_block, function_pigment,
-                      function_pattern_value, function_value, unsupported_block, expression> {};
+struct value
+    : p::sor<object_value, camera_block, texture_value, pigment_block, normal_block,
+             colour_map_block, sky_sphere_block, finish_block, interior_block, material_value,
+             transform_value, array_value, spline_block, function_pigment, function_spline,
+             function_pattern_value, function_value, unsupported_block, expression> {};
 
 // A macro called where a value is wanted holds values (and directives);
 // a ';' after its value is read and dropped, as POV-Ray does with a macro

@@ -180,9 +180,18 @@ struct colour_map_block : p::seq<colour_map_open, p::opt<colour_map_base>,
 struct pigment_colour_map : p::seq<colour_map_block> {};
 
 struct pigment_open : p::seq<kw_pigment, p::must<lbrace>> {};
-struct pigment_base
-    : p::seq<p::not_at<pattern_name>, p::not_at<unsupported_pattern_name>, expression> {};
+// (A name followed by '(' is a macro writing the pigment's items, read
+// as such: its body may hold a pattern and its modifiers, or a colour,
+// pigment_late_colour.)
+struct pigment_base : p::seq<p::not_at<pattern_name>, p::not_at<unsupported_pattern_name>,
+                             p::not_at<p::identifier, ws, lparen>, expression> {};
 struct pigment_item;
+// A colour (or declared pigment) after the block's start: the first item
+// of a directive's branch or a macro's body (`pigment { #switch (clock)
+// #case (1) image_map { } #else Gray50 #end }`): POV-Ray's Parse_Pattern
+// reads it as the pigment's first token, the directive around it unseen.
+struct pigment_late_colour
+    : p::seq<p::not_at<pattern_name>, p::not_at<unsupported_pattern_name>, expression> {};
 // pigment_map { [value PIGMENT_BODY] ... }: each entry a pigment's inside
 // (a declared pigment, a colour, or a pattern with its modifiers).
 struct pigment_map_value
@@ -264,11 +273,12 @@ struct pigment_quick_colour
     : p::seq<p::sor<TAO_PEGTL_KEYWORD("quick_color"), TAO_PEGTL_KEYWORD("quick_colour")>, ws,
              p::sor<p::plus<quick_colour_component>,
                     p::seq<p::must<ignored_value>, p::star<quick_colour_component>>>> {};
-struct pigment_item : p::sor<directive<pigment_item>, macro_call<pigment_item>, slope_pattern,
-                             pigment_pattern, function_pattern, pattern_kind, pattern_setting,
-                             pattern_wave, warp_block, pigment_colour_map, pigment_map_block,
-                             image_map_block, pigment_list_pigment, pigment_quick_colour,
-                             pigment_component, uv_mapping, unsupported_pattern, transformation> {};
+struct pigment_item
+    : p::sor<directive<pigment_item>, macro_call<pigment_item>, slope_pattern, pigment_pattern,
+             function_pattern, pattern_kind, pattern_setting, pattern_wave, warp_block,
+             pigment_colour_map, pigment_map_block, image_map_block, pigment_list_pigment,
+             pigment_quick_colour, pigment_component, uv_mapping, unsupported_pattern,
+             transformation, pigment_late_colour> {};
 struct pigment_block
     : p::seq<pigment_open, p::opt<pigment_base>, p::star<pigment_item>, p::must<rbrace>> {};
 // function { pigment { } }: a pigment function, F(x, y, z) its colour

@@ -430,3 +430,25 @@ TEST_CASE("a warp's settings belong to its kind", "[language][pattern][warp]") {
           "black hole's radius");
     error("sphere { 0, 1 pigment { checker warp { } } }\n", "expected a warp");
 }
+
+TEST_CASE("a colour may open a pigment from inside a directive or a macro", "[language][pattern]") {
+    // desk.pov picks an image_map or a plain grey by #switch inside the
+    // pigment; gamma_showcase.pov's macro writes a function pattern with
+    // its map and transforms, or a colour. POV-Ray reads the colour as the
+    // pigment's first item, the directive around it unseen.
+    const auto scene = read(
+        "#declare Stripes = 0;\n"
+        "#macro Striped(C)\n"
+        "  #if (Stripes) gradient x color_map { [0 rgb 0] [1 C] } scale 2\n"
+        "  #else color C #end\n"
+        "#end\n"
+        "sphere { 0, 1 pigment { #if (0) checker #else rgb <0, 1, 0> #end } }\n"
+        "sphere { 0, 1 pigment { Striped(rgb <0, 0, 1>) } }\n"
+        "#declare Stripes = 1;\n"
+        "sphere { 0, 1 pigment { Striped(rgb <0, 0, 1>) } }\n");
+    CHECK(texture_of(scene, 0).pigment.colours[0].c[1].constant() == 1.0);
+    CHECK(texture_of(scene, 0).pigment.patterned.kind == nullptr);
+    CHECK(texture_of(scene, 1).pigment.colours[0].c[2].constant() == 1.0);
+    REQUIRE(texture_of(scene, 2).pigment.patterned.kind != nullptr);
+    CHECK(texture_of(scene, 2).pigment.patterned.kind->name == "gradient");
+}

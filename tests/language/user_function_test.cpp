@@ -33,3 +33,34 @@ TEST_CASE("a chain of functions that each call the last twice stays small",
     CHECK(f.at({1.0, 0.0, 0.0}, 0.0) == Approx(0.0).margin(1e-12));
     CHECK(f.at({0.0, 0.0, 0.0}, 0.0) == Approx(-1.0));
 }
+
+TEST_CASE("spline, pigment and pattern functions give their values", "[language][function]") {
+    // A spline function is the spline's vector at its argument, a pigment
+    // function the pigment's colour by component, a pattern function the
+    // pattern's value; each may be called in another function, and a call
+    // with numbers is a number. (splinefunction.pov reads all three.)
+    const std::string text =
+        "#version 3.7;\n"
+        "#declare S = function { spline { linear_spline 0, <0, 0, 0> 1, <2, 4, 6> } }\n"
+        "#declare P = function { pigment { gradient x color_map { [0 rgb 0] [1 rgb <1, 0.5, "
+        "0.25>] } } }\n"
+        "#declare Q = function { pattern { gradient x } }\n"
+        "#declare G = function { P(x, y, z).green + S(x).z }\n"
+        "sphere { 0, S(0.25).y }\n"
+        "sphere { 0, P(0.5, 0, 0).blue }\n"
+        "sphere { 0, Q(0.75, 3, 0) }\n"
+        "sphere { 0, G(0.5, 0, 0) }\n"
+        "sphere { 0, P(0.5, 0, 0).gray }\n";
+    const auto scene = hexant::language::parse_scene_text(text, "functions.pov", {});
+    REQUIRE(scene.objects.size() == 5);
+    const auto radius = [&](std::size_t i) {
+        const auto& r = std::get<rt::Sphere>(scene.objects[i]->shape).radius;
+        REQUIRE(r.is_constant());
+        return r.constant();
+    };
+    CHECK(radius(0) == Approx(1.0));
+    CHECK(radius(1) == Approx(0.125));
+    CHECK(radius(2) == Approx(0.75));
+    CHECK(radius(3) == Approx(0.25 + 3.0));
+    CHECK(radius(4) == Approx(0.297 * 0.5 + 0.589 * 0.25 + 0.114 * 0.125));
+}
