@@ -180,11 +180,15 @@ struct colour_map_block : p::seq<colour_map_open, p::opt<colour_map_base>,
 struct pigment_colour_map : p::seq<colour_map_block> {};
 
 struct pigment_open : p::seq<kw_pigment, p::must<lbrace>> {};
-// (A name followed by '(' is a macro writing the pigment's items, read
-// as such: its body may hold a pattern and its modifiers, or a colour,
-// pigment_late_colour.)
+// (A call standing alone, NAME(...) with no operator after it, is a macro
+// writing the pigment's items, read as such: its body may hold a pattern
+// and its modifiers, or a colour, pigment_late_colour. A call in a sum,
+// `Pick(Colours, S) * 0.5`, is the base's value.)
+struct call_alone
+    : p::seq<p::identifier, ws, skip::parenthesized, ws,
+             p::not_at<p::one<'*', '/', '+', '-', '.', '[', '<', '>', '=', '!', '&', '|', '?'>>> {};
 struct pigment_base : p::seq<p::not_at<pattern_name>, p::not_at<unsupported_pattern_name>,
-                             p::not_at<p::identifier, ws, lparen>, expression> {};
+                             p::not_at<call_alone>, expression> {};
 struct pigment_item;
 // A colour (or declared pigment) after the block's start: the first item
 // of a directive's branch or a macro's body (`pigment { #switch (clock)
@@ -268,7 +272,10 @@ struct pigment_component : p::seq<colour_component_name, ws, p::must<colour_comp
 // read and not used (language/keyword_rules.cpp: harmless).
 // Components may follow the colour or stand alone, as in any colour of
 // POV-Ray's (`quick_color red 0.95 green 0.62`).
-struct quick_colour_component : p::seq<colour_component_name, ws, p::must<ignored_value>> {};
+// (Its own word rule: colour_component_name pushes the name for the value
+// that reads it, and a quick_color's components are not read.)
+struct quick_colour_component_name : one_word_of<colour_component_words> {};
+struct quick_colour_component : p::seq<quick_colour_component_name, ws, p::must<ignored_value>> {};
 struct pigment_quick_colour
     : p::seq<p::sor<TAO_PEGTL_KEYWORD("quick_color"), TAO_PEGTL_KEYWORD("quick_colour")>, ws,
              p::sor<p::plus<quick_colour_component>,

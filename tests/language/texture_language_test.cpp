@@ -452,3 +452,26 @@ TEST_CASE("a colour may open a pigment from inside a directive or a macro", "[la
     REQUIRE(texture_of(scene, 2).pigment.patterned.kind != nullptr);
     CHECK(texture_of(scene, 2).pigment.patterned.kind->name == "gradient");
 }
+
+TEST_CASE("quick_color's components leave the declaration around them alone",
+          "[language][pattern]") {
+    // chess2.pov declares each piece as an object whose texture ends with
+    // `pigment { quick_color red 0.95 green 0.62 }`: the components' names
+    // were left on the name stack, and the declaration bound the last of
+    // them ('green') in place of the piece.
+    const auto scene = read(
+        "#declare W = object { sphere { 0, 1 }\n"
+        "  texture { pigment { rgb 1 } pigment { quick_color red 0.95 green 0.62 } } }\n"
+        "#declare B = object { sphere { 0, 2 } pigment { rgb 1 quick_color red 0.4 } }\n"
+        "object { W }\nobject { B }\n");
+    CHECK(scene.objects.size() == 2);
+}
+
+TEST_CASE("a macro call in a sum opens a pigment as its value", "[language][pattern]") {
+    // isocacti.pov: `pigment { Pick(RockColors, RS) * RRand(0.1, 1, RS) }`.
+    const auto scene = read(
+        "#macro Pick(A) A #end\n"
+        "sphere { 0, 1 pigment { Pick(rgb <1, 0.5, 0>) * 0.5 } }\n");
+    CHECK(texture_of(scene, 0).pigment.colours[0].c[0].constant() == 0.5);
+    CHECK(texture_of(scene, 0).pigment.colours[0].c[1].constant() == 0.25);
+}
