@@ -83,6 +83,11 @@ HEXANT_ERROR(warp_black_hole_radius, "expected the black hole's radius after its
 HEXANT_ERROR(warp_planar_distance, "expected the planar warp's distance after its normal");
 HEXANT_ERROR(colour_map_value, "expected a value and a colour in the colour map's entry");
 HEXANT_ERROR(pigment_map_value, "expected the value of the pigment map's entry");
+HEXANT_ERROR(pattern_pair_value, "expected the modifier's type and factor: TYPE, FACTOR");
+HEXANT_ERROR(magnet_type, "expected magnet's type, 1 or 2");
+HEXANT_ERROR(magnet_form, "expected 'mandel' or 'julia' after magnet's type");
+HEXANT_ERROR(magnet_point, "expected the julia magnet's point <cr, ci>");
+HEXANT_ERROR(magnet_iterations, "expected magnet's iterations");
 HEXANT_ERROR(slope_written, "expected slope's direction, or its block { DIRECTION ... }");
 HEXANT_ERROR(slope_direction, "expected slope's direction (a vector)");
 HEXANT_ERROR(altitude_direction, "expected the altitude's direction (a vector) after 'altitude'");

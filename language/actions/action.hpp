@@ -86,6 +86,8 @@ struct action<g::pattern_name> : name_action {};
 template <>
 struct action<g::pattern_setting_name> : name_action {};
 template <>
+struct action<g::pattern_pair_name> : name_action {};
+template <>
 struct action<g::pattern_wave_name> : name_action {};
 template <>
 struct action<g::warp_setting_name> : name_action {};

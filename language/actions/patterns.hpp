@@ -147,6 +147,14 @@ inline void close_pigment(runtime::Pigment& pigment) {
     close_uv_mapping(pigment.uv_mapping);
 }
 
+// A fractal's <cr, ci> (POV-Ray's Parse_UV_Vect: a number is both; a
+// vector of three or more is an error).
+inline runtime::Vector2Function to_complex(const Value& v, const std::string& what) {
+    if (v.is<Vector>() && v.as<Vector>().size > 2)
+        throw ValueError(what + " is a <cr, ci> of two numbers, not a " + type_name(v));
+    return to_vector2(v, what);
+}
+
 template <>
 struct action<g::pattern_kind> {
     template <typename ActionInput>
@@ -157,7 +165,9 @@ struct action<g::pattern_kind> {
         const runtime::pattern::Kind* kind = slot.pattern.kind;
         using A = runtime::pattern::Kind::Argument;
         // In a normal, one more number may follow: the amount (bump_size).
-        const std::size_t own = kind->argument == A::Vector || kind->argument == A::Number ? 1 : 0;
+        const std::size_t own = kind->argument == A::PointNumber                             ? 2
+                                : kind->argument == A::Vector || kind->argument == A::Number ? 1
+                                                                                             : 0;
         if (slot.normal && args.size() == own + 1) {
             slot.normal->amount = to_float(args.back(), name + "'s amount");
             args.pop_back();
@@ -188,6 +198,17 @@ struct action<g::pattern_kind> {
                 slot.pattern.number[0] =
                     TimeFunction::apply(TimeOp::Int, to_float(args[0], name + "'s number"));
                 break;
+            case A::PointNumber: {
+                // julia <cr, ci>, N (POV-Ray's Parse_UV_Vect: a number is
+                // both); the iterations an integer.
+                count(2, 2, "a point <cr, ci> and its iterations");
+                const runtime::Vector2Function c = to_complex(args[0], name + "'s point");
+                slot.pattern.vector.c[0] = c.c[0];
+                slot.pattern.vector.c[1] = c.c[1];
+                slot.pattern.number[0] =
+                    TimeFunction::apply(TimeOp::Int, to_float(args[1], name + "'s iterations"));
+                break;
+            }
             case A::Own:  // (read by its own rule: never here)
                 throw ValueError(name + " is written " + name + " { ... }");
             case A::Colours: {
@@ -335,6 +356,61 @@ struct action<g::slope_pattern> {
     }
 };
 
+// magnet 1|2 mandel N, magnet 1|2 julia <cr, ci>, N (POV-Ray's MAGNET_TOKEN;
+// runtime/texture/pattern/kinds/magnet.hpp): the type and the form are
+// constants (they pick POV-Ray's pattern), the point and the iterations
+// may move with clock.
+template <>
+struct action<g::magnet_keyword> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        start_pattern(st, in.position(), "magnet");
+    }
+};
+template <>
+struct action<g::magnet_type> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        using M = runtime::pattern::kinds::Magnet;
+        const Value v = st.values.pop();
+        const double type = std::trunc(to_constant(v, "magnet's type"));
+        if (type != 1.0 && type != 2.0)
+            throw ValueError("magnet's type is 1 or 2, as in POV-Ray, not " +
+                             std::to_string(static_cast<long long>(type)));
+        pattern_slot(st, in.position(), "magnet").pattern.number[M::kForm] =
+            type == 1.0 ? M::kOneMandel : M::kTwoMandel;
+    }
+};
+template <>
+struct action<g::magnet_julia> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        using M = runtime::pattern::kinds::Magnet;
+        TimeFunction& form = pattern_slot(st, in.position(), "magnet").pattern.number[M::kForm];
+        form = form.constant() == M::kOneMandel ? M::kOneJulia : M::kTwoJulia;
+    }
+};
+template <>
+struct action<g::magnet_point> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        const Value v = st.values.pop();
+        const runtime::Vector2Function c = to_complex(v, "magnet's point");
+        runtime::pattern::Pattern& p = pattern_slot(st, in.position(), "magnet").pattern;
+        p.vector.c[0] = c.c[0];
+        p.vector.c[1] = c.c[1];
+    }
+};
+template <>
+struct action<g::magnet_iterations> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        const Value v = st.values.pop();
+        pattern_slot(st, in.position(), "magnet").pattern.number[0] =
+            TimeFunction::apply(TimeOp::Int, to_float(v, "magnet's iterations"));
+    }
+};
+
 // function { EXPRESSION } as a pattern: its value is the function's at the
 // point in pattern space (runtime/texture/pattern/kinds/function.hpp).
 template <>
@@ -375,9 +451,10 @@ struct action<g::pigment_pattern_body> {
 };
 
 // A kind's own modifier, as its file under runtime/texture/pattern/kinds/
-// declares it (POV-Ray refuses one the pattern does not have).
-inline void set_kind_setting(runtime::pattern::Pattern& pattern, const std::string& name,
-                             const Value& v) {
+// declares it (POV-Ray refuses one the pattern does not have); `second`
+// a Pair's factor. Returns the warning to give, if any.
+inline std::string set_kind_setting(runtime::pattern::Pattern& pattern, const std::string& name,
+                                    const Value& v, const Value* second = nullptr) {
     namespace pt = runtime::pattern;
     const pt::Setting* setting = pattern.kind ? pt::find_setting(*pattern.kind, name) : nullptr;
     if (setting == nullptr) {
@@ -394,12 +471,38 @@ inline void set_kind_setting(runtime::pattern::Pattern& pattern, const std::stri
         if (setting->constant && value.depends_on_time())
             throw ValueError(name + " cannot move with clock");
         pattern.vector = value;
-        return;
+        return {};
     }
-    const TimeFunction value = to_float(v, name);
+    const auto slot = [&pattern](int at) -> TimeFunction& {
+        return at < pt::Setting::kMoreSlot
+                   ? pattern.number[static_cast<std::size_t>(at)]
+                   : pattern.more[static_cast<std::size_t>(at - pt::Setting::kMoreSlot)];
+    };
+    std::string warning;
+    TimeFunction value = to_float(v, name);
     if (setting->constant && value.depends_on_time())
         throw ValueError(name + " cannot move with clock");
-    pattern.number[static_cast<std::size_t>(setting->slot)] = value;
+    if (setting->integer) {
+        // (POV-Ray's (int)Parse_Float(), then its range.)
+        const double whole = std::trunc(value.constant());
+        if (!(whole >= setting->low && whole <= setting->high)) {
+            const std::string range = name + " is " + std::to_string(setting->low) + " to " +
+                                      std::to_string(setting->high) + ", not " +
+                                      std::to_string(static_cast<long long>(whole));
+            if (!setting->warns) throw ValueError(range + ", as POV-Ray refuses");
+            warning = range + ": POV-Ray warns so and uses " +
+                      std::to_string(static_cast<int>(setting->number));
+            value = setting->number;
+        } else {
+            value = whole;
+        }
+    }
+    slot(setting->slot) = value;
+    if (setting->type == pt::Setting::Type::Pair) {
+        if (second == nullptr) throw ValueError(name + " takes two numbers");
+        slot(setting->slot + 1) = to_float(*second, name + "'s factor");
+    }
+    return warning;
 }
 
 template <>
@@ -431,8 +534,22 @@ struct action<g::pattern_setting> {
             pattern.noise_generator = static_cast<int>(
                 checked_integer(to_constant(v, "noise_generator"), "noise_generator", 1, 3));
         } else {
-            set_kind_setting(pattern, name, v);
+            const std::string warning = set_kind_setting(pattern, name, v);
+            if (!warning.empty()) st.warn(in.position(), warning);
         }
+    }
+};
+
+// A kind's setting of two numbers: exterior TYPE, FACTOR.
+template <>
+struct action<g::pattern_pair_setting> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        std::vector<Value> args = st.values.close_frame();
+        const std::string name = st.values.pop_name();
+        runtime::pattern::Pattern& pattern = pattern_slot(st, in.position(), name.c_str()).pattern;
+        if (args.size() != 2) throw ValueError(name + " takes two numbers, TYPE, FACTOR");
+        set_kind_setting(pattern, name, args[0], &args[1]);
     }
 };
 

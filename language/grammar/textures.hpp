@@ -19,7 +19,7 @@ HEXANT_KEYWORD(kw_material, "material");
 // Patterns POV-Ray has and hexant does not: parsed, kept by name, an error
 // only where a scene uses them.
 struct unsupported_pattern_name
-    : p::sor<TAO_PEGTL_KEYWORD("facets"), TAO_PEGTL_KEYWORD("julia"), TAO_PEGTL_KEYWORD("pavement"),
+    : p::sor<TAO_PEGTL_KEYWORD("facets"), TAO_PEGTL_KEYWORD("pavement"),
              TAO_PEGTL_KEYWORD("tiling"), TAO_PEGTL_KEYWORD("cubic"), TAO_PEGTL_KEYWORD("object"),
              TAO_PEGTL_KEYWORD("aoi"), TAO_PEGTL_KEYWORD("density_file"),
              TAO_PEGTL_KEYWORD("image_pattern"), TAO_PEGTL_KEYWORD("bump_map"),
@@ -31,8 +31,8 @@ struct uv_mapping : p::seq<TAO_PEGTL_KEYWORD("uv_mapping"), ws> {};
 
 // The patterns hexant has (runtime/texture/pattern/kinds.hpp, whose list
 // gives these words), each followed by what its kind takes: a vector
-// (gradient), a number (spiral1, spiral2, mandel) or a list of colours (the
-// block patterns).
+// (gradient), a number (spiral1, spiral2, mandel), a point and a number
+// (julia) or a list of colours (the block patterns).
 struct pattern_words {
     static constexpr auto list =
         runtime::pattern::PatternWords<runtime::pattern::PatternKinds>::keywords;
@@ -55,6 +55,16 @@ struct pattern_setting_name
              TAO_PEGTL_KEYWORD("noise_generator"), one_word_of<pattern_kind_setting_words>> {};
 struct pattern_setting_value : p::seq<expression> {};
 struct pattern_setting : p::seq<pattern_setting_name, ws, p::must<pattern_setting_value>> {};
+// The kinds' settings of two numbers, TYPE [,] FACTOR (a fractal's exterior
+// and interior: POV-Ray's Parse_Float, Parse_Comma, Parse_Float).
+struct pattern_pair_setting_words {
+    static constexpr auto list =
+        runtime::pattern::PatternWords<runtime::pattern::PatternKinds>::pair_settings;
+};
+struct pattern_pair_name : one_word_of<pattern_pair_setting_words> {};
+struct pattern_pair_value : p::seq<sum> {};
+struct pattern_pair_setting : p::seq<pattern_pair_name, ws, frame_open, p::must<pattern_pair_value>,
+                                     p::opt<comma>, p::must<pattern_pair_value>> {};
 struct pattern_wave_name
     : p::sor<TAO_PEGTL_KEYWORD("ramp_wave"), TAO_PEGTL_KEYWORD("sine_wave"),
              TAO_PEGTL_KEYWORD("triangle_wave"), TAO_PEGTL_KEYWORD("scallop_wave"),
@@ -147,6 +157,20 @@ struct slope_braced : p::seq<lbrace, p::opt<slope_point_at>, p::must<slope_direc
                              p::opt<slope_altitude>, p::must<rbrace>> {};
 struct slope_written : p::sor<slope_braced, slope_direction> {};
 struct slope_pattern : p::seq<slope_keyword, p::must<slope_written>, own_pattern_tail> {};
+
+// magnet 1|2 mandel ITERATIONS, magnet 1|2 julia <cr, ci> [,] ITERATIONS
+// (POV-Ray's MAGNET_TOKEN in Parse_Pattern;
+// runtime/texture/pattern/kinds/magnet.hpp).
+struct magnet_keyword : p::seq<TAO_PEGTL_KEYWORD("magnet"), ws> {};
+struct magnet_type : p::seq<sum> {};
+struct magnet_mandel : p::seq<TAO_PEGTL_KEYWORD("mandel"), ws> {};
+struct magnet_julia : p::seq<TAO_PEGTL_KEYWORD("julia"), ws> {};
+struct magnet_point : p::seq<sum> {};
+struct magnet_form
+    : p::sor<magnet_mandel, p::seq<magnet_julia, p::must<magnet_point>, p::opt<comma>>> {};
+struct magnet_iterations : p::seq<sum> {};
+struct magnet_pattern : p::seq<magnet_keyword, p::must<magnet_type>, p::must<magnet_form>,
+                               p::must<magnet_iterations>, own_pattern_tail> {};
 
 // function { EXPRESSION }: the function pattern, its body a user
 // function's (runtime/texture/pattern/kinds/function.hpp).
@@ -281,11 +305,11 @@ struct pigment_quick_colour
              p::sor<p::plus<quick_colour_component>,
                     p::seq<p::must<ignored_value>, p::star<quick_colour_component>>>> {};
 struct pigment_item
-    : p::sor<directive<pigment_item>, macro_call<pigment_item>, slope_pattern, pigment_pattern,
-             function_pattern, pattern_kind, pattern_setting, pattern_wave, warp_block,
-             pigment_colour_map, pigment_map_block, image_map_block, pigment_list_pigment,
-             pigment_quick_colour, pigment_component, uv_mapping, unsupported_pattern,
-             transformation, pigment_late_colour> {};
+    : p::sor<directive<pigment_item>, macro_call<pigment_item>, slope_pattern, magnet_pattern,
+             pigment_pattern, function_pattern, pattern_kind, pattern_setting, pattern_pair_setting,
+             pattern_wave, warp_block, pigment_colour_map, pigment_map_block, image_map_block,
+             pigment_list_pigment, pigment_quick_colour, pigment_component, uv_mapping,
+             unsupported_pattern, transformation, pigment_late_colour> {};
 struct pigment_block
     : p::seq<pigment_open, p::opt<pigment_base>, p::star<pigment_item>, p::must<rbrace>> {};
 // function { pigment { } }: a pigment function, F(x, y, z) its colour
@@ -381,10 +405,11 @@ struct normal_block;
 // A block pattern's normals: checker normal { } normal { }.
 struct normal_list_normal : p::seq<normal_block, p::opt<comma>> {};
 struct normal_item
-    : p::sor<directive<normal_item>, macro_call<normal_item>, slope_pattern, pigment_pattern,
-             function_pattern, pattern_kind, pattern_setting, pattern_wave, warp_block,
-             normal_setting, normal_no_bump_scale, normal_map_block, slope_map_block,
-             normal_list_normal, uv_mapping, unsupported_pattern, transformation> {};
+    : p::sor<directive<normal_item>, macro_call<normal_item>, slope_pattern, magnet_pattern,
+             pigment_pattern, function_pattern, pattern_kind, pattern_setting, pattern_pair_setting,
+             pattern_wave, warp_block, normal_setting, normal_no_bump_scale, normal_map_block,
+             slope_map_block, normal_list_normal, uv_mapping, unsupported_pattern, transformation> {
+};
 struct normal_block
     : p::seq<normal_open, p::opt<normal_base>, p::star<normal_item>, p::must<rbrace>> {};
 struct texture_normal : p::seq<normal_block> {};
@@ -430,9 +455,9 @@ struct texture_list_texture : p::seq<texture_block, p::opt<comma>> {};
 // A patterned texture: a pattern and its modifiers, then its map.
 struct texture_item
     : p::sor<directive<texture_item>, macro_call<texture_item>, texture_pigment, texture_finish,
-             texture_normal, slope_pattern, pigment_pattern, function_pattern, pattern_kind,
-             pattern_setting, pattern_wave, warp_block, texture_map_block, texture_list_texture,
-             uv_mapping, transformation> {};
+             texture_normal, slope_pattern, magnet_pattern, pigment_pattern, function_pattern,
+             pattern_kind, pattern_setting, pattern_pair_setting, pattern_wave, warp_block,
+             texture_map_block, texture_list_texture, uv_mapping, transformation> {};
 struct texture_block
     : p::seq<texture_open, p::opt<texture_base>, p::star<texture_item>, p::must<rbrace>> {};
 

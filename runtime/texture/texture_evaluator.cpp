@@ -390,7 +390,7 @@ TextureEvaluator::CompiledPigment::CompiledPigment(const Pigment& pigment, const
     }
     const ColourMap& written = pigment.colour_map;
     if (written.entries.empty()) {
-        fixed_map = pigment.patterned.kind->default_map;
+        fixed_map = pattern::default_map(pigment.patterned);
     } else if (!written.depends_on_time()) {
         for (const auto& e : written.entries) {
             pattern::MapEntry entry{pattern::single(e.value.constant()), {}};

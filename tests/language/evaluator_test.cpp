@@ -281,13 +281,13 @@ TEST_CASE("clock is a symbol in an animation and a number in a still", "[evaluat
 TEST_CASE("what a scene declares but never uses cannot fail", "[evaluator]") {
     const auto r = run(
         "#declare F = function { pigment { rgb 1 } }\n#declare G = F(2, 0, 0);\n"
-        "#declare P = pigment { julia <0.3, 0.2> 20 }\n#declare I = parametric { function { u } "
+        "#declare P = pigment { tiling 5 }\n#declare I = parametric { function { u } "
         "function { v } function { 0 } <0, 0>, <1, 1> }\n"
         "#declare T = texture { pigment { rgb 1 } } texture { pigment { rgbt 1 } }\n"
         "sphere { 0, 1 }\n");
     CHECK(r.scene.objects.size() == 1);
     const auto used =
-        error_of("#declare P = pigment { julia <0.3, 0.2> 20 }\nsphere { 0, 1 pigment { P } }\n");
+        error_of("#declare P = pigment { tiling 5 }\nsphere { 0, 1 pigment { P } }\n");
     CHECK(used.places()[0].line == 2);
     CHECK(used.message().find("test.pov:1:") != std::string::npos);  // where it was written
     CHECK(error_of("#declare I = parametric { function { u } function { v } function { 0 } <0, "

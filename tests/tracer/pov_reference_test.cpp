@@ -618,6 +618,21 @@ TEST_CASE("pigment_pattern agrees with POV-Ray 3.7's", "[tracer][pov][pattern]")
     check_stills("patterns", "pigment_pattern", {"0", "0.5"});
 }
 
+TEST_CASE("the fractal patterns agree with POV-Ray 3.7's", "[tracer][pov][pattern]") {
+    // patterns/fractals.pov: mandel with each exterior type (0 to 8) and
+    // interior type (0 to 6), its own default map and the grey one of
+    // exponent 3, exponents 3, 4 and 7 (the binomial sum), julia with
+    // exponents 2, 3 and 5, magnet 1 and 2 over c (mandel) and from z
+    // (julia), a julia point, iterations and a factor moving with clock,
+    // fractals as normals, in a texture_map, under turbulence, a warp,
+    // frequency and a wave, at clock 0 and 0.5. The still's tolerance.
+    // Before, hexant refused all but mandel's defaults; a colouring type
+    // read from the wrong slot, a binomial sign wrong, a magnet's escape
+    // test or starting point not POV-Ray's or mandel's map kept at another
+    // exponent moves whole tiles.
+    check_stills("patterns", "fractals", {"0", "0.5"});
+}
+
 TEST_CASE("slope agrees with POV-Ray 3.7's", "[tracer][pov][pattern]") {
     // patterns/slope.pov: the short form, a slope and altitude with their
     // ranges (one moving with clock) in a texture_map, point_at, a slope

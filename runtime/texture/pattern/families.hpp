@@ -43,6 +43,8 @@ double crackle_value(const glm::dvec3& p, const Values& v);
 const std::vector<double>& pattern_rands();
 // fractal_patterns.cpp
 double mandel_value(const glm::dvec3& p, const Values& v);
+double julia_value(const glm::dvec3& p, const Values& v);
+double magnet_value(const glm::dvec3& p, const Values& v);
 // normal_patterns.cpp: the normal-only patterns' perturbations
 glm::dvec3 bumps_normal(const glm::dvec3& p, const Values& v, double amount, const glm::dvec3& n);
 glm::dvec3 dents_normal(const glm::dvec3& p, const Values& v, double amount, const glm::dvec3& n);

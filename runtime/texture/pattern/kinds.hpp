@@ -20,7 +20,9 @@
 #include "runtime/texture/pattern/kinds/gradient.hpp"
 #include "runtime/texture/pattern/kinds/granite.hpp"
 #include "runtime/texture/pattern/kinds/hexagon.hpp"
+#include "runtime/texture/pattern/kinds/julia.hpp"
 #include "runtime/texture/pattern/kinds/leopard.hpp"
+#include "runtime/texture/pattern/kinds/magnet.hpp"
 #include "runtime/texture/pattern/kinds/mandel.hpp"
 #include "runtime/texture/pattern/kinds/marble.hpp"
 #include "runtime/texture/pattern/kinds/onion.hpp"
@@ -62,7 +64,9 @@ using PatternKinds = PatternKindList<
     kinds::Gradient,
     kinds::Granite,
     kinds::Hexagon,
+    kinds::Julia,
     kinds::Leopard,
+    kinds::Magnet,
     kinds::Mandel,
     kinds::Marble,
     kinds::Onion,

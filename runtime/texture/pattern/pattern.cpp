@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "runtime/texture/pattern/kinds/mandel.hpp"
+
 namespace hexant::runtime::pattern {
 
 bool Turbulence::depends_on_time() const {
@@ -14,9 +16,20 @@ Pattern Pattern::of(const Kind& kind) {
     p.kind = &kind;
     p.vector = Vector3Function{{kind.vector.x, kind.vector.y, kind.vector.z}};
     p.number = {kind.number[0], kind.number[1]};
+    for (std::size_t i = 0; i < p.more.size(); ++i) p.more[i] = kind.more[i];
     p.wave = kind.wave;
     p.frequency = kind.frequency ? 1.0 : 0.0;
     return p;
+}
+
+const std::vector<MapEntry>& default_map(const Pattern& pattern) {
+    // POV-Ray's Post_Pigment: mandel's map is its own at exponent 2 only;
+    // its other exponents are other patterns there (MANDEL3_PATTERN...),
+    // given the grey map.
+    static const std::vector<MapEntry> grey(kGrayMap.begin(), kGrayMap.end());
+    const TimeFunction& exponent = pattern.number[kinds::Mandel::kExponent];
+    if (pattern.kind->name == kinds::Mandel::keyword && exponent.constant() != 2.0) return grey;
+    return pattern.kind->default_map;
 }
 
 bool Pattern::depends_on_time() const {

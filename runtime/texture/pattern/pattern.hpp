@@ -116,23 +116,44 @@ struct MapEntry {
 };
 
 // A kind's own modifier (POV-Ray's Parse_Pattern: brick's mortar,
-// crackle's metric): its word, what it takes, where its value goes
-// (Values::number[slot], or Values::vector) and its default. Its value
-// may move with clock unless it is `constant`.
+// crackle's metric, a fractal's exterior): its word, what it takes, where
+// its value goes and its default. A Number or a Pair's first number goes to
+// Values::number[slot], or from kMoreSlot on to Values::more[slot -
+// kMoreSlot]; a Pair (`exterior TYPE, FACTOR`) fills slot and slot + 1; a
+// Vector goes to Values::vector. Its value may move with clock unless it is
+// `constant`. An `integer` one is truncated as POV-Ray's (int) casts and
+// must lie in [low, high]: outside, an error, or (`warns`) POV-Ray's
+// warning and the default.
 struct Setting {
-    enum class Type { Number, Vector };
+    enum class Type { Number, Vector, Pair };
+    static constexpr int kMoreSlot = 2;
     std::string_view name;
     Type type = Type::Number;
     int slot = 0;
     double number = 0.0;
     std::array<double, 3> vector{};
     bool constant = false;
+    double second = 0.0;  // a Pair's second number's default
+    bool integer = false;
+    int low = 0, high = 0;
+    bool warns = false;
 
     static constexpr Setting of_number(std::string_view name, int slot, double default_value) {
         return {name, Type::Number, slot, default_value, {}, false};
     }
     static constexpr Setting of_vector(std::string_view name, std::array<double, 3> default_value) {
         return {name, Type::Vector, 0, 0.0, default_value, false};
+    }
+    // A constant whole number in [low, high] (a fractal's exponent).
+    static constexpr Setting of_integer(std::string_view name, int slot, double default_value,
+                                        int low, int high, bool warns) {
+        return {name, Type::Number, slot, default_value, {}, true, 0.0, true, low, high, warns};
+    }
+    // A constant whole number in [low, high] and a number (moving with
+    // clock if written so) after it.
+    static constexpr Setting of_pair(std::string_view name, int slot, double first, double second,
+                                     int low, int high) {
+        return {name, Type::Pair, slot, first, {}, true, second, true, low, high, false};
     }
 };
 
@@ -142,11 +163,19 @@ struct Kind {
     std::string_view name;
     Function value;
     // What follows the name: nothing, a vector (gradient), a number
-    // (spiral1's arms, mandel's iterations), a list of colours (the
+    // (spiral1's arms, mandel's iterations), a point and a number (julia's
+    // <cr, ci>, iterations), a list of colours (the
     // block patterns: checker and brick 2, hexagon 3; their values are the
     // index of a colour, POV-Ray's blend list), or a syntax of its own that
-    // the grammar reads by its own rule (slope, pigment_pattern).
-    enum class Argument { None, Vector, Number, Colours, Own } argument = Argument::None;
+    // the grammar reads by its own rule (slope, pigment_pattern, magnet).
+    enum class Argument {
+        None,
+        Vector,
+        Number,
+        PointNumber,
+        Colours,
+        Own
+    } argument = Argument::None;
     int colours = 0;
     Wave wave = Wave::Ramp;
     bool frequency = true;        // false: frequency 0 (block patterns, quilted)
@@ -156,6 +185,7 @@ struct Kind {
     // vector's (brick_size), the settings' defaults among them.
     std::vector<Setting> settings;
     std::array<double, 2> number{};
+    std::array<double, 4> more{};
     glm::dvec3 vector{0.0};
     // In a normal { }: its own perturbation, else the slope of its value.
     NormalFunction normal = nullptr;
@@ -198,6 +228,10 @@ struct Pattern {
     static Pattern of(const Kind& kind);
     bool depends_on_time() const;
 };
+
+// The colour map of a pattern written without one (its kind's, as
+// POV-Ray's Post_Pigment picks it).
+const std::vector<MapEntry>& default_map(const Pattern& pattern);
 
 // The value at a point already in pattern space (after warps and classic
 // turbulence), through frequency, phase and the wave (Evaluate_TPat).

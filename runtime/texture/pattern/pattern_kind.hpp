@@ -134,11 +134,20 @@ constexpr std::array<double, 3> vector_of() {
         return {};
 }
 
-template <class K>
+// The names of a kind's settings with one value (pairs = false) or two.
+template <class K, bool pairs>
+constexpr std::size_t setting_count() {
+    std::size_t n = 0;
+    for (const Setting& s : settings_of<K>()) n += (s.type == Setting::Type::Pair) == pairs;
+    return n;
+}
+template <class K, bool pairs>
 constexpr auto setting_names() {
     constexpr auto settings = settings_of<K>();
-    std::array<std::string_view, settings.size()> out{};
-    for (std::size_t i = 0; i < settings.size(); ++i) out[i] = settings[i].name;
+    std::array<std::string_view, setting_count<K, pairs>()> out{};
+    std::size_t n = 0;
+    for (const Setting& s : settings)
+        if ((s.type == Setting::Type::Pair) == pairs) out[n++] = s.name;
     return out;
 }
 
@@ -154,12 +163,17 @@ struct PatternWords<PatternKindList<K...>> {
   private:
     static constexpr auto all_keywords = sorted_words::concat(std::array{K::keyword}...);
     static constexpr auto all_settings =
-        sorted_words::concat(pattern_kind_detail::setting_names<K>()...);
+        sorted_words::concat(pattern_kind_detail::setting_names<K, false>()...);
+    static constexpr auto all_pairs =
+        sorted_words::concat(pattern_kind_detail::setting_names<K, true>()...);
 
   public:
     static constexpr auto keywords = all_keywords;
+    // The settings with one value, and those with two (exterior TYPE, FACTOR).
     static constexpr auto settings =
         sorted_words::unique<sorted_words::count_unique(all_settings)>(all_settings);
+    static constexpr auto pair_settings =
+        sorted_words::unique<sorted_words::count_unique(all_pairs)>(all_pairs);
     static_assert(sorted_words::count_unique(all_keywords) == all_keywords.size(),
                   "two pattern kinds share a keyword");
 };
@@ -181,13 +195,21 @@ Kind make_kind() {
     constexpr auto settings = settings_of<K>();
     kind.settings.assign(settings.begin(), settings.end());
     kind.number = number_of<K>();
+    kind.more = {};
     const std::array<double, 3> v = vector_of<K>();
     kind.vector = glm::dvec3(v[0], v[1], v[2]);
+    const auto number_at = [&kind](int slot) -> double& {
+        return slot < Setting::kMoreSlot
+                   ? kind.number[static_cast<std::size_t>(slot)]
+                   : kind.more[static_cast<std::size_t>(slot - Setting::kMoreSlot)];
+    };
     for (const Setting& s : kind.settings) {
-        if (s.type == Setting::Type::Number)
-            kind.number[static_cast<std::size_t>(s.slot)] = s.number;
-        else
+        if (s.type == Setting::Type::Vector) {
             kind.vector = glm::dvec3(s.vector[0], s.vector[1], s.vector[2]);
+            continue;
+        }
+        number_at(s.slot) = s.number;
+        if (s.type == Setting::Type::Pair) number_at(s.slot + 1) = s.second;
     }
     kind.normal = normal_of<K>();
     kind.single_numbers = single_numbers_of<K>();
