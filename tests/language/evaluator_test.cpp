@@ -279,12 +279,12 @@ TEST_CASE("clock is a symbol in an animation and a number in a still", "[evaluat
 }
 
 TEST_CASE("what a scene declares but never uses cannot fail", "[evaluator]") {
-    const auto r = run(
-        "#declare F = function { pigment { rgb 1 } }\n#declare G = F(2, 0, 0);\n"
-        "#declare P = pigment { tiling 5 }\n#declare I = parametric { function { u } "
-        "function { v } function { 0 } <0, 0>, <1, 1> }\n"
-        "#declare T = texture { pigment { rgb 1 } } texture { pigment { rgbt 1 } }\n"
-        "sphere { 0, 1 }\n");
+    const auto r =
+        run("#declare F = function { pigment { rgb 1 } }\n#declare G = F(2, 0, 0);\n"
+            "#declare P = pigment { tiling 5 }\n#declare I = parametric { function { u } "
+            "function { v } function { 0 } <0, 0>, <1, 1> }\n"
+            "#declare T = texture { pigment { rgb 1 } } texture { pigment { rgbt 1 } }\n"
+            "sphere { 0, 1 }\n");
     CHECK(r.scene.objects.size() == 1);
     const auto used =
         error_of("#declare P = pigment { tiling 5 }\nsphere { 0, 1 pigment { P } }\n");
