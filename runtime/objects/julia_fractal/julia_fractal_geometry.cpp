@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "runtime/geometry/box_queries.hpp"
+#include "runtime/geometry/local_ray.hpp"
 #include "runtime/geometry/stable_arithmetic.hpp"
 
 namespace hexant::runtime::geometry {
@@ -17,6 +18,9 @@ constexpr double kPovEpsilon = 1e-10;  // POV-Ray's EPSILON
 // sphere, radius 4, at precision 10^5 takes 8 * 10^5), bounded work for a
 // hostile precision.
 constexpr long kMaxSteps = 1L << 22;
+// Rays starting farther than 4 * kFarRadii radii away are restated
+// (local_ray's kRecentreSizes is 4).
+constexpr double kFarRadii = 250.0;
 
 double dot3(const glm::dvec3& a, const glm::dvec3& b) {
     return a.x * b.x + a.y * b.y + a.z * b.z;  // POV-Ray's VDot, in its order
@@ -82,7 +86,16 @@ std::optional<SurfaceHit> intersect(const JuliaFractalGeometry& g, const Ray3& r
         len = 1.0 / std::sqrt(len2);
         direction *= len;
     }
-    const glm::dvec3 origin = ray.origin;
+    // A ray from far away (beyond 1000 radii; POV-Ray's camera rays start
+    // nearer) is restated near the sphere first, as local_ray does, or its
+    // points would carry the ulps of its far origin.
+    glm::dvec3 origin = ray.origin;
+    double s_offset = 0.0;
+    if (const auto local = local_ray(ray, glm::dvec3(0.0), kFarRadii * g.radius);
+        local && local->s_offset != 0.0) {
+        origin = local->origin;
+        s_offset = local->s_offset;
+    }
 
     // F_Bound: Sphere::Intersect with the sphere at the origin.
     const glm::dvec3 to_centre = -origin;
@@ -98,7 +111,7 @@ std::optional<SurfaceHit> intersect(const JuliaFractalGeometry& g, const Ray3& r
     if (depth < kTolerance) depth = kTolerance;
     // hexant's range of s (depth * len): the march starts no earlier than
     // s_min and ends by s_max.
-    const double depth_lo = s_min / len, depth_hi = s_max / len;
+    const double depth_lo = (s_min - s_offset) / len, depth_hi = (s_max - s_offset) / len;
     if (depth_lo > depth) depth = depth_lo;
     if (depth_hi < depth_max) depth_max = depth_hi;
     if (!(depth < depth_max)) return std::nullopt;
@@ -151,9 +164,13 @@ std::optional<SurfaceHit> intersect(const JuliaFractalGeometry& g, const Ray3& r
     } else if (last != current) {
         julia_iterate(g, ipoint, stack);
     }
+    // (POV-Ray checks no end after that last step: where the halving never
+    // moved, as where the function iteration's start differs from the
+    // march's, it can leave the sphere, and the object's bound.)
+    if (depth > depth_max) return std::nullopt;
 
     SurfaceHit hit;
-    hit.s = depth * len;
+    hit.s = s_offset + depth * len;
     if (!(hit.s > s_min && hit.s < s_max)) return std::nullopt;
     hit.point = ipoint;
     hit.part = 0;
