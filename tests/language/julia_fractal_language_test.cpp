@@ -1,6 +1,7 @@
 // julia_fractal { } as the language reads it (runtime/objects/julia_fractal/,
 // the grammar's julia_block): POV-Ray 3.7's words and settings
 // (Parse_Julia_Fractal), its defaults, time functions, and its refusals.
+#include <algorithm>
 #include <string>
 
 #include <catch2/catch.hpp>
@@ -59,9 +60,16 @@ TEST_CASE("julia_fractal reads POV-Ray's words and settings", "[language][julia_
 
 TEST_CASE("a julia_fractal's parameter and slice may move with clock",
           "[language][julia_fractal]") {
-    const auto j = julia_of("julia_fractal { <0.1 * clock, 0, 0, 0> slice <0, 0, 0, 1>, clock }");
+    hexant::language::ParseOptions options;
+    options.animation.initial_frame = 1;
+    options.animation.final_frame = 2;
+    const auto scene = hexant::language::parse_scene_text(
+        "julia_fractal { <0.1 * clock, 0, 0, 0> slice <0, 0, 0, 1>, clock }", "t.pov", options);
+    const auto& j = std::get<rt::JuliaFractal>(scene.objects[0]->shape);
     CHECK(j.parameter[0].depends_on_time());
     CHECK(j.slice_distance.depends_on_time());
+    const auto moving = scene.objects[0]->timed_parameters();
+    CHECK(std::find(moving.begin(), moving.end(), "c.x") != moving.end());
 }
 
 TEST_CASE("a julia_fractal refuses what POV-Ray refuses", "[language][julia_fractal]") {
