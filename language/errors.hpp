@@ -108,6 +108,8 @@ HEXANT_ERROR(mesh_inside_vector_value, "expected the inside_vector's direction")
 HEXANT_ERROR(shape_argument, "expected a parameter");
 HEXANT_ERROR(first_shape_argument, "expected a parameter");
 HEXANT_ERROR(polynomial_power, "expected a power of x, y or z");
+HEXANT_ERROR(julia_parameter, "expected the julia_fractal's 4D parameter <x, y, z, t>");
+HEXANT_ERROR(julia_value, "expected a value");
 HEXANT_ERROR(polynomial_coefficient, "expected the term's coefficient");
 HEXANT_ERROR(declare_index, "expected '[' and an array index");
 HEXANT_ERROR(fopen_id, "expected the file's name for the scene (an identifier)");

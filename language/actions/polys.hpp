@@ -3,7 +3,7 @@
 // Part of the actions (language/actions.hpp).
 #pragma once
 
-#include "language/actions/isosurfaces.hpp"
+#include "language/actions/julia_fractals.hpp"
 
 namespace hexant::language {
 

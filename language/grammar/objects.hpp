@@ -119,10 +119,10 @@ struct light_block : p::seq<kw_light_source, p::must<lbrace>, p::must<light_argu
 // Object kinds POV-Ray has and hexant does not: kept as source, an error
 // only where used. Also `function { }` and the *_map blocks.
 struct unsupported_kind_words {
-    static constexpr std::array<std::string_view, 17> list = {
-        "bicubic_patch", "color_map",   "colour_map", "density",    "density_map", "function",
-        "julia_fractal", "lemon",       "media",      "normal_map", "ovus",        "parametric",
-        "photons",       "pigment_map", "rainbow",    "slope_map",  "texture_map"};
+    static constexpr std::array<std::string_view, 16> list = {
+        "bicubic_patch", "color_map", "colour_map", "density",    "density_map", "function",
+        "lemon",         "media",     "normal_map", "ovus",       "parametric",  "photons",
+        "pigment_map",   "rainbow",   "slope_map",  "texture_map"};
 };
 struct unsupported_kind : one_word_of<unsupported_kind_words> {};
 struct unsupported_block
@@ -218,6 +218,38 @@ struct isosurface_item
 struct isosurface_block : p::seq<isosurface_open, p::star<isosurface_item>, p::must<object_close>> {
 };
 
+// julia_fractal { <c> [quaternion | hypercomplex] [sqr | cube | reciprocal |
+// exp | ln | sin | asin | sinh | asinh | cos | acos | cosh | acosh | tan |
+// atan | tanh | atanh | pwr(X, Y)] [max_iteration N] [precision P]
+// [slice <S>, D] modifiers } (runtime/objects/julia_fractal/; POV-Ray's
+// Parse_Julia_Fractal, which reads its words before the modifiers; hexant
+// reads them among them).
+struct julia_open : p::seq<TAO_PEGTL_KEYWORD("julia_fractal"), ws, p::must<lbrace>> {};
+struct julia_parameter : p::seq<frame_open, shape_argument> {};
+struct julia_word
+    : p::sor<TAO_PEGTL_KEYWORD("quaternion"), TAO_PEGTL_KEYWORD("hypercomplex"),
+             TAO_PEGTL_KEYWORD("sqr"), TAO_PEGTL_KEYWORD("cube"), TAO_PEGTL_KEYWORD("reciprocal"),
+             TAO_PEGTL_KEYWORD("exp"), TAO_PEGTL_KEYWORD("ln"), TAO_PEGTL_KEYWORD("sin"),
+             TAO_PEGTL_KEYWORD("asin"), TAO_PEGTL_KEYWORD("sinh"), TAO_PEGTL_KEYWORD("asinh"),
+             TAO_PEGTL_KEYWORD("cos"), TAO_PEGTL_KEYWORD("acos"), TAO_PEGTL_KEYWORD("cosh"),
+             TAO_PEGTL_KEYWORD("acosh"), TAO_PEGTL_KEYWORD("tan"), TAO_PEGTL_KEYWORD("atan"),
+             TAO_PEGTL_KEYWORD("tanh"), TAO_PEGTL_KEYWORD("atanh")> {};
+struct julia_flag : p::seq<julia_word, ws> {};
+struct julia_value : p::seq<sum> {};
+struct julia_pwr
+    : p::seq<TAO_PEGTL_KEYWORD("pwr"), ws, p::must<lparen>, frame_open, p::must<julia_value>,
+             p::must<comma>, p::must<julia_value>, p::must<rparen>> {};
+struct julia_setting_name
+    : p::sor<TAO_PEGTL_KEYWORD("max_iteration"), TAO_PEGTL_KEYWORD("precision")> {};
+struct julia_setting : p::seq<julia_setting_name, ws, frame_open, p::must<julia_value>> {};
+struct julia_slice : p::seq<TAO_PEGTL_KEYWORD("slice"), ws, frame_open, p::must<julia_value>,
+                            p::opt<comma>, p::must<julia_value>> {};
+struct julia_item;
+struct julia_item : p::sor<directive<julia_item>, macro_call<julia_item>, julia_flag, julia_pwr,
+                           julia_setting, julia_slice, object_modifier> {};
+struct julia_block
+    : p::seq<julia_open, p::must<julia_parameter>, p::star<julia_item>, p::must<object_close>> {};
+
 // cubic { <20 coefficients> }, quartic { <35> }, poly { ORDER, <..> } and
 // polynomial { ORDER, xyz(i, j, k): c, ... } (runtime/objects/poly/poly.hpp);
 // quadric is a generic shape.
@@ -263,7 +295,7 @@ struct height_field_function_block
              object_modifiers, p::must<object_close>> {};
 
 struct object_value
-    : p::sor<mesh_block, mesh2_block, blob_block, isosurface_block, poly_block,
+    : p::sor<mesh_block, mesh2_block, blob_block, isosurface_block, julia_block, poly_block,
              height_field_function_block, shape_block, csg_block, object_block, light_block> {};
 
 // Things that modify an object, in any order.

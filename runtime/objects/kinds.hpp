@@ -13,6 +13,7 @@
 #include "runtime/objects/disc/disc.hpp"
 #include "runtime/objects/height_field/height_field.hpp"
 #include "runtime/objects/isosurface/isosurface.hpp"
+#include "runtime/objects/julia_fractal/julia_fractal.hpp"
 #include "runtime/objects/lathe/lathe.hpp"
 #include "runtime/objects/mesh/mesh.hpp"
 #include "runtime/objects/plane/plane.hpp"
@@ -31,9 +32,9 @@
 
 namespace hexant::runtime {
 
-using ShapeKinds =
-    objects::KindList<Sphere, Box, Plane, Polygon, Triangle, SmoothTriangle, Disc, Cylinder, Cone,
-                      Torus, Prism, Text, Mesh, Lathe, Sor, Superellipsoid, HeightField, Blob,
-                      SphereSweep, Isosurface, Quadric, Cubic, Quartic, Poly, Polynomial>;
+using ShapeKinds = objects::KindList<Sphere, Box, Plane, Polygon, Triangle, SmoothTriangle, Disc,
+                                     Cylinder, Cone, Torus, Prism, Text, Mesh, Lathe, Sor,
+                                     Superellipsoid, HeightField, Blob, SphereSweep, Isosurface,
+                                     JuliaFractal, Quadric, Cubic, Quartic, Poly, Polynomial>;
 
 }  // namespace hexant::runtime

@@ -176,6 +176,10 @@ TEST_CASE("bound holds the surface: isosurface", "[object][property]") {
     check_kind(kind_scene("isosurface"));
 }
 
+TEST_CASE("bound holds the surface: julia_fractal", "[object][property]") {
+    check_kind(kind_scene("julia_fractal"));
+}
+
 TEST_CASE("bound holds the surface: height_field", "[object][property]") {
     check_kind(kind_scene("height_field"));
 }

@@ -81,6 +81,11 @@ TEST_CASE("rays aimed at surface events hit at or before them, for every kind an
             // past the surface and misses some rays aimed at it. Its bounds
             // hold (object_bound_property_test.cpp covers every variant).
             if (kind.keyword == "isosurface" && object.deformed()) continue;
+            // A julia_fractal is found by POV-Ray's march (steps of at least
+            // 1 / precision), which may step over a thin part of the set
+            // before the point aimed at: not the exact first hit this
+            // asks for. Its bounds and sane hits are tested elsewhere.
+            if (kind.keyword == "julia_fractal") continue;
             const bool flat = kind.keyword == "triangle" || kind.keyword == "smooth_triangle" ||
                               kind.keyword == "polygon" || kind.keyword == "disc";
             const int rays = object.deformed() ? 400 : 1500;

@@ -358,6 +358,50 @@ inline glm::dvec3 sample_object_surface(const rt::Shape& shape, double t, Random
         const glm::dvec4 c = seg.at(random.uniform());
         return g.origin + g.scale * (glm::dvec3(c) + std::fabs(c.w) * random.unit_vector());
     }
+    if (const auto* julia = std::get_if<rt::JuliaFractal>(&shape)) {
+        // The quaternion z^2 + c (the kind scenes' algebra), iterated here
+        // from the Julia set's definition: a point is inside while |q|^2
+        // stays within R^2 + 1e-7, R = min(2, 1 + |c| + 1e-7), for
+        // max_iteration steps. From an inside point outward past the ball:
+        // bisection on membership ends on the set's boundary.
+        if (julia->algebra != rt::geometry::JuliaAlgebra::quaternion ||
+            julia->function != rt::geometry::JuliaFunction::sqr)
+            throw std::logic_error("sample_object_surface: a julia_fractal other than z^2 + c");
+        double c[4], n[4], norm2 = 0.0, c2 = 0.0;
+        for (int i = 0; i < 4; ++i) {
+            c[i] = julia->parameter[i](t);
+            n[i] = julia->slice[i](t);
+            norm2 += n[i] * n[i];
+            c2 += c[i] * c[i];
+        }
+        for (double& v : n) v /= std::sqrt(norm2);
+        const double distance = julia->slice_distance(t);
+        const double r = std::min(2.0, 1.0 + std::sqrt(c2) + 1e-7);
+        const double exit = r * r + 1e-7;
+        const auto in_set = [&](const glm::dvec3& p) {
+            double q[4] = {p.x, p.y, p.z, (distance - n[0] * p.x - n[1] * p.y - n[2] * p.z) / n[3]};
+            for (int i = 0; i < julia->iterations; ++i) {
+                const double v2 = q[1] * q[1] + q[2] * q[2] + q[3] * q[3];
+                if (q[0] * q[0] + v2 > exit) return false;
+                const double x = q[0];
+                q[0] = x * x - v2 + c[0];
+                for (int k = 1; k < 4; ++k) q[k] = 2.0 * x * q[k] + c[k];
+            }
+            return true;
+        };
+        for (int tries = 0; tries < 1000000; ++tries) {
+            glm::dvec3 in(random.uniform(-r, r), random.uniform(-r, r), random.uniform(-r, r));
+            if (!in_set(in)) continue;
+            glm::dvec3 out = in + 5.0 * r * random.unit_vector();
+            for (int k = 0; k < 200; ++k) {
+                const glm::dvec3 mid = 0.5 * (in + out);
+                if (mid == in || mid == out) break;
+                (in_set(mid) ? in : out) = mid;
+            }
+            return in;
+        }
+        throw std::logic_error("sample_object_surface: a julia_fractal without a set");
+    }
     throw std::logic_error("sample_object_surface: a shape kind without a sampler");
 }
 
@@ -552,6 +596,12 @@ inline const std::vector<KindScene>& kind_scenes() {
          "contained_by { box { <-1, -0.5, -1>, <1, 0.5, 0.7> } }",
          "function { x * x + y * y + z * z - 0.2 - 0.5 * clock } threshold 0.1 * clock "
          "contained_by { sphere { <0.1, 0, 0>, 0.9 } }"},
+        // fractal1.pov's first quaternion z^2 + c; moving: its parameter
+        // and the slice's distance move with clock.
+        {"julia_fractal",
+         "<-0.083, 0.0, -0.83, -0.025> quaternion sqr max_iteration 8 precision 15",
+         "<-0.03, 0.5 - 0.3 * clock, -0.2, -0.5> quaternion max_iteration 6 precision 15 "
+         "slice <0, 0, 0, 1>, 0.2 * clock"},
         // The height_field still's 32 x 32 bump (on parse()'s include
         // path); the water level rises through it.
         {"height_field", "png \"bump.png\" smooth", "png \"bump.png\" water_level 0.6 * clock"},
