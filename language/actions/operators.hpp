@@ -31,6 +31,29 @@ struct binary_action {
         st.values.push(binary_op(Op, a, b));
     }
 };
+
+// A comparison of two strings is POV-Ray's Parse_Rel_String_Term: strcmp's
+// sign against 0 (so "a" < "b"), through strcmp's own split over time when
+// either string depends on clock. Other operands compare as numbers.
+template <TimeOp Op>
+struct comparison_action {
+    static bool is_string(const Value& v) { return v.is<std::string>() || v.is<TimedString>(); }
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        (void)in;
+        Value b = st.values.pop();
+        Value a = st.values.pop();
+        if (is_string(a) && is_string(b)) {
+            const std::vector<Value> args{a, b};
+            std::optional<Value> timed =
+                call_over_time("strcmp", args, st.domain.within(st.animation_time()),
+                               st.options.limits.time_pieces, st.random);
+            a = timed ? std::move(*timed) : call_builtin("strcmp", args, st.random);
+            b = Value{TimeFunction(0.0)};
+        }
+        st.values.push(binary_op(Op, a, b));
+    }
+};
 template <>
 struct action<g::multiplication> : binary_action<TimeOp::Multiply> {};
 template <>
@@ -40,17 +63,17 @@ struct action<g::addition> : binary_action<TimeOp::Add> {};
 template <>
 struct action<g::subtraction> : binary_action<TimeOp::Subtract> {};
 template <>
-struct action<g::less_equal> : binary_action<TimeOp::LessEqual> {};
+struct action<g::less_equal> : comparison_action<TimeOp::LessEqual> {};
 template <>
-struct action<g::greater_equal> : binary_action<TimeOp::GreaterEqual> {};
+struct action<g::greater_equal> : comparison_action<TimeOp::GreaterEqual> {};
 template <>
-struct action<g::not_equal> : binary_action<TimeOp::NotEqual> {};
+struct action<g::not_equal> : comparison_action<TimeOp::NotEqual> {};
 template <>
-struct action<g::less> : binary_action<TimeOp::Less> {};
+struct action<g::less> : comparison_action<TimeOp::Less> {};
 template <>
-struct action<g::greater> : binary_action<TimeOp::Greater> {};
+struct action<g::greater> : comparison_action<TimeOp::Greater> {};
 template <>
-struct action<g::equal> : binary_action<TimeOp::Equal> {};
+struct action<g::equal> : comparison_action<TimeOp::Equal> {};
 template <>
 struct action<g::logical_and> : binary_action<TimeOp::And> {};
 template <>

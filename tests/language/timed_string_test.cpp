@@ -124,6 +124,30 @@ TEST_CASE("a branch on clock that sets two strings makes one piecewise string",
     CHECK(said.find("] LATE\n") != std::string::npos);
 }
 
+TEST_CASE("strings compare with = != < <= > >= as POV-Ray's strcmp", "[language][time]") {
+    // POV-Ray's Parse_Rel_String_Term: the sign of strcmp against 0, for
+    // plain strings and for strings that depend on clock (then the
+    // comparison switches where the text does).
+    const auto scene = read(R"(
+#declare A = "abc";
+#if (A = "abc") sphere { 0, 1 } #end
+#if (A != "") sphere { 0, 2 } #end
+#if (A < "abd") sphere { 0, 3 } #end
+#if (A <= "abc") sphere { 0, 4 } #end
+#if ("b" > A) sphere { 0, 5 } #end
+#if ("ab" >= A) box { 0, 1 } #end
+#if (A != "abc") box { 0, 2 } #end
+#if (str(clock, 0, 0) != "0") cylinder { 0, y, 1 } #end
+)");
+    REQUIRE(scene.objects.size() == 6);
+    for (int i = 0; i < 5; ++i) CHECK(scene.objects[i]->lifetime.is_always());
+    // "%.0f": "0" up to 0.5 (half to even), "1" after it.
+    const rt::Lifetime& later = scene.objects[5]->lifetime;
+    CHECK_FALSE(later.contains(0.5));
+    CHECK(later.contains(after(0.5)));
+    CHECK(error_of("#if (\"a\" < 1) #end").formatted().find("cannot apply") != std::string::npos);
+}
+
 TEST_CASE("#include of a name on clock reads each file for its time", "[language][time][include]") {
     namespace fs = std::filesystem;
     const fs::path root = fs::temp_directory_path() / "hexant_timed_include_test";
