@@ -100,7 +100,13 @@ HEXANT_ERROR(rbracket, "expected ']'");
 HEXANT_ERROR(finish_setting_value, "expected a value after the finish setting");
 HEXANT_ERROR(reflection_amount, "expected a value or '{' after reflection");
 HEXANT_ERROR(reflection_value, "expected a value in reflection { }");
+HEXANT_ERROR(irid_amount, "expected the amount of iridescence in irid { }");
+HEXANT_ERROR(irid_setting_value, "expected a value after thickness or turbulence in irid { }");
+HEXANT_ERROR(reflection_number_value,
+             "expected a number after falloff or exponent in reflection { }");
 HEXANT_ERROR(ior_value, "expected a value after ior");
+HEXANT_ERROR(fade_setting_value,
+             "expected a value after fade_distance, fade_power, fade_colour or caustics");
 HEXANT_ERROR(shape_arguments, "expected the object's parameters");
 HEXANT_ERROR(mesh2_values, "expected the section's count and values");
 HEXANT_ERROR(mesh2_texture_count, "expected the number of textures");

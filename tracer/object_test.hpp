@@ -20,6 +20,8 @@ struct ObjectTest {
     // best. Returns whether it did.
     bool nearest(std::uint32_t index, const runtime::IntelligentObject& object,
                  std::optional<runtime::ObjectHit>& best, double& best_s) const {
+        // (An object hidden from this kind of ray: no_image, no_reflection.)
+        if (object.flags().hidden_from & state.sight) return false;
         std::int32_t slot = state.mailbox.find(index);
         if (slot == Mailbox::kUntested) {
             ++state.counters.object_tests;

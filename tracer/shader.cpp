@@ -7,6 +7,8 @@
 #include <glm/geometric.hpp>
 
 #include "runtime/geometry/offset_ray.hpp"
+#include "tracer/iridescence.hpp"
+#include "tracer/reflectivity.hpp"
 #include "tracer/sample_pattern.hpp"
 
 namespace hexant::tracer {
@@ -24,17 +26,6 @@ glm::dvec3 rgb(const runtime::ColourFunction& c, double t) {
 // adc_bailout (1/255).
 constexpr double kBailout = 1.0 / 255.0;
 
-// What `metallic` (an amount) makes of white light at a surface whose
-// pigment is `colour`, lit or seen at `cosine` from its normal: POV-Ray
-// 3.7's empirical Fresnel curve (trace.cpp, ComputePhongColour,
-// ComputeSpecularColour and ComputeReflection, "[DB 9/94]"): the colour
-// blended in by metallic * (1 - F), F rising to 1 at grazing angles.
-glm::dvec3 metallic_tint(double metallic, double cosine, const glm::dvec3& colour) {
-    const double x = std::acos(std::clamp(cosine, -1.0, 1.0)) / (0.5 * M_PI);
-    const double f = std::clamp(0.014567225 / ((x - 1.12) * (x - 1.12)) - 0.011612903, 0.0, 1.0);
-    return glm::dvec3(1.0) + metallic * (1.0 - f) * (colour - glm::dvec3(1.0));
-}
-
 }  // namespace
 
 Shader::Shader(const runtime::SceneDescription& scene, const RayQuery& query, LightTravel travel,
@@ -44,7 +35,9 @@ Shader::Shader(const runtime::SceneDescription& scene, const RayQuery& query, Li
       filtering_(filtering),
       background_(scene.background),
       ambient_light_(scene.global.ambient_light),
-      max_trace_level_(std::max(1, scene.global.max_trace_level)) {
+      max_trace_level_(std::max(1, scene.global.max_trace_level)),
+      irid_wavelength_(scene.global.irid_wavelength),
+      legacy_sky_(scene.global.legacy_sky) {
     for (const auto& l : scene.lights) lights_.emplace_back(l);
     still_ambient_ = !ambient_light_.depends_on_time();
     fixed_ambient_ = rgb(ambient_light_, 0.0);
@@ -127,6 +120,23 @@ glm::dvec3 Shader::sky(const glm::dvec3& direction, double t) const {
     // the background is one more layer, opaque.
     glm::dvec3 colour(0.0), through(1.0);
     const glm::dvec3 emission = rgb(sky_emission_, t);
+    if (legacy_sky_) {
+        // POV-Ray 3.6's rule: a layer shows by what the product of the
+        // filters and transmits above it lets through (their sum), and the
+        // background by that product's colour times its filter, plus its
+        // transmit.
+        glm::dvec3 product(1.0);
+        double filter = 1.0, transmit = 1.0, trans = 1.0;
+        for (const auto& layer : sky_layers_) {
+            const runtime::MaterialSample m = layer.at(direction, glm::dvec2(0.0), t);
+            colour += m.colour * (trans * (1.0 - m.filter - m.transmit));
+            product *= m.colour;
+            filter *= m.filter;
+            transmit *= m.transmit;
+            trans = std::fabs(filter) + std::fabs(transmit);
+        }
+        return colour * emission + background * (product * filter + glm::dvec3(transmit));
+    }
     for (const auto& layer : sky_layers_) {
         const runtime::MaterialSample m =
             layer.at(direction, glm::dvec2(0.0), t);  // (no uv: refused on a sky)
@@ -156,7 +166,9 @@ inline void Shader::place(const ShadedLight& light, const Hit& h,
 }
 
 inline std::optional<runtime::ObjectHit> Shader::nearest(const Ray4& ray, Ray4& on,
-                                                         ThreadState& state, double s_max) const {
+                                                         ThreadState& state, std::uint8_t sight,
+                                                         double s_max) const {
+    state.sight = sight;
     if (ray.direction.w == 0.0) return query_.first_hit(ray, 0.0, s_max, state);
     ++state.counters.travelling_rays;
     const double s_floor = LightTravel::floor_parameter(ray, travel_.floor);
@@ -182,6 +194,10 @@ inline glm::dvec3 Shader::shadow_filter(std::size_t index, const Hit& h,
     const ShadedLight& light = lights_[index];
     glm::dvec3 direction = known.to_light;
     double reach = known.reach;
+    // (A light behind a double_illuminate surface: the shadow ray leaves
+    // from that side, so that the surface does not shadow itself.)
+    const glm::dvec3& start =
+        h.double_lit && glm::dot(h.geometric, direction) < 0.0 ? h.back_start : h.start;
     if (light.is_area()) {
         // One point of the grid per sample: over a pixel's samples the
         // shadow averages the grid, as POV-Ray's fully subdivided one.
@@ -191,14 +207,14 @@ inline glm::dvec3 Shader::shadow_filter(std::size_t index, const Hit& h,
             static_cast<std::uint32_t>(index + lights_.size() * std::size_t(h.depth)), s.jitter);
         const glm::dvec3 offset =
             light.area_offset({u[0], u[1]}, LightRay{known.to_light, 0.0}, h.time);
-        const LightRay toward = light.ray_from(h.start, h.time, offset);
+        const LightRay toward = light.ray_from(start, h.time, offset);
         if (toward.direction == glm::dvec3(0.0)) return glm::dvec3(1.0);
         direction = toward.direction;
         reach = toward.depth;
     }
     if (!(reach > 0.0)) return glm::dvec3(1.0);
     ++state.counters.shadow_rays;
-    const Ray4 ray = travel_.ray(h.start, h.time, direction);
+    const Ray4 ray = travel_.ray(start, h.time, direction);
     // (Objects that may let light through do not block: `blocked` passes
     // them by, and they filter what it lets pass.)
     if (blocked(ray, reach, state)) return glm::dvec3(0.0);
@@ -212,13 +228,20 @@ glm::dvec3 Shader::filtered(Ray4 ray, double reach, int depth, ThreadState& stat
     glm::dvec3 through(1.0);
     for (int crossed = 0; crossed < kMostSurfaces; ++crossed) {
         Ray4 on = ray;
-        const auto hit = nearest(ray, on, state, reach);
+        const auto hit = nearest(ray, on, state, runtime::kSightAll, reach);
         if (!hit) return through;
         const runtime::SurfacePoint p = hit->object->complete(on, *hit);
         // (A no_shadow object is passed by, as POV-Ray's precondition.)
         if (hit->object->casts_shadow()) {
             ++state.counters.filtered_surfaces;
-            through *= transmittance(p, depth, state);
+            through *= transmittance(p, d, depth, state);
+            // Leaving an object whose interior fades light: by the way
+            // inside (POV-Ray's ComputeShadowTexture, which wants a power
+            // above 0 too).
+            if (glm::dot(p.geometric_normal, d) > 0.0)
+                if (const auto fade = p.texture->fade_at(p.event.w); fade && fade->power > 0.0)
+                    through *=
+                        fade->through(glm::distance(glm::dvec3(p.event), glm::dvec3(ray.origin)));
             // POV-Ray's full shadow: below its EPSILON in every channel.
             if (std::max({std::fabs(through.x), std::fabs(through.y), std::fabs(through.z)}) <
                 1.0e-10)
@@ -236,37 +259,49 @@ glm::dvec3 Shader::filtered(Ray4 ray, double reach, int depth, ThreadState& stat
     return through;
 }
 
-glm::dvec3 Shader::transmittance(const runtime::SurfacePoint& p, int depth,
+glm::dvec3 Shader::transmittance(const runtime::SurfacePoint& p, const glm::dvec3& d, int depth,
                                  ThreadState& state) const {
     const glm::dvec3 point(p.event);
     const double t = p.event.w;
-    const auto filter = [](const runtime::MaterialSample& m) {
-        return m.colour * m.filter + glm::dvec3(m.transmit);
+    // Faked caustics (interior's caustics): each layer lets through more
+    // where the light crosses it head-on, by its own normal.
+    const double caustics = p.texture->caustics_at(t);
+    // (The normal faces back along the shadow ray, as POV-Ray's
+    // ComputeShadowColour turns it, before the layers perturb it.)
+    const glm::dvec3 facing =
+        glm::dot(p.shading_normal, d) > 0.0 ? -p.shading_normal : p.shading_normal;
+    const auto filter = [&](const runtime::TextureSample::Layer& layer) {
+        const runtime::MaterialSample& m = layer.material;
+        glm::dvec3 passed = m.colour * m.filter + glm::dvec3(m.transmit);
+        if (caustics != 0.0)
+            passed *= 1.0 + std::pow(std::fabs(glm::dot(layer.normal, d)), caustics);
+        return passed;
     };
     if (p.texture->single_layer()) {
         runtime::TextureSample::Layer layer;
-        p.texture->sample_layer(point, p.uv, t, p.shading_normal, layer);
-        return filter(layer.material);
+        p.texture->sample_layer(point, p.uv, t, facing, layer);
+        return filter(layer);
     }
     // (The hit being lit holds depth's scratch; the recursion's next one
     // is free until this returns.)
     runtime::TextureSample& sample = state.shading_at(depth + 1).texture;
     sample.clear();
-    p.texture->sample(point, p.uv, t, p.shading_normal, sample);
+    p.texture->sample(point, p.uv, t, facing, sample);
     glm::dvec3 sum(0.0);
     for (const runtime::TextureSample::Plain& plain : sample.plains) {
         glm::dvec3 product(1.0);
         for (std::size_t i = plain.first; i < plain.first + plain.count; ++i)
-            product *= filter(sample.layers[i].material);
+            product *= filter(sample.layers[i]);
         sum += plain.weight * product;
     }
     return sum;
 }
 
-glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, ThreadState& state) const {
+glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, std::uint8_t sight,
+                            ThreadState& state) const {
     const double t = ray.origin.w;
     Ray4 on = ray;
-    const auto hit = nearest(ray, on, state);
+    const auto hit = nearest(ray, on, state, sight);
     // (A ray that hits nothing goes POV-Ray's BOUND_HUGE, 2e10, through fog.)
     if (!hit) {
         const glm::dvec3 seen = sky(glm::normalize(glm::dvec3(ray.direction)), t);
@@ -274,6 +309,8 @@ glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, ThreadSta
     }
     const runtime::SurfacePoint p = hit->object->complete(on, *hit);
     Hit h{on, p, depth, weight};
+    h.sight = sight;
+    h.double_lit = hit->object->flags().double_illuminate;
     h.d = glm::normalize(glm::dvec3(ray.direction));
     h.point = glm::dvec3(p.event);
     h.time = p.event.w;
@@ -287,6 +324,7 @@ glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, ThreadSta
     if (h.back) h.geometric = -h.geometric;
     if (glm::dot(h.raw, h.d) > 0.0) h.raw = -h.raw;
     h.start = runtime::geometry::offset_ray(h.point, p.error, h.geometric);
+    if (h.double_lit) h.back_start = runtime::geometry::offset_ray(h.point, p.error, -h.geometric);
 
     // What the texture shows here: the plain textures its patterns pick,
     // their layers, each layer's normal perturbed after the turn (as
@@ -342,7 +380,10 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
             ShadingScratch::Light& known = seen ? (*seen)[i] : alone;
             if (known.state == ShadingScratch::Light::State::Unknown) place(light, h, known);
             if (known.state == ShadingScratch::Light::State::Dark) continue;
-            const double cosine = glm::dot(n, known.to_light);
+            double cosine = glm::dot(n, known.to_light);
+            // (double_illuminate: a light behind the surface lights it as
+            // one in front, POV-Ray's fabs of the cosine.)
+            if (h.double_lit) cosine = std::fabs(cosine);
             if (cosine <= 0.0) continue;
             if (known.state == ShadingScratch::Light::State::Placed) {
                 known.state = ShadingScratch::Light::State::Seen;
@@ -372,10 +413,18 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
                 const double c = glm::dot(half, n);
                 if (c > 0.0) lit += m.specular * std::pow(c, 1.0 / m.roughness) * highlight;
             }
+            if (m.irid > 0.0)
+                lit *= iridescence(m, known.to_light, h.d, n, h.point, irid_wavelength_,
+                                   noise_generator_);
             own += lit * known.colour;
         }
         colour += own * through;
         through *= m.filter * m.colour + glm::dvec3(m.transmit);
+        // conserve_energy: less passes through by what the layer reflects.
+        if (m.conserve_energy && reflects(m))
+            through *=
+                glm::min(glm::dvec3(1.0),
+                         glm::dvec3(1.0) - reflectivity(m, -glm::dot(h.d, n), h.back).colour);
         trans = std::min(1.0, std::fabs(0.297 * through.x + 0.589 * through.y + 0.114 * through.z));
     }
     if (h.depth >= max_trace_level_) return colour;
@@ -409,29 +458,45 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
                                                            : h.start;
         ++state.counters.refracted_rays;
         const Ray4 next = travel_.ray(from, h.time, out);
-        const glm::dvec3 behind = radiance(next, h.depth + 1, through_weight, state);
-        colour += total_internal_reflection ? behind : behind * through;
+        // (POV-Ray's SetFlags: a ray refracted keeps its kind; reflected
+        // back inside, it is a reflection ray.)
+        const glm::dvec3 behind =
+            radiance(next, h.depth + 1, through_weight,
+                     total_internal_reflection ? runtime::kSightReflection : h.sight, state);
+        // Light that crossed the object's inside to get here fades with
+        // the distance it went (fade_distance; POV-Ray's attCol).
+        glm::dvec3 faded(1.0);
+        if (h.back)
+            if (const auto fade = h.p.texture->fade_at(h.time))
+                faded = fade->through(glm::distance(h.point, glm::dvec3(h.ray.origin)));
+        colour += total_internal_reflection ? faded * behind : faded * behind * through;
     }
     // Each layer's reflection (after total internal reflection, not along
     // the top layer's normal, which that already followed).
     for (std::size_t i = 0; i < used; ++i) {
         const runtime::TextureSample::Layer& layer = layers[i];
-        const glm::dvec3& reflection = layer.material.reflection;
-        if (reflection == glm::dvec3(0.0)) continue;
+        const runtime::MaterialSample& m = layer.material;
+        if (!reflects(m)) continue;
         if (total_internal_reflection && layer.normal == layers[0].normal) continue;
-        // (The weight of the layer: what shows through the ones above it.)
-        const double reflect_weight = h.weight * layer_trans(layers, i) *
-                                      std::max({reflection.x, reflection.y, reflection.z});
+        const Reflectivity r = reflectivity(m, -glm::dot(h.d, layer.normal), h.back);
+        if (r.colour == glm::dvec3(0.0)) continue;
+        // (The weight of the layer: what shows through the ones above it;
+        // POV-Ray's, untinted by metallic.)
+        const double reflect_weight = h.weight * layer_trans(layers, i) * r.weight;
         if (reflect_weight < kBailout) continue;
         ++state.counters.reflected_rays;
-        const Ray4 reflected = travel_.ray(h.start, h.time, reflect(h.d, layer.normal, h.raw));
-        // (reflection { metallic }: the weight above is POV-Ray's, untinted.)
-        const glm::dvec3 tint =
-            layer.material.reflection_metallic != 0.0
-                ? metallic_tint(layer.material.reflection_metallic, -glm::dot(h.d, layer.normal),
-                                layer.material.colour)
-                : glm::dvec3(1.0);
-        colour += reflection * tint * radiance(reflected, h.depth + 1, reflect_weight, state);
+        const glm::dvec3 out = reflect(h.d, layer.normal, h.raw);
+        const Ray4 reflected = travel_.ray(h.start, h.time, out);
+        glm::dvec3 seen =
+            radiance(reflected, h.depth + 1, reflect_weight, runtime::kSightReflection, state);
+        if (m.irid > 0.0)
+            seen *=
+                iridescence(m, out, h.d, layer.normal, h.point, irid_wavelength_, noise_generator_);
+        // (reflection { exponent E }: POV-Ray raises the light to 1 / E.)
+        if (m.reflection_power != 1.0)
+            for (int k = 0; k < 3; ++k)
+                seen[k] = std::pow(std::max(seen[k], 0.0), m.reflection_power);
+        colour += r.colour * seen;
     }
     return colour;
 }

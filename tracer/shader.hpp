@@ -40,18 +40,20 @@ class Shader {
     // The colour seen along a primary ray.
     glm::dvec3 trace(const runtime::Ray4& ray, ThreadState& state) const {
         ++state.counters.primary_rays;
-        return radiance(ray, 1, 1.0, state);
+        return radiance(ray, 1, 1.0, runtime::kSightImage, state);
     }
 
   private:
-    glm::dvec3 radiance(const runtime::Ray4& ray, int depth, double weight,
+    // `sight`: the kind of ray (runtime::RaySight), which decides the
+    // objects hidden from it.
+    glm::dvec3 radiance(const runtime::Ray4& ray, int depth, double weight, std::uint8_t sight,
                         ThreadState& state) const;
     // The nearest hit along `ray` within (0, s_max), and in `on` the ray it
     // is on: `ray` itself (on is left alone: the caller sets it to ray),
     // or, for light that would run back past the floor, its held piece
     // (light_travel.hpp).
     [[gnu::always_inline]] inline std::optional<runtime::ObjectHit> nearest(
-        const runtime::Ray4& ray, runtime::Ray4& on, ThreadState& state,
+        const runtime::Ray4& ray, runtime::Ray4& on, ThreadState& state, std::uint8_t sight,
         double s_max = std::numeric_limits<double>::infinity()) const;
     // Whether anything lies on `ray` within (0, reach], both pieces.
     [[gnu::always_inline]] inline bool blocked(const runtime::Ray4& ray, double reach,
@@ -68,6 +70,11 @@ class Shader {
         glm::dvec3 d{0.0}, point{0.0}, raw{0.0}, geometric{0.0}, start{0.0};
         double time = 0.0;
         bool back = false;
+        std::uint8_t sight = runtime::kSightImage;  // the ray's kind
+        // double_illuminate: lit from behind its surface too; shadow rays
+        // toward such lights start off that side (back_start).
+        bool double_lit = false;
+        glm::dvec3 back_start{0.0};
     };
     // The colour of one plain texture (its `count` layers, top first) at
     // the hit; `seen` keeps what is known of each light across the plain
@@ -92,7 +99,9 @@ class Shader {
     // A surface's filter: per plain texture the product over its layers of
     // colour x filter + transmit, blended by the plain textures' weights
     // (ComputeShadowTexture, ComputeOneTextureColour).
-    glm::dvec3 transmittance(const runtime::SurfacePoint& p, int depth, ThreadState& state) const;
+    // (`d`: the shadow ray's unit direction, for faked caustics.)
+    glm::dvec3 transmittance(const runtime::SurfacePoint& p, const glm::dvec3& d, int depth,
+                             ThreadState& state) const;
     // How much shows through the layers above layer `index` (POV-Ray's trans).
     static double layer_trans(const runtime::TextureSample::Layer* layers, std::size_t index);
     // The direction reflected about `normal`, kept above the surface whose
@@ -113,11 +122,13 @@ class Shader {
     std::vector<runtime::TextureEvaluator> sky_layers_;
     runtime::ColourFunction sky_emission_;
     std::vector<runtime::Fog> fogs_;
-    int noise_generator_ = 2;  // global_settings { noise_generator } (fog turbulence)
+    int noise_generator_ = 2;  // global_settings { noise_generator } (fog, iridescence)
     runtime::ColourFunction ambient_light_;
     bool still_ambient_ = false;
     glm::dvec3 fixed_ambient_{0.0};
     int max_trace_level_;
+    glm::dvec3 irid_wavelength_;  // global_settings' (iridescence.hpp)
+    bool legacy_sky_ = false;     // GlobalSettings::legacy_sky
 };
 
 }  // namespace hexant::tracer

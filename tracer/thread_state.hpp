@@ -8,6 +8,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "runtime/objects/intelligent_object.hpp"
 #include "runtime/texture/texture_evaluator.hpp"
 #include "tracer/counters.hpp"
 #include "tracer/mailbox.hpp"
@@ -47,6 +48,9 @@ struct ThreadState {
     Mailbox mailbox;
     Counters counters;
     SampleIndex sample{};
+    // The kind of ray being walked (runtime::RaySight): objects hidden from
+    // it are passed by (tracer/object_test.hpp).
+    std::uint8_t sight = runtime::kSightAll;
     std::deque<ShadingScratch>
         shading{};  // by depth (a deque: a deeper one leaves the others in place)
     ShadingScratch& shading_at(int depth) {

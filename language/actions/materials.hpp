@@ -398,19 +398,113 @@ struct action<g::finish_setting> {
             f.unrendered.push_back(st.unrendered(in.position(), name));
     }
 };
+// reflection V or reflection { MIN ...}: the minimum; the maximum the
+// same until one is written (POV-Ray's Parse_Finish). The old syntax, V
+// alone, also puts the falloff back to 1.
+inline void set_reflection(runtime::Finish& f, const Value& v) {
+    if (v.is<TimeFunction>()) {
+        const TimeFunction x = v.as<TimeFunction>();
+        f.reflection = runtime::ColourFunction{{x, x, x, 0.0, 0.0}};
+    } else {
+        f.reflection = to_colour(v, "reflection");
+        f.reflection.c[3] = f.reflection.c[4] = 0.0;
+    }
+    f.reflection_max.reset();
+}
 template <>
 struct action<g::reflection_value> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.values.pop();
+        set_reflection(st.blocks.edit<runtime::Finish>(in.position(), "reflection"), v);
+    }
+};
+template <>
+struct action<g::reflection_plain_value> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        Value v = st.values.pop();
         auto& f = st.blocks.edit<runtime::Finish>(in.position(), "reflection");
+        set_reflection(f, v);
+        f.reflection_falloff = 1.0;
+    }
+};
+template <>
+struct action<g::reflection_maximum_value> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        Value v = st.values.pop();
+        auto& f = st.blocks.edit<runtime::Finish>(in.position(), "reflection");
+        runtime::ColourFunction most;
         if (v.is<TimeFunction>()) {
             const TimeFunction x = v.as<TimeFunction>();
-            f.reflection = runtime::ColourFunction{{x, x, x, 0.0, 0.0}};
+            most = runtime::ColourFunction{{x, x, x, 0.0, 0.0}};
         } else {
-            f.reflection = to_colour(v, "reflection");
-            f.reflection.c[3] = f.reflection.c[4] = 0.0;
+            most = to_colour(v, "reflection's maximum");
+            most.c[3] = most.c[4] = 0.0;
         }
+        f.reflection_max = most;
+    }
+};
+template <>
+struct action<g::reflection_number_name> : name_action {};
+template <>
+struct action<g::reflection_number_value> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        const TimeFunction x = to_float(st.values.pop(), "the reflection's value");
+        const std::string name = st.values.pop_name();
+        auto& f = st.blocks.edit<runtime::Finish>(in.position(), name.c_str());
+        if (name == "exponent") {
+            // (POV-Ray keeps 1 / exponent: 0 would make it infinite.)
+            if (x.is_constant() && x.constant() == 0.0)
+                throw ValueError("the reflection's exponent must not be 0");
+            f.reflection_exponent = x;
+        } else {
+            f.reflection_falloff = x;
+        }
+    }
+};
+template <>
+struct action<g::reflection_fresnel> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        std::vector<Value> given = st.values.close_frame();
+        // POV-Ray's (int) Allow_Float(1.0) != 0.
+        const double on = given.empty() ? 1.0 : to_constant(given[0], "fresnel");
+        st.blocks.edit<runtime::Finish>(in.position(), "fresnel").reflection_fresnel =
+            std::trunc(on) != 0.0;
+    }
+};
+template <>
+struct action<g::irid_amount> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        st.blocks.edit<runtime::Finish>(in.position(), "irid").irid =
+            to_float(st.values.pop(), "irid");
+    }
+};
+template <>
+struct action<g::irid_setting_name> : name_action {};
+template <>
+struct action<g::irid_setting_value> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        Value v = st.values.pop();
+        const std::string name = st.values.pop_name();
+        auto& f = st.blocks.edit<runtime::Finish>(in.position(), name.c_str());
+        if (name == "thickness")
+            f.irid_thickness = to_float(v, "irid's thickness");
+        else  // (POV-Ray reads a vector and keeps its x.)
+            f.irid_turbulence = v.is<Vector>() ? to_vector(v, "irid's turbulence").c[0]
+                                               : to_float(v, "irid's turbulence");
+    }
+};
+template <>
+struct action<g::finish_conserve_energy> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        st.blocks.edit<runtime::Finish>(in.position(), "conserve_energy").conserve_energy = true;
     }
 };
 // metallic [AMOUNT] in a finish, or in its reflection { }: 1 when no
@@ -435,8 +529,8 @@ struct action<g::reflection_metallic> {
         st.blocks.edit<runtime::Finish>(in.position(), "metallic").reflection_metallic = amount;
     }
 };
-// conserve_energy, fresnel, irid { }, subsurface { }: kept with the finish,
-// warned where it is used.
+// A finish's own fresnel (POV-Ray 3.8's), subsurface { }: kept
+// with the finish, warned where it is used.
 template <>
 struct action<g::finish_flag> : unrendered_action<runtime::Finish> {};
 template <>
@@ -444,35 +538,6 @@ struct action<g::finish_ignored_block> : unrendered_action<runtime::Finish> {};
 // caustics, dispersion, fade_*, media in an interior.
 template <>
 struct action<g::interior_ignored_setting> : unrendered_action<runtime::Interior> {};
-// In reflection { }: falloff, exponent, fresnel, and a maximum after a
-// comma (variable reflection); metallic is rendered (reflection_metallic).
-template <>
-struct action<g::reflection_maximum> {
-    template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        auto& f = st.blocks.edit<runtime::Finish>(in.position(), "reflection");
-        f.unrendered.push_back(
-            {{in.position().source, in.position().line, in.position().column},
-             "a variable reflection's maximum is read but not rendered as POV-Ray renders "
-             "it: hexant reflects by the minimum at every angle"});
-    }
-};
-template <>
-struct action<g::reflection_ignored_option> {
-    template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        const std::string w = word(in);
-        if (w == "metallic") return;
-        auto& f = st.blocks.edit<runtime::Finish>(in.position(), "reflection");
-        if (w.empty())
-            f.unrendered.push_back(
-                {{in.position().source, in.position().line, in.position().column},
-                 "a variable reflection's maximum is read but not rendered as POV-Ray renders "
-                 "it: hexant reflects by the minimum at every angle"});
-        else
-            f.unrendered.push_back(st.unrendered(in.position(), w));
-    }
-};
 template <>
 struct action<g::ignored_value> {
     template <typename ActionInput>
@@ -508,6 +573,27 @@ struct action<g::interior_base> {
         if (!v.is<runtime::Interior>())
             throw ValueError("interior { } starts with an interior, not a " + type_name(v));
         st.blocks.edit<runtime::Interior>(in.position(), "an interior") = v.as<runtime::Interior>();
+    }
+};
+template <>
+struct action<g::fade_setting_name> : name_action {};
+template <>
+struct action<g::fade_setting_value> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        Value v = st.values.pop();
+        const std::string name = st.values.pop_name();
+        auto& interior = st.blocks.edit<runtime::Interior>(in.position(), name.c_str());
+        if (name == "fade_distance") {
+            interior.fade_distance = to_float(v, name);
+        } else if (name == "fade_power") {
+            interior.fade_power = to_float(v, name);
+        } else if (name == "caustics") {
+            interior.caustics = to_float(v, name);
+        } else {
+            interior.fade_colour = to_colour(v, name);
+            interior.fade_colour.c[3] = interior.fade_colour.c[4] = 0.0;
+        }
     }
 };
 template <>

@@ -178,12 +178,22 @@ struct action<g::object_texture> {
                                         : std::move(texture);
     }
 };
+// POV-Ray moves a texture's pigment and normal themselves when it moves
+// the object (Transform_Textures): one given after the object's
+// transforms is not moved by them. hexant keeps those transforms on the
+// texture, so the new part starts with their inverse.
+inline void undo_texture_transforms(runtime::Transform& part, const runtime::Texture& texture) {
+    if (texture.uv_mapping == runtime::UvMapping::Off && !texture.transform.empty())
+        part.append(texture.transform.inverse());
+}
 template <>
 struct action<g::object_pigment> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.values.pop();
-        object_texture(st, in.position()).pigment = v.as<runtime::Pigment>();
+        runtime::Texture& texture = object_texture(st, in.position());
+        texture.pigment = v.as<runtime::Pigment>();
+        undo_texture_transforms(texture.pigment.transform, texture);
     }
 };
 template <>
@@ -191,7 +201,9 @@ struct action<g::object_normal> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.values.pop();
-        object_texture(st, in.position()).normal = v.as<runtime::Normal>();
+        runtime::Texture& texture = object_texture(st, in.position());
+        texture.normal = v.as<runtime::Normal>();
+        undo_texture_transforms(texture.normal->transform, texture);
     }
 };
 template <>
@@ -238,9 +250,12 @@ struct action<g::object_flag> {
             record.hollow = on;
         else if (name == "inverse")
             record.inverse = on;
-        else if (on &&
-                 (name == "no_image" || name == "no_reflection" || name == "double_illuminate"))
-            record.unrendered.push_back(st.unrendered(in.position(), name));
+        else if (name == "no_image")
+            record.no_image = on;
+        else if (name == "no_reflection")
+            record.no_reflection = on;
+        else if (name == "double_illuminate")
+            record.double_illuminate = on;
         // sturm and no_radiosity cannot change the image (language/keyword_rules.cpp).
     }
 };

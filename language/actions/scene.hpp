@@ -411,6 +411,16 @@ struct action<g::global_setting> {
                 level = 256;
             }
             st.scene.global.max_trace_level = static_cast<int>(std::max(1LL, level));
+        } else if (name == "irid_wavelength") {
+            const runtime::ColourFunction c = to_colour(v, name);
+            glm::dvec3& w = st.scene.global.irid_wavelength;
+            for (int k = 0; k < 3; ++k) {
+                if (!c.c[k].is_constant())
+                    throw ValueError("irid_wavelength must not depend on clock");
+                w[k] = c.c[k].constant();
+            }
+            if (!(w.x != 0.0 && w.y != 0.0 && w.z != 0.0) || !std::isfinite(w.x + w.y + w.z))
+                throw ValueError("irid_wavelength's wavelengths must be finite and not 0");
         } else
             st.scene.global.ambient_light = to_colour(v, name);
     }

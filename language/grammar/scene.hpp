@@ -85,7 +85,8 @@ struct fog_block : p::seq<fog_open, p::star<fog_item>, p::must<rbrace>> {};
 HEXANT_KEYWORD(kw_global_settings, "global_settings");
 struct global_setting_name
     : p::sor<TAO_PEGTL_KEYWORD("assumed_gamma"), TAO_PEGTL_KEYWORD("max_trace_level"),
-             TAO_PEGTL_KEYWORD("ambient_light"), TAO_PEGTL_KEYWORD("noise_generator")> {};
+             TAO_PEGTL_KEYWORD("ambient_light"), TAO_PEGTL_KEYWORD("noise_generator"),
+             TAO_PEGTL_KEYWORD("irid_wavelength")> {};
 struct global_setting_value : p::seq<expression> {};
 struct global_setting : p::seq<global_setting_name, ws, p::must<global_setting_value>> {};
 struct charset_name : p::identifier {};

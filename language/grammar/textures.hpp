@@ -336,39 +336,53 @@ struct reflection_value : p::seq<expression> {};
 struct metallic_amount : p::seq<p::not_at<p::one<'<'>>, expression> {};
 struct reflection_metallic
     : p::seq<TAO_PEGTL_KEYWORD("metallic"), ws, frame_open, p::opt<metallic_amount>> {};
-struct reflection_option
-    : p::sor<reflection_metallic,
-             p::seq<p::sor<TAO_PEGTL_KEYWORD("falloff"), TAO_PEGTL_KEYWORD("exponent")>, ws,
-                    p::must<ignored_value>>,
-             p::seq<TAO_PEGTL_KEYWORD("fresnel"), ws, p::opt<ignored_value>>,
-             p::seq<comma, p::opt<ignored_value>>> {};  // the maximum: hexant uses the minimum
-struct reflection_ignored_option : reflection_option {};
+// falloff F, exponent E, fresnel [BOOL] (POV-Ray's Parse_Finish).
+struct reflection_number_name
+    : p::sor<TAO_PEGTL_KEYWORD("falloff"), TAO_PEGTL_KEYWORD("exponent")> {};
+struct reflection_number_value : p::seq<expression> {};
+struct reflection_number : p::seq<reflection_number_name, ws, p::must<reflection_number_value>> {};
+struct reflection_fresnel
+    : p::seq<TAO_PEGTL_KEYWORD("fresnel"), ws, frame_open, p::opt<metallic_amount>> {};
+struct reflection_option : p::sor<reflection_metallic, reflection_number, reflection_fresnel> {};
 // The maximum with or without its comma (POV-Ray's Parse_Comma is
 // optional): { 0.0 1.0 fresnel on }.
+struct reflection_maximum_value : p::seq<expression> {};
 struct reflection_maximum
     : p::seq<p::opt<comma>,
              p::not_at<
                  p::sor<TAO_PEGTL_KEYWORD("metallic"), TAO_PEGTL_KEYWORD("falloff"),
                         TAO_PEGTL_KEYWORD("exponent"), TAO_PEGTL_KEYWORD("fresnel"), p::one<'}'>>>,
-             ignored_value> {};
-struct reflection_block : p::seq<lbrace, p::must<reflection_value>, p::opt<reflection_maximum>,
-                                 p::star<reflection_ignored_option>, p::must<rbrace>> {};
-struct reflection_amount : p::sor<reflection_block, reflection_value> {};
+             reflection_maximum_value> {};
+struct reflection_open : lbrace {};
+struct reflection_block
+    : p::seq<reflection_open, p::must<reflection_value>, p::opt<reflection_maximum>,
+             p::star<reflection_option>, p::must<rbrace>> {};
+// `reflection V` alone (POV-Ray's old syntax) also resets the falloff.
+struct reflection_plain_value : p::seq<expression> {};
+struct reflection_amount : p::sor<reflection_block, reflection_plain_value> {};
 struct reflection_setting
     : p::seq<TAO_PEGTL_KEYWORD("reflection"), ws, p::must<reflection_amount>> {};
-struct finish_flag
-    : p::seq<p::sor<TAO_PEGTL_KEYWORD("conserve_energy"), TAO_PEGTL_KEYWORD("fresnel")>, ws,
-             p::opt<ignored_value>> {};
+// conserve_energy (no value in POV-Ray 3.7); a finish's own fresnel is
+// POV-Ray 3.8's (warned).
+struct finish_conserve_energy : p::seq<TAO_PEGTL_KEYWORD("conserve_energy"), ws> {};
+struct finish_flag : p::seq<TAO_PEGTL_KEYWORD("fresnel"), ws, p::opt<ignored_value>> {};
 struct finish_metallic
     : p::seq<TAO_PEGTL_KEYWORD("metallic"), ws, frame_open, p::opt<metallic_amount>> {};
-struct finish_ignored_block
-    : p::seq<p::sor<TAO_PEGTL_KEYWORD("irid"), TAO_PEGTL_KEYWORD("subsurface")>, ws, skip::braced,
-             ws> {};
+struct finish_ignored_block : p::seq<TAO_PEGTL_KEYWORD("subsurface"), ws, skip::braced, ws> {};
+// irid { AMOUNT [thickness T] [turbulence V] } (POV-Ray's Parse_Finish).
+struct irid_open : p::seq<TAO_PEGTL_KEYWORD("irid"), ws, p::must<lbrace>> {};
+struct irid_amount : p::seq<expression> {};
+struct irid_setting_name : p::sor<TAO_PEGTL_KEYWORD("thickness"), TAO_PEGTL_KEYWORD("turbulence")> {
+};
+struct irid_setting_value : p::seq<expression> {};
+struct irid_setting : p::seq<irid_setting_name, ws, p::must<irid_setting_value>> {};
+struct irid_block
+    : p::seq<irid_open, p::must<irid_amount>, p::star<irid_setting>, p::must<rbrace>> {};
 struct finish_open : p::seq<kw_finish, p::must<lbrace>> {};
 struct finish_base : p::seq<expression> {};
-struct finish_item
-    : p::sor<directive<finish_item>, macro_call<finish_item>, finish_setting, reflection_setting,
-             finish_metallic, finish_flag, finish_ignored_block> {};
+struct finish_item : p::sor<directive<finish_item>, macro_call<finish_item>, finish_setting,
+                            reflection_setting, finish_metallic, finish_conserve_energy,
+                            finish_flag, irid_block, finish_ignored_block> {};
 struct finish_block
     : p::seq<finish_open, p::opt<finish_base>, p::star<finish_item>, p::must<rbrace>> {};
 
@@ -421,14 +435,19 @@ struct interior_base : p::seq<expression> {};
 struct ior_value : p::seq<expression> {};
 struct ior_setting : p::seq<TAO_PEGTL_KEYWORD("ior"), ws, p::must<ior_value>> {};
 struct interior_ignored_setting
-    : p::sor<p::seq<p::sor<TAO_PEGTL_KEYWORD("caustics"), TAO_PEGTL_KEYWORD("dispersion"),
-                           TAO_PEGTL_KEYWORD("dispersion_samples"),
-                           TAO_PEGTL_KEYWORD("fade_distance"), TAO_PEGTL_KEYWORD("fade_power"),
-                           TAO_PEGTL_KEYWORD("fade_color"), TAO_PEGTL_KEYWORD("fade_colour")>,
-                    ws, p::must<ignored_value>>,
-             p::seq<TAO_PEGTL_KEYWORD("media"), ws, p::must<skipped_block>, ws>> {};
+    : p::sor<
+          p::seq<p::sor<TAO_PEGTL_KEYWORD("dispersion"), TAO_PEGTL_KEYWORD("dispersion_samples")>,
+                 ws, p::must<ignored_value>>,
+          p::seq<TAO_PEGTL_KEYWORD("media"), ws, p::must<skipped_block>, ws>> {};
+// fade_distance D, fade_power P, fade_colour C, caustics C (runtime::Interior).
+struct fade_setting_name : p::sor<TAO_PEGTL_KEYWORD("fade_distance"),
+                                  TAO_PEGTL_KEYWORD("fade_power"), TAO_PEGTL_KEYWORD("fade_color"),
+                                  TAO_PEGTL_KEYWORD("fade_colour"), TAO_PEGTL_KEYWORD("caustics")> {
+};
+struct fade_setting_value : p::seq<expression> {};
+struct fade_setting : p::seq<fade_setting_name, ws, p::must<fade_setting_value>> {};
 struct interior_item : p::sor<directive<interior_item>, macro_call<interior_item>, ior_setting,
-                              interior_ignored_setting> {};
+                              fade_setting, interior_ignored_setting> {};
 struct interior_block
     : p::seq<interior_open, p::opt<interior_base>, p::star<interior_item>, p::must<rbrace>> {};
 

@@ -5,6 +5,7 @@
 // it fills (occupancy). Nothing here knows the hierarchy.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -62,9 +63,30 @@ struct SurfacePoint {
                             // secondary ray must clear
 };
 
+// Which rays an object is hidden from (POV-Ray's no_image and
+// no_reflection, trace.cpp's NoSomethingFlagRayObjectCondition), as bits
+// of a ray's kind: an image ray is a primary ray or one refracted from it,
+// a reflection ray one reflected anywhere on its way from the eye.
+enum RaySight : std::uint8_t {
+    kSightAll = 0,  // shadow rays and queries: every object
+    kSightImage = 1,
+    kSightReflection = 2,
+};
+
+// What an object (a primitive, a group, a wrapper) carries of its record's
+// flags and its parents': the rays it is hidden from, and
+// double_illuminate (lit by lights behind its surface too).
+struct ObjectFlags {
+    std::uint8_t hidden_from = 0;  // RaySight bits
+    bool double_illuminate = false;
+};
+
 class IntelligentObject {
   public:
     virtual ~IntelligentObject() = default;
+
+    const ObjectFlags& flags() const { return flags_; }
+    void set_flags(const ObjectFlags& flags) { flags_ = flags; }
 
     // False for objects without a finite extent (a plane): the tracer keeps
     // them outside the hierarchy and tests them on every ray.
@@ -146,6 +168,9 @@ class IntelligentObject {
     // casts_shadow() and not filters_light(): what the any-hit shadow query
     // asks of every object it meets (one call).
     virtual bool casts_full_shadow() const { return casts_shadow() && !filters_light(); }
+
+  private:
+    ObjectFlags flags_;
 };
 
 using IntelligentObjectPtr = std::unique_ptr<IntelligentObject>;

@@ -42,6 +42,11 @@ struct ObjectRecord {
     std::optional<Texture> texture;  // none: inherit the parent's, or the default
     std::optional<Interior> interior;
     bool no_shadow = false;
+    // POV-Ray's no_image, no_reflection, double_illuminate (passed down to
+    // a group's members, as its Parse_Object_Mods and Set_CSG_Tree_Flag).
+    bool no_image = false;
+    bool no_reflection = false;
+    bool double_illuminate = false;
     bool hollow = false;
     bool inverse = false;  // inside and outside swapped (CSG)
     // Objects nested in it and itself: 1, or 1 + its deepest CSG child's.

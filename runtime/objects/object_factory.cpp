@@ -25,6 +25,7 @@ struct Inherited {
     std::optional<Texture> texture;
     std::optional<Interior> interior;
     bool no_shadow = false;
+    ObjectFlags flags;  // no_image, no_reflection, double_illuminate
     int csg_depth = 0;  // CSG objects around this one (unions split apart do not count)
     // The lifetime of unions split apart around it (a group kept whole
     // carries its own, runtime/objects/lifetime_object.hpp).
@@ -41,7 +42,8 @@ constexpr int kMaxCsgDepth = 1000;
 
 // What the scene's top hands its objects: the default texture.
 Inherited top_level(const Texture& default_texture) {
-    return {Transform{}, default_texture, std::nullopt, false, 0, Lifetime::always(), false};
+    return {Transform{}, default_texture,    std::nullopt, false, ObjectFlags{},
+            0,           Lifetime::always(), false};
 }
 
 // What `record` holds in world terms under `parent`: its transform after
@@ -59,6 +61,9 @@ Inherited handed_down(const ObjectRecord& record, const Inherited& parent) {
     }
     if (record.interior) down.interior = record.interior;
     down.no_shadow = record.no_shadow || parent.no_shadow;
+    if (record.no_image) down.flags.hidden_from |= kSightImage;
+    if (record.no_reflection) down.flags.hidden_from |= kSightReflection;
+    down.flags.double_illuminate = record.double_illuminate || parent.flags.double_illuminate;
     return down;
 }
 
@@ -97,11 +102,22 @@ IntelligentObjectPtr build_difference_by_base(const Csg& csg, const Inherited& d
 
 // The object, and where it lives only part of the time, wrapped in its
 // lifetime.
+// (The flags go on every object made for a record, wrappers and the
+// primitive within alike: the walk asks the one in the hierarchy which
+// rays see it, the shader asks the primitive hit how it is lit.)
+IntelligentObjectPtr flagged(IntelligentObjectPtr object, const ObjectFlags& flags) {
+    object->set_flags(flags);
+    return object;
+}
+
 IntelligentObjectPtr build(const ObjectRecord& record, const Inherited& parent) {
-    IntelligentObjectPtr object = build_object(record, parent);
+    const ObjectFlags flags = handed_down(record, parent).flags;
+    IntelligentObjectPtr object = flagged(build_object(record, parent), flags);
     const Lifetime lifetime = record.lifetime.intersect(parent.lifetime);
     if (lifetime.is_always()) return object;
-    return std::make_unique<LifetimeObject>(std::move(object), lifetime, parent.in_intersection);
+    return flagged(
+        std::make_unique<LifetimeObject>(std::move(object), lifetime, parent.in_intersection),
+        flags);
 }
 
 // An object's clipped_by and bounded_by objects as intelligent objects,
@@ -162,9 +178,11 @@ bool keeps_bounds(const ObjectRecord& record, const Inherited& parent) {
 IntelligentObjectPtr build_object(const ObjectRecord& record, const Inherited& parent) {
     IntelligentObjectPtr object = build_shape(record, parent);
     if (!record.limits) return object;
-    return limited(std::move(object),
-                   build_limits(record, handed_down(record, parent), parent.csg_depth),
-                   keeps_bounds(record, parent), false);
+    const ObjectFlags flags = object->flags();
+    return flagged(limited(std::move(object),
+                           build_limits(record, handed_down(record, parent), parent.csg_depth),
+                           keeps_bounds(record, parent), false),
+                   flags);
 }
 
 IntelligentObjectPtr build_shape(const ObjectRecord& record, const Inherited& parent) {
@@ -183,11 +201,15 @@ IntelligentObjectPtr build_shape(const ObjectRecord& record, const Inherited& pa
         down.in_intersection = csg->kind == Csg::Kind::Intersection;
         if (csg->kind == Csg::Kind::Difference && !csg->children.empty() &&
             !csg->children.front()->lifetime.is_always())
-            return build_difference_by_base(*csg, down, record.inverse);
+            return flagged(build_difference_by_base(*csg, down, record.inverse), own.flags);
         std::vector<IntelligentObjectPtr> children;
         children.reserve(csg->children.size());
         for (const auto& child : csg->children) children.push_back(build(*child, down));
-        return std::make_unique<CsgObject>(csg->kind, std::move(children), record.inverse);
+        // (A merge, intersection or difference is seen or hidden whole, by
+        // its own flags: POV-Ray's kludge lets primary rays see its members
+        // hidden by their own no_image.)
+        return flagged(std::make_unique<CsgObject>(csg->kind, std::move(children), record.inverse),
+                       own.flags);
     }
     TextureEvaluator evaluator(*own.texture, interior);
     const PrimitiveOptions options{record.inverse, own.no_shadow};
@@ -215,8 +237,10 @@ IntelligentObjectPtr build_shape(const ObjectRecord& record, const Inherited& pa
                         world.transform_by(to_world);
                         parts.emplace_back(world, interior);
                     }
-                return std::make_unique<Primitive<Model>>(
-                    Model(shape), to_world, std::move(evaluator), options, std::move(parts));
+                return flagged(
+                    std::make_unique<Primitive<Model>>(Model(shape), to_world, std::move(evaluator),
+                                                       options, std::move(parts)),
+                    own.flags);
             }
         },
         record.shape);
@@ -248,7 +272,10 @@ void build_split(const ObjectRecord& record, const Inherited& parent,
     for (const auto& child : csg->children) build_split(*child, down, members);
     const bool finite =
         std::all_of(members.begin(), members.end(), [](const auto& m) { return m->bounded(); });
-    for (auto& member : members) out.push_back(limited(std::move(member), limits, true, !finite));
+    for (auto& member : members) {
+        const ObjectFlags flags = member->flags();
+        out.push_back(flagged(limited(std::move(member), limits, true, !finite), flags));
+    }
 }
 
 }  // namespace

@@ -112,14 +112,27 @@ Problem check(const Texture& texture, const std::string& whose, const Span& span
     if (auto p = check(texture.pigment.transform, whose + " pigment's", span)) return p;
     const Finish& f = texture.finish;
     const std::pair<const TimeFunction*, const char*> values[] = {
-        {&f.ambient, "ambient"},       {&f.diffuse, "diffuse"},
-        {&f.brilliance, "brilliance"}, {&f.phong, "phong"},
-        {&f.phong_size, "phong_size"}, {&f.specular, "specular"},
-        {&f.roughness, "roughness"},   {&f.emission, "emission"},
-        {&f.metallic, "metallic"},     {&f.reflection_metallic, "reflection's metallic"}};
+        {&f.ambient, "ambient"},
+        {&f.diffuse, "diffuse"},
+        {&f.brilliance, "brilliance"},
+        {&f.phong, "phong"},
+        {&f.phong_size, "phong_size"},
+        {&f.specular, "specular"},
+        {&f.roughness, "roughness"},
+        {&f.emission, "emission"},
+        {&f.metallic, "metallic"},
+        {&f.reflection_metallic, "reflection's metallic"},
+        {&f.reflection_falloff, "reflection's falloff"},
+        {&f.reflection_exponent, "reflection's exponent"},
+        {&f.irid, "irid"},
+        {&f.irid_thickness, "irid's thickness"},
+        {&f.irid_turbulence, "irid's turbulence"}};
     for (const auto& [value, name] : values)
         if (auto p = check(*value, whose + " finish's " + name, span)) return p;
     if (auto p = check(f.reflection.c, whose + " finish's reflection", span)) return p;
+    if (f.reflection_max)
+        if (auto p = check(f.reflection_max->c, whose + " finish's reflection maximum", span))
+            return p;
     if (auto p = check(texture.uv_outside, whose + " texture's", span)) return p;
     return check(texture.transform, whose + " texture's", span);
 }

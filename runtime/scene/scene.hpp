@@ -21,6 +21,10 @@ struct GlobalSettings {
     // below 3.7 and no assumed_gamma; its parser.cpp): no gamma correction
     // at all, the colours it computes are the file's values.
     bool gamma_correction = true;
+    // A scene whose version ends below 3.7 layers its sky_sphere's
+    // pigments as POV-Ray 3.6 did (3.7's ComputeSky keeps that rule for
+    // them: the filter and transmit of all the layers multiplied together).
+    bool legacy_sky = false;
     int max_trace_level = 5;
     ColourFunction ambient_light{{1.0, 1.0, 1.0, 0.0, 0.0}};
     // MegaPOV's global_settings { motion_blur SAMPLES, TIME }: hexant blurs
@@ -29,6 +33,11 @@ struct GlobalSettings {
     // noise_generator 1 to 3 for every pattern that names none (POV-Ray's
     // default 2); hexant applies it to the patterns written after it.
     int noise_generator = 2;
+    // irid_wavelength: the wavelengths iridescence works with, per channel,
+    // in its units of film thickness (POV-Ray 3.7's default, scene.cpp:
+    // <0.70, 0.52, 0.48>, red 700 nm, green 520, blue 480; its docs' 0.25,
+    // 0.18, 0.14 are older).
+    glm::dvec3 irid_wavelength{0.70, 0.52, 0.48};
     std::optional<int> motion_blur_samples;
     std::optional<double> motion_blur_time;
 };

@@ -145,9 +145,11 @@ bool depends(const Texture& x, Seen& seen) {
     const Finish& f = x.finish;
     for (const TimeFunction* value :
          {&f.ambient, &f.diffuse, &f.brilliance, &f.phong, &f.phong_size, &f.specular, &f.roughness,
-          &f.emission, &f.metallic, &f.reflection_metallic})
+          &f.emission, &f.metallic, &f.reflection_metallic, &f.reflection_falloff,
+          &f.reflection_exponent, &f.irid, &f.irid_thickness, &f.irid_turbulence})
         if (value->depends_on_time()) return true;
     if (f.reflection.depends_on_time()) return true;
+    if (f.reflection_max && f.reflection_max->depends_on_time()) return true;
     for (const Texture& layer : x.below)
         if (depends(layer, seen)) return true;
     return false;

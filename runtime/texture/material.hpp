@@ -94,11 +94,38 @@ struct Finish {
     // empirical Fresnel curve (shader.cpp, metallic_tint); 0 is none.
     TimeFunction metallic = 0.0;
     TimeFunction reflection_metallic = 0.0;
+    // reflection { MIN, MAX ... }: POV-Ray's variable reflection. `reflection`
+    // above is the minimum, seen head-on; the maximum (none: the same) is
+    // reached at grazing angles by (1 - cos)^falloff or, with fresnel, by
+    // the Fresnel reflectance of the interior's ior (trace.cpp's
+    // ComputeReflectivity). The reflected colour is raised to 1 / exponent.
+    std::optional<ColourFunction> reflection_max;
+    TimeFunction reflection_falloff = 1.0;
+    TimeFunction reflection_exponent = 1.0;
+    bool reflection_fresnel = false;
+    // conserve_energy: what passes through is reduced by what is reflected.
+    bool conserve_energy = false;
+    // irid { AMOUNT thickness T turbulence V }: thin-film interference on
+    // what lights and is reflected (POV-Ray's ComputeIridColour); 0 is none.
+    TimeFunction irid = 0.0;
+    TimeFunction irid_thickness = 0.0;
+    TimeFunction irid_turbulence = 0.0;
     std::vector<Unrendered> unrendered;  // what it asks for that hexant lacks
 };
 
 struct Interior {
     TimeFunction ior = 1.0;
+    // fade_distance, fade_power, fade_colour: light that travels d inside
+    // the object is dimmed toward fade_colour, by 1 / (1 + (d /
+    // fade_distance)^fade_power), or exponentially from a power of 1000 on
+    // (POV-Ray 3.7's attenuation, trace.cpp); a distance of 0 is none.
+    TimeFunction fade_distance = 0.0;
+    TimeFunction fade_power = 0.0;
+    ColourFunction fade_colour{};
+    // caustics C: POV-Ray's faked caustics, light through the surface
+    // brightened by 1 + |cos|^(45 C) at each layer (ComputeShadowTexture);
+    // 0 is none.
+    TimeFunction caustics = 0.0;
     std::vector<Unrendered> unrendered;  // what it asks for that hexant lacks
 };
 

@@ -22,7 +22,16 @@ struct MaterialSample {
     double emission = 0.0;
     double metallic = 0.0;             // highlights' tint by the pigment
     double reflection_metallic = 0.0;  // the reflection's
-    double ior = 1.0;                  // the interior's index of refraction
+    // Variable reflection (Finish): `reflection` is the minimum.
+    glm::dvec3 reflection_max{0.0};
+    double reflection_falloff = 1.0;
+    double reflection_power = 1.0;  // 1 / the written exponent
+    bool reflection_fresnel = false;
+    bool conserve_energy = false;
+    double irid = 0.0;  // iridescence (Finish)
+    double irid_thickness = 0.0;
+    double irid_turbulence = 0.0;
+    double ior = 1.0;  // the interior's index of refraction
 };
 
 }  // namespace hexant::runtime

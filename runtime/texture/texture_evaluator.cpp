@@ -6,6 +6,7 @@
 #include <mutex>
 #include <type_traits>
 
+#include <glm/exponential.hpp>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
@@ -49,34 +50,62 @@ TextureEvaluator::CompiledColour TextureEvaluator::compile(const ColourFunction&
 
 std::shared_ptr<const TextureEvaluator::CompiledFinish> TextureEvaluator::compile(
     const Finish& f, const std::optional<Interior>& interior) {
+    const ColourFunction most = f.reflection_max ? *f.reflection_max : f.reflection;
     const auto make = [&] {
-        return std::make_shared<const CompiledFinish>(
-            CompiledFinish{CompiledScalar(f.ambient),
-                           CompiledScalar(f.diffuse),
-                           CompiledScalar(f.brilliance),
-                           CompiledScalar(f.phong),
-                           CompiledScalar(f.phong_size),
-                           CompiledScalar(f.specular),
-                           CompiledScalar(f.roughness),
-                           CompiledScalar(f.emission),
-                           CompiledScalar(f.metallic),
-                           CompiledScalar(f.reflection_metallic),
-                           interior ? CompiledScalar(interior->ior) : CompiledScalar(1.0),
-                           {CompiledScalar(f.reflection.c[0]), CompiledScalar(f.reflection.c[1]),
-                            CompiledScalar(f.reflection.c[2])}});
+        return std::make_shared<const CompiledFinish>(CompiledFinish{
+            CompiledScalar(f.ambient),
+            CompiledScalar(f.diffuse),
+            CompiledScalar(f.brilliance),
+            CompiledScalar(f.phong),
+            CompiledScalar(f.phong_size),
+            CompiledScalar(f.specular),
+            CompiledScalar(f.roughness),
+            CompiledScalar(f.emission),
+            CompiledScalar(f.metallic),
+            CompiledScalar(f.reflection_metallic),
+            interior ? CompiledScalar(interior->ior) : CompiledScalar(1.0),
+            {CompiledScalar(f.reflection.c[0]), CompiledScalar(f.reflection.c[1]),
+             CompiledScalar(f.reflection.c[2])},
+            {CompiledScalar(most.c[0]), CompiledScalar(most.c[1]), CompiledScalar(most.c[2])},
+            CompiledScalar(f.reflection_falloff),
+            CompiledScalar(f.reflection_exponent),
+            CompiledScalar(f.irid),
+            CompiledScalar(f.irid_thickness),
+            CompiledScalar(f.irid_turbulence),
+            f.reflection_fresnel,
+            f.conserve_energy});
     };
-    using Key = std::array<double, 14>;
+    using Key = std::array<double, 24>;
     Key key{};
     std::size_t n = 0;
-    for (const TimeFunction* value :
-         {&f.ambient, &f.diffuse, &f.brilliance, &f.phong, &f.phong_size, &f.specular, &f.roughness,
-          &f.emission, &f.metallic, &f.reflection_metallic, &f.reflection.c[0], &f.reflection.c[1],
-          &f.reflection.c[2]}) {
+    for (const TimeFunction* value : {&f.ambient,
+                                      &f.diffuse,
+                                      &f.brilliance,
+                                      &f.phong,
+                                      &f.phong_size,
+                                      &f.specular,
+                                      &f.roughness,
+                                      &f.emission,
+                                      &f.metallic,
+                                      &f.reflection_metallic,
+                                      &f.reflection.c[0],
+                                      &f.reflection.c[1],
+                                      &f.reflection.c[2],
+                                      &most.c[0],
+                                      &most.c[1],
+                                      &most.c[2],
+                                      &f.reflection_falloff,
+                                      &f.reflection_exponent,
+                                      &f.irid,
+                                      &f.irid_thickness,
+                                      &f.irid_turbulence}) {
         if (!value->is_constant()) return make();
         key[n++] = value->constant();
     }
     if (interior && !interior->ior.is_constant()) return make();
-    key[n] = interior ? interior->ior.constant() : 1.0;
+    key[n++] = interior ? interior->ior.constant() : 1.0;
+    key[n++] = f.reflection_fresnel ? 1.0 : 0.0;
+    key[n] = f.conserve_energy ? 1.0 : 0.0;
     // Finishes of constants, shared while some texture holds them. Objects
     // are made on several threads at once in tests, so the table is locked
     // (once per object, while the scene is being set up).
@@ -283,8 +312,50 @@ TextureEvaluator::TextureEvaluator(const Texture& texture, const std::optional<I
           Shared shared;
           return std::make_shared<const CompiledTexture>(texture, Transform{}, interior, shared);
       }()),
-      depends_on_time_(texture.depends_on_time() || (interior && interior->ior.depends_on_time())),
-      opaque_(texture.opaque()) {}
+      depends_on_time_(
+          texture.depends_on_time() ||
+          (interior &&
+           (interior->ior.depends_on_time() || interior->fade_distance.depends_on_time() ||
+            interior->fade_power.depends_on_time() || interior->fade_colour.depends_on_time() ||
+            interior->caustics.depends_on_time()))),
+      opaque_(texture.opaque()) {
+    if (interior &&
+        !(interior->fade_distance.is_constant() && interior->fade_distance.constant() == 0.0)) {
+        const ColourFunction& c = interior->fade_colour;
+        fade_ = std::make_shared<const CompiledFade>(
+            CompiledFade{CompiledScalar(interior->fade_distance),
+                         CompiledScalar(interior->fade_power),
+                         {CompiledScalar(c.c[0]), CompiledScalar(c.c[1]), CompiledScalar(c.c[2])}});
+    }
+    if (interior && !(interior->caustics.is_constant() && interior->caustics.constant() == 0.0))
+        caustics_ = std::make_shared<const CompiledScalar>(interior->caustics * 45.0);
+}
+
+std::optional<TextureEvaluator::Fade> TextureEvaluator::fade_at(double t) const {
+    if (!fade_) return std::nullopt;
+    Fade f;
+    f.distance = fade_->distance.at(t);
+    f.power = fade_->power.at(t);
+    f.colour = {fade_->colour[0].at(t), fade_->colour[1].at(t), fade_->colour[2].at(t)};
+    // (POV-Ray's test: a distance within its EPSILON of 0 fades nothing.)
+    if (!(std::fabs(f.distance) > 1e-10)) return std::nullopt;
+    return f;
+}
+
+glm::dvec3 TextureEvaluator::Fade::through(double depth) const {
+    const glm::dvec3 one(1.0);
+    glm::dvec3 passed;
+    if (power >= 1000.0) {
+        passed = glm::exp(-(one - colour) * (depth / distance));
+    } else {
+        const double k = 1.0 + std::pow(depth / distance, power);
+        passed = colour + (one - colour) / k;
+    }
+    // (No NaN leaves: a negative distance to a fractional power, say.)
+    for (int i = 0; i < 3; ++i)
+        if (!std::isfinite(passed[i])) passed[i] = 1.0;
+    return passed;
+}
 
 TextureEvaluator::CompiledTexture::CompiledTexture(const Texture& texture, const Transform& outside,
                                                    const std::optional<Interior>& interior,
@@ -535,6 +606,15 @@ void TextureEvaluator::CompiledLayer::fill(MaterialSample& m, const glm::dvec3& 
     m.emission = f.emission.at(t);
     m.metallic = f.metallic.at(t);
     m.reflection_metallic = f.reflection_metallic.at(t);
+    m.reflection_max = {f.reflection_max[0].at(t), f.reflection_max[1].at(t),
+                        f.reflection_max[2].at(t)};
+    m.reflection_falloff = f.reflection_falloff.at(t);
+    m.reflection_power = 1.0 / f.reflection_exponent.at(t);
+    m.reflection_fresnel = f.reflection_fresnel;
+    m.conserve_energy = f.conserve_energy;
+    m.irid = f.irid.at(t);
+    m.irid_thickness = f.irid_thickness.at(t);
+    m.irid_turbulence = f.irid_turbulence.at(t);
     m.ior = f.ior.at(t);
 }
 

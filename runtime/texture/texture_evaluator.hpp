@@ -71,6 +71,18 @@ class TextureEvaluator {
     // blending): for tests and peers that read one colour.
     MaterialSample at(const glm::dvec3& world_point, const glm::dvec2& uv, double t) const;
     bool depends_on_time() const { return depends_on_time_; }
+    // The interior's fading at time t (Interior::fade_distance): none
+    // without an interior or with a fade_distance of 0.
+    struct Fade {
+        double distance = 0.0, power = 0.0;
+        glm::dvec3 colour{0.0};
+        // What passes `depth` (scene units) inside.
+        glm::dvec3 through(double depth) const;
+    };
+    std::optional<Fade> fade_at(double t) const;
+    // The interior's faked caustics' power at time t (Interior::caustics,
+    // times 45 as POV-Ray keeps it); 0 without.
+    double caustics_at(double t) const { return caustics_ ? caustics_->at(t) : 0.0; }
     // Whether no light passes it (Texture::opaque).
     bool opaque() const { return opaque_; }
 
@@ -96,6 +108,10 @@ class TextureEvaluator {
         CompiledScalar ambient, diffuse, brilliance, phong, phong_size, specular, roughness,
             emission, metallic, reflection_metallic, ior;
         std::array<CompiledScalar, 3> reflection;
+        std::array<CompiledScalar, 3> reflection_max;
+        CompiledScalar reflection_falloff, reflection_exponent;
+        CompiledScalar irid, irid_thickness, irid_turbulence;
+        bool reflection_fresnel = false, conserve_energy = false;
     };
     static std::shared_ptr<const CompiledFinish> compile(const Finish& finish,
                                                          const std::optional<Interior>& interior);
@@ -269,6 +285,12 @@ class TextureEvaluator {
     std::shared_ptr<const CompiledTexture> texture_;  // shared by copies
     bool depends_on_time_ = false;
     bool opaque_ = true;
+    struct CompiledFade {
+        CompiledScalar distance, power;
+        std::array<CompiledScalar, 3> colour;
+    };
+    std::shared_ptr<const CompiledFade> fade_;        // null: no fading
+    std::shared_ptr<const CompiledScalar> caustics_;  // null: none
 };
 
 }  // namespace hexant::runtime
