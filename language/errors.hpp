@@ -116,6 +116,8 @@ HEXANT_ERROR(first_shape_argument, "expected a parameter");
 HEXANT_ERROR(polynomial_power, "expected a power of x, y or z");
 HEXANT_ERROR(julia_parameter, "expected the julia_fractal's 4D parameter <x, y, z, t>");
 HEXANT_ERROR(julia_value, "expected a value");
+HEXANT_ERROR(bicubic_value, "expected a value");
+HEXANT_ERROR(bicubic_points, "expected the bicubic_patch's 16 control points");
 HEXANT_ERROR(polynomial_coefficient, "expected the term's coefficient");
 HEXANT_ERROR(declare_index, "expected '[' and an array index");
 HEXANT_ERROR(fopen_id, "expected the file's name for the scene (an identifier)");

@@ -3,7 +3,7 @@
 // Part of the actions (language/actions.hpp).
 #pragma once
 
-#include "language/actions/julia_fractals.hpp"
+#include "language/actions/bicubic_patches.hpp"
 
 namespace hexant::language {
 

@@ -119,10 +119,10 @@ struct light_block : p::seq<kw_light_source, p::must<lbrace>, p::must<light_argu
 // Object kinds POV-Ray has and hexant does not: kept as source, an error
 // only where used. Also `function { }` and the *_map blocks.
 struct unsupported_kind_words {
-    static constexpr std::array<std::string_view, 16> list = {
-        "bicubic_patch", "color_map", "colour_map", "density",    "density_map", "function",
-        "lemon",         "media",     "normal_map", "ovus",       "parametric",  "photons",
-        "pigment_map",   "rainbow",   "slope_map",  "texture_map"};
+    static constexpr std::array<std::string_view, 15> list = {
+        "color_map", "colour_map",  "density",    "density_map", "function",
+        "lemon",     "media",       "normal_map", "ovus",        "parametric",
+        "photons",   "pigment_map", "rainbow",    "slope_map",   "texture_map"};
 };
 struct unsupported_kind : one_word_of<unsupported_kind_words> {};
 struct unsupported_block
@@ -250,6 +250,30 @@ struct julia_item : p::sor<directive<julia_item>, macro_call<julia_item>, julia_
 struct julia_block
     : p::seq<julia_open, p::must<julia_parameter>, p::star<julia_item>, p::must<object_close>> {};
 
+// bicubic_patch { [type T] [flatness F] [u_steps U] [v_steps V] [accuracy A]
+// [uv_vectors <s0>, <s1>, <s2>, <s3>] [,] P00, P01, ..., P33 modifiers }
+// (runtime/objects/bicubic_patch/; POV-Ray's Parse_Bicubic_Patch: its words
+// in any order before the points, uv_vectors the last of them; the commas
+// between the points may be left out, but none may follow the last, as in
+// POV-Ray 3.7.0). Every point written is read; the action counts them.
+struct bicubic_open : p::seq<TAO_PEGTL_KEYWORD("bicubic_patch"), ws, p::must<lbrace>> {};
+struct bicubic_value : p::seq<sum> {};
+struct bicubic_setting_name
+    : p::sor<TAO_PEGTL_KEYWORD("type"), TAO_PEGTL_KEYWORD("flatness"), TAO_PEGTL_KEYWORD("u_steps"),
+             TAO_PEGTL_KEYWORD("v_steps"), TAO_PEGTL_KEYWORD("accuracy")> {};
+struct bicubic_setting : p::seq<bicubic_setting_name, ws, frame_open, p::must<bicubic_value>> {};
+struct bicubic_uv_vectors
+    : p::seq<TAO_PEGTL_KEYWORD("uv_vectors"), ws, frame_open, p::must<bicubic_value>, p::opt<comma>,
+             p::must<bicubic_value>, p::opt<comma>, p::must<bicubic_value>, p::opt<comma>,
+             p::must<bicubic_value>> {};
+struct bicubic_points
+    : p::seq<frame_open, first_shape_argument,
+             p::star<p::sor<argument_directive, p::seq<comma, p::must<first_shape_argument>>,
+                            p::seq<p::not_at<macro_ahead>, shape_argument>>>> {};
+struct bicubic_block
+    : p::seq<bicubic_open, p::star<bicubic_setting>, p::opt<bicubic_uv_vectors>, p::opt<comma>,
+             p::must<bicubic_points>, object_modifiers, p::must<object_close>> {};
+
 // cubic { <20 coefficients> }, quartic { <35> }, poly { ORDER, <..> } and
 // polynomial { ORDER, xyz(i, j, k): c, ... } (runtime/objects/poly/poly.hpp);
 // quadric is a generic shape.
@@ -294,9 +318,9 @@ struct height_field_function_block
              p::must<height_field_function_size>, p::must<height_field_function_body>,
              object_modifiers, p::must<object_close>> {};
 
-struct object_value
-    : p::sor<mesh_block, mesh2_block, blob_block, isosurface_block, julia_block, poly_block,
-             height_field_function_block, shape_block, csg_block, object_block, light_block> {};
+struct object_value : p::sor<mesh_block, mesh2_block, blob_block, isosurface_block, julia_block,
+                             bicubic_block, poly_block, height_field_function_block, shape_block,
+                             csg_block, object_block, light_block> {};
 
 // Things that modify an object, in any order.
 struct object_texture : p::seq<texture_block> {};

@@ -6,6 +6,7 @@
 // each of the two lists below.
 #pragma once
 
+#include "runtime/objects/bicubic_patch/bicubic_patch.hpp"
 #include "runtime/objects/blob/blob.hpp"
 #include "runtime/objects/box/box.hpp"
 #include "runtime/objects/cylinder/cone.hpp"
@@ -32,9 +33,10 @@
 
 namespace hexant::runtime {
 
-using ShapeKinds = objects::KindList<Sphere, Box, Plane, Polygon, Triangle, SmoothTriangle, Disc,
-                                     Cylinder, Cone, Torus, Prism, Text, Mesh, Lathe, Sor,
-                                     Superellipsoid, HeightField, Blob, SphereSweep, Isosurface,
-                                     JuliaFractal, Quadric, Cubic, Quartic, Poly, Polynomial>;
+using ShapeKinds =
+    objects::KindList<Sphere, Box, Plane, Polygon, Triangle, SmoothTriangle, Disc, Cylinder, Cone,
+                      Torus, Prism, Text, Mesh, Lathe, Sor, Superellipsoid, HeightField, Blob,
+                      SphereSweep, Isosurface, JuliaFractal, BicubicPatch, Quadric, Cubic, Quartic,
+                      Poly, Polynomial>;
 
 }  // namespace hexant::runtime

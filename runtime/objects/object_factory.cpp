@@ -237,10 +237,19 @@ IntelligentObjectPtr build_shape(const ObjectRecord& record, const Inherited& pa
                         world.transform_by(to_world);
                         parts.emplace_back(world, interior);
                     }
-                return flagged(
-                    std::make_unique<Primitive<Model>>(Model(shape), to_world, std::move(evaluator),
-                                                       options, std::move(parts)),
-                    own.flags);
+                // A model whose shape depends on its placement (a
+                // bicubic_patch, which POV-Ray subdivides in the world)
+                // is given it.
+                if constexpr (std::is_constructible_v<Model, const Kind&, const Transform&>)
+                    return flagged(std::make_unique<Primitive<Model>>(
+                                       Model(shape, to_world), to_world, std::move(evaluator),
+                                       options, std::move(parts)),
+                                   own.flags);
+                else
+                    return flagged(std::make_unique<Primitive<Model>>(Model(shape), to_world,
+                                                                      std::move(evaluator), options,
+                                                                      std::move(parts)),
+                                   own.flags);
             }
         },
         record.shape);

@@ -223,7 +223,7 @@ TEST_CASE("a refused word is an error wherever it is written", "[language][keywo
             CHECK(r.error);
         }
     }
-    CHECK(refused > 70);
+    CHECK(refused > 60);
 }
 
 TEST_CASE("a declaration hexant cannot render warns only where it is used",

@@ -180,6 +180,10 @@ TEST_CASE("bound holds the surface: julia_fractal", "[object][property]") {
     check_kind(kind_scene("julia_fractal"));
 }
 
+TEST_CASE("bound holds the surface: bicubic_patch", "[object][property]") {
+    check_kind(kind_scene("bicubic_patch"));
+}
+
 TEST_CASE("bound holds the surface: height_field", "[object][property]") {
     check_kind(kind_scene("height_field"));
 }

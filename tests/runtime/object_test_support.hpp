@@ -131,6 +131,31 @@ inline glm::dvec3 sample_object_surface(const rt::Shape& shape, double t, Random
         return barycentric(vec(tr->points[0], t), vec(tr->points[1], t), vec(tr->points[2], t));
     if (const auto* tr = std::get_if<rt::SmoothTriangle>(&shape))
         return barycentric(vec(tr->points[0], t), vec(tr->points[1], t), vec(tr->points[2], t));
+    if (const auto* patch = std::get_if<rt::BicubicPatch>(&shape)) {
+        // With no flatness test POV-Ray's pieces are the cells of the
+        // 2^u_steps by 2^v_steps grid of (u, v), each the two triangles of
+        // its corners on the patch (bezier.cpp); the corners here from the
+        // Bernstein form, not by halving.
+        if (patch->flatness > 0.0)
+            throw std::logic_error("sample_object_surface: a bicubic_patch with a flatness");
+        const auto point = [&](double u, double v) {
+            const double bu[4] = {(1 - u) * (1 - u) * (1 - u), 3 * u * (1 - u) * (1 - u),
+                                  3 * u * u * (1 - u), u * u * u};
+            const double bv[4] = {(1 - v) * (1 - v) * (1 - v), 3 * v * (1 - v) * (1 - v),
+                                  3 * v * v * (1 - v), v * v * v};
+            glm::dvec3 p(0.0);
+            for (int i = 0; i < 4; ++i)
+                for (int j = 0; j < 4; ++j) p += bu[i] * bv[j] * vec(patch->points[4 * i + j], t);
+            return p;
+        };
+        const int nu = 1 << patch->u_steps, nv = 1 << patch->v_steps;
+        const int i = random.integer(0, nu - 1), j = random.integer(0, nv - 1);
+        const double u0 = double(i) / nu, u1 = double(i + 1) / nu;
+        const double v0 = double(j) / nv, v1 = double(j + 1) / nv;
+        const glm::dvec3 c00 = point(u0, v0), c11 = point(u1, v1);
+        return random.integer(0, 1) ? barycentric(c00, point(u0, v1), c11)
+                                    : barycentric(c00, c11, point(u1, v0));
+    }
     if (const auto* d = std::get_if<rt::Disc>(&shape)) {
         glm::dvec3 u, v;
         perpendicular_pair(glm::normalize(vec(d->normal, t)), u, v);
@@ -602,6 +627,19 @@ inline const std::vector<KindScene>& kind_scenes() {
          "<-0.083, 0.0, -0.83, -0.025> quaternion sqr max_iteration 8 precision 15",
          "<-0.03, 0.5 - 0.3 * clock, -0.2, -0.5> quaternion max_iteration 6 precision 15 "
          "slice <0, 0, 0, 1>, 0.2 * clock"},
+        // A wavy patch cut into 4 x 8 pieces (no flatness test: the
+        // sampler's grid); moving: two points move, the type-0 subdivision
+        // made for each ray.
+        {"bicubic_patch",
+         "type 1 u_steps 2 v_steps 3 <-0.6, 0, -0.6>, <-0.2, 0.3, -0.6>, <0.2, -0.2, -0.6>, "
+         "<0.6, 0.1, -0.6>, <-0.6, 0.2, -0.2>, <-0.2, -0.4, -0.2>, <0.2, 0.5, -0.2>, "
+         "<0.6, 0, -0.2>, <-0.6, -0.1, 0.2>, <-0.2, 0.4, 0.2>, <0.2, -0.3, 0.2>, "
+         "<0.6, 0.2, 0.2>, <-0.6, 0.1, 0.6>, <-0.2, 0, 0.6>, <0.2, 0.2, 0.6>, <0.6, -0.1, 0.6>",
+         "type 0 u_steps 3 v_steps 2 <-0.6, 0, -0.6>, <-0.2, 0.3, -0.6>, <0.2, -0.2, -0.6>, "
+         "<0.6, 0.1, -0.6 + 0.3 * clock>, <-0.6, 0.2, -0.2>, <-0.2, -0.4 + 0.8 * clock, -0.2>, "
+         "<0.2, 0.5, -0.2>, <0.6, 0, -0.2>, <-0.6, -0.1, 0.2>, <-0.2, 0.4, 0.2>, "
+         "<0.2, -0.3, 0.2>, <0.6, 0.2, 0.2>, <-0.6, 0.1, 0.6>, <-0.2, 0, 0.6>, <0.2, 0.2, 0.6>, "
+         "<0.6, -0.1, 0.6>"},
         // The height_field still's 32 x 32 bump (on parse()'s include
         // path); the water level rises through it.
         {"height_field", "png \"bump.png\" smooth", "png \"bump.png\" water_level 0.6 * clock"},

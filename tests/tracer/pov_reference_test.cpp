@@ -265,6 +265,24 @@ TEST_CASE("julia_fractal agrees with POV-Ray 3.7's render of it, at two clocks",
     }
 }
 
+TEST_CASE("bicubic_patch agrees with POV-Ray 3.7's render of it, at two clocks",
+          "[tracer][pov][bicubic_patch]") {
+    // shapes/bicubic_patch.pov: a type 0 saddle cut until flat within 0.02
+    // of the world under an uneven scale, a point rising with clock; a
+    // type 1 dome quarter with a pole (POV-Ray's <1, 0, 0> normal there),
+    // uv_mapping through uv_vectors, turning with clock; a patch of two
+    // triangles whose normals blend across them. hexant cuts the same
+    // pieces (flatness taken after the transforms, as POV-Ray moves its
+    // points first) and blends the same normals, so a wrong cut, normal or
+    // uv moves tens to hundreds of pixels. The still's tolerance: when
+    // written, 2 pixels of 3,072 differed at each clock (mean 0.02 steps),
+    // both beside the dome's pole, where POV-Ray's tangent along the pole's
+    // row is the rounding residue of its world coordinates (not zero), so
+    // its normal there is noise, and hexant's is exactly zero and takes
+    // POV-Ray's fallback <1, 0, 0> (at 320x240, 43 of 76,800, all there).
+    check_stills("shapes", "bicubic_patch", {"0", "0.5"});
+}
+
 TEST_CASE("noise isosurfaces, function height fields and pattern functions agree with POV-Ray",
           "[tracer][pov][isosurface][function]") {
     // shapes/functions.pov: isosurfaces of f_noise3d (moving with clock)
