@@ -263,7 +263,7 @@ constexpr auto kRules = std::to_array<KeywordRuleEntry>({
     {"max_trace_level", KeywordRule::Rendered, ""},
     {"maximum_reuse", KeywordRule::Warned, "inside radiosity { }, which is warned as a whole"},
     {"media", KeywordRule::Warned, "media in interior { } draws nothing (at the top level it is refused)"},
-    {"media_attenuation", KeywordRule::Harmless, "changes nothing without media, which is warned where it is used"},
+    {"media_attenuation", KeywordRule::Rendered, ""},
     {"media_interaction", KeywordRule::Harmless, "changes nothing without media, which is warned where it is used"},
     {"merge", KeywordRule::Rendered, ""},
     {"mesh", KeywordRule::Rendered, ""},

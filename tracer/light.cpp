@@ -67,6 +67,7 @@ ShadedLight::ShadedLight(const runtime::LightRecord& r)
       // light is now circular"; a row of one light stays square.)
       circular_(r.area && (r.circular || r.orient) && r.area->size1 > 1 && r.area->size2 > 1),
       orient_(r.orient) {
+    media_attenuation_ = r.media_attenuation;
     fixed_position_ = moving_position(0.0);
     still_position_ = !r.position.depends_on_time() && !r.transform.depends_on_time();
     fixed_colour_ = rgb(r.colour, 0.0);

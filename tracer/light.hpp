@@ -33,6 +33,8 @@ class ShadedLight {
 
     bool shines_at(double t) const { return lifetime_.is_always() || lifetime_.contains(t); }
     bool shadowless() const { return shadowless_; }
+    // media_attenuation (runtime::LightRecord): fogged on its way.
+    bool media_attenuation() const { return media_attenuation_; }
     bool is_area() const { return area_.has_value(); }
     // (The common light's answers inline: a scene of point lights pays
     // nothing for the other kinds.)
@@ -86,6 +88,7 @@ class ShadedLight {
     runtime::Lifetime lifetime_;
     runtime::LightKind kind_;
     bool shadowless_, parallel_;
+    bool media_attenuation_ = false;
     bool still_position_ = false, still_colour_ = false;
     glm::dvec3 fixed_position_{0.0}, fixed_colour_{0.0};
     runtime::TimeFunction radius_, falloff_, tightness_, fade_distance_, fade_power_;

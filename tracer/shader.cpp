@@ -57,7 +57,8 @@ Shader::Shader(const runtime::SceneDescription& scene, const RayQuery& query, Li
     noise_generator_ = scene.global.noise_generator;
 }
 
-glm::dvec3 Shader::fogged(const glm::dvec3& colour, const Ray4& ray, double depth) const {
+glm::dvec3 Shader::fogged(const glm::dvec3& colour, const Ray4& ray, double depth,
+                          bool shadow) const {
     // POV-Ray 3.7's ComputeFog: each fog attenuates by att (at least its
     // transmit), filtered by its colour, and adds (1 - att) of its colour.
     glm::dvec3 sum_att(1.0), sum_col(0.0);
@@ -106,7 +107,9 @@ glm::dvec3 Shader::fogged(const glm::dvec3& colour, const Ray4& ray, double dept
         double att = std::exp(-width * density / distance);
         if (att < transmit) att = transmit;
         sum_att *= att * ((1.0 - filter) + filter * glm::dvec3(r, g, b));
-        sum_col += (1.0 - att) * glm::dvec3(r, g, b);
+        // (A shadow ray is only dimmed: ComputeFog adds no fog colour to
+        // a shadow test ray.)
+        if (!shadow) sum_col += (1.0 - att) * glm::dvec3(r, g, b);
     }
     return sum_col + sum_att * colour;
 }
@@ -311,6 +314,7 @@ glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, std::uint
     Hit h{on, p, depth, weight};
     h.sight = sight;
     h.double_lit = hit->object->flags().double_illuminate;
+    const bool hollow = hit->object->flags().hollow;
     h.d = glm::normalize(glm::dvec3(ray.direction));
     h.point = glm::dvec3(p.event);
     h.time = p.event.w;
@@ -346,10 +350,10 @@ glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, std::uint
                                          plain.count, &scratch.lights, state);
     }
 
-    // Fog lies along the way here when the ray came through the open (not
-    // from inside a solid: POV-Ray fogs only rays outside non-hollow
-    // objects).
-    return fogs_.empty() || h.back
+    // Fog lies along the way here when the ray came through the open or
+    // the inside of a hollow object (not from inside a solid: POV-Ray fogs
+    // only rays outside non-hollow objects, its IsHollowRay).
+    return fogs_.empty() || (h.back && !hollow)
                ? colour
                : fogged(colour, ray, glm::distance(h.point, glm::dvec3(ray.origin)));
 }
@@ -394,6 +398,13 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
                     else if (passed != glm::dvec3(1.0))
                         known.colour *= passed;
                 }
+                // media_attenuation: the fog between here and the light
+                // dims it (ComputeShadowMedia).
+                if (light.media_attenuation() && !fogs_.empty() &&
+                    known.state != ShadingScratch::Light::State::Shadowed && known.reach > 0.0)
+                    known.colour =
+                        fogged(known.colour, travel_.ray(h.start, h.time, known.to_light),
+                               known.reach, true);
             }
             if (known.state == ShadingScratch::Light::State::Shadowed) continue;
             // (POV-Ray's default brilliance 1 needs no pow.)

@@ -111,7 +111,9 @@ class Shader {
     glm::dvec3 sky(const glm::dvec3& direction, double t) const;
     // `colour` seen through the scene's fogs along `depth` of a ray in the
     // open (runtime/scene/fog.hpp).
-    glm::dvec3 fogged(const glm::dvec3& colour, const runtime::Ray4& ray, double depth) const;
+    // (`shadow`: the light along a shadow ray, dimmed only.)
+    glm::dvec3 fogged(const glm::dvec3& colour, const runtime::Ray4& ray, double depth,
+                      bool shadow = false) const;
 
     const RayQuery& query_;
     LightTravel travel_;

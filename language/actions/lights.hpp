@@ -94,9 +94,11 @@ struct action<g::light_setting> {
             light.fade_distance = to_float(v, name);
         else if (name == "fade_power")
             light.fade_power = to_float(v, name);
+        else if (name == "media_attenuation")
+            light.media_attenuation = runtime::pov_true(to_constant(v, name));
         // adaptive: POV-Ray's shortcut to the area grid's average, which
-        // hexant samples whole; media_interaction, media_attenuation: hexant
-        // has no media. Read, no effect.
+        // hexant samples whole; media_interaction: hexant has no media.
+        // Read, no effect.
     }
 };
 template <>

@@ -79,6 +79,9 @@ enum RaySight : std::uint8_t {
 struct ObjectFlags {
     std::uint8_t hidden_from = 0;  // RaySight bits
     bool double_illuminate = false;
+    // `hollow`: a ray inside it is fogged (POV-Ray's IsHollowRay); inside
+    // a solid one it is not.
+    bool hollow = false;
 };
 
 class IntelligentObject {

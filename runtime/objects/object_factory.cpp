@@ -64,6 +64,9 @@ Inherited handed_down(const ObjectRecord& record, const Inherited& parent) {
     if (record.no_image) down.flags.hidden_from |= kSightImage;
     if (record.no_reflection) down.flags.hidden_from |= kSightReflection;
     down.flags.double_illuminate = record.double_illuminate || parent.flags.double_illuminate;
+    // (A group's hollow reaches its members, as POV-Ray's
+    // Set_CSG_Children_Flag; a member's own says for itself.)
+    down.flags.hollow = record.hollow || parent.flags.hollow;
     return down;
 }
 

@@ -49,6 +49,9 @@ struct LightRecord {
     ColourFunction colour;
     // POV-Ray's fill light: no shadow, no highlights.
     bool shadowless = false;
+    // media_attenuation: its light is dimmed (and coloured) by the fog on
+    // its way, as POV-Ray's ComputeShadowMedia does (media hexant lacks).
+    bool media_attenuation = false;
     // spotlight: a cone from `position` toward point_at; cylinder: a
     // parallel beam about the line through them. radius and falloff are
     // the cone's half angles (degrees) or the beam's radii (scene units),

@@ -95,7 +95,6 @@ const std::map<std::string, Probe>& probes() {
                  {"jitter", "light_source { 0, 1 area_light x, y, 2, 2 jitter }"},
                  {"adaptive", "light_source { 0, 1 area_light x, y, 2, 2 adaptive 1 }"},
                  {"media_interaction", "light_source { 0, 1 media_interaction off }"},
-                 {"media_attenuation", "light_source { 0, 1 media_attenuation on }"},
                  {"max_intersections", "global_settings { max_intersections 64 }"},
                  {"debug", "#debug \"a line\\n\""},
                  {"quick_color", "sphere { 0, 1 pigment { rgb 1 quick_color rgb 0.5 } }"},
