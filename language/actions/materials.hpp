@@ -401,14 +401,18 @@ struct action<g::finish_setting> {
 // reflection V or reflection { MIN ...}: the minimum; the maximum the
 // same until one is written (POV-Ray's Parse_Finish). The old syntax, V
 // alone, also puts the falloff back to 1.
-inline void set_reflection(runtime::Finish& f, const Value& v) {
+// (A float is grey; a colour's filter and transmit do not count.)
+inline runtime::ColourFunction reflection_colour(const Value& v, const std::string& what) {
     if (v.is<TimeFunction>()) {
         const TimeFunction x = v.as<TimeFunction>();
-        f.reflection = runtime::ColourFunction{{x, x, x, 0.0, 0.0}};
-    } else {
-        f.reflection = to_colour(v, "reflection");
-        f.reflection.c[3] = f.reflection.c[4] = 0.0;
+        return runtime::ColourFunction{{x, x, x, 0.0, 0.0}};
     }
+    runtime::ColourFunction c = to_colour(v, what);
+    c.c[3] = c.c[4] = 0.0;
+    return c;
+}
+inline void set_reflection(runtime::Finish& f, const Value& v) {
+    f.reflection = reflection_colour(v, "reflection");
     f.reflection_max.reset();
 }
 template <>
@@ -434,16 +438,8 @@ struct action<g::reflection_maximum_value> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.values.pop();
-        auto& f = st.blocks.edit<runtime::Finish>(in.position(), "reflection");
-        runtime::ColourFunction most;
-        if (v.is<TimeFunction>()) {
-            const TimeFunction x = v.as<TimeFunction>();
-            most = runtime::ColourFunction{{x, x, x, 0.0, 0.0}};
-        } else {
-            most = to_colour(v, "reflection's maximum");
-            most.c[3] = most.c[4] = 0.0;
-        }
-        f.reflection_max = most;
+        st.blocks.edit<runtime::Finish>(in.position(), "reflection").reflection_max =
+            reflection_colour(v, "reflection's maximum");
     }
 };
 template <>
