@@ -48,7 +48,8 @@ struct ImageMapBuilder {
 using Block = std::variant<runtime::ObjectRecord, runtime::LightRecord, runtime::CameraRecord,
                            runtime::Texture, runtime::Pigment, runtime::Normal, runtime::ColourMap,
                            runtime::SkySphere, runtime::Fog, runtime::Finish, runtime::Interior,
-                           runtime::Transform, SplineBuilder, MaterialBuilder, ImageMapBuilder>;
+                           runtime::Media, runtime::Transform, SplineBuilder, MaterialBuilder,
+                           ImageMapBuilder>;
 
 class BlockStack {
   public:

@@ -107,6 +107,13 @@ HEXANT_ERROR(reflection_number_value,
 HEXANT_ERROR(ior_value, "expected a value after ior");
 HEXANT_ERROR(fade_setting_value,
              "expected a value after fade_distance, fade_power, fade_colour or caustics");
+HEXANT_ERROR(density_map_value, "expected the value of a density_map entry after '['");
+HEXANT_ERROR(media_setting_value, "expected a value after a media setting");
+HEXANT_ERROR(media_samples_value, "expected the number of samples after samples in media { }");
+HEXANT_ERROR(scattering_type,
+             "expected the scattering type (1 to 5) at the start of scattering { }");
+HEXANT_ERROR(scattering_colour, "expected the scattering colour after its type in scattering { }");
+HEXANT_ERROR(scattering_setting_value, "expected a value after eccentricity or extinction");
 HEXANT_ERROR(shape_arguments, "expected the object's parameters");
 HEXANT_ERROR(mesh2_values, "expected the section's count and values");
 HEXANT_ERROR(mesh2_texture_count, "expected the number of textures");

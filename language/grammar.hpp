@@ -11,7 +11,8 @@
 // token.
 //
 // The rules live in language/grammar/, one file a part, each including the
-// one before it: lexical, expressions, skipping, directives, modifiers, textures, objects, scene.
+// one before it: lexical, expressions, skipping, directives, modifiers, textures, media, objects,
+// scene.
 #pragma once
 
 #include "language/grammar/scene.hpp"

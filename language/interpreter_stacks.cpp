@@ -23,6 +23,7 @@ void Interpreter::apply_transform(runtime::TransformStep step, const p::position
     if (auto* object = std::get_if<runtime::ObjectRecord>(&b)) {
         // As in POV-Ray, an object's texture moves with it.
         if (object->texture) object->texture->transform_by(step);
+        if (object->interior) object->interior->transform_by(step);
         object->transform.append(std::move(step));
     } else if (auto* light = std::get_if<runtime::LightRecord>(&b)) {
         light->transform.append(std::move(step));
@@ -41,6 +42,8 @@ void Interpreter::apply_transform(runtime::TransformStep step, const p::position
     } else if (auto* normal = std::get_if<runtime::Normal>(&b)) {
         if (normal->uv_mapping != runtime::UvMapping::Closed)
             normal->transform.append(std::move(step));
+    } else if (auto* media = std::get_if<runtime::Media>(&b)) {
+        media->transform_by(step);
     } else if (auto* fog = std::get_if<runtime::Fog>(&b)) {
         // (POV-Ray turns a fog's up vector; a translation does not move it.)
         if (step.kind == runtime::TransformKind::Translate) return;
@@ -51,6 +54,7 @@ void Interpreter::apply_transform(runtime::TransformStep step, const p::position
         transform->append(std::move(step));
     } else if (auto* material = std::get_if<MaterialBuilder>(&b)) {
         if (material->texture) material->texture->transform_by(step);
+        if (material->interior) material->interior->transform_by(step);
     } else {
         fail(where, "a transformation does not belong here");
     }

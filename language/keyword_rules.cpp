@@ -1,8 +1,7 @@
 // The keyword rules (language/keyword_rules.hpp). Where a word has several
 // uses, its rule is that of the use hexant does not render (the note names
-// it); the others are rendered. Words of radiosity { }, photons { }, media
-// { } and subsurface { } are read with their block, which is
-// warned as a whole.
+// it); the others are rendered. Words of radiosity { }, photons { } and
+// subsurface { } are read with their block, which is warned as a whole.
 #include "language/keyword_rules.hpp"
 
 #include <algorithm>
@@ -14,10 +13,10 @@ namespace {
 
 // clang-format off
 constexpr auto kRules = std::to_array<KeywordRuleEntry>({
-    {"aa_level", KeywordRule::Warned, "inside media { } in interior { }, which is warned as a whole"},
-    {"aa_threshold", KeywordRule::Warned, "inside media { } in interior { }, which is warned as a whole"},
+    {"aa_level", KeywordRule::Rendered, ""},
+    {"aa_threshold", KeywordRule::Rendered, ""},
     {"abs", KeywordRule::Rendered, ""},
-    {"absorption", KeywordRule::Warned, "inside media { } in interior { }, which is warned as a whole"},
+    {"absorption", KeywordRule::Rendered, ""},
     {"accuracy", KeywordRule::Rendered, ""},
     {"acos", KeywordRule::Rendered, ""},
     {"acosh", KeywordRule::Rendered, ""},
@@ -123,9 +122,9 @@ constexpr auto kRules = std::to_array<KeywordRuleEntry>({
     {"default", KeywordRule::Rendered, ""},
     {"defined", KeywordRule::Rendered, ""},
     {"degrees", KeywordRule::Rendered, ""},
-    {"density", KeywordRule::Refused, ""},
+    {"density", KeywordRule::Rendered, ""},
     {"density_file", KeywordRule::Refused, ""},
-    {"density_map", KeywordRule::Refused, ""},
+    {"density_map", KeywordRule::Rendered, ""},
     {"dents", KeywordRule::Rendered, ""},
     {"deprecated", KeywordRule::Refused, ""},
     {"df3", KeywordRule::Refused, ""},
@@ -143,7 +142,7 @@ constexpr auto kRules = std::to_array<KeywordRuleEntry>({
     {"div", KeywordRule::Rendered, ""},
     {"double_illuminate", KeywordRule::Rendered, ""},
     {"dtag", KeywordRule::Refused, ""},
-    {"eccentricity", KeywordRule::Warned, "inside media { } in interior { }, which is warned as a whole"},
+    {"eccentricity", KeywordRule::Rendered, ""},
     {"else", KeywordRule::Rendered, ""},
     {"elseif", KeywordRule::Rendered, ""},
     {"emission", KeywordRule::Rendered, ""},
@@ -156,7 +155,7 @@ constexpr auto kRules = std::to_array<KeywordRuleEntry>({
     {"exponent", KeywordRule::Rendered, ""},
     {"exr", KeywordRule::Rendered, ""},
     {"exterior", KeywordRule::Rendered, ""},
-    {"extinction", KeywordRule::Warned, "inside media { } in interior { }, which is warned as a whole"},
+    {"extinction", KeywordRule::Rendered, ""},
     {"face_indices", KeywordRule::Rendered, ""},
     {"facets", KeywordRule::Refused, ""},
     {"fade_color", KeywordRule::Rendered, ""},
@@ -219,7 +218,7 @@ constexpr auto kRules = std::to_array<KeywordRuleEntry>({
     {"internal", KeywordRule::Rendered, ""},
     {"interpolate", KeywordRule::Rendered, ""},
     {"intersection", KeywordRule::Rendered, ""},
-    {"intervals", KeywordRule::Warned, "inside media { } in interior { }, which is warned as a whole"},
+    {"intervals", KeywordRule::Rendered, ""},
     {"inverse", KeywordRule::Rendered, ""},
     {"ior", KeywordRule::Rendered, ""},
     {"irid", KeywordRule::Rendered, ""},
@@ -262,15 +261,15 @@ constexpr auto kRules = std::to_array<KeywordRuleEntry>({
     {"max_trace", KeywordRule::Harmless, "hexant's isosurface finds every intersection"},
     {"max_trace_level", KeywordRule::Rendered, ""},
     {"maximum_reuse", KeywordRule::Warned, "inside radiosity { }, which is warned as a whole"},
-    {"media", KeywordRule::Warned, "media in interior { } draws nothing (at the top level it is refused)"},
+    {"media", KeywordRule::Rendered, ""},
     {"media_attenuation", KeywordRule::Rendered, ""},
-    {"media_interaction", KeywordRule::Harmless, "changes nothing without media, which is warned where it is used"},
+    {"media_interaction", KeywordRule::Rendered, ""},
     {"merge", KeywordRule::Rendered, ""},
     {"mesh", KeywordRule::Rendered, ""},
     {"mesh2", KeywordRule::Rendered, ""},
     {"mesh_camera", KeywordRule::Refused, ""},
     {"metallic", KeywordRule::Rendered, ""},
-    {"method", KeywordRule::Warned, "inside media { } in interior { }, which is warned as a whole"},
+    {"method", KeywordRule::Rendered, ""},
     {"metric", KeywordRule::Rendered, ""},
     {"min", KeywordRule::Rendered, ""},
     {"min_extent", KeywordRule::Rendered, ""},
@@ -360,7 +359,7 @@ constexpr auto kRules = std::to_array<KeywordRuleEntry>({
     {"ramp_wave", KeywordRule::Rendered, ""},
     {"rand", KeywordRule::Rendered, ""},
     {"range", KeywordRule::Rendered, ""},
-    {"ratio", KeywordRule::Warned, "inside media { } in interior { }, which is warned as a whole"},
+    {"ratio", KeywordRule::Rendered, ""},
     {"read", KeywordRule::Rendered, ""},
     {"reciprocal", KeywordRule::Rendered, ""},
     {"recursion_limit", KeywordRule::Warned, "inside radiosity { }, which is warned as a whole"},
@@ -378,12 +377,12 @@ constexpr auto kRules = std::to_array<KeywordRuleEntry>({
     {"ripples", KeywordRule::Rendered, ""},
     {"rotate", KeywordRule::Rendered, ""},
     {"roughness", KeywordRule::Rendered, ""},
-    {"samples", KeywordRule::Warned, "inside media { } in interior { }, which is warned as a whole"},
+    {"samples", KeywordRule::Rendered, ""},
     {"save_file", KeywordRule::Warned, "inside radiosity { }, which is warned as a whole"},
     {"sblue", KeywordRule::Refused, ""},
     {"scale", KeywordRule::Rendered, ""},
     {"scallop_wave", KeywordRule::Rendered, ""},
-    {"scattering", KeywordRule::Warned, "inside media { } in interior { }, which is warned as a whole"},
+    {"scattering", KeywordRule::Rendered, ""},
     {"seed", KeywordRule::Rendered, ""},
     {"select", KeywordRule::Rendered, ""},
     {"sgreen", KeywordRule::Refused, ""},

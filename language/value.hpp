@@ -63,12 +63,14 @@ struct Array {
 };
 
 struct Value {
-    using Variant = std::variant<
-        TimeFunction, Vector, std::string, TimedString, runtime::ObjectPtr, runtime::LightRecord,
-        runtime::CameraRecord, runtime::Texture, runtime::Pigment, runtime::Normal,
-        runtime::ColourMap, runtime::SkySphere, runtime::Finish, runtime::Interior, Material,
-        runtime::Transform, std::shared_ptr<Array>, std::shared_ptr<const runtime::Spline>,
-        std::shared_ptr<const Macro>, std::shared_ptr<const runtime::UserFunction>, Unevaluated>;
+    using Variant =
+        std::variant<TimeFunction, Vector, std::string, TimedString, runtime::ObjectPtr,
+                     runtime::LightRecord, runtime::CameraRecord, runtime::Texture,
+                     runtime::Pigment, runtime::Normal, runtime::ColourMap, runtime::SkySphere,
+                     runtime::Finish, runtime::Interior, runtime::Media, Material,
+                     runtime::Transform, std::shared_ptr<Array>,
+                     std::shared_ptr<const runtime::Spline>, std::shared_ptr<const Macro>,
+                     std::shared_ptr<const runtime::UserFunction>, Unevaluated>;
     Variant v;
 
     template <typename T>

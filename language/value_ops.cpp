@@ -24,6 +24,7 @@ std::string type_name(const Value& value) {
         std::string operator()(const runtime::SkySphere&) const { return "sky_sphere"; }
         std::string operator()(const runtime::Finish&) const { return "finish"; }
         std::string operator()(const runtime::Interior&) const { return "interior"; }
+        std::string operator()(const runtime::Media&) const { return "media"; }
         std::string operator()(const Material&) const { return "material"; }
         std::string operator()(const runtime::Transform&) const { return "transform"; }
         std::string operator()(const std::shared_ptr<Array>&) const { return "array"; }

@@ -68,6 +68,7 @@ ShadedLight::ShadedLight(const runtime::LightRecord& r)
       circular_(r.area && (r.circular || r.orient) && r.area->size1 > 1 && r.area->size2 > 1),
       orient_(r.orient) {
     media_attenuation_ = r.media_attenuation;
+    media_interaction_ = r.media_interaction;
     fixed_position_ = moving_position(0.0);
     still_position_ = !r.position.depends_on_time() && !r.transform.depends_on_time();
     fixed_colour_ = rgb(r.colour, 0.0);
@@ -240,6 +241,92 @@ glm::dvec3 ShadedLight::area_offset(glm::dvec2 u, const LightRay& centre, double
     if (area.size1 > 1) offset += axis1 * (gu / (area.size1 - 1) - 0.5);
     if (area.size2 > 1) offset += axis2 * (gv / (area.size2 - 1) - 0.5);
     return offset;
+}
+
+bool ShadedLight::media_interval(const glm::dvec3& origin, const glm::dvec3& direction, double t,
+                                 double& s0, double& s1) const {
+    // POV-Ray's MAX_DISTANCE: as far as a beam reaches.
+    constexpr double kFar = 1.0e7;
+    s0 = 0.0;
+    s1 = kFar;
+    if (kind_ == runtime::LightKind::Point) return true;
+    const glm::dvec3 centre = position_at(t), axis = axis_at(t);
+    const glm::dvec3 v1 = origin - centre;
+    const double k1 = glm::dot(direction, axis), k2 = glm::dot(v1, axis);
+    if (k1 <= 0.0 && k2 < 0.0) return false;
+    const double k3 = glm::dot(v1, direction), k4 = glm::dot(v1, v1);
+    if (kind_ == runtime::LightKind::Cylinder) {
+        // (ComputeCylinderLightInterval: the beam's falloff radius.)
+        const double falloff = falloff_(t);
+        const double a = 1.0 - k1 * k1;
+        if (a == 0.0) return false;
+        const double b = k3 - k1 * k2, c = k4 - k2 * k2 - falloff * falloff;
+        double d = b * b - a * c;
+        if (!(d > kEpsilon)) return false;
+        d = std::sqrt(d);
+        double t1 = (-b + d) / a, t2 = (-b - d) / a;
+        if (t1 > t2) std::swap(t1, t2);
+        const double l1 = k2 + t1 * k1, l2 = k2 + t2 * k1;
+        if (l1 <= 0.0 && l2 <= 0.0) return false;
+        if (l1 <= 0.0)
+            t1 = 0.0;
+        else if (l2 <= 0.0)
+            t2 = (kFar - k2) / k1;
+        s0 = t1;
+        s1 = t2;
+        return true;
+    }
+    // ComputeSpotLightInterval: the cone of the falloff angle (POV-Ray
+    // keeps its cosine).
+    const double cos_falloff = std::cos(falloff_(t) * std::numbers::pi / 180.0);
+    const double m = 1.0 / (cos_falloff * cos_falloff);
+    const double l = glm::length(v1);
+    const bool in_cone = l > kEpsilon && k2 / l >= cos_falloff;
+    const double a = 1.0 - k1 * k1 * m, b = k3 - k1 * k2 * m, c = k4 - k2 * k2 * m;
+    if (a == 0.0) {
+        if (!in_cone) return false;
+        s0 = 0.0;
+        s1 = -c / b;
+        return true;
+    }
+    double d = b * b - a * c;
+    if (d > kEpsilon) {
+        d = std::sqrt(d);
+        double t1 = (-b + d) / a, t2 = (-b - d) / a;
+        if (t1 > t2) std::swap(t1, t2);
+        const double l1 = k2 + t1 * k1, l2 = k2 + t2 * k1;
+        if (l1 <= 0.0 && l2 <= 0.0) return false;
+        if (l1 <= 0.0) {
+            if (in_cone) {
+                t1 = 0.0;
+                t2 = t2 > 0.0 ? t2 : kFar;
+            } else {
+                t1 = t2;
+                t2 = kFar;
+            }
+        } else if (l2 <= 0.0) {
+            if (in_cone) {
+                t2 = t1;
+                t1 = 0.0;
+            } else {
+                t2 = kFar;
+            }
+        }
+        s0 = t1;
+        s1 = t2;
+        return true;
+    }
+    if (d > -kEpsilon) {
+        if (in_cone) {
+            s0 = 0.0;
+            s1 = -b / a;
+        } else {
+            s0 = -b / a;
+            s1 = kFar;
+        }
+        return true;
+    }
+    return false;
 }
 
 }  // namespace hexant::tracer

@@ -35,6 +35,14 @@ class ShadedLight {
     bool shadowless() const { return shadowless_; }
     // media_attenuation (runtime::LightRecord): fogged on its way.
     bool media_attenuation() const { return media_attenuation_; }
+    // media_interaction (runtime::LightRecord): media scatter it.
+    bool media_interaction() const { return media_interaction_; }
+    // The stretch [s0, s1] of the ray origin + s direction (unit) that the
+    // light can reach, for sampling media (POV-Ray's
+    // ComputeOneMediaLightInterval): all of it for point lights; the part
+    // inside a spotlight's cone or a cylinder's beam. False when none.
+    bool media_interval(const glm::dvec3& origin, const glm::dvec3& direction, double t, double& s0,
+                        double& s1) const;
     bool is_area() const { return area_.has_value(); }
     // (The common light's answers inline: a scene of point lights pays
     // nothing for the other kinds.)
@@ -88,7 +96,7 @@ class ShadedLight {
     runtime::Lifetime lifetime_;
     runtime::LightKind kind_;
     bool shadowless_, parallel_;
-    bool media_attenuation_ = false;
+    bool media_attenuation_ = false, media_interaction_ = true;
     bool still_position_ = false, still_colour_ = false;
     glm::dvec3 fixed_position_{0.0}, fixed_colour_{0.0};
     runtime::TimeFunction radius_, falloff_, tightness_, fade_distance_, fade_power_;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include <glm/geometric.hpp>
@@ -54,6 +55,9 @@ Shader::Shader(const runtime::SceneDescription& scene, const RayQuery& query, Li
         sky_emission_ = scene.sky_sphere->emission;
     }
     fogs_ = scene.fogs;
+    // (A density pattern hexant lacks throws, naming its place.)
+    if (!scene.atmosphere.empty())
+        atmosphere_ = std::make_shared<const runtime::MediaVolume>(scene.atmosphere);
     noise_generator_ = scene.global.noise_generator;
 }
 
@@ -241,10 +245,16 @@ glm::dvec3 Shader::filtered(Ray4 ray, double reach, int depth, ThreadState& stat
             // Leaving an object whose interior fades light: by the way
             // inside (POV-Ray's ComputeShadowTexture, which wants a power
             // above 0 too).
-            if (glm::dot(p.geometric_normal, d) > 0.0)
+            if (glm::dot(p.geometric_normal, d) > 0.0) {
+                const double inside = glm::distance(glm::dvec3(p.event), glm::dvec3(ray.origin));
                 if (const auto fade = p.texture->fade_at(p.event.w); fade && fade->power > 0.0)
-                    through *=
-                        fade->through(glm::distance(glm::dvec3(p.event), glm::dvec3(ray.origin)));
+                    through *= fade->through(inside);
+                // Its media's extinction on the way through (the media of
+                // the shadow ray's interiors, ComputeShadowColour).
+                if (const runtime::MediaVolume* media = p.texture->media();
+                    media && hit->object->flags().hollow)
+                    through = shadow_media(through, ray, inside, *media);
+            }
             // POV-Ray's full shadow: below its EPSILON in every channel.
             if (std::max({std::fabs(through.x), std::fabs(through.y), std::fabs(through.z)}) <
                 1.0e-10)
@@ -301,20 +311,20 @@ glm::dvec3 Shader::transmittance(const runtime::SurfacePoint& p, const glm::dvec
 }
 
 glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, std::uint8_t sight,
-                            ThreadState& state) const {
+                            const Inside& inside, ThreadState& state) const {
     const double t = ray.origin.w;
     Ray4 on = ray;
     const auto hit = nearest(ray, on, state, sight);
-    // (A ray that hits nothing goes POV-Ray's BOUND_HUGE, 2e10, through fog.)
+    // (A ray that hits nothing goes POV-Ray's BOUND_HUGE, 2e10, through
+    // media and fog.)
     if (!hit) {
         const glm::dvec3 seen = sky(glm::normalize(glm::dvec3(ray.direction)), t);
-        return fogs_.empty() ? seen : fogged(seen, ray, 2.0e10);
+        return through_volume(seen, ray, 2.0e10, inside, depth, state);
     }
     const runtime::SurfacePoint p = hit->object->complete(on, *hit);
     Hit h{on, p, depth, weight};
     h.sight = sight;
     h.double_lit = hit->object->flags().double_illuminate;
-    const bool hollow = hit->object->flags().hollow;
     h.d = glm::normalize(glm::dvec3(ray.direction));
     h.point = glm::dvec3(p.event);
     h.time = p.event.w;
@@ -329,6 +339,19 @@ glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, std::uint
     if (glm::dot(h.raw, h.d) > 0.0) h.raw = -h.raw;
     h.start = runtime::geometry::offset_ray(h.point, p.error, h.geometric);
     if (h.double_lit) h.back_start = runtime::geometry::offset_ray(h.point, p.error, -h.geometric);
+    // The object as an interior: its media's volume (shared by the members
+    // of the object that wrote it), or itself. Leaving it, the ray was in
+    // it all along, even where that was not known (a camera inside).
+    const runtime::MediaVolume* media = p.texture->media();
+    h.entry = {media ? static_cast<const void*>(media) : static_cast<const void*>(hit->object),
+               media, hit->object->flags().hollow};
+    // (A ray that leaves an object it was not known to be in was inside it
+    // from its start (a camera inside) when its origin is; else it came in
+    // through an opening (clipped_by) and is in the open, as POV-Ray has it.)
+    h.around = h.back && (media || !h.entry.hollow) &&
+                       (inside.contains(h.entry.key) || hit->object->inside(ray.origin))
+                   ? inside.with(h.entry)
+                   : inside;
 
     // What the texture shows here: the plain textures its patterns pick,
     // their layers, each layer's normal perturbed after the turn (as
@@ -350,12 +373,113 @@ glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, std::uint
                                          plain.count, &scratch.lights, state);
     }
 
-    // Fog lies along the way here when the ray came through the open or
-    // the inside of a hollow object (not from inside a solid: POV-Ray fogs
-    // only rays outside non-hollow objects, its IsHollowRay).
-    return fogs_.empty() || (h.back && !hollow)
-               ? colour
-               : fogged(colour, ray, glm::distance(h.point, glm::dvec3(ray.origin)));
+    return through_volume(colour, ray, glm::distance(h.point, glm::dvec3(ray.origin)), h.around,
+                          depth, state);
+}
+
+glm::dvec3 Shader::through_volume(const glm::dvec3& colour, const Ray4& ray, double depth,
+                                  const Inside& around, int level, ThreadState& state) const {
+    // POV-Ray fogs and fills with media only rays outside non-hollow
+    // objects (IsHollowRay): the interiors' media first
+    // (ComputeTextureColour), then the atmosphere's and fog (TraceRay).
+    if (!around.hollow()) return colour;
+    glm::dvec3 seen = colour;
+    const bool interiors = around.has_media();
+    if (interiors || atmosphere_) {
+        MediaRay m;
+        m.origin = glm::dvec3(ray.origin);
+        m.direction = glm::normalize(glm::dvec3(ray.direction));
+        m.depth = depth;
+        m.time = ray.origin.w;
+        // The lights media scatter, each over the stretch it reaches.
+        std::vector<MediaLight> lights;
+        for (std::size_t i = 0; i < lights_.size(); ++i) {
+            const ShadedLight& light = lights_[i];
+            if (!light.media_interaction() || !light.shines_at(m.time)) continue;
+            double s0 = 0.0, s1 = 0.0;
+            if (!light.media_interval(m.origin, m.direction, m.time, s0, s1)) continue;
+            // (POV-Ray's SMALL_TOLERANCE: a beam that ends at the eye.)
+            if (!(s0 < depth && s1 > 1.0e-3)) continue;
+            lights.push_back({i, std::max(s0, 0.0), std::min(s1, depth)});
+        }
+        // Each sample's own numbers, from the pixel sample and the ray.
+        const SampleIndex& s = state.sample;
+        std::uint64_t seed = (std::uint64_t(s.seed) << 32) ^ s.index ^ (std::uint64_t(level) << 48);
+        std::uint64_t bits = 0;
+        std::memcpy(&bits, &m.direction.x, sizeof bits);
+        seed ^= bits;
+        MediaRandom random(seed);
+        const MediaLightFn light_at = [&](std::size_t i, const glm::dvec3& point,
+                                          glm::dvec3& to_light) {
+            return media_light(i, point, m.time, level, to_light, state);
+        };
+        if (interiors) {
+            std::vector<const runtime::MediaVolume::One*> media;
+            for (int i = 0; i < around.count; ++i)
+                if (const runtime::MediaVolume* v = around.entries[std::size_t(i)].media)
+                    for (const auto& one : v->media()) media.push_back(&one);
+            seen = through_media(media, m, lights, random, light_at, seen);
+        }
+        if (atmosphere_) {
+            std::vector<const runtime::MediaVolume::One*> media;
+            for (const auto& one : atmosphere_->media()) media.push_back(&one);
+            seen = through_media(media, m, lights, random, light_at, seen);
+        }
+    }
+    return fogs_.empty() ? seen : fogged(seen, ray, depth);
+}
+
+glm::dvec3 Shader::shadow_media(const glm::dvec3& light, const Ray4& ray, double depth,
+                                const runtime::MediaVolume& volume) const {
+    MediaRay m;
+    m.origin = glm::dvec3(ray.origin);
+    m.direction = glm::normalize(glm::dvec3(ray.direction));
+    m.depth = depth;
+    m.time = ray.origin.w;
+    m.shadow = true;
+    std::vector<const runtime::MediaVolume::One*> media;
+    for (const auto& one : volume.media()) media.push_back(&one);
+    // (A shadow ray gathers no light, so it draws no numbers but jitter's.)
+    MediaRandom random(std::uint64_t(depth * 1.0e6));
+    return through_media(media, m, {}, random, {}, light);
+}
+
+glm::dvec3 Shader::media_light(std::size_t index, const glm::dvec3& point, double t, int level,
+                               glm::dvec3& to_light, ThreadState& state) const {
+    // POV-Ray's TestShadow from the sample: the light's ray, its
+    // attenuation, and its shadow ray (a shadowless light casts none).
+    const ShadedLight& light = lights_[index];
+    const LightRay ray = light.ray_from(point, t);
+    if (ray.direction == glm::dvec3(0.0)) return glm::dvec3(0.0);
+    const double attenuation = light.attenuation(point, ray, t);
+    if (!(attenuation > 0.0)) return glm::dvec3(0.0);
+    to_light = ray.direction;
+    glm::dvec3 colour = light.colour_at(t) * attenuation;
+    glm::dvec3 direction = ray.direction;
+    double reach = ray.depth;
+    if (light.is_area()) {
+        const SampleIndex& s = state.sample;
+        const auto u = padded_pair(
+            s.seed, s.index, s.count,
+            static_cast<std::uint32_t>(index + lights_.size() * std::size_t(level + 64)), s.jitter);
+        const LightRay toward = light.ray_from(
+            point, t, light.area_offset({u[0], u[1]}, LightRay{ray.direction, 0.0}, t));
+        if (toward.direction != glm::dvec3(0.0)) {
+            direction = toward.direction;
+            reach = toward.depth;
+        }
+    }
+    const Ray4 shadow = travel_.ray(point, t, direction);
+    if (!light.shadowless() && reach > 0.0) {
+        ++state.counters.shadow_rays;
+        if (blocked(shadow, reach, state)) return glm::dvec3(0.0);
+        if (filtering_) colour *= filtered(shadow, reach, level, state);
+    }
+    if (light.media_attenuation() && reach > 0.0) {
+        if (atmosphere_) colour = shadow_media(colour, shadow, reach, *atmosphere_);
+        if (!fogs_.empty()) colour = fogged(colour, shadow, reach, true);
+    }
+    return colour;
 }
 
 glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers, std::size_t count,
@@ -398,13 +522,17 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
                     else if (passed != glm::dvec3(1.0))
                         known.colour *= passed;
                 }
-                // media_attenuation: the fog between here and the light
-                // dims it (ComputeShadowMedia).
-                if (light.media_attenuation() && !fogs_.empty() &&
-                    known.state != ShadingScratch::Light::State::Shadowed && known.reach > 0.0)
-                    known.colour =
-                        fogged(known.colour, travel_.ray(h.start, h.time, known.to_light),
-                               known.reach, true);
+                // media_attenuation: the atmosphere's media and the fog
+                // between here and the light dim it (ComputeShadowMedia).
+                if (light.media_attenuation() &&
+                    known.state != ShadingScratch::Light::State::Shadowed && known.reach > 0.0) {
+                    const Ray4 toward = travel_.ray(h.start, h.time, known.to_light);
+                    if (atmosphere_ && light.media_interaction())
+                        known.colour =
+                            shadow_media(known.colour, toward, known.reach, *atmosphere_);
+                    if (!fogs_.empty())
+                        known.colour = fogged(known.colour, toward, known.reach, true);
+                }
             }
             if (known.state == ShadingScratch::Light::State::Shadowed) continue;
             // (POV-Ray's default brilliance 1 needs no pow.)
@@ -473,7 +601,8 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
         // back inside, it is a reflection ray.)
         const glm::dvec3 behind =
             radiance(next, h.depth + 1, through_weight,
-                     total_internal_reflection ? runtime::kSightReflection : h.sight, state);
+                     total_internal_reflection ? std::uint8_t(runtime::kSightReflection) : h.sight,
+                     total_internal_reflection ? h.around : h.refracted(), state);
         // Light that crossed the object's inside to get here fades with
         // the distance it went (fade_distance; POV-Ray's attCol).
         glm::dvec3 faded(1.0);
@@ -498,16 +627,16 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
         ++state.counters.reflected_rays;
         const glm::dvec3 out = reflect(h.d, layer.normal, h.raw);
         const Ray4 reflected = travel_.ray(h.start, h.time, out);
-        glm::dvec3 seen =
-            radiance(reflected, h.depth + 1, reflect_weight, runtime::kSightReflection, state);
+        glm::dvec3 from_there = radiance(reflected, h.depth + 1, reflect_weight,
+                                         runtime::kSightReflection, h.around, state);
         if (m.irid > 0.0)
-            seen *=
+            from_there *=
                 iridescence(m, out, h.d, layer.normal, h.point, irid_wavelength_, noise_generator_);
         // (reflection { exponent E }: POV-Ray raises the light to 1 / E.)
         if (m.reflection_power != 1.0)
             for (int k = 0; k < 3; ++k)
-                seen[k] = std::pow(std::max(seen[k], 0.0), m.reflection_power);
-        colour += r.colour * seen;
+                from_there[k] = std::pow(std::max(from_there[k], 0.0), m.reflection_power);
+        colour += r.colour * from_there;
     }
     return colour;
 }

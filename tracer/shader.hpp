@@ -22,6 +22,7 @@
 #include "runtime/texture/texture_evaluator.hpp"
 #include "tracer/light.hpp"
 #include "tracer/light_travel.hpp"
+#include "tracer/media.hpp"
 #include "tracer/ray_query.hpp"
 #include "tracer/thread_state.hpp"
 
@@ -40,14 +41,16 @@ class Shader {
     // The colour seen along a primary ray.
     glm::dvec3 trace(const runtime::Ray4& ray, ThreadState& state) const {
         ++state.counters.primary_rays;
-        return radiance(ray, 1, 1.0, runtime::kSightImage, state);
+        return radiance(ray, 1, 1.0, runtime::kSightImage, Inside{}, state);
     }
 
   private:
     // `sight`: the kind of ray (runtime::RaySight), which decides the
-    // objects hidden from it.
+    // objects hidden from it; `inside`: the interiors it starts in (a
+    // camera ray: none known; one that finds itself leaving an object
+    // counts that object from its start).
     glm::dvec3 radiance(const runtime::Ray4& ray, int depth, double weight, std::uint8_t sight,
-                        ThreadState& state) const;
+                        const Inside& inside, ThreadState& state) const;
     // The nearest hit along `ray` within (0, s_max), and in `on` the ray it
     // is on: `ray` itself (on is left alone: the caller sets it to ray),
     // or, for light that would run back past the floor, its held piece
@@ -75,6 +78,15 @@ class Shader {
         // toward such lights start off that side (back_start).
         bool double_lit = false;
         glm::dvec3 back_start{0.0};
+        // The interiors the ray crossed to get here (its own and, when it
+        // leaves one, that one), and the object hit as one of them.
+        Inside around{};
+        Inside::Entry entry{};
+        // The interiors a ray refracted here is in.
+        Inside refracted() const {
+            if (back) return around.without(entry.key);
+            return entry.media || !entry.hollow ? around.with(entry) : around;
+        }
     };
     // The colour of one plain texture (its `count` layers, top first) at
     // the hit; `seen` keeps what is known of each light across the plain
@@ -114,6 +126,20 @@ class Shader {
     // (`shadow`: the light along a shadow ray, dimmed only.)
     glm::dvec3 fogged(const glm::dvec3& colour, const runtime::Ray4& ray, double depth,
                       bool shadow = false) const;
+    // `colour` seen through what lies along `depth` of `ray` with the
+    // interiors `around` (tracer/media.hpp): their media, then, when all
+    // are hollow (POV-Ray's IsHollowRay), the atmosphere's media and fog.
+    glm::dvec3 through_volume(const glm::dvec3& colour, const runtime::Ray4& ray, double depth,
+                              const Inside& around, int level, ThreadState& state) const;
+    // A shadow ray's light dimmed along `depth` of `ray` by the media in
+    // `volumes` (media_attenuation: the atmosphere's; a surface left: its
+    // interior's).
+    glm::dvec3 shadow_media(const glm::dvec3& light, const runtime::Ray4& ray, double depth,
+                            const runtime::MediaVolume& volume) const;
+    // The light of light `index` arriving at `point` in media at time t,
+    // after its shadow ray (MediaLightFn).
+    glm::dvec3 media_light(std::size_t index, const glm::dvec3& point, double t, int level,
+                           glm::dvec3& to_light, ThreadState& state) const;
 
     const RayQuery& query_;
     LightTravel travel_;
@@ -124,6 +150,7 @@ class Shader {
     std::vector<runtime::TextureEvaluator> sky_layers_;
     runtime::ColourFunction sky_emission_;
     std::vector<runtime::Fog> fogs_;
+    std::shared_ptr<const runtime::MediaVolume> atmosphere_;  // media { } at the top
     int noise_generator_ = 2;  // global_settings { noise_generator } (fog, iridescence)
     runtime::ColourFunction ambient_light_;
     bool still_ambient_ = false;

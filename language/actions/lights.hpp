@@ -96,9 +96,10 @@ struct action<g::light_setting> {
             light.fade_power = to_float(v, name);
         else if (name == "media_attenuation")
             light.media_attenuation = runtime::pov_true(to_constant(v, name));
+        else if (name == "media_interaction")
+            light.media_interaction = runtime::pov_true(to_constant(v, name));
         // adaptive: POV-Ray's shortcut to the area grid's average, which
-        // hexant samples whole; media_interaction: hexant has no media.
-        // Read, no effect.
+        // hexant samples whole. Read, no effect.
     }
 };
 template <>

@@ -2,7 +2,7 @@
 // Part of the actions (language/actions.hpp).
 #pragma once
 
-#include "language/actions/maps.hpp"
+#include "language/actions/media.hpp"
 
 namespace hexant::language {
 

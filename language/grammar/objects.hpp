@@ -3,7 +3,7 @@
 #pragma once
 
 #include "language/grammar/functions.hpp"
-#include "language/grammar/textures.hpp"
+#include "language/grammar/media.hpp"
 
 namespace hexant::language::grammar {
 
@@ -119,10 +119,9 @@ struct light_block : p::seq<kw_light_source, p::must<lbrace>, p::must<light_argu
 // Object kinds POV-Ray has and hexant does not: kept as source, an error
 // only where used. Also `function { }` and the *_map blocks.
 struct unsupported_kind_words {
-    static constexpr std::array<std::string_view, 15> list = {
-        "color_map", "colour_map",  "density",    "density_map", "function",
-        "lemon",     "media",       "normal_map", "ovus",        "parametric",
-        "photons",   "pigment_map", "rainbow",    "slope_map",   "texture_map"};
+    static constexpr std::array<std::string_view, 12> list = {
+        "color_map",  "colour_map", "function",    "lemon",   "normal_map", "ovus",
+        "parametric", "photons",    "pigment_map", "rainbow", "slope_map",  "texture_map"};
 };
 struct unsupported_kind : one_word_of<unsupported_kind_words> {};
 struct unsupported_block

@@ -167,11 +167,11 @@ struct texture_layer : p::seq<texture_block> {};
 struct material_value : p::seq<material_block> {};
 struct texture_value : p::seq<texture_block, p::star<texture_layer>> {};
 
-struct value
-    : p::sor<object_value, camera_block, texture_value, pigment_block, normal_block,
-             colour_map_block, sky_sphere_block, finish_block, interior_block, material_value,
-             transform_value, array_value, spline_block, function_pigment, function_spline,
-             function_pattern_value, function_value, unsupported_block, expression> {};
+struct value : p::sor<object_value, camera_block, texture_value, pigment_block, normal_block,
+                      colour_map_block, sky_sphere_block, finish_block, interior_block, media_block,
+                      density_block, material_value, transform_value, array_value, spline_block,
+                      function_pigment, function_spline, function_pattern_value, function_value,
+                      unsupported_block, expression> {};
 
 // A macro called where a value is wanted holds values (and directives);
 // a ';' after its value is read and dropped, as POV-Ray does with a macro
@@ -184,8 +184,10 @@ struct scene_object : p::seq<object_value> {};
 struct scene_unsupported : p::seq<unsupported_block> {};
 struct scene_camera : p::seq<camera_block> {};
 struct scene_sky_sphere : p::seq<sky_sphere_block> {};
+// media { } at the top: the atmosphere's (runtime/scene/media.hpp).
+struct scene_media : p::seq<media_block> {};
 struct scene_item : p::sor<directive<scene_item>, macro_call<scene_item>, scene_object,
-                           scene_camera, background_block, scene_sky_sphere, fog_block,
+                           scene_camera, background_block, scene_sky_sphere, fog_block, scene_media,
                            global_settings_block, default_block, scene_unsupported, semicolon> {};
 struct scene_end : p::eof {};
 struct scene_file : p::seq<ws, p::star<scene_item>, p::must<scene_end>> {};

@@ -14,6 +14,7 @@
 #include "runtime/objects/lifetime_object.hpp"
 #include "runtime/objects/object_error.hpp"
 #include "runtime/objects/primitive.hpp"
+#include "runtime/scene/media_volume.hpp"
 
 namespace hexant::runtime {
 
@@ -24,6 +25,9 @@ struct Inherited {
     Transform to_world;  // the group's object space to the world
     std::optional<Texture> texture;
     std::optional<Interior> interior;
+    // The interior's media, compiled once for the object that wrote it
+    // and shared by its members (build_shape).
+    std::shared_ptr<const MediaVolume> media;
     bool no_shadow = false;
     ObjectFlags flags;  // no_image, no_reflection, double_illuminate
     int csg_depth = 0;  // CSG objects around this one (unions split apart do not count)
@@ -42,7 +46,7 @@ constexpr int kMaxCsgDepth = 1000;
 
 // What the scene's top hands its objects: the default texture.
 Inherited top_level(const Texture& default_texture) {
-    return {Transform{}, default_texture,    std::nullopt, false, ObjectFlags{},
+    return {Transform{}, default_texture,    std::nullopt, nullptr, false, ObjectFlags{},
             0,           Lifetime::always(), false};
 }
 
@@ -59,7 +63,11 @@ Inherited handed_down(const ObjectRecord& record, const Inherited& parent) {
         down.texture = *record.texture;
         down.texture->transform_by(parent.to_world);
     }
-    if (record.interior) down.interior = record.interior;
+    if (record.interior) {
+        // (Its media's densities, as the texture, map to the parent's space.)
+        down.interior = record.interior;
+        down.interior->transform_by(parent.to_world);
+    }
     down.no_shadow = record.no_shadow || parent.no_shadow;
     if (record.no_image) down.flags.hidden_from |= kSightImage;
     if (record.no_reflection) down.flags.hidden_from |= kSightReflection;
@@ -189,7 +197,13 @@ IntelligentObjectPtr build_object(const ObjectRecord& record, const Inherited& p
 }
 
 IntelligentObjectPtr build_shape(const ObjectRecord& record, const Inherited& parent) {
-    const Inherited own = handed_down(record, parent);
+    Inherited own = handed_down(record, parent);
+    if (record.interior) {
+        own.media = nullptr;
+        // (A density pattern hexant lacks throws, naming its place.)
+        if (!own.interior->media.empty())
+            own.media = std::make_shared<const MediaVolume>(own.interior->media);
+    }
     const Transform& to_world = own.to_world;
     const std::optional<Interior>& interior = own.interior;
 
@@ -215,6 +229,7 @@ IntelligentObjectPtr build_shape(const ObjectRecord& record, const Inherited& pa
                        own.flags);
     }
     TextureEvaluator evaluator(*own.texture, interior);
+    evaluator.set_media(own.media);
     const PrimitiveOptions options{record.inverse, own.no_shadow};
     return std::visit(
         [&](const auto& shape) -> IntelligentObjectPtr {
@@ -239,6 +254,7 @@ IntelligentObjectPtr build_shape(const ObjectRecord& record, const Inherited& pa
                         Texture world = part;
                         world.transform_by(to_world);
                         parts.emplace_back(world, interior);
+                        parts.back().set_media(own.media);
                     }
                 // A model whose shape depends on its placement (a
                 // bicubic_patch, which POV-Ray subdivides in the world)

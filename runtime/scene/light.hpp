@@ -50,8 +50,12 @@ struct LightRecord {
     // POV-Ray's fill light: no shadow, no highlights.
     bool shadowless = false;
     // media_attenuation: its light is dimmed (and coloured) by the fog on
-    // its way, as POV-Ray's ComputeShadowMedia does (media hexant lacks).
+    // its way, and by the atmosphere's media, as POV-Ray's
+    // ComputeShadowMedia does (with media_interaction on).
     bool media_attenuation = false;
+    // media_interaction: media scatter its light (off: it passes media by,
+    // neither scattered nor dimmed by the atmosphere).
+    bool media_interaction = true;
     // spotlight: a cone from `position` toward point_at; cylinder: a
     // parallel beam about the line through them. radius and falloff are
     // the cone's half angles (degrees) or the beam's radii (scene units),

@@ -10,6 +10,7 @@
 #include "runtime/scene/camera.hpp"
 #include "runtime/scene/fog.hpp"
 #include "runtime/scene/light.hpp"
+#include "runtime/scene/media.hpp"
 #include "runtime/scene/sky_sphere.hpp"
 #include "runtime/source_place.hpp"
 
@@ -56,6 +57,9 @@ struct SceneDescription {
     ColourFunction background{};          // black
     std::optional<SkySphere> sky_sphere;  // over the background
     std::vector<Fog> fogs;
+    // media { } written at the top: the atmosphere's, in the world
+    // (runtime/scene/media.hpp).
+    std::vector<Media> atmosphere;
     GlobalSettings global;
     // The texture of objects that have none of their own (#default).
     Texture default_texture;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "runtime/motion/transform.hpp"
+#include "runtime/scene/media.hpp"
 #include "runtime/source_place.hpp"
 #include "runtime/texture/pattern/image_map.hpp"
 #include "runtime/texture/pattern/pattern.hpp"
@@ -126,6 +127,15 @@ struct Interior {
     // brightened by 1 + |cos|^(45 C) at each layer (ComputeShadowTexture);
     // 0 is none.
     TimeFunction caustics = 0.0;
+    // media { } inside (runtime/scene/media.hpp), in the order written; in
+    // the object's space, moved with it as its texture is.
+    std::vector<Media> media;
+    void transform_by(const TransformStep& step) {
+        for (Media& m : media) m.transform_by(step);
+    }
+    void transform_by(const Transform& step) {
+        for (Media& m : media) m.transform_by(step);
+    }
     std::vector<Unrendered> unrendered;  // what it asks for that hexant lacks
 };
 

@@ -19,6 +19,8 @@
 
 namespace hexant::runtime {
 
+class MediaVolume;  // runtime/scene/media_volume.hpp
+
 // What a texture shows at one surface event: the plain textures its
 // patterns pick there (texture_map), each with its weight in the blend, and
 // each plain texture's layers, top first, with the material and the
@@ -85,6 +87,11 @@ class TextureEvaluator {
     double caustics_at(double t) const { return caustics_ ? caustics_->at(t) : 0.0; }
     // Whether no light passes it (Texture::opaque).
     bool opaque() const { return opaque_; }
+    // The interior's media (null without): one volume shared by every
+    // primitive of the object that wrote it, so that a ray knows it is
+    // still inside (runtime/objects/object_factory.cpp).
+    const MediaVolume* media() const { return media_.get(); }
+    void set_media(std::shared_ptr<const MediaVolume> media) { media_ = std::move(media); }
 
     // Whether the top layer perturbs the shading normal (normal { }).
     bool has_normal() const;
@@ -285,6 +292,7 @@ class TextureEvaluator {
     std::shared_ptr<const CompiledTexture> texture_;  // shared by copies
     bool depends_on_time_ = false;
     bool opaque_ = true;
+    std::shared_ptr<const MediaVolume> media_;
     struct CompiledFade {
         CompiledScalar distance, power;
         std::array<CompiledScalar, 3> colour;

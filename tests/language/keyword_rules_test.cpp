@@ -57,19 +57,6 @@ const std::map<std::string, Probe>& probes() {
                              "subsurface"};
         self("dispersion", "sphere { 0, 1 interior { ior 1.5 dispersion 1.1 } }");
         self("dispersion_samples", "sphere { 0, 1 interior { dispersion_samples 10 } }");
-        self("media", "sphere { 0, 1 hollow interior { media { emission 1 } } }");
-        for (const auto& [word, inside] : std::map<std::string, std::string>{
-                 {"absorption", "absorption 1"},
-                 {"scattering", "scattering { 1, 0.5 }"},
-                 {"method", "method 3"},
-                 {"intervals", "intervals 2"},
-                 {"ratio", "ratio 0.9"},
-                 {"eccentricity", "scattering { 5, 1 eccentricity 0.5 }"},
-                 {"extinction", "scattering { 1, 1 extinction 0.5 }"},
-                 {"aa_level", "aa_level 3"},
-                 {"aa_threshold", "aa_threshold 0.1"},
-                 {"samples", "samples 2, 2"}})
-            p[word] = {"sphere { 0, 1 hollow interior { media { " + inside + " } } }", "media"};
         self("adc_bailout", "global_settings { adc_bailout 0.01 }");
         self("number_of_waves", "global_settings { number_of_waves 5 }");
         self("mm_per_unit", "global_settings { mm_per_unit 10 }");
@@ -94,7 +81,6 @@ const std::map<std::string, Probe>& probes() {
                  {"no_radiosity", "sphere { 0, 1 no_radiosity }"},
                  {"jitter", "light_source { 0, 1 area_light x, y, 2, 2 jitter }"},
                  {"adaptive", "light_source { 0, 1 area_light x, y, 2, 2 adaptive 1 }"},
-                 {"media_interaction", "light_source { 0, 1 media_interaction off }"},
                  {"max_intersections", "global_settings { max_intersections 64 }"},
                  {"debug", "#debug \"a line\\n\""},
                  {"quick_color", "sphere { 0, 1 pigment { rgb 1 quick_color rgb 0.5 } }"},
@@ -182,7 +168,9 @@ TEST_CASE("a warned word warns at its line, and --strict refuses it", "[language
         CHECK(strict.error->places().front().line == 2);
         ++probed;
     }
-    CHECK(probed > 40);
+    // (The table still warns many words: 39 once media were rendered. A
+    // table emptied by mistake would probe none.)
+    CHECK(probed > 30);
 }
 
 TEST_CASE("a harmless word reads silently", "[language][keywords]") {
