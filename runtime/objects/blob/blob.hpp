@@ -22,8 +22,8 @@
 #include <string_view>
 #include <vector>
 
-#include "runtime/objects/blob/blob_geometry.hpp"
 #include "runtime/motion/transform.hpp"
+#include "runtime/objects/blob/blob_geometry.hpp"
 #include "runtime/objects/shape_kind.hpp"
 #include "runtime/texture/material.hpp"
 #include "runtime/time/vector_function.hpp"

@@ -313,8 +313,7 @@ bool surface_may_meet(const BlobGeometry& blob, const Box3& box) {
         // segment is convex).
         const glm::dvec3 slo = is_cylinder(c) ? glm::min(c.a, c.b) : c.a;
         const glm::dvec3 shi = is_cylinder(c) ? glm::max(c.a, c.b) : c.a;
-        const glm::dvec3 gap =
-            glm::max(glm::max(local.lo - shi, slo - local.hi), glm::dvec3(0.0));
+        const glm::dvec3 gap = glm::max(glm::max(local.lo - shi, slo - local.hi), glm::dvec3(0.0));
         const double q_min = glm::dot(gap, gap);
         double q_max = 0.0;
         for (const auto& corner : corners(local)) {
@@ -350,8 +349,7 @@ bool surface_may_meet(const BlobGeometry& blob, const Box3& box) {
         const Box3 local = local_box(comp, box);
         const glm::dvec3 slo = is_cylinder(comp) ? glm::min(comp.a, comp.b) : comp.a;
         const glm::dvec3 shi = is_cylinder(comp) ? glm::max(comp.a, comp.b) : comp.a;
-        const glm::dvec3 gap =
-            glm::max(glm::max(local.lo - shi, slo - local.hi), glm::dvec3(0.0));
+        const glm::dvec3 gap = glm::max(glm::max(local.lo - shi, slo - local.hi), glm::dvec3(0.0));
         if (!(glm::dot(gap, gap) < comp.radius * comp.radius)) continue;
         double stretch = 1.0;
         if (comp.transformed) {

@@ -7,9 +7,9 @@
 #include <utility>
 #include <vector>
 
+#include "runtime/motion/motion.hpp"
 #include "runtime/objects/blob/blob.hpp"
 #include "runtime/objects/blob/blob_geometry.hpp"
-#include "runtime/motion/motion.hpp"
 #include "runtime/objects/model_support.hpp"
 
 namespace hexant::runtime::objects {
@@ -42,7 +42,7 @@ class BlobModel {
         g.threshold = threshold_.at(t);
         g.components.reserve(parts_.size());
         for (const auto& p : parts_)
-            // POV-Ray squares the radius: a negative one is its magnitude.
+        // POV-Ray squares the radius: a negative one is its magnitude.
         {
             geometry::BlobComponent c{p.kind, p.a.at(t), p.b.at(t), std::fabs(p.radius.at(t)),
                                       p.strength.at(t)};
