@@ -41,9 +41,8 @@ class BlobModel {
         Geometry g;
         g.threshold = threshold_.at(t);
         g.components.reserve(parts_.size());
-        for (const auto& p : parts_)
-        // POV-Ray squares the radius: a negative one is its magnitude.
-        {
+        for (const auto& p : parts_) {
+            // POV-Ray squares the radius: a negative one is its magnitude.
             geometry::BlobComponent c{p.kind, p.a.at(t), p.b.at(t), std::fabs(p.radius.at(t)),
                                       p.strength.at(t)};
             if (p.motion) {
