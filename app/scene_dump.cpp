@@ -213,6 +213,11 @@ struct ShapeWriter {
             out += (i ? ";" : "") + item.out.substr(2);  // without " ="
         }
     }
+    // (A blob component's own transforms: its matrix, "[m00, .., m32]".)
+    void operator()(const char* name, const char*, const runtime::Transform& x) {
+        const std::string s = transform(x, t);
+        out += std::string(" ") + name + "=" + s.substr(s.find('=') + 1);
+    }
     void operator()(const char* name, const char*, bool on) {
         out += std::string(" ") + name + "=" + (on ? "1" : "0");
     }

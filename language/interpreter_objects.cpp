@@ -409,4 +409,15 @@ void add_blob_component(runtime::ObjectRecord& record, const std::string& kind,
     blob->add_component(kind, args);
 }
 
+void set_blob_component_modifiers(runtime::ObjectRecord& record, runtime::ObjectRecord own,
+                                  const p::position&) {
+    auto* blob = std::get_if<runtime::Blob>(&record.shape);
+    if (!blob) throw ValueError("a blob component belongs in a blob");
+    if (own.transform.has_deformation())
+        throw ValueError(
+            "a blob component cannot be twisted, tapered or bent (POV-Ray's components take "
+            "translate, rotate, scale and matrix); deform the whole blob instead");
+    blob->set_component_modifiers(std::move(own.transform), std::move(own.texture));
+}
+
 }  // namespace hexant::language

@@ -290,7 +290,7 @@ glm::dvec3 Shader::transmittance(const runtime::SurfacePoint& p, const glm::dvec
             passed *= 1.0 + std::pow(std::fabs(glm::dot(layer.normal, d)), caustics);
         return passed;
     };
-    if (p.texture->single_layer()) {
+    if (!p.blended && p.texture->single_layer()) {
         runtime::TextureSample::Layer layer;
         p.texture->sample_layer(point, p.uv, t, facing, layer);
         return filter(layer);
@@ -299,7 +299,10 @@ glm::dvec3 Shader::transmittance(const runtime::SurfacePoint& p, const glm::dvec
     // is free until this returns.)
     runtime::TextureSample& sample = state.shading_at(depth + 1).texture;
     sample.clear();
-    p.texture->sample(point, p.uv, t, facing, sample);
+    if (p.blended)
+        for (const auto& b : p.blend) b.texture->sample(point, p.uv, t, facing, sample, b.weight);
+    else
+        p.texture->sample(point, p.uv, t, facing, sample);
     glm::dvec3 sum(0.0);
     for (const runtime::TextureSample::Plain& plain : sample.plains) {
         glm::dvec3 product(1.0);
@@ -359,14 +362,20 @@ glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, std::uint
     // layer, the usual, is lit straight from the stack: each light is
     // asked about once anyway.
     glm::dvec3 colour(0.0);
-    if (p.texture->single_layer()) {
+    if (!p.blended && p.texture->single_layer()) {
         runtime::TextureSample::Layer layer;
         p.texture->sample_layer(h.point, p.uv, h.time, h.raw, layer);
         colour = lit(h, &layer, 1, nullptr, state);
     } else {
         ShadingScratch& scratch = state.shading_at(depth);
         scratch.texture.clear();
-        p.texture->sample(h.point, p.uv, h.time, h.raw, scratch.texture);
+        // A blob's blend: each texture's plains at its share (POV-Ray lights
+        // each weighted texture on its own and sums them).
+        if (p.blended)
+            for (const auto& b : p.blend)
+                b.texture->sample(h.point, p.uv, h.time, h.raw, scratch.texture, b.weight);
+        else
+            p.texture->sample(h.point, p.uv, h.time, h.raw, scratch.texture);
         scratch.lights.assign(lights_.size(), ShadingScratch::Light{});
         for (const runtime::TextureSample::Plain& plain : scratch.texture.plains)
             colour += plain.weight * lit(h, scratch.texture.layers.data() + plain.first,

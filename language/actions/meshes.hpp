@@ -115,20 +115,19 @@ struct action<g::blob_open> {
         st.blocks.open(std::move(record));
     }
 };
+// A component's own modifiers go to a block of its own, an object record
+// the objects' transform and texture rules edit as they edit any object's
+// (its texture moves with the transforms written after it, as POV-Ray's
+// Transform_Blob_Element moves it); the component takes them at its `}`.
 template <>
 struct action<g::blob_component_kind> {
     template <typename ActionInput>
     static void apply(const ActionInput& in, Interpreter& st) {
         st.values.push_name(word(in));
-    }
-};
-template <>
-struct action<g::blob_component_modifier> {
-    template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        (void)st;
-        throw ValueError("hexant does not read a blob component's own '" + word(in) +
-                         "' yet (POV-Ray does); give it to the whole blob");
+        runtime::ObjectRecord component;
+        component.shape = runtime::Blob{};
+        component.place = source_place(in);
+        st.blocks.open(std::move(component));
     }
 };
 template <>
@@ -137,8 +136,12 @@ struct action<g::blob_component> {
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         std::vector<Value> values = st.values.close_frame();
         const std::string kind = st.values.pop_name();
+        runtime::ObjectRecord own = std::move(
+            st.blocks.edit<runtime::ObjectRecord>(in.position(), "a blob component's modifiers"));
+        st.blocks.close();
         auto& record = st.blocks.edit<runtime::ObjectRecord>(in.position(), "a blob component");
         add_blob_component(record, kind, values, st, in.position());
+        set_blob_component_modifiers(record, std::move(own), in.position());
     }
 };
 template <>

@@ -19,6 +19,10 @@ runtime::ObjectRecord make_shape(const Interpreter::ShapeOpening& shape, std::ve
                                  Interpreter& st, const p::position& where);
 void set_shape_setting(runtime::ObjectRecord& record, const std::string& name,
                        std::vector<Value>& values, Interpreter& st, const p::position& where);
+// The last blob component's own transforms and texture, from the record its
+// modifiers were read into; refuses a deformation there (POV-Ray has none).
+void set_blob_component_modifiers(runtime::ObjectRecord& record, runtime::ObjectRecord own,
+                                  const p::position& where);
 void add_blob_component(runtime::ObjectRecord& record, const std::string& kind,
                         std::vector<Value>& values, Interpreter& st, const p::position& where);
 

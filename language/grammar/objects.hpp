@@ -176,13 +176,15 @@ struct mesh2_block : p::seq<mesh2_open, p::star<mesh2_item>, p::must<object_clos
 struct blob_open : p::seq<TAO_PEGTL_KEYWORD("blob"), ws, p::must<lbrace>> {};
 struct blob_component_kind : p::sor<TAO_PEGTL_KEYWORD("sphere"), TAO_PEGTL_KEYWORD("cylinder")> {};
 struct blob_strength_word : p::seq<TAO_PEGTL_KEYWORD("strength"), ws> {};
-// A component's own modifiers, which POV-Ray reads and hexant refuses.
+// A component's own modifiers (POV-Ray's Parse_Blob_Element_Mods): its
+// transforms and texture, read into a block of its own (the actions'
+// blob_component_kind) by the objects' own rules.
+struct object_texture;
+struct object_pigment;
+struct object_finish;
+struct object_normal;
 struct blob_component_modifier
-    : p::sor<
-          TAO_PEGTL_KEYWORD("texture"), TAO_PEGTL_KEYWORD("pigment"), TAO_PEGTL_KEYWORD("normal"),
-          TAO_PEGTL_KEYWORD("finish"), TAO_PEGTL_KEYWORD("translate"), TAO_PEGTL_KEYWORD("rotate"),
-          TAO_PEGTL_KEYWORD("scale"), TAO_PEGTL_KEYWORD("matrix"), TAO_PEGTL_KEYWORD("transform")> {
-};
+    : p::sor<transformation, object_texture, object_pigment, object_finish, object_normal> {};
 struct blob_component_item;
 struct blob_component_item : p::sor<directive<blob_component_item>, comma, blob_strength_word,
                                     blob_component_modifier, shape_argument> {};

@@ -59,6 +59,17 @@ struct SurfacePoint {
     // The texture: the shader asks it for the material and the perturbed
     // normals at `event` after turning the normal to face the ray.
     const TextureEvaluator* texture = nullptr;
+    // Where a kind blends textures by weight at the point (a blob whose
+    // components have textures: POV-Ray's Determine_Textures), those
+    // textures and weights, which the shader then lights in place of
+    // `texture` alone (which still gives the interior's fade and
+    // caustics). Empty otherwise; all weights 0 is black, as in POV-Ray.
+    struct Blended {
+        const TextureEvaluator* texture;
+        double weight;
+    };
+    std::vector<Blended> blend;
+    bool blended = false;
     glm::dvec3 error{0.0};  // world bound of event's error (geometry::world_error): what a
                             // secondary ray must clear
 };

@@ -34,6 +34,9 @@ bool varies(const Vector3Function& v) {
 bool varies(const Vector2Function& v) {
     return v.depends_on_time();
 }
+bool varies(const Transform& t) {
+    return t.depends_on_time();
+}
 template <typename T>
 bool varies(const std::vector<T>& items) {
     for (const auto& item : items)

@@ -152,6 +152,9 @@ struct ShapeParameters {
     void operator()(const char*, const char* phrase, const Vector2Function& x) {
         if (!first) first = check(x.c, whose + " " + phrase, span);
     }
+    void operator()(const char*, const char* phrase, const Transform& x) {
+        if (!first) first = check(x, whose + " " + phrase, span);
+    }
     template <typename T>
     void operator()(const char* name, const char* phrase, const std::vector<T>& items) {
         for (const auto& item : items) (*this)(name, phrase, item);

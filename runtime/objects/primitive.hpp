@@ -67,6 +67,9 @@ class Primitive final : public IntelligentObject {
     };
     // A model whose parts may have textures of their own (a mesh's faces).
     static constexpr bool kHasPartTextures = requires(const Model& m) { m.texture_of(0); };
+    // A model that blends its textures by weight at a point (a blob's
+    // components).
+    static constexpr bool kBlendsTextures = requires(const Model& m) { m.blends_textures(); };
 
     // `part_textures`: the textures a model's parts name (Model::texture_of),
     // already in world terms.
@@ -240,6 +243,22 @@ class Primitive final : public IntelligentObject {
             const int k = model_.texture_of(hit.part);
             if (k >= 0 && static_cast<std::size_t>(k) < part_textures_.size())
                 p.texture = &part_textures_[k];
+        }
+        if constexpr (kBlendsTextures) {
+            if (model_.blends_textures()) {
+                std::vector<std::pair<int, double>> weights;
+                if (static_geometry_)
+                    model_.texture_weights(*static_geometry_, hit.object_point, weights);
+                else
+                    model_.texture_weights(model_.at(t), hit.object_point, weights);
+                p.blended = true;
+                p.blend.reserve(weights.size());
+                for (const auto& [k, w] : weights)
+                    p.blend.push_back({k >= 0 && static_cast<std::size_t>(k) < part_textures_.size()
+                                           ? &part_textures_[k]
+                                           : &texture_,
+                                       w});
+            }
         }
         return p;
     }

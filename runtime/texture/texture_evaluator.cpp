@@ -709,9 +709,9 @@ pattern::Hit surface_hit(const glm::dvec3& world_point, const glm::dvec3& normal
 }  // namespace
 
 void TextureEvaluator::sample(const glm::dvec3& world_point, const glm::dvec2& uv, double t,
-                              const glm::dvec3& normal, TextureSample& out) const {
+                              const glm::dvec3& normal, TextureSample& out, double weight) const {
     pattern::Hit hit = surface_hit(world_point, normal, uv, t);
-    texture_->sample(world_point, hit, normal, 1.0, out);
+    texture_->sample(world_point, hit, normal, weight, out);
 }
 
 void TextureEvaluator::sample_layer(const glm::dvec3& world_point, const glm::dvec2& uv, double t,

@@ -56,11 +56,12 @@ class TextureEvaluator {
     // The texture at `world_point` and time t, seen with the shading
     // normal `normal` (unit, world, already turned to face the viewer, as
     // POV-Ray perturbs it): appends each plain texture picked there, its
-    // layers and their perturbed normals, to `out`. The weights sum to 1.
+    // layers and their perturbed normals, to `out`. The weights sum to
+    // `weight` (a blob's blend gives each texture its share).
     // `uv`: the surface's (u, v) there (SurfacePoint::uv), which a
     // uv-mapped pigment, normal or texture reads as the point (u, v, 0).
     void sample(const glm::dvec3& world_point, const glm::dvec2& uv, double t,
-                const glm::dvec3& normal, TextureSample& out) const;
+                const glm::dvec3& normal, TextureSample& out, double weight = 1.0) const;
 
     // Whether the texture is one plain layer (no texture_map, no layers
     // under it): then sample_layer gives its one layer, as sample would.

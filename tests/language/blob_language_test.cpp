@@ -73,9 +73,35 @@ TEST_CASE("a blob's components and threshold may move with clock", "[language][b
 TEST_CASE("a blob's refusals name what is wrong", "[language][blob]") {
     CHECK(says("blob { sphere { 0, 1 } }", "a centre, a radius and a strength"));
     CHECK(says("blob { cylinder { 0, y, 1 } }", "two ends, a radius and a strength"));
-    CHECK(says("blob { sphere { 0, 1, 1 pigment { rgb 1 } } }", "blob component's own 'pigment'"));
-    CHECK(says("blob { sphere { 0, 1, 1 scale 2 } }", "blob component's own 'scale'"));
+    // A component takes POV-Ray's transforms only, not hexant's deformations.
+    CHECK(says("blob { sphere { 0, 1, 1 twist y, 1 } }", "found 'twist'"));
     CHECK(says("sphere { 0, 1 threshold 2 }",
                "'threshold' belongs to a blob or isosurface, not a sphere"));
     CHECK(says("blob { sphere { \"a\", 1, 1 } }", "blob sphere's centre"));
+}
+
+TEST_CASE("a blob component reads its own transforms and texture", "[language][blob]") {
+    hexant::language::ParseOptions options;
+    options.animation.initial_frame = 1;
+    options.animation.final_frame = 2;
+    const auto scene = hexant::language::parse_scene_text(
+        "blob { sphere { 0, 1, 1 pigment { rgb <1, 0, 0> } scale <2, 1, 1> translate x } "
+        "cylinder { 0, y, 0.5, 1 rotate z * 90 * clock } sphere { 0, 1, 1 } "
+        "pigment { rgb 1 } translate 3 * y }",
+        "t.pov", options);
+    const auto& b = std::get<rt::Blob>(scene.objects[0]->shape);
+    REQUIRE(b.transforms.size() == 3);
+    // Component space to blob space: scale, then translate (the blob's own
+    // translate stays the blob's).
+    const glm::dmat4 m = b.transforms[0].matrix_at(0.0);
+    CHECK(glm::dvec3(m * glm::dvec4(1, 1, 1, 1)) == glm::dvec3(3, 1, 1));
+    CHECK(b.transforms[1].depends_on_time());
+    CHECK(b.transforms[2].empty());
+    // The first has a texture of its own, moved with the transforms after
+    // it; the others lend the blob's.
+    REQUIRE(b.textures.size() == 1);
+    CHECK(b.texture_index == std::vector<int>{0, -1, -1});
+    CHECK_FALSE(b.textures[0].transform.empty());
+    const auto moving = scene.objects[0]->timed_parameters();
+    CHECK(std::find(moving.begin(), moving.end(), "transforms") != moving.end());
 }

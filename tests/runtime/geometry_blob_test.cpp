@@ -5,6 +5,7 @@
 #include <limits>
 #include <optional>
 #include <random>
+#include <vector>
 
 #include <catch2/catch.hpp>
 
@@ -59,6 +60,18 @@ BlobGeometry random_blob(std::mt19937_64& rng) {
             b.components.push_back(cylinder(c, c + glm::dvec3(u(rng), u(rng), u(rng)), r, s));
         else
             b.components.push_back(sphere(c, r, s));
+        // Every third carries its own transform: a stretch, a shear and a
+        // shift (POV-Ray's Element->Trans).
+        if (i % 3 == 2) {
+            glm::dmat4 m(1.0);
+            for (int col = 0; col < 3; ++col)
+                for (int row = 0; row < 3; ++row)
+                    m[col][row] = (col == row ? 1.0 + 0.6 * u(rng) : 0.4 * u(rng));
+            m[3] = glm::dvec4(0.5 * u(rng), 0.5 * u(rng), 0.5 * u(rng), 1.0);
+            b.components.back().transformed = true;
+            b.components.back().to_blob = m;
+            b.components.back().to_component = glm::inverse(m);
+        }
     }
     return b;
 }
@@ -142,6 +155,51 @@ TEST_CASE("blob: one sphere is a sphere", "[geometry][blob]") {
     // Threshold above the strength: nothing.
     REQUIRE_FALSE(geo::intersect(BlobGeometry{3.0, {sphere({0, 0, 0}, 1.0, 2.0)}},
                                  Ray3{{0, 0, -5}, {0, 0, 1}}, 0.0, kInf));
+}
+
+TEST_CASE("blob: a scaled, turned, moved sphere is its ellipsoid", "[geometry][blob]") {
+    // One sphere of radius R, strength s, threshold T: a ball of radius
+    // r0 = R sqrt(1 - sqrt(T / s)); scaled by <a, b, c>, turned 90 degrees
+    // about z (x to y) and moved by m, the ellipsoid with semi-axes a r0
+    // along y, b r0 along -x, c r0 along z, about m.
+    const double radius = 1.5, s = 2.0, threshold = 0.5, a = 2.0, b = 0.5, c = 0.8;
+    const double r0 = radius * std::sqrt(1.0 - std::sqrt(threshold / s));
+    const glm::dvec3 m(0.3, -0.2, 1.0);
+    BlobComponent e = sphere({0, 0, 0}, radius, s);
+    e.transformed = true;
+    // scale, then rotate z 90 (x -> y, y -> -x), then translate.
+    e.to_blob = glm::dmat4(glm::dvec4(0, a, 0, 0), glm::dvec4(-b, 0, 0, 0), glm::dvec4(0, 0, c, 0),
+                           glm::dvec4(m, 1.0));
+    e.to_component = glm::inverse(e.to_blob);
+    const BlobGeometry g{threshold, {e}};
+    // Along y from below: the tip at m - a r0 y, normal -y.
+    auto h = geo::intersect(g, Ray3{m - glm::dvec3(0, 10, 0), glm::dvec3(0, 1, 0)}, 0.0, kInf);
+    REQUIRE(h);
+    CHECK(h->point.y == Approx(m.y - a * r0).epsilon(1e-12));
+    CHECK(glm::length(h->normal - glm::dvec3(0, -1, 0)) < 1e-9);
+    // Along x from the right: at m + b r0 x.
+    h = geo::intersect(g, Ray3{m + glm::dvec3(10, 0, 0), glm::dvec3(-2, 0, 0)}, 0.0, kInf);
+    REQUIRE(h);
+    CHECK(h->point.x == Approx(m.x + b * r0).epsilon(1e-12));
+    CHECK(glm::length(h->normal - glm::dvec3(1, 0, 0)) < 1e-9);
+    // A slanted ray meets it where the ellipsoid's equation says.
+    const glm::dvec3 o = m + glm::dvec3(3, 2, -4), d = glm::normalize(m - o);
+    h = geo::intersect(g, Ray3{o, d}, 0.0, kInf);
+    REQUIRE(h);
+    const glm::dvec3 q = h->point - m;
+    CHECK(q.y * q.y / (a * a * r0 * r0) + q.x * q.x / (b * b * r0 * r0) +
+              q.z * q.z / (c * c * r0 * r0) ==
+          Approx(1.0).epsilon(1e-10));
+    // Its bounds: the ellipsoid's reach's box, R (not r0) out.
+    const Box3 box = geo::object_bounds(g);
+    CHECK(box.lo.y <= m.y - a * radius);
+    CHECK(box.hi.x >= m.x + b * radius);
+    CHECK(box.hi.y == Approx(m.y + a * radius).epsilon(1e-12));
+    // The components' densities: |field| each.
+    std::vector<double> densities;
+    geo::blob_component_densities(g, m, densities);
+    REQUIRE(densities.size() == 1);
+    CHECK(densities[0] == Approx(s));
 }
 
 TEST_CASE("blob: a cylinder is a capsule", "[geometry][blob]") {

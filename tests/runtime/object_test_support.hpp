@@ -315,15 +315,25 @@ inline glm::dvec3 sample_object_surface(const rt::Shape& shape, double t, Random
         // on the surface.
         rt::geometry::BlobGeometry g;
         g.threshold = blob->threshold(t);
-        for (std::size_t i = 0; i < blob->kinds.size(); ++i)
-            g.components.push_back({blob->kinds[i], blob->a[i](t), blob->b[i](t), blob->radii[i](t),
-                                    blob->strengths[i](t)});
+        for (std::size_t i = 0; i < blob->kinds.size(); ++i) {
+            rt::geometry::BlobComponent c{blob->kinds[i], blob->a[i](t), blob->b[i](t),
+                                          blob->radii[i](t), blob->strengths[i](t)};
+            // A component's own transforms, by the record's reference
+            // matrix (not the compiled motion under test).
+            if (!blob->transforms[i].empty()) {
+                c.transformed = true;
+                c.to_blob = blob->transforms[i].matrix_at(t);
+                c.to_component = glm::inverse(c.to_blob);
+            }
+            g.components.push_back(c);
+        }
         const auto box = rt::geometry::object_bounds(g);
         const double span = glm::length(box.hi - box.lo);
         for (int tries = 0; tries < 100000; ++tries) {
             const auto& c = g.components[static_cast<std::size_t>(
                 random.integer(0, int(g.components.size()) - 1))];
             glm::dvec3 in = c.a + random.uniform() * (c.b - c.a);
+            if (c.transformed) in = glm::dvec3(c.to_blob * glm::dvec4(in, 1.0));
             if (!(rt::geometry::blob_field(g, in) > g.threshold)) continue;
             glm::dvec3 out = in + 2.0 * span * random.unit_vector();
             for (int k = 0; k < 200; ++k) {
@@ -597,14 +607,20 @@ inline const std::vector<KindScene>& kind_scenes() {
          "triangle { <-0.5, -0.4, -0.4>, <0.6, -0.5, -0.3>, <0.2, -0.45, -0.35> } inside_vector "
          "<0.1, 1, 0.2> "
          "translate <0.5 * clock, 0, -0.3 * clock>"},
-        // Two spheres and a cylinder merged; moving: one sphere moves
-        // through the others, a strength and the threshold change.
+        // Two spheres and a cylinder merged, and components with transforms
+        // of their own (a stretched, turned sphere; a sheared cylinder);
+        // moving: one sphere moves through the others, a strength and the
+        // threshold change, a stretched sphere turns a whole turn and slides.
         {"blob",
          "threshold 0.6 sphere { <-0.4, 0, 0>, 0.8, 1 } sphere { <0.4, 0.1, 0>, 0.8, 1 } "
-         "cylinder { <0, -0.5, 0>, <0, 0.5, 0.2>, 0.4, 1 }",
+         "cylinder { <0, -0.5, 0>, <0, 0.5, 0.2>, 0.4, 1 } "
+         "sphere { 0, 0.5, 1 scale <1.4, 0.6, 0.8> rotate z * 30 translate <0.2, 0.5, 0.1> } "
+         "cylinder { <-0.3, 0, 0>, <0.3, 0, 0>, 0.3, 1 matrix <1, 0.5, 0, 0, 2, 0, 0, 0, 1, 0, "
+         "-0.4, 0> }",
          "threshold 0.5 + 0.2 * clock sphere { <-0.9 + 0.8 * clock, 0, 0>, 0.8, 1 } "
          "sphere { <0.4, 0.1, 0>, 0.8, 1 - 0.5 * clock } cylinder { <0, -0.5, 0>, <0, 0.5, 0.2>, "
-         "0.4, 1 }"},
+         "0.4, 1 } sphere { 0, 0.5, 1 scale <1.4, 0.6, 0.8> rotate z * 360 * clock "
+         "translate <0.3 * clock, 0.5, 0.1> }"},
         // A b_spline sweep of five spheres; its middle one moves and swells.
         {"sphere_sweep",
          "b_spline 5, <-0.8, 0, 0>, 0.2, <-0.4, 0.4, 0>, 0.3, <0, 0, 0.2>, 0.35, <0.4, 0.3, 0>, "

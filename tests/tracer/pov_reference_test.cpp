@@ -327,6 +327,16 @@ TEST_CASE("blob agrees with POV-Ray 3.7's render of it, at two clocks", "[tracer
     check_stills("shapes", "blob", {"0", "0.5"});
 }
 
+TEST_CASE("blob components with their own transforms and textures agree with POV-Ray 3.7",
+          "[tracer][pov][blob]") {
+    // shapes/blob_components.pov: stretched and turned spheres (POV-Ray's
+    // ellipsoid pieces), a scaled cylinder turning with clock, a matrix, and
+    // component textures blended by density (a checker moved with its
+    // component, a negative component's own pigment). The still's
+    // tolerance.
+    check_stills("shapes", "blob_components", {"0", "0.5"});
+}
+
 TEST_CASE("sphere_sweep agrees with POV-Ray 3.7's render of it, at two clocks",
           "[tracer][pov][sphere_sweep]") {
     // shapes/sphere_sweep.pov: a linear_spline sweep, a b_spline one whose

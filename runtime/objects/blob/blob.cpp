@@ -16,6 +16,8 @@ void Blob::add_component(std::string_view kind, const objects::ShapeArguments& a
         b.push_back(args.vector3(1, "a blob cylinder's apex"));
         radii.push_back(args.number(2, "a blob cylinder's radius"));
         strengths.push_back(args.number(3, "a blob cylinder's strength"));
+        transforms.emplace_back();
+        texture_index.push_back(-1);
         return;
     }
     kinds.push_back(Kind::sphere);
@@ -31,6 +33,17 @@ void Blob::add_component(std::string_view kind, const objects::ShapeArguments& a
         strengths.push_back(args.number(2, "a blob sphere's strength"));
     }
     b.push_back(a.back());
+    transforms.emplace_back();
+    texture_index.push_back(-1);
+}
+
+void Blob::set_component_modifiers(Transform transform, std::optional<Texture> texture) {
+    if (kinds.empty()) return;
+    transforms.back() = std::move(transform);
+    if (texture) {
+        texture_index.back() = static_cast<int>(textures.size());
+        textures.push_back(std::move(*texture));
+    }
 }
 
 void Blob::set(std::string_view setting, const objects::ShapeArguments& value) {

@@ -7,6 +7,7 @@
 
 #include "runtime/geometry/box_queries.hpp"
 #include "runtime/geometry/polynomial_roots.hpp"
+#include "runtime/time/interval.hpp"
 
 namespace hexant::runtime::geometry {
 
@@ -19,10 +20,25 @@ constexpr double kInsideTolerance = 1.0e-6;
 // cylindrical component in blob", length < EPSILON).
 constexpr double kDegenerateLength = 1.0e-10;
 
+bool finite_matrix(const glm::dmat4& m) {
+    for (int i = 0; i < 4; ++i)
+        if (!is_finite(glm::dvec3(m[i])) || !std::isfinite(m[i].w)) return false;
+    return true;
+}
+
 bool usable(const BlobComponent& c) {
     return c.radius > 0.0 && std::isfinite(c.radius) && c.strength != 0.0 &&
            std::isfinite(c.strength) && is_finite(c.a) &&
-           (c.kind == BlobComponent::Kind::sphere || is_finite(c.b));
+           (c.kind == BlobComponent::Kind::sphere || is_finite(c.b)) &&
+           (!c.transformed || (finite_matrix(c.to_blob) && finite_matrix(c.to_component)));
+}
+
+// A point and a direction of blob space in the component's own space.
+glm::dvec3 local_point(const BlobComponent& c, const glm::dvec3& p) {
+    return c.transformed ? glm::dvec3(c.to_component * glm::dvec4(p, 1.0)) : p;
+}
+glm::dvec3 local_direction(const BlobComponent& c, const glm::dvec3& d) {
+    return c.transformed ? glm::dmat3(c.to_component) * d : d;
 }
 
 bool is_cylinder(const BlobComponent& c) {
@@ -47,15 +63,17 @@ double falloff(const BlobComponent& c, double q) {
 
 // One piece of a component along the ray: where its influence holds, and
 // how its squared distance is measured (from `centre`, or, for a cylinder's
-// body, radially from the axis through `centre` along unit `axis`).
+// body, radially from the axis through `centre` along unit `axis`), all in
+// the component's space, where the ray is o + t d.
 struct Piece {
     const BlobComponent* component;
     glm::dvec3 centre;
     glm::dvec3 axis;  // zero for a ball
     double lo, hi;    // the influence interval in unit-direction parameter
+    glm::dvec3 o, d;  // the ray in the component's space
 };
 
-// Where |w + t d|^2 <= r2 for unit or smaller d (d may be zero).
+// Where |w + t d|^2 <= r2 (d may be zero).
 bool quadratic_interval(const glm::dvec3& w, const glm::dvec3& d, double r2, double& lo,
                         double& hi) {
     const double dd = glm::dot(d, d);
@@ -100,7 +118,7 @@ void add_pieces(const BlobComponent& c, const glm::dvec3& o, const glm::dvec3& d
     const auto push = [&](const glm::dvec3& centre, const glm::dvec3& axis, double lo, double hi) {
         lo = std::max(lo, t_min);
         hi = std::min(hi, t_max);
-        if (lo < hi) out.push_back({&c, centre, axis, lo, hi});
+        if (lo < hi) out.push_back({&c, centre, axis, lo, hi, o, d});
     };
     double lo = 0.0, hi = 0.0;
     if (!is_cylinder(c)) {
@@ -151,20 +169,39 @@ double blob_field(const BlobGeometry& blob, const glm::dvec3& p) {
     double sum = 0.0;
     for (const auto& c : blob.components) {
         if (!usable(c)) continue;
-        const glm::dvec3 v = p - nearest(c, p);
+        const glm::dvec3 q = local_point(c, p);
+        const glm::dvec3 v = q - nearest(c, q);
         sum += falloff(c, glm::dot(v, v));
     }
     return sum;
+}
+
+void blob_component_densities(const BlobGeometry& blob, const glm::dvec3& p,
+                              std::vector<double>& out) {
+    out.clear();
+    for (const auto& c : blob.components) {
+        double density = 0.0;
+        if (usable(c)) {
+            const glm::dvec3 q = local_point(c, p);
+            const glm::dvec3 v = q - nearest(c, q);
+            density = std::fabs(falloff(c, glm::dot(v, v)));
+        }
+        out.push_back(density);
+    }
 }
 
 glm::dvec3 blob_field_descent(const BlobGeometry& blob, const glm::dvec3& p) {
     glm::dvec3 sum(0.0);
     for (const auto& c : blob.components) {
         if (!usable(c)) continue;
-        const glm::dvec3 v = p - nearest(c, p);
+        const glm::dvec3 v = local_point(c, p) - nearest(c, local_point(c, p));
         const double q = glm::dot(v, v), r2 = c.radius * c.radius;
-        // POV-Ray's element_normal: -2 c0 d^2 - c1 = 2 s / R^2 (1 - d^2 / R^2).
-        if (q <= r2) sum += (2.0 * c.strength / r2 * (1.0 - q / r2)) * v;
+        if (!(q <= r2)) continue;
+        // POV-Ray's element_normal: -2 c0 d^2 - c1 = 2 s / R^2 (1 - d^2 / R^2);
+        // a transformed one's gradient goes out by to_component's transpose
+        // (its MTransNormal).
+        const glm::dvec3 local = (2.0 * c.strength / r2 * (1.0 - q / r2)) * v;
+        sum += c.transformed ? glm::transpose(glm::dmat3(c.to_component)) * local : local;
     }
     return sum;
 }
@@ -180,7 +217,8 @@ std::optional<SurfaceHit> intersect(const BlobGeometry& blob, const Ray3& ray, d
     const double t_min = s_min * length, t_max = s_max * length;
     std::vector<Piece> pieces;
     for (const auto& c : blob.components)
-        if (usable(c)) add_pieces(c, ray.origin, d, t_min, t_max, pieces);
+        if (usable(c))
+            add_pieces(c, local_point(c, ray.origin), local_direction(c, d), t_min, t_max, pieces);
     if (pieces.empty()) return std::nullopt;
     std::vector<double> events;
     events.reserve(2 * pieces.size());
@@ -194,11 +232,10 @@ std::optional<SurfaceHit> intersect(const BlobGeometry& blob, const Ray3& ray, d
         const double lo = events[i], hi = events[i + 1];
         const double mid = 0.5 * lo + 0.5 * hi;
         std::array<double, 5> quartic{};
-        const glm::dvec3 p0 = ray.origin + lo * d;
         bool any = false;
         for (const auto& p : pieces)
             if (p.lo <= mid && mid <= p.hi) {
-                add_quartic(p, p0, d, quartic);
+                add_quartic(p, p.o + lo * p.d, p.d, quartic);
                 any = true;
             }
         if (!any) continue;
@@ -227,14 +264,41 @@ bool inside(const BlobGeometry& blob, glm::dvec3 p) {
     return blob_field(blob, p) > blob.threshold - kInsideTolerance;
 }
 
+namespace {
+
+// The box around the image of `box` under the affine map m, by outward
+// rounded interval arithmetic (each coordinate appears once per row, so
+// the enclosure is the exact box, rounded out).
+Box3 mapped_box(const glm::dmat4& m, const Box3& box) {
+    const Interval x(box.lo.x, box.hi.x), y(box.lo.y, box.hi.y), z(box.lo.z, box.hi.z);
+    Box3 out;
+    for (int i = 0; i < 3; ++i) {
+        const Interval v = Interval(m[0][i]) * x + Interval(m[1][i]) * y + Interval(m[2][i]) * z +
+                           Interval(m[3][i]);
+        out.lo[i] = v.lo;
+        out.hi[i] = v.hi;
+    }
+    return out;
+}
+
+// The box of blob space `box` in the component's space (a box around the
+// parallelepiped it becomes there).
+Box3 local_box(const BlobComponent& c, const Box3& box) {
+    return c.transformed ? mapped_box(c.to_component, box) : box;
+}
+
+}  // namespace
+
 Box3 object_bounds(const BlobGeometry& blob) {
     Box3 box = Box3::nowhere();
     for (const auto& c : blob.components) {
         if (!usable(c)) continue;
         const glm::dvec3 lo = is_cylinder(c) ? glm::min(c.a, c.b) : c.a;
         const glm::dvec3 hi = is_cylinder(c) ? glm::max(c.a, c.b) : c.a;
-        box.lo = glm::min(box.lo, lo - c.radius);
-        box.hi = glm::max(box.hi, hi + c.radius);
+        Box3 reach{lo - c.radius, hi + c.radius};
+        if (c.transformed) reach = mapped_box(c.to_blob, reach);
+        box.lo = glm::min(box.lo, reach.lo);
+        box.hi = glm::max(box.hi, reach.hi);
     }
     return box;
 }
@@ -243,15 +307,16 @@ bool surface_may_meet(const BlobGeometry& blob, const Box3& box) {
     double lo = 0.0, hi = 0.0, magnitude = std::fabs(blob.threshold);
     for (const auto& c : blob.components) {
         if (!usable(c)) continue;
+        const Box3 local = local_box(c, box);
         // Least distance: from the box to the centre, or (a lower bound) to
         // the segment's box; greatest: at a corner (distance to a point or
         // segment is convex).
         const glm::dvec3 slo = is_cylinder(c) ? glm::min(c.a, c.b) : c.a;
         const glm::dvec3 shi = is_cylinder(c) ? glm::max(c.a, c.b) : c.a;
-        const glm::dvec3 gap = glm::max(glm::max(box.lo - shi, slo - box.hi), glm::dvec3(0.0));
+        const glm::dvec3 gap = glm::max(glm::max(local.lo - shi, slo - local.hi), glm::dvec3(0.0));
         const double q_min = glm::dot(gap, gap);
         double q_max = 0.0;
-        for (const auto& corner : corners(box)) {
+        for (const auto& corner : corners(local)) {
             const glm::dvec3 v = corner - nearest(c, corner);
             q_max = std::max(q_max, glm::dot(v, v));
         }
@@ -273,17 +338,27 @@ bool surface_may_meet(const BlobGeometry& blob, const Box3& box) {
     // 2-Lipschitz); phi is C^1 at q = R^2, and the Hessian of phi(q),
     // phi'(q) grad^2 q + phi''(q) grad q grad q^T, is at most
     // 4 / R^2 + 8 q / R^4 <= 12 / R^2 in norm:
-    // M = sum of 12 |s| / R^2 over the components that reach the box.
+    // M = sum of 12 |s| / R^2 over the components that reach the box, a
+    // transformed one's times |J|^2 (its Hessian is J^T H J, J its
+    // to_component's linear part; |J| at most J's Frobenius norm).
     const glm::dvec3 c = 0.5 * box.lo + 0.5 * box.hi;
     const glm::dvec3 half = 0.5 * (box.hi - box.lo);
     double m = 0.0;
     for (const auto& comp : blob.components) {
         if (!usable(comp)) continue;
+        const Box3 local = local_box(comp, box);
         const glm::dvec3 slo = is_cylinder(comp) ? glm::min(comp.a, comp.b) : comp.a;
         const glm::dvec3 shi = is_cylinder(comp) ? glm::max(comp.a, comp.b) : comp.a;
-        const glm::dvec3 gap = glm::max(glm::max(box.lo - shi, slo - box.hi), glm::dvec3(0.0));
-        if (glm::dot(gap, gap) < comp.radius * comp.radius)
-            m += 12.0 * std::fabs(comp.strength) / (comp.radius * comp.radius);
+        const glm::dvec3 gap = glm::max(glm::max(local.lo - shi, slo - local.hi), glm::dvec3(0.0));
+        if (!(glm::dot(gap, gap) < comp.radius * comp.radius)) continue;
+        double stretch = 1.0;
+        if (comp.transformed) {
+            const glm::dmat3 j(comp.to_component);
+            stretch = glm::dot(j[0], j[0]) + glm::dot(j[1], j[1]) + glm::dot(j[2], j[2]);
+            // (Rounded up: the bound must not fall short.)
+            stretch *= 1.0 + 1e-12;
+        }
+        m += 12.0 * std::fabs(comp.strength) / (comp.radius * comp.radius) * stretch;
     }
     const double f = blob_field(blob, c);
     // (blob_field_descent is POV-Ray's half of -grad f.)

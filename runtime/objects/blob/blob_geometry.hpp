@@ -22,9 +22,14 @@
 // zero); shading_normal = normal; uv = (0, 0) (POV-Ray 3.7 gives blobs no
 // uv mapping); part = 0.
 //
-// Not here (the record's work): components' own transforms (POV-Ray's
-// ellipsoid pieces), their textures, the `sturm` and `hierarchy` flags, the
-// old `component` syntax (the same sphere: strength, radius, centre).
+// A component may carry its own transforms (POV-Ray's Element->Trans, which
+// turns a scaled sphere into its ellipsoid piece): its field at p is its
+// untransformed field at to_component p, so the ray is taken into its space
+// for its pieces and the gradient back out by to_component's transpose.
+//
+// Not here (the record's work): the components' textures, the `sturm` and
+// `hierarchy` flags, the old `component` syntax (the same sphere: strength,
+// radius, centre).
 #pragma once
 
 #include <optional>
@@ -43,6 +48,9 @@ struct BlobComponent {
     glm::dvec3 b{0.0};  // the cylinder's apex (unused for a sphere)
     double radius = 1.0;
     double strength = 1.0;
+    // Its own transforms: component space to blob space, and back.
+    bool transformed = false;
+    glm::dmat4 to_blob{1.0}, to_component{1.0};
 };
 
 struct BlobGeometry {
@@ -54,6 +62,10 @@ struct BlobGeometry {
 double blob_field(const BlobGeometry& blob, const glm::dvec3& p);
 // -grad(field) at p, not normalized.
 glm::dvec3 blob_field_descent(const BlobGeometry& blob, const glm::dvec3& p);
+// |field| of each component at p, in order (POV-Ray's
+// determine_element_texture weighs component textures by it).
+void blob_component_densities(const BlobGeometry& blob, const glm::dvec3& p,
+                              std::vector<double>& out);
 
 std::optional<SurfaceHit> intersect(const BlobGeometry& blob, const Ray3& ray, double s_min,
                                     double s_max);

@@ -1,10 +1,13 @@
 // The blob's time functions: its threshold and its components' centres,
-// ends, radii and strengths.
+// ends, radii, strengths and own transforms.
 #pragma once
 
 #include <cmath>
+#include <optional>
+#include <utility>
 #include <vector>
 
+#include "runtime/motion/motion.hpp"
 #include "runtime/objects/blob/blob.hpp"
 #include "runtime/objects/blob/blob_geometry.hpp"
 #include "runtime/objects/model_support.hpp"
@@ -20,11 +23,17 @@ class BlobModel {
         is_static_ = threshold_.is_constant();
         for (std::size_t i = 0; i < blob.kinds.size(); ++i) {
             parts_.push_back({blob.kinds[i], CompiledVector3(blob.a[i]), CompiledVector3(blob.b[i]),
-                              CompiledScalar(blob.radii[i]), CompiledScalar(blob.strengths[i])});
-            const auto& p = parts_.back();
+                              CompiledScalar(blob.radii[i]), CompiledScalar(blob.strengths[i]),
+                              std::nullopt});
+            auto& p = parts_.back();
+            if (i < blob.transforms.size() && !blob.transforms[i].empty())
+                p.motion.emplace(blob.transforms[i]);
             is_static_ = is_static_ && p.a.is_constant() && p.b.is_constant() &&
-                         p.radius.is_constant() && p.strength.is_constant();
+                         p.radius.is_constant() && p.strength.is_constant() &&
+                         (!p.motion || p.motion->is_static());
+            texture_of_.push_back(i < blob.texture_index.size() ? blob.texture_index[i] : -1);
         }
+        for (const int k : texture_of_) blended_ = blended_ || k >= 0;
     }
 
     bool is_static() const { return is_static_; }
@@ -32,11 +41,43 @@ class BlobModel {
         Geometry g;
         g.threshold = threshold_.at(t);
         g.components.reserve(parts_.size());
-        for (const auto& p : parts_)
+        for (const auto& p : parts_) {
             // POV-Ray squares the radius: a negative one is its magnitude.
-            g.components.push_back(
-                {p.kind, p.a.at(t), p.b.at(t), std::fabs(p.radius.at(t)), p.strength.at(t)});
+            geometry::BlobComponent c{p.kind, p.a.at(t), p.b.at(t), std::fabs(p.radius.at(t)),
+                                      p.strength.at(t)};
+            if (p.motion) {
+                const Motion::Placement placed = p.motion->placement_at(t);
+                c.transformed = true;
+                c.to_blob = placed.to_world;
+                c.to_component = placed.to_object;
+            }
+            g.components.push_back(c);
+        }
         return g;
+    }
+    // Whether some component has a texture of its own: then the blob's
+    // textures are blended by density (POV-Ray's MULTITEXTURE_FLAG).
+    bool blends_textures() const { return blended_; }
+    // Component i's texture: an index into the record's textures, or -1
+    // for the blob's own.
+    const std::vector<int>& texture_of_components() const { return texture_of_; }
+    // The textures at object point p and their weights, as POV-Ray's
+    // Determine_Textures: each component with a field there lends its
+    // texture (k >= 0) or the blob's (-1), weighed by its |field|, the
+    // weights then scaled to sum to 1; one below POV-Ray's default
+    // adc_bailout (1/255) is left out, as its trace.cpp skips it.
+    void texture_weights(const Geometry& g, const glm::dvec3& p,
+                         std::vector<std::pair<int, double>>& out) const {
+        std::vector<double> density;
+        geometry::blob_component_densities(g, p, density);
+        double sum = 0.0;
+        for (const double d : density) sum += d;
+        out.clear();
+        if (!(sum > 0.0) || !std::isfinite(sum)) return;
+        for (std::size_t i = 0; i < density.size() && i < texture_of_.size(); ++i) {
+            const double w = density[i] / sum;
+            if (w > 0.0 && !(w < 1.0 / 255.0)) out.emplace_back(texture_of_[i], w);
+        }
     }
     // The union of the components' reaches over t (POV-Ray finds the
     // surface only where some component reaches): a sphere's ball, a
@@ -45,9 +86,13 @@ class BlobModel {
         IntervalBox box = empty_interval_box();
         for (const auto& p : parts_) {
             const Interval r(0.0, p.radius.over(t).magnitude());
-            box = hull(box, ball_box(p.a.over(t), r));
+            IntervalBox reach = ball_box(p.a.over(t), r);
             if (p.kind == geometry::BlobComponent::Kind::cylinder)
-                box = hull(box, ball_box(p.b.over(t), r));
+                reach = hull(reach, ball_box(p.b.over(t), r));
+            // A transformed component's reach, carried out by its own
+            // motion's conservative box over t.
+            if (p.motion) reach = p.motion->world_box(reach, t);
+            box = hull(box, reach);
         }
         return box;
     }
@@ -72,10 +117,13 @@ class BlobModel {
         geometry::BlobComponent::Kind kind;
         CompiledVector3 a, b;
         CompiledScalar radius, strength;
+        std::optional<Motion> motion;  // its own transforms, if any
     };
     CompiledScalar threshold_;
     std::vector<Part> parts_;
+    std::vector<int> texture_of_;
     bool is_static_ = true;
+    bool blended_ = false;
 };
 
 }  // namespace hexant::runtime::objects
