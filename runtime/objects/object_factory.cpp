@@ -23,6 +23,7 @@ namespace {
 struct Inherited {
     Transform to_world;  // the group's object space to the world
     std::optional<Texture> texture;
+    std::shared_ptr<const Texture> interior_texture;  // null: none
     std::optional<Interior> interior;
     bool no_shadow = false;
     ObjectFlags flags;  // no_image, no_reflection, double_illuminate
@@ -42,7 +43,7 @@ constexpr int kMaxCsgDepth = 1000;
 
 // What the scene's top hands its objects: the default texture.
 Inherited top_level(const Texture& default_texture) {
-    return {Transform{}, default_texture,    std::nullopt, false, ObjectFlags{},
+    return {Transform{}, default_texture,    nullptr, std::nullopt, false, ObjectFlags{},
             0,           Lifetime::always(), false};
 }
 
@@ -58,6 +59,13 @@ Inherited handed_down(const ObjectRecord& record, const Inherited& parent) {
         // The record's texture maps to the record's parent space.
         down.texture = *record.texture;
         down.texture->transform_by(parent.to_world);
+    }
+    // (A group's interior texture reaches members without their own, as
+    // POV-Ray's Post_Process promotes it, whatever their own texture.)
+    if (record.interior_texture) {
+        auto inside = std::make_shared<Texture>(*record.interior_texture);
+        inside->transform_by(parent.to_world);
+        down.interior_texture = std::move(inside);
     }
     if (record.interior) down.interior = record.interior;
     down.no_shadow = record.no_shadow || parent.no_shadow;
@@ -215,6 +223,7 @@ IntelligentObjectPtr build_shape(const ObjectRecord& record, const Inherited& pa
                        own.flags);
     }
     TextureEvaluator evaluator(*own.texture, interior);
+    if (own.interior_texture) evaluator.set_interior_texture(*own.interior_texture, interior);
     const PrimitiveOptions options{record.inverse, own.no_shadow};
     return std::visit(
         [&](const auto& shape) -> IntelligentObjectPtr {

@@ -83,8 +83,15 @@ class TextureEvaluator {
     // The interior's faked caustics' power at time t (Interior::caustics,
     // times 45 as POV-Ray keeps it); 0 without.
     double caustics_at(double t) const { return caustics_ ? caustics_->at(t) : 0.0; }
-    // Whether no light passes it (Texture::opaque).
+    // Whether no light passes it (Texture::opaque), nor its interior
+    // texture (POV-Ray's OPAQUE_FLAG wants both).
     bool opaque() const { return opaque_; }
+
+    // interior_texture { }: the texture a ray meeting the surface from
+    // inside sees (POV-Ray's Interior_Texture), compiled with the same
+    // interior. Null: none, this one is seen from both sides.
+    void set_interior_texture(const Texture& texture, const std::optional<Interior>& interior);
+    const TextureEvaluator* interior_texture() const { return interior_texture_.get(); }
 
     // Whether the top layer perturbs the shading normal (normal { }).
     bool has_normal() const;
@@ -289,8 +296,9 @@ class TextureEvaluator {
         CompiledScalar distance, power;
         std::array<CompiledScalar, 3> colour;
     };
-    std::shared_ptr<const CompiledFade> fade_;        // null: no fading
-    std::shared_ptr<const CompiledScalar> caustics_;  // null: none
+    std::shared_ptr<const CompiledFade> fade_;                  // null: no fading
+    std::shared_ptr<const CompiledScalar> caustics_;            // null: none
+    std::shared_ptr<const TextureEvaluator> interior_texture_;  // null: none
 };
 
 }  // namespace hexant::runtime
