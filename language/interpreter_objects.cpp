@@ -94,6 +94,7 @@ namespace {
 void check_patterns(const runtime::ObjectRecord& object) {
     for_each_nested(object, [](const runtime::ObjectRecord& record) {
         if (record.texture) check_texture(*record.texture);
+        if (record.interior_texture) check_texture(*record.interior_texture);
     });
 }
 
@@ -178,6 +179,7 @@ void Interpreter::report_unrendered(const runtime::ObjectRecord& object, const p
         if (record.interior)
             for (const auto& note : record.interior->unrendered) visit(note);
         if (record.texture) for_each_unrendered(*record.texture, seen, visit);
+        if (record.interior_texture) for_each_unrendered(*record.interior_texture, seen, visit);
         // A kind's own parts' textures (a mesh's faces).
         std::visit(
             [&](const auto& shape) {

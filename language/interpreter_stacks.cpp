@@ -24,6 +24,11 @@ void Interpreter::apply_transform(runtime::TransformStep step, const p::position
         // As in POV-Ray, an object's texture moves with it.
         if (object->texture) object->texture->transform_by(step);
         if (object->interior) object->interior->transform_by(step);
+        if (object->interior_texture) {
+            auto inside = std::make_shared<runtime::Texture>(*object->interior_texture);
+            inside->transform_by(step);
+            object->interior_texture = std::move(inside);
+        }
         object->transform.append(std::move(step));
     } else if (auto* light = std::get_if<runtime::LightRecord>(&b)) {
         light->transform.append(std::move(step));

@@ -204,6 +204,60 @@ struct action<g::texture_list_texture> {
     }
 };
 
+// tiles { A... tile2 B... }: POV-Ray's Parse_Tiles, a texture of the
+// checker pattern over two (layered) textures. It keeps its old order: the
+// first tile's textures at 1 (where the checker is 1), tile2's at 0.
+template <>
+struct action<g::tiles_open> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        auto& texture = st.blocks.edit<runtime::Texture>(in.position(), "tiles");
+        // (Not the #default texture: POV-Ray's Parse_Tiles starts afresh.)
+        texture = runtime::Texture();
+        const runtime::pattern::Kind* checker = runtime::pattern::find_kind("checker");
+        if (checker == nullptr) throw std::logic_error("tiles: no checker pattern");
+        texture.patterned = runtime::pattern::Pattern::of(*checker);
+        texture.patterned.noise_generator = st.scene.global.noise_generator;
+    }
+};
+// A tile's texture, layered over the ones before it in the same tile
+// (POV-Ray's Link_Textures: the later on top).
+inline void add_tile_texture(Interpreter& st, const p::position& at, std::size_t tile) {
+    runtime::Texture written = st.values.pop().as<runtime::Texture>();
+    auto& texture = st.blocks.edit<runtime::Texture>(at, "tiles");
+    auto& map = texture.texture_map;
+    if (map.size() == tile) {
+        map.push_back(
+            {tile == 0 ? 1.0 : 0.0, std::make_shared<const runtime::Texture>(std::move(written))});
+        return;
+    }
+    map.back().texture =
+        std::make_shared<const runtime::Texture>(layered(std::move(written), *map.back().texture));
+}
+template <>
+struct action<g::tiles_texture> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        add_tile_texture(st, in.position(), 0);
+    }
+};
+template <>
+struct action<g::tile2_texture> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        add_tile_texture(st, in.position(), 1);
+    }
+};
+template <>
+struct action<g::tiles_block> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        // In the map's order of values: tile2's (0), then the first (1).
+        auto& map = st.blocks.edit<runtime::Texture>(in.position(), "tiles").texture_map;
+        if (map.size() == 2) std::swap(map[0], map[1]);
+    }
+};
+
 template <>
 struct action<g::pigment_map_open> {
     template <typename ActionInput>

@@ -687,6 +687,11 @@ struct action<g::texture_block> {
         st.values.push(std::move(v));
     }
 };
+// interior_texture { }: read as a texture { } is.
+template <>
+struct action<g::interior_texture_open> : action<g::texture_open> {};
+template <>
+struct action<g::interior_texture_block> : action<g::texture_block> {};
 template <>
 struct action<g::texture_layer> {
     template <typename ActionInput>

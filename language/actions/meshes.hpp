@@ -181,6 +181,20 @@ struct action<g::object_texture> {
                                         : std::move(texture);
     }
 };
+// interior_texture { }: on one the object has, a layer on top (POV-Ray's
+// Link_Textures).
+template <>
+struct action<g::object_interior_texture> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        Value v = st.values.pop();
+        auto& record = st.blocks.edit<runtime::ObjectRecord>(in.position(), "an interior_texture");
+        auto texture = v.as<runtime::Texture>();
+        record.interior_texture = std::make_shared<const runtime::Texture>(
+            record.interior_texture ? layered(std::move(texture), *record.interior_texture)
+                                    : std::move(texture));
+    }
+};
 // POV-Ray moves a texture's pigment and normal themselves when it moves
 // the object (Transform_Textures): one given after the object's
 // transforms is not moved by them. hexant keeps those transforms on the

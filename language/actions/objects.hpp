@@ -61,6 +61,12 @@ struct finish_object {
         }
         auto& record = std::get<runtime::ObjectRecord>(b);
         record.lifetime = record.lifetime.intersect(st.domain);
+        // (POV-Ray's Parse_Object_Mods: "Interior texture requires an
+        // exterior texture.")
+        if (record.interior_texture && !record.texture)
+            Interpreter::fail(in.position(),
+                              "an interior_texture needs the object's own texture "
+                              "(texture, pigment, normal or finish), as in POV-Ray");
         // A variant of its kind that hexant lacks: usable only where nothing uses it.
         const auto lacking = std::visit(
             [](const auto& shape) -> std::optional<std::string> {

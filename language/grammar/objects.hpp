@@ -325,6 +325,7 @@ struct object_value : p::sor<mesh_block, mesh2_block, blob_block, isosurface_blo
 
 // Things that modify an object, in any order.
 struct object_texture : p::seq<texture_block> {};
+struct object_interior_texture : p::seq<interior_texture_block> {};
 struct object_pigment : p::seq<pigment_block> {};
 struct object_finish : p::seq<finish_block> {};
 struct object_interior : p::seq<interior_block> {};
@@ -369,8 +370,8 @@ struct limit_block
     : p::seq<limit_open, p::sor<limit_same, p::star<limit_item>>, p::must<limit_close>> {};
 struct object_modifier
     : p::sor<directive<object_modifier>, macro_call<object_modifier>, transformation, deformation,
-             object_texture, object_pigment, object_finish, object_normal, object_interior,
-             object_material, object_flag, shape_vectors_setting, shape_setting, limit_block,
-             object_ignored_block> {};
+             object_texture, object_interior_texture, object_pigment, object_finish, object_normal,
+             object_interior, object_material, object_flag, shape_vectors_setting, shape_setting,
+             limit_block, object_ignored_block> {};
 
 }  // namespace hexant::language::grammar

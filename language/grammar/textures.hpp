@@ -456,13 +456,14 @@ struct texture_base : p::seq<p::not_at<pattern_name>, expression> {};
 struct texture_pigment : p::seq<pigment_block> {};
 struct texture_finish : p::seq<finish_block> {};
 struct texture_item;
+struct texture_body;
 // texture_map { [value TEXTURE_BODY] ... }: each entry a texture's inside.
 struct texture_map_value : p::seq<p::not_at<unsupported_pattern_name>, sum> {};
 struct texture_map_weight : p::success {};  // (as pigment_map_weight)
 struct texture_map_texture_open : p::success {};
-struct texture_map_entry : p::seq<lbracket, p::sor<texture_map_value, texture_map_weight>,
-                                  p::opt<comma>, texture_map_texture_open, p::opt<texture_base>,
-                                  p::star<texture_item>, p::must<rbracket>> {};
+struct texture_map_entry
+    : p::seq<lbracket, p::sor<texture_map_value, texture_map_weight>, p::opt<comma>,
+             texture_map_texture_open, texture_body, p::must<rbracket>> {};
 struct texture_map_open : p::seq<TAO_PEGTL_KEYWORD("texture_map"), ws, p::must<lbrace>> {};
 struct texture_map_element
     : p::sor<directive<texture_map_element>, macro_call<texture_map_element>, texture_map_entry> {};
@@ -477,8 +478,25 @@ struct texture_item
              texture_normal, slope_pattern, magnet_pattern, pigment_pattern, function_pattern,
              pattern_kind, pattern_setting, pattern_pair_setting, pattern_wave, warp_block,
              texture_map_block, texture_list_texture, uv_mapping, transformation> {};
-struct texture_block
-    : p::seq<texture_open, p::opt<texture_base>, p::star<texture_item>, p::must<rbrace>> {};
+// tiles { TEXTURE... tile2 TEXTURE... } [transforms]: POV-Ray's Parse_Tiles,
+// a checker of two (layered) textures. As in POV-Ray's Parse_Texture it
+// comes first, and only transforms follow it.
+struct tiles_open : p::seq<TAO_PEGTL_KEYWORD("tiles"), ws, p::must<lbrace>> {};
+struct tiles_texture : p::seq<texture_block> {};
+struct tile2_keyword : p::seq<TAO_PEGTL_KEYWORD("tile2"), ws> {};
+struct tile2_texture : p::seq<texture_block> {};
+struct tiles_block
+    : p::seq<tiles_open, p::must<tiles_texture>, p::star<tiles_texture>, p::must<tile2_keyword>,
+             p::must<tile2_texture>, p::star<tile2_texture>, p::must<rbrace>> {};
+struct texture_tiles : p::seq<tiles_block, p::star<transformation>> {};
+// What follows a texture's start (and a texture_map entry's value): tiles
+// only where nothing, not even a declared texture, came before it.
+struct texture_body : p::sor<texture_tiles, p::seq<p::opt<texture_base>, p::star<texture_item>>> {};
+struct texture_block : p::seq<texture_open, texture_body, p::must<rbrace>> {};
+// interior_texture { TEXTURE_BODY }: an object's texture seen from inside.
+struct interior_texture_open : p::seq<TAO_PEGTL_KEYWORD("interior_texture"), ws, p::must<lbrace>> {
+};
+struct interior_texture_block : p::seq<interior_texture_open, texture_body, p::must<rbrace>> {};
 
 // material { texture { } interior { } }
 struct material_open : p::seq<kw_material, p::must<lbrace>> {};

@@ -69,7 +69,8 @@ bool ObjectRecord::shape_depends_on_time() const {
 }
 
 bool ObjectRecord::texture_depends_on_time() const {
-    return texture && texture->depends_on_time();
+    return (texture && texture->depends_on_time()) ||
+           (interior_texture && interior_texture->depends_on_time());
 }
 
 bool ObjectRecord::depends_on_time() const {

@@ -40,6 +40,10 @@ struct ObjectRecord {
     Shape shape;
     Transform transform;             // object space to the parent's space
     std::optional<Texture> texture;  // none: inherit the parent's, or the default
+    // interior_texture { }: what a ray meeting the surface from inside sees
+    // (POV-Ray's Interior_Texture); null: the parent's, or none. Shared
+    // between copies (most objects have none: a pointer keeps records small).
+    std::shared_ptr<const Texture> interior_texture;
     std::optional<Interior> interior;
     bool no_shadow = false;
     // POV-Ray's no_image, no_reflection, double_illuminate (passed down to

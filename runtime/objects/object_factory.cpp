@@ -24,6 +24,7 @@ namespace {
 struct Inherited {
     Transform to_world;  // the group's object space to the world
     std::optional<Texture> texture;
+    std::shared_ptr<const Texture> interior_texture;  // null: none
     std::optional<Interior> interior;
     // The interior's media, compiled once for the object that wrote it
     // and shared by its members (build_shape).
@@ -46,7 +47,7 @@ constexpr int kMaxCsgDepth = 1000;
 
 // What the scene's top hands its objects: the default texture.
 Inherited top_level(const Texture& default_texture) {
-    return {Transform{}, default_texture,    std::nullopt, nullptr, false, ObjectFlags{},
+    return {Transform{}, default_texture, nullptr, std::nullopt, nullptr, false, ObjectFlags{},
             0,           Lifetime::always(), false};
 }
 
@@ -62,6 +63,13 @@ Inherited handed_down(const ObjectRecord& record, const Inherited& parent) {
         // The record's texture maps to the record's parent space.
         down.texture = *record.texture;
         down.texture->transform_by(parent.to_world);
+    }
+    // (A group's interior texture reaches members without their own, as
+    // POV-Ray's Post_Process promotes it, whatever their own texture.)
+    if (record.interior_texture) {
+        auto inside = std::make_shared<Texture>(*record.interior_texture);
+        inside->transform_by(parent.to_world);
+        down.interior_texture = std::move(inside);
     }
     if (record.interior) {
         // (Its media's densities, as the texture, map to the parent's space.)
@@ -230,6 +238,7 @@ IntelligentObjectPtr build_shape(const ObjectRecord& record, const Inherited& pa
     }
     TextureEvaluator evaluator(*own.texture, interior);
     evaluator.set_media(own.media);
+    if (own.interior_texture) evaluator.set_interior_texture(*own.interior_texture, interior);
     const PrimitiveOptions options{record.inverse, own.no_shadow};
     return std::visit(
         [&](const auto& shape) -> IntelligentObjectPtr {

@@ -186,6 +186,8 @@ std::optional<std::string> bad_parameter(const ObjectRecord& object, const Anima
     if (auto p = check(object.transform, whose, span)) return p;
     if (object.texture)
         if (auto p = check(*object.texture, whose, span)) return p;
+    if (object.interior_texture)
+        if (auto p = check(*object.interior_texture, whose + " interior_texture's", span)) return p;
     if (object.interior)
         if (auto p = check(object.interior->ior, whose + " interior's ior", span)) return p;
     return std::nullopt;

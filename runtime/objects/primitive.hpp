@@ -260,6 +260,10 @@ class Primitive final : public IntelligentObject {
                                        w});
             }
         }
+        // Met from inside (POV-Ray's normaldirection > 0, trace.cpp): the
+        // interior texture, over a face's own too (Mesh::Determine_Textures).
+        if (const TextureEvaluator* inside = texture_.interior_texture())
+            if (glm::dot(p.shading_normal, glm::dvec3(ray.direction)) > 0.0) p.texture = inside;
         return p;
     }
 

@@ -331,6 +331,16 @@ TextureEvaluator::TextureEvaluator(const Texture& texture, const std::optional<I
         caustics_ = std::make_shared<const CompiledScalar>(interior->caustics * 45.0);
 }
 
+void TextureEvaluator::set_interior_texture(const Texture& texture,
+                                            const std::optional<Interior>& interior) {
+    auto made = std::make_shared<TextureEvaluator>(texture, interior);
+    made->set_media(media_);  // (the same interior: its media, as the outside's)
+    std::shared_ptr<const TextureEvaluator> inside = std::move(made);
+    depends_on_time_ = depends_on_time_ || inside->depends_on_time();
+    opaque_ = opaque_ && inside->opaque();
+    interior_texture_ = std::move(inside);
+}
+
 std::optional<TextureEvaluator::Fade> TextureEvaluator::fade_at(double t) const {
     if (!fade_) return std::nullopt;
     Fade f;

@@ -86,13 +86,21 @@ class TextureEvaluator {
     // The interior's faked caustics' power at time t (Interior::caustics,
     // times 45 as POV-Ray keeps it); 0 without.
     double caustics_at(double t) const { return caustics_ ? caustics_->at(t) : 0.0; }
-    // Whether no light passes it (Texture::opaque).
+    // Whether no light passes it (Texture::opaque), nor its interior
+    // texture (POV-Ray's OPAQUE_FLAG wants both).
     bool opaque() const { return opaque_; }
     // The interior's media (null without): one volume shared by every
     // primitive of the object that wrote it, so that a ray knows it is
     // still inside (runtime/objects/object_factory.cpp).
     const MediaVolume* media() const { return media_.get(); }
     void set_media(std::shared_ptr<const MediaVolume> media) { media_ = std::move(media); }
+
+    // interior_texture { }: the texture a ray meeting the surface from
+    // inside sees (POV-Ray's Interior_Texture), compiled with the same
+    // interior (and media: set_media first). Null: none, this one is seen
+    // from both sides.
+    void set_interior_texture(const Texture& texture, const std::optional<Interior>& interior);
+    const TextureEvaluator* interior_texture() const { return interior_texture_.get(); }
 
     // Whether the top layer perturbs the shading normal (normal { }).
     bool has_normal() const;
@@ -298,8 +306,9 @@ class TextureEvaluator {
         CompiledScalar distance, power;
         std::array<CompiledScalar, 3> colour;
     };
-    std::shared_ptr<const CompiledFade> fade_;        // null: no fading
-    std::shared_ptr<const CompiledScalar> caustics_;  // null: none
+    std::shared_ptr<const CompiledFade> fade_;                  // null: no fading
+    std::shared_ptr<const CompiledScalar> caustics_;            // null: none
+    std::shared_ptr<const TextureEvaluator> interior_texture_;  // null: none
 };
 
 }  // namespace hexant::runtime
