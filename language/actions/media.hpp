@@ -210,6 +210,14 @@ template <>
 struct action<g::media_block> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        const auto& written = st.blocks.edit<runtime::Media>(in.position(), "a media");
+        // (POV-Ray's methods 1 and 2 sample further, up to the maximum,
+        // while the samples' variance stays above what confidence and
+        // variance allow; hexant takes the minimum.)
+        if (written.method != 3 && written.max_samples > written.min_samples)
+            st.warn(in.position(),
+                    "'samples' is read but not rendered as POV-Ray renders it: methods 1 and 2 "
+                    "take the minimum number of samples, not more by POV-Ray's variance test");
         Value v{std::move(st.blocks.edit<runtime::Media>(in.position(), "a media"))};
         st.blocks.close();
         st.values.push(std::move(v));
