@@ -229,6 +229,13 @@ void Interpreter::add_light(runtime::LightRecord light, const p::position& where
         light.looks_like.reset();
         add_object(std::make_shared<const runtime::ObjectRecord>(std::move(placed)), where);
     }
+    if (light.projected_through) {
+        // Moved by the light's transforms (POV-Ray's LightSource::Transform
+        // moves it; hexant, as with looks_like, by all of them).
+        runtime::ObjectRecord placed = *light.projected_through;
+        placed.transform.append(light.transform);
+        light.projected_through = std::make_shared<const runtime::ObjectRecord>(std::move(placed));
+    }
     scene.lights.push_back(std::move(light));
 }
 

@@ -342,7 +342,7 @@ constexpr auto kRules = std::to_array<KeywordRuleEntry>({
     {"pretrace_start", KeywordRule::Warned, "inside radiosity { }, which is warned as a whole"},
     {"prism", KeywordRule::Rendered, ""},
     {"prod", KeywordRule::Refused, ""},
-    {"projected_through", KeywordRule::Warned, "the light is not restricted to what passes through the object"},
+    {"projected_through", KeywordRule::Rendered, ""},
     {"pwr", KeywordRule::Rendered, ""},
     {"quadratic_spline", KeywordRule::Rendered, ""},
     {"quadric", KeywordRule::Rendered, ""},

@@ -7,6 +7,8 @@
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 
+#include "runtime/objects/object_factory.hpp"
+
 namespace hexant::tracer {
 
 namespace {
@@ -69,6 +71,8 @@ ShadedLight::ShadedLight(const runtime::LightRecord& r)
       orient_(r.orient) {
     media_attenuation_ = r.media_attenuation;
     media_interaction_ = r.media_interaction;
+    // (An object hexant cannot build throws ObjectError, naming its place.)
+    if (r.projected_through) projector_ = runtime::make_intelligent_object(*r.projected_through);
     fixed_position_ = moving_position(0.0);
     still_position_ = !r.position.depends_on_time() && !r.transform.depends_on_time();
     fixed_colour_ = rgb(r.colour, 0.0);

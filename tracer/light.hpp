@@ -10,11 +10,13 @@
 #pragma once
 
 #include <cmath>
+#include <memory>
 #include <vector>
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "runtime/objects/intelligent_object.hpp"
 #include "runtime/scene/light.hpp"
 
 namespace hexant::tracer {
@@ -33,6 +35,8 @@ class ShadedLight {
 
     bool shines_at(double t) const { return lifetime_.is_always() || lifetime_.contains(t); }
     bool shadowless() const { return shadowless_; }
+    // projected_through's object (runtime::LightRecord), null without.
+    const runtime::IntelligentObject* projector() const { return projector_.get(); }
     // media_attenuation (runtime::LightRecord): fogged on its way.
     bool media_attenuation() const { return media_attenuation_; }
     // media_interaction (runtime::LightRecord): media scatter it.
@@ -97,6 +101,7 @@ class ShadedLight {
     runtime::LightKind kind_;
     bool shadowless_, parallel_;
     bool media_attenuation_ = false, media_interaction_ = true;
+    std::shared_ptr<const runtime::IntelligentObject> projector_;
     bool still_position_ = false, still_colour_ = false;
     glm::dvec3 fixed_position_{0.0}, fixed_colour_{0.0};
     runtime::TimeFunction radius_, falloff_, tightness_, fade_distance_, fade_power_;

@@ -220,12 +220,28 @@ inline glm::dvec3 Shader::shadow_filter(std::size_t index, const Hit& h,
         reach = toward.depth;
     }
     if (!(reach > 0.0)) return glm::dvec3(1.0);
-    ++state.counters.shadow_rays;
     const Ray4 ray = travel_.ray(start, h.time, direction);
+    if (!projected(light, ray, reach)) return glm::dvec3(0.0);
+    if (light.shadowless()) return glm::dvec3(1.0);
+    ++state.counters.shadow_rays;
     // (Objects that may let light through do not block: `blocked` passes
     // them by, and they filter what it lets pass.)
     if (blocked(ray, reach, state)) return glm::dvec3(0.0);
     return filtering_ ? filtered(ray, reach, h.depth, state) : glm::dvec3(1.0);
+}
+
+bool Shader::projected(const ShadedLight& light, const Ray4& ray, double& reach) {
+    const runtime::IntelligentObject* projector = light.projector();
+    if (projector == nullptr) return true;
+    // POV-Ray's TraceShadowRay: dark unless the ray meets the object before
+    // the light; then only what lies before the meeting shadows (the
+    // object itself and its twin in the scene do not).
+    const auto hit = projector->intersect(ray, 0.0, reach);
+    if (!hit) return false;
+    // (Short of the meeting by a part in 10^7 of its distance: POV-Ray's
+    // SMALL_TOLERANCE, made relative so that it holds at any scale.)
+    reach = hit->s * (1.0 - 1.0e-7);
+    return true;
 }
 
 glm::dvec3 Shader::filtered(Ray4 ray, double reach, int depth, ThreadState& state) const {
@@ -479,6 +495,7 @@ glm::dvec3 Shader::media_light(std::size_t index, const glm::dvec3& point, doubl
         }
     }
     const Ray4 shadow = travel_.ray(point, t, direction);
+    if (!projected(light, shadow, reach)) return glm::dvec3(0.0);
     if (!light.shadowless() && reach > 0.0) {
         ++state.counters.shadow_rays;
         if (blocked(shadow, reach, state)) return glm::dvec3(0.0);
@@ -524,7 +541,7 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
             if (cosine <= 0.0) continue;
             if (known.state == ShadingScratch::Light::State::Placed) {
                 known.state = ShadingScratch::Light::State::Seen;
-                if (!light.shadowless()) {
+                if (!light.shadowless() || light.projector()) {
                     const glm::dvec3 passed = shadow_filter(i, h, known, state);
                     if (passed == glm::dvec3(0.0))
                         known.state = ShadingScratch::Light::State::Shadowed;

@@ -108,6 +108,9 @@ class Shader {
     // each surface of an object that casts shadows, nearest first, filters
     // the light by its texture there; `depth` picks the scratch texture.
     glm::dvec3 filtered(runtime::Ray4 ray, double reach, int depth, ThreadState& state) const;
+    // projected_through: whether `ray` toward `light` meets its object
+    // before `reach`; then `reach` ends at the meeting.
+    static bool projected(const ShadedLight& light, const runtime::Ray4& ray, double& reach);
     // A surface's filter: per plain texture the product over its layers of
     // colour x filter + transmit, blended by the plain textures' weights
     // (ComputeShadowTexture, ComputeOneTextureColour).

@@ -124,10 +124,20 @@ struct action<g::area_light> {
     }
 };
 template <>
+struct action<g::projected_through_base> : action<g::object_base> {};
+template <>
 struct action<g::light_projected_through> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        st.not_rendered(in.position(), word(in));
+        // (The object's block, closed as object { } closes; the light's
+        // transforms move it with the light: Interpreter::add_light.)
+        finish_object::apply(in, st);
+        Value v = st.values.pop();
+        if (!v.is<runtime::ObjectPtr>())
+            throw ValueError("projected_through { } needs an object, not a " + type_name(v));
+        auto& light = st.blocks.edit<runtime::LightRecord>(in.position(), "projected_through");
+        // (POV-Ray keeps the last one written.)
+        light.projected_through = v.as<runtime::ObjectPtr>();
     }
 };
 // POV-Ray's Parse_Light_Source: the object is moved to the light's centre,

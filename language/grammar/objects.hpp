@@ -108,8 +108,13 @@ struct looks_like_base : object_base {};
 struct light_looks_like
     : p::seq<TAO_PEGTL_KEYWORD("looks_like"), ws, p::must<lbrace>, p::must<looks_like_base>,
              object_modifiers, p::must<object_close>> {};
+// projected_through { OBJECT modifiers }, as object { }: the light shines
+// only where its rays pass through the object (POV-Ray's
+// Projected_Through_Object).
+struct projected_through_base : object_base {};
 struct light_projected_through
-    : p::seq<TAO_PEGTL_KEYWORD("projected_through"), ws, p::must<skipped_block>, ws> {};
+    : p::seq<TAO_PEGTL_KEYWORD("projected_through"), ws, p::must<lbrace>,
+             p::must<projected_through_base>, object_modifiers, p::must<object_close>> {};
 struct light_item : p::sor<directive<light_item>, macro_call<light_item>, light_flag, light_setting,
                            area_light, light_looks_like, light_projected_through, transformation> {
 };

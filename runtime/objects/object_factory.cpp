@@ -47,8 +47,8 @@ constexpr int kMaxCsgDepth = 1000;
 
 // What the scene's top hands its objects: the default texture.
 Inherited top_level(const Texture& default_texture) {
-    return {Transform{}, default_texture, nullptr, std::nullopt, nullptr, false, ObjectFlags{},
-            0,           Lifetime::always(), false};
+    return {Transform{}, default_texture, nullptr, std::nullopt,       nullptr,
+            false,       ObjectFlags{},   0,       Lifetime::always(), false};
 }
 
 // What `record` holds in world terms under `parent`: its transform after

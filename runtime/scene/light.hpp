@@ -46,6 +46,11 @@ struct LightRecord {
     // casting no shadow (language/interpreter.cpp adds it to the scene
     // with the light).
     std::shared_ptr<const ObjectRecord> looks_like;
+    // projected_through { OBJECT }: the light reaches only points whose ray
+    // toward it meets the object, and only what lies before that meeting
+    // shadows them (POV-Ray's TraceShadowRay); in the world once the
+    // scene is read.
+    std::shared_ptr<const ObjectRecord> projected_through;
     ColourFunction colour;
     // POV-Ray's fill light: no shadow, no highlights.
     bool shadowless = false;

@@ -47,7 +47,6 @@ const std::map<std::string, Probe>& probes() {
         };
         self("photons", "sphere { 0, 1 photons { target } }");
         self("radiosity", "global_settings { radiosity { } }");
-        self("projected_through", "light_source { 0, 1 projected_through { sphere { 0, 1 } } }");
         self("confidence", "camera { location -5 look_at 0 confidence 0.9 }");
         self("variance", "camera { location -5 look_at 0 variance 0.001 }");
         self("fresnel", "sphere { 0, 1 finish { fresnel } }");

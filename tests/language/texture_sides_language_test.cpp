@@ -27,7 +27,7 @@ double red_of(const rt::Texture& t) {
     return t.pigment.colours.at(0).c[0].constant();
 }
 
-void check_error(const std::string& text, const char* words, int line) {
+void check_error(const std::string& text, const char* words, std::size_t line) {
     const auto e = error_of(text);
     INFO(e.formatted());
     CHECK(e.places().front().line == line);

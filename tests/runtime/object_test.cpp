@@ -87,7 +87,9 @@ TEST_CASE("each part of an object that may depend on time", "[runtime][object]")
     }
     SECTION("the index of refraction") {
         auto torus = object(rt::Torus{2.0, 0.5});
-        torus->interior = rt::Interior{symbolic_clock() + 1.0, {}};
+        rt::Interior interior;
+        interior.ior = symbolic_clock() + 1.0;
+        torus->interior = interior;
         CHECK(torus->depends_on_time());
         CHECK(torus->timed_parameters().empty());
     }
