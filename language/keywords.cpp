@@ -98,6 +98,7 @@ constexpr auto kReserved = std::to_array<std::string_view>({
     "density_file",
     "density_map",
     "deprecated",
+    "df3",
     "difference",
     "diffuse",
     "dimension_size",

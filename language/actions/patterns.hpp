@@ -3,6 +3,7 @@
 #pragma once
 
 #include "language/actions/transformations.hpp"
+#include "runtime/texture/pattern/density_file.hpp"
 
 namespace hexant::language {
 
@@ -426,6 +427,28 @@ struct action<g::function_pattern_body> {
             throw ValueError("a function pattern's function is a number of x, y, z");
         start_pattern(st, in.position(), "function").pattern.function =
             std::make_shared<const runtime::SpaceFunction>(f.body);
+    }
+};
+
+// density_file df3 "FILE": its voxels read now, found and confined as
+// #include's files are.
+template <>
+struct action<g::density_file_name> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        const Value v = st.values.pop();
+        if (!v.is<std::string>())
+            throw ValueError("density_file's file is a string, not a " + type_name(v));
+        const std::filesystem::path path =
+            st.resolve_include(v.as<std::string>(), in.position(), "density file");
+        std::shared_ptr<const runtime::pattern::DensityFile> voxels;
+        try {
+            voxels = std::make_shared<const runtime::pattern::DensityFile>(
+                runtime::pattern::DensityFile::read(path));
+        } catch (const std::runtime_error& e) {
+            throw ValueError(std::string("density_file: ") + e.what());
+        }
+        start_pattern(st, in.position(), "density_file").pattern.density_file = std::move(voxels);
     }
 };
 

@@ -21,9 +21,8 @@ HEXANT_KEYWORD(kw_material, "material");
 struct unsupported_pattern_name
     : p::sor<TAO_PEGTL_KEYWORD("facets"), TAO_PEGTL_KEYWORD("pavement"),
              TAO_PEGTL_KEYWORD("tiling"), TAO_PEGTL_KEYWORD("cubic"), TAO_PEGTL_KEYWORD("object"),
-             TAO_PEGTL_KEYWORD("aoi"), TAO_PEGTL_KEYWORD("density_file"),
-             TAO_PEGTL_KEYWORD("image_pattern"), TAO_PEGTL_KEYWORD("bump_map"),
-             TAO_PEGTL_KEYWORD("wave")> {};
+             TAO_PEGTL_KEYWORD("aoi"), TAO_PEGTL_KEYWORD("image_pattern"),
+             TAO_PEGTL_KEYWORD("bump_map"), TAO_PEGTL_KEYWORD("wave")> {};
 struct unsupported_pattern : p::seq<unsupported_pattern_name, skip::until_rbrace> {};
 // uv_mapping in a pigment, a normal or a texture: what follows in the
 // block is read at the surface's (u, v, 0) (runtime/texture/material.hpp).
@@ -176,6 +175,12 @@ struct magnet_pattern : p::seq<magnet_keyword, p::must<magnet_type>, p::must<mag
 // function's (runtime/texture/pattern/kinds/function.hpp).
 struct function_pattern_body : p::seq<function_value> {};
 struct function_pattern : p::seq<function_pattern_body, own_pattern_tail> {};
+// density_file df3 "FILE" (runtime/texture/pattern/kinds/density_file.hpp).
+struct density_file_name : p::seq<expression> {};
+struct density_file_type : TAO_PEGTL_KEYWORD("df3") {};
+struct density_file_pattern
+    : p::seq<TAO_PEGTL_KEYWORD("density_file"), ws, p::must<density_file_type>, ws,
+             p::must<density_file_name>, own_pattern_tail> {};
 
 // color_map { [value colour] ... }, or a declared one; POV-Ray's older
 // [value1, value2 colour1 colour2] too.
@@ -306,10 +311,10 @@ struct pigment_quick_colour
                     p::seq<p::must<ignored_value>, p::star<quick_colour_component>>>> {};
 struct pigment_item
     : p::sor<directive<pigment_item>, macro_call<pigment_item>, slope_pattern, magnet_pattern,
-             pigment_pattern, function_pattern, pattern_kind, pattern_setting, pattern_pair_setting,
-             pattern_wave, warp_block, pigment_colour_map, pigment_map_block, image_map_block,
-             pigment_list_pigment, pigment_quick_colour, pigment_component, uv_mapping,
-             unsupported_pattern, transformation, pigment_late_colour> {};
+             pigment_pattern, function_pattern, density_file_pattern, pattern_kind, pattern_setting,
+             pattern_pair_setting, pattern_wave, warp_block, pigment_colour_map, pigment_map_block,
+             image_map_block, pigment_list_pigment, pigment_quick_colour, pigment_component,
+             uv_mapping, unsupported_pattern, transformation, pigment_late_colour> {};
 struct pigment_block
     : p::seq<pigment_open, p::opt<pigment_base>, p::star<pigment_item>, p::must<rbrace>> {};
 // function { pigment { } }: a pigment function, F(x, y, z) its colour
@@ -420,10 +425,10 @@ struct normal_block;
 struct normal_list_normal : p::seq<normal_block, p::opt<comma>> {};
 struct normal_item
     : p::sor<directive<normal_item>, macro_call<normal_item>, slope_pattern, magnet_pattern,
-             pigment_pattern, function_pattern, pattern_kind, pattern_setting, pattern_pair_setting,
-             pattern_wave, warp_block, normal_setting, normal_no_bump_scale, normal_map_block,
-             slope_map_block, normal_list_normal, uv_mapping, unsupported_pattern, transformation> {
-};
+             pigment_pattern, function_pattern, density_file_pattern, pattern_kind, pattern_setting,
+             pattern_pair_setting, pattern_wave, warp_block, normal_setting, normal_no_bump_scale,
+             normal_map_block, slope_map_block, normal_list_normal, uv_mapping, unsupported_pattern,
+             transformation> {};
 struct normal_block
     : p::seq<normal_open, p::opt<normal_base>, p::star<normal_item>, p::must<rbrace>> {};
 struct texture_normal : p::seq<normal_block> {};
@@ -473,11 +478,12 @@ struct texture_block;
 // A block pattern's textures: checker texture { } texture { }.
 struct texture_list_texture : p::seq<texture_block, p::opt<comma>> {};
 // A patterned texture: a pattern and its modifiers, then its map.
-struct texture_item
-    : p::sor<directive<texture_item>, macro_call<texture_item>, texture_pigment, texture_finish,
-             texture_normal, slope_pattern, magnet_pattern, pigment_pattern, function_pattern,
-             pattern_kind, pattern_setting, pattern_pair_setting, pattern_wave, warp_block,
-             texture_map_block, texture_list_texture, uv_mapping, transformation> {};
+struct texture_item : p::sor<directive<texture_item>, macro_call<texture_item>, texture_pigment,
+                             texture_finish, texture_normal, slope_pattern, magnet_pattern,
+                             pigment_pattern, function_pattern, density_file_pattern, pattern_kind,
+                             pattern_setting, pattern_pair_setting, pattern_wave, warp_block,
+                             texture_map_block, texture_list_texture, uv_mapping, transformation> {
+};
 // tiles { TEXTURE... tile2 TEXTURE... } [transforms]: POV-Ray's Parse_Tiles,
 // a checker of two (layered) textures. As in POV-Ray's Parse_Texture it
 // comes first, and only transforms follow it.

@@ -149,6 +149,7 @@ TextureEvaluator::CompiledPattern::CompiledPattern(const pattern::Pattern& sourc
     // (pigment_pattern's pigment lives in this pattern's space.)
     if (source.pigment) pigment = shared.entry(shared.pigments, *source.pigment);
     function = source.function;
+    density_file = source.density_file;
     if (source.turbulence) turbulence = compile(*source.turbulence);
     frequency = CompiledScalar(source.frequency);
     phase = CompiledScalar(source.phase);
@@ -183,6 +184,7 @@ pattern::Values TextureEvaluator::CompiledPattern::values(const pattern::Hit& hi
     v.hit = &hit;
     v.pigment = pigment.get();
     v.function = function.get();
+    v.density_file = density_file.get();
     return v;
 }
 

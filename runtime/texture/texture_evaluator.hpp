@@ -168,6 +168,7 @@ class TextureEvaluator {
         std::shared_ptr<const CompiledPigment> pigment;
         // The function pattern's function.
         std::shared_ptr<const SpaceFunction> function;
+        std::shared_ptr<const pattern::DensityFile> density_file;
 
         CompiledPattern(const pattern::Pattern& source, const Transform& last,
                         const Transform& texture, Shared& shared);

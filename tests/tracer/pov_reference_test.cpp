@@ -398,6 +398,11 @@ TEST_CASE("media emit, absorb and scatter as in POV-Ray 3.7", "[tracer][pov][med
     check_stills("media", "emission", {"0", "0.5"});
     check_stills("media", "scattering", {"0", "0.5"});
     check_stills("media", "atmosphere", {"0", "0.5"});
+    // media/density_file.pov: an 8-bit .df3 file (blob.df3, made by the
+    // script in the README) as the density of emitting media, without
+    // interpolation, trilinear and tricubic, turning with clock. The
+    // still's tolerance (exact when written; refused before).
+    check_stills("media", "density_file", {"0", "0.5"});
 }
 
 TEST_CASE("projected_through lights only through its object, as in POV-Ray 3.7", "[tracer][pov]") {

@@ -15,6 +15,7 @@
 #include "runtime/texture/pattern/kinds/checker.hpp"
 #include "runtime/texture/pattern/kinds/crackle.hpp"
 #include "runtime/texture/pattern/kinds/cylindrical.hpp"
+#include "runtime/texture/pattern/kinds/density_file.hpp"
 #include "runtime/texture/pattern/kinds/dents.hpp"
 #include "runtime/texture/pattern/kinds/function.hpp"
 #include "runtime/texture/pattern/kinds/gradient.hpp"
@@ -59,6 +60,7 @@ using PatternKinds = PatternKindList<
     kinds::Checker,
     kinds::Crackle,
     kinds::Cylindrical,
+    kinds::DensityFilePattern,
     kinds::Dents,
     kinds::FunctionPattern,
     kinds::Gradient,

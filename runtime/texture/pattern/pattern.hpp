@@ -37,6 +37,8 @@ struct Pigment;
 
 namespace hexant::runtime::pattern {
 
+class DensityFile;  // density_file.hpp
+
 enum class Wave { Ramp, Sine, Triangle, Scallop, Cubic, Poly };
 
 // turbulence <x, y, z> with its octaves, omega and lambda.
@@ -94,6 +96,8 @@ struct Values {
     const PigmentSource* pigment = nullptr;
     // The function pattern's function of (x, y, z) and time.
     const SpaceFunction* function = nullptr;
+    // The density_file pattern's voxels (density_file.hpp).
+    const DensityFile* density_file = nullptr;
     bool has_turbulence = false;  // classic turbulence given
     glm::dvec3 turbulence{0.0};
     Octaves octaves;
@@ -223,6 +227,8 @@ struct Pattern {
     std::shared_ptr<const Pigment> pigment;
     // The function pattern's function.
     std::shared_ptr<const SpaceFunction> function;
+    // The density_file pattern's voxels.
+    std::shared_ptr<const DensityFile> density_file;
 
     // A pattern of `kind` with its defaults.
     static Pattern of(const Kind& kind);
