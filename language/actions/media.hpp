@@ -101,7 +101,8 @@ struct action<g::media_setting_value> {
                 v, name, 1, "at least one interval is needed in media (POV-Ray's rule)");
             // (POV-Ray keeps up to the largest count among a ray's media;
             // a runaway number is a runaway render.)
-            if (media.intervals > 10000) throw ValueError("intervals above 10000 in media");
+            if (media.intervals > 1000)
+                throw ValueError("intervals above 1000 in media (each ray would sample them all)");
         } else if (name == "method") {
             media.method = media_count(v, name, 1, "media's sample method is 1, 2 or 3");
             if (media.method > 3) throw ValueError("media's sample method is 1, 2 or 3");
@@ -113,7 +114,9 @@ struct action<g::media_setting_value> {
                 throw ValueError("aa_threshold in media must be greater than zero");
         } else if (name == "aa_level") {
             media.aa_level = media_count(v, name, 1, "aa_level in media must be at least one");
-            if (media.aa_level > 30) throw ValueError("aa_level in media above 30");
+            // (Each level may double an interval's samples: 2^16 is as many
+            // as a ray can afford; POV-Ray's scenes use 3 to 6.)
+            if (media.aa_level > 16) throw ValueError("aa_level in media above 16");
         } else if (name == "absorption") {
             media.absorption = to_colour(v, name);
         } else if (name == "emission") {
@@ -141,7 +144,7 @@ struct action<g::media_samples> {
             given.size() > 1 ? media_count(given[1], "samples", 1, least) : media.min_samples;
         if (media.max_samples < media.min_samples)
             throw ValueError("media's maximum number of samples is below its minimum");
-        if (media.max_samples > 100000) throw ValueError("samples above 100000 in media");
+        if (media.max_samples > 10000) throw ValueError("samples above 10000 in media");
     }
 };
 template <>
