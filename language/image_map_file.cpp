@@ -21,6 +21,7 @@ runtime::pattern::ImagePixels image_pixels(const image::StoredImage& stored,
         if (gamma.power) return std::pow(x, *gamma.power);
         if (stored.linear) return x;
         if (stored.encoding_gamma > 0.0) return std::pow(x, 1.0 / stored.encoding_gamma);
+        if (gamma.legacy_default && !stored.gamma_told) return std::pow(x, assumed_gamma);
         return image::srgb_decode(x);
     };
     const bool working_linear = assumed_gamma == 1.0;
@@ -35,6 +36,8 @@ runtime::pattern::ImagePixels image_pixels(const image::StoredImage& stored,
     runtime::pattern::ImagePixels out;
     out.premultiplied = stored.linear && stored.channels == 4;
     out.palette = stored.source == Source::Palette;
+    out.indices = stored.indices;
+    out.palette_size = static_cast<int>(stored.palette.size());
     out.width = stored.width;
     out.height = stored.height;
     const std::size_t n =

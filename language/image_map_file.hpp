@@ -17,6 +17,10 @@ namespace hexant::language {
 struct ImageGamma {
     std::optional<double> power;
     bool srgb = false;
+    // POV-Ray's kPOVList_GammaMode_AssumedGamma36 (a scene of a #version
+    // below 3.7 that set assumed_gamma before): a file that does not say
+    // its encoding is taken as encoded in the working space.
+    bool legacy_default = false;
 };
 
 // The pixels of `stored` (3 or 4 channels, rows top to bottom) in the

@@ -142,9 +142,59 @@ TEST_CASE("image_map's file: decoded as POV-Ray 3.7 decodes it", "[pattern][imag
     // assumed_gamma 2.2: the linear value encoded into the working space.
     p = image_pixels(stored, ImageGamma{2.2, false}, 2.2);
     CHECK(p.rgbt[0] == Approx(0.5));
+    // A #version below 3.7 that set assumed_gamma (POV-Ray's
+    // AssumedGamma36): a file that says nothing is in the working space;
+    // one that says is decoded as in 3.7.
+    ImageGamma legacy;
+    legacy.legacy_default = true;
+    p = image_pixels(stored, legacy, 1.0);
+    CHECK(p.rgbt[0] == Approx(std::pow(0.5, 1.8)));
+    stored.encoding_gamma = 0.0;
+    p = image_pixels(stored, legacy, 1.0);
+    CHECK(p.rgbt[0] == Approx(0.5));
+    p = image_pixels(stored, legacy, 2.2);
+    CHECK(p.rgbt[0] == Approx(0.5));
+    stored.gamma_told = true;  // an sRGB chunk
+    p = image_pixels(stored, legacy, 1.0);
+    CHECK(p.rgbt[0] == Approx(srgb(0.5)));
     // OpenEXR: linear as it is.
     stored.linear = true;
     stored.encoding_gamma = 0.0;
     p = image_pixels(stored, ImageGamma{}, 1.0);
     CHECK(p.rgbt[0] == Approx(0.5));
+}
+
+TEST_CASE("image_map: a palette entry's own filter and transmit", "[pattern][image]") {
+    // Entries 0 to 3 on a 2 x 2 image; the file gives entry 3 transmit 0.5.
+    auto pixels = std::make_shared<pt::ImagePixels>();
+    pixels->width = pixels->height = 2;
+    pixels->rgbt = {0.1f, 0, 0, 0, 0.2f, 0, 0, 0, 0.3f, 0, 0, 0, 0.4f, 0, 0, 0.5f};
+    pixels->palette = true;
+    pixels->indices = {0, 1, 2, 3};
+    pixels->palette_size = 4;
+    pt::ImageMap map;
+    map.images.push_back({hexant::runtime::Interval(-1e300, 1e300), pixels});
+    // transmit 1, 1 and filter 2, 0.25: those entries only.
+    map.palette_entries.resize(3);
+    map.palette_entries[1].has_transmit = true;
+    map.palette_entries[1].transmit = 1.0f;
+    map.palette_entries[2].has_filter = true;
+    map.palette_entries[2].filter = 0.25f;
+    const auto at = [&](double x, double y) {
+        return pt::image_colour(map, {x, y, 0.0}, 0.0, 0.0, 0.0);
+    };
+    CHECK(at(0.25, 0.75)[4] == 0.0);  // entry 0: the file's
+    CHECK(at(0.75, 0.75)[4] == 1.0);  // entry 1
+    CHECK(at(0.75, 0.75)[0] == Approx(0.2));
+    CHECK(at(0.25, 0.25)[3] == 0.25);  // entry 2's filter
+    CHECK(at(0.25, 0.25)[4] == 0.0);
+    CHECK(at(0.75, 0.25)[4] == 0.5);  // entry 3: the file's
+    // After `transmit all 0.125` (set before the entries'): every other
+    // entry's transmit is all's, entry 1 keeps its own.
+    map.transmit_all_written = true;
+    CHECK(pt::image_colour(map, {0.75, 0.25, 0.0}, 0.0, 0.0, 0.125)[4] == 0.125);
+    CHECK(pt::image_colour(map, {0.75, 0.75, 0.0}, 0.0, 0.0, 0.125)[4] == 1.0);
+    // Bilinear: the corners' own amounts blended.
+    map.interpolate = pt::ImageMap::Interpolate::Bilinear;
+    CHECK(pt::image_colour(map, {0.5, 0.75, 0.0}, 0.0, 0.0, 0.0)[4] == Approx(0.5));
 }

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -31,6 +32,18 @@ struct ImagePixels {
     // chunk's included) instead of adding to it, as POV-Ray's
     // Parse_Image_Map does to a colour-mapped image.
     bool palette = false;
+    // A palette image's index of each pixel (rows top to bottom) and its
+    // palette's size; empty for other images.
+    std::vector<std::uint8_t> indices;
+    int palette_size = 0;
+};
+
+// `filter N, AMOUNT` and `transmit N, AMOUNT` of a palette image: entry
+// N's own, set after the last `filter all` / `transmit all` (which set
+// every entry's, POV-Ray's Parse_Image_Map).
+struct PaletteEntryAmounts {
+    bool has_filter = false, has_transmit = false;
+    float filter = 0.0f, transmit = 0.0f;
 };
 
 struct ImageMap {
@@ -57,6 +70,8 @@ struct ImageMap {
     // when written, replaces a palette image's).
     TimeFunction filter_all = 0.0, transmit_all = 0.0;
     bool transmit_all_written = false;
+    // By palette index; entries past its end keep the file's (or all's).
+    std::vector<PaletteEntryAmounts> palette_entries;
 
     // The image at time t (the piece holding t; before the first, the
     // first; after the last, the last).
