@@ -150,6 +150,8 @@ struct action<g::image_map_flag> {
         auto& b = st.blocks.edit<ImageMapBuilder>(in.position(), flag.c_str());
         if (flag == "once")
             b.map.once = true;
+        else if (b.bump)
+            b.map.use_index = flag == "use_index";
         else if (flag == "use_index")
             throw UnsupportedError(
                 "use_index in an image_map is not supported by hexant (it reads colours)");

@@ -222,6 +222,12 @@ TEST_CASE("what POV-Ray refuses in textures is an error where it is written",
     hexant::test::reads(
         "sphere { 0, 1 pigment { image_map { png \"palette.png\" transmit 11, 1 } } }\n",
         with_tiles);
+    // bump_map in a normal; not in a pigment, as in POV-Ray.
+    hexant::test::reads(
+        "sphere { 0, 1 normal { bump_map { png \"palette.png\" use_index "
+        "bump_size 2 interpolate 2 once } scale 2 } }\n",
+        with_tiles);
+    error("sphere { 0, 1 pigment { bump_map { png \"palette.png\" } } }\n", "bump_map", with_tiles);
     error("sphere { 0, 1 pigment { image_map { png \"tiles.png\" map_type 3 } } }\n", "map_type is",
           with_tiles);
     error("sphere { 0, 1 pigment { image_map { \"tiles.png\" interpolate 1 } } }\n",

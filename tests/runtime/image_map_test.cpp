@@ -11,6 +11,7 @@
 #include <limits>
 
 #include <catch2/catch.hpp>
+#include <glm/geometric.hpp>
 
 #include "language/image_map_file.hpp"
 
@@ -197,4 +198,45 @@ TEST_CASE("image_map: a palette entry's own filter and transmit", "[pattern][ima
     // Bilinear: the corners' own amounts blended.
     map.interpolate = pt::ImageMap::Interpolate::Bilinear;
     CHECK(pt::image_colour(map, {0.5, 0.75, 0.0}, 0.0, 0.0, 0.0)[4] == Approx(0.5));
+}
+
+TEST_CASE("bump_map: three samples' heights tilt the normal", "[pattern][image]") {
+    // 3 x 2: the top row index 5, the bottom 0, 1, 2; grey 0.5 everywhere.
+    auto pixels = std::make_shared<pt::ImagePixels>();
+    pixels->width = 3;
+    pixels->height = 2;
+    pixels->rgbt.assign(6 * 4, 0.5f);
+    for (std::size_t i = 3; i < pixels->rgbt.size(); i += 4) pixels->rgbt[i] = 0.0f;
+    pixels->palette = true;
+    pixels->indices = {5, 5, 5, 0, 1, 2};
+    pixels->palette_size = 6;
+    pt::ImageMap map;
+    map.images.push_back({hexant::runtime::Interval(-1e300, 1e300), pixels});
+    const glm::dvec3 up(0.0, 1.0, 0.0), wall(0.0, 0.0, -1.0);
+    // The colours are flat: the normal unchanged, whatever it is.
+    for (const glm::dvec3& n : {up, wall, glm::normalize(glm::dvec3(1.0, 2.0, -3.0))}) {
+        const glm::dvec3 b = pt::bump_map_normal(map, {0.5, 0.75, 0.0}, 0.0, 0.5, n);
+        CHECK(b.x == Approx(n.x).margin(1e-12));
+        CHECK(b.y == Approx(n.y).margin(1e-12));
+        CHECK(b.z == Approx(n.z).margin(1e-12));
+    }
+    // use_index at the top middle pixel: heights 0.5 * (5, 0, 2) here, one
+    // down to the left and one down to the right; about +y the triangle's
+    // normal (h2 - h3, 2, 2 h1 - h2 - h3) with z turned.
+    map.use_index = true;
+    const glm::dvec3 b = pt::bump_map_normal(map, {0.5, 0.75, 0.0}, 0.0, 0.5, up);
+    const double l = std::sqrt(21.0);
+    CHECK(b.x == Approx(-1.0 / l));
+    CHECK(b.y == Approx(2.0 / l));
+    CHECK(b.z == Approx(-4.0 / l));
+    // Off an image used once: unchanged.
+    map.once = true;
+    const glm::dvec3 off = pt::bump_map_normal(map, {1.5, 0.5, 0.0}, 0.0, 0.5, wall);
+    CHECK(off == wall);
+    // An image without a palette has no index: its greys (flat here).
+    map.once = false;
+    pixels->indices.clear();
+    pixels->palette = false;
+    const glm::dvec3 grey = pt::bump_map_normal(map, {0.5, 0.75, 0.0}, 0.0, 0.5, up);
+    CHECK(grey.y == Approx(1.0));
 }

@@ -744,6 +744,16 @@ TEST_CASE("an image_map's palette entries agree with POV-Ray 3.7's",
     check_stills("textures", "palette", {"0", "0.5"});
 }
 
+TEST_CASE("bump_map agrees with POV-Ray 3.7's", "[tracer][pov][pattern][image]") {
+    // textures/bump_map.pov: normal { bump_map { } } from a palette PNG's
+    // indices (use_index, bilinear) on a wall sliding with clock, and from
+    // an RGBA PNG's greys on a turning sphere (spherical, bicubic), on the
+    // floor (tiled) and once on a small sphere, the files read undecoded.
+    // Same tolerance as the still's (0 pixels off at either clock when
+    // written).
+    check_stills("textures", "bump_map", {"0", "0.5"});
+}
+
 TEST_CASE("uv_mapping agrees with POV-Ray 3.7's", "[tracer][pov][pattern][image]") {
     // textures/uv_mapping.pov: uv-mapped pigments (an image on a sphere
     // and a mesh2's uv_vectors, a gradient on a lathe, checkers on a sor,

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include <glm/geometric.hpp>
+
 namespace hexant::runtime::pattern {
 
 namespace {
@@ -255,6 +257,13 @@ Rgbft sample(const ImageMap& map, const ImagePixels& image, double x, double y, 
     return sum;
 }
 
+// POV-Ray's Colour::greyscale of a single-precision colour.
+double grey(const Rgbft& c) {
+    return static_cast<float>(0.297 * static_cast<float>(c.c[0]) +
+                              0.589 * static_cast<float>(c.c[1]) +
+                              0.114 * static_cast<float>(c.c[2]));
+}
+
 }  // namespace
 
 std::array<double, 5> image_colour(const ImageMap& map, const glm::dvec3& point, double t,
@@ -275,6 +284,44 @@ std::array<double, 5> image_colour(const ImageMap& map, const glm::dvec3& point,
     std::array<double, 5> out;
     for (int c = 0; c < 5; ++c) out[static_cast<std::size_t>(c)] = static_cast<float>(sum.c[c]);
     return out;
+}
+
+glm::dvec3 bump_map_normal(const ImageMap& map, const glm::dvec3& point, double t, double amount,
+                           const glm::dvec3& normal) {
+    const ImagePixels& image = map.at(t);
+    double x = 0.0, y = 0.0;
+    // (Off the image: the normal as it was.)
+    if (!map_pos(map, image, point, x, y)) return normal;
+    // Three samples: here, one pixel left and down, one right and down
+    // (POV-Ray's bump_map, its coordinates wrapped by one image).
+    const auto wrap_once = [](double c, int size) {
+        return c < 0.0 ? c + size : c >= size ? c - size : c;
+    };
+    const Rgbft s1 = sample(map, image, x, y, 0.0, 0.0);
+    x = wrap_once(x - 1.0, image.width);
+    y = wrap_once(y + 1.0, image.height);
+    const Rgbft s2 = sample(map, image, x, y, 0.0, 0.0);
+    x = wrap_once(x + 2.0, image.width);
+    const Rgbft s3 = sample(map, image, x, y, 0.0, 0.0);
+    const bool colour = !map.use_index || s1.index == -1 || s2.index == -1 || s3.index == -1;
+    const auto height = [&](const Rgbft& s) { return amount * (colour ? grey(s) : s.index); };
+    const glm::dvec3 p1(0.0, height(s1), 0.0), p2(-1.0, height(s2), 1.0), p3(1.0, height(s3), 1.0);
+    // The triangle's normal, in a frame about the surface's normal.
+    glm::dvec3 bump = glm::cross(p3 - p2, p1 - p2);
+    bump /= glm::length(bump);
+    glm::dvec3 yprime = normal;
+    glm::dvec3 xprime = glm::cross(yprime, glm::dvec3(0.0, 1.0, 0.0));
+    double length = glm::length(xprime);
+    if (length < kEpsilon) {
+        yprime = std::fabs(normal.y - 1.0) < kEpsilon ? glm::dvec3(0.0, 1.0, 0.0)
+                                                      : glm::dvec3(0.0, -1.0, 0.0);
+        xprime = glm::dvec3(1.0, 0.0, 0.0);
+        length = 1.0;
+    }
+    xprime /= length;
+    glm::dvec3 zprime = glm::cross(xprime, yprime);
+    zprime /= glm::length(zprime);
+    return xprime * bump.x + yprime * bump.y - zprime * bump.z;
 }
 
 }  // namespace hexant::runtime::pattern

@@ -62,6 +62,8 @@ struct ImageMap {
     MapType map_type = MapType::Planar;
     Interpolate interpolate = Interpolate::None;
     bool once = false;
+    // A bump_map's use_index: heights from palette indices, not greys.
+    bool use_index = false;
     // repeat <u, v> and offset <u, v> as written (POV-Ray scales them by
     // each image's size).
     double repeat_u = 1.0, repeat_v = 1.0;
@@ -84,5 +86,14 @@ struct ImageMap {
 // POV-Ray.
 std::array<double, 5> image_colour(const ImageMap& map, const glm::dvec3& point, double t,
                                    double filter_all, double transmit_all);
+
+// bump_map { }: the unit normal `normal` (pattern space) tilted by the
+// image at `point` (POV-Ray 3.7's bump_map): the heights of three samples,
+// here and one pixel down to each side, each `amount` times the grey of
+// the image's values as the file holds them (or, with use_index on a
+// palette image, its index), make a triangle whose normal is turned into
+// a frame about `normal`. Off an image used `once`, `normal` unchanged.
+glm::dvec3 bump_map_normal(const ImageMap& map, const glm::dvec3& point, double t, double amount,
+                           const glm::dvec3& normal);
 
 }  // namespace hexant::runtime::pattern
