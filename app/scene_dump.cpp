@@ -144,6 +144,9 @@ std::string pigment_body(const runtime::Pigment& p, double t, Shared& shared) {
 
 std::string normal(const runtime::Normal& n, double t, Shared& shared) {
     if (!n.unsupported_name.empty()) return n.unsupported_name;
+    if (n.bump_map)
+        return "bump_map file=" + n.bump_map->file + " amount=" + number(n.amount(t)) +
+               modifiers(n.patterned, t);
     std::string s = std::string(n.patterned.kind->name) + " amount=" + number(n.amount(t)) +
                     modifiers(n.patterned, t);
     // A normal map's entries (value and normal), a slope map's (value,

@@ -6,6 +6,8 @@
 // second before main() (docs/benchmarks.md, "Scale: the swarm"; issue 21).
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -16,6 +18,9 @@ namespace hexant::image {
 // bottom: `linear` values are linear light (EXR); otherwise they are the
 // file's encoding scaled to [0, 1] (an 8-bit PNG's byte / 255, sRGB).
 // `channels` is 3 (RGB) or 4 (RGBA; gray and palette files are expanded).
+// A palette file also keeps each pixel's index and its palette, which
+// POV-Ray reads for a height_field, a bump_map's use_index and an
+// image_map's filter and transmit of one palette entry.
 struct StoredImage {
     int width = 0, height = 0, channels = 0;
     bool linear = false;
@@ -25,6 +30,9 @@ struct StoredImage {
     // says sRGB (an sRGB chunk) or nothing (then sRGB, as PNG and W3C
     // recommend).
     double encoding_gamma = 0.0;
+    // Whether the file says how it is encoded (a PNG's sRGB or gAMA
+    // chunk): POV-Ray decodes one that does not by the scene's default.
+    bool gamma_told = false;
     // What the file held before it was expanded to RGB or RGBA: its colour
     // type, its bits per sample, and whether its alpha came from a colour
     // key (a PNG tRNS chunk on an RGB or gray image).
@@ -32,6 +40,11 @@ struct StoredImage {
     Source source = Source::Rgb;
     int source_bits = 8;
     bool colour_key = false;
+    // Source::Palette: each pixel's index (rows top to bottom) and the
+    // palette's entries, red, green, blue and alpha as `values` holds them
+    // (alpha 1 where a tRNS chunk gives none).
+    std::vector<std::uint8_t> indices;
+    std::vector<std::array<float, 4>> palette;
 };
 
 // One file format. `write` writes `width` x `height` RGB pixels: bytes in

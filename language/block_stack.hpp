@@ -42,6 +42,8 @@ struct ImageMapBuilder {
     ImageGamma gamma;
     bool gamma_srgb_next = false;  // `gamma srgb` just read
     bool all_next = false;         // `filter all` / `transmit all` being read
+    bool bump = false;             // a normal's bump_map { }
+    std::optional<TimeFunction> bump_size;
 };
 
 // A block under construction.

@@ -19,22 +19,26 @@ runtime::pattern::ImagePixels image_pixels(const image::StoredImage& stored,
     const auto decode = [&](double x) {
         if (gamma.srgb) return image::srgb_decode(x);
         if (gamma.power) return std::pow(x, *gamma.power);
-        if (stored.linear) return x;
+        if (stored.linear || gamma.undecoded) return x;
         if (stored.encoding_gamma > 0.0) return std::pow(x, 1.0 / stored.encoding_gamma);
+        if (gamma.legacy_default && !stored.gamma_told) return std::pow(x, assumed_gamma);
         return image::srgb_decode(x);
     };
-    const bool working_linear = assumed_gamma == 1.0;
+    const bool working_linear = assumed_gamma == 1.0 || gamma.undecoded;
     using Source = image::StoredImage::Source;
     // POV-Ray 3.7 keeps a gray image of 8 bits or fewer as 8-bit integers
     // after decoding (its Gray_Int8), truncated: dark tones are coarse
     // there, and so here.
-    const bool coarse = stored.source == Source::Gray && stored.source_bits <= 8 && !stored.linear;
+    const bool coarse = stored.source == Source::Gray && stored.source_bits <= 8 &&
+                        !stored.linear && !gamma.undecoded;
     // It ignores an RGB image's colour key (tRNS); a gray one's it does not
     // read well (it crashes): hexant keeps that one as alpha.
     const bool keyed_rgb = stored.colour_key && stored.source == Source::Rgb;
     runtime::pattern::ImagePixels out;
     out.premultiplied = stored.linear && stored.channels == 4;
     out.palette = stored.source == Source::Palette;
+    out.indices = stored.indices;
+    out.palette_size = static_cast<int>(stored.palette.size());
     out.width = stored.width;
     out.height = stored.height;
     const std::size_t n =

@@ -17,6 +17,13 @@ namespace hexant::language {
 struct ImageGamma {
     std::optional<double> power;
     bool srgb = false;
+    // POV-Ray's kPOVList_GammaMode_AssumedGamma36 (a scene of a #version
+    // below 3.7 that set assumed_gamma before): a file that does not say
+    // its encoding is taken as encoded in the working space.
+    bool legacy_default = false;
+    // A bump_map's (POV-Ray reads it as a height_field's): the file's
+    // values as they are unless the scene gave a gamma, no working space.
+    bool undecoded = false;
 };
 
 // The pixels of `stored` (3 or 4 channels, rows top to bottom) in the

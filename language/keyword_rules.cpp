@@ -73,7 +73,7 @@ constexpr auto kRules = std::to_array<KeywordRuleEntry>({
     {"brick_size", KeywordRule::Rendered, ""},
     {"brightness", KeywordRule::Warned, "inside radiosity { }, which is warned as a whole"},
     {"brilliance", KeywordRule::Rendered, ""},
-    {"bump_map", KeywordRule::Refused, ""},
+    {"bump_map", KeywordRule::Rendered, ""},
     {"bump_size", KeywordRule::Rendered, ""},
     {"bumps", KeywordRule::Rendered, ""},
     {"camera", KeywordRule::Rendered, ""},

@@ -1,5 +1,6 @@
 #include "image/formats/png_format.hpp"
 
+#include <array>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -71,6 +72,8 @@ bool read_rows(std::FILE* file, const Reader& r, std::vector<unsigned char>& byt
     if (!png_get_valid(r.png, r.info, PNG_INFO_sRGB) && png_get_valid(r.png, r.info, PNG_INFO_gAMA))
         png_get_gAMA(r.png, r.info, &file_gamma);
     out.encoding_gamma = file_gamma;
+    out.gamma_told =
+        png_get_valid(r.png, r.info, PNG_INFO_sRGB) || png_get_valid(r.png, r.info, PNG_INFO_gAMA);
     switch (png_get_color_type(r.png, r.info)) {
         case PNG_COLOR_TYPE_GRAY:
             out.source = StoredImage::Source::Gray;
@@ -91,12 +94,32 @@ bool read_rows(std::FILE* file, const Reader& r, std::vector<unsigned char>& byt
     out.source_bits = png_get_bit_depth(r.png, r.info);
     out.colour_key =
         out.source != StoredImage::Source::Palette && png_get_valid(r.png, r.info, PNG_INFO_tRNS);
-    png_set_expand(r.png);       // palette to RGB, low-bit gray to 8 bits, tRNS to alpha
-    png_set_gray_to_rgb(r.png);  // gray as RGB, so every image has 3 or 4 channels
-    png_read_update_info(r.png, r.info);
+    if (out.source == StoredImage::Source::Palette) {
+        // Kept as indices, one a byte, and expanded by read_png from the
+        // palette (POV-Ray reads the indices too).
+        png_colorp entries = nullptr;
+        int count = 0;
+        if (!png_get_PLTE(r.png, r.info, &entries, &count) || count < 1)
+            png_error(r.png, "a palette image without its palette");
+        png_bytep alpha = nullptr;
+        int alphas = 0;
+        if (!png_get_tRNS(r.png, r.info, &alpha, &alphas, nullptr)) alphas = 0;
+        out.palette.resize(static_cast<std::size_t>(count));
+        for (int i = 0; i < count; ++i)
+            out.palette[static_cast<std::size_t>(i)] = {
+                float(entries[i].red / 255.0), float(entries[i].green / 255.0),
+                float(entries[i].blue / 255.0), i < alphas ? float(alpha[i] / 255.0) : 1.0f};
+        png_set_packing(r.png);
+        png_read_update_info(r.png, r.info);
+        out.channels = alphas > 0 ? 4 : 3;
+    } else {
+        png_set_expand(r.png);       // low-bit gray to 8 bits, tRNS to alpha
+        png_set_gray_to_rgb(r.png);  // gray as RGB, so every image has 3 or 4 channels
+        png_read_update_info(r.png, r.info);
+        out.channels = png_get_channels(r.png, r.info);
+    }
     out.width = static_cast<int>(png_get_image_width(r.png, r.info));
     out.height = static_cast<int>(png_get_image_height(r.png, r.info));
-    out.channels = png_get_channels(r.png, r.info);
     depth = png_get_bit_depth(r.png, r.info);
     if (std::size_t(out.width) * std::size_t(out.height) > kMaxPixels)
         png_error(r.png, "image too large");
@@ -124,8 +147,20 @@ StoredImage read_png(const fs::path& file) {
     int depth = 8;
     if (!read_rows(stream.get(), r, bytes, rows, out, depth)) throw std::runtime_error(message);
     out.linear = false;
-    out.values.resize(std::size_t(out.width) * std::size_t(out.height) * std::size_t(out.channels));
-    if (depth == 16)  // big-endian samples
+    const std::size_t pixels = std::size_t(out.width) * std::size_t(out.height);
+    out.values.resize(pixels * std::size_t(out.channels));
+    if (out.source == StoredImage::Source::Palette) {
+        if (bytes.size() != pixels) throw std::runtime_error("unexpected palette row size");
+        const std::size_t c = std::size_t(out.channels);
+        for (std::size_t i = 0; i < pixels; ++i) {
+            // (An index past the palette is taken as black, opaque.)
+            const std::array<float, 4> entry = bytes[i] < out.palette.size()
+                                                   ? out.palette[bytes[i]]
+                                                   : std::array<float, 4>{0.0f, 0.0f, 0.0f, 1.0f};
+            for (std::size_t k = 0; k < c; ++k) out.values[i * c + k] = entry[k];
+        }
+        out.indices = std::move(bytes);
+    } else if (depth == 16)  // big-endian samples
         for (std::size_t i = 0; i < out.values.size(); ++i)
             out.values[i] = float((unsigned(bytes[2 * i]) << 8 | bytes[2 * i + 1]) / 65535.0);
     else

@@ -114,7 +114,8 @@ struct action<g::normal_map_entry> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         auto& written = st.blocks.edit<runtime::Normal>(in.position(), "a normal_map entry");
-        if (written.patterned.kind == nullptr && written.unsupported_name.empty())
+        if (written.patterned.kind == nullptr && written.unsupported_name.empty() &&
+            !written.bump_map)
             throw ValueError("a normal_map entry needs a pattern (POV-Ray: no normal type given)");
         check_average(written.patterned, !written.normal_map.empty(), "normal_map");
         close_map_entry(st, in.position(), "normal_map", &runtime::Normal::normal_map);

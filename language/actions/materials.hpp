@@ -150,6 +150,8 @@ struct action<g::image_map_flag> {
         auto& b = st.blocks.edit<ImageMapBuilder>(in.position(), flag.c_str());
         if (flag == "once")
             b.map.once = true;
+        else if (b.bump)
+            b.map.use_index = flag == "use_index";
         else if (flag == "use_index")
             throw UnsupportedError(
                 "use_index in an image_map is not supported by hexant (it reads colours)");
@@ -171,15 +173,46 @@ struct action<g::image_map_filter> {
         auto& b = st.blocks.edit<ImageMapBuilder>(in.position(), name.c_str());
         const bool all = b.all_next;
         b.all_next = false;
-        if (!all || args.size() != 1)
-            throw UnsupportedError(
-                name +
-                " of one palette entry is not supported by hexant (it reads a palette "
-                "image's colours); " +
-                name + " all AMOUNT is");
-        (name == "filter" ? b.map.filter_all : b.map.transmit_all) =
-            to_float(args[0], name + " all");
-        if (name == "transmit") b.map.transmit_all_written = true;
+        const bool filter = name == "filter";
+        if (all) {
+            if (args.size() != 1) throw ValueError(name + " all takes one amount, as in POV-Ray");
+            // (Every entry's, the ones set before included.)
+            (filter ? b.map.filter_all : b.map.transmit_all) = to_float(args[0], name + " all");
+            if (!filter) b.map.transmit_all_written = true;
+            for (auto& entry : b.map.palette_entries)
+                (filter ? entry.has_filter : entry.has_transmit) = false;
+            return;
+        }
+        if (args.size() != 2)
+            throw ValueError(name + " takes a palette entry and an amount (" + name +
+                             " N, AMOUNT) or all and an amount, as in POV-Ray");
+        // POV-Ray's Parse_Image_Map: the entry (int)(N + 0.01) of a palette
+        // image, in its palette.
+        const double n = to_constant(args[0], name + "'s palette entry");
+        const double entry = std::isfinite(n) ? std::trunc(n + 0.01) : -1.0;
+        char written[32];
+        std::snprintf(written, sizeof written, "%g", n);
+        for (const auto& [time, stored] : b.stored) {
+            if (stored->source != image::StoredImage::Source::Palette)
+                throw ValueError(name + " N, AMOUNT is only for a palette image, as in POV-Ray; '" +
+                                 b.map.file + "' has none (" + name + " all AMOUNT is for any)");
+            if (entry < 0.0 || entry >= static_cast<double>(stored->palette.size()))
+                throw ValueError(name + "'s palette entry " + written + " is out of range: '" +
+                                 b.map.file + "' has " + std::to_string(stored->palette.size()) +
+                                 " entries");
+        }
+        const TimeFunction amount = to_float(args[1], name + " of a palette entry");
+        if (!amount.is_constant())
+            throw UnsupportedError(name +
+                                   " of one palette entry that moves with clock is not "
+                                   "supported by hexant; " +
+                                   name + " all AMOUNT may move");
+        const auto k = static_cast<std::size_t>(entry);
+        if (b.map.palette_entries.size() <= k) b.map.palette_entries.resize(k + 1);
+        auto& own = b.map.palette_entries[k];
+        // (POV-Ray keeps a palette's filter and transmit in single precision.)
+        (filter ? own.filter : own.transmit) = static_cast<float>(amount.constant());
+        (filter ? own.has_filter : own.has_transmit) = true;
     }
 };
 template <>
@@ -189,6 +222,9 @@ struct action<g::image_map_block> {
         ImageMapBuilder b = std::move(std::get<ImageMapBuilder>(st.blocks.top()));
         st.blocks.close();
         st.image_maps_read.push_back(in.position());
+        // (POV-Ray's gamma mode as it stands here: assumed_gamma set under
+        // a #version below 3.7.)
+        b.gamma.legacy_default = st.assumed_gamma_set && (st.version_set ? st.version : 3.62) < 3.7;
         auto map = std::make_shared<runtime::pattern::ImageMap>(std::move(b.map));
         // (Each distinct file decoded once.)
         std::map<const image::StoredImage*, std::shared_ptr<const runtime::pattern::ImagePixels>>

@@ -2,6 +2,7 @@
 // Part of the actions (language/actions.hpp).
 #pragma once
 
+#include "language/actions/bump_map.hpp"
 #include "language/actions/materials.hpp"
 
 namespace hexant::language {

@@ -111,7 +111,10 @@ inline PatternSlot start_pattern(Interpreter& st, const p::position& at, const s
     const runtime::pattern::Kind* kind = runtime::pattern::find_kind(name);
     if (kind == nullptr) throw ValueError("no pattern " + name);
     if (slot.pigment) replace_uv_mapping(*slot.pigment);
-    if (slot.normal) replace_uv_mapping(*slot.normal);
+    if (slot.normal) {
+        replace_uv_mapping(*slot.normal);
+        slot.normal->bump_map = nullptr;
+    }
     slot.pattern = runtime::pattern::Pattern::of(*kind);
     // (The scene's noise generator, global_settings { noise_generator }.)
     slot.pattern.noise_generator = st.scene.global.noise_generator;
@@ -646,7 +649,7 @@ struct action<g::normal_block> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         auto& normal = st.blocks.edit<runtime::Normal>(in.position(), "a normal");
-        if (normal.patterned.kind == nullptr && normal.unsupported_name.empty())
+        if (normal.patterned.kind == nullptr && normal.unsupported_name.empty() && !normal.bump_map)
             throw ValueError("a normal needs a pattern (POV-Ray: no normal type given)");
         check_average(normal.patterned, !normal.normal_map.empty(), "normal_map");
         close_uv_mapping(normal.uv_mapping);

@@ -423,12 +423,21 @@ struct slope_map_block : p::seq<slope_map_open, p::star<slope_map_element>, p::m
 struct normal_block;
 // A block pattern's normals: checker normal { } normal { }.
 struct normal_list_normal : p::seq<normal_block, p::opt<comma>> {};
+// bump_map { [TYPE] FILE [gamma G] bump_size S map_type N interpolate N
+// use_index|use_colour once repeat offset } in a normal (POV-Ray's
+// Parse_Bump_Map), its file found and read as image_map's.
+struct bump_map_open : p::seq<TAO_PEGTL_KEYWORD("bump_map"), ws, p::must<lbrace>> {};
+struct bump_map_size : p::seq<TAO_PEGTL_KEYWORD("bump_size"), ws, p::must<pattern_setting_value>> {
+};
+struct bump_map_item : p::sor<image_map_gamma, image_map_setting, image_map_flag, bump_map_size> {};
+struct bump_map_block : p::seq<bump_map_open, p::opt<image_file_type>, p::must<image_map_file>,
+                               p::star<bump_map_item>, p::must<rbrace>> {};
 struct normal_item
-    : p::sor<directive<normal_item>, macro_call<normal_item>, slope_pattern, magnet_pattern,
-             pigment_pattern, function_pattern, density_file_pattern, pattern_kind, pattern_setting,
-             pattern_pair_setting, pattern_wave, warp_block, normal_setting, normal_no_bump_scale,
-             normal_map_block, slope_map_block, normal_list_normal, uv_mapping, unsupported_pattern,
-             transformation> {};
+    : p::sor<directive<normal_item>, macro_call<normal_item>, bump_map_block, slope_pattern,
+             magnet_pattern, pigment_pattern, function_pattern, density_file_pattern, pattern_kind,
+             pattern_setting, pattern_pair_setting, pattern_wave, warp_block, normal_setting,
+             normal_no_bump_scale, normal_map_block, slope_map_block, normal_list_normal,
+             uv_mapping, unsupported_pattern, transformation> {};
 struct normal_block
     : p::seq<normal_open, p::opt<normal_base>, p::star<normal_item>, p::must<rbrace>> {};
 struct texture_normal : p::seq<normal_block> {};

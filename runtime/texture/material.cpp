@@ -109,7 +109,8 @@ bool depends(const Pigment& p, Seen& seen) {
 
 bool depends(const Normal& n, Seen& seen) {
     if (pattern_depends(n.patterned, seen) || n.amount.depends_on_time() ||
-        n.accuracy.depends_on_time() || n.transform.depends_on_time())
+        n.accuracy.depends_on_time() || n.transform.depends_on_time() ||
+        (n.bump_map && n.bump_map->images.size() > 1))
         return true;
     for (const auto& e : n.normal_map)
         if (e.value.depends_on_time() || entry_depends(*e.normal, seen)) return true;

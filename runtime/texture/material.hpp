@@ -167,6 +167,10 @@ struct Normal {
     // normals blended (when not empty, the pattern's own bumps are not used).
     std::vector<NormalMapEntry> normal_map;
     std::vector<SlopeMapEntry> slope_map;  // empty: the pattern's value itself
+    // bump_map { }: the normal tilted by an image (pattern/image_map.hpp's
+    // bump_map_normal), placed by `patterned`'s warps and turbulence; its
+    // kind is then null. bump_size is `amount`.
+    std::shared_ptr<const pattern::ImageMap> bump_map;
     // The transforms after the pattern's last warp: pattern space to
     // object space (as Pigment::transform).
     Transform transform;

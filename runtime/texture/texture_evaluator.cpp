@@ -302,7 +302,7 @@ const pattern::Pattern& supported(const Normal& n) {
     if (!n.unsupported_name.empty())
         throw ObjectError(n.unsupported_place, "normal pattern '" + n.unsupported_name +
                                                    "' is not supported by hexant's tracer");
-    if (n.patterned.kind == nullptr)
+    if (n.patterned.kind == nullptr && !n.bump_map)
         throw std::logic_error("TextureEvaluator: a normal without its pattern");
     return n.patterned;
 }
@@ -423,7 +423,8 @@ TextureEvaluator::CompiledNormal::CompiledNormal(const Normal& n, const Transfor
       amount(n.amount),
       accuracy(n.accuracy),
       no_bump_scale(n.no_bump_scale),
-      uv(n.uv_mapping != UvMapping::Off) {
+      uv(n.uv_mapping != UvMapping::Off),
+      bump_map(n.bump_map) {
     // (Each entry of a normal map in the space of this pattern.)
     for (const auto& e : n.normal_map)
         normals.push_back({CompiledScalar(e.value), shared.entry(shared.normals, *e.normal)});
@@ -554,7 +555,9 @@ std::optional<glm::dvec3> TextureEvaluator::CompiledNormal::perturb_scaled(
     const glm::dvec3 point = p.walk(start, t, v, [&](const glm::dmat3& m) { maps.push(m); });
     const glm::dvec3 pn = unit_unless(no_bump_scale, maps.into(unit_unless(no_bump_scale, normal)));
     glm::dvec3 bumped;
-    if (p.kind->average) {
+    if (bump_map) {
+        bumped = pattern::bump_map_normal(*bump_map, point, t, pattern::single(amount.at(t)), pn);
+    } else if (p.kind->average) {
         // POV-Ray's Do_Average_Normals: every entry's normal (as its own
         // Perturb_Normal leaves it) at this pattern's point, weighted by
         // its value.

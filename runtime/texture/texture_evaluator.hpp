@@ -241,6 +241,7 @@ class TextureEvaluator {
         std::vector<pattern::SlopeEntry> fixed_slopes;
         std::vector<std::array<CompiledScalar, 3>> slopes;
         bool uv = false;  // uv_mapping: perturbs at (u, v, 0), nothing around it applied
+        std::shared_ptr<const pattern::ImageMap> bump_map;  // bump_map { }: its image
 
         CompiledNormal(const Normal& normal, const Transform& texture, Shared& shared);
         // `normal` (in the space around it) perturbed at `point` (there

@@ -201,8 +201,9 @@ TEST_CASE("what POV-Ray refuses in textures is an error where it is written",
           "cannot go with checker");
     error("sphere { 0, 1 normal { gradient x slope_map { [0 1 2 3] } } }\n", "slope_map");
     // image_map: a file that is missing or outside what a scene may read,
-    // a type hexant does not read, a palette entry's filter, a map type
-    // POV-Ray does not have.
+    // a type hexant does not read, a palette entry's filter on an image
+    // without a palette or out of its range, a map type POV-Ray does not
+    // have.
     error("sphere { 0, 1 pigment { image_map { png \"no_such_image.png\" } } }\n",
           "image file 'no_such_image.png' not found");
     error("sphere { 0, 1 pigment { image_map { png \"/etc/hostname\" } } }\n",
@@ -213,7 +214,20 @@ TEST_CASE("what POV-Ray refuses in textures is an error where it is written",
     with_tiles.include_paths = {std::string(HEXANT_SOURCE_DIR) +
                                 "/tests/tracer/pov_reference/textures"};
     error("sphere { 0, 1 pigment { image_map { png \"tiles.png\" filter 3, 0.5 } } }\n",
-          "palette entry", with_tiles);
+          "only for a palette image", with_tiles);
+    error("sphere { 0, 1 pigment { image_map { png \"palette.png\" transmit 12, 1 } } }\n",
+          "palette entry 12 is out of range: 'palette.png' has 12 entries", with_tiles);
+    error("sphere { 0, 1 pigment { image_map { png \"palette.png\" transmit 3 } } }\n",
+          "takes a palette entry and an amount", with_tiles);
+    hexant::test::reads(
+        "sphere { 0, 1 pigment { image_map { png \"palette.png\" transmit 11, 1 } } }\n",
+        with_tiles);
+    // bump_map in a normal; not in a pigment, as in POV-Ray.
+    hexant::test::reads(
+        "sphere { 0, 1 normal { bump_map { png \"palette.png\" use_index "
+        "bump_size 2 interpolate 2 once } scale 2 } }\n",
+        with_tiles);
+    error("sphere { 0, 1 pigment { bump_map { png \"palette.png\" } } }\n", "bump_map", with_tiles);
     error("sphere { 0, 1 pigment { image_map { png \"tiles.png\" map_type 3 } } }\n", "map_type is",
           with_tiles);
     error("sphere { 0, 1 pigment { image_map { \"tiles.png\" interpolate 1 } } }\n",

@@ -11,6 +11,7 @@
 #include <limits>
 
 #include <catch2/catch.hpp>
+#include <glm/geometric.hpp>
 
 #include "language/image_map_file.hpp"
 
@@ -142,9 +143,100 @@ TEST_CASE("image_map's file: decoded as POV-Ray 3.7 decodes it", "[pattern][imag
     // assumed_gamma 2.2: the linear value encoded into the working space.
     p = image_pixels(stored, ImageGamma{2.2, false}, 2.2);
     CHECK(p.rgbt[0] == Approx(0.5));
+    // A #version below 3.7 that set assumed_gamma (POV-Ray's
+    // AssumedGamma36): a file that says nothing is in the working space;
+    // one that says is decoded as in 3.7.
+    ImageGamma legacy;
+    legacy.legacy_default = true;
+    p = image_pixels(stored, legacy, 1.0);
+    CHECK(p.rgbt[0] == Approx(std::pow(0.5, 1.8)));
+    stored.encoding_gamma = 0.0;
+    p = image_pixels(stored, legacy, 1.0);
+    CHECK(p.rgbt[0] == Approx(0.5));
+    p = image_pixels(stored, legacy, 2.2);
+    CHECK(p.rgbt[0] == Approx(0.5));
+    stored.gamma_told = true;  // an sRGB chunk
+    p = image_pixels(stored, legacy, 1.0);
+    CHECK(p.rgbt[0] == Approx(srgb(0.5)));
     // OpenEXR: linear as it is.
     stored.linear = true;
     stored.encoding_gamma = 0.0;
     p = image_pixels(stored, ImageGamma{}, 1.0);
     CHECK(p.rgbt[0] == Approx(0.5));
+}
+
+TEST_CASE("image_map: a palette entry's own filter and transmit", "[pattern][image]") {
+    // Entries 0 to 3 on a 2 x 2 image; the file gives entry 3 transmit 0.5.
+    auto pixels = std::make_shared<pt::ImagePixels>();
+    pixels->width = pixels->height = 2;
+    pixels->rgbt = {0.1f, 0, 0, 0, 0.2f, 0, 0, 0, 0.3f, 0, 0, 0, 0.4f, 0, 0, 0.5f};
+    pixels->palette = true;
+    pixels->indices = {0, 1, 2, 3};
+    pixels->palette_size = 4;
+    pt::ImageMap map;
+    map.images.push_back({hexant::runtime::Interval(-1e300, 1e300), pixels});
+    // transmit 1, 1 and filter 2, 0.25: those entries only.
+    map.palette_entries.resize(3);
+    map.palette_entries[1].has_transmit = true;
+    map.palette_entries[1].transmit = 1.0f;
+    map.palette_entries[2].has_filter = true;
+    map.palette_entries[2].filter = 0.25f;
+    const auto at = [&](double x, double y) {
+        return pt::image_colour(map, {x, y, 0.0}, 0.0, 0.0, 0.0);
+    };
+    CHECK(at(0.25, 0.75)[4] == 0.0);  // entry 0: the file's
+    CHECK(at(0.75, 0.75)[4] == 1.0);  // entry 1
+    CHECK(at(0.75, 0.75)[0] == Approx(0.2));
+    CHECK(at(0.25, 0.25)[3] == 0.25);  // entry 2's filter
+    CHECK(at(0.25, 0.25)[4] == 0.0);
+    CHECK(at(0.75, 0.25)[4] == 0.5);  // entry 3: the file's
+    // After `transmit all 0.125` (set before the entries'): every other
+    // entry's transmit is all's, entry 1 keeps its own.
+    map.transmit_all_written = true;
+    CHECK(pt::image_colour(map, {0.75, 0.25, 0.0}, 0.0, 0.0, 0.125)[4] == 0.125);
+    CHECK(pt::image_colour(map, {0.75, 0.75, 0.0}, 0.0, 0.0, 0.125)[4] == 1.0);
+    // Bilinear: the corners' own amounts blended.
+    map.interpolate = pt::ImageMap::Interpolate::Bilinear;
+    CHECK(pt::image_colour(map, {0.5, 0.75, 0.0}, 0.0, 0.0, 0.0)[4] == Approx(0.5));
+}
+
+TEST_CASE("bump_map: three samples' heights tilt the normal", "[pattern][image]") {
+    // 3 x 2: the top row index 5, the bottom 0, 1, 2; grey 0.5 everywhere.
+    auto pixels = std::make_shared<pt::ImagePixels>();
+    pixels->width = 3;
+    pixels->height = 2;
+    pixels->rgbt.assign(6 * 4, 0.5f);
+    for (std::size_t i = 3; i < pixels->rgbt.size(); i += 4) pixels->rgbt[i] = 0.0f;
+    pixels->palette = true;
+    pixels->indices = {5, 5, 5, 0, 1, 2};
+    pixels->palette_size = 6;
+    pt::ImageMap map;
+    map.images.push_back({hexant::runtime::Interval(-1e300, 1e300), pixels});
+    const glm::dvec3 up(0.0, 1.0, 0.0), wall(0.0, 0.0, -1.0);
+    // The colours are flat: the normal unchanged, whatever it is.
+    for (const glm::dvec3& n : {up, wall, glm::normalize(glm::dvec3(1.0, 2.0, -3.0))}) {
+        const glm::dvec3 b = pt::bump_map_normal(map, {0.5, 0.75, 0.0}, 0.0, 0.5, n);
+        CHECK(b.x == Approx(n.x).margin(1e-12));
+        CHECK(b.y == Approx(n.y).margin(1e-12));
+        CHECK(b.z == Approx(n.z).margin(1e-12));
+    }
+    // use_index at the top middle pixel: heights 0.5 * (5, 0, 2) here, one
+    // down to the left and one down to the right; about +y the triangle's
+    // normal (h2 - h3, 2, 2 h1 - h2 - h3) with z turned.
+    map.use_index = true;
+    const glm::dvec3 b = pt::bump_map_normal(map, {0.5, 0.75, 0.0}, 0.0, 0.5, up);
+    const double l = std::sqrt(21.0);
+    CHECK(b.x == Approx(-1.0 / l));
+    CHECK(b.y == Approx(2.0 / l));
+    CHECK(b.z == Approx(-4.0 / l));
+    // Off an image used once: unchanged.
+    map.once = true;
+    const glm::dvec3 off = pt::bump_map_normal(map, {1.5, 0.5, 0.0}, 0.0, 0.5, wall);
+    CHECK(off == wall);
+    // An image without a palette has no index: its greys (flat here).
+    map.once = false;
+    pixels->indices.clear();
+    pixels->palette = false;
+    const glm::dvec3 grey = pt::bump_map_normal(map, {0.5, 0.75, 0.0}, 0.0, 0.5, up);
+    CHECK(grey.y == Approx(1.0));
 }

@@ -749,6 +749,26 @@ TEST_CASE("image_map agrees with POV-Ray 3.7's", "[tracer][pov][pattern][image]"
     check_stills("textures", "image_map", {"0", "0.5"});
 }
 
+TEST_CASE("an image_map's palette entries agree with POV-Ray 3.7's",
+          "[tracer][pov][pattern][image]") {
+    // textures/palette.pov: a 4-bit palette PNG whose entries take their
+    // own filter and transmit (filter N, AMOUNT; transmit N, AMOUNT) before
+    // and after filter all and transmit all, once and bilinear, moving with
+    // clock over a checker. Same tolerance as the still's (0 pixels off at
+    // either clock when written).
+    check_stills("textures", "palette", {"0", "0.5"});
+}
+
+TEST_CASE("bump_map agrees with POV-Ray 3.7's", "[tracer][pov][pattern][image]") {
+    // textures/bump_map.pov: normal { bump_map { } } from a palette PNG's
+    // indices (use_index, bilinear) on a wall sliding with clock, and from
+    // an RGBA PNG's greys on a turning sphere (spherical, bicubic), on the
+    // floor (tiled) and once on a small sphere, the files read undecoded.
+    // Same tolerance as the still's (0 pixels off at either clock when
+    // written).
+    check_stills("textures", "bump_map", {"0", "0.5"});
+}
+
 TEST_CASE("uv_mapping agrees with POV-Ray 3.7's", "[tracer][pov][pattern][image]") {
     // textures/uv_mapping.pov: uv-mapped pigments (an image on a sphere
     // and a mesh2's uv_vectors, a gradient on a lathe, checkers on a sor,

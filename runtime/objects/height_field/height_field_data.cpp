@@ -127,14 +127,13 @@ const std::vector<std::array<std::int16_t, 3>>& HeightFieldData::smooth_normals(
     return normals_;
 }
 
-std::vector<std::uint16_t> heights_from_image(const image::StoredImage& image,
-                                              const std::vector<std::uint8_t>* indices) {
+std::vector<std::uint16_t> heights_from_image(const image::StoredImage& image) {
     using Source = image::StoredImage::Source;
     const int w = image.width, h = image.height;
     const auto c = static_cast<std::size_t>(image.channels);
     std::vector<std::uint16_t> out(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
     const bool palette = image.source == Source::Palette && !image.linear;
-    if (palette && (!indices || indices->size() != out.size()))
+    if (palette && image.indices.size() != out.size())
         throw HeightFieldError("height_field: a paletted image's indices are missing");
     const bool gray =
         !image.linear && (image.source == Source::Gray || image.source == Source::GrayAlpha);
@@ -148,7 +147,7 @@ std::vector<std::uint16_t> heights_from_image(const image::StoredImage& image,
             const float* v = image.values.data() + i * c;
             std::uint16_t height = 0;
             if (palette) {
-                height = static_cast<std::uint16_t>((*indices)[i] * 256);
+                height = static_cast<std::uint16_t>(image.indices[i] * 256);
             } else if (gray) {
                 // GrayImage::GetGrayValue: float(stored) / float(max).
                 const float max = deep ? 65535.0f : 255.0f;
@@ -202,17 +201,8 @@ std::shared_ptr<const HeightFieldData> read_height_field(const std::filesystem::
     if (stored.linear != (kind == "exr"))
         throw HeightFieldError("height_field: '" + path.filename().string() + "' is not " +
                                (kind == "exr" ? "an OpenEXR" : "a PNG") + " file");
-    std::vector<std::uint8_t> indices;
-    if (stored.source == image::StoredImage::Source::Palette && !stored.linear) {
-        int w = 0, h = 0;
-        indices = read_png_palette_indices(path, w, h);
-        if (w != stored.width || h != stored.height)
-            throw HeightFieldError("height_field: '" + path.filename().string() +
-                                   "' changed while it was read");
-    }
-    return std::make_shared<const HeightFieldData>(
-        stored.width, stored.height,
-        heights_from_image(stored, indices.empty() ? nullptr : &indices));
+    return std::make_shared<const HeightFieldData>(stored.width, stored.height,
+                                                   heights_from_image(stored));
 }
 
 }  // namespace hexant::runtime::objects

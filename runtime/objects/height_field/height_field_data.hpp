@@ -104,16 +104,9 @@ class HeightFieldData {
 // high byte and green the low one, (HF_VAL)((r * 256.0 + g) * 255.0); RGB(A)
 // of 16 bits: (HF_VAL)(GREY_SCALE3(r, g, b) * 65535.0f) with 0.297, 0.589,
 // 0.114; OpenEXR (POV-Ray reads it as float RGBFT, whose GetMaxIntValue is
-// 255) as 8-bit RGB, clamped to 0..65535. A paletted image needs its
-// indices: `indices` (one per pixel, rows top to bottom) gives them, height
-// = index * 256. Rows are turned so z = 0 is the image's bottom row.
-std::vector<std::uint16_t> heights_from_image(const image::StoredImage& image,
-                                              const std::vector<std::uint8_t>* indices = nullptr);
-
-// A PNG file's palette indices, one per pixel, rows top to bottom (libpng;
-// height_field_png.cpp). Throws HeightFieldError.
-std::vector<std::uint8_t> read_png_palette_indices(const std::filesystem::path& path, int& width,
-                                                   int& height);
+// 255) as 8-bit RGB, clamped to 0..65535; a paletted image index * 256,
+// from its `indices`. Rows are turned so z = 0 is the image's bottom row.
+std::vector<std::uint16_t> heights_from_image(const image::StoredImage& image);
 
 // Reads a height field's image: `type` is the scene's type word ("png",
 // "exr"), or empty when the scene gave none (then the file's extension

@@ -4,11 +4,13 @@
 #include <cmath>
 #include <numbers>
 
+#include <glm/geometric.hpp>
+
 namespace hexant::runtime::pattern {
 
 namespace {
 
-constexpr double kEpsilon = 1.0e-10;  // POV-Ray's EPSILON, added in map_pos
+constexpr double kEpsilon = 1.0e-10;  // POV-Ray's EPSILON
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 
 // POV-Ray's wrap(): val into [0, upper).
@@ -102,6 +104,7 @@ bool map_coordinates(const ImageMap& map, const Span& span, const glm::dvec3& p,
 
 struct Rgbft {
     double c[5] = {0.0, 0.0, 0.0, 0.0, 0.0};
+    int index = -1;  // the palette index; -1 for an image without a palette
 };
 
 // The pixel at (x, y) (image coordinates, rows from the top): wrapped, or
@@ -128,6 +131,17 @@ Rgbft pixel(const ImageMap& map, const ImagePixels& image, double x, double y, d
     out.c[3] = static_cast<float>(0.0 + filter_all);
     out.c[4] = static_cast<float>(image.palette && map.transmit_all_written ? transmit_all
                                                                             : p[3] + transmit_all);
+    if (!image.indices.empty()) {
+        const std::size_t k =
+            image.indices[static_cast<std::size_t>(iy) * static_cast<std::size_t>(image.width) +
+                          static_cast<std::size_t>(ix)];
+        out.index = static_cast<int>(k);
+        if (k < map.palette_entries.size()) {
+            const PaletteEntryAmounts& own = map.palette_entries[k];
+            if (own.has_filter) out.c[3] = own.filter;
+            if (own.has_transmit) out.c[4] = own.transmit;
+        }
+    }
     return out;
 }
 
@@ -175,28 +189,35 @@ const ImagePixels& ImageMap::at(double t) const {
     return *(after == images.begin() ? images.front() : *(after - 1)).pixels;
 }
 
-std::array<double, 5> image_colour(const ImageMap& map, const glm::dvec3& point, double t,
-                                   double filter_all, double transmit_all) {
-    const ImagePixels& image = map.at(t);
+namespace {
+
+// POV-Ray's map_pos: the image coordinates (x, y) of a point, rows counted
+// from the top; false outside the map's coverage.
+bool map_pos(const ImageMap& map, const ImagePixels& image, const glm::dvec3& point, double& x,
+             double& y) {
     const Span span = span_of(map, image);
     double u = 0.0, v = 0.0;
-    // (POV-Ray's image_map: outside the map's coverage, clear white.)
-    const std::array<double, 5> clear{1.0, 1.0, 1.0, 0.0, 1.0};
-    if (!map_coordinates(map, span, point, u, v)) return clear;
-    if (!std::isfinite(u) || !std::isfinite(v)) return clear;  // (a point at infinity, or NaN)
-    // POV-Ray's map_pos: the offset and a nudge, then the image's rows
-    // counted from the top.
-    double x = u + span.offset_u + kEpsilon;
-    double y = v + span.offset_v + kEpsilon;
-    if (map.once && (x >= image.width || y >= image.height || x < 0.0 || y < 0.0)) return clear;
+    if (!map_coordinates(map, span, point, u, v)) return false;
+    if (!std::isfinite(u) || !std::isfinite(v)) return false;  // (a point at infinity, or NaN)
+    // The offset and a nudge, then the rows counted from the top.
+    x = u + span.offset_u + kEpsilon;
+    y = v + span.offset_v + kEpsilon;
+    if (map.once && (x >= image.width || y >= image.height || x < 0.0 || y < 0.0)) return false;
     x = wrap(x, image.width);
     y = wrap(-y, image.height);
+    return true;
+}
 
+// The colour at image coordinates (x, y) by the map's interpolation, and
+// the palette index interpolated likewise, then truncated (POV-Ray's
+// image_colour_at, its interpolations and their *index).
+Rgbft sample(const ImageMap& map, const ImagePixels& image, double x, double y, double filter_all,
+             double transmit_all) {
     Rgbft sum;
+    double index = 0.0;
     switch (map.interpolate) {
         case ImageMap::Interpolate::None:
-            sum = pixel(map, image, x, y, filter_all, transmit_all);
-            break;
+            return pixel(map, image, x, y, filter_all, transmit_all);
         case ImageMap::Interpolate::Bilinear:
         case ImageMap::Interpolate::NormalizedDistance: {
             x += 0.5;
@@ -209,8 +230,10 @@ std::array<double, 5> image_colour(const ImageMap& map, const glm::dvec3& point,
                 pixel(map, image, ix - 1.0, iy - 1.0, filter_all, transmit_all)};
             double w[4];
             corner_weights(map.interpolate, x, y, w);
-            for (int i = 0; i < 4; ++i)
+            for (int i = 0; i < 4; ++i) {
                 for (int c = 0; c < 5; ++c) sum.c[c] += corners[i].c[c] * w[i];
+                index += corners[i].index * w[i];
+            }
             break;
         }
         case ImageMap::Interpolate::Bicubic: {
@@ -225,10 +248,31 @@ std::array<double, 5> image_colour(const ImageMap& map, const glm::dvec3& point,
                     const Rgbft corner =
                         pixel(map, image, ix + i - 2.0, iy + j - 2.0, filter_all, transmit_all);
                     for (int c = 0; c < 5; ++c) sum.c[c] += corner.c[c] * (fx[i] * fy[j]);
+                    index += corner.index * (fx[i] * fy[j]);
                 }
             break;
         }
     }
+    sum.index = static_cast<int>(index);
+    return sum;
+}
+
+// POV-Ray's Colour::greyscale of a single-precision colour.
+double grey(const Rgbft& c) {
+    return static_cast<float>(0.297 * static_cast<float>(c.c[0]) +
+                              0.589 * static_cast<float>(c.c[1]) +
+                              0.114 * static_cast<float>(c.c[2]));
+}
+
+}  // namespace
+
+std::array<double, 5> image_colour(const ImageMap& map, const glm::dvec3& point, double t,
+                                   double filter_all, double transmit_all) {
+    const ImagePixels& image = map.at(t);
+    double x = 0.0, y = 0.0;
+    // (POV-Ray's image_map: outside the map's coverage, clear white.)
+    if (!map_pos(map, image, point, x, y)) return {1.0, 1.0, 1.0, 0.0, 1.0};
+    Rgbft sum = sample(map, image, x, y, filter_all, transmit_all);
     if (image.premultiplied) {
         // (POV-Ray's image_colour_at: back to straight colour, by the alpha
         // the transmit leaves, when there is any.)
@@ -240,6 +284,44 @@ std::array<double, 5> image_colour(const ImageMap& map, const glm::dvec3& point,
     std::array<double, 5> out;
     for (int c = 0; c < 5; ++c) out[static_cast<std::size_t>(c)] = static_cast<float>(sum.c[c]);
     return out;
+}
+
+glm::dvec3 bump_map_normal(const ImageMap& map, const glm::dvec3& point, double t, double amount,
+                           const glm::dvec3& normal) {
+    const ImagePixels& image = map.at(t);
+    double x = 0.0, y = 0.0;
+    // (Off the image: the normal as it was.)
+    if (!map_pos(map, image, point, x, y)) return normal;
+    // Three samples: here, one pixel left and down, one right and down
+    // (POV-Ray's bump_map, its coordinates wrapped by one image).
+    const auto wrap_once = [](double c, int size) {
+        return c < 0.0 ? c + size : c >= size ? c - size : c;
+    };
+    const Rgbft s1 = sample(map, image, x, y, 0.0, 0.0);
+    x = wrap_once(x - 1.0, image.width);
+    y = wrap_once(y + 1.0, image.height);
+    const Rgbft s2 = sample(map, image, x, y, 0.0, 0.0);
+    x = wrap_once(x + 2.0, image.width);
+    const Rgbft s3 = sample(map, image, x, y, 0.0, 0.0);
+    const bool colour = !map.use_index || s1.index == -1 || s2.index == -1 || s3.index == -1;
+    const auto height = [&](const Rgbft& s) { return amount * (colour ? grey(s) : s.index); };
+    const glm::dvec3 p1(0.0, height(s1), 0.0), p2(-1.0, height(s2), 1.0), p3(1.0, height(s3), 1.0);
+    // The triangle's normal, in a frame about the surface's normal.
+    glm::dvec3 bump = glm::cross(p3 - p2, p1 - p2);
+    bump /= glm::length(bump);
+    glm::dvec3 yprime = normal;
+    glm::dvec3 xprime = glm::cross(yprime, glm::dvec3(0.0, 1.0, 0.0));
+    double length = glm::length(xprime);
+    if (length < kEpsilon) {
+        yprime = std::fabs(normal.y - 1.0) < kEpsilon ? glm::dvec3(0.0, 1.0, 0.0)
+                                                      : glm::dvec3(0.0, -1.0, 0.0);
+        xprime = glm::dvec3(1.0, 0.0, 0.0);
+        length = 1.0;
+    }
+    xprime /= length;
+    glm::dvec3 zprime = glm::cross(xprime, yprime);
+    zprime /= glm::length(zprime);
+    return xprime * bump.x + yprime * bump.y - zprime * bump.z;
 }
 
 }  // namespace hexant::runtime::pattern

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -31,6 +32,18 @@ struct ImagePixels {
     // chunk's included) instead of adding to it, as POV-Ray's
     // Parse_Image_Map does to a colour-mapped image.
     bool palette = false;
+    // A palette image's index of each pixel (rows top to bottom) and its
+    // palette's size; empty for other images.
+    std::vector<std::uint8_t> indices;
+    int palette_size = 0;
+};
+
+// `filter N, AMOUNT` and `transmit N, AMOUNT` of a palette image: entry
+// N's own, set after the last `filter all` / `transmit all` (which set
+// every entry's, POV-Ray's Parse_Image_Map).
+struct PaletteEntryAmounts {
+    bool has_filter = false, has_transmit = false;
+    float filter = 0.0f, transmit = 0.0f;
 };
 
 struct ImageMap {
@@ -49,6 +62,8 @@ struct ImageMap {
     MapType map_type = MapType::Planar;
     Interpolate interpolate = Interpolate::None;
     bool once = false;
+    // A bump_map's use_index: heights from palette indices, not greys.
+    bool use_index = false;
     // repeat <u, v> and offset <u, v> as written (POV-Ray scales them by
     // each image's size).
     double repeat_u = 1.0, repeat_v = 1.0;
@@ -57,6 +72,8 @@ struct ImageMap {
     // when written, replaces a palette image's).
     TimeFunction filter_all = 0.0, transmit_all = 0.0;
     bool transmit_all_written = false;
+    // By palette index; entries past its end keep the file's (or all's).
+    std::vector<PaletteEntryAmounts> palette_entries;
 
     // The image at time t (the piece holding t; before the first, the
     // first; after the last, the last).
@@ -69,5 +86,14 @@ struct ImageMap {
 // POV-Ray.
 std::array<double, 5> image_colour(const ImageMap& map, const glm::dvec3& point, double t,
                                    double filter_all, double transmit_all);
+
+// bump_map { }: the unit normal `normal` (pattern space) tilted by the
+// image at `point` (POV-Ray 3.7's bump_map): the heights of three samples,
+// here and one pixel down to each side, each `amount` times the grey of
+// the image's values as the file holds them (or, with use_index on a
+// palette image, its index), make a triangle whose normal is turned into
+// a frame about `normal`. Off an image used `once`, `normal` unchanged.
+glm::dvec3 bump_map_normal(const ImageMap& map, const glm::dvec3& point, double t, double amount,
+                           const glm::dvec3& normal);
 
 }  // namespace hexant::runtime::pattern

@@ -30,3 +30,17 @@ for y in range(4):
         r += [x * 60, y * 80, 255 - x * 50]
     rows.append(r)
 png('gamma18.png', 5, 4, rows, 2, chunk(b'gAMA', struct.pack('>I', int(round(100000 / 1.8)))))
+# 8x6, 4 bits an index into 12 entries (a colour-mapped image as POV-Ray's
+# test.png), entry 0 half clear by a tRNS chunk: palette.png.
+def png4(path, w, h, indices, palette, alpha):
+    rows = []
+    for y in range(h):
+        r = indices[y * w:(y + 1) * w]
+        rows.append([r[i] << 4 | r[i + 1] for i in range(0, w, 2)])
+    raw = b''.join(b'\x00' + bytes(r) for r in rows)
+    data = b'\x89PNG\r\n\x1a\n' + chunk(b'IHDR', struct.pack('>IIBBBBB', w, h, 4, 3, 0, 0, 0))
+    data += chunk(b'PLTE', bytes(c for e in palette for c in e)) + chunk(b'tRNS', bytes(alpha))
+    data += chunk(b'IDAT', zlib.compress(raw)) + chunk(b'IEND', b'')
+    open(path, 'wb').write(data)
+palette = [(20 * i, 250 - 20 * i, (90 * i) % 256) for i in range(12)]
+png4('palette.png', 8, 6, [(x + 2 * y) % 12 for y in range(6) for x in range(8)], palette, [128])
