@@ -209,7 +209,9 @@ TEST_CASE("a refused word is an error wherever it is written", "[language][keywo
             CHECK(r.error);
         }
     }
-    CHECK(refused > 60);
+    // (60 once density_file, df3 and bump_map were rendered: the count
+    // falls as hexant reads more; a table emptied by mistake refuses none.)
+    CHECK(refused > 40);
 }
 
 TEST_CASE("a declaration hexant cannot render warns only where it is used",
