@@ -59,6 +59,13 @@ struct Inside {
         if (!contains(e.key) && out.count < kMost) out.entries[std::size_t(out.count++)] = e;
         return out;
     }
+    Inside with_media_only() const {
+        Inside out;
+        for (int i = 0; i < count; ++i)
+            if (entries[std::size_t(i)].media)
+                out.entries[std::size_t(out.count++)] = entries[std::size_t(i)];
+        return out;
+    }
     Inside without(const void* key) const {
         Inside out;
         for (int i = 0; i < count; ++i)

@@ -359,8 +359,9 @@ glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, std::uint
     h.start = runtime::geometry::offset_ray(h.point, p.error, h.geometric);
     if (h.double_lit) h.back_start = runtime::geometry::offset_ray(h.point, p.error, -h.geometric);
     // The object as an interior: its media's volume (shared by the members
-    // of the object that wrote it), or itself. Leaving it, the ray was in
-    // it all along, even where that was not known (a camera inside).
+    // of the object that wrote it), or itself (on this segment only).
+    // Leaving it, the ray was in it all along, even where that was not
+    // known (a camera inside).
     const runtime::MediaVolume* media = p.texture->media();
     h.entry = {media ? static_cast<const void*>(media) : static_cast<const void*>(hit->object),
                media, hit->object->flags().hollow};
@@ -628,7 +629,7 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
         const glm::dvec3 behind =
             radiance(next, h.depth + 1, through_weight,
                      total_internal_reflection ? std::uint8_t(runtime::kSightReflection) : h.sight,
-                     total_internal_reflection ? h.around : h.refracted(), state);
+                     total_internal_reflection ? h.carried() : h.refracted(), state);
         // Light that crossed the object's inside to get here fades with
         // the distance it went (fade_distance; POV-Ray's attCol).
         glm::dvec3 faded(1.0);
@@ -654,7 +655,7 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
         const glm::dvec3 out = reflect(h.d, layer.normal, h.raw);
         const Ray4 reflected = travel_.ray(h.start, h.time, out);
         glm::dvec3 from_there = radiance(reflected, h.depth + 1, reflect_weight,
-                                         runtime::kSightReflection, h.around, state);
+                                         runtime::kSightReflection, h.carried(), state);
         if (m.irid > 0.0)
             from_there *=
                 iridescence(m, out, h.d, layer.normal, h.point, irid_wavelength_, noise_generator_);

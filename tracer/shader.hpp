@@ -83,9 +83,14 @@ class Shader {
         Inside around{};
         Inside::Entry entry{};
         // The interiors a ray refracted here is in.
+        // What rays from here carry on: only interiors with media (an
+        // object without is known on its own segment alone: the members
+        // of a CSG are objects of their own, and a ray that left through
+        // one must not stay inside another).
+        Inside carried() const { return around.with_media_only(); }
         Inside refracted() const {
-            if (back) return around.without(entry.key);
-            return entry.media || !entry.hollow ? around.with(entry) : around;
+            if (back) return carried().without(entry.key);
+            return entry.media ? carried().with(entry) : carried();
         }
     };
     // The colour of one plain texture (its `count` layers, top first) at
