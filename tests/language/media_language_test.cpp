@@ -9,33 +9,20 @@
 #include "language/interpreter.hpp"
 #include "scene_text.hpp"
 
-using hexant::test::error_of;
+using hexant::test::check_error_at;
+using hexant::test::scene_of;
 namespace rt = hexant::runtime;
 
 namespace {
-
-rt::SceneDescription read(const std::string& text) {
-    hexant::language::ParseOptions options;
-    std::ostringstream messages;
-    options.messages = &messages;
-    return hexant::language::parse_scene_text(text, "test.pov", options);
-}
 
 const rt::Media& first_media(const rt::SceneDescription& scene) {
     return scene.objects.at(0)->interior.value().media.at(0);
 }
 
-void check_error(const std::string& text, const char* words, std::size_t line) {
-    const auto e = error_of(text);
-    INFO(e.formatted());
-    CHECK(e.places().front().line == line);
-    CHECK(e.formatted().find(words) != std::string::npos);
-}
-
 }  // namespace
 
 TEST_CASE("media's defaults are POV-Ray 3.5's, or older below #version 3.5", "[language][media]") {
-    const auto now = read("sphere { 0, 1 hollow interior { media { emission 1 } } }");
+    const auto now = scene_of("sphere { 0, 1 hollow interior { media { emission 1 } } }");
     const rt::Media& m = first_media(now);
     CHECK(m.method == 3);
     CHECK(m.intervals == 1);
@@ -44,14 +31,14 @@ TEST_CASE("media's defaults are POV-Ray 3.5's, or older below #version 3.5", "[l
     CHECK(m.aa_level == 3);
     CHECK(m.aa_threshold == Approx(0.1));
     CHECK(m.emission.c[1].constant() == 1.0);
-    const auto old = read("#version 3.1;\nsphere { 0, 1 hollow interior { media { } } }");
+    const auto old = scene_of("#version 3.1;\nsphere { 0, 1 hollow interior { media { } } }");
     CHECK(first_media(old).method == 1);
     CHECK(first_media(old).intervals == 10);
     CHECK(first_media(old).min_samples == 1);
 }
 
 TEST_CASE("media's settings, scattering and densities are read", "[language][media]") {
-    const auto scene = read(R"(
+    const auto scene = scene_of(R"(
 #declare D = density { spherical density_map { [0 rgb 0] [1 bozo] } }
 #declare M = media {
   method 2 intervals 4 samples 3, 7 jitter 0.5 ratio 0.8 confidence 0.95 variance 0.01
@@ -88,15 +75,17 @@ media { scattering { 1, 0.1 } }
 }
 
 TEST_CASE("media's checks are POV-Ray's, at their place", "[language][media]") {
-    check_error("sphere { 0, 1 interior {\n media { method 4 } } }", "method is 1, 2 or 3", 2);
-    check_error("sphere { 0, 1 interior {\n media { intervals 0 } } }", "at least one interval", 2);
-    check_error("sphere { 0, 1 interior {\n media { samples 3, 2 } } }", "below its minimum", 2);
-    check_error("sphere { 0, 1 interior {\n media { aa_level 0 } } }", "at least one", 2);
-    check_error("sphere { 0, 1 interior {\n media { aa_threshold 0 } } }", "greater than zero", 2);
-    check_error("sphere { 0, 1 interior { media {\n scattering { 1, 1 eccentricity 0.5 } } } }",
-                "eccentricity goes only with scattering type 5", 2);
-    check_error("sphere { 0, 1 interior { media {\n density { density_file \"none.df3\" } } } }",
-                "df3", 2);
+    check_error_at("sphere { 0, 1 interior {\n media { method 4 } } }", "method is 1, 2 or 3", 2);
+    check_error_at("sphere { 0, 1 interior {\n media { intervals 0 } } }", "at least one interval",
+                   2);
+    check_error_at("sphere { 0, 1 interior {\n media { samples 3, 2 } } }", "below its minimum", 2);
+    check_error_at("sphere { 0, 1 interior {\n media { aa_level 0 } } }", "at least one", 2);
+    check_error_at("sphere { 0, 1 interior {\n media { aa_threshold 0 } } }", "greater than zero",
+                   2);
+    check_error_at("sphere { 0, 1 interior { media {\n scattering { 1, 1 eccentricity 0.5 } } } }",
+                   "eccentricity goes only with scattering type 5", 2);
+    check_error_at("sphere { 0, 1 interior { media {\n density { density_file \"none.df3\" } } } }",
+                   "df3", 2);
 }
 
 TEST_CASE("methods 1 and 2 with more samples than the minimum say they take the minimum",

@@ -42,6 +42,22 @@ inline language::SceneError error_of(const std::string& text, language::ParseOpt
     return *e;
 }
 
+// The scene `text` reads into (its messages kept out of the test's).
+inline runtime::SceneDescription scene_of(const std::string& text,
+                                          language::ParseOptions options = {}) {
+    std::ostringstream messages;
+    options.messages = &messages;
+    return language::parse_scene_text(text, "test.pov", options);
+}
+
+// That `text` is refused at `line` with a message holding `words`.
+inline void check_error_at(const std::string& text, const char* words, std::size_t line) {
+    const auto e = error_of(text);
+    INFO(e.formatted());
+    CHECK(e.places().front().line == line);
+    CHECK(e.formatted().find(words) != std::string::npos);
+}
+
 // A failed test, with the error, unless `text` reads.
 inline void reads(const std::string& text, language::ParseOptions options = {}) {
     const auto e = read_error(text, std::move(options));

@@ -10,34 +10,21 @@
 #include "language/interpreter.hpp"
 #include "scene_text.hpp"
 
-using hexant::test::error_of;
+using hexant::test::check_error_at;
+using hexant::test::scene_of;
 namespace rt = hexant::runtime;
 
 namespace {
-
-rt::SceneDescription read(const std::string& text) {
-    hexant::language::ParseOptions options;
-    std::ostringstream messages;
-    options.messages = &messages;
-    return hexant::language::parse_scene_text(text, "test.pov", options);
-}
 
 // The colour of a plain texture's solid pigment, red channel.
 double red_of(const rt::Texture& t) {
     return t.pigment.colours.at(0).c[0].constant();
 }
 
-void check_error(const std::string& text, const char* words, std::size_t line) {
-    const auto e = error_of(text);
-    INFO(e.formatted());
-    CHECK(e.places().front().line == line);
-    CHECK(e.formatted().find(words) != std::string::npos);
-}
-
 }  // namespace
 
 TEST_CASE("tiles is a checker of two textures, the first tile at 1", "[language][pattern]") {
-    const auto scene = read(R"(
+    const auto scene = scene_of(R"(
 #declare B = texture { pigment { rgb 0.5 } }
 sphere { 0, 1 texture {
   tiles { texture { pigment { rgb 0.1 } } texture { pigment { rgbt <0.2, 0, 0, 0.5> } }
@@ -62,7 +49,7 @@ sphere { 0, 1 texture {
 }
 
 TEST_CASE("tiles reads in a texture_map's entry", "[language][pattern]") {
-    const auto scene = read(R"(
+    const auto scene = scene_of(R"(
 sphere { 0, 1 texture { gradient y texture_map {
   [0 pigment { rgb 1 }]
   [1 tiles { texture { pigment { rgb 0.3 } } tile2 texture { pigment { rgb 0.7 } } } scale 0.5]
@@ -76,20 +63,20 @@ sphere { 0, 1 texture { gradient y texture_map {
 }
 
 TEST_CASE("what POV-Ray refuses in tiles is an error where it is written", "[language][pattern]") {
-    check_error("sphere { 0, 1\n texture { tiles { texture { pigment { rgb 1 } } } } }\n",
-                "expected tile2", 2);
-    check_error("sphere { 0, 1\n texture { tiles { tile2 texture { pigment { rgb 1 } } } } }\n",
-                "first tile's texture", 2);
-    check_error("sphere { 0, 1 texture {\n tiles { texture { pigment { rgb 1 } } tile2 } } }\n",
-                "second tile's texture", 2);
+    check_error_at("sphere { 0, 1\n texture { tiles { texture { pigment { rgb 1 } } } } }\n",
+                   "expected tile2", 2);
+    check_error_at("sphere { 0, 1\n texture { tiles { tile2 texture { pigment { rgb 1 } } } } }\n",
+                   "first tile's texture", 2);
+    check_error_at("sphere { 0, 1 texture {\n tiles { texture { pigment { rgb 1 } } tile2 } } }\n",
+                   "second tile's texture", 2);
     // Nothing but transforms after it, and nothing before it (POV-Ray's
     // Parse_Texture: no tiles after a pigment, normal, finish or a
     // declared texture).
-    check_error(
+    check_error_at(
         "sphere { 0, 1 texture {\n tiles { texture { pigment { rgb 1 } } tile2 texture "
         "{ pigment { rgb 0 } } }\n pigment { rgb 1 } } }\n",
         "", 3);
-    check_error(
+    check_error_at(
         "#declare T = texture { pigment { rgb 1 } }\nsphere { 0, 1 texture { T\n tiles { "
         "texture { T } tile2 texture { T } } } }\n",
         "", 3);
@@ -97,7 +84,7 @@ TEST_CASE("what POV-Ray refuses in tiles is an error where it is written", "[lan
 
 TEST_CASE("an interior texture is layered, moves with its object, needs a texture",
           "[language][pattern]") {
-    const auto scene = read(R"(
+    const auto scene = scene_of(R"(
 sphere { 0, 1 pigment { rgb 1 }
   interior_texture { pigment { rgb 0.25 } }
   interior_texture { pigment { rgbt <0.75, 0, 0, 0.5> } }
@@ -117,5 +104,5 @@ sphere { 0, 1 }
     CHECK(scene.objects.at(1)->interior_texture);
     CHECK_FALSE(scene.objects.at(2)->interior_texture);
     // POV-Ray: "Interior texture requires an exterior texture."
-    check_error("sphere { 0, 1\n interior_texture { pigment { rgb 1 } } }\n", "own texture", 1);
+    check_error_at("sphere { 0, 1\n interior_texture { pigment { rgb 1 } } }\n", "own texture", 1);
 }
