@@ -254,7 +254,7 @@ constexpr auto kRules = std::to_array<KeywordRuleEntry>({
     {"matrix", KeywordRule::Rendered, ""},
     {"max", KeywordRule::Rendered, ""},
     {"max_extent", KeywordRule::Rendered, ""},
-    {"max_gradient", KeywordRule::Harmless, "tunes POV-Ray's isosurface search; hexant's interval search needs none"},
+    {"max_gradient", KeywordRule::Rendered, ""},
     {"max_intersections", KeywordRule::Harmless, "obsolete in POV-Ray 3.7; no effect there"},
     {"max_iteration", KeywordRule::Rendered, ""},
     {"max_sample", KeywordRule::Warned, "inside radiosity { }, which is warned as a whole"},

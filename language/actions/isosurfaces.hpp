@@ -42,12 +42,8 @@ struct action<g::isosurface_function> {
         if (f.parameters.size() > 3)
             throw ValueError("an isosurface's function is one of x, y, z; this one takes " +
                              std::to_string(f.parameters.size()) + " parameters");
-        // (Its hits are found by interval evaluation: every part needs a bound.)
-        if (const auto* part = runtime::TimeTape::compile({f.body}).unbounded_point_function())
-            throw UnsupportedError("an isosurface whose function calls a " + part->name() +
-                                   ": hexant finds an isosurface's surface by interval "
-                                   "bounds of its function, and a " +
-                                   part->name() + " has none yet");
+        // (A part with no interval bound, a pigment function, makes the search
+        // POV-Ray's, by max_gradient: runtime/objects/isosurface/.)
         isosurface_being_read(st, in.position()).function = f.body;
     }
 };

@@ -64,3 +64,24 @@ TEST_CASE("spline, pigment and pattern functions give their values", "[language]
     CHECK(radius(3) == Approx(0.25 + 3.0));
     CHECK(radius(4) == Approx(0.297 * 0.5 + 0.589 * 0.25 + 0.114 * 0.125));
 }
+
+TEST_CASE("an isosurface of a pigment function reads its max_gradient", "[language][function]") {
+    // A pigment function has no interval bound: the isosurface is searched
+    // as POV-Ray searches it, and max_gradient (default 1.1) is its slope.
+    const std::string head =
+        "#version 3.7;\n"
+        "#declare P = function { pigment { bozo color_map { [0 rgb 0] [1 rgb 1] } } }\n";
+    const auto read = [&](const std::string& setting) {
+        return hexant::language::parse_scene_text(
+            head + "isosurface { function { y - P(x, 0, z).red } " + setting + " }\n", "iso.pov",
+            {});
+    };
+    const auto scene = read("max_gradient 3.5");
+    REQUIRE(scene.objects.size() == 1);
+    const auto& iso = std::get<rt::Isosurface>(scene.objects[0]->shape);
+    CHECK(iso.max_gradient == 3.5);
+    CHECK(rt::SpaceFunction(*iso.function).unbounded_part() != nullptr);
+    CHECK(std::get<rt::Isosurface>(read("").objects[0]->shape).max_gradient == 1.1);
+    CHECK_THROWS_WITH(read("max_gradient 0"), Catch::Contains("max_gradient must be a positive"));
+    CHECK_THROWS_WITH(read("max_gradient -2"), Catch::Contains("iso.pov:3"));
+}

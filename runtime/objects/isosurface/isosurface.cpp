@@ -17,8 +17,15 @@ void Isosurface::set(std::string_view setting, const objects::ShapeArguments& va
         accuracy = a;
     } else if (setting == "open") {
         open = objects::flag(value);
-    } else if (setting == "max_gradient" || setting == "max_trace") {
-        // POV-Ray's search needs them; hexant's interval search does not.
+    } else if (setting == "max_gradient") {
+        value.need(1, 1, "a number");
+        const double g = value.constant(0, "isosurface's max_gradient");
+        if (!(g > 0.0) || !std::isfinite(g))
+            value.fail("an isosurface's max_gradient must be a positive number, not " +
+                       std::to_string(g));
+        max_gradient = g;
+    } else if (setting == "max_trace") {
+        // POV-Ray's search needs it; hexant's search finds every hit.
         value.need(1, 1, "a number");
         (void)value.constant(0, "isosurface's " + std::string(setting));
     } else if (setting == "all_intersections") {

@@ -8,10 +8,12 @@
 //
 // F is a user function (runtime/time/user_function.hpp) and may read
 // clock, as may T and the container: the surface moves through time. The
-// search for hits does not need max_gradient (isosurface_geometry.hpp
-// bounds F by interval arithmetic), so max_gradient, evaluate, max_trace
-// and all_intersections are read and change nothing: they tune POV-Ray's
-// own search, whose correct result hexant gives whatever they are.
+// search for hits does not need max_gradient where every part of F has an
+// interval bound (isosurface_geometry.hpp bounds F by interval
+// arithmetic); an F that calls a pigment function has none, and is
+// searched as POV-Ray searches it, trusting max_gradient as F's Lipschitz
+// bound along the ray. evaluate, max_trace and all_intersections are read
+// and change nothing: they tune POV-Ray's own search.
 #pragma once
 
 #include <array>
@@ -40,6 +42,9 @@ struct Isosurface {
     std::optional<TimeFunction> function;
     TimeFunction threshold = 0.0;
     double accuracy = 0.001;  // POV-Ray's default, in the object's units
+    // |grad F| at most this (POV-Ray's default 1.1): used only where F has
+    // no interval bound.
+    double max_gradient = 1.1;
     bool open = false;
     // contained_by: a box (POV-Ray's default, <-1, -1, -1> to <1, 1, 1>) or a sphere.
     bool sphere_container = false;

@@ -115,10 +115,17 @@ std::optional<std::pair<double, double>> first_crossing(const IsosurfaceGeometry
         }
         return std::pair{lo, hi};  // adjacent doubles about the crossing
     };
+    // Whether F may equal T on a piece: by F's interval bound, or (sampled)
+    // by max_gradient as POV-Ray bounds it.
+    const auto may_cross = [&](const Piece& piece) {
+        const glm::dvec3 a = r.at(piece.a), b = r.at(piece.b);
+        if (!g.sampled) return holds_zero(range(g, a, b));
+        return !(std::fabs(piece.fa + piece.fb) > g.max_gradient * safe_length(b - a));
+    };
     while (top > 0) {
         const Piece piece = stack[--top];
         const bool split = budget-- > 0;
-        if (split && !holds_zero(range(g, r.at(piece.a), r.at(piece.b)))) continue;
+        if (split && !may_cross(piece)) continue;
         const double mid = 0.5 * (piece.a + piece.b);
         const bool halvable = mid > piece.a && mid < piece.b;
         const double fm = halvable ? f(mid) : piece.fb;
@@ -126,7 +133,7 @@ std::optional<std::pair<double, double>> first_crossing(const IsosurfaceGeometry
         // without splits on to kFineLeaf of the container (a ray grazing
         // the surface crosses it over a short stretch only).
         const bool crosses = out(piece.fa) != out(fm) || out(fm) != out(piece.fb);
-        const double leaf = crosses ? g.accuracy : fine;
+        const double leaf = crosses || g.sampled ? g.accuracy : fine;
         if (split && halvable && piece.b - piece.a > leaf && top + 2 <= kStackSize) {
             stack[top++] = {mid, piece.b, fm, piece.fb};
             stack[top++] = {piece.a, mid, piece.fa, fm};
@@ -139,6 +146,19 @@ std::optional<std::pair<double, double>> first_crossing(const IsosurfaceGeometry
     return std::nullopt;
 }
 
+// POV-Ray's normal of a sampled F (IsoSurface::Normal): forward
+// differences over `accuracy`.
+glm::dvec3 difference_gradient(const IsosurfaceGeometry& g, const glm::dvec3& p) {
+    const double f = g.function.at(p, g.time);
+    glm::dvec3 n;
+    for (int axis = 0; axis < 3; ++axis) {
+        glm::dvec3 q = p;
+        q[axis] += g.accuracy;
+        n[axis] = g.function.at(q, g.time) - f;
+    }
+    return n;
+}
+
 SurfaceHit make_hit(const IsosurfaceGeometry& g, const LocalRay& r, double k, int part,
                     const glm::dvec3& wall_normal) {
     SurfaceHit hit;
@@ -148,7 +168,7 @@ SurfaceHit make_hit(const IsosurfaceGeometry& g, const LocalRay& r, double k, in
     hit.uv = glm::dvec2(0.0);
     glm::dvec3 n = wall_normal;
     if (part == 0) {
-        n = g.function.gradient(hit.point, g.time);
+        n = g.sampled ? difference_gradient(g, hit.point) : g.function.gradient(hit.point, g.time);
         const double length = safe_length(n);
         n = length > 0.0 && std::isfinite(length) ? n / length : glm::dvec3(1.0, 0.0, 0.0);
     }
@@ -158,7 +178,7 @@ SurfaceHit make_hit(const IsosurfaceGeometry& g, const LocalRay& r, double k, in
     // and on F = T the rounding of F there (the width of its interval at
     // the point) over the gradient's length.
     double along = 0.0;
-    if (part == 0) {
+    if (part == 0 && !g.sampled) {
         const glm::dvec3& p = hit.point;
         const Interval at_p =
             g.function.over({Interval(p.x), Interval(p.y), Interval(p.z)}, Interval(g.time));

@@ -19,10 +19,20 @@
 // (F flat at T along it) stops splitting after 2^16 pieces and then looks
 // at the ends of the pieces it holds only.
 //
+// An F that calls a function with no interval bound (a pigment function,
+// runtime/time/point_function.hpp) is `sampled`: a piece is dropped, as
+// POV-Ray's Function_Find_Root_R drops it, when F's values at its ends are
+// too far from T for F to reach T between them with a slope of at most
+// max_gradient (|f(a) + f(b)| > max_gradient * length, f = F - T), and
+// pieces stop at `accuracy` with or without a sign change. The result is
+// POV-Ray's: right where max_gradient holds, and a steeper F can miss the
+// surface as it does in POV-Ray.
+//
 // Hits: part 0 on F = T, with the gradient of F (forward-mode derivative,
-// exact where POV-Ray differences by `accuracy`) as normal, and POV-Ray's
-// (1, 0, 0) where the gradient is zero; part 1 on the container's walls,
-// with the wall's normal. uv (0, 0). inside: in C and F - T <= 0.
+// exact where POV-Ray differences by `accuracy`; sampled, POV-Ray's
+// forward differences) as normal, and POV-Ray's (1, 0, 0) where the
+// gradient is zero; part 1 on the container's walls, with the wall's
+// normal. uv (0, 0). inside: in C and F - T <= 0.
 #pragma once
 
 #include <optional>
@@ -44,6 +54,9 @@ struct IsosurfaceGeometry {
     double radius = 1.0;
     bool open = false;
     double accuracy = 0.001;
+    // No interval bound of F: POV-Ray's search by max_gradient (above).
+    bool sampled = false;
+    double max_gradient = 1.1;
 };
 
 std::optional<SurfaceHit> intersect(const IsosurfaceGeometry& g, const Ray3& ray, double s_min,

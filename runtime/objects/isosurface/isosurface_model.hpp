@@ -24,6 +24,8 @@ class IsosurfaceModel {
           sphere_(s.sphere_container),
           open_(s.open),
           accuracy_(s.accuracy),
+          max_gradient_(s.max_gradient),
+          sampled_(function_.unbounded_part() != nullptr),
           moving_function_(function_.depends_on_time()) {}
 
     bool is_static() const {
@@ -38,6 +40,8 @@ class IsosurfaceModel {
         g.sphere = sphere_;
         g.open = open_;
         g.accuracy = accuracy_;
+        g.sampled = sampled_;
+        g.max_gradient = max_gradient_;
         if (sphere_) {
             g.center = center_.at(t);
             g.radius = radius_.at(t);
@@ -73,7 +77,8 @@ class IsosurfaceModel {
     CompiledVector3 corner1_, corner2_, center_;
     CompiledScalar radius_;
     bool sphere_, open_;
-    double accuracy_;
+    double accuracy_, max_gradient_;
+    bool sampled_;
     bool moving_function_;
 };
 
