@@ -403,7 +403,7 @@ constexpr auto kRules = std::to_array<KeywordRuleEntry>({
     {"slope_map", KeywordRule::Rendered, ""},
     {"smooth", KeywordRule::Rendered, ""},
     {"smooth_triangle", KeywordRule::Rendered, ""},
-    {"solid", KeywordRule::Refused, ""},
+    {"solid", KeywordRule::Rendered, ""},
     {"sor", KeywordRule::Rendered, ""},
     {"spacing", KeywordRule::Warned, "inside photons { }, which is warned as a whole"},
     {"specular", KeywordRule::Rendered, ""},

@@ -434,7 +434,8 @@ bool is_reserved_word(std::string_view word) {
         return std::binary_search(list.begin(), list.end(), word);
     };
     return in(kReserved) || in(Words::keywords) || in(Words::options) || in(Words::settings) ||
-           in(Patterns::keywords) || in(Patterns::settings) || in(Patterns::pair_settings);
+           in(Patterns::keywords) || in(Patterns::settings) || in(Patterns::pair_settings) ||
+           in(Patterns::flag_settings);
 }
 
 }  // namespace hexant::language::grammar

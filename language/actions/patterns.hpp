@@ -579,6 +579,17 @@ struct action<g::pattern_pair_setting> {
     }
 };
 
+// A kind's setting that is a word alone: 1 in its slot.
+template <>
+struct action<g::pattern_flag_setting> {
+    template <typename ActionInput>
+    static void apply(const ActionInput& in, Interpreter& st) {
+        const std::string name = word(in);
+        runtime::pattern::Pattern& pattern = pattern_slot(st, in.position(), name.c_str()).pattern;
+        set_kind_setting(pattern, name, Value{TimeFunction(1.0)});
+    }
+};
+
 template <>
 struct action<g::pattern_wave> {
     template <typename ActionInput>

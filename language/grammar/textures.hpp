@@ -64,6 +64,12 @@ struct pattern_pair_name : one_word_of<pattern_pair_setting_words> {};
 struct pattern_pair_value : p::seq<sum> {};
 struct pattern_pair_setting : p::seq<pattern_pair_name, ws, frame_open, p::must<pattern_pair_value>,
                                      p::opt<comma>, p::must<pattern_pair_value>> {};
+// The kinds' settings that are a word alone (crackle's solid).
+struct pattern_flag_setting_words {
+    static constexpr auto list =
+        runtime::pattern::PatternWords<runtime::pattern::PatternKinds>::flag_settings;
+};
+struct pattern_flag_setting : p::seq<one_word_of<pattern_flag_setting_words>, ws> {};
 struct pattern_wave_name
     : p::sor<TAO_PEGTL_KEYWORD("ramp_wave"), TAO_PEGTL_KEYWORD("sine_wave"),
              TAO_PEGTL_KEYWORD("triangle_wave"), TAO_PEGTL_KEYWORD("scallop_wave"),
@@ -311,10 +317,11 @@ struct pigment_quick_colour
                     p::seq<p::must<ignored_value>, p::star<quick_colour_component>>>> {};
 struct pigment_item
     : p::sor<directive<pigment_item>, macro_call<pigment_item>, slope_pattern, magnet_pattern,
-             pigment_pattern, function_pattern, density_file_pattern, pattern_kind, pattern_setting,
-             pattern_pair_setting, pattern_wave, warp_block, pigment_colour_map, pigment_map_block,
-             image_map_block, pigment_list_pigment, pigment_quick_colour, pigment_component,
-             uv_mapping, unsupported_pattern, transformation, pigment_late_colour> {};
+             pigment_pattern, function_pattern, density_file_pattern, pattern_kind,
+             pattern_flag_setting, pattern_setting, pattern_pair_setting, pattern_wave, warp_block,
+             pigment_colour_map, pigment_map_block, image_map_block, pigment_list_pigment,
+             pigment_quick_colour, pigment_component, uv_mapping, unsupported_pattern,
+             transformation, pigment_late_colour> {};
 struct pigment_block
     : p::seq<pigment_open, p::opt<pigment_base>, p::star<pigment_item>, p::must<rbrace>> {};
 // function { pigment { } }: a pigment function, F(x, y, z) its colour
@@ -435,9 +442,9 @@ struct bump_map_block : p::seq<bump_map_open, p::opt<image_file_type>, p::must<i
 struct normal_item
     : p::sor<directive<normal_item>, macro_call<normal_item>, bump_map_block, slope_pattern,
              magnet_pattern, pigment_pattern, function_pattern, density_file_pattern, pattern_kind,
-             pattern_setting, pattern_pair_setting, pattern_wave, warp_block, normal_setting,
-             normal_no_bump_scale, normal_map_block, slope_map_block, normal_list_normal,
-             uv_mapping, unsupported_pattern, transformation> {};
+             pattern_flag_setting, pattern_setting, pattern_pair_setting, pattern_wave, warp_block,
+             normal_setting, normal_no_bump_scale, normal_map_block, slope_map_block,
+             normal_list_normal, uv_mapping, unsupported_pattern, transformation> {};
 struct normal_block
     : p::seq<normal_open, p::opt<normal_base>, p::star<normal_item>, p::must<rbrace>> {};
 struct texture_normal : p::seq<normal_block> {};
@@ -487,12 +494,12 @@ struct texture_block;
 // A block pattern's textures: checker texture { } texture { }.
 struct texture_list_texture : p::seq<texture_block, p::opt<comma>> {};
 // A patterned texture: a pattern and its modifiers, then its map.
-struct texture_item : p::sor<directive<texture_item>, macro_call<texture_item>, texture_pigment,
-                             texture_finish, texture_normal, slope_pattern, magnet_pattern,
-                             pigment_pattern, function_pattern, density_file_pattern, pattern_kind,
-                             pattern_setting, pattern_pair_setting, pattern_wave, warp_block,
-                             texture_map_block, texture_list_texture, uv_mapping, transformation> {
-};
+struct texture_item
+    : p::sor<directive<texture_item>, macro_call<texture_item>, texture_pigment, texture_finish,
+             texture_normal, slope_pattern, magnet_pattern, pigment_pattern, function_pattern,
+             density_file_pattern, pattern_kind, pattern_flag_setting, pattern_setting,
+             pattern_pair_setting, pattern_wave, warp_block, texture_map_block,
+             texture_list_texture, uv_mapping, transformation> {};
 // tiles { TEXTURE... tile2 TEXTURE... } [transforms]: POV-Ray's Parse_Tiles,
 // a checker of two (layered) textures. As in POV-Ray's Parse_Texture it
 // comes first, and only transforms follow it.

@@ -558,7 +558,9 @@ TEST_CASE("the wide, parallel and cylinder cameras agree with POV-Ray 3.7's",
 
 TEST_CASE("crackle agrees with POV-Ray 3.7's", "[tracer][pov][pattern]") {
     // patterns/crackle.pov: the default form and metric, metric 1 with form,
-    // offset and turbulence, metric 3, and cells, at clock 0 and 0.5. The random
+    // offset and turbulence, metric 3, cells, and solid crackle (each cell
+    // the noise at its point: the wrong point, or the distance form, moves
+    // most of its box), at clock 0 and 0.5. The random
     // points are POV-Ray's (Boost's mt19937 table through the lattice
     // hash): a different generator would move every cell. Same tolerance
     // (exact when this was written).

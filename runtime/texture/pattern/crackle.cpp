@@ -71,6 +71,8 @@ double crackle_value(const glm::dvec3& p, const Values& v) {
                std::pow(std::fabs(d.z), metric);
     };
     double m1 = 0.0, m2 = 0.0, m3 = 0.0;
+    glm::dvec3 nearest(0.0);
+    std::array<glm::dvec3, 3> first{};
     int i = 0;
     for (const auto& n : neighbours()) {
         const int x = cx + n[0], y = cy + n[1], z = cz + n[2];
@@ -78,18 +80,22 @@ double crackle_value(const glm::dvec3& p, const Values& v) {
             static_cast<std::size_t>(lattice_hash3(x & 0xFFF, y & 0xFFF, z & 0xFFF));
         const glm::dvec3 point(x + rands[seed], y + rands[seed + 1], z + rands[seed + 2]);
         const double sum = distance(point - p);
+        if (i < 3) first[static_cast<std::size_t>(i)] = point;
         // The nearest three, kept as POV-Ray keeps them.
         if (i < 3) {
             (i == 0 ? m1 : i == 1 ? m2 : m3) = sum;
+            if (i == 0) nearest = point;
             if (i == 2) {
-                if (m2 < m1) std::swap(m1, m2);
-                if (m3 < m1) std::swap(m1, m3);
+                // (POV-Ray's first three sorted, the nearest's index kept.)
+                if (m2 < m1) std::swap(m1, m2), nearest = first[1];
+                if (m3 < m1) std::swap(m1, m3), nearest = point;
                 if (m3 < m2) std::swap(m2, m3);
             }
         } else if (sum < m1) {
             m3 = m2;
             m2 = m1;
             m1 = sum;
+            nearest = point;
         } else if (sum < m2) {
             m3 = m2;
             m2 = sum;
@@ -104,6 +110,8 @@ double crackle_value(const glm::dvec3& p, const Values& v) {
         m2 += add;
         m3 += add;
     }
+    // solid: each cell the noise at its point (POV-Ray's IsSolid).
+    if (v.more[0] != 0.0) return std::max(std::min(noise(nearest, v.noise_generator), 1.0), 0.0);
     const glm::dvec3 form = v.vector;
     double value;
     if (square)

@@ -129,7 +129,7 @@ struct MapEntry {
 // must lie in [low, high]: outside, an error, or (`warns`) POV-Ray's
 // warning and the default.
 struct Setting {
-    enum class Type { Number, Vector, Pair };
+    enum class Type { Number, Vector, Pair, Flag };
     static constexpr int kMoreSlot = 2;
     std::string_view name;
     Type type = Type::Number;
@@ -147,6 +147,10 @@ struct Setting {
     }
     static constexpr Setting of_vector(std::string_view name, std::array<double, 3> default_value) {
         return {name, Type::Vector, 0, 0.0, default_value, false};
+    }
+    // A word alone (crackle's solid): its slot 1 when written, else 0.
+    static constexpr Setting of_flag(std::string_view name, int slot) {
+        return {name, Type::Flag, slot, 0.0, {}, true};
     }
     // A constant whole number in [low, high] (a fractal's exponent).
     static constexpr Setting of_integer(std::string_view name, int slot, double default_value,

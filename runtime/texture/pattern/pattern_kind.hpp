@@ -134,20 +134,27 @@ constexpr std::array<double, 3> vector_of() {
         return {};
 }
 
-// The names of a kind's settings with one value (pairs = false) or two.
-template <class K, bool pairs>
+// The names of a kind's settings of one shape: with one value (a number
+// or a vector), with two (Pair), or none (Flag).
+constexpr bool same_shape(Setting::Type a, Setting::Type b) {
+    const auto shape = [](Setting::Type t) {
+        return t == Setting::Type::Vector ? Setting::Type::Number : t;
+    };
+    return shape(a) == shape(b);
+}
+template <class K, Setting::Type shape>
 constexpr std::size_t setting_count() {
     std::size_t n = 0;
-    for (const Setting& s : settings_of<K>()) n += (s.type == Setting::Type::Pair) == pairs;
+    for (const Setting& s : settings_of<K>()) n += same_shape(s.type, shape);
     return n;
 }
-template <class K, bool pairs>
+template <class K, Setting::Type shape>
 constexpr auto setting_names() {
     constexpr auto settings = settings_of<K>();
-    std::array<std::string_view, setting_count<K, pairs>()> out{};
+    std::array<std::string_view, setting_count<K, shape>()> out{};
     std::size_t n = 0;
     for (const Setting& s : settings)
-        if ((s.type == Setting::Type::Pair) == pairs) out[n++] = s.name;
+        if (same_shape(s.type, shape)) out[n++] = s.name;
     return out;
 }
 
@@ -163,9 +170,11 @@ struct PatternWords<PatternKindList<K...>> {
   private:
     static constexpr auto all_keywords = sorted_words::concat(std::array{K::keyword}...);
     static constexpr auto all_settings =
-        sorted_words::concat(pattern_kind_detail::setting_names<K, false>()...);
+        sorted_words::concat(pattern_kind_detail::setting_names<K, Setting::Type::Number>()...);
     static constexpr auto all_pairs =
-        sorted_words::concat(pattern_kind_detail::setting_names<K, true>()...);
+        sorted_words::concat(pattern_kind_detail::setting_names<K, Setting::Type::Pair>()...);
+    static constexpr auto all_flags =
+        sorted_words::concat(pattern_kind_detail::setting_names<K, Setting::Type::Flag>()...);
 
   public:
     static constexpr auto keywords = all_keywords;
@@ -174,6 +183,9 @@ struct PatternWords<PatternKindList<K...>> {
         sorted_words::unique<sorted_words::count_unique(all_settings)>(all_settings);
     static constexpr auto pair_settings =
         sorted_words::unique<sorted_words::count_unique(all_pairs)>(all_pairs);
+    // The settings that are a word alone (crackle's solid).
+    static constexpr auto flag_settings =
+        sorted_words::unique<sorted_words::count_unique(all_flags)>(all_flags);
     static_assert(sorted_words::count_unique(all_keywords) == all_keywords.size(),
                   "two pattern kinds share a keyword");
 };

@@ -1,5 +1,6 @@
 // POV-Ray 3.7's crackle pattern: cells around a random point in each unit cube:
-// a form of the distances (metric) to the nearest three, plus offset. Its value
+// a form of the distances (metric) to the nearest three, plus offset; with
+// `solid`, the noise at the nearest point (each cell one value). Its value
 // is crackle_value, in crackle.cpp with its family's; what a kind declares is
 // pattern_kind.hpp's contract.
 #pragma once
@@ -15,9 +16,10 @@ struct Crackle {
     static constexpr bool single_numbers = false;
     static constexpr int kMetric = 0;  // Values::number[0]
     static constexpr int kOffset = 1;  // Values::number[1]
-    static constexpr std::array settings = {Setting::of_number("metric", kMetric, 2.0),
-                                            Setting::of_number("offset", kOffset, 0.0),
-                                            Setting::of_vector("form", {-1.0, 1.0, 0.0})};
+    static constexpr int kSolid = 2;   // Values::more[0]
+    static constexpr std::array settings = {
+        Setting::of_number("metric", kMetric, 2.0), Setting::of_number("offset", kOffset, 0.0),
+        Setting::of_vector("form", {-1.0, 1.0, 0.0}), Setting::of_flag("solid", kSolid)};
     static constexpr Function value = crackle_value;
 };
 
