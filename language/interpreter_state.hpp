@@ -219,6 +219,12 @@ class Interpreter {
     std::vector<ShapeOpening> shapes_open;
     // How many #default directives were read.
     std::size_t defaults_set = 0;
+    // Inside #default { } (its block depth then), and the pattern-less
+    // normal it gave (`normal { bump_size 1.5 }`): POV-Ray's default Tnormal,
+    // which every new normal starts from (Parse_Tnormal) and which is an
+    // error only where a surface would use it without a pattern.
+    std::optional<std::size_t> default_depth;
+    std::optional<runtime::Normal> default_normal_start;
     // Patterns read so far (a global noise_generator after them is warned).
     std::size_t patterns_written = 0;
 

@@ -106,6 +106,21 @@ struct action<g::unknown_directive> {
 };
 
 template <>
+struct action<g::default_open> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, Interpreter& st) {
+        st.default_depth = st.blocks.depth();
+    }
+};
+template <>
+struct action<g::default_block> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, Interpreter& st) {
+        st.default_depth.reset();
+    }
+};
+
+template <>
 struct action<g::default_item> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
@@ -127,9 +142,15 @@ struct action<g::default_item> {
             texture = given;
         } else if (v.is<runtime::Pigment>())
             texture.pigment = v.as<runtime::Pigment>();
-        else if (v.is<runtime::Normal>())
-            texture.normal = v.as<runtime::Normal>();
-        else if (v.is<runtime::Finish>())
+        else if (v.is<runtime::Normal>()) {
+            const auto& normal = v.as<runtime::Normal>();
+            // (A normal without a pattern sets what new normals start from.)
+            if (normal.patterned.kind == nullptr && normal.unsupported_name.empty() &&
+                !normal.bump_map)
+                st.default_normal_start = normal;
+            else
+                texture.normal = normal;
+        } else if (v.is<runtime::Finish>())
             texture.finish = v.as<runtime::Finish>();
         // Checked here, at the #default: the objects that take it are
         // checked for their own parameters only.

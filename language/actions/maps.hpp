@@ -106,7 +106,8 @@ struct action<g::normal_map_normal_open> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
-        st.blocks.open(std::in_place_type<runtime::Normal>);
+        // (From #default's pattern-less normal, as POV-Ray's Parse_Tnormal.)
+        st.blocks.open(st.default_normal_start ? *st.default_normal_start : runtime::Normal());
     }
 };
 template <>

@@ -622,6 +622,7 @@ struct action<g::normal_open> {
         else if (!st.blocks.empty())
             if (const auto* camera = std::get_if<runtime::CameraRecord>(&st.blocks.top()))
                 start = camera->normal;
+        if (!start) start = st.default_normal_start;
         st.blocks.open(start ? std::move(*start) : runtime::Normal());
     }
 };
@@ -660,7 +661,10 @@ struct action<g::normal_block> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         auto& normal = st.blocks.edit<runtime::Normal>(in.position(), "a normal");
-        if (normal.patterned.kind == nullptr && normal.unsupported_name.empty() && !normal.bump_map)
+        // (Only #default's own normal may leave it out: POV-Ray's default Tnormal.)
+        const bool default_item = st.default_depth && st.blocks.depth() == *st.default_depth + 1;
+        if (normal.patterned.kind == nullptr && normal.unsupported_name.empty() &&
+            !normal.bump_map && !default_item)
             throw ValueError("a normal needs a pattern (POV-Ray: no normal type given)");
         check_average(normal.patterned, !normal.normal_map.empty(), "normal_map");
         close_uv_mapping(normal.uv_mapping);

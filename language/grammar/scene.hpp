@@ -117,8 +117,8 @@ struct global_settings_block
 // written without its '#' (POV-Ray 3.7 reads both: the distribution's
 // colors.pov and laser.pov).
 struct default_item : p::sor<texture_block, pigment_block, normal_block, finish_block> {};
-struct default_block : p::seq<kw_default, p::must<lbrace>, p::star<default_item>, p::must<rbrace>> {
-};
+struct default_open : p::seq<kw_default, p::must<lbrace>> {};
+struct default_block : p::seq<default_open, p::star<default_item>, p::must<rbrace>> {};
 
 // ---------------------------------------------------------------- values
 

@@ -274,6 +274,33 @@ sphere { 0, 1 pigment { rgb 1 } }
               .line == 1);
 }
 
+TEST_CASE("#default's normal without a pattern sets what new normals start from",
+          "[language]") {
+    // POV-Ray's default Tnormal may have no pattern (normmap.pov:
+    // `#default { normal { bump_size 1.5 } }`): every normal read after it
+    // starts from it (Parse_Tnormal copies it), normal_map entries too, and
+    // only a surface's own normal must name a pattern.
+    const auto scene = read(R"(
+#default { normal { bump_size 1.5 } }
+sphere { 0, 1 normal { bumps } }
+sphere { 0, 1 normal { gradient x normal_map { [0 marble] [1 bumps bump_size 0.5] } } }
+sphere { 0, 1 normal { dents 0.25 } }
+)");
+    const auto amount = [](const rt::Normal& n) { return n.amount.constant(); };
+    CHECK(amount(*texture_of(scene, 0).normal) == 1.5);
+    const rt::Normal& mapped = *texture_of(scene, 1).normal;
+    REQUIRE(mapped.normal_map.size() == 2);
+    CHECK(amount(*mapped.normal_map[0].normal) == 1.5);
+    CHECK(amount(*mapped.normal_map[1].normal) == 0.5);
+    CHECK(amount(*texture_of(scene, 2).normal) == 0.25);
+    // An object's normal, or a declared one, still needs its pattern.
+    CHECK(error_of("sphere { 0, 1 normal { bump_size 2 } }").places().front().line == 1);
+    CHECK(error_of("#default { normal { bump_size 2 } }\n#declare N = normal { bump_size 1 }")
+              .places()
+              .front()
+              .line == 2);
+}
+
 TEST_CASE("colour components after a pigment's colour, as POV-Ray reads them", "[language]") {
     // POV-Ray's Parse_Colour reads on after a colour (the distribution's
     // chess2, drums, ballbox1, crystal, shadows): `White filter 0.25`,
