@@ -232,6 +232,11 @@ class Interpreter {
     template <typename Item, template <typename...> class Action,
               template <typename...> class Control, typename ParseInput>
     bool run_if(ParseInput& in);
+    // The rest of a directive whose taken branch closed the block around
+    // it (read_closing_branch), when the reading reaches it.
+    template <typename Item, template <typename...> class Action,
+              template <typename...> class Control, typename ParseInput>
+    bool skip_escaped_rest(ParseInput& in);
     template <typename Item, template <typename...> class Action,
               template <typename...> class Control, typename ParseInput>
     bool run_ifdef(ParseInput& in);
@@ -442,6 +447,12 @@ class Interpreter {
     template <typename Item, template <typename...> class Action,
               template <typename...> class Control, typename ParseInput>
     bool read_opening_branch(ParseInput& in, const p::position& opened, const char* directive);
+    // A taken branch that closes the block around its directive: its items
+    // are read up to that '}' and the rest of the directive is stepped over
+    // when the reading reaches it (skip_escaped_rest); false when it does not.
+    template <typename Item, template <typename...> class Action,
+              template <typename...> class Control, typename ParseInput>
+    bool read_closing_branch(ParseInput& in, const p::position& opened, const char* directive);
     // The same for a condition known to be `taken` over the whole domain.
     template <typename Item, template <typename...> class Action,
               template <typename...> class Control, typename ParseInput>
@@ -483,6 +494,9 @@ class Interpreter {
     // The copies read_opening_branch reads from (kept: macros declared in
     // them point into them).
     std::deque<std::string> spliced_texts_;
+    // Where the branches read_closing_branch read end (the directive's
+    // next divider), in their input's text.
+    std::vector<const char*> escaped_ends_;
     // One side of a time split, read: its pieces, the variables it changed
     // (as they were when it ended), the values it left on the stack and the
     // object block around it as it left it.

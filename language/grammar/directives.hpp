@@ -103,11 +103,13 @@ struct unknown_directive : p::seq<p::not_at<skip::divider_word>, p::identifier_f
 struct default_block;
 template <typename Item>
 struct directive
-    : p::seq<hash, p::sor<declare_directive, if_directive<Item>, ifdef_directive<Item>,
-                          while_directive<Item>, for_directive<Item>, switch_directive<Item>,
-                          include_directive<Item>, macro_definition, undef_directive,
-                          version_directive, debug_directive, warning_directive, error_directive,
-                          default_block, fopen_directive, fclose_directive, write_directive,
-                          read_directive, unsupported_directive, unknown_directive>> {};
+    : p::sor<escaped_branch_end<Item>,
+             p::seq<hash,
+                    p::sor<declare_directive, if_directive<Item>, ifdef_directive<Item>,
+                           while_directive<Item>, for_directive<Item>, switch_directive<Item>,
+                           include_directive<Item>, macro_definition, undef_directive,
+                           version_directive, debug_directive, warning_directive, error_directive,
+                           default_block, fopen_directive, fclose_directive, write_directive,
+                           read_directive, unsupported_directive, unknown_directive>>> {};
 
 }  // namespace hexant::language::grammar

@@ -162,6 +162,8 @@ HEXANT_CUSTOM_RULE(while_directive, run_while);
 HEXANT_CUSTOM_RULE(for_directive, run_for);
 HEXANT_CUSTOM_RULE(switch_directive, run_switch);
 HEXANT_CUSTOM_RULE(include_directive, run_include);
+// The rest of a directive whose taken branch closed the block around it.
+HEXANT_CUSTOM_RULE(escaped_branch_end, skip_escaped_rest);
 // #macro NAME(PARAMS) ... #end (the Item is unused).
 struct macro_definition_item {};
 HEXANT_CUSTOM_RULE(macro_definition_rule, define_macro);

@@ -3,6 +3,7 @@
 // includes it.
 #pragma once
 
+#include <algorithm>
 #include <cctype>
 #include <string_view>
 
@@ -65,6 +66,7 @@ void Interpreter::if_rest(ParseInput& in, const p::position& opened, bool taken)
     bool seen_else = false;
     for (;;) {
         if (taken && read_opening_branch<Item, Action, Control>(in, opened, "#if")) return;
+        if (taken && read_closing_branch<Item, Action, Control>(in, opened, "#if")) return;
         const Divider d = taken ? run_body<Item, Action, Control>(in) : skip_body<Control>(in);
         if (d == Divider::End) return;
         if (taken) {
@@ -83,6 +85,7 @@ void Interpreter::if_rest(ParseInput& in, const p::position& opened, bool taken)
             seen_else = true;
             taken = true;
             if (read_opening_branch<Item, Action, Control>(in, opened, "#if")) return;
+            if (read_closing_branch<Item, Action, Control>(in, opened, "#if")) return;
             // After #else only #end may follow.
             const Divider last = run_body<Item, Action, Control>(in);
             if (last != Divider::End) unclosed(opened, "#if", last, in);
@@ -223,9 +226,11 @@ bool Interpreter::run_ifdef(ParseInput& in) {
     read<grammar::condition_close, Action, Control>(in);
     const auto rest = [&](bool taken) {
         if (taken && read_opening_branch<Item, Action, Control>(in, opened, name)) return;
+        if (taken && read_closing_branch<Item, Action, Control>(in, opened, name)) return;
         Divider d = taken ? run_body<Item, Action, Control>(in) : skip_body<Control>(in);
         if (d == Divider::Else) {
             if (!taken && read_opening_branch<Item, Action, Control>(in, opened, name)) return;
+            if (!taken && read_closing_branch<Item, Action, Control>(in, opened, name)) return;
             d = taken ? skip_body<Control>(in) : run_body<Item, Action, Control>(in);
         }
         if (d != Divider::End) unclosed(opened, name, d, in);
@@ -343,6 +348,56 @@ bool Interpreter::read_opening_branch(ParseInput& in, const p::position& opened,
                          directive + "'s #end");
     in.iterator() = start;
     in.bump(consumed);
+    return true;
+}
+
+// The other side of the same rule: a taken branch that closes more blocks
+// than it opens (`#if (C) cone { } } #else cone { } } #end`, each branch
+// ending the union around it). Its items are read up to the '}' that
+// closes the block around the directive, and the input is left there for
+// that block's reader; the place where the branch's text ends is kept in
+// escaped_ends_, and when the reading after the block reaches it
+// (skip_escaped_rest, the first alternative of every directive) the
+// directive's other branches through #end are stepped over. Returns false,
+// reading nothing, for a branch whose braces do not close more than they
+// open.
+template <typename Item, template <typename...> class Action, template <typename...> class Control,
+          typename ParseInput>
+bool Interpreter::read_closing_branch(ParseInput& in, const p::position& opened,
+                                      const char* directive) {
+    const auto start = in.iterator();
+    const char* body = in.current();
+    skip_text<Control>(in);
+    const char* body_end = in.current();
+    in.iterator() = start;
+    if (brace_balance(body, body_end) >= 0) return false;
+    // A side of a split on clock is read twice and must end where it began.
+    if (symbols.sides_open() > 0)
+        fail(opened, std::string("the branch taken here closes a block it did not open, inside "
+                                 "a branch whose condition depends on clock; hexant cannot yet "
+                                 "make that piecewise in time (close the block after ") +
+                         directive + "'s #end)");
+    (void)p::match<p::star<Item>, p::apply_mode::action, p::rewind_mode::dontcare, Action, Control>(
+        in, *this);
+    if (in.current() >= body_end || *in.current() != '}')
+        fail(opened, std::string("the branch taken here closes a block, but its items stop "
+                                 "before the '}' that would close it (") +
+                         directive + ")");
+    escaped_ends_.push_back(body_end);
+    return true;
+}
+
+template <typename Item, template <typename...> class Action, template <typename...> class Control,
+          typename ParseInput>
+bool Interpreter::skip_escaped_rest(ParseInput& in) {
+    if (escaped_ends_.empty()) return false;
+    const auto found = std::find(escaped_ends_.begin(), escaped_ends_.end(), in.current());
+    if (found == escaped_ends_.end()) return false;
+    escaped_ends_.erase(found);
+    const auto at = in.position();
+    Divider d = next_divider(in);
+    while (d == Divider::Else || d == Divider::Elseif) d = skip_body<Control>(in);
+    if (d != Divider::End) unclosed(at, "#if", d, in);
     return true;
 }
 

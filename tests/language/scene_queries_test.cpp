@@ -177,3 +177,30 @@ TEST_CASE("a branch may open a block that the text after #end closes", "[languag
               .front()
               .line == 12);
 }
+
+TEST_CASE("a branch may close the block its directive is in", "[language][declare]") {
+    // A real animation's pawn: `#if (clock >= 0.05) cone { } texture { } }
+    // #else cone { } texture { } } #end`, each branch ending the union
+    // around it. POV-Ray reads the tokens of the branch taken; so does
+    // hexant, and steps over the rest of the directive after the block.
+    const auto pair = [](const std::string& condition) {
+        return "#declare P = union {\n  sphere { 0, 1 }\n  #if (" + condition +
+               ")\n    sphere { 2 * x, 1 } }\n  #else\n    sphere { y, 1 } }\n  #end\n"
+               "#debug str(max_extent(P).x + 10 * max_extent(P).y, 0, 0)";
+    };
+    CHECK(debug(pair("1")) == "13");  // x: 3, y: 1
+    CHECK(debug(pair("0")) == "21");  // x: 1, y: 2
+    // #ifdef and #ifndef too, and items after the block in the branch.
+    CHECK(debug("#declare P = union { sphere { 0, 1 }\n#ifndef (Nothing) } #declare Q = 5;\n"
+                "#else } #declare Q = 6;\n#end\n#debug str(Q, 0, 0)") == "5");
+    // A branch whose items stop before its '}' names the directive.
+    CHECK(hexant::test::error_of(
+              "#version 3.7;\nunion { sphere { 0, 1 }\n#if (1) sphere { 0, 1 } nope }\n#end")
+              .places()
+              .front()
+              .line == 3);
+    // Under a branch on clock each side is read on its own: refused.
+    const std::string clocked = message(
+        "#declare P = union { sphere { 0, 1 }\n#if (clock > 0.5) } #else } #end\n", animation());
+    CHECK(clocked.find("closes a block it did not open") != std::string::npos);
+}
