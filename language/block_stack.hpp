@@ -4,14 +4,16 @@
 // read and closes it at its `}`.
 //
 // A side of a time split (Interpreter::split_time) may add CSG members to
-// the object block around it but not edit it otherwise (not yet piecewise
-// in time): the stack counts the edits of a watched block to tell.
+// the object block around it and change its texture (made piecewise in
+// time), but not edit it otherwise: the stack counts the edits of a
+// watched block, and those that are not of its texture, to tell.
 #pragma once
 
 #include <cstddef>
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -79,7 +81,11 @@ class BlockStack {
     // ("`what` does not belong here") when the top is not a T.
     template <typename T>
     T& edit(const tao::pegtl::position& where, const char* what) {
-        if (blocks_.size() == watched_) ++edits_;
+        if (blocks_.size() == watched_) {
+            ++edits_;
+            // (An object's texture, pigment, normal or finish: "a texture".)
+            if (std::string_view(what) != "a texture") ++other_edits_;
+        }
         return top_as<T>(where, what);
     }
     // The object block a CSG member or light joins: edit() without counting
@@ -91,26 +97,33 @@ class BlockStack {
     // Watching the block at `depth` (0: none) for edits, from now on; gives
     // what was watched before, for end_watch or abandon_watch.
     struct Watch {
-        std::size_t depth = 0, edits = 0;
+        std::size_t depth = 0, edits = 0, other_edits = 0;
     };
     Watch watch(std::size_t depth) {
-        const Watch before{watched_, edits_};
+        const Watch before{watched_, edits_, other_edits_};
         watched_ = depth;
         edits_ = 0;
+        other_edits_ = 0;
         return before;
     }
-    // Whether the watched block was edited since watch(); the watch before
-    // it resumes, counting this one as one edit when there was any.
-    bool end_watch(const Watch& before) {
-        const bool edited = edits_ > 0;
+    // How the watched block was edited since watch().
+    enum class Edited { No, TextureOnly, Otherwise };
+    // The watched block's edits since watch(); the watch before it
+    // resumes, counting these as one edit of the same kind.
+    Edited end_watch(const Watch& before) {
+        const Edited edited = edits_ == 0         ? Edited::No
+                              : other_edits_ == 0 ? Edited::TextureOnly
+                                                  : Edited::Otherwise;
         watched_ = before.depth;
-        edits_ = before.edits + (edited ? 1 : 0);
+        edits_ = before.edits + (edits_ > 0 ? 1 : 0);
+        other_edits_ = before.other_edits + (other_edits_ > 0 ? 1 : 0);
         return edited;
     }
     // The watch before resumes as it was (a side abandoned by an error).
     void abandon_watch(const Watch& before) {
         watched_ = before.depth;
         edits_ = before.edits;
+        other_edits_ = before.other_edits;
     }
 
   private:
@@ -122,7 +135,7 @@ class BlockStack {
     }
 
     std::vector<Block> blocks_;
-    std::size_t watched_ = 0, edits_ = 0;
+    std::size_t watched_ = 0, edits_ = 0, other_edits_ = 0;
 };
 
 }  // namespace hexant::language

@@ -497,6 +497,11 @@ class Interpreter {
     // Where the branches read_closing_branch read end (the directive's
     // next divider), in their input's text.
     std::vector<const char*> escaped_ends_;
+    // The depth of the object block around the time split being read (its
+    // sides may close it only together), and where the side being read
+    // closed it: its branch's end, kept for the last side's.
+    std::optional<std::size_t> split_block_depth_;
+    const char* side_escape_ = nullptr;
     // One side of a time split, read: its pieces, the variables it changed
     // (as they were when it ended), the values it left on the stack and the
     // object block around it as it left it.
@@ -505,9 +510,9 @@ class Interpreter {
         SymbolTable::Changes after;
         std::vector<Value> pushed;
         std::optional<runtime::ObjectRecord> top;
-        bool top_edited = false;                            // beyond adding members
-        std::optional<runtime::CameraRecord> camera;        // when it set one
-        std::optional<runtime::ColourFunction> background;  // when it set one
+        BlockStack::Edited top_edited = BlockStack::Edited::No;  // beyond adding members
+        std::optional<runtime::CameraRecord> camera;             // when it set one
+        std::optional<runtime::ColourFunction> background;       // when it set one
     };
     // After both sides of a split on `c` (read at `at`): their variables,
     // values and the block's CSG members made piecewise (time_branch.hpp).

@@ -41,16 +41,37 @@ namespace {
 // What BlockStack::edit() does not count: the kind of
 // shape and the transform (apply_transform edits the block directly). A
 // side of a time split may change neither (not yet piecewise in time).
-bool same_but_members(const runtime::ObjectRecord& a, const runtime::ObjectRecord& b) {
+bool same_but_members(const runtime::ObjectRecord& a, const runtime::ObjectRecord& b,
+                      bool texture_may_differ) {
     const auto* ca = std::get_if<runtime::Csg>(&a.shape);
     const auto* cb = std::get_if<runtime::Csg>(&b.shape);
     if (a.shape.index() != b.shape.index() || (ca && ca->kind != cb->kind)) return false;
     return a.transform.steps().size() == b.transform.steps().size() &&
-           a.texture.has_value() == b.texture.has_value() &&
+           (texture_may_differ || a.texture.has_value() == b.texture.has_value()) &&
            a.interior.has_value() == b.interior.has_value() && a.no_shadow == b.no_shadow &&
            a.no_image == b.no_image && a.no_reflection == b.no_reflection &&
            a.double_illuminate == b.double_illuminate && a.hollow == b.hollow &&
            a.inverse == b.inverse && a.limits == b.limits;
+}
+
+// The texture that is `when_true` where `c` holds and `when_false`
+// elsewhere: a texture_map on a function pattern of time alone, exactly 1
+// where c holds and 0 where it does not (POV-Ray's truth: not zero), so
+// that its two entries are never blended.
+runtime::Texture texture_by_condition(const TimeFunction& c, runtime::Texture when_true,
+                                      runtime::Texture when_false) {
+    const runtime::pattern::Kind* function = runtime::pattern::find_kind("function");
+    if (function == nullptr) throw ValueError("the function pattern is missing");
+    runtime::Texture t;
+    t.patterned = runtime::pattern::Pattern::of(*function);
+    const TimeFunction truth =
+        TimeFunction::apply(runtime::TimeOp::Not, TimeFunction::apply(runtime::TimeOp::Not, c));
+    t.patterned.function = std::make_shared<const runtime::SpaceFunction>(truth);
+    t.texture_map.push_back(
+        {TimeFunction(0.0), std::make_shared<const runtime::Texture>(std::move(when_false))});
+    t.texture_map.push_back(
+        {TimeFunction(1.0), std::make_shared<const runtime::Texture>(std::move(when_true))});
+    return t;
 }
 
 }  // namespace
@@ -158,14 +179,18 @@ void Interpreter::merge_time_sides(const p::position& at, const TimeFunction& c,
             auto* members = std::get_if<runtime::Csg>(&merged.shape);
             const std::size_t base_members =
                 members ? std::get<runtime::Csg>(top_before->shape).children.size() : 0;
+            bool texture_changed = false;
             for (const auto& s : sides) {
                 if (!s || !s->top) continue;
-                if (s->top_edited || !same_but_members(*s->top, *top_before))
+                const bool texture_only = s->top_edited == BlockStack::Edited::TextureOnly;
+                if (s->top_edited == BlockStack::Edited::Otherwise ||
+                    !same_but_members(*s->top, *top_before, texture_only))
                     throw ValueError(
                         "this clock-dependent branch changes the object around it "
-                        "(a transform, texture or flag); hexant makes the CSG "
-                        "members it adds piecewise in time, not yet the object's "
-                        "own modifiers (put the branch in the value they use)");
+                        "(a transform, interior or flag); hexant makes the CSG "
+                        "members it adds and its texture piecewise in time, not yet "
+                        "its other modifiers (put the branch in the value they use)");
+                texture_changed = texture_changed || texture_only;
                 if (const auto* csg = std::get_if<runtime::Csg>(&s->top->shape))
                     members->children.insert(
                         members->children.end(),
@@ -175,6 +200,16 @@ void Interpreter::merge_time_sides(const p::position& at, const TimeFunction& c,
                     merged.lights.end(),
                     s->top->lights.begin() + static_cast<std::ptrdiff_t>(top_before->lights.size()),
                     s->top->lights.end());
+            }
+            // Its texture, where a side changed it: each side's (the
+            // #default's where a side left the object without one).
+            if (texture_changed) {
+                const auto texture_of = [&](const std::optional<TimeSide>& s) {
+                    const auto& record = s && s->top ? *s->top : *top_before;
+                    return record.texture ? *record.texture : scene.default_texture;
+                };
+                merged.texture =
+                    texture_by_condition(c, texture_of(sides[0]), texture_of(sides[1]));
             }
             blocks.top() = std::move(merged);
         }

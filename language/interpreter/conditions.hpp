@@ -133,6 +133,17 @@ void Interpreter::split_time(ParseInput& in, const p::position& at, const TimeFu
     }
     std::optional<TimeSide> sides[2];  // [0]: where c holds
     auto end = start;
+    // Whether each side closed the block around the split (and where its
+    // branch ends), read_closing_branch.
+    const std::optional<std::size_t> outer_split_depth = split_block_depth_;
+    const char* const outer_escape = side_escape_;
+    split_block_depth_ =
+        top_before ? std::optional<std::size_t>(block_count) : std::optional<std::size_t>();
+    const char* escapes[2] = {nullptr, nullptr};
+    const auto restore_split = [&] {
+        split_block_depth_ = outer_split_depth;
+        side_escape_ = outer_escape;
+    };
     const auto restore = [&] {
         TimeSide side;
         side.after = symbols.end_side();
@@ -156,6 +167,7 @@ void Interpreter::split_time(ParseInput& in, const p::position& at, const TimeFu
         // (A condition true, or false, over all of the domain: no split.)
         const bool whole = (side == 0 ? pieces.when_false : pieces.when_true).is_never();
         domain = whole ? outer : when;
+        side_escape_ = nullptr;
         symbols.begin_side();
         const BlockStack::Watch watch = blocks.watch(top_before ? block_count : 0);
         try {
@@ -170,6 +182,7 @@ void Interpreter::split_time(ParseInput& in, const p::position& at, const TimeFu
             domain = outer;
             blocks.abandon_watch(watch);
             (void)restore();
+            restore_split();
             if (e.message().find(" (at clock ") != std::string_view::npos)
                 throw;  // said once, innermost
             p::parse_error amended(note.str(), e.positions().front());
@@ -180,13 +193,16 @@ void Interpreter::split_time(ParseInput& in, const p::position& at, const TimeFu
             domain = outer;
             blocks.abandon_watch(watch);
             (void)restore();
+            restore_split();
             throw;
         }
-        const bool edited = blocks.end_watch(watch);
+        escapes[side] = side_escape_;
+        const BlockStack::Edited edited = blocks.end_watch(watch);
         auto [done, balanced] = restore();
         done.top_edited = edited;
         if (!balanced) {
             domain = outer;
+            restore_split();
             fail(at,
                  "a branch whose condition depends on clock that uses values from before it "
                  "or leaves a block open; hexant cannot yet make that piecewise in time");
@@ -196,6 +212,15 @@ void Interpreter::split_time(ParseInput& in, const p::position& at, const TimeFu
         end = in.iterator();
     }
     domain = outer;
+    restore_split();
+    // Both sides close the block around the split, or neither: the input
+    // is then at the last side's '}', and its branch's end is stepped over
+    // when the reading reaches it.
+    if (sides[0] && sides[1] && (escapes[0] != nullptr) != (escapes[1] != nullptr))
+        fail(at,
+             "one side of this branch on clock closes the block around it and the other does "
+             "not; hexant cannot make that piecewise in time");
+    if (const char* last = sides[1] ? escapes[1] : escapes[0]) escaped_ends_.push_back(last);
     in.iterator() = end;
     merge_time_sides(at, c, sides, top_before, camera_before, background_before);
 }
@@ -371,8 +396,8 @@ bool Interpreter::read_closing_branch(ParseInput& in, const p::position& opened,
     const char* body_end = in.current();
     in.iterator() = start;
     if (brace_balance(body, body_end) >= 0) return false;
-    // A side of a split on clock is read twice and must end where it began.
-    if (symbols.sides_open() > 0)
+    const bool in_side = symbols.sides_open() > 0;
+    if (in_side && !split_block_depth_)
         fail(opened, std::string("the branch taken here closes a block it did not open, inside "
                                  "a branch whose condition depends on clock; hexant cannot yet "
                                  "make that piecewise in time (close the block after ") +
@@ -383,6 +408,31 @@ bool Interpreter::read_closing_branch(ParseInput& in, const p::position& opened,
         fail(opened, std::string("the branch taken here closes a block, but its items stop "
                                  "before the '}' that would close it (") +
                          directive + ")");
+    if (in_side && blocks.depth() <= *split_block_depth_) {
+        // The block around a split on clock: each side stops at its '}'
+        // and split_time leaves the last side's for that block's reader.
+        // What follows the '}' in the branch would be read for one side
+        // only: it may be blanks and comments.
+        const char* c = in.current() + 1;
+        while (c < body_end) {
+            if (std::isspace(static_cast<unsigned char>(*c))) {
+                ++c;
+            } else if (*c == '/' && c + 1 < body_end && c[1] == '/') {
+                while (c < body_end && *c != '\n') ++c;
+            } else if (*c == '/' && c + 1 < body_end && c[1] == '*') {
+                c += 2;
+                while (c + 1 < body_end && !(c[0] == '*' && c[1] == '/')) ++c;
+                c += 2;
+            } else {
+                fail(opened, std::string("the branch taken here closes the block around a "
+                                         "branch on clock and goes on after it; hexant cannot "
+                                         "yet make that piecewise in time (") +
+                                 directive + ")");
+            }
+        }
+        side_escape_ = body_end;
+        return true;
+    }
     escaped_ends_.push_back(body_end);
     return true;
 }

@@ -199,8 +199,5 @@ TEST_CASE("a branch may close the block its directive is in", "[language][declar
               .places()
               .front()
               .line == 3);
-    // Under a branch on clock each side is read on its own: refused.
-    const std::string clocked = message(
-        "#declare P = union { sphere { 0, 1 }\n#if (clock > 0.5) } #else } #end\n", animation());
-    CHECK(clocked.find("closes a block it did not open") != std::string::npos);
+    // (Under a branch on clock: time_branch_test.cpp.)
 }

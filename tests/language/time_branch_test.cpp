@@ -183,13 +183,25 @@ TEST_CASE("what cannot yet be piecewise in time is an error at the branch", "[la
                             animation());
     CHECK(e.formatted().find("test.pov:2:5") != std::string::npos);
     CHECK(e.formatted().find("piecewise") != std::string::npos);
-    // The object's own texture replaced under a branch inside its block
-    // (it was kept from before the branch, silently, when the block had
-    // one already): refused at the branch.
-    const auto own =
-        error_of("sphere { 0, 1 pigment { rgb 1 } #if (clock > 0.5) pigment { rgb 0 } #end }\n",
-                 animation());
+    // The object's own interior or transform under a branch inside its
+    // block: refused at the branch (its texture is made piecewise, below).
+    const auto own = error_of(
+        "sphere { 0, 1 pigment { rgb 1 } #if (clock > 0.5) interior { ior 1.5 } #end }\n",
+        animation());
     CHECK(own.formatted().find("test.pov:1:37") != std::string::npos);
+    const auto moved = error_of(
+        "sphere { 0, 1 #if (clock > 0.5) pigment { rgb 1 } translate x #end }\n", animation());
+    CHECK(moved.formatted().find("test.pov:1:19") != std::string::npos);
+    // Branches that close the block around them: on both sides or neither,
+    // and nothing after the '}' in the branch.
+    const auto one_side = error_of(
+        "union { sphere { 0, 1 }\n#if (clock > 0.5) } #else sphere { x, 1 } #end }\n",
+        animation());
+    CHECK(one_side.formatted().find("test.pov:2:5") != std::string::npos);
+    const auto goes_on = error_of(
+        "union { sphere { 0, 1 }\n#if (clock > 0.5) } sphere { x, 1 } #else } #end\n",
+        animation());
+    CHECK(goes_on.formatted().find("goes on after it") != std::string::npos);
     // A texture set differently on the two sides.
     const auto texture = error_of(
         "#if (clock > 0.5) #declare T = pigment { rgb 1 }; #else #declare T = pigment { rgb 0 }; "
@@ -485,4 +497,42 @@ Posts(4)
             break;
         }
     CHECK(found);
+}
+
+TEST_CASE("an object's texture under a branch on clock switches with it", "[language][time]") {
+    // A real animation's pawn (../shared/cases/2026-12-03/07): pigment and
+    // finish chosen by `#if (clock >= 0.05)` inside the sphere's block, and
+    // a branch on each side of which a texture is given to the union and
+    // the union closed. The texture becomes a texture_map over a pattern of
+    // time alone, exactly 0 or 1, so that its entries never blend.
+    const auto scene = read(R"(
+sphere { 0, 1 pigment { rgb 1 }
+  #if (clock > 0.5) pigment { rgb <1, 0, 0> } finish { phong 1 } #end }
+union { sphere { 0, 1 } sphere { x, 1 }
+#if (clock > 0.25)
+  cone { 0, 1, y, 0 } texture { pigment { rgb 0.5 } } }
+#else
+  cone { 0, 1, 2 * y, 0 } texture { pigment { rgb 0.2 } } }
+#end
+)");
+    REQUIRE(scene.objects.size() == 2);
+    const auto check_switch = [](const rt::Texture& t, double at) {
+        REQUIRE(t.is_patterned());
+        REQUIRE(t.texture_map.size() == 2);
+        REQUIRE(t.patterned.function);
+        const rt::SpaceFunction& f = *t.patterned.function;
+        CHECK(f.at({0.3, -2.0, 5.0}, at) == 1.0);
+        CHECK(f.at({0.0, 0.0, 0.0}, before(at)) == 0.0);
+        CHECK(f.at({0.0, 0.0, 0.0}, 0.0) == 0.0);
+        CHECK(f.at({0.0, 0.0, 0.0}, 1.0) == 1.0);
+    };
+    // (The first switch is after 0.5: clock > 0.5 holds from next_up(0.5).)
+    check_switch(*scene.objects[0]->texture, std::nextafter(0.5, 1.0));
+    const auto& when_true = *scene.objects[0]->texture->texture_map[1].texture;
+    CHECK(when_true.finish.phong.constant() == 1.0);
+    CHECK(scene.objects[0]->texture->texture_map[0].texture->finish.phong.constant() == 0.0);
+    // The union: both cones (each living on its side) and the switching texture.
+    const auto& csg = std::get<rt::Csg>(scene.objects[1]->shape);
+    CHECK(csg.children.size() == 4);
+    check_switch(*scene.objects[1]->texture, std::nextafter(0.25, 1.0));
 }

@@ -42,9 +42,12 @@ TEST_CASE("scenes that switch with clock agree with POV-Ray 3.7 at each clock",
     // one frame, at the clock POV-Ray rendered (+K), of a 10001-frame
     // animation over clock 0 to 1 with a zero shutter: the branch is split
     // over the whole animation and the frame's instant picks the piece.
-    // Just before and after the switch too (0.4999, 0.5001).
+    // Just before and after the switch too (0.4999, 0.5001). Case 07
+    // (2026-12-03/07 reduced): an #if on clock inside a sphere picks its
+    // pigment and finish (the texture made piecewise in time), and the
+    // branches of another each texture and close the union around them.
     const fs::path folder = kFolder / "time";
-    for (const char* scene : {"case01", "case04"})
+    for (const char* scene : {"case01", "case04", "case07"})
         for (const char* clock : {"0.25", "0.4999", "0.5", "0.5001", "0.75"}) {
             const int frame = int(std::lround(std::stod(clock) * 10000)) + 1;
             INFO(scene << " at clock " << clock);
