@@ -46,4 +46,13 @@ bool inside_object(const runtime::IntelligentObject& object, const glm::dvec3& p
     return object.inside(runtime::Event(point, t));
 }
 
+InsideFunction::InsideFunction(runtime::ObjectPtr record, bool moves)
+    : record_(std::move(record)),
+      object_(runtime::make_intelligent_object(*record_, runtime::Texture{})),
+      moves_(moves) {}
+
+double InsideFunction::at(int, const glm::dvec3& p, double t) const {
+    return object_->inside(runtime::Event(p, t)) ? 1.0 : 0.0;
+}
+
 }  // namespace hexant::language

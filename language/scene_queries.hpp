@@ -4,13 +4,16 @@
 #pragma once
 
 #include <map>
+#include <memory>
 #include <optional>
+#include <string>
 
 #include <glm/vec3.hpp>
 
 #include "runtime/objects/intelligent_object.hpp"
 #include "runtime/objects/shapes.hpp"
 #include "runtime/time/interval.hpp"
+#include "runtime/time/point_function.hpp"
 
 namespace hexant::language {
 
@@ -47,5 +50,24 @@ std::optional<TraceHit> trace_object(const runtime::IntelligentObject& object,
 // inside(OBJECT, P): whether P is inside the object's solid (POV-Ray's
 // Inside_Object, `inverse` included).
 bool inside_object(const runtime::IntelligentObject& object, const glm::dvec3& point, double t);
+
+// The object pattern's test (runtime/texture/pattern/kinds/object.hpp): 1
+// where (x, y, z) is inside the object at time t, else 0. Its intelligent
+// object is made once and answers for every instant, so an object that
+// moves with clock moves its pattern too. Throws what
+// make_intelligent_object throws for an object it cannot make.
+class InsideFunction : public runtime::PointFunction {
+  public:
+    InsideFunction(runtime::ObjectPtr record, bool moves);
+    std::string name() const override { return "object pattern"; }
+    int components() const override { return 1; }
+    bool depends_on_time() const override { return moves_; }
+    double at(int component, const glm::dvec3& p, double t) const override;
+
+  private:
+    runtime::ObjectPtr record_;
+    std::shared_ptr<const runtime::IntelligentObject> object_;
+    bool moves_;
+};
 
 }  // namespace hexant::language

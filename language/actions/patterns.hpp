@@ -3,6 +3,9 @@
 #pragma once
 
 #include "language/actions/transformations.hpp"
+#include "language/object_extent.hpp"
+#include "language/scene_queries.hpp"
+#include "runtime/objects/object_error.hpp"
 #include "runtime/texture/pattern/density_file.hpp"
 
 namespace hexant::language {
@@ -165,6 +168,8 @@ struct action<g::pattern_kind> {
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         std::vector<Value> args = st.values.close_frame();
         const std::string name = st.values.pop_name();
+        if (name == "object")
+            throw ValueError("the object pattern is written object { OBJECT LIST }");
         const PatternSlot slot = start_pattern(st, in.position(), name);
         const runtime::pattern::Kind* kind = slot.pattern.kind;
         using A = runtime::pattern::Kind::Argument;
@@ -430,6 +435,69 @@ struct action<g::function_pattern_body> {
             throw ValueError("a function pattern's function is a number of x, y, z");
         start_pattern(st, in.position(), "function").pattern.function =
             std::make_shared<const runtime::SpaceFunction>(f.body);
+    }
+};
+
+// object { OBJECT LIST }: the pattern starts with its object's inside test
+// (language/scene_queries.hpp), a function of the point and time.
+template <>
+struct action<g::object_pattern_object> {
+    template <typename ActionInput>
+    static void apply(const ActionInput& in, Interpreter& st) {
+        const Value v = st.values.pop();
+        if (!v.is<runtime::ObjectPtr>())
+            throw ValueError("the object pattern needs an object, not a " + type_name(v));
+        const runtime::ObjectPtr& object = v.as<runtime::ObjectPtr>();
+        std::shared_ptr<const runtime::PointFunction> inside;
+        try {
+            inside = std::make_shared<const InsideFunction>(
+                object, changes_with_clock(*object, st.animation_time()));
+        } catch (const runtime::ObjectError& e) {
+            throw ValueError(std::string("the object pattern's object: ") + e.what());
+        }
+        start_pattern(st, in.position(), "object").pattern.function =
+            std::make_shared<const runtime::SpaceFunction>(
+                TimeFunction::point_call(std::move(inside), 0, TimeFunction::argument(0),
+                                         TimeFunction::argument(1), TimeFunction::argument(2)));
+    }
+};
+// One of its two colours (in a pigment), in order: outside, inside.
+template <>
+struct action<g::object_pattern_colour> {
+    template <typename ActionInput>
+    static void apply(const ActionInput& in, Interpreter& st) {
+        const Value v = st.values.pop();
+        const PatternSlot slot = pattern_slot(st, in.position(), "the object pattern's colour");
+        if (slot.pigment == nullptr)
+            throw ValueError("the object pattern's list here holds " +
+                             std::string(slot.texture ? "textures" : "normals") + ", not colours");
+        auto& entries = slot.pigment->colour_map.entries;
+        if (entries.size() >= 2 || !slot.pigment->pigment_map.empty())
+            throw ValueError("the object pattern takes at most 2 colours or pigments");
+        runtime::ColourMapEntry e;
+        e.value = static_cast<double>(entries.size());
+        e.colour =
+            to_colour(v, "the object pattern's colour " + std::to_string(entries.size() + 1));
+        entries.push_back(std::move(e));
+    }
+};
+// The colours it was not given are checker's defaults (POV-Ray's
+// Check_Default_Map); pigments are filled by close_pigment.
+template <>
+struct action<g::object_pattern_close> {
+    template <typename ActionInput>
+    static void apply(const ActionInput& in, Interpreter& st) {
+        const PatternSlot slot = pattern_slot(st, in.position(), "the object pattern");
+        if (slot.pigment == nullptr || !slot.pigment->pigment_map.empty()) return;
+        auto& entries = slot.pigment->colour_map.entries;
+        const runtime::pattern::Kind& kind = *slot.pattern.kind;
+        for (std::size_t i = entries.size(); i < 2; ++i) {
+            runtime::ColourMapEntry e;
+            e.value = static_cast<double>(i);
+            const auto& d = kind.default_map[i].colour;
+            e.colour = runtime::ColourFunction{{d[0], d[1], d[2], d[3], d[4]}};
+            entries.push_back(std::move(e));
+        }
     }
 };
 

@@ -315,9 +315,24 @@ struct pigment_quick_colour
     : p::seq<p::sor<TAO_PEGTL_KEYWORD("quick_color"), TAO_PEGTL_KEYWORD("quick_colour")>, ws,
              p::sor<p::plus<quick_colour_component>,
                     p::seq<p::must<ignored_value>, p::star<quick_colour_component>>>> {};
+// object { OBJECT LIST } in a pigment, normal or texture: POV-Ray's object
+// pattern (runtime/texture/pattern/kinds/object.hpp). Its object is a name
+// or an object block, without modifiers (POV-Ray's Parse_Bound_Clip); a
+// blend list of two follows: colours, pigments, normals or textures.
+struct object_value;
+struct normal_list_normal;
+struct texture_list_texture;
+struct object_pattern_open : p::seq<TAO_PEGTL_KEYWORD("object"), ws, lbrace> {};
+struct object_pattern_object : p::sor<object_value, expression> {};
+struct object_pattern_colour : p::seq<expression, p::opt<comma>> {};
+struct object_pattern_close : rbrace {};
+struct object_pattern : p::seq<object_pattern_open, p::must<object_pattern_object>, p::opt<comma>,
+                               p::star<p::sor<pigment_list_pigment, normal_list_normal,
+                                              texture_list_texture, object_pattern_colour>>,
+                               p::must<object_pattern_close>> {};
 struct pigment_item
     : p::sor<directive<pigment_item>, macro_call<pigment_item>, slope_pattern, magnet_pattern,
-             pigment_pattern, function_pattern, density_file_pattern, pattern_kind,
+             pigment_pattern, function_pattern, density_file_pattern, object_pattern, pattern_kind,
              pattern_flag_setting, pattern_setting, pattern_pair_setting, pattern_wave, warp_block,
              pigment_colour_map, pigment_map_block, image_map_block, pigment_list_pigment,
              pigment_quick_colour, pigment_component, uv_mapping, unsupported_pattern,
@@ -441,10 +456,11 @@ struct bump_map_block : p::seq<bump_map_open, p::opt<image_file_type>, p::must<i
                                p::star<bump_map_item>, p::must<rbrace>> {};
 struct normal_item
     : p::sor<directive<normal_item>, macro_call<normal_item>, bump_map_block, slope_pattern,
-             magnet_pattern, pigment_pattern, function_pattern, density_file_pattern, pattern_kind,
-             pattern_flag_setting, pattern_setting, pattern_pair_setting, pattern_wave, warp_block,
-             normal_setting, normal_no_bump_scale, normal_map_block, slope_map_block,
-             normal_list_normal, uv_mapping, unsupported_pattern, transformation> {};
+             magnet_pattern, pigment_pattern, function_pattern, density_file_pattern,
+             object_pattern, pattern_kind, pattern_flag_setting, pattern_setting,
+             pattern_pair_setting, pattern_wave, warp_block, normal_setting, normal_no_bump_scale,
+             normal_map_block, slope_map_block, normal_list_normal, uv_mapping, unsupported_pattern,
+             transformation> {};
 struct normal_block
     : p::seq<normal_open, p::opt<normal_base>, p::star<normal_item>, p::must<rbrace>> {};
 struct texture_normal : p::seq<normal_block> {};
@@ -497,8 +513,8 @@ struct texture_list_texture : p::seq<texture_block, p::opt<comma>> {};
 struct texture_item
     : p::sor<directive<texture_item>, macro_call<texture_item>, texture_pigment, texture_finish,
              texture_normal, slope_pattern, magnet_pattern, pigment_pattern, function_pattern,
-             density_file_pattern, pattern_kind, pattern_flag_setting, pattern_setting,
-             pattern_pair_setting, pattern_wave, warp_block, texture_map_block,
+             density_file_pattern, object_pattern, pattern_kind, pattern_flag_setting,
+             pattern_setting, pattern_pair_setting, pattern_wave, warp_block, texture_map_block,
              texture_list_texture, uv_mapping, transformation> {};
 // tiles { TEXTURE... tile2 TEXTURE... } [transforms]: POV-Ray's Parse_Tiles,
 // a checker of two (layered) textures. As in POV-Ray's Parse_Texture it

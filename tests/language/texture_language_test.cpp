@@ -301,6 +301,35 @@ sphere { 0, 1 normal { dents 0.25 } }
               .line == 2);
 }
 
+TEST_CASE("the object pattern reads its object and a list of two", "[language]") {
+    // POV-Ray's Parse_Pattern: object { OBJECT LIST }, the object a name or
+    // a block without modifiers, the list's missing entries checker's
+    // defaults (Check_Default_Map: blue, then green).
+    const auto scene = read(R"(
+#declare Ball = sphere { 0, 1 }
+sphere { 0, 1 pigment { object { Ball rgb 1 } } }
+sphere { 0, 1 texture { object { box { -1, 1 } texture { pigment { rgb 0.5 } }
+                                 texture { pigment { rgb 1 } } } } }
+)");
+    const rt::Pigment& p = texture_of(scene, 0).pigment;
+    REQUIRE(p.patterned.kind != nullptr);
+    CHECK(p.patterned.kind->name == "object");
+    REQUIRE(p.patterned.function);
+    CHECK(p.patterned.function->at({0.2, 0.1, 0.0}, 0.0) == 1.0);
+    CHECK(p.patterned.function->at({1.5, 0.0, 0.0}, 0.0) == 0.0);
+    REQUIRE(p.colour_map.entries.size() == 2);
+    CHECK(p.colour_map.entries[0].colour.c[0].constant() == 1.0);
+    CHECK(p.colour_map.entries[1].colour.c[1].constant() == 1.0);  // green
+    CHECK(texture_of(scene, 1).texture_map.size() == 2);
+    CHECK(error_of("sphere { 0, 1 pigment { object rgb 1 } }").places().front().line == 1);
+    CHECK(error_of("sphere { 0, 1 pigment { object { 3 rgb 1 } } }").places().front().line == 1);
+    CHECK(error_of("#declare B = sphere { 0, 1 }\nsphere { 0, 1 pigment { object { B rgb 1, "
+                   "rgb 0, rgb 0.5 } } }")
+              .places()
+              .front()
+              .line == 2);
+}
+
 TEST_CASE("colour components after a pigment's colour, as POV-Ray reads them", "[language]") {
     // POV-Ray's Parse_Colour reads on after a colour (the distribution's
     // chess2, drums, ballbox1, crystal, shadows): `White filter 0.25`,

@@ -26,6 +26,7 @@
 #include "runtime/texture/pattern/kinds/magnet.hpp"
 #include "runtime/texture/pattern/kinds/mandel.hpp"
 #include "runtime/texture/pattern/kinds/marble.hpp"
+#include "runtime/texture/pattern/kinds/object.hpp"
 #include "runtime/texture/pattern/kinds/onion.hpp"
 #include "runtime/texture/pattern/kinds/pigment_pattern.hpp"
 #include "runtime/texture/pattern/kinds/planar.hpp"
@@ -71,6 +72,7 @@ using PatternKinds = PatternKindList<
     kinds::Magnet,
     kinds::Mandel,
     kinds::Marble,
+    kinds::ObjectPattern,
     kinds::Onion,
     kinds::PigmentPattern,
     kinds::Planar,
