@@ -38,6 +38,8 @@ HEXANT_CUSTOM_ANALYZE(for_directive);
 HEXANT_CUSTOM_ANALYZE(switch_directive);
 HEXANT_CUSTOM_ANALYZE(include_directive);
 HEXANT_CUSTOM_ANALYZE(escaped_branch_end);
+HEXANT_CUSTOM_ANALYZE(object_macro_base);
+HEXANT_CUSTOM_ANALYZE(object_macro_first);
 HEXANT_CUSTOM_ANALYZE(macro_definition_rule);
 HEXANT_CUSTOM_ANALYZE(declared_value_rule);
 #undef HEXANT_CUSTOM_ANALYZE

@@ -265,6 +265,16 @@ class Interpreter {
     template <typename Item, template <typename...> class Action,
               template <typename...> class Control, typename ParseInput>
     bool call_macro(ParseInput& in);
+    // object { MACRO(...) modifiers }: a macro whose body gives the object
+    // and goes on with modifiers of it (`Obj rotate A*y`), as POV-Ray's
+    // tokens read it; object_macro_first reads the object where the body
+    // has not given it yet (macros.hpp).
+    template <typename Item, template <typename...> class Action,
+              template <typename...> class Control, typename ParseInput>
+    bool call_object_macro(ParseInput& in);
+    template <typename Item, template <typename...> class Action,
+              template <typename...> class Control, typename ParseInput>
+    bool object_macro_first(ParseInput& in);
     template <typename Item, template <typename...> class Action,
               template <typename...> class Control, typename ParseInput>
     bool declare_value(ParseInput& in);
@@ -497,6 +507,9 @@ class Interpreter {
     // Where the branches read_closing_branch read end (the directive's
     // next divider), in their input's text.
     std::vector<const char*> escaped_ends_;
+    // The block depths at which object { MACRO(...) } macros are being
+    // read, innermost last (call_object_macro).
+    std::vector<std::size_t> object_macro_depths_;
     // The depth of the object block around the time split being read (its
     // sides may close it only together), and where the side being read
     // closed it: its branch's end, kept for the last side's.

@@ -75,8 +75,16 @@ struct csg_block : p::seq<csg_open, p::star<csg_item>, p::must<object_close>> {}
 // object { IDENT modifiers } or object { shape modifiers }
 HEXANT_KEYWORD(kw_object, "object");
 struct object_base : p::sor<object_value, expression> {};
-struct object_block : p::seq<kw_object, p::must<lbrace>, p::must<object_base>, object_modifiers,
-                             p::must<object_close>> {};
+// object { MACRO(...) modifiers } where the macro's body gives the object
+// and then modifiers of it (object_pattern.pov's `Obj rotate Angle*y`):
+// read as POV-Ray's tokens are, the body's first value the object.
+HEXANT_CUSTOM_RULE(object_macro_base, call_object_macro);
+HEXANT_CUSTOM_RULE(object_macro_first, object_macro_first);
+struct object_macro_item : p::sor<directive<object_macro_item>, macro_call<object_macro_item>,
+                                  object_macro_first<object_macro_item>, object_modifier> {};
+struct object_block : p::seq<kw_object, p::must<lbrace>,
+                             p::sor<object_macro_base<object_macro_item>, p::must<object_base>>,
+                             object_modifiers, p::must<object_close>> {};
 
 // light_source { <position>, colour modifiers }
 HEXANT_KEYWORD(kw_light_source, "light_source");

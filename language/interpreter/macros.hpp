@@ -137,4 +137,31 @@ bool Interpreter::call_macro(ParseInput& in) {
     return true;
 }
 
+template <typename Item, template <typename...> class Action, template <typename...> class Control,
+          typename ParseInput>
+bool Interpreter::call_object_macro(ParseInput& in) {
+    const auto at = in.position();
+    const std::size_t depth = blocks.depth();
+    object_macro_depths_.push_back(depth);
+    bool called = false;
+    try {
+        called = call_macro<Item, Action, Control>(in);
+    } catch (...) {
+        object_macro_depths_.pop_back();
+        throw;
+    }
+    object_macro_depths_.pop_back();
+    if (called && blocks.depth() != depth + 1)
+        fail(at, "this macro gives no object for object { } to hold");
+    return called;
+}
+
+template <typename Item, template <typename...> class Action, template <typename...> class Control,
+          typename ParseInput>
+bool Interpreter::object_macro_first(ParseInput& in) {
+    if (object_macro_depths_.empty() || blocks.depth() != object_macro_depths_.back()) return false;
+    read<grammar::object_base, Action, Control>(in);
+    return true;
+}
+
 }  // namespace hexant::language

@@ -201,3 +201,27 @@ TEST_CASE("a branch may close the block its directive is in", "[language][declar
               .line == 3);
     // (Under a branch on clock: time_branch_test.cpp.)
 }
+
+TEST_CASE("a macro in object { } may give the object and then its modifiers",
+          "[language][declare]") {
+    // object_pattern.pov: `object { Obj2(0, false) translate ... }` whose
+    // body is `Obj rotate Angle*y #if (Flip) ... #end`: POV-Ray reads the
+    // body's tokens in place, so the object is the body's first value and
+    // what follows modifies it, then the modifiers after the call.
+    CHECK(
+        debug("#declare Obj = sphere { 0, 1 }\n"
+              "#macro Turned(Flip) Obj translate x #if (Flip) scale 2 #end #end\n"
+              "#declare O = object { Turned(true) translate y };\n"
+              "#declare P = object { Turned(false) };\n"
+              "#debug str(max_extent(O).x + 10 * max_extent(O).y + 100 * max_extent(P).x, 0, 0)") ==
+        "234");
+    // A macro that gives a whole object, or calls one that does, as before.
+    CHECK(debug("#macro Ball(R) sphere { 0, R } #end\n#macro Outer() Ball(3) #end\n"
+                "#declare O = object { Outer() scale 2 };\n"
+                "#debug str(max_extent(O).x, 0, 0)") == "6");
+    // One that gives no object is an error at the call.
+    const auto none =
+        hexant::test::error_of("#version 3.7;\n#macro Nothing() #end\nobject { Nothing() }\n");
+    INFO(none.formatted());
+    CHECK(none.formatted().find(":3:") != std::string::npos);
+}
