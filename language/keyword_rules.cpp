@@ -293,7 +293,7 @@ constexpr auto kRules = std::to_array<KeywordRuleEntry>({
     {"now", KeywordRule::Refused, ""},
     {"number_of_sides", KeywordRule::Refused, ""},
     {"number_of_tiles", KeywordRule::Refused, ""},
-    {"number_of_waves", KeywordRule::Warned, "waves and ripples keep POV-Ray's default of 10 waves"},
+    {"number_of_waves", KeywordRule::Rendered, ""},
     {"object", KeywordRule::Rendered, ""},
     {"octaves", KeywordRule::Rendered, ""},
     {"off", KeywordRule::Rendered, ""},

@@ -239,6 +239,7 @@ constexpr auto kReserved = std::to_array<std::string_view>({
     "normal_indices",
     "normal_map",
     "normal_vectors",
+    "number_of_waves",
     "object",
     "octaves",
     "off",

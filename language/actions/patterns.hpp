@@ -121,6 +121,7 @@ inline PatternSlot start_pattern(Interpreter& st, const p::position& at, const s
     slot.pattern = runtime::pattern::Pattern::of(*kind);
     // (The scene's noise generator, global_settings { noise_generator }.)
     slot.pattern.noise_generator = st.scene.global.noise_generator;
+    slot.pattern.number_of_waves = st.scene.global.number_of_waves;
     ++st.patterns_written;
     if (slot.pigment) {
         slot.pigment->pattern = runtime::Pigment::Pattern::Patterned;

@@ -400,6 +400,20 @@ struct action<g::global_setting> {
                 st.warn(in.position(),
                         "global noise_generator after patterns: hexant applies it to the patterns "
                         "written after it (POV-Ray to all; put global_settings first)");
+        } else if (name == "number_of_waves") {
+            // POV-Ray's (int)Parse_Float(), below 1 a warning and 1.
+            long long waves = checked_integer(to_constant(v, name), name, -kMaxExactInteger,
+                                              runtime::pattern::kMaxNumberOfWaves);
+            if (waves < 1) {
+                st.warn(in.position(), "number_of_waves " + std::to_string(waves) +
+                                           " is below 1: 1 used, as in POV-Ray");
+                waves = 1;
+            }
+            st.scene.global.number_of_waves = static_cast<int>(waves);
+            if (st.patterns_written > 0)
+                st.warn(in.position(),
+                        "global number_of_waves after patterns: hexant applies it to the patterns "
+                        "written after it (POV-Ray to all; put global_settings first)");
         } else if (name == "max_trace_level") {
             // As POV-Ray 3.7 (parser.cpp): at least 1, and above its limit
             // of 256 a warning and 256.

@@ -86,7 +86,7 @@ HEXANT_KEYWORD(kw_global_settings, "global_settings");
 struct global_setting_name
     : p::sor<TAO_PEGTL_KEYWORD("assumed_gamma"), TAO_PEGTL_KEYWORD("max_trace_level"),
              TAO_PEGTL_KEYWORD("ambient_light"), TAO_PEGTL_KEYWORD("noise_generator"),
-             TAO_PEGTL_KEYWORD("irid_wavelength")> {};
+             TAO_PEGTL_KEYWORD("irid_wavelength"), TAO_PEGTL_KEYWORD("number_of_waves")> {};
 struct global_setting_value : p::seq<expression> {};
 struct global_setting : p::seq<global_setting_name, ws, p::must<global_setting_value>> {};
 struct charset_name : p::identifier {};

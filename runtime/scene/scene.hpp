@@ -34,6 +34,9 @@ struct GlobalSettings {
     // noise_generator 1 to 3 for every pattern that names none (POV-Ray's
     // default 2); hexant applies it to the patterns written after it.
     int noise_generator = 2;
+    // number_of_waves: the wave sources waves and ripples sum (POV-Ray's
+    // default 10); like noise_generator, for the patterns written after it.
+    int number_of_waves = 10;
     // irid_wavelength: the wavelengths iridescence works with, per channel,
     // in its units of film thickness (POV-Ray 3.7's default, scene.cpp:
     // <0.70, 0.52, 0.48>, red 700 nm, green 520, blue 480; its docs' 0.25,

@@ -156,6 +156,7 @@ TextureEvaluator::CompiledPattern::CompiledPattern(const pattern::Pattern& sourc
     exponent = CompiledScalar(source.exponent);
     wave = source.wave;
     if (source.noise_generator != 0) noise_generator = source.noise_generator;
+    if (source.number_of_waves != 0) number_of_waves = source.number_of_waves;
     for (const pattern::Warp& w : source.warps) {
         CompiledWarp c;
         if (w.transform)
@@ -201,6 +202,7 @@ pattern::Values TextureEvaluator::CompiledPattern::values_at(double t) const {
     v.frequency = pattern::single(frequency.at(t));
     v.phase = pattern::single(phase.at(t));
     v.noise_generator = noise_generator;
+    v.number_of_waves = number_of_waves;
     if (turbulence) {
         v.has_turbulence = true;
         v.turbulence = {turbulence->amount[0].at(t), turbulence->amount[1].at(t),

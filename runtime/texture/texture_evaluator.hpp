@@ -159,6 +159,7 @@ class TextureEvaluator {
         CompiledScalar frequency, phase, exponent;
         pattern::Wave wave = pattern::Wave::Ramp;
         int noise_generator = pattern::kDefaultNoiseGenerator;
+        int number_of_waves = pattern::kDefaultNumberOfWaves;
         std::vector<CompiledWarp> warps;  // in the order written
         // The parameters, when none moves: a still pattern pays nothing per
         // hit for time.

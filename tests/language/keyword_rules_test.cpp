@@ -57,7 +57,6 @@ const std::map<std::string, Probe>& probes() {
         self("dispersion", "sphere { 0, 1 interior { ior 1.5 dispersion 1.1 } }");
         self("dispersion_samples", "sphere { 0, 1 interior { dispersion_samples 10 } }");
         self("adc_bailout", "global_settings { adc_bailout 0.01 }");
-        self("number_of_waves", "global_settings { number_of_waves 5 }");
         self("mm_per_unit", "global_settings { mm_per_unit 10 }");
         self("hf_gray_16", "global_settings { hf_gray_16 on }");
         p["importance"] = {"sphere { 0, 1 radiosity { importance 0.5 } }", "radiosity"};

@@ -545,3 +545,19 @@ TEST_CASE("a macro call in a sum opens a pigment as its value", "[language][patt
     CHECK(texture_of(scene, 0).pigment.colours[0].c[0].constant() == 0.5);
     CHECK(texture_of(scene, 0).pigment.colours[0].c[1].constant() == 0.25);
 }
+
+TEST_CASE("number_of_waves reaches the waves and ripples written after it", "[language]") {
+    // POV-Ray's global_settings { number_of_waves N }: (int) N, below 1 a
+    // warning and 1; hexant's limit is 1,000 sources.
+    const auto scene = read(R"(
+global_settings { number_of_waves 3.7 }
+sphere { 0, 1 pigment { waves } }
+)");
+    CHECK(scene.global.number_of_waves == 3);
+    CHECK(texture_of(scene, 0).pigment.patterned.number_of_waves == 3);
+    const auto low = read("global_settings { number_of_waves 0 }\n");
+    CHECK(low.global.number_of_waves == 1);
+    REQUIRE(low.warnings.size() == 1);
+    CHECK(low.warnings[0].find("below 1") != std::string::npos);
+    CHECK(error_of("global_settings { number_of_waves 5000 }").places().front().line == 1);
+}

@@ -54,10 +54,9 @@ glm::dvec3 quilted_normal(const glm::dvec3& p, const Values& v, double amount, c
 glm::dvec3 ripples_normal(const glm::dvec3& p, const Values& v, double amount, const glm::dvec3& n);
 glm::dvec3 waves_normal(const glm::dvec3& p, const Values& v, double amount, const glm::dvec3& n);
 
-// Shared by shape_patterns.cpp and normal_patterns.cpp: the ten wave
-// sources of waves and ripples (POV-Ray's Initialize_Waves), and quilted's
-// cubic.
-inline constexpr std::size_t kWaveSources = 10;
+// Shared by shape_patterns.cpp and normal_patterns.cpp: the wave sources
+// of waves and ripples (POV-Ray's Initialize_Waves; they sum the first
+// Values::number_of_waves), and quilted's cubic.
 const glm::dvec3& wave_source(std::size_t i);
 double wave_frequency(std::size_t i);
 double quilt_shape(double t, double control0, double control1);

@@ -40,25 +40,27 @@ glm::dvec3 quilted_normal(const glm::dvec3& p, const Values& v, double amount,
 glm::dvec3 ripples_normal(const glm::dvec3& p, const Values& v, double amount,
                           const glm::dvec3& n) {
     glm::dvec3 out = n;
-    for (std::size_t i = 0; i < kWaveSources; ++i) {
+    const std::size_t waves = static_cast<std::size_t>(v.number_of_waves);
+    for (std::size_t i = 0; i < waves; ++i) {
         const glm::dvec3 d = p - wave_source(i);
         double length = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
         if (length == 0.0) length = 1.0;
         const double scalar = cycloidal(length * v.frequency + v.phase) * amount;
-        out += (scalar / (length * static_cast<double>(kWaveSources))) * d;
+        out += (scalar / (length * static_cast<double>(waves))) * d;
     }
     return out;
 }
 
 glm::dvec3 waves_normal(const glm::dvec3& p, const Values& v, double amount, const glm::dvec3& n) {
     glm::dvec3 out = n;
-    for (std::size_t i = 0; i < kWaveSources; ++i) {
+    const std::size_t waves = static_cast<std::size_t>(v.number_of_waves);
+    for (std::size_t i = 0; i < waves; ++i) {
         const glm::dvec3 d = p - wave_source(i);
         double length = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
         if (length == 0.0) length = 1.0;
         const double f = wave_frequency(i);
         const double scalar = cycloidal(length * v.frequency * f + v.phase) * amount / f;
-        out += (scalar / (length * static_cast<double>(kWaveSources))) * d;
+        out += (scalar / (length * static_cast<double>(waves))) * d;
     }
     return out;
 }

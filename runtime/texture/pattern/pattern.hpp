@@ -84,6 +84,11 @@ class PigmentSource {
 };
 
 // The parameters of one instant, as a kind's function reads them.
+// waves' and ripples' wave sources: POV-Ray's default number_of_waves, and
+// the most hexant computes (POV-Ray sets none).
+inline constexpr int kDefaultNumberOfWaves = 10;
+inline constexpr int kMaxNumberOfWaves = 1000;
+
 struct Values {
     glm::dvec3 vector{0.0};          // gradient's direction, brick_size
     std::array<double, 2> number{};  // mortar, arms, iterations, control0/1, agate_turb
@@ -104,6 +109,7 @@ struct Values {
     double frequency = 1.0;
     double phase = 0.0;
     int noise_generator = kDefaultNoiseGenerator;
+    int number_of_waves = kDefaultNumberOfWaves;
 };
 
 using Function = double (*)(const glm::dvec3& point, const Values& values);
@@ -223,6 +229,7 @@ struct Pattern {
     Wave wave = Wave::Ramp;
     TimeFunction exponent = 1.0;  // poly_wave
     int noise_generator = 0;      // 0: the scene's
+    int number_of_waves = 0;      // waves' and ripples' sources (0: POV-Ray's 10)
     std::vector<Warp> warps;      // before the last transforms (Pigment::transform)
     // A kind with a block of its own: slope's altitude and its numbers.
     Vector3Function vector2;

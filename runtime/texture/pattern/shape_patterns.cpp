@@ -32,15 +32,15 @@ double spiral_angle(double x, double y, double r) {
     return x < 0.0 ? 3.0 * kHalfPi - std::asin(y / r) : kHalfPi + std::asin(y / r);
 }
 
-// The ten wave sources of waves and ripples: directions from the vector
-// noise at (i, 0, 0), frequencies from POV-Ray's generator
-// (Initialize_Waves).
+// The wave sources of waves and ripples, as many as they may sum:
+// directions from the vector noise at (i, 0, 0), frequencies from POV-Ray's
+// generator (Initialize_Waves; the first N are the same for any count).
 struct WaveSources {
-    std::array<glm::dvec3, kWaveSources> at;
-    std::array<double, kWaveSources> frequency;
+    std::array<glm::dvec3, kMaxNumberOfWaves> at;
+    std::array<double, kMaxNumberOfWaves> frequency;
     WaveSources() {
         std::uint32_t r = static_cast<std::uint32_t>(-560851967);
-        for (int i = 0; i < static_cast<int>(kWaveSources); ++i) {
+        for (int i = 0; i < kMaxNumberOfWaves; ++i) {
             at[static_cast<std::size_t>(i)] =
                 glm::normalize(dnoise({static_cast<double>(i), 0.0, 0.0}));
             r = r * 1812433253u + 12345u;
@@ -165,19 +165,21 @@ double wood_value(const glm::dvec3& p, const Values& v) {
 double waves_value(const glm::dvec3& p, const Values& v) {
     const WaveSources& s = sources();
     double sum = 0.0;
-    for (std::size_t i = 0; i < kWaveSources; ++i) {
+    const std::size_t n = static_cast<std::size_t>(v.number_of_waves);
+    for (std::size_t i = 0; i < n; ++i) {
         const double index = distance_or_one(p, s.at[i]) * v.frequency * s.frequency[i] + v.phase;
         sum += cycloidal(index) / s.frequency[i];
     }
-    return 0.2 * (2.5 + (sum / 10.0));
+    return 0.2 * (2.5 + (sum / static_cast<double>(n)));
 }
 
 double ripples_value(const glm::dvec3& p, const Values& v) {
     const WaveSources& s = sources();
     double sum = 0.0;
-    for (std::size_t i = 0; i < kWaveSources; ++i)
+    const std::size_t n = static_cast<std::size_t>(v.number_of_waves);
+    for (std::size_t i = 0; i < n; ++i)
         sum += cycloidal(distance_or_one(p, s.at[i]) * v.frequency + v.phase);
-    return 0.5 * (1.0 + (sum / 10.0));
+    return 0.5 * (1.0 + (sum / static_cast<double>(n)));
 }
 
 }  // namespace hexant::runtime::pattern
