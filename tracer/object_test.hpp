@@ -15,9 +15,13 @@ struct ObjectTest {
     const runtime::Ray4& ray;
     double s_min, s_max;  // the whole segment, whatever the walk has found
     ThreadState& state;
+    // The index of the object whose hit is best so far (nearest()).
+    mutable std::uint32_t best_index = UINT32_MAX;
 
     // Object `index` (its mailbox slot): a nearer hit than best_s replaces
-    // best. Returns whether it did.
+    // best, and so does one at the same distance from an object earlier in
+    // the scene (coincident surfaces: the first written shows, as in
+    // POV-Ray, whatever order a walk meets them in). Returns whether it did.
     bool nearest(std::uint32_t index, const runtime::IntelligentObject& object,
                  std::optional<runtime::ObjectHit>& best, double& best_s) const {
         // (An object hidden from this kind of ray: no_image, no_reflection.)
@@ -31,9 +35,10 @@ struct ObjectTest {
         }
         if (slot < 0) return false;
         const runtime::ObjectHit& hit = state.mailbox.hit(slot);
-        if (!(hit.s < best_s)) return false;
+        if (!(hit.s < best_s) && !(hit.s == best_s && best && index < best_index)) return false;
         best = hit;
         best_s = hit.s;
+        best_index = index;
         return true;
     }
 

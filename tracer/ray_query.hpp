@@ -3,7 +3,8 @@
 // Three modes answer it (docs/design.md, "Spacetime query"): one spacetime hierarchy for the
 // whole animation (spacetime_query.cpp), a spatial hierarchy per frame, the
 // paper's baseline (frame_baseline.cpp), and brute force, the reference
-// (brute_force.cpp). They must agree up to ties between equal distances.
+// (brute_force.cpp). They must agree; at equal distances the object written first is kept
+// (object_test.hpp).
 #pragma once
 
 #include <memory>
