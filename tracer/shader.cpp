@@ -368,9 +368,11 @@ glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, std::uint
     // (A ray that leaves an object it was not known to be in was inside it
     // from its start (a camera inside) when its origin is; else it came in
     // through an opening (clipped_by) and is in the open, as POV-Ray has it.)
-    // (A solid without media matters only to the atmosphere and fog: its
-    // inside test is not paid on every ray leaving glass otherwise.)
-    const bool volumes = !fogs_.empty() || atmosphere_ != nullptr;
+    // (A solid without media matters only to the atmosphere, fog and the
+    // media of interiors around it, which it blocks (hollow2.pov's glass
+    // ball in a glowing one): its inside test is not paid on every ray
+    // leaving glass otherwise.)
+    const bool volumes = !fogs_.empty() || atmosphere_ != nullptr || inside.has_media();
     h.around = h.back && (media || (!h.entry.hollow && volumes)) &&
                        (inside.contains(h.entry.key) || hit->object->inside(ray.origin))
                    ? inside.with(h.entry)
