@@ -94,6 +94,14 @@ struct action<g::unsupported_directive> {
 };
 
 template <>
+struct action<g::lone_hash> {
+    template <typename ActionInput>
+    static void apply(const ActionInput& in, Interpreter& st) {
+        st.warn(in.position(), "a '#' that starts no directive is ignored, as POV-Ray ignores it");
+    }
+};
+
+template <>
 struct action<g::unknown_directive> {
     template <typename ActionInput>
     static void apply(const ActionInput& in, Interpreter&) {

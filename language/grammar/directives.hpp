@@ -99,6 +99,9 @@ struct unsupported_directive
     : p::sor<TAO_PEGTL_KEYWORD("render"), TAO_PEGTL_KEYWORD("statistics")> {};
 // Anything after '#' that is not a directive, nor a block's divider.
 struct unknown_directive : p::seq<p::not_at<skip::divider_word>, p::identifier_first> {};
+// A '#' before what is not a word (`look_at <0, 2, 0>#` then `}`): POV-Ray's
+// Parse_Directive ungets the token and reads on, so the '#' is ignored.
+struct lone_hash : p::seq<p::not_at<p::identifier_first>, ws> {};
 
 struct default_block;
 template <typename Item>
@@ -110,6 +113,7 @@ struct directive
                            include_directive<Item>, macro_definition, undef_directive,
                            version_directive, debug_directive, warning_directive, error_directive,
                            default_block, fopen_directive, fclose_directive, write_directive,
-                           read_directive, unsupported_directive, unknown_directive>>> {};
+                           read_directive, unsupported_directive, unknown_directive, lone_hash>>> {
+};
 
 }  // namespace hexant::language::grammar

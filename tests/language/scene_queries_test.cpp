@@ -225,3 +225,22 @@ TEST_CASE("a macro in object { } may give the object and then its modifiers",
     INFO(none.formatted());
     CHECK(none.formatted().find(":3:") != std::string::npos);
 }
+
+TEST_CASE("a '#' that starts no directive is ignored with a warning", "[language][declare]") {
+    // image_size.pov: `look_at <0,2,0>#` at a line's end. POV-Ray's
+    // Parse_Directive ungets what follows a '#' that names no directive.
+    hexant::language::ParseOptions options;
+    std::ostringstream messages;
+    options.messages = &messages;
+    const auto scene = hexant::language::parse_scene_text(
+        "#version 3.7;\ncamera { location <0, 2, -10> look_at <0, 2, 0>#\n }\n"
+        "sphere { 0, 1 # }\n",
+        "hash.pov", options);
+    CHECK(scene.objects.size() == 1);
+    REQUIRE(scene.warnings.size() == 2);
+    INFO(scene.warnings[0]);
+    CHECK(scene.warnings[0].find("hash.pov:2:49") != std::string::npos);
+    CHECK(scene.warnings[0].find("ignored") != std::string::npos);
+    // A word after it is still an unknown directive.
+    CHECK(message("#delcare X = 1;").find("unknown directive '#delcare'") != std::string::npos);
+}
