@@ -53,7 +53,7 @@ using Block = std::variant<runtime::ObjectRecord, runtime::LightRecord, runtime:
                            runtime::Texture, runtime::Pigment, runtime::Normal, runtime::ColourMap,
                            runtime::SkySphere, runtime::Fog, runtime::Finish, runtime::Interior,
                            runtime::Media, runtime::Transform, SplineBuilder, MaterialBuilder,
-                           ImageMapBuilder>;
+                           ImageMapBuilder, runtime::Rainbow>;
 
 class BlockStack {
   public:

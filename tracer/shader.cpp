@@ -55,6 +55,7 @@ Shader::Shader(const runtime::SceneDescription& scene, const RayQuery& query, Li
         sky_emission_ = scene.sky_sphere->emission;
     }
     fogs_ = scene.fogs;
+    rainbows_ = scene.rainbows;
     // (A density pattern hexant lacks throws, naming its place.)
     if (!scene.atmosphere.empty())
         atmosphere_ = std::make_shared<const runtime::MediaVolume>(scene.atmosphere);
@@ -416,6 +417,18 @@ glm::dvec3 Shader::through_volume(const glm::dvec3& colour, const Ray4& ray, dou
     if (!around.hollow()) return colour;
     glm::dvec3 seen = colour;
     const bool interiors = around.has_media();
+    // (Rainbows after the interiors' media and before the atmosphere's, as
+    // TraceRay orders them; their jitter from the sample's own numbers.)
+    const auto rainbows = [&] {
+        if (rainbows_.empty()) return;
+        const SampleIndex& s = state.sample;
+        const glm::dvec3 d = glm::normalize(glm::dvec3(ray.direction));
+        std::uint64_t bits = 0;
+        std::memcpy(&bits, &d.x, sizeof bits);
+        MediaRandom random(((std::uint64_t(s.seed) << 32) ^ s.index ^ bits) + 0x5261696eull);
+        seen = runtime::through_rainbows(rainbows_, seen, d, depth, [&] { return random.next(); });
+    };
+    if (!interiors) rainbows();
     if (interiors || atmosphere_) {
         MediaRay m;
         m.origin = glm::dvec3(ray.origin);
@@ -450,6 +463,7 @@ glm::dvec3 Shader::through_volume(const glm::dvec3& colour, const Ray4& ray, dou
                 if (const runtime::MediaVolume* v = around.entries[std::size_t(i)].media)
                     for (const auto& one : v->media()) media.push_back(&one);
             seen = through_media(media, m, lights, random, light_at, seen);
+            rainbows();
         }
         if (atmosphere_) {
             std::vector<const runtime::MediaVolume::One*> media;

@@ -158,6 +158,7 @@ class Shader {
     std::vector<runtime::TextureEvaluator> sky_layers_;
     runtime::ColourFunction sky_emission_;
     std::vector<runtime::Fog> fogs_;
+    std::vector<runtime::Rainbow> rainbows_;
     std::shared_ptr<const runtime::MediaVolume> atmosphere_;  // media { } at the top
     int noise_generator_ = 2;  // global_settings { noise_generator } (fog, iridescence)
     runtime::ColourFunction ambient_light_;

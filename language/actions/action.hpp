@@ -96,6 +96,8 @@ struct action<g::normal_setting_name> : name_action {};
 template <>
 struct action<g::fog_setting_name> : name_action {};
 template <>
+struct action<g::rainbow_setting_name> : name_action {};
+template <>
 struct action<g::finish_setting_name> : name_action {};
 template <>
 struct action<g::csg_kind> : name_action {};

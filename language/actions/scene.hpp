@@ -356,6 +356,83 @@ struct action<g::fog_colour> {
         }
     }
 };
+// ---- rainbow { } (runtime/scene/rainbow.hpp)
+template <>
+struct action<g::rainbow_open> {
+    template <typename ActionInput>
+    static void apply(const ActionInput& in, Interpreter& st) {
+        st.require_whole_time(in.position(), "a rainbow");
+        st.blocks.open(std::in_place_type<runtime::Rainbow>);
+    }
+};
+inline double rainbow_number(const Value& v, const std::string& name) {
+    const TimeFunction f = to_float(v, "the rainbow's " + name);
+    if (!f.is_constant()) throw ValueError("the rainbow's " + name + " cannot change with clock");
+    if (!std::isfinite(f.constant()))
+        throw ValueError("the rainbow's " + name + " must be a finite number");
+    return f.constant();
+}
+template <>
+struct action<g::rainbow_setting> {
+    template <typename ActionInput>
+    static void apply(const ActionInput& in, Interpreter& st) {
+        Value v = st.values.pop();
+        const std::string name = st.values.pop_name();
+        auto& r = st.blocks.edit<runtime::Rainbow>(in.position(), name.c_str());
+        if (name == "direction" || name == "up") {
+            const runtime::Vector3Function f = to_vector3(v, "the rainbow's " + name);
+            glm::dvec3 c;
+            for (int i = 0; i < 3; ++i) c[i] = rainbow_number(Value{f.c[i]}, name);
+            (name == "up" ? r.up : r.direction) = c;
+            return;
+        }
+        const double x = rainbow_number(v, name);
+        if (name == "angle")
+            r.angle = x;
+        else if (name == "width")
+            r.width = x;
+        else if (name == "distance")
+            r.distance = x;
+        else if (name == "jitter")
+            r.jitter = x;
+        else {
+            // (POV-Ray's Parse_Rainbow refuses these outside 0 to 360.)
+            if (!(x >= 0.0 && x <= 360.0))
+                throw ValueError("the rainbow's " + name + " is 0 to 360 degrees, not " +
+                                 std::to_string(x));
+            if (name == "arc_angle")
+                r.arc_angle = x, r.arc_given = true;
+            else
+                r.falloff_angle = x, r.falloff_given = true;
+        }
+    }
+};
+template <>
+struct action<g::rainbow_colour_map> {
+    template <typename ActionInput>
+    static void apply(const ActionInput& in, Interpreter& st) {
+        const Value v = st.values.pop();
+        auto& r = st.blocks.edit<runtime::Rainbow>(in.position(), "color_map");
+        r.colour_map.clear();
+        for (const auto& e : v.as<runtime::ColourMap>().entries) {
+            runtime::Rainbow::Entry entry{rainbow_number(Value{e.value}, "color_map's value"), {}};
+            for (std::size_t k = 0; k < 5; ++k)
+                entry.colour[k] = rainbow_number(Value{e.colour.c[k]}, "color_map's colour");
+            r.colour_map.push_back(entry);
+        }
+    }
+};
+template <>
+struct action<g::rainbow_block> {
+    template <typename ActionInput>
+    static void apply(const ActionInput& in, Interpreter& st) {
+        auto& r = st.blocks.edit<runtime::Rainbow>(in.position(), "a rainbow");
+        if (const std::string problem = r.finish(); !problem.empty()) throw ValueError(problem);
+        st.scene.rainbows.push_back(std::move(r));
+        st.blocks.close();
+    }
+};
+
 template <>
 struct action<g::fog_block> {
     template <typename ActionInput>

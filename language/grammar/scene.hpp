@@ -81,6 +81,18 @@ struct fog_colour : p::seq<expression> {};
 struct fog_item
     : p::sor<directive<fog_item>, macro_call<fog_item>, fog_setting, transformation, fog_colour> {};
 struct fog_block : p::seq<fog_open, p::star<fog_item>, p::must<rbrace>> {};
+// rainbow { angle A width W distance D direction V up V jitter J arc_angle A
+// falloff_angle A color_map { } } (runtime/scene/rainbow.hpp).
+struct rainbow_open : p::seq<TAO_PEGTL_KEYWORD("rainbow"), ws, p::must<lbrace>> {};
+struct rainbow_setting_name
+    : p::sor<TAO_PEGTL_KEYWORD("angle"), TAO_PEGTL_KEYWORD("width"), TAO_PEGTL_KEYWORD("distance"),
+             TAO_PEGTL_KEYWORD("direction"), TAO_PEGTL_KEYWORD("up"), TAO_PEGTL_KEYWORD("jitter"),
+             TAO_PEGTL_KEYWORD("arc_angle"), TAO_PEGTL_KEYWORD("falloff_angle")> {};
+struct rainbow_setting : p::seq<rainbow_setting_name, ws, p::must<pattern_setting_value>> {};
+struct rainbow_colour_map : p::seq<colour_map_block> {};
+struct rainbow_item : p::sor<directive<rainbow_item>, macro_call<rainbow_item>, rainbow_setting,
+                             rainbow_colour_map> {};
+struct rainbow_block : p::seq<rainbow_open, p::star<rainbow_item>, p::must<rbrace>> {};
 
 HEXANT_KEYWORD(kw_global_settings, "global_settings");
 struct global_setting_name
@@ -186,9 +198,10 @@ struct scene_camera : p::seq<camera_block> {};
 struct scene_sky_sphere : p::seq<sky_sphere_block> {};
 // media { } at the top: the atmosphere's (runtime/scene/media.hpp).
 struct scene_media : p::seq<media_block> {};
-struct scene_item : p::sor<directive<scene_item>, macro_call<scene_item>, scene_object,
-                           scene_camera, background_block, scene_sky_sphere, fog_block, scene_media,
-                           global_settings_block, default_block, scene_unsupported, semicolon> {};
+struct scene_item
+    : p::sor<directive<scene_item>, macro_call<scene_item>, scene_object, scene_camera,
+             background_block, scene_sky_sphere, fog_block, rainbow_block, scene_media,
+             global_settings_block, default_block, scene_unsupported, semicolon> {};
 struct scene_end : p::eof {};
 struct scene_file : p::seq<ws, p::star<scene_item>, p::must<scene_end>> {};
 

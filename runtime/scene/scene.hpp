@@ -11,6 +11,7 @@
 #include "runtime/scene/fog.hpp"
 #include "runtime/scene/light.hpp"
 #include "runtime/scene/media.hpp"
+#include "runtime/scene/rainbow.hpp"
 #include "runtime/scene/sky_sphere.hpp"
 #include "runtime/source_place.hpp"
 
@@ -60,6 +61,7 @@ struct SceneDescription {
     ColourFunction background{};          // black
     std::optional<SkySphere> sky_sphere;  // over the background
     std::vector<Fog> fogs;
+    std::vector<Rainbow> rainbows;  // finished (Rainbow::finish)
     // media { } written at the top: the atmosphere's, in the world
     // (runtime/scene/media.hpp).
     std::vector<Media> atmosphere;

@@ -244,3 +244,32 @@ TEST_CASE("a '#' that starts no directive is ignored with a warning", "[language
     // A word after it is still an unknown directive.
     CHECK(message("#delcare X = 1;").find("unknown directive '#delcare'") != std::string::npos);
 }
+
+TEST_CASE("a rainbow is read and prepared as POV-Ray's Parse_Rainbow", "[language]") {
+    hexant::language::ParseOptions options;
+    const auto scene = hexant::language::parse_scene_text(
+        "#version 3.7;\nrainbow { angle 40 width 4 direction <0, 0, 2> arc_angle 120\n"
+        "color_map { [0 rgb 1] [1 rgbf <1, 0, 0, 0.5>] } }\n",
+        "rainbow.pov", options);
+    REQUIRE(scene.rainbows.size() == 1);
+    const auto& r = scene.rainbows[0];
+    CHECK(r.direction.z == Approx(1.0));
+    CHECK(r.angle == Approx(38.0 * 3.141592653589793 / 180.0));  // its inner edge
+    CHECK(r.width == Approx(4.0 * 3.141592653589793 / 180.0));
+    CHECK(r.arc_angle == Approx(60.0 * 3.141592653589793 / 180.0));  // halved
+    CHECK(r.falloff_angle == r.arc_angle);                           // an arc alone: no falloff
+    CHECK(r.colour_at(0.5)[3] == Approx(0.25));
+    // POV-Ray's errors, each at the rainbow.
+    for (const char* bad : {"rainbow { direction 0 }", "rainbow { direction z up z }",
+                            "rainbow { direction z arc_angle 90 falloff_angle 120 }",
+                            "rainbow { direction z arc_angle 400 }"}) {
+        INFO(bad);
+        CHECK(hexant::test::error_of(std::string("#version 3.7;\n") + bad).places().front().line ==
+              2);
+    }
+    CHECK(hexant::test::error_of("#version 3.7;\nrainbow { direction z angle clock }",
+                                 hexant::test::animation())
+              .places()
+              .front()
+              .line == 2);
+}
