@@ -507,7 +507,7 @@ constexpr auto kRules = std::to_array<KeywordRuleEntry>({
     {"water_level", KeywordRule::Rendered, ""},
     {"waves", KeywordRule::Rendered, ""},
     {"while", KeywordRule::Rendered, ""},
-    {"width", KeywordRule::Refused, ""},
+    {"width", KeywordRule::Rendered, ""},
     {"wood", KeywordRule::Rendered, ""},
     {"wrinkles", KeywordRule::Rendered, ""},
     {"write", KeywordRule::Rendered, ""},

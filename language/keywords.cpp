@@ -418,6 +418,7 @@ constexpr auto kReserved = std::to_array<std::string_view>({
     "warp",
     "wave",
     "while",
+    "width",
     "write",
     "x",
     "xyz",
