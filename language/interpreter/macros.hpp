@@ -160,8 +160,10 @@ template <typename Item, template <typename...> class Action, template <typename
           typename ParseInput>
 bool Interpreter::object_macro_first(ParseInput& in) {
     if (object_macro_depths_.empty() || blocks.depth() != object_macro_depths_.back()) return false;
-    read<grammar::object_base, Action, Control>(in);
-    return true;
+    // (Only where an object starts: a divider or a modifier is another
+    // item's, as in a branch of the body before its object.)
+    return p::match<grammar::object_base, p::apply_mode::action, p::rewind_mode::required, Action,
+                    Control>(in, *this);
 }
 
 }  // namespace hexant::language

@@ -273,3 +273,11 @@ TEST_CASE("a rainbow is read and prepared as POV-Ray's Parse_Rainbow", "[languag
               .front()
               .line == 2);
 }
+
+TEST_CASE("an object macro's body may branch before it gives its object", "[language][declare]") {
+    // shapes.inc's Circle_Text and Round_Box: #if/#else around #local lines
+    // before the object; the branch's #end is not the object.
+    CHECK(debug("#macro M(A) #if (A > 1) #local R = 2; #else #if (A > 0) #local R = 1; #end #end\n"
+                "sphere { 0, R } #end\n"
+                "#declare O = object { M(1) };\n#debug str(max_extent(O).x, 0, 0)") == "1");
+}
