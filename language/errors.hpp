@@ -113,8 +113,10 @@ HEXANT_ERROR(fade_setting_value,
 HEXANT_ERROR(projected_through_base, "expected an object in projected_through { }");
 HEXANT_ERROR(density_file_type, "expected df3 after density_file (its only file type)");
 HEXANT_ERROR(density_file_name, "expected the density file's name (a string) after df3");
-HEXANT_ERROR(object_pattern_object, "expected an object (a name or an object block) after object {");
-HEXANT_ERROR(object_pattern_close, "expected the object pattern's colours, pigments, normals or textures, or '}'");
+HEXANT_ERROR(object_pattern_object,
+             "expected an object (a name or an object block) after object {");
+HEXANT_ERROR(object_pattern_close,
+             "expected the object pattern's colours, pigments, normals or textures, or '}'");
 HEXANT_ERROR(density_map_value, "expected the value of a density_map entry after '['");
 HEXANT_ERROR(media_setting_value, "expected a value after a media setting");
 HEXANT_ERROR(media_samples_value, "expected the number of samples after samples in media { }");

@@ -274,8 +274,7 @@ sphere { 0, 1 pigment { rgb 1 } }
               .line == 1);
 }
 
-TEST_CASE("#default's normal without a pattern sets what new normals start from",
-          "[language]") {
+TEST_CASE("#default's normal without a pattern sets what new normals start from", "[language]") {
     // POV-Ray's default Tnormal may have no pattern (normmap.pov:
     // `#default { normal { bump_size 1.5 } }`): every normal read after it
     // starts from it (Parse_Tnormal copies it), normal_map entries too, and

@@ -185,9 +185,9 @@ TEST_CASE("what cannot yet be piecewise in time is an error at the branch", "[la
     CHECK(e.formatted().find("piecewise") != std::string::npos);
     // The object's own interior or transform under a branch inside its
     // block: refused at the branch (its texture is made piecewise, below).
-    const auto own = error_of(
-        "sphere { 0, 1 pigment { rgb 1 } #if (clock > 0.5) interior { ior 1.5 } #end }\n",
-        animation());
+    const auto own =
+        error_of("sphere { 0, 1 pigment { rgb 1 } #if (clock > 0.5) interior { ior 1.5 } #end }\n",
+                 animation());
     CHECK(own.formatted().find("test.pov:1:37") != std::string::npos);
     const auto moved = error_of(
         "sphere { 0, 1 #if (clock > 0.5) pigment { rgb 1 } translate x #end }\n", animation());
@@ -195,12 +195,10 @@ TEST_CASE("what cannot yet be piecewise in time is an error at the branch", "[la
     // Branches that close the block around them: on both sides or neither,
     // and nothing after the '}' in the branch.
     const auto one_side = error_of(
-        "union { sphere { 0, 1 }\n#if (clock > 0.5) } #else sphere { x, 1 } #end }\n",
-        animation());
+        "union { sphere { 0, 1 }\n#if (clock > 0.5) } #else sphere { x, 1 } #end }\n", animation());
     CHECK(one_side.formatted().find("test.pov:2:5") != std::string::npos);
     const auto goes_on = error_of(
-        "union { sphere { 0, 1 }\n#if (clock > 0.5) } sphere { x, 1 } #else } #end\n",
-        animation());
+        "union { sphere { 0, 1 }\n#if (clock > 0.5) } sphere { x, 1 } #else } #end\n", animation());
     CHECK(goes_on.formatted().find("goes on after it") != std::string::npos);
     // A texture set differently on the two sides.
     const auto texture = error_of(
