@@ -462,7 +462,8 @@ class Interpreter {
     // when the reading reaches it (skip_escaped_rest); false when it does not.
     template <typename Item, template <typename...> class Action,
               template <typename...> class Control, typename ParseInput>
-    bool read_closing_branch(ParseInput& in, const p::position& opened, const char* directive);
+    bool read_closing_branch(ParseInput& in, const p::position& opened, const char* directive,
+                             const char* body_end);
     // The same for a condition known to be `taken` over the whole domain.
     template <typename Item, template <typename...> class Action,
               template <typename...> class Control, typename ParseInput>

@@ -66,7 +66,6 @@ void Interpreter::if_rest(ParseInput& in, const p::position& opened, bool taken)
     bool seen_else = false;
     for (;;) {
         if (taken && read_opening_branch<Item, Action, Control>(in, opened, "#if")) return;
-        if (taken && read_closing_branch<Item, Action, Control>(in, opened, "#if")) return;
         const Divider d = taken ? run_body<Item, Action, Control>(in) : skip_body<Control>(in);
         if (d == Divider::End) return;
         if (taken) {
@@ -85,7 +84,6 @@ void Interpreter::if_rest(ParseInput& in, const p::position& opened, bool taken)
             seen_else = true;
             taken = true;
             if (read_opening_branch<Item, Action, Control>(in, opened, "#if")) return;
-            if (read_closing_branch<Item, Action, Control>(in, opened, "#if")) return;
             // After #else only #end may follow.
             const Divider last = run_body<Item, Action, Control>(in);
             if (last != Divider::End) unclosed(opened, "#if", last, in);
@@ -251,11 +249,9 @@ bool Interpreter::run_ifdef(ParseInput& in) {
     read<grammar::condition_close, Action, Control>(in);
     const auto rest = [&](bool taken) {
         if (taken && read_opening_branch<Item, Action, Control>(in, opened, name)) return;
-        if (taken && read_closing_branch<Item, Action, Control>(in, opened, name)) return;
         Divider d = taken ? run_body<Item, Action, Control>(in) : skip_body<Control>(in);
         if (d == Divider::Else) {
             if (!taken && read_opening_branch<Item, Action, Control>(in, opened, name)) return;
-            if (!taken && read_closing_branch<Item, Action, Control>(in, opened, name)) return;
             d = taken ? skip_body<Control>(in) : run_body<Item, Action, Control>(in);
         }
         if (d != Divider::End) unclosed(opened, name, d, in);
@@ -349,9 +345,12 @@ bool Interpreter::read_opening_branch(ParseInput& in, const p::position& opened,
     const char* body = in.current();
     skip_text<Control>(in);
     const char* body_end = in.current();
-    if (brace_balance(body, body_end) <= 0) {
+    const long balance = brace_balance(body, body_end);
+    if (balance <= 0) {
         in.iterator() = start;
-        return false;
+        // (One that closes more than it opens: the scan is not repeated.)
+        return balance < 0 &&
+               read_closing_branch<Item, Action, Control>(in, opened, directive, body_end);
     }
     // Through the directive's #end.
     Divider d = next_divider(in);
@@ -383,19 +382,13 @@ bool Interpreter::read_opening_branch(ParseInput& in, const p::position& opened,
 // that block's reader; the place where the branch's text ends is kept in
 // escaped_ends_, and when the reading after the block reaches it
 // (skip_escaped_rest, the first alternative of every directive) the
-// directive's other branches through #end are stepped over. Returns false,
-// reading nothing, for a branch whose braces do not close more than they
-// open.
+// directive's other branches through #end are stepped over. Called by
+// read_opening_branch, which found the branch's end `body_end` and its
+// braces closing more than they open.
 template <typename Item, template <typename...> class Action, template <typename...> class Control,
           typename ParseInput>
 bool Interpreter::read_closing_branch(ParseInput& in, const p::position& opened,
-                                      const char* directive) {
-    const auto start = in.iterator();
-    const char* body = in.current();
-    skip_text<Control>(in);
-    const char* body_end = in.current();
-    in.iterator() = start;
-    if (brace_balance(body, body_end) >= 0) return false;
+                                      const char* directive, const char* body_end) {
     const bool in_side = symbols.sides_open() > 0;
     if (in_side && !split_block_depth_)
         fail(opened, std::string("the branch taken here closes a block it did not open, inside "
