@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "app/log_log_plot.hpp"
+#include "app/scene_reading.hpp"
 #include "language/interpreter.hpp"
 #include "tracer/image_compare.hpp"
 #include "tracer/image_output.hpp"
@@ -232,14 +233,16 @@ int run_error_time(const ErrorTimeArguments& args, std::ostream& out, std::ostre
     return run_reporting_errors(err, [&] {
         const ResolvedScene resolved = resolve(args.scene);
         for (const auto& warning : resolved.warnings) err << warning << "\n";
-        const runtime::SceneDescription scene =
-            language::parse_scene_file(resolved.scene, resolved.options);
-        const runtime::Animation& a = scene.animation;
+        SceneReading reading(resolved, err);
+        const runtime::Animation a = reading.scene().animation;
         const int frame = args.frame.value_or((a.initial_frame + a.final_frame) / 2);
         if (frame < a.initial_frame || frame > a.final_frame)
             throw std::runtime_error(
                 "--frame " + std::to_string(frame) + ": the animation has frames " +
                 std::to_string(a.initial_frame) + " to " + std::to_string(a.final_frame));
+        // (A scene read frame by frame: that frame's reading.)
+        const runtime::SceneDescription scene =
+            reading.frame_by_frame() ? reading.read_frame(frame) : std::move(reading.scene());
         std::vector<int> spps = int_list(args.spp_list, "--spp-list");
         std::sort(spps.begin(), spps.end());
         spps.erase(std::unique(spps.begin(), spps.end()), spps.end());

@@ -11,6 +11,7 @@
 
 #include "app/command_line.hpp"
 #include "app/render_command.hpp"
+#include "app/scene_reading.hpp"
 #include "language/interpreter.hpp"
 #include "tracer/whole_file.hpp"
 
@@ -121,8 +122,8 @@ void check_render_words(const FarmArguments& args, std::string& scene_stem) {
         throw std::runtime_error(std::string("the render flags: ") + e.what());
     }
     ResolvedScene resolved = resolve(parsed.scene);
-    const runtime::SceneDescription scene =
-        language::parse_scene_file(resolved.scene, resolved.options);
+    SceneReading reading(resolved, std::cerr);
+    const runtime::SceneDescription& scene = reading.scene();
     scene_stem = resolved.scene.stem().string();
     const long long frames = static_cast<long long>(scene.animation.frame_count());
     if (args.windows > frames)

@@ -13,6 +13,7 @@
 #include "app/merge_stats.hpp"
 #include "app/render_command.hpp"
 #include "app/scene_dump.hpp"
+#include "app/scene_reading.hpp"
 #include "app/scene_summary.hpp"
 #include "language/interpreter.hpp"
 #include "tracer/whole_file.hpp"
@@ -106,13 +107,32 @@ int main(int argc, char** argv) {
     return app::run_reporting_errors(std::cerr, [&] {
         app::ResolvedScene resolved = app::resolve(arguments);
         for (const auto& warning : resolved.warnings) std::cerr << warning << "\n";
-        const runtime::SceneDescription scene =
-            language::parse_scene_file(resolved.scene, resolved.options);
+        app::SceneReading reading(resolved, std::cerr);
+        const runtime::SceneDescription& scene = reading.scene();
+        const runtime::Animation& animation = scene.animation;
         if (check->parsed()) {
             app::summarize_scene(scene, std::cout);
+            if (reading.frame_by_frame()) {
+                // Every frame is read, so that one that cannot be shows now.
+                for (int frame = animation.initial_frame; frame <= animation.final_frame; ++frame)
+                    (void)reading.read_frame(frame);
+                std::cout << "read frame by frame: " << animation.frame_count()
+                          << " frames, each read alone (above: the first)\n";
+            }
         } else {
-            app::dump_scene(scene, resolved.at_clock.value_or(scene.animation.time_begin()),
-                            std::cout);
+            const double clock = resolved.at_clock.value_or(animation.time_begin());
+            if (!reading.frame_by_frame()) {
+                app::dump_scene(scene, clock, std::cout);
+            } else {
+                // The frame whose shutter holds the clock, read alone.
+                int frame = animation.initial_frame;
+                while (frame < animation.final_frame &&
+                       (animation.clock_delta() > 0.0
+                            ? animation.clock_of_frame(frame + 1) <= clock
+                            : animation.clock_of_frame(frame + 1) >= clock))
+                    ++frame;
+                app::dump_scene(reading.read_frame(frame), clock, std::cout);
+            }
         }
         return 0;
     });

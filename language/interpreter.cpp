@@ -85,7 +85,12 @@ runtime::SceneDescription parse(const std::string& text, const std::string& name
         interpreter.read_file<grammar::scene_item, action, action_control>("--declare " + key,
                                                                            source);
     }
-    interpreter.read_file<grammar::scene_item, action, action_control>(name, text);
+    try {
+        interpreter.read_file<grammar::scene_item, action, action_control>(name, text);
+    } catch (SceneError& e) {
+        if (interpreter.split_refused) e.set_may_read_frame_by_frame();
+        throw;
+    }
     interpreter.finish_reading(name);
     return scene;
 }

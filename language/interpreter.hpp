@@ -4,6 +4,8 @@
 
 #include <filesystem>
 #include <iosfwd>
+#include <optional>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -38,9 +40,25 @@ struct ParseOptions {
     // Every warning an error at its place (--strict): a scene that uses
     // what hexant does not render as POV-Ray does is refused.
     bool strict = false;
+    // Read for one frame of the animation alone (a scene read frame by
+    // frame, app/scene_reading.hpp): frame_number is that frame's number, a
+    // constant, and the time read for is the frame's shutter, or with
+    // at_opening its opening instant alone, where every branch on clock is
+    // decided as POV-Ray decides it (what moves with clock still moves
+    // through the shutter).
+    struct FrameAlone {
+        int frame = 1;
+        bool at_opening = false;
+    };
+    std::optional<FrameAlone> frame_alone;
+    // Warnings said already (by another frame's reading): not said again;
+    // each new one is added. Null: every warning is said.
+    std::set<std::string>* warnings_said = nullptr;
 };
 
-// Throws SceneError for any problem in the scene.
+// Throws SceneError for any problem in the scene (its
+// may_read_frame_by_frame() when the reading stopped at what hexant cannot
+// make piecewise in time, under a branch on clock).
 runtime::SceneDescription parse_scene_file(const std::filesystem::path& path,
                                            const ParseOptions& options);
 // The same for text in memory; `name` is used in error messages and the

@@ -171,8 +171,7 @@ void Interpreter::report_unrendered(const runtime::ObjectRecord& object, const p
         std::string text = at + ": warning: " + note.message;
         if (note.place.file != where.source || note.place.line != where.line)
             text += " (used by the object at " + used + ")";
-        messages() << text << "\n";
-        scene.warnings.push_back(std::move(text));
+        say_warning(std::move(text));
     };
     for_each_nested(object, [&](const runtime::ObjectRecord& record) {
         for (const auto& note : record.unrendered) visit(note);
@@ -204,7 +203,7 @@ void Interpreter::add_object(const runtime::ObjectPtr& given, const p::position&
     try {
         check_patterns(*object);
     } catch (const ValueError& e) {
-        fail(where, e.what());
+        fail(where, e);
     }
     check_parameters(*object, where);
     report_unrendered(*object, where);

@@ -96,7 +96,12 @@ void Interpreter::warn(const p::position& position, const std::string& message) 
     if (options.strict) fail(position, message + " (an error under --strict)");
     std::string text = position.source + ":" + std::to_string(position.line) + ":" +
                        std::to_string(position.column) + ": warning: " + message;
-    messages() << text << "\n";
+    say_warning(std::move(text));
+}
+
+void Interpreter::say_warning(std::string text) {
+    if (options.warnings_said == nullptr || options.warnings_said->insert(text).second)
+        messages() << text << "\n";
     scene.warnings.push_back(std::move(text));
 }
 

@@ -86,8 +86,24 @@ class Interpreter {
     [[noreturn]] static void fail(const p::position& position, const std::string& message) {
         throw p::parse_error(message, position);
     }
+    // A value operation's error at `position` (after `prefix`); one of what
+    // cannot yet be piecewise in time marks the reading (split_refused).
+    [[noreturn]] void fail(const p::position& position, const ValueError& e,
+                           const std::string& prefix = {}) const {
+        if (dynamic_cast<const PiecewiseError*>(&e) != nullptr) split_refused = true;
+        fail(position, prefix + e.what());
+    }
+    // What cannot yet be piecewise in time, refused at `position`.
+    [[noreturn]] void fail_piecewise(const p::position& position,
+                                     const std::string& message) const {
+        split_refused = true;
+        fail(position, message);
+    }
     // A warning at `position` (an error under ParseOptions::strict).
     void warn(const p::position& position, const std::string& message);
+    // A warning's whole text, said (once over a scene read frame by frame,
+    // ParseOptions::warnings_said) and kept in the scene's warnings.
+    void say_warning(std::string text);
     // `word`, one of POV-Ray's words whose KeywordRule is Warned
     // (language/keyword_rules.hpp), read at `where`: what hexant does
     // instead, to keep with what it belongs to and warn where that is used
@@ -137,18 +153,23 @@ class Interpreter {
     // now exist only then.
     runtime::Lifetime domain;
     // The animation's time, from the first frame's shutter opening to the
-    // last one's closing.
+    // last one's closing; read for one frame alone
+    // (ParseOptions::frame_alone), that frame's shutter or its opening.
     runtime::Interval animation_time() const {
         // (A clock that runs backwards, --clock 1:0, spans the same time.)
-        const double a = scene.animation.time_begin();
-        double b = scene.animation.time_end();
+        const runtime::Animation& animation = scene.animation;
+        const auto& alone = options.frame_alone;
+        const double a = alone ? animation.clock_of_frame(alone->frame) : animation.time_begin();
+        if (alone && alone->at_opening) return {a, a};
+        double b =
+            alone ? a + animation.exposure() * animation.clock_delta() : animation.time_end();
         // The last shutter's closing instant is not in the animation: a
         // sample's time is below 1 of the shutter (2^-32 short at most), so
         // no sample reaches it, and POV-Ray's last frame is at its opening.
         // Without it, what the scene makes only there (a file named for
         // the frame after the last) is not needed. A shutter of 0 (and a
         // still) has its instants only.
-        if (scene.animation.exposure() > 0.0 && b != a)
+        if (animation.exposure() > 0.0 && b != a)
             b = b > a ? runtime::interval_detail::next_down(b)
                       : runtime::interval_detail::next_up(b);
         return {std::min(a, b), std::max(a, b)};
@@ -156,6 +177,10 @@ class Interpreter {
     // How many times the camera and the background were set: a side of a
     // time split that sets one makes it piecewise.
     std::size_t camera_sets = 0, background_sets = 0;
+    // Whether the reading stopped at what hexant cannot make piecewise in
+    // time (fail_piecewise, a PiecewiseError): reading frame by frame may
+    // pass it (SceneError::may_read_frame_by_frame).
+    mutable bool split_refused = false;
     // Refuses, at `where`, something that cannot yet change with a
     // clock-dependent branch (`what`: "the camera", ...) when read under one.
     void require_whole_time(const p::position& where, const char* what) const;

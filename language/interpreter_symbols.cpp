@@ -185,7 +185,7 @@ void Interpreter::merge_time_sides(const p::position& at, const TimeFunction& c,
                 const bool texture_only = s->top_edited == BlockStack::Edited::TextureOnly;
                 if (s->top_edited == BlockStack::Edited::Otherwise ||
                     !same_but_members(*s->top, *top_before, texture_only))
-                    throw ValueError(
+                    throw PiecewiseError(
                         "this clock-dependent branch changes the object around it "
                         "(a transform, interior or flag); hexant makes the CSG "
                         "members it adds and its texture piecewise in time, not yet "
@@ -214,7 +214,7 @@ void Interpreter::merge_time_sides(const p::position& at, const TimeFunction& c,
             blocks.top() = std::move(merged);
         }
     } catch (const ValueError& e) {
-        fail(at, e.what());
+        fail(at, e);
     }
 }
 
@@ -235,9 +235,10 @@ runtime::TruthPieces Interpreter::split_domain(const TimeFunction& c, const p::p
 
 void Interpreter::require_whole_time(const p::position& where, const char* what) const {
     if (domain.is_always()) return;
-    fail(where, std::string(what) +
-                    " is set under a branch whose condition depends on clock; hexant makes "
-                    "objects, lights, floats and vectors piecewise in time, not yet this");
+    fail_piecewise(where,
+                   std::string(what) +
+                       " is set under a branch whose condition depends on clock; hexant makes "
+                       "objects, lights, floats and vectors piecewise in time, not yet this");
 }
 
 void Interpreter::assign_element(const std::string& name, const std::vector<Value>& indices,
@@ -251,7 +252,7 @@ void Interpreter::assign_element(const std::string& name, const std::vector<Valu
         if (slot) array.charge.remove(element_bytes(**slot));
         slot = std::make_shared<Value>(std::move(value));
     } catch (const ValueError& e) {
-        fail(where, e.what());
+        fail(where, e);
     }
 }
 
@@ -304,7 +305,7 @@ std::string Interpreter::read_include(const std::filesystem::path& path, const p
         text = read_source_text(
             path, options.limits.text_read - std::min(text_read_, options.limits.text_read));
     } catch (const ValueError& e) {
-        fail(where, "include file '" + path.string() + "': " + e.what());
+        fail(where, e, "include file '" + path.string() + "': ");
     }
     count_text(text.size(), where);
     return text;

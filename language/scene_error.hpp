@@ -41,7 +41,15 @@ class SceneError : public std::runtime_error {
     // The whole report as printed on stderr.
     std::string formatted() const;
 
+    // Whether the reading stopped under (or at the merging of) a branch on
+    // clock, at what hexant cannot make piecewise over the whole
+    // animation's time: reading each frame alone (ParseOptions::frame_alone)
+    // may succeed.
+    bool may_read_frame_by_frame() const { return frame_by_frame_; }
+    void set_may_read_frame_by_frame() { frame_by_frame_ = true; }
+
   private:
+    bool frame_by_frame_ = false;
     std::string message_;
     std::vector<ErrorPlace> places_;
 };

@@ -40,7 +40,7 @@ Array& SymbolTable::array_for_element(const std::string& name) {
     // (An array is shared, not copied, by the sides of a time split: an
     // element set on one side would be seen on the other.)
     if (!logs_.empty())
-        throw ValueError(
+        throw PiecewiseError(
             "an array element set under a branch whose condition depends on clock; "
             "hexant cannot yet make an array piecewise in time (declare a float or "
             "vector under the branch instead)");

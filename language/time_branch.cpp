@@ -145,7 +145,7 @@ std::optional<Value> merge_sides(const std::string& name, const TimeFunction& co
                          a_or_an(type_name(b)) +
                          " on the other; a name keeps one kind "
                          "of value across a branch on clock");
-    throw ValueError(
+    throw PiecewiseError(
         name + " is a different " + type_name(a) +
         " on each side of this clock-dependent "
         "branch; hexant makes floats, vectors, strings and objects piecewise in time, not "

@@ -16,6 +16,13 @@ struct ValueError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+// What hexant cannot yet make piecewise in time under a branch on clock (an
+// array element set on one side, a texture the sides set differently):
+// reading each frame alone may pass it (SceneError::may_read_frame_by_frame).
+struct PiecewiseError : ValueError {
+    using ValueError::ValueError;
+};
+
 // The use of something hexant lacks (a function, an isosurface ...): inside a
 // #declare it makes the declaration unevaluated rather than an error.
 struct UnsupportedError : ValueError {

@@ -145,6 +145,11 @@ struct action<g::shape_option> {
     }
 };
 
+template <class State>
+void mark_piecewise_refusal(State& st) {
+    if constexpr (std::is_same_v<std::decay_t<State>, Interpreter>) st.split_refused = true;
+}
+
 // The control of a reading with these actions: errors.hpp's, and every
 // action's failure becomes an error at the place its rule matched, written
 // once here rather than in each action: a ValueError from the value
@@ -162,6 +167,9 @@ struct action_control : control<Rule> {
         } catch (const UnsupportedError& e) {
             throw unsupported_use(e.what(), place());
         } catch (const ValueError& e) {
+            // (What cannot yet be piecewise in time marks the reading.)
+            if (dynamic_cast<const PiecewiseError*>(&e) != nullptr)
+                ((void)mark_piecewise_refusal(st), ...);
             Interpreter::fail(place(), e.what());
         } catch (const runtime::LimitError& e) {
             Interpreter::fail(place(), e.what());

@@ -269,7 +269,10 @@ struct action<g::builtin_constant_name> {
         else if (w == "initial_frame")
             f(a.is_animation() ? a.initial_frame : 0.0);
         else if (w == "final_frame")
-            f(a.is_animation() ? a.final_frame : 0.0);
+            // A cyclic animation's is one past its last frame, as POV-Ray
+            // declares it (AnimationProcessing: finalFrame++ when cyclic,
+            // the frame whose clock is Final_Clock).
+            f(a.is_animation() ? a.final_frame + (a.cyclic ? 1 : 0) : 0.0);
         else if (w == "version")
             f(st.version);
         else if (w == "frame_number") {
@@ -280,7 +283,9 @@ struct action<g::builtin_constant_name> {
             // splits time at the frames' first instants. The quotient may
             // be a frame off next to a boundary; the comparisons with the
             // frame's own clock and the next one's correct it.
-            if (!a.is_animation() || a.clock_delta() == 0.0) {
+            if (st.options.frame_alone) {
+                f(st.options.frame_alone->frame);  // (a frame read alone)
+            } else if (!a.is_animation() || a.clock_delta() == 0.0) {
                 f(a.is_animation() ? a.initial_frame : 0.0);
             } else {
                 const TimeFunction t = TimeFunction::clock();

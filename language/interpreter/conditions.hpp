@@ -21,7 +21,7 @@ double Interpreter::condition(ParseInput& in, const char* directive) {
     try {
         return to_constant(values.pop(), std::string("the condition of ") + directive);
     } catch (const ValueError& e) {
-        fail(position, e.what());
+        fail(position, e);
     }
 }
 
@@ -33,7 +33,7 @@ TimeFunction Interpreter::timed_condition(ParseInput& in, const char* directive)
     try {
         return to_float(values.pop(), std::string("the condition of ") + directive);
     } catch (const ValueError& e) {
-        fail(position, e.what());
+        fail(position, e);
     }
 }
 
@@ -123,10 +123,11 @@ void Interpreter::split_time(ParseInput& in, const p::position& at, const TimeFu
     std::optional<runtime::ObjectRecord> top_before;
     if (!blocks.empty()) {
         if (!std::holds_alternative<runtime::ObjectRecord>(blocks.top()))
-            fail(at,
-                 "a branch whose condition depends on clock inside this block; hexant makes "
-                 "objects, their CSG members, floats and vectors piecewise in time, not yet "
-                 "what this block holds");
+            fail_piecewise(
+                at,
+                "a branch whose condition depends on clock inside this block; hexant makes "
+                "objects, their CSG members, floats and vectors piecewise in time, not yet "
+                "what this block holds");
         top_before = std::get<runtime::ObjectRecord>(blocks.top());
     }
     std::optional<TimeSide> sides[2];  // [0]: where c holds
@@ -201,9 +202,10 @@ void Interpreter::split_time(ParseInput& in, const p::position& at, const TimeFu
         if (!balanced) {
             domain = outer;
             restore_split();
-            fail(at,
-                 "a branch whose condition depends on clock that uses values from before it "
-                 "or leaves a block open; hexant cannot yet make that piecewise in time");
+            fail_piecewise(
+                at,
+                "a branch whose condition depends on clock that uses values from before it "
+                "or leaves a block open; hexant cannot yet make that piecewise in time");
         }
         done.when = when;
         sides[side] = std::move(done);
@@ -215,9 +217,10 @@ void Interpreter::split_time(ParseInput& in, const p::position& at, const TimeFu
     // is then at the last side's '}', and its branch's end is stepped over
     // when the reading reaches it.
     if (sides[0] && sides[1] && (escapes[0] != nullptr) != (escapes[1] != nullptr))
-        fail(at,
-             "one side of this branch on clock closes the block around it and the other does "
-             "not; hexant cannot make that piecewise in time");
+        fail_piecewise(
+            at,
+            "one side of this branch on clock closes the block around it and the other does "
+            "not; hexant cannot make that piecewise in time");
     if (const char* last = sides[1] ? escapes[1] : escapes[0]) escaped_ends_.push_back(last);
     in.iterator() = end;
     merge_time_sides(at, c, sides, top_before, camera_before, background_before);
@@ -243,7 +246,7 @@ bool Interpreter::run_ifdef(ParseInput& in) {
         try {
             indices.push_back(to_constant(values.pop(), "an array index in #ifdef ( )"));
         } catch (const ValueError& e) {
-            fail(where, e.what());
+            fail(where, e);
         }
     }
     read<grammar::condition_close, Action, Control>(in);
@@ -269,7 +272,7 @@ bool Interpreter::run_ifdef(ParseInput& in) {
         try {
             set = array.elements[element_index(array, indices)].has_value();
         } catch (const ValueError& e) {
-            fail(opened, std::string(name) + ": " + e.what());
+            fail(opened, e, std::string(name) + ": ");
         }
         rest(set != negate);
         return true;
@@ -391,10 +394,11 @@ bool Interpreter::read_closing_branch(ParseInput& in, const p::position& opened,
                                       const char* directive, const char* body_end) {
     const bool in_side = symbols.sides_open() > 0;
     if (in_side && !split_block_depth_)
-        fail(opened, std::string("the branch taken here closes a block it did not open, inside "
-                                 "a branch whose condition depends on clock; hexant cannot yet "
-                                 "make that piecewise in time (close the block after ") +
-                         directive + "'s #end)");
+        fail_piecewise(opened,
+                       std::string("the branch taken here closes a block it did not open, inside "
+                                   "a branch whose condition depends on clock; hexant cannot yet "
+                                   "make that piecewise in time (close the block after ") +
+                           directive + "'s #end)");
     (void)p::match<p::star<Item>, p::apply_mode::action, p::rewind_mode::dontcare, Action, Control>(
         in, *this);
     if (in.current() >= body_end || *in.current() != '}')
@@ -417,10 +421,11 @@ bool Interpreter::read_closing_branch(ParseInput& in, const p::position& opened,
                 while (c + 1 < body_end && !(c[0] == '*' && c[1] == '/')) ++c;
                 c += 2;
             } else {
-                fail(opened, std::string("the branch taken here closes the block around a "
-                                         "branch on clock and goes on after it; hexant cannot "
-                                         "yet make that piecewise in time (") +
-                                 directive + ")");
+                fail_piecewise(opened,
+                               std::string("the branch taken here closes the block around a "
+                                           "branch on clock and goes on after it; hexant cannot "
+                                           "yet make that piecewise in time (") +
+                                   directive + ")");
             }
         }
         side_escape_ = body_end;

@@ -67,7 +67,7 @@ bool Interpreter::run_include(ParseInput& in) {
     try {
         file = to_string_value(name, "the name after #include");
     } catch (const ValueError& e) {
-        fail(opened, e.what());
+        fail(opened, e);
     }
     include_file<Item, Action, Control>(opened, file);
     return true;

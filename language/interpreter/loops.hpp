@@ -74,7 +74,7 @@ bool Interpreter::run_for(ParseInput& in) {
         to = to_float(bounds[1], "the end of #for");
         if (bounds.size() > 2) step = to_constant(bounds[2], "the step of #for");
     } catch (const ValueError& e) {
-        fail(opened, e.what());
+        fail(opened, e);
     }
     if (step == 0.0) fail(opened, "#for with a step of 0 would never end");
     const auto start = in.iterator();

@@ -93,7 +93,7 @@ bool Interpreter::call_macro(ParseInput& in) {
             symbols.declare(macro->parameters[i], std::move(args[i]), true);
     } catch (const ValueError& e) {
         symbols.close_scope();
-        fail(call_place, e.what());
+        fail(call_place, e);
     }
     ++macro_depth_;
     const std::size_t before = values.depth();
@@ -125,7 +125,7 @@ bool Interpreter::call_macro(ParseInput& in) {
             symbols.set_outer(references[i], *value);
         } catch (const ValueError& e) {
             symbols.close_scope();
-            fail(call_place, e.what());
+            fail(call_place, e);
         }
     }
     symbols.close_scope();

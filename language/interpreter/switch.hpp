@@ -43,7 +43,7 @@ void Interpreter::switch_from(ParseInput& in, const p::position& opened, const T
                             TimeFunction::apply(runtime::TimeOp::GreaterEqual, value, lo),
                             TimeFunction::apply(runtime::TimeOp::LessEqual, value, hi));
                     } catch (const ValueError& e) {
-                        fail(at, e.what());
+                        fail(at, e);
                     }
                 }
                 // A clause that matches part of the time (once none before
