@@ -303,6 +303,11 @@ void dump_scene(const runtime::SceneDescription& scene, double t, std::ostream& 
         case runtime::CameraType::Omnimax:
             out << " omnimax";
             break;
+        case runtime::CameraType::Mesh:
+            out << " mesh_camera rays=" << camera.mesh->rays_per_pixel()
+                << " distribution=" << camera.mesh->distribution()
+                << " meshes=" << camera.mesh->meshes().size();
+            break;
         case runtime::CameraType::Cylinder1:
         case runtime::CameraType::Cylinder2:
         case runtime::CameraType::Cylinder3:

@@ -163,6 +163,8 @@ HEXANT_ERROR(light_arguments, "expected the light's position and colour");
 HEXANT_ERROR(light_setting_value, "expected a value after the light setting");
 HEXANT_ERROR(area_light_argument, "expected area_light <axis1>, <axis2>, size1, size2");
 HEXANT_ERROR(camera_cylinder_value, "expected the cylinder camera's type (1 to 4)");
+HEXANT_ERROR(mesh_camera_value,
+             "expected mesh_camera's rays per pixel and distribution type (then its meshes)");
 HEXANT_ERROR(camera_blur_argument, "expected a value for aperture, focal_point or blur_samples");
 HEXANT_ERROR(camera_vector_value, "expected a value after the camera setting");
 HEXANT_ERROR(background_colour, "expected a colour in background { }");

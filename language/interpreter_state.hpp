@@ -315,6 +315,18 @@ class Interpreter {
         return v != nullptr && v->is<std::shared_ptr<const Macro>>();
     }
 
+    // Whether a declared object's name comes next (grammar.hpp,
+    // keyword_around_object); consumes nothing.
+    template <typename Item, template <typename...> class Action,
+              template <typename...> class Control, typename ParseInput>
+    bool declared_object_ahead(ParseInput& in) {
+        const char* b = in.current();
+        const char* q = grammar::word_end(b, in.end());
+        if (q == b || grammar::is_reserved_word(std::string(b, q))) return false;
+        const Value* v = symbols.lookup(std::string(b, q));
+        return v != nullptr && v->is<runtime::ObjectPtr>();
+    }
+
     // Whether a conditional directive whose branch starts with a value comes
     // next (grammar.hpp, argument_directive_ahead); consumes nothing. A value
     // starts with '<', a digit, a sign, '.', '(' or '"', a reserved word

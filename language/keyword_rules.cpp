@@ -267,7 +267,7 @@ constexpr auto kRules = std::to_array<KeywordRuleEntry>({
     {"merge", KeywordRule::Rendered, ""},
     {"mesh", KeywordRule::Rendered, ""},
     {"mesh2", KeywordRule::Rendered, ""},
-    {"mesh_camera", KeywordRule::Refused, ""},
+    {"mesh_camera", KeywordRule::Rendered, ""},
     {"metallic", KeywordRule::Rendered, ""},
     {"method", KeywordRule::Rendered, ""},
     {"metric", KeywordRule::Rendered, ""},

@@ -223,6 +223,7 @@ void set_inside_vector(MeshData& mesh, const Value& value) {
 void finish_mesh(MeshData& mesh, const std::string& keyword) {
     if (mesh.faces.empty()) throw ValueError(keyword + " has no triangles");
     const bool mesh2 = keyword == "mesh2";
+    mesh.mesh2 = mesh2;
     if (mesh2) {
         // POV-Ray's Parse_Mesh2: normals (uvs) without their indices serve
         // by the vertex indices only when there is one per vertex.

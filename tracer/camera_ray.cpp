@@ -140,6 +140,8 @@ std::optional<ScreenRay> projected_camera_ray(const runtime::CameraFrame& camera
                 return ScreenRay{camera.location + along * right, turned, {along, around}};
             return ScreenRay{camera.location, along * right + turned, {along, around}};
         }
+        case CameraType::Mesh:
+            return std::nullopt;  // (the renderer asks MeshCamera::ray)
         case CameraType::Perspective:
             // (camera_ray makes the pinhole's own.)
             return ScreenRay{

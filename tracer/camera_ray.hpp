@@ -74,11 +74,13 @@ template <class Lens>
 }
 
 // Calls add(p) with every point a camera's rays start from or that bounds
-// them: the location, the lens around it (focal blur) and, orthographic,
-// the film's corners (cylinder 3 and 4: the film's edge along the axis).
+// them at time t: the location, the lens around it (focal blur) and,
+// orthographic, the film's corners (cylinder 3 and 4: the film's edge along
+// the axis); a mesh camera's box around its meshes' faces.
 template <class Add>
-void eye_extent(const runtime::CameraFrame& camera, Add&& add) {
+void eye_extent(const runtime::CameraFrame& camera, double t, Add&& add) {
     add(camera.location);
+    if (camera.mesh) camera.mesh->origin_extent(camera.location.z, t, add);
     const double r = std::fabs(camera.aperture) / 4.0;
     glm::dvec3 spread(r);
     if (camera.type == runtime::CameraType::Orthographic)

@@ -43,7 +43,7 @@ void for_each_eye_and_light(const runtime::SceneDescription& scene, int first, i
     for (int f = first; f <= last; ++f) {
         const double open = a.clock_of_frame(f);
         for (const double t : {open, open + a.exposure() * a.clock_delta()}) {
-            eye_extent(scene.camera.evaluate(t), [&](const glm::dvec3& p) { add(p); });
+            eye_extent(scene.camera.evaluate(t), t, [&](const glm::dvec3& p) { add(p); });
             for (const auto& light : scene.lights) add(light.world_position(t));
         }
     }
@@ -314,6 +314,27 @@ Image Renderer::render_frame(int frame) {
         // POV-Ray's screen: x from -0.5 (left) to 0.5, y from 0.5 (top) to
         // -0.5; left-handed. Focal blur's lens point is one more pair of the
         // sample's dimensions (its own scramble, as an area light's).
+        if (camera.mesh) {
+            // A mesh camera's sample: its rays averaged over those made
+            // (TracePixel::operator()), at POV-Ray's pixel coordinates
+            // (CreateCameraRay's, after its half-pixel moves: the row one
+            // less than the sample's).
+            state.sample = {seed, static_cast<std::uint32_t>(index),
+                            static_cast<std::uint32_t>(count), settings_.jitter};
+            glm::dvec3 sum(0.0);
+            unsigned made = 0;
+            for (unsigned n = 0; n < camera.mesh->rays_per_pixel(); ++n) {
+                const auto ray =
+                    camera.mesh->ray(x + s.x, y + s.y - 1.0, width, height, n, camera.location.z,
+                                     camera.direction.z < -1e-10, t);  // (POV-Ray's EPSILON)
+                if (!ray) continue;
+                glm::dvec3 direction = ray->direction;
+                if (camera_normal_) direction = camera_normal_->perturb(direction, {0, 0, 0}, t);
+                sum += shader_->trace(travel_.ray(ray->origin, t, direction), state);
+                ++made;
+            }
+            return made ? sum / double(made) : glm::dvec3(0.0);
+        }
         const double u = (x + s.x) / width - 0.5;
         const double v = 0.5 - (y + s.y) / height;
         const auto lens = [&] {

@@ -104,6 +104,8 @@ struct action<g::csg_kind> : name_action {};
 template <>
 struct action<g::object_flag_name> : name_action {};
 template <>
+struct action<g::object_bare_flag_name> : name_action {};
+template <>
 struct action<g::shape_setting_name> : name_action {};
 template <>
 struct action<g::shape_vectors_setting_name> : name_action {};

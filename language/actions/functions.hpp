@@ -4,6 +4,7 @@
 
 #include "language/actions/arrays.hpp"
 #include "language/function_internals.hpp"
+#include "runtime/motion/transform_function.hpp"
 #include "runtime/objects/object_error.hpp"
 #include "runtime/texture/pigment_function.hpp"
 
@@ -86,6 +87,37 @@ struct action<g::function_pigment> {
             f->components.push_back(runtime::TimeFunction::point_call(
                 pigment, c, TimeFunction::argument(0), TimeFunction::argument(1),
                 TimeFunction::argument(2)));
+        st.values.push(Value{std::shared_ptr<const runtime::UserFunction>(std::move(f))});
+    }
+};
+
+// function { transform { } }: F(x, y, z) is the point transformed, three
+// components (POV-Ray's VECTFUNCT of return size 3): a fixed transform's
+// affine map written out, one that moves with clock evaluated at the call's
+// time (runtime/motion/transform_function.hpp).
+template <>
+struct action<g::function_transform> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, Interpreter& st) {
+        const Value v = st.values.pop();
+        if (!v.is<runtime::Transform>())
+            throw ValueError("function { transform { } } needs a transform, not a " + type_name(v));
+        const runtime::Transform& transform = v.as<runtime::Transform>();
+        if (transform.has_deformation())
+            throw ValueError("a transform function's transform may not twist, taper or bend");
+        auto f = std::make_shared<runtime::UserFunction>();
+        f->parameters = {"x", "y", "z"};
+        const TimeFunction x = TimeFunction::argument(0), y = TimeFunction::argument(1),
+                           z = TimeFunction::argument(2);
+        if (!transform.depends_on_time()) {
+            const glm::dmat4 m = transform.matrix_at(0.0);
+            for (int c = 0; c < 3; ++c)
+                f->components.push_back(m[0][c] * x + m[1][c] * y + m[2][c] * z + m[3][c]);
+        } else {
+            const auto moving = std::make_shared<const runtime::TransformFunction>(transform);
+            for (int c = 0; c < 3; ++c)
+                f->components.push_back(TimeFunction::point_call(moving, c, x, y, z));
+        }
         st.values.push(Value{std::shared_ptr<const runtime::UserFunction>(std::move(f))});
     }
 };

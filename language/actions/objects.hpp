@@ -108,6 +108,8 @@ template <>
 struct action<g::csg_block> : finish_object {};
 template <>
 struct action<g::object_block> : finish_object {};
+template <>
+struct action<g::keyword_around_object> : finish_object {};
 
 template <>
 struct action<g::csg_open> {

@@ -47,15 +47,11 @@ struct action<g::camera_setting> {
     }
 };
 template <>
-struct action<g::camera_unsupported_type> {
+struct action<g::mesh_camera_smooth> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        (void)st;
-        Interpreter::fail(in.position(),
-                          word(in) +
-                              " cameras are not supported by hexant (perspective, orthographic, "
-                              "fisheye, panoramic, spherical, ultra_wide_angle, omnimax "
-                              "and cylinder are)");
+        (void)in;
+        st.values.push(Value{std::string("smooth")});  // (the last of the block's values)
     }
 };
 // The camera's type item. POV-Ray reads the type before any other item
@@ -77,6 +73,73 @@ void add_camera_type(const Position& position, Interpreter& st, const std::strin
     item.type = type;
     camera.items.push_back(std::move(item));
 }
+// mesh_camera { }: its numbers as POV-Ray reads them (Parse_Float,
+// truncated to unsigned), the meshes each with the faces a mesh camera
+// counts (mesh { } drops its degenerate triangles, mesh2 { } keeps them).
+template <>
+struct action<g::camera_mesh_camera> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        std::vector<Value> given = st.values.close_frame();
+        const bool smooth = !given.empty() && given.back().is<std::string>();
+        if (smooth) given.pop_back();
+        std::vector<double> numbers;
+        std::vector<runtime::MeshCamera::Mesh> meshes;
+        for (const Value& v : given) {
+            if (!v.is<runtime::ObjectPtr>()) {
+                if (!meshes.empty() || numbers.size() == 3)
+                    throw ValueError("mesh_camera takes its numbers before its meshes");
+                numbers.push_back(to_constant(v, "mesh_camera's numbers"));
+                continue;
+            }
+            const runtime::ObjectRecord& object = *v.as<runtime::ObjectPtr>();
+            const auto* mesh = std::get_if<runtime::Mesh>(&object.shape);
+            if (!mesh) throw ValueError("mesh_camera takes mesh and mesh2 objects only");
+            if (object.transform.has_deformation())
+                throw ValueError(
+                    "a mesh camera's mesh may be moved, turned and scaled, not "
+                    "deformed");
+            runtime::MeshCamera::Mesh m{mesh->data, {}, object.transform};
+            const auto& data = *mesh->data;
+            for (const std::uint32_t at : data.read_index) {
+                const auto& face = data.faces[at];
+                const glm::dvec3 &p1 = data.vertices[face.vertex[0]],
+                                 &p2 = data.vertices[face.vertex[1]],
+                                 &p3 = data.vertices[face.vertex[2]];
+                const glm::dvec3 n = glm::cross(p1 - p2, p3 - p2);  // (Mesh::Degenerate)
+                if (!data.mesh2 && glm::dot(n, n) == 0.0) continue;
+                m.faces.push_back(at);
+            }
+            meshes.push_back(std::move(m));
+        }
+        const auto whole = [](double v, const char* what) {
+            if (!(v >= 0.0 && v < 4294967296.0))
+                throw ValueError(std::string("mesh_camera's ") + what +
+                                 " must be a whole number from 0");
+            return static_cast<unsigned>(v);
+        };
+        const unsigned rays = whole(numbers.at(0), "rays per pixel");
+        const unsigned distribution = whole(numbers.at(1), "distribution type");
+        const double max_distance = numbers.size() > 2 ? numbers[2] : 0.0;
+        if (max_distance != 0.0)
+            throw ValueError(
+                "mesh_camera's max distance is not supported by hexant yet (leave it out or 0)");
+        std::shared_ptr<const runtime::MeshCamera> camera;
+        try {
+            camera = std::make_shared<const runtime::MeshCamera>(rays, distribution, max_distance,
+                                                                 smooth, std::move(meshes));
+        } catch (const std::invalid_argument& e) {
+            throw ValueError(std::string("mesh_camera: ") + e.what());
+        }
+        if (distribution == 3 && camera->meshes().size() > 1)
+            st.warn(in.position(),
+                    "mesh_camera: additional meshes after the first are ignored for "
+                    "distribution method #3 (as in POV-Ray)");
+        add_camera_type(in.position(), st, "mesh_camera", runtime::CameraType::Mesh);
+        st.blocks.edit<runtime::CameraRecord>(in.position(), "mesh_camera").items.back().mesh =
+            std::move(camera);
+    }
+};
 template <>
 struct action<g::camera_type> {
     template <typename ActionInput>
@@ -128,6 +191,7 @@ struct action<g::camera_angle> {
                            : type == T::Spherical      ? "spherical"
                            : type == T::UltraWideAngle ? "ultra_wide_angle"
                            : type == T::Omnimax        ? "omnimax"
+                           : type == T::Mesh           ? "mesh_camera"
                                                        : "cylinder";
         // POV-Ray's Parse_Camera: an orthographic angle may be left out (0);
         // only a spherical camera takes a second (vertical) angle.

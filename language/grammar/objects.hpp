@@ -332,9 +332,25 @@ struct height_field_function_block
              p::must<height_field_function_size>, p::must<height_field_function_body>,
              object_modifiers, p::must<object_close>> {};
 
-struct object_value : p::sor<mesh_block, mesh2_block, blob_block, isosurface_block, julia_block,
-                             bicubic_block, poly_block, height_field_function_block, shape_block,
-                             csg_block, object_block, light_block> {};
+// KIND { OBJECT modifiers }: an object's keyword around a declared object,
+// read as object { OBJECT modifiers } (POV-Ray's Parse_Object_Id at the
+// start of every object's block: `mesh { Declared_Mesh translate x }`).
+struct declared_object_ahead_item {};
+HEXANT_CUSTOM_RULE(declared_object_ahead_rule, declared_object_ahead);
+struct declared_object_ahead : declared_object_ahead_rule<declared_object_ahead_item> {};
+struct around_shape_keyword : one_word_of<shape_keyword_words> {};
+struct around_object_keyword
+    : p::sor<TAO_PEGTL_KEYWORD("mesh"), TAO_PEGTL_KEYWORD("mesh2"), TAO_PEGTL_KEYWORD("blob"),
+             TAO_PEGTL_KEYWORD("isosurface"), TAO_PEGTL_KEYWORD("julia_fractal"),
+             TAO_PEGTL_KEYWORD("bicubic_patch"), poly_keyword, TAO_PEGTL_KEYWORD("union"),
+             TAO_PEGTL_KEYWORD("merge"), TAO_PEGTL_KEYWORD("intersection"),
+             TAO_PEGTL_KEYWORD("difference"), around_shape_keyword> {};
+struct keyword_around_object : p::seq<around_object_keyword, ws, lbrace, declared_object_ahead,
+                                      object_base, object_modifiers, p::must<object_close>> {};
+struct object_value
+    : p::sor<keyword_around_object, mesh_block, mesh2_block, blob_block, isosurface_block,
+             julia_block, bicubic_block, poly_block, height_field_function_block, shape_block,
+             csg_block, object_block, light_block> {};
 
 // Things that modify an object, in any order.
 struct object_texture : p::seq<texture_block> {};
@@ -343,13 +359,18 @@ struct object_pigment : p::seq<pigment_block> {};
 struct object_finish : p::seq<finish_block> {};
 struct object_interior : p::seq<interior_block> {};
 struct object_material : p::seq<material_block> {};
+// no_shadow and inverse take no value (POV-Ray's Set_Flag: what follows is
+// the next modifier, `no_shadow Placement()` a macro's transform); the
+// others an optional one (its Allow_Float).
+struct object_bare_flag_name
+    : p::sor<TAO_PEGTL_KEYWORD("no_shadow"), TAO_PEGTL_KEYWORD("inverse")> {};
 struct object_flag_name
-    : p::sor<TAO_PEGTL_KEYWORD("no_shadow"), TAO_PEGTL_KEYWORD("hollow"),
-             TAO_PEGTL_KEYWORD("inverse"), TAO_PEGTL_KEYWORD("sturm"),
-             TAO_PEGTL_KEYWORD("no_image"), TAO_PEGTL_KEYWORD("no_reflection"),
-             TAO_PEGTL_KEYWORD("no_radiosity"), TAO_PEGTL_KEYWORD("double_illuminate")> {};
+    : p::sor<TAO_PEGTL_KEYWORD("hollow"), TAO_PEGTL_KEYWORD("sturm"), TAO_PEGTL_KEYWORD("no_image"),
+             TAO_PEGTL_KEYWORD("no_reflection"), TAO_PEGTL_KEYWORD("no_radiosity"),
+             TAO_PEGTL_KEYWORD("double_illuminate")> {};
 struct object_flag_value : p::seq<p::not_at<p::one<'<'>>, expression> {};
-struct object_flag : p::seq<object_flag_name, ws, frame_open, p::opt<object_flag_value>> {};
+struct object_flag : p::sor<p::seq<object_bare_flag_name, ws, frame_open>,
+                            p::seq<object_flag_name, ws, frame_open, p::opt<object_flag_value>>> {};
 // A setting of the object's own kind (a cylinder's `open`), with an
 // optional value; the kind says what it takes.
 struct shape_setting_words {

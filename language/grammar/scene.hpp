@@ -31,7 +31,19 @@ struct camera_type : p::sor<TAO_PEGTL_KEYWORD("perspective"), TAO_PEGTL_KEYWORD(
 struct camera_cylinder_value : p::seq<sum> {};
 struct camera_cylinder
     : p::seq<TAO_PEGTL_KEYWORD("cylinder"), ws, frame_open, p::must<camera_cylinder_value>> {};
-struct camera_unsupported_type : p::sor<TAO_PEGTL_KEYWORD("mesh_camera")> {};
+// mesh_camera { RAYS DISTRIBUTION [MAX_DISTANCE] mesh { } ... [smooth] }
+// (POV-Ray's Parse_Mesh_Camera; runtime/scene/mesh_camera.hpp): its
+// numbers, then the meshes, which directives and macros may write.
+struct mesh_camera_value : p::seq<sum> {};
+struct mesh_camera_mesh : p::sor<keyword_around_object, mesh_block, mesh2_block> {};
+struct mesh_camera_item
+    : p::sor<directive<mesh_camera_item>, macro_call<mesh_camera_item>, mesh_camera_mesh> {};
+struct mesh_camera_smooth : p::seq<TAO_PEGTL_KEYWORD("smooth"), ws> {};
+struct camera_mesh_camera
+    : p::seq<TAO_PEGTL_KEYWORD("mesh_camera"), ws, p::must<lbrace>, frame_open,
+             p::must<mesh_camera_value>, p::opt<comma>, p::must<mesh_camera_value>,
+             p::opt<p::opt<comma>, mesh_camera_value>, p::star<mesh_camera_item>,
+             p::opt<mesh_camera_smooth>, p::must<rbrace>> {};
 // Focal blur: aperture A, focal_point <P>, blur_samples [MIN,] MAX;
 // confidence and variance are POV-Ray's stopping rule, read and ignored
 // (hexant's samples are --spp or --target-error's).
@@ -47,7 +59,7 @@ struct camera_ignored_setting
 struct camera_item
     : p::sor<directive<camera_item>, macro_call<camera_item>, p::seq<camera_type, ws>,
              camera_cylinder, camera_setting, camera_angle, camera_blur_setting,
-             camera_ignored_setting, camera_normal, transformation, camera_unsupported_type> {};
+             camera_ignored_setting, camera_normal, transformation, camera_mesh_camera> {};
 struct camera_block
     : p::seq<camera_open, p::opt<camera_base>, p::star<camera_item>, p::must<rbrace>> {};
 
@@ -172,6 +184,12 @@ struct spline_block
 struct function_spline_open
     : p::seq<kw_function, lbrace, p::at<TAO_PEGTL_KEYWORD("spline"), ws, lbrace>> {};
 struct function_spline : p::seq<function_spline_open, spline_block, p::must<rbrace>> {};
+// function { transform { } }: F(x, y, z) the transformed point (as
+// transforms.inc's vtransform uses it).
+struct function_transform_open
+    : p::seq<kw_function, lbrace, p::at<TAO_PEGTL_KEYWORD("transform"), ws, lbrace>> {};
+struct function_transform
+    : p::seq<function_transform_open, kw_transform, transform_block, p::must<rbrace>> {};
 
 // texture { } texture { } ...: POV-Ray's layered texture.
 struct texture_layer : p::seq<texture_block> {};
@@ -182,8 +200,8 @@ struct texture_value : p::seq<texture_block, p::star<texture_layer>> {};
 struct value : p::sor<object_value, camera_block, texture_value, pigment_block, normal_block,
                       colour_map_block, sky_sphere_block, finish_block, interior_block, media_block,
                       density_block, material_value, transform_value, array_value, spline_block,
-                      function_pigment, function_spline, function_pattern_value, function_value,
-                      unsupported_block, expression> {};
+                      function_pigment, function_spline, function_transform, function_pattern_value,
+                      function_value, unsupported_block, expression> {};
 
 // A macro called where a value is wanted holds values (and directives);
 // a ';' after its value is read and dropped, as POV-Ray does with a macro

@@ -130,6 +130,7 @@ CameraFrame CameraRecord::evaluate_items(const std::vector<CameraItem>& items, d
                 break;
             case CameraItem::Kind::Type:
                 cam.type = item.type;
+                cam.mesh = item.mesh;
                 break;
             case CameraItem::Kind::VerticalAngle:
                 vertical_angle = item.angle(t);
@@ -199,7 +200,9 @@ CameraFrame CameraRecord::evaluate_items(const std::vector<CameraItem>& items, d
     // Focal blur when both an aperture and samples are given (POV-Ray's
     // useFocalBlur); in focus at focal_point's distance, else at POV-Ray's
     // Direction_Length (a length 0 counts as 1, as there).
-    if (!(blur_samples > 0.0)) cam.aperture = 0.0;
+    // (A mesh camera's rays are its faces', whatever the aperture: POV-Ray
+    // traces the same rays however many times its focal blur asks.)
+    if (!(blur_samples > 0.0) || cam.type == CameraType::Mesh) cam.aperture = 0.0;
     cam.focal_distance = focal_point ? glm::length(*focal_point - cam.location) : direction_length;
     if (cam.focal_distance == 0.0) cam.focal_distance = 1.0;
 

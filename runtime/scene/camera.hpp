@@ -4,12 +4,14 @@
 // as written, each possibly a function of time, and evaluates them at t.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
 #include "runtime/motion/transform.hpp"
+#include "runtime/scene/mesh_camera.hpp"
 #include "runtime/texture/material.hpp"
 #include "runtime/time/lifetime.hpp"
 #include "runtime/time/vector_function.hpp"
@@ -30,7 +32,8 @@ enum class CameraType {
     Cylinder1,
     Cylinder2,
     Cylinder3,
-    Cylinder4
+    Cylinder4,
+    Mesh  // mesh_camera { } (runtime/scene/mesh_camera.hpp)
 };
 
 struct CameraItem {
@@ -63,6 +66,7 @@ struct CameraItem {
     TimeFunction angle;
     TransformStep step;                         // Transform
     CameraType type = CameraType::Perspective;  // Type
+    std::shared_ptr<const MeshCamera> mesh;     // Type Mesh: its meshes and rules
 };
 
 // The camera's vectors at one instant, as POV-Ray uses them to make rays:
@@ -87,6 +91,9 @@ struct CameraFrame {
     // Spherical: the horizontal and vertical fields of view in degrees
     // (POV-Ray's defaults 360 and 180).
     double h_angle = 360.0, v_angle = 180.0;
+    // A mesh camera's meshes (its rays leave their faces; the location's
+    // and direction's z say how, MeshCamera::ray).
+    std::shared_ptr<const MeshCamera> mesh;
 };
 
 struct CameraRecord {

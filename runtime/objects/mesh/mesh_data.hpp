@@ -33,6 +33,12 @@ struct MeshData {
     std::vector<glm::dvec3> normals;
     std::vector<glm::dvec2> uvs;
     std::vector<MeshFace> faces;  // in the hierarchy's order once built
+    // Where each face read went in `faces` (the i-th read is
+    // faces[read_index[i]]): a mesh camera counts faces in the order read.
+    std::vector<std::uint32_t> read_index;
+    // Read as mesh2 { } (a mesh { } drops its degenerate triangles, as
+    // POV-Ray's does, from what a mesh camera counts).
+    bool mesh2 = false;
     std::vector<Texture> textures;
     // POV-Ray's inside_vector: a mesh with one is a solid (a point is inside
     // when a ray from it along the vector crosses the faces an odd number
@@ -41,7 +47,7 @@ struct MeshData {
     MeshHierarchy hierarchy;
 
     // Orders the faces and builds the hierarchy (after reading).
-    void build_hierarchy() { hierarchy = MeshHierarchy::build(vertices, faces); }
+    void build_hierarchy() { hierarchy = MeshHierarchy::build(vertices, faces, read_index); }
     std::size_t bytes() const;
 };
 

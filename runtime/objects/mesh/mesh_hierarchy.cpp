@@ -14,6 +14,7 @@ struct Builder {
     const std::vector<glm::dvec3>& vertices;
     std::vector<MeshFace>& faces;
     std::vector<glm::dvec3> centres;
+    std::vector<std::uint32_t> read;  // the index each face was read at
     std::vector<MeshHierarchy::Node>& nodes;
 
     geometry::Box3 face_box(const MeshFace& f) const {
@@ -52,12 +53,15 @@ struct Builder {
             [&](std::uint32_t a, std::uint32_t b) { return centres[a][axis] < centres[b][axis]; });
         std::vector<MeshFace> f(n);
         std::vector<glm::dvec3> c(n);
+        std::vector<std::uint32_t> r(n);
         for (std::uint32_t i = 0; i < n; ++i) {
             f[i] = faces[order[i]];
             c[i] = centres[order[i]];
+            r[i] = read[order[i]];
         }
         std::copy(f.begin(), f.end(), faces.begin() + first);
         std::copy(c.begin(), c.end(), centres.begin() + first);
+        std::copy(r.begin(), r.end(), read.begin() + first);
         // Left child next to its parent, the right one after the left subtree.
         const std::uint32_t left = index + 1;
         nodes.emplace_back();
@@ -73,17 +77,23 @@ struct Builder {
 }  // namespace
 
 MeshHierarchy MeshHierarchy::build(const std::vector<glm::dvec3>& vertices,
-                                   std::vector<MeshFace>& faces) {
+                                   std::vector<MeshFace>& faces,
+                                   std::vector<std::uint32_t>& read_index) {
     MeshHierarchy h;
+    read_index.clear();
     if (faces.empty()) return h;
     h.nodes_.reserve(2 * (faces.size() / kMeshLeafSize + 1));
-    Builder b{vertices, faces, {}, h.nodes_};
+    Builder b{vertices, faces, {}, {}, h.nodes_};
+    b.read.resize(faces.size());
+    for (std::uint32_t i = 0; i < faces.size(); ++i) b.read[i] = i;
     b.centres.reserve(faces.size());
     for (const auto& f : faces)
         b.centres.push_back(
             (vertices[f.vertex[0]] + vertices[f.vertex[1]] + vertices[f.vertex[2]]) / 3.0);
     h.nodes_.emplace_back();
     b.build(0, 0, static_cast<std::uint32_t>(faces.size()));
+    read_index.resize(faces.size());
+    for (std::uint32_t i = 0; i < faces.size(); ++i) read_index[b.read[i]] = i;
     return h;
 }
 

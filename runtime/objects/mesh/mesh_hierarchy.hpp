@@ -33,7 +33,8 @@ class MeshHierarchy {
 
     // Reorders `faces` into the tree's leaf order.
     static MeshHierarchy build(const std::vector<glm::dvec3>& vertices,
-                               std::vector<MeshFace>& faces);
+                               std::vector<MeshFace>& faces,
+                               std::vector<std::uint32_t>& read_index);
 
     bool empty() const { return nodes_.empty(); }
     const std::vector<Node>& nodes() const { return nodes_; }
