@@ -1,8 +1,5 @@
 #include "app/mode_run.hpp"
 
-#include <sys/resource.h>
-#include <unistd.h>
-
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -10,6 +7,9 @@
 #include <iomanip>
 #include <iostream>
 #include <sstream>
+
+#include <sys/resource.h>
+#include <unistd.h>
 
 #include "app/out_of_memory.hpp"
 #include "tracer/image_output.hpp"
@@ -71,7 +71,6 @@ const Row kRows[] = {
      },
      2},
 };
-
 
 // A JSON number, or null for what JSON cannot hold (an infinite estimate
 // of a frame whose colours overflow).

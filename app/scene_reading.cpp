@@ -43,7 +43,7 @@ SceneReading::SceneReading(const ResolvedScene& resolved, std::ostream& err)
 }
 
 std::optional<runtime::SceneDescription> SceneReading::try_frame(int frame, bool at_opening,
-                                                                std::ostream* messages) {
+                                                                 std::ostream* messages) {
     language::ParseOptions options = options_;
     options.frame_alone = language::ParseOptions::FrameAlone{frame, at_opening};
     if (messages) {
@@ -68,8 +68,8 @@ runtime::SceneDescription SceneReading::read_frame(int frame) {
                 "POV-Ray decides it (what moves with clock is still blurred)\n";
         return std::move(*scene);
     } catch (language::SceneError& e) {
-        e.add_context(language::ErrorPlace{file_.string(), 0, 0, {},
-                                           "reading frame " + std::to_string(frame) + " alone"});
+        e.add_context(language::ErrorPlace{
+            file_.string(), 0, 0, {}, "reading frame " + std::to_string(frame) + " alone"});
         throw;
     }
 }

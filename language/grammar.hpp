@@ -53,4 +53,6 @@ struct analyze_traits<Name, hexant::language::grammar::argument_directive_ahead_
 template <typename Name, typename Item>
 struct analyze_traits<Name, hexant::language::grammar::declared_object_ahead_rule<Item>>
     : analyze_opt_traits<> {};
+template <typename Name>
+struct analyze_traits<Name, hexant::language::grammar::arithmetic_left> : analyze_opt_traits<> {};
 }  // namespace tao::pegtl

@@ -315,6 +315,9 @@ class Interpreter {
         return v != nullptr && v->is<std::shared_ptr<const Macro>>();
     }
 
+    // Whether the value just read may take + or - (grammar::arithmetic_left):
+    // not an object.
+    bool arithmetic_left() { return values.depth() == 0 || !values.top().is<runtime::ObjectPtr>(); }
     // Whether a declared object's name comes next (grammar.hpp,
     // keyword_around_object); consumes nothing.
     template <typename Item, template <typename...> class Action,

@@ -220,7 +220,24 @@ struct product : p::seq<unary, p::star<p::sor<multiplication, division>>> {};
 struct product_operand : product {};
 struct addition : p::seq<p::one<'+'>, ws, p::must<product_operand>> {};
 struct subtraction : p::seq<p::one<'-'>, ws, p::must<product_operand>> {};
-struct sum : p::seq<product, p::star<p::sor<addition, subtraction>>> {};
+// An operand that takes + and -: the value before is a number, a vector or
+// a string, not an object (whose value ends there, as in POV-Ray:
+// `Align_Object(Center_Object(O, x) -y, 0)` passes -y as the next argument).
+// Consumes nothing; without a parse state (grammar analysis and tests) it
+// holds.
+struct arithmetic_left {
+    using rule_t = arithmetic_left;
+    using subs_t = p::empty_list;
+    template <p::apply_mode, p::rewind_mode, template <typename...> class Action,
+              template <typename...> class Control, typename ParseInput, typename... States>
+    static bool match([[maybe_unused]] ParseInput& in, [[maybe_unused]] States&... st) {
+        if constexpr (sizeof...(States) == 0)
+            return true;
+        else
+            return (st.arithmetic_left(), ...);
+    }
+};
+struct sum : p::seq<product, p::star<arithmetic_left, p::sor<addition, subtraction>>> {};
 
 struct sum_operand : p::seq<sum> {};
 struct less_equal : p::seq<p::string<'<', '='>, ws, p::must<sum_operand>> {};

@@ -39,7 +39,16 @@ struct argument_directive : p::seq<argument_directive_ahead, directive<shape_arg
 // and further such directives.
 struct shape_argument_item
     : p::sor<argument_directive, comma, p::seq<p::not_at<macro_ahead>, shape_argument>> {};
-struct first_shape_argument : p::sor<argument_directive, shape_argument> {};
+// A #while or #for after a comma among the arguments writes arguments
+// (grenadine's lemon.inc: `prism { bezier_spline -0.5, 0.5, 24, #while (J <
+// 24) #declare P = BS1[J]; P #declare J = J + 1; #end scale ... }`): its
+// body holds arguments, commas and any directive.
+struct loop_argument_ahead : p::at<p::one<'#'>, skip::blanks,
+                                   p::sor<TAO_PEGTL_KEYWORD("while"), TAO_PEGTL_KEYWORD("for")>> {};
+struct shape_loop_item;
+struct shape_loop_item : p::sor<directive<shape_loop_item>, comma, shape_argument> {};
+struct loop_argument : p::seq<loop_argument_ahead, directive<shape_loop_item>> {};
+struct first_shape_argument : p::sor<argument_directive, loop_argument, shape_argument> {};
 struct shape_arguments
     : p::seq<frame_open, first_shape_argument,
              p::star<p::sor<argument_directive, p::seq<comma, p::must<first_shape_argument>>,

@@ -71,8 +71,13 @@ bool Interpreter::call_macro(ParseInput& in) {
                                      return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
                                  });
             references.push_back(is_name && symbols.lookup(text) ? text : std::string());
+            // The comma between arguments may be left out, as POV-Ray's
+            // Parse_Comma allows: Align_Object(Center_Object(O, x) -y, 0),
+            // an object's value ending before the -y.
         } while (p::match<grammar::comma, p::apply_mode::nothing, p::rewind_mode::required,
-                          p::nothing, p::normal>(in));
+                          p::nothing, p::normal>(in) ||
+                 (references.size() < macro->parameters.size() && in.current() != in.end() &&
+                  *in.current() != ')'));
     }
     read<grammar::call_close, Action, Control>(in);
     std::vector<Value> args = values.close_frame();

@@ -227,6 +227,27 @@ IntelligentObjectPtr build_shape(const ObjectRecord& record, const Inherited& pa
         if (csg->kind == Csg::Kind::Difference && !csg->children.empty() &&
             !csg->children.front()->lifetime.is_always())
             return flagged(build_difference_by_base(*csg, down, record.inverse), own.flags);
+        const bool members_always =
+            std::all_of(csg->children.begin(), csg->children.end(),
+                        [](const ObjectPtr& child) { return child->lifetime.is_always(); });
+        if (record.inverse && csg->kind != Csg::Kind::Difference && members_always) {
+            // POV-Ray's Invert_CSG_Object: an inverted union or merge is
+            // the intersection of its members inverted (a union's surfaces
+            // inside another member are gone), an inverted intersection
+            // their merge (csg.cpp, CSG::Invert and Morph).
+            const Csg::Kind kind =
+                csg->kind == Csg::Kind::Intersection ? Csg::Kind::Merge : Csg::Kind::Intersection;
+            down.in_intersection = kind == Csg::Kind::Intersection;
+            std::vector<IntelligentObjectPtr> children;
+            children.reserve(csg->children.size());
+            for (const auto& child : csg->children) {
+                ObjectRecord inverted = *child;
+                inverted.inverse = !inverted.inverse;
+                children.push_back(build(inverted, down));
+            }
+            return flagged(std::make_unique<CsgObject>(kind, std::move(children), false),
+                           own.flags);
+        }
         std::vector<IntelligentObjectPtr> children;
         children.reserve(csg->children.size());
         for (const auto& child : csg->children) children.push_back(build(*child, down));

@@ -104,8 +104,8 @@ std::optional<MeshCamera::Ray> MeshCamera::ray(double x, double y, int width, in
             // (POV-Ray's: the mesh by the column, then the face by the whole
             // row's column, not the column within the mesh's part.)
             const std::size_t count = meshes_.size();
-            const auto m = std::min(static_cast<std::size_t>(x / (double(width) / double(count))),
-                                    count - 1);
+            const auto m =
+                std::min(static_cast<std::size_t>(x / (double(width) / double(count))), count - 1);
             const std::size_t face = row * (w / count) + column;
             if (face >= meshes_[m].faces.size()) return std::nullopt;
             return from_face(meshes_[m], meshes_[m].faces[face], offset, invert, t);
@@ -116,8 +116,7 @@ std::optional<MeshCamera::Ray> MeshCamera::ray(double x, double y, int width, in
 }
 
 std::optional<MeshCamera::Ray> MeshCamera::from_face(const Mesh& mesh, std::uint32_t index,
-                                                     double offset, bool invert,
-                                                     double t) const {
+                                                     double offset, bool invert, double t) const {
     const objects::MeshData& data = *mesh.data;
     const objects::MeshFace& face = data.faces[index];
     const glm::dvec3 &p1 = data.vertices[face.vertex[0]], &p2 = data.vertices[face.vertex[1]],
@@ -191,8 +190,8 @@ std::vector<glm::dvec3> MeshCamera::origin_corners(double offset, double t) cons
         hi += reach;
         const glm::dmat4 m = mesh.transform.matrix_at(t);
         for (int k = 0; k < 8; ++k)
-            corners.emplace_back(m * glm::dvec4(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y,
-                                                k & 4 ? hi.z : lo.z, 1.0));
+            corners.emplace_back(
+                m * glm::dvec4(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z, 1.0));
     }
     return corners;
 }

@@ -2,6 +2,8 @@
 // frame by frame where the whole reading stops under a branch on clock, each
 // frame at its shutter or, where that splits what cannot be split, at its
 // opening; warnings said once over all the frames.
+#include "app/scene_reading.hpp"
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -9,7 +11,6 @@
 
 #include <catch2/catch.hpp>
 
-#include "app/scene_reading.hpp"
 #include "language/scene_error.hpp"
 
 namespace fs = std::filesystem;
@@ -56,14 +57,13 @@ TEST_CASE("a scene that reads whole is read once", "[app][time]") {
     CHECK(err.str().empty());
 }
 
-TEST_CASE("a scene stepped per frame is read frame by frame, as POV-Ray reads it",
-          "[app][time]") {
+TEST_CASE("a scene stepped per frame is read frame by frame, as POV-Ray reads it", "[app][time]") {
     std::ostringstream said, err;
     SceneReading reading(scene_file("stepped", kStepped, said), err);
     REQUIRE(reading.frame_by_frame());
     CHECK(err.str().find("is read frame by frame") != std::string::npos);
     CHECK(err.str().find(".pov:5: ") != std::string::npos);  // where the whole reading stopped
-    CHECK(said.str().empty());                           // (said when a frame is read)
+    CHECK(said.str().empty());                               // (said when a frame is read)
     err.str("");
     for (int k = 1; k <= 4; ++k) (void)reading.read_frame(k);
     // Frame 1 opens at 0 (+10), frame 2's shutter splits the array and is
@@ -86,7 +86,8 @@ TEST_CASE("a scene stepped per frame is read frame by frame, as POV-Ray reads it
 
 TEST_CASE("an error no frame's reading passes names its place and the frame", "[app][time]") {
     std::ostringstream said, err;
-    const std::string text = std::string(kStepped) + "#if (frame_number = 3) #error \"three\" #end\n";
+    const std::string text =
+        std::string(kStepped) + "#if (frame_number = 3) #error \"three\" #end\n";
     SceneReading reading(scene_file("error", text, said), err);
     REQUIRE(reading.frame_by_frame());
     (void)reading.read_frame(2);

@@ -114,10 +114,8 @@ TEST_CASE("final_frame of a cyclic animation is one past its last, as POV-Ray de
     std::ostringstream said;
     ParseOptions options = animation();
     options.messages = &said;
-    (void)hexant::language::parse_scene_text("#debug str(final_frame, 0, 0)", "test.pov",
-                                             options);
+    (void)hexant::language::parse_scene_text("#debug str(final_frame, 0, 0)", "test.pov", options);
     options.animation.cyclic = true;
-    (void)hexant::language::parse_scene_text("#debug str(final_frame, 0, 0)", "test.pov",
-                                             options);
+    (void)hexant::language::parse_scene_text("#debug str(final_frame, 0, 0)", "test.pov", options);
     CHECK(said.str() == "89");
 }

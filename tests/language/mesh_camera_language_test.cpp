@@ -8,7 +8,6 @@
 #include <string>
 
 #include <catch2/catch.hpp>
-
 #include <glm/mat4x4.hpp>
 
 #include "language/interpreter.hpp"
@@ -59,8 +58,8 @@ TEST_CASE("mesh_camera's rules are POV-Ray's, each an error at the camera", "[la
 TEST_CASE("a mesh camera keeps its meshes' faces in the order read, and their transforms",
           "[language][camera]") {
     const auto scene = scene_of(film(40) +
-                                "camera { mesh_camera { 2 1 mesh { M translate x * clock } "
-                                "mesh { M } } location <0, 0, 0.5> }",
+                                    "camera { mesh_camera { 2 1 mesh { M translate x * clock } "
+                                    "mesh { M } } location <0, 0, 0.5> }",
                                 hexant::test::animation());
     const rt::CameraFrame camera = scene.camera.evaluate(0.0);
     REQUIRE(camera.type == rt::CameraType::Mesh);
