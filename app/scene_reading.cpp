@@ -63,9 +63,9 @@ runtime::SceneDescription SceneReading::read_frame(int frame) {
         if (auto scene = try_frame(frame, false)) return std::move(*scene);
         auto scene = try_frame(frame, true);
         err_ << "warning: frame " << frame
-             << ": a branch on clock within its shutter splits what hexant cannot make "
-                "piecewise in time; every branch is decided at the frame's opening clock, as "
-                "POV-Ray decides it (what moves with clock is still blurred)\n";
+             << ": its shutter holds what hexant cannot make piecewise in time; the frame is "
+                "read at its opening clock alone, as POV-Ray reads it (clock a constant: "
+                "nothing in this frame is blurred by motion)\n";
         return std::move(*scene);
     } catch (language::SceneError& e) {
         e.add_context(language::ErrorPlace{

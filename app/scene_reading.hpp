@@ -5,9 +5,9 @@
 // state from frame to frame: arrays advanced in a #while up to
 // frame_number), is read again once per frame, as POV-Ray reads it:
 // frame_number is then a constant and clock still runs through the frame's
-// shutter, so what moves is blurred; where even one frame's shutter splits
-// what cannot be split, that frame's branches are all decided at its
-// opening clock, as POV-Ray decides them (a warning names the frames).
+// shutter, so what moves is blurred; where even one frame's shutter holds
+// what cannot be made piecewise, that frame is read at its opening clock
+// alone, clock a constant, as POV-Ray reads it (a warning names the frame).
 #pragma once
 
 #include <iosfwd>

@@ -43,9 +43,8 @@ struct ParseOptions {
     // Read for one frame of the animation alone (a scene read frame by
     // frame, app/scene_reading.hpp): frame_number is that frame's number, a
     // constant, and the time read for is the frame's shutter, or with
-    // at_opening its opening instant alone, where every branch on clock is
-    // decided as POV-Ray decides it (what moves with clock still moves
-    // through the shutter).
+    // at_opening its opening instant alone, clock a constant there, as
+    // POV-Ray reads a frame (nothing in it moves).
     struct FrameAlone {
         int frame = 1;
         bool at_opening = false;

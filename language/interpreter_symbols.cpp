@@ -224,6 +224,7 @@ runtime::TruthPieces Interpreter::split_domain(const TimeFunction& c, const p::p
         pieces =
             runtime::split_by_truth(c, domain.within(animation_time()), options.limits.time_pieces);
     } catch (const runtime::LimitError& e) {
+        if (dynamic_cast<const runtime::TimePiecesLimit*>(&e) != nullptr) split_refused = true;
         fail(at, e.what());
     }
     // (Reported where it does split: a #while on clock that holds from its

@@ -134,9 +134,10 @@ std::optional<Value> call_over_time(const std::string& name, const std::vector<V
         }
         parts = std::move(cut);
         if (parts.size() > max_pieces + 1)
-            throw ValueError(name + "() of strings that depend on clock changes more than " +
-                             std::to_string(max_pieces) +
-                             " times over the animation (--max-time-pieces N raises the limit)");
+            throw PiecewiseError(
+                name + "() of strings that depend on clock changes more than " +
+                std::to_string(max_pieces) +
+                " times over the animation (--max-time-pieces N raises the limit)");
     }
 
     // The arguments each call reads, strings on clock replaced piece by
@@ -149,6 +150,8 @@ std::optional<Value> call_over_time(const std::string& name, const std::vector<V
         std::vector<runtime::KeyPiece> pieces;
         try {
             pieces = runtime::split_by_key(functions, {part.time}, max_pieces, key);
+        } catch (const runtime::TimePiecesLimit& e) {
+            throw PiecewiseError("an argument of " + name + "(): " + e.what());
         } catch (const runtime::LimitError& e) {
             throw ValueError("an argument of " + name + "(): " + e.what());
         }
@@ -167,7 +170,7 @@ std::optional<Value> call_over_time(const std::string& name, const std::vector<V
             times.push_back(piece.time);
             results.push_back(call_builtin(name, concrete, random));
             if (times.size() > max_pieces + 1)
-                throw ValueError(
+                throw PiecewiseError(
                     name + "() of arguments that depend on clock changes more than " +
                     std::to_string(max_pieces) +
                     " times over the animation (--max-time-pieces N raises the limit)");

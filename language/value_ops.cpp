@@ -208,18 +208,18 @@ runtime::ColourFunction to_colour(const Value& v, const std::string& what) {
 const std::string& to_string_value(const Value& v, const std::string& what) {
     if (v.is<std::string>()) return v.as<std::string>();
     if (v.is<TimedString>())
-        throw ValueError(what + " depends on clock (" + v.as<TimedString>().describe() +
-                         "); hexant needs one string here");
+        throw PiecewiseError(what + " depends on clock (" + v.as<TimedString>().describe() +
+                             "); hexant needs one string here");
     throw ValueError(what + " must be a string, not a " + type_name(v));
 }
 
 double to_constant(const Value& v, const std::string& what) {
     const TimeFunction f = to_float(v, what);
     if (!f.is_constant())
-        throw ValueError(what +
-                         " depends on clock; it must be known while the scene is read "
-                         "(hexant splits time on conditions, a #for's end and an index "
-                         "read, not yet on this)");
+        throw PiecewiseError(what +
+                             " depends on clock; it must be known while the scene is read "
+                             "(hexant splits time on conditions, a #for's end and an index "
+                             "read, not yet on this)");
     return f.constant();
 }
 

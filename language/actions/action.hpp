@@ -174,6 +174,8 @@ struct action_control : control<Rule> {
                 ((void)mark_piecewise_refusal(st), ...);
             Interpreter::fail(place(), e.what());
         } catch (const runtime::LimitError& e) {
+            if (dynamic_cast<const runtime::TimePiecesLimit*>(&e) != nullptr)
+                ((void)mark_piecewise_refusal(st), ...);
             Interpreter::fail(place(), e.what());
         } catch (const std::bad_alloc&) {
             Interpreter::fail(place(), kOutOfMemory);

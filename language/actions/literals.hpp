@@ -254,10 +254,14 @@ struct action<g::builtin_constant_name> {
             f(a.width);
         else if (w == "image_height")
             f(a.height);
-        else if (w == "clock")
-            st.values.push(
-                Value{a.clock_runs() ? TimeFunction::clock() : TimeFunction(a.initial_clock)});
-        else if (w == "clock_delta")
+        else if (w == "clock") {
+            // (A frame read at its opening alone: that clock, a constant.)
+            const auto& alone = st.options.frame_alone;
+            st.values.push(Value{alone && alone->at_opening
+                                     ? TimeFunction(a.clock_of_frame(alone->frame))
+                                 : a.clock_runs() ? TimeFunction::clock()
+                                                  : TimeFunction(a.initial_clock)});
+        } else if (w == "clock_delta")
             f(a.clock_delta());
         else if (w == "clock_on")
             f(a.clock_runs() || a.clock_given ? 1.0 : 0.0);

@@ -11,4 +11,11 @@ struct LimitError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+// More pieces of time than --max-time-pieces (a condition or a string
+// switching too often over the animation): one frame read alone may pass
+// it (app/scene_reading.hpp).
+struct TimePiecesLimit : LimitError {
+    using LimitError::LimitError;
+};
+
 }  // namespace hexant::runtime

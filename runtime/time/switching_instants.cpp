@@ -50,13 +50,13 @@ class Splitter {
             // clock * clock > 0 near 0, where the square underflows).
             char where[64];
             std::snprintf(where, sizeof where, "%.17g", t.lo);
-            throw LimitError(std::string(Labeller::kWhat) +
-                             " that depends on clock could not be split into pieces of "
-                             "constant value within " +
-                             std::to_string(max_evaluations_) + " evaluations: near clock " +
-                             where +
-                             " it changes without end, or stays within rounding of changing "
-                             "(write it so that it is clearly one side there)");
+            throw TimePiecesLimit(std::string(Labeller::kWhat) +
+                                  " that depends on clock could not be split into pieces of "
+                                  "constant value within " +
+                                  std::to_string(max_evaluations_) + " evaluations: near clock " +
+                                  where +
+                                  " it changes without end, or stays within rounding of changing "
+                                  "(write it so that it is clearly one side there)");
         }
         // The point evaluation's possible values over t (point_range.hpp).
         tape_.evaluate(PointRange(t), point_ranges_.data(), ranges_scratch_.data());
@@ -98,10 +98,10 @@ class Splitter {
         open_ = true;
         pieces_.push_back({t, std::move(label)});
         if (instants_.size() > max_pieces_)
-            throw LimitError(std::string(Labeller::kWhat) +
-                             " that depends on clock changes more than " +
-                             std::to_string(max_pieces_) +
-                             " times over the animation (--max-time-pieces N raises the limit)");
+            throw TimePiecesLimit(
+                std::string(Labeller::kWhat) + " that depends on clock changes more than " +
+                std::to_string(max_pieces_) +
+                " times over the animation (--max-time-pieces N raises the limit)");
     }
 
     Labeller labeller_;

@@ -72,7 +72,7 @@ TEST_CASE("a scene stepped per frame is read frame by frame, as POV-Ray reads it
     CHECK(said.str().find("x=12\n") != std::string::npos);
     CHECK(said.str().find("x=3\n") != std::string::npos);
     CHECK(said.str().find("x=4\n") != std::string::npos);
-    CHECK(err.str().find("warning: frame 2: a branch on clock within its shutter") !=
+    CHECK(err.str().find("warning: frame 2: its shutter holds what hexant cannot make") !=
           std::string::npos);
     CHECK(err.str().find("frame 1:") == std::string::npos);
     CHECK(err.str().find("frame 3:") == std::string::npos);
@@ -82,6 +82,24 @@ TEST_CASE("a scene stepped per frame is read frame by frame, as POV-Ray reads it
     const auto first = all.find("warning:");
     REQUIRE(first != std::string::npos);
     CHECK(all.find("warning:", first + 1) == std::string::npos);
+}
+
+TEST_CASE("what needs a constant of clock reads frame by frame, at the frames' openings",
+          "[app][time]") {
+    // An array sized by clock and a string of clock that changes at every
+    // instant: over the whole animation, and over a frame's shutter, they
+    // cannot be read; at each frame's opening clock they can, as in POV-Ray.
+    std::ostringstream said, err;
+    SceneReading reading(
+        scene_file("constant",
+                   "#declare A = array[int(clock * 3) + 1]\n"
+                   "#debug concat(\"n=\", str(dimension_size(A, 1), 0, 0), \" c=\", "
+                   "str(clock, 0, 6), \"\\n\")\nsphere { 0, 1 }\n",
+                   said),
+        err);
+    REQUIRE(reading.frame_by_frame());
+    for (int k = 1; k <= 4; ++k) (void)reading.read_frame(k);
+    CHECK(said.str() == "n=1 c=0.000000\nn=2 c=0.333333\nn=3 c=0.666667\nn=4 c=1.000000\n");
 }
 
 TEST_CASE("an error no frame's reading passes names its place and the frame", "[app][time]") {
