@@ -123,9 +123,13 @@ std::optional<MeshCamera::Ray> MeshCamera::from_face(const Mesh& mesh, std::uint
                      &p3 = data.vertices[face.vertex[2]];
     const glm::dvec3 n = glm::cross(p3 - p1, p2 - p1);
     if (glm::dot(n, n) == 0.0) return std::nullopt;  // (a mesh2's degenerate face)
-    const glm::dvec3 normal = glm::normalize(n);
-    const glm::dvec3 centre = (p1 + p2 + p3) / 3.0;
-    const glm::dvec4 origin(centre + offset * normal, 1.0);
+    return leave(mesh, (p1 + p2 + p3) / 3.0, glm::normalize(n), offset, invert, t);
+}
+
+std::optional<MeshCamera::Ray> MeshCamera::leave(const Mesh& mesh, const glm::dvec3& point,
+                                                 const glm::dvec3& normal, double offset,
+                                                 bool invert, double t) {
+    const glm::dvec4 origin(point + offset * normal, 1.0);
     const glm::dmat4 m = mesh.transform.matrix_at(t);
     const glm::dvec3 direction =
         glm::transpose(glm::inverse(glm::dmat3(m))) * (invert ? -normal : normal);
@@ -163,13 +167,7 @@ std::optional<MeshCamera::Ray> MeshCamera::from_uv(double u, double v, double of
                 normal = b1 * data.normals[static_cast<std::size_t>(face.normal[0])] +
                          b2 * data.normals[static_cast<std::size_t>(face.normal[1])] +
                          b3 * data.normals[static_cast<std::size_t>(face.normal[2])];
-            const glm::dvec3 point = b1 * p1 + b2 * p2 + b3 * p3;
-            const glm::dvec4 origin(point + offset * normal, 1.0);
-            const glm::dmat4 m = mesh.transform.matrix_at(t);
-            const glm::dvec3 direction =
-                glm::transpose(glm::inverse(glm::dmat3(m))) * (invert ? -normal : normal);
-            if (!(glm::dot(direction, direction) > 0.0)) return std::nullopt;
-            return Ray{glm::dvec3(m * origin), glm::normalize(direction)};
+            return leave(mesh, b1 * p1 + b2 * p2 + b3 * p3, normal, offset, invert, t);
         }
     }
     return std::nullopt;

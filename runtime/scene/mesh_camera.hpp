@@ -83,6 +83,10 @@ class MeshCamera {
     std::optional<Ray> from_face(const Mesh& mesh, std::uint32_t face, double offset, bool invert,
                                  double t) const;
     std::optional<Ray> from_uv(double u, double v, double offset, bool invert, double t) const;
+    // The ray from `point` on a face of `mesh` along its unit `normal`,
+    // moved by `offset` along it, through the mesh's transforms at t.
+    static std::optional<Ray> leave(const Mesh& mesh, const glm::dvec3& point,
+                                    const glm::dvec3& normal, double offset, bool invert, double t);
 
     unsigned rays_per_pixel_, distribution_;
     double max_distance_;
