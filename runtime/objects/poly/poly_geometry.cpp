@@ -29,6 +29,25 @@ void powers_of_line(double a, double b, int order, std::array<Coefficients, kMax
     }
 }
 
+// p over the box by interval arithmetic (outward rounded): it holds p's
+// exact value at every point of the box.
+Interval value_over(const PolyGeometry& g, const Box3& box) {
+    const auto& terms = poly_terms(g.order);
+    const Interval x(box.lo.x, box.hi.x), y(box.lo.y, box.hi.y), z(box.lo.z, box.hi.z);
+    const auto power = [](const Interval& v, int k) {
+        Interval r(1.0);
+        for (int i = 0; i < k; ++i) r = r * v;
+        return r;
+    };
+    Interval sum(0.0);
+    for (std::size_t n = 0; n < g.coefficients.size(); ++n) {
+        if (g.coefficients[n] == 0.0) continue;
+        const auto& e = terms[n];
+        sum = sum + Interval(g.coefficients[n]) * power(x, e[0]) * power(y, e[1]) * power(z, e[2]);
+    }
+    return sum;
+}
+
 }  // namespace
 
 const std::vector<std::array<int, 3>>& poly_terms(int order) {
@@ -110,8 +129,17 @@ std::optional<SurfaceHit> intersect(const PolyGeometry& g, const Ray3& ray, doub
         hit.uv = glm::dvec2(0.0);
         hit.part = 0;
         // The point's coordinates, rounded from a root good to a few ulps
-        // of t and its place along the ray.
-        hit.error = rounding_gamma(8 + 4 * g.order) * (glm::abs(hit.point) + std::fabs(t));
+        // of t and its place along the ray; and the point's distance from
+        // the surface, |p| there over the gradient's length (to first
+        // order), since the ray's polynomial was rounded from the shape's:
+        // on a stiff quartic (POV-Ray's quarcyl, steiner) that distance is
+        // far beyond the coordinates' rounding, and a shadow ray leaving
+        // from nearer would find the surface it left.
+        const Interval at_point = value_over(g, Box3{hit.point, hit.point});
+        double off_surface = std::max(std::fabs(at_point.lo), std::fabs(at_point.hi)) / length;
+        if (!std::isfinite(off_surface)) off_surface = 0.0;
+        hit.error = rounding_gamma(8 + 4 * g.order) * (glm::abs(hit.point) + std::fabs(t)) +
+                    glm::dvec3(off_surface);
         if (is_finite(hit)) return hit;
     }
     return std::nullopt;
@@ -121,22 +149,9 @@ bool inside(const PolyGeometry& g, glm::dvec3 p) {
     return !(evaluate(g, p) > 0.0);
 }
 
-// p over the box by interval arithmetic: where its range excludes 0, the
-// surface does not meet the box.
+// Where p's range over the box excludes 0, the surface does not meet the box.
 bool surface_may_meet(const PolyGeometry& g, const Box3& box) {
-    const auto& terms = poly_terms(g.order);
-    const Interval x(box.lo.x, box.hi.x), y(box.lo.y, box.hi.y), z(box.lo.z, box.hi.z);
-    const auto power = [](const Interval& v, int k) {
-        Interval r(1.0);
-        for (int i = 0; i < k; ++i) r = r * v;
-        return r;
-    };
-    Interval sum(0.0);
-    for (std::size_t n = 0; n < g.coefficients.size(); ++n) {
-        if (g.coefficients[n] == 0.0) continue;
-        const auto& e = terms[n];
-        sum = sum + Interval(g.coefficients[n]) * power(x, e[0]) * power(y, e[1]) * power(z, e[2]);
-    }
+    const Interval sum = value_over(g, box);
     return !(sum.lo > 0.0 || sum.hi < 0.0);
 }
 
