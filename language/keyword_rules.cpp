@@ -108,7 +108,7 @@ constexpr auto kRules = std::to_array<KeywordRuleEntry>({
     {"cosh", KeywordRule::Rendered, ""},
     {"count", KeywordRule::Warned, "inside radiosity { }, which is warned as a whole"},
     {"crackle", KeywordRule::Rendered, ""},
-    {"crand", KeywordRule::Warned, "no random graininess"},
+    {"crand", KeywordRule::Rendered, ""},
     {"cube", KeywordRule::Rendered, ""},
     {"cubic", KeywordRule::Rendered, ""},
     {"cubic_spline", KeywordRule::Rendered, ""},

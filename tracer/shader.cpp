@@ -583,7 +583,20 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
             if (known.state == ShadingScratch::Light::State::Shadowed) continue;
             // (POV-Ray's default brilliance 1 needs no pow.)
             const double shade = m.brilliance == 1.0 ? cosine : std::pow(cosine, m.brilliance);
-            glm::dvec3 lit = m.diffuse * shade * m.colour * opaque;
+            double intensity = m.diffuse * shade * opaque;
+            // crand: less a uniform random fraction, a draw of its own per
+            // sample and light (POV-Ray's ComputeDiffuseColour, after the
+            // layer's opacity; only where there is diffuse light).
+            if (m.crand > 0.0 && m.diffuse > 0.0) {
+                const SampleIndex& s = state.sample;
+                const auto u = padded_pair(
+                    s.seed, s.index, s.count,
+                    0x80000000u |
+                        static_cast<std::uint32_t>(i + lights_.size() * std::size_t(h.depth)),
+                    s.jitter);
+                intensity -= u[0] * m.crand;
+            }
+            glm::dvec3 lit = intensity * m.colour;
             // POV-Ray's shadowless lights are fill lights: no highlights.
             // A metallic finish tints them by the pigment.
             const glm::dvec3 highlight =

@@ -431,7 +431,7 @@ struct action<g::finish_setting> {
         else if (name == "emission")
             f.emission = x;
         else if (name == "crand")
-            f.unrendered.push_back(st.unrendered(in.position(), name));
+            f.crand = x;
     }
 };
 // reflection V or reflection { MIN ...}: the minimum; the maximum the

@@ -146,7 +146,7 @@ bool depends(const Texture& x, Seen& seen) {
     const Finish& f = x.finish;
     for (const TimeFunction* value :
          {&f.ambient, &f.diffuse, &f.brilliance, &f.phong, &f.phong_size, &f.specular, &f.roughness,
-          &f.emission, &f.metallic, &f.reflection_metallic, &f.reflection_falloff,
+          &f.emission, &f.crand, &f.metallic, &f.reflection_metallic, &f.reflection_falloff,
           &f.reflection_exponent, &f.irid, &f.irid_thickness, &f.irid_turbulence})
         if (value->depends_on_time()) return true;
     if (f.reflection.depends_on_time()) return true;

@@ -90,6 +90,9 @@ struct Finish {
     TimeFunction roughness = 0.05;
     ColourFunction reflection{};  // rgb; zero means none
     TimeFunction emission = 0.0;
+    // POV-Ray's crand: each light's diffuse intensity less a uniform random
+    // fraction of it, per sample (ComputeDiffuseColour); 0 is none.
+    TimeFunction crand = 0.0;
     // POV-Ray's metallic: highlights (finish) and the reflection
     // (reflection { metallic }) take on the pigment's colour, by its
     // empirical Fresnel curve (shader.cpp, metallic_tint); 0 is none.

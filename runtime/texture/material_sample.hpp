@@ -20,6 +20,7 @@ struct MaterialSample {
     double roughness = 0.05;
     glm::dvec3 reflection{0.0};
     double emission = 0.0;
+    double crand = 0.0;                // the most a light's diffuse intensity loses at random
     double metallic = 0.0;             // highlights' tint by the pigment
     double reflection_metallic = 0.0;  // the reflection's
     // Variable reflection (Finish): `reflection` is the minimum.

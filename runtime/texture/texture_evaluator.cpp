@@ -61,6 +61,7 @@ std::shared_ptr<const TextureEvaluator::CompiledFinish> TextureEvaluator::compil
             CompiledScalar(f.specular),
             CompiledScalar(f.roughness),
             CompiledScalar(f.emission),
+            CompiledScalar(f.crand),
             CompiledScalar(f.metallic),
             CompiledScalar(f.reflection_metallic),
             interior ? CompiledScalar(interior->ior) : CompiledScalar(1.0),
@@ -86,6 +87,7 @@ std::shared_ptr<const TextureEvaluator::CompiledFinish> TextureEvaluator::compil
                                       &f.specular,
                                       &f.roughness,
                                       &f.emission,
+                                      &f.crand,
                                       &f.metallic,
                                       &f.reflection_metallic,
                                       &f.reflection.c[0],
@@ -621,6 +623,7 @@ void TextureEvaluator::CompiledLayer::fill(MaterialSample& m, const glm::dvec3& 
     m.roughness = f.roughness.at(t);
     m.reflection = {f.reflection[0].at(t), f.reflection[1].at(t), f.reflection[2].at(t)};
     m.emission = f.emission.at(t);
+    m.crand = f.crand.at(t);
     m.metallic = f.metallic.at(t);
     m.reflection_metallic = f.reflection_metallic.at(t);
     m.reflection_max = {f.reflection_max[0].at(t), f.reflection_max[1].at(t),

@@ -122,7 +122,7 @@ class TextureEvaluator {
     // that differ in colour keeps one), so an object pays a pointer for it.
     struct CompiledFinish {
         CompiledScalar ambient, diffuse, brilliance, phong, phong_size, specular, roughness,
-            emission, metallic, reflection_metallic, ior;
+            emission, crand, metallic, reflection_metallic, ior;
         std::array<CompiledScalar, 3> reflection;
         std::array<CompiledScalar, 3> reflection_max;
         CompiledScalar reflection_falloff, reflection_exponent;

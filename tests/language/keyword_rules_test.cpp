@@ -50,7 +50,6 @@ const std::map<std::string, Probe>& probes() {
         self("confidence", "camera { location -5 look_at 0 confidence 0.9 }");
         self("variance", "camera { location -5 look_at 0 variance 0.001 }");
         self("fresnel", "sphere { 0, 1 finish { fresnel } }");
-        self("crand", "sphere { 0, 1 finish { crand 0.1 } }");
         self("subsurface", "sphere { 0, 1 finish { subsurface { translucency 0.5 } } }");
         p["translucency"] = {"sphere { 0, 1 finish { subsurface { translucency 0.5 } } }",
                              "subsurface"};
@@ -228,10 +227,10 @@ TEST_CASE("a declaration hexant cannot render warns only where it is used",
     CHECK(used.warnings[0].find("(used by the object at probe.pov:3)") != std::string::npos);
     // A mesh face's own texture is used by the mesh.
     const Reading face = read(
-        "#declare T = texture { pigment { rgb 1 } finish { crand 0.1 } }\n"
+        "#declare T = texture { pigment { rgb 1 } finish { fresnel } }\n"
         "mesh { triangle { <0, 0, 0>, <1, 0, 0>, <0, 1, 0> texture { T } } }");
     REQUIRE(face.warnings.size() == 1);
-    CHECK(face.warnings[0].find("'crand'") != std::string::npos);
+    CHECK(face.warnings[0].find("'fresnel'") != std::string::npos);
 }
 
 TEST_CASE("a scene POV-Ray reads with its legacy gamma rule is rendered so",

@@ -1,6 +1,8 @@
 // The renderer: the three modes make the same image of a moving scene; the
 // image does not depend on the thread count; frames are written whole
 // (temporary name, then rename) where the pattern says.
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -273,4 +275,45 @@ TEST_CASE("a parallel light pointed at itself lights nothing, as in POV-Ray", "[
     };
     CHECK(lit("<0, 5, 0>") == 0.0);
     CHECK(lit("<0, 0, 0>") > 1.0);
+}
+
+TEST_CASE("crand takes a random fraction of each light's diffuse intensity, as in POV-Ray",
+          "[tracer][render]") {
+    // A white wall facing the camera and a parallel light along the view:
+    // diffuse 0.8 at full cosine, less u * crand with u uniform on [0, 1)
+    // per sample and light (POV-Ray's ComputeDiffuseColour): 0.6 on
+    // average. Without jitter the draw is the middle, exactly the mean.
+    const auto image = [](const std::string& finish, int spp, bool jitter) {
+        hexant::language::ParseOptions options;
+        options.animation.width = 8;
+        options.animation.height = 6;
+        const auto scene = hexant::language::parse_scene_text(
+            std::string(kVersion37) +
+                "camera { orthographic location <0, 0, -4> look_at 0 }\n"
+                "light_source { <0, 0, -10>, rgb 1 parallel point_at 0 }\n"
+                "plane { -z, 0 pigment { rgb 1 } finish { ambient 0 diffuse 0.8 " +
+                finish + " } }\n",
+            "crand.pov", options);
+        tr::RenderSettings settings;
+        settings.samples_per_pixel = spp;
+        settings.jitter = jitter;
+        tr::Renderer renderer(scene, settings);
+        return renderer.render_frame(1);
+    };
+    const auto range = [](const tr::Image& im) {
+        const auto [lo, hi] = std::minmax_element(im.rgb.begin(), im.rgb.end());
+        double sum = 0.0;
+        for (float v : im.rgb) sum += v;
+        return std::array<double, 3>{*lo, *hi, sum / double(im.rgb.size())};
+    };
+    const auto plain = range(image("", 1, false));
+    CHECK(plain[0] == Approx(0.8));
+    CHECK(plain[1] == Approx(0.8));
+    const auto middle = range(image("crand 0.4", 1, false));
+    CHECK(middle[0] == Approx(0.6));
+    CHECK(middle[1] == Approx(0.6));
+    // Jittered, each pixel averages its own draws: grainy, 0.6 on average.
+    const auto grainy = range(image("crand 0.4", 16, true));
+    CHECK(grainy[1] - grainy[0] > 0.005);
+    CHECK(grainy[2] == Approx(0.6).margin(0.01));
 }
