@@ -4,7 +4,7 @@
 # contact sheet and animated GIF under out/atom/) or runs the whole test
 # suite.
 PACKAGES := build-essential cmake pkg-config tao-pegtl-dev libglm-dev catch2 libcli11-dev \
-            libpng-dev libopenexr-dev libgif-dev libtbb-dev libhwy-dev libfreetype-dev fonts-povray \
+            libpng-dev libjpeg-dev libopenexr-dev libgif-dev libtbb-dev libhwy-dev libfreetype-dev fonts-povray \
             nlohmann-json3-dev
 JOBS := $(shell nproc 2>/dev/null || echo 2)
 

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "image/formats/exr_format.hpp"
+#include "image/formats/jpeg_format.hpp"
 #include "image/formats/png_format.hpp"
 
 namespace hexant::image {
@@ -18,7 +19,7 @@ namespace fs = std::filesystem;
 namespace {
 
 // The registration: a new format is its own file and one line here.
-constexpr std::array<const ImageFormat*, 2> kFormats{&kPngFormat, &kExrFormat};
+constexpr std::array<const ImageFormat*, 3> kFormats{&kPngFormat, &kExrFormat, &kJpegFormat};
 
 }  // namespace
 
@@ -32,14 +33,14 @@ std::string lower_case_extension(const fs::path& path) {
 const ImageFormat* image_format_for(const fs::path& path) {
     const std::string ext = lower_case_extension(path);
     for (const ImageFormat* format : kFormats)
-        if (ext == format->extension) return format;
+        if (format->write && ext == format->extension) return format;
     return nullptr;
 }
 
 std::string image_format_extensions() {
     std::string names;
     for (const ImageFormat* format : kFormats)
-        names += (names.empty() ? "" : ", ") + std::string(format->extension);
+        if (format->write) names += (names.empty() ? "" : ", ") + std::string(format->extension);
     return names;
 }
 
@@ -63,8 +64,8 @@ StoredImage read_stored_image(const fs::path& path) {
                                          " image: " + e.what());
             }
         }
-    throw std::runtime_error(path.string() + ": cannot read image: not a " +
-                             image_format_extensions() + " file");
+    throw std::runtime_error(path.string() +
+                             ": cannot read image: not a PNG, OpenEXR or JPEG file");
 }
 
 }  // namespace hexant::image

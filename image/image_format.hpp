@@ -1,6 +1,7 @@
 // Image files as hexant reads and writes them, one format per file under
 // formats/ and one line in image_format.cpp's table: PNG (8-bit sRGB,
-// libpng) and OpenEXR (linear float, the OpenEXR library). Each is linked
+// libpng) and OpenEXR (linear float, the OpenEXR library), and JPEG read
+// only (libjpeg). Each is linked
 // directly rather than through OpenImageIO, whose plugins and their
 // libraries cost every process about 120 MB of resident memory and half a
 // second before main() (docs/benchmarks.md, "Scale: the swarm"; issue 21).
@@ -55,6 +56,7 @@ struct ImageFormat {
     const char* name;       // "PNG"
     const char* extension;  // ".png", lower case
     bool linear;            // stores linear float
+    // (null: a format hexant reads only)
     void (*write)(const std::filesystem::path& file, int width, int height, const void* pixels);
     StoredImage (*read)(const std::filesystem::path& file);
     bool (*recognizes)(const unsigned char* head, std::size_t bytes);  // the file's magic
@@ -63,8 +65,8 @@ struct ImageFormat {
 // A name's extension in lower case (".PNG" and ".png" ask for one format).
 std::string lower_case_extension(const std::filesystem::path& path);
 
-// The format a file name asks for, by its extension (any case); nullptr for
-// an unknown one.
+// The format a file name asks hexant to write, by its extension (any case);
+// nullptr for an unknown one or one hexant only reads.
 const ImageFormat* image_format_for(const std::filesystem::path& path);
 
 // The extensions hexant writes, for messages: ".png, .exr".

@@ -225,7 +225,7 @@ constexpr auto kRules = std::to_array<KeywordRuleEntry>({
     {"irid_wavelength", KeywordRule::Rendered, ""},
     {"isosurface", KeywordRule::Rendered, ""},
     {"jitter", KeywordRule::Harmless, "an area light's samples are spread at random by hexant anyway"},
-    {"jpeg", KeywordRule::Refused, ""},
+    {"jpeg", KeywordRule::Rendered, ""},
     {"julia", KeywordRule::Rendered, ""},
     {"julia_fractal", KeywordRule::Rendered, ""},
     {"lambda", KeywordRule::Rendered, ""},

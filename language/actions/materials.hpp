@@ -20,13 +20,14 @@ struct action<g::image_file_type> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)st;
-        // hexant reads PNG and OpenEXR (the file's own bytes say which).
+        // hexant reads PNG, OpenEXR and JPEG (the file's own bytes say which).
         std::string type = in.string();
         while (!type.empty() && std::isspace(static_cast<unsigned char>(type.back())))
             type.pop_back();
-        if (type != "png" && type != "exr")
-            throw UnsupportedError("image_map: " + type +
-                                   " images are not supported by hexant (PNG and OpenEXR are)");
+        if (type != "png" && type != "exr" && type != "jpeg")
+            throw UnsupportedError(
+                "image_map: " + type +
+                " images are not supported by hexant (PNG, OpenEXR and JPEG are)");
     }
 };
 template <>

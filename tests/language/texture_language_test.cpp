@@ -208,8 +208,8 @@ TEST_CASE("what POV-Ray refuses in textures is an error where it is written",
           "image file 'no_such_image.png' not found");
     error("sphere { 0, 1 pigment { image_map { png \"/etc/hostname\" } } }\n",
           "outside the folders");
-    error("sphere { 0, 1 pigment { image_map { jpeg \"x.jpg\" } } }\n",
-          "jpeg images are not supported");
+    error("sphere { 0, 1 pigment { image_map { tga \"x.tga\" } } }\n",
+          "tga images are not supported");
     hexant::language::ParseOptions with_tiles;  // (tiles.png found on the include path)
     with_tiles.include_paths = {std::string(HEXANT_SOURCE_DIR) +
                                 "/tests/tracer/pov_reference/textures"};

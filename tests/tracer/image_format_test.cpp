@@ -80,10 +80,52 @@ TEST_CASE("a name of no format, a damaged file and a file of no format are error
         CHECK_THROWS_WITH(hexant::image::read_stored_image(cut), Catch::Contains(cut.string()));
     }
     { std::ofstream(folder / "text.png") << "not an image at all"; }
-    CHECK_THROWS_WITH(hexant::image::read_stored_image(folder / "text.png"),
-                      Catch::Contains("text.png") && Catch::Contains("not a .png, .exr file"));
+    CHECK_THROWS_WITH(
+        hexant::image::read_stored_image(folder / "text.png"),
+        Catch::Contains("text.png") && Catch::Contains("not a PNG, OpenEXR or JPEG file"));
     CHECK_THROWS_WITH(hexant::image::read_stored_image(folder / "missing.png"),
                       Catch::Contains("missing.png"));
+    fs::remove_all(folder);
+}
+
+TEST_CASE("a JPEG is read as libjpeg decodes it, and never written", "[tracer][image]") {
+    namespace im = hexant::image;
+    const fs::path textures =
+        fs::path(HEXANT_SOURCE_DIR) / "tests" / "tracer" / "pov_reference" / "textures";
+    const im::StoredImage colours = im::read_stored_image(textures / "colours.jpg");
+    CHECK(colours.width == 32);
+    CHECK(colours.height == 24);
+    CHECK(colours.channels == 3);
+    CHECK(colours.source == im::StoredImage::Source::Rgb);
+    CHECK_FALSE(colours.linear);
+    CHECK_FALSE(colours.gamma_told);  // sRGB unless the scene says otherwise
+    REQUIRE(colours.values.size() == 32u * 24u * 3u);
+    // The top-left corner is the fill's (1, 0.2, 0) plus the checker's 0,
+    // within the JPEG's loss.
+    CHECK(colours.values[0] == Approx(1.0).margin(0.06));
+    CHECK(colours.values[2] == Approx(0.0).margin(0.06));
+    const im::StoredImage heights = im::read_stored_image(textures / "heights.jpg");
+    CHECK(heights.source == im::StoredImage::Source::Gray);
+    REQUIRE(heights.channels == 3);
+    for (std::size_t i = 0; i < heights.values.size(); i += 3) {
+        CHECK(heights.values[i] == heights.values[i + 1]);
+        CHECK(heights.values[i] == heights.values[i + 2]);
+    }
+    // Cut short, or its header damaged: an error naming the file, no crash.
+    const fs::path folder = fresh_folder("hexant_jpeg_test");
+    const fs::path cut = folder / "cut.jpg";
+    fs::copy_file(textures / "colours.jpg", cut);
+    fs::resize_file(cut, 300);  // in its tables
+    CHECK_THROWS_WITH(im::read_stored_image(cut), Catch::Contains("cut.jpg"));
+    fs::resize_file(cut, fs::file_size(textures / "colours.jpg") * 3 / 4);  // in its pixels
+    CHECK_THROWS_WITH(im::read_stored_image(cut), Catch::Contains("cut.jpg"));
+    { std::ofstream(folder / "bad.jpg", std::ios::binary) << "\xFF\xD8\xFF\xE0 not a JPEG"; }
+    CHECK_THROWS_WITH(im::read_stored_image(folder / "bad.jpg"),
+                      Catch::Contains("bad.jpg") && Catch::Contains("JPEG"));
+    // A frame is never written as JPEG: it must read back as written.
+    CHECK(im::image_format_for("frame.jpg") == nullptr);
+    CHECK_THROWS(tr::write_image(ramp(4, 3), folder / "frame.jpg"));
+    CHECK_FALSE(fs::exists(folder / "frame.jpg"));
     fs::remove_all(folder);
 }
 

@@ -183,13 +183,16 @@ std::shared_ptr<const HeightFieldData> read_height_field(const std::filesystem::
             kind = "png";
         else if (ext == ".exr")
             kind = "exr";
+        else if (ext == ".jpg" || ext == ".jpeg")  // POV-Ray's InferFileTypeFromExt
+            kind = "jpeg";
         else
-            throw HeightFieldError("height_field: hexant reads PNG and OpenEXR images, not '" +
-                                   path.filename().string() + "' (" +
-                                   (ext.empty() ? std::string("no extension") : ext) +
-                                   "); write png \"FILE.png\" or exr \"FILE.exr\"");
+            throw HeightFieldError(
+                "height_field: hexant reads PNG, OpenEXR and JPEG images, not '" +
+                path.filename().string() + "' (" +
+                (ext.empty() ? std::string("no extension") : ext) +
+                "); write png \"FILE.png\" or exr \"FILE.exr\"");
     }
-    if (kind != "png" && kind != "exr")
+    if (kind != "png" && kind != "exr" && kind != "jpeg")
         throw HeightFieldError("height_field: hexant does not read '" + kind +
                                "' images; convert the file to png (or exr)");
     image::StoredImage stored;
@@ -200,7 +203,10 @@ std::shared_ptr<const HeightFieldData> read_height_field(const std::filesystem::
     }
     if (stored.linear != (kind == "exr"))
         throw HeightFieldError("height_field: '" + path.filename().string() + "' is not " +
-                               (kind == "exr" ? "an OpenEXR" : "a PNG") + " file");
+                               (kind == "exr"    ? "an OpenEXR"
+                                : kind == "jpeg" ? "a JPEG"
+                                                 : "a PNG") +
+                               " file");
     return std::make_shared<const HeightFieldData>(stored.width, stored.height,
                                                    heights_from_image(stored));
 }
