@@ -184,7 +184,13 @@ std::string layer(const runtime::Texture& texture, double t, Shared& shared) {
     std::string s = "pigment=" + pigment(texture.pigment, t, shared);
     if (texture.normal) s += " normal=" + normal(*texture.normal, t, shared);
     const auto& f = texture.finish;
-    s += " finish=ambient:" + number(f.ambient(t)) + ",diffuse:" + number(f.diffuse(t)) +
+    // (ambient: a number when grey, else its colour)
+    const double a[3] = {f.ambient[0](t), f.ambient[1](t), f.ambient[2](t)};
+    const std::string ambient =
+        a[0] == a[1] && a[1] == a[2]
+            ? number(a[0])
+            : "<" + number(a[0]) + ", " + number(a[1]) + ", " + number(a[2]) + ">";
+    s += " finish=ambient:" + ambient + ",diffuse:" + number(f.diffuse(t)) +
          ",brilliance:" + number(f.brilliance(t)) + ",phong:" + number(f.phong(t)) +
          ",phong_size:" + number(f.phong_size(t)) + ",specular:" + number(f.specular(t)) +
          ",roughness:" + number(f.roughness(t)) + ",reflection:<" + number(f.reflection.c[0](t)) +

@@ -8,9 +8,8 @@
 #include <string>
 #include <vector>
 
-#include <jpeglib.h>
-
 #include <jerror.h>  // (after jpeglib.h, which it needs)
+#include <jpeglib.h>
 
 namespace hexant::image {
 

@@ -398,9 +398,24 @@ struct action<g::finish_setting> {
         Value v = st.values.pop();
         const std::string name = st.values.pop_name();
         auto& f = st.blocks.edit<runtime::Finish>(in.position(), name.c_str());
+        if (name == "ambient" || name == "emission") {
+            // A colour (ambient rgb <..>) or a float, grey (POV-Ray 3.7's
+            // Parse_Finish reads both as colours).
+            std::array<TimeFunction, 3> amount;
+            if (v.is<Vector>()) {
+                const auto c = to_colour(v, name);
+                amount = {c.c[0], c.c[1], c.c[2]};
+            } else {
+                const TimeFunction x = to_float(v, name);
+                amount = {x, x, x};
+            }
+            (name == "ambient" ? f.ambient : f.emission) = amount;
+            return;
+        }
         TimeFunction x;
         if (v.is<Vector>()) {
-            // A colour amount (ambient rgb <..>): hexant keeps its mean.
+            // A colour amount where POV-Ray reads a float: hexant keeps its
+            // mean.
             const auto c = to_colour(v, name);
             x = (c.c[0] + c.c[1] + c.c[2]) / 3.0;
             const auto constant = [&](int i) { return c.c[i].is_constant(); };
@@ -415,9 +430,7 @@ struct action<g::finish_setting> {
         } else {
             x = to_float(v, name);
         }
-        if (name == "ambient")
-            f.ambient = x;
-        else if (name == "diffuse")
+        if (name == "diffuse")
             f.diffuse = x;
         else if (name == "brilliance")
             f.brilliance = x;
@@ -429,8 +442,6 @@ struct action<g::finish_setting> {
             f.specular = x;
         else if (name == "roughness")
             f.roughness = x;
-        else if (name == "emission")
-            f.emission = x;
         else if (name == "crand")
             f.crand = x;
     }

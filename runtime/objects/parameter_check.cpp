@@ -112,14 +112,18 @@ Problem check(const Texture& texture, const std::string& whose, const Span& span
     if (auto p = check(texture.pigment.transform, whose + " pigment's", span)) return p;
     const Finish& f = texture.finish;
     const std::pair<const TimeFunction*, const char*> values[] = {
-        {&f.ambient, "ambient"},
+        {&f.ambient[0], "ambient"},
+        {&f.ambient[1], "ambient"},
+        {&f.ambient[2], "ambient"},
         {&f.diffuse, "diffuse"},
         {&f.brilliance, "brilliance"},
         {&f.phong, "phong"},
         {&f.phong_size, "phong_size"},
         {&f.specular, "specular"},
         {&f.roughness, "roughness"},
-        {&f.emission, "emission"},
+        {&f.emission[0], "emission"},
+        {&f.emission[1], "emission"},
+        {&f.emission[2], "emission"},
         {&f.metallic, "metallic"},
         {&f.reflection_metallic, "reflection's metallic"},
         {&f.reflection_falloff, "reflection's falloff"},

@@ -81,7 +81,9 @@ struct Pigment {
 
 // POV-Ray 3.7's finish and its defaults.
 struct Finish {
-    TimeFunction ambient = 0.1;
+    // ambient and emission are colours (red, green, blue), as POV-Ray 3.7's
+    // (a float is grey).
+    std::array<TimeFunction, 3> ambient{0.1, 0.1, 0.1};
     TimeFunction diffuse = 0.6;
     TimeFunction brilliance = 1.0;
     TimeFunction phong = 0.0;
@@ -89,7 +91,7 @@ struct Finish {
     TimeFunction specular = 0.0;
     TimeFunction roughness = 0.05;
     ColourFunction reflection{};  // rgb; zero means none
-    TimeFunction emission = 0.0;
+    std::array<TimeFunction, 3> emission{0.0, 0.0, 0.0};
     // POV-Ray's crand: each light's diffuse intensity less a uniform random
     // fraction of it, per sample (ComputeDiffuseColour); 0 is none.
     TimeFunction crand = 0.0;

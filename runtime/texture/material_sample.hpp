@@ -11,7 +11,7 @@ struct MaterialSample {
     double filter = 0.0;
     double transmit = 0.0;
     // POV-Ray 3.7's finish, at the event's time.
-    double ambient = 0.1;
+    glm::dvec3 ambient{0.1};  // a colour, as emission
     double diffuse = 0.6;
     double brilliance = 1.0;
     double phong = 0.0;
@@ -19,7 +19,7 @@ struct MaterialSample {
     double specular = 0.0;
     double roughness = 0.05;
     glm::dvec3 reflection{0.0};
-    double emission = 0.0;
+    glm::dvec3 emission{0.0};
     double crand = 0.0;                // the most a light's diffuse intensity loses at random
     double metallic = 0.0;             // highlights' tint by the pigment
     double reflection_metallic = 0.0;  // the reflection's

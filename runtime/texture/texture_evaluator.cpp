@@ -53,14 +53,16 @@ std::shared_ptr<const TextureEvaluator::CompiledFinish> TextureEvaluator::compil
     const ColourFunction most = f.reflection_max ? *f.reflection_max : f.reflection;
     const auto make = [&] {
         return std::make_shared<const CompiledFinish>(CompiledFinish{
-            CompiledScalar(f.ambient),
+            {CompiledScalar(f.ambient[0]), CompiledScalar(f.ambient[1]),
+             CompiledScalar(f.ambient[2])},
             CompiledScalar(f.diffuse),
             CompiledScalar(f.brilliance),
             CompiledScalar(f.phong),
             CompiledScalar(f.phong_size),
             CompiledScalar(f.specular),
             CompiledScalar(f.roughness),
-            CompiledScalar(f.emission),
+            {CompiledScalar(f.emission[0]), CompiledScalar(f.emission[1]),
+             CompiledScalar(f.emission[2])},
             CompiledScalar(f.crand),
             CompiledScalar(f.metallic),
             CompiledScalar(f.reflection_metallic),
@@ -76,17 +78,21 @@ std::shared_ptr<const TextureEvaluator::CompiledFinish> TextureEvaluator::compil
             f.reflection_fresnel,
             f.conserve_energy});
     };
-    using Key = std::array<double, 24>;
+    using Key = std::array<double, 28>;
     Key key{};
     std::size_t n = 0;
-    for (const TimeFunction* value : {&f.ambient,
+    for (const TimeFunction* value : {&f.ambient[0],
+                                      &f.ambient[1],
+                                      &f.ambient[2],
                                       &f.diffuse,
                                       &f.brilliance,
                                       &f.phong,
                                       &f.phong_size,
                                       &f.specular,
                                       &f.roughness,
-                                      &f.emission,
+                                      &f.emission[0],
+                                      &f.emission[1],
+                                      &f.emission[2],
                                       &f.crand,
                                       &f.metallic,
                                       &f.reflection_metallic,
@@ -614,7 +620,7 @@ void TextureEvaluator::CompiledLayer::fill(MaterialSample& m, const glm::dvec3& 
     m.filter = c[3];
     m.transmit = c[4];
     const CompiledFinish& f = *finish;
-    m.ambient = f.ambient.at(t);
+    m.ambient = {f.ambient[0].at(t), f.ambient[1].at(t), f.ambient[2].at(t)};
     m.diffuse = f.diffuse.at(t);
     m.brilliance = f.brilliance.at(t);
     m.phong = f.phong.at(t);
@@ -622,7 +628,7 @@ void TextureEvaluator::CompiledLayer::fill(MaterialSample& m, const glm::dvec3& 
     m.specular = f.specular.at(t);
     m.roughness = f.roughness.at(t);
     m.reflection = {f.reflection[0].at(t), f.reflection[1].at(t), f.reflection[2].at(t)};
-    m.emission = f.emission.at(t);
+    m.emission = {f.emission[0].at(t), f.emission[1].at(t), f.emission[2].at(t)};
     m.crand = f.crand.at(t);
     m.metallic = f.metallic.at(t);
     m.reflection_metallic = f.reflection_metallic.at(t);

@@ -121,8 +121,10 @@ class TextureEvaluator {
     // every texture that has the same numbers (a scene of 10^5 spheres
     // that differ in colour keeps one), so an object pays a pointer for it.
     struct CompiledFinish {
-        CompiledScalar ambient, diffuse, brilliance, phong, phong_size, specular, roughness,
-            emission, crand, metallic, reflection_metallic, ior;
+        std::array<CompiledScalar, 3> ambient;
+        CompiledScalar diffuse, brilliance, phong, phong_size, specular, roughness;
+        std::array<CompiledScalar, 3> emission;
+        CompiledScalar crand, metallic, reflection_metallic, ior;
         std::array<CompiledScalar, 3> reflection;
         std::array<CompiledScalar, 3> reflection_max;
         CompiledScalar reflection_falloff, reflection_exponent;

@@ -261,10 +261,10 @@ sphere { 0, 1 texture { pigment { rgb 1 } finish { diffuse 0.2 } } }
 sphere { 0, 1 pigment { rgb 1 } }
 )");
     const rt::Finish& first = texture_of(scene, 0).finish;
-    CHECK(first.ambient.constant() == 0.3);
+    CHECK(first.ambient[0].constant() == 0.3);
     CHECK(first.phong.constant() == 0.5);
     const rt::Finish& second = texture_of(scene, 1).finish;
-    CHECK(second.ambient.constant() == 0.3);  // kept from the default
+    CHECK(second.ambient[0].constant() == 0.3);  // kept from the default
     CHECK(second.diffuse.constant() == 0.2);
     CHECK_FALSE(texture_of(scene, 1).normal);  // the normal came later
     CHECK(texture_of(scene, 2).normal);

@@ -114,7 +114,7 @@ TEST_CASE("complete: colours and finishes are evaluated at the hit's time", "[ob
         CHECK(m.colour.x == Approx(t));
         CHECK(m.colour.z == Approx(1.0 - t));
         CHECK(m.phong == Approx(0.5 * t));
-        CHECK(m.ambient == Approx(0.2));
+        CHECK(m.ambient.x == Approx(0.2));
     }
 }
 
