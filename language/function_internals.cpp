@@ -51,6 +51,22 @@ F clamp_field(const F& strength, const F& r) {
 }
 
 // Each as in fnintern.cpp, operation for operation.
+// POV-Ray's `if` on a parameter: decided here when the parameter is a
+// constant (both sides are not evaluated, so the other may be undefined
+// there: 2 / 0), else each time.
+F branch(const F& condition, const F& yes, const F& no) {
+    if (condition.is_constant()) return condition.constant() != 0.0 ? yes : no;
+    return choose(condition, yes, no);
+}
+// The helices' cross section of (x, z): 1 a circle, 0 a square, else the
+// superellipse of exponent 2 / p5.
+F helix_section(const F& x, const F& z, const F& p5) {
+    const F two = 2.0;
+    const F rounded = pow_(pow_(abs_(x), two / p5) + pow_(abs_(z), two / p5), p5 * 0.5);
+    const F square = max_(abs_(x), abs_(z));
+    return branch(F::apply(TimeOp::NotEqual, p5, 0.0), rounded, square);
+}
+
 F f_ellipsoid(const Params& p) {  // 17
     return sqrt_(p[0] * p[0] * p[3] * p[3] + p[1] * p[1] * p[4] * p[4] + p[2] * p[2] * p[5] * p[5]);
 }
@@ -59,6 +75,32 @@ F f_heart(const Params& p) {  // 23
     const F a = 2.0 * x2 + y2 + z2 - 1.0;
     const F r = -(a * a * a - 0.1 * x2 * z2 * p[2] - y2 * z2 * p[2]);
     return clamp_field(p[3], r);
+}
+F f_helix1(const Params& p) {  // 25
+    constexpr double kTwoPi = 6.283185307179586476925286766559;
+    constexpr double kPi = 3.1415926535897932384626;
+    const F r = sqrt_(p[0] * p[0] + p[2] * p[2]);
+    // (POV-Ray moves x off 0 where x and z are both 0; atan2 is 0 there
+    // either way.)
+    F th = F::apply(TimeOp::Mod, atan2_(p[2], p[0]) * p[3] + p[1] * p[4] * p[3], kTwoPi);
+    th = th + choose(less_(th, 0.0), kTwoPi, 0.0);
+    const F z = (th - kPi) / p[7] / (p[4] * p[3]);
+    const F x = r - p[6];
+    const F circle = sqrt_(x * x + z * z);
+    // (A turn of the section by p6 degrees; 0 turns nothing.)
+    const F c = F::apply(TimeOp::Cos, p[9] * (kPi / 180.0));
+    const F s = F::apply(TimeOp::Sin, p[9] * (kPi / 180.0));
+    const F other = helix_section(x * c - z * s, x * s + z * c, p[8]);
+    const F r2 = branch(F::apply(TimeOp::Equal, p[8], 1.0), circle, other);
+    return -p[5] + min_(p[6] + r, r2);
+}
+F f_helix2(const Params& p) {  // 26
+    const F th = p[1] * p[4];
+    const F c = F::apply(TimeOp::Cos, th), s = F::apply(TimeOp::Sin, th);
+    const F x2 = p[0] - p[6] * c, z2 = p[2] - p[6] * s;
+    const F x = x2 * c + z2 * s, z = -x2 * s + z2 * c;
+    const F circle = sqrt_(x * x + z * z);
+    return branch(F::apply(TimeOp::Equal, p[8], 1.0), circle, helix_section(x, z, p[8])) - p[5];
 }
 F f_paraboloid(const Params& p) {  // 45
     return clamp_field(p[3], -(p[0] * p[0] - p[1] + p[2] * p[2]));
@@ -144,8 +186,8 @@ const std::array<Internal, 79>& internals() {
         {"f_glob", 1, {}},
         {"f_heart", 1, f_heart},
         {"f_helical_torus", 10, {}},
-        {"f_helix1", 7, {}},
-        {"f_helix2", 7, {}},
+        {"f_helix1", 7, f_helix1},
+        {"f_helix2", 7, f_helix2},
         {"f_hex_x", 1, {}},
         {"f_hex_y", 1, {}},
         {"f_hetero_mf", 6, {}},

@@ -18,6 +18,8 @@
 
 #declare f_ellipsoid = function { internal(17) }
 #declare f_heart = function { internal(23) }
+#declare f_helix1 = function { internal(25) }
+#declare f_helix2 = function { internal(26) }
 #declare f_paraboloid = function { internal(45) }
 #declare f_ph = function { internal(47) }
 #declare f_pillow = function { internal(48) }
@@ -58,4 +60,9 @@
 #debug concat("th = ", str(f_th(0.3, -0.2, -0.4), 0, 10), "\n")
 #debug concat("torus = ", str(f_torus(0.9, 0.1, 0.3, 0.8, 0.2), 0, 10), "\n")
 #debug concat("torus2 = ", str(f_torus2(0.9, 0.1, 0.3, 1.2, 0.8, 0.2), 0, 10), "\n")
+#debug concat("helix1_circle = ", str(f_helix1(0.7, 0.3, -0.4, 2, 5, 0.1, 0.8, 1, 1, 0), 0, 10), "\n")
+#debug concat("helix1_square = ", str(f_helix1(-0.5, 1.3, 0.6, 3, 2, 0.15, 0.7, 0.5, 0, 30), 0, 10), "\n")
+#debug concat("helix1_rounded = ", str(f_helix1(0.2, -0.8, 0.9, 1, 4, 0.2, 0.9, 2, 0.5, 45), 0, 10), "\n")
+#debug concat("helix2_circle = ", str(f_helix2(0.3, 0.5, -0.2, 0, 3, 0.3, 0.4, 0, 1, 0), 0, 10), "\n")
+#debug concat("helix2_diamond = ", str(f_helix2(-0.6, 1.1, 0.4, 0, 2, 0.3, 0.5, 0, 2, 0), 0, 10), "\n")
 #debug concat("uses_internal = ", str(F_uses_internal(0.2, 0.7, -0.1), 0, 10), "\n")
