@@ -98,8 +98,39 @@ void check_patterns(const runtime::ObjectRecord& object) {
     });
 }
 
+// Each light_group in `record` (under the group `parent`, -1 for none)
+// made a group of the scene's, numbered as it is added: the records on the
+// way to a group are copied, the others stay shared (a declared group
+// placed twice is two groups). Null when nothing in it is a group. Where
+// a member of a group has media, `media_in_group` names the first.
+runtime::ObjectPtr stamp_light_groups(const runtime::ObjectRecord& record, int parent,
+                                      std::vector<runtime::LightGroup>& groups,
+                                      std::optional<runtime::SourcePlace>& media_in_group) {
+    int here = parent;
+    int id = -1;
+    if (record.light_group) {
+        id = static_cast<int>(groups.size());
+        groups.push_back({parent});
+        here = id;
+    }
+    if (here >= 0 && !media_in_group && record.interior && !record.interior->media.empty())
+        media_in_group = record.place;
+    std::vector<std::pair<std::size_t, runtime::ObjectPtr>> changed;
+    if (const auto* csg = std::get_if<runtime::Csg>(&record.shape))
+        for (std::size_t i = 0; i < csg->children.size(); ++i)
+            if (auto child = stamp_light_groups(*csg->children[i], here, groups, media_in_group))
+                changed.emplace_back(i, std::move(child));
+    if (id < 0 && changed.empty()) return nullptr;
+    auto copy = std::make_shared<runtime::ObjectRecord>(record);
+    if (id >= 0) copy->light_group->id = id;
+    for (auto& [i, child] : changed) std::get<runtime::Csg>(copy->shape).children[i] = child;
+    return copy;
+}
+
 // Lights inside CSGs move with them: hand them to the scene with the
-// transforms of every object around them.
+// transforms of every object around them. A light_group's own lights
+// light its members only (POV-Ray's Promote_Local_Lights: its direct
+// children, not lights in unions within it).
 void collect_lights(const runtime::ObjectRecord& object,
                     std::vector<runtime::LightRecord>& lights) {
     struct Pending {
@@ -116,6 +147,7 @@ void collect_lights(const runtime::ObjectRecord& object,
         here->append(*p.outer);
         for (auto light : p.record->lights) {
             light.transform.append(*here);
+            light.light_group = p.record->light_group ? p.record->light_group->id : -1;
             lights.push_back(std::move(light));
         }
         if (const auto* csg = std::get_if<runtime::Csg>(&p.record->shape))
@@ -207,6 +239,12 @@ void Interpreter::add_object(const runtime::ObjectPtr& given, const p::position&
     }
     check_parameters(*object, where);
     report_unrendered(*object, where);
+    std::optional<runtime::SourcePlace> media_in_group;
+    if (auto stamped = stamp_light_groups(*object, -1, scene.light_groups, media_in_group))
+        object = std::move(stamped);
+    if (media_in_group)
+        warn(where, "the media of the object at " + media_in_group->to_string() +
+                        " in a light_group are lit by the scene's lights, not by the group's");
     std::vector<runtime::LightRecord> lights;
     collect_lights(*object, lights);
     scene.objects.push_back(object);

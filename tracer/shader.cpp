@@ -39,7 +39,11 @@ Shader::Shader(const runtime::SceneDescription& scene, const RayQuery& query, Li
       max_trace_level_(std::max(1, scene.global.max_trace_level)),
       irid_wavelength_(scene.global.irid_wavelength),
       legacy_sky_(scene.global.legacy_sky) {
-    for (const auto& l : scene.lights) lights_.emplace_back(l);
+    for (const auto& l : scene.lights) {
+        lights_.emplace_back(l);
+        light_group_of_.push_back(l.light_group);
+    }
+    for (const auto& g : scene.light_groups) group_parent_.push_back(g.parent);
     still_ambient_ = !ambient_light_.depends_on_time();
     fixed_ambient_ = rgb(ambient_light_, 0.0);
     if (scene.sky_sphere) {
@@ -345,6 +349,8 @@ glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, std::uint
     Hit h{on, p, depth, weight};
     h.sight = sight;
     h.double_lit = hit->object->flags().double_illuminate;
+    h.light_group = hit->object->flags().light_group;
+    h.no_global_lights = hit->object->flags().no_global_lights;
     h.d = glm::normalize(glm::dvec3(ray.direction));
     h.point = glm::dvec3(p.event);
     h.time = p.event.w;
@@ -440,6 +446,8 @@ glm::dvec3 Shader::through_volume(const glm::dvec3& colour, const Ray4& ray, dou
         for (std::size_t i = 0; i < lights_.size(); ++i) {
             const ShadedLight& light = lights_[i];
             if (!light.media_interaction() || !light.shines_at(m.time)) continue;
+            // (A light_group's lights light its members' surfaces only.)
+            if (light_group_of_[i] >= 0) continue;
             double s0 = 0.0, s1 = 0.0;
             if (!light.media_interval(m.origin, m.direction, m.time, s0, s1)) continue;
             // (POV-Ray's SMALL_TOLERANCE: a beam that ends at the eye.)
@@ -549,6 +557,7 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
         const double opaque = 1.0 - m.filter - m.transmit;
         glm::dvec3 own = m.colour * (m.ambient * ambient + m.emission) * opaque;
         for (std::size_t i = 0; i < lights_.size(); ++i) {
+            if (!lights_object(i, h)) continue;
             const ShadedLight& light = lights_[i];
             ShadingScratch::Light alone;
             ShadingScratch::Light& known = seen ? (*seen)[i] : alone;

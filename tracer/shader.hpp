@@ -78,6 +78,10 @@ class Shader {
         // toward such lights start off that side (back_start).
         bool double_lit = false;
         glm::dvec3 back_start{0.0};
+        // light_group: the innermost group the object is in (-1: none),
+        // and whether the scene's other lights pass it by.
+        std::int32_t light_group = -1;
+        bool no_global_lights = false;
         // The interiors the ray crossed to get here (its own and, when it
         // leaves one, that one), and the object hit as one of them.
         Inside around{};
@@ -153,6 +157,20 @@ class Shader {
     LightTravel travel_;
     bool filtering_ = false;
     std::vector<ShadedLight> lights_;
+    // Each light's light_group (-1: the whole scene's), and each group's
+    // parent (SceneDescription::light_groups).
+    std::vector<std::int32_t> light_group_of_;
+    std::vector<std::int32_t> group_parent_;
+    // Whether light `index` lights the hit's object: a scene light unless
+    // its group turned them off, a group's light only its members and the
+    // members of groups within it (POV-Ray's ComputeDiffuseLight).
+    bool lights_object(std::size_t index, const Hit& h) const {
+        const std::int32_t group = light_group_of_[index];
+        if (group < 0) return !h.no_global_lights;
+        for (std::int32_t g = h.light_group; g >= 0; g = group_parent_[std::size_t(g)])
+            if (g == group) return true;
+        return false;
+    }
     runtime::ColourFunction background_;
     // The sky sphere's pigments, the last written first (on top).
     std::vector<runtime::TextureEvaluator> sky_layers_;

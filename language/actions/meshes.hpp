@@ -273,6 +273,11 @@ struct action<g::object_flag> {
             record.no_reflection = on;
         else if (name == "double_illuminate")
             record.double_illuminate = on;
+        else if (name == "global_lights") {
+            if (!record.light_group)
+                throw ValueError("global_lights belongs in a light_group, not in this object");
+            record.light_group->global_lights = on;
+        }
         // sturm and no_radiosity cannot change the image (language/keyword_rules.cpp).
     }
 };

@@ -124,6 +124,9 @@ struct action<g::csg_open> {
         runtime::ObjectRecord record;
         record.shape = std::move(csg);
         record.place = source_place(in);
+        // (A light_group is a union whose lights light its members only;
+        // global_lights is off until it says so, as in POV-Ray.)
+        if (kind == "light_group") record.light_group = runtime::LightGroupMark{};
         st.blocks.open(std::move(record));
     }
 };

@@ -74,7 +74,9 @@ HEXANT_KEYWORD(kw_merge, "merge");
 HEXANT_KEYWORD(kw_intersection, "intersection");
 HEXANT_KEYWORD(kw_difference, "difference");
 HEXANT_KEYWORD(kw_motion_blur, "motion_blur");
-struct csg_kind : p::sor<kw_union, kw_merge, kw_intersection, kw_difference, kw_motion_blur> {};
+HEXANT_KEYWORD(kw_light_group, "light_group");
+struct csg_kind
+    : p::sor<kw_union, kw_merge, kw_intersection, kw_difference, kw_motion_blur, kw_light_group> {};
 struct csg_open : p::seq<csg_kind, p::must<lbrace>> {};
 struct unsupported_block;
 struct csg_child : p::sor<object_value, unsupported_block> {};
@@ -376,7 +378,7 @@ struct object_bare_flag_name
 struct object_flag_name
     : p::sor<TAO_PEGTL_KEYWORD("hollow"), TAO_PEGTL_KEYWORD("sturm"), TAO_PEGTL_KEYWORD("no_image"),
              TAO_PEGTL_KEYWORD("no_reflection"), TAO_PEGTL_KEYWORD("no_radiosity"),
-             TAO_PEGTL_KEYWORD("double_illuminate")> {};
+             TAO_PEGTL_KEYWORD("double_illuminate"), TAO_PEGTL_KEYWORD("global_lights")> {};
 struct object_flag_value : p::seq<p::not_at<p::one<'<'>>, expression> {};
 struct object_flag : p::sor<p::seq<object_bare_flag_name, ws, frame_open>,
                             p::seq<object_flag_name, ws, frame_open, p::opt<object_flag_value>>> {};

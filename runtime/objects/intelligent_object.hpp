@@ -93,6 +93,11 @@ struct ObjectFlags {
     // `hollow`: a ray inside it is fogged (POV-Ray's IsHollowRay); inside
     // a solid one it is not.
     bool hollow = false;
+    // Inside a light_group: not lit by the scene's lights (its outermost
+    // group's global_lights off), and the innermost group, whose lights
+    // and whose enclosing groups' lights light it (-1: none).
+    bool no_global_lights = false;
+    std::int32_t light_group = -1;
 };
 
 class IntelligentObject {

@@ -36,6 +36,17 @@ struct ObjectLimits {
     std::vector<std::shared_ptr<const ObjectRecord>> bounded_by;
 };
 
+// light_group { }: a union whose own lights light only its members (and
+// the members of groups within it); with global_lights its members are lit
+// by the scene's other lights too (POV-Ray's Parse_Light_Group and
+// Promote_Local_Lights). `id` is the group's index in the scene's
+// light_groups, given when the object is added to the scene, each copy its
+// own; -1 before.
+struct LightGroupMark {
+    bool global_lights = false;
+    int id = -1;
+};
+
 struct ObjectRecord {
     Shape shape;
     Transform transform;             // object space to the parent's space
@@ -63,7 +74,8 @@ struct ObjectRecord {
     Lifetime lifetime;
     // Light sources written inside a CSG move with it.
     std::vector<LightRecord> lights;
-    SourcePlace place;  // where the object was written
+    std::optional<LightGroupMark> light_group;  // a union that is a light_group
+    SourcePlace place;                          // where the object was written
     // What its own modifiers ask for that hexant lacks (photons, ...).
     std::vector<Unrendered> unrendered;
     // clipped_by and bounded_by; shared between copies, null when neither

@@ -83,6 +83,14 @@ Inherited handed_down(const ObjectRecord& record, const Inherited& parent) {
     // (A group's hollow reaches its members, as POV-Ray's
     // Set_CSG_Children_Flag; a member's own says for itself.)
     down.flags.hollow = record.hollow || parent.flags.hollow;
+    // (A light_group's members: its lights and those of the groups around
+    // it; global_lights as the outermost group says, which POV-Ray's
+    // Set_CSG_Children_Flag writes over the inner groups' members last.)
+    if (record.light_group) {
+        if (parent.flags.light_group < 0)
+            down.flags.no_global_lights = !record.light_group->global_lights;
+        down.flags.light_group = record.light_group->id;
+    }
     return down;
 }
 

@@ -80,6 +80,9 @@ struct LightRecord {
     std::optional<AreaLight> area;
     bool jitter = false, circular = false, orient = false;  // (area lights')
     Transform transform;
+    // The light_group whose members alone it lights (an index in the
+    // scene's light_groups), or -1: a light of the whole scene.
+    int light_group = -1;
     // When it shines: always, or the pieces of time of the clock-dependent
     // branches it was made under.
     Lifetime lifetime;

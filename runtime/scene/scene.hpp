@@ -54,12 +54,19 @@ struct TimeSplit {
     std::vector<double> instants;
 };
 
+// A light_group as the scene holds it: the group it is written in, whose
+// lights light its members too (-1: none).
+struct LightGroup {
+    int parent = -1;
+};
+
 struct SceneDescription {
     CameraRecord camera;  // POV-Ray's default camera when the scene has none
     std::vector<LightRecord> lights;
     std::vector<ObjectPtr> objects;
-    ColourFunction background{};          // black
-    std::optional<SkySphere> sky_sphere;  // over the background
+    std::vector<LightGroup> light_groups;  // LightRecord::light_group, ObjectFlags::light_group
+    ColourFunction background{};           // black
+    std::optional<SkySphere> sky_sphere;   // over the background
     std::vector<Fog> fogs;
     std::vector<Rainbow> rainbows;  // finished (Rainbow::finish)
     // media { } written at the top: the atmosphere's, in the world

@@ -501,6 +501,17 @@ TEST_CASE("projected_through lights only through its object, as in POV-Ray 3.7",
     check_stills("lights", "projected", {"0", "0.5"});
 }
 
+TEST_CASE("light_group agrees with POV-Ray 3.7's, at two clocks", "[tracer][pov][light]") {
+    // lights/light_group.pov: a group's light lighting its member alone
+    // (global_lights off), a group with global_lights on, a declared group
+    // placed twice (each copy its own light), a declared group inside
+    // another (lit by both), a difference of two groups (each surface by
+    // its own group's light), lights and members moving with clock; every
+    // object casts shadows. The still's tolerance; both clocks agree
+    // exactly.
+    check_stills("lights", "light_group", {"0", "0.5"});
+}
+
 TEST_CASE("a parallel light agrees with POV-Ray 3.7's", "[tracer][pov]") {
     // lights/parallel.pov: a parallel light turning with clock (its rays
     // along point_at - location, shadows back to the plane through it, a
