@@ -111,28 +111,8 @@ Problem check(const Texture& texture, const std::string& whose, const Span& span
         if (auto p = check(entry.colour.c, whose + " colour map's colour", span)) return p;
     if (auto p = check(texture.pigment.transform, whose + " pigment's", span)) return p;
     const Finish& f = texture.finish;
-    const std::pair<const TimeFunction*, const char*> values[] = {
-        {&f.ambient[0], "ambient"},
-        {&f.ambient[1], "ambient"},
-        {&f.ambient[2], "ambient"},
-        {&f.diffuse, "diffuse"},
-        {&f.brilliance, "brilliance"},
-        {&f.phong, "phong"},
-        {&f.phong_size, "phong_size"},
-        {&f.specular, "specular"},
-        {&f.roughness, "roughness"},
-        {&f.emission[0], "emission"},
-        {&f.emission[1], "emission"},
-        {&f.emission[2], "emission"},
-        {&f.metallic, "metallic"},
-        {&f.reflection_metallic, "reflection's metallic"},
-        {&f.reflection_falloff, "reflection's falloff"},
-        {&f.reflection_exponent, "reflection's exponent"},
-        {&f.irid, "irid"},
-        {&f.irid_thickness, "irid's thickness"},
-        {&f.irid_turbulence, "irid's turbulence"}};
-    for (const auto& [value, name] : values)
-        if (auto p = check(*value, whose + " finish's " + name, span)) return p;
+    for (const Finish::Scalar& scalar : f.scalars())
+        if (auto p = check(*scalar.value, whose + " finish's " + scalar.name, span)) return p;
     if (auto p = check(f.reflection.c, whose + " finish's reflection", span)) return p;
     if (f.reflection_max)
         if (auto p = check(f.reflection_max->c, whose + " finish's reflection maximum", span))

@@ -144,27 +144,8 @@ bool depends(const Texture& x, Seen& seen) {
     }
     if (depends(x.pigment, seen) || (x.normal && depends(*x.normal, seen))) return true;
     const Finish& f = x.finish;
-    for (const TimeFunction* value : {&f.ambient[0],
-                                      &f.ambient[1],
-                                      &f.ambient[2],
-                                      &f.diffuse,
-                                      &f.brilliance,
-                                      &f.phong,
-                                      &f.phong_size,
-                                      &f.specular,
-                                      &f.roughness,
-                                      &f.emission[0],
-                                      &f.emission[1],
-                                      &f.emission[2],
-                                      &f.crand,
-                                      &f.metallic,
-                                      &f.reflection_metallic,
-                                      &f.reflection_falloff,
-                                      &f.reflection_exponent,
-                                      &f.irid,
-                                      &f.irid_thickness,
-                                      &f.irid_turbulence})
-        if (value->depends_on_time()) return true;
+    for (const Finish::Scalar& scalar : f.scalars())
+        if (scalar.value->depends_on_time()) return true;
     if (f.reflection.depends_on_time()) return true;
     if (f.reflection_max && f.reflection_max->depends_on_time()) return true;
     for (const Texture& layer : x.below)

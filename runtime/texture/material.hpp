@@ -2,6 +2,7 @@
 // finish and an interior. Every number may be a function of time.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <string>
@@ -117,6 +118,36 @@ struct Finish {
     TimeFunction irid_thickness = 0.0;
     TimeFunction irid_turbulence = 0.0;
     std::vector<Unrendered> unrendered;  // what it asks for that hexant lacks
+
+    // Every scalar time function above (the colours' channels each), with
+    // its name for messages, for what walks them all (time dependence,
+    // sharing, parameter checks); the reflection colours are apart.
+    struct Scalar {
+        const TimeFunction* value;
+        const char* name;
+    };
+    std::array<Scalar, 20> scalars() const {
+        return {{{&ambient[0], "ambient"},
+                 {&ambient[1], "ambient"},
+                 {&ambient[2], "ambient"},
+                 {&diffuse, "diffuse"},
+                 {&brilliance, "brilliance"},
+                 {&phong, "phong"},
+                 {&phong_size, "phong_size"},
+                 {&specular, "specular"},
+                 {&roughness, "roughness"},
+                 {&emission[0], "emission"},
+                 {&emission[1], "emission"},
+                 {&emission[2], "emission"},
+                 {&crand, "crand"},
+                 {&metallic, "metallic"},
+                 {&reflection_metallic, "reflection's metallic"},
+                 {&reflection_falloff, "reflection's falloff"},
+                 {&reflection_exponent, "reflection's exponent"},
+                 {&irid, "irid"},
+                 {&irid_thickness, "irid's thickness"},
+                 {&irid_turbulence, "irid's turbulence"}}};
+    }
 };
 
 struct Interior {

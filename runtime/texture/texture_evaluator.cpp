@@ -78,38 +78,18 @@ std::shared_ptr<const TextureEvaluator::CompiledFinish> TextureEvaluator::compil
             f.reflection_fresnel,
             f.conserve_energy});
     };
-    using Key = std::array<double, 28>;
+    using Key = std::array<double, 29>;
     Key key{};
     std::size_t n = 0;
-    for (const TimeFunction* value : {&f.ambient[0],
-                                      &f.ambient[1],
-                                      &f.ambient[2],
-                                      &f.diffuse,
-                                      &f.brilliance,
-                                      &f.phong,
-                                      &f.phong_size,
-                                      &f.specular,
-                                      &f.roughness,
-                                      &f.emission[0],
-                                      &f.emission[1],
-                                      &f.emission[2],
-                                      &f.crand,
-                                      &f.metallic,
-                                      &f.reflection_metallic,
-                                      &f.reflection.c[0],
-                                      &f.reflection.c[1],
-                                      &f.reflection.c[2],
-                                      &most.c[0],
-                                      &most.c[1],
-                                      &most.c[2],
-                                      &f.reflection_falloff,
-                                      &f.reflection_exponent,
-                                      &f.irid,
-                                      &f.irid_thickness,
-                                      &f.irid_turbulence}) {
-        if (!value->is_constant()) return make();
-        key[n++] = value->constant();
-    }
+    const auto keep = [&](const TimeFunction& value) {
+        if (!value.is_constant()) return false;
+        key[n++] = value.constant();
+        return true;
+    };
+    for (const Finish::Scalar& scalar : f.scalars())
+        if (!keep(*scalar.value)) return make();
+    for (int c = 0; c < 3; ++c)
+        if (!keep(f.reflection.c[c]) || !keep(most.c[c])) return make();
     if (interior && !interior->ior.is_constant()) return make();
     key[n++] = interior ? interior->ior.constant() : 1.0;
     key[n++] = f.reflection_fresnel ? 1.0 : 0.0;

@@ -65,6 +65,12 @@ TEST_CASE("NaN and infinite colours, finishes and lights are errors", "[paramete
                Contains("pigment's colour is NaN"));
     CHECK_THAT(message_at("sphere { 0, 1 finish { phong 1e308 * 10 } }", 1, 1),
                Contains("finish's phong is infinite"));
+    // (Every scalar of a finish, a colour ambient's channels and crand
+    // among them: Finish::scalars.)
+    CHECK_THAT(message_at("sphere { 0, 1 finish { crand sqrt(-1) } }", 1, 1),
+               Contains("finish's crand is NaN"));
+    CHECK_THAT(message_at("sphere { 0, 1 finish { ambient rgb <0, 1e308 * 10, 0> } }", 1, 1),
+               Contains("finish's ambient is infinite"));
     CHECK_THAT(message_at("\nlight_source { <0, 5, 0>, rgb 1e300 * 1e300 }", 2, 1),
                Contains("the light's colour is infinite"));
     // The #default texture, which the objects that take it do not check.
