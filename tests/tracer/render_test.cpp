@@ -71,6 +71,14 @@ tr::Image render(const hexant::runtime::SceneDescription& scene, tr::Mode mode, 
     return renderer.render_frame(frame);
 }
 
+// A still of POV-Ray 3.7 text, 8 by 6.
+hexant::runtime::SceneDescription small_scene(const std::string& text, const std::string& name) {
+    hexant::language::ParseOptions options;
+    options.animation.width = 8;
+    options.animation.height = 6;
+    return hexant::language::parse_scene_text(std::string(kVersion37) + text, name, options);
+}
+
 }  // namespace
 
 TEST_CASE("spacetime, frames and brute force render the same images", "[tracer][render]") {
@@ -258,17 +266,13 @@ TEST_CASE("a parallel light pointed at itself lights nothing, as in POV-Ray", "[
     // (With point_at elsewhere the same ball is lit: the check is not
     // blind.)
     const auto lit = [](const std::string& point_at) {
-        hexant::language::ParseOptions options;
-        options.animation.width = 8;
-        options.animation.height = 6;
-        const auto scene = hexant::language::parse_scene_text(
-            std::string(kVersion37) +
-                "camera { location <0, 2, -4> look_at 0 }\n"
-                "light_source { <0, 5, 0>, rgb 1 parallel point_at " +
+        const auto scene = small_scene(
+            "camera { location <0, 2, -4> look_at 0 }\n"
+            "light_source { <0, 5, 0>, rgb 1 parallel point_at " +
                 point_at +
                 " }\n"
                 "sphere { 0, 1 pigment { rgb 1 } finish { ambient 0 } }\n",
-            "parallel.pov", options);
+            "parallel.pov");
         double sum = 0.0;
         for (float v : render(scene, tr::Mode::Spacetime, 1).rgb) sum += v;
         return sum;
@@ -284,16 +288,12 @@ TEST_CASE("crand takes a random fraction of each light's diffuse intensity, as i
     // per sample and light (POV-Ray's ComputeDiffuseColour): 0.6 on
     // average. Without jitter the draw is the middle, exactly the mean.
     const auto image = [](const std::string& finish, int spp, bool jitter) {
-        hexant::language::ParseOptions options;
-        options.animation.width = 8;
-        options.animation.height = 6;
-        const auto scene = hexant::language::parse_scene_text(
-            std::string(kVersion37) +
-                "camera { orthographic location <0, 0, -4> look_at 0 }\n"
-                "light_source { <0, 0, -10>, rgb 1 parallel point_at 0 }\n"
-                "plane { -z, 0 pigment { rgb 1 } finish { ambient 0 diffuse 0.8 " +
+        const auto scene = small_scene(
+            "camera { orthographic location <0, 0, -4> look_at 0 }\n"
+            "light_source { <0, 0, -10>, rgb 1 parallel point_at 0 }\n"
+            "plane { -z, 0 pigment { rgb 1 } finish { ambient 0 diffuse 0.8 " +
                 finish + " } }\n",
-            "crand.pov", options);
+            "crand.pov");
         tr::RenderSettings settings;
         settings.samples_per_pixel = spp;
         settings.jitter = jitter;
