@@ -100,6 +100,41 @@ Box4 animation_root(const runtime::SceneDescription& scene, const ObjectSet& obj
     return root;
 }
 
+// The objects a camera ray of frames first..last may start inside that
+// matter to it (Shader::matters_to_camera): those whose extent over the
+// frames meets the box of the eye's points (a bounded object elsewhere
+// cannot hold a camera ray's origin). A moving camera is between its
+// frames' points on no known path: then every such object.
+std::vector<const runtime::IntelligentObject*> camera_interiors(
+    const runtime::SceneDescription& scene, const std::vector<runtime::IntelligentObjectPtr>& all,
+    int first, int last) {
+    std::vector<const runtime::IntelligentObject*> out;
+    const auto& a = scene.animation;
+    Box4 eye = Box4::empty();
+    double begin = std::numeric_limits<double>::infinity(), end = -begin;
+    for (int f = first; f <= last; ++f) {
+        const double open = a.clock_of_frame(f);
+        for (const double t : {open, open + a.exposure() * a.clock_delta()}) {
+            eye_extent(scene.camera.evaluate(t), t,
+                       [&](const glm::dvec3& p) { eye.extend(Event(p, t)); });
+            begin = std::min(begin, t);
+            end = std::max(end, t);
+        }
+    }
+    for (const auto& o : all) {
+        if (!Shader::matters_to_camera(scene, *o)) continue;
+        if (o->bounded() && !scene.camera.depends_on_time()) {
+            const Box4 box = o->box_over(runtime::Interval(begin, end));
+            bool meets = !box.is_empty() && !eye.is_empty();
+            for (int i = 0; meets && i < 3; ++i)
+                meets = box.lo[i] <= eye.hi[i] && eye.lo[i] <= box.hi[i];
+            if (!meets) continue;
+        }
+        out.push_back(o.get());
+    }
+    return out;
+}
+
 // One tile of the frame's fixed grid (FrameEstimate::kTile): its place, and
 // how it samples.
 struct TilePlan {
@@ -236,6 +271,7 @@ Renderer::Renderer(const runtime::SceneDescription& scene, const RenderSettings&
         return o->casts_shadow() && o->filters_light();
     });
     shader_ = std::make_unique<Shader>(scene, *query_, travel, filtering);
+    shader_->set_camera_interiors(camera_interiors(scene, objects_, first_frame_, last_frame_));
     if (scene.camera.normal) {
         runtime::Texture screen;
         screen.normal = *scene.camera.normal;

@@ -334,6 +334,23 @@ glm::dvec3 Shader::transmittance(const runtime::SurfacePoint& p, const glm::dvec
     return sum;
 }
 
+bool Shader::matters_to_camera(const runtime::SceneDescription& scene,
+                               const runtime::IntelligentObject& object) {
+    if (object.interior_media()) return true;
+    return !object.flags().hollow && (!scene.fogs.empty() || !scene.atmosphere.empty());
+}
+
+Inside Shader::inside_at(const runtime::Event& event) const {
+    Inside around;
+    for (const runtime::IntelligentObject* o : camera_interiors_) {
+        if (!o->inside(event)) continue;
+        const runtime::MediaVolume* media = o->interior_media();
+        around = around.with({media ? static_cast<const void*>(media) : static_cast<const void*>(o),
+                              media, o->flags().hollow});
+    }
+    return around;
+}
+
 glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, std::uint8_t sight,
                             const Inside& inside, ThreadState& state) const {
     const double t = ray.origin.w;

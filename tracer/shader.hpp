@@ -38,10 +38,22 @@ class Shader {
     Shader(const runtime::SceneDescription& scene, const RayQuery& query, LightTravel travel = {},
            bool filtering = false);
 
+    // The objects a camera ray may start inside that matter to it (those
+    // with media, and with fog or an atmosphere the non-hollow ones):
+    // each camera ray starts in those whose solid holds its origin, as
+    // POV-Ray's InitRayContainerState finds them. Objects whose extent
+    // cannot hold the eye may be left out.
+    static bool matters_to_camera(const runtime::SceneDescription& scene,
+                                  const runtime::IntelligentObject& object);
+    void set_camera_interiors(std::vector<const runtime::IntelligentObject*> objects) {
+        camera_interiors_ = std::move(objects);
+    }
+
     // The colour seen along a primary ray.
     glm::dvec3 trace(const runtime::Ray4& ray, ThreadState& state) const {
         ++state.counters.primary_rays;
-        return radiance(ray, 1, 1.0, runtime::kSightImage, Inside{}, state);
+        return radiance(ray, 1, 1.0, runtime::kSightImage,
+                        camera_interiors_.empty() ? Inside{} : inside_at(ray.origin), state);
     }
 
   private:
@@ -51,6 +63,8 @@ class Shader {
     // counts that object from its start).
     glm::dvec3 radiance(const runtime::Ray4& ray, int depth, double weight, std::uint8_t sight,
                         const Inside& inside, ThreadState& state) const;
+    // The interiors among camera_interiors_ that hold `event`.
+    Inside inside_at(const runtime::Event& event) const;
     // The nearest hit along `ray` within (0, s_max), and in `on` the ray it
     // is on: `ray` itself (on is left alone: the caller sets it to ray),
     // or, for light that would run back past the floor, its held piece
@@ -176,6 +190,7 @@ class Shader {
     std::vector<runtime::TextureEvaluator> sky_layers_;
     runtime::ColourFunction sky_emission_;
     std::vector<runtime::Fog> fogs_;
+    std::vector<const runtime::IntelligentObject*> camera_interiors_;
     std::vector<runtime::Rainbow> rainbows_;
     std::shared_ptr<const runtime::MediaVolume> atmosphere_;  // media { } at the top
     int noise_generator_ = 2;  // global_settings { noise_generator } (fog, iridescence)

@@ -39,6 +39,7 @@ class ClippedObject final : public IntelligentObject {
     bool casts_shadow() const override { return object_->casts_shadow(); }
     bool filters_light() const override { return object_->filters_light(); }
     bool casts_full_shadow() const override { return object_->casts_full_shadow(); }
+    const MediaVolume* interior_media() const override { return object_->interior_media(); }
 
   private:
     bool kept(const Event& event) const;

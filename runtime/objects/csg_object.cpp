@@ -258,4 +258,10 @@ bool CsgObject::casts_shadow() const {
                        [](const auto& c) { return c->casts_shadow(); });
 }
 
+const MediaVolume* CsgObject::interior_media() const {
+    for (const auto& c : children_)
+        if (const MediaVolume* media = c->interior_media()) return media;
+    return nullptr;
+}
+
 }  // namespace hexant::runtime

@@ -50,6 +50,7 @@ struct ObjectHit {
 // What complete() returns: world-space normals at the hit's time, texture
 // coordinates and the texture to evaluate at the hit's time and place.
 class TextureEvaluator;
+class MediaVolume;
 
 struct SurfacePoint {
     Event event{};
@@ -187,6 +188,9 @@ class IntelligentObject {
     // casts_shadow() and not filters_light(): what the any-hit shadow query
     // asks of every object it meets (one call).
     virtual bool casts_full_shadow() const { return casts_shadow() && !filters_light(); }
+    // The media of its interior (interior { media { } }), or null: what a
+    // ray that starts inside its solid (a camera inside) passes through.
+    virtual const MediaVolume* interior_media() const { return nullptr; }
 
   private:
     ObjectFlags flags_;

@@ -46,6 +46,7 @@ class LifetimeObject final : public IntelligentObject {
     bool casts_shadow() const override { return inner_->casts_shadow(); }
     bool filters_light() const override { return inner_->filters_light(); }
     bool casts_full_shadow() const override { return inner_->casts_full_shadow(); }
+    const MediaVolume* interior_media() const override { return inner_->interior_media(); }
 
   private:
     // Calls f(lo, hi) for each span of the ray's parameter in (s_min, s_max)

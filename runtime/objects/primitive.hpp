@@ -104,6 +104,7 @@ class Primitive final : public IntelligentObject {
     bool casts_shadow() const override { return !options_.no_shadow; }
     bool filters_light() const override { return filters_light_; }
     bool casts_full_shadow() const override { return !options_.no_shadow && !filters_light_; }
+    const MediaVolume* interior_media() const override { return texture_.media(); }
 
     void bound(const Box4& region, std::vector<SlabBound>& out) const override {
         if constexpr (kUnbounded) return;
