@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "image/formats/exr_format.hpp"
+#include "image/formats/gif_format.hpp"
 #include "image/formats/jpeg_format.hpp"
 #include "image/formats/png_format.hpp"
 
@@ -19,7 +20,8 @@ namespace fs = std::filesystem;
 namespace {
 
 // The registration: a new format is its own file and one line here.
-constexpr std::array<const ImageFormat*, 3> kFormats{&kPngFormat, &kExrFormat, &kJpegFormat};
+constexpr std::array<const ImageFormat*, 4> kFormats{&kPngFormat, &kExrFormat, &kJpegFormat,
+                                                     &kGifFormat};
 
 }  // namespace
 
@@ -65,7 +67,7 @@ StoredImage read_stored_image(const fs::path& path) {
             }
         }
     throw std::runtime_error(path.string() +
-                             ": cannot read image: not a PNG, OpenEXR or JPEG file");
+                             ": cannot read image: not a PNG, OpenEXR, JPEG or GIF file");
 }
 
 }  // namespace hexant::image

@@ -1,7 +1,7 @@
 // Image files as hexant reads and writes them, one format per file under
 // formats/ and one line in image_format.cpp's table: PNG (8-bit sRGB,
-// libpng) and OpenEXR (linear float, the OpenEXR library), and JPEG read
-// only (libjpeg). Each is linked
+// libpng) and OpenEXR (linear float, the OpenEXR library), and JPEG and
+// GIF read only (libjpeg, giflib). Each is linked
 // directly rather than through OpenImageIO, whose plugins and their
 // libraries cost every process about 120 MB of resident memory and half a
 // second before main() (docs/benchmarks.md, "Scale: the swarm"; issue 21).

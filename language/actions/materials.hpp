@@ -20,14 +20,16 @@ struct action<g::image_file_type> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)st;
-        // hexant reads PNG, OpenEXR and JPEG (the file's own bytes say which).
+        // hexant reads PNG, OpenEXR, JPEG and GIF (the file's own bytes say
+        // which).
         std::string type = in.string();
         while (!type.empty() && std::isspace(static_cast<unsigned char>(type.back())))
             type.pop_back();
-        if (type != "png" && type != "exr" && type != "jpeg")
+        if (type != "png" && type != "exr" && type != "jpeg" && type != "gif")
             throw UnsupportedError(
                 "image_map: " + type +
-                " images are not supported by hexant (PNG, OpenEXR and JPEG are)");
+                " images are not supported by hexant (PNG, OpenEXR, JPEG and GIF are; a POT "
+                "file in a height_field)");
     }
 };
 template <>

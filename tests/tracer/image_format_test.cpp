@@ -12,6 +12,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "image/formats/gif_format.hpp"
 #include "tracer/gif_animation.hpp"
 #include "tracer/image_compare.hpp"
 #include "tracer/image_output.hpp"
@@ -82,7 +83,7 @@ TEST_CASE("a name of no format, a damaged file and a file of no format are error
     { std::ofstream(folder / "text.png") << "not an image at all"; }
     CHECK_THROWS_WITH(
         hexant::image::read_stored_image(folder / "text.png"),
-        Catch::Contains("text.png") && Catch::Contains("not a PNG, OpenEXR or JPEG file"));
+        Catch::Contains("text.png") && Catch::Contains("not a PNG, OpenEXR, JPEG or GIF file"));
     CHECK_THROWS_WITH(hexant::image::read_stored_image(folder / "missing.png"),
                       Catch::Contains("missing.png"));
     fs::remove_all(folder);
@@ -126,6 +127,71 @@ TEST_CASE("a JPEG is read as libjpeg decodes it, and never written", "[tracer][i
     CHECK(im::image_format_for("frame.jpg") == nullptr);
     CHECK_THROWS(tr::write_image(ramp(4, 3), folder / "frame.jpg"));
     CHECK_FALSE(fs::exists(folder / "frame.jpg"));
+    fs::remove_all(folder);
+}
+
+TEST_CASE("a GIF is read as giflib decodes it, a POT file from its halves", "[tracer][image]") {
+    namespace im = hexant::image;
+    const fs::path textures =
+        fs::path(HEXANT_SOURCE_DIR) / "tests" / "tracer" / "pov_reference" / "textures";
+    // indexed.gif (make_gifs.py): 12 x 8, pixel (x, y) index (x + 3y) % 8,
+    // entry i (30i, 255 - 30i, 70i % 256), index 3 transparent.
+    const im::StoredImage gif = im::read_stored_image(textures / "indexed.gif");
+    CHECK(gif.width == 12);
+    CHECK(gif.height == 8);
+    CHECK(gif.source == im::StoredImage::Source::Palette);
+    CHECK_FALSE(gif.gamma_told);  // sRGB unless the scene says otherwise
+    REQUIRE(gif.channels == 4);
+    REQUIRE(gif.indices.size() == 96u);
+    REQUIRE(gif.palette.size() == 8u);
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 12; ++x) {
+            const std::size_t i = std::size_t(y * 12 + x);
+            const int index = (x + 3 * y) % 8;
+            INFO(x << ", " << y);
+            CHECK(gif.indices[i] == index);
+            CHECK(gif.values[4 * i] == Approx(30.0 * index / 255.0));
+            CHECK(gif.values[4 * i + 1] == Approx((255.0 - 30.0 * index) / 255.0));
+            CHECK(gif.values[4 * i + 3] == (index == 3 ? 0.0f : 1.0f));
+        }
+    // heights.pot: 32 x 12 as a GIF, 16 x 12 16-bit heights as a POT file.
+    const im::StoredImage pot_gif = im::read_stored_image(textures / "heights.pot");
+    REQUIRE(pot_gif.width == 32);
+    const im::StoredImage pot = im::pot_from_gif(pot_gif);
+    CHECK(pot.width == 16);
+    CHECK(pot.height == 12);
+    CHECK(pot.source == im::StoredImage::Source::Gray);
+    CHECK(pot.source_bits == 16);
+    REQUIRE(pot.values.size() == 16u * 12u * 3u);
+    for (int y = 0; y < 12; ++y)
+        for (int x = 0; x < 16; ++x) {
+            const int value = int(65535 * (0.5 + 0.45 * std::sin(x * 0.5) * std::cos(y * 0.6)));
+            CHECK(std::lround(pot.values[std::size_t(y * 16 + x) * 3] * 65535.0) == value);
+        }
+    // Not two halves, not paletted: errors.
+    im::StoredImage odd = gif;
+    odd.width = 3;
+    odd.height = 32;
+    CHECK_THROWS_WITH(im::pot_from_gif(odd), Catch::Contains("width"));
+    CHECK_THROWS(im::pot_from_gif(pot));
+    // Cut short, or not a GIF after its magic: an error naming the file.
+    const fs::path folder = fresh_folder("hexant_gif_read_test");
+    const fs::path cut = folder / "cut.gif";
+    fs::copy_file(textures / "heights.pot", cut);
+    fs::resize_file(cut, fs::file_size(cut) / 2);
+    CHECK_THROWS_WITH(im::read_stored_image(cut), Catch::Contains("cut.gif"));
+    { std::ofstream(folder / "bad.gif", std::ios::binary) << "GIF89a not a GIF at all"; }
+    CHECK_THROWS_WITH(im::read_stored_image(folder / "bad.gif"),
+                      Catch::Contains("bad.gif") && Catch::Contains("GIF"));
+    // hexant's own animated GIF reads back: its first frame, paletted.
+    std::vector<tr::Image> frames(2, ramp(10, 6));
+    tr::write_animation(frames, folder / "movie.gif", 12.0);
+    const im::StoredImage movie = im::read_stored_image(folder / "movie.gif");
+    CHECK(movie.width == 10);
+    CHECK(movie.height == 6);
+    CHECK(movie.source == im::StoredImage::Source::Palette);
+    // Never written as a frame.
+    CHECK(im::image_format_for("frame.gif") == nullptr);
     fs::remove_all(folder);
 }
 

@@ -34,7 +34,8 @@ HeightField HeightField::read(const objects::ShapeArguments& a) {
     HeightField field;
     if (!options.empty()) {
         field.type = options.front();
-        if (field.type != "png" && field.type != "exr" && field.type != "jpeg")
+        if (field.type != "png" && field.type != "exr" && field.type != "jpeg" &&
+            field.type != "gif" && field.type != "pot")
             a.fail("height_field: hexant does not read '" + field.type +
                    "' images; convert the file to png (or exr) and write png \"FILE.png\"");
     }

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "image/formats/gif_format.hpp"
+
 namespace hexant::runtime::objects {
 
 namespace {
@@ -185,14 +187,18 @@ std::shared_ptr<const HeightFieldData> read_height_field(const std::filesystem::
             kind = "exr";
         else if (ext == ".jpg" || ext == ".jpeg")  // POV-Ray's InferFileTypeFromExt
             kind = "jpeg";
+        else if (ext == ".gif")
+            kind = "gif";
+        else if (ext == ".pot")
+            kind = "pot";
         else
             throw HeightFieldError(
-                "height_field: hexant reads PNG, OpenEXR and JPEG images, not '" +
+                "height_field: hexant reads PNG, OpenEXR, JPEG, GIF and POT images, not '" +
                 path.filename().string() + "' (" +
                 (ext.empty() ? std::string("no extension") : ext) +
                 "); write png \"FILE.png\" or exr \"FILE.exr\"");
     }
-    if (kind != "png" && kind != "exr" && kind != "jpeg")
+    if (kind != "png" && kind != "exr" && kind != "jpeg" && kind != "gif" && kind != "pot")
         throw HeightFieldError("height_field: hexant does not read '" + kind +
                                "' images; convert the file to png (or exr)");
     image::StoredImage stored;
@@ -201,12 +207,24 @@ std::shared_ptr<const HeightFieldData> read_height_field(const std::filesystem::
     } catch (const std::runtime_error& e) {
         throw HeightFieldError(e.what());
     }
-    if (stored.linear != (kind == "exr"))
+    // (The file's bytes say its format: it must be the one named, or one
+    // like it. A POT file is a GIF, and a GIF is paletted.)
+    const bool paletted = stored.source == image::StoredImage::Source::Palette;
+    if ((kind == "exr") != stored.linear || ((kind == "gif" || kind == "pot") && !paletted))
         throw HeightFieldError("height_field: '" + path.filename().string() + "' is not " +
                                (kind == "exr"    ? "an OpenEXR"
                                 : kind == "jpeg" ? "a JPEG"
+                                : kind == "gif"  ? "a GIF"
+                                : kind == "pot"  ? "a POT (GIF)"
                                                  : "a PNG") +
                                " file");
+    if (kind == "pot") {
+        try {
+            stored = image::pot_from_gif(stored);
+        } catch (const std::runtime_error& e) {
+            throw HeightFieldError("height_field: '" + path.filename().string() + "': " + e.what());
+        }
+    }
     return std::make_shared<const HeightFieldData>(stored.width, stored.height,
                                                    heights_from_image(stored));
 }
