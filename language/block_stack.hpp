@@ -45,6 +45,8 @@ struct ImageMapBuilder {
     bool gamma_srgb_next = false;  // `gamma srgb` just read
     bool all_next = false;         // `filter all` / `transmit all` being read
     bool bump = false;             // a normal's bump_map { }
+    // A material_map's textures, in the order written.
+    std::vector<std::shared_ptr<const runtime::Texture>> materials;
     std::optional<TimeFunction> bump_size;
 };
 

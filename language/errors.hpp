@@ -95,6 +95,7 @@ HEXANT_ERROR(texture_map_value, "expected the value of the texture map's entry")
 HEXANT_ERROR(tiles_texture, "expected the first tile's texture { } in tiles { }");
 HEXANT_ERROR(tile2_keyword, "expected tile2 and the second tile's texture in tiles { }");
 HEXANT_ERROR(tile2_texture, "expected the second tile's texture { } after tile2");
+HEXANT_ERROR(material_map_texture, "expected a texture { } in material_map { } (one at least)");
 HEXANT_ERROR(normal_map_value, "expected the value of the normal map's entry");
 HEXANT_ERROR(slope_map_item, "expected a slope map entry: [value <height, slope>]");
 HEXANT_ERROR(image_map_file, "expected the image's file name (a string)");

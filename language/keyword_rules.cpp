@@ -250,7 +250,7 @@ constexpr auto kRules = std::to_array<KeywordRuleEntry>({
     {"map_type", KeywordRule::Rendered, ""},
     {"marble", KeywordRule::Rendered, ""},
     {"material", KeywordRule::Rendered, ""},
-    {"material_map", KeywordRule::Refused, ""},
+    {"material_map", KeywordRule::Rendered, ""},
     {"matrix", KeywordRule::Rendered, ""},
     {"max", KeywordRule::Rendered, ""},
     {"max_extent", KeywordRule::Rendered, ""},

@@ -28,20 +28,11 @@ template <>
 struct action<g::bump_map_block> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        ImageMapBuilder b = std::move(std::get<ImageMapBuilder>(st.blocks.top()));
-        st.blocks.close();
+        const std::optional<TimeFunction> bump_size =
+            std::get<ImageMapBuilder>(st.blocks.top()).bump_size;
         // (Read as a height_field's image: the file's values, no gamma.)
-        b.gamma.undecoded = true;
-        auto map = std::make_shared<runtime::pattern::ImageMap>(std::move(b.map));
-        std::map<const image::StoredImage*, std::shared_ptr<const runtime::pattern::ImagePixels>>
-            decoded;
-        for (const auto& [time, stored] : b.stored) {
-            auto& pixels = decoded[stored.get()];
-            if (!pixels)
-                pixels = std::make_shared<const runtime::pattern::ImagePixels>(
-                    image_pixels(*stored, b.gamma, 1.0));
-            map->images.push_back({time, pixels});
-        }
+        auto map = finish_image_map(st, in.position(), true);
+        st.blocks.close();
         auto& normal = st.blocks.edit<runtime::Normal>(in.position(), "bump_map");
         replace_uv_mapping(normal);
         // (The normal's modifiers, turbulence and warps, place the image.)
@@ -51,7 +42,7 @@ struct action<g::bump_map_block> {
         normal.normal_map.clear();
         normal.slope_map.clear();
         normal.unsupported_name.clear();
-        if (b.bump_size) normal.amount = *b.bump_size;
+        if (bump_size) normal.amount = *bump_size;
         normal.bump_map = std::move(map);
     }
 };

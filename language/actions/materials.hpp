@@ -218,27 +218,42 @@ struct action<g::image_map_filter> {
         (filter ? own.has_filter : own.has_transmit) = true;
     }
 };
+// The image map of an image_map { }, material_map { } or bump_map { }
+// just read, from the builder on top of the block stack, each distinct file
+// decoded once. `undecoded`: the file's values as they are unless the
+// scene gave a gamma (POV-Ray's Parse_Image without GammaCorrect: a
+// material_map's, a bump_map's); else decoded into the working space.
+inline std::shared_ptr<runtime::pattern::ImageMap> finish_image_map(Interpreter& st,
+                                                                    const p::position& at,
+                                                                    bool undecoded) {
+    ImageMapBuilder& b = std::get<ImageMapBuilder>(st.blocks.top());
+    if (undecoded) {
+        b.gamma.undecoded = true;
+    } else {
+        st.image_maps_read.push_back(at);
+        // (POV-Ray's gamma mode as it stands here: assumed_gamma set under
+        // a #version below 3.7.)
+        b.gamma.legacy_default = st.assumed_gamma_set && (st.version_set ? st.version : 3.62) < 3.7;
+    }
+    auto map = std::make_shared<runtime::pattern::ImageMap>(std::move(b.map));
+    std::map<const image::StoredImage*, std::shared_ptr<const runtime::pattern::ImagePixels>>
+        decoded;
+    for (const auto& [time, stored] : b.stored) {
+        auto& pixels = decoded[stored.get()];
+        if (!pixels)
+            pixels = std::make_shared<const runtime::pattern::ImagePixels>(
+                image_pixels(*stored, b.gamma, undecoded ? 1.0 : st.scene.global.assumed_gamma));
+        map->images.push_back({time, pixels});
+    }
+    return map;
+}
+
 template <>
 struct action<g::image_map_block> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        ImageMapBuilder b = std::move(std::get<ImageMapBuilder>(st.blocks.top()));
+        auto map = finish_image_map(st, in.position(), false);
         st.blocks.close();
-        st.image_maps_read.push_back(in.position());
-        // (POV-Ray's gamma mode as it stands here: assumed_gamma set under
-        // a #version below 3.7.)
-        b.gamma.legacy_default = st.assumed_gamma_set && (st.version_set ? st.version : 3.62) < 3.7;
-        auto map = std::make_shared<runtime::pattern::ImageMap>(std::move(b.map));
-        // (Each distinct file decoded once.)
-        std::map<const image::StoredImage*, std::shared_ptr<const runtime::pattern::ImagePixels>>
-            decoded;
-        for (const auto& [time, stored] : b.stored) {
-            auto& pixels = decoded[stored.get()];
-            if (!pixels)
-                pixels = std::make_shared<const runtime::pattern::ImagePixels>(
-                    image_pixels(*stored, b.gamma, st.scene.global.assumed_gamma));
-            map->images.push_back({time, pixels});
-        }
         auto& pigment = st.blocks.edit<runtime::Pigment>(in.position(), "image_map");
         replace_uv_mapping(pigment);
         // (The pigment's modifiers, turbulence and warps, place the image.)
@@ -737,6 +752,48 @@ struct action<g::texture_block> {
         st.values.push(std::move(v));
     }
 };
+// material_map { }: a texture of the material_map pattern over the
+// textures written, at 0, 1, ... in its map (POV-Ray's Parse_Material_Map
+// starts afresh, not from the #default texture).
+template <>
+struct action<g::material_map_open> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        auto& texture = st.blocks.edit<runtime::Texture>(in.position(), "material_map");
+        texture = runtime::Texture();
+        const runtime::pattern::Kind* kind = runtime::pattern::find_kind("material_map");
+        if (kind == nullptr) throw std::logic_error("material_map: no such pattern kind");
+        texture.patterned = runtime::pattern::Pattern::of(*kind);
+        st.blocks.open(std::in_place_type<ImageMapBuilder>);
+    }
+};
+template <>
+struct action<g::material_map_texture> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        auto written =
+            std::make_shared<const runtime::Texture>(st.values.pop().as<runtime::Texture>());
+        std::get<ImageMapBuilder>(st.blocks.top()).materials.push_back(std::move(written));
+    }
+};
+template <>
+struct action<g::material_map_block> {
+    template <typename ActionInput>
+    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
+        auto materials = std::move(std::get<ImageMapBuilder>(st.blocks.top()).materials);
+        // (Read without gamma correction, as POV-Ray's Parse_Material_Map:
+        // a colour image's red picks by the file's value.)
+        auto map = finish_image_map(st, in.position(), true);
+        st.blocks.close();
+        auto& texture = st.blocks.edit<runtime::Texture>(in.position(), "material_map");
+        texture.patterned.image = std::move(map);
+        texture.patterned.number[0] = double(materials.size());
+        texture.texture_map.clear();
+        for (std::size_t i = 0; i < materials.size(); ++i)
+            texture.texture_map.push_back({double(i), std::move(materials[i])});
+    }
+};
+
 // interior_texture { }: read as a texture { } is.
 template <>
 struct action<g::interior_texture_open> : action<g::texture_open> {};

@@ -171,6 +171,10 @@ struct action<g::pattern_kind> {
         const std::string name = st.values.pop_name();
         if (name == "object")
             throw ValueError("the object pattern is written object { OBJECT LIST }");
+        if (name == "material_map")
+            throw ValueError(
+                "material_map is a texture's: texture { material_map { TYPE \"FILE\" texture { } "
+                "... } }");
         const PatternSlot slot = start_pattern(st, in.position(), name);
         const runtime::pattern::Kind* kind = slot.pattern.kind;
         using A = runtime::pattern::Kind::Argument;

@@ -527,9 +527,22 @@ struct tiles_block
     : p::seq<tiles_open, p::must<tiles_texture>, p::star<tiles_texture>, p::must<tile2_keyword>,
              p::must<tile2_texture>, p::star<tile2_texture>, p::must<rbrace>> {};
 struct texture_tiles : p::seq<tiles_block, p::star<transformation>> {};
+// material_map { [TYPE] "FILE" [once] [interpolate N] [map_type N] ...
+// texture { } ... }: POV-Ray's Parse_Material_Map, an image picking whole
+// textures (runtime/texture/pattern/kinds/material_map.hpp). As tiles, it
+// comes first in a texture, and only transforms follow it.
+struct material_map_open : p::seq<TAO_PEGTL_KEYWORD("material_map"), ws, p::must<lbrace>> {};
+struct material_map_texture : p::seq<texture_block> {};
+struct material_map_block
+    : p::seq<material_map_open, p::opt<image_file_type>, p::must<image_map_file>,
+             p::star<image_map_item>, p::must<material_map_texture>, p::star<material_map_texture>,
+             p::must<rbrace>> {};
+struct texture_material_map : p::seq<material_map_block, p::star<transformation>> {};
 // What follows a texture's start (and a texture_map entry's value): tiles
-// only where nothing, not even a declared texture, came before it.
-struct texture_body : p::sor<texture_tiles, p::seq<p::opt<texture_base>, p::star<texture_item>>> {};
+// and material_map only where nothing, not even a declared texture, came
+// before them.
+struct texture_body : p::sor<texture_tiles, texture_material_map,
+                             p::seq<p::opt<texture_base>, p::star<texture_item>>> {};
 struct texture_block : p::seq<texture_open, texture_body, p::must<rbrace>> {};
 // interior_texture { TEXTURE_BODY }: an object's texture seen from inside.
 struct interior_texture_open : p::seq<TAO_PEGTL_KEYWORD("interior_texture"), ws, p::must<lbrace>> {

@@ -138,6 +138,7 @@ TextureEvaluator::CompiledPattern::CompiledPattern(const pattern::Pattern& sourc
     if (source.pigment) pigment = shared.entry(shared.pigments, *source.pigment);
     function = source.function;
     density_file = source.density_file;
+    image = source.image;
     if (source.turbulence) turbulence = compile(*source.turbulence);
     frequency = CompiledScalar(source.frequency);
     phase = CompiledScalar(source.phase);
@@ -174,6 +175,7 @@ pattern::Values TextureEvaluator::CompiledPattern::values(const pattern::Hit& hi
     v.pigment = pigment.get();
     v.function = function.get();
     v.density_file = density_file.get();
+    v.image = image.get();
     return v;
 }
 

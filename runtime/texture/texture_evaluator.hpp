@@ -172,6 +172,7 @@ class TextureEvaluator {
         // The function pattern's function.
         std::shared_ptr<const SpaceFunction> function;
         std::shared_ptr<const pattern::DensityFile> density_file;
+        std::shared_ptr<const pattern::ImageMap> image;
 
         CompiledPattern(const pattern::Pattern& source, const Transform& last,
                         const Transform& texture, Shared& shared);

@@ -917,6 +917,16 @@ TEST_CASE("GIF image_maps and GIF and POT height_fields agree with POV-Ray 3.7's
     check_stills("textures", "gif", {"0", "0.5"});
 }
 
+TEST_CASE("material_map picks textures by an image as POV-Ray 3.7 does", "[tracer][pov]") {
+    // textures/material_map.pov: a palette image's index picks among 5
+    // textures (modulo above the count, the last at it), an RGB image's
+    // undecoded red x 255 among 3 (once: the first outside), interpolate 2
+    // on a moving plane. The still's tolerance; both clocks exact when
+    // written (refused before; with the image decoded by gamma as an
+    // image_map's, 108 pixels of the RGB one were wrong).
+    check_stills("textures", "material_map", {"0", "0.5"});
+}
+
 TEST_CASE("an image_map's palette entries agree with POV-Ray 3.7's",
           "[tracer][pov][pattern][image]") {
     // textures/palette.pov: a 4-bit palette PNG whose entries take their

@@ -286,6 +286,17 @@ std::array<double, 5> image_colour(const ImageMap& map, const glm::dvec3& point,
     return out;
 }
 
+int material_number(const ImageMap& map, const glm::dvec3& point, double t) {
+    const ImagePixels& image = map.at(t);
+    double x = 0.0, y = 0.0;
+    if (!map_pos(map, image, point, x, y)) return 0;
+    const Rgbft s = sample(map, image, x, y, 0.0, 0.0);
+    if (s.index != -1) return s.index;
+    const double red = static_cast<float>(s.c[0]) * 255.0;
+    // (An OpenEXR's red may lie outside [0, 1]: no texture number below 0.)
+    return std::isfinite(red) && red > 0.0 ? static_cast<int>(std::min(red, 1.0e9)) : 0;
+}
+
 glm::dvec3 bump_map_normal(const ImageMap& map, const glm::dvec3& point, double t, double amount,
                            const glm::dvec3& normal) {
     const ImagePixels& image = map.at(t);

@@ -87,6 +87,12 @@ struct ImageMap {
 std::array<double, 5> image_colour(const ImageMap& map, const glm::dvec3& point, double t,
                                    double filter_all, double transmit_all);
 
+// material_map { }: the number of the texture at `point` (in the map's
+// space) at time t, before it is taken modulo the textures' count: a
+// palette image's index there, another image's red times 255, truncated;
+// 0 off an image used `once` (POV-Ray 3.7's material_map, imageutil.cpp).
+int material_number(const ImageMap& map, const glm::dvec3& point, double t);
+
 // bump_map { }: the unit normal `normal` (pattern space) tilted by the
 // image at `point` (POV-Ray 3.7's bump_map): the heights of three samples,
 // here and one pixel down to each side, each `amount` times the grey of

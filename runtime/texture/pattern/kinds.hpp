@@ -26,6 +26,7 @@
 #include "runtime/texture/pattern/kinds/magnet.hpp"
 #include "runtime/texture/pattern/kinds/mandel.hpp"
 #include "runtime/texture/pattern/kinds/marble.hpp"
+#include "runtime/texture/pattern/kinds/material_map.hpp"
 #include "runtime/texture/pattern/kinds/object.hpp"
 #include "runtime/texture/pattern/kinds/onion.hpp"
 #include "runtime/texture/pattern/kinds/pigment_pattern.hpp"
@@ -72,6 +73,7 @@ using PatternKinds = PatternKindList<
     kinds::Magnet,
     kinds::Mandel,
     kinds::Marble,
+    kinds::MaterialMap,
     kinds::ObjectPattern,
     kinds::Onion,
     kinds::PigmentPattern,

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "runtime/texture/pattern/image_map.hpp"
 #include "runtime/texture/pattern/kinds/mandel.hpp"
 
 namespace hexant::runtime::pattern {
@@ -41,6 +42,7 @@ bool Pattern::depends_on_time() const {
         if (n.depends_on_time()) return true;
     if (turbulence && turbulence->depends_on_time()) return true;
     if (function && function->depends_on_time()) return true;
+    if (image && image->images.size() > 1) return true;  // an image sequence
     for (const Warp& w : warps)
         if (w.transform ? w.transform->depends_on_time()
             : w.point   ? pattern::depends_on_time(*w.point)

@@ -38,6 +38,7 @@ struct Pigment;
 namespace hexant::runtime::pattern {
 
 class DensityFile;  // density_file.hpp
+struct ImageMap;    // image_map.hpp
 
 enum class Wave { Ramp, Sine, Triangle, Scallop, Cubic, Poly };
 
@@ -103,6 +104,8 @@ struct Values {
     const SpaceFunction* function = nullptr;
     // The density_file pattern's voxels (density_file.hpp).
     const DensityFile* density_file = nullptr;
+    // The material_map's image (image_map.hpp).
+    const ImageMap* image = nullptr;
     bool has_turbulence = false;  // classic turbulence given
     glm::dvec3 turbulence{0.0};
     Octaves octaves;
@@ -240,6 +243,8 @@ struct Pattern {
     std::shared_ptr<const SpaceFunction> function;
     // The density_file pattern's voxels.
     std::shared_ptr<const DensityFile> density_file;
+    // The material_map's image.
+    std::shared_ptr<const ImageMap> image;
 
     // A pattern of `kind` with its defaults.
     static Pattern of(const Kind& kind);
