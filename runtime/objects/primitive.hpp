@@ -218,11 +218,19 @@ class Primitive final : public IntelligentObject {
             p.error = geometry::world_error(linear, hit.object_point, glm::dvec3(hit.event),
                                             hit.object_error);
         p.geometric_normal = transform_normal(linear, hit.object_normal, facing);
-        // (Only a smooth triangle's shading normal differs from its own.)
-        p.shading_normal =
-            hit.object_shading_normal == hit.object_normal
-                ? p.geometric_normal
-                : transform_normal(linear, hit.object_shading_normal, p.geometric_normal);
+        // (Only a smooth triangle's shading normal differs from its own. A
+        // kind that blends its normals in the world, as POV-Ray's smooth
+        // height field, forms it here, where the map to the world is known.)
+        glm::dvec3 object_shading = hit.object_shading_normal;
+        if constexpr (requires(const Model& m) {
+                          m.world_shading_normal(hit.object_point, linear);
+                      }) {
+            if (const auto n = model_.world_shading_normal(hit.object_point, linear))
+                object_shading = *n;
+        }
+        p.shading_normal = object_shading == hit.object_normal
+                               ? p.geometric_normal
+                               : transform_normal(linear, object_shading, p.geometric_normal);
         if (hit.flipped) {
             p.geometric_normal = -p.geometric_normal;
             p.shading_normal = -p.shading_normal;

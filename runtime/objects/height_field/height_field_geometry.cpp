@@ -76,7 +76,8 @@ double height_field_floor(const HeightFieldData& data, double water_level) {
            65536.0;
 }
 
-glm::dvec3 height_field_smooth_normal(const HeightFieldData& d, const glm::dvec3& point) {
+glm::dvec3 height_field_smooth_normal(const HeightFieldData& d, const glm::dvec3& point,
+                                      const glm::dmat3* normal_to_world) {
     const auto& normals = d.smooth_normals();
     const double gx = point.x * d.x_scale(), gz = point.z * d.z_scale();
     // (int) truncation, clamped to the last cell (HField::Normal).
@@ -89,8 +90,8 @@ glm::dvec3 height_field_smooth_normal(const HeightFieldData& d, const glm::dvec3
         const auto& s = normals[static_cast<std::size_t>(cz) * static_cast<std::size_t>(d.width()) +
                                 static_cast<std::size_t>(cx)];
         const glm::dvec3 n(s[0] * d.x_scale(), s[1] * 65536.0, s[2] * d.z_scale());
-        const double length = glm::length(n);
-        return length > 0.0 ? n / length : glm::dvec3(0.0, 1.0, 0.0);
+        const double length = glm::length(normal_to_world ? *normal_to_world * n : n);
+        return length > 0.0 && std::isfinite(length) ? n / length : glm::dvec3(0.0, 1.0, 0.0);
     };
     const glm::dvec3 n0 = corner(px, pz), n1 = corner(px + 1, pz), n2 = corner(px, pz + 1),
                      n3 = corner(px + 1, pz + 1);

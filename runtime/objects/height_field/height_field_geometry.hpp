@@ -50,8 +50,14 @@ Box3 object_bounds(const HeightFieldGeometry& field);
 bool surface_may_meet(const HeightFieldGeometry& field, const Box3& box);
 
 // The shading normal `smooth` gives at an object-space point (exposed for
-// tests).
-glm::dvec3 height_field_smooth_normal(const objects::HeightFieldData& data,
-                                      const glm::dvec3& point);
+// tests). POV-Ray's HField::Normal takes each corner's normal to the world
+// and normalizes it there before it blends the four: with
+// `normal_to_world` (the inverse transpose of the map to the world at the
+// hit), each corner is weighted so, by 1 / its length in the world, and
+// the result, taken to the world, is POV-Ray's direction; without it, the
+// corners are normalized in object space (a map that scales all axes
+// alike gives the same).
+glm::dvec3 height_field_smooth_normal(const objects::HeightFieldData& data, const glm::dvec3& point,
+                                      const glm::dmat3* normal_to_world = nullptr);
 
 }  // namespace hexant::runtime::geometry

@@ -4,6 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
 
 #include "runtime/objects/height_field/height_field.hpp"
 #include "runtime/objects/height_field/height_field_geometry.hpp"
@@ -62,6 +66,17 @@ class HeightFieldModel {
             }
             return true;
         });
+    }
+
+    // A smooth field's shading normal at an object-space point, its corners
+    // weighted by their lengths under `to_world` (the linear map to the
+    // world at the hit), as POV-Ray blends them in the world
+    // (height_field_smooth_normal); nullopt for a field that is not smooth.
+    std::optional<glm::dvec3> world_shading_normal(const glm::dvec3& point,
+                                                   const glm::dmat3& to_world) const {
+        if (!data_ || !smooth_) return std::nullopt;
+        const glm::dmat3 normal_to_world = glm::transpose(glm::inverse(to_world));
+        return geometry::height_field_smooth_normal(*data_, point, &normal_to_world);
     }
 
   private:
