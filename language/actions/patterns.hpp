@@ -29,11 +29,32 @@ inline const runtime::Texture* texture_being_written(const Interpreter& st) {
     return nullptr;
 }
 
+// A pigment { } or normal { } that edits the texture being written
+// continues its pigment or normal after the transforms the texture has had
+// so far: POV-Ray keeps no transform of a plain texture's own but moves its
+// pigment and normal (Transform_Textures), so `texture { T rotate x
+// pigment { rotate y } }` turns T's pigment by x, then y. hexant keeps
+// them on the texture; they are folded into its pigment and normal here,
+// before either is edited, so that the edit comes after them.
+inline void fold_texture_transform(Interpreter& st) {
+    const runtime::Texture* written = texture_being_written(st);
+    if (written == nullptr || written == &st.scene.default_texture) return;
+    // (The texture's own block, or an object's texture: not const.)
+    auto& texture = const_cast<runtime::Texture&>(*written);
+    if (texture.transform.empty() || texture.is_patterned() ||
+        texture.uv_mapping != runtime::UvMapping::Off)
+        return;
+    texture.pigment.transform.append(texture.transform);
+    if (texture.normal) texture.normal->transform.append(texture.transform);
+    texture.transform = runtime::Transform();
+}
+
 template <>
 struct action<g::pigment_open> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
+        fold_texture_transform(st);
         const runtime::Texture* texture = texture_being_written(st);
         runtime::Pigment start = texture ? texture->pigment : runtime::Pigment();
         st.blocks.open(std::move(start));
@@ -689,6 +710,7 @@ struct action<g::normal_open> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
+        fold_texture_transform(st);
         std::optional<runtime::Normal> start;
         if (const runtime::Texture* texture = texture_being_written(st))
             start = texture->normal;

@@ -6,7 +6,9 @@
 # renders at 640x480 (8x8 points per pixel, -A) and is box-filtered to
 # 80x60 in linear light; hexant renders at 80x60 with --spp 64 (jittered).
 # Both at clock 0, shutter 0. Prints each scene's mean error (idiff) and
-# keeps the images in $OUT (default a temporary folder).
+# keeps the images in $OUT (default a temporary folder). SCALE (default 8)
+# sets POV-Ray's points per pixel side and SPP (default 64) hexant's
+# samples, to tell noise from a difference that stays.
 # Needs povray, povray-includes, povray-examples, idiff and oiiotool.
 # (Issue 42's seventh step: docs/benchmarks.md.)
 set -u
@@ -15,14 +17,15 @@ HX=$(realpath "$1"); shift
 EX=${EXAMPLES:-/usr/share/doc/povray/examples}
 INC=${INCLUDES:-/usr/share/povray-3.7/include}
 OUT=${OUT:-$(mktemp -d -t hexant_stochastic.XXXXXX)}
+SCALE=${SCALE:-8}; SPP=${SPP:-64}
 mkdir -p "$OUT"
 for s in "$@"; do
   n=${s//\//__}; d=$(dirname "$s"); f=$(basename "$s")
-  ( cd "$EX/$d" && timeout 1200 nice povray +I"$f" +O"$OUT/$n.big.png" +W640 +H480 -D -A +K0 \
+  ( cd "$EX/$d" && timeout 1200 nice povray +I"$f" +O"$OUT/$n.big.png" +W$((80 * SCALE)) +H$((60 * SCALE)) -D -A +K0 \
       +L"$INC" +FN -GA >/dev/null 2>&1 )
   oiiotool "$OUT/$n.big.png" --colorconvert sRGB linear --resize:filter=box 80x60 \
       --colorconvert linear sRGB -o "$OUT/$n.pov.png"
-  ( cd "$EX/$d" && timeout 1200 "$HX" render "$f" -L "$INC" -W 80 -H 60 --clock 0 --spp 64 \
+  ( cd "$EX/$d" && timeout 1200 "$HX" render "$f" -L "$INC" -W 80 -H 60 --clock 0 --spp "$SPP" \
       --shutter 0 -o "$OUT/$n.hx.png" >/dev/null 2>"$OUT/$n.err" )
   m=$(idiff -v "$OUT/$n.pov.png" "$OUT/$n.hx.png" 2>/dev/null | awk '/Mean error/{print $4}')
   printf '%s\t%s\n' "$s" "${m:-failed}"

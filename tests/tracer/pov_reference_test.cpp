@@ -929,6 +929,16 @@ TEST_CASE("material_map picks textures by an image as POV-Ray 3.7 does", "[trace
     check_stills("textures", "material_map", {"0", "0.5"});
 }
 
+TEST_CASE("a pigment or normal that edits a texture comes after its transforms", "[tracer][pov]") {
+    // textures/texture_edit.pov: a declared layered texture turned, then its
+    // top layer's pigment edited; an object's texture scaled with the
+    // object, then its pigment and normal edited; one turning with clock.
+    // The still's tolerance; both clocks exact when written (47% and 49%
+    // of the pixels off when the texture's transforms came after the
+    // edit: ballbox1.pov's floor).
+    check_stills("textures", "texture_edit", {"0", "0.5"});
+}
+
 TEST_CASE("an image_map's palette entries agree with POV-Ray 3.7's",
           "[tracer][pov][pattern][image]") {
     // textures/palette.pov: a 4-bit palette PNG whose entries take their
