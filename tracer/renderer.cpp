@@ -100,37 +100,32 @@ Box4 animation_root(const runtime::SceneDescription& scene, const ObjectSet& obj
     return root;
 }
 
-// The objects a camera ray of frames first..last may start inside that
-// matter to it (Shader::matters_to_camera): those whose extent over the
-// frames meets the box of the eye's points (a bounded object elsewhere
-// cannot hold a camera ray's origin). A moving camera is between its
-// frames' points on no known path: then every such object.
+// Of `mattering` (the objects that matter to a camera ray inside them:
+// Shader::matters_to_camera), those a camera ray of `frame` may start
+// inside: whose extent over the frame's shutter meets the box of the eye's
+// points at its opening and closing (the root cell assumes as much of the
+// eye's path), so that each camera ray tests only those.
 std::vector<const runtime::IntelligentObject*> camera_interiors(
-    const runtime::SceneDescription& scene, const std::vector<runtime::IntelligentObjectPtr>& all,
-    int first, int last) {
+    const runtime::SceneDescription& scene,
+    const std::vector<const runtime::IntelligentObject*>& mattering, int frame) {
     std::vector<const runtime::IntelligentObject*> out;
+    if (mattering.empty()) return out;
     const auto& a = scene.animation;
+    const double open = a.clock_of_frame(frame), close = open + a.exposure() * a.clock_delta();
     Box4 eye = Box4::empty();
-    double begin = std::numeric_limits<double>::infinity(), end = -begin;
-    for (int f = first; f <= last; ++f) {
-        const double open = a.clock_of_frame(f);
-        for (const double t : {open, open + a.exposure() * a.clock_delta()}) {
-            eye_extent(scene.camera.evaluate(t), t,
-                       [&](const glm::dvec3& p) { eye.extend(Event(p, t)); });
-            begin = std::min(begin, t);
-            end = std::max(end, t);
-        }
-    }
-    for (const auto& o : all) {
-        if (!Shader::matters_to_camera(scene, *o)) continue;
-        if (o->bounded() && !scene.camera.depends_on_time()) {
-            const Box4 box = o->box_over(runtime::Interval(begin, end));
+    for (const double t : {open, close})
+        eye_extent(scene.camera.evaluate(t), t,
+                   [&](const glm::dvec3& p) { eye.extend(Event(p, t)); });
+    for (const runtime::IntelligentObject* o : mattering) {
+        if (o->bounded()) {
+            const Box4 box =
+                o->box_over(runtime::Interval(std::min(open, close), std::max(open, close)));
             bool meets = !box.is_empty() && !eye.is_empty();
             for (int i = 0; meets && i < 3; ++i)
                 meets = box.lo[i] <= eye.hi[i] && eye.lo[i] <= box.hi[i];
             if (!meets) continue;
         }
-        out.push_back(o.get());
+        out.push_back(o);
     }
     return out;
 }
@@ -271,7 +266,8 @@ Renderer::Renderer(const runtime::SceneDescription& scene, const RenderSettings&
         return o->casts_shadow() && o->filters_light();
     });
     shader_ = std::make_unique<Shader>(scene, *query_, travel, filtering);
-    shader_->set_camera_interiors(camera_interiors(scene, objects_, first_frame_, last_frame_));
+    for (const auto& o : objects_)
+        if (Shader::matters_to_camera(scene, *o)) camera_mattering_.push_back(o.get());
     if (scene.camera.normal) {
         runtime::Texture screen;
         screen.normal = *scene.camera.normal;
@@ -295,6 +291,7 @@ Image Renderer::render_frame(int frame) {
     query_->prepare_frame(
         lookback_ > 0.0 ? std::max(floor_, first_instant - lookback_) : first_instant,
         std::max(open, open + length), counters_);
+    shader_->set_camera_interiors(camera_interiors(scene_, camera_mattering_, frame));
 
     const int width = a.width, height = a.height;
     const int spp = std::max(1, settings_.samples_per_pixel);

@@ -108,6 +108,10 @@ class Renderer {
     const runtime::SceneDescription& scene_;
     RenderSettings settings_;
     std::vector<runtime::IntelligentObjectPtr> objects_;
+    // The objects that matter to a camera ray that starts inside them
+    // (Shader::matters_to_camera); each frame hands the shader those its
+    // eye may lie in.
+    std::vector<const runtime::IntelligentObject*> camera_mattering_;
     runtime::Box4 root_;
     // Light of finite speed: how far back a frame's light reaches and the
     // earliest instant any does (the root's).
