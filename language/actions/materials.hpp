@@ -394,6 +394,7 @@ struct action<g::finish_open> {
         // Into the finish it modifies, as POV-Ray's Parse_Finish: a texture's
         // (texture { T finish { phong 1 } } keeps T's other settings), or the
         // #default one's.
+        refuse_patterned_edit(st, "finish");
         const runtime::Texture* texture = texture_being_written(st);
         st.blocks.open(texture ? texture->finish : runtime::Finish());
     }

@@ -29,6 +29,20 @@ inline const runtime::Texture* texture_being_written(const Interpreter& st) {
     return nullptr;
 }
 
+// A texture block that has become patterned (a declared texture_map,
+// material_map, tiles or block pattern's texture, or one written before
+// it) takes no pigment, normal or finish of its own: POV-Ray's
+// Parse_Texture reads them only for a plain texture ("No matching } in
+// 'texture', finish found"). Said here, where hexant would drop it.
+inline void refuse_patterned_edit(const Interpreter& st, const char* what) {
+    if (st.blocks.empty()) return;
+    const auto* texture = std::get_if<runtime::Texture>(&st.blocks.top());
+    if (texture != nullptr && texture->is_patterned())
+        throw ValueError(std::string("a patterned texture (texture_map, material_map, tiles, a "
+                                     "block pattern's textures) takes no ") +
+                         what + " of its own, as in POV-Ray: give it to each of its textures");
+}
+
 // A pigment { } or normal { } that edits the texture being written
 // continues its pigment or normal after the transforms the texture has had
 // so far: POV-Ray keeps no transform of a plain texture's own but moves its
@@ -54,6 +68,7 @@ struct action<g::pigment_open> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
+        refuse_patterned_edit(st, "pigment");
         fold_texture_transform(st);
         const runtime::Texture* texture = texture_being_written(st);
         runtime::Pigment start = texture ? texture->pigment : runtime::Pigment();
@@ -710,6 +725,7 @@ struct action<g::normal_open> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
+        refuse_patterned_edit(st, "normal");
         fold_texture_transform(st);
         std::optional<runtime::Normal> start;
         if (const runtime::Texture* texture = texture_being_written(st))
