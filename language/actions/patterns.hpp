@@ -209,8 +209,8 @@ struct action<g::pattern_kind> {
             throw ValueError("the object pattern is written object { OBJECT LIST }");
         if (name == "material_map")
             throw ValueError(
-                "material_map is a texture's: texture { material_map { TYPE \"FILE\" texture { } "
-                "... } }");
+                "material_map opens a texture and comes first in it: texture { material_map { "
+                "TYPE \"FILE\" texture { } ... } }");
         const PatternSlot slot = start_pattern(st, in.position(), name);
         const runtime::pattern::Kind* kind = slot.pattern.kind;
         using A = runtime::pattern::Kind::Argument;
