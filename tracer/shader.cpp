@@ -38,7 +38,8 @@ Shader::Shader(const runtime::SceneDescription& scene, const RayQuery& query, Li
       ambient_light_(scene.global.ambient_light),
       max_trace_level_(std::max(1, scene.global.max_trace_level)),
       irid_wavelength_(scene.global.irid_wavelength),
-      legacy_sky_(scene.global.legacy_sky) {
+      legacy_sky_(scene.global.legacy_sky),
+      legacy_opacity_(scene.global.legacy_opacity) {
     for (const auto& l : scene.lights) {
         lights_.emplace_back(l);
         light_group_of_.push_back(l.light_group);
@@ -570,8 +571,11 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
         const runtime::MaterialSample& m = layer.material;
         const glm::dvec3& n = layer.normal;
         // (POV-Ray 3.7's opacity, unclamped: filter and transmit above 1
-        // take light away, as there.)
-        const double opaque = 1.0 - m.filter - m.transmit;
+        // take light away, as there; a legacy scene's by 3.6's formula.)
+        const double opaque =
+            legacy_opacity_
+                ? 1.0 - (m.filter * std::max({m.colour.x, m.colour.y, m.colour.z}) + m.transmit)
+                : 1.0 - m.filter - m.transmit;
         glm::dvec3 own = m.colour * (m.ambient * ambient + m.emission) * opaque;
         for (std::size_t i = 0; i < lights_.size(); ++i) {
             if (!lights_object(i, h)) continue;

@@ -198,8 +198,9 @@ class Shader {
     bool still_ambient_ = false;
     glm::dvec3 fixed_ambient_{0.0};
     int max_trace_level_;
-    glm::dvec3 irid_wavelength_;  // global_settings' (iridescence.hpp)
-    bool legacy_sky_ = false;     // GlobalSettings::legacy_sky
+    glm::dvec3 irid_wavelength_;   // global_settings' (iridescence.hpp)
+    bool legacy_sky_ = false;      // GlobalSettings::legacy_sky
+    bool legacy_opacity_ = false;  // GlobalSettings::legacy_opacity
 };
 
 }  // namespace hexant::tracer

@@ -27,6 +27,10 @@ struct GlobalSettings {
     // pigments as POV-Ray 3.6 did (3.7's ComputeSky keeps that rule for
     // them: the filter and transmit of all the layers multiplied together).
     bool legacy_sky = false;
+    // Such a scene also dims a layer's own light by POV-Ray 3.6's opacity,
+    // 1 - (filter x its largest channel + transmit), where 3.7 takes
+    // 1 - filter - transmit (trace.cpp, ComputeLightedTexture's att).
+    bool legacy_opacity = false;
     int max_trace_level = 5;
     ColourFunction ambient_light{{1.0, 1.0, 1.0, 0.0, 0.0}};
     // MegaPOV's global_settings { motion_blur SAMPLES, TIME }: hexant blurs

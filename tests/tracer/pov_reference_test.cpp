@@ -867,15 +867,6 @@ TEST_CASE("no_image, no_reflection and double_illuminate render as in POV-Ray 3.
     check_stills("textures", "object_flags", {"0", "0.5"});
 }
 
-TEST_CASE("a legacy scene is rendered without gamma correction, as in POV-Ray 3.7",
-          "[tracer][pov]") {
-    // textures/legacy_gamma.pov: #version 3.6 and no assumed_gamma, at
-    // clock 0 and 0.5. The still's tolerance (exact when written). Before,
-    // hexant used 3.7's rule (and warned): every pixel off by more than
-    // 2/255 (the sky up to 74/255 brighter).
-    check_stills("textures", "legacy_gamma", {"0", "0.5"});
-}
-
 TEST_CASE("image_map agrees with POV-Ray 3.7's", "[tracer][pov][pattern][image]") {
     // textures/image_map.pov: an 8 x 6 RGBA PNG tiled on the floor
     // (bilinear) and moving, once on a wall over a checker layer (alpha and
