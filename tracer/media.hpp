@@ -8,10 +8,6 @@
 // the media's phase functions; the colour behind dimmed by the optical
 // depth and the light gathered added. Every sample is taken at the ray's
 // own time, so media that move with clock blur as objects do.
-//
-// Also the interiors a ray is inside (POV-Ray's RayInteriorVector), as far
-// as the shader needs them: those with media, and non-hollow ones (a ray
-// inside one sees no atmosphere and no fog).
 #pragma once
 
 #include <array>
@@ -22,58 +18,9 @@
 #include <glm/vec3.hpp>
 
 #include "runtime/scene/media_volume.hpp"
+#include "tracer/inside.hpp"
 
 namespace hexant::tracer {
-
-// The interiors a ray is inside: at most kMost (deeper nesting is not
-// tracked: the innermost beyond it count as outside).
-struct Inside {
-    static constexpr int kMost = 8;
-    struct Entry {
-        const void* key = nullptr;  // the media volume, or the object without one
-        const runtime::MediaVolume* media = nullptr;
-        bool hollow = true;
-    };
-    std::array<Entry, kMost> entries{};
-    int count = 0;
-
-    bool contains(const void* key) const {
-        for (int i = 0; i < count; ++i)
-            if (entries[std::size_t(i)].key == key) return true;
-        return false;
-    }
-    // POV-Ray's IsHollowRay: every interior around is hollow (an empty
-    // list is).
-    bool hollow() const {
-        for (int i = 0; i < count; ++i)
-            if (!entries[std::size_t(i)].hollow) return false;
-        return true;
-    }
-    bool has_media() const {
-        for (int i = 0; i < count; ++i)
-            if (entries[std::size_t(i)].media) return true;
-        return false;
-    }
-    Inside with(const Entry& e) const {
-        Inside out = *this;
-        if (!contains(e.key) && out.count < kMost) out.entries[std::size_t(out.count++)] = e;
-        return out;
-    }
-    Inside with_media_only() const {
-        Inside out;
-        for (int i = 0; i < count; ++i)
-            if (entries[std::size_t(i)].media)
-                out.entries[std::size_t(out.count++)] = entries[std::size_t(i)];
-        return out;
-    }
-    Inside without(const void* key) const {
-        Inside out;
-        for (int i = 0; i < count; ++i)
-            if (entries[std::size_t(i)].key != key)
-                out.entries[std::size_t(out.count++)] = entries[std::size_t(i)];
-        return out;
-    }
-};
 
 // A light as media see it along one ray: which of the shader's lights,
 // and the stretch of the ray it reaches (ShadedLight::media_interval).

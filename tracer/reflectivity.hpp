@@ -42,16 +42,17 @@ struct Reflectivity {
 };
 
 // The layer's reflectivity for a view ray meeting its normal at `cosine`
-// (-d . n), entering the object's solid or (`leaving`) coming out of it.
-inline Reflectivity reflectivity(const runtime::MaterialSample& m, double cosine, bool leaving) {
+// (-d . n), where the relative index of the two sides is `relative_ior`
+// (n2 / n1, Inside::relative_ior; only fresnel reads it).
+inline Reflectivity reflectivity(const runtime::MaterialSample& m, double cosine,
+                                 double relative_ior) {
     constexpr double kEpsilon = 1e-10;  // POV-Ray's EPSILON, on fractions in [0, 1]
     const auto weight_max = [](const glm::dvec3& c) { return std::max({c.x, c.y, c.z}); };
     Reflectivity r;
     if (m.reflection_fresnel) {
         // (Without an interior the ior is 1: no Fresnel reflection, the
         // minimum; POV-Ray stops with an error there.)
-        const double n = leaving ? 1.0 / m.ior : m.ior;
-        const double f = fresnel_reflectance(cosine, n);
+        const double f = fresnel_reflectance(cosine, relative_ior);
         r.colour = f * m.reflection_max + (1.0 - f) * m.reflection;
         r.weight = weight_max(r.colour);
     } else {

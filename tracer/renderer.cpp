@@ -266,8 +266,10 @@ Renderer::Renderer(const runtime::SceneDescription& scene, const RenderSettings&
         return o->casts_shadow() && o->filters_light();
     });
     shader_ = std::make_unique<Shader>(scene, *query_, travel, filtering);
+    const bool refracting = std::any_of(objects_.begin(), objects_.end(),
+                                        [](const auto& o) { return o->filters_light(); });
     for (const auto& o : objects_)
-        if (Shader::matters_to_camera(scene, *o)) camera_mattering_.push_back(o.get());
+        if (Shader::matters_to_camera(scene, *o, refracting)) camera_mattering_.push_back(o.get());
     if (scene.camera.normal) {
         runtime::Texture screen;
         screen.normal = *scene.camera.normal;

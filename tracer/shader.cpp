@@ -336,18 +336,23 @@ glm::dvec3 Shader::transmittance(const runtime::SurfacePoint& p, const glm::dvec
 }
 
 bool Shader::matters_to_camera(const runtime::SceneDescription& scene,
-                               const runtime::IntelligentObject& object) {
-    if (object.interior_media()) return true;
+                               const runtime::IntelligentObject& object, bool refracting) {
+    if (refracting || object.interior_media()) return true;
     return !object.flags().hollow && (!scene.fogs.empty() || !scene.atmosphere.empty());
 }
 
 Inside Shader::inside_at(const runtime::Event& event) const {
     Inside around;
+    const bool volumes = !fogs_.empty() || atmosphere_ != nullptr;
     for (const runtime::IntelligentObject* o : camera_interiors_) {
         if (!o->inside(event)) continue;
         const runtime::MediaVolume* media = o->interior_media();
-        around = around.with({media ? static_cast<const void*>(media) : static_cast<const void*>(o),
-                              media, o->flags().hollow});
+        if (media || (volumes && !o->flags().hollow))
+            around =
+                around.with({media ? static_cast<const void*>(media) : static_cast<const void*>(o),
+                             media, o->flags().hollow});
+        if (const auto r = o->refractive_interior(event.w); r.key)
+            around = around.entered(r.key, r.ior);
     }
     return around;
 }
@@ -390,6 +395,9 @@ glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, std::uint
     const runtime::MediaVolume* media = p.texture->media();
     h.entry = {media ? static_cast<const void*>(media) : static_cast<const void*>(hit->object),
                media, hit->object->flags().hollow};
+    h.object = hit->object;
+    h.interior = p.texture->interior_key() ? p.texture->interior_key()
+                                           : static_cast<const void*>(hit->object);
     // (A ray that leaves an object it was not known to be in was inside it
     // from its start (a camera inside) when its origin is; else it came in
     // through an opening (clipped_by) and is in the open, as POV-Ray has it.)
@@ -650,9 +658,9 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
         through *= m.filter * m.colour + glm::dvec3(m.transmit);
         // conserve_energy: less passes through by what the layer reflects.
         if (m.conserve_energy && reflects(m))
-            through *=
-                glm::min(glm::dvec3(1.0),
-                         glm::dvec3(1.0) - reflectivity(m, -glm::dot(h.d, n), h.back).colour);
+            through *= glm::min(
+                glm::dvec3(1.0),
+                glm::dvec3(1.0) - reflectivity(m, -glm::dot(h.d, n), h.relative_ior(m.ior)).colour);
         trans = std::min(1.0, std::fabs(0.297 * through.x + 0.589 * through.y + 0.114 * through.z));
     }
     if (h.depth >= max_trace_level_) return colour;
@@ -668,11 +676,15 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
         h.weight * std::max({std::fabs(through.x), std::fabs(through.y), std::fabs(through.z)});
     if (trans > kBailout && through_weight >= kBailout) {
         // POV-Ray's ComputeRefraction and TraceRefractionRay, about the top
-        // layer's normal: the ratio of iors entering or leaving the solid
-        // (entering when the ray meets the outward normal's front), the
-        // normal taken to the ray's side.
+        // layer's normal: the ratio of iors as the interiors the ray passed
+        // say (not the side of the surface it meets: a ray that came in
+        // through an open side enters where it meets a back face), the
+        // normal taken to the ray's side. A camera ray starts in the
+        // interiors that hold the eye (POV-Ray's InitRayContainerState): one
+        // it leaves that it was not known to be in held it from the start.
         const glm::dvec3& normal = layers[0].normal;
-        const double eta = h.back ? top.ior : 1.0 / top.ior;
+        Inside passed;
+        const double eta = h.around.refract(h.interior, top.ior, h.started_inside(), passed);
         double n = glm::dot(h.d, normal);
         const glm::dvec3 local = n <= 0.0 ? normal : -normal;
         n = std::fabs(n);
@@ -691,11 +703,12 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
         const glm::dvec3 behind =
             radiance(next, h.depth + 1, through_weight,
                      total_internal_reflection ? std::uint8_t(runtime::kSightReflection) : h.sight,
-                     total_internal_reflection ? h.carried() : h.refracted(), state);
+                     total_internal_reflection ? h.carried() : h.refracted(passed), state);
         // Light that crossed the object's inside to get here fades with
-        // the distance it went (fade_distance; POV-Ray's attCol).
+        // the distance it went (fade_distance; POV-Ray's attCol), when the
+        // ray was in it (its list holds it).
         glm::dvec3 faded(1.0);
-        if (h.back)
+        if (h.around.holds(h.interior) || h.started_inside())
             if (const auto fade = h.p.texture->fade_at(h.time))
                 faded = fade->through(glm::distance(h.point, glm::dvec3(h.ray.origin)));
         colour += total_internal_reflection ? faded * behind : faded * behind * through;
@@ -707,7 +720,7 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
         const runtime::MaterialSample& m = layer.material;
         if (!reflects(m)) continue;
         if (total_internal_reflection && layer.normal == layers[0].normal) continue;
-        const Reflectivity r = reflectivity(m, -glm::dot(h.d, layer.normal), h.back);
+        const Reflectivity r = reflectivity(m, -glm::dot(h.d, layer.normal), h.relative_ior(m.ior));
         if (r.colour == glm::dvec3(0.0)) continue;
         // (The weight of the layer: what shows through the ones above it;
         // POV-Ray's, untinted by metallic.)

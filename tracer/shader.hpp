@@ -39,12 +39,14 @@ class Shader {
            bool filtering = false);
 
     // The objects a camera ray may start inside that matter to it (those
-    // with media, and with fog or an atmosphere the non-hollow ones):
-    // each camera ray starts in those whose solid holds its origin, as
-    // POV-Ray's InitRayContainerState finds them. Objects whose extent
-    // cannot hold the eye may be left out.
+    // with media, and with fog or an atmosphere the non-hollow ones; when
+    // light passes through some object (`refracting`), every one, for the
+    // refraction list): each camera ray starts in those whose solid holds
+    // its origin, as POV-Ray's InitRayContainerState finds them (in the
+    // order of the scene's objects, where POV-Ray takes its bounding
+    // tree's). Objects whose extent cannot hold the eye may be left out.
     static bool matters_to_camera(const runtime::SceneDescription& scene,
-                                  const runtime::IntelligentObject& object);
+                                  const runtime::IntelligentObject& object, bool refracting);
     void set_camera_interiors(std::vector<const runtime::IntelligentObject*> objects) {
         camera_interiors_ = std::move(objects);
     }
@@ -100,15 +102,34 @@ class Shader {
         // leaves one, that one), and the object hit as one of them.
         Inside around{};
         Inside::Entry entry{};
+        // The object hit, and its interior as refraction knows it
+        // (TextureEvaluator::interior_key, else the object).
+        const runtime::IntelligentObject* object = nullptr;
+        const void* interior = nullptr;
         // The interiors a ray refracted here is in.
         // What rays from here carry on: only interiors with media (an
         // object without is known on its own segment alone: the members
         // of a CSG are objects of their own, and a ray that left through
         // one must not stay inside another).
         Inside carried() const { return around.with_media_only(); }
-        Inside refracted() const {
-            if (back) return carried().without(entry.key);
-            return entry.media ? carried().with(entry) : carried();
+        // A camera ray leaving an interior its list does not hold: it
+        // started inside (POV-Ray's InitRayContainerState fills a camera
+        // ray's list by inside tests at the eye).
+        bool started_inside() const {
+            return depth == 1 && back && around.passed_count == 0 && object->inside(ray.origin);
+        }
+        // The relative index Fresnel reflection sees for ior `ior` here.
+        double relative_ior(double ior) const {
+            return around.relative_ior(interior, ior, started_inside());
+        }
+        // (`passed`: the refraction list it goes on with, Inside::refract.)
+        Inside refracted(const Inside& passed) const {
+            Inside out = back          ? carried().without(entry.key)
+                         : entry.media ? carried().with(entry)
+                                       : carried();
+            out.passed = passed.passed;
+            out.passed_count = passed.passed_count;
+            return out;
         }
     };
     // The colour of one plain texture (its `count` layers, top first) at

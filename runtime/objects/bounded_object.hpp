@@ -64,6 +64,9 @@ class BoundedObject final : public IntelligentObject {
     bool filters_light() const override { return object_->filters_light(); }
     bool casts_full_shadow() const override { return object_->casts_full_shadow(); }
     const MediaVolume* interior_media() const override { return object_->interior_media(); }
+    RefractiveInterior refractive_interior(double t) const override {
+        return object_->refractive_interior(t);
+    }
 
   private:
     // The box gate at time t: empty optional where there is none.

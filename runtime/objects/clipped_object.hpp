@@ -40,6 +40,9 @@ class ClippedObject final : public IntelligentObject {
     bool filters_light() const override { return object_->filters_light(); }
     bool casts_full_shadow() const override { return object_->casts_full_shadow(); }
     const MediaVolume* interior_media() const override { return object_->interior_media(); }
+    RefractiveInterior refractive_interior(double t) const override {
+        return object_->refractive_interior(t);
+    }
 
   private:
     bool kept(const Event& event) const;

@@ -258,6 +258,12 @@ bool CsgObject::casts_shadow() const {
                        [](const auto& c) { return c->casts_shadow(); });
 }
 
+IntelligentObject::RefractiveInterior CsgObject::refractive_interior(double t) const {
+    for (const auto& c : children_)
+        if (const RefractiveInterior r = c->refractive_interior(t); r.key) return r;
+    return {};
+}
+
 const MediaVolume* CsgObject::interior_media() const {
     for (const auto& c : children_)
         if (const MediaVolume* media = c->interior_media()) return media;

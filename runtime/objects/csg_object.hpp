@@ -40,6 +40,8 @@ class CsgObject final : public IntelligentObject {
     bool casts_full_shadow() const override { return full_shadow_; }
     // (The group's media are its children's, shared: the first found.)
     const MediaVolume* interior_media() const override;
+    // (Its members' shared interior: the first member's.)
+    RefractiveInterior refractive_interior(double t) const override;
 
     Csg::Kind kind() const { return kind_; }
     const std::vector<IntelligentObjectPtr>& children() const { return children_; }

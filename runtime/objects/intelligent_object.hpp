@@ -191,6 +191,14 @@ class IntelligentObject {
     // The media of its interior (interior { media { } }), or null: what a
     // ray that starts inside its solid (a camera inside) passes through.
     virtual const MediaVolume* interior_media() const { return nullptr; }
+    // Its interior as refraction knows it at time t (the identity its
+    // surfaces' hits carry, TextureEvaluator::interior_key, and its ior):
+    // what a camera ray that starts inside it has entered.
+    struct RefractiveInterior {
+        const void* key = nullptr;  // null: none
+        double ior = 1.0;
+    };
+    virtual RefractiveInterior refractive_interior(double) const { return {}; }
 
   private:
     ObjectFlags flags_;

@@ -47,6 +47,9 @@ class LifetimeObject final : public IntelligentObject {
     bool filters_light() const override { return inner_->filters_light(); }
     bool casts_full_shadow() const override { return inner_->casts_full_shadow(); }
     const MediaVolume* interior_media() const override { return inner_->interior_media(); }
+    RefractiveInterior refractive_interior(double t) const override {
+        return inner_->refractive_interior(t);
+    }
 
   private:
     // Calls f(lo, hi) for each span of the ray's parameter in (s_min, s_max)

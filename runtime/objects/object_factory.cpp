@@ -37,7 +37,20 @@ struct Inherited {
     Lifetime lifetime;
     // Is it a member of an intersection (LifetimeObject's inside_when_absent)?
     bool in_intersection = false;
+    // The interior refraction knows it by (TextureEvaluator::interior_key):
+    // the one of the nearest object around with an interior { } of its own,
+    // else of the outermost; null until a group or a mesh needs one to share.
+    std::shared_ptr<const void> interior_key;
 };
+
+// A group's interior identity, for its members to share: the one it was
+// handed, else a new one.
+std::shared_ptr<const void> shared_interior(const std::shared_ptr<const void>& key) {
+    struct InteriorIdentity {
+        char unused = 0;  // (a distinct address each)
+    };
+    return key ? key : std::make_shared<const InteriorIdentity>();
+}
 
 // The tracer tests a CSG's children recursively for every ray, on threads
 // whose stacks are a few MB: deeper nesting than this is refused where it is
@@ -47,8 +60,8 @@ constexpr int kMaxCsgDepth = 1000;
 
 // What the scene's top hands its objects: the default texture.
 Inherited top_level(const Texture& default_texture) {
-    return {Transform{}, default_texture, nullptr, std::nullopt,       nullptr,
-            false,       ObjectFlags{},   0,       Lifetime::always(), false};
+    return {Transform{}, default_texture,    nullptr, std::nullopt, nullptr, false, ObjectFlags{},
+            0,           Lifetime::always(), false,   nullptr};
 }
 
 // What `record` holds in world terms under `parent`: its transform after
@@ -75,6 +88,7 @@ Inherited handed_down(const ObjectRecord& record, const Inherited& parent) {
         // (Its media's densities, as the texture, map to the parent's space.)
         down.interior = record.interior;
         down.interior->transform_by(parent.to_world);
+        down.interior_key = nullptr;  // (its own: POV-Ray's Post_Process keeps it)
     }
     down.no_shadow = record.no_shadow || parent.no_shadow;
     if (record.no_image) down.flags.hidden_from |= kSightImage;
@@ -229,6 +243,7 @@ IntelligentObjectPtr build_shape(const ObjectRecord& record, const Inherited& pa
                                                 " levels deep (intersection, difference or merge "
                                                 "inside one another)");
         Inherited down = own;
+        down.interior_key = shared_interior(own.interior_key);
         down.csg_depth = parent.csg_depth + 1;
         down.lifetime = Lifetime::always();
         down.in_intersection = csg->kind == Csg::Kind::Intersection;
@@ -267,6 +282,17 @@ IntelligentObjectPtr build_shape(const ObjectRecord& record, const Inherited& pa
     }
     TextureEvaluator evaluator(*own.texture, interior);
     evaluator.set_media(own.media);
+    // (A mesh's faces with textures of their own are one interior.)
+    std::shared_ptr<const void> key = own.interior_key;
+    if (!key && std::visit(
+                    [](const auto& shape) {
+                        return requires {
+                            shape.part_textures();
+                        };
+                    },
+                    record.shape))
+        key = shared_interior(nullptr);
+    evaluator.set_interior_key(key);
     if (own.interior_texture) evaluator.set_interior_texture(*own.interior_texture, interior);
     const PrimitiveOptions options{record.inverse, own.no_shadow};
     return std::visit(
@@ -293,6 +319,7 @@ IntelligentObjectPtr build_shape(const ObjectRecord& record, const Inherited& pa
                         world.transform_by(to_world);
                         parts.emplace_back(world, interior);
                         parts.back().set_media(own.media);
+                        parts.back().set_interior_key(key);
                     }
                 // A model whose shape depends on its placement (a
                 // bicubic_patch, which POV-Ray subdivides in the world)
@@ -322,6 +349,7 @@ void build_split(const ObjectRecord& record, const Inherited& parent,
         return;
     }
     Inherited down = handed_down(record, parent);
+    down.interior_key = shared_interior(down.interior_key);
     down.lifetime = record.lifetime.intersect(parent.lifetime);
     if (!record.limits) {
         for (const auto& child : csg->children) build_split(*child, down, out);

@@ -105,6 +105,10 @@ class Primitive final : public IntelligentObject {
     bool filters_light() const override { return filters_light_; }
     bool casts_full_shadow() const override { return !options_.no_shadow && !filters_light_; }
     const MediaVolume* interior_media() const override { return texture_.media(); }
+    RefractiveInterior refractive_interior(double t) const override {
+        const void* key = texture_.interior_key();
+        return {key ? key : static_cast<const void*>(this), texture_.ior_at(t)};
+    }
 
     void bound(const Box4& region, std::vector<SlabBound>& out) const override {
         if constexpr (kUnbounded) return;

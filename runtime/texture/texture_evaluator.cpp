@@ -321,6 +321,8 @@ TextureEvaluator::TextureEvaluator(const Texture& texture, const std::optional<I
                          CompiledScalar(interior->fade_power),
                          {CompiledScalar(c.c[0]), CompiledScalar(c.c[1]), CompiledScalar(c.c[2])}});
     }
+    if (interior && !(interior->ior.is_constant() && interior->ior.constant() == 1.0))
+        ior_ = std::make_shared<const CompiledScalar>(interior->ior);
     if (interior && !(interior->caustics.is_constant() && interior->caustics.constant() == 0.0))
         caustics_ = std::make_shared<const CompiledScalar>(interior->caustics * 45.0);
 }
@@ -328,7 +330,8 @@ TextureEvaluator::TextureEvaluator(const Texture& texture, const std::optional<I
 void TextureEvaluator::set_interior_texture(const Texture& texture,
                                             const std::optional<Interior>& interior) {
     auto made = std::make_shared<TextureEvaluator>(texture, interior);
-    made->set_media(media_);  // (the same interior: its media, as the outside's)
+    made->set_media(media_);  // (the same interior: its media and key, as the outside's)
+    made->set_interior_key(interior_key_);
     std::shared_ptr<const TextureEvaluator> inside = std::move(made);
     depends_on_time_ = depends_on_time_ || inside->depends_on_time();
     opaque_ = opaque_ && inside->opaque();

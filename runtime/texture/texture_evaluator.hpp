@@ -86,6 +86,8 @@ class TextureEvaluator {
     // The interior's faked caustics' power at time t (Interior::caustics,
     // times 45 as POV-Ray keeps it); 0 without.
     double caustics_at(double t) const { return caustics_ ? caustics_->at(t) : 0.0; }
+    // The interior's ior at time t (Interior::ior; 1 without).
+    double ior_at(double t) const { return ior_ ? ior_->at(t) : 1.0; }
     // Whether no light passes it (Texture::opaque), nor its interior
     // texture (POV-Ray's OPAQUE_FLAG wants both).
     bool opaque() const { return opaque_; }
@@ -94,10 +96,16 @@ class TextureEvaluator {
     // still inside (runtime/objects/object_factory.cpp).
     const MediaVolume* media() const { return media_.get(); }
     void set_media(std::shared_ptr<const MediaVolume> media) { media_ = std::move(media); }
+    // The interior's identity as refraction knows it (POV-Ray's Interior:
+    // one per object, shared by the members of a CSG and the parts of a
+    // mesh that have no interior { } of their own, Parser::Post_Process).
+    // Null: the primitive's own, which the primitive stands for.
+    const void* interior_key() const { return interior_key_.get(); }
+    void set_interior_key(std::shared_ptr<const void> key) { interior_key_ = std::move(key); }
 
     // interior_texture { }: the texture a ray meeting the surface from
     // inside sees (POV-Ray's Interior_Texture), compiled with the same
-    // interior (and media: set_media first). Null: none, this one is seen
+    // interior (and media and key: set both first). Null: none, this one is seen
     // from both sides.
     void set_interior_texture(const Texture& texture, const std::optional<Interior>& interior);
     const TextureEvaluator* interior_texture() const { return interior_texture_.get(); }
@@ -308,12 +316,14 @@ class TextureEvaluator {
     bool depends_on_time_ = false;
     bool opaque_ = true;
     std::shared_ptr<const MediaVolume> media_;
+    std::shared_ptr<const void> interior_key_;  // null: the primitive's own
     struct CompiledFade {
         CompiledScalar distance, power;
         std::array<CompiledScalar, 3> colour;
     };
     std::shared_ptr<const CompiledFade> fade_;                  // null: no fading
     std::shared_ptr<const CompiledScalar> caustics_;            // null: none
+    std::shared_ptr<const CompiledScalar> ior_;                 // null: 1
     std::shared_ptr<const TextureEvaluator> interior_texture_;  // null: none
 };
 

@@ -1,0 +1,139 @@
+// The interiors a ray is inside (POV-Ray's RayInteriorVector), as far as
+// the shader needs them: for its volumes, those with media and the
+// non-hollow ones (a ray inside one sees no atmosphere and no fog); for
+// refraction, every interior it entered by passing through a surface, in
+// the order entered, each with its index of refraction (POV-Ray's
+// ComputeRefraction, source/backend/render/trace.cpp, whose rule
+// Inside::refract keeps).
+#pragma once
+
+#include <array>
+
+#include "runtime/scene/media_volume.hpp"
+
+namespace hexant::tracer {
+
+// The interiors a ray is inside: at most kMost of each list (deeper
+// nesting is not tracked: the innermost beyond it count as outside).
+struct Inside {
+    static constexpr int kMost = 8;
+    struct Entry {
+        const void* key = nullptr;  // the media volume, or the object without one
+        const runtime::MediaVolume* media = nullptr;
+        bool hollow = true;
+    };
+    std::array<Entry, kMost> entries{};
+    int count = 0;
+
+    // An interior refraction knows: its identity (shared by the members of
+    // a CSG and the parts of a mesh, as POV-Ray's Interior is:
+    // TextureEvaluator::interior_key) and its ior when the ray entered.
+    struct Passed {
+        const void* key = nullptr;
+        double ior = 1.0;
+    };
+    std::array<Passed, kMost> passed{};
+    int passed_count = 0;
+
+    bool contains(const void* key) const {
+        for (int i = 0; i < count; ++i)
+            if (entries[std::size_t(i)].key == key) return true;
+        return false;
+    }
+    // POV-Ray's IsHollowRay: every interior around is hollow (an empty
+    // list is).
+    bool hollow() const {
+        for (int i = 0; i < count; ++i)
+            if (!entries[std::size_t(i)].hollow) return false;
+        return true;
+    }
+    bool has_media() const {
+        for (int i = 0; i < count; ++i)
+            if (entries[std::size_t(i)].media) return true;
+        return false;
+    }
+    Inside with(const Entry& e) const {
+        Inside out = *this;
+        if (!contains(e.key) && out.count < kMost) out.entries[std::size_t(out.count++)] = e;
+        return out;
+    }
+    // (The volumes' lists below keep the refraction list as it is.)
+    Inside with_media_only() const {
+        Inside out = *this;
+        out.count = 0;
+        for (int i = 0; i < count; ++i)
+            if (entries[std::size_t(i)].media)
+                out.entries[std::size_t(out.count++)] = entries[std::size_t(i)];
+        return out;
+    }
+    Inside without(const void* key) const {
+        Inside out = *this;
+        out.count = 0;
+        for (int i = 0; i < count; ++i)
+            if (entries[std::size_t(i)].key != key)
+                out.entries[std::size_t(out.count++)] = entries[std::size_t(i)];
+        return out;
+    }
+
+    // Whether interior `key` is on the refraction list (POV-Ray's
+    // IsInterior).
+    bool holds(const void* key) const {
+        for (int i = 0; i < passed_count; ++i)
+            if (passed[std::size_t(i)].key == key) return true;
+        return false;
+    }
+    // The list with interior `key` (index `ior`) entered last, unless it
+    // is on it already (a camera ray's start, POV-Ray's AppendInteriors).
+    Inside entered(const void* key, double ior) const {
+        Inside out = *this;
+        for (int i = 0; i < passed_count; ++i)
+            if (passed[std::size_t(i)].key == key) return out;
+        if (out.passed_count < kMost) out.passed[std::size_t(out.passed_count++)] = {key, ior};
+        return out;
+    }
+
+    // A ray passing through the surface of interior `key` (index `ior`
+    // there): the ratio of indices (the side it comes from over the side
+    // it goes to) and, in `next`, the refraction list it goes on with.
+    // POV-Ray's rule: an interior it is not in is entered, from the
+    // innermost one it is in (nested objects count as outside the ones
+    // holding them: (A (B B) A) is (A A|B B|A A)); the innermost one is
+    // left into the next; one further out is left with no bending (the
+    // overlap of two objects belongs to the one entered last). The
+    // atmosphere's index is 1. `inside_unknown`: that the ray started
+    // inside `key` though its empty list does not say so (a camera ray,
+    // whose list POV-Ray fills by inside tests at the eye).
+    double refract(const void* key, double ior, bool inside_unknown, Inside& next) const {
+        next = *this;
+        const auto at = [&](int i) -> const Passed& { return passed[std::size_t(i)]; };
+        if (passed_count > 0 && at(passed_count - 1).key == key) {
+            next.passed_count = passed_count - 1;
+            return ior / (next.passed_count > 0 ? at(next.passed_count - 1).ior : 1.0);
+        }
+        for (int i = 0; i < passed_count - 1; ++i) {
+            if (at(i).key != key) continue;
+            for (int j = i; j + 1 < passed_count; ++j) next.passed[std::size_t(j)] = at(j + 1);
+            next.passed_count = passed_count - 1;
+            return 1.0;
+        }
+        if (inside_unknown && passed_count == 0) return ior;
+        const double from = passed_count > 0 ? at(passed_count - 1).ior : 1.0;
+        if (next.passed_count < kMost) next.passed[std::size_t(next.passed_count++)] = {key, ior};
+        return from / ior;
+    }
+    // The relative index n2 / n1 that Fresnel reflection at the surface of
+    // interior `key` (index `ior`) sees: POV-Ray's ComputeRelativeIOR,
+    // whose rule differs from refract's: any interior on the list is being
+    // left, into the innermost one (itself, when it is the innermost of
+    // several: 1), or into the atmosphere when it is the only one.
+    double relative_ior(const void* key, double ior, bool inside_unknown) const {
+        if (passed_count == 0) return inside_unknown ? 1.0 / ior : ior;
+        const double innermost = passed[std::size_t(passed_count - 1)].ior;
+        for (int i = 0; i < passed_count; ++i)
+            if (passed[std::size_t(i)].key == key)
+                return passed_count == 1 ? 1.0 / ior : innermost / ior;
+        return ior / innermost;
+    }
+};
+
+}  // namespace hexant::tracer
