@@ -26,6 +26,13 @@ glm::dvec3 rgb(const runtime::ColourFunction& c, double t) {
 // POV-Ray stops following rays whose contribution falls below its
 // adc_bailout (1/255).
 constexpr double kBailout = 1.0 / 255.0;
+// POV-Ray's EPSILON, on a ratio of iors near 1.
+constexpr double kEpsilon = 1e-10;
+// The straight passes one path may make at one trace level (ThreadState::
+// straight_passes): POV-Ray's weight bailout ends a run through surfaces
+// that filter or transmit less than all within about 50; only wholly clear
+// ones go on, and each costs a frame of the thread's stack.
+constexpr int kMostStraightPasses = 128;
 
 }  // namespace
 
@@ -663,7 +670,7 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
                 glm::dvec3(1.0) - reflectivity(m, -glm::dot(h.d, n), h.relative_ior(m.ior)).colour);
         trans = std::min(1.0, std::fabs(0.297 * through.x + 0.589 * through.y + 0.114 * through.z));
     }
-    if (h.depth >= max_trace_level_) return colour;
+    if (h.depth - state.straight_passes >= max_trace_level_) return colour;
 
     // What lies behind, through every layer, refracted by the top one's
     // ior (POV-Ray: when enough shows through and the ray's weight is
@@ -690,9 +697,15 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
         n = std::fabs(n);
         const double k = 1.0 + eta * eta * (n * n - 1.0);
         total_internal_reflection = k < 0.0;
-        const glm::dvec3 out = total_internal_reflection
-                                   ? reflect(h.d, normal, h.raw)
-                                   : eta * h.d + (eta * n - std::sqrt(k)) * local;
+        // (The same ior on both sides: the ray goes on straight, at the
+        // same trace level, as POV-Ray continues it, up to
+        // kMostStraightPasses on one path: past that, as a new level, so
+        // that clear surfaces in a row cannot take the stack.)
+        const bool straight = std::fabs(eta - 1.0) < kEpsilon;
+        const bool continued = straight && state.straight_passes < kMostStraightPasses;
+        const glm::dvec3 out = total_internal_reflection ? reflect(h.d, normal, h.raw)
+                               : straight                ? h.d
+                                          : eta * h.d + (eta * n - std::sqrt(k)) * local;
         const glm::dvec3 from = !total_internal_reflection ? runtime::geometry::offset_ray(
                                                                  h.point, h.p.error, -h.geometric)
                                                            : h.start;
@@ -700,10 +713,12 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
         const Ray4 next = travel_.ray(from, h.time, out);
         // (POV-Ray's SetFlags: a ray refracted keeps its kind; reflected
         // back inside, it is a reflection ray.)
+        state.straight_passes += continued;
         const glm::dvec3 behind =
             radiance(next, h.depth + 1, through_weight,
                      total_internal_reflection ? std::uint8_t(runtime::kSightReflection) : h.sight,
                      total_internal_reflection ? h.carried() : h.refracted(passed), state);
+        state.straight_passes -= continued;
         // Light that crossed the object's inside to get here fades with
         // the distance it went (fade_distance; POV-Ray's attCol), when the
         // ray was in it (its list holds it).

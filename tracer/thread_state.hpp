@@ -51,6 +51,11 @@ struct ThreadState {
     // The kind of ray being walked (runtime::RaySight): objects hidden from
     // it are passed by (tracer/object_test.hpp).
     std::uint8_t sight = runtime::kSightAll;
+    // Of the rays on the path being traced, how many passed straight
+    // through a surface (the same ior on both sides): POV-Ray traces those
+    // as the ray continued, no new trace level (TraceRay's continuedRay),
+    // so a ray's level is its depth less these (tracer/shader.cpp).
+    int straight_passes = 0;
     std::deque<ShadingScratch>
         shading{};  // by depth (a deque: a deeper one leaves the others in place)
     ShadingScratch& shading_at(int depth) {
