@@ -240,7 +240,7 @@ inline glm::dvec3 Shader::shadow_filter(std::size_t index, const Hit& h,
     // (Objects that may let light through do not block: `blocked` passes
     // them by, and they filter what it lets pass.)
     if (blocked(ray, reach, state)) return glm::dvec3(0.0);
-    return filtering_ ? filtered(ray, reach, h.depth, state) : glm::dvec3(1.0);
+    return filtering_ ? filtered(ray, reach, h.depth, h.around, state) : glm::dvec3(1.0);
 }
 
 bool Shader::projected(const ShadedLight& light, const Ray4& ray, double& reach) {
@@ -257,7 +257,8 @@ bool Shader::projected(const ShadedLight& light, const Ray4& ray, double& reach)
     return true;
 }
 
-glm::dvec3 Shader::filtered(Ray4 ray, double reach, int depth, ThreadState& state) const {
+glm::dvec3 Shader::filtered(Ray4 ray, double reach, int depth, Inside around,
+                            ThreadState& state) const {
     // (No count in POV-Ray; this one only stops a walk that cannot end.)
     constexpr int kMostSurfaces = 1 << 16;
     const glm::dvec3 d = glm::dvec3(ray.direction) / glm::length(glm::dvec3(ray.direction));
@@ -271,19 +272,26 @@ glm::dvec3 Shader::filtered(Ray4 ray, double reach, int depth, ThreadState& stat
         if (hit->object->casts_shadow()) {
             ++state.counters.filtered_surfaces;
             through *= transmittance(p, d, depth, state);
+            const double way = glm::distance(glm::dvec3(p.event), glm::dvec3(ray.origin));
             // Leaving an object whose interior fades light: by the way
             // inside (POV-Ray's ComputeShadowTexture, which wants a power
             // above 0 too).
-            if (glm::dot(p.geometric_normal, d) > 0.0) {
-                const double inside = glm::distance(glm::dvec3(p.event), glm::dvec3(ray.origin));
+            if (glm::dot(p.geometric_normal, d) > 0.0)
                 if (const auto fade = p.texture->fade_at(p.event.w); fade && fade->power > 0.0)
-                    through *= fade->through(inside);
-                // Its media's extinction on the way through (the media of
-                // the shadow ray's interiors, ComputeShadowColour).
-                if (const runtime::MediaVolume* media = p.texture->media();
-                    media && hit->object->flags().hollow)
-                    through = shadow_media(through, ray, inside, *media);
-            }
+                    through *= fade->through(way);
+            // The media of the interiors the ray is in, on the way here
+            // (ComputeShadowColour), then in or out of this one: out when
+            // the list holds it, else in (ComputeShadowMedia's rule).
+            if (around.has_media() && around.hollow())
+                through = shadow_media(through, ray, way, around);
+            const runtime::MediaVolume* media = p.texture->media();
+            const Inside::Entry crossed{
+                media ? static_cast<const void*>(media) : static_cast<const void*>(hit->object),
+                media, hit->object->flags().hollow};
+            if (around.contains(crossed.key))
+                around = around.without(crossed.key);
+            else if (media || !crossed.hollow)
+                around = around.with(crossed);
             // POV-Ray's full shadow: below its EPSILON in every channel.
             if (std::max({std::fabs(through.x), std::fabs(through.y), std::fabs(through.z)}) <
                 1.0e-10)
@@ -496,7 +504,7 @@ glm::dvec3 Shader::through_volume(const glm::dvec3& colour, const Ray4& ray, dou
         MediaRandom random(seed);
         const MediaLightFn light_at = [&](std::size_t i, const glm::dvec3& point,
                                           glm::dvec3& to_light) {
-            return media_light(i, point, m.time, level, to_light, state);
+            return media_light(i, point, m.time, level, around, to_light, state);
         };
         if (interiors) {
             std::vector<const runtime::MediaVolume::One*> media;
@@ -517,21 +525,36 @@ glm::dvec3 Shader::through_volume(const glm::dvec3& colour, const Ray4& ray, dou
 
 glm::dvec3 Shader::shadow_media(const glm::dvec3& light, const Ray4& ray, double depth,
                                 const runtime::MediaVolume& volume) const {
+    std::vector<const runtime::MediaVolume::One*> media;
+    for (const auto& one : volume.media()) media.push_back(&one);
+    return shadow_media(light, ray, depth, std::move(media));
+}
+
+glm::dvec3 Shader::shadow_media(const glm::dvec3& light, const Ray4& ray, double depth,
+                                const Inside& around) const {
+    std::vector<const runtime::MediaVolume::One*> media;
+    for (int i = 0; i < around.count; ++i)
+        if (const runtime::MediaVolume* v = around.entries[std::size_t(i)].media)
+            for (const auto& one : v->media()) media.push_back(&one);
+    return shadow_media(light, ray, depth, std::move(media));
+}
+
+glm::dvec3 Shader::shadow_media(const glm::dvec3& light, const Ray4& ray, double depth,
+                                std::vector<const runtime::MediaVolume::One*> media) const {
     MediaRay m;
     m.origin = glm::dvec3(ray.origin);
     m.direction = glm::normalize(glm::dvec3(ray.direction));
     m.depth = depth;
     m.time = ray.origin.w;
     m.shadow = true;
-    std::vector<const runtime::MediaVolume::One*> media;
-    for (const auto& one : volume.media()) media.push_back(&one);
     // (A shadow ray gathers no light, so it draws no numbers but jitter's.)
     MediaRandom random(std::uint64_t(depth * 1.0e6));
     return through_media(media, m, {}, random, {}, light);
 }
 
 glm::dvec3 Shader::media_light(std::size_t index, const glm::dvec3& point, double t, int level,
-                               glm::dvec3& to_light, ThreadState& state) const {
+                               const Inside& around, glm::dvec3& to_light,
+                               ThreadState& state) const {
     // POV-Ray's TestShadow from the sample: the light's ray, its
     // attenuation, and its shadow ray (a shadowless light casts none).
     const ShadedLight& light = lights_[index];
@@ -560,7 +583,7 @@ glm::dvec3 Shader::media_light(std::size_t index, const glm::dvec3& point, doubl
     if (!light.shadowless() && reach > 0.0) {
         ++state.counters.shadow_rays;
         if (blocked(shadow, reach, state)) return glm::dvec3(0.0);
-        if (filtering_) colour *= filtered(shadow, reach, level, state);
+        if (filtering_) colour *= filtered(shadow, reach, level, around, state);
     }
     if (light.media_attenuation() && reach > 0.0) {
         if (atmosphere_) colour = shadow_media(colour, shadow, reach, *atmosphere_);

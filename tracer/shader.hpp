@@ -151,7 +151,13 @@ class Shader {
     // ComputeShadowColour): along a shadow ray that nothing opaque blocks,
     // each surface of an object that casts shadows, nearest first, filters
     // the light by its texture there; `depth` picks the scratch texture.
-    glm::dvec3 filtered(runtime::Ray4 ray, double reach, int depth, ThreadState& state) const;
+    // The ray starts in the interiors `around` (the list of the ray whose
+    // hit or media sample it lights, as POV-Ray copies it) and crosses in
+    // or out of each object it meets (ComputeShadowMedia); between two
+    // surfaces the media of every interior it is in dim the light, when
+    // all are hollow (ComputeShadowColour).
+    glm::dvec3 filtered(runtime::Ray4 ray, double reach, int depth, Inside around,
+                        ThreadState& state) const;
     // projected_through: whether `ray` toward `light` meets its object
     // before `reach`; then `reach` ends at the meeting.
     static bool projected(const ShadedLight& light, const runtime::Ray4& ray, double& reach);
@@ -183,10 +189,16 @@ class Shader {
     // interior's).
     glm::dvec3 shadow_media(const glm::dvec3& light, const runtime::Ray4& ray, double depth,
                             const runtime::MediaVolume& volume) const;
+    // The same through the media of every interior in `around`, together.
+    glm::dvec3 shadow_media(const glm::dvec3& light, const runtime::Ray4& ray, double depth,
+                            const Inside& around) const;
+    glm::dvec3 shadow_media(const glm::dvec3& light, const runtime::Ray4& ray, double depth,
+                            std::vector<const runtime::MediaVolume::One*> media) const;
     // The light of light `index` arriving at `point` in media at time t,
-    // after its shadow ray (MediaLightFn).
+    // after its shadow ray (MediaLightFn), which starts in the interiors
+    // `around` (the viewing ray's).
     glm::dvec3 media_light(std::size_t index, const glm::dvec3& point, double t, int level,
-                           glm::dvec3& to_light, ThreadState& state) const;
+                           const Inside& around, glm::dvec3& to_light, ThreadState& state) const;
 
     const RayQuery& query_;
     LightTravel travel_;

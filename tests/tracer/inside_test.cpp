@@ -1,9 +1,9 @@
 // The refraction list a ray carries (tracer/inside.hpp): POV-Ray 3.7's
 // rules for the iors a surface separates (ComputeRefraction) and for the
 // relative ior Fresnel reflection sees there (ComputeRelativeIOR).
-#include <catch2/catch.hpp>
-
 #include "tracer/inside.hpp"
+
+#include <catch2/catch.hpp>
 
 using hexant::tracer::Inside;
 

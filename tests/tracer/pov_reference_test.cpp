@@ -462,42 +462,6 @@ TEST_CASE("fog fills hollow objects, not solid ones, as in POV-Ray 3.7", "[trace
     check_stills("fog", "light_fog", {"0", "0.5"});
 }
 
-TEST_CASE("media emit, absorb and scatter as in POV-Ray 3.7", "[tracer][pov][media]") {
-    // media/emission.pov: emitting media in a hollow glass sphere (a
-    // spherical density with turbulence through a colour map, moving with
-    // clock) and a box of constant emission. media/scattering.pov: two
-    // media in one box, Henyey-Greenstein and isotropic with a bozo
-    // density, lit by a spotlight whose cone cuts the rays into lit and
-    // unlit intervals, and the box's shadow dimmed by their extinction.
-    // media/atmosphere.pov: media { } at the top (Rayleigh), a light with
-    // media_attenuation and a cylinder light's beam. The still's
-    // tolerance: all six agreed exactly when written (method 3's adaptive
-    // sampling is deterministic without jitter); before, media drew
-    // nothing (the sphere and box showed the floor through them) and the
-    // atmosphere was refused.
-    check_stills("media", "emission", {"0", "0.5"});
-    check_stills("media", "scattering", {"0", "0.5"});
-    check_stills("media", "atmosphere", {"0", "0.5"});
-    // media/density_file.pov: an 8-bit .df3 file (blob.df3, made by the
-    // script in the README) as the density of emitting media, without
-    // interpolation, trilinear and tricubic, turning with clock. The
-    // still's tolerance (exact when written; refused before).
-    check_stills("media", "density_file", {"0", "0.5"});
-    // media/solid_in_media.pov: a glass ball that is not hollow inside
-    // glowing media blocks it, a hollow one lets it through. The still's
-    // tolerance (exact when written); a shortcut that skipped the solid's
-    // inside test where the scene had no fog put the glow inside the
-    // glass: 418 pixels off.
-    check_stills("media", "solid_in_media", {"0", "0.5"});
-    // media/camera_in_media.pov, camera_in_solid.pov: every camera ray
-    // starts in the interiors that hold the eye (media; a solid that is
-    // not hollow, which keeps fog out). The still's tolerance (exact when
-    // written); before, only rays that left the ball before meeting
-    // anything were known to start in it: 0.073 and 0.104 mean error.
-    check_stills("media", "camera_in_media", {"0", "0.5"});
-    check_stills("media", "camera_in_solid", {"0", "0.5"});
-}
-
 TEST_CASE("projected_through lights only through its object, as in POV-Ray 3.7", "[tracer][pov]") {
     // lights/projected.pov: a light through a torus and a box moving with
     // clock (their twin in the scene shadows nothing), a shadowless light
