@@ -487,8 +487,11 @@ glm::dvec3 Shader::through_volume(const glm::dvec3& colour, const Ray4& ray, dou
         for (std::size_t i = 0; i < lights_.size(); ++i) {
             const ShadedLight& light = lights_[i];
             if (!light.media_interaction() || !light.shines_at(m.time)) continue;
-            // (A light_group's lights light its members' surfaces only.)
-            if (light_group_of_[i] >= 0) continue;
+            // (A light_group's lights light its members' surfaces only; a
+            // shadowless one, POV-Ray's fill light, lights no media: its
+            // ComputeOneMediaLightInterval takes point, spot and cylinder
+            // lights only.)
+            if (light_group_of_[i] >= 0 || light.shadowless()) continue;
             double s0 = 0.0, s1 = 0.0;
             if (!light.media_interval(m.origin, m.direction, m.time, s0, s1)) continue;
             // (POV-Ray's SMALL_TOLERANCE: a beam that ends at the eye.)
