@@ -350,6 +350,13 @@ void build_split(const ObjectRecord& record, const Inherited& parent,
     }
     Inherited down = handed_down(record, parent);
     down.interior_key = shared_interior(down.interior_key);
+    // (Its interior's media, one volume for all its members, as
+    // build_shape makes a group's.)
+    if (record.interior) {
+        down.media = nullptr;
+        if (!down.interior->media.empty())
+            down.media = std::make_shared<const MediaVolume>(down.interior->media);
+    }
     down.lifetime = record.lifetime.intersect(parent.lifetime);
     if (!record.limits) {
         for (const auto& child : csg->children) build_split(*child, down, out);

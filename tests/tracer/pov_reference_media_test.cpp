@@ -45,7 +45,8 @@ TEST_CASE("media emit, absorb and scatter as in POV-Ray 3.7", "[tracer][pov][med
     check_stills("media", "camera_in_solid", {"0", "0.5"});
 }
 
-TEST_CASE("a shadow ray is dimmed by the media of every interior it is in", "[tracer][pov][media]") {
+TEST_CASE("a shadow ray is dimmed by the media of every interior it is in",
+          "[tracer][pov][media]") {
     // media/overlapping_media.pov: two overlapping hollow boxes of
     // scattering media (one sliding with clock) and a glass ball that is
     // not hollow; POV-Ray's shadow rays start with the viewing ray's
@@ -60,11 +61,10 @@ TEST_CASE("a shadow ray is dimmed by the media of every interior it is in", "[tr
     // steps keep the fault this test is for (17% off) far outside.
     for (const char* clock : {"0", "0.5"}) {
         INFO("clock " << clock);
-        const Agreement a =
-            agree(render(kFolder / "media" / "overlapping_media.pov",
-                         "--clock " + std::string(clock), "hexant_pov_overlapping_media", 0,
-                         "-W 64 -H 48"),
-                  read_png(kFolder / "media" / ("overlapping_media_" + std::string(clock) + ".png")));
+        const Agreement a = agree(
+            render(kFolder / "media" / "overlapping_media.pov", "--clock " + std::string(clock),
+                   "hexant_pov_overlapping_media", 0, "-W 64 -H 48"),
+            read_png(kFolder / "media" / ("overlapping_media_" + std::string(clock) + ".png")));
         INFO("within " << a.within << " of " << a.total << ", mean " << a.mean << ", worst "
                        << a.worst);
         CHECK(a.within >= a.total * 985 / 1000);
@@ -79,4 +79,13 @@ TEST_CASE("a shadowless light lights no media, as in POV-Ray 3.7", "[tracer][pov
     // (exact when written). Before, the shadowless light lit the media: a
     // third of the pixels off (mean 19 steps).
     check_stills("media", "shadowless_media", {"0", "0.5"});
+}
+
+TEST_CASE("a union's interior media reach its members", "[tracer][pov][media]") {
+    // media/union_media.pov: absorbing and emitting media in a hollow glass
+    // union's own interior (members apart, turning with clock) and in a
+    // second union. The still's tolerance (exact when written, one pixel
+    // off at clock 0.5). Before, a union split into its members lost its
+    // interior's media: 32% and 31% of the pixels off, in silence.
+    check_stills("media", "union_media", {"0", "0.5"});
 }
