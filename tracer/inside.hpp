@@ -82,12 +82,16 @@ struct Inside {
             if (passed[std::size_t(i)].key == key) return true;
         return false;
     }
-    // The list with interior `key` (index `ior`) entered last, unless it
-    // is on it already (a camera ray's start, POV-Ray's AppendInteriors).
-    Inside entered(const void* key, double ior) const {
+    // The list with interior `key` (index `ior`) entered last, unless
+    // `once` and it is on it already (a camera ray's start, POV-Ray's
+    // AppendInteriors: the members of a union split apart that hold the
+    // eye each list the union's interior, so that the ray passes straight
+    // through the inner surfaces and bends where it leaves the last).
+    Inside entered(const void* key, double ior, bool once = true) const {
         Inside out = *this;
-        for (int i = 0; i < passed_count; ++i)
-            if (passed[std::size_t(i)].key == key) return out;
+        if (once)
+            for (int i = 0; i < passed_count; ++i)
+                if (passed[std::size_t(i)].key == key) return out;
         if (out.passed_count < kMost) out.passed[std::size_t(out.passed_count++)] = {key, ior};
         return out;
     }

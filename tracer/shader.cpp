@@ -367,7 +367,7 @@ Inside Shader::inside_at(const runtime::Event& event) const {
                 around.with({media ? static_cast<const void*>(media) : static_cast<const void*>(o),
                              media, o->flags().hollow});
         if (const auto r = o->refractive_interior(event.w); r.key)
-            around = around.entered(r.key, r.ior);
+            around = around.entered(r.key, r.ior, r.once);
     }
     return around;
 }

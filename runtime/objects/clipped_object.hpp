@@ -40,8 +40,12 @@ class ClippedObject final : public IntelligentObject {
     bool filters_light() const override { return object_->filters_light(); }
     bool casts_full_shadow() const override { return object_->casts_full_shadow(); }
     const MediaVolume* interior_media() const override { return object_->interior_media(); }
+    // (POV-Ray keeps a clipped union whole: its interior is entered once
+    // however many of its members hold the eye.)
     RefractiveInterior refractive_interior(double t) const override {
-        return object_->refractive_interior(t);
+        RefractiveInterior r = object_->refractive_interior(t);
+        r.once = true;
+        return r;
     }
 
   private:

@@ -194,9 +194,13 @@ class IntelligentObject {
     // Its interior as refraction knows it at time t (the identity its
     // surfaces' hits carry, TextureEvaluator::interior_key, and its ior):
     // what a camera ray that starts inside it has entered.
+    // (`once`: entered once however many objects sharing it hold the eye;
+    // else once per object, as POV-Ray's InitRayContainerState lists the
+    // members of a union it split apart, each with the union's interior.)
     struct RefractiveInterior {
         const void* key = nullptr;  // null: none
         double ior = 1.0;
+        bool once = false;
     };
     virtual RefractiveInterior refractive_interior(double) const { return {}; }
 
