@@ -26,6 +26,17 @@ glm::dvec3 rgb(const runtime::ColourFunction& c, double t) {
 // POV-Ray stops following rays whose contribution falls below its
 // adc_bailout (1/255).
 constexpr double kBailout = 1.0 / 255.0;
+}  // namespace
+
+// The relative ior a layer's reflectivity reads: only Fresnel reads it, and
+// only then is the refraction list (and, for a camera ray leaving an
+// unknown interior, an inside test) consulted.
+double Shader::fresnel_ior(const Hit& h, const runtime::MaterialSample& m) {
+    return m.reflection_fresnel ? h.relative_ior(m.ior) : 1.0;
+}
+
+namespace {
+
 // POV-Ray's EPSILON, on a ratio of iors near 1.
 constexpr double kEpsilon = 1e-10;
 // The straight passes one path may make at one trace level (ThreadState::
@@ -285,13 +296,13 @@ glm::dvec3 Shader::filtered(Ray4 ray, double reach, int depth, Inside around,
             if (around.has_media() && around.hollow())
                 through = shadow_media(through, ray, way, around);
             const runtime::MediaVolume* media = p.texture->media();
-            const Inside::Entry crossed{
+            const Inside::Entry met{
                 media ? static_cast<const void*>(media) : static_cast<const void*>(hit->object),
                 media, hit->object->flags().hollow};
-            if (around.contains(crossed.key))
-                around = around.without(crossed.key);
-            else if (media || !crossed.hollow)
-                around = around.with(crossed);
+            if (around.contains(met.key))
+                around = around.without(met.key);
+            else if (media || !met.hollow)
+                around = around.with(met);
             // POV-Ray's full shadow: below its EPSILON in every channel.
             if (std::max({std::fabs(through.x), std::fabs(through.y), std::fabs(through.z)}) <
                 1.0e-10)
@@ -693,7 +704,7 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
         if (m.conserve_energy && reflects(m))
             through *= glm::min(
                 glm::dvec3(1.0),
-                glm::dvec3(1.0) - reflectivity(m, -glm::dot(h.d, n), h.relative_ior(m.ior)).colour);
+                glm::dvec3(1.0) - reflectivity(m, -glm::dot(h.d, n), fresnel_ior(h, m)).colour);
         trans = std::min(1.0, std::fabs(0.297 * through.x + 0.589 * through.y + 0.114 * through.z));
     }
     if (h.depth - state.straight_passes >= max_trace_level_) return colour;
@@ -761,7 +772,7 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
         const runtime::MaterialSample& m = layer.material;
         if (!reflects(m)) continue;
         if (total_internal_reflection && layer.normal == layers[0].normal) continue;
-        const Reflectivity r = reflectivity(m, -glm::dot(h.d, layer.normal), h.relative_ior(m.ior));
+        const Reflectivity r = reflectivity(m, -glm::dot(h.d, layer.normal), fresnel_ior(h, m));
         if (r.colour == glm::dvec3(0.0)) continue;
         // (The weight of the layer: what shows through the ones above it;
         // POV-Ray's, untinted by metallic.)

@@ -132,6 +132,7 @@ class Shader {
             return out;
         }
     };
+    static double fresnel_ior(const Hit& h, const runtime::MaterialSample& m);
     // The colour of one plain texture (its `count` layers, top first) at
     // the hit; `seen` keeps what is known of each light across the plain
     // textures and layers of the hit (null: one layer, nothing to keep).
