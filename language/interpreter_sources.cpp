@@ -13,6 +13,7 @@
 #include "language/interpreter_state.hpp"
 #include "language/keyword_rules.hpp"
 #include "runtime/objects/parameter_check.hpp"
+#include "runtime/scene/coincident_faces.hpp"
 
 namespace hexant::language {
 
@@ -141,6 +142,41 @@ void Interpreter::finish_reading([[maybe_unused]] const std::string& name) {
                      "rule); add `#version 3.7;` and global_settings { assumed_gamma 1 } to "
                      "make them agree");
     }
+    report_coincident_faces();
+}
+
+void Interpreter::report_coincident_faces() {
+    const auto report = runtime::find_coincident_faces(scene.objects, scene.default_texture);
+    // "the box at P (part of the union at Q)", or less where they coincide.
+    auto named = [](const runtime::CoincidentFaces::Side& side, bool place) {
+        std::string text = std::string(side.kind) + (place ? " at " + side.place.to_string() : "");
+        if (side.top.to_string() != side.place.to_string())
+            text +=
+                " (part of the " + std::string(side.top_kind) + " at " + side.top.to_string() + ")";
+        return text;
+    };
+    for (const auto& pair : report.pairs) {
+        const bool copies = pair.first.place.to_string() == pair.second.place.to_string();
+        std::string message =
+            (copies ? "two copies of this " + named(pair.first, false) +
+                          (pair.second.top.to_string() != pair.first.top.to_string()
+                               ? " and of the " + named(pair.second, false)
+                               : std::string())
+                    : "this " + named(pair.first, false) + " and the " + named(pair.second, true)) +
+            " have flat faces in one plane that overlap: where a ray meets both at once, "
+            "rounding decides which it sees, in POV-Ray as in hexant, so the images may differ "
+            "there (coincident surfaces); move one apart by a little";
+        if (options.strict) {
+            SceneError error(message + " (an error under --strict)", place(pair.first.place));
+            if (!copies) error.add_context(place(pair.second.place, "the other object"));
+            throw error;
+        }
+        say_warning(pair.first.place.to_string() + ": warning: " + message);
+    }
+    if (report.more > 0)
+        say_warning("warning: " + std::to_string(report.more) +
+                    " more pairs of objects have coincident flat faces (the first " +
+                    std::to_string(report.pairs.size()) + " are named above)");
 }
 
 }  // namespace hexant::language

@@ -197,8 +197,11 @@ class Interpreter {
     // Where image maps were read (warned at the end in a legacy-gamma scene).
     std::vector<p::position> image_maps_read;
     // After the whole scene is read: what holds only then (the legacy
-    // gamma rule's warning).
+    // gamma rule's warning, coincident faces).
     void finish_reading(const std::string& name);
+    // A warning at each pair of objects whose flat faces coincide
+    // (runtime/scene/coincident_faces.hpp); errors under --strict.
+    void report_coincident_faces();
     // The user functions being read, innermost last: each one's parameter
     // names (grammar/functions.hpp), and the names of the one whose head is
     // being read (given: whether it wrote a list, empty or not).

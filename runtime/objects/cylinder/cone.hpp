@@ -4,7 +4,9 @@
 
 #include <array>
 #include <string_view>
+#include <vector>
 
+#include "runtime/objects/flat_face.hpp"
 #include "runtime/objects/shape_kind.hpp"
 #include "runtime/time/vector_function.hpp"
 
@@ -41,6 +43,15 @@ struct Cone {
         f("cap", "cap point", cap);
         f("cap_radius", "cap radius", cap_radius);
         f("open", "open", open);
+    }
+    // Its end caps of radius > 0, facing out along the axis (none when open).
+    std::vector<objects::FlatFace> flat_faces(double t) const {
+        std::vector<objects::FlatFace> faces;
+        if (open) return faces;
+        const glm::dvec3 b = base(t), c = cap(t);
+        objects::add_circle_face(faces, b, b - c, base_radius(t), false);
+        objects::add_circle_face(faces, c, c - b, cap_radius(t), false);
+        return faces;
     }
 };
 

@@ -4,7 +4,9 @@
 
 #include <array>
 #include <string_view>
+#include <vector>
 
+#include "runtime/objects/flat_face.hpp"
 #include "runtime/objects/shape_kind.hpp"
 #include "runtime/time/vector_function.hpp"
 
@@ -36,6 +38,12 @@ struct Disc {
         f("normal", "normal", normal);
         f("radius", "radius", radius);
         f("hole_radius", "hole radius", hole_radius);
+    }
+    // Its outer circle (the hole left out of the check), seen from both sides.
+    std::vector<objects::FlatFace> flat_faces(double t) const {
+        std::vector<objects::FlatFace> faces;
+        objects::add_circle_face(faces, center(t), normal(t), radius(t), true);
+        return faces;
     }
 };
 

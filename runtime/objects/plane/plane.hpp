@@ -5,7 +5,9 @@
 
 #include <array>
 #include <string_view>
+#include <vector>
 
+#include "runtime/objects/flat_face.hpp"
 #include "runtime/objects/shape_kind.hpp"
 #include "runtime/time/vector_function.hpp"
 
@@ -18,6 +20,9 @@ class PlaneModel;
 struct Plane {
     static constexpr std::string_view keyword = "plane";
     using Model = objects::PlaneModel;
+    // Its solid is exactly what lies behind all its flat faces (the
+    // coincident-faces check cuts a CSG's other members by it).
+    static constexpr bool kConvexPolyhedron = true;
 
     Vector3Function normal;
     TimeFunction distance;
@@ -31,6 +36,13 @@ struct Plane {
     void parameters(F&& f) const {
         f("normal", "normal", normal);
         f("distance", "distance", distance);
+    }
+    // The whole plane (a zero normal: none, as the shape is empty).
+    std::vector<objects::FlatFace> flat_faces(double t) const {
+        const glm::dvec3 n = normal(t);
+        const double length = glm::length(n);
+        if (!(length > 0.0)) return {};
+        return {objects::FlatFace{n, n / length * distance(t), {}, false}};
     }
 };
 

@@ -5,7 +5,9 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
+#include "runtime/objects/flat_face.hpp"
 #include "runtime/objects/shape_kind.hpp"
 #include "runtime/time/vector_function.hpp"
 
@@ -41,6 +43,13 @@ struct Triangle {
     }
     void set(std::string_view, const objects::ShapeArguments& value) {
         uv_vectors = objects::read_uv_vectors(value);
+    }
+    // Itself, seen from both sides (a degenerate one: none).
+    std::vector<objects::FlatFace> flat_faces(double t) const {
+        const glm::dvec3 a = points[0](t), b = points[1](t), c = points[2](t);
+        const glm::dvec3 n = glm::cross(b - a, c - a);
+        if (!(glm::length(n) > 0.0)) return {};
+        return {objects::FlatFace{n, a, {a, b, c}, true}};
     }
     std::optional<std::string> standalone_error() const {
         if (!uv_vectors) return std::nullopt;
