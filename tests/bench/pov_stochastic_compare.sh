@@ -18,12 +18,18 @@ EX=${EXAMPLES:-/usr/share/doc/povray/examples}
 INC=${INCLUDES:-/usr/share/povray-3.7/include}
 OUT=${OUT:-$(mktemp -d -t hexant_stochastic.XXXXXX)}
 SCALE=${SCALE:-8}; SPP=${SPP:-64}
+# The working space the samples are averaged in, as each renderer averages
+# them: linear light, or a scene's assumed_gamma G (WORKING_GAMMA=G;
+# isocacti's 1.3), where averaging fine detail in the wrong space alone
+# shifts the mean by several steps.
+WG=${WORKING_GAMMA:-1}
 mkdir -p "$OUT"
 for s in "$@"; do
   n=${s//\//__}; d=$(dirname "$s"); f=$(basename "$s")
   ( cd "$EX/$d" && timeout 1200 nice povray +I"$f" +O"$OUT/$n.big.png" +W$((80 * SCALE)) +H$((60 * SCALE)) -D -A +K0 \
       +L"$INC" +FN -GA >/dev/null 2>&1 )
-  oiiotool "$OUT/$n.big.png" --colorconvert sRGB linear --resize:filter=box 80x60 \
+  oiiotool "$OUT/$n.big.png" --colorconvert sRGB linear --powc "$(python3 -c "print(1 / $WG)")" \
+      --resize:filter=box 80x60 --powc "$WG" \
       --colorconvert linear sRGB -o "$OUT/$n.pov.png"
   ( cd "$EX/$d" && timeout 1200 "$HX" render "$f" -L "$INC" -W 80 -H 60 --clock 0 --spp "$SPP" \
       --shutter 0 -o "$OUT/$n.hx.png" >/dev/null 2>"$OUT/$n.err" )

@@ -146,8 +146,10 @@ std::optional<std::pair<double, double>> first_crossing(const IsosurfaceGeometry
     return std::nullopt;
 }
 
-// POV-Ray's normal of a sampled F (IsoSurface::Normal): forward
-// differences over `accuracy`.
+// POV-Ray's normal (IsoSurface::Normal): forward differences over
+// `accuracy`. Not the exact gradient: where F turns within that step (the
+// ridges of a cactus near its axis) the two differ by tenths, and the
+// scene's look, and the normals trace() hands it, are POV-Ray's.
 glm::dvec3 difference_gradient(const IsosurfaceGeometry& g, const glm::dvec3& p) {
     const double f = g.function.at(p, g.time);
     glm::dvec3 n;
@@ -168,7 +170,7 @@ SurfaceHit make_hit(const IsosurfaceGeometry& g, const LocalRay& r, double k, in
     hit.uv = glm::dvec2(0.0);
     glm::dvec3 n = wall_normal;
     if (part == 0) {
-        n = g.sampled ? difference_gradient(g, hit.point) : g.function.gradient(hit.point, g.time);
+        n = difference_gradient(g, hit.point);
         const double length = safe_length(n);
         n = length > 0.0 && std::isfinite(length) ? n / length : glm::dvec3(1.0, 0.0, 0.0);
     }

@@ -28,11 +28,10 @@
 // POV-Ray's: right where max_gradient holds, and a steeper F can miss the
 // surface as it does in POV-Ray.
 //
-// Hits: part 0 on F = T, with the gradient of F (forward-mode derivative,
-// exact where POV-Ray differences by `accuracy`; sampled, POV-Ray's
-// forward differences) as normal, and POV-Ray's (1, 0, 0) where the
-// gradient is zero; part 1 on the container's walls, with the wall's
-// normal. uv (0, 0). inside: in C and F - T <= 0.
+// Hits: part 0 on F = T, with POV-Ray's normal, F's forward differences
+// over `accuracy` (not the exact gradient: the look and trace()'s normals
+// are POV-Ray's), and its (1, 0, 0) where they are all zero; part 1 on the container's walls, with
+// the wall's normal. uv (0, 0). inside: in C and F - T <= 0.
 #pragma once
 
 #include <optional>
