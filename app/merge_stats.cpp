@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <ostream>
 #include <stdexcept>
@@ -11,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/command_line.hpp"
+#include "language/source_files.hpp"
 #include "tracer/whole_file.hpp"
 
 namespace hexant::app {
@@ -34,10 +34,16 @@ bool is_ratio(const std::string& row) {
 }
 
 json read_json(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) throw std::runtime_error(path + ": cannot be read");
+    // A regular file of sane size only (a FIFO blocked merge-stats forever).
+    constexpr std::size_t kMostStatsBytes = std::size_t(256) << 20;
+    std::string text;
     try {
-        return json::parse(in);
+        text = language::read_source_text(path, kMostStatsBytes);
+    } catch (const std::runtime_error& e) {
+        throw std::runtime_error(path + ": cannot be read: " + e.what());
+    }
+    try {
+        return json::parse(text);
     } catch (const json::exception& e) {
         throw std::runtime_error(path + ": not JSON (" + e.what() + ")");
     }

@@ -5,9 +5,10 @@
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
+
+#include "language/source_files.hpp"
 
 namespace hexant::language {
 
@@ -273,11 +274,16 @@ IniSettings parse_ini_text(const std::string& text, const std::string& name, con
 }
 
 IniSettings read_ini_file(const fs::path& path, const std::string& section) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw std::runtime_error("cannot read " + path.string());
-    std::ostringstream text;
-    text << in.rdbuf();
-    return parse_ini_text(text.str(), path.string(), path.parent_path(), section);
+    // A regular file of sane size only: a FIFO named as the .ini blocked
+    // the run forever, /dev/zero would fill the memory.
+    constexpr std::size_t kMostIniBytes = std::size_t(16) << 20;
+    std::string text;
+    try {
+        text = read_source_text(path, kMostIniBytes);
+    } catch (const std::runtime_error& e) {
+        throw std::runtime_error("cannot read " + path.string() + ": " + e.what());
+    }
+    return parse_ini_text(text, path.string(), path.parent_path(), section);
 }
 
 std::optional<IniReference> ini_reference(const std::string& argument) {

@@ -13,6 +13,7 @@
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
+#include <sys/stat.h>
 
 #include "app/merge_stats.hpp"
 
@@ -191,6 +192,10 @@ TEST_CASE("merge-stats refuses what is not one mode's statistics, naming the fil
     CHECK_THROWS_WITH(merge_stats({(folder / "c.json").string()}, out), Catch::Contains("c.json"));
     CHECK_THROWS_WITH(merge_stats({(folder / "none.json").string()}, out),
                       Catch::Contains("none.json"));
+    // A FIFO is refused, not waited on forever (issue 45).
+    REQUIRE(mkfifo((folder / "fifo.json").c_str(), 0600) == 0);
+    CHECK_THROWS_WITH(merge_stats({(folder / "fifo.json").string()}, out),
+                      Catch::Contains("fifo.json") && Catch::Contains("not a regular file"));
     CHECK_FALSE(fs::exists(out));
     // (Found by a fresh user: a file named twice was counted twice, the
     // output could overwrite a window's file, a row of text merged to

@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include <catch2/catch.hpp>
+#include <sys/stat.h>
 
 namespace fs = std::filesystem;
 using hexant::language::ini_reference;
@@ -181,4 +182,9 @@ TEST_CASE("ini: a file on disk, relative paths from its folder", "[language][ini
     CHECK(s.width == 7);
     REQUIRE_THROWS_WITH(hexant::language::read_ini_file(folder / "missing.ini"),
                         Catch::Contains("cannot read"));
+    // A FIFO named as the .ini is refused, not waited on forever (issue 45).
+    fs::remove(folder / "fifo.ini");
+    REQUIRE(mkfifo((folder / "fifo.ini").c_str(), 0600) == 0);
+    REQUIRE_THROWS_WITH(hexant::language::read_ini_file(folder / "fifo.ini"),
+                        Catch::Contains("fifo.ini") && Catch::Contains("not a regular file"));
 }
