@@ -29,6 +29,12 @@ constexpr double kRelative = 1e-9;
 // Overlapping pairs examined at most: a pathological pile of coincident
 // copies stops the search, not the reading.
 constexpr std::size_t kMostExamined = 1'000'000;
+// Faces collected at most (a union doubled twenty times holds 2^20 boxes):
+// the check's memory stays bounded; past it the rest take no part.
+constexpr std::size_t kMostFaces = std::size_t(1) << 18;
+// Half-spaces a member is cut by at most (a chain of 10^4 nested
+// intersections would copy a growing list at each level).
+constexpr std::size_t kMostClips = 96;
 // Members nested deeper than this in CSGs take no part (the walk recurses;
 // objects may nest 10,000 deep, runtime/objects/object.hpp).
 constexpr int kMostNesting = 256;
@@ -126,8 +132,11 @@ struct Aabb {
 // difference within its first). Depth-limited like every record walk.
 std::optional<Aabb> world_bound(const ObjectRecord& record, const glm::dmat4& parent,
                                 int depth = 0) {
+    // (A CSG's own shape_depends_on_time() walks all its members: each
+    // member is asked alone below.)
     if (depth > 64 || record.inverse || record.transform.depends_on_time() ||
-        record.transform.has_deformation() || record.shape_depends_on_time())
+        record.transform.has_deformation() ||
+        (!std::holds_alternative<Csg>(record.shape) && record.shape_depends_on_time()))
         return std::nullopt;
     const glm::dmat4 matrix = parent * record.transform.matrix_at(0.0);
     if (const auto* group = std::get_if<Csg>(&record.shape)) {
@@ -218,7 +227,7 @@ struct Walker {
         // Within its world box, whatever its shape.
         if (inside_of)
             if (const auto box = world_bound(member, matrix)) {
-                for (int a = 0; a < 3; ++a) {
+                for (int a = 0; a < 3 && clips.planes.size() + 2 <= kMostClips; ++a) {
                     glm::dvec3 n(0.0);
                     n[a] = 1.0;
                     clips.planes.push_back({n, box->hi[a], &member});
@@ -244,6 +253,7 @@ struct Walker {
             const double length = glm::length(face.normal);
             if (!(length > 0.0) || !std::isfinite(length)) continue;
             const glm::dvec3 n = (inside ? 1.0 : -1.0) * face.normal / length;
+            if (clips.planes.size() >= kMostClips) break;
             clips.planes.push_back({n, glm::dot(n, face.point), &member});
             if (inside)
                 clips.hull.insert(clips.hull.end(), face.corners.begin(), face.corners.end());
@@ -275,12 +285,12 @@ struct Walker {
                 for (std::size_t i = 0; i < group->children.size(); ++i)
                     if (group->children[i]) add_clips(*group, i, matrix, inner);
             for (const auto& child : group->children)
-                if (child)
+                if (child && faces.size() < kMostFaces)
                     visit(*child, matrix, moving, link, texture_source, opaque, life,
                           cuts ? inner : clips, depth + 1);
             return;
         }
-        if (moving) return;
+        if (moving || faces.size() >= kMostFaces) return;
         const auto own = world_faces(record, matrix);
         if (!own || own->empty()) return;
         owners.push_back({&record, top, csg, texture_source, opaque, life});
@@ -312,10 +322,12 @@ struct Walker {
                 out.corners = cut(out.corners, h, kRelative * out.scale);
                 if (out.corners.size() < 3) return;  // cut away
             }
-        int largest = 0;
-        for (int i = 1; i < 3; ++i)
-            if (std::abs(out.normal[i]) > std::abs(out.normal[largest])) largest = i;
-        if (out.normal[largest] < 0.0) {
+        // One sign per plane: the first component that is not zero at the
+        // grouping's resolution is positive (the largest component would
+        // flip with rounding where two are equal, as at 45 degrees).
+        int first = 0;
+        while (first < 2 && std::llround(std::ldexp(out.normal[first], 30)) == 0) ++first;
+        if (out.normal[first] < 0.0) {
             out.normal = -out.normal;
             out.facing = -1.0;
         }
@@ -436,6 +448,16 @@ CoincidentFacesReport find_coincident_faces(const std::vector<ObjectPtr>& object
     auto examine = [&](std::size_t a, std::size_t b, const std::function<bool()>& overlapping) {
         if (faces[a].owner == faces[b].owner || examined >= kMostExamined) return;
         ++examined;
+        // One plane for this pair: within the slack of the smaller face's
+        // coordinates (a vast floor does not widen it for a small box).
+        const Face& fa = faces[a];
+        const Face& fb = faces[b];
+        const double size = std::min(fa.corners.empty() ? INFINITY : fa.scale,
+                                     fb.corners.empty() ? INFINITY : fb.scale);
+        const double near = std::isfinite(size) ? size : 0.0;
+        if (std::abs(fa.offset - fb.offset) >
+            kRelative * (std::min(std::abs(fa.offset), std::abs(fb.offset)) + near))
+            return;
         if (!overlapping || overlapping()) found(faces[a], faces[b]);
     };
     for (std::size_t start = 0; start < faces.size() && examined < kMostExamined;) {
@@ -457,13 +479,18 @@ CoincidentFacesReport find_coincident_faces(const std::vector<ObjectPtr>& object
                 }
                 for (const auto& c : faces[i].corners)
                     flat[i - start].push_back({glm::dot(c, basis.t1), glm::dot(c, basis.t2)});
-                const double s = faces[i].scale;
-                if (area(flat[i - start]) > kRelative * s * s) finite.push_back(i);
+                // Not a sliver (a flat box's sides): area against the
+                // face's own extent, not its distance from the origin.
+                double extent = 0.0;
+                for (const auto& q : flat[i - start])
+                    extent = std::max(extent, glm::length(q - flat[i - start].front()));
+                if (area(flat[i - start]) > kRelative * extent * extent) finite.push_back(i);
             }
             // A whole plane meets every face of its plane.
             for (std::size_t iw = 0; iw < whole.size(); ++iw) {
                 const std::size_t w = whole[iw];
-                for (std::size_t i = iw + 1; i < whole.size(); ++i) examine(w, whole[i], {});
+                for (std::size_t i = iw + 1; i < whole.size() && examined < kMostExamined; ++i)
+                    examine(w, whole[i], {});
                 for (std::size_t i = 0; i < finite.size() && examined < kMostExamined; ++i)
                     examine(w, finite[i], {});
             }

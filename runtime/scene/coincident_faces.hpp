@@ -45,8 +45,9 @@ struct CoincidentFacesReport {
 };
 
 // The scene's coincident faces. `default_texture`: the texture of objects
-// that have none (#default). Cost: O(F log F) in the number of flat faces,
-// plus the overlapping pairs, of which at most 10^6 are examined.
+// that have none (#default). Cost: O(F log F) in the number of flat faces
+// (at most 2^18 are collected), plus the overlapping pairs, of which at
+// most 10^6 are examined.
 CoincidentFacesReport find_coincident_faces(const std::vector<ObjectPtr>& objects,
                                             const Texture& default_texture);
 

@@ -121,6 +121,27 @@ TEST_CASE("the coincidence test does not depend on the scene's scale or turn",
         }
 }
 
+TEST_CASE("the coincidence test holds far from the origin, beside vast faces and at 45 degrees",
+          "[language][coincident]") {
+    // (Found by a fresh user.) Small boxes far away were taken for slivers.
+    CHECK(warned("box { 0, 0.01 pigment { rgb x } translate 500*x }\n"
+                 "box { 0, 0.01 pigment { rgb y } translate 500*x }\n")
+              .size() == 1);
+    // A vast floor's size did not belong in a small box's slack.
+    CHECK(warned("box { <-1e7, -1, -1e7>, <1e7, 0, 1e7> pigment { rgb 1 } }\n"
+                 "box { <-1, 0.01, -1>, <1, 2, 1> " +
+                 kGlass + " }\n")
+              .empty());
+    // Two writings of one plane at 45 degrees took opposite signs.
+    CHECK(warned("plane { x, 0 pigment { rgb 1 } rotate 45*y }\n"
+                 "plane { -z, 0 pigment { rgb x } rotate -45*y }\n")
+              .size() == 1);
+    CHECK(warned("plane { -x, 0 rotate -45*z pigment { rgb 1 } }\n"
+                 "box { <-1, 0, -1>, <1, 2, 1> " +
+                 kGlass + " rotate 45*z }\n")
+              .size() == 1);
+}
+
 TEST_CASE("copies of one object are one pair, and many pairs are counted",
           "[language][coincident]") {
     // Forty copies of one box in one place: one warning, naming the copies.
