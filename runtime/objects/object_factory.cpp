@@ -341,41 +341,57 @@ IntelligentObjectPtr build_shape(const ObjectRecord& record, const Inherited& pa
 
 // A union's children become objects of their own, with what the union
 // hands down; anything else is one object.
-void build_split(const ObjectRecord& record, const Inherited& parent,
+void build_split(const ObjectRecord& root, const Inherited& top,
                  std::vector<IntelligentObjectPtr>& out) {
-    const auto* csg = std::get_if<Csg>(&record.shape);
-    if (!csg || csg->kind != Csg::Kind::Union || record.inverse) {
-        out.push_back(build(record, parent));
-        return;
-    }
-    Inherited down = handed_down(record, parent);
-    down.interior_key = shared_interior(down.interior_key);
-    // (Its interior's media, one volume for all its members, as
-    // build_shape makes a group's.)
-    if (record.interior) {
-        down.media = nullptr;
-        if (!down.interior->media.empty())
-            down.media = std::make_shared<const MediaVolume>(down.interior->media);
-    }
-    down.lifetime = record.lifetime.intersect(parent.lifetime);
-    if (!record.limits) {
-        for (const auto& child : csg->children) build_split(*child, down, out);
-        return;
-    }
-    // Clipping or bounding a union is clipping or bounding each member (a
-    // point is in the union's surface where it is in a member's; a ray
-    // meets the bounds or not whichever member it tests). POV-Ray keeps a
-    // clipped or bounded union whole, with its bounds (its Split_Unions is
-    // off by default); one with a member of no finite extent has a box of
-    // everything, so the bounds' box always gates it.
-    const BuiltLimits limits = build_limits(record, down, parent.csg_depth);
-    std::vector<IntelligentObjectPtr> members;
-    for (const auto& child : csg->children) build_split(*child, down, members);
-    const bool finite =
-        std::all_of(members.begin(), members.end(), [](const auto& m) { return m->bounded(); });
-    for (auto& member : members) {
-        const ObjectFlags flags = member->flags();
-        out.push_back(flagged(limited(std::move(member), limits, true, !finite), flags));
+    // Depth first, members in order, on a stack of its own: unions nest as
+    // deep as objects may (kMaxObjectDepth: a union built up in a loop), and
+    // each level's inheritance (a texture, an interior) is too large for a
+    // thread's stack at that depth (7,000 levels crashed the render).
+    struct Pending {
+        const ObjectRecord* record;
+        std::shared_ptr<const Inherited> parent;
+    };
+    std::vector<Pending> stack{{&root, std::make_shared<const Inherited>(top)}};
+    while (!stack.empty()) {
+        const Pending pending = std::move(stack.back());
+        stack.pop_back();
+        const ObjectRecord& record = *pending.record;
+        const Inherited& parent = *pending.parent;
+        const auto* csg = std::get_if<Csg>(&record.shape);
+        if (!csg || csg->kind != Csg::Kind::Union || record.inverse) {
+            out.push_back(build(record, parent));
+            continue;
+        }
+        auto down = std::make_shared<Inherited>(handed_down(record, parent));
+        down->interior_key = shared_interior(down->interior_key);
+        // (Its interior's media, one volume for all its members, as
+        // build_shape makes a group's.)
+        if (record.interior) {
+            down->media = nullptr;
+            if (!down->interior->media.empty())
+                down->media = std::make_shared<const MediaVolume>(down->interior->media);
+        }
+        down->lifetime = record.lifetime.intersect(parent.lifetime);
+        if (!record.limits) {
+            for (auto child = csg->children.rbegin(); child != csg->children.rend(); ++child)
+                stack.push_back({child->get(), down});
+            continue;
+        }
+        // Clipping or bounding a union is clipping or bounding each member
+        // (a point is in the union's surface where it is in a member's; a
+        // ray meets the bounds or not whichever member it tests). POV-Ray
+        // keeps a clipped or bounded union whole, with its bounds (its
+        // Split_Unions is off by default); one with a member of no finite
+        // extent has a box of everything, so the bounds' box always gates it.
+        const BuiltLimits limits = build_limits(record, *down, parent.csg_depth);
+        std::vector<IntelligentObjectPtr> members;
+        for (const auto& child : csg->children) build_split(*child, *down, members);
+        const bool finite =
+            std::all_of(members.begin(), members.end(), [](const auto& m) { return m->bounded(); });
+        for (auto& member : members) {
+            const ObjectFlags flags = member->flags();
+            out.push_back(flagged(limited(std::move(member), limits, true, !finite), flags));
+        }
     }
 }
 

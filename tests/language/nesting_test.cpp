@@ -8,6 +8,7 @@
 
 #include "language/interpreter.hpp"
 #include "runtime/objects/object.hpp"
+#include "runtime/objects/object_factory.hpp"
 #include "runtime/time/time_function.hpp"
 #include "scene_text.hpp"
 
@@ -122,4 +123,19 @@ TEST_CASE("objects built up too deep are an error where they are made, not a cra
     CHECK(e.message().find("objects nested more than 10000 deep") != std::string::npos);
     CHECK(e.formatted().find("deep.pov:3:") != std::string::npos);
     CHECK(read(loop(hexant::runtime::kMaxObjectDepth - 10)) == "");
+}
+
+TEST_CASE("a union nested as deep as objects may is built for the render, not a crash",
+          "[language][nesting]") {
+    // Issue 45: a union built up 7,000 deep in a loop read and checked, and
+    // the render's objects overflowed the stack splitting it apart.
+    const int depth = hexant::runtime::kMaxObjectDepth - 10;
+    const auto scene = hexant::test::scene_of(
+        "#declare O = sphere { 0, 1 };\n#for (I, 1, " + std::to_string(depth) +
+        ")\n  #declare O = union { object { O } sphere { I * x, 0.5 } };\n#end\nobject { O }\n");
+    REQUIRE(scene.objects.size() == 1);
+    std::vector<hexant::runtime::IntelligentObjectPtr> built;
+    hexant::runtime::make_intelligent_objects(*scene.objects[0], scene.default_texture, built);
+    // Split apart: every sphere on its own, in the order written.
+    CHECK(built.size() == std::size_t(depth) + 1);
 }
