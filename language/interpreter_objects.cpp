@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <regex>
 #include <set>
@@ -14,6 +15,7 @@
 #include "language/interpreter_state.hpp"
 #include "language/source_files.hpp"
 #include "runtime/objects/parameter_check.hpp"
+#include "runtime/texture/evaluation_cost.hpp"
 
 namespace hexant::language {
 
@@ -222,6 +224,30 @@ void Interpreter::report_unrendered(const runtime::ObjectRecord& object, const p
     });
 }
 
+namespace {
+
+// Refuses an object whose texture would evaluate past
+// runtime::kMostEvaluations at a point (runtime/texture/evaluation_cost.hpp).
+void check_evaluation_cost(Interpreter& st, const runtime::ObjectRecord& object,
+                           const p::position& where) {
+    for_each_nested(object, [&](const runtime::ObjectRecord& record) {
+        for (const runtime::Texture* texture :
+             {record.texture ? &*record.texture : nullptr, record.interior_texture.get()}) {
+            if (texture == nullptr) continue;
+            const double cost = runtime::evaluation_cost(*texture);
+            if (cost <= runtime::kMostEvaluations) continue;
+            std::ostringstream text;
+            text << "this object's texture would evaluate up to " << std::setprecision(3) << cost
+                 << " pigments, normals and textures at each point (maps whose entries share "
+                    "one declared map, nested): more than "
+                 << runtime::kMostEvaluations << "; it would not finish";
+            st.fail(where, text.str());
+        }
+    });
+}
+
+}  // namespace
+
 void Interpreter::add_object(const runtime::ObjectPtr& given, const p::position& where) {
     runtime::ObjectPtr object = given;
     // An object without a texture takes the #default texture as it is now,
@@ -238,6 +264,7 @@ void Interpreter::add_object(const runtime::ObjectPtr& given, const p::position&
         fail(where, e);
     }
     check_parameters(*object, where);
+    check_evaluation_cost(*this, *object, where);
     report_unrendered(*object, where);
     std::optional<runtime::SourcePlace> media_in_group;
     if (auto stamped = stamp_light_groups(*object, -1, scene.light_groups, media_in_group))

@@ -174,6 +174,41 @@ TEST_CASE("a declared chain of maps sharing their entries costs its length, not 
     CHECK(sample.layers.front().material.colour.x == 1.0);
 }
 
+TEST_CASE("maps sharing their entries that would take 2^n evaluations a point are refused",
+          "[language][pattern]") {
+    // Issue 45: 40 levels of `[0 P] [1 P]` read in linear time but the
+    // render blended both entries at every level (2^40 a point) and never
+    // finished; the texture_map version reached 4.7 GB.
+    const auto chain = [](int levels, const std::string& kind, const std::string& map) {
+        std::string text = "#declare P = " + kind + " { " +
+                           (kind == "texture" ? "pigment { rgb 1 }" : "rgb 1") + " }\n";
+        for (int i = 0; i < levels; ++i)
+            text += "#declare P = " + kind + " { gradient x " + map + " { [0 P] [1 P] } }\n";
+        return text + "sphere { 0, 1 " + kind + " { P } }\n";
+    };
+    for (const auto& [kind, map] :
+         {std::pair{"pigment", "pigment_map"}, std::pair{"texture", "texture_map"}}) {
+        const auto e = error_of(chain(40, kind, map));
+        INFO(e.formatted());
+        CHECK(e.places().front().line == 42);
+        CHECK(e.formatted().find("would evaluate up to 2.2e+12") != std::string::npos);
+        // 18 levels are 2^19 - 1 = 524,287 a point, under the limit: read.
+        CHECK_NOTHROW(read(chain(18, kind, map)));
+    }
+    // A map of 200 entries, each a map of 200, three deep: a blend takes two
+    // a level (15 a point), not 200^3.
+    std::string wide = "#declare A = pigment { gradient y pigment_map { ";
+    for (int i = 0; i < 200; ++i) wide += "[" + std::to_string(i / 200.0) + " rgb 1] ";
+    wide += "} }\n";
+    for (const char* name : {"B", "C"}) {
+        wide += std::string("#declare ") + name + " = pigment { gradient x pigment_map { ";
+        for (int i = 0; i < 200; ++i)
+            wide += "[" + std::to_string(i / 200.0) + " " + (name[0] == 'B' ? "A" : "B") + "] ";
+        wide += "} }\n";
+    }
+    CHECK_NOTHROW(read(wide + "sphere { 0, 1 pigment { C } }\n"));
+}
+
 TEST_CASE("what POV-Ray refuses in textures is an error where it is written",
           "[language][pattern]") {
     const auto error = [](const std::string& text, const char* words,
