@@ -20,24 +20,38 @@
 // infinite end, so that no inf - inf ever forms a NaN).
 #pragma once
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace hexant::tracer {
 
 inline constexpr double kEvaluationMargin = 0x1p-21;
 
+// The next float above f (f not NaN, not +inf), and below (not -inf): a
+// step of the bit pattern, inline where std::nextafter is a library call
+// on the walk's path (the nearest hit's float bound is taken per hit).
+inline float float_step_up(float f) {
+    if (f == 0.0f) return std::numeric_limits<float>::denorm_min();
+    const std::uint32_t b = std::bit_cast<std::uint32_t>(f);
+    return std::bit_cast<float>(f > 0.0f ? b + 1 : b - 1);
+}
+inline float float_step_down(float f) {
+    return -float_step_up(-f);
+}
+
 // The largest float <= v, and the smallest >= v (NaN gives -inf / +inf).
 inline float float_down(double v) {
     if (!(v == v)) return -std::numeric_limits<float>::infinity();
     float f = static_cast<float>(v);
-    if (static_cast<double>(f) > v) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+    if (static_cast<double>(f) > v) f = float_step_down(f);
     return f;
 }
 inline float float_up(double v) {
     if (!(v == v)) return std::numeric_limits<float>::infinity();
     float f = static_cast<float>(v);
-    if (static_cast<double>(f) < v) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+    if (static_cast<double>(f) < v) f = float_step_up(f);
     return f;
 }
 

@@ -149,6 +149,7 @@ void Hierarchy::build_pending(PendingCell* p, Counters& counters) const {
 }
 
 void Hierarchy::release(const LiveSlab& slab) const {
+    time_index_.clear();
     PendingCell* p = slab.cell;
     NodeRef::store(slab.slot, NodeRef::node(RefKind::Pending, p));
     p->built = {};
@@ -167,6 +168,13 @@ void Hierarchy::release_outside(double t0, double t1) {
         const bool outside = s.cell->region.hi.w <= t0 || s.cell->region.lo.w > t1;
         if (outside) release(s);
         return outside;
+    });
+}
+
+void Hierarchy::enter_frame(double t0, double t1, Counters& counters) {
+    release_outside(t0, t1);
+    time_index_.build(&root_, t0, t1, [&](NodeRef* slot, NodeRef pending) {
+        return expand(slot, pending, counters);
     });
 }
 

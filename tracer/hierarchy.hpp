@@ -44,6 +44,7 @@
 #include "tracer/cell.hpp"
 #include "tracer/counters.hpp"
 #include "tracer/node_arena.hpp"
+#include "tracer/time_index.hpp"
 
 namespace hexant::tracer {
 
@@ -184,6 +185,14 @@ class Hierarchy {
     // thread-safe: call it between frames, with no ray in flight.
     void release_outside(double t0, double t1);
 
+    // release_outside(t0, t1), then the time index over [t0, t1] (time_index.hpp),
+    // building the time nodes of the chain inside it: what a frame calls
+    // before its rays. Not thread-safe, as release_outside.
+    void enter_frame(double t0, double t1, Counters& counters);
+    // Where the walk of a ray at instant t starts: its piece of the time
+    // index, or `root` (a copy of root()) where the index has none.
+    NodeRef* time_entry(double t, NodeRef* root) const { return time_index_.entry(t, root); }
+
     // Node memory in bytes: now, and the most held at once so far.
     std::size_t bytes() const;
     std::size_t peak_bytes() const;
@@ -217,6 +226,8 @@ class Hierarchy {
     mutable double root_area_ = 0.0;  // the root cell's time-averaged area (cost criterion)
     std::unique_ptr<Builder> builder_;
     NodeRef root_;
+    // Cleared by every release of a slab (its slots go with it).
+    mutable TimeIndex time_index_;
 };
 
 }  // namespace hexant::tracer

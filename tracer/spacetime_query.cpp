@@ -34,9 +34,10 @@ class SpacetimeQuery final : public RayQuery {
           hierarchy_(swept_, hierarchy_root(swept_, animation, options), options, counters) {}
 
     // The slabs of frames done (or not yet begun) are let go: memory holds
-    // what this frame's rays need, whatever the animation's length.
-    void prepare_frame(double t0, double t1, Counters&) override {
-        hierarchy_.release_outside(t0, t1);
+    // what this frame's rays need, whatever the animation's length. Then
+    // the frame's time index: its rays skip the chain of time nodes.
+    void prepare_frame(double t0, double t1, Counters& counters) override {
+        hierarchy_.enter_frame(t0, t1, counters);
     }
 
     std::optional<ObjectHit> first_hit(const Ray4& ray, double s_min, double s_max,

@@ -100,7 +100,9 @@ class Walk {
         NodeRef root = h_.root();
         Entry stack[kStackSize];
         int top = 0;
-        NodeRef* slot = &root;
+        // The frame's time index skips the chain of time nodes above the
+        // ray's time slice (time_index.hpp); below it the loop goes on.
+        NodeRef* slot = h_.time_entry(r_.time, &root);
         for (;;) {
             NodeRef ref = NodeRef::load(slot);
             // Runs of time nodes: the ray's instant picks each half without

@@ -1,0 +1,172 @@
+// The time index (tracer/time_index.hpp): for every instant of the frame,
+// the slot it gives is the one the chain of time nodes leads to (an instant
+// on a cut goes to the later piece) and, outside it, the root or that
+// same slot; pending cells of the chain are built
+// through the callback, and instants outside the index start at the root.
+// Also the inline float steps of bound_rounding.hpp against std::nextafter.
+#include "tracer/time_index.hpp"
+
+#include <cmath>
+#include <deque>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include <catch2/catch.hpp>
+
+#include "tracer/bound_rounding.hpp"
+
+using hexant::tracer::NodeRef;
+using hexant::tracer::RefKind;
+using hexant::tracer::TimeIndex;
+using hexant::tracer::TimeNode;
+
+namespace {
+
+// A chain of time nodes over [t0, t1], halved `depth` times where
+// `uneven` says (a leaf is an object reference numbered in time order).
+// The nodes live in `store`; pending leaves are marked by object numbers
+// at or above 1000 and built into time nodes by expand().
+struct Chain {
+    std::deque<TimeNode> store;
+    int next_leaf = 0;
+    NodeRef make(double t0, double t1, int depth, std::mt19937& random) {
+        if (depth == 0 || (depth < 4 && random() % 3 == 0))
+            return NodeRef::object(std::uint32_t(next_leaf++));
+        TimeNode& n = store.emplace_back();
+        n.t0 = t0;
+        n.t1 = t1;
+        n.split = t0 + (t1 - t0) * 0.5;
+        n.child[0] = make(t0, n.split, depth - 1, random);
+        n.child[1] = make(n.split, t1, depth - 1, random);
+        return NodeRef::node(RefKind::TimeNode, &n);
+    }
+};
+
+NodeRef* descend(NodeRef* slot, double t) {
+    for (NodeRef ref = NodeRef::load(slot); ref.kind() == RefKind::TimeNode;
+         ref = NodeRef::load(slot)) {
+        TimeNode* n = ref.as<TimeNode>();
+        slot = &n->child[t >= n->split];
+    }
+    return slot;
+}
+
+}  // namespace
+
+TEST_CASE("the time index starts each instant where the chain of time nodes leads",
+          "[tracer][time_index]") {
+    std::mt19937 random(1988);
+    for (int trial = 0; trial < 50; ++trial) {
+        Chain chain;
+        NodeRef root = chain.make(0.0, 1.0, 8, random);
+        REQUIRE(root.kind() == RefKind::TimeNode);
+        // A frame's shutter: sometimes on cuts, sometimes between them.
+        std::uniform_real_distribution<double> u(0.0, 1.0);
+        double t0 = trial % 4 == 0 ? 0.25 : u(random), t1 = trial % 4 == 0 ? 0.5 : u(random);
+        if (t0 > t1) std::swap(t0, t1);
+        TimeIndex index;
+        index.build(&root, t0, t1, [](NodeRef*, NodeRef p) { return p; });
+        REQUIRE(index.size() >= 1);
+        NodeRef copy = root;
+        for (int k = 0; k <= 1000; ++k) {
+            const double t = t0 + (t1 - t0) * k / 1000.0;
+            CHECK(index.entry(t, &copy) == descend(&root, t));
+        }
+        // Every cut the chain has inside the shutter, and its neighbours.
+        for (const TimeNode& n : chain.store)
+            for (const double t : {n.split, std::nextafter(n.split, -1.0)})
+                if (t >= t0 && t <= t1) CHECK(index.entry(t, &copy) == descend(&root, t));
+        // Outside the shutter: the root (a walk from there is always right)
+        // or, within the pieces that hold its ends, the chain's own slot.
+        for (int k = 0; k <= 1000; ++k) {
+            const double t = k / 1000.0;
+            NodeRef* e = index.entry(t, &copy);
+            CHECK((e == &copy || e == descend(&root, t)));
+        }
+        CHECK(index.entry(1.5, &copy) == &copy);
+        CHECK(index.entry(std::numeric_limits<double>::quiet_NaN(), &copy) == &copy);
+    }
+}
+
+TEST_CASE("the time index builds the pending cells of its chain and keeps a whole tree",
+          "[tracer][time_index]") {
+    std::mt19937 random(5);
+    Chain chain;
+    NodeRef root = chain.make(0.0, 1.0, 3, random);
+    // Nothing pending: the callback is never called.
+    int expanded = 0;
+    std::deque<TimeNode> built;
+    TimeIndex index;
+    index.build(&root, 0.0, 1.0, [&](NodeRef*, NodeRef pending) {
+        ++expanded;
+        return pending;
+    });
+    CHECK(expanded == 0);
+    NodeRef copy = root;
+    for (int k = 0; k <= 64; ++k) CHECK(index.entry(k / 64.0, &copy) == descend(&root, k / 64.0));
+    // An instant at the chain's very end belongs to its last piece.
+    CHECK(index.entry(1.0, &copy) == descend(&root, 1.0));
+
+    // A pending leaf in the chain: built by the callback into a time node.
+    TimeNode& top = built.emplace_back();
+    top.t0 = 0.0;
+    top.t1 = 1.0;
+    top.split = 0.5;
+    top.child[0] = NodeRef::object(1);
+    int marker = 0;
+    top.child[1] = NodeRef::node(RefKind::Pending, &marker);
+    NodeRef pending_root = NodeRef::node(RefKind::TimeNode, &top);
+    TimeNode& half = built.emplace_back();
+    half.t0 = 0.5;
+    half.t1 = 1.0;
+    half.split = 0.75;
+    half.child[0] = NodeRef::object(2);
+    half.child[1] = NodeRef::object(3);
+    index.build(&pending_root, 0.6, 0.9, [&](NodeRef* slot, NodeRef) {
+        ++expanded;
+        const NodeRef node = NodeRef::node(RefKind::TimeNode, &half);
+        NodeRef::store(slot, node);
+        return node;
+    });
+    CHECK(expanded == 1);
+    CHECK(index.size() == 2);  // [0.5, 0.75) and [0.75, 1]; the earlier half is outside
+    CHECK(index.entry(0.7, &copy) == &half.child[0]);
+    CHECK(index.entry(0.75, &copy) == &half.child[1]);
+    CHECK(index.entry(0.9, &copy) == &half.child[1]);
+    CHECK(index.entry(0.4, &copy) == &copy);
+    index.clear();
+    CHECK(index.entry(0.7, &copy) == &copy);
+}
+
+TEST_CASE("the inline float steps are std::nextafter's", "[tracer][bound_rounding]") {
+    using hexant::tracer::float_step_down;
+    using hexant::tracer::float_step_up;
+    const float inf = std::numeric_limits<float>::infinity();
+    std::mt19937 random(3);
+    std::vector<float> values = {0.0f,
+                                 -0.0f,
+                                 std::numeric_limits<float>::denorm_min(),
+                                 -std::numeric_limits<float>::denorm_min(),
+                                 std::numeric_limits<float>::min(),
+                                 std::numeric_limits<float>::max(),
+                                 -std::numeric_limits<float>::max(),
+                                 1.0f,
+                                 -1.0f};
+    std::uniform_real_distribution<double> exponent(-140.0, 127.0);
+    for (int i = 0; i < 10000; ++i) {
+        const float f = float(std::exp2(exponent(random)));
+        values.push_back(i % 2 ? f : -f);
+    }
+    for (const float f : values) {
+        CHECK(float_step_up(f) == std::nextafter(f, inf));
+        CHECK(float_step_down(f) == std::nextafter(f, -inf));
+    }
+    CHECK(float_step_up(-inf) == -std::numeric_limits<float>::max());
+    CHECK(float_step_down(inf) == std::numeric_limits<float>::max());
+    // And the outward roundings they serve.
+    for (const double v : {0.1, -0.1, 1e-40, -1e-40, 3e38, -3e38, 1e300}) {
+        CHECK(double(hexant::tracer::float_up(v)) >= v);
+        CHECK(double(hexant::tracer::float_down(v)) <= v);
+    }
+}

@@ -1,0 +1,70 @@
+// The time index (docs/design.md, "Traversal"): the slots below the
+// hierarchy's chain of time nodes over one frame's shutter, in time order,
+// so that a ray at one instant starts its walk at the subtree of its own
+// time slice instead of descending the chain node by node (Embree's
+// time-segment arrays play the same part for its motion blur).
+//
+// The chain is the cost criterion's answer for an animation: the root cell
+// halved in time seven times over the atom's 64 frames, every ray taking
+// seven dependent loads before its first bound. The index holds the slots
+// the chain ends at inside the frame's shutter (at most kMaxEntries): one
+// search in a short array of doubles, then the subtree. A walk started at
+// an indexed slot meets exactly what the chain would have led it to, since
+// each entry is the child the chain picks for every instant of its piece
+// (an instant on a cut goes to the later piece, as at a time node).
+//
+// Built between frames (Hierarchy::enter_frame), after the slabs outside
+// the frame are let go; cleared whenever a slab is released, since its
+// slots die with it. Not thread-safe to build; read by any thread.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <vector>
+
+#include "tracer/cell.hpp"
+
+namespace hexant::tracer {
+
+class TimeIndex {
+  public:
+    // More pieces than a frame has samples in time would not pay.
+    static constexpr std::size_t kMaxEntries = 4096;
+
+    // Reads the chain of time nodes below *root over [t0, t1]. `expand`
+    // turns a pending slot into its node (Hierarchy::expand) and returns it:
+    // a cell of the chain inside the shutter is reached by the frame's rays
+    // anyway. Empty (every walk starts at the root) where the root is not a
+    // time node.
+    void build(NodeRef* root, double t0, double t1,
+               const std::function<NodeRef(NodeRef* slot, NodeRef pending)>& expand);
+    void clear();
+
+    // The slot a walk at instant t starts from: the indexed piece holding
+    // t, or `root` where t lies outside the index.
+    NodeRef* entry(double t, NodeRef* root) const {
+        const std::size_t n = slots_.size();
+        if (n == 0 || !(t >= cuts_[0] && (t < cuts_[n] || (t == cuts_[n] && end_closed_))))
+            return root;
+        // The first inner cut above t: t in [cuts[k], cuts[k + 1]).
+        std::size_t lo = 0, hi = n - 1;  // the answer k lies in [lo, hi]
+        while (lo < hi) {
+            const std::size_t mid = (lo + hi + 1) / 2;
+            if (t >= cuts_[mid])
+                lo = mid;
+            else
+                hi = mid - 1;
+        }
+        return slots_[lo];
+    }
+    std::size_t size() const { return slots_.size(); }
+
+  private:
+    std::vector<double> cuts_;     // size() + 1 times, increasing
+    std::vector<NodeRef*> slots_;  // piece k holds [cuts_[k], cuts_[k + 1])
+    // The last piece holds its end too only where that is the chain's end
+    // (elsewhere an instant there belongs to a later piece not indexed).
+    bool end_closed_ = false;
+};
+
+}  // namespace hexant::tracer
