@@ -154,14 +154,10 @@ NodeRef Hierarchy::Builder::space_node(NodeArena& arena, const Box4& region, con
     for (const std::uint32_t i : objects) {
         const TimeBins mine = object_bins(i, region, time, k);
         for (int o = 0; o < 8; ++o) {
-            bool meets = false;
-            for (int b = 0; b < mine.count; ++b) {
-                const BinBox part = mine.bin[b].clipped(octants[o]);
-                if (part.is_empty()) continue;
-                bins[o].bin[b].extend(part);
-                meets = true;
-            }
-            if (meets) lists[o].push_back(i);
+            const TimeBins part = mine.clipped(octants[o]);
+            if (part.is_empty()) continue;
+            bins[o].add(part);
+            lists[o].push_back(i);
         }
     }
     std::vector<int> used;

@@ -169,27 +169,35 @@ class Hierarchy::Builder {
     // Object i over 2^k equal pieces of the cell's time, clipped to the
     // region, into out[0 .. 2^k): looked up in its sweep, or refined by the
     // object where the pieces are finer than the sweep's
-    // (TimeSweep::boxes_over_dyadic).
-    void object_pieces(std::uint32_t i, const Box4& region, const CellTime& time, int k,
-                       Box4* out) const {
+    // (TimeSweep::boxes_over_dyadic). With edge_lo and edge_hi (2^k + 1
+    // each), also the edges of its lines where the sweep has them (not
+    // clipped): returns whether it had.
+    bool object_pieces(std::uint32_t i, const Box4& region, const CellTime& time, int k, Box4* out,
+                       glm::dvec3* edge_lo = nullptr, glm::dvec3* edge_hi = nullptr) const {
         const std::size_t n = std::size_t(1) << k;
         if (time.level >= 0) {
-            objects_.sweeps[i].boxes_over_dyadic(time.level + k, time.index << k, n,
-                                                 *objects_.objects[i], out);
+            const bool lined = objects_.sweeps[i].boxes_over_dyadic(
+                time.level + k, time.index << k, n, *objects_.objects[i], out, edge_lo, edge_hi);
             for (std::size_t p = 0; p < n; ++p) out[p] = out[p].intersection(region);
-            return;
+            return lined;
         }
         for (std::size_t p = 0; p < n; ++p)
             out[p] = object_over(i, time.part(k, p, objects_.time), region);
+        return false;
     }
 
-    // Object i over 2^k equal pieces of the cell's time, clipped to it.
+    // Object i over 2^k equal pieces of the cell's time, clipped to it,
+    // with its lines where it has them (TimeBins).
     TimeBins object_bins(std::uint32_t i, const Box4& region, const CellTime& time, int k) const {
         std::array<Box4, kMaxBins> pieces;
-        object_pieces(i, region, time, k, pieces.data());
+        std::array<glm::dvec3, kMaxBins + 1> lo, hi;
+        const bool lined = object_pieces(i, region, time, k, pieces.data(), lo.data(), hi.data());
         TimeBins bins = TimeBins::empty(1 << k);
         for (int p = 0; p < bins.count; ++p) bins.bin[p] = BinBox::of(pieces[p]);
-        return bins;
+        bins.lined = lined && !bins.is_empty();
+        if (!bins.lined) return bins;
+        for (int j = 0; j <= bins.count; ++j) bins.edge[j] = BinBox::of(lo[j], hi[j]);
+        return bins.clipped(region);
     }
 
     // Cell splitting (cell_split.cpp).

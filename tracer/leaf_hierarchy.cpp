@@ -121,7 +121,8 @@ NodeRef Hierarchy::Builder::leaf(NodeArena& arena, const Box4& region, const Cel
                       [&](const tbb::blocked_range<std::size_t>& r) {
                           for (std::size_t i = r.begin(); i < r.end(); ++i) {
                               const TimeBins bins = object_bins(objects[i], region, time, k);
-                              const BinBox hull = bins.hull();
+                              // (Nothing in the cell: the item goes.)
+                              const BinBox hull = bins.is_empty() ? BinBox{} : bins.frame();
                               items[i].box = hull;
                               items[i].object = objects[i];
                               items[i].bins = PackedBins::pack(bins, hull);
@@ -155,8 +156,8 @@ Child Hierarchy::Builder::group_range(const Leaf& leaf, std::vector<LeafItem>& i
         members.reserve(end - begin);
         Child merged{{}, TimeBins::empty(1 << leaf.k)};
         for (std::size_t i = begin; i < end; ++i) {
-            members.push_back(
-                {NodeRef::object(items[i].object), items[i].bins.unpack(items[i].box)});
+            members.push_back({NodeRef::object(items[i].object),
+                               items[i].bins.unpack(items[i].box, leaf.region)});
             merged.bins.add(members.back().bins);
         }
         if (members.size() == 1 && !top) return members.front();

@@ -84,6 +84,16 @@ BinBox BinBox::of(const runtime::Box4& box) {
     return b;
 }
 
+BinBox BinBox::of(const glm::dvec3& lo, const glm::dvec3& hi) {
+    BinBox b;
+    if (!(lo.x <= hi.x && lo.y <= hi.y && lo.z <= hi.z)) return b;
+    for (int k = 0; k < 3; ++k) {
+        b.lo[k] = float_down(lo[k]);
+        b.hi[k] = float_up(hi[k]);
+    }
+    return b;
+}
+
 BinBox BinBox::clipped(const runtime::Box4& region) const {
     BinBox b = *this;
     for (int k = 0; k < 3; ++k) {
@@ -98,14 +108,49 @@ runtime::Box4 BinBox::box(const runtime::Interval& t) const {
     return {runtime::Event(lo[0], lo[1], lo[2], t.lo), runtime::Event(hi[0], hi[1], hi[2], t.hi)};
 }
 
+bool TimeBins::lines() const {
+    if (!lined) return false;
+    for (int b = 0; b < count; ++b)
+        if (!bin[b].is_empty() && (edge[b].is_empty() || edge[b + 1].is_empty())) return false;
+    return true;
+}
+
+TimeBins TimeBins::clipped(const runtime::Box4& region) const {
+    TimeBins c = *this;
+    for (int b = 0; b < count; ++b) c.bin[b] = bin[b].clipped(region);
+    if (!lined) return c;
+    for (int k = 0; k < 3; ++k) {
+        const float lo = float_down(region.lo[k]), hi = float_up(region.hi[k]);
+        for (int j = 0; j <= count; ++j) {
+            bool below = true, above = true;  // edges j - 1 .. j + 1 all outside
+            for (int i = std::max(0, j - 1); i <= std::min(count, j + 1); ++i) {
+                below = below && edge[i].lo[k] <= lo;
+                above = above && edge[i].hi[k] >= hi;
+            }
+            if (below) c.edge[j].lo[k] = lo;
+            if (above) c.edge[j].hi[k] = hi;
+        }
+    }
+    return c;
+}
+
 double TimeBins::mean_area() const {
     if (count == 0) return 0.0;
+    const bool with_lines = lines();
     double sum = 0.0;
-    for (int i = 0; i < count; ++i)
-        if (!bin[i].is_empty())
-            sum += area_of_extents(double(bin[i].hi[0]) - bin[i].lo[0],
-                                   double(bin[i].hi[1]) - bin[i].lo[1],
-                                   double(bin[i].hi[2]) - bin[i].lo[2]);
+    for (int i = 0; i < count; ++i) {
+        if (bin[i].is_empty()) continue;
+        double e[3];
+        for (int k = 0; k < 3; ++k) {
+            double lo = bin[i].lo[k], hi = bin[i].hi[k];
+            if (with_lines) {
+                lo = std::max(lo, 0.5 * (double(edge[i].lo[k]) + edge[i + 1].lo[k]));
+                hi = std::min(hi, 0.5 * (double(edge[i].hi[k]) + edge[i + 1].hi[k]));
+            }
+            e[k] = std::max(0.0, hi - lo);
+        }
+        sum += area_of_extents(e[0], e[1], e[2]);
+    }
     return sum / count;
 }
 
@@ -127,17 +172,27 @@ LinearBox fit_linear(const TimeBins& bins) {
     const int n = bins.count;
     if (n <= 0 || bins.is_empty()) return box;
     box.empty = false;
+    const bool lines = bins.lines();
     for (int k = 0; k < 3; ++k) {
         for (const bool upper : {false, true}) {
+            // A bin's value at its cut j: its line's there, or its box's
+            // side (mirrored for the upper end: larger is nearer).
+            const auto side = [&](const BinBox& b) {
+                return upper ? -double(b.hi[k]) : double(b.lo[k]);
+            };
+            const auto use_line = [&](int b) {
+                return lines &&
+                       0.5 * (side(bins.edge[b]) + side(bins.edge[b + 1])) >= side(bins.bin[b]);
+            };
             // One point per bin boundary touching a non-empty bin: the
-            // outermost end of its neighbours (mirrored for the upper end).
+            // outermost of its neighbours' values there.
             Point points[kMaxBins + 1];
             int count = 0;
             for (int j = 0; j <= n; ++j) {
                 double v = std::numeric_limits<double>::infinity();
                 for (const int b : {j - 1, j}) {
                     if (b < 0 || b >= n || bins.bin[b].is_empty()) continue;
-                    v = std::min(v, upper ? -double(bins.bin[b].hi[k]) : double(bins.bin[b].lo[k]));
+                    v = std::min(v, use_line(b) ? side(bins.edge[j]) : side(bins.bin[b]));
                 }
                 if (v != std::numeric_limits<double>::infinity())
                     points[count++] = {double(j) / double(n), v};

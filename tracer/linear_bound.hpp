@@ -30,6 +30,7 @@ struct BinBox {
     std::array<float, 3> hi{-kFloatInf, -kFloatInf, -kFloatInf};
 
     static BinBox of(const runtime::Box4& box);  // empty if the box is
+    static BinBox of(const glm::dvec3& lo, const glm::dvec3& hi);
     bool is_empty() const { return !(lo[0] <= hi[0] && lo[1] <= hi[1] && lo[2] <= hi[2]); }
     void extend(const BinBox& o) {
         for (int k = 0; k < 3; ++k) {
@@ -49,14 +50,25 @@ struct BinBox {
 };
 
 // Boxes over `count` equal pieces of a time range (an empty bin holds
-// nothing then).
+// nothing then), and where `lined`, the contents' bound at each of the
+// count + 1 cuts between the pieces ("edges"), such that over bin b the
+// contents also lie between the lines from edge b to edge b + 1: the sides
+// of a moving box (runtime::TimeSweep::boxes_over_dyadic). A bin's box
+// holds everything its piece of time sweeps; the lines hold what is there
+// at each instant, about the object's own size where it moves along a
+// chord (issue 43: a swarm sphere's boxes over a leaf's bins were three
+// times its size along its path).
 struct TimeBins {
     int count = 0;
     std::array<BinBox, kMaxBins> bin;
+    bool lined = false;
+    std::array<BinBox, kMaxBins + 1> edge;
 
+    // Nothing yet; lined, so that add() keeps the lines of what it adds.
     static TimeBins empty(int count) {
         TimeBins b;
         b.count = count;
+        b.lined = true;
         return b;
     }
     bool is_empty() const {
@@ -64,19 +76,39 @@ struct TimeBins {
             if (!bin[i].is_empty()) return false;
         return true;
     }
+    // Lines that can be used: lined, and both edges of every non-empty bin there.
+    bool lines() const;
+    // Everything of both (lines only where both have them).
     void add(const TimeBins& o) {
         for (int i = 0; i < count; ++i) bin[i].extend(o.bin[i]);
+        lined = lined && o.lined;
+        if (lined)
+            for (int i = 0; i <= count; ++i) edge[i].extend(o.edge[i]);
     }
-    // The box over all bins (their space part).
+    // The part inside the region's space. A bin's box is clipped; an edge
+    // is raised to the region's side only where the lines on both sides of
+    // it lie wholly outside that side (a line crossing it keeps its ends:
+    // clipping one end would cut off what the line holds inside).
+    TimeBins clipped(const runtime::Box4& region) const;
+    // The box over all bins (their space part), and over the edges too
+    // where lined (what PackedBins steps over).
     BinBox hull() const {
         BinBox h;
         for (int i = 0; i < count; ++i) h.extend(bin[i]);
         return h;
     }
+    BinBox frame() const {
+        BinBox h = hull();
+        if (lined)
+            for (int i = 0; i <= count; ++i) h.extend(edge[i]);
+        return h;
+    }
     // The same over time t (the bins' whole time).
     runtime::Box4 hull(const runtime::Interval& t) const { return hull().box(t); }
-    // The mean over the bins of their boxes' surface areas (0 for empty
-    // bins): an estimate of the area a ray at a random instant sees.
+    // The mean over the bins of the surface areas (0 for empty bins) of
+    // their boxes, or where lined, of what holds the contents at each
+    // bin's mid-time (the box there, inside the lines): an estimate of the
+    // area a ray at a random instant sees.
     double mean_area() const;
 };
 
@@ -89,6 +121,9 @@ struct LinearBox {
     double mean_area() const;
 };
 
+// The linear-motion box over all bins: below (above) each non-empty bin's
+// box over its piece of time, or where the bins are lined, below its line
+// when that is the nearer on average.
 LinearBox fit_linear(const TimeBins& bins);
 
 // Surface area of a box's space part (0 for an empty box).

@@ -24,6 +24,14 @@ float float_up(double x) {
     return f;
 }
 
+// A placed box that gives no chord edge: empty, or not finite.
+bool no_chord_end(const Box4& b) {
+    if (b.is_empty()) return true;
+    for (int a = 0; a < 3; ++a)
+        if (!std::isfinite(b.lo[a]) || !std::isfinite(b.hi[a])) return true;
+    return false;
+}
+
 double largest_extent(const Box4& b) {
     if (b.is_empty()) return 0.0;
     return std::max({b.hi.x - b.lo.x, b.hi.y - b.lo.y, b.hi.z - b.lo.z});
@@ -254,10 +262,44 @@ Box4 TimeSweep::box_over_dyadic(int level, std::uint64_t index) const {
     return box;
 }
 
-void TimeSweep::boxes_over_dyadic(int level, std::uint64_t first, std::size_t count,
-                                  const IntelligentObject& object, Box4* out) const {
+bool TimeSweep::cached_edges(int level, std::uint64_t first, std::size_t count, glm::dvec3* edge_lo,
+                             glm::dvec3* edge_hi) const {
+    if (empty() || count == 0) return false;
+    if (layout_ == Layout::Whole) {
+        for (std::size_t j = 0; j <= count; ++j) edge_lo[j] = lo_, edge_hi[j] = hi_;
+        return true;
+    }
+    if (level < depth_) return false;
+    const int finer = level - depth_;
+    for (std::size_t j = 0; j <= count; ++j) {
+        const std::uint64_t cut = first + j;
+        const double t = dyadic_time(time_, level, cut);
+        glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
+        // The pieces of the bins on either side of the cut (within range).
+        for (const bool before : {true, false}) {
+            if (before ? j == 0 : j == count) continue;
+            const std::uint64_t bin = before ? cut - 1 : cut;
+            const MovingBox m = moving_piece(std::size_t(bin >> finer));
+            const Box4 at = m.box_over(Interval(t, t));
+            if (at.is_empty()) return false;
+            for (int a = 0; a < 3; ++a) {
+                lo[a] = std::min(lo[a], at.lo[a]);
+                hi[a] = std::max(hi[a], at.hi[a]);
+            }
+        }
+        edge_lo[j] = lo;
+        edge_hi[j] = hi;
+    }
+    return true;
+}
+
+bool TimeSweep::boxes_over_dyadic(int level, std::uint64_t first, std::size_t count,
+                                  const IntelligentObject& object, Box4* out, glm::dvec3* edge_lo,
+                                  glm::dvec3* edge_hi) const {
     for (std::size_t k = 0; k < count; ++k) out[k] = box_over_dyadic(level, first + k);
-    if (!refines_ || level <= depth_ || empty() || count == 0) return;
+    const bool want_edges = edge_lo != nullptr && edge_hi != nullptr;
+    if (!refines_ || level <= depth_ || empty() || count == 0)
+        return want_edges && cached_edges(level, first, count, edge_lo, edge_hi);
     // The chord's error over one piece of this level (its length rounded up).
     const double length = interval_detail::next_up(dyadic_time(time_, level, first + 1) -
                                                    dyadic_time(time_, level, first));
@@ -265,7 +307,19 @@ void TimeSweep::boxes_over_dyadic(int level, std::uint64_t first, std::size_t co
     for (int a = 0; a < 3; ++a)
         out_by[a] = interval_detail::up(
             length * length * 0.125 * double(acceleration_[a]) + double(margin_[a]), 4);
+    // The placed box at a cut, moved out by the chord's error: the chord
+    // between two of them holds the object over the piece between.
+    const auto widened = [&](const Box4& placed, glm::dvec3& lo, glm::dvec3& hi) {
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = interval_detail::next_down(placed.lo[a] - out_by[a]);
+            hi[a] = interval_detail::next_up(placed.hi[a] + out_by[a]);
+        }
+    };
+    // The chords' edges are written in place of the cached ones; should a
+    // placed box be missing or not finite, the cached ones are made again.
     Box4 start = object.placed_box_at(dyadic_time(time_, level, first));
+    bool chords = want_edges && !no_chord_end(start);
+    if (chords) widened(start, edge_lo[0], edge_hi[0]);
     for (std::size_t k = 0; k < count; ++k) {
         const Box4 end = object.placed_box_at(dyadic_time(time_, level, first + k + 1));
         if (!start.is_empty() && !end.is_empty() && !out[k].is_empty()) {
@@ -280,8 +334,12 @@ void TimeSweep::boxes_over_dyadic(int level, std::uint64_t first, std::size_t co
             const Box4 both = chord.intersection(out[k]);
             if (!both.is_empty()) out[k] = both;
         }
+        chords = chords && !no_chord_end(end);
+        if (chords) widened(end, edge_lo[k + 1], edge_hi[k + 1]);
         start = end;
     }
+    if (chords) return true;
+    return want_edges && cached_edges(level, first, count, edge_lo, edge_hi);
 }
 
 Box4 TimeSweep::box_over(const Interval& t) const {

@@ -133,8 +133,19 @@ class TimeSweep {
     // piece, from placed boxes at its ends (shared by neighbours, count + 1
     // placements), clipped to the cached piece's part. The paper's star
     // cluster: the cache answers coarse questions, the object fine ones.
-    void boxes_over_dyadic(int level, std::uint64_t first, std::size_t count,
-                           const IntelligentObject& object, Box4* out) const;
+    //
+    // With edge_lo and edge_hi (count + 1 entries each), also the object's
+    // bound at each cut between the pieces, such that at every instant of
+    // piece k the object lies between the lines from edge k to edge k + 1
+    // (the sides of a moving box, as the sweep's own pieces): the chords'
+    // placed boxes moved out by their error where the sweep refines, else
+    // the cached pieces' lines at the cuts (the outer of two where a cut is
+    // a piece's end and the next one's start). Returns whether the edges
+    // were filled: not where a piece of this level spans several cached
+    // pieces, or the object has no surface over part of the time.
+    bool boxes_over_dyadic(int level, std::uint64_t first, std::size_t count,
+                           const IntelligentObject& object, Box4* out,
+                           glm::dvec3* edge_lo = nullptr, glm::dvec3* edge_hi = nullptr) const;
     // Can boxes_over_dyadic refine below the cached pieces?
     bool refines() const { return refines_; }
 
@@ -163,6 +174,9 @@ class TimeSweep {
     // surface: lo at the top step, hi at the bottom).
     void encode_box(std::uint16_t* q, const glm::dvec3& lo, const glm::dvec3& hi) const;
     void encode_pieces(const std::vector<MovingBox>& level);
+    // boxes_over_dyadic's edges from the cached pieces (false: none).
+    bool cached_edges(int level, std::uint64_t first, std::size_t count, glm::dvec3* edge_lo,
+                      glm::dvec3* edge_hi) const;
 
     Interval time_{0.0, 0.0};
     // The box over the whole time (empty: lo > hi).

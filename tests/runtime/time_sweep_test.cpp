@@ -70,6 +70,7 @@ void check_kind(const KindScene& kind) {
                 if (priced) pricing.ray_density = 1e4;
                 const rt::TimeSweep sweep = rt::TimeSweep::of(object, time, depth, pricing);
                 REQUIRE_FALSE(sweep.empty());
+                long lined = 0;
                 for (long n = 0; n < wanted; ++n) {
                     const double t = random.uniform(0.0, 1.0);
                     const rt::Event e = sample_surface_event(record, t, random);
@@ -83,7 +84,35 @@ void check_kind(const KindScene& kind) {
                                   << level);
                         FAIL("a surface event outside the sweep");
                     }
+                    // The lines between the edges of four pieces around it
+                    // (the hierarchy's bins: issue 43), where the sweep has them.
+                    constexpr std::size_t kRun = 4;
+                    const std::uint64_t first = index & ~std::uint64_t(kRun - 1);
+                    const std::size_t run = std::min<std::size_t>(kRun, std::size_t(1) << level);
+                    std::array<rt::Box4, kRun> boxes;
+                    std::array<glm::dvec3, kRun + 1> lo, hi;
+                    if (sweep.boxes_over_dyadic(level, first, run, object, boxes.data(), lo.data(),
+                                                hi.data())) {
+                        ++lined;
+                        const std::size_t k = std::size_t(index - first);
+                        const double t0 = rt::dyadic_time(time, level, index),
+                                     t1 = rt::dyadic_time(time, level, index + 1);
+                        const double u = t1 > t0 ? std::clamp((t - t0) / (t1 - t0), 0.0, 1.0) : 0.0;
+                        rt::Box4 line;
+                        for (int a = 0; a < 3; ++a) {
+                            line.lo[a] = lo[k][a] + u * (lo[k + 1][a] - lo[k][a]);
+                            line.hi[a] = hi[k][a] + u * (hi[k + 1][a] - hi[k][a]);
+                        }
+                        if (!holds(line, e)) {
+                            INFO("t " << t << " event " << e.x << ' ' << e.y << ' ' << e.z
+                                      << " level " << level << " piece " << k << " of " << first);
+                            FAIL("a surface event outside the lines between a sweep's edges");
+                        }
+                    }
                 }
+                // Every sweep has lines where its pieces are no coarser
+                // than the question's (levels 0-10 against depth 0-8).
+                CHECK(lined > 0);
             }
         }
     }
@@ -207,7 +236,14 @@ TEST_CASE("a sweep the depth limit kept coarse refines finer pieces from the obj
     for (int trial = 0; trial < 50; ++trial) {
         const std::uint64_t first = std::uint64_t(random.integer(0, (1 << kLevel) - int(kCount)));
         std::array<rt::Box4, kCount> refined;
-        coarse.boxes_over_dyadic(kLevel, first, kCount, object, refined.data());
+        std::array<glm::dvec3, kCount + 1> lo, hi;
+        REQUIRE(coarse.boxes_over_dyadic(kLevel, first, kCount, object, refined.data(), lo.data(),
+                                         hi.data()));
+        // At each cut the lines hold the sphere itself and its chord's
+        // error (~0.01): about its own size, 0.2, where the box over a
+        // piece also holds its path over the piece (~0.5 along it).
+        for (std::size_t j = 0; j <= kCount; ++j)
+            for (int a = 0; a < 3; ++a) CHECK(hi[j][a] - lo[j][a] < 0.25);
         for (std::size_t k = 0; k < kCount; ++k) {
             const rt::Box4 cached = coarse.box_over_dyadic(kLevel, first + k);
             // Inside the cached answer, and far tighter: over 1/256 of four

@@ -1,6 +1,8 @@
 // Packed bins (tracer/packed_bins.hpp): every unpacked bin holds the bin it
 // was packed from, at most a step of the hull wider per side; empty bins
-// stay empty; a flat or unbounded hull keeps what it can.
+// stay empty; a flat or unbounded hull keeps what it can. Lined bins
+// (issue 43): packed by their edges, clipped without cutting off what a
+// line holds inside the region, and fitted outside every line.
 #include "tracer/packed_bins.hpp"
 
 #include <cmath>
@@ -10,10 +12,18 @@
 #include <catch2/catch.hpp>
 
 using hexant::tracer::BinBox;
+using hexant::tracer::fit_linear;
+using hexant::tracer::LinearBox;
 using hexant::tracer::PackedBins;
 using hexant::tracer::TimeBins;
 
 namespace {
+
+hexant::runtime::Box4 everywhere() {
+    const double inf = std::numeric_limits<double>::infinity();
+    return {hexant::runtime::Event(-inf, -inf, -inf, -inf),
+            hexant::runtime::Event(inf, inf, inf, inf)};
+}
 
 bool holds(const BinBox& outer, const BinBox& inner) {
     for (int a = 0; a < 3; ++a)
@@ -41,7 +51,7 @@ TEST_CASE("packed bins hold their originals, a step of the hull wider at most", 
                     }
                 }
                 const BinBox hull = bins.hull();
-                const TimeBins back = PackedBins::pack(bins, hull).unpack(hull);
+                const TimeBins back = PackedBins::pack(bins, hull).unpack(hull, everywhere());
                 REQUIRE(back.count == 8);
                 for (int b = 0; b < 8; ++b) {
                     CHECK(back.bin[b].is_empty() == bins.bin[b].is_empty());
@@ -69,7 +79,7 @@ TEST_CASE("a flat or unbounded hull packs without losing anything", "[tracer][bi
     bins.bin[1].lo = {0.5f, 2.0f, 5.0f};
     bins.bin[1].hi = {1.5f, 2.5f, 5.0f};
     const BinBox hull = bins.hull();
-    const TimeBins back = PackedBins::pack(bins, hull).unpack(hull);
+    const TimeBins back = PackedBins::pack(bins, hull).unpack(hull, everywhere());
     for (int b = 0; b < 2; ++b) {
         CHECK(holds(back.bin[b], bins.bin[b]));
         CHECK(back.bin[b].lo[2] == 5.0f);  // a flat axis is exact
@@ -80,4 +90,121 @@ TEST_CASE("a flat or unbounded hull packs without losing anything", "[tracer][bi
     // The unbounded axis keeps the hull's ends, conservative.
     CHECK(back.bin[1].lo[0] == -inf);
     CHECK(back.bin[1].hi[0] == 2.0f);
+}
+
+namespace {
+
+// Random lined bins: a point moving along a random path with a random
+// size, each bin's box the hull of its edges (as the sweeps make them).
+TimeBins random_lined(std::mt19937& random, double scale, double offset) {
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    TimeBins bins = TimeBins::empty(8);
+    glm::dvec3 at(offset), velocity(u(random), u(random), u(random));
+    for (int j = 0; j <= 8; ++j) {
+        velocity += 0.5 * glm::dvec3(u(random), u(random), u(random));
+        at += scale * 0.1 * velocity;
+        const double size = scale * (0.01 + 0.05 * (u(random) + 1.0));
+        bins.edge[j] = BinBox::of(at - size, at + size);
+    }
+    for (int b = 0; b < 8; ++b) {
+        bins.bin[b] = bins.edge[b];
+        bins.bin[b].extend(bins.edge[b + 1]);
+    }
+    return bins;
+}
+
+// The lines' box at u in [0, 1] of bin b.
+BinBox line_at(const TimeBins& bins, int b, double u) {
+    BinBox r;
+    for (int a = 0; a < 3; ++a) {
+        r.lo[a] =
+            float(bins.edge[b].lo[a] + u * (double(bins.edge[b + 1].lo[a]) - bins.edge[b].lo[a]));
+        r.hi[a] =
+            float(bins.edge[b].hi[a] + u * (double(bins.edge[b + 1].hi[a]) - bins.edge[b].hi[a]));
+    }
+    return r;
+}
+
+}  // namespace
+
+TEST_CASE("lined bins pack their edges, and unpack lines and boxes that hold the originals",
+          "[tracer][bins]") {
+    std::mt19937 random(11);
+    for (const double scale : {1e-6, 1.0, 1e6})
+        for (int trial = 0; trial < 200; ++trial) {
+            TimeBins bins = random_lined(random, scale, trial % 2 ? 0.0 : 3.0 * scale);
+            if (trial % 7 == 0) bins.bin[3] = BinBox{};  // a bin holding nothing
+            REQUIRE(bins.lines());
+            const BinBox hull = bins.frame();
+            const TimeBins back = PackedBins::pack(bins, hull).unpack(hull, everywhere());
+            REQUIRE(back.lines());
+            for (int j = 0; j <= 8; ++j) CHECK(holds(back.edge[j], bins.edge[j]));
+            for (int b = 0; b < 8; ++b) {
+                CHECK(back.bin[b].is_empty() == bins.bin[b].is_empty());
+                if (!bins.bin[b].is_empty()) CHECK(holds(back.bin[b], bins.bin[b]));
+            }
+        }
+}
+
+TEST_CASE("clipped lines hold every part of the original lines inside the region",
+          "[tracer][bins]") {
+    std::mt19937 random(12);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    for (int trial = 0; trial < 2000; ++trial) {
+        const TimeBins bins = random_lined(random, 1.0, 0.0);
+        // A region through the path, cutting some lines and not others.
+        const BinBox h = bins.hull();
+        hexant::runtime::Box4 region;
+        for (int a = 0; a < 3; ++a) {
+            const double x = h.lo[a] + u(random) * (double(h.hi[a]) - h.lo[a]);
+            const double y = h.lo[a] + u(random) * (double(h.hi[a]) - h.lo[a]);
+            region.lo[a] = std::min(x, y) - (trial % 3 == 0 ? 10.0 : 0.0);
+            region.hi[a] = std::max(x, y);
+        }
+        const TimeBins c = bins.clipped(region);
+        for (int b = 0; b < 8; ++b)
+            for (int s = 0; s <= 16; ++s) {
+                const BinBox original = line_at(bins, b, s / 16.0);
+                const BinBox inside = original.clipped(region);
+                if (inside.is_empty()) continue;
+                const BinBox kept = line_at(c, b, s / 16.0);
+                // (A float's rounding of the interpolation either way.)
+                for (int a = 0; a < 3; ++a) {
+                    CHECK(kept.lo[a] <= inside.lo[a] + 1e-6f);
+                    CHECK(kept.hi[a] >= inside.hi[a] - 1e-6f);
+                }
+            }
+        // Clipping only ever raises a lower edge.
+        for (int j = 0; j <= 8; ++j)
+            for (int a = 0; a < 3; ++a) CHECK(c.edge[j].lo[a] >= bins.edge[j].lo[a]);
+    }
+}
+
+TEST_CASE("the linear fit of lined bins lies outside every line, and nearer than the boxes'",
+          "[tracer][bins]") {
+    std::mt19937 random(13);
+    int nearer = 0;
+    constexpr int kTrials = 2000;
+    for (int trial = 0; trial < kTrials; ++trial) {
+        const TimeBins bins = random_lined(random, 1.0, 0.0);
+        const LinearBox fit = fit_linear(bins);
+        REQUIRE_FALSE(fit.empty);
+        for (int b = 0; b < 8; ++b)
+            for (int s = 0; s <= 8; ++s) {
+                const double w = s / 8.0, u = (b + w) / 8.0;
+                const BinBox line = line_at(bins, b, w);
+                for (int a = 0; a < 3; ++a) {
+                    const double lo = fit.lo0[a] + u * (fit.lo1[a] - fit.lo0[a]);
+                    const double hi = fit.hi0[a] + u * (fit.hi1[a] - fit.hi0[a]);
+                    CHECK(lo <= double(line.lo[a]) + 1e-6);
+                    CHECK(hi >= double(line.hi[a]) - 1e-6);
+                }
+            }
+        TimeBins boxes = bins;
+        boxes.lined = false;
+        if (fit.mean_area() < fit_linear(boxes).mean_area()) ++nearer;
+        CHECK(bins.mean_area() <= boxes.mean_area());
+    }
+    // The lines leave out the path inside each bin: nearly always tighter.
+    CHECK(nearer > kTrials * 9 / 10);
 }
