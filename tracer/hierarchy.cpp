@@ -171,11 +171,9 @@ void Hierarchy::release_outside(double t0, double t1) {
     });
 }
 
-void Hierarchy::enter_frame(double t0, double t1, Counters& counters) {
+void Hierarchy::enter_frame(double t0, double t1) {
     release_outside(t0, t1);
-    time_index_.build(&root_, t0, t1, [&](NodeRef* slot, NodeRef pending) {
-        return expand(slot, pending, counters);
-    });
+    time_index_.build(&root_, t0, t1);
 }
 
 std::size_t Hierarchy::held_bytes() const {

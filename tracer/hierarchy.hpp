@@ -185,10 +185,10 @@ class Hierarchy {
     // thread-safe: call it between frames, with no ray in flight.
     void release_outside(double t0, double t1);
 
-    // release_outside(t0, t1), then the time index over [t0, t1] (time_index.hpp),
-    // building the time nodes of the chain inside it: what a frame calls
-    // before its rays. Not thread-safe, as release_outside.
-    void enter_frame(double t0, double t1, Counters& counters);
+    // release_outside(t0, t1), then the time index over [t0, t1]
+    // (time_index.hpp): what a frame calls before its rays. Not
+    // thread-safe, as release_outside.
+    void enter_frame(double t0, double t1);
     // Where the walk of a ray at instant t starts: its piece of the time
     // index, or `root` (a copy of root()) where the index has none.
     NodeRef* time_entry(double t, NodeRef* root) const { return time_index_.entry(t, root); }

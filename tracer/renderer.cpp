@@ -290,9 +290,18 @@ Image Renderer::render_frame(int frame) {
     const runtime::Animation::FrameClock frame_clock = a.frame_clock(frame);
     // (Light of finite speed reaches back before the shutter opens.)
     const double first_instant = std::min(open, open + length);
+    // What preparing takes beyond the builds it counts itself (the frame
+    // baseline's hierarchy) is the frame's: spacetime mode builds the cells
+    // of its time index here, which rays built inside the render before.
+    const double build_before = counters_.build_seconds;
+    const auto prepare_start = std::chrono::steady_clock::now();
     query_->prepare_frame(
         lookback_ > 0.0 ? std::max(floor_, first_instant - lookback_) : first_instant,
         std::max(open, open + length), counters_);
+    counters_.render_seconds += std::max(
+        0.0,
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - prepare_start).count() -
+            (counters_.build_seconds - build_before));
     shader_->set_camera_interiors(camera_interiors(scene_, camera_mattering_, frame));
 
     const int width = a.width, height = a.height;

@@ -36,9 +36,7 @@ class SpacetimeQuery final : public RayQuery {
     // The slabs of frames done (or not yet begun) are let go: memory holds
     // what this frame's rays need, whatever the animation's length. Then
     // the frame's time index: its rays skip the chain of time nodes.
-    void prepare_frame(double t0, double t1, Counters& counters) override {
-        hierarchy_.enter_frame(t0, t1, counters);
-    }
+    void prepare_frame(double t0, double t1, Counters&) override { hierarchy_.enter_frame(t0, t1); }
 
     std::optional<ObjectHit> first_hit(const Ray4& ray, double s_min, double s_max,
                                        ThreadState& state) const override {

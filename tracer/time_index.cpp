@@ -10,8 +10,7 @@ void TimeIndex::clear() {
     end_closed_ = false;
 }
 
-void TimeIndex::build(NodeRef* root, double t0, double t1,
-                      const std::function<NodeRef(NodeRef* slot, NodeRef pending)>& expand) {
+void TimeIndex::build(NodeRef* root, double t0, double t1) {
     clear();
     if (!(t0 <= t1)) return;
     NodeRef ref = NodeRef::load(root);
@@ -30,8 +29,7 @@ void TimeIndex::build(NodeRef* root, double t0, double t1,
     while (!todo.empty()) {
         const Piece p = todo.back();
         todo.pop_back();
-        NodeRef r = NodeRef::load(p.slot);
-        if (r.kind() == RefKind::Pending) r = expand(p.slot, r);
+        const NodeRef r = NodeRef::load(p.slot);
         if (r.kind() != RefKind::TimeNode || pieces.size() + todo.size() + 2 > kMaxEntries) {
             pieces.push_back(p);
             continue;

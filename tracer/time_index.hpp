@@ -15,11 +15,12 @@
 //
 // Built between frames (Hierarchy::enter_frame), after the slabs outside
 // the frame are let go; cleared whenever a slab is released, since its
-// slots die with it. Not thread-safe to build; read by any thread.
+// slots die with it (a slot indexed while pending stays valid: the walk's
+// build stores its node there). Not thread-safe to build; read by any
+// thread.
 #pragma once
 
 #include <cstddef>
-#include <functional>
 #include <vector>
 
 #include "tracer/cell.hpp"
@@ -31,13 +32,13 @@ class TimeIndex {
     // More pieces than a frame has samples in time would not pay.
     static constexpr std::size_t kMaxEntries = 4096;
 
-    // Reads the chain of time nodes below *root over [t0, t1]. `expand`
-    // turns a pending slot into its node (Hierarchy::expand) and returns it:
-    // a cell of the chain inside the shutter is reached by the frame's rays
-    // anyway. Empty (every walk starts at the root) where the root is not a
-    // time node.
-    void build(NodeRef* root, double t0, double t1,
-               const std::function<NodeRef(NodeRef* slot, NodeRef pending)>& expand);
+    // Reads the chain of time nodes below *root over [t0, t1], as far as it
+    // is built: a pending cell ends its piece, and the walk builds it when
+    // a ray first reaches it, as before (building the chain here, on one
+    // thread, took the swarm's slices from the render's threads and
+    // doubled its time). Empty (every walk starts at the root) where the
+    // root is not a time node.
+    void build(NodeRef* root, double t0, double t1);
     void clear();
 
     // The slot a walk at instant t starts from: the indexed piece holding

@@ -1,8 +1,8 @@
 // The time index (tracer/time_index.hpp): for every instant of the frame,
 // the slot it gives is the one the chain of time nodes leads to (an instant
 // on a cut goes to the later piece) and, outside it, the root or that
-// same slot; pending cells of the chain are built
-// through the callback, and instants outside the index start at the root.
+// same slot; a pending cell of the chain ends a piece (the walk builds it)
+// and the index reaches below it once built.
 // Also the inline float steps of bound_rounding.hpp against std::nextafter.
 #include "tracer/time_index.hpp"
 
@@ -66,7 +66,7 @@ TEST_CASE("the time index starts each instant where the chain of time nodes lead
         double t0 = trial % 4 == 0 ? 0.25 : u(random), t1 = trial % 4 == 0 ? 0.5 : u(random);
         if (t0 > t1) std::swap(t0, t1);
         TimeIndex index;
-        index.build(&root, t0, t1, [](NodeRef*, NodeRef p) { return p; });
+        index.build(&root, t0, t1);
         REQUIRE(index.size() >= 1);
         NodeRef copy = root;
         for (int k = 0; k <= 1000; ++k) {
@@ -89,26 +89,21 @@ TEST_CASE("the time index starts each instant where the chain of time nodes lead
     }
 }
 
-TEST_CASE("the time index builds the pending cells of its chain and keeps a whole tree",
+TEST_CASE("the time index stops at a pending cell of its chain, which the walk builds",
           "[tracer][time_index]") {
     std::mt19937 random(5);
     Chain chain;
     NodeRef root = chain.make(0.0, 1.0, 3, random);
-    // Nothing pending: the callback is never called.
-    int expanded = 0;
-    std::deque<TimeNode> built;
     TimeIndex index;
-    index.build(&root, 0.0, 1.0, [&](NodeRef*, NodeRef pending) {
-        ++expanded;
-        return pending;
-    });
-    CHECK(expanded == 0);
+    index.build(&root, 0.0, 1.0);
     NodeRef copy = root;
     for (int k = 0; k <= 64; ++k) CHECK(index.entry(k / 64.0, &copy) == descend(&root, k / 64.0));
     // An instant at the chain's very end belongs to its last piece.
     CHECK(index.entry(1.0, &copy) == descend(&root, 1.0));
 
-    // A pending leaf in the chain: built by the callback into a time node.
+    // A chain whose later half is not built yet: its slot is a piece of
+    // its own, and stays the entry once a walk has built a time node there.
+    std::deque<TimeNode> built;
     TimeNode& top = built.emplace_back();
     top.t0 = 0.0;
     top.t1 = 1.0;
@@ -117,24 +112,24 @@ TEST_CASE("the time index builds the pending cells of its chain and keeps a whol
     int marker = 0;
     top.child[1] = NodeRef::node(RefKind::Pending, &marker);
     NodeRef pending_root = NodeRef::node(RefKind::TimeNode, &top);
+    index.build(&pending_root, 0.6, 0.9);
+    CHECK(index.size() == 1);  // [0.5, 1]; the earlier half is outside the shutter
+    CHECK(index.entry(0.7, &copy) == &top.child[1]);
+    CHECK(index.entry(0.4, &copy) == &copy);
     TimeNode& half = built.emplace_back();
     half.t0 = 0.5;
     half.t1 = 1.0;
     half.split = 0.75;
     half.child[0] = NodeRef::object(2);
     half.child[1] = NodeRef::object(3);
-    index.build(&pending_root, 0.6, 0.9, [&](NodeRef* slot, NodeRef) {
-        ++expanded;
-        const NodeRef node = NodeRef::node(RefKind::TimeNode, &half);
-        NodeRef::store(slot, node);
-        return node;
-    });
-    CHECK(expanded == 1);
-    CHECK(index.size() == 2);  // [0.5, 0.75) and [0.75, 1]; the earlier half is outside
+    NodeRef::store(&top.child[1], NodeRef::node(RefKind::TimeNode, &half));
+    CHECK(index.entry(0.7, &copy) == &top.child[1]);
+    CHECK(descend(index.entry(0.8, &copy), 0.8) == &half.child[1]);
+    // Built again for the next frame, it reaches below.
+    index.build(&pending_root, 0.6, 0.9);
+    CHECK(index.size() == 2);
     CHECK(index.entry(0.7, &copy) == &half.child[0]);
     CHECK(index.entry(0.75, &copy) == &half.child[1]);
-    CHECK(index.entry(0.9, &copy) == &half.child[1]);
-    CHECK(index.entry(0.4, &copy) == &copy);
     index.clear();
     CHECK(index.entry(0.7, &copy) == &copy);
 }
