@@ -271,6 +271,18 @@ bool TimeSweep::cached_edges(int level, std::uint64_t first, std::size_t count, 
     }
     if (level < depth_) return false;
     const int finer = level - depth_;
+    // The last two pieces decoded (a cut between two has both sides').
+    std::size_t decoded[2] = {piece_count(), piece_count()};
+    MovingBox pieces[2];
+    const auto piece = [&](std::size_t p) -> const MovingBox& {
+        for (int i = 0; i < 2; ++i)
+            if (decoded[i] == p) return pieces[i];
+        decoded[0] = decoded[1];
+        pieces[0] = pieces[1];
+        decoded[1] = p;
+        pieces[1] = moving_piece(p);
+        return pieces[1];
+    };
     for (std::size_t j = 0; j <= count; ++j) {
         const std::uint64_t cut = first + j;
         const double t = dyadic_time(time_, level, cut);
@@ -279,7 +291,7 @@ bool TimeSweep::cached_edges(int level, std::uint64_t first, std::size_t count, 
         for (const bool before : {true, false}) {
             if (before ? j == 0 : j == count) continue;
             const std::uint64_t bin = before ? cut - 1 : cut;
-            const MovingBox m = moving_piece(std::size_t(bin >> finer));
+            const MovingBox& m = piece(std::size_t(bin >> finer));
             const Box4 at = m.box_over(Interval(t, t));
             if (at.is_empty()) return false;
             for (int a = 0; a < 3; ++a) {
@@ -296,7 +308,21 @@ bool TimeSweep::cached_edges(int level, std::uint64_t first, std::size_t count, 
 bool TimeSweep::boxes_over_dyadic(int level, std::uint64_t first, std::size_t count,
                                   const IntelligentObject& object, Box4* out, glm::dvec3* edge_lo,
                                   glm::dvec3* edge_hi) const {
-    for (std::size_t k = 0; k < count; ++k) out[k] = box_over_dyadic(level, first + k);
+    if (!empty() && layout_ != Layout::Whole && level >= depth_) {
+        // Pieces inside cached ones: each cached piece decoded once (a
+        // leaf's eight bins mostly lie in one).
+        const int finer = level - depth_;
+        std::size_t decoded = piece_count();
+        MovingBox m;
+        for (std::size_t k = 0; k < count; ++k) {
+            const std::size_t p = std::size_t((first + k) >> finer);
+            if (p != decoded) m = moving_piece(decoded = p);
+            out[k] = m.box_over(Interval(dyadic_time(time_, level, first + k),
+                                         dyadic_time(time_, level, first + k + 1)));
+        }
+    } else {
+        for (std::size_t k = 0; k < count; ++k) out[k] = box_over_dyadic(level, first + k);
+    }
     const bool want_edges = edge_lo != nullptr && edge_hi != nullptr;
     if (!refines_ || level <= depth_ || empty() || count == 0)
         return want_edges && cached_edges(level, first, count, edge_lo, edge_hi);
