@@ -6,6 +6,7 @@
 #include <cstring>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <sstream>
 
 #include <sys/resource.h>
@@ -40,7 +41,13 @@ const Row kRows[] = {
     {"objects", [](const Counters& c) { return double(c.objects); }, 0},
     {"bounds built", [](const Counters& c) { return double(c.bounds_built); }, 0},
     {"hierarchy cells", [](const Counters& c) { return double(c.cells); }, 0},
-    {"cells of a full build", [](const Counters& c) { return double(c.cells_full); }, 0},
+    // (Not counted without --stats-full: none.)
+    {"cells of a full build",
+     [](const Counters& c) {
+         return c.cells_full > 0 || c.cells == 0 ? double(c.cells_full)
+                                                 : std::numeric_limits<double>::quiet_NaN();
+     },
+     0},
     {"box nodes", [](const Counters& c) { return double(c.box_nodes); }, 0},
     {"linear-motion nodes", [](const Counters& c) { return double(c.motion_nodes); }, 0},
     {"12-slab nodes", [](const Counters& c) { return double(c.slab_nodes); }, 0},
@@ -158,13 +165,18 @@ void print_stats(std::ostream& out, const std::vector<std::pair<std::string, Cou
     out << "\n";
     for (const Row& row : kRows) {
         out << std::left << std::setw(26) << row.name;
-        for (const auto& c : columns)
-            out << std::right << std::setw(16) << std::fixed << std::setprecision(row.decimals)
-                << row.value(c.second);
+        for (const auto& c : columns) {
+            const double v = row.value(c.second);
+            out << std::right << std::setw(16) << std::fixed << std::setprecision(row.decimals);
+            if (std::isfinite(v))
+                out << v;
+            else
+                out << "-";
+        }
         if (columns.size() == 2) {
             const double a = row.value(columns[0].second), b = row.value(columns[1].second);
             out << std::setw(10) << std::setprecision(2);
-            if (a > 0.0)
+            if (a > 0.0 && std::isfinite(b))
                 out << b / a;
             else
                 out << "-";
@@ -225,7 +237,10 @@ ModeRun render_mode(runtime::SceneDescription& scene, const RenderArguments& arg
     settings.build = args.hierarchy.options();
     settings.first_frame = frames.front();
     settings.last_frame = frames.back();
-    settings.build.count_full = args.stats || args.compare || args.stats_json.has_value();
+    // Counting a full build builds, after the render, what the lazy build
+    // left: as long as the render itself on a large scene (issue 43), so
+    // only on demand (and for --compare, the paper's tables).
+    settings.build.count_full = args.stats_full || args.compare;
     std::optional<ProgressLine> progress;
     if (isatty(STDERR_FILENO)) {
         progress.emplace(of.total ? of.total : frames.size(), of.done);

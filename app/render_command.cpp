@@ -157,6 +157,10 @@ void add_render_arguments(CLI::App& command, RenderArguments& a) {
     command.add_option("--animation", a.animation, "Also write an animated GIF of the frames");
     command.add_flag("--stats", a.stats, "Print the paper's table rows for the run");
     command.add_option("--stats-json", a.stats_json, "Write the same figures as JSON");
+    command.add_flag("--stats-full", a.stats_full,
+                     "Also count the cells a full build would make (implies --stats without "
+                     "--stats-json): builds what the lazy build left, after the render, which on "
+                     "a large scene takes about as long as the render");
     command.add_flag("--compare", a.compare,
                      "Render in spacetime and frames modes and print both columns and their ratio");
     command.add_option("--threads", a.threads, "Worker threads (default 0: all cores)")
@@ -499,7 +503,8 @@ int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err
             tracer::write_animation(frames, *args.animation);
             out << "animation: " << *args.animation << "\n";
         }
-        if ((args.stats || args.compare) && !columns.empty()) {
+        const bool print = args.stats || args.compare || (args.stats_full && !args.stats_json);
+        if (print && !columns.empty()) {
             std::vector<std::pair<std::string, Counters>> counters;
             for (const auto& [name, run] : columns) counters.emplace_back(name, run.counters);
             print_stats(out, counters);

@@ -34,6 +34,7 @@ struct RenderArguments {
     std::optional<std::string> output;  // pattern with ####
     std::optional<std::string> contact_sheet, animation, stats_json;
     bool stats = false;
+    bool stats_full = false;  // --stats-full: count a full build's cells too
     bool compare = false;
     int threads = 0;
     // The speed of light (tracer/light_travel.hpp), scene units per clock

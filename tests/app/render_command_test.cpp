@@ -84,6 +84,32 @@ TEST_CASE("render writes the frames, the contact sheet and the table rows", "[ap
     CHECK(stats.find("\"primary rays\": 384") != std::string::npos);  // 2 frames of 16 x 12
 }
 
+TEST_CASE("render counts a full build's cells only with --stats-full or --compare",
+          "[app][render]") {
+    const fs::path scene = scene_file(moving_sphere("<clock, 0, 0>"));
+    const fs::path out = fresh_output(scene);
+    for (const bool full : {false, true}) {
+        RenderArguments a = arguments_for(scene, out);
+        a.stats = true;
+        a.stats_full = full;
+        a.stats_json = (out / "stats.json").string();
+        std::ostringstream o, e;
+        REQUIRE(run_render(a, o, e) == 0);
+        INFO(o.str() << e.str());
+        // (The count after the render costs about as much as the render on
+        // a large scene: "-" in the table, null in the JSON, without it.)
+        const std::string text = o.str();
+        const auto row = text.find("cells of a full build");
+        REQUIRE(row != std::string::npos);
+        const std::string line = text.substr(row, text.find('\n', row) - row);
+        CHECK((line.find('-') != std::string::npos) == !full);
+        std::ifstream json(out / "stats.json");
+        const std::string stats((std::istreambuf_iterator<char>(json)),
+                                std::istreambuf_iterator<char>());
+        CHECK((stats.find("\"cells of a full build\": null") != std::string::npos) == !full);
+    }
+}
+
 TEST_CASE("render takes a list of frames", "[app][render]") {
     const fs::path scene = scene_file(moving_sphere("<clock, 0, 0>"));
     const fs::path out = fresh_output(scene);

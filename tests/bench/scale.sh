@@ -42,7 +42,7 @@ for frames in $frame_counts; do
             set -- $(echo "$run" | tr / ' ')
             json="$out/$1-$2-$n-$frames.json"
             "$hexant" render examples/swarm.pov examples/swarm.ini --declare "N=$n" \
-                --frame-count "$frames" --spp "$spp" --mode "$1" --build "$2" \
+                --frame-count "$frames" --spp "$spp" --mode "$1" --build "$2" --stats-full \
                 -o "$out/frame_####.png" --stats-json "$json" > /dev/null
             printf '%7s %6s %-16s %9.3f %9.3f %9s %9s %10s %8.1f %8.1f %8.1f %8.1f %8.2f\n' \
                 "$n" "$frames" "$1/$2" \
