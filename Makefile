@@ -26,7 +26,8 @@ golden: build
 
 # The peer benchmark against Embree 3 (tests/bench/embree_peer.cpp): Embree
 # is needed for it alone, so it is installed here and not by `deps`; prints
-# hexant's and Embree's times and errors on atom and bounce (a few minutes).
+# hexant's and Embree's times and errors on atom, bounce and the swarm at 10^3 to
+# 10^5 spheres (about a quarter of an hour; --scene and --swarm-n pick fewer).
 bench: deps
 	@dpkg-query -W -f='$${Status}' libembree-dev 2>/dev/null | grep -q "install ok installed" || { \
 	  if [ "$$(id -u)" = 0 ]; then \

@@ -65,7 +65,7 @@ struct Options {
     bool quick = false;
     std::optional<std::string> write_images;
     std::vector<int> swarm_counts{1000, 10000, 100000};  // N of each swarm job
-    std::size_t frames_max = 10000;  // hexant's frames mode only up to this many objects
+    std::size_t frames_max = 20000;  // hexant's frames mode only up to this many objects
 };
 
 // One scene as the benchmark runs it, everything resolved.
