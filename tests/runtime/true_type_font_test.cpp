@@ -11,6 +11,7 @@
 #include FT_OUTLINE_H
 
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -371,4 +372,95 @@ TEST_CASE("font: empty and blank strings", "[runtime][font]") {
     REQUIRE(replaced.glyphs.size() == 3);
     CHECK(replaced.glyphs[1].segments.empty());
     CHECK(replaced.glyphs[2].segments.empty());
+}
+
+namespace {
+
+std::uint32_t read_u32(const std::string& d, std::size_t at) {
+    return std::uint32_t(std::uint8_t(d[at])) << 24 | std::uint32_t(std::uint8_t(d[at + 1])) << 16 |
+           std::uint32_t(std::uint8_t(d[at + 2])) << 8 | std::uint32_t(std::uint8_t(d[at + 3]));
+}
+unsigned read_u16(const std::string& d, std::size_t at) {
+    return unsigned(std::uint8_t(d[at])) << 8 | unsigned(std::uint8_t(d[at + 1]));
+}
+void write_u16(std::string& d, std::size_t at, unsigned v) {
+    d[at] = char((v >> 8) & 0xFF);
+    d[at + 1] = char(v & 0xFF);
+}
+
+// A copy of `font` whose outlined glyphs (outlined[k]) are rewritten in
+// place as composites of one component each, glyph target(k, outlined)
+// (flags: word arguments, x and y offsets 0), as a hostile font file would
+// be (issue 45). Returns its path.
+template <class Target>
+std::filesystem::path composite_font(const std::filesystem::path& font, const std::string& name,
+                                     Target target) {
+    std::ifstream in(font, std::ios::binary);
+    std::string d((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::size_t head = 0, maxp = 0, loca = 0, glyf = 0;
+    for (unsigned i = 0; i < read_u16(d, 4); ++i) {
+        const std::size_t at = 12 + 16 * i;
+        const std::string tag = d.substr(at, 4);
+        const std::size_t offset = read_u32(d, at + 8);
+        if (tag == "head") head = offset;
+        if (tag == "maxp") maxp = offset;
+        if (tag == "loca") loca = offset;
+        if (tag == "glyf") glyf = offset;
+    }
+    REQUIRE((head && maxp && loca && glyf));
+    const bool long_offsets = read_u16(d, head + 50) != 0;
+    const unsigned glyphs = read_u16(d, maxp + 4);
+    const auto offset_of = [&](unsigned g) -> std::size_t {
+        return long_offsets ? read_u32(d, loca + 4 * g)
+                            : 2 * std::size_t(read_u16(d, loca + 2 * g));
+    };
+    std::vector<unsigned> outlined;  // glyphs with contours and room for a component
+    for (unsigned g = 0; g < glyphs; ++g) {
+        const std::size_t at = glyf + offset_of(g), end = glyf + offset_of(g + 1);
+        if (end >= at + 18 && std::int16_t(read_u16(d, at)) > 0) outlined.push_back(g);
+    }
+    REQUIRE(outlined.size() > 20);
+    for (std::size_t k = 0; k < outlined.size(); ++k) {
+        const std::size_t at = glyf + offset_of(outlined[k]);
+        write_u16(d, at, 0xFFFF);                // numberOfContours -1: a composite
+        write_u16(d, at + 10, 0x0001 | 0x0002);  // word arguments, x and y values
+        write_u16(d, at + 12, target(k, outlined));
+        write_u16(d, at + 14, 0);
+        write_u16(d, at + 16, 0);
+    }
+    const std::filesystem::path out = std::filesystem::temp_directory_path() / name;
+    std::ofstream(out, std::ios::binary) << d;
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("font: a composite glyph that contains itself, or nests too deep, is an error",
+          "[runtime][font]") {
+    const std::filesystem::path dir = font_dir();
+    REQUIRE_POV_FONTS(dir);
+    // Each glyph its own only component; then each the next one's (a chain
+    // through the whole font). Before, the first took 4 GB in a minute
+    // (each level copying the one below); POV-Ray recurses until its stack
+    // runs out.
+    const auto self =
+        composite_font(dir / "timrom.ttf", "hexant_font_test_self.ttf",
+                       [](std::size_t k, const std::vector<unsigned>& g) { return g[k]; });
+    const auto chain = composite_font(
+        dir / "timrom.ttf", "hexant_font_test_chain.ttf",
+        [](std::size_t k, const std::vector<unsigned>& g) { return g[(k + 1) % g.size()]; });
+    for (const auto& [path, expected] :
+         {std::pair{self, std::string("a cycle")}, std::pair{chain, std::string("16 deep")}}) {
+        const auto font = TrueTypeFont::load(path);
+        try {
+            (void)lay_out_text(*font, std::string("Hexant"), 1.0, {});
+            FAIL("no error for " << path);
+        } catch (const FontError& e) {
+            const std::string what = e.what();
+            INFO(what);
+            CHECK(what.find(path.filename().string()) != std::string::npos);
+            CHECK(what.find(expected) != std::string::npos);
+        }
+        std::filesystem::remove(path);
+    }
 }

@@ -265,14 +265,36 @@ struct TrueTypeFont::Impl {
         return face->glyph;
     }
 
+    // At most this many outline points in one glyph, its composites'
+    // copies counted: real glyphs have a few hundred; a composite that
+    // places another twice, sixteen levels deep, would make 2^16 copies.
+    static constexpr std::size_t kMaxGlyphPoints = std::size_t(1) << 20;
+
     // ExtractGlyphOutline (1958-2360) for one glyph index. The header and
     // outline read at glyf + loca[index]; for the character ' ' nothing is
-    // read (1968-1977). depth guards against composite cycles.
-    FontGlyph extract(unsigned index, bool space, int depth = 0) const {
+    // read (1968-1977). A composite that refers to a glyph being extracted
+    // (itself, or one that contains it) is an error, as is a glyph past
+    // kMaxGlyphPoints (issue 45: a self-referring glyph took 4 GB in a
+    // minute); POV-Ray recurses until its stack runs out.
+    FontGlyph extract(unsigned index, bool space) const {
+        std::vector<unsigned> within;
+        std::size_t point_count = 0;
+        return extract(index, space, within, point_count);
+    }
+    // `within`: the composites being extracted around this one, outermost
+    // first; `point_count`: the points of the outermost glyph so far.
+    FontGlyph extract(unsigned index, bool space, std::vector<unsigned>& within,
+                      std::size_t& point_count) const {
         FontGlyph g;
         g.glyph_index = index;
         g.metrics_index = index;
-        if (space || depth > 16) return g;
+        if (space) return g;
+        if (std::find(within.begin(), within.end(), index) != within.end())
+            fail("glyph " + std::to_string(within.front()) +
+                 " is a composite that contains glyph " + std::to_string(index) +
+                 " inside itself (a cycle)");
+        if (within.size() > 16)
+            fail("glyph " + std::to_string(within.front()) + " nests composites more than 16 deep");
         if (index >= num_glyphs || index >= loca.size()) return g;
         const std::size_t at = loca[index];
         bool ok = true;
@@ -297,6 +319,11 @@ struct TrueTypeFont::Impl {
             for (int c = 0; c < outline.n_contours; ++c) {
                 const int last = outline.contours[c];
                 std::vector<FontGlyph::Point> points;
+                point_count += std::size_t(std::max(0, last - first + 1));
+                if (point_count > kMaxGlyphPoints)
+                    fail("glyph " + std::to_string(within.empty() ? index : within.front()) +
+                         " has more than " + std::to_string(kMaxGlyphPoints) +
+                         " outline points, its composites' copies counted");
                 for (int i = first; i <= last; ++i) {
                     const FT_Vector v = outline.points[i];
                     const int x = static_cast<int>(v.x), y = static_cast<int>(v.y);
@@ -339,7 +366,10 @@ struct TrueTypeFont::Impl {
         for (const Component& c : components) {
             if (!(c.flags & kArgsAreXyValues)) continue;  // point matching: skipped (2262-2266)
             if (c.flags & kUseMyMetrics) g.metrics_index = static_cast<unsigned>(c.index);
-            const FontGlyph sub = extract(static_cast<unsigned>(c.index), false, depth + 1);
+            within.push_back(index);
+            const FontGlyph sub =
+                extract(static_cast<unsigned>(c.index), false, within, point_count);
+            within.pop_back();
             if (sub.contours.empty()) continue;
             // FreeType's matrix holds the file's F2Dot14 values times 4 in
             // 16.16: xx, yx, xy, yy in file order. POV-Ray names them
