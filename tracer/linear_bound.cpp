@@ -173,29 +173,34 @@ LinearBox fit_linear(const TimeBins& bins) {
     if (n <= 0 || bins.is_empty()) return box;
     box.empty = false;
     const bool lines = bins.lines();
+    constexpr double kNone = std::numeric_limits<double>::infinity();
     for (int k = 0; k < 3; ++k) {
         for (const bool upper : {false, true}) {
-            // A bin's value at its cut j: its line's there, or its box's
-            // side (mirrored for the upper end: larger is nearer).
+            // A side's value (mirrored for the upper end: larger is nearer).
             const auto side = [&](const BinBox& b) {
                 return upper ? -double(b.hi[k]) : double(b.lo[k]);
             };
-            const auto use_line = [&](int b) {
-                return lines &&
-                       0.5 * (side(bins.edge[b]) + side(bins.edge[b + 1])) >= side(bins.bin[b]);
-            };
+            // Each non-empty bin's values at its start and end: its line's
+            // where that is the nearer on average, else its box's side.
+            double start[kMaxBins], end[kMaxBins];
+            for (int b = 0; b < n; ++b) {
+                if (bins.bin[b].is_empty()) {
+                    start[b] = end[b] = kNone;
+                    continue;
+                }
+                const double held = side(bins.bin[b]);
+                start[b] = end[b] = held;
+                if (!lines) continue;
+                const double a = side(bins.edge[b]), z = side(bins.edge[b + 1]);
+                if (0.5 * (a + z) >= held) start[b] = a, end[b] = z;
+            }
             // One point per bin boundary touching a non-empty bin: the
             // outermost of its neighbours' values there.
             Point points[kMaxBins + 1];
             int count = 0;
             for (int j = 0; j <= n; ++j) {
-                double v = std::numeric_limits<double>::infinity();
-                for (const int b : {j - 1, j}) {
-                    if (b < 0 || b >= n || bins.bin[b].is_empty()) continue;
-                    v = std::min(v, use_line(b) ? side(bins.edge[j]) : side(bins.bin[b]));
-                }
-                if (v != std::numeric_limits<double>::infinity())
-                    points[count++] = {double(j) / double(n), v};
+                const double v = std::min(j > 0 ? end[j - 1] : kNone, j < n ? start[j] : kNone);
+                if (v != kNone) points[count++] = {double(j) / double(n), v};
             }
             // An infinite end (an object without a finite box) stays infinite.
             bool finite = true;
