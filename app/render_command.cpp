@@ -230,6 +230,12 @@ void check_outputs(const RenderArguments& args, const std::string& pattern,
             if (o.per_frame) tracer::check_frame_pattern(o.name, selected.size(), o.flag);
             if (o.kind == Output::Kind::Image) tracer::check_image_name(o.name);
             if (o.kind == Output::Kind::Animation) tracer::check_animation_name(o.name);
+            // A link, device, FIFO or folder in an output's place is
+            // refused now, not after the render (whole_file.hpp).
+            for (const int frame : selected) {
+                tracer::TemporaryFile::refuse_other_than_regular(file_of(o, frame));
+                if (!o.per_frame) break;
+            }
         });
         // (A folder that could not be made fails now, not after the first
         // frame: its nearest existing ancestor must be a folder this

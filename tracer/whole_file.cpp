@@ -9,6 +9,7 @@
 #include <system_error>
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace hexant::tracer {
@@ -98,7 +99,36 @@ TemporaryFile::TemporaryFile(const fs::path& path) : path_(path) {
     std::string name = path.filename().string();
     if (name.size() + suffix.size() + 1 > 255) name.resize(255 - suffix.size() - 1);
     temporary_ = path.parent_path() / ("." + name + suffix);
+    refuse_other_than_regular(path_);
+    // Created here, as a new regular file of this process's own, never
+    // through what sits at its name (issue 45: a link planted at a frame's
+    // temporary name had the frame written into the file it pointed to):
+    // O_EXCL | O_NOFOLLOW fail on a link or anything else there, which is
+    // removed (unlink removes a link, not its target) and the name tried
+    // once more.
+    int fd = -1;
+    for (int attempt = 0; attempt < 2 && fd < 0; ++attempt) {
+        fd = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+        if (fd < 0 && errno == EEXIST && attempt == 0) ::unlink(temporary_.c_str());
+    }
+    if (fd < 0)
+        throw std::runtime_error(path.string() + ": cannot create its temporary file " +
+                                 temporary_.string() + ": " + std::strerror(errno));
+    ::close(fd);
     slot_ = register_temporary(temporary_);
+}
+
+void TemporaryFile::refuse_other_than_regular(const fs::path& path) {
+    struct stat st {};
+    if (::lstat(path.c_str(), &st) != 0 || S_ISREG(st.st_mode)) return;
+    const char* what = S_ISLNK(st.st_mode)                          ? "a symbolic link"
+                       : S_ISDIR(st.st_mode)                        ? "a folder"
+                       : S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode) ? "a device"
+                       : S_ISFIFO(st.st_mode)                       ? "a FIFO"
+                                                                    : "not a regular file";
+    throw std::runtime_error(path.string() + ": is " + std::string(what) +
+                             "; hexant writes a file only where nothing is or over a regular "
+                             "file, never through a link or into a device");
 }
 
 int remove_leftover_temporaries(const fs::path& path) {
@@ -151,6 +181,14 @@ void TemporaryFile::commit() {
     // Written data that did not fit (a full disk) shows here at the latest.
     if (const std::string reason = sync_path(temporary_, O_RDONLY); !reason.empty())
         fail("writing failed: " + reason);
+    // (Checked again: the place may have changed while the file was made.)
+    try {
+        refuse_other_than_regular(path_);
+    } catch (const std::runtime_error& e) {
+        std::error_code ignored;
+        fs::remove(temporary_, ignored);
+        throw;
+    }
     std::error_code error;
     fs::rename(temporary_, path_, error);
     if (error) fail("cannot rename the finished file: " + error.message());
@@ -164,8 +202,8 @@ void TemporaryFile::commit() {
 void write_text_file(const fs::path& path, const std::string& text) {
     TemporaryFile temporary(path);
     {
-        const int fd =
-            ::open(temporary.name().c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+        const int fd = ::open(temporary.name().c_str(),
+                              O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0666);
         if (fd < 0)
             throw std::runtime_error(path.string() + ": cannot write: " + std::strerror(errno));
         std::size_t done = 0;

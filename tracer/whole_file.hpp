@@ -14,8 +14,13 @@
 namespace hexant::tracer {
 
 // A temporary file being written: named beside `path` (".NAME.PID.partial",
-// the folder created; NAME cut to fit 255 bytes), registered for removal on a signal, and removed
-// when the object goes away unless commit() renamed it over `path`.
+// the folder created; NAME cut to fit 255 bytes), created empty as a new
+// regular file (O_EXCL | O_NOFOLLOW: never through a link planted at its
+// name), registered for removal on a signal, and removed when the object
+// goes away unless commit() renamed it over `path`. A `path` that is a
+// link, a device, a FIFO or a folder is refused (std::runtime_error naming
+// it), here and again before the rename: only nothing or a regular file is
+// replaced.
 class TemporaryFile {
   public:
     explicit TemporaryFile(const std::filesystem::path& path);
@@ -29,6 +34,9 @@ class TemporaryFile {
     // flushes the folder; throws std::runtime_error naming the path and
     // the system's reason (the temporary is removed).
     void commit();
+
+    // Throws std::runtime_error if `path` exists and is not a regular file.
+    static void refuse_other_than_regular(const std::filesystem::path& path);
 
   private:
     std::filesystem::path path_, temporary_;

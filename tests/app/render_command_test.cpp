@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include <catch2/catch.hpp>
+#include <sys/stat.h>
 
 namespace fs = std::filesystem;
 using hexant::app::RenderArguments;
@@ -388,6 +389,25 @@ TEST_CASE("render's adaptive flags refuse what makes no sense, naming the flag",
     refused([&](RenderArguments& a) { a.samples_image = (plain / "s_##.png").string(); },
             "cannot write in");
     CHECK_FALSE(fs::exists(out));  // (and nothing made on the way)
+    // An output in the place of a link or a device is refused before the
+    // first frame, and the link is left as it was (issue 45).
+    const fs::path victim = scene.parent_path() / "victim.json";
+    std::ofstream(victim) << "not yours";
+    const fs::path link = scene.parent_path() / "link.json";
+    fs::remove(link);
+    fs::create_symlink(victim, link);
+    refused([&](RenderArguments& a) { a.stats_json = link.string(); }, "a symbolic link");
+    // (A FIFO stands for a device: a test that went wrong must not replace
+    // the machine's /dev/null.)
+    const fs::path fifo = scene.parent_path() / "fifo.json";
+    fs::remove(fifo);
+    REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+    refused([&](RenderArguments& a) { a.stats_json = fifo.string(); }, "a FIFO");
+    CHECK(fs::is_fifo(fifo));
+    CHECK(fs::is_symlink(link));
+    std::ifstream back(victim);
+    CHECK(std::string((std::istreambuf_iterator<char>(back)), std::istreambuf_iterator<char>()) ==
+          "not yours");
     // The default ceiling is named as such.
     refused(
         [&](RenderArguments& a) {

@@ -2,16 +2,20 @@
 // (what a full disk looks like to a writer) an image or a text file is an
 // error naming the file and the system's reason, with nothing left under
 // its name and no temporary; a run killed by a signal removes the
-// temporaries it was writing.
+// temporaries it was writing. A link planted at a temporary name is never
+// written through, and an output that is a link, a FIFO or a folder is
+// refused (issue 45).
 #include "tracer/whole_file.hpp"
 
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <string>
 
 #include <catch2/catch.hpp>
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -134,5 +138,69 @@ TEST_CASE("a run ended by a signal removes the temporaries it was writing", "[tr
         tr::remove_registered_temporaries();
         CHECK(fs::exists(folder / "kept.txt"));
     }
+    fs::remove_all(folder);
+}
+
+namespace {
+
+std::string contents(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+}  // namespace
+
+TEST_CASE("a link planted at a temporary name is never written through", "[tracer][files]") {
+    // Issue 45: a symbolic link at ".NAME.PID.partial" had the frame, then
+    // the statistics, written into whatever file it pointed to.
+    const fs::path folder = fs::temp_directory_path() / "hexant_planted_link_test";
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    const fs::path victim = folder / "victim.txt";
+    std::ofstream(victim) << "not yours";
+    const std::string pid = std::to_string(::getpid());
+    for (const std::string name : {"f.png", "stats.json"}) {
+        const fs::path temporary = folder / ("." + name + "." + pid + ".partial");
+        fs::create_symlink(victim, temporary);
+        if (name == "f.png")
+            tr::write_image(noise(8), folder / name);
+        else
+            tr::write_text_file(folder / name, "{}");
+        CHECK(contents(victim) == "not yours");
+        CHECK(fs::is_regular_file(fs::symlink_status(folder / name)));
+        CHECK_FALSE(fs::exists(fs::symlink_status(temporary)));
+    }
+    CHECK(contents(folder / "stats.json") == "{}");
+    fs::remove_all(folder);
+}
+
+TEST_CASE("an output that is a link, a FIFO or a folder is refused and left as it was",
+          "[tracer][files]") {
+    const fs::path folder = fs::temp_directory_path() / "hexant_special_output_test";
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    const fs::path victim = folder / "victim.png";
+    std::ofstream(victim) << "not yours";
+    fs::create_symlink(victim, folder / "link.png");
+    REQUIRE(::mkfifo((folder / "fifo.json").c_str(), 0600) == 0);
+    fs::create_directories(folder / "folder.png");
+    const auto refused = [&](const std::function<void()>& write, const std::string& what) {
+        try {
+            write();
+            FAIL("written over " << what);
+        } catch (const std::runtime_error& e) {
+            INFO(e.what());
+            CHECK(std::string(e.what()).find(what) != std::string::npos);
+        }
+    };
+    refused([&] { tr::write_image(noise(8), folder / "link.png"); }, "a symbolic link");
+    refused([&] { tr::write_text_file(folder / "fifo.json", "{}"); }, "a FIFO");
+    refused([&] { tr::write_image(noise(8), folder / "folder.png"); }, "a folder");
+    CHECK(contents(victim) == "not yours");
+    CHECK(fs::is_symlink(folder / "link.png"));
+    CHECK(fs::is_fifo(folder / "fifo.json"));
+    // Nothing of theirs left behind.
+    for (const auto& entry : fs::directory_iterator(folder))
+        CHECK(entry.path().filename().string().find(".partial") == std::string::npos);
     fs::remove_all(folder);
 }
