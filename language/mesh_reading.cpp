@@ -1,6 +1,7 @@
 #include "language/mesh_reading.hpp"
 
 #include <cmath>
+#include <sstream>
 
 #include "language/checked_integer.hpp"
 #include "language/value_ops.hpp"
@@ -15,12 +16,22 @@ using runtime::objects::MeshFace;
 // The most vertices, normals, uvs or faces a mesh may have (indices are 32-bit).
 constexpr long long kMaxMeshItems = 1LL << 31;
 
+// A mesh's numbers must be finite, as a plain triangle's corners must: one
+// infinite or NaN vertex made the whole mesh vanish with no word (issue
+// 45; its bounds and hierarchy became NaN).
+glm::dvec3 finite_vector(const glm::dvec3& p, const std::string& what) {
+    if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) return p;
+    std::ostringstream text;
+    text << what << " is not finite: <" << p.x << ", " << p.y << ", " << p.z << ">";
+    throw ValueError(text.str());
+}
+
 glm::dvec3 fixed_vector(const runtime::Vector3Function& v, const std::string& what) {
     if (v.depends_on_time())
         throw ValueError(what +
                          " depends on clock; a mesh's triangles are fixed when the scene is "
                          "read (move, turn or deform the whole mesh with its transforms)");
-    return v(0.0);
+    return finite_vector(v(0.0), what);
 }
 
 glm::dvec3 fixed_vector(const Value& v, const std::string& what) {
@@ -76,6 +87,7 @@ void add_mesh_triangle(MeshData& mesh, const runtime::ObjectRecord& triangle) {
                     "a mesh triangle's uv vector depends on clock; a mesh's triangles are fixed "
                     "when "
                     "the scene is read");
+            finite_vector({c[0](0.0), c[1](0.0), 0.0}, "a mesh triangle's uv vector");
             mesh.uvs.emplace_back(c[0](0.0), c[1](0.0));
             face.uv[i] = static_cast<std::int32_t>(mesh.uvs.size() - 1);
         }
@@ -140,7 +152,9 @@ void read_mesh2_section(MeshData& mesh, const std::string& section,
         auto& list = section == "vertex_vectors" ? mesh.vertices : mesh.normals;
         list.clear();
         list.reserve(values.size() - 1);
-        for (std::size_t i = 1; i < values.size(); ++i) list.push_back(vector3(values[i]));
+        for (std::size_t i = 1; i < values.size(); ++i)
+            list.push_back(finite_vector(vector3(values[i]),
+                                         "entry " + std::to_string(i - 1) + " of " + section));
         return;
     }
     if (section == "uv_vectors") {
@@ -149,7 +163,9 @@ void read_mesh2_section(MeshData& mesh, const std::string& section,
         mesh.uvs.reserve(values.size() - 1);
         for (std::size_t i = 1; i < values.size(); ++i) {
             const MeshValue& v = values[i];
-            mesh.uvs.emplace_back(v.c[0], v.size == 1 ? v.c[0] : v.c[1]);
+            const glm::dvec2 uv(v.c[0], v.size == 1 ? v.c[0] : v.c[1]);
+            finite_vector({uv.x, uv.y, 0.0}, "entry " + std::to_string(i - 1) + " of uv_vectors");
+            mesh.uvs.push_back(uv);
         }
         return;
     }

@@ -3,6 +3,8 @@
 // it.
 #pragma once
 
+#include <sstream>
+
 #include "language/interpreter/reading.hpp"
 #include "language/interpreter_state.hpp"
 
@@ -77,6 +79,19 @@ bool Interpreter::run_for(ParseInput& in) {
         fail(opened, e);
     }
     if (step == 0.0) fail(opened, "#for with a step of 0 would never end");
+    // A NaN bound ran no turn with no word where every other NaN is an
+    // error at its place (issue 45); an infinite one would never end.
+    if (!std::isfinite(from) || !std::isfinite(step) ||
+        (to.is_constant() && !std::isfinite(to.constant()))) {
+        std::ostringstream text;
+        text << "#for needs finite bounds and step (start " << from << ", end ";
+        if (to.is_constant())
+            text << to.constant();
+        else
+            text << "on clock";
+        text << ", step " << step << ")";
+        fail(opened, text.str());
+    }
     const auto start = in.iterator();
     for_from<Item, Action, Control>(in, opened, start, variable, from, step, to, 0);
     return true;
