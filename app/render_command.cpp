@@ -228,7 +228,15 @@ void check_outputs(const RenderArguments& args, const std::string& pattern,
         if (o.name.empty()) throw std::runtime_error(o.flag + ": an empty file name");
         named([&] {
             if (o.per_frame) tracer::check_frame_pattern(o.name, selected.size(), o.flag);
-            if (o.kind == Output::Kind::Image) tracer::check_image_name(o.name);
+            if (o.kind == Output::Kind::Image) {
+                // Each per-frame image is a frame's size; the contact sheet
+                // its grid's.
+                const auto [width, height] =
+                    o.per_frame ? std::pair{animation.width, animation.height}
+                                : tracer::contact_sheet_size(int(selected.size()), animation.width,
+                                                             animation.height);
+                tracer::check_image_size(o.name, width, height);
+            }
             if (o.kind == Output::Kind::Animation) tracer::check_animation_name(o.name);
             // A link, device, FIFO or folder in an output's place is
             // refused now, not after the render (whole_file.hpp).

@@ -60,6 +60,9 @@ struct ImageFormat {
     void (*write)(const std::filesystem::path& file, int width, int height, const void* pixels);
     StoredImage (*read)(const std::filesystem::path& file);
     bool (*recognizes)(const unsigned char* head, std::size_t bytes);  // the file's magic
+    // The widest and tallest image it writes (0: no limit of its own), so
+    // that a command can refuse a size before it renders anything.
+    int max_side = 0;
 };
 
 // A name's extension in lower case (".PNG" and ".png" ask for one format).

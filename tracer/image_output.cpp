@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <stdexcept>
 
 #include "image/colour_transfer.hpp"
@@ -110,6 +111,14 @@ const ImageFormat& check_image_name(const fs::path& path) {
     return *format;
 }
 
+void check_image_size(const fs::path& path, int width, int height) {
+    const ImageFormat& format = check_image_name(path);
+    if (format.max_side > 0 && std::max(width, height) > format.max_side)
+        throw std::runtime_error(path.string() + ": a " + format.name + " is at most " +
+                                 std::to_string(format.max_side) + " pixels a side; the image is " +
+                                 std::to_string(width) + " by " + std::to_string(height));
+}
+
 void check_animation_name(const fs::path& path) {
     if (lower_case_extension(path) != ".gif")
         throw std::runtime_error(path.string() + ": an animation is written as .gif");
@@ -139,13 +148,24 @@ static int default_columns(int n) {
     return square;
 }
 
+std::pair<int, int> contact_sheet_size(int frames, int width, int height, int columns) {
+    if (frames <= 0) return {0, 0};
+    if (columns <= 0) columns = default_columns(frames);
+    const long long rows = (frames + columns - 1) / columns;
+    // (Past an int, as the largest int: too large for any format anyway.)
+    const auto side = [](long long v) {
+        return int(std::min<long long>(v, std::numeric_limits<int>::max()));
+    };
+    return {side(static_cast<long long>(width) * columns), side(height * rows)};
+}
+
 Image contact_sheet(const std::vector<Image>& frames, int columns) {
     if (frames.empty()) return {};
     const int n = static_cast<int>(frames.size());
     if (columns <= 0) columns = default_columns(n);
-    const int rows = (n + columns - 1) / columns;
     const int w = frames.front().width, h = frames.front().height;
-    Image sheet(w * columns, h * rows);
+    const auto [sheet_width, sheet_height] = contact_sheet_size(n, w, h, columns);
+    Image sheet(sheet_width, sheet_height);
     for (int k = 0; k < n; ++k) {
         const int ox = (k % columns) * w, oy = (k / columns) * h;
         for (int y = 0; y < h; ++y)

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "image/image_format.hpp"
@@ -30,6 +31,12 @@ void check_frame_pattern(const std::string& pattern, std::size_t frames,
 // std::runtime_error naming the file when there is none, so that a command
 // can refuse a name before it renders anything.
 const ImageFormat& check_image_name(const std::filesystem::path& path);
+// check_image_name, and also that an image of width x height fits the
+// format's own limit (ImageFormat::max_side; PNG 10^6 a side): a frame too
+// tall for its file is refused before it is rendered (issue 45).
+void check_image_size(const std::filesystem::path& path, int width, int height);
+// The size of contact_sheet()'s grid of `frames` frames of width x height.
+std::pair<int, int> contact_sheet_size(int frames, int width, int height, int columns = 0);
 // Throws std::runtime_error naming the file unless it is a .gif.
 void check_animation_name(const std::filesystem::path& path);
 

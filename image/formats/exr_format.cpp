@@ -81,6 +81,6 @@ bool is_exr(const unsigned char* head, std::size_t bytes) {
 
 }  // namespace
 
-const ImageFormat kExrFormat{"OpenEXR", ".exr", true, write_exr, read_exr, is_exr};
+const ImageFormat kExrFormat{"OpenEXR", ".exr", true, write_exr, read_exr, is_exr, 0};
 
 }  // namespace hexant::image

@@ -83,7 +83,7 @@ bool is_gif(const unsigned char* head, std::size_t bytes) {
 
 }  // namespace
 
-const ImageFormat kGifFormat{"GIF", ".gif", false, nullptr, read_gif, is_gif};
+const ImageFormat kGifFormat{"GIF", ".gif", false, nullptr, read_gif, is_gif, 0};
 
 StoredImage pot_from_gif(const StoredImage& gif) {
     if (gif.source != StoredImage::Source::Palette ||

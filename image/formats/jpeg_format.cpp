@@ -114,6 +114,6 @@ bool is_jpeg(const unsigned char* head, std::size_t bytes) {
 
 }  // namespace
 
-const ImageFormat kJpegFormat{"JPEG", ".jpg", false, nullptr, read_jpeg, is_jpeg};
+const ImageFormat kJpegFormat{"JPEG", ".jpg", false, nullptr, read_jpeg, is_jpeg, 0};
 
 }  // namespace hexant::image

@@ -174,6 +174,8 @@ bool is_png(const unsigned char* head, std::size_t bytes) {
 
 }  // namespace
 
-const ImageFormat kPngFormat{"PNG", ".png", false, write_png, read_png, is_png};
+// libpng's writer refuses an IHDR past its user limits, 10^6 pixels a
+// side by default (PNG_USER_WIDTH_MAX, PNG_USER_HEIGHT_MAX).
+const ImageFormat kPngFormat{"PNG", ".png", false, write_png, read_png, is_png, 1000000};
 
 }  // namespace hexant::image

@@ -389,6 +389,23 @@ TEST_CASE("render's adaptive flags refuse what makes no sense, naming the flag",
     refused([&](RenderArguments& a) { a.samples_image = (plain / "s_##.png").string(); },
             "cannot write in");
     CHECK_FALSE(fs::exists(out));  // (and nothing made on the way)
+    // A frame taller than its format allows is refused before it is
+    // rendered, not after (issue 45: libpng refused the IHDR of a 1 by 10^8
+    // frame once it was done); a contact sheet by its grid's size.
+    refused(
+        [&](RenderArguments& a) {
+            a.scene.width = 1;
+            a.scene.height = 2000000;
+        },
+        "a PNG is at most 1000000 pixels a side; the image is 1 by 2000000");
+    refused(
+        [&](RenderArguments& a) {
+            a.scene.width = 600000;
+            a.scene.height = 1;
+            a.frames = "1:3";
+            a.contact_sheet = (out / "sheet.png").string();
+        },
+        "sheet.png: a PNG is at most 1000000 pixels a side; the image is 1800000 by 1");
     // An output in the place of a link or a device is refused before the
     // first frame, and the link is left as it was (issue 45).
     const fs::path victim = scene.parent_path() / "victim.json";
