@@ -80,6 +80,10 @@ void add_scene_arguments(CLI::App& command, SceneArguments& a) {
                     "Characters of one string (default 16777216, 16 Mi)")
         ->check(CLI::Range(std::size_t(1), std::size_t(1) << 40));
     command
+        .add_option("--max-debug-output", a.max_debug_output,
+                    "Bytes of #debug text a scene may print (default 67108864, 64 MiB)")
+        ->check(CLI::Range(std::size_t(1), std::size_t(1) << 40));
+    command
         .add_option(
             "--max-array-memory", a.max_array_memory_mib,
             "MiB the scene's arrays and its variables' strings may hold at once (default 2048)")
@@ -180,6 +184,7 @@ ResolvedScene resolve(const SceneArguments& arguments) {
     if (arguments.max_include_depth) limits.include_depth = *arguments.max_include_depth;
     if (arguments.max_string_length) limits.string_length = *arguments.max_string_length;
     if (arguments.max_array_memory_mib) limits.array_memory = *arguments.max_array_memory_mib << 20;
+    if (arguments.max_debug_output) limits.debug_output = *arguments.max_debug_output;
     if (arguments.max_frames) limits.frames = *arguments.max_frames;
     if (arguments.max_pixels) limits.image_pixels = *arguments.max_pixels;
     // A single clock value on a still is POV-Ray's +K: the still's clock.

@@ -33,7 +33,7 @@ struct SceneArguments {
     bool strict = false;                // every warning an error
     // Limits (language/limits.hpp); each raises or lowers one default.
     std::optional<std::size_t> max_loop_iterations, max_iterations, max_time_pieces, max_text_read,
-        max_string_length, max_array_memory_mib;
+        max_string_length, max_array_memory_mib, max_debug_output;
     std::optional<int> max_macro_depth, max_include_depth;
     std::optional<long long> max_frames, max_pixels;
 };

@@ -41,6 +41,13 @@ void Interpreter::check_string_length(std::size_t length, const std::string& wha
                          " (--max-string-length N raises it)");
 }
 
+void Interpreter::count_debug_output(std::size_t bytes, const p::position& where) {
+    debug_output_ += bytes;
+    if (debug_output_ > options.limits.debug_output)
+        fail(where, "#debug has printed more than " + std::to_string(options.limits.debug_output) +
+                        " bytes (--max-debug-output N raises it)");
+}
+
 // ------------------------------------------------------------------ entry points
 
 namespace {

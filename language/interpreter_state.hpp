@@ -427,6 +427,9 @@ class Interpreter {
     // A string about to be made of `length` characters, against
     // Limits::string_length; throws ValueError naming `what`.
     void check_string_length(std::size_t length, const std::string& what) const;
+    // #debug text about to be printed, against Limits::debug_output over
+    // the whole reading; an error at `where` past it.
+    void count_debug_output(std::size_t bytes, const p::position& where);
 
     // One loop iteration or macro call, against Limits::total_iterations:
     // the budget of the whole reading, across nested loops and macros.
@@ -584,6 +587,7 @@ class Interpreter {
     int include_depth_ = 0;
     std::size_t steps_ = 0;
     std::size_t text_read_ = 0;
+    std::size_t debug_output_ = 0;
 };
 
 }  // namespace hexant::language

@@ -49,6 +49,10 @@ struct Limits {
     // per condition (#if (sin(1 / (clock - 0.5)) > 0) would split it
     // without end): each piece runs the branch's text again.
     std::size_t time_pieces = 10'000;
+    // Bytes of #debug text printed over the whole reading (a loop printing
+    // filled 6.5 GB of a log in a minute, issue 45); 64 MiB is a million
+    // lines of 64 characters.
+    std::size_t debug_output = std::size_t(64) << 20;
 };
 
 }  // namespace hexant::language

@@ -63,8 +63,9 @@ template <>
 struct action<g::debug_directive> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        (void)in;
-        st.messages() << message_text(st.values.pop(), "#debug's text");
+        const std::string text = message_text(st.values.pop(), "#debug's text");
+        st.count_debug_output(text.size(), in.position());
+        st.messages() << text;
     }
 };
 

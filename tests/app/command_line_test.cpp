@@ -165,7 +165,8 @@ TEST_CASE("every limit has a flag, and frames and pixels are checked before any 
     const auto limits = resolved(
                             "--max-iterations 7 --max-macro-depth 8 --max-include-depth 9 "
                             "--max-string-length 10 --max-array-memory 11 --max-frames 12 "
-                            "--max-pixels 130000 --max-loop-iterations 14 --max-text-read 15")
+                            "--max-pixels 130000 --max-loop-iterations 14 --max-text-read 15 "
+                            "--max-debug-output 16")
                             .options.limits;
     CHECK(limits.total_iterations == 7);
     CHECK(limits.macro_depth == 8);
@@ -176,9 +177,11 @@ TEST_CASE("every limit has a flag, and frames and pixels are checked before any 
     CHECK(limits.image_pixels == 130000);
     CHECK(limits.loop_iterations == 14);
     CHECK(limits.text_read == 15);
+    CHECK(limits.debug_output == 16);
     for (const char* wrapped :
          {"--max-iterations -1", "--max-text-read -1", "--max-string-length -1",
-          "--max-array-memory -1", "--max-frames 0", "--max-pixels 0", "--max-macro-depth -1"})
+          "--max-debug-output -1", "--max-array-memory -1", "--max-frames 0", "--max-pixels 0",
+          "--max-macro-depth -1"})
         CHECK_THROWS(parse(wrapped));
 
     // -W 100000 -H 100000 ended in std::bad_alloc; now it is refused by name.
