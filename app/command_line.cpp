@@ -1,11 +1,13 @@
 #include "app/command_line.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <new>
 #include <ostream>
 #include <stdexcept>
 
 #include "language/scene_error.hpp"
+#include "language/source_files.hpp"
 
 namespace hexant::app {
 
@@ -88,20 +90,21 @@ void add_scene_arguments(CLI::App& command, SceneArguments& a) {
             "--max-array-memory", a.max_array_memory_mib,
             "MiB the scene's arrays and its variables' strings may hold at once (default 2048)")
         ->check(CLI::Range(std::size_t(1), std::size_t(1) << 30));
+    command
+        .add_option("--max-objects", a.max_objects,
+                    "Objects a scene may make, each CSG member and each copy counted "
+                    "(default 10^6)")
+        ->check(CLI::Range(std::uint64_t(1), std::uint64_t(1) << 40));
+    command
+        .add_option("--max-triangles", a.max_triangles,
+                    "Triangles the scene's meshes may hold in all (default 4*10^6)")
+        ->check(CLI::Range(std::uint64_t(1), std::uint64_t(1) << 40));
     command.add_option("--max-frames", a.max_frames, "Frames an animation may have (default 10^6)")
         ->check(CLI::Range(1LL, 2'000'000'000LL));
     command
         .add_option("--max-pixels", a.max_pixels,
                     "Pixels (width times height) an image may have (default 10^8)")
         ->check(CLI::Range(1LL, 1LL << 40));
-}
-
-void apply_ini_file(const std::filesystem::path& ini, ResolvedScene& resolved,
-                    const std::string& section) {
-    const language::IniSettings settings = language::read_ini_file(ini, section);
-    language::apply_ini_settings(settings, resolved.options, resolved.scene);
-    resolved.warnings.insert(resolved.warnings.end(), settings.warnings.begin(),
-                             settings.warnings.end());
 }
 
 namespace {
@@ -113,14 +116,58 @@ double full_number(const std::string& text) {
     return v;
 }
 
+// The Library_Path folders of the .ini files that a scene may read from:
+// inside the scene's folder, an --allow-read folder or POV-Ray's include
+// folder. An .ini travels with a downloaded scene, so its Library_Path=/etc
+// must not widen what the scene reads (issue 45); one outside is left out
+// of the search, with a warning naming its line.
+std::vector<std::filesystem::path> confined_library_paths(
+    const std::vector<std::pair<std::filesystem::path, std::string>>& given,
+    const std::filesystem::path& scene, const std::vector<std::filesystem::path>& allowed_reads,
+    std::vector<std::string>& warnings) {
+    namespace fs = std::filesystem;
+    std::error_code error;
+    std::vector<fs::path> roots{fs::absolute(scene, error).parent_path(),
+                                language::kPovRayIncludeDir};
+    roots.insert(roots.end(), allowed_reads.begin(), allowed_reads.end());
+    for (auto& root : roots) root = fs::weakly_canonical(root.empty() ? "." : root, error);
+    std::vector<fs::path> kept;
+    for (const auto& [folder, place] : given) {
+        const fs::path real = fs::weakly_canonical(folder, error);
+        const bool inside = std::any_of(roots.begin(), roots.end(), [&](const fs::path& root) {
+            return language::lies_in(real, root);
+        });
+        if (inside)
+            kept.push_back(folder);
+        else
+            warnings.push_back(place + ": Library_Path " + folder.string() +
+                               " is outside the scene's folder: not searched (an .ini may not "
+                               "widen what a scene reads; --allow-read " +
+                               folder.string() + " allows it)");
+    }
+    return kept;
+}
+
 }  // namespace
 
 ResolvedScene resolve(const SceneArguments& arguments) {
     ResolvedScene r;
     std::string named_scene;  // a scene on the command line wins over Input_File_Name
+    std::vector<std::pair<std::filesystem::path, std::string>> ini_library_paths;
     for (const auto& file : arguments.files) {
         if (const auto ini = language::ini_reference(file)) {
-            apply_ini_file(ini->file, r, ini->section);
+            const std::size_t before = r.options.include_paths.size();
+            const language::IniSettings settings = language::read_ini_file(ini->file, ini->section);
+            language::apply_ini_settings(settings, r.options, r.scene);
+            std::error_code error;
+            if (auto real = std::filesystem::canonical(ini->file, error); !error)
+                r.ini_files.push_back(std::move(real));
+            r.warnings.insert(r.warnings.end(), settings.warnings.begin(), settings.warnings.end());
+            // (Confined below, once the scene and --allow-read are known.)
+            for (std::size_t i = before; i < r.options.include_paths.size(); ++i)
+                ini_library_paths.emplace_back(r.options.include_paths[i],
+                                               settings.library_path_places.at(i - before));
+            r.options.include_paths.resize(before);
         } else {
             if (!named_scene.empty())
                 throw std::runtime_error("more than one scene named: " + named_scene + " and " +
@@ -163,8 +210,10 @@ ResolvedScene resolve(const SceneArguments& arguments) {
         }
     }
     if (arguments.rolling_shutter) a.rolling_shutter = *arguments.rolling_shutter;
-    for (const auto& path : arguments.include_paths) r.options.include_paths.emplace_back(path);
     for (const auto& path : arguments.read_paths) r.options.read_paths.emplace_back(path);
+    r.options.include_paths =
+        confined_library_paths(ini_library_paths, r.scene, r.options.read_paths, r.warnings);
+    for (const auto& path : arguments.include_paths) r.options.include_paths.emplace_back(path);
     for (const auto& path : arguments.write_paths) r.options.write_paths.emplace_back(path);
     // The default output folder, as render's default -o (render sets its own).
     r.options.output_folder = std::filesystem::path("out") / std::filesystem::path(r.scene).stem();
@@ -185,6 +234,8 @@ ResolvedScene resolve(const SceneArguments& arguments) {
     if (arguments.max_string_length) limits.string_length = *arguments.max_string_length;
     if (arguments.max_array_memory_mib) limits.array_memory = *arguments.max_array_memory_mib << 20;
     if (arguments.max_debug_output) limits.debug_output = *arguments.max_debug_output;
+    if (arguments.max_objects) limits.objects = *arguments.max_objects;
+    if (arguments.max_triangles) limits.triangles = *arguments.max_triangles;
     if (arguments.max_frames) limits.frames = *arguments.max_frames;
     if (arguments.max_pixels) limits.image_pixels = *arguments.max_pixels;
     // A single clock value on a still is POV-Ray's +K: the still's clock.

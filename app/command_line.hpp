@@ -3,6 +3,7 @@
 // POV-Ray .ini files apply in order, then flags override them.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <iosfwd>
@@ -36,6 +37,7 @@ struct SceneArguments {
         max_string_length, max_array_memory_mib, max_debug_output;
     std::optional<int> max_macro_depth, max_include_depth;
     std::optional<long long> max_frames, max_pixels;
+    std::optional<std::uint64_t> max_objects, max_triangles;
 };
 
 // Adds the shared positionals and flags to a subcommand.
@@ -44,8 +46,9 @@ void add_scene_arguments(CLI::App& command, SceneArguments& arguments);
 struct ResolvedScene {
     std::filesystem::path scene;
     language::ParseOptions options;
-    std::vector<std::string> warnings;  // from .ini files
-    std::optional<double> at_clock;     // --clock C
+    std::vector<std::string> warnings;             // from .ini files
+    std::optional<double> at_clock;                // --clock C
+    std::vector<std::filesystem::path> ini_files;  // read, canonical (inputs too)
 };
 
 // Applies the .ini files in order (a word ending in .ini, or .ini[Label] to
@@ -53,11 +56,6 @@ struct ResolvedScene {
 // Throws std::runtime_error naming the file and line of a bad .ini setting,
 // or a bad flag.
 ResolvedScene resolve(const SceneArguments& arguments);
-
-// Reads one POV-Ray .ini file (language/ini_file.hpp) onto `resolved`: its
-// options replace the current ones, its warnings are added.
-void apply_ini_file(const std::filesystem::path& ini, ResolvedScene& resolved,
-                    const std::string& section = {});
 
 // Runs a subcommand's body; a scene error is printed with its place and
 // context, any other error as "hexant: error: ...", and either returns 1.

@@ -194,7 +194,8 @@ namespace {
 // contact sheet named as a frame, or the stats as a samples image, would
 // replace it). Errors name the flag.
 void check_outputs(const RenderArguments& args, const std::string& pattern,
-                   const std::vector<int>& selected, const runtime::Animation& animation) {
+                   const std::vector<int>& selected, const runtime::Animation& animation,
+                   const std::vector<std::filesystem::path>& inputs) {
     struct Output {
         std::string flag, name;
         bool per_frame;  // a pattern with #### (one file per frame)
@@ -240,8 +241,17 @@ void check_outputs(const RenderArguments& args, const std::string& pattern,
             if (o.kind == Output::Kind::Animation) tracer::check_animation_name(o.name);
             // A link, device, FIFO or folder in an output's place is
             // refused now, not after the render (whole_file.hpp).
+            // Nor one of the scene's own inputs (its image_map, an include):
+            // it would be replaced (issue 45), the same file by any name.
             for (const int frame : selected) {
-                tracer::TemporaryFile::refuse_other_than_regular(file_of(o, frame));
+                const std::filesystem::path file = file_of(o, frame);
+                tracer::TemporaryFile::refuse_other_than_regular(file);
+                std::error_code error;
+                for (const auto& input : inputs)
+                    if (std::filesystem::equivalent(file, input, error))
+                        throw std::runtime_error(
+                            o.flag + " " + file.string() + " is one of the scene's inputs (" +
+                            input.string() + "): refused, it would be replaced");
                 if (!o.per_frame) break;
             }
         });
@@ -363,7 +373,7 @@ void check_render_plan(const RenderArguments& args, const std::filesystem::path&
     if (args.resume && args.compare)
         throw std::runtime_error("--resume skips frames --compare would measure");
     (void)resolve_sampling(args, scene);
-    check_outputs(args, pattern, selected, scene.animation);
+    check_outputs(args, pattern, selected, scene.animation, scene.inputs);
 }
 
 int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err) {
@@ -402,7 +412,9 @@ int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err
                 return 0;
             }
         }
-        check_outputs(args, pattern, selected, scene.animation);
+        std::vector<std::filesystem::path> inputs = scene.inputs;
+        inputs.insert(inputs.end(), resolved.ini_files.begin(), resolved.ini_files.end());
+        check_outputs(args, pattern, selected, scene.animation, inputs);
         if (args.resume) {
             // A frame on disk was written whole (a temporary renamed over
             // it); what a killed run left half-written is its temporaries.

@@ -1,12 +1,51 @@
 #include "app/scene_reading.hpp"
 
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
 #include <iostream>
+#include <memory>
 #include <sstream>
+
+#include <unistd.h>
 
 #include "language/interpreter.hpp"
 #include "language/scene_error.hpp"
 
 namespace hexant::app {
+
+namespace {
+
+// On a terminal, a line on stderr while a long reading runs, wiped when
+// the reading ends (ParseOptions::progress).
+class ReadingLine {
+  public:
+    explicit ReadingLine(language::ParseOptions& options, const std::filesystem::path& file) {
+        if (!isatty(STDERR_FILENO)) return;
+        options.progress = [width = width_, name = file.filename().string()](
+                               const language::ParseOptions::Progress& p) {
+            char line[200];
+            std::snprintf(line, sizeof line,
+                          "\rreading %.60s: %.0f s, %llu loop turns and macro calls, %llu "
+                          "objects, %llu triangles ",
+                          name.c_str(), p.seconds, static_cast<unsigned long long>(p.steps),
+                          static_cast<unsigned long long>(p.objects),
+                          static_cast<unsigned long long>(p.triangles));
+            std::cerr << line << std::flush;
+            *width = std::max(*width, std::strlen(line));
+        };
+    }
+    ReadingLine(const ReadingLine&) = delete;
+    ReadingLine& operator=(const ReadingLine&) = delete;
+    ~ReadingLine() {
+        if (*width_) std::cerr << "\r" << std::string(*width_, ' ') << "\r" << std::flush;
+    }
+
+  private:
+    std::shared_ptr<std::size_t> width_ = std::make_shared<std::size_t>(0);
+};
+
+}  // namespace
 
 SceneReading::SceneReading(const ResolvedScene& resolved, std::ostream& err)
     : options_(resolved.options), file_(resolved.scene), err_(err) {
@@ -18,6 +57,7 @@ SceneReading::SceneReading(const ResolvedScene& resolved, std::ostream& err)
     std::ostream& messages = options_.messages ? *options_.messages : std::cerr;
     options_.warnings_said = &warnings_said_;
     try {
+        const ReadingLine line(whole, file_);
         scene_ = language::parse_scene_file(file_, whole);
         messages << said.str();
         return;
@@ -51,6 +91,7 @@ std::optional<runtime::SceneDescription> SceneReading::try_frame(int frame, bool
         options.warnings_said = nullptr;
     }
     try {
+        const ReadingLine line(options, file_);
         return language::parse_scene_file(file_, options);
     } catch (const language::SceneError& e) {
         if (!e.may_read_frame_by_frame() || at_opening) throw;

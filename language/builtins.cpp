@@ -390,9 +390,10 @@ const std::map<std::string, Builtin>& table() {
              return Value{TimeFunction(std::strtod(arg_string(n, a, 0).c_str(), nullptr))};
          }},
         {"file_exists",
-         [](const std::string& n, const Args& a, RandomStreams&) {
-             expect_count(n, a, 1, 1);
-             return Value{TimeFunction(std::filesystem::exists(arg_string(n, a, 0)) ? 1.0 : 0.0)};
+         [](const std::string&, const Args&, RandomStreams&) -> Value {
+             // (Confined to the folders a scene may read: answered by the
+             // interpreter, language/actions/literals.hpp.)
+             throw std::logic_error("file_exists() is answered by the Interpreter");
          }},
         {"dimensions",
          [](const std::string& n, const Args& a, RandomStreams&) {

@@ -216,6 +216,7 @@ class Reader {
             case Option::LibraryPath:
                 if (value.empty()) bad(written, "a folder", value);
                 s_.library_paths.push_back(folder_ / value);
+                s_.library_path_places.push_back(place_);
                 break;
             case Option::Declare: {
                 const auto eq = value.find('=');

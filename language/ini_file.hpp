@@ -29,6 +29,7 @@ struct IniSettings {
     std::optional<double> initial_clock, final_clock;
     std::optional<bool> cyclic;
     std::vector<std::filesystem::path> library_paths;           // in order; they accumulate
+    std::vector<std::string> library_path_places;               // "FILE:LINE" of each
     std::vector<std::pair<std::string, std::string>> declares;  // NAME, VALUE
     std::vector<std::string> warnings;  // "FILE:LINE: ..." for ignored lines
 };

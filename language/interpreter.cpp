@@ -48,6 +48,36 @@ void Interpreter::count_debug_output(std::size_t bytes, const p::position& where
                         " bytes (--max-debug-output N raises it)");
 }
 
+void Interpreter::check_object_count(std::uint64_t objects, const p::position& where) const {
+    if (objects > options.limits.objects)
+        fail(where, "this object would make " +
+                        (objects >= runtime::kManyObjects ? std::string("more than 2^62")
+                                                          : std::to_string(objects)) +
+                        " objects (each member of a CSG, and each copy, is one), more than the "
+                        "limit of " +
+                        std::to_string(options.limits.objects) +
+                        " (a union doubled in a loop? --max-objects N raises the limit)");
+}
+
+void Interpreter::tell_progress_now() {
+    const auto now = std::chrono::steady_clock::now();
+    if (now < next_progress_ ||
+        now - began_ < std::chrono::duration<double>(options.progress_delay))
+        return;
+    next_progress_ = now + std::chrono::seconds(1);
+    options.progress(
+        {std::chrono::duration<double>(now - began_).count(), steps_, objects_, triangles_});
+}
+
+void Interpreter::count_triangles(std::size_t triangles, const p::position& where) {
+    tell_progress();
+    triangles_ += triangles;
+    if (triangles_ > options.limits.triangles)
+        fail(where, "the scene's meshes hold more than " +
+                        std::to_string(options.limits.triangles) +
+                        " triangles (--max-triangles N raises the limit)");
+}
+
 // ------------------------------------------------------------------ entry points
 
 namespace {
@@ -114,7 +144,11 @@ runtime::SceneDescription parse_scene_file(const std::filesystem::path& path,
                          ErrorPlace{path.string(), 0, 0, {}, {}});
     }
     const auto folder = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
-    return parse(text, path.string(), folder, options);
+    runtime::SceneDescription scene = parse(text, path.string(), folder, options);
+    std::error_code error;
+    const auto real = std::filesystem::canonical(path, error);
+    if (!error) scene.inputs.insert(scene.inputs.begin(), real);
+    return scene;
 }
 
 runtime::SceneDescription parse_scene_text(const std::string& text, const std::string& name,

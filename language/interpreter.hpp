@@ -2,7 +2,9 @@
 // directives as it is read, and return the runtime records it describes.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <iosfwd>
 #include <optional>
 #include <set>
@@ -53,6 +55,18 @@ struct ParseOptions {
     // Warnings said already (by another frame's reading): not said again;
     // each new one is added. Null: every warning is said.
     std::set<std::string>* warnings_said = nullptr;
+    // What a long reading has done so far (issue 45: a mesh of 10^7
+    // triangles from a #for loop read for a minute without a word).
+    struct Progress {
+        double seconds = 0.0;         // since the reading began
+        std::uint64_t steps = 0;      // loop iterations and macro calls
+        std::uint64_t objects = 0;    // made for the scene (Limits::objects)
+        std::uint64_t triangles = 0;  // read into meshes
+    };
+    // Called about once a second once the reading has run progress_delay
+    // seconds (null: never), on the reading's thread.
+    std::function<void(const Progress&)> progress;
+    double progress_delay = 2.0;
 };
 
 // Throws SceneError for any problem in the scene (its

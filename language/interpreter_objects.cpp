@@ -1,5 +1,6 @@
 // The Interpreter's objects: the checks of their patterns, the scene's objects and lights, arrays.
 // Part of the Interpreter (language/interpreter_state.hpp).
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -250,6 +251,14 @@ void check_evaluation_cost(Interpreter& st, const runtime::ObjectRecord& object,
 
 void Interpreter::add_object(const runtime::ObjectPtr& given, const p::position& where) {
     runtime::ObjectPtr object = given;
+    // Before any walk below: a union doubled 30 times is 2^30 members.
+    check_object_count(object->objects, where);
+    tell_progress();
+    objects_ = runtime::add_objects(objects_, object->objects);
+    if (objects_ > options.limits.objects)
+        fail(where, "the scene would make more than " + std::to_string(options.limits.objects) +
+                        " objects (each member of a CSG, and each copy, is one; --max-objects "
+                        "N raises the limit)");
     // An object without a texture takes the #default texture as it is now,
     // not as a later #default leaves it (POV-Ray copies it as it reads the
     // object: Parse_Object_Mods).
@@ -439,9 +448,31 @@ runtime::ObjectRecord make_shape(const Interpreter::ShapeOpening& shape, std::ve
         record.shape = std::move(group);
         return record;
     }
+    // A text makes a glyph a character, each about an object's memory
+    // (3.6 KB): counted against Limits::objects before they are laid out
+    // (a text of 16 Mi characters took 12 GB in 60 s, issue 45). Its
+    // string's code points (the string after the font's name).
+    std::uint64_t characters = 1;
+    if (kind == runtime::Text::keyword)
+        for (std::size_t i = 1; i < args.size(); ++i)
+            if (const Value& arg = args[i]; arg.is<std::string>()) {
+                const std::string& text = arg.as<std::string>();
+                const auto code_points =
+                    static_cast<std::uint64_t>(std::count_if(text.begin(), text.end(), [](char c) {
+                        return (static_cast<unsigned char>(c) & 0xC0) != 0x80;
+                    }));
+                characters = std::max(characters, code_points);
+            }
+    if (characters > st.options.limits.objects)
+        st.fail(where, "this text has " + std::to_string(characters) +
+                           " characters, each glyph an object: more than the limit of " +
+                           std::to_string(st.options.limits.objects) +
+                           " objects (--max-objects N raises it)");
     const BlockArguments arguments(kind, shape.options, args, st, where);
     runtime::ObjectRecord record;
     read_shape(shape.kind, arguments, record, runtime::ShapeKinds{});
+    if (const auto* text = std::get_if<runtime::Text>(&record.shape))
+        record.objects = std::max<std::uint64_t>(text->glyphs.size(), 1);
     return record;
 }
 

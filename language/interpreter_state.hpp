@@ -8,6 +8,7 @@
 #pragma once
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -417,6 +418,14 @@ class Interpreter {
     std::filesystem::path resolve_include(
         const std::string& name, const p::position& where, const std::string& what = "include file",
         const std::vector<std::filesystem::path>& also = {}) const;
+    // The file resolve_include finds and confines, without failing: its
+    // real path, or why it may not be read (`error`, never the contents).
+    struct FoundFile {
+        std::filesystem::path path;
+        std::string error;
+    };
+    FoundFile find_readable(const std::string& name, const std::string& what,
+                            const std::vector<std::filesystem::path>& also = {}) const;
     // The text of the include file at `path` (resolve_include's), counted
     // against Limits::text_read before it is read (read_source_text).
     std::string read_include(const std::filesystem::path& path, const p::position& where);
@@ -431,9 +440,23 @@ class Interpreter {
     // the whole reading; an error at `where` past it.
     void count_debug_output(std::size_t bytes, const p::position& where);
 
+    // An object about to be made of `objects` objects (ObjectRecord::objects),
+    // against Limits::objects; an error at `where` past it.
+    void check_object_count(std::uint64_t objects, const p::position& where) const;
+    // Triangles about to be added to a mesh, against Limits::triangles over
+    // the whole reading; an error at `where` past it.
+    void count_triangles(std::size_t triangles, const p::position& where);
+    // ParseOptions::progress, when it is due (the clock is read once every
+    // 1024 calls: a loop's turn takes microseconds).
+    void tell_progress() {
+        if (options.progress && (++ticks_ & 1023) == 0) tell_progress_now();
+    }
+    void tell_progress_now();
+
     // One loop iteration or macro call, against Limits::total_iterations:
     // the budget of the whole reading, across nested loops and macros.
     void count_step(const p::position& where) {
+        tell_progress();
         if (++steps_ > options.limits.total_iterations)
             fail(where, "the scene ran more than " +
                             std::to_string(options.limits.total_iterations) +
@@ -588,6 +611,11 @@ class Interpreter {
     std::size_t steps_ = 0;
     std::size_t text_read_ = 0;
     std::size_t debug_output_ = 0;
+    std::uint64_t objects_ = 0;    // made for the scene's objects (add_object)
+    std::uint64_t triangles_ = 0;  // read into meshes
+    std::uint64_t ticks_ = 0;      // calls of tell_progress
+    std::chrono::steady_clock::time_point began_ = std::chrono::steady_clock::now();
+    std::chrono::steady_clock::time_point next_progress_ = began_;
 };
 
 }  // namespace hexant::language

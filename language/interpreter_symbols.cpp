@@ -1,6 +1,7 @@
 // The Interpreter's use of its symbols (the checks that need time and places), the merge of
 // a time split's sides, and #include's reading of files. Part of the Interpreter
 // (language/interpreter_state.hpp).
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -315,6 +316,16 @@ std::string Interpreter::read_include(const std::filesystem::path& path, const p
 std::filesystem::path Interpreter::resolve_include(
     const std::string& name, const p::position& where, const std::string& what,
     const std::vector<std::filesystem::path>& also) const {
+    const FoundFile found = find_readable(name, what, also);
+    if (!found.error.empty()) fail(where, found.error);
+    if (std::find(scene.inputs.begin(), scene.inputs.end(), found.path) == scene.inputs.end())
+        scene.inputs.push_back(found.path);
+    return found.path;
+}
+
+Interpreter::FoundFile Interpreter::find_readable(
+    const std::string& name, const std::string& what,
+    const std::vector<std::filesystem::path>& also) const {
     namespace fs = std::filesystem;
     const fs::path file(name);
     std::vector<fs::path> folders{scene_folder_};
@@ -335,32 +346,34 @@ std::filesystem::path Interpreter::resolve_include(
         }
     }
     if (found.empty()) {
-        if (file.is_absolute()) fail(where, what + " '" + name + "' not found");
+        if (file.is_absolute()) return {{}, what + " '" + name + "' not found"};
         std::string searched;
         for (const auto& folder : folders)
             searched += (searched.empty() ? "" : ", ") + folder.string();
-        fail(where, what + " '" + name + "' not found (searched " + searched + ")");
+        return {{}, what + " '" + name + "' not found (searched " + searched + ")"};
     }
     // Confinement, on the file as it really is (`..` and symbolic links
     // resolved): a regular file inside a folder a scene may read. The
     // messages never show the file's contents.
     const fs::path real = fs::canonical(found, error);
-    if (error) fail(where, what + " '" + name + "' cannot be read: " + error.message());
+    if (error) return {{}, what + " '" + name + "' cannot be read: " + error.message()};
     if (!fs::is_regular_file(real, error))
-        fail(where, what + " '" + name +
-                        "' is not a regular file (a device, FIFO or folder "
-                        "cannot be read)");
+        return {{},
+                what + " '" + name +
+                    "' is not a regular file (a device, FIFO or folder "
+                    "cannot be read)"};
     std::vector<fs::path> allowed = folders;
     allowed.push_back(kPovRayIncludeDir);
     allowed.insert(allowed.end(), options.read_paths.begin(), options.read_paths.end());
-    if (is_system_path(real)) fail(where, what + " '" + name + "' is a system file: refused");
+    if (is_system_path(real)) return {{}, what + " '" + name + "' is a system file: refused"};
     for (const auto& folder : allowed) {
         const fs::path root = fs::weakly_canonical(folder.empty() ? fs::path(".") : folder, error);
-        if (!error && lies_in(real, root)) return real;
+        if (!error && lies_in(real, root)) return {real, {}};
     }
-    fail(where, what + " '" + name +
-                    "' is outside the folders a scene may read (its own "
-                    "folder, the -L folders and the include folders; --allow-read DIR adds one)");
+    return {{},
+            what + " '" + name +
+                "' is outside the folders a scene may read (its own "
+                "folder, the -L folders and the include folders; --allow-read DIR adds one)"};
 }
 
 }  // namespace hexant::language

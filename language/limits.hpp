@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 
 namespace hexant::language {
 
@@ -14,9 +15,11 @@ struct Limits {
     std::size_t loop_iterations = 10'000'000;
     // Loop iterations and macro calls of the whole reading together (nested
     // loops multiply: two nested loops of 10^5 each stay under the per-loop
-    // limit but take 10^10 steps). 10^8 trivial iterations take about a
-    // minute.
-    std::size_t total_iterations = 100'000'000;
+    // limit but take 10^10 steps). A turn of `#declare S = S + 1;` takes
+    // 2.1 us and a macro call 2-4 us (2026-12-06): 10^7 of them about half
+    // a minute; the former 10^8 let a doubly recursive macro (Fibonacci of
+    // 40) run for six minutes before it stopped (issue 45).
+    std::size_t total_iterations = 10'000'000;
     // Bytes of scene text the reader goes over: every file once per
     // #include, a loop's body once per turn and a macro's body once per
     // call. Iterations alone do not bound the work: a loop whose 50 KB body
@@ -53,6 +56,16 @@ struct Limits {
     // filled 6.5 GB of a log in a minute, issue 45); 64 MiB is a million
     // lines of 64 characters.
     std::size_t debug_output = std::size_t(64) << 20;
+    // Objects the scene makes for the render: each shape, each member of
+    // a CSG (a copy of a declared union is all its members again), each
+    // clipped_by and bounded_by object. An object takes about 3.5 KB while
+    // it is rendered (10^6 spheres peaked at 3.5 GB, 2026-12-06); a union
+    // doubled 30 times in a loop asked for 2^30 (issue 45).
+    std::uint64_t objects = 1'000'000;
+    // Triangles of the scene's meshes (mesh and mesh2), counted as they
+    // are read: about 340 bytes each until the mesh is built (10^6
+    // triangles from a #for loop: 342 MB, 9 s); 4*10^6 stay under 1.5 GB.
+    std::uint64_t triangles = 4'000'000;
 };
 
 }  // namespace hexant::language

@@ -130,6 +130,7 @@ std::optional<Value> merge_sides(const std::string& name, const TimeFunction& co
         const runtime::ObjectPtr first = during(a, true_pieces).as<runtime::ObjectPtr>();
         const runtime::ObjectPtr second = during(b, false_pieces).as<runtime::ObjectPtr>();
         both.depth = std::max(first->depth, second->depth) + 1;
+        both.objects = runtime::add_objects(first->objects, second->objects);
         both.place = first->place;
         csg.children = {first, second};
         both.shape = std::move(csg);

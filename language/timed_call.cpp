@@ -29,7 +29,7 @@ std::optional<Reads> reads(const std::string& name, std::size_t i) {
     if (name == "vstr") return i == 1 ? Reads::Formatted : Reads::Integer;
     if (name == "chr" || name == "substr") return Reads::Integer;
     static const std::set<std::string> strings = {"concat", "asc", "strlen", "strupr",
-                                                  "strlwr", "val", "strcmp", "file_exists"};
+                                                  "strlwr", "val", "strcmp"};
     if (strings.count(name)) return Reads::Exact;
     return std::nullopt;
 }

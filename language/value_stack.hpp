@@ -26,6 +26,11 @@ class ValueStack {
 
     void push_name(std::string name) { names_.push_back(std::move(name)); }
     std::string pop_name();
+    // The last name pushed and not yet popped ("" when none).
+    const std::string& top_name() const {
+        static const std::string none;
+        return names_.empty() ? none : names_.back();
+    }
 
     // Where all three stand, to go back to when a reading is abandoned (a
     // declaration kept as source).

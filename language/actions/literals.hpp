@@ -158,6 +158,30 @@ struct action<g::function_call> {
             }
             st.check_string_length(length, "concat()'s result");
         }
+        // file_exists(NAME): 1 only for a file the scene may read, found as
+        // #include finds it (POV-Ray's Locate_File searches the library
+        // paths too). Never a probe past the confinement: it answered for
+        // /etc/shadow, and the answer could steer the image (issue 45).
+        if (name == "file_exists") {
+            if (args.size() != 1) throw ValueError("file_exists() takes one string");
+            const auto exists = [&](const std::string& file) {
+                return st.find_readable(file, "file").error.empty() ? 1.0 : 0.0;
+            };
+            if (args[0].is<std::string>()) {
+                st.values.push(Value{TimeFunction(exists(args[0].as<std::string>()))});
+                return;
+            }
+            if (!args[0].is<TimedString>())
+                throw ValueError("file_exists() takes a string, not a " + type_name(args[0]));
+            std::vector<runtime::Interval> times;
+            std::vector<double> values;
+            for (const auto& piece : args[0].as<TimedString>().pieces) {
+                times.push_back(piece.time);
+                values.push_back(exists(piece.text));
+            }
+            st.values.push(Value{piecewise_constant(times, values)});
+            return;
+        }
         // The box of an object (language/object_extent.hpp).
         if (name == "min_extent" || name == "max_extent") {
             if (args.size() != 1 || !args[0].is<runtime::ObjectPtr>())

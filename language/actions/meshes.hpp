@@ -35,6 +35,7 @@ struct action<g::mesh_triangle> {
         Value v = st.values.pop();
         if (!v.is<runtime::ObjectPtr>())
             throw ValueError("a mesh holds triangles and smooth_triangles only");
+        st.count_triangles(1, in.position());
         add_mesh_triangle(mesh_data(st, in.position()), *v.as<runtime::ObjectPtr>());
     }
 };
@@ -64,7 +65,9 @@ template <>
 struct action<g::mesh2_value> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        (void)in;
+        // A face counts as it is read (the first value is the count).
+        if (!st.mesh2_values.empty() && st.values.top_name() == "face_indices")
+            st.count_triangles(1, in.position());
         st.mesh2_values.push_back(mesh_value(st.values.pop(), "a mesh2 section"));
     }
 };

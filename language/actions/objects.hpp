@@ -84,13 +84,20 @@ struct finish_object {
         const auto* csg = std::get_if<runtime::Csg>(&record.shape);
         if (csg || record.limits) {
             record.depth = 1;
+            std::uint64_t objects = csg ? 0 : record.objects;  // a text's: its glyphs
             if (csg)
-                for (const auto& child : csg->children)
+                for (const auto& child : csg->children) {
                     record.depth = std::max(record.depth, child->depth + 1);
+                    objects = runtime::add_objects(objects, child->objects);
+                }
             if (record.limits)
                 for (const auto* list : {&record.limits->clipped_by, &record.limits->bounded_by})
-                    for (const auto& limit : *list)
+                    for (const auto& limit : *list) {
                         record.depth = std::max(record.depth, limit->depth + 1);
+                        objects = runtime::add_objects(objects, limit->objects);
+                    }
+            record.objects = std::max<std::uint64_t>(objects, 1);
+            st.check_object_count(record.objects, in.position());
             if (record.depth > runtime::kMaxObjectDepth)
                 Interpreter::fail(in.position(),
                                   "objects nested more than " +

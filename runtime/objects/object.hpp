@@ -2,6 +2,7 @@
 // may include deformations), its texture and flags.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -21,6 +22,11 @@ namespace hexant::runtime {
 // this depth reading, checking and rendering stay within the main thread's
 // 8 MB stack; 15,000 levels overflowed it.
 inline constexpr int kMaxObjectDepth = 10000;
+// Where ObjectRecord::objects stops counting: past any limit.
+inline constexpr std::uint64_t kManyObjects = std::uint64_t(1) << 62;
+inline std::uint64_t add_objects(std::uint64_t a, std::uint64_t b) {
+    return a >= kManyObjects - b ? kManyObjects : a + b;
+}
 
 // An object's clipped_by and bounded_by objects (POV-Ray's Clip and Bound
 // lists), in the object's own space: written in the space around it, they
@@ -68,6 +74,11 @@ struct ObjectRecord {
     // Everything that walks a record's children recurses, so the language
     // refuses records deeper than kMaxObjectDepth where they are made.
     int depth = 1;
+    // Objects it makes for the render (language/limits.hpp, Limits::objects):
+    // 1, or the sum of its CSG members' and its clipped_by and bounded_by
+    // objects' (saturating at kManyObjects). Counted where it is made, so a
+    // union doubled in a loop is refused before anything walks its members.
+    std::uint64_t objects = 1;
     // When it exists: always, or the pieces of time of the clock-dependent
     // branches it was made under (Interpreter::domain, language/interpreter_state.hpp). Its CSG
     // children exist within it.

@@ -1,6 +1,7 @@
 // What the language hands to the renderer: plain records, no syntax.
 #pragma once
 
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -77,6 +78,9 @@ struct SceneDescription {
     // (runtime/scene/media.hpp).
     std::vector<Media> atmosphere;
     GlobalSettings global;
+    // Every file the scene read (the scene, its includes, images, fonts,
+    // #fopen'd files), canonical: an output never replaces one (issue 45).
+    std::vector<std::filesystem::path> inputs;
     // The texture of objects that have none of their own (#default).
     Texture default_texture;
     Animation animation;

@@ -26,6 +26,33 @@ fs::path write(const std::string& name, const std::string& text) {
     return path;
 }
 
+TEST_CASE("an .ini's Library_Path cannot widen what the scene reads", "[app][ini][confinement]") {
+    // (issue 45) Library_Path=/etc in an .ini that came with a downloaded
+    // scene made /etc readable to it. Only folders inside the scene's, or
+    // allowed on the command line, are searched; the others are named.
+    const auto ini = write("wide.ini",
+                           "Input_File_Name=scene.pov\nLibrary_Path=/etc\nLibrary_Path=lib\n"
+                           "Library_Path=../elsewhere\n");
+    hexant::app::SceneArguments arguments;
+    arguments.files = {ini.string()};
+    auto r = hexant::app::resolve(arguments);
+    REQUIRE(r.options.include_paths.size() == 1);
+    CHECK(r.options.include_paths[0] == temp_folder() / "lib");
+    REQUIRE(r.warnings.size() == 2);
+    CHECK(r.warnings[0].find("wide.ini:2") != std::string::npos);
+    CHECK(r.warnings[0].find("--allow-read /etc") != std::string::npos);
+    CHECK(r.warnings[1].find("wide.ini:4") != std::string::npos);
+    // --allow-read allows it, and -L folders (the user's own) stay after.
+    arguments.read_paths = {"/etc"};
+    arguments.include_paths = {"/usr"};
+    r = hexant::app::resolve(arguments);
+    REQUIRE(r.options.include_paths.size() == 3);
+    CHECK(r.options.include_paths[0] == fs::path("/etc"));
+    CHECK(r.options.include_paths[2] == fs::path("/usr"));
+    REQUIRE(r.ini_files.size() == 1);
+    CHECK(r.ini_files[0] == fs::canonical(ini));
+}
+
 // The scene arguments a command line gives (after the scene's name).
 hexant::app::SceneArguments parse(const std::string& flags) {
     CLI::App app;
@@ -166,7 +193,7 @@ TEST_CASE("every limit has a flag, and frames and pixels are checked before any 
                             "--max-iterations 7 --max-macro-depth 8 --max-include-depth 9 "
                             "--max-string-length 10 --max-array-memory 11 --max-frames 12 "
                             "--max-pixels 130000 --max-loop-iterations 14 --max-text-read 15 "
-                            "--max-debug-output 16")
+                            "--max-debug-output 16 --max-objects 17 --max-triangles 18")
                             .options.limits;
     CHECK(limits.total_iterations == 7);
     CHECK(limits.macro_depth == 8);
@@ -178,10 +205,12 @@ TEST_CASE("every limit has a flag, and frames and pixels are checked before any 
     CHECK(limits.loop_iterations == 14);
     CHECK(limits.text_read == 15);
     CHECK(limits.debug_output == 16);
+    CHECK(limits.objects == 17);
+    CHECK(limits.triangles == 18);
     for (const char* wrapped :
          {"--max-iterations -1", "--max-text-read -1", "--max-string-length -1",
-          "--max-debug-output -1", "--max-array-memory -1", "--max-frames 0", "--max-pixels 0",
-          "--max-macro-depth -1"})
+          "--max-debug-output -1", "--max-objects 0", "--max-triangles -1", "--max-array-memory -1",
+          "--max-frames 0", "--max-pixels 0", "--max-macro-depth -1"})
         CHECK_THROWS(parse(wrapped));
 
     // -W 100000 -H 100000 ended in std::bad_alloc; now it is refused by name.

@@ -435,6 +435,65 @@ TEST_CASE("render's adaptive flags refuse what makes no sense, naming the flag",
         "the default ceiling is 256, with --no-jitter");
 }
 
+TEST_CASE("no output replaces one of the scene's own inputs", "[app][render]") {
+    // (issue 45) -o, --contact-sheet, --animation or --stats-json naming
+    // the scene's image_map, an include or the scene itself overwrote it.
+    const fs::path scene = scene_file(
+        "#include \"parts.inc\"\ncamera { location <0, 0, -5> look_at 0 }\n"
+        "light_source { <0, 5, -5>, rgb 1 }\nsphere { 0, 1 pigment { image_map { "
+        "png \"tex.png\" } } }\n");
+    const fs::path folder = scene.parent_path();
+    std::ofstream(folder / "parts.inc") << "#declare Parts = 1;\n";
+    {
+        // A 1 by 1 PNG, written by a render of its own.
+        const fs::path plain = folder / "plain.pov";
+        std::ofstream(plain) << moving_sphere("0");
+        RenderArguments a;
+        a.scene.files = {plain.string()};
+        a.scene.width = a.scene.height = 1;
+        a.samples_per_pixel = 1;
+        a.output = (folder / "tex.png").string();
+        std::ostringstream o, e;
+        REQUIRE(run_render(a, o, e) == 0);
+    }
+    const auto bytes = [](const fs::path& file) {
+        std::ifstream in(file, std::ios::binary);
+        return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    };
+    const std::string texture = bytes(folder / "tex.png"), include = bytes(folder / "parts.inc"),
+                      text = bytes(scene);
+    const fs::path ini = folder / "scene.ini";
+    std::ofstream(ini) << "Width=16\n";
+    const auto refused = [&](const std::function<void(RenderArguments&)>& change,
+                             const std::string& input) {
+        RenderArguments a = arguments_for(scene, fresh_output(scene));
+        a.scene.files.push_back(ini.string());
+        a.frames = "1";
+        change(a);
+        std::ostringstream o, e;
+        CHECK(run_render(a, o, e) == 1);
+        INFO(e.str());
+        CHECK(e.str().find("is one of the scene's inputs (" + fs::canonical(input).string()) !=
+              std::string::npos);
+    };
+    refused([&](RenderArguments& a) { a.output = (folder / "tex.png").string(); },
+            folder / "tex.png");
+    refused([&](RenderArguments& a) { a.contact_sheet = (folder / "." / "tex.png").string(); },
+            folder / "tex.png");
+    refused([&](RenderArguments& a) { a.stats_json = (folder / "parts.inc").string(); },
+            folder / "parts.inc");
+    refused([&](RenderArguments& a) { a.stats_json = scene.string(); }, scene);
+    refused([&](RenderArguments& a) { a.stats_json = ini.string(); }, ini);
+    // The same file by another name (a hard link) is the same input.
+    fs::remove(folder / "hard.png");
+    fs::create_hard_link(folder / "tex.png", folder / "hard.png");
+    refused([&](RenderArguments& a) { a.contact_sheet = (folder / "hard.png").string(); },
+            folder / "tex.png");
+    CHECK(bytes(folder / "tex.png") == texture);
+    CHECK(bytes(folder / "parts.inc") == include);
+    CHECK(bytes(scene) == text);
+}
+
 TEST_CASE(
     "render says when tiles reach the ceiling above the target, and its JSON holds no infinity",
     "[app][render][adaptive]") {

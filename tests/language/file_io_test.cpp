@@ -143,6 +143,39 @@ TEST_CASE("a scene reads files only where #include may", "[language][file_io][co
           std::string::npos);
 }
 
+TEST_CASE("file_exists() answers only inside the folders a scene may read",
+          "[language][file_io][confinement]") {
+    // (issue 45) file_exists("/etc/shadow") answered for any path, and the
+    // answer could steer the image.
+    const fs::path folder = fresh_folder("exists");
+    const fs::path other = fresh_folder("exists_other");
+    std::ofstream(folder / "here.inc") << "// here\n";
+    std::ofstream(other / "there.inc") << "// there\n";
+    fs::create_directory_symlink(other, folder / "link");
+    const auto probe = [](const std::string& name) {
+        return "str(file_exists(\"" + name + "\"), 0, 0)";
+    };
+    std::ofstream(folder / "scene.pov")
+        << "#version 3.7;\n#include \"here.inc\"\n#debug concat(" << probe("here.inc") << ", "
+        << probe((other / "there.inc").string()) << ", " << probe("link/there.inc") << ", "
+        << probe("/etc/passwd") << ", " << probe("missing.inc") << ", " << probe("")
+        << ", \"\\n\")\n";
+    lang::ParseOptions options;
+    std::ostringstream messages;
+    options.messages = &messages;
+    const auto scene = lang::parse_scene_file(folder / "scene.pov", options);
+    CHECK(messages.str() == "100000\n");
+    // The files it read are its inputs (outputs never replace one).
+    REQUIRE(scene.inputs.size() == 2);
+    CHECK(scene.inputs[0] == fs::canonical(folder / "scene.pov"));
+    CHECK(scene.inputs[1] == fs::canonical(folder / "here.inc"));
+    // --allow-read opens the other folder, through the link too.
+    options.read_paths = {other};
+    messages.str("");
+    (void)lang::parse_scene_file(folder / "scene.pov", options);
+    CHECK(messages.str() == "111000\n");
+}
+
 TEST_CASE("file directives refuse what they cannot do", "[language][file_io]") {
     const fs::path out = fresh_folder("refusals");
     CHECK(read("#write (F, 1)\n", out).error.find("not an open file") != std::string::npos);

@@ -318,3 +318,78 @@ TEST_CASE("a transform built up in a loop costs the same at every turn, or stops
     CHECK(contains(e, "a transform of more than 2000 steps that depend on clock"));
     CHECK(e.places().front().line == 2);
 }
+
+TEST_CASE("objects are counted where they are made: copies, members, glyphs", "[limits]") {
+    // (issue 45) A union doubled 30 times asked for 2^30 spheres; each
+    // doubling is refused where the count passes the limit, before any
+    // walk over its members (which would take 2^n steps).
+    ParseOptions options;
+    options.limits.objects = 1000;
+    const std::string doubled =
+        "#declare U = sphere { 0, 1 }\n#for (I, 1, 60)\n"
+        "#declare U = union { object { U } object { U translate x } }\n#end\n";
+    const SceneError e = error_of(doubled, options);
+    CHECK(contains(e, "would make 1024 objects"));
+    CHECK(contains(e, "--max-objects"));
+    CHECK(e.places().front().line == 3);
+    // 70 doublings saturate, never wrap (a limit past what --max-objects takes).
+    options.limits.objects = (std::uint64_t(1) << 62) - 1;
+    std::string seventy = doubled;
+    seventy.replace(seventy.find("1, 60"), 5, "1, 70");
+    CHECK(contains(error_of(seventy, options), "would make more than 2^62 objects"));
+    // The scene's total: 10 of 100 members placed apart.
+    options.limits.objects = 999;
+    const std::string placed =
+        "#declare U = union {\n#for (I, 1, 100) sphere { I * x, 1 } #end\n}\n"
+        "#for (I, 1, 10) object { U translate I * y } #end\n";
+    const SceneError total = error_of(placed, options);
+    CHECK(contains(total, "the scene would make more than 999 objects"));
+    CHECK(total.places().front().line == 4);
+    options.limits.objects = 1000;
+    reads(placed, options);
+    // clipped_by objects count; a text's glyphs count before they are laid out.
+    options.limits.objects = 2;
+    CHECK(contains(
+        error_of("sphere { 0, 1 clipped_by { plane { y, 0 } } clipped_by { plane { x, 0 } } }\n",
+                 options),
+        "would make 3 objects"));
+    CHECK(contains(error_of("text { ttf \"timrom.ttf\" \"abc\" 0.1, 0 }\n", options),
+                   "this text has 3 characters"));
+}
+
+TEST_CASE("mesh triangles are counted as they are read", "[limits]") {
+    ParseOptions options;
+    options.limits.triangles = 3;
+    const std::string tri = "triangle { <0, 0, 0>, <1, 0, 0>, <0, 1, 0> }\n";
+    reads("mesh {\n" + tri + tri + tri + "}\n", options);
+    const SceneError e = error_of("mesh {\n" + tri + tri + tri + tri + "}\n", options);
+    CHECK(contains(e, "more than 3 triangles"));
+    CHECK(contains(e, "--max-triangles"));
+    CHECK(e.places().front().line == 5);
+    // Over the whole scene, mesh2's faces too.
+    const std::string mesh2 =
+        "mesh2 { vertex_vectors { 3, <0, 0, 0>, <1, 0, 0>, <0, 1, 0> }\n"
+        "face_indices { 2, <0, 1, 2>, <0, 2, 1> } }\n";
+    reads(mesh2, options);
+    CHECK(error_of("mesh {\n" + tri + tri + "}\n" + mesh2, options).places().front().line == 6);
+}
+
+TEST_CASE("a long reading says how far it has come", "[limits]") {
+    ParseOptions options;
+    options.progress_delay = 0.0;
+    std::vector<ParseOptions::Progress> said;
+    options.progress = [&](const ParseOptions::Progress& p) { said.push_back(p); };
+    reads("mesh {\n#for (I, 1, 5000) triangle { <I, 0, 0>, <I + 1, 0, 0>, <I, 1, 0> } #end\n}\n",
+          options);
+    // (The first call after 1024 steps and triangles counted; later ones a
+    // second apart.)
+    REQUIRE(!said.empty());
+    CHECK(said.front().steps + said.front().triangles >= 1023);
+    CHECK(said.front().triangles > 0);
+    CHECK(said.front().seconds >= 0.0);
+    // Without a delay passed, nothing.
+    said.clear();
+    options.progress_delay = 3600.0;
+    reads("#for (I, 1, 5000) #end\n", options);
+    CHECK(said.empty());
+}
