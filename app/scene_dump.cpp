@@ -174,8 +174,9 @@ std::string texture(const runtime::Texture& x, double t, Shared& shared) {
         return s + uv_word(x.uv_mapping);
     }
     std::string s = layer(x, t, shared);
-    // The layers under it, top first.
-    for (const auto& under : x.below) s += " under [" + layer(under, t, shared) + "]";
+    // The layers under it, top first (Texture::below is bottom first).
+    for (auto it = x.below.rbegin(); it != x.below.rend(); ++it)
+        s += " under [" + layer(*it, t, shared) + "]";
     return s;
 }
 

@@ -808,7 +808,8 @@ struct action<g::texture_layer> {
         (void)in;
         runtime::Texture top = st.values.pop().as<runtime::Texture>();
         if (st.values.top().is<Unevaluated>()) return;
-        st.values.top() = Value{layered(std::move(top), st.values.top().as<runtime::Texture>())};
+        st.values.top() =
+            Value{layered(std::move(top), std::move(st.values.top().as<runtime::Texture>()))};
     }
 };
 template <>

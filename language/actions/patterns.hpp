@@ -822,7 +822,8 @@ inline void check_patterned_texture(const runtime::Texture& t) {
 }
 
 // `top` layered over `under` (POV-Ray's Link_Textures): top's layers, then
-// under's. Nothing is layered over or under a patterned texture.
+// under's. Nothing is layered over or under a patterned texture. Takes the
+// time of top's layers only (Texture::below is bottom first).
 inline runtime::Texture layered(runtime::Texture top, runtime::Texture under) {
     if (under.is_patterned())
         throw ValueError(
@@ -830,10 +831,11 @@ inline runtime::Texture layered(runtime::Texture top, runtime::Texture under) {
     if (top.is_patterned())
         throw ValueError(
             "a patterned texture (texture_map) cannot be layered over another, as in POV-Ray");
-    std::vector<runtime::Texture> lower = std::move(under.below);
+    std::vector<runtime::Texture> layers = std::move(under.below);
     under.below.clear();
-    top.below.push_back(std::move(under));
-    for (auto& layer : lower) top.below.push_back(std::move(layer));
+    layers.push_back(std::move(under));
+    for (auto& layer : top.below) layers.push_back(std::move(layer));
+    top.below = std::move(layers);
     return top;
 }
 

@@ -403,11 +403,12 @@ TextureEvaluator::CompiledTexture::CompiledTexture(const Texture& texture, const
         layers.push_back(std::move(c));
     };
     add(texture, placed(texture));
-    for (const Texture& below : texture.below) {
-        if (below.is_patterned() || !below.below.empty())
+    // Top first (Texture::below is bottom first).
+    for (auto it = texture.below.rbegin(); it != texture.below.rend(); ++it) {
+        if (it->is_patterned() || !it->below.empty())
             throw std::logic_error(
                 "TextureEvaluator: a layer under a texture is one plain texture");
-        add(below, placed(below));
+        add(*it, placed(*it));
     }
 }
 

@@ -85,11 +85,12 @@ TEST_CASE("layered textures keep every layer, the last written on top", "[langua
     const rt::Texture& b = texture_of(scene, 1);
     CHECK(b.pigment.colours[0].c[3].constant() == Approx(0.2));
     REQUIRE(b.below.size() == 2);
-    CHECK(b.below[0].pigment.colours[0].c[2].constant() == 1.0);  // T's top
-    CHECK(b.below[1].pigment.colours[0].c[1].constant() == 1.0);  // T's bottom
+    // (Texture::below is bottom first.)
+    CHECK(b.below[1].pigment.colours[0].c[2].constant() == 1.0);  // T's top
+    CHECK(b.below[0].pigment.colours[0].c[1].constant() == 1.0);  // T's bottom
     const rt::Texture& c = texture_of(scene, 2);
     REQUIRE(c.below.size() == 2);
-    CHECK(c.below[1].pigment.colours[0].c[0].constant() == 1.0);
+    CHECK(c.below[0].pigment.colours[0].c[0].constant() == 1.0);
 }
 
 TEST_CASE("texture_map, normal_map, slope_map and block lists read as POV-Ray reads them",
