@@ -84,18 +84,30 @@ struct finish_object {
         const auto* csg = std::get_if<runtime::Csg>(&record.shape);
         if (csg || record.limits) {
             record.depth = 1;
-            std::uint64_t objects = csg ? 0 : record.objects;  // a text's: its glyphs
+            // Its own: none for a CSG, a glyph a character for a text, else
+            // one (not record.objects: a copy's count already holds its limits).
+            const auto* text = std::get_if<runtime::Text>(&record.shape);
+            std::uint64_t objects = csg    ? 0
+                                    : text ? std::max<std::uint64_t>(text->glyphs.size(), 1)
+                                           : 1;
             if (csg)
                 for (const auto& child : csg->children) {
                     record.depth = std::max(record.depth, child->depth + 1);
                     objects = runtime::add_objects(objects, child->objects);
                 }
-            if (record.limits)
-                for (const auto* list : {&record.limits->clipped_by, &record.limits->bounded_by})
+            if (record.limits) {
+                const auto& clips = record.limits->clipped_by;
+                for (const auto* list : {&clips, &record.limits->bounded_by})
                     for (const auto& limit : *list) {
                         record.depth = std::max(record.depth, limit->depth + 1);
+                        // (A clip is its bound too, unless one is written:
+                        // the same record, made once, counted once.)
+                        if (list != &clips &&
+                            std::find(clips.begin(), clips.end(), limit) != clips.end())
+                            continue;
                         objects = runtime::add_objects(objects, limit->objects);
                     }
+            }
             record.objects = std::max<std::uint64_t>(objects, 1);
             st.check_object_count(record.objects, in.position());
             if (record.depth > runtime::kMaxObjectDepth)

@@ -347,6 +347,19 @@ TEST_CASE("objects are counted where they are made: copies, members, glyphs", "[
     CHECK(total.places().front().line == 4);
     options.limits.objects = 1000;
     reads(placed, options);
+    // A copy of a clipped object counts its clip once: 20 turns of clipping
+    // by the last copy make 21 objects, not 2^20 (a copy's count already
+    // held its clips, and was counted again once).
+    options.limits.objects = 21;
+    reads(
+        "#declare O = sphere { 0, 1 }\n#for (I, 1, 20) #declare O = sphere { 0, 1 clipped_by "
+        "{ object { O } } } #end\nobject { O }\n",
+        options);
+    options.limits.objects = 20;
+    CHECK(contains(error_of("#declare O = sphere { 0, 1 }\n#for (I, 1, 20) #declare O = sphere "
+                            "{ 0, 1 clipped_by { object { O } } } #end\nobject { O }\n",
+                            options),
+                   "would make 21 objects"));
     // clipped_by objects count; a text's glyphs count before they are laid out.
     options.limits.objects = 2;
     CHECK(contains(
