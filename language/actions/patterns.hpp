@@ -556,7 +556,8 @@ struct action<g::density_file_name> {
         std::shared_ptr<const runtime::pattern::DensityFile> voxels;
         try {
             voxels = std::make_shared<const runtime::pattern::DensityFile>(
-                runtime::pattern::DensityFile::read(path));
+                runtime::pattern::DensityFile::read(
+                    path, static_cast<std::uint64_t>(st.options.limits.image_pixels)));
         } catch (const std::runtime_error& e) {
             throw ValueError(std::string("density_file: ") + e.what());
         }

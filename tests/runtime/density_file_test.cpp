@@ -72,4 +72,15 @@ TEST_CASE("a df3 file's voxels as POV-Ray reads them", "[pattern][density_file]"
         CHECK_THROWS_AS(DensityFile::read(fs::temp_directory_path() / "hexant_no_such.df3"),
                         std::runtime_error);
     }
+    SECTION("a header past the limit is refused before the voxels are read (issue 45)") {
+        // 65535^3 declared in a file of 6 bytes: refused by the header alone.
+        const fs::path huge = fs::temp_directory_path() / "hexant_df3_huge.df3";
+        std::ofstream(huge, std::ios::binary) << std::string(6, char(0xff));
+        CHECK_THROWS_WITH(DensityFile::read(huge),
+                          Catch::Contains("65535 x 65535 x 65535 voxels, more than the limit"));
+        // Within the limit it reads; one voxel fewer allowed, it does not.
+        const fs::path cube = write_df3("hexant_df3_limit.df3", 4, 4, 4, 1, ramp);
+        CHECK_NOTHROW(DensityFile::read(cube, 64));
+        CHECK_THROWS_WITH(DensityFile::read(cube, 63), Catch::Contains("--max-pixels"));
+    }
 }

@@ -27,12 +27,14 @@ std::size_t wrap(std::size_t i, std::size_t size) {
 
 }  // namespace
 
-DensityFile DensityFile::read(const std::filesystem::path& path) {
+DensityFile DensityFile::read(const std::filesystem::path& path, std::uint64_t max_voxels) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw std::runtime_error("cannot read the density file " + path.string());
-    const std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
-                                           std::istreambuf_iterator<char>());
-    if (bytes.size() < 6)
+    // The header first: the bytes read are bounded by what it declares,
+    // never by the file (a 65535^3 header, or a file of any size, issue 45).
+    std::vector<unsigned char> bytes(6);
+    in.read(reinterpret_cast<char*>(bytes.data()), 6);
+    if (in.gcount() < 6)
         throw std::runtime_error("the density file " + path.string() +
                                  " is shorter than its 6-byte header");
     DensityFile d;
@@ -40,7 +42,23 @@ DensityFile DensityFile::read(const std::filesystem::path& path) {
     d.sx = u16(0);
     d.sy = u16(2);
     d.sz = u16(4);
-    const std::size_t count = d.sx * d.sy * d.sz, length = bytes.size() - 6;
+    const std::size_t count = d.sx * d.sy * d.sz;
+    if (count > max_voxels)
+        throw std::runtime_error("the density file " + path.string() + " declares " +
+                                 std::to_string(d.sx) + " x " + std::to_string(d.sy) + " x " +
+                                 std::to_string(d.sz) + " voxels, more than the limit of " +
+                                 std::to_string(max_voxels) + " (--max-pixels N raises it)");
+    std::error_code error;
+    const std::uintmax_t file_bytes = std::filesystem::file_size(path, error);
+    if (error) throw std::runtime_error("cannot read the density file " + path.string());
+    const std::size_t length = file_bytes - 6;
+    if (length == count * 4 || length == count * 2 || length == count) {
+        bytes.resize(6 + length);
+        in.read(reinterpret_cast<char*>(bytes.data() + 6), static_cast<std::streamsize>(length));
+        if (static_cast<std::size_t>(in.gcount()) != length)
+            throw std::runtime_error("the density file " + path.string() +
+                                     " changed while it was read");
+    }
     std::size_t size = 0;
     if (count * 4 == length)
         size = 4;

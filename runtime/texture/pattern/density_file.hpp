@@ -18,8 +18,11 @@ namespace hexant::runtime::pattern {
 class DensityFile {
   public:
     // Throws std::runtime_error naming the file when it is not a df3: too
-    // short, or a length that no voxel size fits.
-    static DensityFile read(const std::filesystem::path& path);
+    // short, or a length that no voxel size fits; or when its header
+    // declares more than `max_voxels` (checked before the voxels are read:
+    // the file is read only once its size is known to fit the header).
+    static DensityFile read(const std::filesystem::path& path,
+                            std::uint64_t max_voxels = 100'000'000);
 
     // The value at `point` (pattern space), 0 outside the unit cube:
     // `interpolation` 0 the voxel itself, 1 trilinear, 2 (and any other
