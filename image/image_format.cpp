@@ -46,7 +46,19 @@ std::string image_format_extensions() {
     return names;
 }
 
-StoredImage read_stored_image(const fs::path& path) {
+void check_declared_size(long long width, long long height, std::size_t max_pixels) {
+    // (An empty image is its reader's error. Sides of up to 2^32 each: the
+    // product fits an unsigned long long.)
+    if (width <= 0 || height <= 0) return;
+    const auto pixels =
+        static_cast<unsigned long long>(width) * static_cast<unsigned long long>(height);
+    if (pixels <= max_pixels) return;
+    throw ImageTooLarge("it declares " + std::to_string(width) + " by " + std::to_string(height) +
+                        " pixels, more than the limit of " + std::to_string(max_pixels) +
+                        " pixels (width times height)");
+}
+
+StoredImage read_stored_image(const fs::path& path, std::size_t max_pixels) {
     std::array<unsigned char, 8> head{};
     std::size_t got = 0;
     {
@@ -59,11 +71,13 @@ StoredImage read_stored_image(const fs::path& path) {
     }
     for (const ImageFormat* format : kFormats)
         if (format->recognizes(head.data(), got)) {
+            const std::string what = path.string() + ": cannot read " + format->name + " image: ";
             try {
-                return format->read(path);
+                return format->read(path, max_pixels);
+            } catch (const ImageTooLarge& e) {
+                throw ImageTooLarge(what + e.what());
             } catch (const std::runtime_error& e) {
-                throw std::runtime_error(path.string() + ": cannot read " + format->name +
-                                         " image: " + e.what());
+                throw std::runtime_error(what + e.what());
             }
         }
     throw std::runtime_error(path.string() +

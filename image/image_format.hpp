@@ -10,6 +10,7 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,22 @@ struct StoredImage {
     std::vector<std::array<float, 4>> palette;
 };
 
+// The pixels a reader takes when its caller gives no limit (a scene gives
+// its own, Limits::image_pixels): the rows of a larger one would not fit
+// hexant's int sizes.
+constexpr std::size_t kMaxImagePixels = std::size_t(1) << 30;
+
+// A file that declares more pixels than the reader was allowed: a small
+// file may declare 2^30 (a PNG's rows took 3 to 6 GB and 20 to 48 s before
+// std::bad_alloc, issue 45).
+struct ImageTooLarge : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// Throws ImageTooLarge, saying the declared size and the limit, when
+// `width` x `height` is more than `max_pixels`.
+void check_declared_size(long long width, long long height, std::size_t max_pixels);
+
 // One file format. `write` writes `width` x `height` RGB pixels: bytes in
 // sRGB for an 8-bit format, floats in linear light for a `linear` one; both
 // throw std::runtime_error with the reason (not the path: the caller names
@@ -58,7 +75,9 @@ struct ImageFormat {
     bool linear;            // stores linear float
     // (null: a format hexant reads only)
     void (*write)(const std::filesystem::path& file, int width, int height, const void* pixels);
-    StoredImage (*read)(const std::filesystem::path& file);
+    // Refuses (ImageTooLarge) a file that declares more than `max_pixels`
+    // before any pixel is decoded or any buffer for them is taken.
+    StoredImage (*read)(const std::filesystem::path& file, std::size_t max_pixels);
     bool (*recognizes)(const unsigned char* head, std::size_t bytes);  // the file's magic
     // The widest and tallest image it writes (0: no limit of its own), so
     // that a command can refuse a size before it renders anything.
@@ -77,7 +96,9 @@ std::string image_format_extensions();
 
 // Reads an image, its format told by its first bytes (not its name); throws
 // std::runtime_error naming the file when it cannot be opened, is of no
-// format hexant reads, or is damaged.
-StoredImage read_stored_image(const std::filesystem::path& path);
+// format hexant reads, or is damaged, and ImageTooLarge (naming it too)
+// when it declares more than `max_pixels`.
+StoredImage read_stored_image(const std::filesystem::path& path,
+                              std::size_t max_pixels = kMaxImagePixels);
 
 }  // namespace hexant::image

@@ -375,6 +375,7 @@ class BlockArguments final : public runtime::objects::ShapeArguments {
                                    {kPovRayIncludeDir, kPovRayFontDir, "/usr/share/fonts"});
     }
     const std::string& charset() const override { return st_.charset; }
+    std::size_t max_image_pixels() const override { return st_.max_image_pixels(); }
     [[noreturn]] void fail(const std::string& message) const override { throw ValueError(message); }
 
   private:

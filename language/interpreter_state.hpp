@@ -426,6 +426,12 @@ class Interpreter {
     };
     FoundFile find_readable(const std::string& name, const std::string& what,
                             const std::vector<std::filesystem::path>& also = {}) const;
+    // The pixels an image the scene reads (image_map, bump_map,
+    // height_field) may declare: Limits::image_pixels, as a rendered
+    // frame's.
+    std::size_t max_image_pixels() const {
+        return static_cast<std::size_t>(std::max(1LL, options.limits.image_pixels));
+    }
     // The text of the include file at `path` (resolve_include's), counted
     // against Limits::text_read before it is read (read_source_text).
     std::string read_include(const std::filesystem::path& path, const p::position& where);

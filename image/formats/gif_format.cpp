@@ -4,6 +4,8 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <gif_lib.h>
 
@@ -12,9 +14,6 @@ namespace hexant::image {
 namespace fs = std::filesystem;
 
 namespace {
-
-// Larger images are refused before memory is taken for them, as PNG's.
-constexpr std::size_t kMaxPixels = std::size_t(1) << 30;
 
 // giflib's message for an error code (it has none for some).
 std::string message(int error) {
@@ -29,19 +28,60 @@ struct GifCloser {
     }
 };
 
-StoredImage read_gif(const fs::path& file) {
+// The first image's indices, rows top to bottom (an interlaced one's rows
+// put in order), and the transparent index of the graphics control block
+// before it. Not DGifSlurp: it reads every image of the file, and takes
+// each one's raster (up to 2 GB) before anything can check its size.
+std::vector<GifPixelType> read_first_image(GifFileType* gif, std::size_t max_pixels,
+                                           int& transparent) {
+    const auto fail = [&] { throw std::runtime_error(message(gif->Error)); };
+    GifRecordType type = UNDEFINED_RECORD_TYPE;
+    do {
+        if (DGifGetRecordType(gif, &type) == GIF_ERROR) fail();
+        if (type == EXTENSION_RECORD_TYPE) {
+            int code = 0;
+            GifByteType* block = nullptr;
+            if (DGifGetExtension(gif, &code, &block) == GIF_ERROR) fail();
+            GraphicsControlBlock control{};
+            if (code == GRAPHICS_EXT_FUNC_CODE && block &&
+                DGifExtensionToGCB(block[0], block + 1, &control) == GIF_OK)
+                transparent = control.TransparentColor;
+            while (block)
+                if (DGifGetExtensionNext(gif, &block) == GIF_ERROR) fail();
+        } else if (type == IMAGE_DESC_RECORD_TYPE) {
+            if (DGifGetImageDesc(gif) == GIF_ERROR) fail();
+            const int width = gif->Image.Width, height = gif->Image.Height;
+            if (width < 1 || height < 1) throw std::runtime_error("an empty image");
+            check_declared_size(width, height, max_pixels);
+            std::vector<GifPixelType> raster(std::size_t(width) * std::size_t(height));
+            const auto row = [&](int y) {
+                if (DGifGetLine(gif, raster.data() + std::size_t(y) * std::size_t(width), width) ==
+                    GIF_ERROR)
+                    fail();
+            };
+            if (gif->Image.Interlace) {
+                // GIF's four passes: every 8th row from 0, from 4, every 4th
+                // from 2, every 2nd from 1.
+                constexpr std::pair<int, int> kPasses[] = {{0, 8}, {4, 8}, {2, 4}, {1, 2}};
+                for (const auto& [first, step] : kPasses)
+                    for (int y = first; y < height; y += step) row(y);
+            } else {
+                for (int y = 0; y < height; ++y) row(y);
+            }
+            return raster;
+        }
+    } while (type != TERMINATE_RECORD_TYPE);
+    throw std::runtime_error("no image in the file");
+}
+
+StoredImage read_gif(const fs::path& file, std::size_t max_pixels) {
     int error = 0;
     std::unique_ptr<GifFileType, GifCloser> gif(DGifOpenFileName(file.c_str(), &error));
     if (!gif) throw std::runtime_error(message(error));
-    // (DGifSlurp reads every image, de-interlacing each, and checks the
-    // sizes against the data it finds.)
-    if (DGifSlurp(gif.get()) != GIF_OK) throw std::runtime_error(message(gif->Error));
-    if (gif->ImageCount < 1) throw std::runtime_error("no image in the file");
-    const SavedImage& first = gif->SavedImages[0];
-    const GifImageDesc& desc = first.ImageDesc;
-    if (desc.Width < 1 || desc.Height < 1) throw std::runtime_error("an empty image");
-    const std::size_t pixels = std::size_t(desc.Width) * std::size_t(desc.Height);
-    if (pixels > kMaxPixels) throw std::runtime_error("image too large");
+    int transparent = NO_TRANSPARENT_COLOR;
+    const std::vector<GifPixelType> raster = read_first_image(gif.get(), max_pixels, transparent);
+    const GifImageDesc& desc = gif->Image;
+    const std::size_t pixels = raster.size();
     const ColorMapObject* map = desc.ColorMap ? desc.ColorMap : gif->SColorMap;
     if (!map || map->ColorCount < 1) throw std::runtime_error("no colour map");
 
@@ -54,17 +94,13 @@ StoredImage read_gif(const fs::path& file) {
     out.gamma_told = false;
     out.source = StoredImage::Source::Palette;
     out.source_bits = 8;
-    GraphicsControlBlock control{};
-    int transparent = NO_TRANSPARENT_COLOR;
-    if (DGifSavedExtensionToGCB(gif.get(), 0, &control) == GIF_OK)
-        transparent = control.TransparentColor;
     out.palette.resize(std::size_t(map->ColorCount));
     for (int i = 0; i < map->ColorCount; ++i) {
         const GifColorType& c = map->Colors[i];
         out.palette[std::size_t(i)] = {float(c.Red / 255.0), float(c.Green / 255.0),
                                        float(c.Blue / 255.0), i == transparent ? 0.0f : 1.0f};
     }
-    out.indices.assign(first.RasterBits, first.RasterBits + pixels);
+    out.indices.assign(raster.begin(), raster.end());
     out.values.resize(pixels * 4);
     for (std::size_t i = 0; i < pixels; ++i) {
         // (An index past the palette is taken as black, opaque, as PNG's.)

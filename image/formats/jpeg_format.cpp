@@ -19,7 +19,6 @@ namespace {
 
 // Larger images are refused before memory is taken for them, as PNG's.
 constexpr JDIMENSION kMaxSide = 1u << 20;
-constexpr std::size_t kMaxPixels = std::size_t(1) << 30;
 
 // libjpeg's default error handler exits the process; this one keeps the
 // message and longjmps back to the reader's setjmp.
@@ -42,8 +41,9 @@ void on_message(j_common_ptr info, int level) {
 
 // Everything libjpeg may leave by longjmp is in here, with no object of
 // this frame that has a destructor: what it fills lives in the caller.
-bool decode(std::FILE* file, jpeg_decompress_struct& info, ErrorManager& errors,
-            std::vector<unsigned char>& bytes, StoredImage& out, std::string& refusal) {
+bool decode(std::FILE* file, std::size_t max_pixels, jpeg_decompress_struct& info,
+            ErrorManager& errors, std::vector<unsigned char>& bytes, StoredImage& out,
+            std::string& refusal) {
     if (setjmp(errors.back)) return false;
     jpeg_create_decompress(&info);
     jpeg_stdio_src(&info, file);
@@ -58,11 +58,13 @@ bool decode(std::FILE* file, jpeg_decompress_struct& info, ErrorManager& errors,
         refusal = "a CMYK or YCCK JPEG (hexant reads gray and colour ones)";
         return false;
     }
-    if (info.image_width > kMaxSide || info.image_height > kMaxSide ||
-        std::size_t(info.image_width) * info.image_height > kMaxPixels) {
+    if (info.image_width > kMaxSide || info.image_height > kMaxSide) {
         refusal = "image too large";
         return false;
     }
+    // (Its throw leaves by an exception, with no libjpeg frame on the
+    // stack; the caller's guard destroys `info`.)
+    check_declared_size(info.image_width, info.image_height, max_pixels);
     jpeg_start_decompress(&info);
     out.width = static_cast<int>(info.output_width);
     out.height = static_cast<int>(info.output_height);
@@ -76,7 +78,7 @@ bool decode(std::FILE* file, jpeg_decompress_struct& info, ErrorManager& errors,
     return true;
 }
 
-StoredImage read_jpeg(const fs::path& file) {
+StoredImage read_jpeg(const fs::path& file, std::size_t max_pixels) {
     const std::unique_ptr<std::FILE, int (*)(std::FILE*)> stream(std::fopen(file.c_str(), "rb"),
                                                                  &std::fclose);
     if (!stream) throw std::runtime_error(std::strerror(errno));
@@ -89,8 +91,14 @@ StoredImage read_jpeg(const fs::path& file) {
     std::vector<unsigned char> bytes;
     StoredImage out;
     std::string refusal;
-    const bool read = decode(stream.get(), info, errors, bytes, out, refusal);
-    jpeg_destroy_decompress(&info);
+    bool read = false;
+    {
+        struct Destroy {
+            jpeg_decompress_struct& info;
+            ~Destroy() { jpeg_destroy_decompress(&info); }
+        } destroy{info};
+        read = decode(stream.get(), max_pixels, info, errors, bytes, out, refusal);
+    }
     if (!read) throw std::runtime_error(refusal.empty() ? std::string(errors.message) : refusal);
     out.linear = false;
     out.encoding_gamma = 0.0;  // sRGB, unless the scene says otherwise

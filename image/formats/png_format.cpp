@@ -1,5 +1,6 @@
 #include "image/formats/png_format.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cstdio>
@@ -16,10 +17,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Larger images are refused before memory is taken for them (hexant's own
-// --max-pixels is 10^8).
+// Larger images are refused before memory is taken for them: wider or
+// taller by libpng, more pixels than the caller's limit (a scene's
+// --max-pixels, 10^8 by default) by check_declared_size.
 constexpr png_uint_32 kMaxSide = 1u << 20;
-constexpr std::size_t kMaxPixels = std::size_t(1) << 30;
+// An ancillary chunk (text, an ICC profile) libpng keeps or inflates; its
+// own default, stated so a build of it with none cannot take gigabytes.
+constexpr png_alloc_size_t kMaxChunkBytes = 8'000'000;
 
 void write_png(const fs::path& file, int width, int height, const void* pixels) {
     png_image image;
@@ -60,12 +64,20 @@ struct Reader {
 // Everything libpng may leave by longjmp is in here, with no object of this
 // frame that has a destructor or changes after setjmp: what it fills lives
 // in the caller.
-bool read_rows(std::FILE* file, const Reader& r, std::vector<unsigned char>& bytes,
-               std::vector<png_bytep>& rows, StoredImage& out, int& depth) {
+// (check_declared_size's throw leaves by an exception, not a longjmp: no
+// libpng frame is on the stack then.)
+bool read_rows(std::FILE* file, const Reader& r, std::size_t max_pixels,
+               std::vector<unsigned char>& bytes, std::vector<png_bytep>& rows, StoredImage& out,
+               int& depth) {
     if (setjmp(png_jmpbuf(r.png))) return false;
     png_init_io(r.png, file);
-    png_set_user_limits(r.png, kMaxSide, kMaxSide);
+    const auto side = static_cast<png_uint_32>(std::min<std::size_t>(kMaxSide, max_pixels));
+    png_set_user_limits(r.png, side, side);
+    png_set_chunk_malloc_max(r.png, kMaxChunkBytes);
     png_read_info(r.png, r.info);
+    // The header's size, before any row is read or its buffer taken.
+    check_declared_size(png_get_image_width(r.png, r.info), png_get_image_height(r.png, r.info),
+                        max_pixels);
     // (An sRGB chunk wins over a gAMA chunk, as POV-Ray and the PNG
     // specification read them.)
     double file_gamma = 0.0;
@@ -121,8 +133,6 @@ bool read_rows(std::FILE* file, const Reader& r, std::vector<unsigned char>& byt
     out.width = static_cast<int>(png_get_image_width(r.png, r.info));
     out.height = static_cast<int>(png_get_image_height(r.png, r.info));
     depth = png_get_bit_depth(r.png, r.info);
-    if (std::size_t(out.width) * std::size_t(out.height) > kMaxPixels)
-        png_error(r.png, "image too large");
     const std::size_t row_bytes = png_get_rowbytes(r.png, r.info);
     bytes.resize(row_bytes * std::size_t(out.height));
     rows.resize(std::size_t(out.height));
@@ -132,7 +142,7 @@ bool read_rows(std::FILE* file, const Reader& r, std::vector<unsigned char>& byt
     return true;
 }
 
-StoredImage read_png(const fs::path& file) {
+StoredImage read_png(const fs::path& file, std::size_t max_pixels) {
     const std::unique_ptr<std::FILE, int (*)(std::FILE*)> stream(std::fopen(file.c_str(), "rb"),
                                                                  &std::fclose);
     if (!stream) throw std::runtime_error(std::strerror(errno));
@@ -145,7 +155,8 @@ StoredImage read_png(const fs::path& file) {
     std::vector<png_bytep> rows;
     StoredImage out;
     int depth = 8;
-    if (!read_rows(stream.get(), r, bytes, rows, out, depth)) throw std::runtime_error(message);
+    if (!read_rows(stream.get(), r, max_pixels, bytes, rows, out, depth))
+        throw std::runtime_error(message);
     out.linear = false;
     const std::size_t pixels = std::size_t(out.width) * std::size_t(out.height);
     out.values.resize(pixels * std::size_t(out.channels));

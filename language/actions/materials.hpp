@@ -42,7 +42,11 @@ struct action<g::image_map_file> {
             const std::filesystem::path path =
                 st.resolve_include(name, in.position(), "image file");
             try {
-                return std::make_shared<const image::StoredImage>(image::read_stored_image(path));
+                return std::make_shared<const image::StoredImage>(
+                    image::read_stored_image(path, st.max_image_pixels()));
+            } catch (const image::ImageTooLarge& e) {
+                throw ValueError(std::string("image_map: ") + e.what() +
+                                 "; --max-pixels N raises it");
             } catch (const std::runtime_error& e) {
                 throw ValueError(std::string("image_map: ") + e.what());
             }

@@ -45,6 +45,9 @@ class ShapeArguments {
     // global_settings { charset ascii | utf8 }: how a string's bytes become
     // characters ("ascii", POV-Ray's default, or "utf8").
     virtual const std::string& charset() const = 0;
+    // The pixels an image the block reads may declare (the scene's
+    // --max-pixels, Limits::image_pixels).
+    virtual std::size_t max_image_pixels() const = 0;
 
     // Throws the language's error with this message.
     [[noreturn]] virtual void fail(const std::string& message) const = 0;

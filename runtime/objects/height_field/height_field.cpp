@@ -2,6 +2,7 @@
 
 #include <map>
 #include <mutex>
+#include <tuple>
 #include <utility>
 
 namespace hexant::runtime {
@@ -9,17 +10,20 @@ namespace hexant::runtime {
 namespace {
 
 // Images by file and type, read once per process however many height
-// fields name them (weak: freed with the last scene that used them).
+// fields name them (weak: freed with the last scene that used them). The
+// limit is in the key: a scene of a lower --max-pixels reads the file
+// again, and is refused as it would have been alone.
 std::shared_ptr<const objects::HeightFieldData> field_at(const std::filesystem::path& path,
-                                                         const std::string& type) {
+                                                         const std::string& type,
+                                                         std::size_t max_pixels) {
     static std::mutex mutex;
-    static std::map<std::pair<std::filesystem::path, std::string>,
+    static std::map<std::tuple<std::filesystem::path, std::string, std::size_t>,
                     std::weak_ptr<const objects::HeightFieldData>>
         fields;
     const std::lock_guard<std::mutex> lock(mutex);
-    auto& slot = fields[{path, type}];
+    auto& slot = fields[{path, type, max_pixels}];
     if (auto field = slot.lock()) return field;
-    auto field = objects::read_height_field(path, type);
+    auto field = objects::read_height_field(path, type, max_pixels);
     slot = field;
     return field;
 }
@@ -42,7 +46,7 @@ HeightField HeightField::read(const objects::ShapeArguments& a) {
     a.need(1, 1, "an image file name");
     field.file = a.string(0, "height_field's image file name");
     try {
-        field.data = field_at(a.file(0, "height_field image"), field.type);
+        field.data = field_at(a.file(0, "height_field image"), field.type, a.max_image_pixels());
     } catch (const objects::HeightFieldError& e) {
         a.fail(e.what());
     }

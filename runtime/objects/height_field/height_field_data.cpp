@@ -177,7 +177,8 @@ std::vector<std::uint16_t> heights_from_image(const image::StoredImage& image) {
 }
 
 std::shared_ptr<const HeightFieldData> read_height_field(const std::filesystem::path& path,
-                                                         const std::string& type) {
+                                                         const std::string& type,
+                                                         std::size_t max_pixels) {
     std::string kind = type;
     if (kind.empty()) {
         const std::string ext = image::lower_case_extension(path);
@@ -203,7 +204,9 @@ std::shared_ptr<const HeightFieldData> read_height_field(const std::filesystem::
                                "' images; convert the file to png (or exr)");
     image::StoredImage stored;
     try {
-        stored = image::read_stored_image(path);
+        stored = image::read_stored_image(path, max_pixels);
+    } catch (const image::ImageTooLarge& e) {
+        throw HeightFieldError(std::string(e.what()) + "; --max-pixels N raises it");
     } catch (const std::runtime_error& e) {
         throw HeightFieldError(e.what());
     }

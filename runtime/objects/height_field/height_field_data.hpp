@@ -111,8 +111,11 @@ std::vector<std::uint16_t> heights_from_image(const image::StoredImage& image);
 // Reads a height field's image: `type` is the scene's type word ("png",
 // "exr"), or empty when the scene gave none (then the file's extension
 // says, as POV-Ray's Parse_Image infers it). Throws HeightFieldError with a
-// message naming the file or the type hexant does not read.
-std::shared_ptr<const HeightFieldData> read_height_field(const std::filesystem::path& path,
-                                                         const std::string& type);
+// message naming the file or the type hexant does not read, or the size
+// it declares when that is more than `max_pixels` (checked before any
+// pixel is read).
+std::shared_ptr<const HeightFieldData> read_height_field(
+    const std::filesystem::path& path, const std::string& type,
+    std::size_t max_pixels = image::kMaxImagePixels);
 
 }  // namespace hexant::runtime::objects
