@@ -4,6 +4,14 @@
 
 namespace hexant::runtime {
 
+Media Media::legacy() {
+    Media m;
+    m.method = 1;
+    m.intervals = 10;
+    m.min_samples = m.max_samples = 1;
+    return m;
+}
+
 void Media::transform_by(const TransformStep& step) {
     for (Pigment& d : density) d.transform.append(step);
 }

@@ -48,13 +48,9 @@ struct Media {
     bool collect = true;  // photons: hexant has none; kept as read
 
     // POV-Ray's defaults before 3.5 (method 1, 10 intervals, 1 sample).
-    static Media legacy() {
-        Media m;
-        m.method = 1;
-        m.intervals = 10;
-        m.min_samples = m.max_samples = 1;
-        return m;
-    }
+    // (Out of line: a Media made here, where Pigment is incomplete, is an
+    // error for clang with libstdc++ 12, whose vector is constexpr.)
+    static Media legacy();
     // Moves the densities written so far (POV-Ray's Transform_Density: a
     // density written after a transformation is not moved by it).
     void transform_by(const TransformStep& step);
