@@ -8,7 +8,7 @@ PACKAGES := build-essential cmake pkg-config tao-pegtl-dev libglm-dev catch2 lib
             nlohmann-json3-dev
 JOBS := $(shell nproc 2>/dev/null || echo 2)
 
-.PHONY: run test golden bench fuzz sanitize format format-check clang-format-installed build deps clean
+.PHONY: run test golden bench fuzz fuzz-long sanitize format format-check clang-format-installed build deps clean
 
 run: build
 	./build/hexant render examples/atom.pov examples/atom.ini \
@@ -43,19 +43,27 @@ bench: deps
 	cmake --build build --target hexant_embree_peer -j$(JOBS)
 	./build/tests/bench/hexant_embree_peer
 
-# libFuzzer over reading a scene and rendering an 8 by 8 frame, with
-# AddressSanitizer and UndefinedBehaviorSanitizer (tests/fuzz/; README.md,
-# "Fuzzing"): needs clang, so it is not part of `make test`. Builds into
-# build-fuzz and fuzzes for FUZZ_SECONDS; a crash fails with its input
-# saved as build-fuzz/tests/fuzz/crash-*.
+# libFuzzer over reading a scene and rendering an 8 by 8 frame, over fonts
+# and over image files, with AddressSanitizer and UndefinedBehaviorSanitizer
+# (tests/fuzz/; README.md, "Fuzzing"): needs clang, so it is not part of
+# `make test`. Builds into build-fuzz and runs each fuzzer for FUZZ_SECONDS;
+# a crash fails with its input saved as build-fuzz/tests/fuzz/*crash-*.
 FUZZ_SECONDS ?= 600
+FUZZ_TARGETS := hexant_fuzz hexant_font_fuzz hexant_image_fuzz
 fuzz: deps
 	@command -v clang++ >/dev/null 2>&1 || { \
 	  echo "make fuzz needs clang. Run:"; echo "  sudo apt-get install -y clang"; exit 1; }
 	CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 	  -DHEXANT_FUZZ=ON -DHEXANT_FUZZ_SECONDS=$(FUZZ_SECONDS)
-	cmake --build build-fuzz --target hexant_fuzz -j$(JOBS)
+	cmake --build build-fuzz --target $(FUZZ_TARGETS) -j$(JOBS)
 	cd build-fuzz && ctest -L fuzz --output-on-failure
+
+# A campaign: the three fuzzers one after the other (one process at a time),
+# each for FUZZ_LONG_SECONDS (default 4 hours: 12 in all), the corpora they
+# grow kept in build-fuzz/tests/fuzz/ for the next run.
+FUZZ_LONG_SECONDS ?= 14400
+fuzz-long:
+	$(MAKE) fuzz FUZZ_SECONDS=$(FUZZ_LONG_SECONDS)
 
 # The whole test suite under AddressSanitizer and UndefinedBehaviorSanitizer,
 # in the fuzz build's folder (clang; README.md, "Tests"): about 15 minutes to

@@ -45,6 +45,11 @@ hexant::language::ParseOptions fuzz_options(std::ostream& messages) {
     // 10^4 pieces, over 10 s under the sanitizers (a slow unit on the seed
     // tests/fuzz/corpus/time_branches.pov, mutated).
     limits.time_pieces = 1000;
+    // Images a scene names (POV-Ray's own: plasma2.png, Mount1.png,
+    // mtmand.pot) are found where Debian's povray-includes puts them, and
+    // held to fewer pixels (the largest there has 64,000).
+    options.include_paths = {"/usr/share/povray-3.7/include"};
+    limits.image_pixels = 1 << 20;
     return options;
 }
 
@@ -66,6 +71,43 @@ const char* const kNumbers[] = {"sqrt(-1)",
                                 "sqrt(0.5-clock)",
                                 "nan",
                                 "inf"};
+// Whole items a scene brings from outside or builds deep, whose syntax the
+// byte mutations rarely hit: images and fonts found where POV-Ray's
+// includes are (Debian's povray-includes and fonts-povray), maps, layers
+// and meshes. (libFuzzer's dictionary keeps words of at most 64 bytes.)
+const char* const kItems[] = {
+    "sphere{0,1 pigment{image_map{png \"plasma2.png\" interpolate 2 once}}}",
+    "sphere{0,1 pigment{image_map{gif \"mtmand.pot\" map_type 1 filter all 0.5}}}",
+    "plane{y,0 normal{bump_map{png \"bumpmap_.png\" use_index bump_size 3}}}",
+    "box{0,1 texture{material_map{png \"test.png\" texture{pigment{rgb 1}} "
+    "texture{pigment{rgb x}}}}}",
+    "height_field{png \"Mount1.png\" smooth water_level 0.2 scale <2,0.5,2>}",
+    "height_field{pot \"mtmand.pot\"}",
+    "height_field{function 9,9{pigment{bozo color_map{[0 rgb 0][1 rgb 1]}}}}",
+    "text{ttf \"timrom.ttf\" \"AVAWTo\",0.3,<0.1,0.2,0> pigment{rgb 1}}",
+    "text{ttf \"crystal.ttf\" concat(\"x\",str(clock,0,2)),clock,0}",
+    "text{internal 0 \"\xc3\xa9t\xc3\xa9\",-0.1,0}",
+    "pigment{gradient x pigment_map{[0 checker rgb 1 rgb 0][0.5 rgb y][1 bozo]}}",
+    "normal{bozo normal_map{[0 bumps 0.5][1 dents 2 scale 0.1]} slope_map{[0 <0,1>][1 <1,0>]}}",
+    "texture{checker texture{pigment{rgb 1}} texture{gradient y texture_map{[0 pigment{rgb 0}]"
+    "[1 pigment{rgb 1}]}}}",
+    "texture{pigment{rgb 1}}texture{pigment{bozo color_map{[0 rgbt 1][1 rgbf 0.5]}}"
+    "finish{phong 1}}",
+    "mesh2{vertex_vectors{4,0,x,y,z} uv_vectors{2,0,1} texture_list{2,texture{pigment{rgb 1}}"
+    "texture{pigment{rgb 0}}} face_indices{2,<0,1,2>,0,<1,2,3>,1} uv_indices{2,<0,1,1>,"
+    "<1,0,0>} inside_vector y}",
+    "mesh{triangle{0,x,y} smooth_triangle{0,z,x,z,y,z} triangle{0,1,1}}",
+    "isosurface{function{x*x+y*y+z*z-clock} contained_by{sphere{0,2}} threshold 0.1 open}",
+    "sphere_sweep{b_spline 4,0,0.5,x,0.2,y,0.3,z,0.1}",
+    "blob{threshold 0.6 sphere{0,1,1} cylinder{0,x*clock,0.5,-2}}",
+    "lathe{bezier_spline 4,<0,0>,<1,0>,<1,1>,<0,1>}",
+    "prism{0,1,4,<0,0>,<1,0>,<0,1>,<0,0>}",
+    "superellipsoid{<0.1,3>}",
+    "julia_fractal{<-0.1,0.6,0,0> quaternion sqr max_iteration 8 precision 10}",
+    "bicubic_patch{type 1 u_steps 3 v_steps 3 <0,0,0>,<1,0,0>,<2,0,0>,<3,0,0>,<0,1,0>,<1,1,1>,"
+    "<2,1,1>,<3,1,0>,<0,2,0>,<1,2,1>,<2,2,1>,<3,2,0>,<0,3,0>,<1,3,0>,<2,3,0>,<3,3,0>}",
+    "poly{4,<1,0,0,0,1,0,0,0,0,-0.5,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,0,1>}",
+};
 const char* const kOpeners[][2] = {{"(", ")"},      {"<", ",0,0>"},     {"-", ""},
                                    {"union{", "}"}, {"#if(1)", "#end"}, {"/*", "*/"},
                                    {"{", "}"},      {"sin(", ")"},      {"array[1]{", "}"}};
@@ -96,16 +138,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 }
 
 // Mostly libFuzzer's own mutations; one in four splices a piece: a number
-// from kNumbers at a random place, or a random span wrapped in one opener
-// repeated up to thousands of times.
+// from kNumbers or an item from kItems at a random place, or a random span
+// wrapped in one opener repeated up to thousands of times.
 extern "C" std::size_t LLVMFuzzerCustomMutator(std::uint8_t* data, std::size_t size,
                                                std::size_t max_size, unsigned int seed) {
     std::minstd_rand random(seed);
     if (random() % 4 != 0 || size == 0) return LLVMFuzzerMutate(data, size, max_size);
     std::string text(reinterpret_cast<const char*>(data), size);
     const std::size_t at = random() % (text.size() + 1);
-    if (random() % 2 == 0) {
+    const auto choice = random() % 3;
+    if (choice == 0) {
         text.insert(at, kNumbers[random() % std::size(kNumbers)]);
+    } else if (choice == 1) {
+        text.insert(at, kItems[random() % std::size(kItems)]);
     } else {
         const auto& pair = kOpeners[random() % std::size(kOpeners)];
         const std::size_t end = at + random() % (text.size() - at + 1);

@@ -103,3 +103,17 @@ TEST_CASE("a GIF image larger than the limit is refused from its descriptor, not
                                         "40000 pixels, more than the limit of 100000000"));
     fs::remove_all(dir);
 }
+
+TEST_CASE("an OpenEXR attribute that declares more than the file holds is refused first",
+          "[image][exr][limits]") {
+    // The image fuzzer's finds (tests/fuzz/image_found/): the C++ reader
+    // took 1.6 and 1.9 GB for an attribute of an unknown type, the second
+    // after a box2i declared 0 bytes and the reader went on from the wrong
+    // place.
+    const fs::path found = fs::path(HEXANT_SOURCE_DIR) / "tests/fuzz/image_found";
+    for (const char* name : {"exr_attribute_of_1.6_GB.exr", "exr_box2i_of_size_0.exr"}) {
+        INFO(name);
+        REQUIRE_THROWS_WITH(im::read_stored_image(found / name, 100'000'000),
+                            Catch::Contains("is damaged"));
+    }
+}
