@@ -225,7 +225,17 @@ std::optional<std::string> bad_parameter(const CameraRecord& camera, const Anima
             case K::Transform:
                 transform.append(item.step);
                 break;
-            default: {
+            case K::VerticalAngle:
+                if (auto p = check(item.angle, "the camera's vertical angle", span)) return p;
+                break;
+            case K::Type:  // (a type's own meshes are checked as objects)
+                break;
+            case K::Location:
+            case K::LookAt:
+            case K::Direction:
+            case K::Right:
+            case K::Up:
+            case K::Sky: {
                 static const char* const names[] = {"location", "look_at", "direction",
                                                     "right",    "up",      "sky"};
                 if (auto p = check(
