@@ -406,72 +406,71 @@ TEST_CASE("a long reading says how far it has come", "[limits]") {
     options.progress_delay = 3600.0;
     reads("#for (I, 1, 5000) #end\n", options);
     CHECK(said.empty());
+}
 
-    TEST_CASE("an image a scene reads is held to --max-pixels before it is decoded",
-              "[limits][image]") {
-        // A PNG of 61 bytes declaring 32768 by 32768 gray pixels: read as an
-        // image_map, a bump_map or a height_field, it stops at the place with
-        // the size, the limit and the flag, in a child whose address space is
-        // capped at 1 GiB: decoding it would take 3 GB (12 GB as floats).
-        if (hexant::test::kAddressSanitizer) {
-            WARN("not run under AddressSanitizer: its shadow memory needs more than the cap");
-            return;
-        }
-        const fs::path dir =
-            fs::temp_directory_path() / ("hexant_limits_" + std::to_string(getpid()));
-        fs::create_directories(dir);
-        hexant::test::write_png_header(dir / "huge.png", 32768, 32768);
-        const std::string scenes[] = {
-            "#declare A = 1;\nsphere { 0, 1 pigment { image_map { png \"huge.png\" } } }\n",
-            "#declare A = 1;\nsphere { 0, 1 normal { bump_map { png \"huge.png\" } } }\n",
-            "#declare A = 1;\nheight_field { png \"huge.png\" }\n"};
-        for (const std::string& text : scenes) {
-            INFO(text);
-            const pid_t child = fork();
-            REQUIRE(child >= 0);
-            if (child == 0) {
-                rlimit cap{rlim_t(1) << 30, rlim_t(1) << 30};
-                if (setrlimit(RLIMIT_AS, &cap) != 0) _exit(3);
-                ParseOptions options;
-                options.include_paths = {dir.string()};
-                std::ostringstream messages;
-                options.messages = &messages;
-                try {
-                    hexant::language::parse_scene_text(text, "limits.pov", options);
-                } catch (const SceneError& e) {
-                    const bool said = contains(e, "huge.png") &&
-                                      contains(e, "declares 32768 by 32768 pixels") &&
-                                      contains(e, "limit of 100000000 pixels") &&
-                                      contains(e, "--max-pixels N raises it");
-                    _exit(said && e.places().front().line == 2 ? 0 : 2);
-                } catch (...) {
-                    _exit(4);
-                }
-                _exit(5);
+TEST_CASE("an image a scene reads is held to --max-pixels before it is decoded",
+          "[limits][image]") {
+    // A PNG of 61 bytes declaring 32768 by 32768 gray pixels: read as an
+    // image_map, a bump_map or a height_field, it stops at the place with
+    // the size, the limit and the flag, in a child whose address space is
+    // capped at 1 GiB: decoding it would take 3 GB (12 GB as floats).
+    if (hexant::test::kAddressSanitizer) {
+        WARN("not run under AddressSanitizer: its shadow memory needs more than the cap");
+        return;
+    }
+    const fs::path dir = fs::temp_directory_path() / ("hexant_limits_" + std::to_string(getpid()));
+    fs::create_directories(dir);
+    hexant::test::write_png_header(dir / "huge.png", 32768, 32768);
+    const std::string scenes[] = {
+        "#declare A = 1;\nsphere { 0, 1 pigment { image_map { png \"huge.png\" } } }\n",
+        "#declare A = 1;\nsphere { 0, 1 normal { bump_map { png \"huge.png\" } } }\n",
+        "#declare A = 1;\nheight_field { png \"huge.png\" }\n"};
+    for (const std::string& text : scenes) {
+        INFO(text);
+        const pid_t child = fork();
+        REQUIRE(child >= 0);
+        if (child == 0) {
+            rlimit cap{rlim_t(1) << 30, rlim_t(1) << 30};
+            if (setrlimit(RLIMIT_AS, &cap) != 0) _exit(3);
+            ParseOptions options;
+            options.include_paths = {dir.string()};
+            std::ostringstream messages;
+            options.messages = &messages;
+            try {
+                hexant::language::parse_scene_text(text, "limits.pov", options);
+            } catch (const SceneError& e) {
+                const bool said = contains(e, "huge.png") &&
+                                  contains(e, "declares 32768 by 32768 pixels") &&
+                                  contains(e, "limit of 100000000 pixels") &&
+                                  contains(e, "--max-pixels N raises it");
+                _exit(said && e.places().front().line == 2 ? 0 : 2);
+            } catch (...) {
+                _exit(4);
             }
-            int status = 0;
-            REQUIRE(waitpid(child, &status, 0) == child);
-            REQUIRE(WIFEXITED(status));
-            CHECK(WEXITSTATUS(status) == 0);
+            _exit(5);
         }
-        fs::remove_all(dir);
+        int status = 0;
+        REQUIRE(waitpid(child, &status, 0) == child);
+        REQUIRE(WIFEXITED(status));
+        CHECK(WEXITSTATUS(status) == 0);
     }
+    fs::remove_all(dir);
+}
 
-    TEST_CASE("an image within --max-pixels reads; one pixel over it does not", "[limits][image]") {
-        // tiles.png is 8 by 6: the scene's limit is the frame's limit too.
-        ParseOptions options;
-        options.include_paths = {std::string(HEXANT_SOURCE_DIR) +
-                                 "/tests/tracer/pov_reference/textures"};
-        const std::string image_map =
-            "sphere { 0, 1 pigment { image_map { png \"tiles.png\" } } }\n";
-        const std::string height_field = "height_field { png \"tiles.png\" }\n";
-        for (const std::string& text : {image_map, height_field}) {
-            INFO(text);
-            options.limits.image_pixels = 48;
-            reads(text, options);
-            options.limits.image_pixels = 47;
-            const SceneError e = error_of(text, options);
-            CHECK(contains(e, "declares 8 by 6 pixels, more than the limit of 47"));
-            CHECK(e.places().front().line == 1);
-        }
+TEST_CASE("an image within --max-pixels reads; one pixel over it does not", "[limits][image]") {
+    // tiles.png is 8 by 6: the scene's limit is the frame's limit too.
+    ParseOptions options;
+    options.include_paths = {std::string(HEXANT_SOURCE_DIR) +
+                             "/tests/tracer/pov_reference/textures"};
+    const std::string image_map = "sphere { 0, 1 pigment { image_map { png \"tiles.png\" } } }\n";
+    const std::string height_field = "height_field { png \"tiles.png\" }\n";
+    for (const std::string& text : {image_map, height_field}) {
+        INFO(text);
+        options.limits.image_pixels = 48;
+        reads(text, options);
+        options.limits.image_pixels = 47;
+        const SceneError e = error_of(text, options);
+        CHECK(contains(e, "declares 8 by 6 pixels, more than the limit of 47"));
+        CHECK(e.places().front().line == 1);
     }
+}
