@@ -457,7 +457,7 @@ TEST_CASE("an image a scene reads is held to --max-pixels before it is decoded",
     fs::remove_all(dir);
 }
 
-TEST_CASE("an image within --max-pixels reads; one pixel over it does not", "[limits][image]") {
+TEST_CASE("an image within --max-pixels reads, and one pixel over it does not", "[limits][image]") {
     // tiles.png is 8 by 6: the scene's limit is the frame's limit too.
     ParseOptions options;
     options.include_paths = {std::string(HEXANT_SOURCE_DIR) +
