@@ -19,6 +19,7 @@
 #include <unistd.h>
 
 #include "runtime/objects/text/true_type_font.hpp"
+#include "tests/fuzz/input_file.hpp"
 
 namespace obj = hexant::runtime::objects;
 namespace geo = hexant::runtime::geometry;
@@ -28,17 +29,8 @@ namespace {
 // FreeType opens a font by its path: the input is written to one file per
 // process, anew for each input.
 const std::filesystem::path& font_file() {
-    static const std::filesystem::path path =
-        std::filesystem::temp_directory_path() /
-        ("hexant_font_fuzz_" + std::to_string(getpid()) + ".ttf");
+    static const std::filesystem::path path = hexant::fuzz::input_file_path("font_fuzz", ".ttf");
     return path;
-}
-
-bool write_file(const std::filesystem::path& path, const std::uint8_t* data, std::size_t size) {
-    std::FILE* f = std::fopen(path.c_str(), "wb");
-    if (!f) return false;
-    const bool ok = std::fwrite(data, 1, size, f) == size;
-    return std::fclose(f) == 0 && ok;
 }
 
 // Strings through both encodings: letters and digits (what the fonts map),
@@ -51,7 +43,7 @@ const char* const kStrings[] = {"Hexant 0123", "AVAWToTy", "\xc3\xa9\xc3\xa8\xc3
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::filesystem::path& path = font_file();
-    if (!write_file(path, data, size)) return 0;
+    if (!hexant::fuzz::write_input_file(path, data, size)) return 0;
     try {
         const auto font = obj::TrueTypeFont::load(path);
         (void)font->units_per_em();

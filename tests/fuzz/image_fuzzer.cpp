@@ -22,6 +22,7 @@
 #include "language/image_map_file.hpp"
 #include "runtime/objects/height_field/height_field_data.hpp"
 #include "runtime/texture/pattern/image_map.hpp"
+#include "tests/fuzz/input_file.hpp"
 
 namespace pat = hexant::runtime::pattern;
 
@@ -30,17 +31,8 @@ namespace {
 // The readers open a file by its path: the input is written to one file
 // per process, anew for each input.
 const std::filesystem::path& image_file() {
-    static const std::filesystem::path path =
-        std::filesystem::temp_directory_path() /
-        ("hexant_image_fuzz_" + std::to_string(getpid()) + ".img");
+    static const std::filesystem::path path = hexant::fuzz::input_file_path("image_fuzz", ".img");
     return path;
-}
-
-bool write_file(const std::filesystem::path& path, const std::uint8_t* data, std::size_t size) {
-    std::FILE* f = std::fopen(path.c_str(), "wb");
-    if (!f) return false;
-    const bool ok = std::fwrite(data, 1, size, f) == size;
-    return std::fclose(f) == 0 && ok;
 }
 
 // Lower than a scene's 10^8 so that one input stays within the fuzzer's
@@ -52,7 +44,7 @@ constexpr std::size_t kMaxPixels = std::size_t(1) << 20;
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     const std::filesystem::path& path = image_file();
-    if (!write_file(path, data, size)) return 0;
+    if (!hexant::fuzz::write_input_file(path, data, size)) return 0;
     hexant::image::StoredImage stored;
     try {
         stored = hexant::image::read_stored_image(path, kMaxPixels);
