@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "app/mode_run.hpp"
@@ -216,6 +217,13 @@ void check_outputs(const RenderArguments& args, const std::string& pattern,
         return std::filesystem::absolute(o.per_frame ? tracer::frame_path(o.name, frame) : o.name)
             .lexically_normal();
     };
+    // The inputs' device and inode, once (an output is the same file by any
+    // name, a hard link too: one stat of it per frame, not two per input).
+    std::vector<std::pair<std::filesystem::path, struct stat>> input_ids;
+    for (const auto& input : inputs) {
+        struct stat id {};
+        if (::stat(input.c_str(), &id) == 0) input_ids.emplace_back(input, id);
+    }
     for (std::size_t i = 0; i < outputs.size(); ++i) {
         const Output& o = outputs[i];
         const auto named = [&](const std::function<void()>& check) {
@@ -246,12 +254,13 @@ void check_outputs(const RenderArguments& args, const std::string& pattern,
             for (const int frame : selected) {
                 const std::filesystem::path file = file_of(o, frame);
                 tracer::TemporaryFile::refuse_other_than_regular(file);
-                std::error_code error;
-                for (const auto& input : inputs)
-                    if (std::filesystem::equivalent(file, input, error))
-                        throw std::runtime_error(
-                            o.flag + " " + file.string() + " is one of the scene's inputs (" +
-                            input.string() + "): refused, it would be replaced");
+                struct stat here {};
+                if (::stat(file.c_str(), &here) == 0)
+                    for (const auto& [input, where] : input_ids)
+                        if (where.st_dev == here.st_dev && where.st_ino == here.st_ino)
+                            throw std::runtime_error(
+                                o.flag + " " + file.string() + " is one of the scene's inputs (" +
+                                input.string() + "): refused, it would be replaced");
                 if (!o.per_frame) break;
             }
         });

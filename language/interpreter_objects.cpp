@@ -472,8 +472,7 @@ runtime::ObjectRecord make_shape(const Interpreter::ShapeOpening& shape, std::ve
     const BlockArguments arguments(kind, shape.options, args, st, where);
     runtime::ObjectRecord record;
     read_shape(shape.kind, arguments, record, runtime::ShapeKinds{});
-    if (const auto* text = std::get_if<runtime::Text>(&record.shape))
-        record.objects = std::max<std::uint64_t>(text->glyphs.size(), 1);
+    record.objects = record.own_objects();
     return record;
 }
 

@@ -84,12 +84,8 @@ struct finish_object {
         const auto* csg = std::get_if<runtime::Csg>(&record.shape);
         if (csg || record.limits) {
             record.depth = 1;
-            // Its own: none for a CSG, a glyph a character for a text, else
-            // one (not record.objects: a copy's count already holds its limits).
-            const auto* text = std::get_if<runtime::Text>(&record.shape);
-            std::uint64_t objects = csg    ? 0
-                                    : text ? std::max<std::uint64_t>(text->glyphs.size(), 1)
-                                           : 1;
+            // (Its own, not record.objects: a copy's count holds its limits.)
+            std::uint64_t objects = record.own_objects();
             if (csg)
                 for (const auto& child : csg->children) {
                     record.depth = std::max(record.depth, child->depth + 1);

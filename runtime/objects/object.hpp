@@ -2,10 +2,13 @@
 // may include deformations), its texture and flags.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
 #include "runtime/motion/transform.hpp"
@@ -92,6 +95,22 @@ struct ObjectRecord {
     // clipped_by and bounded_by; shared between copies, null when neither
     // is written (most objects: a pointer keeps records small).
     std::shared_ptr<const ObjectLimits> limits;
+
+    // What its own shape makes of ObjectRecord::objects: none for a CSG
+    // (its members count), what a kind says when it says (a text: its
+    // glyphs), else one.
+    std::uint64_t own_objects() const {
+        return std::visit(
+            [](const auto& s) -> std::uint64_t {
+                if constexpr (std::is_same_v<std::decay_t<decltype(s)>, Csg>)
+                    return 0;
+                else if constexpr (requires { s.objects(); })
+                    return std::max<std::uint64_t>(s.objects(), 1);
+                else
+                    return 1;
+            },
+            shape);
+    }
 
     bool depends_on_time() const;  // anything about it
     bool shape_depends_on_time() const;

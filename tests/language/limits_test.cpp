@@ -369,6 +369,12 @@ TEST_CASE("objects are counted where they are made: copies, members, glyphs", "[
         "would make 3 objects"));
     CHECK(contains(error_of("text { ttf \"timrom.ttf\" \"abc\" 0.1, 0 }\n", options),
                    "this text has 3 characters"));
+    // Laid out, its glyphs count in the scene's total: two texts of 3 are 6.
+    options.limits.objects = 5;
+    CHECK(contains(error_of("text { ttf \"timrom.ttf\" \"abc\" 0.1, 0 }\n"
+                            "text { ttf \"timrom.ttf\" \"abc\" 0.1, 0 }\n",
+                            options),
+                   "the scene would make more than 5 objects"));
 }
 
 TEST_CASE("mesh triangles are counted as they are read", "[limits]") {

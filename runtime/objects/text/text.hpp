@@ -11,6 +11,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -46,6 +47,9 @@ struct Text {
     // (Parse_TrueType: a turn of 0.001 degrees about each axis "to fix
     // cracks in text that lies along an axis").
     static Transform placement();
+    // Objects it makes (ObjectRecord::objects): a glyph a character, each
+    // about an object's memory.
+    std::uint64_t objects() const { return glyphs.size(); }
     template <class F>
     void parameters(F&& f) const {
         f("font", "font", font);
