@@ -5,7 +5,7 @@
 
 #include "runtime/geometry/box_queries.hpp"
 #include "runtime/geometry/stable_arithmetic.hpp"
-#include "runtime/objects/mesh/mesh_hierarchy.hpp"
+#include "runtime/objects/box_hierarchy.hpp"
 #include "runtime/objects/triangle/triangle_geometry.hpp"
 
 namespace hexant::runtime::geometry {

@@ -17,7 +17,7 @@ using objects::HeightFieldData;
 // POV-Ray's HFIELD_OFFSET: the box's margin above and below the heights.
 constexpr double kOffset = 0.001;
 
-// pbrt-v4's Bounds3::IntersectP, as mesh_hierarchy.cpp's ray_meets_box.
+// pbrt-v4's Bounds3::IntersectP, as box_hierarchy.cpp's ray_meets_box.
 bool meets_box(const Box3& box, const glm::dvec3& origin, const glm::dvec3& inverse, double s_min,
                double s_max, double& entry) {
     constexpr double widen = 2.0 * rounding_gamma(3);

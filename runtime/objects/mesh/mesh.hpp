@@ -2,7 +2,7 @@
 // and mesh2 { vertex_vectors { } normal_vectors { } uv_vectors { }
 // texture_list { } face_indices { } normal_indices { } uv_indices { }
 // [inside_vector V] }: one object over many triangles, with its own
-// hierarchy (mesh_hierarchy.hpp). The object kind
+// hierarchy (../box_hierarchy.hpp). The object kind
 // (runtime/objects/shape_kind.hpp); its two syntaxes have their own rules
 // in the grammar (kOwnSyntax), which fill MeshData.
 //

@@ -1,7 +1,7 @@
 // What a mesh holds once read (mesh { triangle {..} ... } or mesh2 { ... }):
 // vertices, normals and uv coordinates shared by index, the faces, the
 // textures its faces name, and its hierarchy over the faces in object space
-// (mesh_hierarchy.hpp). Built once while the scene is read; every copy of
+// (../box_hierarchy.hpp). Built once while the scene is read; every copy of
 // the object shares it.
 #pragma once
 
@@ -12,7 +12,7 @@
 
 #include <glm/glm.hpp>
 
-#include "runtime/objects/mesh/mesh_hierarchy.hpp"
+#include "runtime/objects/box_hierarchy.hpp"
 #include "runtime/texture/material.hpp"
 
 namespace hexant::runtime::objects {
@@ -44,10 +44,10 @@ struct MeshData {
     // when a ray from it along the vector crosses the faces an odd number
     // of times); without one it has no inside.
     std::optional<glm::dvec3> inside_vector;
-    MeshHierarchy hierarchy;
+    BoxHierarchy hierarchy;
 
     // Orders the faces and builds the hierarchy (after reading).
-    void build_hierarchy() { hierarchy = MeshHierarchy::build(vertices, faces, read_index); }
+    void build_hierarchy();
     std::size_t bytes() const;
 };
 

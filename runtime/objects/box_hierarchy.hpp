@@ -1,11 +1,12 @@
-// A mesh's own static hierarchy over its faces, in object space: a binary
-// tree of axis-aligned boxes (Embree's and pbrt-v4's BVH, built by splitting
-// at the median of the faces' centres along the widest axis), leaves of at
-// most kMeshLeafSize faces. A ray visits the nearer child first and skips a
-// box it meets beyond its nearest hit so far. It also gives the mesh's bound
-// pieces: the boxes of its nodes, finer where a region is small (the
-// paper's star cluster: an object answers bound(region) with several
-// smaller bounds).
+// A static hierarchy over the parts of one object, in its own space: a
+// mesh's faces (mesh/mesh_data.hpp), an instance's members
+// (instance_object.hpp). A binary tree of axis-aligned boxes (Embree's and
+// pbrt-v4's BVH, built by splitting at the median of the parts' centres
+// along the widest axis), leaves of at most kBoxLeafSize parts. A ray visits
+// the nearer child first and skips a box it meets beyond its nearest hit so
+// far. It also gives the object's bound pieces: the boxes of its nodes,
+// finer where a region is small (the paper's star cluster: an object
+// answers bound(region) with several smaller bounds).
 #pragma once
 
 #include <array>
@@ -18,23 +19,24 @@
 
 namespace hexant::runtime::objects {
 
-struct MeshFace;
+inline constexpr std::uint32_t kBoxLeafSize = 4;
 
-inline constexpr std::uint32_t kMeshLeafSize = 4;
-
-class MeshHierarchy {
+class BoxHierarchy {
   public:
     struct Node {
         geometry::Box3 box;
-        // A leaf: faces [first, first + count); an inner node (count == 0):
+        // A leaf: parts [first, first + count); an inner node (count == 0):
         // children at index + 1 and at `first`.
         std::uint32_t first = 0, count = 0;
     };
 
-    // Reorders `faces` into the tree's leaf order.
-    static MeshHierarchy build(const std::vector<glm::dvec3>& vertices,
-                               std::vector<MeshFace>& faces,
-                               std::vector<std::uint32_t>& read_index);
+    // The tree over parts with these boxes and centres (of equal length,
+    // at most 2^32 - 1). `order` receives the parts in the tree's leaf
+    // order: a leaf's (first, count) names order[first .. first + count),
+    // which the caller stores its parts by.
+    static BoxHierarchy build(const std::vector<geometry::Box3>& boxes,
+                              const std::vector<glm::dvec3>& centres,
+                              std::vector<std::uint32_t>& order);
 
     bool empty() const { return nodes_.empty(); }
     const std::vector<Node>& nodes() const { return nodes_; }
@@ -72,8 +74,8 @@ bool ray_meets_box(const geometry::Box3& box, const glm::dvec3& origin, const gl
                    double s_min, double s_max, double& entry);
 
 template <class Leaf>
-void MeshHierarchy::traverse(const geometry::Ray3& ray, double s_min, double s_max,
-                             Leaf&& leaf) const {
+void BoxHierarchy::traverse(const geometry::Ray3& ray, double s_min, double s_max,
+                            Leaf&& leaf) const {
     if (nodes_.empty()) return;
     const glm::dvec3 inverse = 1.0 / ray.direction;
     struct Pending {

@@ -1,40 +1,32 @@
-#include "runtime/objects/mesh/mesh_hierarchy.hpp"
+#include "runtime/objects/box_hierarchy.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-
-#include "runtime/objects/mesh/mesh_data.hpp"
 
 namespace hexant::runtime::objects {
 
 namespace {
 
 struct Builder {
-    const std::vector<glm::dvec3>& vertices;
-    std::vector<MeshFace>& faces;
-    std::vector<glm::dvec3> centres;
-    std::vector<std::uint32_t> read;  // the index each face was read at
-    std::vector<MeshHierarchy::Node>& nodes;
+    const std::vector<geometry::Box3>& boxes;
+    const std::vector<glm::dvec3>& centres;
+    std::vector<std::uint32_t>& order;  // part indices, rearranged in place
+    std::vector<BoxHierarchy::Node>& nodes;
 
-    geometry::Box3 face_box(const MeshFace& f) const {
-        const glm::dvec3 &a = vertices[f.vertex[0]], &b = vertices[f.vertex[1]],
-                         &c = vertices[f.vertex[2]];
-        return {glm::min(a, glm::min(b, c)), glm::max(a, glm::max(b, c))};
-    }
-
-    // Builds the subtree over faces [first, last) at nodes[index].
+    // Builds the subtree over order[first, last) at nodes[index].
     void build(std::uint32_t index, std::uint32_t first, std::uint32_t last) {
         geometry::Box3 box = geometry::Box3::nowhere();
         geometry::Box3 centre_box = geometry::Box3::nowhere();
         for (std::uint32_t i = first; i < last; ++i) {
-            const geometry::Box3 b = face_box(faces[i]);
+            const geometry::Box3& b = boxes[order[i]];
+            const glm::dvec3& c = centres[order[i]];
             box = {glm::min(box.lo, b.lo), glm::max(box.hi, b.hi)};
-            centre_box = {glm::min(centre_box.lo, centres[i]), glm::max(centre_box.hi, centres[i])};
+            centre_box = {glm::min(centre_box.lo, c), glm::max(centre_box.hi, c)};
         }
         nodes[index].box = box;
         const std::uint32_t n = last - first;
-        if (n <= kMeshLeafSize) {
+        if (n <= kBoxLeafSize) {
             nodes[index].first = first;
             nodes[index].count = n;
             return;
@@ -46,22 +38,9 @@ struct Builder {
                          : extent.y >= extent.z                       ? 1
                                                                       : 2;
         const std::uint32_t mid = first + n / 2;
-        std::vector<std::uint32_t> order(n);
-        for (std::uint32_t i = 0; i < n; ++i) order[i] = first + i;
         std::nth_element(
-            order.begin(), order.begin() + (mid - first), order.end(),
+            order.begin() + first, order.begin() + mid, order.begin() + last,
             [&](std::uint32_t a, std::uint32_t b) { return centres[a][axis] < centres[b][axis]; });
-        std::vector<MeshFace> f(n);
-        std::vector<glm::dvec3> c(n);
-        std::vector<std::uint32_t> r(n);
-        for (std::uint32_t i = 0; i < n; ++i) {
-            f[i] = faces[order[i]];
-            c[i] = centres[order[i]];
-            r[i] = read[order[i]];
-        }
-        std::copy(f.begin(), f.end(), faces.begin() + first);
-        std::copy(c.begin(), c.end(), centres.begin() + first);
-        std::copy(r.begin(), r.end(), read.begin() + first);
         // Left child next to its parent, the right one after the left subtree.
         const std::uint32_t left = index + 1;
         nodes.emplace_back();
@@ -76,24 +55,17 @@ struct Builder {
 
 }  // namespace
 
-MeshHierarchy MeshHierarchy::build(const std::vector<glm::dvec3>& vertices,
-                                   std::vector<MeshFace>& faces,
-                                   std::vector<std::uint32_t>& read_index) {
-    MeshHierarchy h;
-    read_index.clear();
-    if (faces.empty()) return h;
-    h.nodes_.reserve(2 * (faces.size() / kMeshLeafSize + 1));
-    Builder b{vertices, faces, {}, {}, h.nodes_};
-    b.read.resize(faces.size());
-    for (std::uint32_t i = 0; i < faces.size(); ++i) b.read[i] = i;
-    b.centres.reserve(faces.size());
-    for (const auto& f : faces)
-        b.centres.push_back(
-            (vertices[f.vertex[0]] + vertices[f.vertex[1]] + vertices[f.vertex[2]]) / 3.0);
+BoxHierarchy BoxHierarchy::build(const std::vector<geometry::Box3>& boxes,
+                                 const std::vector<glm::dvec3>& centres,
+                                 std::vector<std::uint32_t>& order) {
+    BoxHierarchy h;
+    order.resize(boxes.size());
+    for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+    if (boxes.empty()) return h;
+    h.nodes_.reserve(2 * (boxes.size() / kBoxLeafSize + 1));
+    Builder b{boxes, centres, order, h.nodes_};
     h.nodes_.emplace_back();
-    b.build(0, 0, static_cast<std::uint32_t>(faces.size()));
-    read_index.resize(faces.size());
-    for (std::uint32_t i = 0; i < faces.size(); ++i) read_index[b.read[i]] = i;
+    b.build(0, 0, static_cast<std::uint32_t>(boxes.size()));
     return h;
 }
 
