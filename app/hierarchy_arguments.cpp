@@ -46,6 +46,7 @@ tracer::BuildOptions HierarchyArguments::options() const {
         o.bounds = tracer::BoundStyle::Slabs;
     }
     o.max_depth = max_depth;
+    o.instances = !no_instances;
     return o;
 }
 
@@ -65,6 +66,9 @@ void add_hierarchy_arguments(CLI::App& command, HierarchyArguments& a) {
         ->check(CLI::Range(0, tracer::BuildOptions::kMaxDepth));
     command.add_flag("--frames-slab-bounds", a.frames_slab_bounds,
                      "The same as --bounds slabs (kept for the frame-by-frame baseline)");
+    command.add_flag("--no-instances", a.no_instances,
+                     "Split every union into objects of its own, also one of many still members "
+                     "under a moving transform (which is otherwise one instance: the comparison)");
 }
 
 }  // namespace hexant::app

@@ -1,6 +1,6 @@
 // The hierarchy's flags, shared by `render` and `bench error-time`:
-// --split, --build, --bounds, --max-depth (and the baseline's
-// --frames-slab-bounds).
+// --split, --build, --bounds, --max-depth, --no-instances (and the
+// baseline's --frames-slab-bounds).
 #pragma once
 
 #include <string>
@@ -17,6 +17,7 @@ struct HierarchyArguments {
     std::string bounds = "auto";
     int max_depth = 0;  // 0: the criterion's own
     bool frames_slab_bounds = false;
+    bool no_instances = false;
 
     // Throws std::runtime_error naming the flag for a value it does not know.
     tracer::BuildOptions options() const;

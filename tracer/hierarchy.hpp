@@ -62,6 +62,10 @@ struct BuildOptions {
     BoundStyle bounds = BoundStyle::Auto;
     // Depth limit; 0 or less: the criterion's own (paper 5, cost 24).
     int max_depth = 0;
+    // Unions of many still members under a moving transform built as
+    // instances (runtime/objects/instance_object.hpp); off: each member an
+    // object of the hierarchy (--no-instances, for comparison).
+    bool instances = true;
     // The paper's criterion.
     std::size_t max_objects = 3;
     double max_occupancy = 0.3;

@@ -214,18 +214,24 @@ Renderer::Renderer(const runtime::SceneDescription& scene, const RenderSettings&
         first_frame_ > last_frame_)
         throw std::out_of_range("frames " + std::to_string(first_frame_) + " to " +
                                 std::to_string(last_frame_) + " are not all in the animation");
+    // (A ray that travels in time cannot be moved into an instance's space
+    // by one placement.)
+    const runtime::ObjectOptions object_options{settings.build.instances &&
+                                                std::isinf(settings.light_speed)};
     if (release) {
         // Each record goes as soon as its objects are made: the heap it
         // leaves is what the next objects reuse.
         for (auto& record : *release) {
-            runtime::make_intelligent_objects(*record, scene.default_texture, objects_);
+            runtime::make_intelligent_objects(*record, scene.default_texture, objects_,
+                                              object_options);
             record.reset();
         }
         release->clear();
         release->shrink_to_fit();
     } else {
         for (const auto& record : scene.objects)
-            runtime::make_intelligent_objects(*record, scene.default_texture, objects_);
+            runtime::make_intelligent_objects(*record, scene.default_texture, objects_,
+                                              object_options);
     }
     counters_.objects = objects_.size();
     const ObjectSet set = ObjectSet::of(objects_);

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <vector>
 
 #include <glm/mat3x3.hpp>
@@ -28,8 +29,12 @@ struct ObjectHit {
     double s = 0.0;  // ray parameter: the event is ray.at(s)
     Event event{};
     const IntelligentObject* object = nullptr;  // the primitive hit (inside groups too)
-    glm::dvec3 object_point{};                  // in the primitive's own (undeformed) space
-    glm::dvec3 object_normal{};                 // geometric normal there, unit
+    // Inside an instance (instance_object.hpp): `object` is the instance,
+    // and this the primitive hit among its members, in the members' space
+    // (object_point, object_normal, part and the rest are that primitive's).
+    const IntelligentObject* member = nullptr;
+    glm::dvec3 object_point{};   // in the primitive's own (undeformed) space
+    glm::dvec3 object_normal{};  // geometric normal there, unit
     glm::dvec3 object_shading_normal{};
     glm::dvec2 uv{};
     int part = 0;  // which face, cap or side (per shape kind)
@@ -165,6 +170,14 @@ class IntelligentObject {
 
     // Normals, texture coordinates and material at a hit this object returned.
     virtual SurfacePoint complete(const Ray4& ray, const ObjectHit& hit) const = 0;
+
+    // A primitive's: the linear part of its map to the space it was built
+    // in at time t (the Jacobian at `object_point` where it is deformed),
+    // which an instance around it (instance_object.hpp) composes with its
+    // own placement. Throws std::logic_error for anything but a primitive.
+    virtual glm::dmat3 to_world_linear_at(const glm::dvec3&, double) const {
+        throw std::logic_error("to_world_linear_at: not a primitive");
+    }
 
     // Is the event inside the object's solid (POV-Ray's inside, with
     // `inverse`)? Flat objects have no inside.

@@ -11,6 +11,7 @@
 #include "runtime/objects/bounded_object.hpp"
 #include "runtime/objects/clipped_object.hpp"
 #include "runtime/objects/csg_object.hpp"
+#include "runtime/objects/instance_object.hpp"
 #include "runtime/objects/lifetime_object.hpp"
 #include "runtime/objects/object_error.hpp"
 #include "runtime/objects/primitive.hpp"
@@ -41,6 +42,12 @@ struct Inherited {
     // the one of the nearest object around with an interior { } of its own,
     // else of the outermost; null until a group or a mesh needs one to share.
     std::shared_ptr<const void> interior_key;
+    // Inside an instance: the union's space to the world (to_world then
+    // stops at the union), which textures and interiors still go through:
+    // the members' shapes are built in the union's space, their textures
+    // in the world (instance_object.hpp).
+    Transform placement;
+    bool in_instance = false;
 };
 
 // A group's interior identity, for its members to share: the one it was
@@ -60,8 +67,10 @@ constexpr int kMaxCsgDepth = 1000;
 
 // What the scene's top hands its objects: the default texture.
 Inherited top_level(const Texture& default_texture) {
-    return {Transform{}, default_texture,    nullptr, std::nullopt, nullptr, false, ObjectFlags{},
-            0,           Lifetime::always(), false,   nullptr};
+    Inherited top;
+    top.texture = default_texture;
+    top.lifetime = Lifetime::always();
+    return top;
 }
 
 // What `record` holds in world terms under `parent`: its transform after
@@ -76,18 +85,21 @@ Inherited handed_down(const ObjectRecord& record, const Inherited& parent) {
         // The record's texture maps to the record's parent space.
         down.texture = *record.texture;
         down.texture->transform_by(parent.to_world);
+        if (parent.in_instance) down.texture->transform_by(parent.placement);
     }
     // (A group's interior texture reaches members without their own, as
     // POV-Ray's Post_Process promotes it, whatever their own texture.)
     if (record.interior_texture) {
         auto inside = std::make_shared<Texture>(*record.interior_texture);
         inside->transform_by(parent.to_world);
+        if (parent.in_instance) inside->transform_by(parent.placement);
         down.interior_texture = std::move(inside);
     }
     if (record.interior) {
         // (Its media's densities, as the texture, map to the parent's space.)
         down.interior = record.interior;
         down.interior->transform_by(parent.to_world);
+        if (parent.in_instance) down.interior->transform_by(parent.placement);
         down.interior_key = nullptr;  // (its own: POV-Ray's Post_Process keeps it)
     }
     down.no_shadow = record.no_shadow || parent.no_shadow;
@@ -317,6 +329,7 @@ IntelligentObjectPtr build_shape(const ObjectRecord& record, const Inherited& pa
                     for (const Texture& part : shape.part_textures()) {
                         Texture world = part;
                         world.transform_by(to_world);
+                        if (own.in_instance) world.transform_by(own.placement);
                         parts.emplace_back(world, interior);
                         parts.back().set_media(own.media);
                         parts.back().set_interior_key(key);
@@ -339,9 +352,73 @@ IntelligentObjectPtr build_shape(const ObjectRecord& record, const Inherited& pa
         record.shape);
 }
 
+// An instance pays where a union under a moving transform has many members
+// (each would otherwise be swept by the whole motion in the hierarchy); a
+// few are as well apart, where the hierarchy can part them.
+constexpr std::size_t kInstanceLeast = 16;
+
+// Can the union's members stand in an instance (instance_object.hpp)?
+// Nothing about their shapes, places or presence changes with time (their
+// textures may), and none has what the instance answers for as a whole: a
+// flag of its own (no_shadow, no_image, no_reflection, double_illuminate,
+// hollow, a light_group), an interior of its own. And at least
+// kInstanceLeast objects once nested unions are split.
+bool instanceable(const Csg& csg) {
+    std::size_t objects = 0;
+    std::vector<const ObjectRecord*> stack;
+    for (const auto& child : csg.children) stack.push_back(child.get());
+    while (!stack.empty()) {
+        const ObjectRecord& r = *stack.back();
+        stack.pop_back();
+        if (!r.lifetime.is_always() || r.transform.depends_on_time() || r.no_shadow || r.no_image ||
+            r.no_reflection || r.double_illuminate || r.hollow || r.light_group || r.interior)
+            return false;
+        if (r.limits)
+            for (const auto* list : {&r.limits->clipped_by, &r.limits->bounded_by})
+                for (const auto& clip : *list)
+                    if (clip->depends_on_time()) return false;
+        const auto* inner = std::get_if<Csg>(&r.shape);
+        if (!inner) {
+            if (r.shape_depends_on_time()) return false;
+            ++objects;
+            continue;
+        }
+        // (A nested union is split into the instance's members, anything
+        // else is one member: count it once, look at all of it.)
+        if (inner->kind != Csg::Kind::Union || r.inverse || r.limits) ++objects;
+        for (const auto& child : inner->children) stack.push_back(child.get());
+    }
+    return objects >= kInstanceLeast;
+}
+
+void build_split(const ObjectRecord& root, const Inherited& top, const ObjectOptions& options,
+                 std::vector<IntelligentObjectPtr>& out);
+
+// The union's members in its own space, under its transform `down` hands
+// down (moving, affine): one instance, or null where a member turns out
+// unbounded (a plane), which the hierarchy must keep apart.
+IntelligentObjectPtr build_instance(const Csg& csg, const Inherited& down,
+                                    const ObjectOptions& options) {
+    Inherited local = down;
+    local.placement = down.to_world;
+    local.to_world = Transform{};
+    local.in_instance = true;
+    local.lifetime = Lifetime::always();
+    std::vector<IntelligentObjectPtr> members;
+    for (const auto& child : csg.children) build_split(*child, local, options, members);
+    for (const auto& m : members)
+        if (!m->bounded()) return nullptr;
+    IntelligentObjectPtr object =
+        flagged(std::make_unique<InstanceObject>(std::move(members), down.to_world), down.flags);
+    if (down.lifetime.is_always()) return object;
+    return flagged(
+        std::make_unique<LifetimeObject>(std::move(object), down.lifetime, down.in_intersection),
+        down.flags);
+}
+
 // A union's children become objects of their own, with what the union
 // hands down; anything else is one object.
-void build_split(const ObjectRecord& root, const Inherited& top,
+void build_split(const ObjectRecord& root, const Inherited& top, const ObjectOptions& options,
                  std::vector<IntelligentObjectPtr>& out) {
     // Depth first, members in order, on a stack of its own: unions nest as
     // deep as objects may (kMaxObjectDepth: a union built up in a loop), and
@@ -372,6 +449,14 @@ void build_split(const ObjectRecord& root, const Inherited& top,
                 down->media = std::make_shared<const MediaVolume>(down->interior->media);
         }
         down->lifetime = record.lifetime.intersect(parent.lifetime);
+        if (!record.limits && options.instances && !parent.in_instance &&
+            down->to_world.depends_on_time() && !down->to_world.has_deformation() &&
+            instanceable(*csg)) {
+            if (IntelligentObjectPtr instance = build_instance(*csg, *down, options)) {
+                out.push_back(std::move(instance));
+                continue;
+            }
+        }
         if (!record.limits) {
             for (auto child = csg->children.rbegin(); child != csg->children.rend(); ++child)
                 stack.push_back({child->get(), down});
@@ -385,7 +470,7 @@ void build_split(const ObjectRecord& root, const Inherited& top,
         // extent has a box of everything, so the bounds' box always gates it.
         const BuiltLimits limits = build_limits(record, *down, parent.csg_depth);
         std::vector<IntelligentObjectPtr> members;
-        for (const auto& child : csg->children) build_split(*child, *down, members);
+        for (const auto& child : csg->children) build_split(*child, *down, options, members);
         const bool finite =
             std::all_of(members.begin(), members.end(), [](const auto& m) { return m->bounded(); });
         for (auto& member : members) {
@@ -403,8 +488,9 @@ IntelligentObjectPtr make_intelligent_object(const ObjectRecord& record,
 }
 
 void make_intelligent_objects(const ObjectRecord& record, const Texture& default_texture,
-                              std::vector<IntelligentObjectPtr>& out) {
-    build_split(record, top_level(default_texture), out);
+                              std::vector<IntelligentObjectPtr>& out,
+                              const ObjectOptions& options) {
+    build_split(record, top_level(default_texture), options, out);
 }
 
 }  // namespace hexant::runtime

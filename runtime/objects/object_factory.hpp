@@ -24,8 +24,17 @@ IntelligentObjectPtr make_intelligent_object(const ObjectRecord& record,
 // here, but its flipped normals must stay flipped together), clipped_by
 // or bounded_by (one clip for the whole), and merge, intersection and
 // difference (their surfaces depend on each other).
+// A union of many members that stand still inside it, under a moving
+// transform, is one instance (instance_object.hpp) where `options` allow.
 // Appends to `out`.
+struct ObjectOptions {
+    // Off: every member of such a union an object of its own, as before
+    // instances (a comparison); off too wherever a ray may travel in time
+    // (a finite speed of light), which an instance cannot meet.
+    bool instances = true;
+};
 void make_intelligent_objects(const ObjectRecord& record, const Texture& default_texture,
-                              std::vector<IntelligentObjectPtr>& out);
+                              std::vector<IntelligentObjectPtr>& out,
+                              const ObjectOptions& options = {});
 
 }  // namespace hexant::runtime

@@ -29,6 +29,7 @@
 #include "runtime/motion/normal_transform.hpp"
 #include "runtime/objects/intelligent_object.hpp"
 #include "runtime/objects/model_support.hpp"
+#include "runtime/objects/rigid_chord_bound.hpp"
 #include "runtime/texture/texture_evaluator.hpp"
 
 namespace hexant::runtime {
@@ -143,36 +144,12 @@ class Primitive final : public IntelligentObject {
         return box;
     }
 
-    // For a rigid shape on an affine motion: the motion's second derivative
-    // over t (interval jets, interval_jet.hpp) applied to the object's box,
-    // x'' = M''(t) (p, 1); the margin is twice the matrix entries' rounding
-    // radii times |p| (the exact ends against the double placed boxes, and
-    // the double placement at t against the exact one) plus the rounding of
-    // the product M (p, 1) itself.
+    // A rigid shape on an affine motion: rigid_chord_bound.hpp's.
     std::optional<ChordBound> chord_bound_over(const Interval& t) const override {
         if constexpr (kUnbounded) return std::nullopt;
         if (!moves_ || !model_.is_static() || !motion_.is_affine() || !(t.lo <= t.hi))
             return std::nullopt;
-        const AffineMap<IntervalJet> m = motion_.matrix_jet_over(t);
-        const IntervalBox& p = static_object_box_;
-        constexpr double kProductRounding = 4.0 * std::numeric_limits<double>::epsilon();
-        ChordBound bound;
-        for (int i = 0; i < 3; ++i) {
-            if (!m.m[i][3].smooth()) return std::nullopt;
-            Interval second = m.m[i][3].dd;
-            double radius = m.m[i][3].r, magnitude = m.m[i][3].v.magnitude();
-            for (int j = 0; j < 3; ++j) {
-                if (!m.m[i][j].smooth()) return std::nullopt;
-                second = second + m.m[i][j].dd * p[j];
-                radius += m.m[i][j].r * p[j].magnitude();
-                magnitude += m.m[i][j].v.magnitude() * p[j].magnitude();
-            }
-            bound.acceleration[i] = second.magnitude();
-            bound.margin[i] = interval_detail::up(2.0 * radius + kProductRounding * magnitude, 4);
-            if (!std::isfinite(bound.acceleration[i]) || !std::isfinite(bound.margin[i]))
-                return std::nullopt;
-        }
-        return bound;
+        return rigid_chord_bound(motion_, static_object_box_, t);
     }
 
     Box4 placed_box_at(double t) const override {
@@ -207,11 +184,15 @@ class Primitive final : public IntelligentObject {
         return intersect_curved(ray, s_min, s_max, motion_);
     }
 
+    glm::dmat3 to_world_linear_at(const glm::dvec3& object_point, double t) const override {
+        return motion_.is_affine() ? glm::dmat3(motion_.matrix_at(t))
+                                   : motion_.jacobian_at(object_point, t);
+    }
+
     SurfacePoint complete(const Ray4& ray, const ObjectHit& hit) const override {
         const double t = hit.event.w;
-        const glm::dmat3 linear = hit.has_linear        ? hit.to_world_linear
-                                  : motion_.is_affine() ? glm::dmat3(motion_.matrix_at(t))
-                                                        : motion_.jacobian_at(hit.object_point, t);
+        const glm::dmat3 linear =
+            hit.has_linear ? hit.to_world_linear : to_world_linear_at(hit.object_point, t);
         glm::dvec3 facing = -glm::dvec3(ray.direction);
         const double length = glm::length(facing);
         facing = length > 0.0 && std::isfinite(length) ? facing / length : glm::dvec3(0, 1, 0);
