@@ -1,15 +1,21 @@
 // hexant_embree_peer: a peer benchmark against Embree 3's multi-segment
 // motion blur (issue 15).
 //
-// What it measures. For examples/atom.pov, examples/bounce.pov and
+// What it measures. For examples/atom.pov, examples/bounce.pov,
 // examples/swarm.pov at N = 10^3, 10^4 and 10^5 spheres (--swarm-n; with
-// their .ini files), in one process and one run:
+// their .ini files) and tests/bench/instance_union.pov (23,328 still
+// triangles in a union under one moving transform, 160 by 120, 16 frames
+// over clock 0 to 1), in one process and one run:
 //   - hexant, spacetime mode and frames mode, rendered through hexant's own
-//     library (tracer::Renderer, its own Owen-scrambled Sobol' samples);
+//     library (tracer::Renderer, its own Owen-scrambled Sobol' samples), and
+//     for the instance scene spacetime with the union split (--no-instances);
 //   - Embree 3, one scene ("one motion BVH") per frame, every moving sphere
 //     a RTC_GEOMETRY_TYPE_SPHERE_POINT with K+1 time steps (K = 2, 4, 8
 //     linear motion segments over the frame's shutter), the static polygons,
-//     boxes and prism as one triangle mesh of one time step; build quality
+//     boxes and prism as one triangle mesh of one time step, a union of
+//     still triangles under a moving transform as an instance
+//     (RTC_GEOMETRY_TYPE_INSTANCE of a scene built once, its transform at
+//     the K+1 instants, which Embree blends entry by entry); build quality
 //     RTC_BUILD_QUALITY_MEDIUM; single rays (rtcIntersect1, rtcOccluded1),
 //     16x16 tiles in parallel with oneTBB as hexant's renderer does.
 // For each: build time, render time, rays (primary + shadow) per second,
@@ -80,12 +86,14 @@ struct Row {
     tracer::Image error_image;
 };
 
-Row run_hexant(const Job& job, tracer::Mode mode, int spp, int first, int last, int threads) {
+Row run_hexant(const Job& job, tracer::Mode mode, int spp, int first, int last, int threads,
+               bool instances = true) {
     Row row;
-    row.method = std::string("hexant ") + tracer::mode_name(mode);
+    row.method = std::string("hexant ") + tracer::mode_name(mode) + (instances ? "" : " split");
     const auto start = Clock::now();
     tracer::RenderSettings settings;
     settings.mode = mode;
+    settings.build.instances = instances;
     settings.samples_per_pixel = spp;
     settings.threads = threads;
     settings.first_frame = first;  // the hierarchy spans these frames' time
@@ -108,9 +116,11 @@ Row run_embree(const Job& job, const PeerScene& peer, RTCDevice device, int segm
     Row row;
     row.method = "embree K=" + std::to_string(segments);
     const auto start = Clock::now();
+    const EmbreeInstances instances(device, peer);  // once: only their transforms move
+    row.build += seconds_since(start);
     for (int f = first; f <= last; ++f) {
         const auto build_start = Clock::now();
-        const EmbreeFrame frame(device, peer, f, segments);
+        const EmbreeFrame frame(device, peer, instances, f, segments);
         row.build += seconds_since(build_start);
         const auto render_start = Clock::now();
         tracer::Image image = render_embree_frame(peer, frame, f, spp, row.rays);
@@ -131,11 +141,11 @@ std::string thousands(std::uint64_t n) {
 }
 
 void print_table(const Job& job, const std::vector<Row>& rows) {
-    std::printf("  %-17s %9s %9s %9s %9s %14s %8s %14s\n", "method", "build s", "render s",
+    std::printf("  %-22s %9s %9s %9s %9s %14s %8s %14s\n", "method", "build s", "render s",
                 "total s", "wall s", "rays", "Mrays/s",
                 ("RMSE(frame " + std::to_string(job.error_frame) + ")").c_str());
     for (const Row& r : rows)
-        std::printf("  %-17s %9.3f %9.3f %9.3f %9.3f %14s %8.2f %14.4e\n", r.method.c_str(),
+        std::printf("  %-22s %9.3f %9.3f %9.3f %9.3f %14s %8.2f %14.4e\n", r.method.c_str(),
                     r.build, r.render, r.build + r.render, r.wall, thousands(r.rays).c_str(),
                     r.render > 0.0 ? double(r.rays) / r.render * 1e-6 : 0.0, r.rmse);
 }
@@ -233,10 +243,16 @@ void run_job(const Job& job, const Options& options, RTCDevice device, int threa
         "%g, error frame %d ==\n",
         job.name.c_str(), a.width, a.height, job.first, job.last, a.initial_frame, a.final_frame,
         job.spp, a.shutter, a.clock_delta(), job.error_frame);
+    std::size_t instanced = 0;
+    for (const PeerInstance& instance : peer.instances)
+        instanced += instance.local.triangles.size();
     std::printf(
         "  Embree scene per frame: %zu sphere points (one geometry, K+1 time steps), "
-        "%zu static triangles, %zu light sources; records converted in %.1f ms (once)\n",
-        peer.spheres.size(), peer.triangles.size(), peer.lights.size(), convert_seconds * 1e3);
+        "%zu static triangles, %zu instances of %zu triangles in all (their scenes built once, "
+        "their transforms at K+1 time steps), %zu light sources; records converted in %.1f ms "
+        "(once)\n",
+        peer.spheres.size(), peer.statics.triangles.size(), peer.instances.size(), instanced,
+        peer.lights.size(), convert_seconds * 1e3);
 
     const auto reference_start = Clock::now();
     tracer::Image reference;
@@ -259,6 +275,10 @@ void run_job(const Job& job, const Options& options, RTCDevice device, int threa
     // The paper's baseline boxes each sphere over a whole frame's orbit: at
     // 10^4 swarm spheres it takes 20 times spacetime's time, at 10^5 it
     // would take a quarter of an hour; above --frames-max it is left out.
+    // The instance against its members split into objects of their own.
+    if (!peer.instances.empty())
+        rows.push_back(
+            run_hexant(job, tracer::Mode::Spacetime, job.spp, job.first, job.last, threads, false));
     if (job.objects <= options.frames_max)
         rows.push_back(
             run_hexant(job, tracer::Mode::Frames, job.spp, job.first, job.last, threads));
@@ -295,11 +315,12 @@ void run_job(const Job& job, const Options& options, RTCDevice device, int threa
 int run(const Options& options) {
     std::vector<std::string> names;
     if (options.scene == "all")
-        names = {"atom", "bounce", "swarm"};
-    else if (options.scene == "atom" || options.scene == "bounce" || options.scene == "swarm")
+        names = {"atom", "bounce", "swarm", "instance"};
+    else if (options.scene == "atom" || options.scene == "bounce" || options.scene == "swarm" ||
+             options.scene == "instance")
         names = {options.scene};
     else
-        throw std::runtime_error("--scene must be atom, bounce, swarm or all, not '" +
+        throw std::runtime_error("--scene must be atom, bounce, swarm, instance or all, not '" +
                                  options.scene + "'");
     for (const int n : options.swarm_counts)
         if (n < 1) throw std::runtime_error("--swarm-n takes counts of at least 1");
@@ -369,9 +390,10 @@ int run(const Options& options) {
 using namespace hexant_embree_peer;
 
 int main(int argc, char** argv) {
-    CLI::App app{"hexant against Embree 3's multi-segment motion blur on atom, bounce and swarm"};
+    CLI::App app{
+        "hexant against Embree 3's multi-segment motion blur on atom, bounce, swarm and instance"};
     Options options;
-    app.add_option("--scene", options.scene, "atom, bounce, swarm or all (default)");
+    app.add_option("--scene", options.scene, "atom, bounce, swarm, instance or all (default)");
     app.add_option("--swarm-n", options.swarm_counts,
                    "The swarm's sphere counts (default 1000 10000 100000)")
         ->delimiter(',');

@@ -52,33 +52,88 @@ inline void warm_up(RTCDevice device) {
     rtcReleaseScene(scene);
 }
 
+// Static triangles as one Embree mesh of one time step, attached to `scene`.
+inline unsigned attach_triangles(RTCDevice device, RTCScene scene, const TriangleSet& set) {
+    RTCGeometry mesh = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(mesh, RTC_BUFFER_TYPE_VERTEX, 0,
+                                                          RTC_FORMAT_FLOAT3, 3 * sizeof(float),
+                                                          set.vertices.size()));
+    for (std::size_t i = 0; i < set.vertices.size(); ++i)
+        for (int k = 0; k < 3; ++k) v[3 * i + k] = float(set.vertices[i][k]);
+    auto* index = static_cast<std::uint32_t*>(
+        rtcSetNewGeometryBuffer(mesh, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                3 * sizeof(std::uint32_t), set.triangles.size()));
+    for (std::size_t i = 0; i < set.triangles.size(); ++i)
+        for (int k = 0; k < 3; ++k) index[3 * i + k] = set.triangles[i][k];
+    rtcSetGeometryBuildQuality(mesh, RTC_BUILD_QUALITY_MEDIUM);
+    rtcCommitGeometry(mesh);
+    const unsigned id = rtcAttachGeometry(scene, mesh);
+    rtcReleaseGeometry(mesh);
+    return id;
+}
+
+// The instances' own scenes, built once for all frames (Embree's instancing:
+// the instanced scene is shared, only the instance's transform is per frame).
+class EmbreeInstances {
+  public:
+    EmbreeInstances(RTCDevice device, const PeerScene& peer) {
+        for (const PeerInstance& instance : peer.instances) {
+            RTCScene scene = rtcNewScene(device);
+            rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_MEDIUM);
+            attach_triangles(device, scene, instance.local);
+            rtcCommitScene(scene);
+            scenes_.push_back(scene);
+        }
+    }
+    ~EmbreeInstances() {
+        for (RTCScene s : scenes_) rtcReleaseScene(s);
+    }
+    EmbreeInstances(const EmbreeInstances&) = delete;
+    EmbreeInstances& operator=(const EmbreeInstances&) = delete;
+    RTCScene scene(std::size_t i) const { return scenes_[i]; }
+
+  private:
+    std::vector<RTCScene> scenes_;
+};
+
 class EmbreeFrame {
   public:
     // Geometry over the shutter of `frame`: ray time 0..1 is [open, open +
     // shutter * clock_delta], the K+1 time steps at open + j/K of it.
-    EmbreeFrame(RTCDevice device, const PeerScene& peer, int frame, int segments)
+    EmbreeFrame(RTCDevice device, const PeerScene& peer, const EmbreeInstances& instances,
+                int frame, int segments)
         : peer_(peer), segments_(segments) {
         const runtime::Animation& a = peer.scene->animation;
         open_ = a.clock_of_frame(frame);
         length_ = a.shutter * a.clock_delta();
         scene_ = rtcNewScene(device);
         rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_MEDIUM);
-        if (!peer.triangles.empty()) {
-            RTCGeometry mesh = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-            auto* v = static_cast<float*>(
-                rtcSetNewGeometryBuffer(mesh, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                        3 * sizeof(float), peer.vertices.size()));
-            for (std::size_t i = 0; i < peer.vertices.size(); ++i)
-                for (int k = 0; k < 3; ++k) v[3 * i + k] = float(peer.vertices[i][k]);
-            auto* index = static_cast<std::uint32_t*>(
-                rtcSetNewGeometryBuffer(mesh, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                        3 * sizeof(std::uint32_t), peer.triangles.size()));
-            for (std::size_t i = 0; i < peer.triangles.size(); ++i)
-                for (int k = 0; k < 3; ++k) index[3 * i + k] = peer.triangles[i][k];
-            rtcSetGeometryBuildQuality(mesh, RTC_BUILD_QUALITY_MEDIUM);
-            rtcCommitGeometry(mesh);
-            mesh_id_ = rtcAttachGeometry(scene_, mesh);
-            rtcReleaseGeometry(mesh);
+        if (!peer.statics.triangles.empty())
+            mesh_id_ = attach_triangles(device, scene_, peer.statics);
+        // Each instance: its scene of triangles (built once, EmbreeInstances)
+        // under its transform at the K+1 instants.
+        for (std::size_t i = 0; i < peer.instances.size(); ++i) {
+            RTCGeometry instance = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_INSTANCE);
+            rtcSetGeometryInstancedScene(instance, instances.scene(i));
+            rtcSetGeometryTimeStepCount(instance, unsigned(segments + 1));
+            rtcSetGeometryTimeRange(instance, 0.0f, 1.0f);
+            std::vector<std::array<float, 12>> steps;
+            for (int j = 0; j <= segments; ++j) {
+                const double t = open_ + length_ * double(j) / segments;
+                const glm::dmat4 m = peer.instances[i].to_world.matrix_at(t);
+                std::array<float, 12> xfm{};
+                for (int c = 0; c < 4; ++c)
+                    for (int r = 0; r < 3; ++r) xfm[3 * c + r] = float(m[c][r]);
+                rtcSetGeometryTransform(instance, unsigned(j), RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR,
+                                        xfm.data());
+                steps.push_back(xfm);
+            }
+            rtcCommitGeometry(instance);
+            const unsigned id = rtcAttachGeometry(scene_, instance);
+            rtcReleaseGeometry(instance);
+            if (instance_of_.size() <= id) instance_of_.resize(id + 1, -1);
+            instance_of_[id] = int(i);
+            instance_steps_.push_back(std::move(steps));
         }
         if (!peer.spheres.empty()) {
             RTCGeometry points = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_SPHERE_POINT);
@@ -126,12 +181,28 @@ class EmbreeFrame {
         return s;
     }
 
+    // Instance `i`'s transform at ray time `time`, as Embree interpolates its
+    // steps (entry by entry: RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR).
+    glm::dmat4 instance_at(std::size_t i, float time) const {
+        const float f = time * float(segments_);
+        const int j = std::clamp(int(std::floor(f)), 0, segments_ - 1);
+        const double u = double(f) - j;
+        const auto& a = instance_steps_[i][j];
+        const auto& b = instance_steps_[i][j + 1];
+        glm::dmat4 m(1.0);
+        for (int c = 0; c < 4; ++c)
+            for (int r = 0; r < 3; ++r) m[c][r] = (1.0 - u) * a[3 * c + r] + u * b[3 * c + r];
+        return m;
+    }
+
     const PeerScene& peer_;
     int segments_;
     double open_ = 0.0, length_ = 0.0;
     RTCScene scene_ = nullptr;
     unsigned mesh_id_ = RTC_INVALID_GEOMETRY_ID, sphere_id_ = RTC_INVALID_GEOMETRY_ID;
     std::vector<const float*> steps_;  // Embree's own buffers, one per time step
+    std::vector<int> instance_of_;     // by geometry id: the instance's index, or -1
+    std::vector<std::vector<std::array<float, 12>>> instance_steps_;
 };
 
 inline glm::dvec3 EmbreeFrame::trace(const glm::dvec3& origin, const glm::dvec3& d, float time,
@@ -163,17 +234,30 @@ inline glm::dvec3 EmbreeFrame::trace(const glm::dvec3& origin, const glm::dvec3&
     const glm::dvec3 rough = glm::dvec3(of) + double(rh.ray.tfar) * glm::dvec3(df);
     glm::dvec3 point, geometric;
     std::uint32_t material;
-    if (rh.hit.geomID == sphere_id_) {
+    if (rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID) {
+        // An instance's triangle: its plane in the instance's space, placed
+        // by the transform Embree interpolated at the ray's time.
+        const auto i = std::size_t(instance_of_[rh.hit.instID[0]]);
+        const TriangleSet& set = peer_.instances[i].local;
+        const glm::dmat4 m = instance_at(i, time);
+        const glm::dvec3 local(glm::inverse(m) * glm::dvec4(rough, 1.0));
+        const glm::dvec3& n = set.triangle_normal[rh.hit.primID];
+        const glm::dvec3& v0 = set.vertices[set.triangles[rh.hit.primID][0]];
+        point = glm::dvec3(m * glm::dvec4(local - glm::dot(local - v0, n) * n, 1.0));
+        geometric = glm::normalize(glm::transpose(glm::inverse(glm::dmat3(m))) * n);
+        material = set.triangle_material[rh.hit.primID];
+    } else if (rh.hit.geomID == sphere_id_) {
         const glm::dvec4 s = sphere_at(rh.hit.primID, time);
         const glm::dvec3 centre(s);
         geometric = glm::normalize(rough - centre);
         point = centre + s.w * geometric;
         material = peer_.spheres[rh.hit.primID].material;
     } else {
-        geometric = peer_.triangle_normal[rh.hit.primID];
-        const glm::dvec3& v0 = peer_.vertices[peer_.triangles[rh.hit.primID][0]];
+        const TriangleSet& set = peer_.statics;
+        geometric = set.triangle_normal[rh.hit.primID];
+        const glm::dvec3& v0 = set.vertices[set.triangles[rh.hit.primID][0]];
         point = rough - glm::dot(rough - v0, geometric) * geometric;
-        material = peer_.triangle_material[rh.hit.primID];
+        material = set.triangle_material[rh.hit.primID];
     }
     // Lighting uses the normal on the viewer's side, as tracer/shader.cpp.
     if (glm::dot(geometric, d) > 0.0) geometric = -geometric;

@@ -80,12 +80,23 @@ struct Job {
 };
 
 // `count`: the swarm's N (examples/swarm.pov), 0 for the other scenes.
+// "instance" is tests/bench/instance_union.pov at N = 108 (23,328
+// triangles), 160 by 120, 16 frames over clock 0 to 1.
 inline Job load_job(const std::string& name, const Options& options, int count = 0) {
     const fs::path examples = fs::path(HEXANT_SOURCE_DIR) / "examples";
     language::ParseOptions parse;
     fs::path scene_file = examples / (name + ".pov");
-    const language::IniSettings ini = language::read_ini_file(examples / (name + ".ini"));
-    language::apply_ini_settings(ini, parse, scene_file);
+    if (name == "instance") {
+        scene_file = fs::path(HEXANT_SOURCE_DIR) / "tests" / "bench" / "instance_union.pov";
+        parse.declares.emplace_back("N", "108");
+        parse.animation.width = 160;
+        parse.animation.height = 120;
+        parse.animation.initial_frame = 1;
+        parse.animation.final_frame = 16;
+    } else {
+        const language::IniSettings ini = language::read_ini_file(examples / (name + ".ini"));
+        language::apply_ini_settings(ini, parse, scene_file);
+    }
     if (count > 0) parse.declares.emplace_back("N", std::to_string(count));
     auto& a = parse.animation;
     // --size W keeps the .ini's aspect ratio.
@@ -147,7 +158,8 @@ inline Job load_job(const std::string& name, const Options& options, int count =
 }
 
 // ---------------------------------------------------------------------------
-// The scene as Embree takes it: moving spheres, static triangles, materials.
+// The scene as Embree takes it: moving spheres, static triangles, instances
+// of still triangles under a moving transform, materials.
 
 struct Material {
     // Solid-colour textures that do not change with time are evaluated once
@@ -209,17 +221,30 @@ inline glm::dvec3 rgb(const runtime::ColourFunction& c, double t) {
     return {c.c[0](t), c.c[1](t), c.c[2](t)};
 }
 
-struct PeerScene {
-    std::vector<Material> materials;
-    std::vector<MovingSphere> spheres;
-    // World space in double, as hexant places them: hits are moved onto
-    // these planes, so that a checker whose square edges lie in a wall (as
-    // bounce's at x = -3.2 with scale 0.8) takes hexant's square, not the one
-    // the float plane Embree holds would give. Embree gets float copies.
+// Triangles in double, as hexant places them: hits are moved onto these
+// planes, so that a checker whose square edges lie in a wall (as bounce's
+// at x = -3.2 with scale 0.8) takes hexant's square, not the one the float
+// plane Embree holds would give. Embree gets float copies.
+struct TriangleSet {
     std::vector<glm::dvec3> vertices;
     std::vector<std::array<std::uint32_t, 3>> triangles;
     std::vector<std::uint32_t> triangle_material;
     std::vector<glm::dvec3> triangle_normal;  // unit
+};
+
+// A union of still triangles under a moving transform (hexant's instance,
+// runtime/objects/instance_object.hpp): Embree's instance of a static scene
+// of them, its transform at K+1 time steps.
+struct PeerInstance {
+    runtime::Transform to_world;  // the union's space to the world
+    TriangleSet local;            // in the union's space
+};
+
+struct PeerScene {
+    std::vector<Material> materials;
+    std::vector<MovingSphere> spheres;
+    TriangleSet statics;  // in the world
+    std::vector<PeerInstance> instances;
     std::vector<PointLight> lights;
     const runtime::SceneDescription* scene = nullptr;
 };
@@ -236,8 +261,12 @@ class Converter {
 
     PeerScene convert() {
         for (const auto& record : scene_.objects)
-            add(*record,
-                Inherited{runtime::Transform{}, scene_.default_texture, std::nullopt, false});
+            add(*record, Inherited{runtime::Transform{},
+                                   scene_.default_texture,
+                                   std::nullopt,
+                                   false,
+                                   &out_.statics,
+                                   {}});
         for (const auto& l : scene_.lights) {
             if (l.kind != runtime::LightKind::Point || l.area || l.parallel ||
                 !l.fade_power.is_constant() || l.fade_power.constant() > 0.0)
@@ -251,11 +280,26 @@ class Converter {
 
   private:
     struct Inherited {
-        runtime::Transform to_world;
-        std::optional<runtime::Texture> texture;
+        runtime::Transform to_world;  // to the world, or inside an instance to its space
+        std::optional<runtime::Texture> texture;  // in the world
         std::optional<runtime::Interior> interior;
         bool no_shadow = false;
+        TriangleSet* target = nullptr;  // where its triangles go
+        // Inside an instance: its space to the world (textures still go
+        // there, as hexant's factory takes them).
+        std::optional<runtime::Transform> placement;
     };
+
+    // Still inside the union: no shape, transform or presence that
+    // changes with time, and no sphere (the peer's spheres are points).
+    static bool still_triangles(const runtime::ObjectRecord& record) {
+        if (!record.lifetime.is_always() || record.transform.depends_on_time()) return false;
+        if (const auto* csg = std::get_if<runtime::Csg>(&record.shape))
+            return std::all_of(csg->children.begin(), csg->children.end(),
+                               [](const auto& c) { return still_triangles(*c); });
+        return !record.shape_depends_on_time() &&
+               !std::holds_alternative<runtime::Sphere>(record.shape);
+    }
 
     static void refuse(const runtime::ObjectRecord& record, const std::string& what) {
         throw runtime::ObjectError(record.place, std::string(runtime::shape_name(record.shape)) +
@@ -297,6 +341,7 @@ class Converter {
         if (record.texture) {
             texture = *record.texture;
             texture->transform_by(parent.to_world);
+            if (parent.placement) texture->transform_by(*parent.placement);
         }
         const auto interior = record.interior ? record.interior : parent.interior;
         const bool no_shadow = record.no_shadow || parent.no_shadow;
@@ -306,11 +351,22 @@ class Converter {
 
         if (const auto* csg = std::get_if<runtime::Csg>(&record.shape)) {
             if (csg->kind != runtime::Csg::Kind::Union) refuse(record, "CSG other than union");
-            const Inherited down{to_world, texture, interior, no_shadow};
+            Inherited down{to_world, texture, interior, no_shadow, parent.target, parent.placement};
+            // (As hexant's factory: a moving union of still members is
+            // one instance, however many; the rest as its rules.)
+            if (!parent.placement && to_world.depends_on_time() && !to_world.has_deformation() &&
+                std::all_of(csg->children.begin(), csg->children.end(),
+                            [](const auto& c) { return still_triangles(*c); })) {
+                out_.instances.push_back({to_world, {}});
+                down.to_world = runtime::Transform{};
+                down.placement = to_world;
+                down.target = &out_.instances.back().local;
+            }
             for (const auto& child : csg->children) add(*child, down);
             return;
         }
         const std::uint32_t material = add_material(*texture, interior, record);
+        TriangleSet& target = *parent.target;
         if (const auto* sphere = std::get_if<runtime::Sphere>(&record.shape)) {
             MovingSphere s{sphere->center, sphere->radius, to_world, material, record.place};
             s.at(static_time_);  // refuses a non-uniform scale now, not mid-render
@@ -322,12 +378,18 @@ class Converter {
             refuse(record, "a moving polygon, box or prism");
         const glm::dmat4 m = to_world.matrix_at(static_time_);
         const auto world = [&](const glm::dvec3& p) { return glm::dvec3(m * glm::dvec4(p, 1.0)); };
-        if (const auto* polygon = std::get_if<runtime::Polygon>(&record.shape)) {
+        if (const auto* triangle = std::get_if<runtime::Triangle>(&record.shape)) {
+            std::vector<glm::dvec3> corners;
+            for (const auto& p : triangle->points) corners.push_back(world(p(static_time_)));
+            if (!(glm::length(glm::cross(corners[1] - corners[0], corners[2] - corners[0])) > 0.0))
+                return;  // (hexant drops a degenerate triangle too)
+            add_convex_fan(corners, material, record, target);
+        } else if (const auto* polygon = std::get_if<runtime::Polygon>(&record.shape)) {
             std::vector<glm::dvec3> points;
             for (const auto& p : polygon->points) points.push_back(p(static_time_));
             std::vector<glm::dvec3> outline = one_outline(points, record);
             for (auto& p : outline) p = world(p);
-            add_convex_fan(outline, material, record);
+            add_convex_fan(outline, material, record, target);
         } else if (const auto* prism = std::get_if<runtime::Prism>(&record.shape)) {
             std::vector<glm::dvec3> points;  // <x, z> as (x, 0, z)
             for (const auto& p : prism->points)
@@ -342,11 +404,11 @@ class Converter {
             const std::size_t n = outline.size();
             for (std::size_t i = 0; i < n; ++i) {
                 const std::size_t j = (i + 1) % n;
-                add_convex_fan({bottom[i], bottom[j], top[j], top[i]}, material, record);
+                add_convex_fan({bottom[i], bottom[j], top[j], top[i]}, material, record, target);
             }
             if (!prism->open) {
-                add_convex_fan(bottom, material, record);
-                add_convex_fan(top, material, record);
+                add_convex_fan(bottom, material, record, target);
+                add_convex_fan(top, material, record, target);
             }
         } else if (const auto* box = std::get_if<runtime::Box>(&record.shape)) {
             const glm::dvec3 a = box->corner1(static_time_), b = box->corner2(static_time_);
@@ -358,7 +420,7 @@ class Converter {
                                                  {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 5, 7, 6}};
             for (const auto& f : kFaces)
                 add_convex_fan({corner(f[0]), corner(f[1]), corner(f[2]), corner(f[3])}, material,
-                               record);
+                               record, target);
         } else if (const auto* plane = std::get_if<runtime::Plane>(&record.shape)) {
             // An unbounded plane as one square of side 2 kPlaneHalf centred
             // on its point nearest the origin (as hexant places it: the
@@ -378,7 +440,7 @@ class Converter {
                             world(p0 + kPlaneHalf * u - kPlaneHalf * v),
                             world(p0 + kPlaneHalf * u + kPlaneHalf * v),
                             world(p0 - kPlaneHalf * u + kPlaneHalf * v)},
-                           material, record);
+                           material, record, target);
         } else {
             refuse(record, "this shape");
         }
@@ -401,7 +463,7 @@ class Converter {
 
     // A convex planar outline as a fan of triangles.
     void add_convex_fan(const std::vector<glm::dvec3>& outline, std::uint32_t material,
-                        const runtime::ObjectRecord& record) {
+                        const runtime::ObjectRecord& record, TriangleSet& out) {
         const std::size_t n = outline.size();
         glm::dvec3 normal(0.0);  // Newell's
         for (std::size_t i = 0; i < n; ++i) {
@@ -422,15 +484,15 @@ class Converter {
                 1e-9 * extent * glm::length(normal))
                 refuse(record, "an outline not in one plane");
         }
-        const auto base = std::uint32_t(out_.vertices.size());
-        for (const auto& p : outline) out_.vertices.push_back(p);
+        const auto base = std::uint32_t(out.vertices.size());
+        for (const auto& p : outline) out.vertices.push_back(p);
         for (std::uint32_t i = 1; i + 1 < n; ++i) {
             const glm::dvec3& v0 = outline[0];
             const glm::dvec3 c = glm::cross(outline[i] - v0, outline[i + 1] - v0);
             if (!(glm::length(c) > 0.0)) continue;  // collinear points
-            out_.triangles.push_back({base, base + i, base + i + 1});
-            out_.triangle_material.push_back(material);
-            out_.triangle_normal.push_back(glm::normalize(c));
+            out.triangles.push_back({base, base + i, base + i + 1});
+            out.triangle_material.push_back(material);
+            out.triangle_normal.push_back(glm::normalize(c));
         }
     }
 
