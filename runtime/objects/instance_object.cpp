@@ -6,6 +6,7 @@
 
 #include "runtime/bounds/occupancy_sampling.hpp"
 #include "runtime/bounds/swept_bound.hpp"
+#include "runtime/geometry/offset_ray.hpp"
 #include "runtime/objects/rigid_chord_bound.hpp"
 
 namespace hexant::runtime {
@@ -136,16 +137,30 @@ bool InstanceObject::occluded(const Ray4& ray, double s_min, double s_max) const
 SurfacePoint InstanceObject::complete(const Ray4& ray, const ObjectHit& hit) const {
     if (!hit.member) throw std::logic_error("an instance completes only its members' hits");
     // The member's primitive completes the hit in the world: its map to the
-    // union's space, then the placement (the chain rule for normals and the
-    // point's error); the event and the textures are in the world already.
+    // union's space, then the placement (the chain rule for normals); the
+    // event and the textures are in the world already.
     const double t = hit.event.w;
+    const Motion::Placement placement = motion_.placement_at(t);
+    const glm::dmat3 member_linear = hit.member->to_world_linear_at(hit.object_point, t);
     ObjectHit own = hit;
     own.object = hit.member;
     own.member = nullptr;
-    own.to_world_linear =
-        glm::dmat3(motion_.matrix_at(t)) * hit.member->to_world_linear_at(hit.object_point, t);
+    own.to_world_linear = glm::dmat3(placement.to_world) * member_linear;
     own.has_linear = true;
-    return hit.member->complete(ray, own);
+    SurfacePoint p = hit.member->complete(ray, own);
+    // The point's error by the two steps it took: into the union's space,
+    // where it was rounded at the size of its coordinates there (a member
+    // placed far off and brought back by the union's transform: 1e5 away,
+    // its point is good to 1e-11, not to the world point's ulps), then into
+    // the world (geometry::world_error at each step).
+    const glm::dvec3 world(hit.event);
+    const glm::dvec3 local(placement.to_object * glm::dvec4(world, 1.0));
+    const glm::dvec3 in_union =
+        geometry::world_error(member_linear, hit.object_point, local, hit.object_error);
+    const glm::dvec3 error =
+        geometry::world_error(glm::dmat3(placement.to_world), local, world, in_union);
+    p.error = glm::max(p.error, error);
+    return p;
 }
 
 bool InstanceObject::inside(const Event& event) const {

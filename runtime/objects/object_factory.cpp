@@ -97,7 +97,7 @@ Inherited handed_down(const ObjectRecord& record, const Inherited& parent) {
     }
     if (record.interior) {
         // (Its media's densities, as the texture, map to the parent's space.)
-        down.interior = record.interior;
+        down.interior = *record.interior;
         down.interior->transform_by(parent.to_world);
         if (parent.in_instance) down.interior->transform_by(parent.placement);
         down.interior_key = nullptr;  // (its own: POV-Ray's Post_Process keeps it)
@@ -357,11 +357,29 @@ IntelligentObjectPtr build_shape(const ObjectRecord& record, const Inherited& pa
 // few are as well apart, where the hierarchy can part them.
 constexpr std::size_t kInstanceLeast = 16;
 
+// Is the shape's model made for its placement in the world (a
+// bicubic_patch, subdivided there)? Inside an instance it would get the
+// union's space instead.
+bool placed_in_world(const Shape& shape) {
+    return std::visit(
+        [](const auto& s) {
+            using Kind = std::decay_t<decltype(s)>;
+            if constexpr (std::is_same_v<Kind, Csg>)
+                return false;
+            else
+                return std::is_constructible_v<typename Kind::Model, const Kind&, const Transform&>;
+        },
+        shape);
+}
+
 // Can the union's members stand in an instance (instance_object.hpp)?
 // Nothing about their shapes, places or presence changes with time (their
 // textures may), and none has what the instance answers for as a whole: a
 // flag of its own (no_shadow, no_image, no_reflection, double_illuminate,
-// hollow, a light_group), an interior of its own. And at least
+// hollow, a light_group), an interior of its own. None whose shape or
+// bounds are made in the world: a bicubic_patch's subdivision, a
+// bounded_by's box (an axis-aligned box there, BoundedObject, would be one
+// in the union's space, cutting otherwise as it turns). And at least
 // kInstanceLeast objects once nested unions are split.
 bool instanceable(const Csg& csg) {
     std::size_t objects = 0;
@@ -373,10 +391,12 @@ bool instanceable(const Csg& csg) {
         if (!r.lifetime.is_always() || r.transform.depends_on_time() || r.no_shadow || r.no_image ||
             r.no_reflection || r.double_illuminate || r.hollow || r.light_group || r.interior)
             return false;
-        if (r.limits)
-            for (const auto* list : {&r.limits->clipped_by, &r.limits->bounded_by})
-                for (const auto& clip : *list)
-                    if (clip->depends_on_time()) return false;
+        if (r.limits) {
+            if (!r.limits->bounded_by.empty()) return false;
+            for (const auto& clip : r.limits->clipped_by)
+                if (clip->depends_on_time() || placed_in_world(clip->shape)) return false;
+        }
+        if (placed_in_world(r.shape)) return false;
         const auto* inner = std::get_if<Csg>(&r.shape);
         if (!inner) {
             if (r.shape_depends_on_time()) return false;

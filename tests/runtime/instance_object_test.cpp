@@ -166,6 +166,13 @@ TEST_CASE("the factory builds an instance only where its members stand still and
     // Nothing moves, or the motion deforms.
     CHECK(count(moving_union("", "translate x")) > 1);
     CHECK(count(moving_union("", "twist y, 10 * clock")) > 1);
+    // A member made in the world: a bicubic_patch (subdivided there), a
+    // bounded_by (its box axis-aligned there).
+    CHECK(count(moving_union(
+              "bicubic_patch { type 1 flatness 0.1 u_steps 2 v_steps 2 "
+              "<0,0,0>,<1,1,0>,<2,-1,0>,<3,0,0>, <0,1,1>,<1,2,1>,<2,0,1>,<3,1,1>, "
+              "<0,-1,2>,<1,0,2>,<2,-2,2>,<3,-1,2>, <0,0,3>,<1,1,3>,<2,-1,3>,<3,0,3> }")) > 1);
+    CHECK(count(moving_union("sphere { 0, 1 bounded_by { box { -0.5, 0.5 } } }")) > 1);
     // A plane among the members: no bound to sweep.
     CHECK(count(moving_union("plane { y, -5 }")) > 1);
     // A texture that changes with time is fine (it is in world terms).
