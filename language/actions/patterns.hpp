@@ -730,7 +730,7 @@ struct action<g::normal_open> {
         fold_texture_transform(st);
         std::optional<runtime::Normal> start;
         if (const runtime::Texture* texture = texture_being_written(st))
-            start = texture->normal;
+            start = texture->normal.optional();
         else if (!st.blocks.empty())
             if (const auto* camera = std::get_if<runtime::CameraRecord>(&st.blocks.top()))
                 start = camera->normal;

@@ -64,7 +64,7 @@ struct ObjectRecord {
     // (POV-Ray's Interior_Texture); null: the parent's, or none. Shared
     // between copies (most objects have none: a pointer keeps records small).
     std::shared_ptr<const Texture> interior_texture;
-    std::optional<Interior> interior;
+    BoxedOptional<Interior> interior;  // (boxed: most objects have none)
     bool no_shadow = false;
     // POV-Ray's no_image, no_reflection, double_illuminate (passed down to
     // a group's members, as its Parse_Object_Mods and Set_CSG_Tree_Flag).

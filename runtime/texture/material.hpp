@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "runtime/boxed_optional.hpp"
 #include "runtime/motion/transform.hpp"
 #include "runtime/scene/media.hpp"
 #include "runtime/source_place.hpp"
@@ -237,7 +238,7 @@ struct TextureMapEntry {
 //   Nothing can be layered over or under it, as in POV-Ray.
 struct Texture {
     Pigment pigment;
-    std::optional<Normal> normal;
+    BoxedOptional<Normal> normal;  // (boxed: most textures have none)
     Finish finish;
     // Texture space to object space. For a patterned texture the pattern's
     // own: its transforms after its last warp, then the object's.

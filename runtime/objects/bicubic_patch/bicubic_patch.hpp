@@ -16,6 +16,7 @@
 #include <array>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "runtime/objects/shape_kind.hpp"
 #include "runtime/time/vector_function.hpp"
@@ -40,8 +41,9 @@ struct BicubicPatch {
     // subdivision (two triangles of the corners).
     double flatness = 0.0;
     int u_steps = 0, v_steps = 0;
-    // P[i][j] at 4 i + j, as written: i runs along u, j along v.
-    std::array<Vector3Function, 16> points;
+    // P[i][j] at 4 i + j, as written: i runs along u, j along v. (Sixteen,
+    // on the heap: inline they made every object record's shape 480 bytes.)
+    std::vector<Vector3Function> points = std::vector<Vector3Function>(16);
     // The texture coordinates of the corners (u, v) = (0, 0), (1, 0), (1, 1),
     // (0, 1) (POV-Ray's ST; its defaults).
     std::array<Vector2Function, 4> uv_corners{

@@ -343,7 +343,8 @@ class Converter {
             texture->transform_by(parent.to_world);
             if (parent.placement) texture->transform_by(*parent.placement);
         }
-        const auto interior = record.interior ? record.interior : parent.interior;
+        const std::optional<runtime::Interior> interior =
+            record.interior ? record.interior.optional() : parent.interior;
         const bool no_shadow = record.no_shadow || parent.no_shadow;
         if (no_shadow) refuse(record, "no_shadow");
         if (record.inverse) refuse(record, "inverse");
