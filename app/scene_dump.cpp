@@ -123,7 +123,7 @@ std::string pigment_body(const runtime::Pigment& p, double t, Shared& shared) {
         case runtime::Pigment::Pattern::Patterned: {
             // The kind, its modifiers, then its map's entries at t (value and
             // colour, or value and pigment).
-            std::string s = std::string(p.patterned.kind->name) + modifiers(p.patterned, t);
+            std::string s = std::string(p.patterned->kind->name) + modifiers(p.patterned, t);
             for (const auto& e : p.colour_map.entries)
                 s += " " + number(e.value(t)) + colour(e.colour, t);
             for (const auto& e : p.pigment_map)
@@ -147,7 +147,7 @@ std::string normal(const runtime::Normal& n, double t, Shared& shared) {
     if (n.bump_map)
         return "bump_map file=" + n.bump_map->file + " amount=" + number(n.amount(t)) +
                modifiers(n.patterned, t);
-    std::string s = std::string(n.patterned.kind->name) + " amount=" + number(n.amount(t)) +
+    std::string s = std::string(n.patterned->kind->name) + " amount=" + number(n.amount(t)) +
                     modifiers(n.patterned, t);
     // A normal map's entries (value and normal), a slope map's (value,
     // height, slope).
@@ -167,7 +167,7 @@ std::string texture(const runtime::Texture& x, double t, Shared& shared) {
     if (x.is_patterned()) {
         // The pattern, then its map's entries (value and texture).
         std::string s =
-            "texture_map=" + std::string(x.patterned.kind->name) + modifiers(x.patterned, t);
+            "texture_map=" + std::string(x.patterned->kind->name) + modifiers(x.patterned, t);
         for (const auto& e : x.texture_map)
             s += " " + number(e.value(t)) +
                  shared.entry(e.texture.get(), [&] { return texture(*e.texture, t, shared); });

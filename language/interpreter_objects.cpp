@@ -58,7 +58,7 @@ void check(const runtime::Pigment& pigment, Checked& seen) {
         throw ValueError("pigment pattern '" + pigment.unsupported_name + "' (written at " +
                          pigment.unsupported_place.to_string() + ") is not supported by hexant");
     for (const auto& entry : pigment.pigment_map) check(*entry.pigment, seen);
-    if (pigment.patterned.pigment) check(*pigment.patterned.pigment, seen);
+    if (pigment.patterned->pigment) check(*pigment.patterned->pigment, seen);
 }
 void check(const runtime::Normal& normal, Checked& seen) {
     if (!seen.insert({1, &normal}).second) return;
@@ -66,7 +66,7 @@ void check(const runtime::Normal& normal, Checked& seen) {
         throw ValueError("normal pattern '" + normal.unsupported_name + "' (written at " +
                          normal.unsupported_place.to_string() + ") is not supported by hexant");
     for (const auto& entry : normal.normal_map) check(*entry.normal, seen);
-    if (normal.patterned.pigment) check(*normal.patterned.pigment, seen);
+    if (normal.patterned->pigment) check(*normal.patterned->pigment, seen);
 }
 void check(const runtime::Texture& texture, Checked& seen) {
     if (!seen.insert({2, &texture}).second) return;
@@ -74,7 +74,7 @@ void check(const runtime::Texture& texture, Checked& seen) {
     if (texture.normal) check(*texture.normal, seen);
     for (const auto& layer : texture.below) check(layer, seen);
     for (const auto& entry : texture.texture_map) check(*entry.texture, seen);
-    if (texture.patterned.pigment) check(*texture.patterned.pigment, seen);
+    if (texture.patterned->pigment) check(*texture.patterned->pigment, seen);
 }
 
 }  // namespace

@@ -67,7 +67,7 @@ runtime::Texture texture_by_condition(const TimeFunction& c, runtime::Texture wh
     t.patterned = runtime::pattern::Pattern::of(*function);
     const TimeFunction truth =
         TimeFunction::apply(runtime::TimeOp::Not, TimeFunction::apply(runtime::TimeOp::Not, c));
-    t.patterned.function = std::make_shared<const runtime::SpaceFunction>(truth);
+    t.patterned.edit().function = std::make_shared<const runtime::SpaceFunction>(truth);
     t.texture_map.push_back(
         {TimeFunction(0.0), std::make_shared<const runtime::Texture>(std::move(when_false))});
     t.texture_map.push_back(

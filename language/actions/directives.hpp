@@ -154,7 +154,7 @@ struct action<g::default_item> {
         else if (v.is<runtime::Normal>()) {
             const auto& normal = v.as<runtime::Normal>();
             // (A normal without a pattern sets what new normals start from.)
-            if (normal.patterned.kind == nullptr && normal.unsupported_name.empty() &&
+            if (normal.patterned->kind == nullptr && normal.unsupported_name.empty() &&
                 !normal.bump_map)
                 st.default_normal_start = normal;
             else

@@ -137,7 +137,7 @@ struct action<g::function_pattern_value> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, Interpreter& st) {
         auto& written = st.blocks.edit<runtime::Pigment>(in.position(), "a pattern function");
-        if (written.patterned.kind == nullptr)
+        if (written.patterned->kind == nullptr)
             throw ValueError("a pattern function needs its pattern: function { pattern { bozo } }");
         close_pigment(written);
         runtime::Pigment pigment = std::move(written);

@@ -56,7 +56,7 @@ template <class Record>
 void default_weight(Interpreter& st, const p::position& at, const char* map) {
     const std::string what = std::string("expected the value of the ") + map + "'s entry";
     const auto& outer = st.blocks.edit<Record>(at, what.c_str());
-    if (outer.patterned.kind == nullptr || !outer.patterned.kind->average)
+    if (outer.patterned->kind == nullptr || !outer.patterned->kind->average)
         throw ValueError(what + " (only average's entries may leave it out, weighing 1)");
     st.values.push(Value{TimeFunction(1.0)});
 }
@@ -115,7 +115,7 @@ struct action<g::normal_map_entry> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         auto& written = st.blocks.edit<runtime::Normal>(in.position(), "a normal_map entry");
-        if (written.patterned.kind == nullptr && written.unsupported_name.empty() &&
+        if (written.patterned->kind == nullptr && written.unsupported_name.empty() &&
             !written.bump_map)
             throw ValueError("a normal_map entry needs a pattern (POV-Ray: no normal type given)");
         check_average(written.patterned, !written.normal_map.empty(), "normal_map");
@@ -170,7 +170,7 @@ struct action<g::texture_map_open> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         auto& texture = st.blocks.edit<runtime::Texture>(in.position(), "texture_map");
-        if (texture.patterned.kind == nullptr)
+        if (texture.patterned->kind == nullptr)
             throw ValueError(
                 "a texture_map follows its pattern (texture { PATTERN texture_map { } })");
         check_map_pattern(texture.patterned, "texture_map");
@@ -219,7 +219,7 @@ struct action<g::tiles_open> {
         const runtime::pattern::Kind* checker = runtime::pattern::find_kind("checker");
         if (checker == nullptr) throw std::logic_error("tiles: no checker pattern");
         texture.patterned = runtime::pattern::Pattern::of(*checker);
-        texture.patterned.noise_generator = st.scene.global.noise_generator;
+        texture.patterned.edit().noise_generator = st.scene.global.noise_generator;
     }
 };
 // A tile's texture, layered over the ones before it in the same tile
@@ -265,10 +265,10 @@ struct action<g::pigment_map_open> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         auto& pigment = st.blocks.edit<runtime::Pigment>(in.position(), "pigment_map");
-        if (pigment.patterned.kind &&
-            pigment.patterned.kind->argument == runtime::pattern::Kind::Argument::Colours)
+        if (pigment.patterned->kind &&
+            pigment.patterned->kind->argument == runtime::pattern::Kind::Argument::Colours)
             throw ValueError(std::string("a pigment_map cannot go with ") +
-                             std::string(pigment.patterned.kind->name) + ", as in POV-Ray");
+                             std::string(pigment.patterned->kind->name) + ", as in POV-Ray");
         pigment.pigment_map.clear();
     }
 };

@@ -262,7 +262,7 @@ struct action<g::image_map_block> {
         replace_uv_mapping(pigment);
         // (The pigment's modifiers, turbulence and warps, place the image.)
         pigment.pattern = runtime::Pigment::Pattern::Image;
-        pigment.patterned.kind = nullptr;
+        pigment.patterned.edit().kind = nullptr;
         pigment.colour_map = {};
         pigment.pigment_map.clear();
         pigment.image_map = std::move(map);
@@ -344,12 +344,12 @@ struct action<g::pigment_colour_map> {
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.values.pop();
         auto& pigment = st.blocks.edit<runtime::Pigment>(in.position(), "color_map");
-        if (pigment.patterned.kind &&
-            pigment.patterned.kind->argument == runtime::pattern::Kind::Argument::Colours)
+        if (pigment.patterned->kind &&
+            pigment.patterned->kind->argument == runtime::pattern::Kind::Argument::Colours)
             throw ValueError(std::string("a color_map cannot go with ") +
-                             std::string(pigment.patterned.kind->name) +
+                             std::string(pigment.patterned->kind->name) +
                              " (its colours follow its name), as in POV-Ray");
-        if (pigment.patterned.kind && pigment.patterned.kind->average)
+        if (pigment.patterned->kind && pigment.patterned->kind->average)
             throw ValueError(
                 "a color_map cannot go with average (it averages a pigment_map), "
                 "as in POV-Ray");
@@ -791,8 +791,8 @@ struct action<g::material_map_block> {
         auto map = finish_image_map(st, in.position(), true);
         st.blocks.close();
         auto& texture = st.blocks.edit<runtime::Texture>(in.position(), "material_map");
-        texture.patterned.image = std::move(map);
-        texture.patterned.number[0] = double(materials.size());
+        texture.patterned.edit().image = std::move(map);
+        texture.patterned.edit().number[0] = double(materials.size());
         texture.texture_map.clear();
         for (std::size_t i = 0; i < materials.size(); ++i)
             texture.texture_map.push_back({double(i), std::move(materials[i])});

@@ -121,17 +121,17 @@ inline PatternSlot pattern_slot(Interpreter& st, const p::position& at, const ch
                                 bool starts = false) {
     if (!st.blocks.empty()) {
         if (auto* n = std::get_if<runtime::Normal>(&st.blocks.top()))
-            return {n->patterned, n->transform, nullptr, n};
+            return {n->patterned.edit(), n->transform, nullptr, n};
         if (auto* t = std::get_if<runtime::Texture>(&st.blocks.top())) {
-            if (t->patterned.kind == nullptr && !starts)
+            if (t->patterned->kind == nullptr && !starts)
                 throw ValueError(
                     std::string(what) +
                     " in a texture follows a pattern (texture { PATTERN texture_map { } })");
-            return {t->patterned, t->transform, nullptr, nullptr, t};
+            return {t->patterned.edit(), t->transform, nullptr, nullptr, t};
         }
     }
     auto& pigment = st.blocks.edit<runtime::Pigment>(at, what);
-    return {pigment.patterned, pigment.transform, &pigment};
+    return {pigment.patterned.edit(), pigment.transform, &pigment};
 }
 
 // average has no value of its own: it needs its map's entries to average
@@ -177,7 +177,7 @@ inline PatternSlot start_pattern(Interpreter& st, const p::position& at, const s
 // pattern given fewer pigments than it takes has its default colours for
 // the rest (POV-Ray's Parse_Blend_List); an average has its map.
 inline void close_pigment(runtime::Pigment& pigment) {
-    const auto* kind = pigment.patterned.kind;
+    const auto* kind = pigment.patterned->kind;
     if (kind && kind->argument == runtime::pattern::Kind::Argument::Colours &&
         !pigment.pigment_map.empty())
         for (std::size_t i = pigment.pigment_map.size(); i < pigment.colour_map.entries.size();
@@ -775,7 +775,7 @@ struct action<g::normal_block> {
         auto& normal = st.blocks.edit<runtime::Normal>(in.position(), "a normal");
         // (Only #default's own normal may leave it out: POV-Ray's default Tnormal.)
         const bool default_item = st.default_depth && st.blocks.depth() == *st.default_depth + 1;
-        if (normal.patterned.kind == nullptr && normal.unsupported_name.empty() &&
+        if (normal.patterned->kind == nullptr && normal.unsupported_name.empty() &&
             !normal.bump_map && !default_item)
             throw ValueError("a normal needs a pattern (POV-Ray: no normal type given)");
         check_average(normal.patterned, !normal.normal_map.empty(), "normal_map");
@@ -810,15 +810,15 @@ struct action<g::camera_normal> {
 // A texture's pattern has its map (POV-Ray: "Patterned texture must have
 // texture_map"), a block pattern all its textures.
 inline void check_patterned_texture(const runtime::Texture& t) {
-    if (t.patterned.kind == nullptr) return;
+    if (t.patterned->kind == nullptr) return;
     if (t.texture_map.empty())
-        throw ValueError("a texture with a pattern (" + std::string(t.patterned.kind->name) +
+        throw ValueError("a texture with a pattern (" + std::string(t.patterned->kind->name) +
                          ") needs a texture_map, as in POV-Ray");
     using A = runtime::pattern::Kind::Argument;
-    if (t.patterned.kind->argument == A::Colours &&
-        t.texture_map.size() < static_cast<std::size_t>(t.patterned.kind->colours))
-        throw ValueError(std::string(t.patterned.kind->name) + " in a texture needs " +
-                         std::to_string(t.patterned.kind->colours) + " textures, not " +
+    if (t.patterned->kind->argument == A::Colours &&
+        t.texture_map.size() < static_cast<std::size_t>(t.patterned->kind->colours))
+        throw ValueError(std::string(t.patterned->kind->name) + " in a texture needs " +
+                         std::to_string(t.patterned->kind->colours) + " textures, not " +
                          std::to_string(t.texture_map.size()));
 }
 

@@ -96,7 +96,7 @@ bool depends(const Pigment& p, Seen& seen) {
     if (p.pattern == Pattern::Solid) return p.colours.front().depends_on_time();
     if (p.pattern == Pattern::Unsupported) return false;
     if (p.pattern == Pattern::Image)
-        return p.patterned.depends_on_time() || p.transform.depends_on_time() ||
+        return p.patterned->depends_on_time() || p.transform.depends_on_time() ||
                p.image_map->images.size() > 1 || p.image_map->filter_all.depends_on_time() ||
                p.image_map->transmit_all.depends_on_time();
     if (pattern_depends(p.patterned, seen) || p.colour_map.depends_on_time() ||

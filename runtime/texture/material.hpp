@@ -12,6 +12,7 @@
 #include "runtime/motion/transform.hpp"
 #include "runtime/scene/media.hpp"
 #include "runtime/source_place.hpp"
+#include "runtime/sparse_value.hpp"
 #include "runtime/texture/pattern/image_map.hpp"
 #include "runtime/texture/pattern/pattern.hpp"
 #include "runtime/time/vector_function.hpp"
@@ -57,7 +58,7 @@ struct Pigment {
     // Patterned: the pattern (runtime/texture/pattern/pattern.hpp) and its colour
     // map; an empty map is the kind's default. A block pattern's colour
     // list (checker's two) is its map, at values 0, 1, 2.
-    pattern::Pattern patterned;
+    SparseValue<pattern::Pattern> patterned;  // (sparse: a plain colour has none)
     ColourMap colour_map;
     // pigment_map { [value pigment] ... }: blends of whole pigments in
     // place of colours (when not empty, the colour map is not used).
@@ -196,9 +197,9 @@ struct SlopeMapEntry {
 // slope, sampled `accuracy` apart (through a slope_map when it has one),
 // or by a blend of whole normals (normal_map).
 struct Normal {
-    pattern::Pattern patterned;
-    TimeFunction amount = 0.5;     // bump_size
-    TimeFunction accuracy = 0.02;  // POV-Ray's Delta
+    SparseValue<pattern::Pattern> patterned;  // (sparse: a plain colour has none)
+    TimeFunction amount = 0.5;                // bump_size
+    TimeFunction accuracy = 0.02;             // POV-Ray's Delta
     bool no_bump_scale = false;
     // normal_map { [value NORMAL_BODY] ... }: the neighbouring entries'
     // normals blended (when not empty, the pattern's own bumps are not used).
@@ -249,7 +250,7 @@ struct Texture {
     std::vector<Texture> below;
     // Patterned: the pattern and its map (entries at 0, 1, 2 for a block
     // pattern's textures); empty for a plain texture.
-    pattern::Pattern patterned;
+    SparseValue<pattern::Pattern> patterned;  // (sparse: a plain colour has none)
     std::vector<TextureMapEntry> texture_map;
     // uv_mapping on the whole texture: its pattern, or its pigment and
     // normal, read at (u, v, 0) through `transform` alone. A Closed one

@@ -294,7 +294,7 @@ const pattern::Pattern& supported(const Normal& n) {
     if (!n.unsupported_name.empty())
         throw ObjectError(n.unsupported_place, "normal pattern '" + n.unsupported_name +
                                                    "' is not supported by hexant's tracer");
-    if (n.patterned.kind == nullptr && !n.bump_map)
+    if (n.patterned->kind == nullptr && !n.bump_map)
         throw std::logic_error("TextureEvaluator: a normal without its pattern");
     return n.patterned;
 }
@@ -368,7 +368,7 @@ TextureEvaluator::CompiledTexture::CompiledTexture(const Texture& texture, const
                                                    const std::optional<Interior>& interior,
                                                    Shared& shared) {
     if (texture.is_patterned()) {
-        if (texture.patterned.kind == nullptr)
+        if (texture.patterned->kind == nullptr)
             throw std::logic_error("TextureEvaluator: a texture_map without its pattern");
         // (A uv-mapped one: in uv space, through its own transforms alone.)
         uv = texture.uv_mapping != UvMapping::Off;

@@ -212,7 +212,7 @@ TEST_CASE("dump: a pattern's kind and modifiers, normals, the sky, fog and a par
     rt::Texture texture;
     texture.pigment.pattern = rt::Pigment::Pattern::Patterned;
     texture.pigment.patterned = rt::pattern::Pattern::of(*rt::pattern::find_kind("bozo"));
-    texture.pigment.patterned.phase = symbolic_clock();
+    texture.pigment.patterned.edit().phase = symbolic_clock();
     texture.normal.emplace();
     texture.normal->patterned = rt::pattern::Pattern::of(*rt::pattern::find_kind("bumps"));
     o->texture = texture;

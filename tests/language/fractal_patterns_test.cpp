@@ -109,7 +109,7 @@ sphere { 0, 1 pigment { mandel 10 exponent 34 } }
     CHECK(magnet.vector.c[1].constant() == 0.5);
     REQUIRE(scene.objects.at(3)->texture);
     const rt::Normal& normal = *scene.objects[3]->texture->normal;
-    CHECK(normal.patterned.number[M::kForm].constant() == M::kOneMandel);
+    CHECK(normal.patterned->number[M::kForm].constant() == M::kOneMandel);
     CHECK(normal.amount.constant() == Approx(0.4));
     // An exponent outside 2 to 33: POV-Ray's warning, and 2.
     CHECK(pigment_pattern(scene, 4).number[pt::kinds::Mandel::kExponent].constant() == 2.0);

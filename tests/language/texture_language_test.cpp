@@ -43,12 +43,12 @@ sphere { 0, 1 normal { bumps 1 scale 0.2 } normal { bump_size 2 } }
 )");
     const rt::Pigment& p = texture_of(scene, 0).pigment;
     CHECK(p.pattern == rt::Pigment::Pattern::Patterned);
-    CHECK(p.patterned.kind->name == "bozo");
+    CHECK(p.patterned->kind->name == "bozo");
     CHECK(p.colour_map.entries.size() == 2);
     CHECK(!p.transform.empty());
     const auto& n = texture_of(scene, 1).normal;
     REQUIRE(n);
-    CHECK(n->patterned.kind->name == "bumps");
+    CHECK(n->patterned->kind->name == "bumps");
     CHECK(n->amount.constant() == 2.0);
     CHECK(!n->transform.empty());
 }
@@ -109,7 +109,7 @@ TEST_CASE("texture_map, normal_map, slope_map and block lists read as POV-Ray re
         "sphere { 0, 1 normal { hexagon normal { bumps } normal { dents } normal { waves } } }\n");
     const rt::Texture& a = texture_of(scene, 0);
     REQUIRE(a.is_patterned());
-    CHECK(a.patterned.kind->name == std::string_view("gradient"));
+    CHECK(a.patterned->kind->name == std::string_view("gradient"));
     REQUIRE(a.texture_map.size() == 2);
     CHECK(a.texture_map[0].value.constant() == Approx(0.2));
     CHECK(a.texture_map[0].texture->normal.has_value());
@@ -281,8 +281,8 @@ TEST_CASE("global_settings { noise_generator } reaches the patterns after it",
     const auto scene = read(
         "global_settings { noise_generator 3 }\nsphere { 0, 1 pigment { bozo } }\n"
         "sphere { 0, 1 pigment { bozo noise_generator 1 } }\n");
-    CHECK(texture_of(scene, 0).pigment.patterned.noise_generator == 3);
-    CHECK(texture_of(scene, 1).pigment.patterned.noise_generator == 1);
+    CHECK(texture_of(scene, 0).pigment.patterned->noise_generator == 3);
+    CHECK(texture_of(scene, 1).pigment.patterned->noise_generator == 1);
 }
 
 TEST_CASE("#default reaches every part of a texture, with or without its #", "[language]") {
@@ -347,11 +347,11 @@ sphere { 0, 1 texture { object { box { -1, 1 } texture { pigment { rgb 0.5 } }
                                  texture { pigment { rgb 1 } } } } }
 )");
     const rt::Pigment& p = texture_of(scene, 0).pigment;
-    REQUIRE(p.patterned.kind != nullptr);
-    CHECK(p.patterned.kind->name == "object");
-    REQUIRE(p.patterned.function);
-    CHECK(p.patterned.function->at({0.2, 0.1, 0.0}, 0.0) == 1.0);
-    CHECK(p.patterned.function->at({1.5, 0.0, 0.0}, 0.0) == 0.0);
+    REQUIRE(p.patterned->kind != nullptr);
+    CHECK(p.patterned->kind->name == "object");
+    REQUIRE(p.patterned->function);
+    CHECK(p.patterned->function->at({0.2, 0.1, 0.0}, 0.0) == 1.0);
+    CHECK(p.patterned->function->at({1.5, 0.0, 0.0}, 0.0) == 0.0);
     REQUIRE(p.colour_map.entries.size() == 2);
     CHECK(p.colour_map.entries[0].colour.c[0].constant() == 1.0);
     CHECK(p.colour_map.entries[1].colour.c[1].constant() == 1.0);  // green
@@ -483,7 +483,7 @@ sphere { 0, 1 pigment { checker scale 2
   warp { turbulence 0.3 octaves 2 } } }
 )",
                                                           "test.pov", animated);
-    const auto& warps = texture_of(scene, 0).pigment.patterned.warps;
+    const auto& warps = texture_of(scene, 0).pigment.patterned->warps;
     REQUIRE(warps.size() == 9);
     CHECK(warps[0].transform);
     const auto& repeat = std::get<rt::pattern::RepeatWarp>(*warps[1].point);
@@ -552,10 +552,10 @@ TEST_CASE("a colour may open a pigment from inside a directive or a macro", "[la
         "#declare Stripes = 1;\n"
         "sphere { 0, 1 pigment { Striped(rgb <0, 0, 1>) } }\n");
     CHECK(texture_of(scene, 0).pigment.colours[0].c[1].constant() == 1.0);
-    CHECK(texture_of(scene, 0).pigment.patterned.kind == nullptr);
+    CHECK(texture_of(scene, 0).pigment.patterned->kind == nullptr);
     CHECK(texture_of(scene, 1).pigment.colours[0].c[2].constant() == 1.0);
-    REQUIRE(texture_of(scene, 2).pigment.patterned.kind != nullptr);
-    CHECK(texture_of(scene, 2).pigment.patterned.kind->name == "gradient");
+    REQUIRE(texture_of(scene, 2).pigment.patterned->kind != nullptr);
+    CHECK(texture_of(scene, 2).pigment.patterned->kind->name == "gradient");
 }
 
 TEST_CASE("quick_color's components leave the declaration around them alone",
@@ -589,7 +589,7 @@ global_settings { number_of_waves 3.7 }
 sphere { 0, 1 pigment { waves } }
 )");
     CHECK(scene.global.number_of_waves == 3);
-    CHECK(texture_of(scene, 0).pigment.patterned.number_of_waves == 3);
+    CHECK(texture_of(scene, 0).pigment.patterned->number_of_waves == 3);
     const auto low = read("global_settings { number_of_waves 0 }\n");
     CHECK(low.global.number_of_waves == 1);
     REQUIRE(low.warnings.size() == 1);

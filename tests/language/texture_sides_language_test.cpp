@@ -32,8 +32,8 @@ sphere { 0, 1 texture {
   scale 2 } }
 )");
     const rt::Texture& t = *scene.objects.at(0)->texture;
-    REQUIRE(t.patterned.kind);
-    CHECK(t.patterned.kind->name == "checker");
+    REQUIRE(t.patterned->kind);
+    CHECK(t.patterned->kind->name == "checker");
     REQUIRE(t.texture_map.size() == 2);
     // (POV-Ray's Parse_Tiles: "first tile is 1, 2nd tile is 0".)
     CHECK(t.texture_map[0].value.constant() == 0.0);

@@ -517,8 +517,8 @@ union { sphere { 0, 1 } sphere { x, 1 }
     const auto check_switch = [](const rt::Texture& t, double at) {
         REQUIRE(t.is_patterned());
         REQUIRE(t.texture_map.size() == 2);
-        REQUIRE(t.patterned.function);
-        const rt::SpaceFunction& f = *t.patterned.function;
+        REQUIRE(t.patterned->function);
+        const rt::SpaceFunction& f = *t.patterned->function;
         CHECK(f.at({0.3, -2.0, 5.0}, at) == 1.0);
         CHECK(f.at({0.0, 0.0, 0.0}, before(at)) == 0.0);
         CHECK(f.at({0.0, 0.0, 0.0}, 0.0) == 0.0);

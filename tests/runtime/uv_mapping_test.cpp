@@ -161,7 +161,7 @@ sphere { 0, 1 normal { uv_mapping bumps 0.5 scale 0.1 } normal { dents 0.5 scale
     CHECK(mapped.transform.steps().size() == 1);
     const rt::Normal& n = *objects[2]->texture->normal;
     CHECK(n.uv_mapping == rt::UvMapping::Off);
-    CHECK(n.patterned.kind->name == "dents");
+    CHECK(n.patterned->kind->name == "dents");
     CHECK(n.transform.steps().size() == 1);
 }
 
