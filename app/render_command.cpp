@@ -424,6 +424,8 @@ int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err
         std::vector<std::filesystem::path> inputs = scene.inputs;
         inputs.insert(inputs.end(), resolved.ini_files.begin(), resolved.ini_files.end());
         check_outputs(args, pattern, selected, scene.animation, inputs);
+        const std::size_t frame_pixels =
+            std::size_t(scene.animation.width) * std::size_t(scene.animation.height);
         if (args.resume) {
             // A frame on disk was written whole (a temporary renamed over
             // it); what a killed run left half-written is its temporaries.
@@ -438,10 +440,12 @@ int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err
                     continue;
                 }
                 // A file hexant did not write whole, or of another size (an
-                // earlier render with other flags), is rendered again.
+                // earlier render with other flags), is rendered again; one
+                // that declares more pixels than the frame is refused from
+                // its header.
                 std::string why;
                 try {
-                    const image::StoredImage stored = image::read_stored_image(path);
+                    const image::StoredImage stored = image::read_stored_image(path, frame_pixels);
                     if (stored.width != scene.animation.width ||
                         stored.height != scene.animation.height)
                         why = std::to_string(stored.width) + " by " +
@@ -503,7 +507,8 @@ int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err
             for (std::size_t i = 0; i < selected.size(); ++i)
                 all.emplace_back(selected[i], std::move(frames[i]));
             for (const int frame : written)
-                all.emplace_back(frame, tracer::read_image(tracer::frame_path(pattern, frame)));
+                all.emplace_back(
+                    frame, tracer::read_image(tracer::frame_path(pattern, frame), frame_pixels));
             std::sort(all.begin(), all.end(),
                       [](const auto& a, const auto& b) { return a.first < b.first; });
             frames.clear();

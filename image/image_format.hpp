@@ -66,15 +66,17 @@ struct ImageTooLarge : std::runtime_error {
 void check_declared_size(long long width, long long height, std::size_t max_pixels);
 
 // One file format. `write` writes `width` x `height` RGB pixels: bytes in
-// sRGB for an 8-bit format, floats in linear light for a `linear` one; both
-// throw std::runtime_error with the reason (not the path: the caller names
-// the file it meant, not the temporary it wrote).
+// sRGB for an 8-bit format, floats in linear light for a `linear` one, to
+// an open descriptor from its start (a new file's, which the caller keeps
+// and closes: tracer::TemporaryFile); both throw std::runtime_error with
+// the reason (not the path: the caller names the file it meant, not the
+// temporary it wrote).
 struct ImageFormat {
     const char* name;       // "PNG"
     const char* extension;  // ".png", lower case
     bool linear;            // stores linear float
     // (null: a format hexant reads only)
-    void (*write)(const std::filesystem::path& file, int width, int height, const void* pixels);
+    void (*write)(int fd, int width, int height, const void* pixels);
     // Refuses (ImageTooLarge) a file that declares more than `max_pixels`
     // before any pixel is decoded or any buffer for them is taken.
     StoredImage (*read)(const std::filesystem::path& file, std::size_t max_pixels);

@@ -4,7 +4,12 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <system_error>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "language/source_files.hpp"
 #include "language/value_ops.hpp"
@@ -125,17 +130,44 @@ void UserFiles::open_write(const std::string& name, const fs::path& path, bool a
     f.path = path;
     std::error_code error;
     fs::create_directories(path.parent_path(), error);
-    f.out = std::make_unique<std::ofstream>(
-        path, std::ios::binary | (append ? std::ios::app : std::ios::trunc));
-    if (!*f.out) throw ValueError("it cannot be opened for writing");
+    // The path was resolved with its links (writable_path); opened without
+    // following one put at its name since, and refused unless it is a
+    // regular file (a FIFO would block, a device be written into; issue
+    // 45). O_NONBLOCK only for the open: a FIFO without a reader fails
+    // at once instead of waiting for one.
+    struct stat st {};
+    if (::lstat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
+        throw ValueError(
+            "it is not a regular file (a FIFO, a device, a link or a folder): "
+            "refused");
+    const int fd =
+        ::open(path.c_str(), O_WRONLY | O_CREAT | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC, 0666);
+    if (fd < 0)
+        throw ValueError(std::string("it cannot be opened for writing: ") + std::strerror(errno));
+    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        ::close(fd);
+        throw ValueError("it is not a regular file: refused");
+    }
+    if ((append ? ::lseek(fd, 0, SEEK_END) < 0 : ::ftruncate(fd, 0) != 0) ||
+        ::fcntl(fd, F_SETFL, append ? O_APPEND : 0) != 0) {
+        const int reason = errno;
+        ::close(fd);
+        throw ValueError(std::string("it cannot be opened for writing: ") + std::strerror(reason));
+    }
+    f.out.reset(::fdopen(fd, append ? "ab" : "wb"));
+    if (!f.out) {
+        ::close(fd);
+        throw ValueError("it cannot be opened for writing");
+    }
     files_[name] = std::move(f);
 }
 
 void UserFiles::write(const std::string& name, const std::string& text) {
     File& f = find(name);
     if (f.reading) throw ValueError("'" + name + "' is open for reading, not writing");
-    *f.out << text;
-    if (!*f.out) throw ValueError("writing to '" + f.path.string() + "' failed");
+    if (std::fwrite(text.data(), 1, text.size(), f.out.get()) != text.size() ||
+        std::ferror(f.out.get()))
+        throw ValueError("writing to '" + f.path.string() + "' failed: " + std::strerror(errno));
 }
 
 std::optional<Value> UserFiles::read(const std::string& name) {
@@ -208,7 +240,18 @@ std::optional<Value> UserFiles::read(const std::string& name) {
 }
 
 void UserFiles::close(const std::string& name) {
-    files_.erase(name);
+    const auto it = files_.find(name);
+    if (it == files_.end()) return;
+    // (A full disk shows in the last buffer's flush, here.)
+    std::FILE* out = it->second.out.release();
+    const fs::path path = it->second.path;
+    files_.erase(it);
+    if (out && std::fclose(out) != 0)
+        throw ValueError("writing to '" + path.string() + "' failed: " + std::strerror(errno));
+}
+
+void UserFiles::File::CloseFile::operator()(std::FILE* file) const {
+    if (file) std::fclose(file);
 }
 
 }  // namespace hexant::language

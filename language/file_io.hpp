@@ -16,8 +16,8 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <memory>
 #include <optional>
@@ -61,7 +61,10 @@ class UserFiles {
         bool reading = false;
         std::string text;
         std::size_t at = 0;
-        std::unique_ptr<std::ofstream> out;
+        struct CloseFile {
+            void operator()(std::FILE* file) const;
+        };
+        std::unique_ptr<std::FILE, CloseFile> out;
     };
     File& find(const std::string& name);
     std::map<std::string, File> files_;

@@ -73,14 +73,13 @@ bool write_blocks(GifFileType* gif, int width, int height,
 
 }  // namespace
 
-void write_gif_animation(const fs::path& file, int width, int height,
+void write_gif_animation(int fd, int width, int height,
                          const std::vector<std::vector<unsigned char>>& frames, double fps) {
     if (width > kGifMaxSide || height > kGifMaxSide)
         throw std::runtime_error("a GIF is at most " + std::to_string(kGifMaxSide) +
                                  " pixels a side");
-    // Opened here rather than by EGifOpenFileName, which makes the file
-    // readable by its owner only; frames are 0666 less the umask, as fopen's.
-    const int descriptor = ::open(file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    // giflib closes the descriptor it is given: a copy of the caller's.
+    const int descriptor = ::dup(fd);
     if (descriptor < 0) throw std::runtime_error(std::strerror(errno));
     int error = 0;
     GifFileType* gif = EGifOpenFileHandle(descriptor, &error);
@@ -103,9 +102,17 @@ void write_gif_animation(const fs::path& file, int width, int height,
     if (!closed) throw std::runtime_error(reason(error));
 }
 
-int count_gif_frames(const fs::path& file, int width, int height) {
+int count_gif_frames(int fd, int width, int height) {
     int error = 0;
-    GifFileType* gif = DGifOpenFileName(file.c_str(), &error);
+    // (A copy shares the caller's position: both are rewound to the
+    // start; giflib closes the copy.)
+    const int descriptor = ::dup(fd);
+    if (descriptor < 0 || ::lseek(descriptor, 0, SEEK_SET) != 0) {
+        const int system_error = errno;
+        if (descriptor >= 0) ::close(descriptor);
+        throw std::runtime_error(std::strerror(system_error));
+    }
+    GifFileType* gif = DGifOpenFileHandle(descriptor, &error);
     if (!gif) throw std::runtime_error(reason(error));
     const bool read = DGifSlurp(gif) != GIF_ERROR;
     const int read_error = gif->Error;

@@ -11,13 +11,15 @@ namespace hexant::tracer {
 // A GIF's sides are 16-bit numbers.
 inline constexpr int kGifMaxSide = 65535;
 
-// `frames` are sRGB bytes, RGB, `width` x `height` each. Throws
-// std::runtime_error with the reason.
-void write_gif_animation(const std::filesystem::path& file, int width, int height,
+// `frames` are sRGB bytes, RGB, `width` x `height` each, written to the
+// open descriptor `fd` from its start (the caller keeps and closes it).
+// Throws std::runtime_error with the reason.
+void write_gif_animation(int fd, int width, int height,
                          const std::vector<std::vector<unsigned char>>& frames, double fps);
 
-// The number of frames a GIF holds, each checked to be `width` x
-// `height` and decoded whole; throws std::runtime_error with the reason.
-int count_gif_frames(const std::filesystem::path& file, int width, int height);
+// The number of frames the GIF open at `fd` holds (read from its start;
+// the caller keeps the descriptor), each checked to be `width` x `height`
+// and decoded whole; throws std::runtime_error with the reason.
+int count_gif_frames(int fd, int width, int height);
 
 }  // namespace hexant::tracer

@@ -18,8 +18,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-StoredImage read(const fs::path& path, ImageSpace space = ImageSpace::Stored) {
-    StoredImage image = read_stored_image(path);
+// `max_pixels`: the second image of a pair is read under the first's size
+// (a different size is refused anyway), so a reference or golden file
+// that declares a huge size is refused from its header.
+StoredImage read(const fs::path& path, ImageSpace space = ImageSpace::Stored,
+                 std::size_t max_pixels = image::kMaxImagePixels) {
+    StoredImage image = read_stored_image(path, max_pixels);
     if (space == ImageSpace::Linear && !image.linear) {
         // Colour channels only: an alpha channel is not encoded.
         for (std::size_t i = 0; i < image.values.size(); ++i)
@@ -28,6 +32,22 @@ StoredImage read(const fs::path& path, ImageSpace space = ImageSpace::Stored) {
         image.linear = true;
     }
     return image;
+}
+
+std::size_t pixels_of(const StoredImage& image) {
+    return std::size_t(image.width) * std::size_t(image.height);
+}
+
+// The second image of a pair, read under the first's size.
+StoredImage read_second(const fs::path& path, ImageSpace space, const StoredImage& first,
+                        const fs::path& first_path) {
+    try {
+        return read(path, space, pixels_of(first));
+    } catch (const image::ImageTooLarge& e) {
+        throw std::runtime_error(first_path.string() + " is " + std::to_string(first.width) + "x" +
+                                 std::to_string(first.height) + "x" +
+                                 std::to_string(first.channels) + " but " + e.what());
+    }
 }
 
 void check_same_shape(const StoredImage& a, const fs::path& pa, const StoredImage& b,
@@ -43,7 +63,8 @@ void check_same_shape(const StoredImage& a, const fs::path& pa, const StoredImag
 
 ImageDifference compare_images(const fs::path& a, const fs::path& b, double fail_threshold,
                                double warn_threshold, ImageSpace space) {
-    const StoredImage ia = read(a, space), ib = read(b, space);
+    const StoredImage ia = read(a, space);
+    const StoredImage ib = read_second(b, space, ia, a);
     check_same_shape(ia, a, ib, b);
     ImageDifference d;
     d.pixels = std::size_t(ia.width) * std::size_t(ia.height);
@@ -76,7 +97,7 @@ ImageDifference compare_images(const fs::path& a, const fs::path& b, double fail
 
 ImageError image_error(const fs::path& image, const fs::path& reference, double epsilon) {
     const StoredImage a = read(image, ImageSpace::Linear);
-    const StoredImage r = read(reference, ImageSpace::Linear);
+    const StoredImage r = read_second(reference, ImageSpace::Linear, a, image);
     check_same_shape(a, image, r, reference);
     double squares = 0.0, relative = 0.0;
     for (std::size_t i = 0; i < a.values.size(); ++i) {
@@ -91,7 +112,8 @@ ImageError image_error(const fs::path& image, const fs::path& reference, double 
 
 void write_difference_image(const fs::path& a, const fs::path& b, const fs::path& out,
                             double gain) {
-    const StoredImage ia = read(a), ib = read(b);
+    const StoredImage ia = read(a);
+    const StoredImage ib = read_second(b, ImageSpace::Stored, ia, a);
     check_same_shape(ia, a, ib, b);
     Image image(ia.width, ia.height);
     const std::size_t channels = std::size_t(ia.channels);

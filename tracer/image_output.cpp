@@ -47,8 +47,8 @@ void check_frame_pattern(const std::string& pattern, std::size_t frames, const s
                                  ": one run of # is the frame number; this has more");
 }
 
-Image read_image(const fs::path& path) {
-    const image::StoredImage stored = image::read_stored_image(path);
+Image read_image(const fs::path& path, std::size_t max_pixels) {
+    const image::StoredImage stored = image::read_stored_image(path, max_pixels);
     if (!stored.linear && (stored.encoding_gamma != 0.0 || stored.source_bits != 8))
         throw std::runtime_error(path.string() + ": not an 8-bit sRGB image as hexant writes");
     Image image(stored.width, stored.height);
@@ -131,9 +131,9 @@ void write_image(const Image& image, const fs::path& path) {
     std::vector<unsigned char> bytes;
     if (!format->linear) bytes = srgb_pixels(image);
     try {
-        format->write(temporary.name(), image.width, image.height,
+        format->write(temporary.descriptor(), image.width, image.height,
                       format->linear ? static_cast<const void*>(image.rgb.data()) : bytes.data());
-        check_reads_back(*format, temporary.name(), image, bytes);
+        check_reads_back(*format, temporary.reopenable_name(), image, bytes);
     } catch (const std::runtime_error& e) {
         throw std::runtime_error(path.string() + ": writing failed (" + e.what() + ")");
     }
@@ -187,9 +187,9 @@ void write_animation(const std::vector<Image>& frames, const fs::path& path, dou
     }
     TemporaryFile temporary(path);
     try {
-        write_gif_animation(temporary.name(), width, height, pixels, fps);
+        write_gif_animation(temporary.descriptor(), width, height, pixels, fps);
         // Its colours are quantized: read back whole, not compared.
-        if (count_gif_frames(temporary.name(), width, height) != int(frames.size()))
+        if (count_gif_frames(temporary.descriptor(), width, height) != int(frames.size()))
             throw std::runtime_error("frames are missing when it is read back");
     } catch (const std::runtime_error& e) {
         throw std::runtime_error(path.string() + ": writing failed (" + e.what() + ")");

@@ -56,8 +56,11 @@ void write_animation(const std::vector<Image>& frames, const std::filesystem::pa
 
 // A frame read back from a file hexant wrote (PNG: sRGB decoded to linear,
 // so that writing it again gives the same bytes; EXR: linear as stored);
-// alpha, if any, dropped. std::runtime_error naming the file otherwise.
-Image read_image(const std::filesystem::path& path);
+// alpha, if any, dropped. std::runtime_error naming the file otherwise,
+// image::ImageTooLarge (from its header, before any pixel is decoded) when
+// it declares more than `max_pixels`.
+Image read_image(const std::filesystem::path& path,
+                 std::size_t max_pixels = image::kMaxImagePixels);
 
 // Linear to sRGB, 8 bits.
 unsigned char to_srgb8(double linear);

@@ -47,12 +47,18 @@ void release(int slot) {
     if (slot >= 0) g_slots[slot].state.store(0, std::memory_order_release);
 }
 
-// fsync on a path (a file or a folder); errno's reason on failure.
-std::string sync_path(const fs::path& path, int flags) {
-    const int fd = ::open(path.c_str(), flags | O_CLOEXEC);
+// fsync on a descriptor; errno's reason on failure (a file system that
+// cannot sync, EINVAL or EROFS, is no failure).
+std::string sync_descriptor(int fd) {
+    if (::fsync(fd) != 0 && errno != EINVAL && errno != EROFS) return std::strerror(errno);
+    return {};
+}
+
+// fsync on a folder; errno's reason on failure.
+std::string sync_folder(const fs::path& path) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
     if (fd < 0) return std::strerror(errno);
-    std::string reason;
-    if (::fsync(fd) != 0 && errno != EINVAL && errno != EROFS) reason = std::strerror(errno);
+    std::string reason = sync_descriptor(fd);
     if (::close(fd) != 0 && reason.empty()) reason = std::strerror(errno);
     return reason;
 }
@@ -106,15 +112,14 @@ TemporaryFile::TemporaryFile(const fs::path& path) : path_(path) {
     // O_EXCL | O_NOFOLLOW fail on a link or anything else there, which is
     // removed (unlink removes a link, not its target) and the name tried
     // once more.
-    int fd = -1;
-    for (int attempt = 0; attempt < 2 && fd < 0; ++attempt) {
-        fd = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
-        if (fd < 0 && errno == EEXIST && attempt == 0) ::unlink(temporary_.c_str());
+    // Kept open: everything after goes through this descriptor.
+    for (int attempt = 0; attempt < 2 && fd_ < 0; ++attempt) {
+        fd_ = ::open(temporary_.c_str(), O_RDWR | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+        if (fd_ < 0 && errno == EEXIST && attempt == 0) ::unlink(temporary_.c_str());
     }
-    if (fd < 0)
+    if (fd_ < 0)
         throw std::runtime_error(path.string() + ": cannot create its temporary file " +
                                  temporary_.string() + ": " + std::strerror(errno));
-    ::close(fd);
     slot_ = register_temporary(temporary_);
 }
 
@@ -165,62 +170,86 @@ int remove_leftover_temporaries(const fs::path& path) {
 }
 
 TemporaryFile::~TemporaryFile() {
-    if (!committed_) {
-        std::error_code ignored;
-        fs::remove(temporary_, ignored);
-    }
+    if (!committed_) remove_if_ours();
+    if (fd_ >= 0) ::close(fd_);
     release(slot_);
+}
+
+bool TemporaryFile::name_is_ours() const {
+    struct stat mine {
+    }, named{};
+    return fd_ >= 0 && ::fstat(fd_, &mine) == 0 && ::lstat(temporary_.c_str(), &named) == 0 &&
+           mine.st_dev == named.st_dev && mine.st_ino == named.st_ino;
+}
+
+void TemporaryFile::remove_if_ours() {
+    // (What someone put at the name in its place is theirs, left alone.)
+    if (name_is_ours()) ::unlink(temporary_.c_str());
+}
+
+fs::path TemporaryFile::reopenable_name() const {
+    const fs::path entry = fs::path("/proc/self/fd") / std::to_string(fd_);
+    std::error_code error;
+    return fs::exists(entry, error) ? entry : temporary_;
 }
 
 void TemporaryFile::commit() {
     const auto fail = [&](const std::string& what) {
-        std::error_code ignored;
-        fs::remove(temporary_, ignored);
+        remove_if_ours();
         throw std::runtime_error(path_.string() + ": " + what);
     };
     // Written data that did not fit (a full disk) shows here at the latest.
-    if (const std::string reason = sync_path(temporary_, O_RDONLY); !reason.empty())
+    if (const std::string reason = sync_descriptor(fd_); !reason.empty())
         fail("writing failed: " + reason);
+    // Renamed by its name: the name must still be this file (not a link or
+    // anything else put there since), or the rename would move that over
+    // the output.
+    if (!name_is_ours())
+        fail("its temporary file " + temporary_.string() +
+             " was replaced while it was written; nothing is renamed");
     // (Checked again: the place may have changed while the file was made.)
     try {
         refuse_other_than_regular(path_);
     } catch (const std::runtime_error& e) {
-        std::error_code ignored;
-        fs::remove(temporary_, ignored);
+        remove_if_ours();
         throw;
     }
     std::error_code error;
     fs::rename(temporary_, path_, error);
     if (error) fail("cannot rename the finished file: " + error.message());
     committed_ = true;
+    release(slot_);  // (a signal now must not remove what is at the name)
+    slot_ = -1;
+    const int closed = ::close(fd_);
+    fd_ = -1;
+    if (closed != 0)
+        throw std::runtime_error(path_.string() +
+                                 ": written, but closing it failed: " + std::strerror(errno));
     const fs::path folder = path_.has_parent_path() ? path_.parent_path() : fs::path(".");
-    if (const std::string reason = sync_path(folder, O_RDONLY | O_DIRECTORY); !reason.empty())
+    if (const std::string reason = sync_folder(folder); !reason.empty())
         throw std::runtime_error(path_.string() +
                                  ": written, but its folder could not be flushed: " + reason);
 }
 
+std::string write_all(int fd, const void* data, std::size_t bytes) {
+    const auto* at = static_cast<const char*>(data);
+    std::size_t done = 0;
+    while (done < bytes) {
+        const ssize_t n = ::write(fd, at + done, bytes - done);
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            return std::strerror(errno);
+        }
+        done += std::size_t(n);
+    }
+    return {};
+}
+
 void write_text_file(const fs::path& path, const std::string& text) {
     TemporaryFile temporary(path);
-    {
-        const int fd = ::open(temporary.name().c_str(),
-                              O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0666);
-        if (fd < 0)
-            throw std::runtime_error(path.string() + ": cannot write: " + std::strerror(errno));
-        std::size_t done = 0;
-        std::string reason;
-        while (done < text.size()) {
-            const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-            if (n < 0) {
-                if (errno == EINTR) continue;
-                reason = std::strerror(errno);
-                break;
-            }
-            done += std::size_t(n);
-        }
-        if (::close(fd) != 0 && reason.empty()) reason = std::strerror(errno);
-        if (!reason.empty())
-            throw std::runtime_error(path.string() + ": writing failed: " + reason);
-    }
+    if (const std::string reason = write_all(temporary.descriptor(), text.data(), text.size());
+        !reason.empty())
+        throw std::runtime_error(path.string() + ": writing failed: " + reason);
     temporary.commit();
 }
 

@@ -17,10 +17,13 @@ namespace hexant::tracer {
 // the folder created; NAME cut to fit 255 bytes), created empty as a new
 // regular file (O_EXCL | O_NOFOLLOW: never through a link planted at its
 // name), registered for removal on a signal, and removed when the object
-// goes away unless commit() renamed it over `path`. A `path` that is a
-// link, a device, a FIFO or a folder is refused (std::runtime_error naming
-// it), here and again before the rename: only nothing or a regular file is
-// replaced.
+// goes away unless commit() renamed it over `path`. It is written and read
+// back through the descriptor it was created with, never reopened by its
+// name (which someone who can write the folder could swap for a link or a
+// FIFO meanwhile), and renamed only while its name is still that file. A
+// `path` that is a link, a device, a FIFO or a folder is refused
+// (std::runtime_error naming it), here and again before the rename: only
+// nothing or a regular file is replaced.
 class TemporaryFile {
   public:
     explicit TemporaryFile(const std::filesystem::path& path);
@@ -30,16 +33,34 @@ class TemporaryFile {
 
     const std::filesystem::path& name() const { return temporary_; }
 
-    // Flushes the temporary to the disk, renames it over the path and
-    // flushes the folder; throws std::runtime_error naming the path and
-    // the system's reason (the temporary is removed).
+    // The open descriptor of the temporary, for writing (at its start, as
+    // created) and reading back; it stays this object's, closed by
+    // commit() or the destructor. A writer that needs a FILE* or a library
+    // that closes what it is given takes a dup() of it.
+    int descriptor() const { return fd_; }
+
+    // A name that opens this very file whatever is at name() by now (the
+    // process's /proc/self/fd entry), for a reader that takes a path;
+    // name() itself where /proc is not mounted.
+    std::filesystem::path reopenable_name() const;
+
+    // Flushes the temporary to the disk, checks that its name is still the
+    // file this object created, renames it over the path and flushes the
+    // folder; throws std::runtime_error naming the path and the system's
+    // reason (the temporary is removed).
     void commit();
 
     // Throws std::runtime_error if `path` exists and is not a regular file.
     static void refuse_other_than_regular(const std::filesystem::path& path);
 
   private:
+    // Whether name() is still the file fd_ holds (same device and inode,
+    // not followed through a link).
+    bool name_is_ours() const;
+    void remove_if_ours();
+
     std::filesystem::path path_, temporary_;
+    int fd_ = -1;
     int slot_ = -1;  // in the signal handler's list
     bool committed_ = false;
 };
@@ -48,6 +69,10 @@ class TemporaryFile {
 // ".NAME.PID.partial" files beside it, of any process); returns how many.
 // For a run that resumes (render --resume): nothing else writes `path`.
 int remove_leftover_temporaries(const std::filesystem::path& path);
+
+// Writes `bytes` bytes at `data` to `fd` whole (again after EINTR and short
+// writes); the system's reason on failure, empty on success.
+std::string write_all(int fd, const void* data, std::size_t bytes);
 
 // Writes `text` to `path` whole; throws std::runtime_error naming the file.
 void write_text_file(const std::filesystem::path& path, const std::string& text);

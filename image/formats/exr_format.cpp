@@ -1,6 +1,8 @@
 #include "image/formats/exr_format.hpp"
 
+#include <cerrno>
 #include <cstdint>
+#include <cstring>
 #include <exception>
 #include <fstream>
 #include <stdexcept>
@@ -12,6 +14,7 @@
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/openexr.h>
+#include <unistd.h>
 
 namespace hexant::image {
 
@@ -155,7 +158,31 @@ void check_header(const fs::path& file, std::size_t max_pixels) {
 
 constexpr const char* kChannels[] = {"R", "G", "B", "A"};
 
-void write_exr(const fs::path& file, int width, int height, const void* pixels) {
+// An OpenEXR output stream over a descriptor the caller keeps (a file
+// created for this write, never reopened by its name): positioned writes,
+// so the line offsets it writes last go where the library says.
+class DescriptorStream : public Imf::OStream {
+  public:
+    explicit DescriptorStream(int fd) : Imf::OStream("(descriptor)"), fd_(fd) {}
+    void write(const char c[], int n) override {
+        std::size_t done = 0;
+        while (done < std::size_t(n)) {
+            const ssize_t wrote = ::pwrite(fd_, c + done, std::size_t(n) - done, off_t(at_ + done));
+            if (wrote < 0 && errno == EINTR) continue;
+            if (wrote <= 0) throw std::runtime_error(std::strerror(wrote < 0 ? errno : EIO));
+            done += std::size_t(wrote);
+        }
+        at_ += std::uint64_t(n);
+    }
+    std::uint64_t tellp() override { return at_; }
+    void seekp(std::uint64_t pos) override { at_ = pos; }
+
+  private:
+    int fd_;
+    std::uint64_t at_ = 0;
+};
+
+void write_exr(int fd, int width, int height, const void* pixels) {
     try {
         Imf::Header header(width, height);
         header.compression() = Imf::ZIP_COMPRESSION;
@@ -169,7 +196,8 @@ void write_exr(const fs::path& file, int width, int height, const void* pixels) 
         }
         // The file's destructor writes the line offsets and swallows its
         // errors: the caller reads the file back to catch a short one.
-        Imf::OutputFile out(file.c_str(), header);
+        DescriptorStream stream(fd);
+        Imf::OutputFile out(stream, header);
         out.setFrameBuffer(frame);
         out.writePixels(height);
     } catch (const std::exception& e) {

@@ -10,6 +10,7 @@
 #include <string>
 
 #include <png.h>
+#include <unistd.h>
 
 namespace hexant::image {
 
@@ -25,7 +26,7 @@ constexpr png_uint_32 kMaxSide = 1u << 20;
 // own default, stated so a build of it with none cannot take gigabytes.
 constexpr png_alloc_size_t kMaxChunkBytes = 8'000'000;
 
-void write_png(const fs::path& file, int width, int height, const void* pixels) {
+void write_png(int fd, int width, int height, const void* pixels) {
     png_image image;
     std::memset(&image, 0, sizeof image);
     image.version = PNG_IMAGE_VERSION;
@@ -36,8 +37,23 @@ void write_png(const fs::path& file, int width, int height, const void* pixels) 
     // an error here, not a short file. libpng says only "Write Error"; the
     // system's reason is in errno.
     errno = 0;
-    const int ok = png_image_write_to_file(&image, file.c_str(), 0, pixels, 0, nullptr);
-    const int system_error = errno;
+    // (A stream of its own over a copy of the caller's descriptor, which
+    // stays open: fclose's failure, a full disk's last buffer, is checked.)
+    const int copy = ::dup(fd);
+    std::FILE* stream = copy < 0 ? nullptr : ::fdopen(copy, "wb");
+    if (!stream) {
+        const int system_error = errno;
+        if (copy >= 0) ::close(copy);
+        png_image_free(&image);
+        throw std::runtime_error(std::strerror(system_error));
+    }
+    int ok = png_image_write_to_stdio(&image, stream, 0, pixels, 0, nullptr);
+    int system_error = errno;
+    if (ok && std::ferror(stream)) ok = 0;
+    if (std::fclose(stream) != 0 && ok) {
+        ok = 0;
+        system_error = errno;
+    }
     std::string message = image.message;
     png_image_free(&image);
     if (ok) return;

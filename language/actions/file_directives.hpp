@@ -55,7 +55,11 @@ struct action<g::fopen_mode> {
             } catch (const ValueError& e) {
                 throw ValueError("#fopen '" + name + "' for writing: " + e.what());
             }
-            st.user_files.open_write(id, path, mode == "append");
+            try {
+                st.user_files.open_write(id, path, mode == "append");
+            } catch (const ValueError& e) {
+                throw ValueError("#fopen '" + name + "' for writing: " + e.what());
+            }
         }
         // The name is defined while the file is open (#read's loops test it).
         st.symbols.declare(id, Value{std::string(name)}, false);

@@ -197,13 +197,23 @@ TEST_CASE("resuming after SIGKILL at a random moment loses no frame and leaves n
     REQUIRE(render(other) == 0);
     fs::copy_file(folder / "small/f_0004.png", folder / "killed/f_0004.png",
                   fs::copy_options::overwrite_existing);
+    // A larger one is refused from its header, under the frame's own size
+    // (not the 2^30 pixels of any image), before its pixels are decoded.
+    RenderArguments large = arguments(folder, "large");
+    large.scene.width = 80;
+    large.scene.height = 60;
+    large.frames = "5:5";
+    REQUIRE(render(large) == 0);
+    fs::copy_file(folder / "large/f_0005.png", folder / "killed/f_0005.png",
+                  fs::copy_options::overwrite_existing);
     {
         RenderArguments again = arguments(folder, "killed");
         again.resume = true;
         std::ostringstream out, err;
         REQUIRE(run_render(again, out, err) == 0);
-        CHECK(out.str().find("9 of 12 frames already written") != std::string::npos);
+        CHECK(out.str().find("8 of 12 frames already written") != std::string::npos);
         CHECK(err.str().find("20 by 15") != std::string::npos);
+        CHECK(err.str().find("80 by 60 pixels, more than the limit of 1200") != std::string::npos);
         check_same_frames(folder / "one", folder / "killed", 12);
     }
     // A run with every frame written renders nothing.

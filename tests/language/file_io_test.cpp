@@ -8,6 +8,7 @@
 #include <string>
 
 #include <catch2/catch.hpp>
+#include <sys/stat.h>
 
 #include "language/interpreter.hpp"
 #include "language/scene_error.hpp"
@@ -133,6 +134,27 @@ TEST_CASE("a scene writes only into its output folder and --allow-write",
     // Text read from memory with no output folder may not write at all.
     CHECK(read("#fopen F \"w.txt\" write\n", fs::path()).error.find("no output folder") !=
           std::string::npos);
+}
+
+TEST_CASE("#fopen writes only into a regular file, appends at its end",
+          "[language][file_io][confinement]") {
+    // Issue 45: a FIFO in the output folder blocked #fopen for good, a
+    // device was written into; both are refused at once now.
+    const fs::path out = fresh_folder("special");
+    REQUIRE(::mkfifo((out / "fifo.txt").c_str(), 0600) == 0);
+    const Reading fifo = read("#fopen F \"fifo.txt\" write\n", out);
+    INFO(fifo.error);
+    CHECK(fifo.error.find("fifo.txt") != std::string::npos);
+    CHECK(fs::is_fifo(out / "fifo.txt"));
+    // Write, then append: the second text after the first.
+    CHECK(read("#fopen F \"a.txt\" write #write (F, \"one\") #fclose F\n"
+               "#fopen F \"a.txt\" append #write (F, \"two\") #fclose F\n",
+               out)
+              .error.empty());
+    CHECK(file_text(out / "a.txt") == "onetwo");
+    // Writing again starts it anew.
+    CHECK(read("#fopen F \"a.txt\" write #write (F, \"3\") #fclose F\n", out).error.empty());
+    CHECK(file_text(out / "a.txt") == "3");
 }
 
 TEST_CASE("a scene reads files only where #include may", "[language][file_io][confinement]") {

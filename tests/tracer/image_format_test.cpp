@@ -11,6 +11,8 @@
 #include <string>
 
 #include <catch2/catch.hpp>
+#include <fcntl.h>
+#include <unistd.h>
 
 #include "image/formats/gif_format.hpp"
 #include "tracer/gif_animation.hpp"
@@ -205,9 +207,11 @@ TEST_CASE("an animated GIF holds every frame", "[tracer][image]") {
         frames.push_back(frame);
     }
     tr::write_animation(frames, folder / "movie.gif", 12.0);
-    CHECK(tr::count_gif_frames(folder / "movie.gif", 20, 12) == 5);
-    CHECK_THROWS_WITH(tr::count_gif_frames(folder / "movie.gif", 21, 12),
-                      Catch::Contains("wrong size"));
+    const int fd = ::open((folder / "movie.gif").c_str(), O_RDONLY | O_CLOEXEC);
+    REQUIRE(fd >= 0);
+    CHECK(tr::count_gif_frames(fd, 20, 12) == 5);
+    CHECK_THROWS_WITH(tr::count_gif_frames(fd, 21, 12), Catch::Contains("wrong size"));
+    ::close(fd);
     CHECK_THROWS_WITH(tr::write_animation(frames, folder / "movie.png", 12.0),
                       Catch::Contains("movie.png"));
     frames.back() = tr::Image(8, 8);

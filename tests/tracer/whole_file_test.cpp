@@ -174,6 +174,42 @@ TEST_CASE("a link planted at a temporary name is never written through", "[trace
     fs::remove_all(folder);
 }
 
+TEST_CASE("a temporary swapped for a link while it is written is never renamed or written through",
+          "[tracer][files]") {
+    // Issue 45: someone who can write the output folder replaces the
+    // temporary by a link between its creation and the rename. The bytes
+    // go through the descriptor it was created with (into the file that
+    // was unlinked, not the link's target), and the rename is refused: the
+    // output never becomes their link.
+    const fs::path folder = fs::temp_directory_path() / "hexant_swapped_temporary_test";
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    const fs::path victim = folder / "victim.txt";
+    std::ofstream(victim) << "not yours";
+    {
+        tr::TemporaryFile temporary(folder / "out.json");
+        fs::remove(temporary.name());
+        fs::create_symlink(victim, temporary.name());
+        CHECK(tr::write_all(temporary.descriptor(), "{}", 2).empty());
+        CHECK_THROWS_WITH(temporary.commit(),
+                          Catch::Contains("out.json") && Catch::Contains("was replaced"));
+        // Their link is theirs: left where it was.
+        CHECK(fs::is_symlink(temporary.name()));
+    }
+    CHECK(contents(victim) == "not yours");
+    CHECK_FALSE(fs::exists(fs::symlink_status(folder / "out.json")));
+    // Unswapped, the same steps write the file whole, and the descriptor
+    // reads back what was written under a name nobody can swap.
+    {
+        tr::TemporaryFile temporary(folder / "out.json");
+        CHECK(tr::write_all(temporary.descriptor(), "{}", 2).empty());
+        CHECK(contents(temporary.reopenable_name()) == "{}");
+        temporary.commit();
+    }
+    CHECK(contents(folder / "out.json") == "{}");
+    fs::remove_all(folder);
+}
+
 TEST_CASE("an output that is a link, a FIFO or a folder is refused and left as it was",
           "[tracer][files]") {
     const fs::path folder = fs::temp_directory_path() / "hexant_special_output_test";
