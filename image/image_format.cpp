@@ -5,8 +5,11 @@
 #include <cctype>
 #include <cerrno>
 #include <cstring>
-#include <fstream>
 #include <stdexcept>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "image/formats/exr_format.hpp"
 #include "image/formats/gif_format.hpp"
@@ -59,21 +62,41 @@ void check_declared_size(long long width, long long height, std::size_t max_pixe
 }
 
 StoredImage read_stored_image(const fs::path& path, std::size_t max_pixels) {
+    // Only a regular file (issue 45: a FIFO at a frame's or a reference's
+    // name blocked the reader for good): opened without waiting for a
+    // writer, checked, and kept open, so that the format's reader opens
+    // this very file (/proc/self/fd/N) and not whatever is at the name by
+    // then.
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0)
+        throw std::runtime_error(path.string() + ": cannot read image: " + std::strerror(errno));
+    struct Closing {
+        int fd;
+        ~Closing() { ::close(fd); }
+    } closing{fd};
+    struct stat st {};
+    if (::fstat(fd, &st) != 0)
+        throw std::runtime_error(path.string() + ": cannot read image: " + std::strerror(errno));
+    if (!S_ISREG(st.st_mode))
+        throw std::runtime_error(path.string() +
+                                 ": cannot read image: not a regular file (a FIFO, a device or "
+                                 "a folder)");
     std::array<unsigned char, 8> head{};
-    std::size_t got = 0;
-    {
-        std::ifstream in(path, std::ios::binary);
-        if (!in)
-            throw std::runtime_error(path.string() +
-                                     ": cannot read image: " + std::strerror(errno));
-        in.read(reinterpret_cast<char*>(head.data()), head.size());
-        got = static_cast<std::size_t>(in.gcount());
-    }
+    ssize_t n = 0;
+    do {
+        n = ::pread(fd, head.data(), head.size(), 0);
+    } while (n < 0 && errno == EINTR);
+    if (n < 0)
+        throw std::runtime_error(path.string() + ": cannot read image: " + std::strerror(errno));
+    const std::size_t got = static_cast<std::size_t>(n);
+    std::error_code error;
+    const fs::path entry = fs::path("/proc/self/fd") / std::to_string(fd);
+    const fs::path opened = fs::exists(entry, error) ? entry : path;
     for (const ImageFormat* format : kFormats)
         if (format->recognizes(head.data(), got)) {
             const std::string what = path.string() + ": cannot read " + format->name + " image: ";
             try {
-                return format->read(path, max_pixels);
+                return format->read(opened, max_pixels);
             } catch (const ImageTooLarge& e) {
                 throw ImageTooLarge(what + e.what());
             } catch (const std::runtime_error& e) {

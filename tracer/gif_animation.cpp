@@ -18,6 +18,8 @@ namespace fs = std::filesystem;
 namespace {
 
 std::string reason(int code) {
+    // (giflib leaves the code 0 when its first allocation fails.)
+    if (code == 0) return "giflib failed (out of memory?)";
     const char* text = GifErrorString(code);
     return text ? text : "giflib error " + std::to_string(code);
 }
@@ -79,7 +81,7 @@ void write_gif_animation(int fd, int width, int height,
         throw std::runtime_error("a GIF is at most " + std::to_string(kGifMaxSide) +
                                  " pixels a side");
     // giflib closes the descriptor it is given: a copy of the caller's.
-    const int descriptor = ::dup(fd);
+    const int descriptor = ::fcntl(fd, F_DUPFD_CLOEXEC, 0);
     if (descriptor < 0) throw std::runtime_error(std::strerror(errno));
     int error = 0;
     GifFileType* gif = EGifOpenFileHandle(descriptor, &error);
@@ -106,7 +108,7 @@ int count_gif_frames(int fd, int width, int height) {
     int error = 0;
     // (A copy shares the caller's position: both are rewound to the
     // start; giflib closes the copy.)
-    const int descriptor = ::dup(fd);
+    const int descriptor = ::fcntl(fd, F_DUPFD_CLOEXEC, 0);
     if (descriptor < 0 || ::lseek(descriptor, 0, SEEK_SET) != 0) {
         const int system_error = errno;
         if (descriptor >= 0) ::close(descriptor);

@@ -27,16 +27,23 @@ constexpr std::size_t kNameBytes = 4096;
 struct Slot {
     std::atomic<int> state{0};  // 0 free, 1 being filled, 2 registered
     char name[kNameBytes];
+    // The file made there: what is at the name is removed only while it is
+    // still that file (someone else's in its place is left to them).
+    dev_t device = 0;
+    ino_t inode = 0;
 };
 Slot g_slots[kSlots];
 
-int register_temporary(const fs::path& temporary) {
-    const std::string name = temporary.string();
-    if (name.size() + 1 > kNameBytes) return -1;
+int register_temporary(const char* name, int fd) {
+    const std::size_t bytes = std::strlen(name) + 1;
+    struct stat st {};
+    if (bytes > kNameBytes || ::fstat(fd, &st) != 0) return -1;
     for (int i = 0; i < kSlots; ++i) {
         int expected = 0;
         if (!g_slots[i].state.compare_exchange_strong(expected, 1)) continue;
-        std::memcpy(g_slots[i].name, name.c_str(), name.size() + 1);
+        std::memcpy(g_slots[i].name, name, bytes);
+        g_slots[i].device = st.st_dev;
+        g_slots[i].inode = st.st_ino;
         g_slots[i].state.store(2, std::memory_order_release);
         return i;
     }
@@ -72,8 +79,13 @@ extern "C" void on_fatal_signal(int signal) {
 }  // namespace
 
 void remove_registered_temporaries() {
-    for (Slot& slot : g_slots)
-        if (slot.state.load(std::memory_order_acquire) == 2) ::unlink(slot.name);
+    // (lstat and unlink are async-signal-safe.)
+    for (Slot& slot : g_slots) {
+        if (slot.state.load(std::memory_order_acquire) != 2) continue;
+        struct stat st {};
+        if (::lstat(slot.name, &st) == 0 && st.st_dev == slot.device && st.st_ino == slot.inode)
+            ::unlink(slot.name);
+    }
 }
 
 void install_cleanup_on_signals() {
@@ -120,7 +132,7 @@ TemporaryFile::TemporaryFile(const fs::path& path) : path_(path) {
     if (fd_ < 0)
         throw std::runtime_error(path.string() + ": cannot create its temporary file " +
                                  temporary_.string() + ": " + std::strerror(errno));
-    slot_ = register_temporary(temporary_);
+    slot_ = register_temporary(temporary_.c_str(), fd_);  // (allocates nothing: cannot throw)
 }
 
 void TemporaryFile::refuse_other_than_regular(const fs::path& path) {

@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 
+#include <fcntl.h>
 #include <png.h>
 #include <unistd.h>
 
@@ -33,13 +34,12 @@ void write_png(int fd, int width, int height, const void* pixels) {
     image.width = static_cast<png_uint_32>(width);
     image.height = static_cast<png_uint_32>(height);
     image.format = PNG_FORMAT_RGB;  // 8-bit, sRGB
-    // The simplified API checks fflush, ferror and fclose: a full disk is
-    // an error here, not a short file. libpng says only "Write Error"; the
-    // system's reason is in errno.
+    // A stream of its own over a copy of the caller's descriptor (which
+    // stays open). libpng's stdio writer reports only a short fwrite
+    // ("Write Error"), so ferror and fclose are checked here too: a full
+    // disk is an error, not a short file; the system's reason is in errno.
     errno = 0;
-    // (A stream of its own over a copy of the caller's descriptor, which
-    // stays open: fclose's failure, a full disk's last buffer, is checked.)
-    const int copy = ::dup(fd);
+    const int copy = ::fcntl(fd, F_DUPFD_CLOEXEC, 0);
     std::FILE* stream = copy < 0 ? nullptr : ::fdopen(copy, "wb");
     if (!stream) {
         const int system_error = errno;

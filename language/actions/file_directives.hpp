@@ -73,8 +73,8 @@ struct action<g::fclose_id> {
         // POV-Ray closes a file #read to its end by itself; closing it
         // again is no error there either.
         if (!st.user_files.is_open(id)) return;
+        st.symbols.undefine(id);  // (first: closed, the file is gone even if its flush fails)
         st.user_files.close(id);
-        st.symbols.undefine(id);
     }
 };
 template <>

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <catch2/catch.hpp>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "image/image_format.hpp"
@@ -116,4 +117,19 @@ TEST_CASE("an OpenEXR attribute that declares more than the file holds is refuse
         REQUIRE_THROWS_WITH(im::read_stored_image(found / name, 100'000'000),
                             Catch::Contains("is damaged"));
     }
+}
+
+TEST_CASE("an image reader refuses a FIFO or a folder at once", "[image][limits]") {
+    // Issue 45: every reader refuses special files. A FIFO at a frame's
+    // name (--resume) or at error-time's cached reference blocked the
+    // image reader for good, waiting for a writer.
+    const fs::path dir = temp_folder();
+    const fs::path fifo = dir / "frame.png";
+    fs::remove(fifo);
+    REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+    CHECK_THROWS_WITH(im::read_stored_image(fifo),
+                      Catch::Contains("frame.png") && Catch::Contains("not a regular file"));
+    CHECK_THROWS_WITH(im::read_stored_image(dir),
+                      Catch::Contains("not a regular file") || Catch::Contains("directory"));
+    fs::remove_all(dir);
 }
