@@ -44,7 +44,12 @@ struct TextureEvaluator::Shared {
 
 TextureEvaluator::CompiledColour TextureEvaluator::compile(const ColourFunction& colour) {
     CompiledColour out;
-    for (int i = 0; i < 5; ++i) out.c[i] = CompiledScalar(colour.c[i]);
+    if (!colour.depends_on_time()) {
+        for (std::size_t i = 0; i < 5; ++i) out.constant[i] = colour.c[i].constant();
+        return out;
+    }
+    out.tape = std::make_shared<const TimeTape>(
+        TimeTape::compile({colour.c[0], colour.c[1], colour.c[2], colour.c[3], colour.c[4]}));
     return out;
 }
 
@@ -316,34 +321,38 @@ TextureEvaluator::TextureEvaluator(const Texture& texture, const std::optional<I
     if (interior &&
         !(interior->fade_distance.is_constant() && interior->fade_distance.constant() == 0.0)) {
         const ColourFunction& c = interior->fade_colour;
-        fade_ = std::make_shared<const CompiledFade>(
+        parts().fade = std::make_shared<const CompiledFade>(
             CompiledFade{CompiledScalar(interior->fade_distance),
                          CompiledScalar(interior->fade_power),
                          {CompiledScalar(c.c[0]), CompiledScalar(c.c[1]), CompiledScalar(c.c[2])}});
     }
     if (interior && !(interior->ior.is_constant() && interior->ior.constant() == 1.0))
-        ior_ = std::make_shared<const CompiledScalar>(interior->ior);
+        parts().ior = std::make_shared<const CompiledScalar>(interior->ior);
     if (interior && !(interior->caustics.is_constant() && interior->caustics.constant() == 0.0))
-        caustics_ = std::make_shared<const CompiledScalar>(interior->caustics * 45.0);
+        parts().caustics = std::make_shared<const CompiledScalar>(interior->caustics * 45.0);
 }
 
 void TextureEvaluator::set_interior_texture(const Texture& texture,
                                             const std::optional<Interior>& interior) {
     auto made = std::make_shared<TextureEvaluator>(texture, interior);
-    made->set_media(media_);  // (the same interior: its media and key, as the outside's)
-    made->set_interior_key(interior_key_);
+    // (The same interior: its media and key, as the outside's.)
+    if (interior_) {
+        made->set_media(interior_->media);
+        made->set_interior_key(interior_->key);
+    }
     std::shared_ptr<const TextureEvaluator> inside = std::move(made);
     depends_on_time_ = depends_on_time_ || inside->depends_on_time();
     opaque_ = opaque_ && inside->opaque();
-    interior_texture_ = std::move(inside);
+    parts().interior_texture = std::move(inside);
 }
 
 std::optional<TextureEvaluator::Fade> TextureEvaluator::fade_at(double t) const {
-    if (!fade_) return std::nullopt;
+    if (!interior_ || !interior_->fade) return std::nullopt;
+    const CompiledFade& fade = *interior_->fade;
     Fade f;
-    f.distance = fade_->distance.at(t);
-    f.power = fade_->power.at(t);
-    f.colour = {fade_->colour[0].at(t), fade_->colour[1].at(t), fade_->colour[2].at(t)};
+    f.distance = fade.distance.at(t);
+    f.power = fade.power.at(t);
+    f.colour = {fade.colour[0].at(t), fade.colour[1].at(t), fade.colour[2].at(t)};
     // (POV-Ray's test: a distance within its EPSILON of 0 fades nothing.)
     if (!(std::fabs(f.distance) > 1e-10)) return std::nullopt;
     return f;
@@ -452,47 +461,53 @@ TextureEvaluator::CompiledPigment::CompiledPigment(const Pigment& pigment, const
     }
     // (A uv-mapped one: in uv space, through its own transforms alone.)
     uv = pigment.uv_mapping != UvMapping::Off;
-    pattern.emplace(pigment.patterned, pigment.transform, uv ? Transform{} : texture, shared);
+    Patterned& p =
+        patterned.emplace(pigment.patterned, pigment.transform, uv ? Transform{} : texture, shared);
     if (pigment.pattern == Pigment::Pattern::Image) {
-        image = pigment.image_map;
-        filter_all = CompiledScalar(image->filter_all);
-        transmit_all = CompiledScalar(image->transmit_all);
+        p.image = pigment.image_map;
+        p.filter_all = CompiledScalar(p.image->filter_all);
+        p.transmit_all = CompiledScalar(p.image->transmit_all);
         return;
     }
-    if (pattern->kind == nullptr)
+    if (p.pattern.kind == nullptr)
         throw std::logic_error("TextureEvaluator: a pattern without its kind");
     if (!pigment.pigment_map.empty()) {
         // (Each in the space of this pattern: no texture transform of its own.)
         for (const auto& e : pigment.pigment_map)
-            pigments.push_back(
+            p.pigments.push_back(
                 {CompiledScalar(e.value), shared.entry(shared.pigments, *e.pigment)});
         return;
     }
     const ColourMap& written = pigment.colour_map;
     if (written.entries.empty()) {
-        fixed_map = pattern::default_map(pigment.patterned);
+        p.fixed_map = pattern::default_map(pigment.patterned);
     } else if (!written.depends_on_time()) {
         for (const auto& e : written.entries) {
             pattern::MapEntry entry{pattern::single(e.value.constant()), {}};
             for (std::size_t i = 0; i < 5; ++i) entry.colour[i] = e.colour.c[i].constant();
-            fixed_map.push_back(entry);
+            p.fixed_map.push_back(entry);
         }
     } else {
         for (const auto& e : written.entries)
-            map.push_back({CompiledScalar(e.value), compile(e.colour)});
+            p.map.push_back({CompiledScalar(e.value), compile(e.colour)});
     }
 }
 
 std::array<double, 5> TextureEvaluator::CompiledPigment::colour(const glm::dvec3& where,
                                                                 const pattern::Hit& hit) const {
     const double t = hit.t;
-    if (solid)
-        return {solid->c[0].at(t), solid->c[1].at(t), solid->c[2].at(t), solid->c[3].at(t),
-                solid->c[4].at(t)};
-    const CompiledPattern& p = *pattern;
+    if (solid) return solid->at(t);
+    // (Named, not unpacked: a lambda below reads pigments, which clang
+    // before 16 cannot capture from a structured binding.)
+    const Patterned& parts = *patterned;
+    const CompiledPattern& p = parts.pattern;
+    const auto& pigments = parts.pigments;
+    const auto& image = parts.image;
     const pattern::Values v = p.values(hit);
     const glm::dvec3 point = p.point(uv ? glm::dvec3(hit.uv, 0.0) : where, t, v);
-    if (image) return pattern::image_colour(*image, point, t, filter_all.at(t), transmit_all.at(t));
+    if (image)
+        return pattern::image_colour(*image, point, t, parts.filter_all.at(t),
+                                     parts.transmit_all.at(t));
     if (p.kind->average) {
         // POV-Ray's Do_Average_Pigments: every entry at this pattern's
         // point, weighted by its value.
@@ -520,13 +535,11 @@ std::array<double, 5> TextureEvaluator::CompiledPigment::colour(const glm::dvec3
         for (std::size_t i = 0; i < 5; ++i) out[i] = b[i] + pick.f * (c[i] - b[i]);
         return out;
     }
-    if (map.empty()) return pattern::map_colour(fixed_map, value);
+    if (parts.map.empty()) return pattern::map_colour(parts.fixed_map, value);
     std::vector<pattern::MapEntry> entries;
-    entries.reserve(map.size());
-    for (const auto& [entry_value, colour] : map)
-        entries.push_back({pattern::single(entry_value.at(t)),
-                           {colour.c[0].at(t), colour.c[1].at(t), colour.c[2].at(t),
-                            colour.c[3].at(t), colour.c[4].at(t)}});
+    entries.reserve(parts.map.size());
+    for (const auto& [entry_value, colour] : parts.map)
+        entries.push_back({pattern::single(entry_value.at(t)), colour.at(t)});
     return pattern::map_colour(entries, value);
 }
 

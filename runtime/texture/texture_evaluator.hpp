@@ -85,30 +85,40 @@ class TextureEvaluator {
     std::optional<Fade> fade_at(double t) const;
     // The interior's faked caustics' power at time t (Interior::caustics,
     // times 45 as POV-Ray keeps it); 0 without.
-    double caustics_at(double t) const { return caustics_ ? caustics_->at(t) : 0.0; }
+    double caustics_at(double t) const {
+        return interior_ && interior_->caustics ? interior_->caustics->at(t) : 0.0;
+    }
     // The interior's ior at time t (Interior::ior; 1 without).
-    double ior_at(double t) const { return ior_ ? ior_->at(t) : 1.0; }
+    double ior_at(double t) const {
+        return interior_ && interior_->ior ? interior_->ior->at(t) : 1.0;
+    }
     // Whether no light passes it (Texture::opaque), nor its interior
     // texture (POV-Ray's OPAQUE_FLAG wants both).
     bool opaque() const { return opaque_; }
     // The interior's media (null without): one volume shared by every
     // primitive of the object that wrote it, so that a ray knows it is
     // still inside (runtime/objects/object_factory.cpp).
-    const MediaVolume* media() const { return media_.get(); }
-    void set_media(std::shared_ptr<const MediaVolume> media) { media_ = std::move(media); }
+    const MediaVolume* media() const { return interior_ ? interior_->media.get() : nullptr; }
+    void set_media(std::shared_ptr<const MediaVolume> media) {
+        if (media || interior_) parts().media = std::move(media);
+    }
     // The interior's identity as refraction knows it (POV-Ray's Interior:
     // one per object, shared by the members of a CSG and the parts of a
     // mesh that have no interior { } of their own, Parser::Post_Process).
     // Null: the primitive's own, which the primitive stands for.
-    const void* interior_key() const { return interior_key_.get(); }
-    void set_interior_key(std::shared_ptr<const void> key) { interior_key_ = std::move(key); }
+    const void* interior_key() const { return interior_ ? interior_->key.get() : nullptr; }
+    void set_interior_key(std::shared_ptr<const void> key) {
+        if (key || interior_) parts().key = std::move(key);
+    }
 
     // interior_texture { }: the texture a ray meeting the surface from
     // inside sees (POV-Ray's Interior_Texture), compiled with the same
     // interior (and media and key: set both first). Null: none, this one is seen
     // from both sides.
     void set_interior_texture(const Texture& texture, const std::optional<Interior>& interior);
-    const TextureEvaluator* interior_texture() const { return interior_texture_.get(); }
+    const TextureEvaluator* interior_texture() const {
+        return interior_ ? interior_->interior_texture.get() : nullptr;
+    }
 
     // Whether the top layer perturbs the shading normal (normal { }).
     bool has_normal() const;
@@ -120,8 +130,18 @@ class TextureEvaluator {
     glm::dvec3 perturb(const glm::dvec3& normal, const glm::dvec3& world_point, double t) const;
 
   private:
+    // A colour's five channels (rgb, filter, transmit): their values when
+    // none moves, else one tape for the five (56 bytes, not five compiled
+    // scalars' 120: a colour per object is the usual case).
     struct CompiledColour {
-        std::array<CompiledScalar, 5> c;
+        std::array<double, 5> constant{};
+        std::shared_ptr<const TimeTape> tape;  // null when none moves
+        std::array<double, 5> at(double t) const {
+            if (!tape) return constant;
+            std::array<double, 5> out;
+            tape->evaluate(t, out.data());
+            return out;
+        }
     };
     static CompiledColour compile(const ColourFunction& colour);
 
@@ -223,15 +243,24 @@ class TextureEvaluator {
     // pigment map of pigments (each evaluated in this pattern's space).
     struct CompiledPigment final : pattern::PigmentSource {
         std::optional<CompiledColour> solid;
-        // (Boxed: a compiled pattern is about 0.7 KB, and a solid pigment,
-        // the usual one, has none; inline, each of 10^5 spheres paid it.)
-        BoxedOptional<CompiledPattern> pattern;
-        // The colour map: fixed when nothing in it moves, else compiled.
-        std::vector<pattern::MapEntry> fixed_map;
-        std::vector<std::pair<CompiledScalar, CompiledColour>> map;
-        std::vector<std::pair<CompiledScalar, std::shared_ptr<const CompiledPigment>>> pigments;
-        std::shared_ptr<const pattern::ImageMap> image;  // image_map (the pattern places it)
-        CompiledScalar filter_all, transmit_all;
+        // A pattern's pigment: the pattern and its maps.
+        struct Patterned {
+            CompiledPattern pattern;
+            // The colour map: fixed when nothing in it moves, else compiled.
+            std::vector<pattern::MapEntry> fixed_map;
+            std::vector<std::pair<CompiledScalar, CompiledColour>> map;
+            std::vector<std::pair<CompiledScalar, std::shared_ptr<const CompiledPigment>>> pigments;
+            std::shared_ptr<const pattern::ImageMap> image;  // image_map (the pattern places it)
+            CompiledScalar filter_all, transmit_all;
+
+            Patterned(const pattern::Pattern& source, const Transform& last,
+                      const Transform& texture, Shared& shared)
+                : pattern(source, last, texture, shared) {}
+        };
+        // (Boxed: a compiled pattern and its maps are about 0.8 KB, and a
+        // solid pigment, the usual one, has none; inline, each of 10^5
+        // spheres paid them. A solid pigment is 88 bytes.)
+        BoxedOptional<Patterned> patterned;
         bool uv = false;  // uv_mapping: read at (u, v, 0), nothing around it applied
 
         CompiledPigment(const Pigment& pigment, const Transform& texture, Shared& shared);
@@ -317,16 +346,23 @@ class TextureEvaluator {
     std::shared_ptr<const CompiledTexture> texture_;  // shared by copies
     bool depends_on_time_ = false;
     bool opaque_ = true;
-    std::shared_ptr<const MediaVolume> media_;
-    std::shared_ptr<const void> interior_key_;  // null: the primitive's own
     struct CompiledFade {
         CompiledScalar distance, power;
         std::array<CompiledScalar, 3> colour;
     };
-    std::shared_ptr<const CompiledFade> fade_;                  // null: no fading
-    std::shared_ptr<const CompiledScalar> caustics_;            // null: none
-    std::shared_ptr<const CompiledScalar> ior_;                 // null: 1
-    std::shared_ptr<const TextureEvaluator> interior_texture_;  // null: none
+    // What an interior brings, each null where it brings nothing.
+    struct InteriorParts {
+        std::shared_ptr<const MediaVolume> media;
+        std::shared_ptr<const void> key;                           // null: the primitive's own
+        std::shared_ptr<const CompiledFade> fade;                  // null: no fading
+        std::shared_ptr<const CompiledScalar> caustics;            // null: none
+        std::shared_ptr<const CompiledScalar> ior;                 // null: 1
+        std::shared_ptr<const TextureEvaluator> interior_texture;  // null: none
+    };
+    // (Boxed, absent without any: most objects have none, and each of
+    // 10^5 spheres paid 96 bytes for them inline.)
+    BoxedOptional<InteriorParts> interior_;
+    InteriorParts& parts() { return interior_ ? *interior_ : interior_.emplace(); }
 };
 
 }  // namespace hexant::runtime
