@@ -14,6 +14,7 @@
 #include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
 #include <limits>
 #include <memory>
@@ -66,6 +67,7 @@ struct Options {
     std::optional<std::string> write_images;
     std::vector<int> swarm_counts{1000, 10000, 100000};  // N of each swarm job
     std::size_t frames_max = 20000;  // hexant's frames mode only up to this many objects
+    int rounds = 3;                  // runs of each method; the table gives medians
 };
 
 // One scene as the benchmark runs it, everything resolved.
