@@ -7,7 +7,7 @@
 #include "runtime/bounds/occupancy_sampling.hpp"
 #include "runtime/bounds/swept_bound.hpp"
 #include "runtime/geometry/offset_ray.hpp"
-#include "runtime/objects/rigid_chord_bound.hpp"
+#include "runtime/objects/rigid_bounds.hpp"
 
 namespace hexant::runtime {
 
@@ -49,29 +49,14 @@ InstanceObject::InstanceObject(std::vector<IntelligentObjectPtr> members,
 
 void InstanceObject::bound(const Box4& region, std::vector<SlabBound>& out) const {
     if (region.is_empty() || members_.empty()) return;
-    if (!moves()) {
-        SlabBound b = SlabBound::empty();
-        const Box4 piece = piece_box(motion_.world_box(box_, Interval(0.0)), region.time(), region);
-        if (piece.is_empty()) return;
-        b.add(piece);
-        b.clip(region);
-        if (!b.is_empty()) out.push_back(b);
-        return;
-    }
-    std::vector<Box4> pieces;
-    swept_pieces(
-        region, region.time(), 0, [this](const Interval& t) { return motion_.world_box(box_, t); },
-        pieces);
-    append_swept_bounds(pieces, region, out);
+    const auto world_box_over = [this](const Interval& t) { return motion_.world_box(box_, t); };
+    append_rigid_bounds(region, moves(), moves() ? IntervalBox{} : world_box_over(Interval(0.0)),
+                        world_box_over, out);
 }
 
 Box4 InstanceObject::box_over(const Interval& t) const {
     if (t.is_empty() || members_.empty()) return Box4::empty();
-    const IntervalBox world = motion_.world_box(box_, t);
-    Box4 box;
-    box.lo = Event(world[0].lo, world[1].lo, world[2].lo, t.lo);
-    box.hi = Event(world[0].hi, world[1].hi, world[2].hi, t.hi);
-    return box;
+    return box_over_time(motion_.world_box(box_, t), t);
 }
 
 std::optional<IntelligentObject::ChordBound> InstanceObject::chord_bound_over(

@@ -29,7 +29,7 @@
 #include "runtime/motion/normal_transform.hpp"
 #include "runtime/objects/intelligent_object.hpp"
 #include "runtime/objects/model_support.hpp"
-#include "runtime/objects/rigid_chord_bound.hpp"
+#include "runtime/objects/rigid_bounds.hpp"
 #include "runtime/texture/texture_evaluator.hpp"
 
 namespace hexant::runtime {
@@ -118,33 +118,18 @@ class Primitive final : public IntelligentObject {
             bound_by_pieces(region, out);
             return;
         }
-        if (!moves_) {
-            const Box4 piece = piece_box(still_->world_box, region.time(), region);
-            if (piece.is_empty()) return;
-            SlabBound b = SlabBound::empty();
-            b.add(piece);
-            b.clip(region);
-            if (!b.is_empty()) out.push_back(b);
-            return;
-        }
-        std::vector<Box4> pieces;
-        swept_pieces(
-            region, region.time(), 0, [this](const Interval& t) { return world_box_over(t); },
-            pieces);
-        append_swept_bounds(pieces, region, out);
+        append_rigid_bounds(
+            region, moves_, moves_ ? IntervalBox{} : still_->world_box,
+            [this](const Interval& t) { return world_box_over(t); }, out);
     }
 
     Box4 box_over(const Interval& t) const override {
         if constexpr (kUnbounded) return Box4::empty();
         if (t.is_empty()) return Box4::empty();
-        const IntervalBox world = moves_ ? world_box_over(t) : still_->world_box;
-        Box4 box;
-        box.lo = Event(world[0].lo, world[1].lo, world[2].lo, t.lo);
-        box.hi = Event(world[0].hi, world[1].hi, world[2].hi, t.hi);
-        return box;
+        return box_over_time(moves_ ? world_box_over(t) : still_->world_box, t);
     }
 
-    // A rigid shape on an affine motion: rigid_chord_bound.hpp's.
+    // A rigid shape on an affine motion: rigid_bounds.hpp's.
     std::optional<ChordBound> chord_bound_over(const Interval& t) const override {
         if constexpr (kUnbounded) return std::nullopt;
         if (!moves_ || !model_.is_static() || !motion_.is_affine() || !(t.lo <= t.hi))

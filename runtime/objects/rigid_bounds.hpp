@@ -1,17 +1,50 @@
-// The chord bound (IntelligentObject::chord_bound_over) of a shape that does
-// not change, carried by an affine motion: a primitive of a fixed shape, an
-// instance's members (instance_object.hpp).
+// The bounds of a shape that does not change, carried by its motion: a
+// primitive of a fixed shape and an instance's members
+// (instance_object.hpp) answer bound(), box_over() and chord_bound_over()
+// alike from the world box over a time (the placed box's interval over it).
 #pragma once
 
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <vector>
 
+#include "runtime/bounds/swept_bound.hpp"
 #include "runtime/motion/motion.hpp"
 #include "runtime/objects/intelligent_object.hpp"
 #include "runtime/objects/model_support.hpp"
 
 namespace hexant::runtime {
+
+// IntelligentObject::bound over `region` (not empty): where the shape
+// stands still, its one world box `still` clipped to the region; else the
+// swept pieces (swept_bound.hpp) of `world_box_over`, a callable from an
+// Interval of time to the IntervalBox that holds the shape over it.
+template <class WorldBoxOver>
+void append_rigid_bounds(const Box4& region, bool moves, const IntervalBox& still,
+                         const WorldBoxOver& world_box_over, std::vector<SlabBound>& out) {
+    if (!moves) {
+        const Box4 piece = piece_box(still, region.time(), region);
+        if (piece.is_empty()) return;
+        SlabBound b = SlabBound::empty();
+        b.add(piece);
+        b.clip(region);
+        if (!b.is_empty()) out.push_back(b);
+        return;
+    }
+    std::vector<Box4> pieces;
+    swept_pieces(region, region.time(), 0, world_box_over, pieces);
+    append_swept_bounds(pieces, region, out);
+}
+
+// IntelligentObject::box_over: the world box over t (not empty) with t as
+// its time.
+inline Box4 box_over_time(const IntervalBox& world, const Interval& t) {
+    Box4 box;
+    box.lo = Event(world[0].lo, world[1].lo, world[2].lo, t.lo);
+    box.hi = Event(world[0].hi, world[1].hi, world[2].hi, t.hi);
+    return box;
+}
 
 // Over t, the motion's second derivative (interval jets, interval_jet.hpp)
 // applied to the object box p, x'' = M''(t) (p, 1); the margin is twice the
