@@ -37,8 +37,15 @@ struct CurvedPathHit {
 // stiff twists (tests/runtime/object_intersect_test.cpp, to 1e-8) allows.
 inline constexpr double kCurvedPathRelativeWidth = 1e-6;
 // A hard limit on pieces examined, so a pathological path cannot hang the
-// tracer; reaching it means a miss (counted by the caller's tests).
-inline constexpr int kCurvedPathMaxPieces = 1 << 16;
+// tracer; reaching it means a miss (counted by the caller's tests). 2^16
+// was too few for a legitimate stiff case: a lathe twisted 10,800 degrees
+// about an axis 6 degrees off its own, met by a ray nearly along that
+// axis, whose path skims the surface (the path's helix keeps its distance
+// from the axis, the pieces' axis-aligned boxes do not) and needs 176,895
+// pieces before its first root (object_intersect_test.cpp's ray 73 once
+// its draws stopped depending on the compiler). At about 0.5 microseconds
+// a piece, a search that reaches the limit takes about 0.14 s.
+inline constexpr int kCurvedPathMaxPieces = 1 << 18;
 // The limit in force: kCurvedPathMaxPieces, or lower where a caller asks.
 // The fuzzer lowers it as it lowers the language's loop limits (tests/fuzz/):
 // a search that meets the limit is bounded work, not a hang, but an 8 by 8

@@ -107,8 +107,9 @@ inline glm::dvec3 sample_object_surface(const rt::Shape& shape, double t, Random
     if (const auto* b = std::get_if<rt::Box>(&shape)) {
         const glm::dvec3 c1 = vec(b->corner1, t), c2 = vec(b->corner2, t);
         const glm::dvec3 lo = glm::min(c1, c2), hi = glm::max(c1, c2);
-        glm::dvec3 p(random.uniform(lo.x, hi.x), random.uniform(lo.y, hi.y),
-                     random.uniform(lo.z, hi.z));
+        // (Braces: the draws in the order written, whatever the compiler.)
+        glm::dvec3 p{random.uniform(lo.x, hi.x), random.uniform(lo.y, hi.y),
+                     random.uniform(lo.z, hi.z)};
         const int face = random.integer(0, 5);
         p[face % 3] = face < 3 ? lo[face % 3] : hi[face % 3];
         return p;
@@ -230,7 +231,7 @@ inline glm::dvec3 sample_object_surface(const rt::Shape& shape, double t, Random
             return {q.x, q.y, random.uniform(std::min(0.0, depth), std::max(0.0, depth))};
         }
         for (int tries = 0; tries < 100000; ++tries) {
-            const glm::dvec2 q(random.uniform(g.lo.x, g.hi.x), random.uniform(g.lo.y, g.hi.y));
+            const glm::dvec2 q{random.uniform(g.lo.x, g.hi.x), random.uniform(g.lo.y, g.hi.y)};
             if (rt::geometry::inside_outline(g, q)) return {q.x, q.y, part == 1 ? 0.0 : depth};
         }
         throw std::logic_error("sample_object_surface: no point inside a glyph");
@@ -365,8 +366,8 @@ inline glm::dvec3 sample_object_surface(const rt::Shape& shape, double t, Random
         const glm::dvec3 hi = iso->sphere_container ? centre + radius : glm::max(c1, c2);
         const double span = glm::length(hi - lo);
         for (int tries = 0; tries < 100000; ++tries) {
-            glm::dvec3 in(random.uniform(lo.x, hi.x), random.uniform(lo.y, hi.y),
-                          random.uniform(lo.z, hi.z));
+            glm::dvec3 in{random.uniform(lo.x, hi.x), random.uniform(lo.y, hi.y),
+                          random.uniform(lo.z, hi.z)};
             if (!in_solid(in)) continue;
             glm::dvec3 out = in + 2.0 * span * random.unit_vector();
             for (int k = 0; k < 200; ++k) {
@@ -425,7 +426,7 @@ inline glm::dvec3 sample_object_surface(const rt::Shape& shape, double t, Random
             return true;
         };
         for (int tries = 0; tries < 1000000; ++tries) {
-            glm::dvec3 in(random.uniform(-r, r), random.uniform(-r, r), random.uniform(-r, r));
+            glm::dvec3 in{random.uniform(-r, r), random.uniform(-r, r), random.uniform(-r, r)};
             if (!in_set(in)) continue;
             glm::dvec3 out = in + 5.0 * r * random.unit_vector();
             for (int k = 0; k < 200; ++k) {
