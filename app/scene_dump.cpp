@@ -184,7 +184,7 @@ std::string texture(const runtime::Texture& x, double t, Shared& shared) {
 std::string layer(const runtime::Texture& texture, double t, Shared& shared) {
     std::string s = "pigment=" + pigment(texture.pigment, t, shared);
     if (texture.normal) s += " normal=" + normal(*texture.normal, t, shared);
-    const auto& f = texture.finish;
+    const runtime::Finish& f = texture.finish;
     // (ambient: a number when grey, else its colour)
     const double a[3] = {f.ambient[0](t), f.ambient[1](t), f.ambient[2](t)};
     const std::string ambient =

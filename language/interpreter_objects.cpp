@@ -184,7 +184,7 @@ template <class Visit>
 void for_each_unrendered(const runtime::Texture& texture, std::set<const void*>& seen,
                          Visit& visit) {
     if (!seen.insert(&texture).second) return;
-    for (const auto& note : texture.finish.unrendered) visit(note);
+    for (const auto& note : texture.finish->unrendered) visit(note);
     for (const auto& layer : texture.below) for_each_unrendered(layer, seen, visit);
     for (const auto& entry : texture.texture_map) for_each_unrendered(*entry.texture, seen, visit);
 }

@@ -47,6 +47,7 @@
 #include "language/value_ops.hpp"
 #include "language/value_stack.hpp"
 #include "runtime/scene/scene.hpp"
+#include "runtime/texture/finish_pool.hpp"
 #include "runtime/time/switching_instants.hpp"
 
 namespace hexant::language {
@@ -256,6 +257,8 @@ class Interpreter {
     std::optional<runtime::Normal> default_normal_start;
     // Patterns read so far (a global noise_generator after them is warned).
     std::size_t patterns_written = 0;
+    // Every finish { } written, as one block per distinct finish.
+    runtime::FinishPool finishes;
 
     // ---- directives, called by the custom rules in grammar.hpp
     template <typename Item, template <typename...> class Action,

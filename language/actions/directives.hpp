@@ -160,7 +160,7 @@ struct action<g::default_item> {
             else
                 texture.normal = normal;
         } else if (v.is<runtime::Finish>())
-            texture.finish = v.as<runtime::Finish>();
+            texture.finish = st.finishes.share(std::move(v.as<runtime::Finish>()));
         // Checked here, at the #default: the objects that take it are
         // checked for their own parameters only.
         if (auto problem = runtime::bad_parameter(texture, "the #default", st.scene.animation))

@@ -400,7 +400,7 @@ struct action<g::finish_open> {
         // #default one's.
         refuse_patterned_edit(st, "finish");
         const runtime::Texture* texture = texture_being_written(st);
-        st.blocks.open(texture ? texture->finish : runtime::Finish());
+        st.blocks.open(texture ? texture->finish.get() : runtime::Finish());
     }
 };
 template <>
@@ -742,7 +742,8 @@ struct action<g::texture_finish> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.values.pop();
-        st.blocks.edit<runtime::Texture>(in.position(), "finish").finish = v.as<runtime::Finish>();
+        st.blocks.edit<runtime::Texture>(in.position(), "finish").finish =
+            st.finishes.share(std::move(v.as<runtime::Finish>()));
     }
 };
 template <>

@@ -231,7 +231,8 @@ struct action<g::object_finish> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         Value v = st.values.pop();
-        object_texture(st, in.position()).finish = v.as<runtime::Finish>();
+        object_texture(st, in.position()).finish =
+            st.finishes.share(std::move(v.as<runtime::Finish>()));
     }
 };
 template <>

@@ -11,6 +11,7 @@
 #include "runtime/boxed_optional.hpp"
 #include "runtime/motion/transform.hpp"
 #include "runtime/scene/media.hpp"
+#include "runtime/shared_value.hpp"
 #include "runtime/source_place.hpp"
 #include "runtime/sparse_value.hpp"
 #include "runtime/texture/pattern/image_map.hpp"
@@ -240,7 +241,8 @@ struct TextureMapEntry {
 struct Texture {
     Pigment pigment;
     BoxedOptional<Normal> normal;  // (boxed: most textures have none)
-    Finish finish;
+    // (Shared: equal finishes are one block, FinishPool.)
+    SharedValue<Finish> finish;
     // Texture space to object space. For a patterned texture the pattern's
     // own: its transforms after its last warp, then the object's.
     Transform transform;

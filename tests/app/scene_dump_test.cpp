@@ -92,8 +92,8 @@ TEST_CASE("dump: a moving sphere with its matrix and texture", "[app][dump]") {
     sphere->transform.append(step(rt::TransformKind::Scale, vec(2.0, 2.0, 2.0)));
     rt::Texture texture;
     texture.pigment.colours[0] = rt::ColourFunction{{1.0, 0.5, symbolic_clock(), 0.0, 0.0}};
-    texture.finish.phong = 1.0;
-    texture.finish.reflection = rt::ColourFunction{{0.25, 0.25, 0.25, 0.0, 0.0}};
+    texture.finish.edit().phong = 1.0;
+    texture.finish.edit().reflection = rt::ColourFunction{{0.25, 0.25, 0.25, 0.0, 0.0}};
     sphere->texture = texture;
     sphere->no_shadow = true;
     scene.objects.push_back(sphere);

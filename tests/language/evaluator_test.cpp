@@ -231,8 +231,8 @@ TEST_CASE("each scene item makes its record", "[evaluator]") {
     REQUIRE(last.texture);
     CHECK(last.texture->pigment.pattern == hexant::runtime::Pigment::Pattern::Patterned);
     CHECK(last.texture->pigment.patterned->kind->name == "checker");
-    CHECK(last.texture->finish.phong.constant() == 0.5);
-    CHECK(last.texture->finish.reflection.c[0].constant() == 0.25);
+    CHECK(last.texture->finish->phong.constant() == 0.5);
+    CHECK(last.texture->finish->reflection.c[0].constant() == 0.25);
     CHECK(last.interior->ior.constant() == 1.5);
     CHECK(last.no_shadow);
     const auto camera = s.camera.evaluate(0.0);

@@ -113,7 +113,7 @@ TEST_CASE("texture_map, normal_map, slope_map and block lists read as POV-Ray re
     REQUIRE(a.texture_map.size() == 2);
     CHECK(a.texture_map[0].value.constant() == Approx(0.2));
     CHECK(a.texture_map[0].texture->normal.has_value());
-    CHECK(a.texture_map[1].texture->finish.phong.constant() == 1.0);
+    CHECK(a.texture_map[1].texture->finish->phong.constant() == 1.0);
     CHECK(!a.transform.empty());  // the pattern's own scale
     const rt::Texture& b = texture_of(scene, 1);
     REQUIRE(b.texture_map.size() == 2);

@@ -527,8 +527,8 @@ union { sphere { 0, 1 } sphere { x, 1 }
     // (The first switch is after 0.5: clock > 0.5 holds from next_up(0.5).)
     check_switch(*scene.objects[0]->texture, std::nextafter(0.5, 1.0));
     const auto& when_true = *scene.objects[0]->texture->texture_map[1].texture;
-    CHECK(when_true.finish.phong.constant() == 1.0);
-    CHECK(scene.objects[0]->texture->texture_map[0].texture->finish.phong.constant() == 0.0);
+    CHECK(when_true.finish->phong.constant() == 1.0);
+    CHECK(scene.objects[0]->texture->texture_map[0].texture->finish->phong.constant() == 0.0);
     // The union: both cones (each living on its side) and the switching texture.
     const auto& csg = std::get<rt::Csg>(scene.objects[1]->shape);
     CHECK(csg.children.size() == 4);

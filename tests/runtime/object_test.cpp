@@ -69,7 +69,7 @@ TEST_CASE("each part of an object that may depend on time", "[runtime][object]")
         CHECK(plane->texture_depends_on_time());
         CHECK(plane->depends_on_time());
         texture = rt::Texture{};
-        texture.finish.reflection.c[1] = symbolic_clock();
+        texture.finish.edit().reflection.c[1] = symbolic_clock();
         plane->texture = texture;
         CHECK(plane->depends_on_time());
         // (A pattern's transform: a plain colour does not read its own.)

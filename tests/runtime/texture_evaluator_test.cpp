@@ -16,7 +16,7 @@ namespace {
 
 rt::Texture texture_with(double phong, double red) {
     rt::Texture t;
-    t.finish.phong = phong;
+    t.finish.edit().phong = phong;
     t.pigment.colours[0].c[0] = red;
     return t;
 }
@@ -47,7 +47,7 @@ TEST_CASE("textures answer with their own finish, shared or not", "[runtime][tex
     CHECK(plain.at({0, 0, 0}, {0, 0}, 0.0).ior == 1.0);
 
     rt::Texture timed = texture_with(0.6, 1.0);
-    timed.finish.phong = rt::TimeFunction::clock();
+    timed.finish.edit().phong = rt::TimeFunction::clock();
     const rt::TextureEvaluator moving(timed, none);
     CHECK(moving.depends_on_time());
     CHECK(moving.at({0, 0, 0}, {0, 0}, 0.25).phong == 0.25);

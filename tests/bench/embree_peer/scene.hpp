@@ -322,7 +322,7 @@ class Converter {
             texture.pigment.uv_mapping != runtime::UvMapping::Off)
             refuse(record, "uv_mapping");
         for (int k = 0; k < 3; ++k)
-            if (!is_zero(texture.finish.reflection.c[k])) refuse(record, "reflection");
+            if (!is_zero(texture.finish->reflection.c[k])) refuse(record, "reflection");
         for (const auto& colour : texture.pigment.colours)
             if (!is_zero(colour.c[3]) || !is_zero(colour.c[4]))
                 refuse(record, "filter or transmit (refraction)");
