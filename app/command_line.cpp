@@ -6,13 +6,18 @@
 #include <ostream>
 #include <stdexcept>
 
+#include "app/povray_words.hpp"
 #include "language/scene_error.hpp"
 #include "language/source_files.hpp"
 
 namespace hexant::app {
 
 void add_scene_arguments(CLI::App& command, SceneArguments& a) {
-    command.add_option("files", a.files, "The scene (.pov) and POV-Ray .ini files, in order")
+    command
+        .add_option("files", a.files,
+                    "The scene (.pov), POV-Ray .ini files, POV-Ray 3.7 switches (+W640 +KFF60 "
+                    "-D ...) and Key=Value options, applied in order; the flags below override "
+                    "them")
         ->required();
     command.add_option("-W,--width", a.width, "Image width in pixels (default 320)");
     command.add_option("-H,--height", a.height, "Image height in pixels (default 240)");
@@ -116,15 +121,22 @@ double full_number(const std::string& text) {
     return v;
 }
 
-// The Library_Path folders of the .ini files that a scene may read from:
-// inside the scene's folder, an --allow-read folder or POV-Ray's include
-// folder. An .ini travels with a downloaded scene, so its Library_Path=/etc
-// must not widen what the scene reads (issue 45); one outside is left out
-// of the search, with a warning naming its line.
+// A Library_Path or +L folder, where it was given.
+struct LibraryFolder {
+    std::filesystem::path folder;
+    std::string place;
+    bool from_ini;
+};
+
+// The library folders in order, those of the .ini files only if a scene
+// may read from them: inside the scene's folder, an --allow-read folder or
+// POV-Ray's include folder. An .ini travels with a downloaded scene, so its
+// Library_Path=/etc must not widen what the scene reads (issue 45); one
+// outside is left out of the search, with a warning naming its line. A +L
+// on the command line is the user's own, as -L.
 std::vector<std::filesystem::path> confined_library_paths(
-    const std::vector<std::pair<std::filesystem::path, std::string>>& given,
-    const std::filesystem::path& scene, const std::vector<std::filesystem::path>& allowed_reads,
-    std::vector<std::string>& warnings) {
+    const std::vector<LibraryFolder>& given, const std::filesystem::path& scene,
+    const std::vector<std::filesystem::path>& allowed_reads, std::vector<std::string>& warnings) {
     namespace fs = std::filesystem;
     std::error_code error;
     std::vector<fs::path> roots{fs::absolute(scene, error).parent_path(),
@@ -132,11 +144,12 @@ std::vector<std::filesystem::path> confined_library_paths(
     roots.insert(roots.end(), allowed_reads.begin(), allowed_reads.end());
     for (auto& root : roots) root = fs::weakly_canonical(root.empty() ? "." : root, error);
     std::vector<fs::path> kept;
-    for (const auto& [folder, place] : given) {
+    for (const auto& [folder, place, from_ini] : given) {
         const fs::path real = fs::weakly_canonical(folder, error);
-        const bool inside = std::any_of(roots.begin(), roots.end(), [&](const fs::path& root) {
-            return language::lies_in(real, root);
-        });
+        const bool inside =
+            !from_ini || std::any_of(roots.begin(), roots.end(), [&](const fs::path& root) {
+                return language::lies_in(real, root);
+            });
         if (inside)
             kept.push_back(folder);
         else
@@ -148,37 +161,71 @@ std::vector<std::filesystem::path> confined_library_paths(
     return kept;
 }
 
+// What one command-line word that is no .ini file and no scene sets: a
+// POV-Ray switch or Key=Value option; none for any other word.
+std::optional<language::PovRaySettings> povray_word(const std::string& word) {
+    language::PovRaySettings one;
+    if (const auto minus = minus_switch(word)) {
+        if (!language::apply_povray_switch(*minus, "", "", one))
+            throw std::runtime_error(*minus + ": not a POV-Ray 3.7 switch");
+        return one;
+    }
+    if (word.size() >= 2 && word[0] == '+') {
+        if (!language::apply_povray_switch(word, "", "", one))
+            throw std::runtime_error(word +
+                                     ": not a POV-Ray 3.7 switch (hexant's own flags begin "
+                                     "with --: `hexant render --help` lists them)");
+        return one;
+    }
+    const auto eq = word.find('=');
+    if (eq == std::string::npos || eq == 0 || !language::is_povray_option_key(word.substr(0, eq)))
+        return std::nullopt;
+    language::apply_povray_option(word.substr(0, eq), word.substr(eq + 1), "", "", one);
+    return one;
+}
+
 }  // namespace
 
 ResolvedScene resolve(const SceneArguments& arguments) {
     ResolvedScene r;
-    std::string named_scene;  // a scene on the command line wins over Input_File_Name
-    std::vector<std::pair<std::filesystem::path, std::string>> ini_library_paths;
-    for (const auto& file : arguments.files) {
-        if (const auto ini = language::ini_reference(file)) {
-            const std::size_t before = r.options.include_paths.size();
-            const language::IniSettings settings = language::read_ini_file(ini->file, ini->section);
-            language::apply_ini_settings(settings, r.options, r.scene);
+    std::string named_scene;   // a scene on the command line wins over Input_File_Name
+    std::string scene_switch;  // ... but not over +I or Input_File_Name= there
+    std::vector<LibraryFolder> library;
+    for (const auto& word : arguments.files) {
+        language::PovRaySettings one;
+        const auto ini = language::ini_reference(word);
+        if (ini) {
+            one = language::read_ini_file(ini->file, ini->section);
             std::error_code error;
             if (auto real = std::filesystem::canonical(ini->file, error); !error)
                 r.ini_files.push_back(std::move(real));
-            r.warnings.insert(r.warnings.end(), settings.warnings.begin(), settings.warnings.end());
-            // (Confined below, once the scene and --allow-read are known.)
-            for (std::size_t i = before; i < r.options.include_paths.size(); ++i)
-                ini_library_paths.emplace_back(r.options.include_paths[i],
-                                               settings.library_path_places.at(i - before));
-            r.options.include_paths.resize(before);
+        } else if (auto settings = povray_word(word)) {
+            one = std::move(*settings);
+            if (one.input_file) scene_switch = minus_switch(word).value_or(word);
         } else {
             if (!named_scene.empty())
                 throw std::runtime_error("more than one scene named: " + named_scene + " and " +
-                                         file);
-            named_scene = file;
+                                         word);
+            named_scene = word;
+            continue;
         }
+        // (Confined below, once the scene and --allow-read are known.)
+        for (std::size_t i = 0; i < one.library_paths.size(); ++i)
+            library.push_back({one.library_paths[i], one.library_path_places.at(i), bool(ini)});
+        one.library_paths.clear();
+        one.library_path_places.clear();
+        language::overlay(r.povray, one);
     }
+    if (!named_scene.empty() && !scene_switch.empty())
+        throw std::runtime_error("more than one scene named: " + named_scene + " and " +
+                                 scene_switch);
+    language::apply_ini_settings(r.povray, r.options, r.scene);
+    r.warnings = r.povray.warnings;
+    if (r.povray.clock) r.at_clock = r.povray.clock->value;
     if (!named_scene.empty()) r.scene = named_scene;
     if (r.scene.empty())
         throw std::runtime_error(
-            "no scene: name a .pov file or set Input_File_Name in an .ini file");
+            "no scene: name a .pov file (or +Iscene.pov), or set Input_File_Name in an .ini file");
     auto& a = r.options.animation;
     if (arguments.width) a.width = *arguments.width;
     if (arguments.height) a.height = *arguments.height;
@@ -189,6 +236,7 @@ ResolvedScene resolve(const SceneArguments& arguments) {
     if (arguments.clock_range) {
         const std::string& text = *arguments.clock_range;
         const auto colon = text.find(':');
+        r.at_clock.reset();  // (over +K or Clock=)
         try {
             if (colon == std::string::npos) {
                 r.at_clock = full_number(text);
@@ -212,7 +260,7 @@ ResolvedScene resolve(const SceneArguments& arguments) {
     if (arguments.rolling_shutter) a.rolling_shutter = *arguments.rolling_shutter;
     for (const auto& path : arguments.read_paths) r.options.read_paths.emplace_back(path);
     r.options.include_paths =
-        confined_library_paths(ini_library_paths, r.scene, r.options.read_paths, r.warnings);
+        confined_library_paths(library, r.scene, r.options.read_paths, r.warnings);
     for (const auto& path : arguments.include_paths) r.options.include_paths.emplace_back(path);
     for (const auto& path : arguments.write_paths) r.options.write_paths.emplace_back(path);
     // The default output folder, as render's default -o (render sets its own).

@@ -1,6 +1,7 @@
 // The shape every subcommand shares:
-//   hexant SUBCOMMAND SCENE.pov [FILE.ini ...] [flags]
-// POV-Ray .ini files apply in order, then flags override them.
+//   hexant SUBCOMMAND SCENE.pov [FILE.ini ...] [POV-Ray switches] [flags]
+// POV-Ray .ini files, switches (+W640, -D) and Key=Value options apply in
+// the order written, as in POV-Ray; then hexant's flags override them.
 #pragma once
 
 #include <cstdint>
@@ -20,7 +21,9 @@ namespace hexant::app {
 
 // What the command line says, before it is resolved into ParseOptions.
 struct SceneArguments {
-    std::vector<std::string> files;  // the scene and .ini files, in order
+    // The scene, .ini files, POV-Ray switches and Key=Value options, in
+    // order (a switch beginning with - marked: app/povray_words.hpp).
+    std::vector<std::string> files;
     std::optional<int> width, height, frame_count;
     std::optional<std::string> clock_range;  // A:B
     bool cyclic = false;
@@ -47,14 +50,20 @@ struct ResolvedScene {
     std::filesystem::path scene;
     language::ParseOptions options;
     std::vector<std::string> warnings;             // from .ini files
-    std::optional<double> at_clock;                // --clock C
+    std::optional<double> at_clock;                // --clock C, or POV-Ray's +K
     std::vector<std::filesystem::path> ini_files;  // read, canonical (inputs too)
+    // Every POV-Ray option the .ini files and switches set, the last of
+    // each (what `render` maps onto its flags: app/povray_render_options).
+    language::PovRaySettings povray;
 };
 
-// Applies the .ini files in order (a word ending in .ini, or .ini[Label] to
-// select a section, is an .ini file; any other is the scene), then the flags.
-// Throws std::runtime_error naming the file and line of a bad .ini setting,
-// or a bad flag.
+// Applies the words in order: an .ini file (a word ending in .ini, or
+// .ini[Label] to select a section), a POV-Ray switch (+W640, or a marked
+// -D), a POV-Ray `Key=Value` option, or else the scene; then the flags.
+// A scene named as a word wins over an .ini's Input_File_Name; one named
+// both as a word and by +I or Input_File_Name= on the command line is an
+// error. Throws std::runtime_error naming the file and line of a bad .ini
+// setting, the switch of a bad or unknown switch, or a bad flag.
 ResolvedScene resolve(const SceneArguments& arguments);
 
 // Runs a subcommand's body; a scene error is printed with its place and

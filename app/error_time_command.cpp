@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "app/log_log_plot.hpp"
+#include "app/povray_render_options.hpp"
 #include "app/scene_reading.hpp"
 #include "language/interpreter.hpp"
 #include "tracer/image_compare.hpp"
@@ -233,6 +234,7 @@ int run_error_time(const ErrorTimeArguments& args, std::ostream& out, std::ostre
     return run_reporting_errors(err, [&] {
         const ResolvedScene resolved = resolve(args.scene);
         for (const auto& warning : resolved.warnings) err << warning << "\n";
+        note_render_only(resolved, "bench error-time", err);
         SceneReading reading(resolved, err);
         const runtime::Animation a = reading.scene().animation;
         const int frame = args.frame.value_or((a.initial_frame + a.final_frame) / 2);

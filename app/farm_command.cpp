@@ -10,6 +10,8 @@
 #include <CLI/CLI.hpp>
 
 #include "app/command_line.hpp"
+#include "app/povray_render_options.hpp"
+#include "app/povray_words.hpp"
 #include "app/render_command.hpp"
 #include "app/scene_reading.hpp"
 #include "language/interpreter.hpp"
@@ -113,7 +115,9 @@ void check_render_words(const FarmArguments& args, std::string& scene_stem) {
     CLI::App render;
     RenderArguments parsed;
     add_render_arguments(render, parsed);
-    std::vector<std::string> reversed(args.render.rbegin(), args.render.rend());
+    std::vector<std::string> words = args.render;
+    mark_minus_switches(words);
+    std::vector<std::string> reversed(words.rbegin(), words.rend());
     try {
         render.parse(reversed);
     } catch (const CLI::RequiredError&) {
@@ -122,6 +126,8 @@ void check_render_words(const FarmArguments& args, std::string& scene_stem) {
         throw std::runtime_error(std::string("the render flags: ") + e.what());
     }
     ResolvedScene resolved = resolve(parsed.scene);
+    std::vector<std::string> notes;  // (each task's render says them)
+    parsed = with_povray_options(parsed, resolved, notes);
     SceneReading reading(resolved, std::cerr);
     const runtime::SceneDescription& scene = reading.scene();
     scene_stem = resolved.scene.stem().string();

@@ -1,8 +1,13 @@
 // hexant: renders animations written in a POV-Ray-style scene language with
 // Glassner's spacetime ray tracing. Each subcommand takes
-//   hexant SUBCOMMAND SCENE.pov [FILE.ini ...] [flags]
+//   hexant SUBCOMMAND SCENE.pov [FILE.ini ...] [POV-Ray switches] [flags]
+// and `hexant SCENE.pov|SCENE.ini [...]` alone is `hexant render ...`, as
+// `povray` is called (app/povray_words.hpp).
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 #include <malloc.h>
@@ -11,6 +16,8 @@
 #include "app/error_time_command.hpp"
 #include "app/farm_command.hpp"
 #include "app/merge_stats.hpp"
+#include "app/povray_render_options.hpp"
+#include "app/povray_words.hpp"
 #include "app/render_command.hpp"
 #include "app/scene_dump.hpp"
 #include "app/scene_reading.hpp"
@@ -90,7 +97,15 @@ int main(int argc, char** argv) {
         "per mode and sample count (CSV and log-log plot)");
     app::add_error_time_arguments(*error_time, error_time_arguments);
 
-    CLI11_PARSE(program, argc, argv);
+    // (CLI11_PARSE, over the words as POV-Ray's switches need them.)
+    program.name(argc > 0 ? argv[0] : "hexant");
+    std::vector<std::string> words = app::command_line_words(argc, argv);
+    std::reverse(words.begin(), words.end());
+    try {
+        program.parse(words);
+    } catch (const CLI::ParseError& e) {
+        return program.exit(e);
+    }
     if (render->parsed()) return app::run_render(render_arguments, std::cout, std::cerr);
     if (merge->parsed())
         return app::run_merge_stats(merge_inputs, merge_output, std::cout, std::cerr);
@@ -107,6 +122,7 @@ int main(int argc, char** argv) {
     return app::run_reporting_errors(std::cerr, [&] {
         app::ResolvedScene resolved = app::resolve(arguments);
         for (const auto& warning : resolved.warnings) std::cerr << warning << "\n";
+        app::note_render_only(resolved, check->parsed() ? "check" : "dump", std::cerr);
         app::SceneReading reading(resolved, std::cerr);
         const runtime::SceneDescription& scene = reading.scene();
         const runtime::Animation& animation = scene.animation;

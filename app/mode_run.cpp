@@ -232,7 +232,7 @@ ModeRun render_mode(runtime::SceneDescription& scene, const RenderArguments& arg
     settings.target_error = sampling.target_error;
     settings.jitter = !args.no_jitter;
     settings.sample_seed = args.seed;
-    settings.threads = args.threads;
+    settings.threads = args.threads.value_or(0);
     if (args.light_speed) settings.light_speed = *args.light_speed;
     settings.build = args.hierarchy.options();
     settings.first_frame = frames.front();

@@ -19,6 +19,7 @@
 
 #include "app/mode_run.hpp"
 #include "app/out_of_memory.hpp"
+#include "app/povray_render_options.hpp"
 #include "app/scene_reading.hpp"
 #include "image/image_format.hpp"
 #include "language/interpreter.hpp"
@@ -385,10 +386,14 @@ void check_render_plan(const RenderArguments& args, const std::filesystem::path&
     check_outputs(args, pattern, selected, scene.animation, scene.inputs);
 }
 
-int run_render(const RenderArguments& args, std::ostream& out, std::ostream& err) {
+int run_render(const RenderArguments& given, std::ostream& out, std::ostream& err) {
     return run_reporting_errors(err, [&] {
-        ResolvedScene resolved = resolve(args.scene);
+        ResolvedScene resolved = resolve(given.scene);
         for (const auto& warning : resolved.warnings) err << warning << "\n";
+        // POV-Ray's switches and .ini options, as the flags they stand for.
+        std::vector<std::string> notes;
+        const RenderArguments args = with_povray_options(given, resolved, notes);
+        for (const auto& note : notes) err << "note: " << note << "\n";
         // The scene's files go beside its images.
         if (args.output) {
             const std::filesystem::path folder = std::filesystem::path(*args.output).parent_path();

@@ -36,7 +36,7 @@ struct RenderArguments {
     bool stats = false;
     bool stats_full = false;  // --stats-full: count a full build's cells too
     bool compare = false;
-    int threads = 0;
+    std::optional<int> threads;  // none: all cores
     // The speed of light (tracer/light_travel.hpp), scene units per clock
     // unit: none, instant light.
     std::optional<double> light_speed;

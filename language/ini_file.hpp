@@ -1,13 +1,12 @@
-// POV-Ray .ini files: the options hexant reads from them.
+// POV-Ray .ini files: their lines and sections.
 //
 // `Key=Value` lines (keys in any case), `;` comments, and POV-Ray's switches
 // (`+W320 +H240`, several on a line). As in POV-Ray 3.7, the lines before the
 // first `[Label]` are always read, and a labelled section only when it is
-// selected as `FILE.ini[Label]`. The options read: Input_File_Name (+I),
-// Width (+W), Height (+H), Initial_Frame (+KFI), Final_Frame (+KFF),
-// Initial_Clock (+KI), Final_Clock (+KF), Cyclic_Animation (+KC/-KC),
-// Library_Path (+L) and Declare=NAME=VALUE. Other options are POV-Ray's
-// rendering options: each is ignored with a warning.
+// selected as `FILE.ini[Label]`. Each option and switch means what it means
+// on the command line (language/povray_options.hpp, one table for both);
+// one hexant has no use for, or a line that is none, is ignored with a
+// warning.
 #pragma once
 
 #include <filesystem>
@@ -17,22 +16,12 @@
 #include <vector>
 
 #include "language/interpreter.hpp"
+#include "language/povray_options.hpp"
 
 namespace hexant::language {
 
-// What one .ini file sets; an option it does not mention stays empty.
-struct IniSettings {
-    // Relative paths are taken from the .ini file's folder.
-    std::optional<std::filesystem::path> input_file;
-    std::optional<int> width, height;
-    std::optional<int> initial_frame, final_frame;
-    std::optional<double> initial_clock, final_clock;
-    std::optional<bool> cyclic;
-    std::vector<std::filesystem::path> library_paths;           // in order; they accumulate
-    std::vector<std::string> library_path_places;               // "FILE:LINE" of each
-    std::vector<std::pair<std::string, std::string>> declares;  // NAME, VALUE
-    std::vector<std::string> warnings;  // "FILE:LINE: ..." for ignored lines
-};
+// What one .ini file sets (POV-Ray's options, whatever set them).
+using IniSettings = PovRaySettings;
 
 // Reads the text of an .ini file. `name` names it in messages; `folder`
 // resolves relative paths; `section` is the label selected (empty: only the
@@ -53,8 +42,11 @@ struct IniReference {
 // (its name does not end in .ini, in any case, before an optional [Label]).
 std::optional<IniReference> ini_reference(const std::string& argument);
 
-// Applies the settings onto `options` and `scene`: each option the file set
-// replaces the current value; library paths and declarations append.
+// Applies the settings that reading a scene uses onto `options` and
+// `scene`: each option set replaces the current value (Version the
+// language's at the start, as POV-Ray's +MV); library paths and
+// declarations append. (Clock and the render's options are the command
+// line's to apply: app/command_line.hpp.)
 void apply_ini_settings(const IniSettings& settings, ParseOptions& options,
                         std::filesystem::path& scene);
 

@@ -2,6 +2,7 @@
 // scene file; the Interpreter's other parts are interpreter_*.cpp.
 #include "language/interpreter.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -31,7 +32,15 @@ Interpreter::Interpreter(const ParseOptions& options_in, runtime::SceneDescripti
     : symbols(std::make_shared<MemoryBudget>(options_in.limits.array_memory)),
       scene(scene_in),
       options(options_in),
-      scene_folder_(std::move(scene_folder)) {}
+      scene_folder_(std::move(scene_folder)) {
+    // POV-Ray 3.7 (Scene::StartParser): the version in hundredths, from
+    // 1.0 to 100.0, and set as a #version sets it.
+    if (options.language_version) {
+        version =
+            std::clamp(std::floor(*options.language_version * 100.0 + 0.5), 100.0, 10000.0) / 100.0;
+        version_set = true;
+    }
+}
 
 void Interpreter::check_string_length(std::size_t length, const std::string& what) const {
     if (length > options.limits.string_length)

@@ -35,6 +35,9 @@ struct ParseOptions {
     // NAME=VALUE pairs (POV-Ray's Declare=); VALUE is a number, a vector of
     // numbers or a string, never scene text.
     std::vector<std::pair<std::string, std::string>> declares;
+    // The language version the scene starts with, as if it began with
+    // #version (POV-Ray's Version=, +MV); none: 3.7, with no #version read.
+    std::optional<double> language_version;
     // Where #debug and #warning text goes (stderr when null).
     std::ostream* messages = nullptr;
     // Stated limits that stop runaway scenes with a clear error.

@@ -73,7 +73,7 @@ TEST_CASE("an .ini file sets POV-Ray's animation options and names the scene", "
                            "; a comment\nInput_File_Name=scene.pov\nWidth=126\n"
                            "Height = 96\nInitial_Frame=1\nFinal_Frame=64\nInitial_Clock=0\n"
                            "Final_Clock=2\nCyclic_Animation=on\nLibrary_Path=lib\n"
-                           "Declare=Speed=3\nAntialias=on\n");
+                           "Declare=Speed=3\nVerbose=on\n");
     hexant::app::SceneArguments arguments;
     arguments.files = {ini.string()};
     const auto r = hexant::app::resolve(arguments);
@@ -90,7 +90,7 @@ TEST_CASE("an .ini file sets POV-Ray's animation options and names the scene", "
     REQUIRE(r.options.declares.size() == 1);
     CHECK(r.options.declares[0].first == "Speed");
     CHECK(r.options.declares[0].second == "3");
-    REQUIRE(r.warnings.size() == 1);  // Antialias is not hexant's
+    REQUIRE(r.warnings.size() == 1);  // Verbose is not hexant's
     CHECK(r.warnings[0].find("anim.ini:12") != std::string::npos);
 }
 

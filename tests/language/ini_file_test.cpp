@@ -87,14 +87,19 @@ TEST_CASE("ini: POV-Ray's switches, several on a line", "[language][ini]") {
 }
 
 TEST_CASE("ini: switches and options hexant does not use are warnings", "[language][ini]") {
-    // +WT4 (threads) and +HTx are not +W and +H; +A and Antialias render.
-    const auto s = parse("+WT4 +A0.3\nAntialias=on\n+W64\nnot an option\n");
+    // +WT4 (threads) is not +W; +UA (alpha) and Verbose are POV-Ray's but
+    // not hexant's; +ZZ9 and No_Such_Key are no one's.
+    const auto s = parse("+WT4 +UA +ZZ9\nVerbose=on\n+W64\nnot an option\nNo_Such_Key=1\n");
     CHECK(s.width == 64);
-    REQUIRE(s.warnings.size() == 4);
-    CHECK(s.warnings[0] == "test.ini:1: switch '+WT4' is ignored");
-    CHECK(s.warnings[1] == "test.ini:1: switch '+A0.3' is ignored");
-    CHECK(s.warnings[2] == "test.ini:2: option 'Antialias' is ignored");
+    REQUIRE(s.work_threads);
+    CHECK(s.work_threads->value == 4);
+    CHECK(s.work_threads->source == "test.ini:1: +WT4");
+    REQUIRE(s.warnings.size() == 5);
+    CHECK(s.warnings[0] == "test.ini:1: switch '+UA' is ignored");
+    CHECK(s.warnings[1] == "test.ini:1: '+ZZ9' is not a POV-Ray 3.7 switch; it is ignored");
+    CHECK(s.warnings[2] == "test.ini:2: option 'Verbose' is ignored");
     CHECK(s.warnings[3].rfind("test.ini:4:", 0) == 0);
+    CHECK(s.warnings[4] == "test.ini:5: option 'No_Such_Key' is ignored");
 }
 
 TEST_CASE("ini: only the unlabelled lines, unless a section is selected", "[language][ini]") {
