@@ -307,7 +307,7 @@ TEST_CASE("render --video refuses what it cannot write, naming the flag, before 
     CHECK(d.frames.size() == 2);
 }
 
-TEST_CASE("--fps is a frame rate above 0", "[app][video]") {
+TEST_CASE("render takes --fps as a frame rate above 0", "[app][video]") {
     for (const char* bad : {"0", "x", "24fps", "1e9", "nan"}) {
         CLI::App app;
         RenderArguments a;
