@@ -1,18 +1,19 @@
 # The two set-up commands: `make run` and `make test`. Each installs the
 # Debian packages hexant needs (as root; otherwise it prints the command),
 # configures, builds into build/, then renders the atom example (frames,
-# contact sheet and animated GIF under out/atom/) or runs the whole test
-# suite.
+# contact sheet, animated GIF and H.264 video under out/atom/) or runs the
+# whole test suite.
 PACKAGES := build-essential cmake pkg-config tao-pegtl-dev libglm-dev catch2 libcli11-dev \
             libpng-dev libjpeg-dev libopenexr-dev libgif-dev libtbb-dev libhwy-dev libfreetype-dev fonts-povray \
-            nlohmann-json3-dev
+            nlohmann-json3-dev libavcodec-dev libavformat-dev libswscale-dev libavutil-dev
 JOBS := $(shell nproc 2>/dev/null || echo 2)
 
 .PHONY: run test golden bench fuzz fuzz-long sanitize format format-check clang-format-installed build deps clean
 
 run: build
 	./build/hexant render examples/atom.pov examples/atom.ini \
-	  --contact-sheet out/atom/contact_sheet.png --animation out/atom/atom.gif
+	  --contact-sheet out/atom/contact_sheet.png --animation out/atom/atom.gif \
+	  --video out/atom/atom.mp4
 
 # --timeout: a test that hangs fails after 10 minutes instead of holding
 # the run (the slowest takes seconds; the whole suite about a minute).

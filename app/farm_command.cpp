@@ -89,6 +89,8 @@ FarmArguments split_farm_arguments(const std::vector<std::string>& words) {
             a.contact_sheet = value();
         } else if (flag == "--animation") {
             a.animation = value();
+        } else if (flag == "--video") {
+            a.video = value();
         } else if (flag == "--submit") {
             a.submit = true;
         } else if (flag == "--stats-json") {
@@ -145,6 +147,7 @@ void check_render_words(const FarmArguments& args, std::string& scene_stem) {
     join.resume = true;
     join.contact_sheet = args.contact_sheet;
     join.animation = args.animation;
+    join.video = args.video;
     check_render_plan(join, resolved.scene, scene);
 }
 
@@ -219,6 +222,7 @@ int run_farm(const FarmArguments& args, std::ostream& out, std::ostream& err) {
              << render_line(args).substr(5) << " --resume";  // (not exec: the statistics follow)
         if (args.contact_sheet) join << " --contact-sheet " << shell_quote(*args.contact_sheet);
         if (args.animation) join << " --animation " << shell_quote(*args.animation);
+        if (args.video) join << " --video " << shell_quote(*args.video);
         join << "\n# The windows' statistics as one run's.\n"
              << "exec " << shell_quote(args.hexant) << " merge-stats";
         for (int w = 0; w < args.windows; ++w)

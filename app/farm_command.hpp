@@ -3,7 +3,7 @@
 // task per window (`render ... --window $SLURM_ARRAY_TASK_ID/N --resume`,
 // the render flags passed through as written), and a join that runs when
 // every task succeeded (`--dependency=afterok`) and writes what needs all
-// the frames (`render ... --resume` with the contact sheet and animation:
+// the frames (`render ... --resume` with the contact sheet, GIF and video:
 // it reads the frames back, and renders any still missing). Slurm does the
 // scheduling, retries and accounting; hexant writes no scheduler.
 #pragma once
@@ -22,7 +22,7 @@ struct FarmArguments {
     int windows = 0;
     std::optional<std::string> partition, time_limit;
     // Outputs that need every frame: the join's.
-    std::optional<std::string> contact_sheet, animation;
+    std::optional<std::string> contact_sheet, animation, video;
     std::string folder;  // where the scripts go (default out/SCENE/farm)
     bool submit = false;
     std::string hexant;  // the hexant binary the scripts run (absolute)
@@ -30,7 +30,7 @@ struct FarmArguments {
 
 // Splits the words after `farm` into the farm's flags (--windows N,
 // --partition P, --time T, --submit, --farm-dir D, --contact-sheet F,
-// --animation F, each as `--flag value` or `--flag=value`) and the render
+// --animation F, --video F, each as `--flag value` or `--flag=value`) and the render
 // words, kept in order. std::runtime_error naming a flag without its value,
 // a bad --windows, or --window/--resume given by hand.
 FarmArguments split_farm_arguments(const std::vector<std::string>& words);

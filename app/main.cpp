@@ -57,7 +57,8 @@ int main(int argc, char** argv) {
         "farm",
         "Write (and with --submit, submit) a Slurm job array that renders the animation as "
         "--windows N "
-        "time windows, and a join job for the contact sheet and animation: hexant farm SCENE.pov "
+        "time windows, and a join job for the contact sheet, animation and video: hexant farm "
+        "SCENE.pov "
         "[INI ...] [render flags] --windows N [--partition P] [--time T] [--farm-dir DIR] "
         "[--submit]");
     farm->prefix_command();
@@ -71,11 +72,13 @@ int main(int argc, char** argv) {
         "out/SCENE/farm)\n"
         "  --contact-sheet F    the join's contact sheet of every frame\n"
         "  --animation F.gif    the join's animated GIF of every frame\n"
+        "  --video F.mp4|F.webm the join's video of every frame (read back from disk)\n"
         "  --submit             run submit.sh (sbatch) and print the job ids; else print the "
         "command\n"
         "Each task runs render ... --window I/N --resume --stats-json DIR/window_I.json; the join, "
         "after\n"
-        "every task succeeded, runs render ... --resume with the sheet and GIF, then merge-stats.");
+        "every task succeeded, runs render ... --resume with the sheet, GIF and video, then "
+        "merge-stats.");
 
     std::vector<std::string> merge_inputs;
     std::string merge_output;

@@ -224,7 +224,7 @@ void write_stats_json(const std::string& path,
 ModeRun render_mode(runtime::SceneDescription& scene, const RenderArguments& args,
                     const Sampling& sampling, tracer::Mode mode, const std::string& pattern,
                     const std::vector<int>& frames, bool write, std::vector<tracer::Image>* keep,
-                    bool last_use, std::ostream& err, FramesOf of) {
+                    bool last_use, std::ostream& err, FramesOf of, const FrameSink& sink) {
     tracer::RenderSettings settings;
     settings.mode = mode;
     settings.samples_per_pixel = sampling.samples;
@@ -263,6 +263,7 @@ ModeRun render_mode(runtime::SceneDescription& scene, const RenderArguments& arg
             [&] { return renderer.render_frame(frame); });
         if (progress) progress->frame_done(renderer.last_sample_count());
         if (write) tracer::write_image(image, tracer::frame_path(pattern, frame));
+        if (sink) sink(frame, image);
         const double pixels = double(image.width) * image.height;
         const double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <iosfwd>
 #include <optional>
 #include <string>
@@ -47,15 +48,19 @@ struct FramesOf {
     std::size_t done = 0, total = 0;
 };
 
+// What is done with each frame as it finishes (its number, its image), in
+// order, after its file is written: --video adds it.
+using FrameSink = std::function<void(int, const tracer::Image&)>;
+
 // One full render of `frames` of `scene` in one mode; with `write`, each
-// frame goes to its file (`pattern`) as it finishes, with `keep` it is kept
-// too. With last_use, each of the scene's object records is freed as soon as
+// frame goes to its file (`pattern`) as it finishes, then to `sink` if set;
+// with `keep` it is kept too. With last_use, each of the scene's object records is freed as soon as
 // the renderer has made its intelligent objects of it (about 2 KB a parsed
 // object, as much as the object: records and objects are never all held at
 // once). Estimates go to `err`.
 ModeRun render_mode(runtime::SceneDescription& scene, const RenderArguments& args,
                     const Sampling& sampling, tracer::Mode mode, const std::string& pattern,
                     const std::vector<int>& frames, bool write, std::vector<tracer::Image>* keep,
-                    bool last_use, std::ostream& err, FramesOf of = {});
+                    bool last_use, std::ostream& err, FramesOf of = {}, const FrameSink& sink = {});
 
 }  // namespace hexant::app

@@ -27,6 +27,7 @@
 #include "tracer/gif_animation.hpp"
 #include "tracer/image_output.hpp"
 #include "tracer/renderer.hpp"
+#include "tracer/video_file.hpp"
 #include "tracer/whole_file.hpp"
 
 namespace hexant::app {
@@ -157,6 +158,24 @@ void add_render_arguments(CLI::App& command, RenderArguments& a) {
     command.add_option("--contact-sheet", a.contact_sheet,
                        "Also write the frames as one grid image");
     command.add_option("--animation", a.animation, "Also write an animated GIF of the frames");
+    command.add_option("--video", a.video,
+                       "Also write a video of the frames, each added as it finishes: .mp4 "
+                       "(H.264, CRF 18) or .webm (VP9, CRF 24), 4:2:0, BT.709");
+    command.add_option_function<std::string>(
+        "--fps",
+        [&a](const std::string& text) {
+            char* end = nullptr;
+            double value = std::strtod(text.c_str(), &end);
+            if (text.empty() || end != text.c_str() + text.size())
+                value = std::numeric_limits<double>::quiet_NaN();
+            if (!(value > 0.0 && value <= 1000.0))
+                throw CLI::ValidationError(
+                    "--fps", "'" + text +
+                                 "' is not a frame rate (frames per second, above 0, at "
+                                 "most 1000)");
+            a.fps = value;
+        },
+        "Frames per second of --video and --animation (default 24)");
     command.add_flag("--stats", a.stats, "Print the paper's table rows for the run");
     command.add_option("--stats-json", a.stats_json, "Write the same figures as JSON");
     command.add_flag("--stats-full", a.stats_full,
@@ -201,7 +220,7 @@ void check_outputs(const RenderArguments& args, const std::string& pattern,
     struct Output {
         std::string flag, name;
         bool per_frame;  // a pattern with #### (one file per frame)
-        enum class Kind { Image, Animation, Text } kind;
+        enum class Kind { Image, Animation, Video, Text } kind;
     };
     std::vector<Output> outputs{{"-o", pattern, true, Output::Kind::Image}};
     if (args.error_image)
@@ -212,6 +231,7 @@ void check_outputs(const RenderArguments& args, const std::string& pattern,
         outputs.push_back({"--contact-sheet", *args.contact_sheet, false, Output::Kind::Image});
     if (args.animation)
         outputs.push_back({"--animation", *args.animation, false, Output::Kind::Animation});
+    if (args.video) outputs.push_back({"--video", *args.video, false, Output::Kind::Video});
     if (args.stats_json)
         outputs.push_back({"--stats-json", *args.stats_json, false, Output::Kind::Text});
     const auto file_of = [&](const Output& o, int frame) {
@@ -248,6 +268,9 @@ void check_outputs(const RenderArguments& args, const std::string& pattern,
                 tracer::check_image_size(o.name, width, height);
             }
             if (o.kind == Output::Kind::Animation) tracer::check_animation_name(o.name);
+            // (Its extension, even sides for H.264, FFmpeg and its encoder.)
+            if (o.kind == Output::Kind::Video)
+                tracer::check_video_output(o.name, animation.width, animation.height);
             // A link, device, FIFO or folder in an output's place is
             // refused now, not after the render (whole_file.hpp).
             // Nor one of the scene's own inputs (its image_map, an include):
@@ -376,10 +399,10 @@ void check_render_plan(const RenderArguments& args, const std::filesystem::path&
     const std::vector<int> selected = frame_selection(args.frames, scene.animation);
     const std::string pattern =
         args.output ? *args.output : "out/" + scene_file.stem().string() + "/frame_####.png";
-    if (args.window && (args.contact_sheet || args.animation || args.compare))
+    if (args.window && (args.contact_sheet || args.animation || args.video || args.compare))
         throw std::runtime_error(
-            "--window renders part of the frames: --contact-sheet, --animation and --compare "
-            "need them all (join the windows' frames with --resume and those outputs)");
+            "--window renders part of the frames: --contact-sheet, --animation, --video and "
+            "--compare need them all (join the windows' frames with --resume and those outputs)");
     if (args.resume && args.compare)
         throw std::runtime_error("--resume skips frames --compare would measure");
     (void)resolve_sampling(args, scene);
@@ -408,10 +431,11 @@ int run_render(const RenderArguments& given, std::ostream& out, std::ostream& er
         const std::string pattern =
             args.output ? *args.output
                         : "out/" + resolved.scene.stem().string() + "/frame_####.png";
-        if (args.window && (args.contact_sheet || args.animation || args.compare))
+        if (args.window && (args.contact_sheet || args.animation || args.video || args.compare))
             throw std::runtime_error(
-                "--window renders part of the frames: --contact-sheet, --animation and --compare "
-                "need them all (join the windows' frames with --resume and those outputs)");
+                "--window renders part of the frames: --contact-sheet, --animation, --video and "
+                "--compare need them all (join the windows' frames with --resume and those "
+                "outputs)");
         if (args.resume && args.compare)
             throw std::runtime_error("--resume skips frames --compare would measure");
         if (args.window) {
@@ -465,6 +489,8 @@ int run_render(const RenderArguments& given, std::ostream& out, std::ostream& er
                     missing.push_back(frame);
                 }
             }
+            // (The video's temporary lives through the whole render.)
+            if (args.video) leftovers += tracer::remove_leftover_temporaries(*args.video);
             if (leftovers > 0)
                 err << "--resume: removed " << leftovers << " half-written temporar"
                     << (leftovers == 1 ? "y" : "ies") << "\n";
@@ -474,22 +500,52 @@ int run_render(const RenderArguments& given, std::ostream& out, std::ostream& er
             std::erase_if(written, [&](int frame) {
                 return std::binary_search(missing.begin(), missing.end(), frame);
             });
-            if (missing.empty() && !args.contact_sheet && !args.animation) return 0;
+            if (missing.empty() && !args.contact_sheet && !args.animation && !args.video) return 0;
             selected = std::move(missing);
         }
         // Each mode's render of the selected frames; a scene read frame by
         // frame renders each frame from its own reading.
+        // --video: each frame added as it finishes, those already on disk
+        // (--resume) read back one at a time in their turn, so the video
+        // holds every frame in order and memory holds one of them, however
+        // long the animation (the contact sheet and GIF keep them all).
+        std::optional<tracer::VideoFile> video;
+        std::size_t next_on_disk = 0;  // (of `written`)
+        const auto named_video = [&](const std::function<void()>& step) {
+            try {
+                step();
+            } catch (const std::runtime_error& e) {
+                throw std::runtime_error(std::string("--video ") + e.what());
+            }
+        };
+        const auto add_on_disk_before = [&](long long frame) {
+            for (; next_on_disk < written.size() && written[next_on_disk] < frame; ++next_on_disk)
+                named_video([&] {
+                    video->add(tracer::read_image(
+                        tracer::frame_path(pattern, written[next_on_disk]), frame_pixels));
+                });
+        };
+        FrameSink to_video;
+        if (args.video) {
+            named_video([&] {
+                video.emplace(*args.video, scene.animation.width, scene.animation.height, args.fps);
+            });
+            to_video = [&](int frame, const tracer::Image& image) {
+                add_on_disk_before(frame);
+                named_video([&] { video->add(image); });
+            };
+        }
         const auto render = [&](tracer::Mode mode, bool write, std::vector<tracer::Image>* keep,
-                                bool last_use) {
+                                bool last_use, const FrameSink& sink) {
             if (!reading.frame_by_frame())
                 return render_mode(scene, args, sampling, mode, pattern, selected, write, keep,
-                                   last_use, err);
+                                   last_use, err, {}, sink);
             ModeRun all;
             for (std::size_t i = 0; i < selected.size(); ++i) {
                 runtime::SceneDescription alone = reading.read_frame(selected[i]);
                 alone.animation = scene.animation;  // (apply_scene_defaults's shutter)
                 ModeRun run = render_mode(alone, args, sampling, mode, pattern, {selected[i]},
-                                          write, keep, true, err, {i, selected.size()});
+                                          write, keep, true, err, {i, selected.size()}, sink);
                 all.counters += run.counters;
                 all.frames.insert(all.frames.end(), run.frames.begin(), run.frames.end());
             }
@@ -503,7 +559,7 @@ int run_render(const RenderArguments& given, std::ostream& out, std::ostream& er
         if (!selected.empty())
             columns.emplace_back(
                 tracer::mode_name(mode),
-                render(mode, true, keep_frames ? &frames : nullptr, !args.compare));
+                render(mode, true, keep_frames ? &frames : nullptr, !args.compare, to_video));
         if (keep_frames && !written.empty()) {
             // (--resume) The frames on disk join those just rendered, in
             // order, read back as written (an 8-bit sRGB frame gives its
@@ -521,7 +577,7 @@ int run_render(const RenderArguments& given, std::ostream& out, std::ostream& er
         }
         if (args.compare)  // the paper's order: frame by frame, then spacetime
             columns.emplace(columns.begin(), "frames",
-                            render(tracer::Mode::Frames, false, nullptr, true));
+                            render(tracer::Mode::Frames, false, nullptr, true, {}));
         if (selected.empty()) {
             out << "frames: none rendered (all written already)\n";
         } else {
@@ -545,8 +601,14 @@ int run_render(const RenderArguments& given, std::ostream& out, std::ostream& er
             out << "contact sheet: " << *args.contact_sheet << "\n";
         }
         if (args.animation) {
-            tracer::write_animation(frames, *args.animation);
+            tracer::write_animation(frames, *args.animation, args.fps);
             out << "animation: " << *args.animation << "\n";
+        }
+        if (video) {
+            add_on_disk_before(std::numeric_limits<long long>::max());
+            named_video([&] { video->finish(); });
+            out << "video: " << *args.video << " (" << video->frames() << " frames at " << args.fps
+                << " per second)\n";
         }
         const bool print = args.stats || args.compare || (args.stats_full && !args.stats_json);
         if (print && !columns.empty()) {

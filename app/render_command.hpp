@@ -1,5 +1,5 @@
-// `hexant render`: frames of an animation, their contact sheet and animated
-// file, and the paper's table rows (--stats, --compare).
+// `hexant render`: frames of an animation, their contact sheet, animated
+// GIF and video, and the paper's table rows (--stats, --compare).
 #pragma once
 
 #include <filesystem>
@@ -33,6 +33,10 @@ struct RenderArguments {
     bool resume = false;
     std::optional<std::string> output;  // pattern with ####
     std::optional<std::string> contact_sheet, animation, stats_json;
+    // --video: .mp4 (H.264) or .webm (VP9), fed each frame as it finishes
+    // (tracer/video_file.hpp); --fps the frame rate of it and the GIF.
+    std::optional<std::string> video;
+    double fps = 24.0;
     bool stats = false;
     bool stats_full = false;  // --stats-full: count a full build's cells too
     bool compare = false;

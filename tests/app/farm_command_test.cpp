@@ -1,6 +1,6 @@
 // `hexant farm`: the Slurm scripts it writes, run here as Slurm would run
 // them (each array task with its SLURM_ARRAY_TASK_ID, then the join),
-// give the frames, contact sheet and animation one run gives, byte for
+// give the frames, contact sheet, animation and video one run gives, byte for
 // byte. (Submitting to a real Slurm: the `cluster` test, not here.)
 #include "app/farm_command.hpp"
 
@@ -81,8 +81,8 @@ TEST_CASE("a farm's array tasks and join, run as Slurm runs them, give one run's
     REQUIRE(
         std::system((hexant + " render " + common + " -o " + (folder / "one/f_####.png").string() +
                      " --contact-sheet " + (folder / "one.png").string() + " --animation " +
-                     (folder / "one.gif").string() + " --stats-json " +
-                     (folder / "one.json").string() + " > /dev/null 2>&1")
+                     (folder / "one.gif").string() + " --video " + (folder / "one.mp4").string() +
+                     " --stats-json " + (folder / "one.json").string() + " > /dev/null 2>&1")
                         .c_str()) == 0);
 
     auto args = split_farm_arguments({(folder / "scene.pov").string(),
@@ -104,6 +104,8 @@ TEST_CASE("a farm's array tasks and join, run as Slurm runs them, give one run's
                                       (folder / "farm.png").string(),
                                       "--animation",
                                       (folder / "farm.gif").string(),
+                                      "--video",
+                                      (folder / "farm.mp4").string(),
                                       "--farm-dir",
                                       (folder / "scripts").string()});
     args.hexant = hexant;
@@ -134,6 +136,10 @@ TEST_CASE("a farm's array tasks and join, run as Slurm runs them, give one run's
     }
     CHECK(bytes(folder / "one.png") == bytes(folder / "farm.png"));
     CHECK(bytes(folder / "one.gif") == bytes(folder / "farm.gif"));
+    // The join's video, from the frames on disk, is the one run's, which
+    // added each frame as it finished (the same bytes in, one encoder).
+    CHECK(!bytes(folder / "farm.mp4").empty());
+    CHECK(bytes(folder / "one.mp4") == bytes(folder / "farm.mp4"));
     // The merged statistics: the windows' sums, which for the rays are one
     // run's (the same samples); each window's build listed.
     const auto one = nlohmann::json::parse(bytes(folder / "one.json"))["spacetime"];
