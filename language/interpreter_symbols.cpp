@@ -331,6 +331,10 @@ Interpreter::FoundFile Interpreter::find_readable(
     std::vector<fs::path> folders{scene_folder_};
     folders.insert(folders.end(), options.include_paths.begin(), options.include_paths.end());
     folders.push_back(bundled_include_dir());
+    // Last, POV-Ray's own (Debian's povray-includes): where `povray` finds
+    // textures.inc or math.inc without a +L, as its povray.ini's
+    // Library_Path says; a scene that includes them reads unchanged.
+    folders.push_back(kPovRayIncludeDir);
     folders.insert(folders.end(), also.begin(), also.end());
     fs::path found;
     std::error_code error;
