@@ -5,6 +5,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "language/povray_options.hpp"
 #include "language/source_files.hpp"
 
 namespace hexant::language {
@@ -12,19 +13,6 @@ namespace hexant::language {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string lower(std::string s) {
-    std::transform(s.begin(), s.end(), s.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return s;
-}
-
-std::string trim(const std::string& s) {
-    const auto b = s.find_first_not_of(" \t\r\f\v");
-    if (b == std::string::npos) return {};
-    const auto e = s.find_last_not_of(" \t\r\f\v");
-    return s.substr(b, e - b + 1);
-}
 
 std::string unquote(const std::string& s) {
     if (s.size() >= 2 && s.front() == '"' && s.back() == '"') return s.substr(1, s.size() - 2);
@@ -71,8 +59,9 @@ class Reader {
             s_.warnings.push_back(here + ": line '" + text + "' is ignored");
             return;
         }
-        const std::string written = trim(text.substr(0, eq));
-        if (!apply_povray_option(written, unquote(trim(text.substr(eq + 1))), here, folder_, s_))
+        const std::string written = trim_blanks(text.substr(0, eq));
+        if (!apply_povray_option(written, unquote(trim_blanks(text.substr(eq + 1))), here, folder_,
+                                 s_))
             s_.warnings.push_back(here + ": option '" + written + "' is ignored");
     }
 
@@ -90,7 +79,7 @@ IniSettings parse_ini_text(const std::string& text, const std::string& name, con
                            const std::string& section) {
     IniSettings settings;
     Reader reader(settings, name, folder);
-    const std::string wanted = lower(trim(section));
+    const std::string wanted = ascii_lower(trim_blanks(section));
     bool reading = true;  // the unlabelled lines are always read
     bool found = false;
     std::istringstream in(text);
@@ -99,13 +88,13 @@ IniSettings parse_ini_text(const std::string& text, const std::string& name, con
     while (std::getline(in, line)) {
         ++number;
         if (const auto c = line.find(';'); c != std::string::npos) line.erase(c);
-        line = trim(line);
+        line = trim_blanks(line);
         if (line.empty()) continue;
         if (line[0] == '[') {
             const auto close = line.find(']');
-            const std::string label =
-                trim(line.substr(1, close == std::string::npos ? std::string::npos : close - 1));
-            reading = !wanted.empty() && lower(label) == wanted;
+            const std::string label = trim_blanks(
+                line.substr(1, close == std::string::npos ? std::string::npos : close - 1));
+            reading = !wanted.empty() && ascii_lower(label) == wanted;
             found = found || reading;
             if (!reading && wanted.empty())
                 settings.warnings.push_back(reader.place(number) + ": section [" + label +
@@ -142,7 +131,7 @@ std::optional<IniReference> ini_reference(const std::string& argument) {
         file = argument.substr(0, open);
         reference.section = argument.substr(open + 1, argument.size() - open - 2);
     }
-    const std::string tail = lower(file.size() >= 4 ? file.substr(file.size() - 4) : file);
+    const std::string tail = ascii_lower(file.size() >= 4 ? file.substr(file.size() - 4) : file);
     if (file.size() <= 4 || tail != ".ini") return std::nullopt;
     reference.file = file;
     return reference;

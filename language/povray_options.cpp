@@ -11,27 +11,27 @@
 
 namespace hexant::language {
 
-namespace {
-
-namespace fs = std::filesystem;
-
-std::string lower(std::string s) {
+std::string ascii_lower(std::string s) {
     std::transform(s.begin(), s.end(), s.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
     return s;
 }
 
-std::string upper(std::string s) {
-    std::transform(s.begin(), s.end(), s.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
-    return s;
-}
-
-std::string trim(const std::string& s) {
+std::string trim_blanks(const std::string& s) {
     const auto b = s.find_first_not_of(" \t\r\f\v");
     if (b == std::string::npos) return {};
     const auto e = s.find_last_not_of(" \t\r\f\v");
     return s.substr(b, e - b + 1);
+}
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string upper(std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+    return s;
 }
 
 // What hexant does with an option: each its own field of PovRaySettings,
@@ -279,9 +279,9 @@ constexpr Switch kSwitches[] = {
 };
 
 const Key* find_key(const std::string& key) {
-    const std::string wanted = lower(trim(key));
+    const std::string wanted = ascii_lower(trim_blanks(key));
     for (const Key& k : kKeys)
-        if (lower(k.name) == wanted) return &k;
+        if (ascii_lower(k.name) == wanted) return &k;
     return nullptr;
 }
 
@@ -383,7 +383,7 @@ class Setter {
     }
 
     bool boolean(const std::string& value) const {
-        const std::string v = lower(value);
+        const std::string v = ascii_lower(value);
         if (v == "on" || v == "true" || v == "yes" || v == "1") return true;
         if (v == "off" || v == "false" || v == "no" || v == "0") return false;
         needs("on or off", value);
@@ -497,8 +497,10 @@ void Setter::set(Option option, const std::string& value) {
             break;
         case Option::Declare: {
             const auto eq = value.find('=');
-            const std::string name = eq == std::string::npos ? "" : trim(value.substr(0, eq));
-            const std::string text = eq == std::string::npos ? "" : trim(value.substr(eq + 1));
+            const std::string name =
+                eq == std::string::npos ? "" : trim_blanks(value.substr(0, eq));
+            const std::string text =
+                eq == std::string::npos ? "" : trim_blanks(value.substr(eq + 1));
             if (name.empty() || text.empty()) needs("NAME=VALUE", value);
             s_.declares.emplace_back(name, text);
             break;
@@ -589,7 +591,7 @@ bool apply_povray_option(const std::string& key, const std::string& value, const
                          const fs::path& folder, PovRaySettings& settings) {
     const Key* k = find_key(key);
     if (!k) return false;
-    Setter(settings, place, folder, trim(key) + "=" + value, trim(key), false)
+    Setter(settings, place, folder, trim_blanks(key) + "=" + value, trim_blanks(key), false)
         .set(k->option, value);
     return true;
 }

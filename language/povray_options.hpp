@@ -26,6 +26,12 @@
 
 namespace hexant::language {
 
+// ASCII lower case (POV-Ray's option keys, switches and .ini labels are
+// case-blind) and a string without its leading and trailing blanks: for
+// this table and the .ini reader alike.
+std::string ascii_lower(std::string s);
+std::string trim_blanks(const std::string& s);
+
 // A value and where it was given, for the notes and errors that name it:
 // the switch or option as written, after its place ("+A0.3" on the command
 // line, "res.ini:4: Antialias=on" in a file).
