@@ -38,6 +38,13 @@ void add_scene_arguments(CLI::App& command, SceneArguments& a) {
         "--rolling-shutter", a.rolling_shutter,
         "Rolling shutter: the fraction of each frame's clock step from the top row's "
         "opening to the bottom row's (default 0, every row at once)");
+    command.add_option(
+        "--shutter-position", a.shutter_position,
+        "Where each frame's exposure sits against the frame's clock: start (opens at it, the "
+        "default), centre (centred on it) or end (closes at it)");
+    command.add_flag("--shutter-beyond-range", a.shutter_beyond_range,
+                     "Let a non-cyclic animation's first and last exposures reach outside "
+                     "[Initial_Clock, Final_Clock] (otherwise they are cut to it)");
     command.add_option("-L,--include-path", a.include_paths,
                        "Folder searched for #include after the scene's own (POV-Ray's +L)");
     command.add_option("--allow-read", a.read_paths,
@@ -258,6 +265,19 @@ ResolvedScene resolve(const SceneArguments& arguments) {
         }
     }
     if (arguments.rolling_shutter) a.rolling_shutter = *arguments.rolling_shutter;
+    if (arguments.shutter_position) {
+        const std::string& p = *arguments.shutter_position;
+        if (p == "start")
+            a.shutter_position = runtime::ShutterPosition::Start;
+        else if (p == "centre" || p == "center")
+            a.shutter_position = runtime::ShutterPosition::Centre;
+        else if (p == "end")
+            a.shutter_position = runtime::ShutterPosition::End;
+        else
+            throw std::runtime_error("--shutter-position needs start, centre or end, not '" + p +
+                                     "'");
+    }
+    if (arguments.shutter_beyond_range) a.shutter_beyond_range = true;
     for (const auto& path : arguments.read_paths) r.options.read_paths.emplace_back(path);
     r.options.include_paths =
         confined_library_paths(library, r.scene, r.options.read_paths, r.warnings);

@@ -30,6 +30,8 @@ struct SceneArguments {
     std::optional<double> shutter;
     std::optional<std::string> shutter_curve;  // runtime::ShutterCurve::parse
     std::optional<double> rolling_shutter;
+    std::optional<std::string> shutter_position;  // start, centre (center) or end
+    bool shutter_beyond_range = false;
     std::vector<std::string> include_paths;
     std::vector<std::string> read_paths;
     std::vector<std::string> write_paths;

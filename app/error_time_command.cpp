@@ -100,7 +100,9 @@ std::string reference_key(const ErrorTimeArguments& args, const runtime::SceneDe
         << reference_spp << " shutter " << scene.animation.shutter << " clock "
         << scene.animation.initial_clock << ':' << scene.animation.final_clock << " frames "
         << scene.animation.initial_frame << ':' << scene.animation.final_frame << " cyclic "
-        << scene.animation.cyclic << " rolling " << scene.animation.rolling_shutter << " curve";
+        << scene.animation.cyclic << " rolling " << scene.animation.rolling_shutter << " lead "
+        << scene.animation.shutter_lead() << " beyond " << scene.animation.shutter_beyond_range
+        << " curve";
     // (Every key of the shutter's curve, to the last bit; a box is keyless.)
     if (!scene.animation.shutter_curve.is_box())
         for (const auto& k : scene.animation.shutter_curve.keys())

@@ -146,9 +146,8 @@ int main(int argc, char** argv) {
                 // The frame whose shutter holds the clock, read alone.
                 int frame = animation.initial_frame;
                 while (frame < animation.final_frame &&
-                       (animation.clock_delta() > 0.0
-                            ? animation.clock_of_frame(frame + 1) <= clock
-                            : animation.clock_of_frame(frame + 1) >= clock))
+                       (animation.clock_delta() > 0.0 ? animation.frame_start(frame + 1) <= clock
+                                                      : animation.frame_start(frame + 1) >= clock))
                     ++frame;
                 app::dump_scene(reading.read_frame(frame), clock, std::cout);
             }

@@ -82,10 +82,10 @@ SceneReading::SceneReading(const ResolvedScene& resolved, std::ostream& err)
     }
 }
 
-std::optional<runtime::SceneDescription> SceneReading::try_frame(int frame, bool at_opening,
+std::optional<runtime::SceneDescription> SceneReading::try_frame(int frame, bool at_clock,
                                                                  std::ostream* messages) {
     language::ParseOptions options = options_;
-    options.frame_alone = language::ParseOptions::FrameAlone{frame, at_opening};
+    options.frame_alone = language::ParseOptions::FrameAlone{frame, at_clock};
     if (messages) {
         options.messages = messages;
         options.warnings_said = nullptr;
@@ -94,7 +94,7 @@ std::optional<runtime::SceneDescription> SceneReading::try_frame(int frame, bool
         const ReadingLine line(options, file_);
         return language::parse_scene_file(file_, options);
     } catch (const language::SceneError& e) {
-        if (!e.may_read_frame_by_frame() || at_opening) throw;
+        if (!e.may_read_frame_by_frame() || at_clock) throw;
         return std::nullopt;
     }
 }
@@ -105,7 +105,7 @@ runtime::SceneDescription SceneReading::read_frame(int frame) {
         auto scene = try_frame(frame, true);
         err_ << "warning: frame " << frame
              << ": its shutter holds what hexant cannot make piecewise in time; the frame is "
-                "read at its opening clock alone, as POV-Ray reads it (clock a constant: "
+                "read at its clock alone, as POV-Ray reads it (clock a constant: "
                 "nothing in this frame is blurred by motion)\n";
         return std::move(*scene);
     } catch (language::SceneError& e) {

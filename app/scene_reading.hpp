@@ -6,7 +6,7 @@
 // frame_number), is read again once per frame, as POV-Ray reads it:
 // frame_number is then a constant and clock still runs through the frame's
 // shutter, so what moves is blurred; where even one frame's shutter holds
-// what cannot be made piecewise, that frame is read at its opening clock
+// what cannot be made piecewise, that frame is read at its clock
 // alone, clock a constant, as POV-Ray reads it (a warning names the frame).
 #pragma once
 
@@ -40,9 +40,9 @@ class SceneReading {
 
   private:
     // Frame `frame` read alone; none when it stopped at a branch on clock
-    // (never at_opening: then it throws). Its messages go to `messages`
+    // (never at_clock: then it throws). Its messages go to `messages`
     // when given.
-    std::optional<runtime::SceneDescription> try_frame(int frame, bool at_opening,
+    std::optional<runtime::SceneDescription> try_frame(int frame, bool at_clock,
                                                        std::ostream* messages = nullptr);
 
     language::ParseOptions options_;

@@ -50,6 +50,9 @@ void summarize_scene(const runtime::SceneDescription& scene, std::ostream& out) 
         << ", shutter " << number(a.shutter) << (a.shutter_curve.is_box() ? "" : " (shutter curve)")
         << (a.rolling_shutter > 0.0 ? ", rolling shutter " + number(a.rolling_shutter)
                                     : std::string())
+        << (a.shutter_position == runtime::ShutterPosition::Centre ? ", centred on each frame"
+            : a.shutter_position == runtime::ShutterPosition::End  ? ", ending at each frame"
+                                                                   : "")
         << ", " << a.width << "x" << a.height << "\n";
     const auto camera = scene.camera.evaluate(a.time_begin());
     out << "camera at " << vector(camera.location) << " looking along " << vector(camera.direction)

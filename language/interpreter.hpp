@@ -47,12 +47,13 @@ struct ParseOptions {
     bool strict = false;
     // Read for one frame of the animation alone (a scene read frame by
     // frame, app/scene_reading.hpp): frame_number is that frame's number, a
-    // constant, and the time read for is the frame's shutter, or with
-    // at_opening its opening instant alone, clock a constant there, as
-    // POV-Ray reads a frame (nothing in it moves).
+    // constant, and the time read for is the frame's exposure
+    // (Animation::frame_window), or with at_clock the frame's clock alone,
+    // clock a constant there, as POV-Ray reads a frame (nothing in it
+    // moves).
     struct FrameAlone {
         int frame = 1;
-        bool at_opening = false;
+        bool at_clock = false;
     };
     std::optional<FrameAlone> frame_alone;
     // Warnings said already (by another frame's reading): not said again;

@@ -156,22 +156,27 @@ class Interpreter {
     runtime::Lifetime domain;
     // The animation's time, from the first frame's shutter opening to the
     // last one's closing; read for one frame alone
-    // (ParseOptions::frame_alone), that frame's shutter or its opening.
+    // (ParseOptions::frame_alone), that frame's exposure or its clock.
     runtime::Interval animation_time() const {
         // (A clock that runs backwards, --clock 1:0, spans the same time.)
         const runtime::Animation& animation = scene.animation;
         const auto& alone = options.frame_alone;
-        const double a = alone ? animation.clock_of_frame(alone->frame) : animation.time_begin();
-        if (alone && alone->at_opening) return {a, a};
-        double b =
-            alone ? a + animation.exposure() * animation.clock_delta() : animation.time_end();
+        if (alone && alone->at_clock) {
+            const double c = animation.clock_of_frame(alone->frame);
+            return {c, c};
+        }
+        const runtime::Animation::Window last =
+            animation.frame_window(alone ? alone->frame : animation.final_frame);
+        const double a = alone ? last.open : animation.time_begin();
+        double b = last.close();
         // The last shutter's closing instant is not in the animation: a
         // sample's time is below 1 of the shutter (2^-32 short at most), so
         // no sample reaches it, and POV-Ray's last frame is at its opening.
         // Without it, what the scene makes only there (a file named for
         // the frame after the last) is not needed. A shutter of 0 (and a
-        // still) has its instants only.
-        if (animation.exposure() > 0.0 && b != a)
+        // still, and a last frame cut to the instant Final_Clock) has its
+        // instants only.
+        if (last.length != 0.0 && b != a)
             b = b > a ? runtime::interval_detail::next_down(b)
                       : runtime::interval_detail::next_up(b);
         return {std::min(a, b), std::max(a, b)};

@@ -41,8 +41,8 @@ void for_each_eye_and_light(const runtime::SceneDescription& scene, int first, i
                             Add&& add) {
     const auto& a = scene.animation;
     for (int f = first; f <= last; ++f) {
-        const double open = a.clock_of_frame(f);
-        for (const double t : {open, open + a.exposure() * a.clock_delta()}) {
+        const runtime::Animation::Window window = a.frame_window(f);
+        for (const double t : {window.open, window.close()}) {
             eye_extent(scene.camera.evaluate(t), t, [&](const glm::dvec3& p) { add(p); });
             for (const auto& light : scene.lights) add(light.world_position(t));
         }
@@ -76,8 +76,8 @@ Box4 animation_root(const runtime::SceneDescription& scene, const ObjectSet& obj
     const auto& a = scene.animation;
     // (A clock that runs backwards, --clock 2:1, spans the same time the
     // other way: the root's time is its smaller end to its larger.)
-    const double from = a.clock_of_frame(first);
-    const double to = a.clock_of_frame(last) + a.exposure() * a.clock_delta();
+    const double from = a.frame_window(first).open;
+    const double to = a.frame_window(last).close();
     const double begin = std::min(from, to), end = std::max(from, to);
     floor =
         lookback > 0.0 ? std::max(std::min(a.time_begin(), a.time_end()), begin - lookback) : begin;
@@ -111,7 +111,8 @@ std::vector<const runtime::IntelligentObject*> camera_interiors(
     std::vector<const runtime::IntelligentObject*> out;
     if (mattering.empty()) return out;
     const auto& a = scene.animation;
-    const double open = a.clock_of_frame(frame), close = open + a.exposure() * a.clock_delta();
+    const runtime::Animation::Window window = a.frame_window(frame);
+    const double open = window.open, close = window.close();
     Box4 eye = Box4::empty();
     for (const double t : {open, close})
         eye_extent(scene.camera.evaluate(t), t,
@@ -291,8 +292,9 @@ Image Renderer::render_frame(int frame) {
                                 std::to_string(first_frame_) + " to " +
                                 std::to_string(last_frame_) + " this renderer was built for");
     const auto& a = scene_.animation;
-    const double open = a.clock_of_frame(frame);
-    const double length = a.exposure() * a.clock_delta();
+    const runtime::Animation::Window window = a.frame_window(frame);
+    const double open = window.open;
+    const double length = window.length;
     const runtime::Animation::FrameClock frame_clock = a.frame_clock(frame);
     // (Light of finite speed reaches back before the shutter opens.)
     const double first_instant = std::min(open, open + length);

@@ -279,9 +279,9 @@ struct action<g::builtin_constant_name> {
         else if (w == "image_height")
             f(a.height);
         else if (w == "clock") {
-            // (A frame read at its opening alone: that clock, a constant.)
+            // (A frame read at its clock alone: that clock, a constant.)
             const auto& alone = st.options.frame_alone;
-            st.values.push(Value{alone && alone->at_opening
+            st.values.push(Value{alone && alone->at_clock
                                      ? TimeFunction(a.clock_of_frame(alone->frame))
                                  : a.clock_runs() ? TimeFunction::clock()
                                                   : TimeFunction(a.initial_clock)});
@@ -305,9 +305,9 @@ struct action<g::builtin_constant_name> {
             f(st.version);
         else if (w == "frame_number") {
             // The frame whose shutter holds the time: constant within a
-            // frame, and switching exactly at each frame's clock as the
-            // renderer computes it (Animation::clock_of_frame: c0 + n *
-            // delta, the same operations here), so that a branch on it
+            // frame, and switching exactly at each frame's first instant as
+            // the renderer computes it (Animation::frame_start: c0 + n *
+            // delta - lead, the same operations here), so that a branch on it
             // splits time at the frames' first instants. The quotient may
             // be a frame off next to a boundary; the comparisons with the
             // frame's own clock and the next one's correct it.
@@ -318,10 +318,14 @@ struct action<g::builtin_constant_name> {
             } else {
                 const TimeFunction t = TimeFunction::clock();
                 const double delta = a.clock_delta();
-                const TimeFunction n =
-                    TimeFunction::apply(TimeOp::Floor, (t - a.initial_clock) / delta);
-                const TimeFunction start = a.initial_clock + n * delta;
-                const TimeFunction next = a.initial_clock + (n + 1.0) * delta;
+                // (Frames switch at their first instants,
+                // Animation::frame_start: a frame's clock less its lead,
+                // the clock itself when the shutter opens at it.)
+                const double lead = a.shutter_lead() * delta;
+                const TimeFunction n = TimeFunction::apply(
+                    TimeOp::Floor, (t - a.frame_start(a.initial_frame)) / delta);
+                const TimeFunction start = a.initial_clock + n * delta - lead;
+                const TimeFunction next = a.initial_clock + (n + 1.0) * delta - lead;
                 // (A clock running backwards, delta < 0: a frame holds the
                 // times from its clock down to the next one's.)
                 const bool forward = delta > 0.0;

@@ -40,9 +40,9 @@ const char* const kStepped = R"(
 sphere { <A[0], 0, 0>, 1 }
 )";
 
-ParseOptions frame(int k, bool at_opening = false) {
+ParseOptions frame(int k, bool at_clock = false) {
     ParseOptions options = animation();
-    options.frame_alone = ParseOptions::FrameAlone{k, at_opening};
+    options.frame_alone = ParseOptions::FrameAlone{k, at_clock};
     return options;
 }
 

@@ -12,11 +12,14 @@
 
 namespace hexant::test {
 
-// Frames 1 to 8 over clock 0 to 1 (the shutter of the last one ends at 8/7).
+// Frames 1 to 8 over clock 0 to 1 (the shutter of the last one ends at 8/7:
+// placed as it opens, not cut to Final_Clock, so that the language's rules
+// are seen past the last frame's clock too).
 inline language::ParseOptions animation() {
     language::ParseOptions options;
     options.animation.initial_frame = 1;
     options.animation.final_frame = 8;
+    options.animation.shutter_beyond_range = true;
     return options;
 }
 

@@ -20,6 +20,10 @@ hexant::runtime::SceneDescription parse(const std::string& text, int frames = 2)
     options.animation.height = 24;
     options.animation.initial_frame = 1;
     options.animation.final_frame = frames;
+    // (Each frame a whole clock step, the last not cut to Final_Clock: the
+    // frames' shutters then tile the span the spacetime hierarchy covers,
+    // so that its root is the frames' roots over the whole span.)
+    options.animation.shutter_beyond_range = true;
     return hexant::language::parse_scene_text(text, "pay-for-use.pov", options);
 }
 

@@ -110,6 +110,8 @@ TEST_CASE("a box shutter curve and no rolling give the sample times they always 
     a.final_clock = 1.7;
     a.final_frame = 7;
     a.shutter = 0.37;
+    // (The last frame's exposure as placed, not cut to Final_Clock.)
+    a.shutter_beyond_range = true;
     std::mt19937_64 random(7);
     std::uniform_real_distribution<double> uniform(0.0, 1.0);
     for (const std::string curve : {"box", "0:3,0.5:3,1:3"}) {

@@ -104,8 +104,9 @@ class EmbreeFrame {
                 int frame, int segments)
         : peer_(peer), segments_(segments) {
         const runtime::Animation& a = peer.scene->animation;
-        open_ = a.clock_of_frame(frame);
-        length_ = a.shutter * a.clock_delta();
+        // (Placed and cut as hexant places them: Animation::frame_clock.)
+        open_ = a.frame_clock(frame).open;
+        length_ = a.frame_clock(frame).shutter_length;
         scene_ = rtcNewScene(device);
         rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_MEDIUM);
         if (!peer.statics.triangles.empty())
@@ -374,8 +375,8 @@ inline tracer::Image render_embree_frame(const PeerScene& peer, const EmbreeFram
                                          int frame, int spp, std::uint64_t& rays) {
     const runtime::SceneDescription& scene = *peer.scene;
     const runtime::Animation& a = scene.animation;
-    const double open = a.clock_of_frame(frame);
-    const double length = a.shutter * a.clock_delta();
+    const double open = a.frame_clock(frame).open;
+    const double length = a.frame_clock(frame).shutter_length;
     const int width = a.width, height = a.height;
     const bool moving_camera = scene.camera.depends_on_time();
     const runtime::CameraFrame fixed_camera = scene.camera.evaluate(open);
