@@ -6,10 +6,18 @@
 set(commit "")
 find_package(Git QUIET)
 if(GIT_FOUND)
+  # Only hexant's own tree: a source tarball unpacked inside another git
+  # work tree must not take that tree's commit.
+  execute_process(COMMAND ${GIT_EXECUTABLE} -C ${SOURCE_DIR} rev-parse --show-toplevel
+                  OUTPUT_VARIABLE top OUTPUT_STRIP_TRAILING_WHITESPACE ERROR_QUIET)
   execute_process(COMMAND ${GIT_EXECUTABLE} -C ${SOURCE_DIR} rev-parse --short=12 HEAD
                   OUTPUT_VARIABLE commit OUTPUT_STRIP_TRAILING_WHITESPACE
                   RESULT_VARIABLE failed ERROR_QUIET)
-  if(failed)
+  file(REAL_PATH "${SOURCE_DIR}" source)
+  if(top)
+    file(REAL_PATH "${top}" top)
+  endif()
+  if(failed OR NOT top STREQUAL source)
     set(commit "")
   else()
     # status, not diff-index: a file only touched is not a change. No
