@@ -35,7 +35,10 @@ TEST_CASE("the man page lists each visible subcommand with its flags", "[app][ma
     const std::string page = page_of(program);
 
     CHECK(has(page, ".TH HEXANT 1"));
-    CHECK(has(page, hexant::app::version_text()));
+    std::string version;  // as roff writes it: "-dirty" is "\-dirty"
+    for (const char c : hexant::app::version_text())
+        version += c == '-' ? "\\-" : std::string(1, c);
+    CHECK(has(page, ".TH HEXANT 1 \"\" \"" + version + "\""));
     CHECK(has(page, ".SS \"hexant render\""));
     CHECK(has(page, ".SS \"hexant merge\\-stats\""));  // every '-' a minus sign
     CHECK(has(page, ".SS \"hexant merge\\-stats error\\-time\""));
