@@ -2,13 +2,14 @@
 # Debian packages hexant needs (as root; otherwise it prints the command),
 # configures, builds into build/, then renders the atom example (frames,
 # contact sheet, animated GIF and H.264 video under out/atom/) or runs the
-# whole test suite.
+# whole test suite. (file: dpkg-shlibdeps under `make package`; man-db:
+# the install.man_page test formats hexant.1 with man -l.)
 PACKAGES := build-essential cmake pkg-config tao-pegtl-dev libglm-dev catch2 libcli11-dev \
             libpng-dev libjpeg-dev libopenexr-dev libgif-dev libtbb-dev libhwy-dev libfreetype-dev fonts-povray povray-includes \
-            nlohmann-json3-dev libavcodec-dev libavformat-dev libswscale-dev libavutil-dev
+            nlohmann-json3-dev libavcodec-dev libavformat-dev libswscale-dev libavutil-dev file man-db
 JOBS := $(shell nproc 2>/dev/null || echo 2)
 
-.PHONY: run test golden bench fuzz fuzz-long sanitize format format-check clang-format-installed build deps clean
+.PHONY: run test install package golden bench fuzz fuzz-long sanitize format format-check clang-format-installed build deps clean
 
 run: build
 	./build/hexant render examples/atom.pov examples/atom.ini \
@@ -19,6 +20,20 @@ run: build
 # the run (the slowest takes seconds; the whole suite about a minute).
 test: build
 	cd build && ctest --output-on-failure -j$(JOBS) --timeout 600
+
+# The install (README.md, "Install"): hexant, its man page and include
+# files under PREFIX (staged under DESTDIR when set), and the Debian package
+# build/hexant_VERSION-1_ARCH.deb. Both build only what is installed.
+PREFIX ?= /usr/local
+install: deps
+	cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+	cmake --build build --target hexant hexant_man_page -j$(JOBS)
+	DESTDIR="$(DESTDIR)" cmake --install build --prefix "$(PREFIX)"
+
+package: deps
+	cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+	cmake --build build --target hexant hexant_man_page -j$(JOBS)
+	cd build && cpack -G DEB
 
 # Renders the golden-test frames anew and stores them in tests/golden/: run by
 # hand after a change that is meant to change the images, then look at them.

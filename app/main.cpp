@@ -15,6 +15,7 @@
 #include "app/command_line.hpp"
 #include "app/error_time_command.hpp"
 #include "app/farm_command.hpp"
+#include "app/man_page.hpp"
 #include "app/merge_stats.hpp"
 #include "app/povray_render_options.hpp"
 #include "app/povray_words.hpp"
@@ -22,6 +23,7 @@
 #include "app/scene_dump.hpp"
 #include "app/scene_reading.hpp"
 #include "app/scene_summary.hpp"
+#include "app/version.hpp"
 #include "language/interpreter.hpp"
 #include "tracer/whole_file.hpp"
 
@@ -37,6 +39,7 @@ int main(int argc, char** argv) {
     mallopt(M_MMAP_THRESHOLD, 1 << 20);
     CLI::App program{"hexant: spacetime ray tracing of POV-Ray-style animated scenes"};
     program.require_subcommand(1);
+    program.set_version_flag("--version", app::version_text());
 
     app::SceneArguments check_arguments;
     CLI::App* check = program.add_subcommand(
@@ -100,6 +103,10 @@ int main(int argc, char** argv) {
         "per mode and sample count (CSV and log-log plot)");
     app::add_error_time_arguments(*error_time, error_time_arguments);
 
+    // Hidden (no group): the build writes hexant.1 with it (app/man_page.hpp).
+    CLI::App* man_page =
+        program.add_subcommand("man-page", "Print the manual page (roff)")->group("");
+
     // (CLI11_PARSE, over the words as POV-Ray's switches need them.)
     program.name(argc > 0 ? argv[0] : "hexant");
     std::vector<std::string> words = app::command_line_words(argc, argv);
@@ -108,6 +115,10 @@ int main(int argc, char** argv) {
         program.parse(words);
     } catch (const CLI::ParseError& e) {
         return program.exit(e);
+    }
+    if (man_page->parsed()) {
+        app::write_man_page(program, std::cout);
+        return std::cout.flush() ? 0 : 1;  // a full disk is no page
     }
     if (render->parsed()) return app::run_render(render_arguments, std::cout, std::cerr);
     if (merge->parsed())

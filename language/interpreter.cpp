@@ -17,15 +17,7 @@
 #include "language/source_files.hpp"
 #include "runtime/objects/parameter_check.hpp"
 
-#ifndef HEXANT_BUNDLED_INCLUDE_DIR
-#define HEXANT_BUNDLED_INCLUDE_DIR "language/include"
-#endif
-
 namespace hexant::language {
-
-std::filesystem::path bundled_include_dir() {
-    return HEXANT_BUNDLED_INCLUDE_DIR;
-}
 
 Interpreter::Interpreter(const ParseOptions& options_in, runtime::SceneDescription& scene_in,
                          std::filesystem::path scene_folder)

@@ -83,8 +83,10 @@ runtime::SceneDescription parse_scene_file(const std::filesystem::path& path,
 runtime::SceneDescription parse_scene_text(const std::string& text, const std::string& name,
                                            const ParseOptions& options);
 
-// The folder of the include files that ship with hexant (colors.inc), which
-// is searched last.
+// The folder of the include files that ship with hexant (colors.inc),
+// searched after -L and before POV-Ray's own: an installed hexant's
+// share/hexant/include beside its bin/, else the source tree's
+// language/include (language/bundled_include_dir.cpp).
 std::filesystem::path bundled_include_dir();
 
 }  // namespace hexant::language
