@@ -140,6 +140,9 @@ TEST_CASE("the last frame of a non-cyclic animation never shows a time past Fina
     const std::string scene = card_where("clock > 1");
     rt::Animation a = make(3, 0.0, 1.0, false, rt::ShutterPosition::Start);
     CHECK(mean_brightness(render(scene, a, 3, 4)) == 0.0);
+    // Its instant, Final_Clock itself, is in the animation and is what the
+    // last frame shows (POV-Ray's last frame).
+    CHECK(mean_brightness(render(card_where("clock >= 1"), a, 3, 4)) > 0.99);
     a.shutter_beyond_range = true;
     CHECK(mean_brightness(render(scene, a, 3, 4)) > 0.99);
     // And the first frame never a time before Initial_Clock (end position).
