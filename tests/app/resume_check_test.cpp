@@ -273,3 +273,60 @@ TEST_CASE("windows rendered at once by two processes leave every record whole fo
     CHECK(run.err.find("rendered again") == std::string::npos);
     CHECK(fs::exists(folder / "sheet.png"));
 }
+
+TEST_CASE("a scene read frame by frame: each frame's record holds the files its reading read",
+          "[app][resume]") {
+    const fs::path folder = folder_for("frame_by_frame");
+    // Stepped per frame (read frame by frame, app/scene_reading.hpp), and
+    // frame 3 alone includes a file.
+    std::ofstream(folder / "scene.pov", std::ios::trunc) << R"(
+#declare A = array[1] { 0 }
+#declare I = 0;
+#while (I < frame_number)
+  #declare A[0] = A[0] + 1;
+  #declare I = I + 1;
+#end
+#declare Tint = <0.9, 0.3, 0.2>;
+#if (frame_number = 3) #include "three.inc" #end
+camera { location <0, 2, -6> look_at <0, 0.5, 0> }
+light_source { <-3, 5, -4>, rgb 1 }
+sphere { <A[0] - 2, 0.5, 0>, 0.5 pigment { rgb Tint } }
+)";
+    std::ofstream(folder / "three.inc") << "#declare Tint = <0.2, 0.3, 0.9>;\n";
+    Run run = render(arguments(folder));
+    INFO(run.err);
+    REQUIRE(run.status == 0);
+    REQUIRE(run.err.find("is read frame by frame") != std::string::npos);
+    const auto three = nlohmann::json::parse(bytes(frame_record_path(frame(folder, 3))));
+    REQUIRE(three["inputs"].size() == 2);
+    CHECK(three["inputs"][1]["file"] == "three.inc");
+    CHECK(nlohmann::json::parse(bytes(frame_record_path(frame(folder, 2))))["inputs"].size() == 1);
+    // Only the frame that read the edited file is rendered again.
+    std::ofstream(folder / "three.inc", std::ios::app) << "// edited\n";
+    run = render(resumed(arguments(folder)));
+    CHECK(run.out.find("--resume: 2 of 3 frames already written") != std::string::npos);
+    CHECK(run.err.find("frame 3 (" + frame(folder, 3).string() +
+                       ") rendered again: three.inc, which its scene read, has changed since") !=
+          std::string::npos);
+    run = render(resumed(arguments(folder)));
+    CHECK(run.out.find("--resume: 3 of 3 frames already written") != std::string::npos);
+}
+
+TEST_CASE("many frames rendered again: the first ten named, the rest counted", "[app][resume]") {
+    const fs::path folder = folder_for("many");
+    RenderArguments a = arguments(folder);
+    a.scene.width = 8;
+    a.scene.height = 6;
+    a.scene.frame_count = 14;
+    a.samples_per_pixel = 1;
+    a.output = (folder / "out" / "f_##.png").string();
+    REQUIRE(render(a).status == 0);
+    a.seed = 7;
+    const Run run = render(resumed(a));
+    INFO(run.err);
+    CHECK(run.out.find("--resume: 0 of 14 frames already written") != std::string::npos);
+    CHECK(run.err.find("frame 10 (") != std::string::npos);
+    CHECK(run.err.find("its seed was 0, this render's is 7") != std::string::npos);
+    CHECK(run.err.find("frame 11 (") == std::string::npos);
+    CHECK(run.err.find("--resume: 4 more frames rendered again") != std::string::npos);
+}
