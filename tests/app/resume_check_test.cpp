@@ -124,7 +124,7 @@ TEST_CASE("each frame's record says what made it, its file's hash and its scene'
 }
 
 TEST_CASE(
-    "a resume at another size renders every frame again and says so; keep keeps "
+    "a resume at another size renders every frame again and says so, and keep keeps "
     "frames of other settings",
     "[app][resume]") {
     const fs::path folder = folder_for("size");
