@@ -272,9 +272,15 @@ RenderArguments with_povray_options(const RenderArguments& given, ResolvedScene&
     map_sampling(s, given, a, resolved, notes);
     if (s.continue_trace && s.continue_trace->value) {
         a.resume = true;
+        // The checked resume, not POV-Ray's keep-anything: +C is given to
+        // finish an interrupted render, and a frame another render made
+        // (other flags, size, scene) is what +C users lose hours to (issue
+        // 46); --resume=keep is there for the rest.
         notes.push_back(s.continue_trace->source +
-                        ": the frames already written are kept (--resume); one cut off "
-                        "mid-render is rendered again whole, where POV-Ray continues it");
+                        ": the frames already written by this same render are kept (--resume); "
+                        "one made with other settings or files, or cut off mid-render, is "
+                        "rendered again, where POV-Ray keeps or continues it (--resume=keep "
+                        "keeps any frame of the right size)");
     }
     if (s.work_threads) {
         if (s.work_threads->value < 1)

@@ -20,6 +20,7 @@
 #include "app/mode_run.hpp"
 #include "app/out_of_memory.hpp"
 #include "app/povray_render_options.hpp"
+#include "app/resume.hpp"
 #include "app/scene_reading.hpp"
 #include "image/image_format.hpp"
 #include "language/interpreter.hpp"
@@ -149,9 +150,17 @@ void add_render_arguments(CLI::App& command, RenderArguments& a) {
         "I/N renders the I-th (0 to N-1, a Slurm array task's number) of N consecutive windows of "
         "the frames, each with a hierarchy over its own time only; the frames are those one run "
         "over all would write");
-    command.add_flag("--resume", a.resume,
-                     "Skip frames already written (POV-Ray's +C) and remove what a killed run left "
-                     "half-written");
+    command
+        .add_flag("--resume{check}", a.resume_text,
+                  "Keep the frames already written by this same render (their records say the "
+                  "same scene, files and settings made them), render the others, and remove what "
+                  "a killed run left half-written; --resume=keep keeps any readable frame of the "
+                  "right size, as POV-Ray's +C")
+        ->check(CLI::IsMember({"check", "keep"}))
+        ->each([&a](const std::string& how) {
+            a.resume = true;
+            a.resume_keep = how == "keep";
+        });
     command.add_option("-o,--output", a.output,
                        "Frame file pattern; #### becomes the frame number (default "
                        "out/SCENE/frame_####.png): .png is 8-bit sRGB, .exr linear float");
@@ -455,53 +464,25 @@ int run_render(const RenderArguments& given, std::ostream& out, std::ostream& er
         check_outputs(args, pattern, selected, scene.animation, inputs);
         const std::size_t frame_pixels =
             std::size_t(scene.animation.width) * std::size_t(scene.animation.height);
+        // Each frame's record of what made it, written beside it
+        // (app/frame_record.hpp); --resume keeps only frames whose record
+        // matches.
+        FrameRecords records(render_settings(sampling, args, scene.animation, resolved.options),
+                             scene.animation, resolved.scene);
+        const FrameRecords::ReadFiles scene_read = records.hash_inputs(scene.inputs);
         if (args.resume) {
-            // A frame on disk was written whole (a temporary renamed over
-            // it); what a killed run left half-written is its temporaries.
-            int leftovers = 0;
-            std::vector<int> missing;
-            for (const int frame : selected) {
-                const std::filesystem::path path = tracer::frame_path(pattern, frame);
-                leftovers += tracer::remove_leftover_temporaries(path);
-                std::error_code error;
-                if (!std::filesystem::is_regular_file(path, error)) {
-                    missing.push_back(frame);
-                    continue;
-                }
-                // A file hexant did not write whole, or of another size (an
-                // earlier render with other flags), is rendered again; one
-                // that declares more pixels than the frame is refused from
-                // its header.
-                std::string why;
-                try {
-                    const image::StoredImage stored = image::read_stored_image(path, frame_pixels);
-                    if (stored.width != scene.animation.width ||
-                        stored.height != scene.animation.height)
-                        why = std::to_string(stored.width) + " by " +
-                              std::to_string(stored.height) + " pixels, not " +
-                              std::to_string(scene.animation.width) + " by " +
-                              std::to_string(scene.animation.height);
-                } catch (const std::exception& e) {
-                    why = e.what();
-                }
-                if (!why.empty()) {
-                    err << "--resume: " << path.string() << " is rendered again (" << why << ")\n";
-                    missing.push_back(frame);
-                }
-            }
-            // (The video's temporary lives through the whole render.)
-            if (args.video) leftovers += tracer::remove_leftover_temporaries(*args.video);
-            if (leftovers > 0)
-                err << "--resume: removed " << leftovers << " half-written temporar"
-                    << (leftovers == 1 ? "y" : "ies") << "\n";
-            out << "--resume: " << selected.size() - missing.size() << " of " << selected.size()
-                << " frames already written\n";
+            const ResumeCheck check =
+                resume_check(args, pattern, selected, scene.animation, records,
+                             reading.frame_by_frame() ? nullptr : &scene_read, err);
+            out << "--resume: " << selected.size() - check.missing.size() << " of "
+                << selected.size() << " frames already written\n";
             written.assign(selected.begin(), selected.end());
             std::erase_if(written, [&](int frame) {
-                return std::binary_search(missing.begin(), missing.end(), frame);
+                return std::binary_search(check.missing.begin(), check.missing.end(), frame);
             });
-            if (missing.empty() && !args.contact_sheet && !args.animation && !args.video) return 0;
-            selected = std::move(missing);
+            if (check.missing.empty() && !args.contact_sheet && !args.animation && !args.video)
+                return 0;
+            selected = check.missing;
         }
         // Each mode's render of the selected frames; a scene read frame by
         // frame renders each frame from its own reading.
@@ -535,6 +516,14 @@ int run_render(const RenderArguments& given, std::ostream& out, std::ostream& er
                 named_video([&] { video->add(image); });
             };
         }
+        // Each frame written gets its record, made of the files its reading
+        // read (read frame by frame: that frame's own), then goes to the
+        // video.
+        const FrameRecords::ReadFiles* read_now = &scene_read;
+        const FrameSink recorded = [&](int frame, const tracer::Image& image) {
+            records.write(frame, tracer::frame_path(pattern, frame), *read_now);
+            if (to_video) to_video(frame, image);
+        };
         const auto render = [&](tracer::Mode mode, bool write, std::vector<tracer::Image>* keep,
                                 bool last_use, const FrameSink& sink) {
             if (!reading.frame_by_frame())
@@ -544,10 +533,13 @@ int run_render(const RenderArguments& given, std::ostream& out, std::ostream& er
             for (std::size_t i = 0; i < selected.size(); ++i) {
                 runtime::SceneDescription alone = reading.read_frame(selected[i]);
                 alone.animation = scene.animation;  // (apply_scene_defaults's shutter)
+                const FrameRecords::ReadFiles frame_read = records.hash_inputs(alone.inputs);
+                read_now = &frame_read;
                 ModeRun run = render_mode(alone, args, sampling, mode, pattern, {selected[i]},
                                           write, keep, true, err, {i, selected.size()}, sink);
                 all.counters += run.counters;
                 all.frames.insert(all.frames.end(), run.frames.begin(), run.frames.end());
+                read_now = &scene_read;  // (`frame_read` is gone)
             }
             return all;
         };
@@ -559,7 +551,7 @@ int run_render(const RenderArguments& given, std::ostream& out, std::ostream& er
         if (!selected.empty())
             columns.emplace_back(
                 tracer::mode_name(mode),
-                render(mode, true, keep_frames ? &frames : nullptr, !args.compare, to_video));
+                render(mode, true, keep_frames ? &frames : nullptr, !args.compare, recorded));
         if (keep_frames && !written.empty()) {
             // (--resume) The frames on disk join those just rendered, in
             // order, read back as written (an 8-bit sRGB frame gives its

@@ -28,9 +28,14 @@ struct RenderArguments {
     // consecutive windows of the frames, each its own hierarchy over its own
     // time (window_frames).
     std::optional<std::string> window;
-    // POV-Ray's +C: frames already written are skipped, a killed run's
-    // temporaries removed.
+    // --resume: frames already written by this very render (their records
+    // match it: app/frame_record.hpp) are kept, others rendered again, a
+    // killed run's temporaries removed. With resume_keep (--resume=keep,
+    // POV-Ray's +C as POV-Ray does it) any readable frame of the right
+    // size is kept, however it was made.
     bool resume = false;
+    bool resume_keep = false;
+    std::string resume_text;            // (the flag's own storage: check or keep)
     std::optional<std::string> output;  // pattern with ####
     std::optional<std::string> contact_sheet, animation, stats_json;
     // --video: .mp4 (H.264) or .webm (VP9), fed each frame as it finishes

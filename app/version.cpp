@@ -18,4 +18,8 @@ std::string version_text() {
     return text;
 }
 
+std::string version_number() {
+    return HEXANT_VERSION;
+}
+
 }  // namespace hexant::app

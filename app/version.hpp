@@ -10,4 +10,8 @@ namespace hexant::app {
 // "hexant 0.1.0 (git 70a4804)", or "hexant 0.1.0" outside a git tree.
 std::string version_text();
 
+// The project's version alone, "0.1.0" (what a frame's record keeps:
+// app/frame_record.hpp).
+std::string version_number();
+
 }  // namespace hexant::app

@@ -98,8 +98,10 @@ TEST_CASE("a full disk: the run fails at the frame that does not fit, the others
         const std::uintmax_t third = pages(fs::file_size(folder / name(3)));
         REQUIRE(third > 16 * 1024);
 
-        // Room for two frames and half the third.
-        const std::string size = "size=" + std::to_string(pages(first + second + third / 2));
+        // Room for two frames, their records (a page each: under 4 KB) and
+        // half the third.
+        const std::string size =
+            "size=" + std::to_string(pages(first + second + 2 * 4096 + third / 2));
         if (mount("tmpfs", disk.c_str(), "tmpfs", 0, size.c_str()) != 0) {
             WARN("not run: cannot mount a tmpfs here: " << std::strerror(errno));
             return;
@@ -112,10 +114,14 @@ TEST_CASE("a full disk: the run fails at the frame that does not fit, the others
         INFO(message);
         CHECK(message.find((disk / name(3)).string() + ": writing failed") != std::string::npos);
         CHECK(message.find(std::strerror(ENOSPC)) != std::string::npos);
-        // Exactly the two finished frames, whole.
+        // Exactly the two finished frames, whole, and their records.
         std::set<std::string> left;
         for (const auto& entry : fs::directory_iterator(disk)) left.insert(entry.path().filename());
-        CHECK(left == std::set<std::string>{name(1), name(2)});
+        CHECK(left == std::set<std::string>{name(1), name(2), ".hexant"});
+        left.clear();
+        for (const auto& entry : fs::directory_iterator(disk / ".hexant"))
+            left.insert(entry.path().filename());
+        CHECK(left == std::set<std::string>{name(1) + ".json", name(2) + ".json"});
         for (const int frame : {1, 2}) {
             const hexant::image::StoredImage image =
                 hexant::image::read_stored_image(disk / name(frame));

@@ -69,7 +69,8 @@ int render(const RenderArguments& a) {
 }
 
 // Every frame of `a_dir` equals the same frame of `b_dir`, byte for byte,
-// and neither holds anything else (no temporary).
+// and neither holds anything else (no temporary) than the frames and their
+// records (.hexant/NAME.json, app/frame_record.hpp).
 void check_same_frames(const fs::path& a_dir, const fs::path& b_dir, int frames) {
     for (int k = 1; k <= frames; ++k) {
         char name[32];
@@ -78,8 +79,11 @@ void check_same_frames(const fs::path& a_dir, const fs::path& b_dir, int frames)
         REQUIRE(fs::exists(a_dir / name));
         REQUIRE(fs::exists(b_dir / name));
         CHECK(bytes(a_dir / name) == bytes(b_dir / name));
+        CHECK(fs::exists(b_dir / ".hexant" / (std::string(name) + ".json")));
     }
-    CHECK(std::distance(fs::directory_iterator(b_dir), fs::directory_iterator()) == frames);
+    CHECK(std::distance(fs::directory_iterator(b_dir), fs::directory_iterator()) == frames + 1);
+    CHECK(std::distance(fs::directory_iterator(b_dir / ".hexant"), fs::directory_iterator()) ==
+          frames);
 }
 
 }  // namespace
@@ -167,12 +171,16 @@ TEST_CASE("resuming after SIGKILL at a random moment loses no frame and leaves n
                                    std::to_string(delay) +
                                    "; kill -9 $pid 2> /dev/null; wait $pid ) 2> /dev/null";
         std::system(killed.c_str());
-        // What the kill left: whole frames, perhaps a temporary.
+        // What the kill left: whole frames, each with its record but
+        // perhaps the last (a frame is written, then its record), perhaps
+        // a temporary.
         int whole_frames = 0;
         if (fs::exists(folder / "killed"))
             for (const auto& entry : fs::directory_iterator(folder / "killed"))
                 if (entry.path().extension() == ".png" &&
-                    entry.path().filename().string()[0] != '.')
+                    entry.path().filename().string()[0] != '.' &&
+                    fs::exists(folder / "killed" / ".hexant" /
+                               (entry.path().filename().string() + ".json")))
                     ++whole_frames;
         RenderArguments again = arguments(folder, "killed");
         again.resume = true;
@@ -184,7 +192,8 @@ TEST_CASE("resuming after SIGKILL at a random moment loses no frame and leaves n
         check_same_frames(folder / "one", folder / "killed", 12);
     }
     // A frame cut short, a file that is no image, a frame of another size:
-    // rendered again, not taken as written (found by a fresh user).
+    // rendered again, not taken as written (found by a fresh user), even by
+    // --resume=keep, which reads each frame as POV-Ray's +C would keep it.
     std::ofstream(folder / "killed/f_0002.png", std::ios::trunc) << "not a png";
     {
         const std::string written = bytes(folder / "killed/f_0003.png");
@@ -209,6 +218,7 @@ TEST_CASE("resuming after SIGKILL at a random moment loses no frame and leaves n
     {
         RenderArguments again = arguments(folder, "killed");
         again.resume = true;
+        again.resume_keep = true;
         std::ostringstream out, err;
         REQUIRE(run_render(again, out, err) == 0);
         CHECK(out.str().find("8 of 12 frames already written") != std::string::npos);

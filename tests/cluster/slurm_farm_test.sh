@@ -157,6 +157,10 @@ done
 cmp -s one.png farm.png || { echo "the contact sheets differ"; status=1; }
 cmp -s one.gif farm.gif || { echo "the animations differ"; status=1; }
 [ -s scripts/stats.json ] || { echo "no merged statistics"; status=1; }
-ls -a farm | grep -q partial && { echo "a temporary was left"; status=1; }
+ls -a farm farm/.hexant | grep -q partial && { echo "a temporary was left"; status=1; }
+# Every frame's record (app/frame_record.hpp), whole, the requeued task's too.
+for f in farm/f_*.png; do
+  [ -s "farm/.hexant/$(basename "$f").json" ] || { echo "no record for $f"; status=1; }
+done
 [ $status = 0 ] || { cat scripts/*.log; fail "the cluster's frames are not one machine's"; }
 echo "16 frames, contact sheet and GIF from 4 Slurm array tasks (one requeued mid-run) identical to one machine's"
