@@ -4,7 +4,7 @@
 # contact sheet, animated GIF and H.264 video under out/atom/) or runs the
 # whole test suite.
 PACKAGES := build-essential cmake pkg-config tao-pegtl-dev libglm-dev catch2 libcli11-dev \
-            libpng-dev libjpeg-dev libopenexr-dev libgif-dev libtbb-dev libhwy-dev libfreetype-dev fonts-povray povray-includes \
+            libpng-dev libjpeg-dev libopenexr-dev libgif-dev libopenimageio-dev libtbb-dev libhwy-dev libfreetype-dev fonts-povray povray-includes \
             nlohmann-json3-dev libavcodec-dev libavformat-dev libswscale-dev libavutil-dev
 JOBS := $(shell nproc 2>/dev/null || echo 2)
 
