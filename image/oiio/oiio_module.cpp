@@ -111,7 +111,9 @@ int read(const char* path, const char* format, std::size_t max_pixels, HexantOii
             set_error(error, error_size, "out of memory for the pixels");
             return 1;
         }
-        if (!in->read_image(0, 0, 0, image->channels, OIIO::TypeDesc::FLOAT, values)) {
+        // (A reader that went on past an error it logged: a failure too.)
+        if (!in->read_image(0, 0, 0, image->channels, OIIO::TypeDesc::FLOAT, values) ||
+            in->has_error()) {
             set_error(error, error_size, in->geterror());
             return 1;
         }
