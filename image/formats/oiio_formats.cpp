@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -76,8 +77,88 @@ void write_through(int fd, int width, int height, const void* pixels, const char
 }
 
 // ---- Targa: no magic bytes (read by the scene's tga or the name's .tga)
+
+// A colour-mapped Targa's indices and map, read here as POV-Ray's targa.cpp
+// reads them (OpenImageIO expands them to colours, and POV-Ray keeps each
+// pixel's index: a height_field's height is index x 256, use_index, filter
+// N): 8-bit indices, uncompressed (type 1) or run-length (9), a map of at
+// most 256 entries of 15, 16, 24 or 32 bits (16: alpha from the top bit).
+// The file was read whole by OpenImageIO first. False for another Targa.
+bool read_tga_palette(const fs::path& file, StoredImage& out) {
+    std::ifstream in(file, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(in)), {});
+    const auto at = [&](std::size_t i) {
+        if (i >= bytes.size()) throw std::runtime_error("its colour map or indices end early");
+        return static_cast<unsigned char>(bytes[i]);
+    };
+    const auto u16 = [&](std::size_t i) { return unsigned(at(i)) | unsigned(at(i + 1)) << 8; };
+    const unsigned type = at(2), map_length = u16(5), entry_bits = at(7), pixel_bits = at(16);
+    if (map_length == 0 || (type != 1 && type != 9)) return false;
+    if (pixel_bits != 8) throw std::runtime_error("a colour map with indices of other than 8 bits");
+    if (map_length > 256) throw std::runtime_error("a colour map of more than 256 entries");
+    if (entry_bits != 15 && entry_bits != 16 && entry_bits != 24 && entry_bits != 32)
+        throw std::runtime_error("colour map entries of " + std::to_string(entry_bits) + " bits");
+    const int width = int(u16(12)), height = int(u16(14));
+    if (width != out.width || height != out.height)
+        throw std::runtime_error("its header reads differently a second time");
+    const bool top_first = (at(17) & 0x20) != 0;
+    const std::size_t entry_bytes = (entry_bits + 7) / 8;
+    std::size_t pos = 18 + std::size_t(at(0));  // after the image ID
+    out.palette.assign(map_length, {0.0f, 0.0f, 0.0f, 1.0f});
+    bool alpha = false;
+    for (auto& entry : out.palette) {
+        unsigned r = 0, g = 0, b = 0, a = 255;
+        if (entry_bits <= 16) {  // (POV-Ray's ConvertColor)
+            const unsigned lo = at(pos), hi = at(pos + 1);
+            r = (hi & 0x7c) << 1;
+            g = (((hi & 0x03) << 3) | ((lo & 0xe0) >> 5)) << 3;
+            b = (lo & 0x1f) << 3;
+            if (entry_bits == 16) a = (hi & 0x80) ? 255 : 0;
+        } else {
+            b = at(pos);
+            g = at(pos + 1);
+            r = at(pos + 2);
+            if (entry_bits == 32) a = at(pos + 3);
+        }
+        alpha = alpha || entry_bits == 16 || entry_bits == 32;
+        entry = {float(r / 255.0), float(g / 255.0), float(b / 255.0), float(a / 255.0)};
+        pos += entry_bytes;
+    }
+    const std::size_t pixels = std::size_t(width) * std::size_t(height);
+    out.indices.assign(pixels, 0);
+    const auto put = [&](std::size_t i, unsigned index) {
+        if (index >= map_length) throw std::runtime_error("an index past its colour map");
+        const std::size_t row = i / std::size_t(width), x = i % std::size_t(width);
+        const std::size_t line = top_first ? row : std::size_t(height) - 1 - row;
+        out.indices[line * std::size_t(width) + x] = static_cast<std::uint8_t>(index);
+    };
+    for (std::size_t i = 0; i < pixels;) {
+        if (type == 1) {
+            put(i++, at(pos++));
+            continue;
+        }
+        const unsigned header = at(pos++);
+        const std::size_t count = std::min<std::size_t>((header & 0x7f) + 1, pixels - i);
+        if (header & 0x80) {
+            const unsigned index = at(pos++);
+            for (std::size_t k = 0; k < count; ++k) put(i++, index);
+        } else {
+            for (std::size_t k = 0; k < count; ++k) put(i++, at(pos++));
+        }
+    }
+    out.channels = alpha ? 4 : 3;
+    out.source = StoredImage::Source::Palette;
+    out.source_bits = 8;
+    out.values.resize(pixels * std::size_t(out.channels));
+    for (std::size_t i = 0; i < pixels; ++i)
+        for (std::size_t k = 0; k < std::size_t(out.channels); ++k)
+            out.values[i * std::size_t(out.channels) + k] = out.palette[out.indices[i]][k];
+    return true;
+}
+
 StoredImage read_tga(const fs::path& file, std::size_t max_pixels) {
     StoredImage out = read_through(file, max_pixels, "targa", "Targa");
+    if (read_tga_palette(file, out)) return out;
     // POV-Ray's targa.cpp keeps an 8-bit gray Targa as RGB (its
     // RGB_Int8), not as a gray image.
     if (out.source == StoredImage::Source::Gray) out.source = StoredImage::Source::Rgb;

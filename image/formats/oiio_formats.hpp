@@ -12,10 +12,10 @@
 //   Radiance HDR: linear light.
 // (IFF, Amiga ILBM, is not read: POV-Ray 3.7.0.10's iff.cpp fails on every
 // file, its loop ending only at the end of the file with an error.)
-// A palette image is read as its colours: OpenImageIO expands palettes, so
-// the indices POV-Ray keeps for a height_field or use_index of a palette
-// Targa, BMP or TIFF are not available (hexant refuses none of them; their
-// height fields are read from the colours).
+// A colour-mapped Targa keeps its indices and map (read by hexant: OpenImageIO
+// expands palettes), as POV-Ray keeps them for a height_field (index x 256)
+// or use_index; a palette BMP or TIFF is read as its colours, its height
+// field made from them (POV-Ray takes the indices there).
 // Frames are written as Targa (uncompressed, +FT, and run-length, +FC),
 // PPM (P6), BMP (24-bit), TIFF and Radiance HDR (RGBE), all 8-bit sRGB but
 // HDR, which is linear.

@@ -293,3 +293,49 @@ TEST_CASE("mutated files of each format read whole or fail with an error", "[ima
     }
     fs::remove_all(folder);
 }
+
+TEST_CASE("a colour-mapped Targa keeps its indices, as POV-Ray reads it", "[image][oiio]") {
+    // 4 x 2 pixels, indices 0..4 of a 5-entry 24-bit map (entry i: blue
+    // 10i, green 20i, red 40i), stored bottom row first; uncompressed
+    // (type 1) and run-length (type 9: a run of 3, then 5 literals).
+    const std::vector<unsigned char> indices_in_file = {4, 4, 4, 3, 0, 1, 2, 3};
+    std::vector<unsigned char> map;
+    for (unsigned i = 0; i < 5; ++i)
+        map.insert(map.end(),
+                   {(unsigned char)(10 * i), (unsigned char)(20 * i), (unsigned char)(40 * i)});
+    const auto targa = [&](unsigned char type, const std::vector<unsigned char>& data) {
+        std::vector<unsigned char> bytes = {0, 1, type, 0, 0, 5, 0, 24, 0,
+                                            0, 0, 0,    4, 0, 2, 0, 8,  0};
+        bytes.insert(bytes.end(), map.begin(), map.end());
+        bytes.insert(bytes.end(), data.begin(), data.end());
+        return bytes;
+    };
+    const fs::path folder = fresh_folder("hexant_tga_palette");
+    const auto write = [&](const char* name, const std::vector<unsigned char>& bytes) {
+        std::ofstream(folder / name, std::ios::binary)
+            .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+        return folder / name;
+    };
+    const fs::path raw = write("raw.tga", targa(1, indices_in_file));
+    const fs::path rle = write("rle.tga", targa(9, {0x82, 4, 0x04, 3, 0, 1, 2, 3}));
+    for (const fs::path& file : {raw, rle}) {
+        INFO(file);
+        const im::StoredImage image = im::read_stored_image(file);
+        REQUIRE(image.source == im::StoredImage::Source::Palette);
+        REQUIRE((image.width == 4 && image.height == 2 && image.channels == 3));
+        REQUIRE(image.palette.size() == 5u);
+        CHECK(image.palette[2][0] == Approx(80 / 255.0));  // red
+        CHECK(image.palette[2][2] == Approx(20 / 255.0));  // blue
+        // Rows top first: the file's second row, then its first.
+        CHECK(image.indices == std::vector<std::uint8_t>{0, 1, 2, 3, 4, 4, 4, 3});
+        CHECK(image.values[3 * 5] == Approx(160 / 255.0));  // pixel 5's red: entry 4
+        // A height field of it: index x 256, its bottom row the file's first.
+        const auto heights = hexant::runtime::objects::heights_from_image(image);
+        CHECK(heights == std::vector<std::uint16_t>{1024, 1024, 1024, 768, 0, 256, 512, 768});
+    }
+    // An index past the map: an error naming the file, as POV-Ray's.
+    const fs::path bad = write("bad.tga", targa(1, {0, 1, 2, 3, 4, 5, 0, 0}));
+    CHECK_THROWS_WITH(im::read_stored_image(bad),
+                      Catch::Contains("bad.tga") && Catch::Contains("past its colour map"));
+    fs::remove_all(folder);
+}
