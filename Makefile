@@ -5,7 +5,7 @@
 # whole test suite. (file: dpkg-shlibdeps under `make package`; man-db:
 # the install.man_page test formats hexant.1 with man -l.)
 PACKAGES := build-essential cmake pkg-config tao-pegtl-dev libglm-dev catch2 libcli11-dev \
-            libpng-dev libjpeg-dev libopenexr-dev libgif-dev libtbb-dev libhwy-dev libfreetype-dev fonts-povray povray-includes \
+            libpng-dev libjpeg-dev libopenexr-dev libgif-dev libopenimageio-dev libtbb-dev libhwy-dev libfreetype-dev fonts-povray povray-includes \
             nlohmann-json3-dev libavcodec-dev libavformat-dev libswscale-dev libavutil-dev nettle-dev file man-db
 JOBS := $(shell nproc 2>/dev/null || echo 2)
 

@@ -90,8 +90,10 @@ std::vector<PixelSetting> render_settings(const Sampling& sampling, const Render
         {"shutter", number(a.shutter)},
         {"shutter curve", curve_text(a.shutter_curve)},
         {"rolling shutter", number(a.rolling_shutter)},
-        {"shutter lead", number(a.shutter_lead())},
-        {"shutter beyond range", a.shutter_beyond_range},
+        {"shutter position", a.shutter_lead() == 0.0   ? "start"
+                             : a.shutter_lead() == 0.5 ? "centre"
+                                                       : "end"},
+        {"shutter beyond range", a.shutter_beyond_range ? "yes" : "no"},
         {"samples per pixel", std::to_string(sampling.samples)},
         {"sample sets", std::to_string(sampling.sets)},
         {"target error", sampling.target_error > 0.0 ? number(sampling.target_error) : "none"},
@@ -103,6 +105,9 @@ std::vector<PixelSetting> render_settings(const Sampling& sampling, const Render
         {"declares", declares.empty() ? "none" : declares},
         {"language version",
          options.language_version ? number(*options.language_version) : "3.7 (none given)"},
+        // (The file's own way of writing its format: +FN16's 16 bits, +FC's
+        // run-length Targa, under the same name as the plain one.)
+        {"file variant", args.output_variant.empty() ? "plain" : args.output_variant},
     };
 }
 

@@ -262,7 +262,8 @@ ModeRun render_mode(runtime::SceneDescription& scene, const RenderArguments& arg
             "rendering frame " + std::to_string(frame) + " (" + size + " pixels)",
             [&] { return renderer.render_frame(frame); });
         if (progress) progress->frame_done(renderer.last_sample_count());
-        if (write) tracer::write_image(image, tracer::frame_path(pattern, frame));
+        if (write)
+            tracer::write_image(image, tracer::frame_path(pattern, frame), args.output_variant);
         if (sink) sink(frame, image);
         const double pixels = double(image.width) * image.height;
         const double seconds =

@@ -6,6 +6,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "image/image_format.hpp"
+
 namespace hexant::app {
 
 namespace fs = std::filesystem;
@@ -31,6 +33,31 @@ T clipped(const Given<T>& given, T low, T high, std::vector<std::string>& notes)
     return v;
 }
 
+// POV-Ray's output type letters (+Fx) and hexant's extensions for them.
+const char* output_extension(char type) {
+    switch (type) {
+        case 'E':
+            return ".exr";
+        case 'T':
+        case 'C':
+            return ".tga";
+        case 'P':
+            return ".ppm";
+        case 'B':
+            return ".bmp";
+        case 'H':
+            return ".hdr";
+        default:
+            return ".png";
+    }
+}
+char output_letter(const fs::path& name) {
+    const std::string ext = image::lower_case_extension(name);
+    for (const char type : {'E', 'T', 'P', 'B', 'H'})
+        if (ext == output_extension(type)) return type;
+    return 'N';
+}
+
 // The frames' file pattern: -o, else POV-Ray's +O and +F, else hexant's
 // default with the type's extension.
 void map_output(const PovRaySettings& s, const ResolvedScene& resolved, RenderArguments& a,
@@ -40,25 +67,34 @@ void map_output(const PovRaySettings& s, const ResolvedScene& resolved, RenderAr
                                  ": hexant writes every frame to a file (it has no display to "
                                  "render to instead)");
     // The type the frames are written in: -o's extension, else +F's.
-    const bool exr_named = a.output && fs::path(*a.output).extension() == ".exr";
-    const char type = a.output        ? (exr_named ? 'E' : 'N')
+    const char type = a.output        ? output_letter(fs::path(*a.output))
                       : s.output_type ? s.output_type->value
                                       : 'N';
     if (s.bits_per_colour) {
         // POV-Ray writes PNG (and PPM) in 5 to 16 bits per colour; hexant
-        // writes 8, and floats in OpenEXR.
+        // writes PNG in 8 or 16, its other formats in 8 (HDR and OpenEXR in
+        // floats).
         const int bits = s.bits_per_colour->value;
-        if (type == 'E')
-            notes.push_back(s.bits_per_colour->source +
-                            ": not used: OpenEXR frames are floats (as in POV-Ray)");
-        else if (bits > 8)
-            throw std::runtime_error(
-                s.bits_per_colour->source + ": hexant writes PNG in 8 bits per colour, not " +
-                std::to_string(bits) + " (+FE writes OpenEXR, in linear float)");
-        else if (bits < 8)
-            notes.push_back(s.bits_per_colour->source +
-                            ": hexant writes PNG in 8 bits per colour, not fewer");
+        const std::string& source = s.bits_per_colour->source;
+        if (type == 'E' || type == 'H')
+            notes.push_back(source + ": not used: " + (type == 'E' ? "OpenEXR" : "Radiance HDR") +
+                            " frames are floats (as in POV-Ray)");
+        else if (type != 'N' && bits != 8)
+            notes.push_back(source + ": not used: hexant writes this format in 8 bits per colour");
+        else if (bits > 16 || bits < 1)
+            throw std::runtime_error(source + ": POV-Ray writes 5 to 16 bits per colour, not " +
+                                     std::to_string(bits));
+        else if (bits > 8) {
+            a.output_variant = "16";
+            if (bits < 16)
+                notes.push_back(source +
+                                ": written in 16 bits per colour (POV-Ray writes 16-bit samples "
+                                "too, rounded to " +
+                                std::to_string(bits) + " bits)");
+        } else if (bits < 8)
+            notes.push_back(source + ": hexant writes PNG in 8 bits per colour, not fewer");
     }
+    if (type == 'C') a.output_variant = "rle";
     if (type == 'E' && s.output_type && !a.output)
         notes.push_back(s.output_type->source +
                         ": OpenEXR in 32-bit float (POV-Ray writes 16-bit half floats)");
@@ -68,7 +104,7 @@ void map_output(const PovRaySettings& s, const ResolvedScene& resolved, RenderAr
             if (given) notes.push_back(*given + ": overridden by -o");
         return;
     }
-    const std::string extension = type == 'E' ? ".exr" : ".png";
+    const std::string extension = output_extension(type);
     if (s.output_file) {
         const std::string name = s.output_file->value.string();
         if (name == "-" || name == "stdout" || name == "stderr")

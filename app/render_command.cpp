@@ -163,7 +163,8 @@ void add_render_arguments(CLI::App& command, RenderArguments& a) {
         });
     command.add_option("-o,--output", a.output,
                        "Frame file pattern; #### becomes the frame number (default "
-                       "out/SCENE/frame_####.png): .png is 8-bit sRGB, .exr linear float");
+                       "out/SCENE/frame_####.png): .png is 8-bit sRGB, .exr linear float; "
+                       ".tga, .ppm, .bmp, .tif 8-bit sRGB, .hdr linear RGBE");
     command.add_option("--contact-sheet", a.contact_sheet,
                        "Also write the frames as one grid image");
     command.add_option("--animation", a.animation, "Also write an animated GIF of the frames");

@@ -37,6 +37,9 @@ struct RenderArguments {
     bool resume_keep = false;
     std::string resume_text;            // (the flag's own storage: check or keep)
     std::optional<std::string> output;  // pattern with ####
+    // How the frames' format is written, when not the extension's own way:
+    // "rle" (Targa, POV-Ray's +FC) or "16" (PNG, +FN16); image_format_for.
+    std::string output_variant;
     std::optional<std::string> contact_sheet, animation, stats_json;
     // --video: .mp4 (H.264) or .webm (VP9), fed each frame as it finishes
     // (tracer/video_file.hpp); --fps the frame rate of it and the GIF.

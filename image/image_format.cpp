@@ -14,6 +14,7 @@
 #include "image/formats/exr_format.hpp"
 #include "image/formats/gif_format.hpp"
 #include "image/formats/jpeg_format.hpp"
+#include "image/formats/oiio_formats.hpp"
 #include "image/formats/png_format.hpp"
 
 namespace hexant::image {
@@ -22,9 +23,16 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The registration: a new format is its own file and one line here.
-constexpr std::array<const ImageFormat*, 4> kFormats{&kPngFormat, &kExrFormat, &kJpegFormat,
-                                                     &kGifFormat};
+// The registration: a new format is its own file and one line here. (The
+// first of an extension is its default when written; a format with no
+// magic bytes, Targa, is last: read only when no other recognizes a file.)
+constexpr std::array<const ImageFormat*, 11> kFormats{
+    &kPngFormat, &kPng16Format, &kExrFormat, &kJpegFormat, &kGifFormat,   &kTiffFormat,
+    &kHdrFormat, &kPnmFormat,   &kBmpFormat, &kTgaFormat,  &kTgaRleFormat};
+
+bool has_extension(const ImageFormat& format, const std::string& ext) {
+    return ext == format.extension || (*format.other_extension && ext == format.other_extension);
+}
 
 }  // namespace
 
@@ -35,17 +43,21 @@ std::string lower_case_extension(const fs::path& path) {
     return ext;
 }
 
-const ImageFormat* image_format_for(const fs::path& path) {
+const ImageFormat* image_format_for(const fs::path& path, const std::string& variant) {
     const std::string ext = lower_case_extension(path);
     for (const ImageFormat* format : kFormats)
-        if (format->write && ext == format->extension) return format;
+        if (format->write && has_extension(*format, ext) && variant == format->variant)
+            return format;
     return nullptr;
 }
 
 std::string image_format_extensions() {
     std::string names;
     for (const ImageFormat* format : kFormats)
-        if (format->write) names += (names.empty() ? "" : ", ") + std::string(format->extension);
+        if (format->write && !*format->variant) {
+            names += (names.empty() ? "" : ", ") + std::string(format->extension);
+            if (*format->other_extension) names += std::string(", ") + format->other_extension;
+        }
     return names;
 }
 
@@ -61,7 +73,8 @@ void check_declared_size(long long width, long long height, std::size_t max_pixe
                         " pixels (width times height)");
 }
 
-StoredImage read_stored_image(const fs::path& path, std::size_t max_pixels) {
+StoredImage read_stored_image(const fs::path& path, std::size_t max_pixels,
+                              const std::string& type_word) {
     // Only a regular file (issue 45: a FIFO at a frame's or a reference's
     // name blocked the reader for good): opened without waiting for a
     // writer, checked, and kept open, so that the format's reader opens
@@ -92,19 +105,24 @@ StoredImage read_stored_image(const fs::path& path, std::size_t max_pixels) {
     std::error_code error;
     const fs::path entry = fs::path("/proc/self/fd") / std::to_string(fd);
     const fs::path opened = fs::exists(entry, error) ? entry : path;
-    for (const ImageFormat* format : kFormats)
-        if (format->recognizes(head.data(), got)) {
-            const std::string what = path.string() + ": cannot read " + format->name + " image: ";
-            try {
-                return format->read(opened, max_pixels);
-            } catch (const ImageTooLarge& e) {
-                throw ImageTooLarge(what + e.what());
-            } catch (const std::runtime_error& e) {
-                throw std::runtime_error(what + e.what());
-            }
+    const auto read = [&](const ImageFormat& format) {
+        const std::string what = path.string() + ": cannot read " + format.name + " image: ";
+        try {
+            return format.read(opened, max_pixels);
+        } catch (const ImageTooLarge& e) {
+            throw ImageTooLarge(what + e.what());
+        } catch (const std::runtime_error& e) {
+            throw std::runtime_error(what + e.what());
         }
+    };
+    for (const ImageFormat* format : kFormats)
+        if (format->recognizes(head.data(), got)) return read(*format);
+    // Targa has no magic bytes: the scene's word or the name says it.
+    if (type_word == "tga" || (type_word.empty() && lower_case_extension(path) == ".tga"))
+        return read(kTgaFormat);
     throw std::runtime_error(path.string() +
-                             ": cannot read image: not a PNG, OpenEXR, JPEG or GIF file");
+                             ": cannot read image: not a PNG, OpenEXR, JPEG, GIF, TIFF, Radiance "
+                             "HDR, PPM, PGM or BMP file, nor a Targa file named .tga");
 }
 
 }  // namespace hexant::image

@@ -1,10 +1,12 @@
 // Image files as hexant reads and writes them, one format per file under
-// formats/ and one line in image_format.cpp's table: PNG (8-bit sRGB,
+// formats/ and one line in image_format.cpp's table: PNG (8- and 16-bit,
 // libpng) and OpenEXR (linear float, the OpenEXR library), and JPEG and
-// GIF read only (libjpeg, giflib). Each is linked
-// directly rather than through OpenImageIO, whose plugins and their
-// libraries cost every process about 120 MB of resident memory and half a
-// second before main() (docs/benchmarks.md, "Scale: the swarm"; issue 21).
+// GIF read only (libjpeg, giflib), each linked directly; Targa, TIFF,
+// Radiance HDR, PPM/PGM and BMP through OpenImageIO, in a module of its
+// own loaded the first time a file needs it (formats/oiio_formats.hpp,
+// oiio_library.hpp): linked into hexant, OpenImageIO's plugins and their
+// libraries would cost every process about 120 MB of resident memory and a
+// third of a second before main() (docs/benchmarks.md; issue 21).
 #pragma once
 
 #include <array>
@@ -35,6 +37,10 @@ struct StoredImage {
     // Whether the file says how it is encoded (a PNG's sRGB or gAMA
     // chunk): POV-Ray decodes one that does not by the scene's default.
     bool gamma_told = false;
+    // POV-Ray takes the values as they are, in the scene's working space,
+    // unless the scene gives a gamma (its PPM, PGM and TIFF readers: "may
+    // or may not be gamma-encoded").
+    bool as_stored = false;
     // What the file held before it was expanded to RGB or RGBA: its colour
     // type, its bits per sample, and whether its alpha came from a colour
     // key (a PNG tRNS chunk on an RGB or gray image).
@@ -84,23 +90,39 @@ struct ImageFormat {
     // The widest and tallest image it writes (0: no limit of its own), so
     // that a command can refuse a size before it renders anything.
     int max_side = 0;
+    // Another way of writing the same extension, asked for by name
+    // (image_format_for's `variant`): "rle" (Targa), "16" (PNG); "" for the
+    // extension's own.
+    const char* variant = "";
+    // A second extension it is written and known by (".tiff"), or "".
+    const char* other_extension = "";
+    // Whether a pixel written (RGB, as `write` took it; floats for a
+    // `linear` format) read back (as `read` gives it) is what was written,
+    // for a format that does not store its input exactly (16-bit PNG, RGBE);
+    // null: exactly (bytes, floats).
+    bool (*reads_back_as)(const float* written, const float* read) = nullptr;
 };
 
 // A name's extension in lower case (".PNG" and ".png" ask for one format).
 std::string lower_case_extension(const std::filesystem::path& path);
 
-// The format a file name asks hexant to write, by its extension (any case);
+// The format a file name asks hexant to write, by its extension (any case)
+// and `variant` ("": the extension's own; "rle", "16": ImageFormat::variant);
 // nullptr for an unknown one or one hexant only reads.
-const ImageFormat* image_format_for(const std::filesystem::path& path);
+const ImageFormat* image_format_for(const std::filesystem::path& path,
+                                    const std::string& variant = "");
 
 // The extensions hexant writes, for messages: ".png, .exr".
 std::string image_format_extensions();
 
-// Reads an image, its format told by its first bytes (not its name); throws
-// std::runtime_error naming the file when it cannot be opened, is of no
-// format hexant reads, or is damaged, and ImageTooLarge (naming it too)
-// when it declares more than `max_pixels`.
+// Reads an image, its format told by its first bytes, else (Targa has no
+// magic bytes) by `type_word` (a scene's image type, "tga") or the name's
+// extension; throws std::runtime_error naming the file when it cannot be
+// opened, is not a regular file, is of no format hexant reads, or is
+// damaged, and ImageTooLarge (naming it too) when it declares more than
+// `max_pixels`.
 StoredImage read_stored_image(const std::filesystem::path& path,
-                              std::size_t max_pixels = kMaxImagePixels);
+                              std::size_t max_pixels = kMaxImagePixels,
+                              const std::string& type_word = "");
 
 }  // namespace hexant::image

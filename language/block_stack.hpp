@@ -45,6 +45,7 @@ struct ImageMapBuilder {
     bool gamma_srgb_next = false;  // `gamma srgb` just read
     bool all_next = false;         // `filter all` / `transmit all` being read
     bool bump = false;             // a normal's bump_map { }
+    std::string type_word;         // the file's type as written (tga), or empty
     // A material_map's textures, in the order written.
     std::vector<std::shared_ptr<const runtime::Texture>> materials;
     std::optional<TimeFunction> bump_size;

@@ -14,23 +14,26 @@ runtime::pattern::ImagePixels image_pixels(const image::StoredImage& stored,
     if (stored.channels != 3 && stored.channels != 4)
         throw std::logic_error("image_pixels: an image of " + std::to_string(stored.channels) +
                                " channels");
+    // POV-Ray's PPM, PGM and TIFF readers apply no gamma unless the scene
+    // gives one: the values are the working space's as they are.
+    const bool as_stored = stored.as_stored && !gamma.srgb && !gamma.power;
     // Decoding: the scene's gamma, else the file's (OpenEXR is linear; a
     // PNG's gAMA chunk gives its encoding gamma; else sRGB).
     const auto decode = [&](double x) {
         if (gamma.srgb) return image::srgb_decode(x);
         if (gamma.power) return std::pow(x, *gamma.power);
-        if (stored.linear || gamma.undecoded) return x;
+        if (stored.linear || gamma.undecoded || as_stored) return x;
         if (stored.encoding_gamma > 0.0) return std::pow(x, 1.0 / stored.encoding_gamma);
         if (gamma.legacy_default && !stored.gamma_told) return std::pow(x, assumed_gamma);
         return image::srgb_decode(x);
     };
-    const bool working_linear = assumed_gamma == 1.0 || gamma.undecoded;
+    const bool working_linear = assumed_gamma == 1.0 || gamma.undecoded || as_stored;
     using Source = image::StoredImage::Source;
     // POV-Ray 3.7 keeps a gray image of 8 bits or fewer as 8-bit integers
     // after decoding (its Gray_Int8), truncated: dark tones are coarse
     // there, and so here.
     const bool coarse = stored.source == Source::Gray && stored.source_bits <= 8 &&
-                        !stored.linear && !gamma.undecoded;
+                        !stored.linear && !gamma.undecoded && !as_stored;
     // It ignores an RGB image's colour key (tRNS); a gray one's it does not
     // read well (it crashes): hexant keeps that one as alpha.
     const bool keyed_rgb = stored.colour_key && stored.source == Source::Rgb;

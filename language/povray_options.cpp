@@ -302,7 +302,7 @@ const Switch* find_switch(const std::string& body, std::size_t& value_at) {
 }
 
 // The output types of POV-Ray 3.7 (+Fx, Output_File_Type=x); hexant writes
-// PNG and OpenEXR.
+// all but JPEG and the system's own (app/povray_render_options.cpp).
 const char* output_type_name(char letter) {
     switch (letter) {
         case 'N':
@@ -407,16 +407,17 @@ void Setter::output_type(const std::string& value) {
     // Output_File_Type=x is one letter; +Fx may add the bits per colour
     // (+FN16) or g for grey (+FNg).
     if (value.empty() || (!from_switch_ && value.size() != 1))
-        needs("one letter (N: PNG, E: OpenEXR)", value);
+        needs("one letter (N: PNG, E: OpenEXR, T: Targa, ...)", value);
     const char letter = static_cast<char>(std::toupper(static_cast<unsigned char>(value[0])));
     const char* name = output_type_name(letter);
     if (!name)
         bad(std::string("'") + value[0] +
             "' is not a POV-Ray output type (B, C, E, H, J, N, P, S or T)");
-    if (letter != 'N' && letter != 'E')
-        bad(std::string("hexant writes frames as PNG (+FN, Output_File_Type=N) or OpenEXR (+FE, "
-                        "Output_File_Type=E), not as ") +
-            name);
+    if (letter == 'J')
+        bad("hexant does not write frames as JPEG: a frame is read back after it is written and "
+            "must read as written (a full disk shows so; --resume trusts it), which a lossy "
+            "format cannot; +FN (PNG) is lossless");
+    if (letter == 'S') bad("POV-Ray 3.7 on Unix has no system output format (+FS); +FN writes PNG");
     const std::string rest = value.substr(1);
     if (rest == "g" || rest == "G") bad("hexant writes colour frames only, not grey ones");
     if (!rest.empty()) {

@@ -58,7 +58,9 @@ struct PovRaySettings {
     // For `render` (app/povray_render_options.hpp).
     std::optional<Given<std::filesystem::path>> output_file;
     std::optional<Given<bool>> output_to_file;
-    std::optional<Given<char>> output_type;  // 'N' (PNG) or 'E' (OpenEXR)
+    // 'N' (PNG), 'E' (OpenEXR), 'T' (Targa), 'C' (RLE Targa), 'P' (PPM),
+    // 'B' (BMP) or 'H' (Radiance HDR).
+    std::optional<Given<char>> output_type;
     std::optional<Given<int>> bits_per_colour;
     // A frame number, or below 1 a fraction of the frames (POV-Ray's rule).
     std::optional<Given<double>> subset_start, subset_end;
@@ -83,7 +85,7 @@ struct PovRaySettings {
 // ("res.ini:4"; empty on the command line). Returns false for a word that
 // is no POV-Ray 3.7 switch. Throws std::runtime_error naming the place and
 // the switch for a bad value, or for what hexant cannot do at all (an
-// output type it cannot write: +FT, +FJ, ...).
+// output type it does not write: +FJ, +FS).
 bool apply_povray_switch(const std::string& word, const std::string& place,
                          const std::filesystem::path& folder, PovRaySettings& settings);
 

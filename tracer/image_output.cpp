@@ -1,6 +1,7 @@
 #include "tracer/image_output.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -49,8 +50,12 @@ void check_frame_pattern(const std::string& pattern, std::size_t frames, const s
 
 Image read_image(const fs::path& path, std::size_t max_pixels) {
     const image::StoredImage stored = image::read_stored_image(path, max_pixels);
-    if (!stored.linear && (stored.encoding_gamma != 0.0 || stored.source_bits != 8))
-        throw std::runtime_error(path.string() + ": not an 8-bit sRGB image as hexant writes");
+    // (8 bits, or 16 from +FN16; Targa, PPM, BMP and TIFF frames hold sRGB
+    // bytes too.)
+    if (!stored.linear &&
+        (stored.encoding_gamma != 0.0 || (stored.source_bits != 8 && stored.source_bits != 16)))
+        throw std::runtime_error(path.string() +
+                                 ": not an 8- or 16-bit sRGB image as hexant writes");
     Image image(stored.width, stored.height);
     for (int y = 0; y < stored.height; ++y)
         for (int x = 0; x < stored.width; ++x) {
@@ -94,7 +99,14 @@ void check_reads_back(const ImageFormat& format, const fs::path& file, const Ima
     if (back.width != image.width || back.height != image.height || back.channels != 3)
         throw std::runtime_error("it reads back with the wrong size");
     bool same = true;
-    if (format.linear)
+    if (format.reads_back_as) {
+        std::array<float, 3> written{};
+        for (std::size_t i = 0; i < back.values.size() && same; i += 3) {
+            for (std::size_t k = 0; k < 3; ++k)
+                written[k] = format.linear ? image.rgb[i + k] : float(bytes[i + k] / 255.0);
+            same = format.reads_back_as(written.data(), back.values.data() + i);
+        }
+    } else if (format.linear)
         same = back.values == image.rgb;
     else
         for (std::size_t i = 0; i < bytes.size() && same; ++i)
@@ -104,16 +116,19 @@ void check_reads_back(const ImageFormat& format, const fs::path& file, const Ima
 
 }  // namespace
 
-const ImageFormat& check_image_name(const fs::path& path) {
-    const ImageFormat* format = image_format_for(path);
+const ImageFormat& check_image_name(const fs::path& path, const std::string& variant) {
+    const ImageFormat* format = image_format_for(path, variant);
+    if (!format && !variant.empty() && image_format_for(path))
+        throw std::runtime_error(path.string() + ": " + image_format_for(path)->name +
+                                 " is not written as '" + variant + "'");
     if (!format)
         throw std::runtime_error(path.string() + ": no image format for this name (hexant writes " +
                                  image_format_extensions() + ")");
     return *format;
 }
 
-void check_image_size(const fs::path& path, int width, int height) {
-    const ImageFormat& format = check_image_name(path);
+void check_image_size(const fs::path& path, int width, int height, const std::string& variant) {
+    const ImageFormat& format = check_image_name(path, variant);
     if (format.max_side > 0 && std::max(width, height) > format.max_side)
         throw std::runtime_error(path.string() + ": a " + format.name + " is at most " +
                                  std::to_string(format.max_side) + " pixels a side; the image is " +
@@ -125,8 +140,8 @@ void check_animation_name(const fs::path& path) {
         throw std::runtime_error(path.string() + ": an animation is written as .gif");
 }
 
-void write_image(const Image& image, const fs::path& path) {
-    const ImageFormat* format = &check_image_name(path);
+void write_image(const Image& image, const fs::path& path, const std::string& variant) {
+    const ImageFormat* format = &check_image_name(path, variant);
     TemporaryFile temporary(path);
     std::vector<unsigned char> bytes;
     if (!format->linear) bytes = srgb_pixels(image);

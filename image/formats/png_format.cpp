@@ -3,15 +3,20 @@
 #include <algorithm>
 #include <array>
 #include <cerrno>
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <fcntl.h>
 #include <png.h>
 #include <unistd.h>
+
+#include "image/colour_transfer.hpp"
 
 namespace hexant::image {
 
@@ -63,8 +68,8 @@ void write_png(int fd, int width, int height, const void* pixels) {
     throw std::runtime_error(message);
 }
 
-// libpng reports an error by longjmp to the reader's setjmp; its message is
-// kept first.
+// libpng reports an error by longjmp to the reader's (or writer's) setjmp;
+// its message is kept first.
 void on_error(png_structp png, png_const_charp message) {
     *static_cast<std::string*>(png_get_error_ptr(png)) = message;
     png_longjmp(png, 1);
@@ -195,6 +200,72 @@ StoredImage read_png(const fs::path& file, std::size_t max_pixels) {
     return out;
 }
 
+// 16-bit PNG (POV-Ray's +FN16): linear floats encoded to sRGB in 16 bits,
+// with an sRGB chunk, through libpng's full interface (its simplified one
+// writes 16-bit samples only as linear light).
+std::uint16_t srgb16(float linear) {
+    const double c = std::clamp(double(linear), 0.0, 1.0);
+    return static_cast<std::uint16_t>(std::lround(srgb_encode(c) * 65535.0));
+}
+
+// Everything libpng may leave by longjmp is in here: no object with a
+// destructor in this frame.
+bool write_rows16(std::FILE* stream, png_structp png, png_infop info, int width, int height,
+                  std::vector<png_bytep>& rows) {
+    if (setjmp(png_jmpbuf(png))) return false;
+    png_init_io(png, stream);
+    png_set_IHDR(png, info, png_uint_32(width), png_uint_32(height), 16, PNG_COLOR_TYPE_RGB,
+                 PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_set_sRGB(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+    png_write_info(png, info);
+    png_write_image(png, rows.data());
+    png_write_end(png, info);
+    return true;
+}
+
+void write_png16(int fd, int width, int height, const void* pixels) {
+    const float* in = static_cast<const float*>(pixels);
+    const std::size_t row_values = std::size_t(width) * 3;
+    std::vector<unsigned char> bytes(row_values * 2 * std::size_t(height));
+    for (std::size_t i = 0; i < row_values * std::size_t(height); ++i) {
+        const std::uint16_t v = srgb16(in[i]);  // big-endian
+        bytes[2 * i] = static_cast<unsigned char>(v >> 8);
+        bytes[2 * i + 1] = static_cast<unsigned char>(v & 0xff);
+    }
+    std::vector<png_bytep> rows(static_cast<std::size_t>(height));
+    for (std::size_t y = 0; y < rows.size(); ++y) rows[y] = bytes.data() + y * row_values * 2;
+    errno = 0;
+    const int copy = ::fcntl(fd, F_DUPFD_CLOEXEC, 0);
+    std::FILE* stream = copy < 0 ? nullptr : ::fdopen(copy, "wb");
+    if (!stream) {
+        const int system_error = errno;
+        if (copy >= 0) ::close(copy);
+        throw std::runtime_error(std::strerror(system_error));
+    }
+    std::string message;
+    png_structp png =
+        png_create_write_struct(PNG_LIBPNG_VER_STRING, &message, on_error, on_warning);
+    png_infop info = png ? png_create_info_struct(png) : nullptr;
+    bool ok = info && write_rows16(stream, png, info, width, height, rows);
+    int system_error = errno;
+    png_destroy_write_struct(&png, info ? &info : nullptr);
+    if (ok && std::ferror(stream)) ok = false;
+    if (std::fclose(stream) != 0 && ok) {
+        ok = false;
+        system_error = errno;
+    }
+    if (ok) return;
+    if (message.empty()) message = system_error ? std::strerror(system_error) : "libpng failed";
+    throw std::runtime_error(message);
+}
+
+// A 16-bit frame reads back as its 16-bit values.
+bool reads_back16(const float* written, const float* read) {
+    for (int k = 0; k < 3; ++k)
+        if (std::lround(double(read[k]) * 65535.0) != srgb16(written[k])) return false;
+    return true;
+}
+
 bool is_png(const unsigned char* head, std::size_t bytes) {
     return bytes >= 8 && png_sig_cmp(head, 0, 8) == 0;
 }
@@ -204,5 +275,7 @@ bool is_png(const unsigned char* head, std::size_t bytes) {
 // libpng's writer refuses an IHDR past its user limits, 10^6 pixels a
 // side by default (PNG_USER_WIDTH_MAX, PNG_USER_HEIGHT_MAX).
 const ImageFormat kPngFormat{"PNG", ".png", false, write_png, read_png, is_png, 1000000};
+const ImageFormat kPng16Format{"PNG (16-bit)", ".png",  true, write_png16, read_png,
+                               is_png,         1000000, "16", "",          reads_back16};
 
 }  // namespace hexant::image

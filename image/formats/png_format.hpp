@@ -8,5 +8,8 @@
 namespace hexant::image {
 
 extern const ImageFormat kPngFormat;
+// 16 bits a sample, sRGB-encoded, with an sRGB chunk (POV-Ray's +FN16); it
+// takes linear floats.
+extern const ImageFormat kPng16Format;
 
 }  // namespace hexant::image

@@ -7,6 +7,18 @@
 namespace hexant::language {
 
 // ---- image_map { } (POV-Ray's Parse_Image, Parse_Image_Map)
+// Why hexant refuses an image type word of POV-Ray 3.7's, or null for one it
+// reads (a height_field's pot is read there).
+inline const char* image_type_refusal(const std::string& type) {
+    if (type == "sys")
+        return "sys images: POV-Ray 3.7 on Unix defines no system format ('This platform has "
+               "not defined a SYS file type'); name the file's format (png, tga, ...)";
+    if (type == "iff")
+        return "iff images (Amiga ILBM) are not read: POV-Ray 3.7's reader fails on every file "
+               "('Unexpected EOF while reading IFF file', after the last chunk), so no scene "
+               "renders with one there either; convert the file to png";
+    return nullptr;
+}
 template <>
 struct action<g::image_map_open> {
     template <typename ActionInput>
@@ -19,17 +31,13 @@ template <>
 struct action<g::image_file_type> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        (void)st;
-        // hexant reads PNG, OpenEXR, JPEG and GIF (the file's own bytes say
-        // which).
         std::string type = in.string();
         while (!type.empty() && std::isspace(static_cast<unsigned char>(type.back())))
             type.pop_back();
-        if (type != "png" && type != "exr" && type != "jpeg" && type != "gif")
-            throw UnsupportedError(
-                "image_map: " + type +
-                " images are not supported by hexant (PNG, OpenEXR, JPEG and GIF are; a POT "
-                "file in a height_field)");
+        // The file's own bytes say its format; the word is kept for Targa,
+        // which has no magic bytes.
+        if (const char* refusal = image_type_refusal(type)) throw UnsupportedError(refusal);
+        st.blocks.edit<ImageMapBuilder>(in.position(), type.c_str()).type_word = type;
     }
 };
 template <>
@@ -43,7 +51,7 @@ struct action<g::image_map_file> {
                 st.resolve_include(name, in.position(), "image file");
             try {
                 return std::make_shared<const image::StoredImage>(
-                    image::read_stored_image(path, st.max_image_pixels()));
+                    image::read_stored_image(path, st.max_image_pixels(), b.type_word));
             } catch (const image::ImageTooLarge& e) {
                 throw ValueError(std::string("image_map: ") + e.what() +
                                  "; --max-pixels N raises it");

@@ -270,9 +270,9 @@ TEST_CASE("refused switches and options are errors naming them and their place",
         return err.str();
     };
     const std::pair<std::string, std::string> refused[] = {
-        {"+FT", "+FT: hexant writes frames as PNG (+FN, Output_File_Type=N) or OpenEXR"},
-        {"+FH", "+FH: hexant writes frames as PNG"},
-        {"+FN16", "+FN16: hexant writes PNG in 8 bits per colour, not 16"},
+        {"+FJ", "+FJ: hexant does not write frames as JPEG"},
+        {"+FS", "+FS: POV-Ray 3.7 on Unix has no system output format"},
+        {"+FN17", "+FN17: POV-Ray writes 5 to 16 bits per colour, not 17"},
         {"+FNg", "+FNg: hexant writes colour frames only"},
         {"-F", "-F: hexant writes every frame to a file"},
         {"-FN", "-FN: hexant writes every frame to a file"},
@@ -294,15 +294,15 @@ TEST_CASE("refused switches and options are errors naming them and their place",
     }
     // The same in an .ini file: its name and line first.
     const std::pair<std::string, std::string> in_ini[] = {
-        {"Output_File_Type=T", "Output_File_Type=T: hexant writes frames as PNG"},
+        {"Output_File_Type=J", "Output_File_Type=J: hexant does not write frames as JPEG"},
         {"Output_File_Type=X", "Output_File_Type=X: 'X' is not a POV-Ray output type"},
-        {"Bits_Per_Color=16", "Bits_Per_Color=16: hexant writes PNG in 8 bits per colour"},
+        {"Bits_Per_Color=20", "Bits_Per_Color=20: POV-Ray writes 5 to 16 bits per colour"},
         {"Output_To_File=off", "Output_To_File=off: hexant writes every frame to a file"},
         {"Subset_End_Frame=20", "Subset_End_Frame=20: frame 20 lies past"},
         {"Frame_Step=0", "Frame_Step=0: the step must be 1 or more"},
         {"Work_Threads=0", "Work_Threads=0: needs 1 thread or more"},
         {"Output_File_Name=../a.png", "Output_File_Name=../a.png: outside the .ini file's folder"},
-        {"+FT", "+FT: hexant writes frames as PNG"},
+        {"+FJ", "+FJ: hexant does not write frames as JPEG"},
         {"Width=abc", "Width needs a whole number, not 'abc'"},
     };
     const fs::path ini = folder / "bad.ini";
@@ -418,9 +418,9 @@ TEST_CASE("hexant +Iscene.pov +W64 +H48 +KFF4 +Oout/a.png renders four frames",
     }
     // A refused switch: a non-zero exit, the switch named.
     const std::string refused =
-        hexant + " " + atom + " +W64 +H48 +FT > " + (folder / "refused").string() + " 2>&1";
+        hexant + " " + atom + " +W64 +H48 +FJ > " + (folder / "refused").string() + " 2>&1";
     CHECK(std::system(refused.c_str()) != 0);
     std::ifstream said(folder / "refused");
     const std::string text((std::istreambuf_iterator<char>(said)), {});
-    CHECK_THAT(text, Catch::Contains("+FT: hexant writes frames as PNG"));
+    CHECK_THAT(text, Catch::Contains("+FJ: hexant does not write frames as JPEG"));
 }

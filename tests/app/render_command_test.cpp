@@ -160,8 +160,8 @@ TEST_CASE("render reports bad requests clearly and writes nothing", "[app][rende
         scene, [](RenderArguments& a) { a.mode = "fast"; }, "fast");
     // A name of no image format is refused before the first frame.
     refused(
-        scene, [&](RenderArguments& a) { a.output = (out / "f_##.tif").string(); },
-        "f_##.tif: no image format");
+        scene, [&](RenderArguments& a) { a.output = (out / "f_##.webp").string(); },
+        "f_##.webp: no image format");
     refused(
         scene, [&](RenderArguments& a) { a.animation = (out / "movie.mp4").string(); },
         "movie.mp4: an animation is written as .gif");

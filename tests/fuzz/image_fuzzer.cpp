@@ -1,7 +1,9 @@
 // libFuzzer over the image files a scene may name (image_map, bump_map,
 // material_map, height_field; README, "Fuzzing"): the bytes are a file, read
-// by image::read_stored_image (PNG through libpng, OpenEXR, JPEG, GIF, its
-// format told by its first bytes) under a limit of pixels, then made into
+// by image::read_stored_image (PNG through libpng, OpenEXR, JPEG, GIF; TIFF,
+// Radiance HDR, PPM/PGM and BMP through the OpenImageIO module; its format
+// told by its first bytes, and a file of none read as a Targa, as a scene's
+// word `tga` asks) under a limit of pixels, then made into
 // what a scene keeps of it: an image map's pixels, looked up and
 // interpolated, and a height field's heights (a POT file's too). A damaged
 // or hostile file must end in a std::runtime_error: a crash, a sanitizer
@@ -47,7 +49,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (!hexant::fuzz::write_input_file(path, data, size)) return 0;
     hexant::image::StoredImage stored;
     try {
-        stored = hexant::image::read_stored_image(path, kMaxPixels);
+        stored = hexant::image::read_stored_image(path, kMaxPixels, "tga");
     } catch (const std::runtime_error&) {
         return 0;  // a refused file: what the fuzzer wants to see
     }

@@ -44,4 +44,6 @@ for file in ./usr/bin/hexant ./usr/share/man/man1/hexant.1.gz \
             ./usr/share/hexant/include/colors.inc ./usr/share/doc/hexant/README.md; do
   grep -q " $file\$" "$tmp/files" || { cat "$tmp/files"; fail "the package lacks $file"; }
 done
+grep -q "/hexant/libhexant_oiio.so\$" "$tmp/files" ||
+  { cat "$tmp/files"; fail "the package lacks the OpenImageIO module libhexant_oiio.so"; }
 echo "PASS: $(basename "$deb"): Depends: $depends"

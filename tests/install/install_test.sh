@@ -20,6 +20,10 @@ for file in bin/hexant share/man/man1/hexant.1.gz share/hexant/include/colors.in
   [ -f "$root/$file" ] || fail "$file not installed"
 done
 [ -x "$root/bin/hexant" ] || fail "bin/hexant is not executable"
+# The OpenImageIO module, where the installed hexant looks for it.
+compgen -G "$root/lib*/hexant/libhexant_oiio.so" >/dev/null ||
+  compgen -G "$root/lib/*/hexant/libhexant_oiio.so" >/dev/null ||
+  fail "libhexant_oiio.so not installed under lib/.../hexant"
 
 out=$("$root/bin/hexant" --version) || fail "hexant --version exited $?"
 echo "$out"

@@ -244,8 +244,12 @@ TEST_CASE("what POV-Ray refuses in textures is an error where it is written",
           "image file 'no_such_image.png' not found");
     error("sphere { 0, 1 pigment { image_map { png \"/etc/hostname\" } } }\n",
           "outside the folders");
-    error("sphere { 0, 1 pigment { image_map { tga \"x.tga\" } } }\n",
-          "tga images are not supported");
+    error("sphere { 0, 1 pigment { image_map { sys \"x.png\" } } }\n",
+          "sys images: POV-Ray 3.7 on Unix defines no system format");
+    error("sphere { 0, 1 pigment { image_map { iff \"x.iff\" } } }\n",
+          "Unexpected EOF while reading IFF file");
+    error("sphere { 0, 1 pigment { image_map { tga \"no_such_image.tga\" } } }\n",
+          "image file 'no_such_image.tga' not found");
     hexant::language::ParseOptions with_tiles;  // (tiles.png found on the include path)
     with_tiles.include_paths = {std::string(HEXANT_SOURCE_DIR) +
                                 "/tests/tracer/pov_reference/textures"};

@@ -523,7 +523,11 @@ TEST_CASE("height_field: reading PNG files", "[height_field][image]") {
     REQUIRE(d->height(0, 0) == 3 * 256);
     REQUIRE(d->height(1, 0) == 5 * 256);
     // Refusals, naming what was refused.
-    REQUIRE_THROWS_WITH(obj::read_height_field(dir / "gray.png", "tga"), Catch::Contains("'tga'"));
+    REQUIRE_THROWS_WITH(obj::read_height_field(dir / "gray.png", "sys"),
+                        Catch::Contains("sys images") && Catch::Contains("Unix"));
+    REQUIRE_THROWS_WITH(obj::read_height_field(dir / "x.iff", ""),
+                        Catch::Contains("iff images") && Catch::Contains("Unexpected EOF"));
+    REQUIRE_THROWS_WITH(obj::read_height_field(dir / "x.xyz", ""), Catch::Contains(".xyz"));
     REQUIRE_THROWS_WITH(obj::read_height_field(dir / "x.jpg", ""), Catch::Contains(".jpg"));
     REQUIRE_THROWS_WITH(obj::read_height_field(dir / "gray.png", "exr"),
                         Catch::Contains("OpenEXR"));

@@ -68,8 +68,10 @@ TEST_CASE("a name of no format, a damaged file and a file of no format are error
           "[tracer][image]") {
     const fs::path folder = fresh_folder("hexant_image_format_errors");
     const tr::Image image = ramp(16, 16);
-    CHECK_THROWS_WITH(tr::write_image(image, folder / "frame.tif"),
-                      Catch::Contains("frame.tif") && Catch::Contains(".png, .exr"));
+    CHECK_THROWS_WITH(tr::write_image(image, folder / "frame.webp"),
+                      Catch::Contains("frame.webp") && Catch::Contains(".png, .exr"));
+    CHECK_THROWS_WITH(tr::write_image(image, folder / "frame.exr", "rle"),
+                      Catch::Contains("frame.exr") && Catch::Contains("not written as 'rle'"));
     CHECK(fs::is_empty(folder));
 
     tr::write_image(image, folder / "whole.png");
@@ -85,7 +87,7 @@ TEST_CASE("a name of no format, a damaged file and a file of no format are error
     { std::ofstream(folder / "text.png") << "not an image at all"; }
     CHECK_THROWS_WITH(
         hexant::image::read_stored_image(folder / "text.png"),
-        Catch::Contains("text.png") && Catch::Contains("not a PNG, OpenEXR, JPEG or GIF file"));
+        Catch::Contains("text.png") && Catch::Contains("not a PNG, OpenEXR, JPEG, GIF, TIFF"));
     CHECK_THROWS_WITH(hexant::image::read_stored_image(folder / "missing.png"),
                       Catch::Contains("missing.png"));
     fs::remove_all(folder);

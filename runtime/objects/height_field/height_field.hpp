@@ -5,10 +5,11 @@
 //
 // The image is read when the scene is read, once per file however many
 // height fields name it, and shared by every copy. Its type word may be
-// png or exr (what image::read_stored_image reads), or none (then the
-// file's extension says, as POV-Ray infers it); the other words POV-Ray
-// knows are refused by name. The water level may be a function of time;
-// `hierarchy` is read and ignored (hexant always builds its own).
+// any of POV-Ray's that image::read_stored_image reads (png, exr, jpeg,
+// gif, pot, tga, tiff, ppm, pgm, bmp, hdr), or none (then the file's
+// extension says, as POV-Ray infers it); sys and iff are refused by name.
+// The water level may be a function of time; `hierarchy` is read and
+// ignored (hexant always builds its own).
 #pragma once
 
 #include <array>

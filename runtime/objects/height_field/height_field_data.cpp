@@ -181,45 +181,50 @@ std::shared_ptr<const HeightFieldData> read_height_field(const std::filesystem::
                                                          std::size_t max_pixels) {
     std::string kind = type;
     if (kind.empty()) {
+        // POV-Ray's InferFileTypeFromExt (and .pot, a POT file).
+        static const std::pair<const char*, const char*> kExtensions[] = {
+            {".png", "png"}, {".exr", "exr"}, {".jpg", "jpeg"}, {".jpeg", "jpeg"}, {".gif", "gif"},
+            {".pot", "pot"}, {".tga", "tga"}, {".tif", "tiff"}, {".tiff", "tiff"}, {".ppm", "ppm"},
+            {".pgm", "pgm"}, {".bmp", "bmp"}, {".hdr", "hdr"},  {".iff", "iff"}};
         const std::string ext = image::lower_case_extension(path);
-        if (ext == ".png")
-            kind = "png";
-        else if (ext == ".exr")
-            kind = "exr";
-        else if (ext == ".jpg" || ext == ".jpeg")  // POV-Ray's InferFileTypeFromExt
-            kind = "jpeg";
-        else if (ext == ".gif")
-            kind = "gif";
-        else if (ext == ".pot")
-            kind = "pot";
-        else
+        for (const auto& [extension, word] : kExtensions)
+            if (ext == extension) kind = word;
+        if (kind.empty())
             throw HeightFieldError(
-                "height_field: hexant reads PNG, OpenEXR, JPEG, GIF and POT images, not '" +
-                path.filename().string() + "' (" +
+                "height_field: no image type for '" + path.filename().string() + "' (" +
                 (ext.empty() ? std::string("no extension") : ext) +
-                "); write png \"FILE.png\" or exr \"FILE.exr\"");
+                "): name it, as png \"FILE\" (hexant reads png, exr, jpeg, gif, pot, tga, tiff, "
+                "ppm, pgm, bmp and hdr)");
     }
-    if (kind != "png" && kind != "exr" && kind != "jpeg" && kind != "gif" && kind != "pot")
-        throw HeightFieldError("height_field: hexant does not read '" + kind +
-                               "' images; convert the file to png (or exr)");
+    if (kind == "sys")
+        throw HeightFieldError(
+            "height_field: sys images: POV-Ray 3.7 on Unix defines no system format ('This "
+            "platform has not defined a SYS file type'); name the file's format (png, tga, ...)");
+    if (kind == "iff")
+        throw HeightFieldError(
+            "height_field: iff images (Amiga ILBM) are not read: POV-Ray 3.7's reader fails on "
+            "every file ('Unexpected EOF while reading IFF file', after the last chunk); convert "
+            "the file to png");
     image::StoredImage stored;
     try {
-        stored = image::read_stored_image(path, max_pixels);
+        stored = image::read_stored_image(path, max_pixels, kind);
     } catch (const image::ImageTooLarge& e) {
         throw HeightFieldError(std::string(e.what()) + "; --max-pixels N raises it");
     } catch (const std::runtime_error& e) {
         throw HeightFieldError(e.what());
     }
-    // (The file's bytes say its format: it must be the one named, or one
-    // like it. A POT file is a GIF, and a GIF is paletted.)
+    // (The file's bytes say its format: it must be one like the one named.
+    // A POT file is a GIF, and a GIF is paletted.)
     const bool paletted = stored.source == image::StoredImage::Source::Palette;
-    if ((kind == "exr") != stored.linear || ((kind == "gif" || kind == "pot") && !paletted))
+    const bool linear_kind = kind == "exr" || kind == "hdr";
+    if (linear_kind != stored.linear || ((kind == "gif" || kind == "pot") && !paletted))
         throw HeightFieldError("height_field: '" + path.filename().string() + "' is not " +
                                (kind == "exr"    ? "an OpenEXR"
+                                : kind == "hdr"  ? "a Radiance HDR"
                                 : kind == "jpeg" ? "a JPEG"
                                 : kind == "gif"  ? "a GIF"
                                 : kind == "pot"  ? "a POT (GIF)"
-                                                 : "a PNG") +
+                                                 : "an 8- or 16-bit") +
                                " file");
     if (kind == "pot") {
         try {
