@@ -80,7 +80,7 @@ TEST_CASE("Targa, PPM, BMP and TIFF read the same bytes, each as POV-Ray decodes
     CHECK(std::lround(ppm.values[2] * 255.0f) == 0);
 }
 
-TEST_CASE("a PPM's values go to the working space as they are; a Targa's are sRGB",
+TEST_CASE("a PPM's values go to the working space as they are, a Targa's are sRGB",
           "[image][oiio]") {
     // POV-Ray 3.7's ppm.cpp applies a gamma only when the scene gives one;
     // targa.cpp decodes sRGB by default.
