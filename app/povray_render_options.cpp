@@ -228,9 +228,18 @@ void map_sampling(const PovRaySettings& s, const RenderArguments& given, RenderA
         else
             a.samples_per_pixel = spp;
     }
+    // A --spp given that adaptive sampling cannot use (it needs an even
+    // count of 2 or more: two independent halves) is a fixed count: the
+    // switch's target is dropped, not left to refuse the render.
+    const bool fixed_count = given.samples_per_pixel &&
+                             (*given.samples_per_pixel < 2 || *given.samples_per_pixel % 2 != 0);
     if (target) {
         if (given.target_error)
             overridden.push_back("--target-error");
+        else if (fixed_count)
+            overridden.push_back("--spp " + std::to_string(*given.samples_per_pixel) +
+                                 " (that many samples a pixel, not adaptive: adaptive "
+                                 "sampling needs an even --spp of 2 or more)");
         else
             a.target_error = target;
     }

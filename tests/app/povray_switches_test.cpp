@@ -211,8 +211,20 @@ TEST_CASE("the POV-Ray switches map onto render's sampling as the notes say",
     auto both = resolved({scene, "+KFF2", "+A0.1", "+R4"}, flags);
     CHECK(both.render.samples_per_pixel == 16);
     CHECK(both.notes.back().find("--spp as given wins") != std::string::npos);
-    // The resolved sampling is one render takes.
+    // An odd or single --spp cannot be adaptive: a fixed count, the
+    // switch's target dropped (POV-Ray's camera2.ini has Antialias=On;
+    // with --spp 1 the render was refused).
     hexant::runtime::SceneDescription description;
+    for (const int count : {1, 3}) {
+        RenderArguments fixed;
+        fixed.samples_per_pixel = count;
+        auto one = resolved({scene, "+KFF2", "+A0.2"}, fixed);
+        CHECK(one.render.samples_per_pixel == count);
+        CHECK_FALSE(one.render.target_error);
+        CHECK(one.notes.back().find("not adaptive") != std::string::npos);
+        CHECK_NOTHROW(hexant::app::resolve_sampling(one.render, description));
+    }
+    // The resolved sampling is one render takes.
     const auto sampling = hexant::app::resolve_sampling(fine.render, description);
     CHECK(sampling.samples == 456);
     CHECK(sampling.target_error == Approx(hexant::app::kDefaultTargetError / 3));
