@@ -32,6 +32,38 @@ constexpr png_uint_32 kMaxSide = 1u << 20;
 // own default, stated so a build of it with none cannot take gigabytes.
 constexpr png_alloc_size_t kMaxChunkBytes = 8'000'000;
 
+// A stream of its own over a copy of the caller's descriptor (which stays
+// open), for libpng's stdio writers; throws with the system's reason.
+std::FILE* stream_over(int fd) {
+    errno = 0;
+    const int copy = ::fcntl(fd, F_DUPFD_CLOEXEC, 0);
+    std::FILE* stream = copy < 0 ? nullptr : ::fdopen(copy, "wb");
+    if (!stream) {
+        const int system_error = errno;
+        if (copy >= 0) ::close(copy);
+        throw std::runtime_error(std::strerror(system_error));
+    }
+    return stream;
+}
+
+// Closes a stream libpng wrote to (`ok`: libpng said so; `system_error`:
+// errno just after). libpng's stdio writer reports only a short fwrite
+// ("Write Error"), so ferror and fclose are checked too: a full disk is an
+// error, not a short file. Throws with libpng's message and the system's
+// reason.
+void close_written(std::FILE* stream, bool ok, int system_error, std::string message) {
+    if (ok && std::ferror(stream)) ok = false;
+    if (std::fclose(stream) != 0 && ok) {
+        ok = false;
+        system_error = errno;
+    }
+    if (ok) return;
+    if (message.empty()) message = "libpng failed";
+    const std::string reason = system_error != 0 ? std::strerror(system_error) : "";
+    if (!reason.empty() && message.find(reason) == std::string::npos) message += ": " + reason;
+    throw std::runtime_error(message);
+}
+
 void write_png(int fd, int width, int height, const void* pixels) {
     png_image image;
     std::memset(&image, 0, sizeof image);
@@ -39,33 +71,14 @@ void write_png(int fd, int width, int height, const void* pixels) {
     image.width = static_cast<png_uint_32>(width);
     image.height = static_cast<png_uint_32>(height);
     image.format = PNG_FORMAT_RGB;  // 8-bit, sRGB
-    // A stream of its own over a copy of the caller's descriptor (which
-    // stays open). libpng's stdio writer reports only a short fwrite
-    // ("Write Error"), so ferror and fclose are checked here too: a full
-    // disk is an error, not a short file; the system's reason is in errno.
-    errno = 0;
-    const int copy = ::fcntl(fd, F_DUPFD_CLOEXEC, 0);
-    std::FILE* stream = copy < 0 ? nullptr : ::fdopen(copy, "wb");
-    if (!stream) {
-        const int system_error = errno;
-        if (copy >= 0) ::close(copy);
-        png_image_free(&image);
-        throw std::runtime_error(std::strerror(system_error));
-    }
-    int ok = png_image_write_to_stdio(&image, stream, 0, pixels, 0, nullptr);
-    int system_error = errno;
-    if (ok && std::ferror(stream)) ok = 0;
-    if (std::fclose(stream) != 0 && ok) {
-        ok = 0;
-        system_error = errno;
-    }
+    // (Nothing of the image's is allocated before the write: no free on
+    // stream_over's throw.)
+    std::FILE* stream = stream_over(fd);
+    const bool ok = png_image_write_to_stdio(&image, stream, 0, pixels, 0, nullptr) != 0;
+    const int system_error = errno;
     std::string message = image.message;
     png_image_free(&image);
-    if (ok) return;
-    if (message.empty()) message = "libpng failed";
-    const std::string reason = system_error != 0 ? std::strerror(system_error) : "";
-    if (!reason.empty() && message.find(reason) == std::string::npos) message += ": " + reason;
-    throw std::runtime_error(message);
+    close_written(stream, ok, system_error, std::move(message));
 }
 
 // libpng reports an error by longjmp to the reader's (or writer's) setjmp;
@@ -234,29 +247,15 @@ void write_png16(int fd, int width, int height, const void* pixels) {
     }
     std::vector<png_bytep> rows(static_cast<std::size_t>(height));
     for (std::size_t y = 0; y < rows.size(); ++y) rows[y] = bytes.data() + y * row_values * 2;
-    errno = 0;
-    const int copy = ::fcntl(fd, F_DUPFD_CLOEXEC, 0);
-    std::FILE* stream = copy < 0 ? nullptr : ::fdopen(copy, "wb");
-    if (!stream) {
-        const int system_error = errno;
-        if (copy >= 0) ::close(copy);
-        throw std::runtime_error(std::strerror(system_error));
-    }
+    std::FILE* stream = stream_over(fd);
     std::string message;
     png_structp png =
         png_create_write_struct(PNG_LIBPNG_VER_STRING, &message, on_error, on_warning);
     png_infop info = png ? png_create_info_struct(png) : nullptr;
-    bool ok = info && write_rows16(stream, png, info, width, height, rows);
-    int system_error = errno;
+    const bool ok = info && write_rows16(stream, png, info, width, height, rows);
+    const int system_error = errno;
     png_destroy_write_struct(&png, info ? &info : nullptr);
-    if (ok && std::ferror(stream)) ok = false;
-    if (std::fclose(stream) != 0 && ok) {
-        ok = false;
-        system_error = errno;
-    }
-    if (ok) return;
-    if (message.empty()) message = system_error ? std::strerror(system_error) : "libpng failed";
-    throw std::runtime_error(message);
+    close_written(stream, ok, system_error, std::move(message));
 }
 
 // A 16-bit frame reads back as its 16-bit values.
