@@ -29,10 +29,6 @@ namespace {
 using runtime::Box4;
 using runtime::Event;
 
-// The lens' pair of sample dimensions: none of the lights' (light index +
-// lights x depth).
-constexpr std::uint32_t kLensPair = 0x7fffffffu;
-
 // Calls add(p, t) with every point the eye's rays start from (the lens, an
 // orthographic film) and every light's position, at the opening and closing
 // of each of frames first..last.
@@ -391,7 +387,7 @@ Image Renderer::render_frame(int frame) {
         const double v = 0.5 - (y + s.y) / height;
         const auto lens = [&] {
             const auto pair =
-                padded_pair(seed, static_cast<std::uint32_t>(index),
+                sample_pair(seed, static_cast<std::uint32_t>(index),
                             static_cast<std::uint32_t>(count), kLensPair, settings_.jitter);
             return glm::dvec2(pair[0], pair[1]);
         };

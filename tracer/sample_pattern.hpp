@@ -1,9 +1,19 @@
-// Where in a pixel and when in the shutter each sample falls: the first three
-// dimensions of Sobol's sequence (pixel x, pixel y, time), jointly
-// stratified, with Owen scrambling by hashing (Burley, "Practical Hash-based
-// Owen Scrambling", JCGT 2020) seeded by (frame, pixel). Sample i of a pixel
-// is a pure function of (frame, x, y, i): images do not depend on the thread
-// count or the order of work.
+// Where in a pixel, when in the shutter, where on the lens and where on an
+// area light each sample falls: one low-discrepancy sequence over all of a
+// sample's dimensions jointly, Sobol's (Joe and Kuo's direction numbers) in
+// kJointDimensions dimensions, each Owen-scrambled by hashing (Burley,
+// "Practical Hash-based Owen Scrambling", JCGT 2020) with seeds of the
+// (frame, pixel). Jointly: the first 2^k samples of a pixel are a (t, k,
+// s)-net over pixel, time, lens and lights together, not a net in each
+// pair alone, so an image whose blur couples them (a defocused edge that
+// moves, a penumbra seen through a lens) converges faster than with
+// independent ("padded") pairs. Dimensions past the joint ones (a ninth
+// area light, deep reflections, crand) are padded pairs, as pbrt-v4's
+// PaddedSobolSampler.
+//
+// Sample i of a pixel is a pure function of (frame, x, y, i): images do not
+// depend on the thread count or the order of work, and the sequence is
+// progressive (a pixel extended from n to n' samples keeps its first n).
 #pragma once
 
 #include <array>
@@ -13,17 +23,56 @@ namespace hexant::tracer {
 
 namespace sobol_detail {
 
-// Direction numbers of the first three dimensions (Joe and Kuo): the van der
-// Corput sequence, then the primitive polynomials x + 1 and x^2 + x + 1.
+// Joe and Kuo's direction numbers ("new-joe-kuo-6.21201", their dimensions
+// 2 to 21, chosen for good two-dimensional projections): per dimension the
+// degree s of its primitive polynomial, the polynomial's inner
+// coefficients a, and the initial odd numbers m_1 .. m_s. Dimension 0 is
+// van der Corput's.
+struct Polynomial {
+    int s;
+    std::uint32_t a;
+    std::array<std::uint32_t, 7> m;
+};
+inline constexpr std::array<Polynomial, 20> kJoeKuo{{
+    {1, 0, {1}},
+    {2, 1, {1, 3}},
+    {3, 1, {1, 3, 1}},
+    {3, 2, {1, 1, 1}},
+    {4, 1, {1, 1, 3, 3}},
+    {4, 4, {1, 3, 5, 13}},
+    {5, 2, {1, 1, 5, 5, 17}},
+    {5, 4, {1, 1, 5, 5, 5}},
+    {5, 7, {1, 1, 7, 11, 19}},
+    {5, 11, {1, 1, 5, 1, 1}},
+    {5, 13, {1, 1, 1, 3, 11}},
+    {5, 14, {1, 3, 5, 5, 31}},
+    {6, 1, {1, 3, 3, 9, 7, 49}},
+    {6, 13, {1, 1, 1, 15, 21, 21}},
+    {6, 16, {1, 3, 1, 13, 27, 49}},
+    {6, 19, {1, 1, 1, 15, 7, 5}},
+    {6, 22, {1, 3, 1, 15, 13, 25}},
+    {6, 25, {1, 1, 5, 5, 19, 61}},
+    {7, 1, {1, 3, 7, 11, 23, 15, 103}},
+    {7, 4, {1, 3, 7, 13, 13, 15, 69}},
+}};
+
+// The 32 direction numbers of each dimension, by Bratley and Fox's
+// recurrence (Joe and Kuo 2003, eq. 3).
 struct Directions {
-    std::array<std::array<std::uint32_t, 32>, 3> v{};
+    std::array<std::array<std::uint32_t, 32>, kJoeKuo.size() + 1> v{};
     constexpr Directions() {
         for (int i = 0; i < 32; ++i) v[0][i] = 1u << (31 - i);
-        v[1][0] = 1u << 31;
-        for (int i = 1; i < 32; ++i) v[1][i] = v[1][i - 1] ^ (v[1][i - 1] >> 1);
-        v[2][0] = 1u << 31;  // m1 = 1
-        v[2][1] = 3u << 30;  // m2 = 3
-        for (int i = 2; i < 32; ++i) v[2][i] = v[2][i - 1] ^ v[2][i - 2] ^ (v[2][i - 2] >> 2);
+        for (std::size_t d = 0; d < kJoeKuo.size(); ++d) {
+            const Polynomial& p = kJoeKuo[d];
+            auto& w = v[d + 1];
+            for (int i = 0; i < p.s; ++i) w[i] = p.m[i] << (31 - i);
+            for (int i = p.s; i < 32; ++i) {
+                std::uint32_t x = w[i - p.s] ^ (w[i - p.s] >> p.s);
+                for (int k = 1; k < p.s; ++k)
+                    if ((p.a >> (p.s - 1 - k)) & 1u) x ^= w[i - k];
+                w[i] = x;
+            }
+        }
     }
 };
 inline constexpr Directions kDirections{};
@@ -66,6 +115,14 @@ inline std::uint32_t hash(std::uint32_t x) {  // lowbias32 (Wellons)
 
 }  // namespace sobol_detail
 
+// The sequence's dimensions: pixel x and y, time, the lens' pair, then
+// kJointLightPairs pairs for area lights (a light's pair key below it).
+inline constexpr int kPixelX = 0, kPixelY = 1, kTime = 2, kLensU = 3, kFirstLightDimension = 5;
+inline constexpr int kJointDimensions = static_cast<int>(sobol_detail::kJoeKuo.size()) + 1;
+inline constexpr std::uint32_t kJointLightPairs = (kJointDimensions - kFirstLightDimension) / 2;
+// The lens' pair key (sample_pair): none of the lights'.
+inline constexpr std::uint32_t kLensPair = 0x7fffffffu;
+
 struct PixelSample {
     double x, y;  // in [0, 1) across the pixel
     double time;  // in [0, 1) across the shutter
@@ -89,33 +146,47 @@ inline std::uint32_t second_set_seed(std::uint32_t seed) {
     return hash(hash(seed ^ 0x5ec0d5e7u) + 0x7f4a7c15u);
 }
 
-// Sample `index` of a pixel. Without jitter, the same unscrambled points
-// shifted to the middles of their strata: one sample is the pixel's centre
-// at the middle of the shutter.
-inline PixelSample pixel_sample(std::uint32_t seed, std::uint32_t index, std::uint32_t count,
-                                bool jitter) {
+// Dimension `dimension` (< kJointDimensions) of sample `index` of a pixel,
+// in [0, 1). Without jitter, the unscrambled point shifted to the middle of
+// its stratum among `count` samples: one sample is the pixel's centre at
+// the middle of the shutter.
+inline double joint_dimension(std::uint32_t seed, std::uint32_t index, std::uint32_t count,
+                              int dimension, bool jitter) {
     using namespace sobol_detail;
     constexpr double kScale = 1.0 / 4294967296.0;
     if (!jitter) {
-        const double half = 0.5 / static_cast<double>(count == 0 ? 1 : count);
-        auto wrap = [](double u) { return u >= 1.0 ? u - 1.0 : u; };
-        return {wrap(sobol(index, 0) * kScale + half), wrap(sobol(index, 1) * kScale + half),
-                wrap(sobol(index, 2) * kScale + half)};
+        const double u =
+            sobol(index, dimension) * kScale + 0.5 / static_cast<double>(count == 0 ? 1 : count);
+        return u >= 1.0 ? u - 1.0 : u;
     }
-    return {owen_scramble(sobol(index, 0), hash(seed ^ 0x1u)) * kScale,
-            owen_scramble(sobol(index, 1), hash(seed ^ 0x2u)) * kScale,
-            owen_scramble(sobol(index, 2), hash(seed ^ 0x3u)) * kScale};
+    return owen_scramble(sobol(index, dimension),
+                         hash(seed ^ static_cast<std::uint32_t>(dimension + 1))) *
+           kScale;
 }
 
-// The dimensions past pixel and time (an area light's point, one pair per
-// light and trace depth): each pair is the first two dimensions of Sobol's
-// sequence Owen-scrambled with a seed of its own ("padded", as pbrt-v4's
-// PaddedSobolSampler), so sample i's pair is stratified over the pixel's
-// samples and independent of the other pairs. Without jitter, the
-// unscrambled points at the middles of their strata, as pixel_sample.
-inline std::array<double, 2> padded_pair(std::uint32_t seed, std::uint32_t index,
+// Sample `index` of a pixel's place and time (the first three dimensions).
+inline PixelSample pixel_sample(std::uint32_t seed, std::uint32_t index, std::uint32_t count,
+                                bool jitter) {
+    return {joint_dimension(seed, index, count, kPixelX, jitter),
+            joint_dimension(seed, index, count, kPixelY, jitter),
+            joint_dimension(seed, index, count, kTime, jitter)};
+}
+
+// A further pair of a sample's dimensions: the lens' (kLensPair), an area
+// light's point (`pair` = light index + lights x trace depth), crand's.
+// The lens and the first kJointLightPairs light keys are dimensions of the
+// joint sequence; any other key is a padded pair: the first two dimensions
+// of Sobol's sequence Owen-scrambled with a seed of its own, stratified
+// over the pixel's samples and independent of the other dimensions.
+inline std::array<double, 2> sample_pair(std::uint32_t seed, std::uint32_t index,
                                          std::uint32_t count, std::uint32_t pair, bool jitter) {
     using namespace sobol_detail;
+    if (pair == kLensPair || pair < kJointLightPairs) {
+        const int first =
+            pair == kLensPair ? kLensU : kFirstLightDimension + 2 * static_cast<int>(pair);
+        return {joint_dimension(seed, index, count, first, jitter),
+                joint_dimension(seed, index, count, first + 1, jitter)};
+    }
     constexpr double kScale = 1.0 / 4294967296.0;
     if (!jitter) {
         const double half = 0.5 / static_cast<double>(count == 0 ? 1 : count);

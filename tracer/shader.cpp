@@ -233,7 +233,7 @@ inline glm::dvec3 Shader::shadow_filter(std::size_t index, const Hit& h,
         // One point of the grid per sample: over a pixel's samples the
         // shadow averages the grid, as POV-Ray's fully subdivided one.
         const SampleIndex& s = state.sample;
-        const auto u = padded_pair(
+        const auto u = sample_pair(
             s.seed, s.index, s.count,
             static_cast<std::uint32_t>(index + lights_.size() * std::size_t(h.depth)), s.jitter);
         const glm::dvec3 offset =
@@ -582,7 +582,7 @@ glm::dvec3 Shader::media_light(std::size_t index, const glm::dvec3& point, doubl
     double reach = ray.depth;
     if (light.is_area()) {
         const SampleIndex& s = state.sample;
-        const auto u = padded_pair(
+        const auto u = sample_pair(
             s.seed, s.index, s.count,
             static_cast<std::uint32_t>(index + lights_.size() * std::size_t(level + 64)), s.jitter);
         const LightRay toward = light.ray_from(
@@ -671,7 +671,7 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
             // layer's opacity; only where there is diffuse light).
             if (m.crand > 0.0 && m.diffuse > 0.0) {
                 const SampleIndex& s = state.sample;
-                const auto u = padded_pair(
+                const auto u = sample_pair(
                     s.seed, s.index, s.count,
                     0x80000000u |
                         static_cast<std::uint32_t>(i + lights_.size() * std::size_t(h.depth)),

@@ -38,7 +38,7 @@ struct ShadingScratch {
 // The pixel sample a primary ray carries (tracer/sample_pattern.hpp): its
 // set's seed, its index and count in the set, and whether it is jittered.
 // The shader draws the further dimensions of distributed ray tracing from
-// it (padded_pair), so that they too depend on (frame, pixel, sample) only.
+// it (sample_pair), so that they too depend on (frame, pixel, sample) only.
 struct SampleIndex {
     std::uint32_t seed = 0, index = 0, count = 1;
     bool jitter = false;
