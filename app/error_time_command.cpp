@@ -121,8 +121,8 @@ struct Point {
     double seconds, build_seconds, render_seconds;
     std::uint64_t rays;
     tracer::ImageError error;
-    // The frame's own estimate of its RMSE (tracer/frame_estimate.hpp), from
-    // two independent halves of its samples: at every even count.
+    // The frame's own estimate of its RMSE (tracer/frame_estimate.hpp): at
+    // every count of 2 or more.
     std::optional<double> estimate;
     double mean_spp = 0.0;         // samples per pixel taken (adaptive: the mean)
     std::optional<double> target;  // adaptive sampling's target
@@ -133,17 +133,12 @@ struct Point {
 // frames, frames mode builds one per frame.
 Point measure(const runtime::SceneDescription& scene, tracer::Mode mode, int spp, int frame,
               const ErrorTimeArguments& args, const fs::path& image, std::uint32_t sample_seed = 0,
-              bool reference = false, std::optional<double> target = std::nullopt) {
+              std::optional<double> target = std::nullopt) {
     tracer::RenderSettings settings;
     settings.mode = mode;
     settings.samples_per_pixel = spp;
     settings.sample_seed = sample_seed;
-    // (Even counts as two independent halves: the frame estimates its error.)
-    if (!reference && args.sample_sets == 2 && spp >= 2 && spp % 2 == 0) settings.sample_sets = 2;
-    if (target) {
-        settings.sample_sets = 2;
-        settings.target_error = *target;
-    }
+    if (target) settings.target_error = *target;
     settings.threads = args.threads;
     settings.build = args.hierarchy.options();
     settings.first_frame = settings.last_frame = frame;
@@ -202,6 +197,24 @@ std::optional<double> time_for(const std::vector<Point>& points, tracer::Mode mo
     return std::nullopt;
 }
 
+// The least-squares slope of log y against log x over the points with
+// both positive; nothing under two such points.
+std::optional<double> log_log_slope(const std::vector<std::pair<double, double>>& xy) {
+    double n = 0.0, sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
+    for (const auto& [x, y] : xy) {
+        if (!(x > 0.0) || !(y > 0.0)) continue;
+        const double u = std::log(x), v = std::log(y);
+        n += 1.0;
+        sx += u;
+        sy += v;
+        sxx += u * u;
+        sxy += u * v;
+    }
+    const double d = n * sxx - sx * sx;
+    if (n < 2.0 || !(d > 0.0)) return std::nullopt;
+    return (n * sxy - sx * sy) / d;
+}
+
 }  // namespace
 
 void add_error_time_arguments(CLI::App& command, ErrorTimeArguments& a) {
@@ -218,12 +231,6 @@ void add_error_time_arguments(CLI::App& command, ErrorTimeArguments& a) {
                        "Folder for the CSV, the plot, the images and the cached reference "
                        "(default out/SCENE/error-time)");
     command.add_option("--threads", a.threads, "Worker threads (default: all cores)");
-    command
-        .add_option(
-            "--sample-sets", a.sample_sets,
-            "2 (default): even counts render as two independent halves and estimate their own "
-            "error; 1: one set, no estimate (what estimating costs)")
-        ->check(CLI::Range(1, 2));
     command.add_option(
         "--targets", a.targets,
         "Also render with adaptive sampling at these RMSE targets (a comma list, e.g. "
@@ -261,10 +268,10 @@ int run_error_time(const ErrorTimeArguments& args, std::ostream& out, std::ostre
                                ? std::optional<double>(value)
                                : std::nullopt;
                 });
-            if (spps.back() < 2 || spps.back() % 2 != 0)
+            if (spps.back() < 2)
                 throw std::runtime_error(
-                    "--targets: the largest of --spp-list is the ceiling and must be even (two "
-                    "independent halves); it is " +
+                    "--targets: the largest of --spp-list is the ceiling and must be 2 or more "
+                    "(the estimate compares blocks of a pixel's samples); it is " +
                     std::to_string(spps.back()));
         }
         const int reference_spp =
@@ -282,11 +289,10 @@ int run_error_time(const ErrorTimeArguments& args, std::ostream& out, std::ostre
         } else {
             out << "reference: rendering frame " << frame << " at " << reference_spp
                 << " samples per pixel ..." << std::flush;
-            // (One sample set, its own seed: the reference is the best image
-            // its count gives, independent of every measured one.)
+            // (Its own seed: the reference is independent of every measured
+            // image.)
             measure(scene, tracer::Mode::Spacetime, reference_spp, frame, args, reference,
-                    kReferenceSeed,
-                    /*reference=*/true);
+                    kReferenceSeed);
             out << " " << reference.string() << "\n";
         }
 
@@ -319,6 +325,37 @@ int run_error_time(const ErrorTimeArguments& args, std::ostream& out, std::ostre
         }
         std::stable_sort(points.begin(), points.end(),
                          [](const Point& x, const Point& y) { return x.mode < y.mode; });
+        // How fast the error falls, against samples and against time, and
+        // how near the frame's own estimate keeps to the truth.
+        for (const tracer::Mode mode : modes) {
+            std::vector<std::pair<double, double>> by_spp, by_time;
+            std::vector<double> ratios;
+            for (const Point& p : points) {
+                if (p.mode != mode) continue;
+                by_spp.emplace_back(p.spp, p.error.rmse);
+                by_time.emplace_back(p.seconds, p.error.rmse);
+                if (p.estimate && p.error.rmse > 0.0) ratios.push_back(*p.estimate / p.error.rmse);
+            }
+            out << std::left << std::setw(10) << tracer::mode_name(mode) << std::right
+                << " slope: rmse ~ spp^";
+            const auto per_spp = log_log_slope(by_spp), per_second = log_log_slope(by_time);
+            out << std::fixed << std::setprecision(2);
+            const auto print = [&](const std::optional<double>& v) {
+                if (v)
+                    out << *v;
+                else
+                    out << "?";
+            };
+            print(per_spp);
+            out << ", rmse ~ seconds^";
+            print(per_second);
+            if (!ratios.empty()) {
+                std::sort(ratios.begin(), ratios.end());
+                out << "; estimate / true " << ratios.front() << " to " << ratios.back()
+                    << " (median " << ratios[ratios.size() / 2] << ")";
+            }
+            out << std::defaultfloat << "\n";
+        }
 
         // Adaptive sampling at each target: its true error, and what
         // uniform sampling (the points above) needs for that error.
@@ -328,7 +365,7 @@ int run_error_time(const ErrorTimeArguments& args, std::ostream& out, std::ostre
                 std::ostringstream name;
                 name << tracer::mode_name(mode) << "_target" << target << ".exr";
                 const fs::path image = dir / name.str();
-                Point p = measure(scene, mode, spps.back(), frame, args, image, 0, false, target);
+                Point p = measure(scene, mode, spps.back(), frame, args, image, 0, target);
                 p.error = tracer::image_error(image, reference);
                 adaptive.push_back(p);
                 out << std::left << std::setw(10) << tracer::mode_name(mode) << std::right
@@ -336,8 +373,16 @@ int run_error_time(const ErrorTimeArguments& args, std::ostream& out, std::ostre
                     << std::fixed << std::setprecision(3) << p.seconds << " s, "
                     << std::setprecision(1) << p.mean_spp << " spp, rmse " << std::scientific
                     << std::setprecision(3) << p.error.rmse << " (" << std::fixed
-                    << std::setprecision(2) << p.error.rmse / target
-                    << "x the target); uniform needs ";
+                    << std::setprecision(2) << p.error.rmse / target << "x the target";
+                if (p.estimate && p.error.rmse > 0.0)
+                    out << ", estimated " << *p.estimate / p.error.rmse << "x the truth";
+                out << "); ";
+                // (Uniform sampling's own time to the target, then to the
+                // error adaptive sampling reached.)
+                if (const auto own = time_for(points, mode, target))
+                    out << "uniform reaches the target in " << std::setprecision(3) << *own
+                        << " s (" << std::setprecision(2) << *own / p.seconds << "x); ";
+                out << "uniform needs ";
                 const auto spp = time_for(points, mode, p.error.rmse, true);
                 const auto seconds = time_for(points, mode, p.error.rmse);
                 if (spp && seconds)
@@ -373,7 +418,7 @@ int run_error_time(const ErrorTimeArguments& args, std::ostream& out, std::ostre
                 table << tracer::mode_name(p.mode) << ',' << p.spp << ',' << p.seconds << ','
                       << p.build_seconds << ',' << p.render_seconds << ',' << p.rays << ','
                       << p.error.rmse << ',' << p.error.relative_mse << ',';
-                if (p.estimate) table << *p.estimate;  // (empty: an odd count, no halves)
+                if (p.estimate) table << *p.estimate;  // (empty: 1 sample, no estimate)
                 table << ',';
                 if (p.target) table << *p.target;  // (empty: uniform sampling)
                 table << ',' << p.mean_spp << '\n';

@@ -1,7 +1,10 @@
 // `hexant bench error-time`: the error of one frame against a high-sample
-// reference, beside the time it took, for each mode at growing sample counts.
-// Writes a CSV and a log-log plot (SVG: time across, error up, one curve per
-// mode; the faster method is the lower curve).
+// reference, beside the time it took and the frame's own estimate, for each
+// mode at growing sample counts; the slope of error against samples and
+// against time; with --targets, adaptive sampling's time to each target
+// beside uniform sampling's. Writes a CSV and a log-log plot (SVG: time
+// across, error up, one curve per mode; the faster method is the lower
+// curve).
 #pragma once
 
 #include <iosfwd>
@@ -23,10 +26,6 @@ struct ErrorTimeArguments {
     int reference_spp = 0;                  // 0: 4 times the largest of spp_list
     std::optional<std::string> output_dir;  // default out/SCENE/error-time
     int threads = 0;
-    // 2: every even count renders as two independent halves and estimates
-    // its own error (the estimate column); 1: one set, as without
-    // --error-estimate (what the estimate costs, measured side by side).
-    int sample_sets = 2;
     // Adaptive sampling (--target-error) at each of these RMSE targets, with
     // the largest of spp_list as the ceiling: its true error, and the
     // samples and time uniform sampling needs for that error (empty: none).

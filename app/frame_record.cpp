@@ -95,7 +95,8 @@ std::vector<PixelSetting> render_settings(const Sampling& sampling, const Render
                                                        : "end"},
         {"shutter beyond range", a.shutter_beyond_range ? "yes" : "no"},
         {"samples per pixel", std::to_string(sampling.samples)},
-        {"sample sets", std::to_string(sampling.sets)},
+        // (The sequence and the estimate: frames of earlier samplers differ.)
+        {"sampler", "joint sobol 21, block estimate"},
         {"target error", sampling.target_error > 0.0 ? number(sampling.target_error) : "none"},
         {"jitter", args.no_jitter ? "no" : "yes"},
         {"seed", std::to_string(args.seed)},

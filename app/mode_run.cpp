@@ -228,7 +228,6 @@ ModeRun render_mode(runtime::SceneDescription& scene, const RenderArguments& arg
     tracer::RenderSettings settings;
     settings.mode = mode;
     settings.samples_per_pixel = sampling.samples;
-    settings.sample_sets = sampling.sets;
     settings.target_error = sampling.target_error;
     settings.jitter = !args.no_jitter;
     settings.sample_seed = args.seed;

@@ -189,7 +189,6 @@ void map_sampling(const PovRaySettings& s, const RenderArguments& given, RenderA
         std::string ceiling_how = "--spp " + std::to_string(kDefaultCeiling);
         if (s.antialias_depth) {
             const int depth = clipped(*s.antialias_depth, 1, 9, notes);
-            // An even count: the samples are two independent halves.
             ceiling = 2 * static_cast<int>(std::lround(kDefaultCeiling / 2.0 * depth * depth / 9));
             ceiling_how = "--spp " + std::to_string(ceiling) + " (256 x depth " +
                           std::to_string(depth) + "^2 / 3^2)";
@@ -228,18 +227,17 @@ void map_sampling(const PovRaySettings& s, const RenderArguments& given, RenderA
         else
             a.samples_per_pixel = spp;
     }
-    // A --spp given that adaptive sampling cannot use (it needs an even
-    // count of 2 or more: two independent halves) is a fixed count: the
-    // switch's target is dropped, not left to refuse the render.
-    const bool fixed_count = given.samples_per_pixel &&
-                             (*given.samples_per_pixel < 2 || *given.samples_per_pixel % 2 != 0);
+    // A --spp given that adaptive sampling cannot use (it needs 2 or more
+    // to estimate its error) is a fixed count: the switch's target is
+    // dropped, not left to refuse the render.
+    const bool fixed_count = given.samples_per_pixel && *given.samples_per_pixel < 2;
     if (target) {
         if (given.target_error)
             overridden.push_back("--target-error");
         else if (fixed_count)
             overridden.push_back("--spp " + std::to_string(*given.samples_per_pixel) +
                                  " (that many samples a pixel, not adaptive: adaptive "
-                                 "sampling needs an even --spp of 2 or more)");
+                                 "sampling needs a --spp of 2 or more)");
         else
             a.target_error = target;
     }

@@ -125,8 +125,9 @@ void add_render_arguments(CLI::App& command, RenderArguments& a) {
                        "an independent estimate of the same image");
     command.add_flag(
         "--error-estimate", a.error_estimate,
-        "Estimate each frame's error without a reference: its samples are two independent "
-        "halves (an even --spp), and the RMSE of their mean is printed with the worst tiles");
+        "Print each frame's error estimated without a reference (from blocks of each pixel's "
+        "samples) with its worst tiles: on whenever --spp is 2 or more with jitter; this flag "
+        "refuses a render that cannot estimate");
     command.add_option(
         "--error-image", a.error_image,
         "Also write each frame's per-pixel estimated RMSE (linear light) as an image; #### "
@@ -134,10 +135,10 @@ void add_render_arguments(CLI::App& command, RenderArguments& a) {
     command.add_option_function<std::string>(
         "--target-error",
         [&a](const std::string& text) { a.target_error = parse_target_error(text); },
-        "Adaptive sampling: each 16-pixel tile doubles its samples until its estimated RMSE "
-        "(linear light, 0 to 1; a number or a fraction such as 1/128) is at most this, with --spp "
-        "the ceiling "
-        "(default: without --spp, 1/128 under 256)");
+        "Adaptive sampling: each 16-pixel tile samples until its estimated RMSE (linear light, "
+        "0 to 1; a number or a fraction such as 1/128) is at most this, each pixel as many "
+        "samples as its error and cost call for, with --spp the ceiling (default: without "
+        "--spp, 1/128 under 256)");
     command.add_option(
         "--samples-image", a.samples_image,
         "Also write the samples each pixel took, over --spp, as a grey image; #### becomes the "
@@ -388,7 +389,7 @@ Sampling resolve_sampling(const RenderArguments& args, const runtime::SceneDescr
     }
     const bool estimated = s.target_error > 0.0 || args.error_estimate || args.error_image;
     if (!estimated) return s;
-    if (s.samples < 2 || s.samples % 2 != 0 || args.no_jitter) {
+    if (s.samples < 2 || args.no_jitter) {
         const char* flags =
             args.target_error ? "--target-error needs" : "--error-estimate and --error-image need";
         const std::string given = args.samples_per_pixel ? "--spp is " + std::to_string(s.samples)
@@ -397,10 +398,10 @@ Sampling resolve_sampling(const RenderArguments& args, const runtime::SceneDescr
                                       : "the default ceiling is " + std::to_string(s.samples);
         throw std::runtime_error(
             std::string(flags) +
-            " an even --spp of 2 or more (two independent halves) and jitter; " + given +
-            (args.no_jitter ? ", with --no-jitter" : ""));
+            " a --spp of 2 or more and jitter (the estimate compares blocks of each pixel's "
+            "samples); " +
+            given + (args.no_jitter ? ", with --no-jitter" : ""));
     }
-    s.sets = 2;
     return s;
 }
 

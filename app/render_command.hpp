@@ -52,9 +52,10 @@ struct RenderArguments {
     // The speed of light (tracer/light_travel.hpp), scene units per clock
     // unit: none, instant light.
     std::optional<double> light_speed;
-    // Each frame's error estimated from two independent halves of its
-    // samples (tracer/frame_estimate.hpp), printed; --error-image writes
-    // each frame's per-pixel estimate (a pattern with ####, as --output).
+    // Each frame's error estimate (tracer/frame_estimate.hpp) is printed
+    // whenever there is one (2 or more jittered samples); --error-estimate
+    // asks for it (refused without them). --error-image writes each
+    // frame's per-pixel estimate (a pattern with ####, as --output).
     bool error_estimate = false;
     std::optional<std::string> error_image;
     // Adaptive sampling (RenderSettings::target_error): --spp is then the
@@ -86,11 +87,9 @@ std::vector<int> window_frames(const std::string& text, const std::vector<int>& 
 inline constexpr double kDefaultTargetError = 1.0 / 128.0;
 inline constexpr int kDefaultCeiling = 256;
 
-// How a render samples: per pixel `samples` (with a target, the ceiling),
-// in `sets` independent sets (2: each frame's error is estimated).
+// How a render samples: per pixel `samples` (with a target, the ceiling).
 struct Sampling {
     int samples = 1;
-    int sets = 1;
     double target_error = 0.0;  // 0: uniform
 };
 // From the arguments and the scene; std::runtime_error naming the flags

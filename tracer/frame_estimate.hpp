@@ -1,11 +1,7 @@
-// A frame's error, estimated without a reference from two independently
-// scrambled halves of its samples (the "half buffers" of Cycles' and
-// denoisers' variance estimates): with halves A and B of n/2 samples each,
-// independent and alike, the frame (A + B) / 2 has variance E[(A - B)^2] / 4,
-// so (A - B)^2 / 4 per pixel and channel is an unbiased estimate of its
-// squared error (Monte Carlo noise only; a renderer's bias is not seen).
-// Plain sample variance is biased for the stratified (quasi-random) samples
-// hexant takes; two independent scrambles are not.
+// A frame's error, estimated without a reference from its pixels' own
+// samples (tracer/block_estimate.hpp: the variance between aligned blocks
+// of each pixel's one scrambled sequence, scaled by the rate its tile
+// shows). Monte Carlo noise only: a renderer's bias is not seen.
 //
 // Summed in a fixed order over a fixed grid of tiles, so that the figures
 // do not depend on the thread count.

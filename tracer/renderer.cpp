@@ -1,25 +1,21 @@
 #include "tracer/renderer.hpp"
 
 #include <algorithm>
-#include <array>
-#include <atomic>
 #include <chrono>
 #include <cmath>
-#include <mutex>
 #include <stdexcept>
 #include <string>
 
 #include <glm/geometric.hpp>
-#include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/global_control.h>
-#include <tbb/parallel_for.h>
 
 #include "image/colour_transfer.hpp"
 #include "runtime/objects/object_factory.hpp"
 #include "runtime/work_counts.hpp"
 #include "tracer/camera_ray.hpp"
 #include "tracer/focal_blur.hpp"
+#include "tracer/frame_sampling.hpp"
 #include "tracer/sample_pattern.hpp"
 
 namespace hexant::tracer {
@@ -123,72 +119,6 @@ std::vector<const runtime::IntelligentObject*> camera_interiors(
             if (!meets) continue;
         }
         out.push_back(o);
-    }
-    return out;
-}
-
-// One tile of the frame's fixed grid (FrameEstimate::kTile): its place, and
-// how it samples.
-struct TilePlan {
-    int frame;
-    std::uint32_t sample_seed;
-    bool halves, adaptive;  // two sample sets; rounds to a target error
-    int per_set;            // the samples of each set at most
-    double target_error;
-    int x0, y0, width, pixels;
-};
-
-// A tile's samples: per pixel the sums of its first and (halves) its
-// second, independent set, and its estimated squared error after the last
-// round; how many samples each set took, and whether the ceiling was
-// reached above the target.
-struct TileSamples {
-    std::array<glm::dvec3, FrameEstimate::kTile * FrameEstimate::kTile> sum_a, sum_b;
-    std::array<double, FrameEstimate::kTile * FrameEstimate::kTile> pixel_squared{};
-    int taken = 0;
-    bool over_target = false;
-};
-
-// Samples a tile in rounds: samples [taken, goal) of each set, then the
-// tile's estimate decides whether to double (adaptive only). What a tile
-// does depends on its own samples only. `trace(x, y, seed, index, count,
-// state)` gives one sample; `linear` takes a colour to linear light.
-template <class Trace, class Linear>
-TileSamples sample_tile(const TilePlan& plan, Trace&& trace, Linear&& linear, ThreadState& state) {
-    TileSamples out;
-    out.sum_a.fill(glm::dvec3(0.0));
-    out.sum_b.fill(glm::dvec3(0.0));
-    const int per_set = plan.per_set, pixels = plan.pixels;
-    int& taken = out.taken;
-    int goal = plan.adaptive ? std::min(per_set, RenderSettings::kFirstRoundSamples / 2) : per_set;
-    double tile_squared = 0.0;
-    while (true) {
-        for (int p = 0; p < pixels; ++p) {
-            const int x = plan.x0 + p % plan.width, y = plan.y0 + p / plan.width;
-            const std::uint32_t seed = pixel_seed(plan.frame, x, y, plan.sample_seed);
-            const std::uint32_t second = plan.halves ? second_set_seed(seed) : 0;
-            for (int i = taken; i < goal; ++i) {
-                out.sum_a[p] += trace(x, y, seed, i, per_set, state);
-                if (plan.halves) out.sum_b[p] += trace(x, y, second, i, per_set, state);
-            }
-        }
-        taken = goal;
-        if (plan.halves) {
-            tile_squared = 0.0;
-            for (int p = 0; p < pixels; ++p) {
-                // (A - B)^2 / 4 per channel, each half in linear light.
-                const glm::dvec3 d =
-                    linear(out.sum_a[p] / double(taken)) - linear(out.sum_b[p] / double(taken));
-                out.pixel_squared[p] = glm::dot(d, d) / 12.0;
-                tile_squared += out.pixel_squared[p];
-            }
-        }
-        if (!plan.adaptive || std::sqrt(tile_squared / pixels) <= plan.target_error) break;
-        if (taken == per_set) {
-            out.over_target = true;  // (the ceiling reached above the target)
-            break;
-        }
-        goal = std::min(per_set, 2 * taken);
     }
     return out;
 }
@@ -310,16 +240,15 @@ Image Renderer::render_frame(int frame) {
 
     const int width = a.width, height = a.height;
     const int spp = std::max(1, settings_.samples_per_pixel);
-    const bool halves = settings_.sample_sets == 2;
+    // (The estimate costs nothing: whenever its blocks exist.)
+    const bool estimate = spp >= 2 && settings_.jitter;
     const bool adaptive = settings_.target_error > 0.0;
-    if (halves && (spp % 2 != 0 || !settings_.jitter))
+    if (adaptive && !estimate)
         throw std::invalid_argument(
-            "two sample sets need an even number of jittered samples per pixel");
-    if (adaptive && !halves)
-        throw std::invalid_argument("a target error needs two sample sets (its estimate)");
+            "a target error needs 2 or more jittered samples per pixel (its estimate)");
     Image image(width, height);
-    // (Per pixel, the estimated squared error over its channels: halves only.)
-    std::vector<double> squared(halves ? static_cast<std::size_t>(width) * height : 0);
+    // (Per pixel, the estimated squared error over its channels.)
+    std::vector<double> squared(estimate ? static_cast<std::size_t>(width) * height : 0);
     std::vector<int> samples(static_cast<std::size_t>(width) * height, 0);
     const bool moving_camera = scene_.camera.depends_on_time();
     const double working_gamma = scene_.global.assumed_gamma;
@@ -400,55 +329,40 @@ Image Renderer::render_frame(int frame) {
         return shader_->trace(travel_.ray(ray->origin, t, ray->direction), state);
     };
 
-    // The fixed grid of tiles (the estimate's, FrameEstimate::kTile): what
-    // a tile does depends on its own samples only.
-    constexpr int kTile = FrameEstimate::kTile;
-    const int tiles_x = (width + kTile - 1) / kTile, tiles_y = (height + kTile - 1) / kTile;
-    const int tile_count = tiles_x * tiles_y;
-    const int per_set = halves ? spp / 2 : spp;
-    std::atomic<int> tiles_done{0}, tiles_over{0};
-    std::atomic<std::uint64_t> samples_taken{0};
-    std::mutex progress_mutex;
-    tbb::parallel_for(
-        tbb::blocked_range<int>(0, tile_count, 1), [&](const tbb::blocked_range<int>& range) {
-            ThreadState& state = states.local();
-            const std::uint64_t maps = runtime::this_thread_work.deformation_maps;
-            for (int tile = range.begin(); tile < range.end(); ++tile) {
-                const int x0 = tile % tiles_x * kTile, y0 = tile / tiles_x * kTile;
-                const int x1 = std::min(width, x0 + kTile), y1 = std::min(height, y0 + kTile);
-                const int tile_width = x1 - x0, pixels = tile_width * (y1 - y0);
-                TilePlan plan{frame,      settings_.sample_seed,
-                              halves,     adaptive,
-                              per_set,    settings_.target_error,
-                              x0,         y0,
-                              tile_width, pixels};
-                const TileSamples t = sample_tile(plan, trace_sample, linear, state);
-                if (t.over_target) ++tiles_over;
-                const auto& sum_a = t.sum_a;
-                const auto& sum_b = t.sum_b;
-                const auto& pixel_squared = t.pixel_squared;
-                const int taken = t.taken;
-                const int sets = halves ? 2 : 1;
-                for (int p = 0; p < pixels; ++p) {
-                    const int x = x0 + p % tile_width, y = y0 + p / tile_width;
-                    const std::size_t at = static_cast<std::size_t>(y) * width + x;
-                    image.set(x, y, linear((sum_a[p] + sum_b[p]) / double(sets * taken)));
-                    samples[at] = sets * taken;
-                    if (halves) squared[at] = pixel_squared[p];
-                }
-                const std::uint64_t total = samples_taken += std::uint64_t(pixels) * sets * taken;
-                const int done = ++tiles_done;
-                if (settings_.progress) {
-                    const std::lock_guard<std::mutex> lock(progress_mutex);
-                    settings_.progress(frame, double(done) / tile_count, total);
-                }
-            }
-            state.counters.deformation_maps += runtime::this_thread_work.deformation_maps - maps;
+    FramePlan plan;
+    plan.frame = frame;
+    plan.sample_seed = settings_.sample_seed;
+    plan.width = width;
+    plan.height = height;
+    plan.estimate = estimate;
+    plan.adaptive = adaptive;
+    plan.ceiling = spp;
+    plan.first_round = RenderSettings::kFirstRoundSamples;
+    plan.target_error = settings_.target_error;
+    // (Deformation maps are counted per thread by the runtime: each
+    // sample's go to its thread's counters.)
+    const auto counted_sample = [&](int x, int y, std::uint32_t seed, int index, int count,
+                                    ThreadState& state) {
+        const std::uint64_t maps = runtime::this_thread_work.deformation_maps;
+        const glm::dvec3 colour = trace_sample(x, y, seed, index, count, state);
+        state.counters.deformation_maps += runtime::this_thread_work.deformation_maps - maps;
+        return colour;
+    };
+    const FrameSamplingResult sampled = sample_frame(
+        plan, counted_sample, linear, [&]() -> ThreadState& { return states.local(); },
+        [&](int x, int y, const PixelBlocks& b, double pixel_squared) {
+            const std::size_t at = static_cast<std::size_t>(y) * width + x;
+            image.set(x, y, linear(b.mean()));
+            samples[at] = b.count;
+            if (estimate) squared[at] = pixel_squared;
+        },
+        [&](double fraction, std::uint64_t total) {
+            if (settings_.progress) settings_.progress(frame, fraction, total);
         });
     for (const ThreadState& s : states) counters_ += s.counters;
     counters_.render_seconds +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (halves) {
+    if (estimate) {
         last_estimate_ = estimate_frame(squared, width, height);
         last_squared_ = std::move(squared);
     } else {
@@ -456,9 +370,9 @@ Image Renderer::render_frame(int frame) {
         last_squared_.clear();
     }
     last_samples_ = std::move(samples);
-    last_sample_count_ = samples_taken;
-    last_tiles_over_target_ = tiles_over;
-    last_tile_count_ = tile_count;
+    last_sample_count_ = sampled.samples;
+    last_tiles_over_target_ = sampled.tiles_over_target;
+    last_tile_count_ = sampled.tiles;
     return image;
 }
 

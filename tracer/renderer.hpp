@@ -1,7 +1,7 @@
 // Renders frames of an animation: for each pixel, spp samples stratified
-// jointly over the pixel and the frame's shutter interval (frame k's shutter
-// opens at its clock and stays open for `shutter` of the clock step, as
-// MegaPOV's type 1), each traced as a 4D ray at its own time. Tiles run in
+// jointly over the pixel, the frame's shutter interval (runtime::Animation::
+// frame_window), the lens and the area lights (tracer/sample_pattern.hpp),
+// each traced as a 4D ray at its own time. Tiles run in
 // parallel with oneTBB; each thread keeps its own mailbox and counters,
 // merged when the frame is done.
 #pragma once
@@ -31,20 +31,20 @@ struct RenderSettings {
     // 0: the samples every render of this frame uses; another number gives
     // independent scrambles (an independent estimate of the same image).
     std::uint32_t sample_seed = 0;
-    // 2: each pixel's samples are two independent halves of
-    // samples_per_pixel / 2 (even, jittered), and each frame comes with an
-    // estimate of its error (tracer/frame_estimate.hpp); the image is then
-    // another, equally good one than with 1, the default.
-    int sample_sets = 1;
-    // > 0 (with sample_sets 2): adaptive sampling. Each 16-pixel tile of
-    // the frame's fixed grid (FrameEstimate::kTile) starts with
-    // kFirstRoundSamples per pixel and doubles them while its estimated
-    // RMSE (linear light, over its pixels and channels) is above this,
-    // samples_per_pixel being the ceiling. Every tile under the target
-    // makes a frame under it. A tile's rounds depend on its own samples
-    // only, so images do not depend on the thread count.
+    // With 2 or more jittered samples per pixel, each frame comes with an
+    // estimate of its error from its samples' own blocks
+    // (tracer/block_estimate.hpp, tracer/frame_estimate.hpp), at no cost
+    // to the image.
+    //
+    // > 0: adaptive sampling (needs the estimate) to this RMSE per frame
+    // (linear light, over its pixels and channels), samples_per_pixel
+    // being the ceiling: every pixel starts with kFirstRoundSamples, then
+    // rounds give each pixel the count that meets the target in the least
+    // work, from the estimates and each pixel's counted work
+    // (tracer/frame_sampling.hpp). The rounds depend on the samples only,
+    // so images do not depend on the thread count.
     double target_error = 0.0;
-    static constexpr int kFirstRoundSamples = 8;
+    static constexpr int kFirstRoundSamples = 4;
     // The speed of light in scene units per clock unit (light_travel.hpp):
     // infinite, the default, is instant light. Positive; the constructor
     // throws std::invalid_argument otherwise.
@@ -78,9 +78,9 @@ class Renderer {
     // Frame numbers as the animation counts them (initial_frame ..), within
     // the settings' first and last frame; std::out_of_range otherwise.
     Image render_frame(int frame);
-    // With sample_sets 2: the last frame's estimate of its error, and per
-    // pixel its estimated squared error averaged over the channels (linear
-    // light, rows top to bottom); none otherwise.
+    // With 2 or more jittered samples: the last frame's estimate of its
+    // error, and per pixel its estimated squared error averaged over the
+    // channels (linear light, rows top to bottom); none otherwise.
     const std::optional<FrameEstimate>& last_estimate() const { return last_estimate_; }
     const std::vector<double>& last_squared_error() const { return last_squared_; }
     // The samples each pixel of the last frame took (rows top to bottom)

@@ -138,14 +138,6 @@ inline std::uint32_t pixel_seed(int frame, int x, int y, std::uint32_t sample_se
     return sample_seed == 0 ? seed : hash(seed ^ hash(sample_seed));
 }
 
-// The seed of a pixel's second, independent set of samples (the frame
-// estimate's half B, tracer/frame_estimate.hpp): hashed in its own domain,
-// so it is none of the seeds a --seed gives.
-inline std::uint32_t second_set_seed(std::uint32_t seed) {
-    using sobol_detail::hash;
-    return hash(hash(seed ^ 0x5ec0d5e7u) + 0x7f4a7c15u);
-}
-
 // Dimension `dimension` (< kJointDimensions) of sample `index` of a pixel,
 // in [0, 1). Without jitter, the unscrambled point shifted to the middle of
 // its stratum among `count` samples: one sample is the pixel's centre at
