@@ -131,9 +131,9 @@ struct Point {
 // Renders `frame` once and writes it; the build time is charged as the
 // frame's share: spacetime builds one hierarchy for all the animation's
 // frames, frames mode builds one per frame.
-Point measure(const runtime::SceneDescription& scene, tracer::Mode mode, int spp, int frame,
-              const ErrorTimeArguments& args, const fs::path& image, std::uint32_t sample_seed = 0,
-              std::optional<double> target = std::nullopt) {
+Point measure_once(const runtime::SceneDescription& scene, tracer::Mode mode, int spp, int frame,
+                   const ErrorTimeArguments& args, const fs::path& image, std::uint32_t sample_seed,
+                   std::optional<double> target) {
     tracer::RenderSettings settings;
     settings.mode = mode;
     settings.samples_per_pixel = spp;
@@ -164,6 +164,19 @@ Point measure(const runtime::SceneDescription& scene, tracer::Mode mode, int spp
             estimate,
             mean_spp,
             target};
+}
+
+// measure_once `repeat` times: the times are the median run's (every run
+// makes the same image).
+Point measure(const runtime::SceneDescription& scene, tracer::Mode mode, int spp, int frame,
+              const ErrorTimeArguments& args, const fs::path& image, std::uint32_t sample_seed = 0,
+              std::optional<double> target = std::nullopt, int repeat = 1) {
+    std::vector<Point> runs;
+    for (int r = 0; r < repeat; ++r)
+        runs.push_back(measure_once(scene, mode, spp, frame, args, image, sample_seed, target));
+    std::sort(runs.begin(), runs.end(),
+              [](const Point& a, const Point& b) { return a.seconds < b.seconds; });
+    return runs[runs.size() / 2];
 }
 
 const char* colour_of(tracer::Mode mode) {
@@ -231,6 +244,10 @@ void add_error_time_arguments(CLI::App& command, ErrorTimeArguments& a) {
                        "Folder for the CSV, the plot, the images and the cached reference "
                        "(default out/SCENE/error-time)");
     command.add_option("--threads", a.threads, "Worker threads (default: all cores)");
+    command
+        .add_option("--repeat", a.repeat,
+                    "Render each point this many times and take the median time (default 1)")
+        ->check(CLI::Range(1, 99));
     command.add_option(
         "--targets", a.targets,
         "Also render with adaptive sampling at these RMSE targets (a comma list, e.g. "
@@ -303,7 +320,8 @@ int run_error_time(const ErrorTimeArguments& args, std::ostream& out, std::ostre
             for (const tracer::Mode mode : modes) {
                 const fs::path image = dir / (std::string(tracer::mode_name(mode)) + "_spp" +
                                               std::to_string(spp) + ".exr");
-                Point p = measure(scene, mode, spp, frame, args, image);
+                Point p =
+                    measure(scene, mode, spp, frame, args, image, 0, std::nullopt, args.repeat);
                 p.error = tracer::image_error(image, reference);
                 points.push_back(p);
                 out << std::left << std::setw(10) << tracer::mode_name(mode) << std::right
@@ -365,7 +383,8 @@ int run_error_time(const ErrorTimeArguments& args, std::ostream& out, std::ostre
                 std::ostringstream name;
                 name << tracer::mode_name(mode) << "_target" << target << ".exr";
                 const fs::path image = dir / name.str();
-                Point p = measure(scene, mode, spps.back(), frame, args, image, 0, target);
+                Point p =
+                    measure(scene, mode, spps.back(), frame, args, image, 0, target, args.repeat);
                 p.error = tracer::image_error(image, reference);
                 adaptive.push_back(p);
                 out << std::left << std::setw(10) << tracer::mode_name(mode) << std::right

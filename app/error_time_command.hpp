@@ -26,6 +26,9 @@ struct ErrorTimeArguments {
     int reference_spp = 0;                  // 0: 4 times the largest of spp_list
     std::optional<std::string> output_dir;  // default out/SCENE/error-time
     int threads = 0;
+    // Each point rendered this many times, its time the median: a frame
+    // of a tenth of a second is as noisy as the machine.
+    int repeat = 1;
     // Adaptive sampling (--target-error) at each of these RMSE targets, with
     // the largest of spp_list as the ceiling: its true error, and the
     // samples and time uniform sampling needs for that error (empty: none).

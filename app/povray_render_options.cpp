@@ -208,7 +208,7 @@ void map_sampling(const PovRaySettings& s, const RenderArguments& given, RenderA
         } else {
             target = kDefaultTargetError * threshold / 0.3;
             if (s.antialias_depth) spp = ceiling;
-            how = "each 16-pixel tile sampled until its estimated error is below --target-error " +
+            how = "each frame sampled until its estimated error is below --target-error " +
                   number(*target) + " (1/128 x threshold " + number(threshold) + " / 0.3), under " +
                   ceiling_how;
         }

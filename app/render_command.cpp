@@ -135,7 +135,7 @@ void add_render_arguments(CLI::App& command, RenderArguments& a) {
     command.add_option_function<std::string>(
         "--target-error",
         [&a](const std::string& text) { a.target_error = parse_target_error(text); },
-        "Adaptive sampling: each 16-pixel tile samples until its estimated RMSE (linear light, "
+        "Adaptive sampling: each frame samples until its estimated RMSE (linear light, "
         "0 to 1; a number or a fraction such as 1/128) is at most this, each pixel as many "
         "samples as its error and cost call for, with --spp the ceiling (default: without "
         "--spp, 1/128 under 256)");

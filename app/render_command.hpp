@@ -79,11 +79,11 @@ void check_render_plan(const RenderArguments& args, const std::filesystem::path&
 // std::runtime_error naming --window for a malformed or out-of-range one.
 std::vector<int> window_frames(const std::string& text, const std::vector<int>& frames);
 
-// The default target: an RMSE of 1/128 in linear light per 16-pixel tile,
-// about 1.3 steps of an 8-bit sRGB file at mid-grey (0.5 linear) and 2 at a
-// fifth. atom's electron streaks render smooth with it at a mean of 13.5
-// samples per pixel, 7 s for its 64 frames on 2 cores (docs/benchmarks.md, "Adaptive sampling");
-// 1/256 costs 21 samples and 11 s and looks the same.
+// The default target: an RMSE of 1/128 in linear light per frame, about
+// 1.3 steps of an 8-bit sRGB file at mid-grey (0.5 linear) and 2 at a
+// fifth. atom's electron streaks render smooth with it at a mean of 5.3
+// samples per pixel, 2.9 s for its 64 frames on 2 cores (docs/benchmarks.md,
+// "Issue 47").
 inline constexpr double kDefaultTargetError = 1.0 / 128.0;
 inline constexpr int kDefaultCeiling = 256;
 

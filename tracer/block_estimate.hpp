@@ -16,8 +16,8 @@
 // estimate becomes the independent halves' one) to 3 (a smooth integrand
 // under Owen scrambling, Owen 1997). A count n between powers of two is
 // its prefix m and a tail of n - m samples, each estimated at the rate e
-// (pixel_squared_error). With m = 2 only the halves exist and e = 1 is
-// assumed: an overestimate, on the safe side.
+// (pixel_squared_error). With m = 2 only the halves exist and e = 1.25 is
+// assumed, between independent samples (1) and an edge (1.5).
 #pragma once
 
 #include <array>

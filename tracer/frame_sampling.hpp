@@ -61,9 +61,13 @@ inline constexpr double kAim = 0.9;
 // The radius of the neighbourhood a pixel's need is averaged over (5 x 5):
 // one pixel's estimate from 4 samples is one squared difference.
 inline constexpr int kSmoothing = 2;
+// The pixels a thread takes at a time in a round.
+inline constexpr std::size_t kRun = 16;
 
 // A sample's cost in counted work (see above).
-inline double sample_work(const Counters& c) { return double(c.rays()); }
+inline double sample_work(const Counters& c) {
+    return double(c.rays());
+}
 
 struct FrameSamplingResult {
     std::uint64_t samples = 0;
@@ -121,32 +125,50 @@ FrameSamplingResult sample_frame(const FramePlan& plan, Trace&& trace, Linear&& 
                               });
         };
         // Samples every pixel of the band up to its goal.
+        // Samples every pixel of the band up to its goal, in runs of
+        // kRun pixels (not whole tiles: a later round's work sits in a
+        // few tiles' noisy pixels, and a tile to a thread would leave the
+        // others idle). A pixel's samples and work are its own.
         const auto sample_round = [&] {
-            std::atomic<int> done{0};
-            each_tile([&](int t) {
-                const Tile& tile = tiles[std::size_t(t)];
-                auto& s = state();
-                std::uint64_t taken = 0;
-                for (int p = 0; p < tile.pixels; ++p) {
-                    const std::size_t at = tile.first + std::size_t(p);
-                    const int x = tile.x0 + p % tile.width, y = tile.y0 + p / tile.width;
-                    const std::uint32_t seed = pixel_seed(plan.frame, x, y, plan.sample_seed);
-                    PixelBlocks& b = blocks[at];
-                    const double before = sample_work(s.counters);
-                    for (int i = b.count; i < goal[at]; ++i) {
-                        b.add(trace(x, y, seed, i, plan.ceiling, s));
-                        ++taken;
+            std::uint64_t planned = 0;
+            for (std::size_t i = 0; i < count; ++i)
+                planned += std::uint64_t(std::max(0, goal[i] - blocks[i].count));
+            std::atomic<std::uint64_t> taken_in_round{0};
+            tbb::parallel_for(
+                tbb::blocked_range<std::size_t>(0, count, kRun),
+                [&](const tbb::blocked_range<std::size_t>& range) {
+                    auto& s = state();
+                    std::uint64_t taken = 0;
+                    for (std::size_t at = range.begin(); at < range.end(); ++at) {
+                        // (The tile holding pixel `at`: the last to start at or before it.)
+                        const Tile& tile = *(std::upper_bound(tiles.begin(), tiles.end(), at,
+                                                              [](std::size_t i, const Tile& t) {
+                                                                  return i < t.first;
+                                                              }) -
+                                             1);
+                        const int p = static_cast<int>(at - tile.first);
+                        const int x = tile.x0 + p % tile.width, y = tile.y0 + p / tile.width;
+                        PixelBlocks& b = blocks[at];
+                        if (b.count >= goal[at]) continue;
+                        const std::uint32_t seed = pixel_seed(plan.frame, x, y, plan.sample_seed);
+                        const double before = sample_work(s.counters);
+                        for (int i = b.count; i < goal[at]; ++i) {
+                            b.add(trace(x, y, seed, i, plan.ceiling, s));
+                            ++taken;
+                        }
+                        work[at] += sample_work(s.counters) - before;
                     }
-                    work[at] += sample_work(s.counters) - before;
-                }
-                const std::uint64_t total = samples += taken;
-                const double fraction = (band + double(++done) / tile_count) / bands;
-                const std::lock_guard<std::mutex> lock(progress_mutex);
-                if (fraction > reported) {
-                    reported = fraction;
-                    progress(fraction, total);
-                }
-            });
+                    const std::uint64_t total = samples += taken;
+                    const double fraction =
+                        (band + double(taken_in_round += taken) /
+                                    double(std::max<std::uint64_t>(1, planned))) /
+                        bands;
+                    const std::lock_guard<std::mutex> lock(progress_mutex);
+                    if (fraction > reported) {
+                        reported = fraction;
+                        progress(fraction, total);
+                    }
+                });
         };
         // Each pixel's estimated squared error, its tile's rate and sum.
         const auto estimate_round = [&] {

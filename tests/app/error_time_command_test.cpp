@@ -170,6 +170,16 @@ TEST_CASE("error-time measures each mode at each sample count against a cached r
     err.str("");
     CHECK(run_error_time(a, out, err) != 0);
     CHECK(err.str().find("--frame 7") != std::string::npos);
+    // --repeat renders each point again for the median time: still one
+    // row a point, the same error (every run makes the same image).
+    a.frame.reset();
+    a.spp_list = "4";
+    a.repeat = 3;
+    out.str("");
+    REQUIRE(run_error_time(a, out, err) == 0);
+    const std::string repeated = read_text(folder / "out/error_time.csv");
+    CHECK(count_of(repeated, "\nspacetime,4,") == 1);
+    CHECK(count_of(out.str(), "spp     4 ") == 1);
     fs::remove_all(folder);
 }
 

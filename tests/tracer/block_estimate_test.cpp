@@ -135,7 +135,8 @@ TEST_CASE("the blocks' estimate is within a factor 1.5 of the true error at any 
             CHECK(m.estimate >= m.truth / 1.5);
         }
     }
-    // One sample: no estimate; two: the halves, at the independent rate.
+    // One sample: no estimate; two: the halves, at an assumed rate e =
+    // 1.25 (r = 2^-1.25, V = halves r / (1 - r)).
     tr::PixelBlocks one;
     one.add(glm::dvec3(1.0));
     CHECK(tr::pixel_squared_error(tr::block_terms(one, [](glm::dvec3 c) { return c; }), 1, 0.25) ==
@@ -144,7 +145,8 @@ TEST_CASE("the blocks' estimate is within a factor 1.5 of the true error at any 
     two.add(glm::dvec3(0.0));
     const tr::BlockTerms t = tr::block_terms(two, [](glm::dvec3 c) { return c; });
     CHECK_FALSE(t.has_quarters);
-    CHECK(tr::pixel_squared_error(t, 2, 0.125) == Approx(0.25));  // ((1 - 0) / 2)^2
+    const double r = std::exp2(-1.25);
+    CHECK(tr::pixel_squared_error(t, 2, 0.125) == Approx(0.25 * r / (1 - r)));  // ((1 - 0) / 2)^2
 }
 
 TEST_CASE("a tile's rate is clamped to the independent and the smooth rates",
