@@ -15,6 +15,7 @@
 
 #include "app/log_log_plot.hpp"
 #include "app/povray_render_options.hpp"
+#include "app/render_command.hpp"
 #include "app/scene_reading.hpp"
 #include "language/interpreter.hpp"
 #include "tracer/image_compare.hpp"
@@ -277,14 +278,12 @@ int run_error_time(const ErrorTimeArguments& args, std::ostream& out, std::ostre
         const std::vector<tracer::Mode> modes = mode_list(args.modes);
         std::vector<double> targets;
         if (!args.targets.empty()) {
-            targets = comma_list<double>(
-                args.targets, "--targets", "positive numbers", [](const std::string& item) {
-                    std::size_t used = 0;
-                    const double value = std::stod(item, &used);
-                    return used == item.size() && value > 0.0 && std::isfinite(value)
-                               ? std::optional<double>(value)
-                               : std::nullopt;
-                });
+            // (Each as --target-error reads it: a number or a fraction.)
+            targets = comma_list<double>(args.targets, "--targets",
+                                         "positive numbers or fractions such as 1/128",
+                                         [](const std::string& item) {
+                                             return std::optional<double>(parse_target_error(item));
+                                         });
             if (spps.back() < 2)
                 throw std::runtime_error(
                     "--targets: the largest of --spp-list is the ceiling and must be 2 or more "

@@ -350,9 +350,12 @@ void apply_scene_defaults(const RenderArguments& args, runtime::SceneDescription
 }
 
 double parse_target_error(const std::string& text) {
-    // A number, or A/B (the README's 1/128).
+    // A number, or A/B (the README's 1/128); decimal only (std::stod
+    // would read "0x10" as 16).
     double value = std::numeric_limits<double>::quiet_NaN();
     try {
+        if (text.find_first_not_of("0123456789.eE+-/") != std::string::npos)
+            throw std::invalid_argument("not a decimal number");
         std::size_t used = 0;
         value = std::stod(text, &used);
         if (used < text.size() && text[used] == '/') {

@@ -135,7 +135,12 @@ TEST_CASE("error-time measures each mode at each sample count against a cached r
     CHECK(mean >= hexant::tracer::RenderSettings::kFirstRoundSamples);
     CHECK(mean <= 32.0);
     CHECK(count_of(read_text(folder / "out/error_time.svg"), "stroke-dasharray=\"2,3\"") == 2);
-    for (const char* bad : {"0", "x", "0.1,", "-1"}) {
+    // (A fraction as --target-error takes it.)
+    a.targets = "1/50";
+    out.str("");
+    REQUIRE(run_error_time(a, out, err) == 0);
+    CHECK(out.str().find("target 2.000e-02: ") != std::string::npos);
+    for (const char* bad : {"0", "x", "0.1,", "-1", "0x10", "1/0"}) {
         a.targets = bad;
         err.str("");
         CHECK(run_error_time(a, out, err) != 0);

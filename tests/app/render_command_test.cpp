@@ -349,7 +349,8 @@ TEST_CASE("render's adaptive flags refuse what makes no sense, naming the flag",
     using hexant::app::parse_target_error;
     CHECK(parse_target_error("0.01") == 0.01);
     CHECK(parse_target_error("1/128") == 1.0 / 128.0);
-    for (const char* bad : {"nan", "-nan", "inf", "0", "-1", "abc", "1/0", "0.01x", "", "1/"})
+    for (const char* bad :
+         {"nan", "-nan", "inf", "0", "-1", "abc", "1/0", "0.01x", "", "1/", "0x10"})
         CHECK_THROWS_WITH(parse_target_error(bad), Catch::Contains("--target-error"));
 
     const fs::path scene = scene_file(moving_sphere("<2 * clock - 1, 0, 0>"));
