@@ -152,11 +152,17 @@ void map_sampling(const PovRaySettings& s, const RenderArguments& given, RenderA
     shape(s.jitter_amount, "jitter amount");
     if (!s.antialias) {
         shape(s.sampling_method, "sampling method");
+        // (What hexant does instead: its flags' sampling, the default's
+        // when none is given.)
+        const std::string instead =
+            given.samples_per_pixel || given.target_error || given.no_jitter
+                ? "hexant samples as its flags say"
+                : "hexant samples as by default (adaptively, --target-error 1/128 under --spp "
+                  "256)";
         for (const auto& [source, what] : shaping)
             notes.push_back(source + ": the " + what +
-                            " is not used: POV-Ray antialiases only with +A or Antialias=on, and "
-                            "hexant samples as by default (adaptively, --target-error 1/128 "
-                            "under --spp 256)");
+                            " is not used: POV-Ray antialiases only with +A or Antialias=on, and " +
+                            instead);
         return;
     }
     const int method = s.sampling_method ? clipped(*s.sampling_method, 0, 2, notes) : 1;
@@ -193,6 +199,10 @@ void map_sampling(const PovRaySettings& s, const RenderArguments& given, RenderA
             ceiling_how = "--spp " + std::to_string(ceiling) + " (256 x depth " +
                           std::to_string(depth) + "^2 / 3^2)";
         }
+        // (A --spp given is the count or the ceiling, whatever the
+        // switches say: the note names what the render will take.)
+        if (given.samples_per_pixel)
+            ceiling_how = "--spp " + std::to_string(*given.samples_per_pixel) + " (as given)";
         const bool jitter =
             (!s.jitter || s.jitter->value) && (!s.jitter_amount || s.jitter_amount->value > 0.0);
         if (!jitter) {

@@ -211,6 +211,17 @@ TEST_CASE("the POV-Ray switches map onto render's sampling as the notes say",
     auto both = resolved({scene, "+KFF2", "+A0.1", "+R4"}, flags);
     CHECK(both.render.samples_per_pixel == 16);
     CHECK(both.notes.back().find("--spp as given wins") != std::string::npos);
+    // Without +R the note names the --spp given as the ceiling, not the
+    // default 256 the render will not take (a user found it so).
+    auto ceiling = resolved({scene, "+KFF2", "+A0.1"}, flags);
+    CHECK(ceiling.notes.back().find("under --spp 16 (as given)") != std::string::npos);
+    CHECK(ceiling.notes.back().find("256") == std::string::npos);
+    // Jitter without +A shapes nothing; the note says what the render
+    // takes instead: the default, or the flags given.
+    auto unused = resolved({scene, "+KFF2", "Jitter=off"});
+    CHECK(unused.notes.back().find("as by default (adaptively") != std::string::npos);
+    auto flagged = resolved({scene, "+KFF2", "Jitter=off"}, flags);
+    CHECK(flagged.notes.back().find("as its flags say") != std::string::npos);
     // A single --spp cannot be adaptive: a fixed count, the switch's
     // target dropped (POV-Ray's camera2.ini has Antialias=On; with --spp 1
     // the render was refused). An odd count of 2 or more estimates its
