@@ -124,7 +124,6 @@ FrameSamplingResult sample_frame(const FramePlan& plan, Trace&& trace, Linear&& 
                                   for (int t = range.begin(); t < range.end(); ++t) body(t);
                               });
         };
-        // Samples every pixel of the band up to its goal.
         // Samples every pixel of the band up to its goal, in runs of
         // kRun pixels (not whole tiles: a later round's work sits in a
         // few tiles' noisy pixels, and a tile to a thread would leave the
