@@ -218,6 +218,37 @@ TEST_CASE("a flag that changes no pixel keeps the frames", "[app][resume]") {
     CHECK(bytes(frame(folder, 3)) == before);
 }
 
+TEST_CASE("a kept frame without its error or samples image is rendered again for it",
+          "[app][resume]") {
+    // (A user found --resume with --error-image writing none and saying
+    // nothing when every frame was on disk.)
+    const fs::path folder = folder_for("side_images");
+    REQUIRE(render(arguments(folder)).status == 0);
+    const std::string before = bytes(frame(folder, 2));
+    RenderArguments again = resumed(arguments(folder));
+    again.error_image = (folder / "out" / "e_####.png").string();
+    again.error_estimate = true;
+    const Run run = render(again);
+    INFO(run.out << run.err);
+    REQUIRE(run.status == 0);
+    for (const int k : {1, 2, 3}) {
+        CHECK(fs::exists(folder / "out" / ("e_000" + std::to_string(k) + ".png")));
+        CHECK(run.err.find("frame " + std::to_string(k) + " rendered again: its --error-image") !=
+              std::string::npos);
+    }
+    // The same samples: the same frame.
+    CHECK(bytes(frame(folder, 2)) == before);
+    // With them all on disk, kept; the estimate's absence said.
+    RenderArguments kept = resumed(arguments(folder));
+    kept.error_image = again.error_image;
+    kept.error_estimate = true;
+    const Run second = render(kept);
+    INFO(second.out << second.err);
+    CHECK(second.out.find("--resume: 3 of 3 frames already written") != std::string::npos);
+    CHECK(second.err.find("rendered again") == std::string::npos);
+    CHECK(second.err.find("the frames kept print no estimate") != std::string::npos);
+}
+
 TEST_CASE("a damaged, foreign or missing record renders the frame again, saying so",
           "[app][resume]") {
     const fs::path folder = folder_for("damaged");
