@@ -478,24 +478,6 @@ int run_render(const RenderArguments& given, std::ostream& out, std::ostream& er
         if (args.resume) {
             ResumeCheck check = resume_check(args, pattern, selected, scene.animation, records,
                                              reading.frame_by_frame() ? nullptr : &scene_read, err);
-            // A frame kept whose --error-image or --samples-image is not on
-            // disk is rendered again: those images come only from a render.
-            for (const int frame : selected) {
-                if (std::binary_search(check.missing.begin(), check.missing.end(), frame)) continue;
-                for (const auto& [flag, side] :
-                     {std::pair<const char*, const std::optional<std::string>&>{"--error-image",
-                                                                                args.error_image},
-                      {"--samples-image", args.samples_image}}) {
-                    if (!side) continue;
-                    const std::filesystem::path file = tracer::frame_path(*side, frame);
-                    if (std::filesystem::exists(file)) continue;
-                    err << "frame " << frame << " rendered again: its " << flag << " "
-                        << file.string() << " is not on disk\n";
-                    check.missing.insert(
-                        std::lower_bound(check.missing.begin(), check.missing.end(), frame), frame);
-                    break;
-                }
-            }
             if (args.error_estimate && check.missing.size() < selected.size())
                 err << "note: --resume: the frames kept print no estimate (the run that made "
                        "them did)\n";

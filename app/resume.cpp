@@ -1,6 +1,9 @@
 #include "app/resume.hpp"
 
+#include <optional>
 #include <ostream>
+#include <string>
+#include <utility>
 
 #include "image/image_format.hpp"
 #include "tracer/image_output.hpp"
@@ -47,6 +50,20 @@ ResumeCheck resume_check(const RenderArguments& args, const std::string& pattern
                          FrameRecords& records, const FrameRecords::ReadFiles* inputs,
                          std::ostream& err) {
     ResumeCheck check;
+    // The side image (--error-image, --samples-image) a kept frame lacks:
+    // those come only from a render, so the frame is rendered again.
+    const auto side_missing = [&](int frame) -> std::string {
+        for (const auto& [flag, side] : {std::pair<const char*, const std::optional<std::string>&>{
+                                             "--error-image", args.error_image},
+                                         {"--samples-image", args.samples_image}}) {
+            if (!side) continue;
+            const fs::path file = tracer::frame_path(*side, frame);
+            std::error_code error;
+            if (!fs::is_regular_file(file, error))
+                return std::string("its ") + flag + " " + file.string() + " is not on disk";
+        }
+        return {};
+    };
     // A frame or record on disk was written whole (a temporary renamed
     // over it); what a killed run left half-written is its temporaries.
     int leftovers = 0;
@@ -67,6 +84,11 @@ ResumeCheck resume_check(const RenderArguments& args, const std::string& pattern
                 check.missing.push_back(frame);
                 continue;
             }
+            if (const std::string why = side_missing(frame); !why.empty()) {
+                err << named << " rendered again: " << why << "\n";
+                check.missing.push_back(frame);
+                continue;
+            }
             const std::vector<std::string> reasons = records.differences(frame, path, inputs);
             if (reasons.empty()) continue;
             if (++kept_unlike <= kResumeLinesShown)
@@ -74,8 +96,12 @@ ResumeCheck resume_check(const RenderArguments& args, const std::string& pattern
                     << first_reasons(reasons) << "\n";
             continue;
         }
-        const std::vector<std::string> reasons = records.differences(frame, path, inputs);
-        if (reasons.empty()) continue;
+        std::vector<std::string> reasons = records.differences(frame, path, inputs);
+        if (reasons.empty()) {
+            const std::string why = side_missing(frame);
+            if (why.empty()) continue;
+            reasons.push_back(why);
+        }
         if (++said <= kResumeLinesShown)
             err << named << " rendered again: " << first_reasons(reasons) << "\n";
         check.missing.push_back(frame);

@@ -30,7 +30,9 @@ struct ResumeCheck {
 // selected frames of `pattern` into those kept and those to render: each
 // frame rendered again is said on `err` with why ("frame 3 (out/a3.png)
 // rendered again: it was made at 64x48, this render is 32x24"), the first
-// differences only. `inputs`: the files this render's scene read (null
+// differences only. A frame kept whose --error-image or --samples-image
+// file is not on disk is rendered again too (those come only from a
+// render). `inputs`: the files this render's scene read (null
 // when the scene is read frame by frame).
 ResumeCheck resume_check(const RenderArguments& args, const std::string& pattern,
                          const std::vector<int>& selected, const runtime::Animation& animation,

@@ -233,8 +233,9 @@ TEST_CASE("a kept frame without its error or samples image is rendered again for
     REQUIRE(run.status == 0);
     for (const int k : {1, 2, 3}) {
         CHECK(fs::exists(folder / "out" / ("e_000" + std::to_string(k) + ".png")));
-        CHECK(run.err.find("frame " + std::to_string(k) + " rendered again: its --error-image") !=
-              std::string::npos);
+        const std::string named = "frame " + std::to_string(k) + " (" + frame(folder, k).string() +
+                                  ") rendered again: its --error-image";
+        CHECK(run.err.find(named) != std::string::npos);
     }
     // The same samples: the same frame.
     CHECK(bytes(frame(folder, 2)) == before);
