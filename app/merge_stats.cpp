@@ -104,8 +104,8 @@ void merge_stats(const std::vector<std::string>& windows, const std::string& out
     const auto get = [&](const char* row) {
         return merged.contains(row) ? merged[row].get<double>() : 0.0;
     };
-    const double rays =
-        get("primary rays") + get("shadow rays") + get("reflected rays") + get("refracted rays");
+    const double rays = get("primary rays") + get("shadow rays") + get("reflected rays") +
+                        get("refracted rays") + get("radiosity rays");
     for (auto it = merged.begin(); it != merged.end(); ++it) {
         if (!is_ratio(it.key())) continue;
         if (it.key() == "rays per second (M)") {

@@ -170,6 +170,7 @@ HEXANT_ERROR(camera_blur_argument, "expected a value for aperture, focal_point o
 HEXANT_ERROR(camera_vector_value, "expected a value after the camera setting");
 HEXANT_ERROR(background_colour, "expected a colour in background { }");
 HEXANT_ERROR(global_setting_value, "expected a value after the global setting");
+HEXANT_ERROR(radiosity_importance_value, "expected a value after importance");
 HEXANT_ERROR(charset_name, "expected a character set name after charset");
 HEXANT_ERROR(array_dimensions, "expected '[' and a size after array");
 HEXANT_ERROR(array_size, "expected the array's size");

@@ -126,6 +126,7 @@ void Interpreter::finish_reading([[maybe_unused]] const std::string& name) {
     // 3.7 and that sets no assumed_gamma is rendered with no gamma
     // correction at all, and its image files are read undecoded.
     const double effective = version_set ? version : 3.62;
+    scene.global.language_version = effective;
     scene.global.legacy_sky = effective < 3.7;
     scene.global.legacy_opacity = effective < 3.7;
     // hexant renders it so (GlobalSettings::gamma_correction); image maps

@@ -13,6 +13,11 @@ struct Counters {
     std::uint64_t shadow_rays = 0;
     std::uint64_t reflected_rays = 0;
     std::uint64_t refracted_rays = 0;
+    // Radiosity: the rays its samples gathered with, the samples gathered
+    // (records made) and the reuses of the cache (--stats).
+    std::uint64_t radiosity_rays = 0;
+    std::uint64_t radiosity_samples = 0;
+    std::uint64_t radiosity_reuses = 0;
     // Hierarchy.
     std::uint64_t bounds_built = 0;  // object bound() answers while building
     std::uint64_t cells = 0;         // cells built (a lazy build: those rays reached)
@@ -50,7 +55,7 @@ struct Counters {
     double memory_start_mb = 0.0, memory_peak_mb = 0.0;
 
     std::uint64_t rays() const {
-        return primary_rays + shadow_rays + reflected_rays + refracted_rays;
+        return primary_rays + shadow_rays + reflected_rays + refracted_rays + radiosity_rays;
     }
 
     Counters& operator+=(const Counters& o) {
@@ -58,6 +63,9 @@ struct Counters {
         shadow_rays += o.shadow_rays;
         reflected_rays += o.reflected_rays;
         refracted_rays += o.refracted_rays;
+        radiosity_rays += o.radiosity_rays;
+        radiosity_samples += o.radiosity_samples;
+        radiosity_reuses += o.radiosity_reuses;
         bounds_built += o.bounds_built;
         cells += o.cells;
         cells_full += o.cells_full;

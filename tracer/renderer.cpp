@@ -16,6 +16,7 @@
 #include "tracer/camera_ray.hpp"
 #include "tracer/focal_blur.hpp"
 #include "tracer/frame_sampling.hpp"
+#include "tracer/radiosity_pretrace.hpp"
 #include "tracer/sample_pattern.hpp"
 
 namespace hexant::tracer {
@@ -279,12 +280,13 @@ Image Renderer::render_frame(int frame) {
             for (int k = 0; k < 3; ++k) c[k] = std::pow(std::max(c[k], 0.0), working_gamma);
         return c;
     };
-    // Sample `index` of the set with this seed, of `count` in the set.
-    const auto trace_sample = [&](int x, int y, std::uint32_t seed, int index, int count,
-                                  ThreadState& state) {
-        const PixelSample s = pixel_sample(seed, static_cast<std::uint32_t>(index),
-                                           static_cast<std::uint32_t>(count), settings_.jitter);
-        const double t = frame_clock.at((y + s.y) / height, s.time);
+    // The colour seen at (px, py) of the image (pixels' corners at whole
+    // numbers) at `time` in [0, 1) across the shutter, as sample `index`
+    // of the set with this seed, of `count` in the set, for its further
+    // dimensions.
+    const auto trace_at = [&](double px, double py, double time, std::uint32_t seed, int index,
+                              int count, bool jitter, ThreadState& state) {
+        const double t = frame_clock.at(py / height, time);
         std::optional<runtime::CameraFrame> moved;
         if (moving_camera) moved.emplace(scene_.camera.evaluate(t));
         const runtime::CameraFrame& camera = moving_camera ? *moved : fixed_camera;
@@ -297,12 +299,12 @@ Image Renderer::render_frame(int frame) {
             // (CreateCameraRay's, after its half-pixel moves: the row one
             // less than the sample's).
             state.sample = {seed, static_cast<std::uint32_t>(index),
-                            static_cast<std::uint32_t>(count), settings_.jitter};
+                            static_cast<std::uint32_t>(count), jitter};
             glm::dvec3 sum(0.0);
             unsigned made = 0;
             for (unsigned n = 0; n < camera.mesh->rays_per_pixel(); ++n) {
                 const auto ray =
-                    camera.mesh->ray(x + s.x, y + s.y - 1.0, width, height, n, camera.location.z,
+                    camera.mesh->ray(px, py - 1.0, width, height, n, camera.location.z,
                                      camera.direction.z < -1e-10, t);  // (POV-Ray's EPSILON)
                 if (!ray) continue;
                 glm::dvec3 direction = ray->direction;
@@ -312,12 +314,11 @@ Image Renderer::render_frame(int frame) {
             }
             return made ? sum / double(made) : glm::dvec3(0.0);
         }
-        const double u = (x + s.x) / width - 0.5;
-        const double v = 0.5 - (y + s.y) / height;
+        const double u = px / width - 0.5;
+        const double v = 0.5 - py / height;
         const auto lens = [&] {
-            const auto pair =
-                sample_pair(seed, static_cast<std::uint32_t>(index),
-                            static_cast<std::uint32_t>(count), kLensPair, settings_.jitter);
+            const auto pair = sample_pair(seed, static_cast<std::uint32_t>(index),
+                                          static_cast<std::uint32_t>(count), kLensPair, jitter);
             return glm::dvec2(pair[0], pair[1]);
         };
         const std::optional<PrimaryRay> ray =
@@ -325,9 +326,31 @@ Image Renderer::render_frame(int frame) {
         // (No ray, a fisheye's corner: black, as POV-Ray's.)
         if (!ray) return glm::dvec3(0.0);
         state.sample = {seed, static_cast<std::uint32_t>(index), static_cast<std::uint32_t>(count),
-                        settings_.jitter};
+                        jitter};
         return shader_->trace(travel_.ray(ray->origin, t, ray->direction), state);
     };
+    // Sample `index` of the set with this seed, of `count` in the set.
+    const auto trace_sample = [&](int x, int y, std::uint32_t seed, int index, int count,
+                                  ThreadState& state) {
+        const PixelSample s = pixel_sample(seed, static_cast<std::uint32_t>(index),
+                                           static_cast<std::uint32_t>(count), settings_.jitter);
+        return trace_at(x + s.x, y + s.y, s.time, seed, index, count, settings_.jitter, state);
+    };
+
+    // Radiosity: the frame's irradiance cache, filled by the pretrace
+    // (POV-Ray's, per frame) and read by the render.
+    std::optional<RadiosityCache> radiosity;
+    if (shader_->radiosity_enabled()) {
+        radiosity.emplace(shader_->radiosity_reach());
+        shader_->set_radiosity_cache(&*radiosity, fixed_camera.location);
+        radiosity_pretrace(
+            shader_->radiosity_settings(), width, height, frame, *radiosity,
+            [&](double px, double py, ThreadState& state) {
+                trace_at(px, py, 0.5, pixel_seed(frame, int(px), int(py), settings_.sample_seed), 0,
+                         1, false, state);
+            },
+            [&]() -> ThreadState& { return states.local(); });
+    }
 
     FramePlan plan;
     plan.frame = frame;
@@ -360,6 +383,7 @@ Image Renderer::render_frame(int frame) {
             if (settings_.progress) settings_.progress(frame, fraction, total);
         });
     for (const ThreadState& s : states) counters_ += s.counters;
+    shader_->set_radiosity_cache(nullptr, {});
     counters_.render_seconds +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (estimate) {

@@ -83,6 +83,25 @@ Shader::Shader(const runtime::SceneDescription& scene, const RayQuery& query, Li
     if (!scene.atmosphere.empty())
         atmosphere_ = std::make_shared<const runtime::MediaVolume>(scene.atmosphere);
     noise_generator_ = scene.global.noise_generator;
+    radiosity_ = scene.global.radiosity;
+    if (radiosity_.enabled) {
+        // POV-Ray's GetRecursionSettings: per bounce, half the rays (at
+        // least 5), fewer records to reuse, twice the error bound and
+        // reuse distances, a deeper trace level and less weight.
+        ambient_lights_ = scene.global.language_version < 3.7;
+        for (int d = 0; d < radiosity_.recursion_limit; ++d) {
+            RadiosityLevel level;
+            level.rays = std::max(5, static_cast<int>(radiosity_.count * std::pow(0.5, d)));
+            level.reuse_count = d == 0   ? radiosity_.nearest_count
+                                : d == 1 ? std::min(2, radiosity_.nearest_count)
+                                         : 1;
+            level.factor = std::pow(2.0, d);
+            level.trace_level = static_cast<int>(1.5 * (d + 1.0));
+            level.weight = std::max(radiosity_.adc_bailout + 1e-10,
+                                    std::pow(0.5 * radiosity_.brightness, d + 1.0));
+            radiosity_levels_.push_back(level);
+        }
+    }
 }
 
 glm::dvec3 Shader::fogged(const glm::dvec3& colour, const Ray4& ray, double depth,
@@ -229,7 +248,9 @@ inline glm::dvec3 Shader::shadow_filter(std::size_t index, const Hit& h,
     // from that side, so that the surface does not shadow itself.)
     const glm::dvec3& start =
         h.double_lit && glm::dot(h.geometric, direction) < 0.0 ? h.back_start : h.start;
-    if (light.is_area()) {
+    // (Radiosity's gathering rays light by an area light's centre, as
+    // POV-Ray's radiosity quality flags have it.)
+    if (light.is_area() && state.radiosity.depth == 0) {
         // One point of the grid per sample: over a pixel's samples the
         // shadow averages the grid, as POV-Ray's fully subdivided one.
         const SampleIndex& s = state.sample;
@@ -384,17 +405,22 @@ Inside Shader::inside_at(const runtime::Event& event) const {
 }
 
 glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, std::uint8_t sight,
-                            const Inside& inside, ThreadState& state) const {
+                            const Inside& inside, ThreadState& state, double* distance) const {
     const double t = ray.origin.w;
     Ray4 on = ray;
-    const auto hit = nearest(ray, on, state, sight);
+    // (Radiosity's gathering rays see media, fog and rainbows only with
+    // its `media on`, as POV-Ray's radiosity quality flags.)
+    const bool volumes_seen = state.radiosity.depth == 0 || radiosity_.media;
+    const auto hit =
+        nearest(ray, on, state, state.radiosity.depth > 0 ? runtime::kSightRadiosity : sight);
     // (A ray that hits nothing goes POV-Ray's BOUND_HUGE, 2e10, through
     // media and fog.)
     if (!hit) {
         const glm::dvec3 seen = sky(glm::normalize(glm::dvec3(ray.direction)), t);
-        return through_volume(seen, ray, 2.0e10, inside, depth, state);
+        return volumes_seen ? through_volume(seen, ray, 2.0e10, inside, depth, state) : seen;
     }
     const runtime::SurfacePoint p = hit->object->complete(on, *hit);
+    if (distance) *distance = glm::distance(glm::dvec3(p.event), glm::dvec3(ray.origin));
     Hit h{on, p, depth, weight};
     h.sight = sight;
     h.double_lit = hit->object->flags().double_illuminate;
@@ -463,6 +489,7 @@ glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, std::uint
                                          plain.count, &scratch.lights, state);
     }
 
+    if (!volumes_seen) return colour;
     return through_volume(colour, ray, glm::distance(h.point, glm::dvec3(ray.origin)), h.around,
                           depth, state);
 }
@@ -618,6 +645,13 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
     glm::dvec3 through(1.0);  // POV-Ray's filCol
     double trans = 1.0;
     std::size_t used = 0;
+    // (POV-Ray's radiosity_needed: radiosity on, its bounces not all
+    // taken; the ray's bailout is radiosity's own on a gathering path.)
+    const bool radiosity_needed =
+        radiosity_cache_ != nullptr && state.radiosity.depth < radiosity_.recursion_limit;
+    const double radiosity_bailout = state.radiosity.depth > 0 ? radiosity_.adc_bailout : kBailout;
+    bool radiosity_done = false;
+    glm::dvec3 radiosity_light(0.0);
     for (; used < count && trans > kBailout; ++used) {
         const runtime::TextureSample::Layer& layer = layers[used];
         const runtime::MaterialSample& m = layer.material;
@@ -628,7 +662,24 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
             legacy_opacity_
                 ? 1.0 - (m.filter * std::max({m.colour.x, m.colour.y, m.colour.z}) + m.transmit)
                 : 1.0 - m.filter - m.transmit;
-        glm::dvec3 own = m.colour * (m.ambient * ambient + m.emission) * opaque;
+        glm::dvec3 own =
+            m.colour * (ambient_lights_ ? m.ambient * ambient + m.emission : m.emission) * opaque;
+        // Radiosity's light, gathered once for the hit (about the first
+        // layer that needs it) and lit by each layer's diffuse.
+        if (radiosity_needed && m.diffuse != 0.0) {
+            const double diffuse = m.diffuse;
+            if (!radiosity_done) {
+                const glm::dvec3 most = through * m.colour;
+                const double contribution =
+                    (0.297 * most.x + 0.589 * most.y + 0.114 * most.z) * opaque * diffuse;
+                if (contribution > radiosity_bailout) {
+                    radiosity_light =
+                        radiosity_ambient(h, n, m.brilliance, h.weight * contribution, state);
+                    radiosity_done = true;
+                }
+            }
+            own += m.colour * radiosity_light * (opaque * diffuse);
+        }
         for (std::size_t i = 0; i < lights_.size(); ++i) {
             if (!lights_object(i, h)) continue;
             const ShadedLight& light = lights_[i];
@@ -683,12 +734,15 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
             // A metallic finish tints them by the pigment.
             const glm::dvec3 highlight =
                 m.metallic > 0.0 ? metallic_tint(m.metallic, cosine, m.colour) : glm::dvec3(1.0);
-            if (m.phong > 0.0 && !light.shadowless()) {
+            // (No highlights on radiosity's gathering rays: POV-Ray leaves
+            // them out there, against splotches.)
+            const bool highlights = !light.shadowless() && state.radiosity.depth == 0;
+            if (m.phong > 0.0 && highlights) {
                 const glm::dvec3 reflected = h.d - 2.0 * glm::dot(h.d, n) * n;
                 const double c = glm::dot(reflected, known.to_light);
                 if (c > 0.0) lit += m.phong * std::pow(c, m.phong_size) * highlight;
             }
-            if (m.specular > 0.0 && !light.shadowless()) {
+            if (m.specular > 0.0 && highlights) {
                 const glm::dvec3 half = glm::normalize(known.to_light - h.d);
                 const double c = glm::dot(half, n);
                 if (c > 0.0) lit += m.specular * std::pow(c, 1.0 / m.roughness) * highlight;

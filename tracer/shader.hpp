@@ -23,6 +23,7 @@
 #include "tracer/light.hpp"
 #include "tracer/light_travel.hpp"
 #include "tracer/media.hpp"
+#include "tracer/radiosity_cache.hpp"
 #include "tracer/ray_query.hpp"
 #include "tracer/thread_state.hpp"
 
@@ -58,13 +59,28 @@ class Shader {
                         camera_interiors_.empty() ? Inside{} : inside_at(ray.origin), state);
     }
 
+    // Radiosity (global_settings { radiosity { } }): the frame's cache and
+    // the eye its reuse distances are measured from, set before each frame
+    // (null: none). Between the pretrace's passes the cache is only read.
+    bool radiosity_enabled() const { return radiosity_.enabled; }
+    const runtime::RadiositySettings& radiosity_settings() const { return radiosity_; }
+    void set_radiosity_cache(const RadiosityCache* cache, const glm::dvec3& eye) {
+        radiosity_cache_ = cache;
+        radiosity_eye_ = eye;
+    }
+    // How far a query of each bounce may reuse a record, in its harmonic
+    // means (RadiosityCache's `reach`).
+    std::vector<double> radiosity_reach() const;
+
   private:
     // `sight`: the kind of ray (runtime::RaySight), which decides the
     // objects hidden from it; `inside`: the interiors it starts in (a
     // camera ray: none known; one that finds itself leaving an object
     // counts that object from its start).
+    // (`distance`: where given, set to the distance to the hit, infinity
+    // for none: radiosity's gathering rays.)
     glm::dvec3 radiance(const runtime::Ray4& ray, int depth, double weight, std::uint8_t sight,
-                        const Inside& inside, ThreadState& state) const;
+                        const Inside& inside, ThreadState& state, double* distance = nullptr) const;
     // The interiors among camera_interiors_ that hold `event`.
     Inside inside_at(const runtime::Event& event) const;
     // The nearest hit along `ray` within (0, s_max), and in `on` the ray it
@@ -138,6 +154,17 @@ class Shader {
     // textures and layers of the hit (null: one layer, nothing to keep).
     glm::dvec3 lit(const Hit& h, const runtime::TextureSample::Layer* layers, std::size_t count,
                    std::vector<ShadingScratch::Light>* seen, ThreadState& state) const;
+    // Radiosity's light at the hit for a layer whose normal is `layer_normal`
+    // (POV-Ray's RadiosityFunction::ComputeAmbient, times its brightness):
+    // the cache's records reused, or a sample gathered. `weight`: the ray's
+    // weight times the most the light can add (its error bound widens
+    // below 0.25).
+    glm::dvec3 radiosity_ambient(const Hit& h, const glm::dvec3& layer_normal, double brilliance,
+                                 double weight, ThreadState& state) const;
+    // One sample gathered (GatherLight): its rays' mean colour, and its
+    // record kept where the path keeps them. Returns its quality.
+    double gather(const Hit& h, const glm::dvec3& layer_normal, double brilliance,
+                  glm::dvec3& illuminance, ThreadState& state) const;
     // Where a light lies from the hit, or that it does not shine there.
     [[gnu::always_inline]] inline void place(const ShadedLight& light, const Hit& h,
                                              ShadingScratch::Light& known) const;
@@ -232,7 +259,22 @@ class Shader {
     bool still_ambient_ = false;
     glm::dvec3 fixed_ambient_{0.0};
     int max_trace_level_;
-    glm::dvec3 irid_wavelength_;   // global_settings' (iridescence.hpp)
+    glm::dvec3 irid_wavelength_;  // global_settings' (iridescence.hpp)
+    // Radiosity's settings and, per bounce, what POV-Ray derives from them
+    // (SceneRadiositySettings::GetRecursionSettings).
+    runtime::RadiositySettings radiosity_;
+    struct RadiosityLevel {
+        int rays = 0;         // rays a sample gathers with
+        int reuse_count = 0;  // the weight of records enough to reuse (x 4)
+        double factor = 1.0;  // of the error bound and the reuse distances
+        int trace_level = 1;  // the level its rays start at
+        double weight = 1.0;  // its rays' weight
+    };
+    std::vector<RadiosityLevel> radiosity_levels_;
+    // With radiosity, a 3.7 scene's `ambient` lights nothing (only emission).
+    bool ambient_lights_ = true;
+    const RadiosityCache* radiosity_cache_ = nullptr;
+    glm::dvec3 radiosity_eye_{0.0};
     bool legacy_sky_ = false;      // GlobalSettings::legacy_sky
     bool legacy_opacity_ = false;  // GlobalSettings::legacy_opacity
 };

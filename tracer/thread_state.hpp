@@ -12,6 +12,7 @@
 #include "runtime/texture/texture_evaluator.hpp"
 #include "tracer/counters.hpp"
 #include "tracer/mailbox.hpp"
+#include "tracer/radiosity_cache.hpp"
 
 namespace hexant::tracer {
 
@@ -44,6 +45,16 @@ struct SampleIndex {
     bool jitter = false;
 };
 
+// Where radiosity stands on the path being traced (tracer/shader_radiosity.cpp):
+// how many gathering bounces deep it is (0: not on a gathering ray; POV-Ray's
+// radiosityRecursionDepth), and where records gathered now are kept: the
+// pretrace block's list, a final-trace gather's own, or nowhere.
+struct RadiosityPath {
+    int depth = 0;
+    bool pretrace = false;
+    std::vector<RadiosityRecord>* kept = nullptr;
+};
+
 struct ThreadState {
     Mailbox mailbox;
     Counters counters;
@@ -56,6 +67,7 @@ struct ThreadState {
     // as the ray continued, no new trace level (TraceRay's continuedRay),
     // so a ray's level is its depth less these (tracer/shader.cpp).
     int straight_passes = 0;
+    RadiosityPath radiosity{};
     std::deque<ShadingScratch>
         shading{};  // by depth (a deque: a deeper one leaves the others in place)
     ShadingScratch& shading_at(int depth) {

@@ -275,6 +275,8 @@ struct action<g::object_flag> {
             record.no_image = on;
         else if (name == "no_reflection")
             record.no_reflection = on;
+        else if (name == "no_radiosity")
+            record.no_radiosity = on;
         else if (name == "double_illuminate")
             record.double_illuminate = on;
         else if (name == "global_lights") {
@@ -282,7 +284,7 @@ struct action<g::object_flag> {
                 throw ValueError("global_lights belongs in a light_group, not in this object");
             record.light_group->global_lights = on;
         }
-        // sturm and no_radiosity cannot change the image (language/keyword_rules.cpp).
+        // sturm cannot change the image (language/keyword_rules.cpp).
     }
 };
 // A setting of the object's kind (runtime/objects/shape_kind.hpp).
@@ -303,5 +305,20 @@ template <>
 struct action<g::shape_vectors_setting> : action<g::shape_setting> {};
 template <>
 struct action<g::object_ignored_block> : unrendered_action<runtime::ObjectRecord> {};
+// radiosity { importance I }: in (0, 1] as POV-Ray requires; below 1 it
+// thins the gathering rays that reach the object, which hexant does not:
+// warned there.
+template <>
+struct action<g::object_radiosity_importance> {
+    template <typename ActionInput>
+    static void apply(const ActionInput& in, Interpreter& st) {
+        std::vector<Value> given = st.values.close_frame();
+        const double importance = to_constant(given.at(0), "radiosity's importance");
+        if (!(importance > 0.0 && importance <= 1.0))
+            throw ValueError("radiosity's importance must be greater than 0 and at most 1");
+        st.blocks.edit<runtime::ObjectRecord>(in.position(), "radiosity");
+        if (importance < 1.0) st.not_rendered(in.position(), "importance");
+    }
+};
 
 }  // namespace hexant::language

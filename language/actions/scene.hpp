@@ -580,6 +580,104 @@ struct action<g::global_setting> {
             st.scene.global.ambient_light = to_colour(v, name);
     }
 };
+// ---- radiosity { } (runtime/scene/radiosity_settings.hpp): POV-Ray 3.7's
+// Parse_Global_Settings, its limits and its messages.
+template <>
+struct action<g::radiosity_open> {
+    template <typename ActionInput>
+    static void apply(const ActionInput& in, Interpreter& st) {
+        st.require_whole_time(in.position(), "radiosity { }");
+        st.scene.global.radiosity.enabled = true;
+    }
+};
+template <>
+struct action<g::radiosity_setting> {
+    template <typename ActionInput>
+    static void apply(const ActionInput& in, Interpreter& st) {
+        std::vector<Value> given = st.values.close_frame();
+        const std::string name = st.values.pop_name();
+        runtime::RadiositySettings& r = st.scene.global.radiosity;
+        const bool two = name == "count" || name == "nearest_count";
+        if (given.size() > 1 && !two) throw ValueError("radiosity's " + name + " takes one value");
+        if (name == "load_file" || name == "save_file") {
+            (void)to_string_value(given.at(0), "radiosity's " + name);
+            // (POV-Ray 3.7 ignores both too, with this advice.)
+            st.warn(in.position(), "radiosity's " + name +
+                                       " is ignored, as POV-Ray 3.7 ignores it (there it is a "
+                                       "command-line option); hexant keeps no radiosity file");
+            return;
+        }
+        const double x = to_constant(given.at(0), "radiosity's " + name);
+        if (!std::isfinite(x)) throw ValueError("radiosity's " + name + " must be finite");
+        const auto positive = [&](double& into) {
+            if (!(x > 0.0)) throw ValueError("radiosity's " + name + " must be a positive number");
+            into = x;
+        };
+        if (name == "always_sample")
+            r.always_sample = static_cast<int>(x) != 0;
+        else if (name == "normal")
+            r.normal = static_cast<int>(x) != 0;
+        else if (name == "media")
+            r.media = static_cast<int>(x) != 0;
+        else if (name == "subsurface")
+            r.subsurface = static_cast<int>(x) != 0;
+        else if (name == "brilliance")
+            r.brilliance = static_cast<int>(x) != 0;
+        else if (name == "pretrace_start" || name == "pretrace_end") {
+            if (!(x > 0.0 && x <= 1.0))
+                throw ValueError("radiosity's " + name +
+                                 " must be greater than 0 and no higher than 1");
+            (name == "pretrace_start" ? r.pretrace_start : r.pretrace_end) = x;
+        } else if (name == "brightness")
+            positive(r.brightness);
+        else if (name == "error_bound")
+            positive(r.error_bound);
+        else if (name == "low_error_factor")
+            positive(r.low_error_factor);
+        else if (name == "maximum_reuse")
+            positive(r.maximum_reuse);
+        else if (name == "adc_bailout")
+            positive(r.adc_bailout);
+        else if (name == "max_sample")
+            r.max_sample = x;
+        else if (name == "gray_threshold") {
+            if (!(x >= 0.0 && x <= 1.0))
+                throw ValueError("radiosity's gray_threshold must be from 0 to 1");
+            r.gray_threshold = x;
+        } else if (name == "minimum_reuse") {
+            if (!(x >= 0.0)) throw ValueError("radiosity's minimum_reuse must not be negative");
+            r.minimum_reuse = x;
+        } else if (name == "recursion_limit") {
+            r.recursion_limit = static_cast<int>(
+                checked_integer(x, name, 1, runtime::RadiositySettings::kMostRecursion));
+        } else if (name == "count") {
+            const long long count = checked_integer(x, name, 1, 1 << 20);
+            long long pool = std::max<long long>(1600, count);
+            if (given.size() > 1)
+                pool =
+                    checked_integer(to_constant(given[1], "radiosity's count"), name, 1, 1 << 20);
+            if (pool < count)
+                throw ValueError(
+                    "radiosity's count can not be more than its direction pool "
+                    "(count's second value)");
+            r.count = static_cast<int>(count);
+            r.direction_pool = static_cast<int>(pool);
+        } else {  // nearest_count
+            r.nearest_count = static_cast<int>(
+                checked_integer(x, name, 1, runtime::RadiositySettings::kMostNearestCount));
+            r.nearest_count_pretrace = 0;
+            if (given.size() > 1) {
+                const long long apt = checked_integer(
+                    to_constant(given[1], "radiosity's nearest_count"), name, 0, 1 << 20);
+                if (apt >= r.nearest_count)
+                    throw ValueError(
+                        "radiosity's nearest_count for the adaptive pretrace (its "
+                        "second value) must be smaller than the first");
+                r.nearest_count_pretrace = static_cast<int>(apt);
+            }
+        }
+    }
+};
 template <>
 struct action<g::global_ignored_setting> {
     template <typename ActionInput>

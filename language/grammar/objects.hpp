@@ -397,9 +397,15 @@ struct shape_vectors_setting_value : p::seq<expression> {};
 struct shape_vectors_setting
     : p::seq<shape_vectors_setting_name, ws, frame_open, p::must<shape_vectors_setting_value>,
              p::star<comma, p::must<shape_vectors_setting_value>>> {};
-struct object_ignored_block
-    : p::seq<p::sor<TAO_PEGTL_KEYWORD("photons"), TAO_PEGTL_KEYWORD("radiosity")>, ws,
-             p::must<skipped_block>, ws> {};
+struct object_ignored_block : p::seq<TAO_PEGTL_KEYWORD("photons"), ws, p::must<skipped_block>, ws> {
+};
+// radiosity { importance I } (POV-Ray's Parse_Object_Mods).
+struct radiosity_importance_value : p::seq<expression> {};
+struct object_radiosity_importance
+    : p::seq<TAO_PEGTL_KEYWORD("importance"), ws, frame_open, p::must<radiosity_importance_value>> {
+};
+struct object_radiosity_block : p::seq<TAO_PEGTL_KEYWORD("radiosity"), ws, p::must<lbrace>,
+                                       p::opt<object_radiosity_importance>, p::must<rbrace>> {};
 // clipped_by { OBJECTS } and bounded_by { OBJECTS } (runtime/objects/object.hpp,
 // ObjectLimits); `clipped_by { bounded_by }` clips by the bound and
 // `bounded_by { clipped_by }` bounds by the clip (POV-Ray's Parse_Object_Mods).
@@ -417,6 +423,6 @@ struct object_modifier
     : p::sor<directive<object_modifier>, macro_call<object_modifier>, transformation, deformation,
              object_texture, object_interior_texture, object_pigment, object_finish, object_normal,
              object_interior, object_material, object_flag, shape_vectors_setting, shape_setting,
-             limit_block, object_ignored_block> {};
+             limit_block, object_ignored_block, object_radiosity_block> {};
 
 }  // namespace hexant::language::grammar

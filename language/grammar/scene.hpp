@@ -132,8 +132,32 @@ struct global_hf_gray_16
                                         TAO_PEGTL_KEYWORD("yes"), TAO_PEGTL_KEYWORD("no")>>,
                            p::not_at<p::identifier>>,
                     ignored_value>> {};
-struct global_item : p::sor<directive<global_item>, global_setting, global_charset,
-                            global_motion_blur, global_hf_gray_16, global_ignored_setting> {};
+// radiosity { NAME VALUE [, VALUE] ... } (runtime/scene/radiosity_settings.hpp):
+// each setting one or two values (count and nearest_count take a second),
+// load_file and save_file a string; directives and macros among them, as
+// rad_def.inc's Rad_Settings writes them.
+struct radiosity_open : p::seq<TAO_PEGTL_KEYWORD("radiosity"), ws, p::must<lbrace>> {};
+struct radiosity_setting_name
+    : p::sor<TAO_PEGTL_KEYWORD("adc_bailout"), TAO_PEGTL_KEYWORD("always_sample"),
+             TAO_PEGTL_KEYWORD("brightness"), TAO_PEGTL_KEYWORD("brilliance"),
+             TAO_PEGTL_KEYWORD("count"), TAO_PEGTL_KEYWORD("error_bound"),
+             TAO_PEGTL_KEYWORD("gray_threshold"), TAO_PEGTL_KEYWORD("load_file"),
+             TAO_PEGTL_KEYWORD("low_error_factor"), TAO_PEGTL_KEYWORD("max_sample"),
+             TAO_PEGTL_KEYWORD("maximum_reuse"), TAO_PEGTL_KEYWORD("media"),
+             TAO_PEGTL_KEYWORD("minimum_reuse"), TAO_PEGTL_KEYWORD("nearest_count"),
+             TAO_PEGTL_KEYWORD("normal"), TAO_PEGTL_KEYWORD("pretrace_end"),
+             TAO_PEGTL_KEYWORD("pretrace_start"), TAO_PEGTL_KEYWORD("recursion_limit"),
+             TAO_PEGTL_KEYWORD("save_file"), TAO_PEGTL_KEYWORD("subsurface")> {};
+struct radiosity_setting
+    : p::seq<radiosity_setting_name, ws, frame_open, p::must<global_setting_value>,
+             p::opt<comma, p::must<global_setting_value>>> {};
+struct radiosity_item;
+struct radiosity_item
+    : p::sor<directive<radiosity_item>, macro_call<radiosity_item>, radiosity_setting> {};
+struct global_radiosity : p::seq<radiosity_open, p::star<radiosity_item>, p::must<rbrace>> {};
+struct global_item
+    : p::sor<directive<global_item>, global_setting, global_charset, global_motion_blur,
+             global_hf_gray_16, global_radiosity, global_ignored_setting> {};
 struct global_settings_block
     : p::seq<kw_global_settings, p::must<lbrace>, p::star<global_item>, p::must<rbrace>> {};
 

@@ -88,6 +88,9 @@ enum RaySight : std::uint8_t {
     kSightAll = 0,  // shadow rays and queries: every object
     kSightImage = 1,
     kSightReflection = 2,
+    // A ray radiosity gathers along, and every ray traced from its hit
+    // (POV-Ray's IsRadiosityRay): no_radiosity objects are passed by.
+    kSightRadiosity = 4,
 };
 
 // What an object (a primitive, a group, a wrapper) carries of its record's

@@ -70,6 +70,7 @@ struct ObjectRecord {
     // a group's members, as its Parse_Object_Mods and Set_CSG_Tree_Flag).
     bool no_image = false;
     bool no_reflection = false;
+    bool no_radiosity = false;  // hidden from radiosity's gathering rays
     bool double_illuminate = false;
     bool hollow = false;
     bool inverse = false;  // inside and outside swapped (CSG)

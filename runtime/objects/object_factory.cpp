@@ -105,6 +105,7 @@ Inherited handed_down(const ObjectRecord& record, const Inherited& parent) {
     down.no_shadow = record.no_shadow || parent.no_shadow;
     if (record.no_image) down.flags.hidden_from |= kSightImage;
     if (record.no_reflection) down.flags.hidden_from |= kSightReflection;
+    if (record.no_radiosity) down.flags.hidden_from |= kSightRadiosity;
     down.flags.double_illuminate = record.double_illuminate || parent.flags.double_illuminate;
     // (A group's hollow reaches its members, as POV-Ray's
     // Set_CSG_Children_Flag; a member's own says for itself.)
@@ -389,7 +390,8 @@ bool instanceable(const Csg& csg) {
         const ObjectRecord& r = *stack.back();
         stack.pop_back();
         if (!r.lifetime.is_always() || r.transform.depends_on_time() || r.no_shadow || r.no_image ||
-            r.no_reflection || r.double_illuminate || r.hollow || r.light_group || r.interior)
+            r.no_reflection || r.no_radiosity || r.double_illuminate || r.hollow || r.light_group ||
+            r.interior)
             return false;
         if (r.limits) {
             if (!r.limits->bounded_by.empty()) return false;

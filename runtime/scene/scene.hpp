@@ -12,6 +12,7 @@
 #include "runtime/scene/fog.hpp"
 #include "runtime/scene/light.hpp"
 #include "runtime/scene/media.hpp"
+#include "runtime/scene/radiosity_settings.hpp"
 #include "runtime/scene/rainbow.hpp"
 #include "runtime/scene/sky_sphere.hpp"
 #include "runtime/source_place.hpp"
@@ -50,6 +51,12 @@ struct GlobalSettings {
     glm::dvec3 irid_wavelength{0.70, 0.52, 0.48};
     std::optional<int> motion_blur_samples;
     std::optional<double> motion_blur_time;
+    // radiosity { }: with it, a 3.7 scene's ambient is not lit (only
+    // emission is), as in POV-Ray's ComputeLightedTexture.
+    RadiositySettings radiosity;
+    // The language version the scene ends with (3.62 without #version,
+    // POV-Ray's EffectiveLanguageVersion).
+    double language_version = 3.62;
 };
 
 // A branch whose condition depends on clock, as the language split it:

@@ -326,8 +326,8 @@ TEST_CASE("POV-Ray's sample animations agree with POV-Ray 3.7 at clock 0.5",
     // Debian's povray-examples, scenes/animations/: 16 of its 17 animations
     // as they are, at 64x48 with POV-Ray's include folder on the path,
     // against POV-Ray's own render (animations/NAME_0.5.png). The 17th,
-    // raddem, lights its room by radiosity, which hexant does not have (it
-    // renders, with direct light only). Where povray-examples is not
+    // raddem, lit by radiosity, has its own test with radiosity's tolerance
+    // (pov_reference_radiosity_test.cpp). Where povray-examples is not
     // installed (it brings POV-Ray itself) nothing is compared.
     const fs::path scenes = "/usr/share/povray-3.7/scenes/animations";
     const fs::path includes = "/usr/share/povray-3.7/include";
