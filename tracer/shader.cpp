@@ -26,6 +26,8 @@ glm::dvec3 rgb(const runtime::ColourFunction& c, double t) {
 // POV-Ray stops following rays whose contribution falls below its
 // adc_bailout (1/255).
 constexpr double kBailout = 1.0 / 255.0;
+// The part of a shadow ray's length next to the light where nothing blocks.
+constexpr double kLightTolerance = 1e-9;
 }  // namespace
 
 // The relative ior a layer's reflectivity reads: only Fresnel reads it, and
@@ -265,6 +267,11 @@ inline glm::dvec3 Shader::shadow_filter(std::size_t index, const Hit& h,
         reach = toward.depth;
     }
     if (!(reach > 0.0)) return glm::dvec3(1.0);
+    // (A surface through the light itself does not shadow it: POV-Ray
+    // counts blockers only short of the light, by its SHADOW_TOLERANCE;
+    // here by a part of the distance far above the hit's rounding, so
+    // that a light set on a ceiling (cornell.pov's) lights the room.)
+    reach *= 1.0 - kLightTolerance;
     const Ray4 ray = travel_.ray(start, h.time, direction);
     if (!projected(light, ray, reach)) return glm::dvec3(0.0);
     if (light.shadowless()) return glm::dvec3(1.0);

@@ -317,3 +317,28 @@ TEST_CASE("crand takes a random fraction of each light's diffuse intensity, as i
     CHECK(grainy[1] - grainy[0] > 0.005);
     CHECK(grainy[2] == Approx(0.6).margin(0.01));
 }
+
+TEST_CASE("a surface through the light itself casts no shadow from it, as in POV-Ray",
+          "[tracer][render]") {
+    // A light set exactly on a ceiling (radiosity/cornell.pov's: its lights
+    // at the ceiling's height) lights the floor below: POV-Ray counts a
+    // blocker only short of the light. Before, the ceiling's hit at the
+    // light's own distance shadowed part of each light's rays, by its
+    // rounding (cornell's walls 1.46 x darker than POV-Ray's). The image
+    // with the ceiling is the image with a ceiling that casts no shadow;
+    // a ceiling a little below the light darkens the floor (not blind).
+    const auto image = [](double ceiling, const char* flags) {
+        const std::string y = std::to_string(ceiling);
+        const auto scene = small_scene(
+            "camera { location <0, 1, -4> look_at 0 }\n"
+            "light_source { <0.3, 3, 0.7>, rgb 1 }\n"
+            "triangle { <-20, " +
+                y + ", -20>, <20, " + y + ", -20>, <0, " + y + ", 20> pigment { rgb 1 } " + flags +
+                " }\n"
+                "plane { y, 0 pigment { rgb 1 } finish { ambient 0 diffuse 1 } }\n",
+            "ceiling.pov");
+        return render(scene, tr::Mode::Spacetime, 1);
+    };
+    CHECK(largest_difference(image(3.0, ""), image(3.0, "no_shadow")) == 0.0);
+    CHECK(largest_difference(image(2.999, ""), image(2.999, "no_shadow")) > 0.1);
+}
