@@ -80,7 +80,7 @@ std::vector<PixelSetting> render_settings(const Sampling& sampling, const Render
     std::string declares;
     for (const auto& [name, value] : options.declares)
         declares += (declares.empty() ? "" : " ") + name + "=" + value;
-    return {
+    std::vector<PixelSetting> settings = {
         {"hexant", hexant_version()},
         {"size", std::to_string(a.width) + "x" + std::to_string(a.height)},
         {"frame range", std::to_string(a.initial_frame) + " to " + std::to_string(a.final_frame)},
@@ -110,6 +110,10 @@ std::vector<PixelSetting> render_settings(const Sampling& sampling, const Render
         // run-length Targa, under the same name as the plain one.)
         {"file variant", args.output_variant.empty() ? "plain" : args.output_variant},
     };
+    // (Only when asked: the records of every render made before --gi
+    // existed stay valid.)
+    if (args.gi_path) settings.push_back({"gi", "path"});
+    return settings;
 }
 
 FrameRecords::FrameRecords(std::vector<PixelSetting> settings, const runtime::Animation& animation,

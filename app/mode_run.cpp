@@ -236,6 +236,7 @@ ModeRun render_mode(runtime::SceneDescription& scene, const RenderArguments& arg
     settings.sample_seed = args.seed;
     settings.threads = args.threads.value_or(0);
     if (args.light_speed) settings.light_speed = *args.light_speed;
+    settings.gi_path = args.gi_path;
     settings.build = args.hierarchy.options();
     settings.first_frame = frames.front();
     settings.last_frame = frames.back();

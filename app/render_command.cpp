@@ -215,6 +215,17 @@ void add_render_arguments(CLI::App& command, RenderArguments& a) {
         "Finite speed of light, scene units per clock unit: every ray runs back in time as it "
         "goes, so a fast "
         "object is seen where it was when its light left it (default: instant)");
+    command.add_option_function<std::string>(
+        "--gi",
+        [&a](const std::string& text) {
+            if (text != "cache" && text != "path")
+                throw CLI::ValidationError("--gi", "'" + text + "' is not cache or path");
+            a.gi_path = text == "path";
+        },
+        "Radiosity's indirect light: cache (default) as POV-Ray 3.7 computes it, an irradiance "
+        "cache filled by a pretrace for each frame; path: one gathering ray per sample and "
+        "bounce, at the sample's own time (unbiased: it converges with the samples, moves with "
+        "its objects and does not change from frame to frame where nothing moves)");
     add_hierarchy_arguments(command, a.hierarchy);
 }
 

@@ -52,6 +52,9 @@ struct RenderArguments {
     // The speed of light (tracer/light_travel.hpp), scene units per clock
     // unit: none, instant light.
     std::optional<double> light_speed;
+    // --gi: radiosity's indirect light from POV-Ray's irradiance cache
+    // (per frame), or sampled per sample at its own time ("path").
+    bool gi_path = false;
     // Each frame's error estimate (tracer/frame_estimate.hpp) is printed
     // whenever there is one (2 or more jittered samples); --error-estimate
     // asks for it (refused without them). --error-image writes each

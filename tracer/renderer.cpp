@@ -200,6 +200,7 @@ Renderer::Renderer(const runtime::SceneDescription& scene, const RenderSettings&
         return o->casts_shadow() && o->filters_light();
     });
     shader_ = std::make_unique<Shader>(scene, *query_, travel, filtering);
+    shader_->set_radiosity_path(settings_.gi_path);
     const bool refracting = std::any_of(objects_.begin(), objects_.end(),
                                         [](const auto& o) { return o->filters_light(); });
     for (const auto& o : objects_)
@@ -340,7 +341,9 @@ Image Renderer::render_frame(int frame) {
     // Radiosity: the frame's irradiance cache, filled by the pretrace
     // (POV-Ray's, per frame) and read by the render.
     std::optional<RadiosityCache> radiosity;
-    if (shader_->radiosity_enabled()) {
+    if (shader_->radiosity_enabled() && settings_.gi_path) {
+        shader_->set_radiosity_cache(nullptr, fixed_camera.location);
+    } else if (shader_->radiosity_enabled()) {
         radiosity.emplace(shader_->radiosity_reach());
         shader_->set_radiosity_cache(&*radiosity, fixed_camera.location);
         radiosity_pretrace(

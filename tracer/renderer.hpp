@@ -49,6 +49,9 @@ struct RenderSettings {
     // infinite, the default, is instant light. Positive; the constructor
     // throws std::invalid_argument otherwise.
     double light_speed = std::numeric_limits<double>::infinity();
+    // Radiosity by one gathering ray per sample and bounce (--gi path)
+    // instead of the frame's irradiance cache.
+    bool gi_path = false;
     BuildOptions build;
     int threads = 0;  // 0: as many as the machine has
     // Told, from a worker thread and one call at a time, each time a tile

@@ -418,8 +418,8 @@ glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, std::uint
     // (Radiosity's gathering rays see media, fog and rainbows only with
     // its `media on`, as POV-Ray's radiosity quality flags.)
     const bool volumes_seen = state.radiosity.depth == 0 || radiosity_.media;
-    const auto hit =
-        nearest(ray, on, state, state.radiosity.depth > 0 ? runtime::kSightRadiosity : sight);
+    const auto hit = nearest(
+        ray, on, state, state.radiosity.depth > 0 ? std::uint8_t(runtime::kSightRadiosity) : sight);
     // (A ray that hits nothing goes POV-Ray's BOUND_HUGE, 2e10, through
     // media and fog.)
     if (!hit) {
@@ -654,8 +654,9 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
     std::size_t used = 0;
     // (POV-Ray's radiosity_needed: radiosity on, its bounces not all
     // taken; the ray's bailout is radiosity's own on a gathering path.)
-    const bool radiosity_needed =
-        radiosity_cache_ != nullptr && state.radiosity.depth < radiosity_.recursion_limit;
+    const bool radiosity_needed = (radiosity_cache_ != nullptr || radiosity_path_) &&
+                                  radiosity_.enabled &&
+                                  state.radiosity.depth < radiosity_.recursion_limit;
     const double radiosity_bailout = state.radiosity.depth > 0 ? radiosity_.adc_bailout : kBailout;
     bool radiosity_done = false;
     glm::dvec3 radiosity_light(0.0);
@@ -681,7 +682,9 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
                     (0.297 * most.x + 0.589 * most.y + 0.114 * most.z) * opaque * diffuse;
                 if (contribution > radiosity_bailout) {
                     radiosity_light =
-                        radiosity_ambient(h, n, m.brilliance, h.weight * contribution, state);
+                        radiosity_path_
+                            ? radiosity_path(h, n, m.brilliance, state)
+                            : radiosity_ambient(h, n, m.brilliance, h.weight * contribution, state);
                     radiosity_done = true;
                 }
             }

@@ -68,6 +68,9 @@ class Shader {
         radiosity_cache_ = cache;
         radiosity_eye_ = eye;
     }
+    // --gi path: each sample gathers one ray per bounce at its own time
+    // (Shader::radiosity_path), no cache.
+    void set_radiosity_path(bool path) { radiosity_path_ = path; }
     // How far a query of each bounce may reuse a record, in its harmonic
     // means (RadiosityCache's `reach`).
     std::vector<double> radiosity_reach() const;
@@ -161,6 +164,10 @@ class Shader {
     // below 0.25).
     glm::dvec3 radiosity_ambient(const Hit& h, const glm::dvec3& layer_normal, double brilliance,
                                  double weight, ThreadState& state) const;
+    // --gi path's estimate of the same light: one gathering ray, its
+    // direction the sample's own dimensions for this bounce.
+    glm::dvec3 radiosity_path(const Hit& h, const glm::dvec3& layer_normal, double brilliance,
+                              ThreadState& state) const;
     // One sample gathered (GatherLight): its rays' mean colour, and its
     // record kept where the path keeps them. Returns its quality.
     double gather(const Hit& h, const glm::dvec3& layer_normal, double brilliance,
@@ -274,6 +281,7 @@ class Shader {
     // With radiosity, a 3.7 scene's `ambient` lights nothing (only emission).
     bool ambient_lights_ = true;
     const RadiosityCache* radiosity_cache_ = nullptr;
+    bool radiosity_path_ = false;
     glm::dvec3 radiosity_eye_{0.0};
     bool legacy_sky_ = false;      // GlobalSettings::legacy_sky
     bool legacy_opacity_ = false;  // GlobalSettings::legacy_opacity

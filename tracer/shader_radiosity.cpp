@@ -13,6 +13,7 @@
 // Malley's method, so that a sample is the same whatever the threads and
 // whichever sample came before.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <numbers>
@@ -45,7 +46,70 @@ std::uint32_t point_seed(const glm::dvec3& p, int depth) {
     return h;
 }
 
+// Malley's method: a point u of the unit square, uniform on the disc, lifted
+// to the hemisphere about `axis` (u_axis, v_axis across it): cosine-
+// weighted; `tweak` (radiosity's brilliance on) narrows it as POV-Ray's
+// SampleDirectionGenerator does.
+glm::dvec3 hemisphere(const std::array<double, 2>& u, const glm::dvec3& axis,
+                      const glm::dvec3& u_axis, const glm::dvec3& v_axis, double tweak) {
+    double up2 = 1.0 - u[0];
+    if (tweak != 1.0) up2 = std::pow(up2, 2.0 / (1.0 + tweak));
+    const double r = std::sqrt(std::max(0.0, 1.0 - up2));
+    const double phi = 2.0 * std::numbers::pi * u[1];
+    return r * std::cos(phi) * u_axis + std::sqrt(up2) * axis + r * std::sin(phi) * v_axis;
+}
+
+// Two unit vectors across `axis` (POV-Ray's frame: off the z axis unless
+// near it).
+void across(const glm::dvec3& axis, glm::dvec3& u_axis, glm::dvec3& v_axis) {
+    const glm::dvec3 off = std::fabs(axis.z) > 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(0, 0, 1);
+    u_axis = glm::normalize(glm::cross(axis, off));
+    v_axis = glm::cross(u_axis, axis);
+}
+
+// The gathered light as ComputeAmbient returns it: grey by gray_threshold,
+// times brightness.
+glm::dvec3 finished(glm::dvec3 ambient, const runtime::RadiositySettings& settings) {
+    if (settings.gray_threshold > 0.0) {
+        const double grey = 0.297 * ambient.x + 0.589 * ambient.y + 0.114 * ambient.z;
+        ambient = ambient * (1.0 - settings.gray_threshold) + settings.gray_threshold * grey;
+    }
+    return ambient * settings.brightness;
+}
+
+glm::dvec3 limited(glm::dvec3 seen, double max_sample) {
+    const double brightest = std::max({seen.x, seen.y, seen.z});
+    if (max_sample > 0.0 && brightest > max_sample) seen *= max_sample / brightest;
+    return seen;
+}
+
 }  // namespace
+
+glm::dvec3 Shader::radiosity_path(const Hit& h, const glm::dvec3& layer_normal, double brilliance,
+                                  ThreadState& state) const {
+    const int depth = state.radiosity.depth;
+    const RadiosityLevel& level = radiosity_levels_[std::size_t(depth)];
+    const SampleIndex& s = state.sample;
+    const auto u = sample_pair(s.seed, s.index, s.count,
+                               kGatherPair + static_cast<std::uint32_t>(depth), s.jitter);
+    const double tweak = radiosity_.brilliance ? brilliance : 1.0;
+    glm::dvec3 axis = radiosity_.normal ? layer_normal : h.raw;
+    glm::dvec3 u_axis, v_axis;
+    across(axis, u_axis, v_axis);
+    glm::dvec3 direction = hemisphere(u, axis, u_axis, v_axis, tweak);
+    // (Below the raw surface: the same point about the raw normal.)
+    if (glm::dot(direction, h.raw) <= 0.0) {
+        axis = h.raw;
+        across(axis, u_axis, v_axis);
+        direction = hemisphere(u, axis, u_axis, v_axis, tweak);
+    }
+    ++state.counters.radiosity_rays;
+    ++state.radiosity.depth;
+    const glm::dvec3 seen = radiance(travel_.ray(h.start, h.time, direction), level.trace_level + 1,
+                                     level.weight, runtime::kSightRadiosity, h.carried(), state);
+    --state.radiosity.depth;
+    return finished(limited(seen, radiosity_.max_sample), radiosity_);
+}
 
 std::vector<double> Shader::radiosity_reach() const {
     std::vector<double> reach;
@@ -84,11 +148,7 @@ glm::dvec3 Shader::radiosity_ambient(const Hit& h, const glm::dvec3& layer_norma
                       ? (ambient * reuse.weight + gathered * quality) / (reuse.weight + quality)
                       : gathered;
     }
-    if (radiosity_.gray_threshold > 0.0) {
-        const double grey = 0.297 * ambient.x + 0.589 * ambient.y + 0.114 * ambient.z;
-        ambient = ambient * (1.0 - radiosity_.gray_threshold) + radiosity_.gray_threshold * grey;
-    }
-    return ambient * radiosity_.brightness;
+    return finished(ambient, radiosity_);
 }
 
 double Shader::gather(const Hit& h, const glm::dvec3& layer_normal, double brilliance,
@@ -111,11 +171,7 @@ double Shader::gather(const Hit& h, const glm::dvec3& layer_normal, double brill
     std::uint32_t tries = raw_mode ? std::uint32_t(radiosity_.direction_pool)
                                    : std::uint32_t(std::min(rays * 5, radiosity_.direction_pool));
     glm::dvec3 u_axis, v_axis;
-    const auto frame = [&] {
-        const glm::dvec3 off = std::fabs(axis.z) > 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(0, 0, 1);
-        u_axis = glm::normalize(glm::cross(axis, off));
-        v_axis = glm::cross(u_axis, axis);
-    };
+    const auto frame = [&] { across(axis, u_axis, v_axis); };
     frame();
     const auto next_direction = [&](glm::dvec3& out) {
         while (tries > 0) {
@@ -123,12 +179,7 @@ double Shader::gather(const Hit& h, const glm::dvec3& layer_normal, double brill
             const auto u = sample_pair(seed, drawn, static_cast<std::uint32_t>(rays),
                                        kGatherPair + static_cast<std::uint32_t>(depth), true);
             ++drawn;
-            // Malley: a point uniform on the disc lifted to the hemisphere.
-            double up2 = 1.0 - u[0];
-            if (tweak != 1.0) up2 = std::pow(up2, 2.0 / (1.0 + tweak));
-            const double r = std::sqrt(std::max(0.0, 1.0 - up2));
-            const double phi = 2.0 * std::numbers::pi * u[1];
-            out = r * std::cos(phi) * u_axis + std::sqrt(up2) * axis + r * std::sin(phi) * v_axis;
+            out = hemisphere(u, axis, u_axis, v_axis, tweak);
             if (raw_mode || glm::dot(out, h.raw) > 0.0) return true;
         }
         return false;
@@ -162,10 +213,7 @@ double Shader::gather(const Hit& h, const glm::dvec3& layer_normal, double brill
         glm::dvec3 seen =
             radiance(travel_.ray(h.start, h.time, direction), level.trace_level + 1, level.weight,
                      runtime::kSightRadiosity, h.carried(), state, &distance);
-        const double brightest = std::max({seen.x, seen.y, seen.z});
-        if (radiosity_.max_sample > 0.0 && brightest > radiosity_.max_sample)
-            seen *= radiosity_.max_sample / brightest;
-        sums += seen;
+        sums += limited(seen, radiosity_.max_sample);
         quality_sum += 1.0;
         if (distance < smallest) {
             smallest = distance;
