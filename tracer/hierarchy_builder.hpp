@@ -94,11 +94,12 @@ inline void fill_empty(float* lo, float* hi, int i) {
     hi[i] = -std::numeric_limits<float>::infinity();
 }
 
-// An object of a leaf being grouped: the box over its bins (for the
-// surface-area heuristic, and the frame its bins are packed in), and its
-// bins.
+// An object of a leaf being grouped: the box over its bins (the frame its
+// bins are packed in), its bound at the start and the end of the leaf's
+// time (what the surface-area heuristic prices and sorts by), and its bins.
 struct LeafItem {
     BinBox box;
+    LinearExtent extent;
     std::uint32_t object;
     PackedBins bins;
 };

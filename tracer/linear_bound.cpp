@@ -167,6 +167,19 @@ double LinearBox::mean_area() const {
     return std::max(0.0, 2.0 * sum);
 }
 
+double LinearExtent::mean_area() const {
+    if (start.is_empty() || end.is_empty()) return surface_area(start) + surface_area(end);
+    LinearBox box;
+    box.empty = false;
+    for (int k = 0; k < 3; ++k) {
+        box.lo0[k] = start.lo[k];
+        box.hi0[k] = start.hi[k];
+        box.lo1[k] = end.lo[k];
+        box.hi1[k] = end.hi[k];
+    }
+    return box.mean_area();
+}
+
 LinearBox fit_linear(const TimeBins& bins) {
     LinearBox box;
     const int n = bins.count;

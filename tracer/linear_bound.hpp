@@ -112,6 +112,20 @@ struct TimeBins {
     double mean_area() const;
 };
 
+// A bound moving linearly from `start` to `end` over a time range: how the
+// union of moving objects' bounds is held where each moves about linearly
+// (Embree's LBBox). The leaf builder prices its groups by it.
+struct LinearExtent {
+    BinBox start, end;
+
+    void extend(const LinearExtent& o) {
+        start.extend(o.start);
+        end.extend(o.end);
+    }
+    // The time-averaged surface area of the interpolated box.
+    double mean_area() const;
+};
+
 // Ends at the start (u = 0) and at the end (u = 1) of the time range.
 struct LinearBox {
     glm::dvec3 lo0{0.0}, lo1{0.0}, hi0{0.0}, hi1{0.0};
