@@ -151,6 +151,7 @@ FrameSamplingResult sample_frame(const FramePlan& plan, Trace&& trace, Linear&& 
                         if (b.count >= goal[at]) continue;
                         const std::uint32_t seed = pixel_seed(plan.frame, x, y, plan.sample_seed);
                         const double before = sample_work(s.counters);
+                        ++s.pixel_run;
                         for (int i = b.count; i < goal[at]; ++i) {
                             b.add(trace(x, y, seed, i, plan.ceiling, s));
                             ++taken;

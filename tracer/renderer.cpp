@@ -370,7 +370,18 @@ Image Renderer::render_frame(int frame) {
     const auto counted_sample = [&](int x, int y, std::uint32_t seed, int index, int count,
                                     ThreadState& state) {
         const std::uint64_t maps = runtime::this_thread_work.deformation_maps;
+        // (The cache's records a pixel gathers in the final trace serve its
+        // later samples of the same run.)
+        RadiosityPath& path = state.radiosity;
+        if (radiosity) {
+            if (path.pixel_run != state.pixel_run) {
+                path.pixel.clear();
+                path.pixel_run = state.pixel_run;
+            }
+            path.kept = &path.pixel;
+        }
         const glm::dvec3 colour = trace_sample(x, y, seed, index, count, state);
+        path.kept = nullptr;
         state.counters.deformation_maps += runtime::this_thread_work.deformation_maps - maps;
         return colour;
     };

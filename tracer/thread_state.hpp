@@ -53,6 +53,12 @@ struct RadiosityPath {
     int depth = 0;
     bool pretrace = false;
     std::vector<RadiosityRecord>* kept = nullptr;
+    // The final trace's records of the pixel whose samples are being
+    // traced (its run of samples in a round, ThreadState::pixel_run): the
+    // pixel's later samples reuse them, as POV-Ray's final trace reuses a
+    // tile's, without a record depending on another pixel's thread.
+    std::vector<RadiosityRecord> pixel;
+    std::uint64_t pixel_run = ~std::uint64_t(0);
 };
 
 struct ThreadState {
@@ -68,6 +74,10 @@ struct ThreadState {
     // so a ray's level is its depth less these (tracer/shader.cpp).
     int straight_passes = 0;
     RadiosityPath radiosity{};
+    // Counts the runs of samples this thread has traced, one pixel's
+    // samples of one round each (sample_frame): what a pixel's samples
+    // share is kept within one run.
+    std::uint64_t pixel_run = 0;
     std::deque<ShadingScratch>
         shading{};  // by depth (a deque: a deeper one leaves the others in place)
     ShadingScratch& shading_at(int depth) {

@@ -79,7 +79,8 @@ TEST_CASE("a radiosity frame is the same image whatever the threads", "[tracer][
     CHECK(one.rgb == two.rgb);
 }
 
-TEST_CASE("--gi path converges to the cache's image on a still scene", "[tracer][radiosity]") {
+TEST_CASE("radiosity by gi path converges to the cache's image on a still scene",
+          "[tracer][radiosity]") {
     // One gathering ray per sample and bounce, at the sample's own time: an
     // unbiased estimate of the light the cache interpolates. At 256
     // samples it is the cache's image to its interpolation (when written:
@@ -99,7 +100,7 @@ TEST_CASE("--gi path converges to the cache's image on a still scene", "[tracer]
     CHECK(converged.mean < 0.5 * noisy.mean);
 }
 
-TEST_CASE("--gi takes cache or path", "[tracer][radiosity]") {
+TEST_CASE("the gi flag takes cache or path", "[tracer][radiosity]") {
     const std::string command = std::string(HEXANT_BINARY) + " render " +
                                 (kFolder / "radiosity" / "radiosity.pov").string() +
                                 " -W 8 -H 6 --gi paths -o /tmp/hexant_gi_bad.png 2>&1";
