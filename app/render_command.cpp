@@ -345,6 +345,9 @@ void check_outputs(const RenderArguments& args, const std::string& pattern,
 void apply_scene_defaults(const RenderArguments& args, runtime::SceneDescription& scene,
                           std::ostream& err) {
     const auto& g = scene.global;
+    // (--gi chooses how radiosity is computed: nothing to choose without it.)
+    if (args.gi_path && !g.radiosity.enabled)
+        err << "note: --gi path: the scene has no radiosity { }, so it changes nothing\n";
     if (!g.motion_blur_samples) return;
     // MegaPOV's motion_blur SAMPLES, TIME: TIME is how long (in clock
     // units) the shutter is open; hexant's --shutter is that over the

@@ -14,11 +14,13 @@ namespace {
 constexpr int kTile = 32;  // POV-Ray's default render block size
 constexpr int kMostPasses = 32;
 
-// A reproducible jitter in [-1, 1) for the k-th ray of a tile's pass
-// (POV-Ray seeds its jitter by pass and tile alike).
-double jitter_at(std::uint32_t pass, std::uint32_t tile, std::uint32_t k, std::uint32_t frame) {
+// A reproducible jitter in [-1, 1) for the k-th ray of a tile's pass.
+// POV-Ray seeds its jitter by pass and tile alike, not by frame: where
+// nothing moves, every frame's pretrace meets the same points and gathers
+// the same samples, so a still part of an animation does not flicker.
+double jitter_at(std::uint32_t pass, std::uint32_t tile, std::uint32_t k) {
     using sobol_detail::hash;
-    const std::uint32_t h = hash(hash(pass * 17u + tile * 13u) ^ hash(k + 0x9e3779b9u) ^ frame);
+    const std::uint32_t h = hash(hash(pass * 17u + tile * 13u) ^ hash(k + 0x9e3779b9u));
     return h * (2.0 / 4294967296.0) - 1.0;
 }
 
@@ -39,7 +41,7 @@ std::vector<double> pretrace_sizes(const runtime::RadiositySettings& settings, i
 }
 
 void radiosity_pretrace(const runtime::RadiositySettings& settings, int width, int height,
-                        int frame, RadiosityCache& cache,
+                        RadiosityCache& cache,
                         const std::function<void(double, double, ThreadState&)>& trace,
                         const std::function<ThreadState&()>& state) {
     const int tiles_x = (width + kTile - 1) / kTile, tiles_y = (height + kTile - 1) / kTile;
@@ -54,7 +56,9 @@ void radiosity_pretrace(const runtime::RadiositySettings& settings, int width, i
             ThreadState& s = state();
             std::vector<RadiosityRecord>& records = kept[static_cast<std::size_t>(tile)];
             records.clear();
-            s.radiosity = {0, true, &records};
+            s.radiosity.depth = 0;
+            s.radiosity.pretrace = true;
+            s.radiosity.kept = &records;
             const int left = (tile % tiles_x) * kTile, top = (tile / tiles_x) * kTile;
             const int right = std::min(width, left + kTile) - 1;
             const int bottom = std::min(height, top + kTile) - 1;
@@ -63,15 +67,15 @@ void radiosity_pretrace(const runtime::RadiositySettings& settings, int width, i
             std::uint32_t k = 0;
             for (double y = start_y; y < bottom + 0.5; y += size)
                 for (double x = start_x; x < right + 0.5; x += size, k += 2) {
-                    const double px =
-                        x + offset + jitter * jitter_at(std::uint32_t(pass), tile, k, frame);
+                    const double px = x + offset + jitter * jitter_at(std::uint32_t(pass), tile, k);
                     const double py =
-                        y + offset + jitter * jitter_at(std::uint32_t(pass), tile, k + 1, frame);
+                        y + offset + jitter * jitter_at(std::uint32_t(pass), tile, k + 1);
                     // (The point within the image, a pixel's centre at +0.5.)
                     trace(std::clamp(px + 0.5, 0.0, width - 1e-9),
                           std::clamp(py + 0.5, 0.0, height - 1e-9), s);
                 }
-            s.radiosity = {};
+            s.radiosity.pretrace = false;
+            s.radiosity.kept = nullptr;
         });
         std::vector<RadiosityRecord> pass_records;
         for (const auto& records : kept)

@@ -23,7 +23,7 @@ namespace hexant::tracer {
 // `trace(px, py, state)` traces the camera ray through image point (px, py)
 // (pixels' corners at whole numbers); `state()` the calling thread's state.
 void radiosity_pretrace(const runtime::RadiositySettings& settings, int width, int height,
-                        int frame, RadiosityCache& cache,
+                        RadiosityCache& cache,
                         const std::function<void(double, double, ThreadState&)>& trace,
                         const std::function<ThreadState&()>& state);
 

@@ -347,10 +347,12 @@ Image Renderer::render_frame(int frame) {
         radiosity.emplace(shader_->radiosity_reach());
         shader_->set_radiosity_cache(&*radiosity, fixed_camera.location);
         radiosity_pretrace(
-            shader_->radiosity_settings(), width, height, frame, *radiosity,
+            shader_->radiosity_settings(), width, height, *radiosity,
+            // (The frame's middle; a seed of the pixel alone, as the
+            // pretrace's jitter: a still scene's frames gather alike.)
             [&](double px, double py, ThreadState& state) {
-                trace_at(px, py, 0.5, pixel_seed(frame, int(px), int(py), settings_.sample_seed), 0,
-                         1, false, state);
+                trace_at(px, py, 0.5, pixel_seed(0, int(px), int(py), settings_.sample_seed), 0, 1,
+                         false, state);
             },
             [&]() -> ThreadState& { return states.local(); });
     }

@@ -130,7 +130,7 @@ struct action<g::default_block> {
 };
 
 template <>
-struct action<g::default_item> {
+struct action<g::default_value> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         st.require_whole_time(in.position(), "#default");

@@ -309,6 +309,13 @@ struct action<g::object_ignored_block> : unrendered_action<runtime::ObjectRecord
 // thins the gathering rays that reach the object, which hexant does not:
 // warned there.
 template <>
+struct action<g::light_photons> {
+    template <typename ActionInput>
+    static void apply(const ActionInput& in, Interpreter& st) {
+        st.not_rendered(in.position(), "photons");
+    }
+};
+template <>
 struct action<g::object_radiosity_importance> {
     template <typename ActionInput>
     static void apply(const ActionInput& in, Interpreter& st) {
@@ -317,6 +324,19 @@ struct action<g::object_radiosity_importance> {
         if (!(importance > 0.0 && importance <= 1.0))
             throw ValueError("radiosity's importance must be greater than 0 and at most 1");
         st.blocks.edit<runtime::ObjectRecord>(in.position(), "radiosity");
+        if (importance < 1.0) st.not_rendered(in.position(), "importance");
+    }
+};
+// #default { radiosity { importance I } }: the same check and warning.
+template <>
+struct action<g::default_radiosity_importance> {
+    template <typename ActionInput>
+    static void apply(const ActionInput& in, Interpreter& st) {
+        std::vector<Value> given = st.values.close_frame();
+        const double importance = to_constant(given.at(0), "radiosity's importance");
+        if (!(importance > 0.0 && importance <= 1.0))
+            throw ValueError("radiosity's importance must be greater than 0 and at most 1");
+        st.scene.global.radiosity.default_importance = importance;
         if (importance < 1.0) st.not_rendered(in.position(), "importance");
     }
 };

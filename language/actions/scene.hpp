@@ -590,6 +590,39 @@ struct action<g::radiosity_open> {
         st.scene.global.radiosity.enabled = true;
     }
 };
+// The block's settings together, as POV-Ray checks them after parsing:
+// pretrace_end no larger than pretrace_start, and maximum_reuse
+// well above minimum_reuse (the one not written moved, with a warning).
+template <>
+struct action<g::global_radiosity> {
+    template <typename ActionInput>
+    static void apply(const ActionInput& in, Interpreter& st) {
+        runtime::RadiositySettings& r = st.scene.global.radiosity;
+        if (r.pretrace_end > r.pretrace_start)
+            throw ValueError(
+                "radiosity's pretrace_end must be smaller than or equal to its "
+                "pretrace_start");
+        if (!(r.minimum_reuse > r.maximum_reuse * 0.5)) return;
+        if (!r.minimum_reuse_set) {
+            r.minimum_reuse = r.maximum_reuse * 0.5;
+            st.warn(in.position(),
+                    "radiosity's maximum_reuse should be well above its "
+                    "minimum_reuse: minimum_reuse lowered to " +
+                        std::to_string(r.minimum_reuse) + ", as POV-Ray does");
+        } else if (!r.maximum_reuse_set) {
+            r.maximum_reuse = r.minimum_reuse * 2.0;
+            st.warn(in.position(),
+                    "radiosity's maximum_reuse should be well above its "
+                    "minimum_reuse: maximum_reuse raised to " +
+                        std::to_string(r.maximum_reuse) + ", as POV-Ray does");
+        } else if (r.minimum_reuse >= r.maximum_reuse) {
+            throw ValueError("radiosity's maximum_reuse must be larger than its minimum_reuse");
+        } else {
+            st.warn(in.position(),
+                    "radiosity's maximum_reuse should be well above its minimum_reuse");
+        }
+    }
+};
 template <>
 struct action<g::radiosity_setting> {
     template <typename ActionInput>
@@ -634,9 +667,10 @@ struct action<g::radiosity_setting> {
             positive(r.error_bound);
         else if (name == "low_error_factor")
             positive(r.low_error_factor);
-        else if (name == "maximum_reuse")
+        else if (name == "maximum_reuse") {
             positive(r.maximum_reuse);
-        else if (name == "adc_bailout")
+            r.maximum_reuse_set = true;
+        } else if (name == "adc_bailout")
             positive(r.adc_bailout);
         else if (name == "max_sample")
             r.max_sample = x;
@@ -647,6 +681,7 @@ struct action<g::radiosity_setting> {
         } else if (name == "minimum_reuse") {
             if (!(x >= 0.0)) throw ValueError("radiosity's minimum_reuse must not be negative");
             r.minimum_reuse = x;
+            r.minimum_reuse_set = true;
         } else if (name == "recursion_limit") {
             r.recursion_limit = static_cast<int>(
                 checked_integer(x, name, 1, runtime::RadiositySettings::kMostRecursion));

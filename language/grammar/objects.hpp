@@ -134,9 +134,11 @@ struct projected_through_base : object_base {};
 struct light_projected_through
     : p::seq<TAO_PEGTL_KEYWORD("projected_through"), ws, p::must<lbrace>,
              p::must<projected_through_base>, object_modifiers, p::must<object_close>> {};
-struct light_item : p::sor<directive<light_item>, macro_call<light_item>, light_flag, light_setting,
-                           area_light, light_looks_like, light_projected_through, transformation> {
-};
+// photons { } in a light: warned, as in an object (no photon mapping).
+struct light_photons : p::seq<TAO_PEGTL_KEYWORD("photons"), ws, p::must<skipped_block>, ws> {};
+struct light_item
+    : p::sor<directive<light_item>, macro_call<light_item>, light_flag, light_setting, area_light,
+             light_looks_like, light_projected_through, transformation, light_photons> {};
 struct light_block : p::seq<kw_light_source, p::must<lbrace>, p::must<light_arguments>,
                             p::star<light_item>, p::must<object_close>> {};
 
@@ -405,7 +407,7 @@ struct object_radiosity_importance
     : p::seq<TAO_PEGTL_KEYWORD("importance"), ws, frame_open, p::must<radiosity_importance_value>> {
 };
 struct object_radiosity_block : p::seq<TAO_PEGTL_KEYWORD("radiosity"), ws, p::must<lbrace>,
-                                       p::opt<object_radiosity_importance>, p::must<rbrace>> {};
+                                       p::star<object_radiosity_importance>, p::must<rbrace>> {};
 // clipped_by { OBJECTS } and bounded_by { OBJECTS } (runtime/objects/object.hpp,
 // ObjectLimits); `clipped_by { bounded_by }` clips by the bound and
 // `bounded_by { clipped_by }` bounds by the clip (POV-Ray's Parse_Object_Mods).

@@ -164,7 +164,14 @@ struct global_settings_block
 // #default { texture { } | pigment { } | normal { } | finish { } }, also
 // written without its '#' (POV-Ray 3.7 reads both: the distribution's
 // colors.pov and laser.pov).
-struct default_item : p::sor<texture_block, pigment_block, normal_block, finish_block> {};
+// #default { radiosity { importance I } } (the default importance).
+struct default_radiosity_importance
+    : p::seq<TAO_PEGTL_KEYWORD("importance"), ws, frame_open, p::must<radiosity_importance_value>> {
+};
+struct default_radiosity : p::seq<TAO_PEGTL_KEYWORD("radiosity"), ws, p::must<lbrace>,
+                                  p::star<default_radiosity_importance>, p::must<rbrace>> {};
+struct default_value : p::sor<texture_block, pigment_block, normal_block, finish_block> {};
+struct default_item : p::sor<default_value, default_radiosity> {};
 struct default_open : p::seq<kw_default, p::must<lbrace>> {};
 struct default_block : p::seq<default_open, p::star<default_item>, p::must<rbrace>> {};
 

@@ -16,6 +16,7 @@ struct RadiositySettings {
     double low_error_factor = 0.5;  // the error bound's factor during the pretrace
     double minimum_reuse = 0.015;   // fractions of the distance to the eye
     double maximum_reuse = 0.2;
+    bool minimum_reuse_set = false, maximum_reuse_set = false;
     int nearest_count = 5;
     int nearest_count_pretrace = 0;  // nearest_count's second value (adaptive pretrace)
     int recursion_limit = 2;

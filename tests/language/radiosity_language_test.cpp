@@ -109,3 +109,34 @@ TEST_CASE("no_radiosity hides an object from radiosity's rays only", "[language]
     REQUIRE(thinned.warnings.size() == 1);
     CHECK(thinned.warnings[0].find("importance") != std::string::npos);
 }
+
+TEST_CASE("radiosity's settings are checked together, as POV-Ray does after parsing",
+          "[language][radiosity]") {
+    check_error_at("global_settings {\nradiosity { pretrace_start 0.01 pretrace_end 0.5 } }",
+                   "pretrace_end", 2);
+    check_error_at("global_settings {\nradiosity { minimum_reuse 0.5 maximum_reuse 0.1 } }",
+                   "maximum_reuse must be larger", 2);
+    // One of them written: the other moves, with POV-Ray's warning.
+    const auto lowered = scene_of("global_settings { radiosity { maximum_reuse 0.02 } }");
+    CHECK(lowered.global.radiosity.minimum_reuse == Approx(0.01));
+    REQUIRE(lowered.warnings.size() == 1);
+    CHECK(lowered.warnings[0].find("minimum_reuse lowered") != std::string::npos);
+    const auto raised = scene_of("global_settings { radiosity { minimum_reuse 0.15 } }");
+    CHECK(raised.global.radiosity.maximum_reuse == Approx(0.3));
+}
+
+TEST_CASE("radiosity's other places read as POV-Ray 3.7 reads them", "[language][radiosity]") {
+    // #default { radiosity { importance } }, an importance written twice
+    // (the last counts), photons { } in a light (warned, as in an object).
+    const auto scene = scene_of(
+        "#default { finish { ambient 0.1 } radiosity { importance 1 } }\n"
+        "sphere { 0, 1 radiosity { importance 0.5 importance 1 } }\n"
+        "light_source { 0, 1 photons { refraction on reflection on } }");
+    REQUIRE(scene.warnings.size() == 2);
+    CHECK(scene.warnings[0].find("importance") != std::string::npos);
+    CHECK(scene.warnings[1].find("'photons' is read but not rendered") != std::string::npos);
+    CHECK(scene.lights.size() == 1);
+    CHECK(
+        scene_of("#default { radiosity { importance 0.5 } }").global.radiosity.default_importance ==
+        0.5);
+}
