@@ -19,10 +19,10 @@ namespace {
 // sequence of directions, so between records the interpolated light
 // differs by a step or two, and at a few pixels (corners, where records
 // are sparse) by more. When written, radiosity.pov agreed within 2 steps
-// at 96.5% of the pixels (mean 0.76 steps, worst 45) at clock 0.5 and at
-// 97% at clock 0; faults move far more: recursion_limit taken as 1, 1.8%
-// within 2 steps (mean 8.8); brightness 0.8, 1.9% (6.9); the pillar's
-// no_radiosity ignored, 92.1% (1.03); before radiosity (ambient lit, no
+// at 96.8% of the pixels (mean 0.72 steps, worst 27) at clock 0.5 and at
+// 96.8% at clock 0; faults move more: recursion_limit taken as 1, 1.9%
+// within 2 steps (mean 8.7); brightness 0.8, 1.9% (6.9); the pillar's
+// no_radiosity ignored, 93.3% (0.99); before radiosity (ambient lit, no
 // indirect light), none (mean 39.7).
 void check_radiosity_agreement(const Agreement& a) {
     INFO("within " << a.within << " of " << a.total << ", mean " << a.mean << ", worst "
@@ -51,8 +51,8 @@ TEST_CASE("raddem, POV-Ray's radiosity animation, agrees with POV-Ray 3.7",
           "[tracer][pov][radiosity][animations]") {
     // Debian's povray-examples scenes/animations/raddem at clock 0.5, with
     // rad_def.inc's Radiosity_Default (count 35, two bounces). When written:
-    // mean 1.87 steps (hexant's room 1.2 steps brighter on average, within
-    // the 3 of 255), worst 5, 75.5% within 2 steps; before
+    // mean 1.47 steps (within the 3 of 255), worst 5, 89.6% within
+    // 2 steps; before
     // radiosity (direct light and ambient only): mean 45 steps, worst 62.
     const std::filesystem::path scene = "/usr/share/povray-3.7/scenes/animations/raddem/raddem.pov";
     const std::filesystem::path includes = "/usr/share/povray-3.7/include";
