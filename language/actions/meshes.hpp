@@ -305,9 +305,7 @@ template <>
 struct action<g::shape_vectors_setting> : action<g::shape_setting> {};
 template <>
 struct action<g::object_ignored_block> : unrendered_action<runtime::ObjectRecord> {};
-// radiosity { importance I }: in (0, 1] as POV-Ray requires; below 1 it
-// thins the gathering rays that reach the object, which hexant does not:
-// warned there.
+// photons { } in a light: warned, as in an object.
 template <>
 struct action<g::light_photons> {
     template <typename ActionInput>
@@ -315,29 +313,30 @@ struct action<g::light_photons> {
         st.not_rendered(in.position(), "photons");
     }
 };
+// radiosity { importance I }, an object's or #default's: in (0, 1] as
+// POV-Ray requires; below 1 it thins the gathering rays that reach the
+// object, which hexant does not: warned there. Returns I.
+inline double read_importance(const p::position& where, Interpreter& st) {
+    std::vector<Value> given = st.values.close_frame();
+    const double importance = to_constant(given.at(0), "radiosity's importance");
+    if (!(importance > 0.0 && importance <= 1.0))
+        throw ValueError("radiosity's importance must be greater than 0 and at most 1");
+    if (importance < 1.0) st.not_rendered(where, "importance");
+    return importance;
+}
 template <>
 struct action<g::object_radiosity_importance> {
     template <typename ActionInput>
     static void apply(const ActionInput& in, Interpreter& st) {
-        std::vector<Value> given = st.values.close_frame();
-        const double importance = to_constant(given.at(0), "radiosity's importance");
-        if (!(importance > 0.0 && importance <= 1.0))
-            throw ValueError("radiosity's importance must be greater than 0 and at most 1");
         st.blocks.edit<runtime::ObjectRecord>(in.position(), "radiosity");
-        if (importance < 1.0) st.not_rendered(in.position(), "importance");
+        (void)read_importance(in.position(), st);
     }
 };
-// #default { radiosity { importance I } }: the same check and warning.
 template <>
 struct action<g::default_radiosity_importance> {
     template <typename ActionInput>
     static void apply(const ActionInput& in, Interpreter& st) {
-        std::vector<Value> given = st.values.close_frame();
-        const double importance = to_constant(given.at(0), "radiosity's importance");
-        if (!(importance > 0.0 && importance <= 1.0))
-            throw ValueError("radiosity's importance must be greater than 0 and at most 1");
-        st.scene.global.radiosity.default_importance = importance;
-        if (importance < 1.0) st.not_rendered(in.position(), "importance");
+        st.scene.global.radiosity.default_importance = read_importance(in.position(), st);
     }
 };
 
