@@ -43,9 +43,13 @@ HEXANT_CUSTOM_ANALYZE(object_macro_first);
 HEXANT_CUSTOM_ANALYZE(macro_definition_rule);
 HEXANT_CUSTOM_ANALYZE(declared_value_rule);
 #undef HEXANT_CUSTOM_ANALYZE
-// macro_ahead, argument_directive_ahead and declared_object_ahead only look.
+// macro_ahead, items_macro_ahead, argument_directive_ahead and
+// declared_object_ahead only look.
 template <typename Name, typename Item>
 struct analyze_traits<Name, hexant::language::grammar::macro_ahead_rule<Item>>
+    : analyze_opt_traits<> {};
+template <typename Name, typename Item>
+struct analyze_traits<Name, hexant::language::grammar::items_macro_ahead<Item>>
     : analyze_opt_traits<> {};
 template <typename Name, typename Item>
 struct analyze_traits<Name, hexant::language::grammar::argument_directive_ahead_rule<Item>>

@@ -326,6 +326,30 @@ class Interpreter {
         const Value* v = symbols.lookup(std::string(b, q));
         return v != nullptr && v->is<std::shared_ptr<const Macro>>();
     }
+    // Whether a call of a declared macro comes next whose body begins with
+    // an item of the block (Item) rather than a value: glass.inc's
+    // `interior { I_Glass_Exp(2) }` gives `ior 1.5 fade_distance 2 ...`,
+    // which POV-Ray's tokens read as the block's items, not as its base.
+    // Only the grammar looks (no actions run); consumes nothing.
+    template <typename Item, template <typename...> class Action,
+              template <typename...> class Control, typename ParseInput>
+    bool items_macro_ahead(ParseInput& in) {
+        const char* b = in.current();
+        const char* q = b;
+        while (q != in.end() && (std::isalnum(static_cast<unsigned char>(*q)) || *q == '_')) ++q;
+        if (q == b) return false;
+        const Value* v = symbols.lookup(std::string(b, q));
+        if (v == nullptr || !v->is<std::shared_ptr<const Macro>>()) return false;
+        const auto& macro = v->as<std::shared_ptr<const Macro>>();
+        tao::pegtl::memory_input<> body(macro->body_begin, macro->body_end, "");
+        try {
+            return tao::pegtl::match<
+                tao::pegtl::seq<grammar::ws, Item>, tao::pegtl::apply_mode::nothing,
+                tao::pegtl::rewind_mode::required, tao::pegtl::nothing, tao::pegtl::normal>(body);
+        } catch (const tao::pegtl::parse_error&) {
+            return true;  // an item's keyword matched, its value did not
+        }
+    }
 
     // Whether the value just read may take + or - (grammar::arithmetic_left):
     // not an object.

@@ -51,8 +51,9 @@ bool same_but_members(const runtime::ObjectRecord& a, const runtime::ObjectRecor
            (texture_may_differ || a.texture.has_value() == b.texture.has_value()) &&
            a.interior.has_value() == b.interior.has_value() && a.no_shadow == b.no_shadow &&
            a.no_image == b.no_image && a.no_reflection == b.no_reflection &&
-           a.no_radiosity == b.no_radiosity && a.double_illuminate == b.double_illuminate &&
-           a.hollow == b.hollow && a.inverse == b.inverse && a.limits == b.limits;
+           a.no_radiosity == b.no_radiosity && a.photons == b.photons &&
+           a.double_illuminate == b.double_illuminate && a.hollow == b.hollow &&
+           a.inverse == b.inverse && a.limits == b.limits;
 }
 
 // The texture that is `when_true` where `c` holds and `when_false`

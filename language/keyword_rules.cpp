@@ -1,7 +1,7 @@
 // The keyword rules (language/keyword_rules.hpp). Where a word has several
 // uses, its rule is that of the use hexant does not render (the note names
-// it); the others are rendered. Words of radiosity { }, photons { } and
-// subsurface { } are read with their block, which is warned as a whole.
+// it); the others are rendered. Words of subsurface { } are read with
+// their block, which is warned as a whole.
 #include "language/keyword_rules.hpp"
 
 #include <algorithm>
@@ -49,7 +49,7 @@ constexpr auto kRules = std::to_array<KeywordRuleEntry>({
     {"atan", KeywordRule::Rendered, ""},
     {"atan2", KeywordRule::Rendered, ""},
     {"atanh", KeywordRule::Rendered, ""},
-    {"autostop", KeywordRule::Warned, "inside photons { }, which is warned as a whole"},
+    {"autostop", KeywordRule::Rendered, ""},
     {"average", KeywordRule::Rendered, ""},
     {"b_spline", KeywordRule::Rendered, ""},
     {"background", KeywordRule::Rendered, ""},
@@ -88,7 +88,7 @@ constexpr auto kRules = std::to_array<KeywordRuleEntry>({
     {"clipped_by", KeywordRule::Rendered, ""},
     {"clock", KeywordRule::Rendered, ""},
     {"clock_on", KeywordRule::Rendered, ""},
-    {"collect", KeywordRule::Warned, "inside photons { }, which is warned as a whole"},
+    {"collect", KeywordRule::Rendered, ""},
     {"color", KeywordRule::Rendered, ""},
     {"color_map", KeywordRule::Rendered, ""},
     {"colour", KeywordRule::Rendered, ""},
@@ -151,7 +151,7 @@ constexpr auto kRules = std::to_array<KeywordRuleEntry>({
     {"error_bound", KeywordRule::Rendered, ""},
     {"evaluate", KeywordRule::Harmless, "tunes POV-Ray's isosurface search; hexant's interval search needs none"},
     {"exp", KeywordRule::Rendered, ""},
-    {"expand_thresholds", KeywordRule::Warned, "inside photons { }, which is warned as a whole"},
+    {"expand_thresholds", KeywordRule::Rendered, ""},
     {"exponent", KeywordRule::Rendered, ""},
     {"exr", KeywordRule::Rendered, ""},
     {"exterior", KeywordRule::Rendered, ""},
@@ -185,7 +185,7 @@ constexpr auto kRules = std::to_array<KeywordRuleEntry>({
     {"fresnel", KeywordRule::Warned, "in reflection { } it is rendered; a finish's own fresnel (POV-Ray 3.8's) is not"},
     {"function", KeywordRule::Rendered, ""},
     {"gamma", KeywordRule::Rendered, ""},
-    {"gather", KeywordRule::Warned, "inside photons { }, which is warned as a whole"},
+    {"gather", KeywordRule::Rendered, ""},
     {"gif", KeywordRule::Rendered, ""},
     {"global", KeywordRule::Refused, ""},
     {"global_lights", KeywordRule::Rendered, ""},
@@ -311,7 +311,7 @@ constexpr auto kRules = std::to_array<KeywordRuleEntry>({
     {"panoramic", KeywordRule::Rendered, ""},
     {"parallel", KeywordRule::Rendered, ""},
     {"parametric", KeywordRule::Refused, ""},
-    {"pass_through", KeywordRule::Warned, "inside photons { }, which is warned as a whole"},
+    {"pass_through", KeywordRule::Rendered, ""},
     {"pattern", KeywordRule::Rendered, ""},
     {"pavement", KeywordRule::Refused, ""},
     {"perspective", KeywordRule::Rendered, ""},
@@ -319,7 +319,7 @@ constexpr auto kRules = std::to_array<KeywordRuleEntry>({
     {"phase", KeywordRule::Rendered, ""},
     {"phong", KeywordRule::Rendered, ""},
     {"phong_size", KeywordRule::Rendered, ""},
-    {"photons", KeywordRule::Warned, "no photon mapping: no caustics, and the block's settings are not used"},
+    {"photons", KeywordRule::Rendered, ""},
     {"pi", KeywordRule::Rendered, ""},
     {"pigment", KeywordRule::Rendered, ""},
     {"pigment_map", KeywordRule::Rendered, ""},
@@ -366,7 +366,7 @@ constexpr auto kRules = std::to_array<KeywordRuleEntry>({
     {"red", KeywordRule::Rendered, ""},
     {"reflection", KeywordRule::Rendered, ""},
     {"reflection_exponent", KeywordRule::Refused, ""},
-    {"refraction", KeywordRule::Warned, "inside photons { }, which is warned as a whole"},
+    {"refraction", KeywordRule::Rendered, ""},
     {"render", KeywordRule::Refused, ""},
     {"repeat", KeywordRule::Rendered, ""},
     {"rgb", KeywordRule::Rendered, ""},
@@ -405,7 +405,7 @@ constexpr auto kRules = std::to_array<KeywordRuleEntry>({
     {"smooth_triangle", KeywordRule::Rendered, ""},
     {"solid", KeywordRule::Rendered, ""},
     {"sor", KeywordRule::Rendered, ""},
-    {"spacing", KeywordRule::Warned, "inside photons { }, which is warned as a whole"},
+    {"spacing", KeywordRule::Rendered, ""},
     {"specular", KeywordRule::Rendered, ""},
     {"sphere", KeywordRule::Rendered, ""},
     {"sphere_sweep", KeywordRule::Rendered, ""},
@@ -413,7 +413,7 @@ constexpr auto kRules = std::to_array<KeywordRuleEntry>({
     {"spiral1", KeywordRule::Rendered, ""},
     {"spiral2", KeywordRule::Rendered, ""},
     {"spline", KeywordRule::Rendered, ""},
-    {"split_union", KeywordRule::Warned, "inside photons { }, which is warned as a whole"},
+    {"split_union", KeywordRule::Warned, "photons are shot at a union's bound as a whole"},
     {"spotlight", KeywordRule::Rendered, ""},
     {"spotted", KeywordRule::Rendered, ""},
     {"sqr", KeywordRule::Rendered, ""},
@@ -442,7 +442,7 @@ constexpr auto kRules = std::to_array<KeywordRuleEntry>({
     {"t", KeywordRule::Rendered, ""},
     {"tan", KeywordRule::Rendered, ""},
     {"tanh", KeywordRule::Rendered, ""},
-    {"target", KeywordRule::Warned, "inside photons { }, which is warned as a whole"},
+    {"target", KeywordRule::Rendered, ""},
     {"text", KeywordRule::Rendered, ""},
     {"texture", KeywordRule::Rendered, ""},
     {"texture_list", KeywordRule::Rendered, ""},

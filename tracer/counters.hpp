@@ -18,6 +18,12 @@ struct Counters {
     std::uint64_t radiosity_rays = 0;
     std::uint64_t radiosity_samples = 0;
     std::uint64_t radiosity_reuses = 0;
+    // Photons: the rays shooting them traced (per frame, before its
+    // samples: not in rays()), the photons kept in the frame's map, and
+    // the gathers of the render (--stats).
+    std::uint64_t photon_rays = 0;
+    std::uint64_t photons_stored = 0;
+    std::uint64_t photon_gathers = 0;
     // Hierarchy.
     std::uint64_t bounds_built = 0;  // object bound() answers while building
     std::uint64_t cells = 0;         // cells built (a lazy build: those rays reached)
@@ -66,6 +72,9 @@ struct Counters {
         radiosity_rays += o.radiosity_rays;
         radiosity_samples += o.radiosity_samples;
         radiosity_reuses += o.radiosity_reuses;
+        photon_rays += o.photon_rays;
+        photons_stored += o.photons_stored;
+        photon_gathers += o.photon_gathers;
         bounds_built += o.bounds_built;
         cells += o.cells;
         cells_full += o.cells_full;

@@ -71,6 +71,7 @@ ShadedLight::ShadedLight(const runtime::LightRecord& r)
       orient_(r.orient) {
     media_attenuation_ = r.media_attenuation;
     media_interaction_ = r.media_interaction;
+    photons_ = r.photons;
     // (An object hexant cannot build throws ObjectError, naming its place.)
     if (r.projected_through) projector_ = runtime::make_intelligent_object(*r.projected_through);
     fixed_position_ = moving_position(0.0);
@@ -201,6 +202,39 @@ double ShadedLight::shaped_attenuation(const glm::dvec3& point, const LightRay& 
             a *= 2.0 / (1.0 + std::pow(ray.depth / distance, power));
     }
     // (No NaN leaves: a cosine power of a NaN tightness, say, lights nothing.)
+    return std::isfinite(a) ? a : 0.0;
+}
+
+double ShadedLight::beam(const glm::dvec3& origin, const glm::dvec3& direction, double t) const {
+    // (A spotlight's by the direction, a cylinder's by how far off its
+    // axis the photon starts, as shaped_attenuation without the fade.)
+    if (kind_ == runtime::LightKind::Point) return 1.0;
+    double a = 1.0;
+    if (kind_ == runtime::LightKind::Spotlight) {
+        const double cosine = glm::dot(direction, axis_at(t));
+        if (!(cosine > 0.0)) return 0.0;
+        a = std::pow(cosine, tightness_(t));
+        const double radius = std::cos(radius_(t) * std::numbers::pi / 180.0);
+        if (radius > 0.0 && cosine < radius)
+            a *= cubic_spline(std::cos(falloff_(t) * std::numbers::pi / 180.0), radius, cosine);
+    } else {
+        const glm::dvec3 axis = axis_at(t);
+        if (!(glm::dot(direction, axis) > 0.0)) return 0.0;
+        const glm::dvec3 v = origin - position_at(t);
+        const double off = glm::length(v - glm::dot(v, axis) * axis);
+        const double falloff = falloff_(t), radius = radius_(t);
+        if (!(off < falloff)) return 0.0;
+        const double d = 1.0 - off / falloff;
+        a = std::pow(d, tightness_(t));
+        if (radius > 0.0 && off > radius) a *= cubic_spline(0.0, 1.0 - radius / falloff, d);
+    }
+    return std::isfinite(a) ? a : 0.0;
+}
+
+double ShadedLight::fade(double depth, double t) const {
+    const double power = fade_power_(t), distance = fade_distance_(t);
+    if (!(power > 0.0 && std::fabs(distance) > kEpsilon)) return 1.0;
+    const double a = 2.0 / (1.0 + std::pow(depth / distance, power));
     return std::isfinite(a) ? a : 0.0;
 }
 

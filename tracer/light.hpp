@@ -48,6 +48,17 @@ class ShadedLight {
     bool media_interval(const glm::dvec3& origin, const glm::dvec3& direction, double t, double& s0,
                         double& s1) const;
     bool is_area() const { return area_.has_value(); }
+    // For photon shooting (tracer/photon_shooting.hpp): the light's
+    // photons { }, whether its rays run parallel along its axis (the unit
+    // axis from the light toward point_at), POV-Ray's computeAttenuation
+    // of a photon leaving `origin` along unit `direction` (a spotlight's
+    // cone, a cylinder's beam; 1 for others) and the fade over `depth`
+    // (2 / (1 + (depth / fade_distance)^fade_power), or 1).
+    const runtime::LightPhotons& photons() const { return photons_; }
+    bool parallel() const { return parallel_; }
+    glm::dvec3 axis(double t) const { return axis_at(t); }
+    double beam(const glm::dvec3& origin, const glm::dvec3& direction, double t) const;
+    double fade(double depth, double t) const;
     // (The common light's answers inline: a scene of point lights pays
     // nothing for the other kinds.)
     glm::dvec3 position_at(double t) const {
@@ -107,6 +118,7 @@ class ShadedLight {
     runtime::TimeFunction radius_, falloff_, tightness_, fade_distance_, fade_power_;
     std::optional<runtime::AreaLight> area_;
     bool jitter_, circular_, orient_;
+    runtime::LightPhotons photons_;
     // Per axis of the grid, the cumulative weights of its rows: POV-Ray's
     // TraceAreaLightSubsetShadowRay, subdividing the grid fully, averages
     // each quarter's corners, so a row shared by two quarters counts

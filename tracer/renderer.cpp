@@ -16,6 +16,7 @@
 #include "tracer/camera_ray.hpp"
 #include "tracer/focal_blur.hpp"
 #include "tracer/frame_sampling.hpp"
+#include "tracer/photon_shooting.hpp"
 #include "tracer/radiosity_pretrace.hpp"
 #include "tracer/sample_pattern.hpp"
 
@@ -338,6 +339,16 @@ Image Renderer::render_frame(int frame) {
         return trace_at(x + s.x, y + s.y, s.time, seed, index, count, settings_.jitter, state);
     };
 
+    // Photons: the frame's map, shot across its shutter before anything
+    // is traced (radiosity's pretrace sees them too, as in POV-Ray).
+    std::optional<PhotonMap> photons;
+    if (shader_->photons_enabled()) {
+        photons.emplace(shoot_photons(
+            *shader_, objects_, [&](double u) { return frame_clock.at(0.5, u); },
+            [&]() -> ThreadState& { return states.local(); }, counters_));
+        shader_->set_photon_map(&*photons);
+    }
+
     // Radiosity: the frame's irradiance cache, filled by the pretrace
     // (POV-Ray's, per frame) and read by the render.
     std::optional<RadiosityCache> radiosity;
@@ -400,6 +411,7 @@ Image Renderer::render_frame(int frame) {
         });
     for (const ThreadState& s : states) counters_ += s.counters;
     shader_->set_radiosity_cache(nullptr, {});
+    shader_->set_photon_map(nullptr);
     counters_.render_seconds +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (estimate) {

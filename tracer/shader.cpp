@@ -86,6 +86,7 @@ Shader::Shader(const runtime::SceneDescription& scene, const RayQuery& query, Li
         atmosphere_ = std::make_shared<const runtime::MediaVolume>(scene.atmosphere);
     noise_generator_ = scene.global.noise_generator;
     radiosity_ = scene.global.radiosity;
+    photons_ = scene.global.photons;
     if (radiosity_.enabled) {
         // POV-Ray's GetRecursionSettings: per bounce, half the rays (at
         // least 5), fewer records to reuse, twice the error bound and
@@ -137,6 +138,11 @@ inline std::optional<runtime::ObjectHit> Shader::nearest(const Ray4& ray, Ray4& 
     return query_.first_hit(on, 0.0, s_max - s_floor, state);
 }
 
+std::optional<runtime::ObjectHit> Shader::nearest_hit(const Ray4& ray, Ray4& on, ThreadState& state,
+                                                      std::uint8_t sight) const {
+    return nearest(ray, on, state, sight);
+}
+
 inline bool Shader::blocked(const Ray4& ray, double reach, ThreadState& state) const {
     if (ray.direction.w == 0.0) return query_.occluded(ray, 0.0, reach, state);
     ++state.counters.travelling_rays;
@@ -186,7 +192,10 @@ inline glm::dvec3 Shader::shadow_filter(std::size_t index, const Hit& h,
     // (Objects that may let light through do not block: `blocked` passes
     // them by, and they filter what it lets pass.)
     if (blocked(ray, reach, state)) return glm::dvec3(0.0);
-    return filtering_ ? filtered(ray, reach, h.depth, h.around, state) : glm::dvec3(1.0);
+    if (!filtering_) return glm::dvec3(1.0);
+    const bool photon_rule = photon_map_ != nullptr && h.object->flags().photon_collect;
+    return filtered(ray, reach, h.depth, h.around, state,
+                    photon_rule ? static_cast<std::ptrdiff_t>(index) : -1);
 }
 
 bool Shader::projected(const ShadedLight& light, const Ray4& ray, double& reach) {
@@ -203,8 +212,8 @@ bool Shader::projected(const ShadedLight& light, const Ray4& ray, double& reach)
     return true;
 }
 
-glm::dvec3 Shader::filtered(Ray4 ray, double reach, int depth, Inside around,
-                            ThreadState& state) const {
+glm::dvec3 Shader::filtered(Ray4 ray, double reach, int depth, Inside around, ThreadState& state,
+                            std::ptrdiff_t photon_light) const {
     // (No count in POV-Ray; this one only stops a walk that cannot end.)
     constexpr int kMostSurfaces = 1 << 16;
     const glm::dvec3 d = glm::dvec3(ray.direction) / glm::length(glm::dvec3(ray.direction));
@@ -216,6 +225,9 @@ glm::dvec3 Shader::filtered(Ray4 ray, double reach, int depth, Inside around,
         const runtime::SurfacePoint p = hit->object->complete(on, *hit);
         // (A no_shadow object is passed by, as POV-Ray's precondition.)
         if (hit->object->casts_shadow()) {
+            if (photon_light >= 0 &&
+                photon_shadow(*hit->object, static_cast<std::size_t>(photon_light)))
+                return glm::dvec3(0.0);
             ++state.counters.filtered_surfaces;
             through *= transmittance(p, d, depth, state);
             const double way = glm::distance(glm::dvec3(p.event), glm::dvec3(ray.origin));
@@ -318,6 +330,50 @@ Inside Shader::inside_at(const runtime::Event& event) const {
     return around;
 }
 
+void Shader::describe(Hit& h, const runtime::IntelligentObject& object, const Ray4& ray,
+                      const Inside& inside) const {
+    h.double_lit = object.flags().double_illuminate;
+    h.light_group = object.flags().light_group;
+    h.no_global_lights = object.flags().no_global_lights;
+    h.d = glm::normalize(glm::dvec3(ray.direction));
+    h.point = glm::dvec3(h.p.event);
+    h.time = h.p.event.w;
+    // Lighting uses the normal on the viewer's side, as POV-Ray does: each
+    // normal turned to face the ray by its own sign (POV-Ray's trace.cpp
+    // flips the shading normal it lights with, a smooth triangle's
+    // interpolated one included, whichever way the triangle winds).
+    h.raw = h.p.shading_normal;
+    h.geometric = h.p.geometric_normal;
+    h.back = glm::dot(h.geometric, h.d) > 0.0;
+    if (h.back) h.geometric = -h.geometric;
+    if (glm::dot(h.raw, h.d) > 0.0) h.raw = -h.raw;
+    h.start = runtime::geometry::offset_ray(h.point, h.p.error, h.geometric);
+    if (h.double_lit)
+        h.back_start = runtime::geometry::offset_ray(h.point, h.p.error, -h.geometric);
+    // The object as an interior: its media's volume (shared by the members
+    // of the object that wrote it), or itself (on this segment only).
+    // Leaving it, the ray was in it all along, even where that was not
+    // known (a camera inside).
+    const runtime::MediaVolume* media = h.p.texture->media();
+    h.entry = {media ? static_cast<const void*>(media) : static_cast<const void*>(&object), media,
+               object.flags().hollow};
+    h.object = &object;
+    h.interior = h.p.texture->interior_key() ? h.p.texture->interior_key()
+                                             : static_cast<const void*>(&object);
+    // (A ray that leaves an object it was not known to be in was inside it
+    // from its start (a camera inside) when its origin is; else it came in
+    // through an opening (clipped_by) and is in the open, as POV-Ray has it.)
+    // (A solid without media matters only to the atmosphere, fog and the
+    // media of interiors around it, which it blocks (hollow2.pov's glass
+    // ball in a glowing one): its inside test is not paid on every ray
+    // leaving glass otherwise.)
+    const bool volumes = !fogs_.empty() || atmosphere_ != nullptr || inside.has_media();
+    h.around = h.back && (media || (!h.entry.hollow && volumes)) &&
+                       (inside.contains(h.entry.key) || object.inside(ray.origin))
+                   ? inside.with(h.entry)
+                   : inside;
+}
+
 glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, std::uint8_t sight,
                             const Inside& inside, ThreadState& state, double* distance) const {
     const double t = ray.origin.w;
@@ -337,45 +393,7 @@ glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, std::uint
     if (distance) *distance = glm::distance(glm::dvec3(p.event), glm::dvec3(ray.origin));
     Hit h{on, p, depth, weight};
     h.sight = sight;
-    h.double_lit = hit->object->flags().double_illuminate;
-    h.light_group = hit->object->flags().light_group;
-    h.no_global_lights = hit->object->flags().no_global_lights;
-    h.d = glm::normalize(glm::dvec3(ray.direction));
-    h.point = glm::dvec3(p.event);
-    h.time = p.event.w;
-    // Lighting uses the normal on the viewer's side, as POV-Ray does: each
-    // normal turned to face the ray by its own sign (POV-Ray's trace.cpp
-    // flips the shading normal it lights with, a smooth triangle's
-    // interpolated one included, whichever way the triangle winds).
-    h.raw = p.shading_normal;
-    h.geometric = p.geometric_normal;
-    h.back = glm::dot(h.geometric, h.d) > 0.0;
-    if (h.back) h.geometric = -h.geometric;
-    if (glm::dot(h.raw, h.d) > 0.0) h.raw = -h.raw;
-    h.start = runtime::geometry::offset_ray(h.point, p.error, h.geometric);
-    if (h.double_lit) h.back_start = runtime::geometry::offset_ray(h.point, p.error, -h.geometric);
-    // The object as an interior: its media's volume (shared by the members
-    // of the object that wrote it), or itself (on this segment only).
-    // Leaving it, the ray was in it all along, even where that was not
-    // known (a camera inside).
-    const runtime::MediaVolume* media = p.texture->media();
-    h.entry = {media ? static_cast<const void*>(media) : static_cast<const void*>(hit->object),
-               media, hit->object->flags().hollow};
-    h.object = hit->object;
-    h.interior = p.texture->interior_key() ? p.texture->interior_key()
-                                           : static_cast<const void*>(hit->object);
-    // (A ray that leaves an object it was not known to be in was inside it
-    // from its start (a camera inside) when its origin is; else it came in
-    // through an opening (clipped_by) and is in the open, as POV-Ray has it.)
-    // (A solid without media matters only to the atmosphere, fog and the
-    // media of interiors around it, which it blocks (hollow2.pov's glass
-    // ball in a glowing one): its inside test is not paid on every ray
-    // leaving glass otherwise.)
-    const bool volumes = !fogs_.empty() || atmosphere_ != nullptr || inside.has_media();
-    h.around = h.back && (media || (!h.entry.hollow && volumes)) &&
-                       (inside.contains(h.entry.key) || hit->object->inside(ray.origin))
-                   ? inside.with(h.entry)
-                   : inside;
+    describe(h, *hit->object, ray, inside);
 
     // What the texture shows here: the plain textures its patterns pick,
     // their layers, each layer's normal perturbed after the turn (as
@@ -468,6 +486,9 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
     const double radiosity_bailout = state.radiosity.depth > 0 ? radiosity_.adc_bailout : kBailout;
     bool radiosity_done = false;
     glm::dvec3 radiosity_light(0.0);
+    // (Photons land on objects that collect them.)
+    const bool photons = photon_map_ != nullptr && h.object->flags().photon_collect;
+    PhotonGather photon_gather;
     for (; used < count && trans > kBailout; ++used) {
         const runtime::TextureSample::Layer& layer = layers[used];
         const runtime::MaterialSample& m = layer.material;
@@ -570,6 +591,7 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
                                    noise_generator_);
             own += lit * known.colour;
         }
+        if (photons) own += photon_light(h, m, n, opaque, photon_gather, state);
         colour += own * through;
         through *= m.filter * m.colour + glm::dvec3(m.transmit);
         // conserve_energy: less passes through by what the layer reflects.

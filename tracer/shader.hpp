@@ -23,6 +23,7 @@
 #include "tracer/light.hpp"
 #include "tracer/light_travel.hpp"
 #include "tracer/media.hpp"
+#include "tracer/photon_map.hpp"
 #include "tracer/radiosity_cache.hpp"
 #include "tracer/ray_query.hpp"
 #include "tracer/thread_state.hpp"
@@ -75,6 +76,30 @@ class Shader {
     // means (RadiosityCache's `reach`).
     std::vector<double> radiosity_reach() const;
 
+    // Photons (global_settings { photons { } }, tracer/shader_photons.cpp):
+    // the frame's map, set before each frame (null: none, or none made),
+    // which every surface shaded gathers from.
+    bool photons_enabled() const { return photons_.enabled; }
+    const runtime::PhotonSettings& photon_settings() const { return photons_; }
+    void set_photon_map(const PhotonMap* map) {
+        photon_map_ = map != nullptr && !map->empty() ? map : nullptr;
+    }
+    const std::vector<ShadedLight>& lights() const { return lights_; }
+    // One photon being shot: its light (an index in lights()), the target
+    // it is shot at (ObjectFlags::photon_group) and the spread of the
+    // photons, the area each stands for being spread^2 times the distance
+    // travelled^2 (spread^2 alone for a parallel light): POV-Ray's
+    // photonSpread.
+    struct PhotonShot {
+        std::size_t light = 0;
+        std::int32_t target = -1;
+        double spread = 0.0;
+    };
+    // Traces a photon of `colour` along `ray` (from its light), appending
+    // the photons it leaves to `out`. Returns whether it met its target.
+    bool shoot_photon(const PhotonShot& shot, const runtime::Ray4& ray, const glm::dvec3& colour,
+                      std::vector<Photon>& out, ThreadState& state) const;
+
   private:
     // `sight`: the kind of ray (runtime::RaySight), which decides the
     // objects hidden from it; `inside`: the interiors it starts in (a
@@ -93,6 +118,9 @@ class Shader {
     [[gnu::always_inline]] inline std::optional<runtime::ObjectHit> nearest(
         const runtime::Ray4& ray, runtime::Ray4& on, ThreadState& state, std::uint8_t sight,
         double s_max = std::numeric_limits<double>::infinity()) const;
+    // The same, not inlined: for the shader's other files.
+    std::optional<runtime::ObjectHit> nearest_hit(const runtime::Ray4& ray, runtime::Ray4& on,
+                                                  ThreadState& state, std::uint8_t sight) const;
     // Whether anything lies on `ray` within (0, reach], both pieces.
     [[gnu::always_inline]] inline bool blocked(const runtime::Ray4& ray, double reach,
                                                ThreadState& state) const;
@@ -151,6 +179,10 @@ class Shader {
             return out;
         }
     };
+    // Fills in what a hit knows from its object and the ray that met it
+    // (`inside`: the interiors the ray was in); `h.sight` is the caller's.
+    void describe(Hit& h, const runtime::IntelligentObject& object, const runtime::Ray4& ray,
+                  const Inside& inside) const;
     static double fresnel_ior(const Hit& h, const runtime::MaterialSample& m);
     // The colour of one plain texture (its `count` layers, top first) at
     // the hit; `seen` keeps what is known of each light across the plain
@@ -172,6 +204,34 @@ class Shader {
     // record kept where the path keeps them. Returns its quality.
     double gather(const Hit& h, const glm::dvec3& layer_normal, double brilliance,
                   glm::dvec3& illuminance, ThreadState& state) const;
+    // A photon's path: its shot, where its photons go, the trace level,
+    // POV-Ray's passThruPrev / passThruThis, the distance travelled
+    // (photonDepth), and whether it met its target (for autostop).
+    struct PhotonPath {
+        const PhotonShot* shot = nullptr;
+        std::vector<Photon>* out = nullptr;
+        int level = 0;
+        bool pass_prev = true, pass_this = false;
+        double depth = 0.0;
+        bool hit_target = false;
+    };
+    void trace_photon(const runtime::Ray4& ray, const glm::dvec3& colour, double weight,
+                      const Inside& inside, PhotonPath& path, ThreadState& state) const;
+    // The photons around a hit, gathered once for its layers.
+    struct PhotonGather {
+        bool done = false;
+        double radius = 0.0;
+        std::vector<const Photon*> photons;
+    };
+    // The light of the frame's photons at the hit, for a layer of material
+    // `m`, normal `n` and opacity `opaque` (POV-Ray's
+    // ComputePhotonDiffuseLight: each photon lights the layer as a light
+    // from where it came, their sum over the gather's disc).
+    glm::dvec3 photon_light(const Hit& h, const runtime::MaterialSample& m, const glm::dvec3& n,
+                            double opaque, PhotonGather& gather, ThreadState& state) const;
+    // Whether `object`, met by a shadow ray of light `light`, casts the
+    // full shadow photon mapping wants (its caustic brings the light).
+    bool photon_shadow(const runtime::IntelligentObject& object, std::size_t light) const;
     // Where a light lies from the hit, or that it does not shine there.
     [[gnu::always_inline]] inline void place(const ShadedLight& light, const Hit& h,
                                              ShadingScratch::Light& known) const;
@@ -191,8 +251,10 @@ class Shader {
     // or out of each object it meets (ComputeShadowMedia); between two
     // surfaces the media of every interior it is in dim the light, when
     // all are hollow (ComputeShadowColour).
+    // (`photon_light`: the light's index where photon_shadow applies to
+    // the lit object (it collects photons), else -1.)
     glm::dvec3 filtered(runtime::Ray4 ray, double reach, int depth, Inside around,
-                        ThreadState& state) const;
+                        ThreadState& state, std::ptrdiff_t photon_light = -1) const;
     // projected_through: whether `ray` toward `light` meets its object
     // before `reach`; then `reach` ends at the meeting.
     static bool projected(const ShadedLight& light, const runtime::Ray4& ray, double& reach);
@@ -283,6 +345,8 @@ class Shader {
     const RadiosityCache* radiosity_cache_ = nullptr;
     bool radiosity_path_ = false;
     glm::dvec3 radiosity_eye_{0.0};
+    runtime::PhotonSettings photons_;
+    const PhotonMap* photon_map_ = nullptr;
     bool legacy_sky_ = false;      // GlobalSettings::legacy_sky
     bool legacy_opacity_ = false;  // GlobalSettings::legacy_opacity
 };

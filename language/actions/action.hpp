@@ -120,6 +120,8 @@ struct action<g::global_setting_name> : name_action {};
 template <>
 struct action<g::radiosity_setting_name> : name_action {};
 template <>
+struct action<g::photons_setting_name> : name_action {};
+template <>
 struct action<g::global_ignored_name> : name_action {};
 template <>
 struct action<g::unsupported_kind> : name_action {};

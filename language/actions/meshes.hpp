@@ -304,13 +304,88 @@ struct action<g::shape_setting> {
 template <>
 struct action<g::shape_vectors_setting> : action<g::shape_setting> {};
 template <>
-struct action<g::object_ignored_block> : unrendered_action<runtime::ObjectRecord> {};
-// photons { } in a light: warned, as in an object.
+struct action<g::photons_flag_name> : name_action {};
+// One setting of photons { }: the value given, or Allow_Float's 1.
+inline double photons_flag_value(Interpreter& st, const std::string& name) {
+    std::vector<Value> given = st.values.close_frame();
+    if (given.empty()) {
+        if (name == "refraction" || name == "reflection")
+            throw ValueError("photons' " + name + " takes on or off");
+        return 1.0;
+    }
+    const double x = to_constant(given.at(0), "photons' " + name);
+    if (!std::isfinite(x)) throw ValueError("photons' " + name + " must be finite");
+    return x;
+}
+// POV-Ray's CheckPassThru: a target that lets photons pass through cannot
+// also refract them; which gives way depends on the one written last.
+inline void check_pass_through(runtime::ObjectPhotons& ph, const std::string& last,
+                               const p::position& where, Interpreter& st) {
+    if (!(ph.pass_through && ph.target > 0.0 && ph.refraction != -1)) return;
+    if (last == "target" && ph.refraction == 1) {
+        st.warn(where,
+                "photons: cannot use pass_through with refraction and target; pass_through "
+                "turned off, as POV-Ray does");
+        ph.pass_through = false;
+        return;
+    }
+    st.warn(where,
+            "photons: cannot use pass_through with refraction and target; refraction turned "
+            "off, as POV-Ray does");
+    ph.refraction = -1;
+}
+// An object's photons { } (runtime::ObjectPhotons).
 template <>
-struct action<g::light_photons> {
+struct action<g::object_photons_flag> {
     template <typename ActionInput>
     static void apply(const ActionInput& in, Interpreter& st) {
-        st.not_rendered(in.position(), "photons");
+        const std::string name = st.values.pop_name();
+        const double x = photons_flag_value(st, name);
+        auto& record = st.blocks.edit<runtime::ObjectRecord>(in.position(), "photons");
+        runtime::ObjectPhotons& ph = record.photons;
+        const std::int8_t on = static_cast<int>(x) != 0 ? 1 : -1;
+        if (name == "target") {
+            ph.target = x > 0.0 ? x : 0.0;
+        } else if (name == "refraction") {
+            ph.refraction = on;
+        } else if (name == "reflection") {
+            ph.reflection = on;
+        } else if (name == "collect") {
+            ph.collect = x > 0.0;
+        } else if (name == "pass_through") {
+            ph.pass_through = static_cast<int>(x) != 0;
+        } else if (name == "split_union") {
+            // (How POV-Ray shoots at a union's members, one bound or each
+            // its own: hexant shoots at the union's bound.)
+            if (static_cast<int>(x) != 0) st.not_rendered(in.position(), "split_union");
+            return;
+        } else {
+            throw ValueError("'" + name + "' does not belong in an object's photons { }");
+        }
+        check_pass_through(ph, name, in.position(), st);
+    }
+};
+// A light's photons { } (runtime::LightPhotons).
+template <>
+struct action<g::light_photons_flag> {
+    template <typename ActionInput>
+    static void apply(const ActionInput& in, Interpreter& st) {
+        const std::string name = st.values.pop_name();
+        const double x = photons_flag_value(st, name);
+        auto& light = st.blocks.edit<runtime::LightRecord>(in.position(), "photons");
+        const std::int8_t on = static_cast<int>(x) != 0 ? 1 : -1;
+        if (name == "refraction")
+            light.photons.refraction = on;
+        else if (name == "reflection")
+            light.photons.reflection = on;
+        else if (name == "area_light") {
+            light.photons.area_light = static_cast<int>(x) != 0;
+            if (light.photons.area_light)
+                st.warn(in.position(),
+                        "photons' area_light is read but not rendered as POV-Ray renders it: "
+                        "photons are shot from the light's centre, not from its grid");
+        } else
+            throw ValueError("'" + name + "' does not belong in a light's photons { }");
     }
 };
 // radiosity { importance I }, an object's or #default's: in (0, 1] as

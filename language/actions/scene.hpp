@@ -713,6 +713,114 @@ struct action<g::radiosity_setting> {
         }
     }
 };
+// ---- photons { } (runtime/scene/photon_settings.hpp): POV-Ray 3.7's
+// Parse_Global_Settings, its defaults, limits and messages.
+template <>
+struct action<g::photons_global_open> {
+    template <typename ActionInput>
+    static void apply(const ActionInput& in, Interpreter& st) {
+        st.require_whole_time(in.position(), "photons { }");
+        st.scene.global.photons = runtime::PhotonSettings{};
+    }
+};
+template <>
+struct action<g::global_photons> {
+    template <typename ActionInput>
+    static void apply(const ActionInput&, Interpreter& st) {
+        runtime::PhotonSettings& ph = st.scene.global.photons;
+        // (A gather maximum of 0 means no photon maps, as in POV-Ray.)
+        ph.enabled = ph.gather_max > 0;
+        if (!ph.enabled) return;
+        if (ph.gather_min < 0) throw ValueError("photons' min_gather_count cannot be negative");
+        if (ph.gather_min > ph.gather_max)
+            throw ValueError("photons' min_gather_count must be less than max_gather_count");
+        if (ph.count <= 0 && !(ph.spacing > 0.0))
+            throw ValueError("photons' spacing must be greater than 0");
+    }
+};
+template <>
+struct action<g::photons_setting> {
+    template <typename ActionInput>
+    static void apply(const ActionInput& in, Interpreter& st) {
+        std::vector<Value> given = st.values.close_frame();
+        const std::string name = st.values.pop_name();
+        runtime::PhotonSettings& ph = st.scene.global.photons;
+        const std::size_t most =
+            name == "radius"                                                     ? 4
+            : name == "gather" || name == "media" || name == "expand_thresholds" ? 2
+                                                                                 : 1;
+        if (given.size() > most)
+            throw ValueError("photons' " + name + " takes at most " + std::to_string(most) +
+                             " value" + (most == 1 ? "" : "s"));
+        if (name == "load_file" || name == "save_file") {
+            if (given.empty()) throw ValueError("photons' " + name + " takes a file name");
+            (void)to_string_value(given.at(0), "photons' " + name);
+            st.warn(in.position(), "photons' " + name +
+                                       " is ignored: hexant shoots the photons of every frame "
+                                       "anew and keeps no photon file");
+            return;
+        }
+        std::vector<double> x;
+        for (const Value& v : given) {
+            x.push_back(to_constant(v, "photons' " + name));
+            if (!std::isfinite(x.back())) throw ValueError("photons' " + name + " must be finite");
+        }
+        if (x.empty() && name != "radius") throw ValueError("photons' " + name + " takes a value");
+        if (name == "spacing") {
+            if (!(x[0] > 0.0)) throw ValueError("photons' spacing must be greater than 0");
+            ph.spacing = x[0];
+        } else if (name == "count") {
+            ph.count = checked_integer(std::trunc(x[0]), "photons' count", 0, 1LL << 32);
+        } else if (name == "gather") {
+            if (x.size() < 2) throw ValueError("photons' gather takes two values: MIN, MAX");
+            ph.gather_min = int(checked_integer(std::trunc(x[0]), "photons' gather", -1, 1 << 20));
+            ph.gather_max = int(checked_integer(std::trunc(x[1]), "photons' gather", -1, 1 << 20));
+        } else if (name == "media") {
+            if (x[0] < 0.0)
+                throw ValueError("photons' media: max media steps must be non-negative");
+            ph.media_max_steps =
+                int(checked_integer(std::trunc(x[0]), "photons' media", 0, 1 << 20));
+            if (x.size() > 1) {
+                if (!(x[1] > 0.0))
+                    throw ValueError("photons' media spacing factor must be greater than zero");
+                ph.media_spacing_factor = x[1];
+            }
+            if (ph.media_max_steps > 0)
+                st.warn(in.position(),
+                        "photons' media is read but not rendered as POV-Ray renders it: hexant "
+                        "stores no photons in media");
+        } else if (name == "jitter") {
+            ph.jitter = x[0];
+        } else if (name == "max_trace_level") {
+            ph.max_trace_level =
+                int(checked_integer(std::trunc(x[0]), "photons' max_trace_level", 0, 256));
+        } else if (name == "adc_bailout") {
+            ph.adc_bailout = x[0];
+        } else if (name == "autostop") {
+            ph.autostop = x[0];
+        } else if (name == "expand_thresholds") {
+            ph.expand_tolerance = x[0];
+            if (ph.expand_tolerance < 0.0) {
+                st.warn(in.position(),
+                        "the first parameter of expand_thresholds must be greater than or equal "
+                        "to 0; set to 0, as POV-Ray does");
+                ph.expand_tolerance = 0.0;
+            }
+            if (x.size() > 1) {
+                ph.expand_min = int(std::max(0.0, std::min(x[1], double(1 << 20))));
+                if (x[1] < 0.0)
+                    st.warn(in.position(),
+                            "the second parameter of expand_thresholds must be greater than or "
+                            "equal to 0; set to 0, as POV-Ray does");
+            }
+        } else {  // radius [GATHER [, FACTOR [, MEDIA [, MEDIA FACTOR]]]]
+            if (x.size() > 0) ph.radius = x[0];
+            if (x.size() > 1) ph.radius_factor = x[1];
+            if (x.size() > 2) ph.media_radius = x[2];
+            if (x.size() > 3) ph.media_radius_factor = x[3];
+        }
+    }
+};
 template <>
 struct action<g::global_ignored_setting> {
     template <typename ActionInput>

@@ -42,7 +42,7 @@ struct media_setting : p::seq<media_setting_name, ws, p::must<media_setting_valu
 struct media_samples_value : p::seq<expression> {};
 struct media_samples : p::seq<TAO_PEGTL_KEYWORD("samples"), ws, frame_open,
                               p::must<media_samples_value>, p::opt<comma, media_samples_value>> {};
-// collect [BOOL] (photons; hexant has none).
+// collect [BOOL] (media photons; hexant shoots none).
 struct media_collect
     : p::seq<TAO_PEGTL_KEYWORD("collect"), ws, frame_open, p::opt<metallic_amount>> {};
 // scattering { TYPE, COLOUR [eccentricity E] [extinction X] }

@@ -134,8 +134,24 @@ struct projected_through_base : object_base {};
 struct light_projected_through
     : p::seq<TAO_PEGTL_KEYWORD("projected_through"), ws, p::must<lbrace>,
              p::must<projected_through_base>, object_modifiers, p::must<object_close>> {};
-// photons { } in a light: warned, as in an object (no photon mapping).
-struct light_photons : p::seq<TAO_PEGTL_KEYWORD("photons"), ws, p::must<skipped_block>, ws> {};
+// photons { NAME [VALUE] ... } in an object or a light (POV-Ray 3.7's
+// Parse_Object_Mods and Parse_Light_Source; runtime/scene/photon_settings.hpp):
+// target, collect, pass_through and area_light take an optional value,
+// refraction and reflection one.
+struct photons_flag_name
+    : p::sor<TAO_PEGTL_KEYWORD("target"), TAO_PEGTL_KEYWORD("refraction"),
+             TAO_PEGTL_KEYWORD("reflection"), TAO_PEGTL_KEYWORD("collect"),
+             TAO_PEGTL_KEYWORD("pass_through"), TAO_PEGTL_KEYWORD("split_union"),
+             TAO_PEGTL_KEYWORD("area_light")> {};
+struct photons_flag_value : p::seq<expression> {};
+struct photons_flag_body
+    : p::seq<photons_flag_name, ws, frame_open,
+             p::opt<p::not_at<photons_flag_name>, p::not_at<rbrace>, photons_flag_value>> {};
+struct photons_open : p::seq<TAO_PEGTL_KEYWORD("photons"), ws, p::must<lbrace>> {};
+struct light_photons_flag : p::seq<photons_flag_body> {};
+struct light_photons_item;
+struct light_photons_item : p::sor<directive<light_photons_item>, light_photons_flag> {};
+struct light_photons : p::seq<photons_open, p::star<light_photons_item>, p::must<rbrace>, ws> {};
 struct light_item
     : p::sor<directive<light_item>, macro_call<light_item>, light_flag, light_setting, area_light,
              light_looks_like, light_projected_through, transformation, light_photons> {};
@@ -145,9 +161,9 @@ struct light_block : p::seq<kw_light_source, p::must<lbrace>, p::must<light_argu
 // Object kinds POV-Ray has and hexant does not: kept as source, an error
 // only where used. Also `function { }` and the *_map blocks.
 struct unsupported_kind_words {
-    static constexpr std::array<std::string_view, 12> list = {
-        "color_map",  "colour_map", "function",    "lemon",   "normal_map", "ovus",
-        "parametric", "photons",    "pigment_map", "rainbow", "slope_map",  "texture_map"};
+    static constexpr std::array<std::string_view, 11> list = {
+        "color_map",  "colour_map",  "function", "lemon",     "normal_map", "ovus",
+        "parametric", "pigment_map", "rainbow",  "slope_map", "texture_map"};
 };
 struct unsupported_kind : one_word_of<unsupported_kind_words> {};
 struct unsupported_block
@@ -399,8 +415,11 @@ struct shape_vectors_setting_value : p::seq<expression> {};
 struct shape_vectors_setting
     : p::seq<shape_vectors_setting_name, ws, frame_open, p::must<shape_vectors_setting_value>,
              p::star<comma, p::must<shape_vectors_setting_value>>> {};
-struct object_ignored_block : p::seq<TAO_PEGTL_KEYWORD("photons"), ws, p::must<skipped_block>, ws> {
-};
+struct object_photons_flag : p::seq<photons_flag_body> {};
+struct object_photons_item;
+struct object_photons_item : p::sor<directive<object_photons_item>, object_photons_flag> {};
+struct object_photons_block
+    : p::seq<photons_open, p::star<object_photons_item>, p::must<rbrace>, ws> {};
 // radiosity { importance I } (POV-Ray's Parse_Object_Mods).
 struct radiosity_importance_value : p::seq<expression> {};
 struct object_radiosity_importance
@@ -425,6 +444,6 @@ struct object_modifier
     : p::sor<directive<object_modifier>, macro_call<object_modifier>, transformation, deformation,
              object_texture, object_interior_texture, object_pigment, object_finish, object_normal,
              object_interior, object_material, object_flag, shape_vectors_setting, shape_setting,
-             limit_block, object_ignored_block, object_radiosity_block> {};
+             limit_block, object_photons_block, object_radiosity_block> {};
 
 }  // namespace hexant::language::grammar

@@ -155,9 +155,28 @@ struct radiosity_item;
 struct radiosity_item
     : p::sor<directive<radiosity_item>, macro_call<radiosity_item>, radiosity_setting> {};
 struct global_radiosity : p::seq<radiosity_open, p::star<radiosity_item>, p::must<rbrace>> {};
+// photons { NAME VALUE [, VALUE ...] ... } (runtime/scene/photon_settings.hpp):
+// gather, media and expand_thresholds take two values, radius up to four.
+struct photons_global_open : p::seq<TAO_PEGTL_KEYWORD("photons"), ws, p::must<lbrace>> {};
+struct photons_setting_name
+    : p::sor<TAO_PEGTL_KEYWORD("spacing"), TAO_PEGTL_KEYWORD("count"), TAO_PEGTL_KEYWORD("gather"),
+             TAO_PEGTL_KEYWORD("media"), TAO_PEGTL_KEYWORD("jitter"),
+             TAO_PEGTL_KEYWORD("max_trace_level"), TAO_PEGTL_KEYWORD("adc_bailout"),
+             TAO_PEGTL_KEYWORD("autostop"), TAO_PEGTL_KEYWORD("expand_thresholds"),
+             TAO_PEGTL_KEYWORD("radius"), TAO_PEGTL_KEYWORD("load_file"),
+             TAO_PEGTL_KEYWORD("save_file")> {};
+struct photons_setting
+    : p::seq<photons_setting_name, ws, frame_open,
+             p::opt<p::not_at<photons_setting_name>, p::not_at<rbrace>, global_setting_value>,
+             p::star<comma, p::must<global_setting_value>>> {};
+struct photons_global_item;
+struct photons_global_item
+    : p::sor<directive<photons_global_item>, macro_call<photons_global_item>, photons_setting> {};
+struct global_photons : p::seq<photons_global_open, p::star<photons_global_item>, p::must<rbrace>> {
+};
 struct global_item
     : p::sor<directive<global_item>, global_setting, global_charset, global_motion_blur,
-             global_hf_gray_16, global_radiosity, global_ignored_setting> {};
+             global_hf_gray_16, global_radiosity, global_photons, global_ignored_setting> {};
 struct global_settings_block
     : p::seq<kw_global_settings, p::must<lbrace>, p::star<global_item>, p::must<rbrace>> {};
 

@@ -406,7 +406,11 @@ struct irid_setting : p::seq<irid_setting_name, ws, p::must<irid_setting_value>>
 struct irid_block
     : p::seq<irid_open, p::must<irid_amount>, p::star<irid_setting>, p::must<rbrace>> {};
 struct finish_open : p::seq<kw_finish, p::must<lbrace>> {};
-struct finish_base : p::seq<expression> {};
+// A block's base is not a macro call whose body gives the block's items
+// (interior { I_Glass_Exp(2) }): that is read as items (interpreter_state.hpp).
+HEXANT_CUSTOM_RULE(items_macro_ahead, items_macro_ahead);
+struct finish_item;
+struct finish_base : p::seq<p::not_at<items_macro_ahead<finish_item>>, expression> {};
 struct finish_item : p::sor<directive<finish_item>, macro_call<finish_item>, finish_setting,
                             reflection_setting, finish_metallic, finish_conserve_energy,
                             finish_flag, irid_block, finish_ignored_block> {};
@@ -468,7 +472,8 @@ struct object_normal : p::seq<normal_block> {};
 struct camera_normal : p::seq<normal_block> {};
 
 struct interior_open : p::seq<kw_interior, p::must<lbrace>> {};
-struct interior_base : p::seq<expression> {};
+struct interior_item;
+struct interior_base : p::seq<p::not_at<items_macro_ahead<interior_item>>, expression> {};
 struct ior_value : p::seq<expression> {};
 struct ior_setting : p::seq<TAO_PEGTL_KEYWORD("ior"), ws, p::must<ior_value>> {};
 struct interior_ignored_setting

@@ -91,6 +91,10 @@ enum RaySight : std::uint8_t {
     // A ray radiosity gathers along, and every ray traced from its hit
     // (POV-Ray's IsRadiosityRay): no_radiosity objects are passed by.
     kSightRadiosity = 4,
+    // A photon being shot (tracer/shader_photons.cpp): no_shadow objects
+    // (a light's looks_like among them) are passed by, as POV-Ray's
+    // photon rays pass them.
+    kSightPhoton = 8,
 };
 
 // What an object (a primitive, a group, a wrapper) carries of its record's
@@ -107,6 +111,16 @@ struct ObjectFlags {
     // and whose enclosing groups' lights light it (-1: none).
     bool no_global_lights = false;
     std::int32_t light_group = -1;
+    // photons { } (runtime/scene/photon_settings.hpp), a group's handed to
+    // its members over their own (POV-Ray's Post_Process). photon_target:
+    // the spacing factor of the target it belongs to (0: none) and that
+    // target's number, the same for all its members (POV-Ray's
+    // IsObjectInCSG: a photon shot at a union may meet any member first).
+    float photon_target = 0.0f;
+    std::int32_t photon_group = -1;
+    std::int8_t photon_refraction = 0, photon_reflection = 0;  // 1 on, -1 off, 0 unsaid
+    bool photon_collect = true;
+    bool photon_pass_through = false;
 };
 
 class IntelligentObject {

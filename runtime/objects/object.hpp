@@ -71,6 +71,7 @@ struct ObjectRecord {
     bool no_image = false;
     bool no_reflection = false;
     bool no_radiosity = false;  // hidden from radiosity's gathering rays
+    ObjectPhotons photons;      // its photons { }
     bool double_illuminate = false;
     bool hollow = false;
     bool inverse = false;  // inside and outside swapped (CSG)

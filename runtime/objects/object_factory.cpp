@@ -1,6 +1,7 @@
 #include "runtime/objects/object_factory.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -77,6 +78,32 @@ Inherited top_level(const Texture& default_texture) {
 // the parent's, its texture (mapped to the parent's space) or the parent's,
 // its interior or the parent's, no_shadow if either says so; the rest as
 // the parent's.
+// An object's photon flags: its own, then its group's over them, as
+// POV-Ray's Post_Process promotes a CSG's to its children. A target's
+// number is its record's address folded to 31 bits (records are at least
+// 16-byte aligned; two would share one only 32 GB apart): the same however
+// often the record is handed down while its object is built.
+void handed_photons(const ObjectRecord& record, const ObjectFlags& parent, ObjectFlags& down) {
+    const ObjectPhotons& own = record.photons;
+    if (parent.photon_target > 0.0f) {
+        down.photon_target = parent.photon_target;
+        down.photon_group = parent.photon_group;
+    } else if (own.target > 0.0) {
+        down.photon_target = static_cast<float>(own.target);
+        down.photon_group = static_cast<std::int32_t>(
+            (reinterpret_cast<std::uintptr_t>(&record) >> 4) & 0x7fffffffu);
+    } else {
+        down.photon_target = 0.0f;
+        down.photon_group = -1;
+    }
+    down.photon_refraction =
+        parent.photon_refraction != 0 ? parent.photon_refraction : own.refraction;
+    down.photon_reflection =
+        parent.photon_reflection != 0 ? parent.photon_reflection : own.reflection;
+    down.photon_pass_through = own.pass_through || parent.photon_pass_through;
+    down.photon_collect = own.collect && parent.photon_collect;
+}
+
 Inherited handed_down(const ObjectRecord& record, const Inherited& parent) {
     Inherited down = parent;
     down.to_world = record.transform;
@@ -106,7 +133,9 @@ Inherited handed_down(const ObjectRecord& record, const Inherited& parent) {
     if (record.no_image) down.flags.hidden_from |= kSightImage;
     if (record.no_reflection) down.flags.hidden_from |= kSightReflection;
     if (record.no_radiosity) down.flags.hidden_from |= kSightRadiosity;
+    if (down.no_shadow) down.flags.hidden_from |= kSightPhoton;
     down.flags.double_illuminate = record.double_illuminate || parent.flags.double_illuminate;
+    handed_photons(record, parent.flags, down.flags);
     // (A group's hollow reaches its members, as POV-Ray's
     // Set_CSG_Children_Flag; a member's own says for itself.)
     down.flags.hollow = record.hollow || parent.flags.hollow;
@@ -390,8 +419,8 @@ bool instanceable(const Csg& csg) {
         const ObjectRecord& r = *stack.back();
         stack.pop_back();
         if (!r.lifetime.is_always() || r.transform.depends_on_time() || r.no_shadow || r.no_image ||
-            r.no_reflection || r.no_radiosity || r.double_illuminate || r.hollow || r.light_group ||
-            r.interior)
+            r.no_reflection || r.no_radiosity || r.photons != ObjectPhotons{} ||
+            r.double_illuminate || r.hollow || r.light_group || r.interior)
             return false;
         if (r.limits) {
             if (!r.limits->bounded_by.empty()) return false;

@@ -9,6 +9,7 @@
 #include <glm/vec4.hpp>
 
 #include "runtime/motion/transform.hpp"
+#include "runtime/scene/photon_settings.hpp"
 #include "runtime/time/lifetime.hpp"
 #include "runtime/time/vector_function.hpp"
 
@@ -83,6 +84,7 @@ struct LightRecord {
     // The light_group whose members alone it lights (an index in the
     // scene's light_groups), or -1: a light of the whole scene.
     int light_group = -1;
+    LightPhotons photons;  // its photons { }
     // When it shines: always, or the pieces of time of the clock-dependent
     // branches it was made under.
     Lifetime lifetime;

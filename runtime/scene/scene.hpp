@@ -12,6 +12,7 @@
 #include "runtime/scene/fog.hpp"
 #include "runtime/scene/light.hpp"
 #include "runtime/scene/media.hpp"
+#include "runtime/scene/photon_settings.hpp"
 #include "runtime/scene/radiosity_settings.hpp"
 #include "runtime/scene/rainbow.hpp"
 #include "runtime/scene/sky_sphere.hpp"
@@ -54,6 +55,8 @@ struct GlobalSettings {
     // radiosity { }: with it, a 3.7 scene's ambient is not lit (only
     // emission is), as in POV-Ray's ComputeLightedTexture.
     RadiositySettings radiosity;
+    // photons { } (runtime/scene/photon_settings.hpp).
+    PhotonSettings photons;
     // The language version the scene ends with (3.62 without #version,
     // POV-Ray's EffectiveLanguageVersion).
     double language_version = 3.62;

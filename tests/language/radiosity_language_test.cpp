@@ -127,14 +127,13 @@ TEST_CASE("radiosity's settings are checked together, as POV-Ray does after pars
 
 TEST_CASE("radiosity's other places read as POV-Ray 3.7 reads them", "[language][radiosity]") {
     // #default { radiosity { importance } }, an importance written twice
-    // (the last counts), photons { } in a light (warned, as in an object).
+    // (the last counts).
     const auto scene = scene_of(
         "#default { finish { ambient 0.1 } radiosity { importance 1 } }\n"
         "sphere { 0, 1 radiosity { importance 0.5 importance 1 } }\n"
-        "light_source { 0, 1 photons { refraction on reflection on } }");
-    REQUIRE(scene.warnings.size() == 2);
+        "light_source { 0, 1 }");
+    REQUIRE(scene.warnings.size() == 1);
     CHECK(scene.warnings[0].find("importance") != std::string::npos);
-    CHECK(scene.warnings[1].find("'photons' is read but not rendered") != std::string::npos);
     CHECK(scene.lights.size() == 1);
     CHECK(
         scene_of("#default { radiosity { importance 0.5 } }").global.radiosity.default_importance ==

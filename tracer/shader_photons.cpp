@@ -1,0 +1,262 @@
+// Photons (POV-Ray 3.7's PhotonTrace, source/core/lighting/photons.cpp, and
+// Trace::ComputePhotonDiffuseLight, render/trace.cpp): a photon's path from
+// its light through the targets that reflect or refract it, leaving a
+// photon on each surface it lands on after the first; and the light of a
+// frame's photons at a surface being shaded.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <glm/geometric.hpp>
+
+#include "runtime/geometry/offset_ray.hpp"
+#include "tracer/iridescence.hpp"
+#include "tracer/reflectivity.hpp"
+#include "tracer/shader.hpp"
+
+namespace hexant::tracer {
+
+using runtime::Ray4;
+
+namespace {
+
+constexpr double kBailout = 1.0 / 255.0;  // POV-Ray's default adc_bailout
+constexpr double kEpsilon = 1.0e-10;
+
+// A photon's ray: photons travel instantly, also under --light-speed
+// (whose rays run back in time from the eye; a photon runs forward).
+Ray4 instant_ray(const glm::dvec3& origin, double t, const glm::dvec3& direction) {
+    return {runtime::Event(origin, t), runtime::Event(direction, 0.0)};
+}
+
+// A photon follows refraction (reflection) where the object or its light
+// says on and the other does not say off (POV-Ray's doRefraction rule).
+bool photon_on(std::int8_t object, std::int8_t light) {
+    return (object == 1 && light != -1) || (object != -1 && light == 1);
+}
+
+}  // namespace
+
+bool Shader::shoot_photon(const PhotonShot& shot, const Ray4& ray, const glm::dvec3& colour,
+                          std::vector<Photon>& out, ThreadState& state) const {
+    PhotonPath path{&shot, &out};
+    const Inside inside = camera_interiors_.empty() ? Inside{} : inside_at(ray.origin);
+    state.straight_passes = 0;
+    trace_photon(ray, colour, 1.0, inside, path, state);
+    return path.hit_target;
+}
+
+void Shader::trace_photon(const Ray4& ray, const glm::dvec3& colour, double weight,
+                          const Inside& inside, PhotonPath& path, ThreadState& state) const {
+    const int most = photons_.max_trace_level >= 0 ? photons_.max_trace_level : max_trace_level_;
+    const double bailout = photons_.adc_bailout >= 0.0 ? photons_.adc_bailout : kBailout;
+    if (path.level >= most || weight < bailout) return;
+    ++state.counters.photon_rays;
+    Ray4 on = ray;
+    const auto hit = nearest_hit(ray, on, state, runtime::kSightPhoton);
+    if (!hit) return;
+    ++path.level;
+    const runtime::ObjectFlags& f = hit->object->flags();
+    // POV-Ray's passThruPrev / passThruThis: whether the surface before
+    // this one let the photon through unchanged (pass_through), and this one.
+    const bool old_prev = path.pass_prev;
+    path.pass_prev = path.pass_this;
+    const auto restore = [&] {
+        path.pass_this = path.pass_prev;
+        path.pass_prev = old_prev;
+        --path.level;
+    };
+    // Until it meets its target, a photon goes on only through
+    // pass_through objects; any other object ends it.
+    if (path.level == 1 || path.pass_prev) {
+        path.pass_this = false;
+        if (f.photon_target > 0.0f && f.photon_group == path.shot->target) {
+            path.hit_target = true;
+        } else if (f.photon_pass_through) {
+            path.pass_this = true;
+        } else {
+            restore();
+            return;
+        }
+    }
+    const runtime::SurfacePoint p = hit->object->complete(on, *hit);
+    Hit h{on, p, path.level, weight};
+    h.sight = runtime::kSightPhoton;
+    describe(h, *hit->object, ray, inside);
+    const double way = glm::distance(h.point, glm::dvec3(ray.origin));
+    // Light that crossed the object's inside fades (POV-Ray's attCol).
+    glm::dvec3 light = colour;
+    if (h.around.holds(h.interior))
+        if (const auto fade = p.texture->fade_at(h.time)) light *= fade->through(way);
+    path.depth += way;
+    const auto leave = [&] {
+        path.depth -= way;
+        restore();
+    };
+
+    // Kept where it lands after its first surface (addSurfacePhoton): the
+    // light over the area a photon stands for, its fade taken back (POV-Ray
+    // fades the estimate's light as any light's on the way to the eye).
+    const ShadedLight& source = lights_[path.shot->light];
+    if (path.level > 1 && !path.pass_prev && f.photon_collect) {
+        double area = path.shot->spread * path.shot->spread;
+        if (!source.parallel()) area *= path.depth * path.depth;
+        const glm::dvec3 kept = light * (source.fade(path.depth, h.time) * area);
+        if (std::isfinite(kept.x + kept.y + kept.z)) {
+            Photon photon;
+            photon.position = glm::vec3(h.point);
+            photon.colour = glm::vec3(kept);
+            photon.from = glm::vec3(-h.d);
+            photon.time = static_cast<float>(h.time);
+            path.out->push_back(photon);
+        }
+    }
+
+    Inside passed;
+    const double top_ior = p.texture->ior_at(h.time);
+    const double eta = h.around.refract(h.interior, top_ior, h.started_inside(), passed);
+    const glm::dvec3 through_start = runtime::geometry::offset_ray(h.point, p.error, -h.geometric);
+    if (path.pass_this) {
+        // (Through unchanged, the interiors kept right.)
+        trace_photon(instant_ray(through_start, h.time, h.d), light, weight, h.refracted(passed),
+                     path, state);
+        leave();
+        return;
+    }
+
+    // The layers, top first, as the shader sees them (a texture_map's
+    // first plain texture): what passes through them all (POV-Ray's
+    // FilCol), and how much still does (Trans).
+    ShadingScratch& scratch = state.shading_at(path.level);
+    scratch.texture.clear();
+    if (p.blended)
+        for (const auto& b : p.blend)
+            b.texture->sample(h.point, p.uv, h.time, h.raw, scratch.texture, b.weight);
+    else
+        p.texture->sample(h.point, p.uv, h.time, h.raw, scratch.texture);
+    if (scratch.texture.plains.empty()) {
+        leave();
+        return;
+    }
+    const runtime::TextureSample::Plain& plain = scratch.texture.plains.front();
+    const runtime::TextureSample::Layer* layers = scratch.texture.layers.data() + plain.first;
+    glm::dvec3 through(1.0);
+    double trans = 1.0;
+    std::size_t used = 0;
+    for (; used < plain.count && trans > bailout; ++used) {
+        const runtime::MaterialSample& m = layers[used].material;
+        through *= m.filter * m.colour + glm::dvec3(m.transmit);
+        if (m.conserve_energy && reflects(m))
+            through *= glm::min(
+                glm::dvec3(1.0),
+                glm::dvec3(1.0) -
+                    reflectivity(m, -glm::dot(h.d, layers[used].normal), fresnel_ior(h, m)).colour);
+        trans = std::min(1.0, std::fabs(0.297 * through.x + 0.589 * through.y + 0.114 * through.z));
+    }
+
+    // Refracted, where the object or its light asks (caustics through glass).
+    bool total_internal_reflection = false;
+    const runtime::LightPhotons& asks = source.photons();
+    if (photon_on(f.photon_refraction, asks.refraction) && trans > bailout) {
+        const double w =
+            weight * std::max({std::fabs(through.x), std::fabs(through.y), std::fabs(through.z)});
+        const glm::dvec3& normal = layers[0].normal;
+        double n = glm::dot(h.d, normal);
+        const glm::dvec3 local = n <= 0.0 ? normal : -normal;
+        n = std::fabs(n);
+        const double k = 1.0 + eta * eta * (n * n - 1.0);
+        total_internal_reflection = k < 0.0;
+        if (total_internal_reflection) {
+            // (Reflected inside, unfiltered, as POV-Ray's ComputeReflection.)
+            trace_photon(instant_ray(h.start, h.time, reflect(h.d, normal, h.raw)), light, w,
+                         h.carried(), path, state);
+        } else {
+            const bool straight = std::fabs(eta - 1.0) < kEpsilon;
+            const glm::dvec3 out = straight ? h.d : eta * h.d + (eta * n - std::sqrt(k)) * local;
+            trace_photon(instant_ray(through_start, h.time, out), light * through, w,
+                         h.refracted(passed), path, state);
+        }
+    }
+
+    // Reflected by each layer (not along the top layer's normal after
+    // total internal reflection, which that already followed).
+    if (photon_on(f.photon_reflection, asks.reflection)) {
+        for (std::size_t i = 0; i < used; ++i) {
+            const runtime::TextureSample::Layer& layer = layers[i];
+            const runtime::MaterialSample& m = layer.material;
+            if (!reflects(m)) continue;
+            if (total_internal_reflection && layer.normal == layers[0].normal) continue;
+            const Reflectivity r = reflectivity(m, -glm::dot(h.d, layer.normal), fresnel_ior(h, m));
+            if (r.colour == glm::dvec3(0.0)) continue;
+            glm::dvec3 carried = light;
+            if (m.reflection_power != 1.0)
+                for (int c = 0; c < 3; ++c)
+                    carried[c] = std::pow(std::max(carried[c], 0.0), m.reflection_power);
+            // (POV-Ray's photon weight takes the reflectivity twice:
+            // ComputeReflectivity scales the layer's weight by it, and
+            // the photon's weight is that times its largest channel
+            // again. Photon paths through glass end a level sooner so.)
+            const double w = weight * layer_trans(layers, i) * r.weight *
+                             std::max({r.colour.x, r.colour.y, r.colour.z});
+            trace_photon(instant_ray(h.start, h.time, reflect(h.d, layer.normal, h.raw)),
+                         r.colour * carried, w, h.carried(), path, state);
+        }
+    }
+    leave();
+}
+
+glm::dvec3 Shader::photon_light(const Hit& h, const runtime::MaterialSample& m, const glm::dvec3& n,
+                                double opaque, PhotonGather& gather, ThreadState& state) const {
+    if (m.diffuse == 0.0 && m.specular == 0.0 && m.phong == 0.0) return glm::dvec3(0.0);
+    // Gathered once for the hit, about the first layer's normal that asks
+    // (POV-Ray's gatherer, kept for the hit's layers).
+    if (!gather.done) {
+        gather.done = true;
+        ++state.counters.photon_gathers;
+        gather.radius = photon_map_->gather(h.point, n, gather.photons);
+    }
+    if (gather.photons.empty() || !(gather.radius > 0.0)) return glm::dvec3(0.0);
+    const bool highlights = state.radiosity.depth == 0;
+    glm::dvec3 sum(0.0);
+    for (const Photon* photon : gather.photons) {
+        const glm::dvec3 from(photon->from);
+        // (POV-Ray's Lambertian compensation, by the raw normal, at most
+        // tenfold: the photon's own angle is in its density already.)
+        const double compensation = 1.0 / std::clamp(glm::dot(h.raw, from), 0.1, 1.0);
+        const glm::dvec3 arriving = glm::dvec3(photon->colour) * compensation;
+        double cosine = glm::dot(n, from);
+        if (h.double_lit) cosine = std::fabs(cosine);
+        if (cosine < kEpsilon) continue;
+        const double shade = m.brilliance == 1.0 ? cosine : std::pow(cosine, m.brilliance);
+        glm::dvec3 lit = m.diffuse * shade * opaque * m.colour;
+        const glm::dvec3 highlight =
+            m.metallic > 0.0 ? metallic_tint(m.metallic, cosine, m.colour) : glm::dvec3(1.0);
+        if (m.phong > 0.0 && highlights) {
+            const glm::dvec3 reflected = h.d - 2.0 * glm::dot(h.d, n) * n;
+            const double c = glm::dot(reflected, from);
+            if (c > 0.0) lit += m.phong * std::pow(c, m.phong_size) * highlight;
+        }
+        if (m.specular > 0.0 && highlights) {
+            const glm::dvec3 half = glm::normalize(from - h.d);
+            const double c = glm::dot(half, n);
+            if (c > 0.0) lit += m.specular * std::pow(c, 1.0 / m.roughness) * highlight;
+        }
+        if (m.irid > 0.0)
+            lit *= iridescence(m, from, h.d, n, h.point, irid_wavelength_, noise_generator_);
+        sum += lit * arriving;
+    }
+    return sum / (std::numbers::pi * gather.radius * gather.radius);
+}
+
+// POV-Ray's ComputeShadowColour: where photons carry a light through a
+// refracting target, the target's filtered shadow of that light is dark
+// (the caustic is the light that passes), unless the lit object ignores
+// photons (collect off).
+bool Shader::photon_shadow(const runtime::IntelligentObject& object, std::size_t light) const {
+    const runtime::ObjectFlags& f = object.flags();
+    const runtime::LightPhotons& asks = lights_[light].photons();
+    return f.photon_target > 0.0f && f.photon_refraction != -1 && asks.refraction != -1 &&
+           (f.photon_refraction == 1 || asks.refraction == 1);
+}
+
+}  // namespace hexant::tracer
