@@ -154,15 +154,21 @@ inline bool Shader::blocked(const Ray4& ray, double reach, ThreadState& state) c
 }
 
 inline glm::dvec3 Shader::shadow_filter(std::size_t index, const Hit& h,
-                                        const ShadingScratch::Light& known,
-                                        ThreadState& state) const {
+                                        const ShadingScratch::Light& known, ThreadState& state,
+                                        bool behind) const {
     const ShadedLight& light = lights_[index];
     glm::dvec3 direction = known.to_light;
     double reach = known.reach;
     // (A light behind a double_illuminate surface: the shadow ray leaves
     // from that side, so that the surface does not shadow itself.)
-    const glm::dvec3& start =
-        h.double_lit && glm::dot(h.geometric, direction) < 0.0 ? h.back_start : h.start;
+    // (So too for a light that shows through from behind: `behind`.)
+    glm::dvec3 start = h.start;
+    if (glm::dot(h.geometric, direction) < 0.0) {
+        if (h.double_lit)
+            start = h.back_start;
+        else if (behind)
+            start = runtime::geometry::offset_ray(h.point, h.p.error, -h.geometric);
+    }
     // (Radiosity's gathering rays light by an area light's centre, as
     // POV-Ray's radiosity quality flags have it.)
     if (light.is_area() && state.radiosity.depth == 0) {
@@ -484,8 +490,8 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
                                   radiosity_.enabled &&
                                   state.radiosity.depth < radiosity_.recursion_limit;
     const double radiosity_bailout = state.radiosity.depth > 0 ? radiosity_.adc_bailout : kBailout;
-    bool radiosity_done = false;
-    glm::dvec3 radiosity_light(0.0);
+    bool radiosity_done = false, radiosity_back_done = false;
+    glm::dvec3 radiosity_light(0.0), radiosity_back_light(0.0);
     // (Photons land on objects that collect them.)
     const bool photons = photon_map_ != nullptr && h.object->flags().photon_collect;
     PhotonGather photon_gather;
@@ -519,6 +525,27 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
             }
             own += m.colour * radiosity_light * (opaque * diffuse);
         }
+        // diffuse's second value: radiosity's light from behind, gathered
+        // about the reversed normals (POV-Ray's ambBackCol).
+        if (radiosity_needed && m.diffuse_back != 0.0) {
+            if (!radiosity_back_done) {
+                const glm::dvec3 most = through * m.colour;
+                const double contribution =
+                    (0.297 * most.x + 0.589 * most.y + 0.114 * most.z) * opaque * m.diffuse_back;
+                if (contribution > radiosity_bailout) {
+                    Hit back = h;
+                    back.raw = -h.raw;
+                    back.geometric = -h.geometric;
+                    back.start = runtime::geometry::offset_ray(h.point, h.p.error, -h.geometric);
+                    radiosity_back_light = radiosity_path_
+                                               ? radiosity_path(back, -n, m.brilliance, state)
+                                               : radiosity_ambient(back, -n, m.brilliance,
+                                                                   h.weight * contribution, state);
+                    radiosity_back_done = true;
+                }
+            }
+            own += m.colour * radiosity_back_light * (opaque * m.diffuse_back);
+        }
         for (std::size_t i = 0; i < lights_.size(); ++i) {
             if (!lights_object(i, h)) continue;
             const ShadedLight& light = lights_[i];
@@ -528,13 +555,21 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
             if (known.state == ShadingScratch::Light::State::Dark) continue;
             double cosine = glm::dot(n, known.to_light);
             // (double_illuminate: a light behind the surface lights it as
-            // one in front, POV-Ray's fabs of the cosine.)
+            // one in front, POV-Ray's fabs of the cosine. diffuse's second
+            // value: it shows through the surface, diffusely, without
+            // highlights (POV-Ray's backside).)
             if (h.double_lit) cosine = std::fabs(cosine);
-            if (cosine <= 0.0) continue;
+            bool backside = false;
+            if (cosine <= 0.0) {
+                if (h.double_lit || m.diffuse_back == 0.0) continue;
+                backside = true;
+                cosine = -cosine;
+                if (!(cosine > 0.0)) continue;
+            }
             if (known.state == ShadingScratch::Light::State::Placed) {
                 known.state = ShadingScratch::Light::State::Seen;
                 if (!light.shadowless() || light.projector()) {
-                    const glm::dvec3 passed = shadow_filter(i, h, known, state);
+                    const glm::dvec3 passed = shadow_filter(i, h, known, state, backside);
                     if (passed == glm::dvec3(0.0))
                         known.state = ShadingScratch::Light::State::Shadowed;
                     else if (passed != glm::dvec3(1.0))
@@ -555,11 +590,12 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
             if (known.state == ShadingScratch::Light::State::Shadowed) continue;
             // (POV-Ray's default brilliance 1 needs no pow.)
             const double shade = m.brilliance == 1.0 ? cosine : std::pow(cosine, m.brilliance);
-            double intensity = m.diffuse * shade * opaque;
+            const double diffuse = backside ? m.diffuse_back : m.diffuse;
+            double intensity = diffuse * shade * opaque;
             // crand: less a uniform random fraction, a draw of its own per
             // sample and light (POV-Ray's ComputeDiffuseColour, after the
             // layer's opacity; only where there is diffuse light).
-            if (m.crand > 0.0 && m.diffuse > 0.0) {
+            if (m.crand > 0.0 && diffuse > 0.0) {
                 const SampleIndex& s = state.sample;
                 const auto u = sample_pair(
                     s.seed, s.index, s.count,
@@ -575,7 +611,7 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
                 m.metallic > 0.0 ? metallic_tint(m.metallic, cosine, m.colour) : glm::dvec3(1.0);
             // (No highlights on radiosity's gathering rays: POV-Ray leaves
             // them out there, against splotches.)
-            const bool highlights = !light.shadowless() && state.radiosity.depth == 0;
+            const bool highlights = !light.shadowless() && state.radiosity.depth == 0 && !backside;
             if (m.phong > 0.0 && highlights) {
                 const glm::dvec3 reflected = h.d - 2.0 * glm::dot(h.d, n) * n;
                 const double c = glm::dot(reflected, known.to_light);

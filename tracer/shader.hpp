@@ -239,9 +239,12 @@ class Shader {
     // light: toward its grid point for this sample), per channel: 1 when
     // nothing is in the way, 0 when something opaque is, else the product
     // of the filters of the surfaces crossed.
+    // (`behind`: the light shows through from behind the surface,
+    // diffuse's second value: the ray leaves from that side.)
     [[gnu::always_inline]] inline glm::dvec3 shadow_filter(std::size_t index, const Hit& h,
                                                            const ShadingScratch::Light& known,
-                                                           ThreadState& state) const;
+                                                           ThreadState& state,
+                                                           bool behind = false) const;
     // POV-Ray 3.7's filtered shadows (TracePointLightShadowRay,
     // ComputeShadowColour): along a shadow ray that nothing opaque blocks,
     // each surface of an object that casts shadows, nearest first, filters

@@ -207,7 +207,8 @@ void Shader::trace_photon(const Ray4& ray, const glm::dvec3& colour, double weig
 
 glm::dvec3 Shader::photon_light(const Hit& h, const runtime::MaterialSample& m, const glm::dvec3& n,
                                 double opaque, PhotonGather& gather, ThreadState& state) const {
-    if (m.diffuse == 0.0 && m.specular == 0.0 && m.phong == 0.0) return glm::dvec3(0.0);
+    if (m.diffuse == 0.0 && m.diffuse_back == 0.0 && m.specular == 0.0 && m.phong == 0.0)
+        return glm::dvec3(0.0);
     // Gathered once for the hit, about the first layer's normal that asks
     // (POV-Ray's gatherer, kept for the hit's layers).
     if (!gather.done) {
@@ -216,7 +217,6 @@ glm::dvec3 Shader::photon_light(const Hit& h, const runtime::MaterialSample& m, 
         gather.radius = photon_map_->gather(h.point, n, gather.photons);
     }
     if (gather.photons.empty() || !(gather.radius > 0.0)) return glm::dvec3(0.0);
-    const bool highlights = state.radiosity.depth == 0;
     glm::dvec3 sum(0.0);
     for (const Photon* photon : gather.photons) {
         const glm::dvec3 from(photon->from);
@@ -226,11 +226,15 @@ glm::dvec3 Shader::photon_light(const Hit& h, const runtime::MaterialSample& m, 
         const glm::dvec3 arriving = glm::dvec3(photon->colour) * compensation;
         double cosine = glm::dot(n, from);
         if (h.double_lit) cosine = std::fabs(cosine);
-        if (cosine < kEpsilon) continue;
+        // (From behind the surface: diffuse's second value, no highlights.)
+        const bool backside = cosine < kEpsilon;
+        if (backside && m.diffuse_back == 0.0) continue;
+        if (backside) cosine = std::fabs(cosine);
         const double shade = m.brilliance == 1.0 ? cosine : std::pow(cosine, m.brilliance);
-        glm::dvec3 lit = m.diffuse * shade * opaque * m.colour;
+        glm::dvec3 lit = (backside ? m.diffuse_back : m.diffuse) * shade * opaque * m.colour;
         const glm::dvec3 highlight =
             m.metallic > 0.0 ? metallic_tint(m.metallic, cosine, m.colour) : glm::dvec3(1.0);
+        const bool highlights = state.radiosity.depth == 0 && !backside;
         if (m.phong > 0.0 && highlights) {
             const glm::dvec3 reflected = h.d - 2.0 * glm::dot(h.d, n) * n;
             const double c = glm::dot(reflected, from);

@@ -425,9 +425,14 @@ template <>
 struct action<g::finish_setting> {
     template <typename ActionInput>
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.values.pop();
+        std::vector<Value> given = st.values.close_frame();
         const std::string name = st.values.pop_name();
         auto& f = st.blocks.edit<runtime::Finish>(in.position(), name.c_str());
+        if (given.size() > 1) {
+            if (name != "diffuse") throw ValueError("a finish's " + name + " takes one value");
+            f.diffuse_back = to_float(given[1], "diffuse's second value");
+        }
+        Value v = std::move(given.at(0));
         if (name == "ambient" || name == "emission") {
             // A colour (ambient rgb <..>) or a float, grey (POV-Ray 3.7's
             // Parse_Finish reads both as colours).

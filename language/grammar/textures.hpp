@@ -357,7 +357,9 @@ struct finish_setting_name : p::sor<TAO_PEGTL_KEYWORD("ambient"), TAO_PEGTL_KEYW
                                     TAO_PEGTL_KEYWORD("specular"), TAO_PEGTL_KEYWORD("roughness"),
                                     TAO_PEGTL_KEYWORD("emission"), TAO_PEGTL_KEYWORD("crand")> {};
 struct finish_setting_value : p::seq<expression> {};
-struct finish_setting : p::seq<finish_setting_name, ws, p::must<finish_setting_value>> {};
+// (diffuse A, B: B lights from behind, POV-Ray 3.7's DiffuseBack.)
+struct finish_setting : p::seq<finish_setting_name, ws, frame_open, p::must<finish_setting_value>,
+                               p::opt<comma, p::must<finish_setting_value>>> {};
 struct reflection_value : p::seq<expression> {};
 // metallic [AMOUNT]: POV-Ray's Allow_Float(1.0).
 struct metallic_amount : p::seq<p::not_at<p::one<'<'>>, expression> {};

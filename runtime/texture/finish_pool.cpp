@@ -9,7 +9,7 @@ namespace {
 
 // A member added to Finish must be added to key_of too, or finishes that
 // differ in it would be shared.
-static_assert(sizeof(void*) != 8 || sizeof(Finish) == 280, "Finish changed: update key_of");
+static_assert(sizeof(void*) != 8 || sizeof(Finish) == 288, "Finish changed: update key_of");
 
 // The key of a pooled finish, or nothing: every amount's bits (so 0.0 and
 // -0.0 differ, and no NaN is equal to itself by accident) and the flags.

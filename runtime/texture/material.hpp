@@ -89,6 +89,10 @@ struct Finish {
     // (a float is grey).
     std::array<TimeFunction, 3> ambient{0.1, 0.1, 0.1};
     TimeFunction diffuse = 0.6;
+    // diffuse's second value (POV-Ray 3.7's DiffuseBack): how much light
+    // from behind the surface shows through it (a light, radiosity,
+    // photons on the other side), diffusely and without highlights; 0 is none.
+    TimeFunction diffuse_back = 0.0;
     TimeFunction brilliance = 1.0;
     TimeFunction phong = 0.0;
     TimeFunction phong_size = 40.0;
@@ -129,11 +133,12 @@ struct Finish {
         const TimeFunction* value;
         const char* name;
     };
-    std::array<Scalar, 20> scalars() const {
+    std::array<Scalar, 21> scalars() const {
         return {{{&ambient[0], "ambient"},
                  {&ambient[1], "ambient"},
                  {&ambient[2], "ambient"},
                  {&diffuse, "diffuse"},
+                 {&diffuse_back, "diffuse's second value"},
                  {&brilliance, "brilliance"},
                  {&phong, "phong"},
                  {&phong_size, "phong_size"},

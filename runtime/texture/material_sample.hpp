@@ -13,6 +13,7 @@ struct MaterialSample {
     // POV-Ray 3.7's finish, at the event's time.
     glm::dvec3 ambient{0.1};  // a colour, as emission
     double diffuse = 0.6;
+    double diffuse_back = 0.0;  // light from behind the surface (Finish::diffuse_back)
     double brilliance = 1.0;
     double phong = 0.0;
     double phong_size = 40.0;

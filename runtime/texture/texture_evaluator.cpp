@@ -61,6 +61,7 @@ std::shared_ptr<const TextureEvaluator::CompiledFinish> TextureEvaluator::compil
             {CompiledScalar(f.ambient[0]), CompiledScalar(f.ambient[1]),
              CompiledScalar(f.ambient[2])},
             CompiledScalar(f.diffuse),
+            CompiledScalar(f.diffuse_back),
             CompiledScalar(f.brilliance),
             CompiledScalar(f.phong),
             CompiledScalar(f.phong_size),
@@ -83,7 +84,7 @@ std::shared_ptr<const TextureEvaluator::CompiledFinish> TextureEvaluator::compil
             f.reflection_fresnel,
             f.conserve_energy});
     };
-    using Key = std::array<double, 29>;
+    using Key = std::array<double, 30>;
     Key key{};
     std::size_t n = 0;
     const auto keep = [&](const TimeFunction& value) {
@@ -621,6 +622,7 @@ void TextureEvaluator::CompiledLayer::fill(MaterialSample& m, const glm::dvec3& 
     const CompiledFinish& f = *finish;
     m.ambient = {f.ambient[0].at(t), f.ambient[1].at(t), f.ambient[2].at(t)};
     m.diffuse = f.diffuse.at(t);
+    m.diffuse_back = f.diffuse_back.at(t);
     m.brilliance = f.brilliance.at(t);
     m.phong = f.phong.at(t);
     m.phong_size = f.phong_size.at(t);

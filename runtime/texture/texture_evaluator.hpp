@@ -150,7 +150,7 @@ class TextureEvaluator {
     // that differ in colour keeps one), so an object pays a pointer for it.
     struct CompiledFinish {
         std::array<CompiledScalar, 3> ambient;
-        CompiledScalar diffuse, brilliance, phong, phong_size, specular, roughness;
+        CompiledScalar diffuse, diffuse_back, brilliance, phong, phong_size, specular, roughness;
         std::array<CompiledScalar, 3> emission;
         CompiledScalar crand, metallic, reflection_metallic, ior;
         std::array<CompiledScalar, 3> reflection;

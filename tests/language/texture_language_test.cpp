@@ -600,3 +600,18 @@ sphere { 0, 1 pigment { waves } }
     CHECK(low.warnings[0].find("below 1") != std::string::npos);
     CHECK(error_of("global_settings { number_of_waves 5000 }").places().front().line == 1);
 }
+
+TEST_CASE("diffuse takes a second value, the light from behind (DiffuseBack)",
+          "[language][texture]") {
+    // POV-Ray 3.7's Parse_Finish: diffuse A [, B]; B lights the surface
+    // from behind (tests/tracer/pov_reference_test.cpp renders it).
+    const auto scene = hexant::test::scene_of(
+        "sphere { 0, 1 finish { diffuse 0.7, 0.2 } }\nsphere { 0, 1 finish { diffuse 0.5 } }");
+    REQUIRE(scene.objects.at(0)->texture);
+    CHECK(scene.objects[0]->texture->finish.get().diffuse.constant() == 0.7);
+    CHECK(scene.objects[0]->texture->finish.get().diffuse_back.constant() == 0.2);
+    CHECK(scene.objects.at(1)->texture->finish.get().diffuse_back.constant() == 0.0);
+    // Only diffuse has a second value.
+    hexant::test::check_error_at("sphere { 0, 1\nfinish { phong 0.5, 0.2 } }", "takes one value",
+                                 2);
+}
