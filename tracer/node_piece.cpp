@@ -115,11 +115,14 @@ bool fit_piece_node(PieceNode& node, const runtime::Interval& time,
     for (std::size_t i = 0; i < n; ++i)
         for (int j = 0; j < kKnots; ++j) {
             if (knots[i].lo[j][0] == kInf) continue;
+            // (A knot next to a piece the object is absent from may be
+            // inverted, its lines met beyond where they hold anything: the
+            // frame holds both ends whatever their order.)
             for (int k = 0; k < 3; ++k) {
                 knots[i].lo[j][k] -= margin[k];
                 knots[i].hi[j][k] += margin[k];
-                lo_of[j][k] = std::min(lo_of[j][k], knots[i].lo[j][k]);
-                hi_of[j][k] = std::max(hi_of[j][k], knots[i].hi[j][k]);
+                lo_of[j][k] = std::min({lo_of[j][k], knots[i].lo[j][k], knots[i].hi[j][k]});
+                hi_of[j][k] = std::max({hi_of[j][k], knots[i].lo[j][k], knots[i].hi[j][k]});
             }
         }
     node.children = std::uint32_t(n);

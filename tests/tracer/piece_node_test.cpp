@@ -155,6 +155,41 @@ TEST_CASE("a piece node's box at every instant holds what its children's bins ho
     CHECK(checked > 1000000);
 }
 
+TEST_CASE("a piece node's knot beside an empty piece may be inverted, and is kept",
+          "[tracer][bins][piece]") {
+    // From the swarm under the paper's criterion (a sphere leaving a cell
+    // in its last bin): over piece 3 the object is only in bin 7; its
+    // lower line, from the edges, rises back to knot 3 above its upper
+    // side, the bin's box. The knot is inverted and alone at knot 3: the
+    // frame there must still hold it (it held nothing, and the lower end
+    // decoded to 0, far above the sphere: a lost hit).
+    TimeBins bins = TimeBins::empty(kBins);
+    for (int a = 0; a < 3; ++a) {
+        for (int e = 0; e <= 6; ++e)
+            bins.edge[e].lo[a] = -7.94670868f, bins.edge[e].hi[a] = -8.13349724f;
+        bins.edge[7].lo[a] = -8.30022621f;
+        bins.edge[7].hi[a] = -7.94670868f;
+        bins.edge[8].lo[a] = -8.64085293f;
+        bins.edge[8].hi[a] = -8.2873354f;
+        bins.bin[7].lo[a] = -8.64085293f;
+        bins.bin[7].hi[a] = -8.13350391f;
+    }
+    REQUIRE(bins.lines());
+    const std::vector<const TimeBins*> of{&bins};
+    PieceNode node;
+    REQUIRE(fit_piece_node(node, Interval(0.0, 0.03125), of));
+    for (int s = 0; s <= 100; ++s) {
+        const double w = s / 100.0;
+        const BinBox inner = held(bins, 7, w);
+        if (inner.is_empty()) continue;
+        const PieceBox box = piece_box_at(node, 0, 0.03125 * (7.0 + w) / 8.0);
+        for (int a = 0; a < 3; ++a) {
+            CHECK(box.lo[a] <= inner.lo[a]);
+            CHECK(inner.hi[a] <= box.hi[a]);
+        }
+    }
+}
+
 TEST_CASE("a piece node follows a turn that one line over its time cannot",
           "[tracer][bins][piece]") {
     // A quarter turn of radius 10 over the node's time, of half-size 0.1,
