@@ -56,6 +56,7 @@ const Row kRows[] = {
      0},
     {"box nodes", [](const Counters& c) { return double(c.box_nodes); }, 0},
     {"linear-motion nodes", [](const Counters& c) { return double(c.motion_nodes); }, 0},
+    {"piecewise-motion nodes", [](const Counters& c) { return double(c.piece_nodes); }, 0},
     {"12-slab nodes", [](const Counters& c) { return double(c.slab_nodes); }, 0},
     {"time nodes", [](const Counters& c) { return double(c.time_nodes); }, 0},
     {"object references", [](const Counters& c) { return double(c.object_refs); }, 0},

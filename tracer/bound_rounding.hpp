@@ -28,6 +28,9 @@
 namespace hexant::tracer {
 
 inline constexpr double kEvaluationMargin = 0x1p-21;
+// A PieceNode's knots move out by this much of the largest knot's
+// magnitude along their axis (tracer/node_piece.cpp argues it).
+inline constexpr double kPieceMargin = 0x1p-19;
 
 // The next float above f (f not NaN, not +inf), and below (not -inf): a
 // step of the bit pattern, inline where std::nextafter is a library call

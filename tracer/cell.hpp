@@ -36,6 +36,7 @@ enum class RefKind : std::uint8_t {
     TimeNode = 4,
     Object = 5,   // an index into the bounded objects
     Pending = 6,  // a cell not built yet (lazy build): a PendingCell*
+    PieceNode = 7,
 };
 
 // A child: a tagged pointer to a node (nodes are 64-byte aligned), or an
@@ -101,6 +102,28 @@ struct alignas(64) SlabNode {
     double t0, t1;
     std::uint32_t children;
 };
+
+// A node at the bottom of a leaf whose children are objects that move: each
+// object's bound over the node's time is piecewise linear, a line over each
+// of kPieces equal pieces of the time joined at kPieces + 1 knots (issue 43:
+// one line over a leaf's quarter frame missed a swarm sphere's arc by up to
+// three times its radius; a line over a quarter of that by a sixteenth as
+// much). A ray at instant t takes its piece j and its place v in it; a side
+// there is the line between knots j and j + 1. The knots are kept in 8 bits
+// of a frame per knot and axis (the values base + q * step, lower ends
+// rounded down, upper up), so that the node is smaller than a MotionNode
+// (448 bytes against 512); node_piece.cpp argues the rounding.
+struct alignas(64) PieceNode {
+    static constexpr int kPieces = 4;
+    static constexpr int kKnots = kPieces + 1;
+    NodeRef child[kNodeWidth];
+    double t0, t1, inverse_span;  // u = (t - t0) * inverse_span, clamped to [0, 1]
+    float base[kKnots][3];        // per knot and axis, the frame's bottom
+    float step[3];                // per axis, the frames' step
+    std::uint32_t children;
+    std::uint8_t lo[kKnots][3][kNodeWidth], hi[kKnots][3][kNodeWidth];
+};
+static_assert(sizeof(PieceNode) == 448);
 
 // A cell whose children halve its time: child[0] holds [t0, split],
 // child[1] [split, t1]. A ray at one instant goes straight to its half

@@ -33,6 +33,7 @@ struct Counters {
     // nodes, and references to objects at the bottom (an object in several
     // cells counts once in each).
     std::uint64_t box_nodes = 0, motion_nodes = 0, slab_nodes = 0, time_nodes = 0;
+    std::uint64_t piece_nodes = 0;  // bottom nodes whose objects' bounds are piecewise linear
     std::uint64_t object_refs = 0;
     std::uint64_t bound_tests = 0;   // ray / bound tests (children's bounds in the nodes tested)
     std::uint64_t object_tests = 0;  // ray / object intersections (at the ray's time)
@@ -81,6 +82,7 @@ struct Counters {
         node_tests += o.node_tests;
         box_nodes += o.box_nodes;
         motion_nodes += o.motion_nodes;
+        piece_nodes += o.piece_nodes;
         slab_nodes += o.slab_nodes;
         time_nodes += o.time_nodes;
         object_refs += o.object_refs;

@@ -241,6 +241,12 @@ class Hierarchy::Builder {
                         const std::vector<LinearBox>& fits) const;
     NodeRef slab_node(NodeArena& arena, const Interval& time,
                       const std::vector<Child>& children) const;
+    // A leaf's bottom node over objects, and its piecewise-linear style
+    // (node_piece.cpp).
+    NodeRef object_node(NodeArena& arena, const Interval& time, const std::vector<Child>& children,
+                        Counters& counters) const;
+    NodeRef piece_node(NodeArena& arena, const Interval& time,
+                       const std::vector<Child>& children) const;
 
     const Hierarchy& h_;
     const SweptObjects& objects_;

@@ -29,6 +29,9 @@ void Hierarchy::count_full(Counters& counters) const {
             case RefKind::SlabNode:
                 for (auto& c : ref.as<SlabNode>()->child) self(self, &c);
                 break;
+            case RefKind::PieceNode:
+                for (auto& c : ref.as<PieceNode>()->child) self(self, &c);
+                break;
             case RefKind::TimeNode:
                 for (auto& c : ref.as<TimeNode>()->child) self(self, &c);
                 break;

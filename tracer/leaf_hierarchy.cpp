@@ -281,7 +281,7 @@ Child Hierarchy::Builder::group_range(const Leaf& leaf, std::vector<LeafItem>& i
             merged.bins.add(members.back().bins);
         }
         if (members.size() == 1 && !top) return members.front();
-        merged.ref = bound_node(leaf.arena, time, members, counters);
+        merged.ref = object_node(leaf.arena, time, members, counters);
         return merged;
     }
     struct Cluster {

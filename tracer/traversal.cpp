@@ -170,6 +170,9 @@ class DoubleWalk {
                 case RefKind::SlabNode:
                     push(ref.as<SlabNode>(), stack);
                     break;
+                case RefKind::PieceNode:
+                    push(ref.as<PieceNode>(), stack);
+                    break;
                 default:
                     break;
             }
@@ -202,6 +205,19 @@ class DoubleWalk {
             b.lo[k] = std::min(lo, n.dlo[k][i] == 0.0f ? lo : lo + double(n.dlo[k][i]));
             b.hi[k] = std::max(hi, n.dhi[k][i] == 0.0f ? hi : hi + double(n.dhi[k][i]));
         }
+        return b;
+    }
+
+    static Box4 box_of(const PieceNode& n, int i) {
+        // The lines' extremes lie at their knots; each decoded knot (exact
+        // in double but for a rounding of 2^-53 of it) lies outside the
+        // fitted line by the node's margin.
+        Box4 b;
+        for (int k = 0; k < 3; ++k)
+            for (int j = 0; j < PieceNode::kKnots; ++j) {
+                b.lo[k] = std::min(b.lo[k], n.base[j][k] + double(n.lo[j][k][i]) * n.step[k]);
+                b.hi[k] = std::max(b.hi[k], n.base[j][k] + double(n.hi[j][k][i]) * n.step[k]);
+            }
         return b;
     }
 

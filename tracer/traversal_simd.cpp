@@ -138,6 +138,9 @@ class Walk {
                 case RefKind::SlabNode:
                     descend = slabs(ref.as<SlabNode>(), slot, stack, top);
                     break;
+                case RefKind::PieceNode:
+                    descend = pieces(ref.as<PieceNode>(), slot, stack, top);
+                    break;
                 default:
                     break;
             }
@@ -210,6 +213,40 @@ class Walk {
                 hi = hn::MulAdd(u, hn::Load(d, node->dhi[j] + i), hn::Load(d, node->hi[j] + i));
             },
             enter);
+        return order(node, mask, enter, slot, stack, top);
+    }
+
+    // The ray's piece j of the node's time and its place v in it: each
+    // side the line between knots j and j + 1, decoded from 8 bits of the
+    // knots' frames (node_piece.cpp argues the rounding). Slots past the
+    // children are masked off.
+    bool pieces(PieceNode* node, NodeRef*& slot, Entry* stack, int& top) {
+        count(node->children);
+        const D d;
+        const hn::Rebind<std::uint8_t, D> d8;
+        const hn::Rebind<std::int32_t, D> di;
+        const double u = std::clamp((r_.time - node->t0) * node->inverse_span, 0.0, 1.0);
+        const double s = u * PieceNode::kPieces;
+        const int j = std::min(int(s), PieceNode::kPieces - 1);
+        const V v = hn::Set(d, static_cast<float>(s - j));
+        const auto knot = [&](const std::uint8_t* q, const V& step, const V& base) {
+            return hn::MulAdd(hn::ConvertTo(d, hn::PromoteTo(di, hn::LoadU(d8, q))), step, base);
+        };
+        alignas(32) float enter[kNodeWidth];
+        unsigned mask = TestChildren(
+            r_, 3, r_.epsilon_box, s_min_, best_f_,
+            [&](int a, std::size_t i, V& lo, V& hi) {
+                const V step = hn::Set(d, node->step[a]);
+                const V b0 = hn::Set(d, node->base[j][a]), b1 = hn::Set(d, node->base[j + 1][a]);
+                const V lo0 = knot(node->lo[j][a] + i, step, b0);
+                const V lo1 = knot(node->lo[j + 1][a] + i, step, b1);
+                const V hi0 = knot(node->hi[j][a] + i, step, b0);
+                const V hi1 = knot(node->hi[j + 1][a] + i, step, b1);
+                lo = hn::MulAdd(v, hn::Sub(lo1, lo0), lo0);
+                hi = hn::MulAdd(v, hn::Sub(hi1, hi0), hi0);
+            },
+            enter);
+        mask &= (1u << node->children) - 1u;
         return order(node, mask, enter, slot, stack, top);
     }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "runtime/bounds/swept_bound.hpp"
@@ -324,7 +325,11 @@ bool TimeSweep::boxes_over_dyadic(int level, std::uint64_t first, std::size_t co
         for (std::size_t k = 0; k < count; ++k) out[k] = box_over_dyadic(level, first + k);
     }
     const bool want_edges = edge_lo != nullptr && edge_hi != nullptr;
-    if (!refines_ || level <= depth_ || empty() || count == 0)
+    // (Chords the pricing left out are made for bounds, which ask for
+    // edges; the cost criterion, which asks for boxes, prices from the
+    // cache as before.)
+    const bool refine = refines_ || (finer_chords_ && want_edges);
+    if (!refine || level <= depth_ || empty() || count == 0)
         return want_edges && cached_edges(level, first, count, edge_lo, edge_hi);
     // The chord's error over one piece of this level (its length rounded up).
     const double length = interval_detail::next_up(dyadic_time(time_, level, first + 1) -
@@ -549,19 +554,16 @@ TimeSweep TimeSweep::of(const IntelligentObject& object, const Interval& time, i
     const Box4 whole_box = object.box_over(time);
     std::vector<MovingBox> level{MovingBox::constant(whole_box, time)};
     int depth = 0;
+    std::optional<IntelligentObject::ChordBound> chord;
+    double size = 0.0;
     if (object.moves() && time.lo < time.hi && max_depth > 0 && !whole_box.is_empty()) {
         const double width = time.hi - time.lo;
-        const double size = std::max(largest_extent(object.placed_box_at(time.mid())), 1e-300);
-        if (const auto chord = object.chord_bound_over(time)) {
+        size = std::max(largest_extent(object.placed_box_at(time.mid())), 1e-300);
+        chord = object.chord_bound_over(time);
+        if (chord) {
             bool capped = false;
             depth = chord_pieces(object, time, max_depth, pricing, *chord, size, level, capped);
-            if (capped) {
-                sweep.refines_ = true;
-                for (int k = 0; k < 3; ++k) {
-                    sweep.acceleration_[k] = float_up(chord->acceleration[k]);
-                    sweep.margin_[k] = float_up(chord->margin[k]);
-                }
-            }
+            if (capped) sweep.refines_ = true;
         } else
             depth = box_pieces(object, time, max_depth, size, level);
         // Then back up, merging pairs, while the coarser pieces are already
@@ -596,11 +598,24 @@ TimeSweep TimeSweep::of(const IntelligentObject& object, const Interval& time, i
         }
     }
     sweep.depth_ = std::uint8_t(depth);
+    // Chords finer than the pieces kept, where those are looser than the
+    // growth allows (the pricing stopped them, or merged them back).
+    if (chord && !sweep.refines_) {
+        for (const MovingBox& b : level)
+            if (largest_instant_extent(b) > kSweptBoundGrowth * size) sweep.finer_chords_ = true;
+    }
+    if (chord && (sweep.refines_ || sweep.finer_chords_)) {
+        for (int k = 0; k < 3; ++k) {
+            sweep.acceleration_[k] = float_up(chord->acceleration[k]);
+            sweep.margin_[k] = float_up(chord->margin[k]);
+        }
+    }
     Box4 whole = Box4::empty();
     for (const MovingBox& b : level) whole.extend(b.hull());
     if (whole.is_empty()) {
         sweep.depth_ = 0;
         sweep.refines_ = false;
+        sweep.finer_chords_ = false;
         return sweep;
     }
     sweep.lo_ = glm::dvec3(whole.lo);

@@ -98,6 +98,7 @@ class TimeSweep {
             depth_ = std::exchange(other.depth_, std::uint8_t(0));
             layout_ = std::exchange(other.layout_, Layout::Whole);
             refines_ = std::exchange(other.refines_, false);
+            finer_chords_ = std::exchange(other.finer_chords_, false);
         }
         return *this;
     }
@@ -128,7 +129,8 @@ class TimeSweep {
 
     // As box_over_dyadic for pieces first .. first + count - 1 of level
     // `level`, into out[0 .. count). Where the level is finer than the
-    // sweep's pieces and the sweep was made by chords, each box is refined
+    // sweep's pieces and the sweep refines (refines(), or refines_chords()
+    // where edges are asked for), each box is refined
     // from `object` (the object the sweep is of): the chord over that finer
     // piece, from placed boxes at its ends (shared by neighbours, count + 1
     // placements), clipped to the cached piece's part. The paper's star
@@ -146,8 +148,18 @@ class TimeSweep {
     bool boxes_over_dyadic(int level, std::uint64_t first, std::size_t count,
                            const IntelligentObject& object, Box4* out,
                            glm::dvec3* edge_lo = nullptr, glm::dvec3* edge_hi = nullptr) const;
-    // Can boxes_over_dyadic refine below the cached pieces?
+    // Was the sweep kept coarser than its chords could be by the depth
+    // limit (memory), so that finer pieces would still pay? The cost
+    // criterion looks further down such sweeps' time.
     bool refines() const { return refines_; }
+    // Does boxes_over_dyadic refine below the cached pieces when asked for
+    // edges (a node's bounds)? Where refines(), and also where the pricing
+    // stopped the sweep, or merged it back, before its chords were within
+    // the growth (issue 43: the swarm at 10^4 spheres kept one to four
+    // chords a frame, and a leaf's bounds inherited chords 1.8 times a
+    // sphere's size; a leaf's bins are made anyway, at nine placements an
+    // object).
+    bool refines_chords() const { return refines_ || finer_chords_; }
 
     // Piece i's time interval, its moving box, and the box over all of it
     // (empty if the object has no surface then).
@@ -191,6 +203,7 @@ class TimeSweep {
     std::uint8_t depth_ = 0;
     Layout layout_ = Layout::Whole;
     bool refines_ = false;
+    bool finer_chords_ = false;
 };
 
 }  // namespace hexant::runtime

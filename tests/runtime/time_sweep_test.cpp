@@ -266,6 +266,69 @@ TEST_CASE("a sweep the depth limit kept coarse refines finer pieces from the obj
     }
 }
 
+TEST_CASE("a sweep the pricing kept coarse refines its edges, not its priced boxes", "[sweep]") {
+    // Issue 43: the pricing stops a swarm sphere's chords at a few a frame,
+    // looser than the growth; a node's bounds (which ask for edges) get
+    // chords from the object, the cost criterion (boxes alone) the cache.
+    const Parsed parsed =
+        parse("sphere { <5, 0, 0>, 0.1 rotate y * 1440 * clock rotate <30, 0, 20> }\n");
+    const rt::IntelligentObject& object = *parsed.objects.front();
+    const rt::ObjectRecord& record = *parsed.scene.objects.front();
+    rt::SweepPricing pricing;
+    pricing.ray_density = 1e-3;  // few rays: finer pieces do not pay for the sweep
+    const rt::TimeSweep sweep = rt::TimeSweep::of(object, rt::Interval(0.0, 1.0), 12, pricing);
+    REQUIRE(sweep.depth() < 6);
+    CHECK_FALSE(sweep.refines());
+    CHECK(sweep.refines_chords());
+    // One that reached the growth has nothing finer to give.
+    CHECK_FALSE(rt::TimeSweep::of(object, rt::Interval(0.0, 1.0), 12).refines_chords());
+    Random random(43);
+    constexpr int kLevel = 10;
+    constexpr std::size_t kCount = 8;
+    for (int trial = 0; trial < 50; ++trial) {
+        const std::uint64_t first = std::uint64_t(random.integer(0, (1 << kLevel) - int(kCount)));
+        std::array<rt::Box4, kCount> boxes, priced;
+        std::array<glm::dvec3, kCount + 1> lo, hi;
+        REQUIRE(sweep.boxes_over_dyadic(kLevel, first, kCount, object, boxes.data(), lo.data(),
+                                        hi.data()));
+        sweep.boxes_over_dyadic(kLevel, first, kCount, object, priced.data());
+        for (std::size_t k = 0; k < kCount; ++k) {
+            // The cost criterion's answer is the cache's, as before.
+            const rt::Interval t(rt::dyadic_time(sweep.time(), kLevel, first + k),
+                                 rt::dyadic_time(sweep.time(), kLevel, first + k + 1));
+            const rt::Box4 from_cache =
+                sweep.moving_piece(std::size_t((first + k) >> (kLevel - sweep.depth())))
+                    .box_over(t);
+            for (int a = 0; a < 3; ++a) {
+                CHECK(priced[k].lo[a] == from_cache.lo[a]);
+                CHECK(priced[k].hi[a] == from_cache.hi[a]);
+            }
+        }
+        // The edges: about the sphere's size (0.2) at each cut.
+        for (std::size_t j = 0; j <= kCount; ++j)
+            for (int a = 0; a < 3; ++a) CHECK(hi[j][a] - lo[j][a] < 0.21);
+        // And conservative: at every instant of piece k the sphere lies
+        // between the lines from edge k to edge k + 1, and in its box.
+        for (std::size_t k = 0; k < kCount; ++k) {
+            for (int n = 0; n < 400; ++n) {
+                const double t0 = boxes[k].lo.w, t1 = boxes[k].hi.w;
+                const double t = n == 0 ? t0 : n == 1 ? t1 : random.uniform(t0, t1);
+                const double u = t1 > t0 ? (t - t0) / (t1 - t0) : 0.0;
+                rt::Box4 line;
+                for (int a = 0; a < 3; ++a) {
+                    line.lo[a] = lo[k][a] + u * (lo[k + 1][a] - lo[k][a]);
+                    line.hi[a] = hi[k][a] + u * (hi[k + 1][a] - hi[k][a]);
+                }
+                const rt::Event e = sample_surface_event(record, t, random);
+                if (!holds(line, e) || !holds(boxes[k], e)) {
+                    INFO("t " << t << " piece " << first + k);
+                    FAIL("a surface event outside a refined edge's line");
+                }
+            }
+        }
+    }
+}
+
 TEST_CASE("a sweep keeps 12 bytes a piece: chords share their ends, still pieces their sides",
           "[sweep]") {
     const std::size_t header = sizeof(rt::TimeSweep);
