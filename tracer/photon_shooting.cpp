@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <map>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 #include <glm/geometric.hpp>
 #include <tbb/parallel_for.h>
@@ -15,6 +17,8 @@ namespace {
 
 constexpr double kEpsilon = 1.0e-10;  // POV-Ray's EPSILON
 constexpr double kPi = std::numbers::pi;
+// The most photons a frame may shoot (a bound, counted before shooting).
+constexpr double kMostPhotons = 2.0e7;
 
 // A target: its members' box over the shutter, its spacing factor and its
 // own photon flags (its first member's: a group's are its members').
@@ -171,6 +175,24 @@ PhotonMap shoot_photons(const Shader& shader,
             c.aim.distance = c.aim.radius;
         }
     }
+
+    // (A bound on the photons the rings shoot, refused above kMostPhotons:
+    // a spacing far below the scene's scale would take the machine's
+    // memory, 40 bytes a photon kept, before it took its time.)
+    double most = 0.0;
+    for (const Combo& c : combos) {
+        if (!(c.spread > 0.0) || !(c.dtheta > 0.0)) continue;
+        const double rings = std::ceil(c.maxtheta / c.dtheta);
+        const double across = c.parallel ? c.maxtheta : std::sin(std::min(c.maxtheta, kPi / 2.0));
+        most += rings * (2.0 * kPi * across / c.dtheta + 1.0);
+    }
+    if (!(most <= kMostPhotons))
+        throw std::runtime_error("photons: the spacing " + std::to_string(spacing) +
+                                 " would shoot about " +
+                                 std::to_string(static_cast<long long>(std::min(most, 1e18))) +
+                                 " photons, more than hexant's limit of " +
+                                 std::to_string(static_cast<long long>(kMostPhotons)) +
+                                 "; raise photons' spacing (or lower its count)");
 
     // Rings in batches, each ring's photons in its own list, joined in
     // order; autostop checked in ring order after each batch (at most a

@@ -3,7 +3,9 @@
 // photons do not refract, an object that collects none (the scene and the
 // commands that made POV-Ray's images: pov_reference/README.md).
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <string>
 
 #include <catch2/catch.hpp>
@@ -126,4 +128,33 @@ TEST_CASE("a moving glass's caustic blurs across the shutter", "[tracer][photons
     INFO("lit pixels: shutter closed " << still << ", open " << open);
     CHECK(still > 60);
     CHECK(open > still * 5 / 4);
+}
+
+TEST_CASE("a spacing that would shoot too many photons is refused", "[tracer][photons]") {
+    // 10^-6 at a ball of radius 1: about 3 x 10^12 photons, which would
+    // take the machine's memory; refused before any is shot, naming the
+    // setting, with a non-zero exit and no image.
+    const fs::path scene = fs::temp_directory_path() / "hexant_photon_limit.pov";
+    const fs::path out = fs::temp_directory_path() / "hexant_photon_limit.png";
+    {
+        std::ofstream text(scene);
+        text << "global_settings { photons { spacing 0.000001 } }\n"
+                "camera { location -5 * z look_at 0 }\n"
+                "light_source { <0, 5, -5> rgb 1 }\n"
+                "sphere { 0, 1 pigment { rgbf 1 } interior { ior 1.5 }\n"
+                "  photons { target refraction on } }\n";
+    }
+    fs::remove(out);
+    const std::string command = std::string(HEXANT_BINARY) + " render " + scene.string() +
+                                " -W 8 -H 6 -o " + out.string() + " 2>&1";
+    FILE* pipe = popen(command.c_str(), "r");
+    REQUIRE(pipe != nullptr);
+    std::string said;
+    char buffer[256];
+    while (fgets(buffer, sizeof buffer, pipe)) said += buffer;
+    CHECK(pclose(pipe) != 0);
+    INFO(said);
+    CHECK(said.find("photons: the spacing") != std::string::npos);
+    CHECK(said.find("raise photons' spacing") != std::string::npos);
+    CHECK_FALSE(fs::exists(out));
 }
