@@ -146,12 +146,12 @@ double PhotonMap::gather_within(const glm::dvec3& point, const glm::dvec3* norma
     return full ? std::sqrt(reach) : size;
 }
 
-double PhotonMap::gather(const glm::dvec3& point, const glm::dvec3& normal,
-                         std::vector<const Photon*>& out) const {
-    out.clear();
+double PhotonMap::gather(const glm::dvec3& point, const glm::dvec3& normal, Found& heap) const {
+    heap.clear();
     if (photons_.empty() || !(radius_ > 0.0)) return 0.0;
     const int most = std::max(settings_.gather_max, 1);
-    std::vector<std::pair<double, const Photon*>> heap, wider;
+    // (The widened gather's own list, the thread's: a gather calls none.)
+    thread_local Found wider;
     double radius = gather_within(point, &normal, radius_, most, heap);
     // POV-Ray's gatherPhotonsAdaptive with its two steps: too few found,
     // look once more three times as wide, and keep that when the density
@@ -169,8 +169,6 @@ double PhotonMap::gather(const glm::dvec3& point, const glm::dvec3& normal,
             radius = r;
         }
     }
-    out.reserve(heap.size());
-    for (const auto& [d2, photon] : heap) out.push_back(photon);
     return radius;
 }
 

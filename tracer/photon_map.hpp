@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -52,10 +53,12 @@ class PhotonMap {
     // distance times 1 + 16 |normal . offset|, POV-Ray's flattening), and
     // where fewer than gather_min are found, once more within three times
     // the radius if the density holds (expand_thresholds). `out` receives
-    // them; returns the radius their estimate divides by (the farthest
-    // kept's distance when gather_max were kept, else the search radius).
-    double gather(const glm::dvec3& point, const glm::dvec3& normal,
-                  std::vector<const Photon*>& out) const;
+    // them with their stretched squared distances, in no order (it keeps
+    // its capacity: a caller reusing it allocates nothing once warm);
+    // returns the radius their estimate divides by (the farthest kept's
+    // distance when gather_max were kept, else the search radius).
+    using Found = std::vector<std::pair<double, const Photon*>>;
+    double gather(const glm::dvec3& point, const glm::dvec3& normal, Found& out) const;
 
   private:
     // The nearest `most` within `size` (squared distances, stretched);

@@ -163,12 +163,9 @@ inline glm::dvec3 Shader::shadow_filter(std::size_t index, const Hit& h,
     // from that side, so that the surface does not shadow itself.)
     // (So too for a light that shows through from behind: `behind`.)
     glm::dvec3 start = h.start;
-    if (glm::dot(h.geometric, direction) < 0.0) {
-        if (h.double_lit)
-            start = h.back_start;
-        else if (behind)
-            start = runtime::geometry::offset_ray(h.point, h.p.error, -h.geometric);
-    }
+    if ((h.double_lit || behind) && glm::dot(h.geometric, direction) < 0.0)
+        start = h.double_lit ? h.back_start
+                             : runtime::geometry::offset_ray(h.point, h.p.error, -h.geometric);
     // (Radiosity's gathering rays light by an area light's centre, as
     // POV-Ray's radiosity quality flags have it.)
     if (light.is_area() && state.radiosity.depth == 0) {
@@ -607,21 +604,10 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
             glm::dvec3 lit = intensity * m.colour;
             // POV-Ray's shadowless lights are fill lights: no highlights.
             // A metallic finish tints them by the pigment.
-            const glm::dvec3 highlight =
-                m.metallic > 0.0 ? metallic_tint(m.metallic, cosine, m.colour) : glm::dvec3(1.0);
             // (No highlights on radiosity's gathering rays: POV-Ray leaves
             // them out there, against splotches.)
-            const bool highlights = !light.shadowless() && state.radiosity.depth == 0 && !backside;
-            if (m.phong > 0.0 && highlights) {
-                const glm::dvec3 reflected = h.d - 2.0 * glm::dot(h.d, n) * n;
-                const double c = glm::dot(reflected, known.to_light);
-                if (c > 0.0) lit += m.phong * std::pow(c, m.phong_size) * highlight;
-            }
-            if (m.specular > 0.0 && highlights) {
-                const glm::dvec3 half = glm::normalize(known.to_light - h.d);
-                const double c = glm::dot(half, n);
-                if (c > 0.0) lit += m.specular * std::pow(c, 1.0 / m.roughness) * highlight;
-            }
+            if (!light.shadowless() && state.radiosity.depth == 0 && !backside)
+                lit += highlights(m, h.d, n, known.to_light, cosine);
             if (m.irid > 0.0)
                 lit *= iridescence(m, known.to_light, h.d, n, h.point, irid_wavelength_,
                                    noise_generator_);
@@ -659,20 +645,15 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
         const glm::dvec3& normal = layers[0].normal;
         Inside passed;
         const double eta = h.around.refract(h.interior, top.ior, h.started_inside(), passed);
-        double n = glm::dot(h.d, normal);
-        const glm::dvec3 local = n <= 0.0 ? normal : -normal;
-        n = std::fabs(n);
-        const double k = 1.0 + eta * eta * (n * n - 1.0);
-        total_internal_reflection = k < 0.0;
         // (The same ior on both sides: the ray goes on straight, at the
         // same trace level, as POV-Ray continues it, up to
         // kMostStraightPasses on one path: past that, as a new level, so
         // that clear surfaces in a row cannot take the stack.)
         const bool straight = std::fabs(eta - 1.0) < kEpsilon;
         const bool continued = straight && state.straight_passes < kMostStraightPasses;
-        const glm::dvec3 out = total_internal_reflection ? reflect(h.d, normal, h.raw)
-                               : straight                ? h.d
-                                          : eta * h.d + (eta * n - std::sqrt(k)) * local;
+        glm::dvec3 out;
+        total_internal_reflection = !refraction(h.d, normal, eta, straight, out);
+        if (total_internal_reflection) out = reflect(h.d, normal, h.raw);
         const glm::dvec3 from = !total_internal_reflection ? runtime::geometry::offset_ray(
                                                                  h.point, h.p.error, -h.geometric)
                                                            : h.start;
@@ -716,11 +697,7 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
         if (m.irid > 0.0)
             from_there *=
                 iridescence(m, out, h.d, layer.normal, h.point, irid_wavelength_, noise_generator_);
-        // (reflection { exponent E }: POV-Ray raises the light to 1 / E.)
-        if (m.reflection_power != 1.0)
-            for (int k = 0; k < 3; ++k)
-                from_there[k] = std::pow(std::max(from_there[k], 0.0), m.reflection_power);
-        colour += r.colour * from_there;
+        colour += r.colour * raised(from_there, m.reflection_power);
     }
     return colour;
 }

@@ -13,8 +13,11 @@
 // ray aims at one point of its grid per sample.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 
+#include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
 #include "runtime/geometry/spacetime.hpp"
@@ -26,6 +29,7 @@
 #include "tracer/photon_map.hpp"
 #include "tracer/radiosity_cache.hpp"
 #include "tracer/ray_query.hpp"
+#include "tracer/reflectivity.hpp"
 #include "tracer/thread_state.hpp"
 
 namespace hexant::tracer {
@@ -221,7 +225,7 @@ class Shader {
     struct PhotonGather {
         bool done = false;
         double radius = 0.0;
-        std::vector<const Photon*> photons;
+        PhotonMap::Found photons;
     };
     // The light of the frame's photons at the hit, for a layer of material
     // `m`, normal `n` and opacity `opaque` (POV-Ray's
@@ -269,6 +273,49 @@ class Shader {
                              ThreadState& state) const;
     // How much shows through the layers above layer `index` (POV-Ray's trans).
     static double layer_trans(const runtime::TextureSample::Layer* layers, std::size_t index);
+    // A layer's highlights for light from unit `to_light` at incidence
+    // `cosine`, seen along unit `d` about normal `n`: phong and specular,
+    // tinted by metallic (POV-Ray's ComputePhongColour and
+    // ComputeSpecularColour; shared by lights and photons).
+    [[gnu::always_inline]] static glm::dvec3 highlights(const runtime::MaterialSample& m,
+                                                        const glm::dvec3& d, const glm::dvec3& n,
+                                                        const glm::dvec3& to_light, double cosine) {
+        glm::dvec3 out(0.0);
+        const glm::dvec3 tint =
+            m.metallic > 0.0 ? metallic_tint(m.metallic, cosine, m.colour) : glm::dvec3(1.0);
+        if (m.phong > 0.0) {
+            const glm::dvec3 reflected = d - 2.0 * glm::dot(d, n) * n;
+            const double c = glm::dot(reflected, to_light);
+            if (c > 0.0) out += m.phong * std::pow(c, m.phong_size) * tint;
+        }
+        if (m.specular > 0.0) {
+            const glm::dvec3 half = glm::normalize(to_light - d);
+            const double c = glm::dot(half, n);
+            if (c > 0.0) out += m.specular * std::pow(c, 1.0 / m.roughness) * tint;
+        }
+        return out;
+    }
+    // Heckbert's refraction of unit `d` through a surface of normal
+    // `normal` for the relative index `eta` (POV-Ray's TraceRefractionRay):
+    // false past the critical angle (total internal reflection); `d`
+    // itself where `straight` (the same index on both sides).
+    static bool refraction(const glm::dvec3& d, const glm::dvec3& normal, double eta, bool straight,
+                           glm::dvec3& out) {
+        double n = glm::dot(d, normal);
+        const glm::dvec3 local = n <= 0.0 ? normal : -normal;
+        n = std::fabs(n);
+        const double k = 1.0 + eta * eta * (n * n - 1.0);
+        if (k < 0.0) return false;
+        out = straight ? d : eta * d + (eta * n - std::sqrt(k)) * local;
+        return true;
+    }
+    // `c` raised to reflection { exponent }'s power (POV-Ray raises the
+    // reflected light to 1 / E), negative channels taken as 0.
+    static glm::dvec3 raised(glm::dvec3 c, double power) {
+        if (power != 1.0)
+            for (int k = 0; k < 3; ++k) c[k] = std::pow(std::max(c[k], 0.0), power);
+        return c;
+    }
     // The direction reflected about `normal`, kept above the surface whose
     // raw normal is `raw` (POV-Ray's ComputeReflection).
     static glm::dvec3 reflect(const glm::dvec3& d, const glm::dvec3& normal, const glm::dvec3& raw);

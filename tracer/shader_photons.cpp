@@ -161,18 +161,14 @@ void Shader::trace_photon(const Ray4& ray, const glm::dvec3& colour, double weig
         const double w =
             weight * std::max({std::fabs(through.x), std::fabs(through.y), std::fabs(through.z)});
         const glm::dvec3& normal = layers[0].normal;
-        double n = glm::dot(h.d, normal);
-        const glm::dvec3 local = n <= 0.0 ? normal : -normal;
-        n = std::fabs(n);
-        const double k = 1.0 + eta * eta * (n * n - 1.0);
-        total_internal_reflection = k < 0.0;
+        glm::dvec3 out;
+        total_internal_reflection =
+            !refraction(h.d, normal, eta, std::fabs(eta - 1.0) < kEpsilon, out);
         if (total_internal_reflection) {
             // (Reflected inside, unfiltered, as POV-Ray's ComputeReflection.)
             trace_photon(instant_ray(h.start, h.time, reflect(h.d, normal, h.raw)), light, w,
                          h.carried(), path, state);
         } else {
-            const bool straight = std::fabs(eta - 1.0) < kEpsilon;
-            const glm::dvec3 out = straight ? h.d : eta * h.d + (eta * n - std::sqrt(k)) * local;
             trace_photon(instant_ray(through_start, h.time, out), light * through, w,
                          h.refracted(passed), path, state);
         }
@@ -188,10 +184,6 @@ void Shader::trace_photon(const Ray4& ray, const glm::dvec3& colour, double weig
             if (total_internal_reflection && layer.normal == layers[0].normal) continue;
             const Reflectivity r = reflectivity(m, -glm::dot(h.d, layer.normal), fresnel_ior(h, m));
             if (r.colour == glm::dvec3(0.0)) continue;
-            glm::dvec3 carried = light;
-            if (m.reflection_power != 1.0)
-                for (int c = 0; c < 3; ++c)
-                    carried[c] = std::pow(std::max(carried[c], 0.0), m.reflection_power);
             // (POV-Ray's photon weight takes the reflectivity twice:
             // ComputeReflectivity scales the layer's weight by it, and
             // the photon's weight is that times its largest channel
@@ -199,7 +191,7 @@ void Shader::trace_photon(const Ray4& ray, const glm::dvec3& colour, double weig
             const double w = weight * layer_trans(layers, i) * r.weight *
                              std::max({r.colour.x, r.colour.y, r.colour.z});
             trace_photon(instant_ray(h.start, h.time, reflect(h.d, layer.normal, h.raw)),
-                         r.colour * carried, w, h.carried(), path, state);
+                         r.colour * raised(light, m.reflection_power), w, h.carried(), path, state);
         }
     }
     leave();
@@ -218,7 +210,7 @@ glm::dvec3 Shader::photon_light(const Hit& h, const runtime::MaterialSample& m, 
     }
     if (gather.photons.empty() || !(gather.radius > 0.0)) return glm::dvec3(0.0);
     glm::dvec3 sum(0.0);
-    for (const Photon* photon : gather.photons) {
+    for (const auto& [distance2, photon] : gather.photons) {
         const glm::dvec3 from(photon->from);
         // (POV-Ray's Lambertian compensation, by the raw normal, at most
         // tenfold: the photon's own angle is in its density already.)
@@ -232,19 +224,7 @@ glm::dvec3 Shader::photon_light(const Hit& h, const runtime::MaterialSample& m, 
         if (backside) cosine = std::fabs(cosine);
         const double shade = m.brilliance == 1.0 ? cosine : std::pow(cosine, m.brilliance);
         glm::dvec3 lit = (backside ? m.diffuse_back : m.diffuse) * shade * opaque * m.colour;
-        const glm::dvec3 highlight =
-            m.metallic > 0.0 ? metallic_tint(m.metallic, cosine, m.colour) : glm::dvec3(1.0);
-        const bool highlights = state.radiosity.depth == 0 && !backside;
-        if (m.phong > 0.0 && highlights) {
-            const glm::dvec3 reflected = h.d - 2.0 * glm::dot(h.d, n) * n;
-            const double c = glm::dot(reflected, from);
-            if (c > 0.0) lit += m.phong * std::pow(c, m.phong_size) * highlight;
-        }
-        if (m.specular > 0.0 && highlights) {
-            const glm::dvec3 half = glm::normalize(from - h.d);
-            const double c = glm::dot(half, n);
-            if (c > 0.0) lit += m.specular * std::pow(c, 1.0 / m.roughness) * highlight;
-        }
+        if (state.radiosity.depth == 0 && !backside) lit += highlights(m, h.d, n, from, cosine);
         if (m.irid > 0.0)
             lit *= iridescence(m, from, h.d, n, h.point, irid_wavelength_, noise_generator_);
         sum += lit * arriving;

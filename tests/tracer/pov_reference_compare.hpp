@@ -79,6 +79,28 @@ inline void check_agreement(const Agreement& a) {
     CHECK(a.mean < 0.2);
 }
 
+// What `command` (its stderr joined to stdout) printed, and whether it
+// exited with 0.
+struct Ran {
+    bool ok = false;
+    std::string said;
+};
+inline Ran run_command(const std::string& command) {
+    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+    REQUIRE(pipe != nullptr);
+    Ran r;
+    char buffer[256];
+    while (fgets(buffer, sizeof buffer, pipe)) r.said += buffer;
+    r.ok = pclose(pipe) == 0;
+    return r;
+}
+
+// The linear light of an 8-bit sRGB value.
+inline double linear_light(unsigned char v) {
+    const double c = v / 255.0;
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
 // hexant's render with `flags`, written to a temporary PNG named `name`,
 // frame number `frame` in its name (0: a still).
 inline Pixels render(const fs::path& scene, const std::string& flags, const std::string& name,

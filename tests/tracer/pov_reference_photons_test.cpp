@@ -21,28 +21,20 @@ const fs::path kScene = kFolder / "photons" / "photons.pov";
 // The light photons add: per channel, the linear light of `lit` above that
 // of `dark` (the same scene without photons), summed over the image.
 double added_light(const Pixels& lit, const Pixels& dark) {
-    const auto linear = [](unsigned char v) {
-        const double c = v / 255.0;
-        return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-    };
     double sum = 0.0;
     for (std::size_t i = 0; i < lit.rgb.size(); ++i)
-        sum += std::max(0.0, linear(lit.rgb[i]) - linear(dark.rgb[i]));
+        sum += std::max(0.0, linear_light(lit.rgb[i]) - linear_light(dark.rgb[i]));
     return sum;
 }
 
 // How many pixels photons light by more than 0.05 (linear, summed over
 // the channels).
 int lit_pixels(const Pixels& lit, const Pixels& dark) {
-    const auto linear = [](unsigned char v) {
-        const double c = v / 255.0;
-        return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-    };
     int n = 0;
     for (std::size_t i = 0; i + 2 < lit.rgb.size(); i += 3) {
         double a = 0.0;
         for (int c = 0; c < 3; ++c)
-            a += std::max(0.0, linear(lit.rgb[i + c]) - linear(dark.rgb[i + c]));
+            a += std::max(0.0, linear_light(lit.rgb[i + c]) - linear_light(dark.rgb[i + c]));
         n += a > 0.05;
     }
     return n;
@@ -145,14 +137,11 @@ TEST_CASE("a spacing that would shoot too many photons is refused", "[tracer][ph
                 "  photons { target refraction on } }\n";
     }
     fs::remove(out);
-    const std::string command = std::string(HEXANT_BINARY) + " render " + scene.string() +
-                                " -W 8 -H 6 -o " + out.string() + " 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
-    REQUIRE(pipe != nullptr);
-    std::string said;
-    char buffer[256];
-    while (fgets(buffer, sizeof buffer, pipe)) said += buffer;
-    CHECK(pclose(pipe) != 0);
+    const std::string command =
+        std::string(HEXANT_BINARY) + " render " + scene.string() + " -W 8 -H 6 -o " + out.string();
+    const Ran ran = run_command(command);
+    CHECK_FALSE(ran.ok);
+    const std::string& said = ran.said;
     INFO(said);
     CHECK(said.find("photons: the spacing") != std::string::npos);
     CHECK(said.find("raise photons' spacing") != std::string::npos);

@@ -104,15 +104,11 @@ TEST_CASE("radiosity by gi path converges to the cache's image on a still scene"
 TEST_CASE("the gi flag takes cache or path", "[tracer][radiosity]") {
     const std::string command = std::string(HEXANT_BINARY) + " render " +
                                 (kFolder / "radiosity" / "radiosity.pov").string() +
-                                " -W 8 -H 6 --gi paths -o /tmp/hexant_gi_bad.png 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
-    REQUIRE(pipe != nullptr);
-    std::string said;
-    char buffer[256];
-    while (fgets(buffer, sizeof buffer, pipe)) said += buffer;
-    CHECK(pclose(pipe) != 0);
-    CHECK(said.find("--gi") != std::string::npos);
-    CHECK(said.find("'paths' is not cache or path") != std::string::npos);
+                                " -W 8 -H 6 --gi paths -o /tmp/hexant_gi_bad.png";
+    const Ran ran = run_command(command);
+    CHECK_FALSE(ran.ok);
+    CHECK(ran.said.find("--gi") != std::string::npos);
+    CHECK(ran.said.find("'paths' is not cache or path") != std::string::npos);
 }
 
 TEST_CASE("a still scene's radiosity is the same in every frame", "[tracer][radiosity]") {
