@@ -44,6 +44,7 @@ const Row kRows[] = {
     {"photon rays", [](const Counters& c) { return double(c.photon_rays); }, 0},
     {"photons stored", [](const Counters& c) { return double(c.photons_stored); }, 0},
     {"photon gathers", [](const Counters& c) { return double(c.photon_gathers); }, 0},
+    {"dispersed rays", [](const Counters& c) { return double(c.dispersed_rays); }, 0},
     {"objects", [](const Counters& c) { return double(c.objects); }, 0},
     {"bounds built", [](const Counters& c) { return double(c.bounds_built); }, 0},
     {"hierarchy cells", [](const Counters& c) { return double(c.cells); }, 0},

@@ -109,6 +109,7 @@ HEXANT_ERROR(irid_setting_value, "expected a value after thickness or turbulence
 HEXANT_ERROR(reflection_number_value,
              "expected a number after falloff or exponent in reflection { }");
 HEXANT_ERROR(ior_value, "expected a value after ior");
+HEXANT_ERROR(dispersion_setting_value, "expected a value after dispersion or dispersion_samples");
 HEXANT_ERROR(fade_setting_value,
              "expected a value after fade_distance, fade_power, fade_colour or caustics");
 HEXANT_ERROR(projected_through_base, "expected an object in projected_through { }");

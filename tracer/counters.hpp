@@ -24,6 +24,10 @@ struct Counters {
     std::uint64_t photon_rays = 0;
     std::uint64_t photons_stored = 0;
     std::uint64_t photon_gathers = 0;
+    // Dispersion: the refracted rays that took one spectral band of a ray
+    // of every colour (tracer/spectral_band.hpp; counted in refracted_rays
+    // too).
+    std::uint64_t dispersed_rays = 0;
     // Hierarchy.
     std::uint64_t bounds_built = 0;  // object bound() answers while building
     std::uint64_t cells = 0;         // cells built (a lazy build: those rays reached)
@@ -76,6 +80,7 @@ struct Counters {
         photon_rays += o.photon_rays;
         photons_stored += o.photons_stored;
         photon_gathers += o.photon_gathers;
+        dispersed_rays += o.dispersed_rays;
         bounds_built += o.bounds_built;
         cells += o.cells;
         cells_full += o.cells_full;

@@ -7,6 +7,7 @@
 // Inside::refract keeps).
 #pragma once
 
+#include <algorithm>
 #include <array>
 
 #include "runtime/scene/media_volume.hpp"
@@ -25,12 +26,27 @@ struct Inside {
     std::array<Entry, kMost> entries{};
     int count = 0;
 
+    // An interior's indices: its ior, its dispersion (1: none) and the
+    // number of bands that splits light into (tracer/spectral_band.hpp).
+    struct Index {
+        double ior = 1.0;
+        double dispersion = 1.0;
+        int dispersion_samples = 7;
+    };
     // An interior refraction knows: its identity (shared by the members of
     // a CSG and the parts of a mesh, as POV-Ray's Interior is:
-    // TextureEvaluator::interior_key) and its ior when the ray entered.
+    // TextureEvaluator::interior_key) and its indices when the ray entered.
     struct Passed {
         const void* key = nullptr;
+        Index index{};
+    };
+    // What passing a surface does: the ratio of iors and of dispersions
+    // (the side the ray comes from over the side it goes to) and the bands
+    // a ray of every colour splits into there.
+    struct Ratio {
         double ior = 1.0;
+        double dispersion = 1.0;
+        int dispersion_samples = 7;
     };
     std::array<Passed, kMost> passed{};
     int passed_count = 0;
@@ -87,43 +103,55 @@ struct Inside {
     // AppendInteriors: the members of a union split apart that hold the
     // eye each list the union's interior, so that the ray passes straight
     // through the inner surfaces and bends where it leaves the last).
-    Inside entered(const void* key, double ior, bool once = true) const {
+    Inside entered(const void* key, const Index& index, bool once = true) const {
         Inside out = *this;
         if (once)
             for (int i = 0; i < passed_count; ++i)
                 if (passed[std::size_t(i)].key == key) return out;
-        if (out.passed_count < kMost) out.passed[std::size_t(out.passed_count++)] = {key, ior};
+        if (out.passed_count < kMost) out.passed[std::size_t(out.passed_count++)] = {key, index};
         return out;
     }
+    Inside entered(const void* key, double ior, bool once = true) const {
+        return entered(key, Index{ior}, once);
+    }
 
-    // A ray passing through the surface of interior `key` (index `ior`
-    // there): the ratio of indices (the side it comes from over the side
-    // it goes to) and, in `next`, the refraction list it goes on with.
+    // A ray passing through the surface of interior `key` (indices
+    // `index` there): the ratios (the side it comes from over the side it
+    // goes to) and, in `next`, the refraction list it goes on with.
     // POV-Ray's rule: an interior it is not in is entered, from the
     // innermost one it is in (nested objects count as outside the ones
     // holding them: (A (B B) A) is (A A|B B|A A)); the innermost one is
     // left into the next; one further out is left with no bending (the
     // overlap of two objects belongs to the one entered last). The
-    // atmosphere's index is 1. `inside_unknown`: that the ray started
-    // inside `key` though its empty list does not say so (a camera ray,
-    // whose list POV-Ray fills by inside tests at the eye).
-    double refract(const void* key, double ior, bool inside_unknown, Inside& next) const {
+    // atmosphere's index and dispersion are 1. Bands: the interior's own,
+    // or leaving into another, the more of the two (POV-Ray's
+    // ComputeRefraction). `inside_unknown`: that the ray started inside
+    // `key` though its empty list does not say so (a camera ray, whose
+    // list POV-Ray fills by inside tests at the eye).
+    Ratio refract(const void* key, const Index& index, bool inside_unknown, Inside& next) const {
         next = *this;
         const auto at = [&](int i) -> const Passed& { return passed[std::size_t(i)]; };
+        const int bands = index.dispersion_samples;
         if (passed_count > 0 && at(passed_count - 1).key == key) {
             next.passed_count = passed_count - 1;
-            return ior / (next.passed_count > 0 ? at(next.passed_count - 1).ior : 1.0);
+            if (next.passed_count == 0) return {index.ior, index.dispersion, bands};
+            const Index& outer = at(next.passed_count - 1).index;
+            return {index.ior / outer.ior, index.dispersion / outer.dispersion,
+                    std::max(bands, outer.dispersion_samples)};
         }
         for (int i = 0; i < passed_count - 1; ++i) {
             if (at(i).key != key) continue;
             for (int j = i; j + 1 < passed_count; ++j) next.passed[std::size_t(j)] = at(j + 1);
             next.passed_count = passed_count - 1;
-            return 1.0;
+            return {1.0, 1.0, bands};
         }
-        if (inside_unknown && passed_count == 0) return ior;
-        const double from = passed_count > 0 ? at(passed_count - 1).ior : 1.0;
-        if (next.passed_count < kMost) next.passed[std::size_t(next.passed_count++)] = {key, ior};
-        return from / ior;
+        if (inside_unknown && passed_count == 0) return {index.ior, index.dispersion, bands};
+        const Index from = passed_count > 0 ? at(passed_count - 1).index : Index{};
+        if (next.passed_count < kMost) next.passed[std::size_t(next.passed_count++)] = {key, index};
+        return {from.ior / index.ior, from.dispersion / index.dispersion, bands};
+    }
+    double refract(const void* key, double ior, bool inside_unknown, Inside& next) const {
+        return refract(key, Index{ior}, inside_unknown, next).ior;
     }
     // The relative index n2 / n1 that Fresnel reflection at the surface of
     // interior `key` (index `ior`) sees: POV-Ray's ComputeRelativeIOR,
@@ -132,7 +160,7 @@ struct Inside {
     // several: 1), or into the atmosphere when it is the only one.
     double relative_ior(const void* key, double ior, bool inside_unknown) const {
         if (passed_count == 0) return inside_unknown ? 1.0 / ior : ior;
-        const double innermost = passed[std::size_t(passed_count - 1)].ior;
+        const double innermost = passed[std::size_t(passed_count - 1)].index.ior;
         for (int i = 0; i < passed_count; ++i)
             if (passed[std::size_t(i)].key == key)
                 return passed_count == 1 ? 1.0 / ior : innermost / ior;

@@ -24,7 +24,7 @@ namespace hexant::tracer {
 namespace sobol_detail {
 
 // Joe and Kuo's direction numbers ("new-joe-kuo-6.21201", their dimensions
-// 2 to 21, chosen for good two-dimensional projections): per dimension the
+// 2 to 22, chosen for good two-dimensional projections): per dimension the
 // degree s of its primitive polynomial, the polynomial's inner
 // coefficients a, and the initial odd numbers m_1 .. m_s. Dimension 0 is
 // van der Corput's.
@@ -33,7 +33,7 @@ struct Polynomial {
     std::uint32_t a;
     std::array<std::uint32_t, 7> m;
 };
-inline constexpr std::array<Polynomial, 20> kJoeKuo{{
+inline constexpr std::array<Polynomial, 21> kJoeKuo{{
     {1, 0, {1}},
     {2, 1, {1, 3}},
     {3, 1, {1, 3, 1}},
@@ -54,6 +54,7 @@ inline constexpr std::array<Polynomial, 20> kJoeKuo{{
     {6, 25, {1, 1, 5, 5, 19, 61}},
     {7, 1, {1, 3, 7, 11, 23, 15, 103}},
     {7, 4, {1, 3, 7, 13, 13, 15, 69}},
+    {7, 7, {1, 1, 3, 13, 7, 35, 63}},
 }};
 
 // The 32 direction numbers of each dimension, by Bratley and Fox's
@@ -116,10 +117,13 @@ inline std::uint32_t hash(std::uint32_t x) {  // lowbias32 (Wellons)
 }  // namespace sobol_detail
 
 // The sequence's dimensions: pixel x and y, time, the lens' pair, then
-// kJointLightPairs pairs for area lights (a light's pair key below it).
+// kJointLightPairs pairs for area lights (a light's pair key below it),
+// and last the spectral band a dispersive surface gives a ray
+// (tracer/spectral_band.hpp; the seed's fifth dimension, wavelength).
 inline constexpr int kPixelX = 0, kPixelY = 1, kTime = 2, kLensU = 3, kFirstLightDimension = 5;
 inline constexpr int kJointDimensions = static_cast<int>(sobol_detail::kJoeKuo.size()) + 1;
-inline constexpr std::uint32_t kJointLightPairs = (kJointDimensions - kFirstLightDimension) / 2;
+inline constexpr int kWavelength = kJointDimensions - 1;
+inline constexpr std::uint32_t kJointLightPairs = (kWavelength - kFirstLightDimension) / 2;
 // The lens' pair key (sample_pair): none of the lights'.
 inline constexpr std::uint32_t kLensPair = 0x7fffffffu;
 

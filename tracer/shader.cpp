@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include "runtime/geometry/offset_ray.hpp"
+#include "tracer/dispersion.hpp"
 #include "tracer/iridescence.hpp"
 #include "tracer/reflectivity.hpp"
 #include "tracer/sample_pattern.hpp"
@@ -328,7 +329,7 @@ Inside Shader::inside_at(const runtime::Event& event) const {
                 around.with({media ? static_cast<const void*>(media) : static_cast<const void*>(o),
                              media, o->flags().hollow});
         if (const auto r = o->refractive_interior(event.w); r.key)
-            around = around.entered(r.key, r.ior, r.once);
+            around = around.entered(r.key, {r.ior, r.dispersion, r.dispersion_samples}, r.once);
     }
     return around;
 }
@@ -644,29 +645,17 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
         // it leaves that it was not known to be in held it from the start.
         const glm::dvec3& normal = layers[0].normal;
         Inside passed;
-        const double eta = h.around.refract(h.interior, top.ior, h.started_inside(), passed);
+        const auto dispersion = h.p.texture->dispersion_at(h.time);
+        const Inside::Ratio ratio =
+            h.around.refract(h.interior, {top.ior, dispersion.value, dispersion.samples},
+                             h.started_inside(), passed);
+        const bool disperses = std::fabs(ratio.dispersion - 1.0) >= kEpsilon;
         // (The same ior on both sides: the ray goes on straight, at the
         // same trace level, as POV-Ray continues it, up to
         // kMostStraightPasses on one path: past that, as a new level, so
         // that clear surfaces in a row cannot take the stack.)
-        const bool straight = std::fabs(eta - 1.0) < kEpsilon;
+        const bool straight = std::fabs(ratio.ior - 1.0) < kEpsilon && !disperses;
         const bool continued = straight && state.straight_passes < kMostStraightPasses;
-        glm::dvec3 out;
-        total_internal_reflection = !refraction(h.d, normal, eta, straight, out);
-        if (total_internal_reflection) out = reflect(h.d, normal, h.raw);
-        const glm::dvec3 from = !total_internal_reflection ? runtime::geometry::offset_ray(
-                                                                 h.point, h.p.error, -h.geometric)
-                                                           : h.start;
-        ++state.counters.refracted_rays;
-        const Ray4 next = travel_.ray(from, h.time, out);
-        // (POV-Ray's SetFlags: a ray refracted keeps its kind; reflected
-        // back inside, it is a reflection ray.)
-        state.straight_passes += continued;
-        const glm::dvec3 behind =
-            radiance(next, h.depth + 1, through_weight,
-                     total_internal_reflection ? std::uint8_t(runtime::kSightReflection) : h.sight,
-                     total_internal_reflection ? h.carried() : h.refracted(passed), state);
-        state.straight_passes -= continued;
         // Light that crossed the object's inside to get here fades with
         // the distance it went (fade_distance; POV-Ray's attCol), when the
         // ray was in it (its list holds it).
@@ -674,7 +663,34 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
         if (h.around.holds(h.interior) || h.started_inside())
             if (const auto fade = h.p.texture->fade_at(h.time))
                 faded = fade->through(glm::distance(h.point, glm::dvec3(h.ray.origin)));
-        colour += total_internal_reflection ? faded * behind : faded * behind * through;
+        // What comes through along ratio `eta`: a refracted ray, or one
+        // reflected inside (not filtered by the layers).
+        const auto behind = [&](double eta, bool& reflected) {
+            glm::dvec3 out;
+            reflected = !refraction(h.d, normal, eta, straight, out);
+            if (reflected) out = reflect(h.d, normal, h.raw);
+            const glm::dvec3 from =
+                !reflected ? runtime::geometry::offset_ray(h.point, h.p.error, -h.geometric)
+                           : h.start;
+            ++state.counters.refracted_rays;
+            const Ray4 next = travel_.ray(from, h.time, out);
+            // (POV-Ray's SetFlags: a ray refracted keeps its kind; reflected
+            // back inside, it is a reflection ray.)
+            state.straight_passes += continued;
+            const glm::dvec3 light =
+                radiance(next, h.depth + 1, through_weight,
+                         reflected ? std::uint8_t(runtime::kSightReflection) : h.sight,
+                         reflected ? h.carried() : h.refracted(passed), state);
+            state.straight_passes -= continued;
+            return reflected ? faded * light : faded * light * through;
+        };
+        if (!disperses || state.band.monochromatic()) {
+            // (A ray that took a band bends by that band's ior.)
+            colour += behind(disperses ? state.band.ior(ratio.ior, ratio.dispersion) : ratio.ior,
+                             total_internal_reflection);
+        } else {
+            colour += dispersed(ratio, behind, state);
+        }
     }
     // Each layer's reflection (after total internal reflection, not along
     // the top layer's normal, which that already followed).

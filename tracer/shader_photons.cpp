@@ -42,6 +42,7 @@ bool Shader::shoot_photon(const PhotonShot& shot, const Ray4& ray, const glm::dv
     PhotonPath path{&shot, &out};
     const Inside inside = camera_interiors_.empty() ? Inside{} : inside_at(ray.origin);
     state.straight_passes = 0;
+    state.band = {};
     trace_photon(ray, colour, 1.0, inside, path, state);
     return path.hit_target;
 }
@@ -113,8 +114,11 @@ void Shader::trace_photon(const Ray4& ray, const glm::dvec3& colour, double weig
     }
 
     Inside passed;
-    const double top_ior = p.texture->ior_at(h.time);
-    const double eta = h.around.refract(h.interior, top_ior, h.started_inside(), passed);
+    const auto dispersion = p.texture->dispersion_at(h.time);
+    const Inside::Ratio ratio = h.around.refract(
+        h.interior, {p.texture->ior_at(h.time), dispersion.value, dispersion.samples},
+        h.started_inside(), passed);
+    const bool disperses = std::fabs(ratio.dispersion - 1.0) >= kEpsilon;
     const glm::dvec3 through_start = runtime::geometry::offset_ray(h.point, p.error, -h.geometric);
     if (path.pass_this) {
         // (Through unchanged, the interiors kept right.)
@@ -161,16 +165,35 @@ void Shader::trace_photon(const Ray4& ray, const glm::dvec3& colour, double weig
         const double w =
             weight * std::max({std::fabs(through.x), std::fabs(through.y), std::fabs(through.z)});
         const glm::dvec3& normal = layers[0].normal;
-        glm::dvec3 out;
-        total_internal_reflection =
-            !refraction(h.d, normal, eta, std::fabs(eta - 1.0) < kEpsilon, out);
-        if (total_internal_reflection) {
-            // (Reflected inside, unfiltered, as POV-Ray's ComputeReflection.)
-            trace_photon(instant_ray(h.start, h.time, reflect(h.d, normal, h.raw)), light, w,
-                         h.carried(), path, state);
+        const bool straight = std::fabs(ratio.ior - 1.0) < kEpsilon && !disperses;
+        // A photon along ratio `eta` with light `carried`: refracted, or
+        // reflected inside (unfiltered, as POV-Ray's ComputeReflection).
+        const auto refracted = [&](double eta, const glm::dvec3& carried) {
+            glm::dvec3 out;
+            const bool reflected = !refraction(h.d, normal, eta, straight, out);
+            if (reflected)
+                trace_photon(instant_ray(h.start, h.time, reflect(h.d, normal, h.raw)), carried, w,
+                             h.carried(), path, state);
+            else
+                trace_photon(instant_ray(through_start, h.time, out), carried * through, w,
+                             h.refracted(passed), path, state);
+            return reflected;
+        };
+        if (!disperses || state.band.monochromatic()) {
+            total_internal_reflection = refracted(
+                disperses ? state.band.ior(ratio.ior, ratio.dispersion) : ratio.ior, light);
         } else {
-            trace_photon(instant_ray(through_start, h.time, out), light * through, w,
-                         h.refracted(passed), path, state);
+            // A photon of every colour splits into every band, each with
+            // its share of the light (POV-Ray's PhotonTrace does so
+            // whatever the render's sampling: a map holds every band).
+            const SpectralBand every = state.band;
+            const int bands = ratio.dispersion_samples;
+            for (int i = 0; i < bands; ++i) {
+                state.band = SpectralBand::of(i, bands);
+                refracted(state.band.ior(ratio.ior, ratio.dispersion),
+                          light * state.band.hue() / static_cast<double>(bands));
+            }
+            state.band = every;
         }
     }
 

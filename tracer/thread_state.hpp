@@ -13,6 +13,7 @@
 #include "tracer/counters.hpp"
 #include "tracer/mailbox.hpp"
 #include "tracer/radiosity_cache.hpp"
+#include "tracer/spectral_band.hpp"
 
 namespace hexant::tracer {
 
@@ -74,6 +75,9 @@ struct ThreadState {
     // so a ray's level is its depth less these (tracer/shader.cpp).
     int straight_passes = 0;
     RadiosityPath radiosity{};
+    // The spectral band the path being traced took at a dispersive
+    // surface (none: a ray of every colour; tracer/spectral_band.hpp).
+    SpectralBand band{};
     // Counts the runs of samples this thread has traced, one pixel's
     // samples of one round each (sample_frame): what a pixel's samples
     // share is kept within one run.

@@ -2,7 +2,7 @@
 // Part of the actions (language/actions.hpp).
 #pragma once
 
-#include "language/actions/media.hpp"
+#include "language/actions/interior.hpp"
 
 namespace hexant::language {
 
@@ -614,9 +614,6 @@ template <>
 struct action<g::finish_flag> : unrendered_action<runtime::Finish> {};
 template <>
 struct action<g::finish_ignored_block> : unrendered_action<runtime::Finish> {};
-// caustics, dispersion, fade_*, media in an interior.
-template <>
-struct action<g::interior_ignored_setting> : unrendered_action<runtime::Interior> {};
 template <>
 struct action<g::ignored_value> {
     template <typename ActionInput>
@@ -631,64 +628,6 @@ struct action<g::finish_block> {
     static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
         (void)in;
         Value v{std::get<runtime::Finish>(st.blocks.top())};
-        st.blocks.close();
-        st.values.push(std::move(v));
-    }
-};
-
-template <>
-struct action<g::interior_open> {
-    template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        (void)in;
-        st.blocks.open(std::in_place_type<runtime::Interior>);
-    }
-};
-template <>
-struct action<g::interior_base> {
-    template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.values.pop();
-        if (!v.is<runtime::Interior>())
-            throw ValueError("interior { } starts with an interior, not a " + type_name(v));
-        st.blocks.edit<runtime::Interior>(in.position(), "an interior") = v.as<runtime::Interior>();
-    }
-};
-template <>
-struct action<g::fade_setting_name> : name_action {};
-template <>
-struct action<g::fade_setting_value> {
-    template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        Value v = st.values.pop();
-        const std::string name = st.values.pop_name();
-        auto& interior = st.blocks.edit<runtime::Interior>(in.position(), name.c_str());
-        if (name == "fade_distance") {
-            interior.fade_distance = to_float(v, name);
-        } else if (name == "fade_power") {
-            interior.fade_power = to_float(v, name);
-        } else if (name == "caustics") {
-            interior.caustics = to_float(v, name);
-        } else {
-            interior.fade_colour = to_colour(v, name);
-            interior.fade_colour.c[3] = interior.fade_colour.c[4] = 0.0;
-        }
-    }
-};
-template <>
-struct action<g::ior_setting> {
-    template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        st.blocks.edit<runtime::Interior>(in.position(), "ior").ior =
-            to_float(st.values.pop(), "ior");
-    }
-};
-template <>
-struct action<g::interior_block> {
-    template <typename ActionInput>
-    static void apply([[maybe_unused]] const ActionInput& in, [[maybe_unused]] Interpreter& st) {
-        (void)in;
-        Value v{std::get<runtime::Interior>(st.blocks.top())};
         st.blocks.close();
         st.values.push(std::move(v));
     }

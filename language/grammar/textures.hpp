@@ -478,9 +478,12 @@ struct interior_item;
 struct interior_base : p::seq<p::not_at<items_macro_ahead<interior_item>>, expression> {};
 struct ior_value : p::seq<expression> {};
 struct ior_setting : p::seq<TAO_PEGTL_KEYWORD("ior"), ws, p::must<ior_value>> {};
-struct interior_ignored_setting
-    : p::seq<p::sor<TAO_PEGTL_KEYWORD("dispersion"), TAO_PEGTL_KEYWORD("dispersion_samples")>, ws,
-             p::must<ignored_value>> {};
+// dispersion D, dispersion_samples N (runtime::Interior).
+struct dispersion_setting_name
+    : p::sor<TAO_PEGTL_KEYWORD("dispersion"), TAO_PEGTL_KEYWORD("dispersion_samples")> {};
+struct dispersion_setting_value : p::seq<expression> {};
+struct dispersion_setting : p::seq<dispersion_setting_name, ws, p::must<dispersion_setting_value>> {
+};
 struct media_block;  // language/grammar/media.hpp
 struct interior_media : p::seq<media_block> {};
 // fade_distance D, fade_power P, fade_colour C, caustics C (runtime::Interior).
@@ -491,7 +494,7 @@ struct fade_setting_name : p::sor<TAO_PEGTL_KEYWORD("fade_distance"),
 struct fade_setting_value : p::seq<expression> {};
 struct fade_setting : p::seq<fade_setting_name, ws, p::must<fade_setting_value>> {};
 struct interior_item : p::sor<directive<interior_item>, macro_call<interior_item>, ior_setting,
-                              fade_setting, interior_media, interior_ignored_setting> {};
+                              fade_setting, interior_media, dispersion_setting> {};
 struct interior_block
     : p::seq<interior_open, p::opt<interior_base>, p::star<interior_item>, p::must<rbrace>> {};
 

@@ -231,6 +231,8 @@ class IntelligentObject {
         const void* key = nullptr;  // null: none
         double ior = 1.0;
         bool once = false;
+        double dispersion = 1.0;  // Interior::dispersion (1: none)
+        int dispersion_samples = 7;
     };
     virtual RefractiveInterior refractive_interior(double) const { return {}; }
 

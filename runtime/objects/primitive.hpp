@@ -108,7 +108,9 @@ class Primitive final : public IntelligentObject {
     const MediaVolume* interior_media() const override { return texture_.media(); }
     RefractiveInterior refractive_interior(double t) const override {
         const void* key = texture_.interior_key();
-        return {key ? key : static_cast<const void*>(this), texture_.ior_at(t)};
+        const auto dispersion = texture_.dispersion_at(t);
+        return {key ? key : static_cast<const void*>(this), texture_.ior_at(t), false,
+                dispersion.value, dispersion.samples};
     }
 
     void bound(const Box4& region, std::vector<SlabBound>& out) const override {

@@ -160,6 +160,14 @@ struct Finish {
 
 struct Interior {
     TimeFunction ior = 1.0;
+    // Whether `ior` was written: without it POV-Ray takes the
+    // atmosphere's index and no dispersion (Parser::Post_Process).
+    bool ior_written = false;
+    // dispersion D: violet's ior is the written one times sqrt(D), red's
+    // divided by it, across `dispersion_samples` bands (tracer/
+    // spectral_band.hpp; POV-Ray's Dispersion and Disp_NElems). 1: none.
+    TimeFunction dispersion = 1.0;
+    int dispersion_samples = 7;
     // fade_distance, fade_power, fade_colour: light that travels d inside
     // the object is dimmed toward fade_colour, by 1 / (1 + (d /
     // fade_distance)^fade_power), or exponentially from a power of 1000 on

@@ -317,7 +317,7 @@ TextureEvaluator::TextureEvaluator(const Texture& texture, const std::optional<I
           (interior &&
            (interior->ior.depends_on_time() || interior->fade_distance.depends_on_time() ||
             interior->fade_power.depends_on_time() || interior->fade_colour.depends_on_time() ||
-            interior->caustics.depends_on_time()))),
+            interior->caustics.depends_on_time() || interior->dispersion.depends_on_time()))),
       opaque_(texture.opaque()) {
     if (interior &&
         !(interior->fade_distance.is_constant() && interior->fade_distance.constant() == 0.0)) {
@@ -329,6 +329,10 @@ TextureEvaluator::TextureEvaluator(const Texture& texture, const std::optional<I
     }
     if (interior && !(interior->ior.is_constant() && interior->ior.constant() == 1.0))
         parts().ior = std::make_shared<const CompiledScalar>(interior->ior);
+    if (interior && interior->ior_written &&
+        !(interior->dispersion.is_constant() && interior->dispersion.constant() == 1.0))
+        parts().dispersion = std::make_shared<const CompiledDispersion>(
+            CompiledDispersion{CompiledScalar(interior->dispersion), interior->dispersion_samples});
     if (interior && !(interior->caustics.is_constant() && interior->caustics.constant() == 0.0))
         parts().caustics = std::make_shared<const CompiledScalar>(interior->caustics * 45.0);
 }

@@ -92,6 +92,19 @@ class TextureEvaluator {
     double ior_at(double t) const {
         return interior_ && interior_->ior ? interior_->ior->at(t) : 1.0;
     }
+    // The interior's dispersion at time t and its number of bands
+    // (Interior::dispersion, dispersion_samples): 1 without, or without a
+    // written ior (POV-Ray's Post_Process), or where a clock-driven value
+    // is not above 0.
+    struct Dispersion {
+        double value = 1.0;
+        int samples = 7;
+    };
+    Dispersion dispersion_at(double t) const {
+        if (!interior_ || !interior_->dispersion) return {};
+        const double d = interior_->dispersion->value.at(t);
+        return {d > 0.0 ? d : 1.0, interior_->dispersion->samples};
+    }
     // Whether no light passes it (Texture::opaque), nor its interior
     // texture (POV-Ray's OPAQUE_FLAG wants both).
     bool opaque() const { return opaque_; }
@@ -350,6 +363,10 @@ class TextureEvaluator {
         CompiledScalar distance, power;
         std::array<CompiledScalar, 3> colour;
     };
+    struct CompiledDispersion {
+        CompiledScalar value;
+        int samples = 7;
+    };
     // What an interior brings, each null where it brings nothing.
     struct InteriorParts {
         std::shared_ptr<const MediaVolume> media;
@@ -357,6 +374,7 @@ class TextureEvaluator {
         std::shared_ptr<const CompiledFade> fade;                  // null: no fading
         std::shared_ptr<const CompiledScalar> caustics;            // null: none
         std::shared_ptr<const CompiledScalar> ior;                 // null: 1
+        std::shared_ptr<const CompiledDispersion> dispersion;      // null: none
         std::shared_ptr<const TextureEvaluator> interior_texture;  // null: none
     };
     // (Boxed, absent without any: most objects have none, and each of

@@ -413,6 +413,33 @@ TEST_CASE("a declared material gives its texture and interior", "[language][patt
               .find("material") != std::string::npos);
 }
 
+TEST_CASE("an interior's dispersion is read as POV-Ray 3.7 reads it", "[language][dispersion]") {
+    // Parse_Interior: dispersion D and dispersion_samples N (at least 2,
+    // POV-Ray's message "Dispersion samples minimum is 2."); the ior's
+    // being written is kept (without it POV-Ray disperses nothing).
+    const auto scene = read(
+        "sphere { 0, 1 interior { ior 1.5 dispersion 1.6 dispersion_samples 12 } }\n"
+        "sphere { 0, 1 interior { dispersion 1.2 } }\n"
+        "sphere { 0, 1 }\n");
+    REQUIRE(scene.objects[0]->interior);
+    const auto& glass = *scene.objects[0]->interior;
+    CHECK(glass.ior_written);
+    CHECK(glass.dispersion.constant() == Approx(1.6));
+    CHECK(glass.dispersion_samples == 12);
+    CHECK_FALSE(scene.objects[1]->interior->ior_written);
+    CHECK(scene.objects[1]->interior->dispersion.constant() == Approx(1.2));
+    CHECK(scene.objects[1]->interior->dispersion_samples == 7);
+    for (const char* bad : {"sphere { 0, 1 interior { dispersion_samples 1 } }",
+                            "sphere { 0, 1 interior { dispersion_samples 5000 } }",
+                            "sphere { 0, 1 interior { ior 1.5 dispersion 0 } }",
+                            "sphere { 0, 1 interior { ior 1.5 dispersion } }"}) {
+        INFO(bad);
+        const auto e = error_of(bad);
+        CHECK(e.places().front().line == 1);
+        CHECK(std::string(e.what()).find("dispersion") != std::string::npos);
+    }
+}
+
 TEST_CASE("a colour_map entry's colour may be components alone", "[language][pattern]") {
     // whiltile.pov: [0.00 blue 0.4]; POV-Ray's Parse_Colour starts from
     // black; components after a colour change it.

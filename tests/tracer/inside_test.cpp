@@ -67,3 +67,29 @@ TEST_CASE("Fresnel's relative ior follows ComputeRelativeIOR, quirk and all", "[
     // entered() does not enter twice.
     CHECK(in_glass.entered(glass, 1.5).passed_count == 1);
 }
+
+TEST_CASE("dispersion's ratio and bands follow the iors' list", "[tracer][dispersion]") {
+    // POV-Ray's ComputeRefraction: the dispersions' ratio is taken as the
+    // iors' is (the atmosphere's is 1); leaving into another interior the
+    // ray splits into the more bands of the two; an overlap left is none.
+    const Inside::Index glass_index{1.5, 1.1, 4}, water_index{1.33, 1.3, 6};
+    Inside in_glass, in_water, back_in_glass, out;
+    Inside::Ratio r = Inside().refract(glass, glass_index, false, in_glass);
+    CHECK(r.ior == Approx(1.0 / 1.5));
+    CHECK(r.dispersion == Approx(1.0 / 1.1));
+    CHECK(r.dispersion_samples == 4);
+    r = in_glass.refract(water, water_index, false, in_water);
+    CHECK(r.dispersion == Approx(1.1 / 1.3));
+    CHECK(r.dispersion_samples == 6);
+    r = in_water.refract(water, water_index, false, back_in_glass);
+    CHECK(r.dispersion == Approx(1.3 / 1.1));
+    CHECK(r.dispersion_samples == 6);  // the more of water's 6 and glass's 4
+    r = back_in_glass.refract(glass, glass_index, false, out);
+    CHECK(r.dispersion == Approx(1.1));
+    CHECK(r.dispersion_samples == 4);
+    Inside in_both, in_ball;
+    in_glass.refract(ball, {1.2, 1.4, 7}, false, in_both);
+    r = in_both.refract(glass, glass_index, false, in_ball);
+    CHECK(r.ior == 1.0);
+    CHECK(r.dispersion == 1.0);
+}
