@@ -43,6 +43,7 @@ const Row kRows[] = {
     {"radiosity reuses", [](const Counters& c) { return double(c.radiosity_reuses); }, 0},
     {"photon rays", [](const Counters& c) { return double(c.photon_rays); }, 0},
     {"photons stored", [](const Counters& c) { return double(c.photons_stored); }, 0},
+    {"media photons stored", [](const Counters& c) { return double(c.media_photons_stored); }, 0},
     {"photon gathers", [](const Counters& c) { return double(c.photon_gathers); }, 0},
     {"dispersed rays", [](const Counters& c) { return double(c.dispersed_rays); }, 0},
     {"objects", [](const Counters& c) { return double(c.objects); }, 0},

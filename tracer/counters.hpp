@@ -23,6 +23,7 @@ struct Counters {
     // the gathers of the render (--stats).
     std::uint64_t photon_rays = 0;
     std::uint64_t photons_stored = 0;
+    std::uint64_t media_photons_stored = 0;
     std::uint64_t photon_gathers = 0;
     // Dispersion: the refracted rays that took one spectral band of a ray
     // of every colour (tracer/spectral_band.hpp; counted in refracted_rays
@@ -79,6 +80,7 @@ struct Counters {
         radiosity_reuses += o.radiosity_reuses;
         photon_rays += o.photon_rays;
         photons_stored += o.photons_stored;
+        media_photons_stored += o.media_photons_stored;
         photon_gathers += o.photon_gathers;
         dispersed_rays += o.dispersed_rays;
         bounds_built += o.bounds_built;

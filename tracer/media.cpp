@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include <glm/geometric.hpp>
 
@@ -41,13 +42,14 @@ class Integration {
   public:
     Integration(const std::vector<Coefficients>& media, const MediaRay& ray,
                 const std::vector<MediaLight>& lights, MediaRandom& random,
-                const MediaLightFn& light_at, bool use_scattering)
+                const MediaLightFn& light_at, bool use_scattering, const PhotonMap* photons)
         : media_(media),
           ray_(ray),
           lights_(lights),
           random_(random),
           light_at_(light_at),
-          use_scattering_(use_scattering) {}
+          use_scattering_(use_scattering),
+          photons_(photons) {}
 
     // ComputeOneMediaSample: the sample at d0 in [0, 1] of the interval;
     // its emitted (and scattered) light and its optical depth.
@@ -75,6 +77,9 @@ class Integration {
                 if (arriving == glm::dvec3(0.0)) continue;
                 emission += phase(to_light) * scattering * arriving;
             }
+        // (Media photons whether a light reaches the sample or not.)
+        if (!ray_.shadow && use_scattering_ && photons_)
+            emission += scattering * photon_light(point);
         // (Method 3 takes its samples in order and dims them later; the
         // others assume the extinction constant over the interval.)
         emission *= method == 3 ? glm::dvec3(interval.ds) : interval.ds * exp_of(-extinction * d0);
@@ -126,6 +131,18 @@ class Integration {
     double draw() { return random_.next(); }
 
   private:
+    // ComputeMediaPhotons: the media photons within the gather's sphere,
+    // each scattered from its direction, over the sphere's volume.
+    glm::dvec3 photon_light(const glm::dvec3& point) const {
+        thread_local PhotonMap::Found found;
+        const double r = photons_->gather_in_volume(point, found);
+        if (found.empty() || !(r > 0.0)) return glm::dvec3(0.0);
+        glm::dvec3 sum(0.0);
+        for (const auto& [d2, photon] : found)
+            sum += phase(glm::dvec3(photon->from)) * glm::dvec3(photon->colour);
+        return sum * (3.0 / (4.0 * std::numbers::pi * r * r * r));
+    }
+
     // ComputeMediaScatteringAttenuation's phase, averaged over the media.
     double phase(const glm::dvec3& to_light) const {
         const double alpha = glm::dot(to_light, ray_.direction);
@@ -162,6 +179,7 @@ class Integration {
     MediaRandom& random_;
     const MediaLightFn& light_at_;
     bool use_scattering_;
+    const PhotonMap* photons_;
 };
 
 // ComputeMediaLightInterval's merge (POV-Ray 3.7's workaround: the starts
@@ -255,7 +273,8 @@ double MediaRandom::next() {
 
 glm::dvec3 through_media(const std::vector<const One*>& media, const MediaRay& ray,
                          const std::vector<MediaLight>& lights, MediaRandom& random,
-                         const MediaLightFn& light_at, const glm::dvec3& colour) {
+                         const MediaLightFn& light_at, const glm::dvec3& colour,
+                         const PhotonMap* photons) {
     if (media.empty() || !(ray.depth > 0.0)) return colour;
     std::vector<Coefficients> coefficients;
     coefficients.reserve(media.size());
@@ -303,7 +322,8 @@ glm::dvec3 through_media(const std::vector<const One*>& media, const MediaRay& r
         intervals.push_back(back);
     }
 
-    Integration run(coefficients, ray, lights, random, light_at, use_scattering);
+    Integration run(coefficients, ray, lights, random, light_at, use_scattering,
+                    photons != nullptr && !photons->empty() ? photons : nullptr);
     const runtime::Media& m = lead->record;
     const int min_samples = m.min_samples;
     glm::dvec3 c0, c1, od0, od1, result, od_result;
@@ -357,6 +377,62 @@ glm::dvec3 through_media(const std::vector<const One*>& media, const MediaRay& r
     }
     const glm::dvec3 out = colour * exp_of(-depth) + emitted;
     // (No NaN leaves: a density pattern that gives one adds nothing.)
+    return std::isfinite(out.x) && std::isfinite(out.y) && std::isfinite(out.z) ? out : colour;
+}
+
+glm::dvec3 photon_through_media(const std::vector<const One*>& media, const MediaRay& ray,
+                                MediaRandom& random, const MediaPhotonDeposit* deposit,
+                                const glm::dvec3& colour) {
+    if (media.empty() || !(ray.depth > 0.0)) return colour;
+    const One* lead = media.front();
+    bool use_scattering = false, use_extinction = false, collect = false;
+    std::vector<Coefficients> coefficients;
+    for (const One* m : media) {
+        if (m->record.intervals > lead->record.intervals) lead = m;
+        const One::At at = m->at(ray.time);
+        use_scattering = use_scattering || at.scattering != glm::dvec3(0.0);
+        use_extinction = use_extinction || use_scattering || at.absorption != glm::dvec3(0.0);
+        collect = collect || m->record.collect;
+        coefficients.push_back({m, at, false});
+    }
+    // (POV-Ray returns here, photons deposited or not, when no media
+    // dims: its comment calls it a bug; kept, as the images are its.)
+    if (!use_extinction) return colour;
+    Interval whole;
+    whole.lit = true;
+    whole.s1 = whole.ds = ray.depth;
+    std::vector<Interval> intervals = sample_intervals({whole}, lead->record, false);
+    glm::dvec3 depth(0.0);
+    for (Interval& i : intervals) {
+        int n = lead->record.min_samples;
+        double factor = 1.0;
+        double jitter = lead->record.jitter;
+        if (deposit) {
+            const double per = deposit->spread * (deposit->parallel ? 1.0 : deposit->depth);
+            factor = deposit->spacing_factor;
+            const double steps = per * factor > 0.0 ? i.ds / (per * factor) : 0.0;
+            n = steps < double(deposit->max_steps) ? static_cast<int>(steps) : deposit->max_steps;
+            if (steps > double(deposit->max_steps) && n > 0) factor = i.ds / (per * n);
+            jitter = deposit->jitter;
+        }
+        for (int j = 0; j < n; ++j) {
+            const double d0 = (j + 0.5 + (random.next() - 0.5) * jitter) / n;
+            const double along = i.s0 + d0 * i.ds;
+            const glm::dvec3 point = ray.origin + ray.direction * along;
+            glm::dvec3 extinction(0.0);
+            for (const Coefficients& c : coefficients)
+                extinction += c.media->density_at(point, ray.time) *
+                              (c.at.absorption + c.at.extinction * c.at.scattering);
+            i.od += extinction * i.ds;
+            ++i.samples;
+            if (deposit && use_scattering && collect) {
+                const double per = deposit->parallel ? 1.0 : deposit->depth + along;
+                deposit->keep(point, along, colour * (factor * deposit->spread * per));
+            }
+        }
+        depth += i.od / static_cast<double>(std::max(i.samples, 1));
+    }
+    const glm::dvec3 out = colour * exp_of(-depth);
     return std::isfinite(out.x) && std::isfinite(out.y) && std::isfinite(out.z) ? out : colour;
 }
 

@@ -19,6 +19,7 @@
 
 #include "runtime/scene/media_volume.hpp"
 #include "tracer/inside.hpp"
+#include "tracer/photon_map.hpp"
 
 namespace hexant::tracer {
 
@@ -58,10 +59,42 @@ struct MediaRay {
 // the ray's origin through `media` (every media of every interior the ray
 // is inside, or the atmosphere's): dimmed by their optical depth and with
 // what they emit and scatter toward the origin added. `lights`: the lights
-// that reach the ray (none for a shadow ray).
+// that reach the ray (none for a shadow ray). `photons`: the frame's media
+// photons (null: none), whose light each sample scatters too, lit by a
+// light or not (POV-Ray's ComputeMediaPhotons: the photons within a sphere
+// over its volume, each as a light from its direction).
 glm::dvec3 through_media(const std::vector<const runtime::MediaVolume::One*>& media,
                          const MediaRay& ray, const std::vector<MediaLight>& lights,
                          MediaRandom& random, const MediaLightFn& light_at,
-                         const glm::dvec3& colour);
+                         const glm::dvec3& colour, const PhotonMap* photons = nullptr);
+
+// Where a photon's way through media leaves media photons (POV-Ray's
+// DepositMediaPhotons): every `spread` x `depth` x `spacing_factor` along
+// the way (the photons' spacing there; without depth for a parallel
+// light), at most `max_steps` in an interval (then farther apart), each
+// jittered by `jitter`. `keep` receives each photon's place, its distance
+// along the way and its light: the photon's light where it entered, times
+// the spacing and the spread and, for a light that is not parallel, the
+// distance from the light (the volume a photon stands for, less the
+// spread squared and distance squared the caller multiplies in as for a
+// surface photon).
+struct MediaPhotonDeposit {
+    double spread = 0.0;
+    double depth = 0.0;  // the photon's way from its light to the way's start
+    bool parallel = false;
+    int max_steps = 0;
+    double spacing_factor = 1.0;
+    double jitter = 0.4;
+    std::function<void(const glm::dvec3& point, double along, const glm::dvec3& colour)> keep;
+};
+
+// A photon's light `colour` after its way `ray` through `media` (POV-Ray's
+// ComputeMediaAndDepositPhotons for a photon ray): dimmed by their optical
+// depth, sampled as `deposit` places its photons (null: no photons left,
+// the media's own samples). Media without extinction leave none and dim
+// nothing, as in POV-Ray.
+glm::dvec3 photon_through_media(const std::vector<const runtime::MediaVolume::One*>& media,
+                                const MediaRay& ray, MediaRandom& random,
+                                const MediaPhotonDeposit* deposit, const glm::dvec3& colour);
 
 }  // namespace hexant::tracer

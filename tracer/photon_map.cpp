@@ -25,12 +25,19 @@ std::size_t sample_photon(std::size_t k, std::size_t n, std::uint64_t salt) {
 
 }  // namespace
 
-PhotonMap::PhotonMap(std::vector<Photon> photons, const runtime::PhotonSettings& settings)
+PhotonMap::PhotonMap(std::vector<Photon> photons, const runtime::PhotonSettings& settings,
+                     Kind kind)
     : photons_(std::move(photons)), settings_(settings) {
     if (photons_.empty()) return;
     build(0, photons_.size());
     const int most = std::max(settings_.gather_max, 1);
-    double radius = settings_.radius;
+    const bool media = kind == Kind::Media;
+    // (POV-Ray's density of a gather: per area, or per volume for media.)
+    const auto density_of = [media](std::size_t found, double r) {
+        return media ? 3.0 * double(found) / (4.0 * std::numbers::pi * r * r * r)
+                     : double(found) / (std::numbers::pi * r * r);
+    };
+    double radius = media ? settings_.media_radius : settings_.radius;
     if (!(radius > 0.0)) {
         // POV-Ray's setGatherOptions: 5% of the photons (100 to 1,000) as
         // gather centres; the mean density of the nearest gather_max
@@ -43,24 +50,27 @@ PhotonMap::PhotonMap(std::vector<Photon> photons, const runtime::PhotonSettings&
         for (std::size_t k = 0; k < samples; ++k) {
             const glm::dvec3 p(photons_[sample_photon(k, n, 0)].position);
             const double r = gather_within(p, nullptr, 1.0e7, most, heap);
-            const double density = r > 0.0 ? double(heap.size()) / (std::numbers::pi * r * r)
+            const double density = r > 0.0 ? density_of(heap.size(), r)
                                    : k > 0 ? sum / double(k)
                                            : 0.0;
             sum += density;
         }
         const double mean = sum / double(samples);
-        radius = mean > 0.0 ? std::sqrt(double(most) / (mean * std::numbers::pi)) : 1.0;
+        // (POV-Ray's cube root is pow(x, 0.3333): kept, it is its radius.)
+        radius = !(mean > 0.0) ? 1.0
+                 : media ? std::pow(3.0 * double(most) / (mean * std::numbers::pi * 4.0), 0.3333)
+                         : std::sqrt(double(most) / (mean * std::numbers::pi));
         std::size_t sparse = 0;
         for (std::size_t k = 0; k < samples; ++k) {
             const glm::dvec3 p(photons_[sample_photon(k, n, samples)].position);
             const double r = gather_within(p, nullptr, radius, most, heap);
             if (!(r > 0.0)) continue;
-            const double density = double(heap.size()) / (std::numbers::pi * r * r);
+            const double density = density_of(heap.size(), r);
             if (density < mean * 0.7 && density > mean * 0.05) ++sparse;
         }
         radius *= 1.0 + 20.0 * double(sparse) / double(samples);
     }
-    radius_ = radius * settings_.radius_factor;
+    radius_ = radius * (media ? settings_.media_radius_factor : settings_.radius_factor);
     if (!(radius_ > 0.0) || !std::isfinite(radius_)) radius_ = 0.0;
 }
 
@@ -146,13 +156,13 @@ double PhotonMap::gather_within(const glm::dvec3& point, const glm::dvec3* norma
     return full ? std::sqrt(reach) : size;
 }
 
-double PhotonMap::gather(const glm::dvec3& point, const glm::dvec3& normal, Found& heap) const {
+double PhotonMap::gather(const glm::dvec3& point, const glm::dvec3* normal, Found& heap) const {
     heap.clear();
     if (photons_.empty() || !(radius_ > 0.0)) return 0.0;
     const int most = std::max(settings_.gather_max, 1);
     // (The widened gather's own list, the thread's: a gather calls none.)
     thread_local Found wider;
-    double radius = gather_within(point, &normal, radius_, most, heap);
+    double radius = gather_within(point, normal, radius_, most, heap);
     // POV-Ray's gatherPhotonsAdaptive with its two steps: too few found,
     // look once more three times as wide, and keep that when the density
     // changed little or it found few.
@@ -160,7 +170,7 @@ double PhotonMap::gather(const glm::dvec3& point, const glm::dvec3& normal, Foun
     double before = radius > 0.0 ? double(heap.size()) / (radius * radius) : 0.0;
     if (before == 0.0) before = kLeast;
     if (static_cast<int>(heap.size()) < settings_.gather_min) {
-        const double r = gather_within(point, &normal, radius_ * 3.0, most, wider);
+        const double r = gather_within(point, normal, radius_ * 3.0, most, wider);
         const double now = r > 0.0 ? double(wider.size()) / (r * r) : 0.0;
         const int found = static_cast<int>(wider.size());
         if ((now - before) / before < settings_.expand_tolerance ||

@@ -36,12 +36,18 @@ struct Photon {
 class PhotonMap {
   public:
     PhotonMap() = default;
+    // A map of the photons left on surfaces, or of those left in media
+    // along their way (POV-Ray's mediaPhotonMap): its density is per
+    // volume, its gathers spheres.
+    enum class Kind { Surface, Media };
     // Takes the photons and builds the tree; then, as POV-Ray's
-    // setGatherOptions, the gather radius: `settings.radius` when given,
-    // else from the map's mean density so that a gather meets about
+    // setGatherOptions, the gather radius: `settings.radius` (for media,
+    // `media_radius`) when given, else from the map's mean density (per
+    // area, or per volume for media) so that a gather meets about
     // gather_max photons (widened where many gathers find less than 70%
-    // of the mean), times `radius_factor`.
-    PhotonMap(std::vector<Photon> photons, const runtime::PhotonSettings& settings);
+    // of the mean), times `radius_factor` (`media_radius_factor`).
+    PhotonMap(std::vector<Photon> photons, const runtime::PhotonSettings& settings,
+              Kind kind = Kind::Surface);
 
     std::size_t size() const { return photons_.size(); }
     bool empty() const { return photons_.empty(); }
@@ -58,9 +64,17 @@ class PhotonMap {
     // returns the radius their estimate divides by (the farthest kept's
     // distance when gather_max were kept, else the search radius).
     using Found = std::vector<std::pair<double, const Photon*>>;
-    double gather(const glm::dvec3& point, const glm::dvec3& normal, Found& out) const;
+    double gather(const glm::dvec3& point, const glm::dvec3& normal, Found& out) const {
+        return gather(point, &normal, out);
+    }
+    // The same within a sphere (a media map's gather: POV-Ray's
+    // ComputeMediaPhotons passes no normal).
+    double gather_in_volume(const glm::dvec3& point, Found& out) const {
+        return gather(point, nullptr, out);
+    }
 
   private:
+    double gather(const glm::dvec3& point, const glm::dvec3* normal, Found& out) const;
     // The nearest `most` within `size` (squared distances, stretched);
     // returns the radius as POV-Ray's gatherPhotons.
     double gather_within(const glm::dvec3& point, const glm::dvec3* normal, double size, int most,

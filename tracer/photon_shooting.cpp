@@ -77,10 +77,10 @@ Aim aim(const Target& target, const glm::dvec3& light, const glm::dvec3* axis) {
 
 }  // namespace
 
-PhotonMap shoot_photons(const Shader& shader,
-                        const std::vector<runtime::IntelligentObjectPtr>& objects,
-                        const std::function<double(double)>& time_at,
-                        const std::function<ThreadState&()>& state, Counters& counters) {
+PhotonMaps shoot_photons(const Shader& shader,
+                         const std::vector<runtime::IntelligentObjectPtr>& objects,
+                         const std::function<double(double)>& time_at,
+                         const std::function<ThreadState&()>& state, Counters& counters) {
     const runtime::PhotonSettings& settings = shader.photon_settings();
     const double t0 = time_at(0.0), t1 = time_at(1.0), middle = time_at(0.5);
     const runtime::Interval shutter(std::min(t0, t1), std::max(t0, t1));
@@ -137,7 +137,7 @@ PhotonMap shoot_photons(const Shader& shader,
             combos.push_back(c);
         }
     }
-    if (combos.empty()) return PhotonMap({}, settings);
+    if (combos.empty()) return {};
 
     // count: the spacing that shoots about that many (PhotonEstimationTask).
     double spacing = settings.spacing;
@@ -200,7 +200,7 @@ PhotonMap shoot_photons(const Shader& shader,
     constexpr int kBatch = 8;
     // (No ring count beyond what a double loop of POV-Ray's would run.)
     constexpr long long kMostRings = 1 << 22;
-    std::vector<Photon> all;
+    std::vector<Photon> all, all_media;
     for (std::size_t ci = 0; ci < combos.size(); ++ci) {
         const Combo& c = combos[ci];
         if (!(c.spread > 0.0) || !(c.dtheta > 0.0) || !std::isfinite(c.dtheta)) continue;
@@ -211,7 +211,8 @@ PhotonMap shoot_photons(const Shader& shader,
         bool hit_once = false;
         for (long long first = 0; first < rings; first += kBatch) {
             const int count = static_cast<int>(std::min<long long>(kBatch, rings - first));
-            std::vector<std::vector<Photon>> found(static_cast<std::size_t>(count));
+            std::vector<std::vector<Photon>> found(static_cast<std::size_t>(count)),
+                found_media(static_cast<std::size_t>(count));
             std::vector<char> hit(static_cast<std::size_t>(count), 0);
             std::vector<std::uint64_t> shot_count(static_cast<std::size_t>(count), 0);
             tbb::parallel_for(0, count, 1, [&](int r) {
@@ -249,7 +250,8 @@ PhotonMap shoot_photons(const Shader& shader,
                     const runtime::Ray4 ray{runtime::Event(origin, t),
                                             runtime::Event(direction, 0.0)};
                     if (shader.shoot_photon(shot, ray, light.colour_at(t) * attenuation,
-                                            found[static_cast<std::size_t>(r)], ts))
+                                            found[static_cast<std::size_t>(r)],
+                                            found_media[static_cast<std::size_t>(r)], ts))
                         hit[static_cast<std::size_t>(r)] = 1;
                 }
             });
@@ -258,6 +260,8 @@ PhotonMap shoot_photons(const Shader& shader,
                 const double theta = double(first + r) * c.dtheta;
                 all.insert(all.end(), found[static_cast<std::size_t>(r)].begin(),
                            found[static_cast<std::size_t>(r)].end());
+                all_media.insert(all_media.end(), found_media[static_cast<std::size_t>(r)].begin(),
+                                 found_media[static_cast<std::size_t>(r)].end());
                 if (hit[static_cast<std::size_t>(r)]) hit_once = true;
                 if (hit_once && !hit[static_cast<std::size_t>(r)] &&
                     theta > settings.autostop * c.maxtheta)
@@ -267,7 +271,9 @@ PhotonMap shoot_photons(const Shader& shader,
         }
     }
     counters.photons_stored += all.size();
-    return PhotonMap(std::move(all), settings);
+    counters.media_photons_stored += all_media.size();
+    return {PhotonMap(std::move(all), settings),
+            PhotonMap(std::move(all_media), settings, PhotonMap::Kind::Media)};
 }
 
 }  // namespace hexant::tracer

@@ -24,13 +24,18 @@
 
 namespace hexant::tracer {
 
+// A frame's photons: those left on surfaces, and those left in media.
+struct PhotonMaps {
+    PhotonMap surface, media;
+};
+
 // The photons of one frame. `objects`: the scene's intelligent objects (the
 // targets among them are grouped by ObjectFlags::photon_group); `time_at`
 // maps a fraction of the shutter in [0, 1] to clock time; `state()` the
 // calling thread's state. Counts the shooting in `counters`.
-PhotonMap shoot_photons(const Shader& shader,
-                        const std::vector<runtime::IntelligentObjectPtr>& objects,
-                        const std::function<double(double)>& time_at,
-                        const std::function<ThreadState&()>& state, Counters& counters);
+PhotonMaps shoot_photons(const Shader& shader,
+                         const std::vector<runtime::IntelligentObjectPtr>& objects,
+                         const std::function<double(double)>& time_at,
+                         const std::function<ThreadState&()>& state, Counters& counters);
 
 }  // namespace hexant::tracer

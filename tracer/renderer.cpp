@@ -341,12 +341,13 @@ Image Renderer::render_frame(int frame) {
 
     // Photons: the frame's map, shot across its shutter before anything
     // is traced (radiosity's pretrace sees them too, as in POV-Ray).
-    std::optional<PhotonMap> photons;
+    std::optional<PhotonMaps> photons;
     if (shader_->photons_enabled()) {
         photons.emplace(shoot_photons(
             *shader_, objects_, [&](double u) { return frame_clock.at(0.5, u); },
             [&]() -> ThreadState& { return states.local(); }, counters_));
-        shader_->set_photon_map(&*photons);
+        shader_->set_photon_map(&photons->surface);
+        shader_->set_media_photon_map(&photons->media);
     }
 
     // Radiosity: the frame's irradiance cache, filled by the pretrace
@@ -412,6 +413,7 @@ Image Renderer::render_frame(int frame) {
     for (const ThreadState& s : states) counters_ += s.counters;
     shader_->set_radiosity_cache(nullptr, {});
     shader_->set_photon_map(nullptr);
+    shader_->set_media_photon_map(nullptr);
     counters_.render_seconds +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (estimate) {

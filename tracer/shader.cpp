@@ -431,7 +431,7 @@ glm::dvec3 Shader::radiance(const Ray4& ray, int depth, double weight, std::uint
 }
 
 glm::dvec3 Shader::media_light(std::size_t index, const glm::dvec3& point, double t, int level,
-                               const Inside& around, glm::dvec3& to_light,
+                               const Inside& around, bool collects, glm::dvec3& to_light,
                                ThreadState& state) const {
     // POV-Ray's TestShadow from the sample: the light's ray, its
     // attenuation, and its shadow ray (a shadowless light casts none).
@@ -461,7 +461,10 @@ glm::dvec3 Shader::media_light(std::size_t index, const glm::dvec3& point, doubl
     if (!light.shadowless() && reach > 0.0) {
         ++state.counters.shadow_rays;
         if (blocked(shadow, reach, state)) return glm::dvec3(0.0);
-        if (filtering_) colour *= filtered(shadow, reach, level, around, state);
+        if (filtering_)
+            colour *= filtered(
+                shadow, reach, level, around, state,
+                photon_map_ != nullptr && collects ? static_cast<std::ptrdiff_t>(index) : -1);
     }
     if (light.media_attenuation() && reach > 0.0) {
         if (atmosphere_) colour = shadow_media(colour, shadow, reach, *atmosphere_);

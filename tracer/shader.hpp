@@ -88,6 +88,11 @@ class Shader {
     void set_photon_map(const PhotonMap* map) {
         photon_map_ = map != nullptr && !map->empty() ? map : nullptr;
     }
+    // The frame's media photons (null: none), which media samples gather
+    // (POV-Ray's mediaPhotonMap).
+    void set_media_photon_map(const PhotonMap* map) {
+        media_photon_map_ = map != nullptr && !map->empty() ? map : nullptr;
+    }
     const std::vector<ShadedLight>& lights() const { return lights_; }
     // One photon being shot: its light (an index in lights()), the target
     // it is shot at (ObjectFlags::photon_group) and the spread of the
@@ -100,9 +105,11 @@ class Shader {
         double spread = 0.0;
     };
     // Traces a photon of `colour` along `ray` (from its light), appending
-    // the photons it leaves to `out`. Returns whether it met its target.
+    // the photons it leaves on surfaces to `out` and in media to
+    // `media_out`. Returns whether it met its target.
     bool shoot_photon(const PhotonShot& shot, const runtime::Ray4& ray, const glm::dvec3& colour,
-                      std::vector<Photon>& out, ThreadState& state) const;
+                      std::vector<Photon>& out, std::vector<Photon>& media_out,
+                      ThreadState& state) const;
 
   private:
     // `sight`: the kind of ray (runtime::RaySight), which decides the
@@ -214,6 +221,7 @@ class Shader {
     struct PhotonPath {
         const PhotonShot* shot = nullptr;
         std::vector<Photon>* out = nullptr;
+        std::vector<Photon>* media_out = nullptr;
         int level = 0;
         bool pass_prev = true, pass_this = false;
         double depth = 0.0;
@@ -221,6 +229,13 @@ class Shader {
     };
     void trace_photon(const runtime::Ray4& ray, const glm::dvec3& colour, double weight,
                       const Inside& inside, PhotonPath& path, ThreadState& state) const;
+    // A photon's light `colour` after its way of `way` along `ray` through
+    // the media of `inside` (hollow interiors), leaving media photons on
+    // it where POV-Ray's PhotonTrace does: past the photon's first
+    // surface, not just through a pass_through one, with photons' media
+    // steps set.
+    glm::dvec3 photon_media(const runtime::Ray4& ray, double way, const Inside& inside,
+                            const glm::dvec3& colour, PhotonPath& path) const;
     // The photons around a hit, gathered once for its layers.
     struct PhotonGather {
         bool done = false;
@@ -343,9 +358,13 @@ class Shader {
                             std::vector<const runtime::MediaVolume::One*> media) const;
     // The light of light `index` arriving at `point` in media at time t,
     // after its shadow ray (MediaLightFn), which starts in the interiors
-    // `around` (the viewing ray's).
+    // `around` (the viewing ray's). `collects`: whether the media sampled
+    // collect photons (not all `collect off`): then a photon target that
+    // refracts the light's photons shadows it fully, as for a surface
+    // (POV-Ray's litObjectIgnoresPhotons, set by ComputeOneMediaSample).
     glm::dvec3 media_light(std::size_t index, const glm::dvec3& point, double t, int level,
-                           const Inside& around, glm::dvec3& to_light, ThreadState& state) const;
+                           const Inside& around, bool collects, glm::dvec3& to_light,
+                           ThreadState& state) const;
 
     const RayQuery& query_;
     LightTravel travel_;
@@ -397,6 +416,7 @@ class Shader {
     glm::dvec3 radiosity_eye_{0.0};
     runtime::PhotonSettings photons_;
     const PhotonMap* photon_map_ = nullptr;
+    const PhotonMap* media_photon_map_ = nullptr;
     bool legacy_sky_ = false;      // GlobalSettings::legacy_sky
     bool legacy_opacity_ = false;  // GlobalSettings::legacy_opacity
 };

@@ -5,12 +5,14 @@
 // frame's photons at a surface being shaded.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <numbers>
 
 #include <glm/geometric.hpp>
 
 #include "runtime/geometry/offset_ray.hpp"
 #include "tracer/iridescence.hpp"
+#include "tracer/media.hpp"
 #include "tracer/reflectivity.hpp"
 #include "tracer/shader.hpp"
 
@@ -38,8 +40,9 @@ bool photon_on(std::int8_t object, std::int8_t light) {
 }  // namespace
 
 bool Shader::shoot_photon(const PhotonShot& shot, const Ray4& ray, const glm::dvec3& colour,
-                          std::vector<Photon>& out, ThreadState& state) const {
-    PhotonPath path{&shot, &out};
+                          std::vector<Photon>& out, std::vector<Photon>& media_out,
+                          ThreadState& state) const {
+    PhotonPath path{&shot, &out, &media_out};
     const Inside inside = camera_interiors_.empty() ? Inside{} : inside_at(ray.origin);
     state.straight_passes = 0;
     state.band = {};
@@ -85,8 +88,10 @@ void Shader::trace_photon(const Ray4& ray, const glm::dvec3& colour, double weig
     h.sight = runtime::kSightPhoton;
     describe(h, *hit->object, ray, inside);
     const double way = glm::distance(h.point, glm::dvec3(ray.origin));
-    // Light that crossed the object's inside fades (POV-Ray's attCol).
     glm::dvec3 light = colour;
+    // Through media on its way (POV-Ray: inside hollow interiors only).
+    if (inside.has_media() && inside.hollow()) light = photon_media(ray, way, inside, light, path);
+    // Light that crossed the object's inside fades (POV-Ray's attCol).
     if (h.around.holds(h.interior))
         if (const auto fade = p.texture->fade_at(h.time)) light *= fade->through(way);
     path.depth += way;
@@ -264,6 +269,54 @@ bool Shader::photon_shadow(const runtime::IntelligentObject& object, std::size_t
     const runtime::LightPhotons& asks = lights_[light].photons();
     return f.photon_target > 0.0f && f.photon_refraction != -1 && asks.refraction != -1 &&
            (f.photon_refraction == 1 || asks.refraction == 1);
+}
+
+glm::dvec3 Shader::photon_media(const Ray4& ray, double way, const Inside& inside,
+                                const glm::dvec3& colour, PhotonPath& path) const {
+    std::vector<const runtime::MediaVolume::One*> media;
+    for (int i = 0; i < inside.count; ++i)
+        if (const runtime::MediaVolume* v = inside.entries[std::size_t(i)].media)
+            for (const auto& one : v->media()) media.push_back(&one);
+    MediaRay m;
+    m.origin = glm::dvec3(ray.origin);
+    m.direction = glm::normalize(glm::dvec3(ray.direction));
+    m.depth = way;
+    m.time = ray.origin.w;
+    // (Each photon's way its own numbers, from where it starts and goes:
+    // a frame does not depend on the threads.)
+    std::uint64_t seed = static_cast<std::uint64_t>(path.level);
+    for (const double x : {m.origin.x, m.origin.y, m.origin.z, m.direction.x, m.direction.y}) {
+        std::uint64_t bits = 0;
+        std::memcpy(&bits, &x, sizeof bits);
+        seed = (seed ^ bits) * 0x9E3779B97F4A7C15ull;
+    }
+    MediaRandom random(seed);
+    if (path.level <= 1 || path.pass_prev || photons_.media_max_steps <= 0 || !path.media_out)
+        return photon_through_media(media, m, random, nullptr, colour);
+    const ShadedLight& source = lights_[path.shot->light];
+    MediaPhotonDeposit deposit;
+    deposit.spread = path.shot->spread;
+    deposit.depth = path.depth;
+    deposit.parallel = source.parallel();
+    deposit.max_steps = photons_.media_max_steps;
+    deposit.spacing_factor = photons_.media_spacing_factor;
+    deposit.jitter = photons_.jitter;
+    deposit.keep = [&](const glm::dvec3& point, double along, const glm::dvec3& light) {
+        // (POV-Ray's addMediaPhoton: as a surface photon's, the spread
+        // squared, the distance squared and the light's fade taken back.)
+        const double depth = path.depth + along;
+        double area = deposit.spread * deposit.spread;
+        if (!deposit.parallel) area *= depth * depth;
+        const glm::dvec3 kept = light * (source.fade(depth, m.time) * area);
+        if (!std::isfinite(kept.x + kept.y + kept.z)) return;
+        Photon photon;
+        photon.position = glm::vec3(point);
+        photon.colour = glm::vec3(kept);
+        photon.from = glm::vec3(-m.direction);
+        photon.time = static_cast<float>(m.time);
+        path.media_out->push_back(photon);
+    };
+    return photon_through_media(media, m, random, &deposit, colour);
 }
 
 }  // namespace hexant::tracer

@@ -163,22 +163,29 @@ glm::dvec3 Shader::through_volume(const glm::dvec3& colour, const Ray4& ray, dou
         std::memcpy(&bits, &m.direction.x, sizeof bits);
         seed ^= bits;
         MediaRandom random(seed);
+        bool collects = false;  // the media being sampled's
         const MediaLightFn light_at = [&](std::size_t i, const glm::dvec3& point,
                                           glm::dvec3& to_light) {
-            return media_light(i, point, m.time, level, around, to_light, state);
+            return media_light(i, point, m.time, level, around, collects, to_light, state);
+        };
+        const auto collecting = [](const std::vector<const runtime::MediaVolume::One*>& media) {
+            return std::any_of(media.begin(), media.end(),
+                               [](const auto* one) { return one->record.collect; });
         };
         if (interiors) {
             std::vector<const runtime::MediaVolume::One*> media;
             for (int i = 0; i < around.count; ++i)
                 if (const runtime::MediaVolume* v = around.entries[std::size_t(i)].media)
                     for (const auto& one : v->media()) media.push_back(&one);
-            seen = through_media(media, m, lights, random, light_at, seen);
+            collects = collecting(media);
+            seen = through_media(media, m, lights, random, light_at, seen, media_photon_map_);
             rainbows();
         }
         if (atmosphere_) {
             std::vector<const runtime::MediaVolume::One*> media;
             for (const auto& one : atmosphere_->media()) media.push_back(&one);
-            seen = through_media(media, m, lights, random, light_at, seen);
+            collects = collecting(media);
+            seen = through_media(media, m, lights, random, light_at, seen, media_photon_map_);
         }
     }
     return fogs_.empty() ? seen : fogged(seen, ray, depth);

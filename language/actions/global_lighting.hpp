@@ -218,10 +218,6 @@ struct action<g::photons_setting> {
                     throw ValueError("photons' media spacing factor must be greater than zero");
                 ph.media_spacing_factor = x[1];
             }
-            if (ph.media_max_steps > 0)
-                st.warn(in.position(),
-                        "photons' media is read but not rendered as POV-Ray renders it: hexant "
-                        "stores no photons in media");
         } else if (name == "jitter") {
             ph.jitter = x[0];
         } else if (name == "max_trace_level") {

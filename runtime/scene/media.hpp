@@ -45,7 +45,7 @@ struct Media {
     // multiplied together (POV-Ray's Evaluate_Density_Pigment); none is a
     // constant density of 1. Each maps its space to the media's.
     std::vector<Pigment> density;
-    bool collect = true;  // media photons: hexant shoots none; kept as read
+    bool collect = true;  // whether photons passing are left in it (media photons)
 
     // POV-Ray's defaults before 3.5 (method 1, 10 intervals, 1 sample).
     // (Out of line: a Media made here, where Pigment is incomplete, is an

@@ -29,10 +29,13 @@ struct PhotonSettings {
     double expand_tolerance = 0.2;
     int expand_min = 35;
     // radius: the gather's radius (below 0: from the map's density), its
-    // factor, and the media map's (media photons are not shot by hexant).
+    // factor, and the media map's.
     double radius = -1.0, radius_factor = 1.0;
     double media_radius = -1.0, media_radius_factor = 1.0;
-    int media_max_steps = 0;  // media photons (warned: not shot)
+    // media MAX_STEPS, FACTOR: photons left in media along their way, at
+    // most MAX_STEPS an interval, FACTOR times the surface spacing apart
+    // (0: none).
+    int media_max_steps = 0;
     double media_spacing_factor = 1.0;
 };
 

@@ -76,18 +76,18 @@ TEST_CASE("photons' settings are checked as POV-Ray checks them", "[language][ph
 }
 
 TEST_CASE("what photons hexant does not make is warned at its place", "[language][photons]") {
-    // Media photons, photon files, a light's area_light photons, split_union.
+    // Photon files, a light's area_light photons, split_union (media
+    // photons are made: no warning).
     const auto scene = scene_of(
         "global_settings { photons { spacing 0.1 media 100, 2 save_file \"a.ph\" } }\n"
         "light_source { 0, 1 photons { area_light } }\n"
         "union { sphere { 0, 1 } sphere { x, 1 } photons { split_union on } }");
-    REQUIRE(scene.warnings.size() == 4);
-    CHECK(scene.warnings[0].find("stores no photons in media") != std::string::npos);
-    CHECK(scene.warnings[1].find("save_file is ignored") != std::string::npos);
-    CHECK(scene.warnings[2].find("area_light") != std::string::npos);
-    CHECK(scene.warnings[3].find("split_union") != std::string::npos);
-    // (media 0 turns media photons off: nothing to warn.)
-    CHECK(scene_of("global_settings { photons { spacing 0.1 media 0 } }").warnings.empty());
+    REQUIRE(scene.warnings.size() == 3);
+    CHECK(scene.warnings[0].find("save_file is ignored") != std::string::npos);
+    CHECK(scene.warnings[1].find("area_light") != std::string::npos);
+    CHECK(scene.warnings[2].find("split_union") != std::string::npos);
+    CHECK(scene.global.photons.media_max_steps == 100);
+    CHECK(scene.global.photons.media_spacing_factor == 2.0);
 }
 
 TEST_CASE("an object's and a light's photons are read", "[language][photons]") {
