@@ -292,6 +292,12 @@ ModeRun render_mode(runtime::SceneDescription& scene, const RenderArguments& arg
                               estimate->worst[k].rmse, estimate->worst[k].x, estimate->worst[k].y);
                 err << line;
             }
+            if (estimate->photon_rmse > 0.0) {
+                std::snprintf(line, sizeof line,
+                              "; the photon map's RMSE %.3g (not lowered by samples)",
+                              estimate->photon_rmse);
+                err << line;
+            }
             if (const int over = renderer.last_tiles_over_target())
                 err << "; " << over << " of " << renderer.last_tile_count()
                     << " tiles reached --spp " << sampling.samples << " above the target "

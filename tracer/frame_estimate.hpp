@@ -23,6 +23,12 @@ struct FrameEstimate {
     // ties in grid order).
     static constexpr int kWorst = 3;
     std::vector<Tile> worst;
+    // The photon map's part, which more samples do not lower (a frame's
+    // photons are shot once): the RMSE over pixels of the photon
+    // estimates their samples saw, each estimate's variance its photons'
+    // terms squared. 0 without photons. Not in `rmse`, which is what
+    // sampling can lower.
+    double photon_rmse = 0.0;
 };
 
 // From `squared`: per pixel (rows top to bottom), the estimated squared

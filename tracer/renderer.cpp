@@ -252,6 +252,9 @@ Image Renderer::render_frame(int frame) {
     Image image(width, height);
     // (Per pixel, the estimated squared error over its channels.)
     std::vector<double> squared(estimate ? static_cast<std::size_t>(width) * height : 0);
+    // (Per pixel, the photon map's squared error summed over its samples.)
+    std::vector<double> photon_squared(
+        estimate && shader_->photons_enabled() ? static_cast<std::size_t>(width) * height : 0);
     std::vector<int> samples(static_cast<std::size_t>(width) * height, 0);
     const bool moving_camera = scene_.camera.depends_on_time();
     const double working_gamma = scene_.global.assumed_gamma;
@@ -394,8 +397,11 @@ Image Renderer::render_frame(int frame) {
             }
             path.kept = &path.pixel;
         }
+        state.photon_variance = 0.0;
         const glm::dvec3 colour = trace_sample(x, y, seed, index, count, state);
         path.kept = nullptr;
+        if (!photon_squared.empty())
+            photon_squared[static_cast<std::size_t>(y) * width + x] += state.photon_variance;
         state.counters.deformation_maps += runtime::this_thread_work.deformation_maps - maps;
         return colour;
     };
@@ -418,6 +424,12 @@ Image Renderer::render_frame(int frame) {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (estimate) {
         last_estimate_ = estimate_frame(squared, width, height);
+        if (!photon_squared.empty()) {
+            double sum = 0.0;
+            for (std::size_t i = 0; i < photon_squared.size(); ++i)
+                sum += samples[i] > 0 ? photon_squared[i] / samples[i] : 0.0;
+            last_estimate_->photon_rmse = std::sqrt(sum / double(photon_squared.size()));
+        }
         last_squared_ = std::move(squared);
     } else {
         last_estimate_.reset();

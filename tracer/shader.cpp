@@ -617,7 +617,14 @@ glm::dvec3 Shader::lit(const Hit& h, const runtime::TextureSample::Layer* layers
                                    noise_generator_);
             own += lit * known.colour;
         }
-        if (photons) own += photon_light(h, m, n, opaque, photon_gather, state);
+        if (photons) {
+            own += photon_light(h, m, n, opaque, photon_gather, state);
+            // (The photon map's noise where the camera sees it.)
+            if (h.depth == 1 && state.radiosity.depth == 0) {
+                const glm::dvec3 v = photon_gather.variance * through * through;
+                state.photon_variance += (v.x + v.y + v.z) / 3.0;
+            }
+        }
         colour += own * through;
         through *= m.filter * m.colour + glm::dvec3(m.transmit);
         // conserve_energy: less passes through by what the layer reflects.

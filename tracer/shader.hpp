@@ -241,11 +241,15 @@ class Shader {
         bool done = false;
         double radius = 0.0;
         PhotonMap::Found photons;
+        // The last layer's estimate's variance, per channel: its photons'
+        // terms squared, summed (photons as a Poisson process's points).
+        glm::dvec3 variance{0.0};
     };
     // The light of the frame's photons at the hit, for a layer of material
     // `m`, normal `n` and opacity `opaque` (POV-Ray's
     // ComputePhotonDiffuseLight: each photon lights the layer as a light
-    // from where it came, their sum over the gather's disc).
+    // from where it came, their sum over the gather's disc); its variance
+    // left in `gather.variance`.
     glm::dvec3 photon_light(const Hit& h, const runtime::MaterialSample& m, const glm::dvec3& n,
                             double opaque, PhotonGather& gather, ThreadState& state) const;
     // Whether `object`, met by a shadow ray of light `light`, casts the

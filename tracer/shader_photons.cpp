@@ -227,6 +227,7 @@ void Shader::trace_photon(const Ray4& ray, const glm::dvec3& colour, double weig
 
 glm::dvec3 Shader::photon_light(const Hit& h, const runtime::MaterialSample& m, const glm::dvec3& n,
                                 double opaque, PhotonGather& gather, ThreadState& state) const {
+    gather.variance = glm::dvec3(0.0);
     if (m.diffuse == 0.0 && m.diffuse_back == 0.0 && m.specular == 0.0 && m.phong == 0.0)
         return glm::dvec3(0.0);
     // Gathered once for the hit, about the first layer's normal that asks
@@ -237,7 +238,7 @@ glm::dvec3 Shader::photon_light(const Hit& h, const runtime::MaterialSample& m, 
         gather.radius = photon_map_->gather(h.point, n, gather.photons);
     }
     if (gather.photons.empty() || !(gather.radius > 0.0)) return glm::dvec3(0.0);
-    glm::dvec3 sum(0.0);
+    glm::dvec3 sum(0.0), squares(0.0);
     for (const auto& [distance2, photon] : gather.photons) {
         const glm::dvec3 from(photon->from);
         // (POV-Ray's Lambertian compensation, by the raw normal, at most
@@ -256,8 +257,11 @@ glm::dvec3 Shader::photon_light(const Hit& h, const runtime::MaterialSample& m, 
         if (m.irid > 0.0)
             lit *= iridescence(m, from, h.d, n, h.point, irid_wavelength_, noise_generator_);
         sum += lit * arriving;
+        squares += (lit * arriving) * (lit * arriving);
     }
-    return sum / (std::numbers::pi * gather.radius * gather.radius);
+    const double area = std::numbers::pi * gather.radius * gather.radius;
+    gather.variance = squares / (area * area);
+    return sum / area;
 }
 
 // POV-Ray's ComputeShadowColour: where photons carry a light through a

@@ -78,6 +78,12 @@ struct ThreadState {
     // The spectral band the path being traced took at a dispersive
     // surface (none: a ray of every colour; tracer/spectral_band.hpp).
     SpectralBand band{};
+    // The squared error (linear light, the mean of the channels) of the
+    // photon map's estimates the sample being traced took on the surfaces
+    // its camera ray saw (Shader::photon_light): the photon map's noise,
+    // the same for every sample of a frame, which the blocks' estimate of
+    // the pixel's noise cannot see. Reset by the renderer per sample.
+    double photon_variance = 0.0;
     // Counts the runs of samples this thread has traced, one pixel's
     // samples of one round each (sample_frame): what a pixel's samples
     // share is kept within one run.
