@@ -110,14 +110,6 @@ struct KeptBins {
     PackedBins bins;
 };
 
-// A leaf of this many objects or more keeps no bins while it is grouped:
-// it is grouped by the objects' placed boxes at its ends, and each
-// object's bins are made at the bottom, where its node is fitted (issue
-// 43: the swarm's peak at 10^5 spheres was a leaf's build, 188 bytes an
-// object held, on top of the frame's nodes; now 56). Below it, the bins
-// are made once and kept packed (192 bytes an object in all).
-inline constexpr std::size_t kKeptBinsLimit = std::size_t(1) << 14;
-
 }  // namespace hierarchy_build
 
 // A cell's time. In spacetime mode the root's time is the sweeps' own and

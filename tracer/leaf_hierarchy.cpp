@@ -227,7 +227,7 @@ void bottom_runs(std::vector<LeafItem>& items, std::size_t begin, std::size_t en
 
 // A cell at the bottom: its objects as children, each bounded inside it.
 // While it is built a leaf of n objects holds n items of 56 bytes, each an
-// object's bound at the leaf's start and end. Below kKeptBinsLimit objects
+// object's bound at the leaf's start and end. Below options_.kept_bins objects (2^14)
 // that bound is the ends of the object's bins, which are made once and
 // kept packed beside their box (136 bytes more, packed_bins.hpp). A larger
 // leaf keeps no bins: the bound it prices and sorts by is the object's
@@ -241,7 +241,7 @@ NodeRef Hierarchy::Builder::leaf(NodeArena& arena, const Box4& region, const Cel
                                  const std::vector<std::uint32_t>& objects,
                                  Counters& counters) const {
     const int k = fit_levels();
-    const bool keep = objects.size() < kKeptBinsLimit;
+    const bool keep = objects.size() < options_.kept_bins;
     std::vector<LeafItem> items(objects.size());
     std::vector<KeptBins> kept(keep ? objects.size() : 0);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, objects.size(), kParallelGrain),
