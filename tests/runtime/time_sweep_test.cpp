@@ -240,10 +240,11 @@ TEST_CASE("a sweep the depth limit kept coarse refines finer pieces from the obj
         REQUIRE(coarse.boxes_over_dyadic(kLevel, first, kCount, object, refined.data(), lo.data(),
                                          hi.data()));
         // At each cut the lines hold the sphere itself and its chord's
-        // error (~0.01): about its own size, 0.2, where the box over a
-        // piece also holds its path over the piece (~0.5 along it).
+        // error (over two pieces, ~0.03, within the growth of 1.5 the
+        // sweep allows: issue 43): about its own size, 0.2, where the box
+        // over a piece also holds its path over the piece (~0.5 along it).
         for (std::size_t j = 0; j <= kCount; ++j)
-            for (int a = 0; a < 3; ++a) CHECK(hi[j][a] - lo[j][a] < 0.25);
+            for (int a = 0; a < 3; ++a) CHECK(hi[j][a] - lo[j][a] < 0.3);
         for (std::size_t k = 0; k < kCount; ++k) {
             const rt::Box4 cached = coarse.box_over_dyadic(kLevel, first + k);
             // Inside the cached answer, and far tighter: over 1/256 of four
@@ -341,9 +342,10 @@ TEST_CASE("a sweep keeps 12 bytes a piece: chords share their ends, still pieces
         rt::TimeSweep::of(*orbit.objects.front(), rt::Interval(0.0, 1.0), 4);
     REQUIRE(chords.depth() == 4);
     CHECK(chords.bytes() == header + 12 + 6 * (16 + 1));
-    // A box on the same orbit turns: its cuts differ in size, six steps each.
+    // A box turning on such an orbit (not by a quarter turn between cuts):
+    // its boxes at the cuts differ in size, six steps each.
     const Parsed turning = parse(
-        "box { <4.9, -0.1, -0.1>, <5.1, 0.1, 0.1> rotate y * 1440 * clock "
+        "box { <4.9, -0.1, -0.1>, <5.1, 0.1, 0.1> rotate y * 1300 * clock "
         "rotate <30, 0, 20> }\n");
     const rt::TimeSweep sides =
         rt::TimeSweep::of(*turning.objects.front(), rt::Interval(0.0, 1.0), 4);
