@@ -94,13 +94,19 @@ inline void fill_empty(float* lo, float* hi, int i) {
     hi[i] = -std::numeric_limits<float>::infinity();
 }
 
-// An object of a leaf being grouped: the box over its bins (the frame its
-// bins are packed in), its bound at the start and the end of the leaf's
-// time (what the surface-area heuristic prices and sorts by), and its bins.
+// An object of a leaf being grouped: its bound at the start and the end
+// of the leaf's time (what the surface-area heuristic prices and sorts
+// by), and where the leaf keeps its objects' bins, its place among them
+// (the items are reordered, the bins are not).
 struct LeafItem {
-    BinBox box;
     LinearExtent extent;
     std::uint32_t object;
+    std::uint32_t kept;
+};
+
+// An object's bins packed (packed_bins.hpp) in the box over them.
+struct KeptBins {
+    BinBox box;
     PackedBins bins;
 };
 
@@ -144,6 +150,7 @@ class Hierarchy::Builder {
     using Interval = runtime::Interval;
     using Child = hierarchy_build::Child;
     using LeafItem = hierarchy_build::LeafItem;
+    using KeptBins = hierarchy_build::KeptBins;
 
     Builder(const Hierarchy& h) : h_(h), objects_(h.objects_), options_(h.options_) {}
 
@@ -224,12 +231,14 @@ class Hierarchy::Builder {
         NodeArena& arena;
         const Box4& region;
         const CellTime& time;
-        int k;  // fit_levels()
+        int k;                              // fit_levels()
+        const std::vector<KeptBins>* kept;  // null: bins made again at the bottom
     };
     NodeRef leaf(NodeArena& arena, const Box4& region, const CellTime& time,
                  const std::vector<std::uint32_t>& objects, Counters& counters) const;
     Child group_range(const Leaf& leaf, std::vector<LeafItem>& items, std::size_t begin,
                       std::size_t end, Counters& counters, bool top = false) const;
+    LinearExtent placed_ends(std::uint32_t i, const Box4& region, const CellTime& time) const;
 
     // Nodes over children's bounds (node_fit.cpp).
     NodeRef bound_node(NodeArena& arena, const Interval& time, const std::vector<Child>& children,

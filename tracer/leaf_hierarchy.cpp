@@ -226,34 +226,62 @@ void bottom_runs(std::vector<LeafItem>& items, std::size_t begin, std::size_t en
 }  // namespace
 
 // A cell at the bottom: its objects as children, each bounded inside it.
-// While it is built a leaf of n objects holds n items of 188 bytes,
-// each object's bins packed beside its box (packed_bins.hpp) and its
-// bound at the leaf's start and end; it held 304 bytes an object (the
-// bins in floats, and a 96-byte item), 30 MB for a leaf of 10^5 objects,
-// and the two threads build two at once.
+// While it is built a leaf of n objects holds n items of 56 bytes, each an
+// object's bound at the leaf's start and end. Below options_.kept_bins objects (2^14)
+// that bound is the ends of the object's bins, which are made once and
+// kept packed beside their box (136 bytes more, packed_bins.hpp). A larger
+// leaf keeps no bins: the bound it prices and sorts by is the object's
+// placed box at the leaf's start and end, inside the cell (two placements
+// where the bins make five to nine), and the bins are made at the bottom,
+// where they are used (issue 43: it held 188 bytes an object, 18.8 MB for
+// a leaf of 10^5, on top of the frame's nodes: the swarm's peak). An
+// object whose cached sweep misses the cell goes; one whose bins miss it
+// goes at the bottom.
 NodeRef Hierarchy::Builder::leaf(NodeArena& arena, const Box4& region, const CellTime& time,
                                  const std::vector<std::uint32_t>& objects,
                                  Counters& counters) const {
     const int k = fit_levels();
+    const bool keep = objects.size() < options_.kept_bins;
     std::vector<LeafItem> items(objects.size());
+    std::vector<KeptBins> kept(keep ? objects.size() : 0);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, objects.size(), kParallelGrain),
                       [&](const tbb::blocked_range<std::size_t>& r) {
                           for (std::size_t i = r.begin(); i < r.end(); ++i) {
-                              const TimeBins bins = object_bins(objects[i], region, time, k);
-                              // (Nothing in the cell: the item goes.)
-                              const BinBox hull = bins.is_empty() ? BinBox{} : bins.frame();
-                              items[i].box = hull;
-                              items[i].extent = ends(bins);
                               items[i].object = objects[i];
-                              items[i].bins = PackedBins::pack(bins, hull);
+                              items[i].kept = std::uint32_t(i);
+                              // (Nothing in the cell: the item goes, its extent empty.)
+                              if (!keep) {
+                                  items[i].extent = placed_ends(objects[i], region, time);
+                                  continue;
+                              }
+                              const TimeBins bins = object_bins(objects[i], region, time, k);
+                              items[i].extent = ends(bins);
+                              const BinBox hull = bins.is_empty() ? BinBox{} : bins.frame();
+                              kept[i] = {hull, PackedBins::pack(bins, hull)};
                           }
                       });
     // Objects the cell's bins miss (in place: no second copy of a large leaf).
-    std::erase_if(items, [](const LeafItem& item) { return item.box.is_empty(); });
+    std::erase_if(items, [](const LeafItem& item) { return item.extent.start.is_empty(); });
     if (items.empty()) return {};
     counters.object_refs += items.size();
-    const Leaf leaf{arena, region, time, k};
+    const Leaf leaf{arena, region, time, k, keep ? &kept : nullptr};
     return group_range(leaf, items, 0, items.size(), counters, true).ref;
+}
+
+// Object i's placed boxes at the start and end of the cell's time, inside
+// the region (the cached sweep's box there where a placed box misses it);
+// empty where the cached sweep misses the cell. A heuristic, for the
+// surface-area heuristic alone: the nodes are fitted to the bins.
+LinearExtent Hierarchy::Builder::placed_ends(std::uint32_t i, const Box4& region,
+                                             const CellTime& time) const {
+    const Box4 cached = object_over(i, time, region);
+    if (cached.is_empty()) return {};
+    const runtime::IntelligentObject& object = *objects_.objects[i];
+    const auto at = [&](double t) {
+        const BinBox placed = BinBox::of(object.placed_box_at(t).intersection(region));
+        return placed.is_empty() ? BinBox::of(cached) : placed;
+    };
+    return {at(time.t.lo), at(time.t.hi)};
 }
 
 // More objects than a node holds: a small bounding volume hierarchy
@@ -276,10 +304,19 @@ Child Hierarchy::Builder::group_range(const Leaf& leaf, std::vector<LeafItem>& i
         members.reserve(end - begin);
         Child merged{{}, TimeBins::empty(1 << leaf.k)};
         for (std::size_t i = begin; i < end; ++i) {
-            members.push_back({NodeRef::object(items[i].object),
-                               items[i].bins.unpack(items[i].box, leaf.region)});
+            const std::uint32_t object = items[i].object;
+            if (leaf.kept) {
+                const KeptBins& kept = (*leaf.kept)[items[i].kept];
+                members.push_back(
+                    {NodeRef::object(object), kept.bins.unpack(kept.box, leaf.region)});
+            } else {
+                TimeBins bins = object_bins(object, leaf.region, leaf.time, leaf.k);
+                if (bins.is_empty()) continue;  // (its sweep met the cell, its bins do not)
+                members.push_back({NodeRef::object(object), bins});
+            }
             merged.bins.add(members.back().bins);
         }
+        if (members.empty()) return merged;
         if (members.size() == 1 && !top) return members.front();
         merged.ref = object_node(leaf.arena, time, members, counters);
         return merged;
@@ -334,7 +371,11 @@ Child Hierarchy::Builder::group_range(const Leaf& leaf, std::vector<LeafItem>& i
     else
         for (std::size_t c = 0; c < clusters.size(); ++c) make(c);
     for (const Counters& c : each) counters += c;
+    // (A group whose objects' bins all missed the cell is nothing.)
+    std::erase_if(grouped, [](const Child& c) { return c.ref.empty(); });
     Child merged{{}, TimeBins::empty(1 << leaf.k)};
+    if (grouped.empty()) return merged;
+    if (grouped.size() == 1 && !top) return grouped.front();
     for (const Child& c : grouped) merged.bins.add(c.bins);
     merged.ref = bound_node(leaf.arena, time, grouped, counters);
     return merged;

@@ -23,8 +23,10 @@
 // piece, a slow one a few, a small fast one more, up to a limit. A motion that is fast only between
 // the probes gets fewer box pieces than it could use: looser, never wrong.
 //
-// Storage: the box over the whole range in doubles, and the pieces as
-// 16-bit steps of that box rounded outward (lower ends to a step at or
+// Storage: the box over the whole range in floats rounded outward (in
+// doubles at the head of the steps where that is not finite, an object
+// beyond the floats' range: rounding would make its bound infinite), and
+// the pieces as 16-bit steps of that box rounded outward (lower ends to a step at or
 // below them, upper ends at or above, checked on the decoded values, so the
 // rounding of encoding and decoding cannot cut anything off; a line between
 // outward ends lies outside the line between the true ends), in one of
@@ -36,6 +38,10 @@
 //     more (chords: neighbouring chords meet at the same placed box, so
 //     sharing loses nothing; where merging left two ends apart, the cut
 //     keeps the outer of the two, looser, never wrong);
+//   - centred ends: as shared ends where the cuts' boxes are one size to
+//     within two steps per axis (a rigid shape's chords, a sphere's at
+//     any turn): one half extent per axis in floats and each cut's centre,
+//     6 bytes a piece and one more, and 12 bytes;
 //   - separate ends: the four ends of each piece's moving sides, 24 bytes a
 //     piece, where a piece has no surface (its neighbours' ends cannot be
 //     shared through it).
@@ -88,9 +94,9 @@ class TimeSweep {
     TimeSweep& operator=(TimeSweep&& other) noexcept {
         if (this != &other) {
             time_ = other.time_;
-            lo_ = std::exchange(other.lo_, glm::dvec3(std::numeric_limits<double>::infinity()));
-            hi_ = std::exchange(other.hi_, glm::dvec3(-std::numeric_limits<double>::infinity()));
             for (int k = 0; k < 3; ++k) {
+                lo_[k] = std::exchange(other.lo_[k], kNone);
+                hi_[k] = std::exchange(other.hi_[k], -kNone);
                 acceleration_[k] = other.acceleration_[k];
                 margin_[k] = other.margin_[k];
             }
@@ -99,6 +105,7 @@ class TimeSweep {
             layout_ = std::exchange(other.layout_, Layout::Whole);
             refines_ = std::exchange(other.refines_, false);
             finer_chords_ = std::exchange(other.finer_chords_, false);
+            wide_ = std::exchange(other.wide_, false);
         }
         return *this;
     }
@@ -114,7 +121,7 @@ class TimeSweep {
     std::size_t piece_count() const { return std::size_t(1) << depth_; }
     // The box over the whole time range (empty if the object has no surface).
     Box4 whole() const;
-    bool empty() const { return !(lo_.x <= hi_.x && lo_.y <= hi_.y && lo_.z <= hi_.z); }
+    bool empty() const { return !(lo_[0] <= hi_[0] && lo_[1] <= hi_[1] && lo_[2] <= hi_[2]); }
 
     // A box holding the object at every instant of t, from the pieces that
     // meet t (the whole sweep's box in space where t spans it all); its time
@@ -133,8 +140,11 @@ class TimeSweep {
     // where edges are asked for), each box is refined
     // from `object` (the object the sweep is of): the chord over that finer
     // piece, from placed boxes at its ends (shared by neighbours, count + 1
-    // placements), clipped to the cached piece's part. The paper's star
-    // cluster: the cache answers coarse questions, the object fine ones.
+    // placements; or, where count is even and the chord over two pieces is
+    // within the growth of the object's size, over pairs of pieces from
+    // count / 2 + 1 placements), clipped to the cached piece's part. The
+    // paper's star cluster: the cache answers coarse questions, the object
+    // fine ones.
     //
     // With edge_lo and edge_hi (count + 1 entries each), also the object's
     // bound at each cut between the pieces, such that at every instant of
@@ -157,8 +167,8 @@ class TimeSweep {
     // stopped the sweep, or merged it back, before its chords were within
     // the growth (issue 43: the swarm at 10^4 spheres kept one to four
     // chords a frame, and a leaf's bounds inherited chords 1.8 times a
-    // sphere's size; a leaf's bins are made anyway, at nine placements an
-    // object).
+    // sphere's size; a leaf's bins are made anyway, at five to nine
+    // placements an object).
     bool refines_chords() const { return refines_ || finer_chords_; }
 
     // Piece i's time interval, its moving box, and the box over all of it
@@ -170,15 +180,26 @@ class TimeSweep {
     void pieces_meeting(const Interval& t, std::size_t& first, std::size_t& last) const;
 
     // Heap and inline bytes this sweep takes.
-    std::size_t bytes() const { return sizeof(*this) + step_count() * sizeof(std::uint16_t); }
+    std::size_t bytes() const {
+        return sizeof(*this) + (head() + step_count()) * sizeof(std::uint16_t);
+    }
 
   private:
     // How the pieces are kept (the storage note above); Whole: one box held
     // still over the whole time, no pieces.
-    enum class Layout : std::uint8_t { Whole, Still, Shared, Separate };
+    enum class Layout : std::uint8_t { Whole, Still, Shared, Separate, Centred };
 
     double boundary(std::size_t i) const;
     std::size_t step_count() const;
+    // Steps at the head of steps_ that hold the whole box in doubles
+    // (wide_: six doubles), and the pieces' steps after them.
+    static constexpr std::size_t kWideSteps = 6 * sizeof(double) / sizeof(std::uint16_t);
+    std::size_t head() const { return wide_ ? kWideSteps : 0; }
+    const std::uint16_t* piece_steps() const { return steps_.get() + head(); }
+    // The whole box's ends along axis k, and setting them.
+    double whole_lo(int k) const;
+    double whole_hi(int k) const;
+    void set_whole(const Box4& box);
     double decode(int axis, std::uint16_t q) const;
     std::uint16_t encode_down(int axis, double v) const;
     std::uint16_t encode_up(int axis, double v) const;
@@ -186,14 +207,24 @@ class TimeSweep {
     // surface: lo at the top step, hi at the bottom).
     void encode_box(std::uint16_t* q, const glm::dvec3& lo, const glm::dvec3& hi) const;
     void encode_pieces(const std::vector<MovingBox>& level);
+    // The Centred layout: three floats of half extent (kHalfSteps steps),
+    // then a centre per cut.
+    static constexpr std::size_t kHalfSteps = 3 * sizeof(float) / sizeof(std::uint16_t);
+    bool centred_fits(const std::vector<glm::dvec3>& lo, const std::vector<glm::dvec3>& hi) const;
+    void encode_centred(std::uint16_t* q, const std::vector<glm::dvec3>& lo,
+                        const std::vector<glm::dvec3>& hi) const;
     // boxes_over_dyadic's edges from the cached pieces (false: none).
     bool cached_edges(int level, std::uint64_t first, std::size_t count, glm::dvec3* edge_lo,
                       glm::dvec3* edge_hi) const;
 
+    static constexpr float kNone = std::numeric_limits<float>::infinity();
     Interval time_{0.0, 0.0};
-    // The box over the whole time (empty: lo > hi).
-    glm::dvec3 lo_{std::numeric_limits<double>::infinity()};
-    glm::dvec3 hi_{-std::numeric_limits<double>::infinity()};
+    // The box over the whole time, rounded outward to floats (empty: lo >
+    // hi); infinite where it lies beyond the floats' range, and then wide_
+    // and the doubles at the head of steps_. 24 bytes an object where
+    // doubles took 48 (2.4 MB of the swarm's peak at 10^5 spheres).
+    float lo_[3] = {kNone, kNone, kNone};
+    float hi_[3] = {-kNone, -kNone, -kNone};
     // The chord bound over the whole time, rounded up to floats, where the
     // sweep refines (IntelligentObject::chord_bound_over).
     float acceleration_[3] = {0.0f, 0.0f, 0.0f};
@@ -204,6 +235,7 @@ class TimeSweep {
     Layout layout_ = Layout::Whole;
     bool refines_ = false;
     bool finer_chords_ = false;
+    bool wide_ = false;
 };
 
 }  // namespace hexant::runtime

@@ -240,10 +240,11 @@ TEST_CASE("a sweep the depth limit kept coarse refines finer pieces from the obj
         REQUIRE(coarse.boxes_over_dyadic(kLevel, first, kCount, object, refined.data(), lo.data(),
                                          hi.data()));
         // At each cut the lines hold the sphere itself and its chord's
-        // error (~0.01): about its own size, 0.2, where the box over a
-        // piece also holds its path over the piece (~0.5 along it).
+        // error (over two pieces, ~0.03, within the growth of 1.5 the
+        // sweep allows: issue 43): about its own size, 0.2, where the box
+        // over a piece also holds its path over the piece (~0.5 along it).
         for (std::size_t j = 0; j <= kCount; ++j)
-            for (int a = 0; a < 3; ++a) CHECK(hi[j][a] - lo[j][a] < 0.25);
+            for (int a = 0; a < 3; ++a) CHECK(hi[j][a] - lo[j][a] < 0.3);
         for (std::size_t k = 0; k < kCount; ++k) {
             const rt::Box4 cached = coarse.box_over_dyadic(kLevel, first + k);
             // Inside the cached answer, and far tighter: over 1/256 of four
@@ -332,14 +333,24 @@ TEST_CASE("a sweep the pricing kept coarse refines its edges, not its priced box
 TEST_CASE("a sweep keeps 12 bytes a piece: chords share their ends, still pieces their sides",
           "[sweep]") {
     const std::size_t header = sizeof(rt::TimeSweep);
-    // An orbit swept by chords: 2^depth pieces, 2^depth + 1 shared ends of
-    // six 16-bit steps each.
+    // An orbit swept by chords: 2^depth pieces, 2^depth + 1 shared ends,
+    // each the sphere's box (one size at every cut): a centre of three
+    // 16-bit steps each, and one half extent of three floats.
     const Parsed orbit =
         parse("sphere { <5, 0, 0>, 0.1 rotate y * 1440 * clock rotate <30, 0, 20> }\n");
     const rt::TimeSweep chords =
         rt::TimeSweep::of(*orbit.objects.front(), rt::Interval(0.0, 1.0), 4);
     REQUIRE(chords.depth() == 4);
-    CHECK(chords.bytes() == header + 12 * (16 + 1));
+    CHECK(chords.bytes() == header + 12 + 6 * (16 + 1));
+    // A box turning on such an orbit (not by a quarter turn between cuts):
+    // its boxes at the cuts differ in size, six steps each.
+    const Parsed turning = parse(
+        "box { <4.9, -0.1, -0.1>, <5.1, 0.1, 0.1> rotate y * 1300 * clock "
+        "rotate <30, 0, 20> }\n");
+    const rt::TimeSweep sides =
+        rt::TimeSweep::of(*turning.objects.front(), rt::Interval(0.0, 1.0), 4);
+    REQUIRE(sides.depth() == 4);
+    CHECK(sides.bytes() == header + 12 * (16 + 1));
     // A deformed object has no chord bound: its pieces are boxes held
     // still, six steps each.
     const Parsed twisted = parse(
@@ -376,4 +387,34 @@ TEST_CASE("a sweep keeps 12 bytes a piece: chords share their ends, still pieces
             CHECK(at.hi[k] <= placed.hi[k] + out * (1.0 + 1e-9) + step);
         }
     }
+}
+
+TEST_CASE("a sweep beyond the floats' range keeps its whole box in doubles", "[sweep]") {
+    // The whole box is kept in floats rounded outward; past the floats'
+    // range that would make the bound infinite, so the doubles are kept.
+    const Parsed far = parse("sphere { <1e39, 2, 3>, 1 translate <0, 4 * clock, 0> }\n");
+    const rt::IntelligentObject& object = *far.objects.front();
+    const rt::TimeSweep sweep = rt::TimeSweep::of(object, rt::Interval(0.0, 1.0), 3);
+    REQUIRE_FALSE(sweep.empty());
+    const rt::Box4 whole = sweep.whole();
+    for (int k = 0; k < 3; ++k) {
+        CHECK(std::isfinite(whole.lo[k]));
+        CHECK(std::isfinite(whole.hi[k]));
+    }
+    CHECK(whole.lo.x > 0.99e39);
+    CHECK(whole.hi.x < 1.01e39);
+    CHECK(whole.lo.y > 0.0);
+    CHECK(whole.hi.y < 7.5);
+    for (int n = 0; n <= 16; ++n) {
+        const double t = n / 16.0;
+        const rt::Event centre(1e39, 2.0 + 4.0 * t, 3.0, t);
+        CHECK(sweep.box_over(rt::Interval(t)).contains(centre));
+        CHECK(whole.contains(rt::Event(1e39, 2.0 + 4.0 * t, 3.0, 0.5)));
+    }
+    // The doubles move with the sweep.
+    rt::TimeSweep taken = rt::TimeSweep::of(object, rt::Interval(0.0, 1.0), 3);
+    const rt::TimeSweep moved = std::move(taken);
+    CHECK(moved.whole().lo.x == whole.lo.x);
+    CHECK(moved.bytes() == sweep.bytes());
+    CHECK(taken.empty());  // NOLINT(bugprone-use-after-move)
 }
