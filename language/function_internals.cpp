@@ -1,6 +1,7 @@
 #include "language/function_internals.hpp"
 
 #include <array>
+#include <cmath>
 #include <functional>
 #include <string>
 #include <string_view>
@@ -152,6 +153,124 @@ F f_torus2(const Params& p) {  // 71
     return clamp_field(p[3], r);
 }
 
+// ---- POV-Ray's fractal noises, made per call: their octaves count a loop.
+
+// A parameter the body's shape depends on: a number, not moving with clock.
+double fixed(const F& value, const char* function, const char* what) {
+    if (!value.is_constant())
+        throw UnsupportedError(std::string(function) + "'s " + what +
+                               " moves with clock; hexant needs it fixed");
+    return value.constant();
+}
+// The octaves a loop runs: at most 64 (beyond, each octave's noise is
+// below a double's resolution of the first for any H > 0).
+double octaves_of(const F& value, const char* function) {
+    const double n = fixed(value, function, "octaves");
+    if (!(n >= 0.0 && n <= 64.0))
+        throw ValueError(std::string(function) + "'s octaves must be 0 to 64, not " +
+                         std::to_string(n));
+    return n;
+}
+// Noise(V, ngen) of fnintern.cpp, generator G & 3.
+F noise_at(const F& x, const F& y, const F& z, int generator) {
+    return F::point_call(noise_function(generator & 3), 0, x, y, z);
+}
+int generator_of(const F& value, const char* function) {
+    const double g = fixed(value, function, "noise generator");
+    if (!(std::fabs(g) < 1e9))
+        throw ValueError(std::string(function) + "'s noise generator is 1, 2 or 3");
+    return static_cast<int>(g);
+}
+
+// f_ridged_mf(x, y, z, H, Lacunarity, Octaves, Offset, Gain, Generator):
+// Musgrave's ridged multifractal as fnintern.cpp computes it. (POV-Ray
+// keeps the octaves' weights, freq^-H, of the function's first evaluation
+// for all its later calls, whatever their H and lacunarity: benchmark.pov
+// calls it with two. Each call here has its own.)
+F f_ridged_mf(const Params& p) {
+    const char* name = "f_ridged_mf";
+    const double octaves = octaves_of(p[5], name);
+    const int generator = generator_of(p[8], name);
+    const F& lacunarity = p[4];
+    F x = p[0], y = p[1], z = p[2];
+    const auto ridge = [&] {
+        const F a = abs_(noise_at(x, y, z, generator) * 2.0 - 1.0);
+        const F signal = p[6] - a;
+        return signal * signal;
+    };
+    F signal = ridge();
+    F result = signal;
+    F frequency = lacunarity;  // (POV-Ray's exponent array: freq^-H)
+    for (int i = 1; i < octaves; ++i) {
+        x = x * lacunarity;
+        y = y * lacunarity;
+        z = z * lacunarity;
+        const F weight = min_(max_(signal * p[7], 0.0), 1.0);
+        signal = ridge() * weight;
+        result = result + signal * pow_(frequency, -p[3]);
+        frequency = frequency * lacunarity;
+    }
+    return result;
+}
+
+// f_hetero_mf(x, y, z, H, Lacunarity, Octaves, Offset, T, Generator).
+F f_hetero_mf(const Params& p) {
+    const char* name = "f_hetero_mf";
+    const double octaves = octaves_of(p[5], name);
+    const double t = fixed(p[7], name, "T");
+    if (!(std::fabs(t) < 64.0)) throw ValueError("f_hetero_mf's T must be below 64");
+    const int generator = generator_of(p[8], name);
+    const F& lacunarity = p[4];
+    F x = p[0], y = p[1], z = p[2];
+    const auto step = [&] { return noise_at(x, y, z, generator) * 2.0 - 1.0 + p[6]; };
+    F signal = step();
+    const auto next = [&] {
+        x = x * lacunarity;
+        y = y * lacunarity;
+        z = z * lacunarity;
+    };
+    next();
+    const F scale = pow_(lacunarity, -p[3]);
+    F ea = scale;
+    for (int i = 1; i < octaves; ++i) {
+        F increment = step() * ea;
+        for (int k = static_cast<int>(t); k > 0; --k) increment = increment * signal;
+        signal = signal + increment;
+        next();
+        ea = ea * scale;
+    }
+    const double rem = octaves - static_cast<int>(octaves);
+    if (rem != 0.0) signal = signal + rem * (step() * ea) * signal;
+    return signal;
+}
+
+// f_ridge(x, y, z, Lambda, Octaves, Omega, Offset, Ridge, Generator).
+F f_ridge(const Params& p) {
+    const char* name = "f_ridge";
+    const double octaves_value = octaves_of(p[4], name);
+    const int octaves = static_cast<int>(octaves_value);
+    const double resid = octaves_value - octaves;
+    const int generator = generator_of(p[8], name);
+    const F rscale = 1.0 / max_(p[7], 1.0 - p[7]);
+    const F scale = 1.0 / max_(p[6], 1.0 - p[6]);
+    const auto ridged = [&](const F& by) {
+        return abs_(noise_at(p[0] * by, p[1] * by, p[2] * by, generator) - p[7]) * rscale;
+    };
+    F value = abs_(noise_at(p[0], p[1], p[2], generator) - p[7]) * rscale - p[6];
+    F total = 1.0, l = p[3], o = p[5];
+    for (int i = 2; i <= octaves; ++i) {
+        value = value + o * (ridged(l) - p[6]);
+        total = total + o;
+        l = l * p[3];
+        o = o * p[5];
+    }
+    if (resid != 0.0) {
+        value = value + o * (ridged(l) - p[6]) * resid;
+        total = total + o * resid;
+    }
+    return value * scale / total;
+}
+
 struct Internal {
     std::string_view name;
     int extra;                              // parameters after x, y, z
@@ -273,6 +392,18 @@ std::shared_ptr<const runtime::UserFunction> internal_function(int n) {
         f->body = TimeFunction::point_call(noise_function(runtime::pattern::kDefaultNoiseGenerator),
                                            0, TimeFunction::argument(0), TimeFunction::argument(1),
                                            TimeFunction::argument(2));
+        return f;
+    }
+    // (Made per call: the octaves are a loop's count.)
+    const std::function<F(const Params&)> at_call =
+        entry.name == std::string_view("f_ridged_mf")   ? f_ridged_mf
+        : entry.name == std::string_view("f_hetero_mf") ? f_hetero_mf
+        : entry.name == std::string_view("f_ridge")     ? f_ridge
+                                                        : std::function<F(const Params&)>{};
+    if (at_call) {
+        f->at_call = at_call;
+        f->unimplemented = std::string(entry.name) + " (internal(" + std::to_string(n) +
+                           ")) without its arguments (hexant makes it where it is called)";
         return f;
     }
     if (!entry.build) {

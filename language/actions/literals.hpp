@@ -534,7 +534,7 @@ struct action<g::index_suffix> {
 inline Value call_user_function(Interpreter& st,
                                 const std::shared_ptr<const runtime::UserFunction>& f,
                                 const std::vector<Value>& args) {
-    if (!f->unimplemented.empty())
+    if (!f->unimplemented.empty() && !f->at_call)
         throw UnsupportedError("the internal function " + f->unimplemented +
                                " is not implemented by hexant");
     if (args.size() != f->parameters.size())
@@ -542,6 +542,7 @@ inline Value call_user_function(Interpreter& st,
                          " arguments, not " + std::to_string(args.size()));
     std::vector<TimeFunction> values;
     for (const Value& a : args) values.push_back(to_float(a, "a function's argument"));
+    if (f->at_call) return Value{f->at_call(values)};
     if (f->noise != runtime::UserFunction::Noise::None) {
         int generator = st.scene.global.noise_generator;
         if (f->noise == runtime::UserFunction::Noise::ArgumentGenerator) {

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -38,6 +39,11 @@ struct UserFunction {
     // Set for an internal function hexant lacks ("f_boy_surface"): the
     // declaration reads (functions.inc declares them all), a call is an error.
     std::string unimplemented;
+    // Set for an internal function whose body depends on the values of its
+    // arguments (f_ridged_mf's octaves: a loop's count): the body made for
+    // a call's arguments (language/function_internals.cpp). `unimplemented`
+    // then says what happens where it is used without a call.
+    std::function<TimeFunction(const std::vector<TimeFunction>&)> at_call;
 };
 
 // A user function of (x, y, z) and time compiled to a tape. Copies share it.

@@ -664,6 +664,16 @@ TEST_CASE("crackle agrees with POV-Ray 3.7's", "[tracer][pov][pattern]") {
     check_stills("patterns", "crackle", {"0", "0.5"});
 }
 
+TEST_CASE("functions.inc's fractal noises agree with POV-Ray 3.7's", "[tracer][pov][pattern]") {
+    // patterns/fractal_functions.pov: f_ridged_mf (moving with clock, and
+    // with another generator), f_hetero_mf with a fraction of an octave
+    // and T = 2, f_ridge with a fraction of an octave, each a pigment's
+    // pattern (made per call from their arguments: their octaves count a
+    // loop). The still's tolerance (exact when written). Before, each call
+    // was refused as an internal function hexant lacks.
+    check_stills("patterns", "fractal_functions", {"0", "1"});
+}
+
 TEST_CASE("square agrees with POV-Ray 3.7's", "[tracer][pov][pattern]") {
     // patterns/square.pov: the default colours, four of its own (one fading
     // with clock), two of its own and the rest default, scaled, turned and
