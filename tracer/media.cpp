@@ -260,6 +260,38 @@ std::vector<Interval> sample_intervals(const std::vector<Interval>& lit,
     return out;
 }
 
+// What ComputeMedia reads of the media along a ray before sampling: each
+// media's coefficients at the ray's time, the one with the most intervals
+// (which leads the sampling), the smallest aa_threshold, and which
+// effects any of them has.
+struct MediaSet {
+    std::vector<Coefficients> coefficients;
+    const One* lead = nullptr;
+    double threshold = HUGE_VAL;
+    bool use_extinction = false, use_scattering = false, all_constant = true;
+    bool collect = false;  // some media collects photons (not `collect off`)
+};
+MediaSet media_set(const std::vector<const One*>& media, double time) {
+    MediaSet set;
+    set.coefficients.reserve(media.size());
+    set.lead = media.front();
+    for (const One* m : media) {
+        if (m->record.intervals > set.lead->record.intervals) set.lead = m;
+        set.threshold = std::min(set.threshold, m->record.aa_threshold);
+        const One::At at = m->at(time);
+        set.use_extinction = set.use_extinction || at.absorption != glm::dvec3(0.0) ||
+                             at.scattering != glm::dvec3(0.0);
+        set.use_scattering = set.use_scattering || at.scattering != glm::dvec3(0.0);
+        set.collect = set.collect || m->record.collect;
+        bool constant = true;
+        for (const runtime::Pigment& d : m->record.density)
+            constant = constant && d.pattern == runtime::Pigment::Pattern::Solid;
+        set.all_constant = set.all_constant && constant;
+        set.coefficients.push_back({m, at, constant});
+    }
+    return set;
+}
+
 }  // namespace
 
 double MediaRandom::next() {
@@ -276,29 +308,11 @@ glm::dvec3 through_media(const std::vector<const One*>& media, const MediaRay& r
                          const MediaLightFn& light_at, const glm::dvec3& colour,
                          const PhotonMap* photons) {
     if (media.empty() || !(ray.depth > 0.0)) return colour;
-    std::vector<Coefficients> coefficients;
-    coefficients.reserve(media.size());
-    // The media with the most intervals leads the sampling; the smallest
-    // aa_threshold counts (ComputeMedia).
-    const One* lead = media.front();
-    double threshold = HUGE_VAL;
-    bool use_extinction = false, use_scattering = false;
-    bool all_constant = true;
-    for (const One* m : media) {
-        if (m->record.intervals > lead->record.intervals) lead = m;
-        threshold = std::min(threshold, m->record.aa_threshold);
-        const One::At at = m->at(ray.time);
-        use_extinction =
-            use_extinction || at.absorption != glm::dvec3(0.0) || at.scattering != glm::dvec3(0.0);
-        use_scattering = use_scattering || at.scattering != glm::dvec3(0.0);
-        bool constant = true;
-        for (const runtime::Pigment& d : m->record.density)
-            constant = constant && d.pattern == runtime::Pigment::Pattern::Solid;
-        all_constant = all_constant && constant;
-        coefficients.push_back({m, at, constant});
-    }
-    if (ray.shadow && !use_extinction) return colour;
-    const bool constant_shadow = ray.shadow && all_constant;
+    const MediaSet set = media_set(media, ray.time);
+    const One* lead = set.lead;
+    const double threshold = set.threshold;
+    if (ray.shadow && !set.use_extinction) return colour;
+    const bool constant_shadow = ray.shadow && set.all_constant;
 
     std::vector<Interval> lit =
         ray.shadow ? std::vector<Interval>{} : lit_intervals(lights, ray.depth);
@@ -322,7 +336,7 @@ glm::dvec3 through_media(const std::vector<const One*>& media, const MediaRay& r
         intervals.push_back(back);
     }
 
-    Integration run(coefficients, ray, lights, random, light_at, use_scattering,
+    Integration run(set.coefficients, ray, lights, random, light_at, set.use_scattering,
                     photons != nullptr && !photons->empty() ? photons : nullptr);
     const runtime::Media& m = lead->record;
     const int min_samples = m.min_samples;
@@ -380,33 +394,29 @@ glm::dvec3 through_media(const std::vector<const One*>& media, const MediaRay& r
     return std::isfinite(out.x) && std::isfinite(out.y) && std::isfinite(out.z) ? out : colour;
 }
 
-glm::dvec3 photon_through_media(const std::vector<const One*>& media, const MediaRay& ray,
+glm::dvec3 photon_through_media(const std::vector<const One*>& media, const MediaRay& way,
                                 MediaRandom& random, const MediaPhotonDeposit* deposit,
                                 const glm::dvec3& colour) {
-    if (media.empty() || !(ray.depth > 0.0)) return colour;
-    const One* lead = media.front();
-    bool use_scattering = false, use_extinction = false, collect = false;
-    std::vector<Coefficients> coefficients;
-    for (const One* m : media) {
-        if (m->record.intervals > lead->record.intervals) lead = m;
-        const One::At at = m->at(ray.time);
-        use_scattering = use_scattering || at.scattering != glm::dvec3(0.0);
-        use_extinction = use_extinction || use_scattering || at.absorption != glm::dvec3(0.0);
-        collect = collect || m->record.collect;
-        coefficients.push_back({m, at, false});
-    }
+    if (media.empty() || !(way.depth > 0.0)) return colour;
+    const MediaSet set = media_set(media, way.time);
     // (POV-Ray returns here, photons deposited or not, when no media
     // dims: its comment calls it a bug; kept, as the images are its.)
-    if (!use_extinction) return colour;
+    if (!set.use_extinction) return colour;
+    // (A photon's samples are a shadow ray's: extinction only.)
+    MediaRay ray = way;
+    ray.shadow = true;
+    const std::vector<MediaLight> no_lights;
+    const MediaLightFn no_light;
+    Integration run(set.coefficients, ray, no_lights, random, no_light, false, nullptr);
+    const runtime::Media& lead = set.lead->record;
     Interval whole;
     whole.lit = true;
     whole.s1 = whole.ds = ray.depth;
-    std::vector<Interval> intervals = sample_intervals({whole}, lead->record, false);
-    glm::dvec3 depth(0.0);
+    std::vector<Interval> intervals = sample_intervals({whole}, lead, false);
+    glm::dvec3 depth(0.0), sampled, sample_depth;
     for (Interval& i : intervals) {
-        int n = lead->record.min_samples;
-        double factor = 1.0;
-        double jitter = lead->record.jitter;
+        int n = lead.min_samples;
+        double factor = 1.0, jitter = lead.jitter;
         if (deposit) {
             const double per = deposit->spread * (deposit->parallel ? 1.0 : deposit->depth);
             factor = deposit->spacing_factor;
@@ -417,17 +427,12 @@ glm::dvec3 photon_through_media(const std::vector<const One*>& media, const Medi
         }
         for (int j = 0; j < n; ++j) {
             const double d0 = (j + 0.5 + (random.next() - 0.5) * jitter) / n;
-            const double along = i.s0 + d0 * i.ds;
-            const glm::dvec3 point = ray.origin + ray.direction * along;
-            glm::dvec3 extinction(0.0);
-            for (const Coefficients& c : coefficients)
-                extinction += c.media->density_at(point, ray.time) *
-                              (c.at.absorption + c.at.extinction * c.at.scattering);
-            i.od += extinction * i.ds;
-            ++i.samples;
-            if (deposit && use_scattering && collect) {
+            run.sample(i, d0, sampled, sample_depth, 2);
+            if (deposit && set.use_scattering && set.collect) {
+                const double along = i.s0 + d0 * i.ds;
                 const double per = deposit->parallel ? 1.0 : deposit->depth + along;
-                deposit->keep(point, along, colour * (factor * deposit->spread * per));
+                deposit->keep(ray.origin + ray.direction * along, along,
+                              colour * (factor * deposit->spread * per));
             }
         }
         depth += i.od / static_cast<double>(std::max(i.samples, 1));
