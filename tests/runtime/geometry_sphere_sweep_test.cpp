@@ -436,6 +436,59 @@ TEST_CASE("sphere_sweep: bounds and surface_may_meet hold the surface",
     }
 }
 
+// A small box inside the solid lies on the spheres of some balls (those
+// that just reach it) as well as within others: the test must go on to a
+// ball that holds it rather than answer "may" at the first that crosses
+// it. (Answering "may" there sent a deformed sweep's curved paths inside
+// the solid down to a chord every 1e-6 of its size: 10^5 pieces and 18 s
+// for one ray through a tapered sweep.)
+TEST_CASE("sphere_sweep: small boxes inside the solid are off the surface",
+          "[geometry][sphere_sweep]") {
+    Random random(22);
+    // A capsule along x: the point (x, 0.3, 0) is 0.2 inside it, and on the
+    // sphere of the balls centred at x - 0.4 and x + 0.4.
+    const SphereSweepGeometry capsule =
+        make_sphere_sweep(SweepSpline::linear, {{-1, 0, 0}, {1, 0, 0}}, {0.5, 0.5});
+    int checked = 0;
+    for (const double width : {1e-3, 1e-6, 1e-9}) {
+        for (int i = 0; i < 50; ++i) {
+            const glm::dvec3 p(random.uniform(-0.5, 0.5), 0.3, 0.0);
+            CHECK(!surface_may_meet(capsule, {p - width, p + width}));
+            ++checked;
+        }
+    }
+    CHECK(checked == 150);
+    // The same for every spline kind: points well inside (a box's width
+    // below their depth), found where some ball holds them with room.
+    for (const SweepSpline spline : kSplines) {
+        const Spheres sp = spheres(spline);
+        const SphereSweepGeometry g = make_sphere_sweep(spline, sp.centres, sp.radii);
+        const Box3 bounds = object_bounds(g);
+        int inside_boxes = 0;
+        for (int i = 0; i < 20000 && inside_boxes < 100; ++i) {
+            const glm::dvec3 p(random.uniform(bounds.lo.x, bounds.hi.x),
+                               random.uniform(bounds.lo.y, bounds.hi.y),
+                               random.uniform(bounds.lo.z, bounds.hi.z));
+            // Its depth: how far inside the ball that holds it best, from
+            // 2,001 balls along each segment.
+            double depth = -1.0;
+            for (const auto& segment : g.segments)
+                for (int k = 0; k <= 2000; ++k) {
+                    const glm::dvec4 ball = segment.at(k / 2000.0);
+                    const glm::dvec3 q = (p - g.origin) / g.scale;
+                    depth = std::max(depth, std::fabs(ball.w) - glm::length(q - glm::dvec3(ball)));
+                }
+            depth *= g.scale;
+            if (!(depth > 1e-3 * g.size)) continue;
+            const double width = 1e-6 * g.size;
+            INFO("point " << p.x << ", " << p.y << ", " << p.z << " depth " << depth);
+            CHECK(!surface_may_meet(g, {p - width, p + width}));
+            ++inside_boxes;
+        }
+        CHECK(inside_boxes == 100);
+    }
+}
+
 TEST_CASE("sphere_sweep: scale invariance and extreme rays", "[geometry][sphere_sweep]") {
     Random random(3);
     for (const SweepSpline spline : kSplines) {

@@ -421,6 +421,9 @@ bool surface_may_meet(const SphereSweepGeometry& g, const Box3& box) {
         }
     }
     int budget = kPieceBudget;
+    bool undecided = false;
+    const glm::dvec3 span = wide.hi - wide.lo;
+    const double extent = std::max({span.x, span.y, span.z});
     for (const SweepSegment& s : g.segments) {
         if (!overlaps(s.box, wide)) continue;
         const glm::dvec4 size =
@@ -445,12 +448,25 @@ bool surface_may_meet(const SphereSweepGeometry& g, const Box3& box) {
             if (nearest(centres, wide) > r_hi * (1.0 + 4.0 * kEpsilon)) continue;  // out of reach
             if (r_lo > 0.0 && farthest(centres, wide) < r_lo * (1.0 - 4.0 * kEpsilon))
                 return false;  // the box lies within one ball: inside, off the surface
-            if (piece.depth >= kMaxDepth || !(half > 0.0)) return true;  // too small to tell
+            // Too small to tell: a ball whose sphere passes through the box.
+            // Halving on past where the centres' enclosure is tighter than
+            // the box itself decides nothing more, and another ball may
+            // still hold the whole box, which settles it. (Answering "may"
+            // at once, at depth 32, sent a deformed sweep's curved paths
+            // inside the solid down to a chord every 1e-6 of its size: 10^5
+            // pieces and 18 s for one ray through a tapered sweep; going
+            // on to depth 32 spent the budget on the thousands of pieces
+            // along the crossing.)
+            if (piece.depth >= kMaxDepth || !(half > 0.0) ||
+                std::max({margin.x, margin.y, margin.z, margin.w}) <= 0.25 * extent) {
+                undecided = true;
+                continue;
+            }
             stack[top++] = {mid, piece.u1, piece.depth + 1};
             stack[top++] = {piece.u0, mid, piece.depth + 1};
         }
     }
-    return false;
+    return undecided;
 }
 
 }  // namespace hexant::runtime::geometry
