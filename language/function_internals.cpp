@@ -275,6 +275,9 @@ struct Internal {
     std::string_view name;
     int extra;                              // parameters after x, y, z
     std::function<F(const Params&)> build;  // empty where hexant lacks it
+    // Built for each call's arguments (UserFunction::at_call) rather than
+    // once over arguments: its octaves count a loop.
+    bool per_call = false;
 };
 
 // POVFPU_TrapTable, in its order: N is the index.
@@ -309,7 +312,7 @@ const std::array<Internal, 79>& internals() {
         {"f_helix2", 7, f_helix2},
         {"f_hex_x", 1, {}},
         {"f_hex_y", 1, {}},
-        {"f_hetero_mf", 6, {}},
+        {"f_hetero_mf", 6, f_hetero_mf, true},
         {"f_hunt_surface", 1, {}},
         {"f_hyperbolic_torus", 3, {}},
         {"f_isect_ellipsoids", 4, {}},
@@ -338,8 +341,8 @@ const std::array<Internal, 79>& internals() {
         {"f_quartic_saddle", 1, {}},
         {"f_quartic_cylinder", 3, {}},
         {"f_r", 0, f_r},
-        {"f_ridge", 6, {}},
-        {"f_ridged_mf", 6, {}},
+        {"f_ridge", 6, f_ridge, true},
+        {"f_ridged_mf", 6, f_ridged_mf, true},
         {"f_rounded_box", 4, f_rounded_box},
         {"f_sphere", 1, f_sphere},
         {"f_spikes", 5, {}},
@@ -394,14 +397,8 @@ std::shared_ptr<const runtime::UserFunction> internal_function(int n) {
                                            TimeFunction::argument(2));
         return f;
     }
-    // (Made per call: the octaves are a loop's count.)
-    const std::function<F(const Params&)> at_call =
-        entry.name == std::string_view("f_ridged_mf")   ? f_ridged_mf
-        : entry.name == std::string_view("f_hetero_mf") ? f_hetero_mf
-        : entry.name == std::string_view("f_ridge")     ? f_ridge
-                                                        : std::function<F(const Params&)>{};
-    if (at_call) {
-        f->at_call = at_call;
+    if (entry.per_call) {
+        f->at_call = entry.build;
         f->unimplemented = std::string(entry.name) + " (internal(" + std::to_string(n) +
                            ")) without its arguments (hexant makes it where it is called)";
         return f;

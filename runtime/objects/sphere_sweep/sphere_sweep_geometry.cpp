@@ -422,8 +422,6 @@ bool surface_may_meet(const SphereSweepGeometry& g, const Box3& box) {
     }
     int budget = kPieceBudget;
     bool undecided = false;
-    const glm::dvec3 span = wide.hi - wide.lo;
-    const double extent = std::max({span.x, span.y, span.z});
     for (const SweepSegment& s : g.segments) {
         if (!overlaps(s.box, wide)) continue;
         const glm::dvec4 size =
@@ -448,17 +446,18 @@ bool surface_may_meet(const SphereSweepGeometry& g, const Box3& box) {
             if (nearest(centres, wide) > r_hi * (1.0 + 4.0 * kEpsilon)) continue;  // out of reach
             if (r_lo > 0.0 && farthest(centres, wide) < r_lo * (1.0 - 4.0 * kEpsilon))
                 return false;  // the box lies within one ball: inside, off the surface
-            // Too small to tell: a ball whose sphere passes through the box.
-            // Halving on past where the centres' enclosure is tighter than
-            // the box itself decides nothing more, and another ball may
-            // still hold the whole box, which settles it. (Answering "may"
-            // at once, at depth 32, sent a deformed sweep's curved paths
-            // inside the solid down to a chord every 1e-6 of its size: 10^5
-            // pieces and 18 s for one ray through a tapered sweep; going
-            // on to depth 32 spent the budget on the thousands of pieces
-            // along the crossing.)
-            if (piece.depth >= kMaxDepth || !(half > 0.0) ||
-                std::max({margin.x, margin.y, margin.z, margin.w}) <= 0.25 * extent) {
+            // Undecidable: the sphere of every ball of this piece passes
+            // through the box. No smaller piece, whose centres lie within
+            // these (the diagonal below) and whose radii within [r_lo, r_hi],
+            // can put the box out of reach or within one ball, so the search
+            // goes on to the other pieces, one of whose balls may hold the
+            // whole box. (Answering "may" here, at depth 32, sent a deformed
+            // sweep's curved paths inside the solid down to a chord every
+            // 1e-6 of its size: 10^5 pieces and 22 s for one ray.)
+            const double diagonal = 2.0 * std::sqrt(3.0) * std::max({margin.x, margin.y, margin.z});
+            const bool crosses = nearest(centres, wide) + diagonal < r_lo &&
+                                 farthest(centres, wide) - diagonal > r_hi;
+            if (crosses || piece.depth >= kMaxDepth || !(half > 0.0)) {
                 undecided = true;
                 continue;
             }
