@@ -285,16 +285,10 @@ Image Renderer::render_frame(int frame) {
             for (int k = 0; k < 3; ++k) c[k] = std::pow(std::max(c[k], 0.0), working_gamma);
         return c;
     };
-    // The colour seen at (px, py) of the image (pixels' corners at whole
-    // numbers) at `time` in [0, 1) across the shutter, as sample `index`
-    // of the set with this seed, of `count` in the set, for its further
-    // dimensions.
-    const auto trace_at = [&](double px, double py, double time, std::uint32_t seed, int index,
-                              int count, bool jitter, ThreadState& state) {
-        const double t = frame_clock.at(py / height, time);
-        std::optional<runtime::CameraFrame> moved;
-        if (moving_camera) moved.emplace(scene_.camera.evaluate(t));
-        const runtime::CameraFrame& camera = moving_camera ? *moved : fixed_camera;
+    // trace_at's sample through `camera`, at the sample's instant t.
+    const auto trace_through = [&](const runtime::CameraFrame& camera, double t, double px,
+                                   double py, std::uint32_t seed, int index, int count, bool jitter,
+                                   ThreadState& state) {
         // POV-Ray's screen: x from -0.5 (left) to 0.5, y from 0.5 (top) to
         // -0.5; left-handed. Focal blur's lens point is one more pair of the
         // sample's dimensions (its own scramble, as an area light's).
@@ -333,6 +327,19 @@ Image Renderer::render_frame(int frame) {
         state.sample = {seed, static_cast<std::uint32_t>(index), static_cast<std::uint32_t>(count),
                         jitter};
         return shader_->trace(travel_.ray(ray->origin, t, ray->direction), state);
+    };
+    // The colour seen at (px, py) of the image (pixels' corners at whole
+    // numbers) at `time` in [0, 1) across the shutter, as sample `index`
+    // of the set with this seed, of `count` in the set, for its further
+    // dimensions. (A camera of its own only for a moving one: a frame set
+    // aside for each sample cost its 192 bytes' zeroing even unused.)
+    const auto trace_at = [&](double px, double py, double time, std::uint32_t seed, int index,
+                              int count, bool jitter, ThreadState& state) {
+        const double t = frame_clock.at(py / height, time);
+        if (moving_camera)
+            return trace_through(scene_.camera.evaluate(t), t, px, py, seed, index, count, jitter,
+                                 state);
+        return trace_through(fixed_camera, t, px, py, seed, index, count, jitter, state);
     };
     // Sample `index` of the set with this seed, of `count` in the set.
     const auto trace_sample = [&](int x, int y, std::uint32_t seed, int index, int count,
