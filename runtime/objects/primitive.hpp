@@ -91,11 +91,19 @@ class Primitive final : public IntelligentObject {
                 static_object_box_ =
                     objects::to_interval_box(geometry::object_bounds(*static_geometry_));
         }
-        if constexpr (!kUnbounded)
-            if (!moves_)
-                still_ = std::make_unique<const Still>(
-                    Still{world_box_over(Interval(0.0)),
-                          motion_.twist_reaches(static_object_box_, Interval(0.0))});
+        if (!moves_) {
+            Still still;
+            if constexpr (!kUnbounded) {
+                still.world_box = world_box_over(Interval(0.0));
+                still.reaches = motion_.twist_reaches(static_object_box_, Interval(0.0));
+            }
+            if (motion_.is_affine()) {
+                still.affine = true;
+                still.linear = glm::dmat3(motion_.matrix_at(0.0));
+                still.normals = NormalMap(still.linear);
+            }
+            still_ = std::make_unique<const Still>(std::move(still));
+        }
     }
 
     bool bounded() const override { return !kUnbounded; }
@@ -178,8 +186,17 @@ class Primitive final : public IntelligentObject {
 
     SurfacePoint complete(const Ray4& ray, const ObjectHit& hit) const override {
         const double t = hit.event.w;
-        const glm::dmat3 linear =
-            hit.has_linear ? hit.to_world_linear : to_world_linear_at(hit.object_point, t);
+        // (An object that never moves and is not deformed has its map and
+        // its normals' map already: the same products, formed once.)
+        const NormalMap* fixed_normals =
+            !hit.has_linear && still_ && still_->affine ? &still_->normals : nullptr;
+        const glm::dmat3 linear = hit.has_linear  ? hit.to_world_linear
+                                  : fixed_normals ? still_->linear
+                                                  : to_world_linear_at(hit.object_point, t);
+        const auto to_world_normal = [&](const glm::dvec3& n, const glm::dvec3& fallback) {
+            return fixed_normals ? fixed_normals->apply(n, fallback)
+                                 : transform_normal(linear, n, fallback);
+        };
         glm::dvec3 facing = -glm::dvec3(ray.direction);
         const double length = glm::length(facing);
         facing = length > 0.0 && std::isfinite(length) ? facing / length : glm::dvec3(0, 1, 0);
@@ -189,7 +206,7 @@ class Primitive final : public IntelligentObject {
         if (hit.object_error != glm::dvec3(0.0))
             p.error = geometry::world_error(linear, hit.object_point, glm::dvec3(hit.event),
                                             hit.object_error);
-        p.geometric_normal = transform_normal(linear, hit.object_normal, facing);
+        p.geometric_normal = to_world_normal(hit.object_normal, facing);
         // (Only a smooth triangle's shading normal differs from its own. A
         // kind that blends its normals in the world, as POV-Ray's smooth
         // height field, forms it here, where the map to the world is known.)
@@ -202,7 +219,7 @@ class Primitive final : public IntelligentObject {
         }
         p.shading_normal = object_shading == hit.object_normal
                                ? p.geometric_normal
-                               : transform_normal(linear, object_shading, p.geometric_normal);
+                               : to_world_normal(object_shading, p.geometric_normal);
         if (hit.flipped) {
             p.geometric_normal = -p.geometric_normal;
             p.shading_normal = -p.shading_normal;
@@ -504,13 +521,18 @@ class Primitive final : public IntelligentObject {
     std::optional<Geometry> static_geometry_;
     IntervalBox static_object_box_{};
     // What an object that never changes keeps: its world box, and
-    // motion_.twist_reaches over it. Apart, so that a moving object (10^5
-    // of them in the scale scene) does not carry its 72 bytes unused.
+    // motion_.twist_reaches over it (bounded kinds); undeformed, its map to
+    // the world's linear part and that map's action on normals. Apart, so
+    // that a moving object (10^5 of them in the scale scene) does not carry
+    // them unused.
     struct Still {
-        IntervalBox world_box;
+        IntervalBox world_box{};
         std::vector<double> reaches;
+        bool affine = false;
+        glm::dmat3 linear{1.0};
+        NormalMap normals;
     };
-    std::unique_ptr<const Still> still_;  // when !moves_ and bounded
+    std::unique_ptr<const Still> still_;  // when !moves_
 };
 
 }  // namespace hexant::runtime
