@@ -43,18 +43,36 @@ void for_each_outline_edge(const Point* points, std::size_t count, EdgeFn&& edge
 // gives exactly. That sign only flips when the edge is walked the other way,
 // so two regions sharing an edge never both miss (nor both claim) a point
 // near it: the test is watertight.
+// Whether the edge a->b (ends relative to the point tested) crosses the
+// ray from the origin to +x infinity, as inside_even_odd counts it.
+inline bool crosses_right(glm::dvec2 a, glm::dvec2 b) {
+    const bool a_above = a.y > 0.0, b_above = b.y > 0.0;
+    if (a_above == b_above) return false;
+    // > 0 when the origin lies left of a->b.
+    const double side = difference_of_products(a.x, b.y, a.y, b.x);
+    // Going up, the crossing lies right of the origin when it is left of the edge.
+    return b_above ? side > 0.0 : side < 0.0;
+}
+
 template <class Point, class Project>
 bool inside_even_odd(const Point* points, std::size_t count, Project&& project, glm::dvec2 p) {
     bool inside = false;
     for_each_outline_edge(points, count, [&](std::size_t i, std::size_t j) {
-        const glm::dvec2 a = project(points[i]) - p, b = project(points[j]) - p;
-        const bool a_above = a.y > 0.0, b_above = b.y > 0.0;
-        if (a_above == b_above) return;
-        // > 0 when p (now the origin) lies left of a->b.
-        const double side = difference_of_products(a.x, b.y, a.y, b.x);
-        // Going up, the crossing lies right of p when p is left of the edge.
-        if (b_above ? side > 0.0 : side < 0.0) inside = !inside;
+        if (crosses_right(project(points[i]) - p, project(points[j]) - p)) inside = !inside;
     });
+    return inside;
+}
+
+// The same test over vertices already taken relative to the point
+// (`relative[k]` for list element k) and the list's edges as
+// for_each_outline_edge gives them: each vertex projected once, not once
+// for each edge it ends. (Subtracting the point 0 changes no value, so
+// this decides exactly as inside_even_odd with p = 0.)
+template <class Edge>
+bool inside_even_odd_relative(const glm::dvec2* relative, const Edge* edges, std::size_t count) {
+    bool inside = false;
+    for (std::size_t e = 0; e < count; ++e)
+        if (crosses_right(relative[edges[e][0]], relative[edges[e][1]])) inside = !inside;
     return inside;
 }
 

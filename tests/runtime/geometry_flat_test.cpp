@@ -392,3 +392,47 @@ TEST_CASE("polygon: rays through a shared edge hit one of the two", "[runtime][g
     }
     CHECK(leaks == 0);
 }
+
+TEST_CASE("polygon: prepared edges decide as the point list does", "[runtime][geometry]") {
+    // prepare_polygon keeps the outlines' edges and projects each end once
+    // a ray; the unprepared polygon walks the list (outline.hpp) for each
+    // edge. Both must give the same hit, bit for bit: outlines with holes,
+    // a repeated point, an outline left open, and more points than a ray
+    // projects at once (the list's walk again).
+    Random random(71);
+    std::vector<glm::dvec2> star;
+    for (int k = 0; k < 40; ++k) {  // 40 points: past the stack's 32
+        const double a = 2.0 * 3.14159265358979 * k / 40.0;
+        const double r = k % 2 ? 1.5 : 4.0;
+        star.push_back({4.5 + r * std::cos(a), 2.0 + r * std::sin(a)});
+    }
+    std::vector<glm::dvec2> repeated = pov_points(test_outlines());
+    repeated.insert(repeated.begin() + 2, repeated[2]);  // an edge of zero length
+    std::vector<glm::dvec2> open_end = pov_points(test_outlines());
+    open_end.pop_back();
+    int hits = 0;
+    for (const std::vector<glm::dvec2>& flat :
+         {pov_points(test_outlines()), repeated, open_end, star}) {
+        PolygonGeometry plain;
+        for (const glm::dvec2 q : flat) plain.points.push_back({q.x, 0.3 * q.x - 0.2 * q.y, q.y});
+        PolygonGeometry prepared = plain;
+        hexant::runtime::geometry::prepare_polygon(prepared);
+        REQUIRE(prepared.prepared);
+        for (int i = 0; i < 4000; ++i) {
+            const glm::dvec3 target{random.uniform(-1.0, 10.0), 0.0, random.uniform(-1.0, 5.0)};
+            const glm::dvec3 on{target.x, 0.3 * target.x - 0.2 * target.z, target.z};
+            const glm::dvec3 from = on + random.uniform(0.5, 20.0) * random.unit_vector();
+            const Ray3 ray{from, on - from};
+            const auto a = intersect(plain, ray, 0.0, kInf);
+            const auto b = intersect(prepared, ray, 0.0, kInf);
+            REQUIRE(a.has_value() == b.has_value());
+            if (!a) continue;
+            ++hits;
+            CHECK(a->s == b->s);
+            CHECK(a->point == b->point);
+            CHECK(a->normal == b->normal);
+            CHECK(a->uv == b->uv);
+        }
+    }
+    CHECK(hits > 2000);  // of 16,000 rays: inside and outside were both asked
+}

@@ -1,5 +1,6 @@
 #include "runtime/objects/polygon/polygon_geometry.hpp"
 
+#include <array>
 #include <cmath>
 
 #include "runtime/geometry/box_queries.hpp"
@@ -10,6 +11,10 @@
 namespace hexant::runtime::geometry {
 
 namespace {
+
+// The most points whose projections a ray keeps on the stack (larger
+// polygons project each edge's ends as they come).
+constexpr std::size_t kProjectedAtOnce = 32;
 
 bool polygon_plane(const PolygonGeometry& polygon, PolygonPlane& plane) {
     const std::vector<glm::dvec3>& p = polygon.points;
@@ -66,7 +71,15 @@ PolygonGeometry& prepare_polygon(PolygonGeometry& polygon) {
     PolygonGeometry::Prepared p;
     p.has_plane = polygon_plane(polygon, p.plane);
     p.bounds = bounds_of(polygon.points);
-    polygon.prepared = p;
+    std::vector<bool> ends(polygon.points.size(), false);
+    for_each_outline_edge(polygon.points.data(), polygon.points.size(),
+                          [&](std::size_t i, std::size_t j) {
+                              p.edges.push_back({std::uint32_t(i), std::uint32_t(j)});
+                              ends[i] = ends[j] = true;
+                          });
+    for (std::size_t k = 0; k < ends.size(); ++k)
+        if (ends[k]) p.ends.push_back(std::uint32_t(k));
+    polygon.prepared = std::move(p);
     return polygon;
 }
 
@@ -108,7 +121,15 @@ std::optional<SurfaceHit> intersect(const PolygonGeometry& polygon, const Ray3& 
         const glm::dvec3 a = q - o;
         return glm::dvec2(a[kx] - sx * a[kz], a[ky] - sy * a[kz]);
     };
-    if (!inside_even_odd(polygon.points.data(), polygon.points.size(), sheared, glm::dvec2(0.0))) {
+    if (polygon.prepared && polygon.points.size() <= kProjectedAtOnce) {
+        std::array<glm::dvec2, kProjectedAtOnce> relative;
+        for (const std::uint32_t k : polygon.prepared->ends)
+            relative[k] = sheared(polygon.points[k]);
+        if (!inside_even_odd_relative(relative.data(), polygon.prepared->edges.data(),
+                                      polygon.prepared->edges.size()))
+            return std::nullopt;
+    } else if (!inside_even_odd(polygon.points.data(), polygon.points.size(), sheared,
+                                glm::dvec2(0.0))) {
         return std::nullopt;
     }
     SurfaceHit hit;

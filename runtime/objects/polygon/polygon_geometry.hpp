@@ -21,6 +21,8 @@
 // |vertex - ray origin|, which from a far origin is coarser than the point.
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -48,6 +50,10 @@ struct PolygonGeometry {
         bool has_plane = false;
         PolygonPlane plane{};
         Box3 bounds{};
+        // The outlines' edges as list indices (outline.hpp's rule), and the
+        // points that end one: a ray projects each of those once.
+        std::vector<std::array<std::uint32_t, 2>> edges;
+        std::vector<std::uint32_t> ends;
     };
     std::optional<Prepared> prepared = std::nullopt;
 };
