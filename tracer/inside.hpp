@@ -14,6 +14,19 @@
 
 namespace hexant::tracer {
 
+// N places for a list whose count is kept beside it: the places past the
+// count are never read, so they are left uninitialized (every hit makes
+// and copies an Inside; its lists are almost always empty).
+template <class T, std::size_t N>
+struct ListPlaces {
+    union {
+        std::array<T, N> places;
+    };
+    ListPlaces() {}
+    T& operator[](std::size_t i) { return places[i]; }
+    const T& operator[](std::size_t i) const { return places[i]; }
+};
+
 // The interiors a ray is inside: at most kMost of each list (deeper
 // nesting is not tracked: the innermost beyond it count as outside).
 struct Inside {
@@ -23,7 +36,7 @@ struct Inside {
         const runtime::MediaVolume* media = nullptr;
         bool hollow = true;
     };
-    std::array<Entry, kMost> entries{};
+    ListPlaces<Entry, kMost> entries;
     int count = 0;
 
     // An interior's indices: its ior, its dispersion (1: none) and the
@@ -48,8 +61,19 @@ struct Inside {
         double dispersion = 1.0;
         int dispersion_samples = 7;
     };
-    std::array<Passed, kMost> passed{};
+    ListPlaces<Passed, kMost> passed;
     int passed_count = 0;
+
+    Inside() {}
+    // (Only the places in use are copied.)
+    Inside(const Inside& other) { *this = other; }
+    Inside& operator=(const Inside& other) {
+        count = other.count;
+        passed_count = other.passed_count;
+        std::copy_n(&other.entries[0], count, &entries[0]);
+        std::copy_n(&other.passed[0], passed_count, &passed[0]);
+        return *this;
+    }
 
     bool contains(const void* key) const {
         for (int i = 0; i < count; ++i)

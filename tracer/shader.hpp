@@ -140,6 +140,10 @@ class Shader {
     // turned too), where secondary rays start, and the ray's depth and
     // weight.
     struct Hit {
+        // (A constructor of its own: an aggregate's braces would first zero
+        // all of it, its lists of interiors included, on every hit.)
+        Hit(const runtime::Ray4& ray_, const runtime::SurfacePoint& p_, int depth_, double weight_)
+            : ray(ray_), p(p_), depth(depth_), weight(weight_) {}
         const runtime::Ray4& ray;
         const runtime::SurfacePoint& p;
         int depth;

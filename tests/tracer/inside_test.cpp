@@ -93,3 +93,37 @@ TEST_CASE("dispersion's ratio and bands follow the iors' list", "[tracer][disper
     CHECK(r.ior == 1.0);
     CHECK(r.dispersion == 1.0);
 }
+
+TEST_CASE("a copy of the lists holds what they hold, over a longer list too", "[tracer]") {
+    // Inside copies only the places in use (inside.hpp): a copy, and an
+    // assignment over a list that held more, must still give every query's
+    // answer of the original.
+    int keys[2 * Inside::kMost];
+    const auto* fog = reinterpret_cast<const hexant::runtime::MediaVolume*>(&keys[0]);
+    Inside many;
+    for (int k = 0; k < Inside::kMost; ++k)
+        many = many.with({&keys[k], k % 2 ? fog : nullptr, k % 2 == 0})
+                   .entered(&keys[Inside::kMost + k], 1.0 + 0.1 * k);
+    Inside few = Inside{}.with({glass, nullptr, false}).entered(water, 1.33);
+    Inside copy = many;
+    copy = few;  // over eight places of another list
+    const Inside constructed(few);
+    for (const Inside* c : {static_cast<const Inside*>(&copy), &constructed}) {
+        CHECK(c->count == 1);
+        CHECK(c->passed_count == 1);
+        CHECK(c->contains(glass));
+        CHECK_FALSE(c->contains(water));
+        CHECK_FALSE(c->hollow());
+        CHECK_FALSE(c->has_media());
+        CHECK(c->holds(water));
+        CHECK_FALSE(c->holds(glass));
+        CHECK(c->relative_ior(ball, 1.5, false) == Approx(1.5 / 1.33));
+    }
+    // And the long list copied whole.
+    const Inside long_copy(many);
+    CHECK(long_copy.passed_count == many.passed_count);
+    CHECK(long_copy.count == many.count);
+    for (int i = 0; i < many.passed_count; ++i)
+        CHECK(long_copy.passed[std::size_t(i)].index.ior == many.passed[std::size_t(i)].index.ior);
+    CHECK(long_copy.has_media());
+}
