@@ -79,9 +79,12 @@ struct Directions {
 inline constexpr Directions kDirections{};
 
 inline std::uint32_t sobol(std::uint32_t index, int dimension) {
+    // (Each direction masked in by its bit, not chosen by a branch: the
+    // bits of a pixel's sample indices are as good as random, and a
+    // mispredicted branch per bit cost more than the sample's scramble.)
     std::uint32_t x = 0;
     for (int bit = 0; index != 0; index >>= 1, ++bit)
-        if (index & 1u) x ^= kDirections.v[dimension][bit];
+        x ^= kDirections.v[dimension][bit] & (0u - (index & 1u));
     return x;
 }
 

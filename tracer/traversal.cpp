@@ -44,15 +44,14 @@ Sum compensated_sum(double a, double b, double c) {
     return {value, 0x1p-52 * std::fabs(value) + 0x1p-100 * magnitude};
 }
 
-}  // namespace
-
-bool TraversalRay::prepare(const Ray4& ray, bool with_diagonals) {
-    if (ray.direction.w != 0.0) return false;
-    time = ray.origin.w;
-    parallel = 0;
-    diagonals = with_diagonals;
+// The first kCount directions (3: the axes; kDirections: the diagonals
+// too), a count fixed at compile time so that the axes' loop unrolls and
+// their divisions overlap (every ray at an instant passes here).
+template <int kCount>
+bool prepare_directions(TraversalRay& r, const Ray4& ray) {
     double box = 0.0, slab = 0.0;
-    for (int j = 0; j < (with_diagonals ? kDirections : 3); ++j) {
+#pragma GCC unroll 7
+    for (int j = 0; j < kCount; ++j) {
         double on, dn, error;
         bool reliable = true;
         if (j < 3) {
@@ -75,36 +74,47 @@ bool TraversalRay::prepare(const Ray4& ray, bool with_diagonals) {
         }
         if (!(std::fabs(on) < kFloatRange)) {
             if (j < 3) return false;
-            diagonals = false;
+            r.diagonals = false;
             continue;
         }
-        origin[j] = static_cast<float>(on);
+        r.origin[j] = static_cast<float>(on);
         if (dn == 0.0) {
-            parallel |= std::uint8_t(1u << j);
-            inverse[j] = 0.0f;
-            negative[j] = false;
-            slack[j] = float_up(2.0 * error + std::numeric_limits<double>::denorm_min());
+            r.parallel |= std::uint8_t(1u << j);
+            r.inverse[j] = 0.0f;
+            r.negative[j] = false;
+            r.slack[j] = float_up(2.0 * error + std::numeric_limits<double>::denorm_min());
             continue;
         }
         const double inv = 1.0 / dn;
         if (!(std::fabs(inv) < kFloatRange) || !reliable) {
             if (j < 3) return false;
-            diagonals = false;
+            r.diagonals = false;
             continue;
         }
-        inverse[j] = static_cast<float>(inv);
-        negative[j] = dn < 0.0;
-        slack[j] = 0.0f;
+        r.inverse[j] = static_cast<float>(inv);
+        r.negative[j] = dn < 0.0;
+        r.slack[j] = 0.0f;
         const double e = error * std::fabs(inv) * (1.0 + 0x1p-20);
         (j < 3 ? box : slab) = std::max(j < 3 ? box : slab, e);
     }
     // Rounded up by the factor, not by nextafter: the conversion to float
     // loses at most 2^-24 of it.
-    epsilon_box = static_cast<float>(2.0 * box * (1.0 + 0x1p-20));
-    epsilon_slab = static_cast<float>(2.0 * std::max(box, slab) * (1.0 + 0x1p-20));
-    if (!std::isfinite(epsilon_box) || !std::isfinite(epsilon_slab)) return false;
-    half_time = static_cast<float>(0.5 * time);
+    r.epsilon_box = static_cast<float>(2.0 * box * (1.0 + 0x1p-20));
+    r.epsilon_slab = static_cast<float>(2.0 * std::max(box, slab) * (1.0 + 0x1p-20));
+    if (!std::isfinite(r.epsilon_box) || !std::isfinite(r.epsilon_slab)) return false;
+    r.half_time = static_cast<float>(0.5 * r.time);
     return true;
+}
+
+}  // namespace
+
+bool TraversalRay::prepare(const Ray4& ray, bool with_diagonals) {
+    if (ray.direction.w != 0.0) return false;
+    time = ray.origin.w;
+    parallel = 0;
+    diagonals = with_diagonals;
+    return with_diagonals ? prepare_directions<kDirections>(*this, ray)
+                          : prepare_directions<3>(*this, ray);
 }
 
 namespace {
