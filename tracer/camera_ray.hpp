@@ -33,44 +33,54 @@ struct ScreenRay {
 std::optional<ScreenRay> projected_camera_ray(const runtime::CameraFrame& camera, double x0,
                                               double y0);
 
-// The ray through screen point (x0, y0); the pinhole's inline, as every
-// sample of the usual camera asks.
-[[gnu::always_inline]] inline std::optional<ScreenRay> camera_ray(
-    const runtime::CameraFrame& camera, double x0, double y0) {
-    if (camera.type == runtime::CameraType::Perspective)
-        return ScreenRay{
-            camera.location, camera.direction + x0 * camera.right + y0 * camera.up, {x0, y0}};
-    return projected_camera_ray(camera, x0, y0);
+// The ray through screen point (x0, y0) into `out`, or false for none; the
+// pinhole's inline, as every sample of the usual camera asks. (Filled in
+// place: an optional copied out of an inlined call became 16-byte moves
+// over 24-byte vectors, whose stores the loads after them could not
+// forward, a stall on every sample.)
+[[gnu::always_inline]] inline bool camera_ray(const runtime::CameraFrame& camera, double x0,
+                                              double y0, ScreenRay& out) {
+    if (camera.type == runtime::CameraType::Perspective) {
+        out.origin = camera.location;
+        out.direction = camera.direction + x0 * camera.right + y0 * camera.up;
+        out.pattern_point = {x0, y0};
+        return true;
+    }
+    const std::optional<ScreenRay> ray = projected_camera_ray(camera, x0, y0);
+    if (!ray) return false;
+    out = *ray;
+    return true;
 }
 
 // A sample's primary ray, in POV-Ray's order (CreateCameraRay): the
 // projection's ray through screen point (x0, y0); with an aperture, moved
 // to the lens point that lens() (a pair in [0, 1)^2) picks (focal_blur.hpp),
 // the origin moving with it; then bent by the camera's normal { } at its
-// screen point, at time t, when there is one. The direction is unit. No
-// ray where the projection gives none.
+// screen point, at time t, when there is one. The direction is unit.
+// False, `out` unset, where the projection gives no ray.
 struct PrimaryRay {
     glm::dvec3 origin, direction;
 };
 
 template <class Lens>
-[[gnu::always_inline]] inline std::optional<PrimaryRay> primary_ray(
-    const runtime::CameraFrame& camera, double x0, double y0, Lens&& lens,
-    const runtime::TextureEvaluator* normal, double t) {
-    const std::optional<ScreenRay> screen = camera_ray(camera, x0, y0);
-    if (!screen) return std::nullopt;
-    glm::dvec3 origin = screen->origin, direction;
+[[gnu::always_inline]] inline bool primary_ray(const runtime::CameraFrame& camera, double x0,
+                                               double y0, Lens&& lens,
+                                               const runtime::TextureEvaluator* normal, double t,
+                                               PrimaryRay& out) {
+    ScreenRay screen;
+    if (!camera_ray(camera, x0, y0, screen)) return false;
+    out.origin = screen.origin;
     if (camera.aperture != 0.0) {
         // (The lens moves an orthographic ray's own origin, where POV-Ray
         // 3.7 moves every ray's to the location's lens.)
-        const CameraRay ray = focal_blur_ray(camera, screen->direction, lens_point(lens()));
-        origin = origin - camera.location + ray.origin;
-        direction = ray.direction;
+        const CameraRay ray = focal_blur_ray(camera, screen.direction, lens_point(lens()));
+        out.origin = out.origin - camera.location + ray.origin;
+        out.direction = ray.direction;
     } else {
-        direction = glm::normalize(screen->direction);
+        out.direction = glm::normalize(screen.direction);
     }
-    if (normal) direction = normal->perturb(direction, {screen->pattern_point, 0.0}, t);
-    return PrimaryRay{origin, direction};
+    if (normal) out.direction = normal->perturb(out.direction, {screen.pattern_point, 0.0}, t);
+    return true;
 }
 
 // Calls add(p) with every point a camera's rays start from or that bounds

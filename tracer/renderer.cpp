@@ -320,13 +320,13 @@ Image Renderer::render_frame(int frame) {
                                           static_cast<std::uint32_t>(count), kLensPair, jitter);
             return glm::dvec2(pair[0], pair[1]);
         };
-        const std::optional<PrimaryRay> ray =
-            primary_ray(camera, u, v, lens, camera_normal_ ? &*camera_normal_ : nullptr, t);
+        PrimaryRay ray;
         // (No ray, a fisheye's corner: black, as POV-Ray's.)
-        if (!ray) return glm::dvec3(0.0);
+        if (!primary_ray(camera, u, v, lens, camera_normal_ ? &*camera_normal_ : nullptr, t, ray))
+            return glm::dvec3(0.0);
         state.sample = {seed, static_cast<std::uint32_t>(index), static_cast<std::uint32_t>(count),
                         jitter};
-        return shader_->trace(travel_.ray(ray->origin, t, ray->direction), state);
+        return shader_->trace(travel_.ray(ray.origin, t, ray.direction), state);
     };
     // The colour seen at (px, py) of the image (pixels' corners at whole
     // numbers) at `time` in [0, 1) across the shutter, as sample `index`
