@@ -274,3 +274,25 @@ TEST_CASE("a swarm priced from a sample makes the same images, lazy or eager, ei
                             reference) == 0);
         }
 }
+
+TEST_CASE("a leaf takes piece bounds only where they pay for their decoding", "[tracer]") {
+    // Hierarchy::Builder::pieces_pay: atom's leaves hold the floor and the
+    // nucleus beside small electrons, whose tighter bounds at an instant
+    // save a fraction of an object test a ray: box nodes. A leaf of swarm
+    // spheres, each sweeping far past its size, saves several: pieces.
+    const auto count = [](const std::string& name, int size,
+                          const std::vector<std::string>& declares) {
+        tr::RenderSettings settings;
+        settings.mode = tr::Mode::Spacetime;
+        settings.samples_per_pixel = 1;
+        const auto scene = example(name, size, declares);  // (the renderer keeps a reference)
+        tr::Renderer renderer(scene, settings);
+        renderer.render_frame(1);
+        return renderer.counters();
+    };
+    const tr::Counters atom = count("atom", 126, {});  // (its .ini's size: the leaves it prices)
+    CHECK(atom.piece_nodes == 0);
+    CHECK(atom.box_nodes + atom.motion_nodes > 0);
+    const tr::Counters swarm = count("swarm", 24, {"N=300"});
+    CHECK(swarm.piece_nodes > 0);
+}
