@@ -83,8 +83,11 @@ bool ray_meets_box(const geometry::Box3& box, const glm::dvec3& origin, const gl
         // 0 * inf (origin on the slab's plane, ray parallel): inside the slab.
         if (std::isnan(near)) near = -std::numeric_limits<double>::infinity();
         if (std::isnan(far)) far = std::numeric_limits<double>::infinity();
-        near -= std::fabs(near) * (widen - 1.0);
-        far += std::fabs(far) * (widen - 1.0);
+        // (An infinite end stays as it is: inf - inf would be NaN, which
+        // the comparisons below would read as meeting a slab the ray
+        // runs beside.)
+        if (std::isfinite(near)) near -= std::fabs(near) * (widen - 1.0);
+        if (std::isfinite(far)) far += std::fabs(far) * (widen - 1.0);
         lo = near > lo ? near : lo;
         hi = far < hi ? far : hi;
         if (lo > hi) return false;

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "runtime/geometry/box_queries.hpp"
+#include "runtime/objects/box_hierarchy.hpp"
 #include "runtime/objects/triangle/triangle_geometry.hpp"
 
 namespace hexant::runtime::geometry {
@@ -16,27 +17,6 @@ using objects::HeightFieldData;
 
 // POV-Ray's HFIELD_OFFSET: the box's margin above and below the heights.
 constexpr double kOffset = 0.001;
-
-// pbrt-v4's Bounds3::IntersectP, as box_hierarchy.cpp's ray_meets_box.
-bool meets_box(const Box3& box, const glm::dvec3& origin, const glm::dvec3& inverse, double s_min,
-               double s_max, double& entry) {
-    constexpr double widen = 2.0 * rounding_gamma(3);
-    double lo = s_min, hi = s_max;
-    for (int i = 0; i < 3; ++i) {
-        double near = (box.lo[i] - origin[i]) * inverse[i];
-        double far = (box.hi[i] - origin[i]) * inverse[i];
-        if (near > far) std::swap(near, far);
-        if (std::isnan(near)) near = -std::numeric_limits<double>::infinity();
-        if (std::isnan(far)) far = std::numeric_limits<double>::infinity();
-        near -= std::fabs(near) * widen;
-        far += std::fabs(far) * widen;
-        lo = near > lo ? near : lo;
-        hi = far < hi ? far : hi;
-        if (lo > hi) return false;
-    }
-    entry = lo;
-    return true;
-}
 
 // A cell's triangle: its corners in POV-Ray's order and its upward normal
 // in object space.
@@ -118,7 +98,8 @@ std::optional<SurfaceHit> intersect(const HeightFieldGeometry& field, const Ray3
     int top = 0;
     double entry = 0.0;
     if (d.max_height() < floor_height) return std::nullopt;
-    if (!meets_box(d.node_box(nodes[0], field.floor), ray.origin, inverse, s_min, s_max, entry))
+    if (!objects::ray_meets_box(d.node_box(nodes[0], field.floor), ray.origin, inverse, s_min,
+                                s_max, entry))
         return std::nullopt;
     stack[top++] = {0, entry};
     struct Best {
@@ -158,7 +139,8 @@ std::optional<SurfaceHit> intersect(const HeightFieldGeometry& field, const Ray3
             const auto& child = nodes[node.first + c];
             if (child.hi < floor_height) continue;
             double e = 0.0;
-            if (meets_box(d.node_box(child, field.floor), ray.origin, inverse, s_min, s_max, e))
+            if (objects::ray_meets_box(d.node_box(child, field.floor), ray.origin, inverse, s_min,
+                                       s_max, e))
                 children[n++] = {node.first + c, e};
         }
         // Farthest entry first, by insertion (at most four; the order
