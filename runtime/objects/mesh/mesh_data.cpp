@@ -29,8 +29,7 @@ void MeshData::build_hierarchy() {
 std::size_t MeshData::bytes() const {
     return vertices.capacity() * sizeof(glm::dvec3) + normals.capacity() * sizeof(glm::dvec3) +
            uvs.capacity() * sizeof(glm::dvec2) + faces.capacity() * sizeof(MeshFace) +
-           read_index.capacity() * sizeof(std::uint32_t) +
-           hierarchy.nodes().capacity() * sizeof(BoxHierarchy::Node) +
+           read_index.capacity() * sizeof(std::uint32_t) + hierarchy.bytes() +
            textures.size() * sizeof(Texture);
 }
 
