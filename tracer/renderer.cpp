@@ -135,7 +135,11 @@ Renderer::Renderer(runtime::SceneDescription& scene, const RenderSettings& setti
 
 Renderer::Renderer(const runtime::SceneDescription& scene, const RenderSettings& settings,
                    Records* release)
-    : scene_(scene),
+    : thread_limit_(settings.threads > 0
+                        ? std::make_unique<tbb::global_control>(
+                              tbb::global_control::max_allowed_parallelism, settings.threads)
+                        : nullptr),
+      scene_(scene),
       settings_(settings),
       first_frame_(settings.first_frame > 0 ? settings.first_frame : scene.animation.initial_frame),
       last_frame_(settings.last_frame > 0 ? settings.last_frame : scene.animation.final_frame) {
@@ -265,10 +269,6 @@ Image Renderer::render_frame(int frame) {
     });
     const auto start = std::chrono::steady_clock::now();
 
-    std::unique_ptr<tbb::global_control> limit;
-    if (settings_.threads > 0)
-        limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
-                                                      settings_.threads);
     // assumed_gamma G: the scene's colours and all the shading are in a
     // space of gamma G; the pixel leaves it (POV-Ray 3.7 decodes the working
     // gamma before it encodes the file's).

@@ -13,6 +13,8 @@
 #include <optional>
 #include <vector>
 
+#include <tbb/global_control.h>
+
 #include "runtime/objects/intelligent_object.hpp"
 #include "runtime/scene/scene.hpp"
 #include "runtime/texture/texture_evaluator.hpp"
@@ -53,7 +55,10 @@ struct RenderSettings {
     // instead of the frame's irradiance cache.
     bool gi_path = false;
     BuildOptions build;
-    int threads = 0;  // 0: as many as the machine has
+    // 0: as many as the machine has; else the most threads any part of the
+    // renderer uses, from its construction (the sweeps, an eager build) to
+    // its end.
+    int threads = 0;
     // Told, from a worker thread and one call at a time, each time a tile
     // of a frame is done: the frame, the fraction of its tiles done, and
     // the samples (primary rays) the frame has taken so far.
@@ -108,6 +113,10 @@ class Renderer {
     Renderer(const runtime::SceneDescription& scene, const RenderSettings& settings,
              Records* release);
 
+    // settings.threads (when set) bounds every parallel part, the sweeps
+    // and an eager build in the constructor as well as the frames: held
+    // from the first member made to the renderer's end.
+    std::unique_ptr<tbb::global_control> thread_limit_;
     const runtime::SceneDescription& scene_;
     RenderSettings settings_;
     std::vector<runtime::IntelligentObjectPtr> objects_;

@@ -296,3 +296,25 @@ TEST_CASE("a leaf takes piece bounds only where they pay for their decoding", "[
     const tr::Counters swarm = count("swarm", 24, {"N=300"});
     CHECK(swarm.piece_nodes > 0);
 }
+
+TEST_CASE("a thread limit bounds the renderer from its construction, eager build included",
+          "[build]") {
+    // (Before, the limit was set only while a frame rendered: the sweeps
+    // and an eager build ran on every core whatever --threads said.)
+    const auto scene = example("swarm", 16, {"N=50"});
+    const auto limit = [] {
+        return tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism);
+    };
+    const std::size_t unlimited = limit();
+    {
+        tr::RenderSettings settings;
+        settings.mode = tr::Mode::Spacetime;
+        settings.build.build = tr::BuildKind::Eager;
+        settings.threads = 1;
+        tr::Renderer renderer(scene, settings);
+        CHECK(limit() == 1);
+        (void)renderer.render_frame(1);
+        CHECK(limit() == 1);
+    }
+    CHECK(limit() == unlimited);
+}
