@@ -256,7 +256,7 @@ class Hierarchy::Builder {
                         Counters& counters) const;
     NodeRef piece_node(NodeArena& arena, const Interval& time,
                        const std::vector<Child>& children) const;
-    bool pieces_pay(const Interval& time, const std::vector<Child>& children) const;
+    bool pieces_pay(const std::vector<Child>& children) const;
 
     const Hierarchy& h_;
     const SweptObjects& objects_;

@@ -195,22 +195,32 @@ NodeRef Hierarchy::Builder::piece_node(NodeArena& arena, const Interval& time,
 // instant sees (TimeBins::mean_area), A_box_i the box over the node's time.
 // (A floor beside a few small movers, atom's leaves: the pieces save a
 // fraction of a test; a leaf of swarm spheres: several.)
-bool Hierarchy::Builder::pieces_pay(const Interval& time,
-                                    const std::vector<Child>& children) const {
+bool Hierarchy::Builder::pieces_pay(const std::vector<Child>& children) const {
     constexpr double kPieceExtra = 1.2;
+    // Each child's box, and the node's, first: the savings then stop being
+    // summed once they pay (a leaf of swarm spheres pays after one or two).
+    std::array<double, kNodeWidth> box_area{};
     BinBox all;
+    for (std::size_t i = 0; i < children.size(); ++i) {
+        const BinBox hull = children[i].bins.hull();
+        box_area[i] = surface_area(hull);
+        all.extend(hull);
+    }
+    const double node = surface_area(all);
+    // (A flat or empty node leaves no ratio: the pieces, as before.)
+    if (!(node > 0.0)) return true;
+    const double needed = kPieceExtra * node;
     double saved = 0.0;
-    for (const Child& c : children) {
+    for (std::size_t i = 0; i < children.size(); ++i) {
+        const Child& c = children[i];
         const double cost =
             c.ref.kind() == RefKind::Object && objects_.objects[c.ref.object_index()]->moves()
                 ? options_.moving_object_cost
                 : options_.object_cost;
-        saved += cost * std::max(0.0, surface_area(c.bins.hull(time)) - c.bins.mean_area());
-        all.extend(c.bins.hull());
+        saved += cost * std::max(0.0, box_area[i] - c.bins.mean_area());
+        if (saved > needed) return true;
     }
-    const double node = surface_area(all);
-    // (A flat or empty node leaves no ratio: the pieces, as before.)
-    return !(node > 0.0) || saved > kPieceExtra * node;
+    return false;
 }
 
 // The node over a leaf's objects (at most eight): a PieceNode where
@@ -221,7 +231,7 @@ NodeRef Hierarchy::Builder::object_node(NodeArena& arena, const Interval& time,
                                         Counters& counters) const {
     const BoundStyle style = options_.bounds;
     if (!space_only() && (style == BoundStyle::Auto || style == BoundStyle::Linear) &&
-        moves_within(children) && (style == BoundStyle::Linear || pieces_pay(time, children)))
+        moves_within(children) && (style == BoundStyle::Linear || pieces_pay(children)))
         if (const NodeRef ref = piece_node(arena, time, children); !ref.empty()) {
             ++counters.piece_nodes;
             return ref;
