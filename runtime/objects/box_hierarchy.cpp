@@ -46,6 +46,7 @@ struct Builder {
     const std::vector<glm::dvec3>& centres;
     std::vector<std::uint32_t>& order;  // part indices, rearranged in place
     std::vector<BoxHierarchy::Node>& nodes;
+    int deepest = 0;
 
     // Builds the subtree over order[first, last) at nodes[index].
     void build(std::uint32_t index, std::uint32_t first, std::uint32_t last, int depth) {
@@ -57,6 +58,7 @@ struct Builder {
             centre_box = {glm::min(centre_box.lo, c), glm::max(centre_box.hi, c)};
         }
         nodes[index].box = box;
+        deepest = std::max(deepest, depth);
         const std::uint32_t n = last - first;
         if (n <= kBoxLeafSize) {
             nodes[index].first = first;
@@ -218,13 +220,20 @@ BoxHierarchy BoxHierarchy::build(const std::vector<Box3>& part_boxes,
     std::vector<Box3> boxes;
     boxes.reserve(part_boxes.size());
     for (const Box3& b : part_boxes) boxes.push_back(anywhere_for_nan(b));
-    h.nodes_.reserve(2 * (boxes.size() / kBoxLeafSize + 1));
-    Builder b{boxes, centres, order, h.nodes_};
-    h.nodes_.emplace_back();
+    // The binary tree, for the build only (BoxHierarchy::Node's fields:
+    // an inner node's children at index + 1 and at `first`).
+    std::vector<Node> binary;
+    binary.reserve(2 * (boxes.size() / kBoxLeafSize + 1));
+    Builder b{boxes, centres, order, binary};
+    binary.emplace_back();
     b.build(0, 0, static_cast<std::uint32_t>(boxes.size()), 0);
+    h.box_ = binary.front().box;
+    h.depth_ = b.deepest;
+    h.root_leaf_ = binary.front().count > 0;
     std::vector<WideBoxTree::Node> wide;
-    wide.reserve(h.nodes_.size() / 3 + 1);
-    collapse(h.nodes_, 0, wide);
+    wide.reserve(binary.size() / 3 + 1);
+    collapse(binary, 0, wide);
+    wide.shrink_to_fit();
     h.wide_ = WideBoxTree(std::move(wide));
     return h;
 }

@@ -3,10 +3,10 @@
 // (instance_object.hpp). Built as a binary tree of axis-aligned boxes by the
 // surface-area heuristic over binned centres (Wald, "On fast Construction
 // of SAH-based Bounding Volume Hierarchies", 2007; pbrt-v4's BVHAggregate),
-// leaves of at most kBoxLeafSize parts. Rays walk it as a four-wide tree of
-// single-precision boxes (wide_box_tree.hpp), nearer children first,
-// skipping a box met beyond the nearest hit so far. The binary tree gives
-// the object's bound pieces: the boxes of its nodes, finer where a region
+// leaves of at most kBoxLeafSize parts, then kept only as a four-wide tree
+// of single-precision boxes rounded outward (wide_box_tree.hpp). Rays walk
+// it nearer children first, skipping a box met beyond the nearest hit so
+// far. Its nodes' boxes are the object's bound pieces, finer where a region
 // is small (the paper's star cluster: an object answers bound(region) with
 // several smaller bounds).
 #pragma once
@@ -33,10 +33,11 @@ static_assert(kBoxMaxDepth <= WideBoxTree::kMaxDepth);
 
 class BoxHierarchy {
   public:
+    // A node as descend() shows it: its box (the root's exact, the others'
+    // rounded outward to floats), and for a leaf its parts [first, first +
+    // count); count == 0 for an inner node.
     struct Node {
         geometry::Box3 box;
-        // A leaf: parts [first, first + count); an inner node (count == 0):
-        // children at index + 1 and at `first`.
         std::uint32_t first = 0, count = 0;
     };
 
@@ -48,9 +49,11 @@ class BoxHierarchy {
                               const std::vector<glm::dvec3>& centres,
                               std::vector<std::uint32_t>& order);
 
-    bool empty() const { return nodes_.empty(); }
-    const std::vector<Node>& nodes() const { return nodes_; }
-    const geometry::Box3& box() const { return nodes_.front().box; }
+    bool empty() const { return wide_.empty(); }
+    // The box over all parts (NaN ends read as unbounded there).
+    const geometry::Box3& box() const { return box_; }
+    // The binary tree's depth as built (its root at 0), at most kBoxMaxDepth.
+    int depth() const { return depth_; }
 
     // Calls leaf(first, count, s_max) for every leaf whose box the ray
     // meets within (s_min, s_max), nearer first; `leaf` returns the new
@@ -62,27 +65,29 @@ class BoxHierarchy {
         wide_.traverse(ray, s_min, s_max, std::forward<Leaf>(leaf));
     }
 
-    // The bytes its nodes hold.
-    std::size_t bytes() const { return nodes_.capacity() * sizeof(Node) + wide_.bytes(); }
-
-    // Calls visit(index) for nodes from the root down while visit returns
-    // true (descend).
+    // Calls visit(node) for the root, then for the children of every inner
+    // node visit returned true for (descend).
     template <class Visit>
     void descend(Visit&& visit) const {
-        if (nodes_.empty()) return;
-        std::uint32_t stack[kBoxMaxDepth + 2];
-        int top = 0;
-        stack[top++] = 0;
-        while (top > 0) {
-            const std::uint32_t i = stack[--top];
-            if (!visit(i) || nodes_[i].count > 0) continue;
-            stack[top++] = nodes_[i].first;
-            stack[top++] = i + 1;
+        if (wide_.empty()) return;
+        if (root_leaf_) {
+            // (The wide root's one slot.)
+            visit(Node{box_, wide_.node(0).child[0], wide_.node(0).count[0]});
+            return;
         }
+        if (!visit(Node{box_, 0, 0})) return;
+        wide_.descend([&](const geometry::Box3& box, std::uint32_t child, std::uint32_t count) {
+            return visit(Node{box, child, count});
+        });
     }
 
+    // The bytes its nodes hold.
+    std::size_t bytes() const { return wide_.bytes(); }
+
   private:
-    std::vector<Node> nodes_;
+    geometry::Box3 box_ = geometry::Box3::nowhere();
+    int depth_ = 0;
+    bool root_leaf_ = false;  // at most kBoxLeafSize parts in all
     WideBoxTree wide_;
 };
 

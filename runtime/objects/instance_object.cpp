@@ -159,9 +159,8 @@ bool InstanceObject::inside(const Event& event) const {
         return false;
     }
     bool in = false;
-    hierarchy_.descend([&](std::uint32_t index) {
+    hierarchy_.descend([&](const objects::BoxHierarchy::Node& node) {
         if (in) return false;
-        const auto& node = hierarchy_.nodes()[index];
         for (int i = 0; i < 3; ++i)
             if (!(node.box.lo[i] <= p[i] && p[i] <= node.box.hi[i])) return false;
         for (std::uint32_t k = node.first; node.count > 0 && k < node.first + node.count; ++k)

@@ -62,6 +62,13 @@ class WideBoxTree {
 
     bool empty() const { return nodes_.empty(); }
     std::size_t bytes() const { return nodes_.capacity() * sizeof(Node); }
+    const Node& node(std::uint32_t i) const { return nodes_[i]; }
+
+    // Calls visit(box, child, count) for each child of the root (empty
+    // slots left out), and for each child of an inner child visit returned
+    // true for; the box as stored (in doubles, exactly).
+    template <class Visit>
+    void descend(Visit&& visit) const;
 
     // As BoxHierarchy::traverse: leaf(first, count, s_max) for every leaf
     // whose box the ray meets within (s_min, s_max), nearer first; leaf
@@ -84,6 +91,27 @@ class WideBoxTree {
 
     std::vector<Node> nodes_;
 };
+
+template <class Visit>
+void WideBoxTree::descend(Visit&& visit) const {
+    if (nodes_.empty()) return;
+    std::uint32_t stack[kMaxDepth * (kWideWidth - 1) + kWideWidth];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const Node& n = nodes_[stack[--top]];
+        // Last child first on the stack: the first is visited first.
+        std::uint32_t inner[kWideWidth];
+        int count = 0;
+        for (int k = 0; k < kWideWidth; ++k) {
+            if (!(n.lo[0][k] <= n.hi[0][k])) continue;  // an empty slot
+            const geometry::Box3 box{{n.lo[0][k], n.lo[1][k], n.lo[2][k]},
+                                     {n.hi[0][k], n.hi[1][k], n.hi[2][k]}};
+            if (visit(box, n.child[k], n.count[k]) && n.count[k] == 0) inner[count++] = n.child[k];
+        }
+        while (count > 0) stack[top++] = inner[--count];
+    }
+}
 
 template <class Leaf>
 void WideBoxTree::traverse(const geometry::Ray3& ray, double s_min, double s_max,

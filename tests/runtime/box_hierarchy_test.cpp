@@ -43,17 +43,7 @@ struct Parts {
         return out;
     }
 
-    int depth() const {
-        int deepest = 0;
-        std::vector<int> level(tree.nodes().size(), 0);
-        tree.descend([&](std::uint32_t i) {
-            const auto& n = tree.nodes()[i];
-            deepest = std::max(deepest, level[i]);
-            if (n.count == 0) level[i + 1] = level[n.first] = level[i] + 1;
-            return true;
-        });
-        return deepest;
-    }
+    int depth() const { return tree.depth(); }
 };
 
 // Random boxes at several scales, some flat (a triangle's box in a plane).
@@ -191,13 +181,21 @@ TEST_CASE("box hierarchy: the heuristic parts two clusters where the median woul
         p.add({c - 0.1, c + 0.1});
     }
     p.build();
-    const auto& nodes = p.tree.nodes();
-    REQUIRE(nodes[0].count == 0);
-    const Box3 a = nodes[1].box, b = nodes[nodes[0].first].box;
-    const Box3& near = a.lo.x < b.lo.x ? a : b;
-    const Box3& far = a.lo.x < b.lo.x ? b : a;
-    CHECK(near.hi.x < 11.0);
-    CHECK(far.lo.x > 999.0);
+    // The root's children (the binary root's, opened into four): each on
+    // one side. The median would leave one over both clusters.
+    int children = 0;
+    bool root = true;
+    p.tree.descend([&](const obj::BoxHierarchy::Node& node) {
+        if (root) {
+            root = false;
+            return true;
+        }
+        ++children;
+        INFO("child " << node.box.lo.x << " .. " << node.box.hi.x);
+        CHECK((node.box.hi.x < 11.0 || node.box.lo.x > 999.0));
+        return false;
+    });
+    CHECK(children == obj::kWideWidth);
 }
 
 TEST_CASE("box hierarchy: depth stays bounded where the heuristic would chain", "[box_hierarchy]") {
@@ -214,4 +212,30 @@ TEST_CASE("box hierarchy: depth stays bounded where the heuristic would chain", 
     CHECK(p.depth() > obj::kSahDepth);  // (the guard was needed)
     const Ray3 ray{{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}};
     CHECK(p.walked(ray, 0.0, std::numeric_limits<double>::infinity()).size() == 1500);
+}
+
+TEST_CASE("box hierarchy: every leaf descend shows holds its parts", "[box_hierarchy]") {
+    // (The nodes' boxes are the object's bound pieces: each leaf's must
+    // hold its parts after the rounding to floats, and every part must be
+    // in one leaf.)
+    std::mt19937_64 rng(5);
+    for (const double offset : {0.0, 3e6}) {
+        const Parts p = random_parts(rng, 3000, offset, 0.01);
+        std::vector<int> seen(p.boxes.size(), 0);
+        const auto holds = [](const Box3& outer, const Box3& inner) {
+            for (int i = 0; i < 3; ++i)
+                if (!(outer.lo[i] <= inner.lo[i] && inner.hi[i] <= outer.hi[i])) return false;
+            return true;
+        };
+        int bad = 0;
+        p.tree.descend([&](const obj::BoxHierarchy::Node& node) {
+            for (std::uint32_t k = node.first; node.count > 0 && k < node.first + node.count; ++k) {
+                ++seen[p.order[k]];
+                bad += !holds(node.box, p.boxes[p.order[k]]);
+            }
+            return true;
+        });
+        CHECK(bad == 0);
+        CHECK(std::count(seen.begin(), seen.end(), 1) == static_cast<long>(seen.size()));
+    }
 }

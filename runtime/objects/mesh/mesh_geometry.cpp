@@ -96,9 +96,8 @@ Box3 object_bounds(const MeshGeometry& mesh) {
 bool surface_may_meet(const MeshGeometry& mesh, const Box3& box) {
     const objects::MeshData& m = *mesh.data;
     bool met = false;
-    m.hierarchy.descend([&](std::uint32_t index) {
+    m.hierarchy.descend([&](const objects::BoxHierarchy::Node& node) {
         if (met) return false;
-        const auto& node = m.hierarchy.nodes()[index];
         if (!boxes_meet(node.box, box)) return false;
         if (node.count == 0) return true;
         for (std::uint32_t i = node.first; i < node.first + node.count && !met; ++i) {

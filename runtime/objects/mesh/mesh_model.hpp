@@ -37,12 +37,11 @@ class MeshModel {
     // children (a leaf's box is emitted).
     template <class Refine, class Emit>
     void pieces(Refine&& refine, Emit&& emit) const {
-        const auto& nodes = data_->hierarchy.nodes();
-        data_->hierarchy.descend([&](std::uint32_t i) {
-            const IntervalBox box = to_interval_box(nodes[i].box);
+        data_->hierarchy.descend([&](const BoxHierarchy::Node& node) {
+            const IntervalBox box = to_interval_box(node.box);
             const int what = refine(box);
             if (what == 0) return false;
-            if (what == 1 || nodes[i].count > 0) {
+            if (what == 1 || node.count > 0) {
                 emit(box);
                 return false;
             }
