@@ -20,6 +20,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "runtime/geometry/ray3.hpp"
@@ -52,9 +53,9 @@ class WideBoxTree {
         std::uint32_t count[kWideWidth];
     };
 
-    // Deeper than any tree BoxHierarchy::build makes (its kMaxDepth binary
-    // levels, each wide level at least one of them), three children left
-    // behind a level.
+    // More levels than any tree BoxHierarchy::build makes (at most
+    // kBoxMaxDepth binary levels, each wide level taking at least one of
+    // them); the walks' stacks hold three children left behind a level.
     static constexpr int kMaxDepth = 80;
 
     WideBoxTree() = default;
