@@ -6,20 +6,25 @@
 // (SurfaceHit::point is computed near the surface to keep it so). Stepping
 // each coordinate a fixed number of ulps along the normal clears that error
 // at every scale without knowing the scene's size: far from the origin the
-// step is made on the coordinate's bit pattern as an integer. Near zero a
-// coordinate's ulps shrink without bound while the error (inherited from the
-// other, larger coordinates of the computation) does not, so below
-// kOffsetOrigin a fixed absolute step is used instead.
+// step is made on the coordinate's bit pattern as an integer. A coordinate
+// near zero has ulps that shrink without bound while its error (inherited
+// from the other, larger coordinates of the computation) does not, so it
+// steps by a part of the point's largest coordinate instead. The paper
+// takes that scale as 1 (its crossover 1/32 and step 2^-16 are absolute);
+// here the largest coordinate is the unit, so that a scene drawn a
+// thousand times smaller (or larger) starts its rays at the same relative
+// places, and a power-of-two scale gives the same image.
 //
 // Constants for double (the paper's are for float, 24-bit significand):
 // - kOffsetIntScale = 256: the step in ulps per unit of normal component;
 //   the paper's value, since the error counted in ulps of the point is about
 //   the same in any precision (a few dozen ulps at most for our routines).
-// - kOffsetOrigin = 1/32: the paper's crossover magnitude, kept.
+// - kOffsetOrigin = 1/32: the paper's crossover, a part of the point's
+//   largest coordinate |p|max.
 // - kOffsetFloatScale = 2^-45: the paper's 2^-16 scaled by 2^-29, the ratio
-//   of the two precisions' ulps (2^-52 / 2^-23), so that near the crossover
-//   the absolute step stays 16 times the integer step as in the paper
-//   (256 ulps of 1/32 in double is 2^-49).
+//   of the two precisions' ulps (2^-52 / 2^-23), times |p|max, so that near
+//   the crossover the step stays 16 times the integer step as in the paper
+//   (256 ulps of |p|max / 32 in double is about 2^-49 |p|max).
 // The normal must face the side the new ray leaves toward: the geometric
 // normal for reflection, its negation for transmission.
 //
@@ -32,6 +37,7 @@
 // point), then takes the step above.
 #pragma once
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -48,14 +54,20 @@ inline constexpr double kOffsetFloatScale = 0x1p-45;
 inline constexpr double kOffsetIntScale = 256.0;
 
 inline glm::dvec3 offset_ray(const glm::dvec3& p, const glm::dvec3& n) {
+    // The point's own scale; a point at the top of the range (or not
+    // finite) takes integer steps only, which never leave the range.
+    const double scale = std::max({std::fabs(p.x), std::fabs(p.y), std::fabs(p.z)});
+    const bool scaled = std::isfinite(scale);
+    const double near_zero = scaled ? kOffsetOrigin * scale : 0.0;
+    const double step_near_zero = kOffsetFloatScale * scale;
     glm::dvec3 out;
     for (int k = 0; k < 3; ++k) {
-        if (std::fabs(p[k]) < kOffsetOrigin) {
-            out[k] = p[k] + kOffsetFloatScale * n[k];
-            continue;
-        }
         if (!(std::fabs(n[k]) <= 2.0)) {  // not a unit normal (or NaN): leave it
             out[k] = p[k];
+            continue;
+        }
+        if (std::fabs(p[k]) < near_zero) {
+            out[k] = p[k] + step_near_zero * n[k];
             continue;
         }
         // Moving the bit pattern of a positive double up by one steps it one

@@ -332,6 +332,35 @@ TEST_CASE("a smooth triangle shades alike whichever way its normals point", "[ro
     CHECK(differing(up, flat, 1e-3) > 100);
 }
 
+namespace {
+
+// Every kind of object, one of them moving, with its camera and light, all
+// scaled by sc about the origin.
+std::string scaled_scene(double sc) {
+    const std::string s = number(sc);
+    return "camera { location <1, 3, -7> * " + s + " look_at <0, 0.5, 0> * " + s +
+           " angle 45 }\n"
+           "light_source { <-4, 8, -5> * " +
+           s +
+           ", rgb 1 }\n"
+           "#declare Objects = union {\n"
+           "  plane { y, 0 pigment { checker rgb 0.8, rgb 0.45 } }\n"
+           "  sphere { <-1.5, 0.6, 0>, 0.6 pigment { rgb <1, 0.4, 0.2> } finish { phong 0.6 } "
+           "}\n"
+           "  box { <-0.4, 0, -0.4>, <0.4, 0.8, 0.4> rotate y * 30 translate <0, 0, 1.2> "
+           "pigment { rgb <0.3, 0.6, 1> } }\n"
+           "  cylinder { <1.2, 0, 0>, <1.2, 1.2, 0>, 0.3 pigment { rgb <0.4, 0.9, 0.4> } }\n"
+           "  torus { 0.5, 0.15 translate <0, 0.15, -1.2> pigment { rgb 0.9 } }\n"
+           "  triangle { <2, 0, 1>, <3, 0, 1>, <2.5, 1.2, 1.5> pigment { rgb <1, 1, 0.3> } }\n"
+           "  sphere { 0, 0.3 translate <2 * clock - 1, 0.3, -2> pigment { rgb <0.9, 0.2, 0.9> "
+           "} }\n"
+           "}\n"
+           "object { Objects scale " +
+           s + " }\n";
+}
+
+}  // namespace
+
 // A scene of every kind of object, one of them moving, with its camera and
 // light, at world scales from 1e-6 to 1e9: each frame in each mode must
 // match the scale-1 spacetime render. Tolerance as for the checker above
@@ -340,35 +369,33 @@ TEST_CASE("a smooth triangle shades alike whichever way its normals point", "[ro
 // checker changes a channel by 0.1 or more; only pixels whose sample lands
 // within rounding of an outline or a cell edge may flip.
 TEST_CASE("a scene renders alike at every world scale in every mode", "[robust]") {
-    const auto scene = [](double sc) {
-        const std::string s = number(sc);
-        return "camera { location <1, 3, -7> * " + s + " look_at <0, 0.5, 0> * " + s +
-               " angle 45 }\n"
-               "light_source { <-4, 8, -5> * " +
-               s +
-               ", rgb 1 }\n"
-               "#declare Objects = union {\n"
-               "  plane { y, 0 pigment { checker rgb 0.8, rgb 0.45 } }\n"
-               "  sphere { <-1.5, 0.6, 0>, 0.6 pigment { rgb <1, 0.4, 0.2> } finish { phong 0.6 } "
-               "}\n"
-               "  box { <-0.4, 0, -0.4>, <0.4, 0.8, 0.4> rotate y * 30 translate <0, 0, 1.2> "
-               "pigment { rgb <0.3, 0.6, 1> } }\n"
-               "  cylinder { <1.2, 0, 0>, <1.2, 1.2, 0>, 0.3 pigment { rgb <0.4, 0.9, 0.4> } }\n"
-               "  torus { 0.5, 0.15 translate <0, 0.15, -1.2> pigment { rgb 0.9 } }\n"
-               "  triangle { <2, 0, 1>, <3, 0, 1>, <2.5, 1.2, 1.5> pigment { rgb <1, 1, 0.3> } }\n"
-               "  sphere { 0, 0.3 translate <2 * clock - 1, 0.3, -2> pigment { rgb <0.9, 0.2, 0.9> "
-               "} }\n"
-               "}\n"
-               "object { Objects scale " +
-               s + " }\n";
-    };
-    const auto unit = render_all(scene(1.0), tr::Mode::Spacetime, 2);
+    const auto unit = render_all(scaled_scene(1.0), tr::Mode::Spacetime, 2);
     for (const double sc : {1e-6, 1e-3, 1e3, 1e6, 1e9}) {
         for (const tr::Mode mode : {tr::Mode::Spacetime, tr::Mode::Frames, tr::Mode::Brute}) {
-            const auto scaled = render_all(scene(sc), mode, 2);
+            const auto scaled = render_all(scaled_scene(sc), mode, 2);
             for (std::size_t k = 0; k < unit.size(); ++k) {
                 INFO("Sc = " << sc << ", mode " << int(mode) << ", frame " << k + 1);
                 CHECK(differing(unit[k], scaled[k], 0.05) <= unit[k].width * unit[k].height / 100);
+            }
+        }
+    }
+}
+
+// The same scene scaled by powers of two, down to scales whose every length
+// is below 1e-15 and up to 2^60: a power-of-two factor is exact in every
+// coordinate, so a renderer with no absolute length in it (no epsilon, no
+// fixed step off a surface) draws the same pixels bit for bit. A secondary
+// ray's start once stepped a fixed 2^-45 off a surface near the origin:
+// at 2^-50 the shadows were gone and spheres shadowed their own lower half.
+// Tolerance zero, as the argument allows.
+TEST_CASE("a scene scaled by a power of two renders the same pixels", "[robust]") {
+    const auto unit = render_all(scaled_scene(1.0), tr::Mode::Spacetime, 2);
+    for (const int e : {-100, -50, 40}) {
+        for (const tr::Mode mode : {tr::Mode::Spacetime, tr::Mode::Brute}) {
+            const auto scaled = render_all(scaled_scene(std::ldexp(1.0, e)), mode, 2);
+            for (std::size_t k = 0; k < unit.size(); ++k) {
+                INFO("scale 2^" << e << ", mode " << int(mode) << ", frame " << k + 1);
+                CHECK(same_pixels(unit[k], scaled[k]));
             }
         }
     }

@@ -116,7 +116,8 @@ TEST_CASE("geometry outlines: POV-Ray's closing rule", "[runtime][geometry]") {
     CHECK(geo::region_meets_rectangle(ring.data(), ring.size(), same, {0.2, 0.2}, {0.3, 0.3}));
 }
 
-TEST_CASE("offset_ray: ulp steps far out, absolute steps near zero", "[runtime][geometry]") {
+TEST_CASE("offset_ray: ulp steps far out, steps of the point's scale near zero",
+          "[runtime][geometry]") {
     // Far from zero: 256 ulps per unit of normal, away from the surface.
     const glm::dvec3 p{1e6, -1e6, 3.0};
     const glm::dvec3 moved = geo::offset_ray(p, {1.0, 0.0, 0.0});
@@ -127,10 +128,24 @@ TEST_CASE("offset_ray: ulp steps far out, absolute steps near zero", "[runtime][
     const glm::dvec3 moved_neg = geo::offset_ray(p, {0.0, 1.0, -1.0});
     CHECK(moved_neg.y > p.y);  // toward +y although y is negative
     CHECK(moved_neg.z < p.z);
-    // Near zero: a fixed 2^-45 per unit of normal.
-    const glm::dvec3 small = geo::offset_ray({1e-20, 0.0, -0.01}, {0.0, 0.0, 1.0});
-    CHECK(small.z == -0.01 + 0x1p-45);
-    CHECK(small.x == 1e-20);
+    // Near zero (below 1/32 of the largest coordinate): 2^-45 of that
+    // coordinate per unit of normal.
+    const glm::dvec3 small = geo::offset_ray({1e-20, 0.0, -1.0}, {1.0, 1.0, 0.0});
+    CHECK(small.x == 1e-20 + 0x1p-45);
+    CHECK(small.y == 0x1p-45);
+    CHECK(small.z == -1.0);
+    const glm::dvec3 large = geo::offset_ray({1e-20, 0.0, -1e6}, {0.0, 1.0, 0.0});
+    CHECK(large.y == 0x1p-45 * 1e6);
+    // The same point at any power-of-two scale moves the same relative way:
+    // nothing in the step is absolute (a scene drawn 2^-60 times smaller
+    // starts its rays at the same relative places).
+    for (const int e : {-1000, -60, -1, 0, 7, 60, 1000}) {
+        const glm::dvec3 q{0.75, 1e-3, -0.02};
+        const glm::dvec3 n = glm::normalize(glm::dvec3{0.3, -0.5, 0.8});
+        const glm::dvec3 unit = geo::offset_ray(q, n);
+        const glm::dvec3 scaled = geo::offset_ray(std::ldexp(1.0, e) * q, n);
+        for (int k = 0; k < 3; ++k) CHECK(scaled[k] == std::ldexp(unit[k], e));
+    }
     // The top of the range: no Inf.
     const glm::dvec3 top = geo::offset_ray({1.7976931348623157e308, 0.0, 0.0}, {1.0, 0.0, 0.0});
     CHECK(std::isfinite(top.x));
