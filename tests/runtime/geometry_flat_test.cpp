@@ -236,6 +236,58 @@ TEST_CASE("triangle: aimed rays at every scale, may-meet", "[runtime][geometry]"
     }
 }
 
+// A floor whose vertices lie at 2^50 (about 1e15) and beyond, seen from a
+// few units: t's terms are the vertices' size and its value a few units, so
+// t in double cannot tell its own sign, and such a floor once drew nothing
+// (exit 0, no word). The plane x + y + z = 0 (its signs flipped at random)
+// holds the vertices exactly, so the right parameter is -(n.o) / (n.d)
+// from a small origin, good to a few ulps. Tolerance 2^-24 relative: t in
+// double is kept only where its bound is below that part of it, and the
+// double-double t errs by about 2^-100 of the vertices' size (2^-30 of t at
+// 2^70). At 2^80 double-double itself nears 2^-24, so there the hit is only
+// asked to be in its place to 1e-3. A missing or false hit is off by all of t.
+TEST_CASE("triangle: a huge floor is hit from close by, and not from behind",
+          "[runtime][geometry]") {
+    Random random(54);
+    for (const int e : {10, 30, 50, 60, 70, 80}) {
+        INFO("vertices at 2^" << e);
+        const double size = std::ldexp(1.0, e);
+        int hits = 0;
+        for (int i = 0; i < 300; ++i) {
+            const glm::dvec3 sign{random.uniform() < 0.5 ? -1.0 : 1.0,
+                                  random.uniform() < 0.5 ? -1.0 : 1.0,
+                                  random.uniform() < 0.5 ? -1.0 : 1.0};
+            const auto on_plane = [&](double a, double b) {
+                return sign * glm::dvec3(a, b, -(a + b));
+            };
+            const TriangleGeometry g{on_plane(-3.0 * size, size), on_plane(3.0 * size, size),
+                                     on_plane(0.0, -2.0 * size)};
+            const glm::dvec3 n = sign;  // (1, 1, 1) with the signs flipped
+            const glm::dvec3 origin = random.in_cube(5.0);
+            const double height = glm::dot(n, origin);
+            if (std::fabs(height) < 0.1) continue;
+            const glm::dvec3 target =
+                on_plane(random.uniform(-1.0, 1.0), random.uniform(-1.0, 1.0));
+            const glm::dvec3 d = target - origin;
+            const double expected = -height / glm::dot(n, d);
+            if (!(expected > 0.0)) continue;
+            const auto hit = intersect(g, Ray3{origin, d}, 0.0, kInf);
+            REQUIRE(hit);
+            CHECK(hit->s == Approx(expected).epsilon(e <= 70 ? 0x1p-24 : 1e-3));
+            // The point lies on the plane within its own bound (what a
+            // shadow ray's start must clear); long double keeps the check's
+            // own rounding far below it.
+            const long double off = static_cast<long double>(n.x) * hit->point.x +
+                                    static_cast<long double>(n.y) * hit->point.y +
+                                    static_cast<long double>(n.z) * hit->point.z;
+            CHECK(std::fabs(static_cast<double>(off)) <= glm::dot(glm::abs(n), hit->error));
+            CHECK_FALSE(intersect(g, Ray3{origin, -d}, 0.0, kInf));
+            ++hits;
+        }
+        CHECK(hits > 200);
+    }
+}
+
 TEST_CASE("smooth_triangle: interpolated shading normal", "[runtime][geometry]") {
     const SmoothTriangleGeometry g{{0, 0, 0}, {0, 0, 3}, {1, 0, 0},
                                    {1, 0, 1}, {0, 1, 0}, {0, 1, 1}};

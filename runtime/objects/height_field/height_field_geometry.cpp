@@ -156,8 +156,7 @@ std::optional<SurfaceHit> intersect(const HeightFieldGeometry& field, const Ray3
     const CellTriangle& t = best->triangle;
     SurfaceHit out;
     out.s = h.s;
-    out.point = h.b1 * t.p1 + h.b2 * t.p2 + h.b3 * t.p3;
-    out.error = barycentric_error(h, t.p1, t.p2, t.p3);
+    place_barycentric_hit(h, t.p1, t.p2, t.p3, ray, out);
     out.normal = t.normal;
     out.shading_normal = field.smooth ? height_field_smooth_normal(d, out.point) : t.normal;
     out.uv = {out.point.x, out.point.z};

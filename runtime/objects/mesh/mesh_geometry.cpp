@@ -62,8 +62,7 @@ std::optional<SurfaceHit> intersect(const MeshGeometry& mesh, const Ray3& ray, d
                  ? best->b1 * m.uvs[f.uv[0]] + best->b2 * m.uvs[f.uv[1]] + best->b3 * m.uvs[f.uv[2]]
                  : glm::dvec2(0.0);
     hit.part = static_cast<int>(best_face);
-    hit.point = best->b1 * p1 + best->b2 * p2 + best->b3 * p3;
-    hit.error = barycentric_error(*best, p1, p2, p3);
+    place_barycentric_hit(*best, p1, p2, p3, ray, hit);
     if (!is_finite(hit)) return std::nullopt;
     return hit;
 }

@@ -40,8 +40,7 @@ std::optional<SurfaceHit> intersect(const SmoothTriangleGeometry& triangle, cons
     }
     hit.uv = {bary->b2, bary->b3};
     hit.part = 0;
-    hit.point = bary->b1 * triangle.p1 + bary->b2 * triangle.p2 + bary->b3 * triangle.p3;
-    hit.error = barycentric_error(*bary, triangle.p1, triangle.p2, triangle.p3);
+    place_barycentric_hit(*bary, triangle.p1, triangle.p2, triangle.p3, ray, hit);
     if (!is_finite(hit)) return std::nullopt;
     return hit;
 }

@@ -2,12 +2,98 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include "runtime/geometry/box_queries.hpp"
 #include "runtime/geometry/stable_arithmetic.hpp"
 
 namespace hexant::runtime::geometry {
+
+namespace {
+
+// t in double is used when its error bound is below this part of it.
+constexpr double kRefineBelow = 0x1p24;
+
+// The bound on the error of t = sum e_i z_i / sum e_i from the sheared
+// coordinates' magnitudes, for arithmetic whose every step errs by at most
+// gamma(n) of its operands' magnitudes (the argument is in
+// intersect_barycentric, below).
+template <class Gamma>
+double parameter_error(Gamma gamma, double max_x, double max_y, double max_z, double spread_z,
+                       double sum_e, double det) {
+    const double delta_x = gamma(5) * (max_x + max_z);
+    const double delta_y = gamma(5) * (max_y + max_z);
+    const double delta_e = 2.0 * (gamma(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
+    return 2.0 * (2.0 * gamma(3) * max_z * sum_e + 3.0 * delta_e * spread_z) / std::fabs(det);
+}
+
+// gamma(n) for double-double arithmetic (stable_arithmetic.hpp): each of its
+// sums and products errs by at most about 8 u^2 of its operands' magnitudes
+// (Joldes, Muller and Popescu 2017, for the sloppy sum and the product
+// without the low parts' product), u = 2^-53; taken as 2^-100, eight times
+// that, for the margin.
+double double_double_gamma(int n) {
+    constexpr double u = 0x1p-100;
+    return n * u / (1.0 - n * u);
+}
+
+DoubleDouble dd(double x) {
+    return {x, 0.0};
+}
+
+DoubleDouble operator-(const DoubleDouble& a, const DoubleDouble& b) {
+    return a + (-b);
+}
+
+// t in the sheared frame, formed again in double-double, when t in double
+// lies within its own error bound of zero and its sign is not known. This
+// happens where the triangle is far larger than the hit's distance (a floor
+// with vertices at 1e15 seen from a few units: t's terms are 1e15 and its
+// value 5). Returns t and its error bound if t is known to be positive,
+// else nothing.
+struct RefinedParameter {
+    double t, error;
+};
+[[gnu::noinline]] std::optional<RefinedParameter> refined_parameter(
+    const glm::dvec3& p1, const glm::dvec3& p2, const glm::dvec3& p3, const glm::dvec3& origin,
+    int kx, int ky, int kz, double sx, double sy, double sz) {
+    struct Sheared {
+        DoubleDouble x, y, z;
+    };
+    // p - origin exactly (two-sum), then the shear with the same factors as
+    // in double, so that it is the same linear map.
+    const auto shear = [&](const glm::dvec3& p) {
+        const DoubleDouble a[3] = {two_sum(p.x, -origin.x), two_sum(p.y, -origin.y),
+                                   two_sum(p.z, -origin.z)};
+        return Sheared{a[kx] - dd(sx) * a[kz], a[ky] - dd(sy) * a[kz], dd(sz) * a[kz]};
+    };
+    const Sheared a = shear(p1), b = shear(p2), c = shear(p3);
+    const DoubleDouble eu = c.x * b.y - c.y * b.x;
+    const DoubleDouble ev = a.x * c.y - a.y * c.x;
+    const DoubleDouble ew = b.x * a.y - b.y * a.x;
+    const double det = (eu + ev + ew).value();
+    if (det == 0.0 || !std::isfinite(det)) return std::nullopt;
+    const double t = (eu * a.z + ev * b.z + ew * c.z).value() / det;
+    using std::fabs;
+    const double az = a.z.value(), bz = b.z.value(), cz = c.z.value();
+    const double max_z = std::max({fabs(az), fabs(bz), fabs(cz)});
+    const double spread_z = std::max({az, bz, cz}) - std::min({az, bz, cz});
+    const double max_x = std::max({fabs(a.x.value()), fabs(b.x.value()), fabs(c.x.value())});
+    const double max_y = std::max({fabs(a.y.value()), fabs(b.y.value()), fabs(c.y.value())});
+    const double sum_e = fabs(eu.value()) + fabs(ev.value()) + fabs(ew.value());
+    // The bound in double-double's gamma, widened by a few ulps for the
+    // three values read back into double and the division (relative to t,
+    // as they round t itself), and for the magnitudes' own rounding.
+    const double delta_t =
+        (1.0 + rounding_gamma(8)) *
+        parameter_error(double_double_gamma, max_x, max_y, max_z, spread_z, sum_e, det);
+    const double error = delta_t + rounding_gamma(4) * std::fabs(t);
+    if (!(t > error)) return std::nullopt;
+    return RefinedParameter{t, error};
+}
+
+}  // namespace
 
 std::optional<BarycentricHit> intersect_barycentric(const glm::dvec3& p1, const glm::dvec3& p2,
                                                     const glm::dvec3& p3, const Ray3& ray,
@@ -58,25 +144,39 @@ std::optional<BarycentricHit> intersect_barycentric(const glm::dvec3& p1, const 
     // weights' errors by the largest z instead of the spread, which rejects
     // a small triangle's honest hit from far away; the spread does not.
     // Twice the sum covers second-order terms.
+    // A hit whose sign is not known in double but may be positive is
+    // decided again in double-double (refined_parameter), and so is one
+    // whose t is known only roughly.
+    double t_known = t;
+    double t_error = std::numeric_limits<double>::infinity();
     if (s_min >= 0.0) {
         using std::fabs;
         const double max_z = std::max({fabs(az), fabs(bz), fabs(cz)});
         const double spread_z = std::max({az, bz, cz}) - std::min({az, bz, cz});
         const double max_x = std::max({fabs(ax), fabs(bx), fabs(cx)});
         const double max_y = std::max({fabs(ay), fabs(by), fabs(cy)});
-        const double delta_x = rounding_gamma(5) * (max_x + max_z);
-        const double delta_y = rounding_gamma(5) * (max_y + max_z);
-        const double delta_e =
-            2.0 * (rounding_gamma(2) * max_x * max_y + delta_y * max_x + delta_x * max_y);
         const double sum_e = fabs(eu) + fabs(ev) + fabs(ew);
         const double delta_t =
-            2.0 * (2.0 * rounding_gamma(3) * max_z * sum_e + 3.0 * delta_e * spread_z) / fabs(det);
-        if (!(t > delta_t)) return std::nullopt;
+            parameter_error(rounding_gamma, max_x, max_y, max_z, spread_z, sum_e, det);
+        // Refined too where t is positive but known to worse than 2^-24 of
+        // itself (a floor at 1e12 seen from a few units): double-double puts
+        // the hit where it is, not a part of a unit off.
+        t_error = delta_t;
+        if (!(t > kRefineBelow * delta_t)) {
+            if (!(t > -delta_t) || !(std::ldexp(t + delta_t, -exponent) > s_min) ||
+                !(std::ldexp(t - delta_t, -exponent) < s_max)) {
+                return std::nullopt;
+            }
+            const auto refined = refined_parameter(p1, p2, p3, ray.origin, kx, ky, kz, sx, sy, sz);
+            if (!refined) return std::nullopt;
+            t_known = refined->t;
+            t_error = refined->error;
+        }
     }
-    const double s = std::ldexp(t, -exponent);
+    const double s = std::ldexp(t_known, -exponent);
     if (!(s > s_min && s < s_max)) return std::nullopt;
     const double inv = 1.0 / det;
-    return BarycentricHit{s, eu * inv, ev * inv, ew * inv};
+    return BarycentricHit{s, eu * inv, ev * inv, ew * inv, std::ldexp(t_error, -exponent)};
 }
 
 std::optional<SurfaceHit> intersect(const TriangleGeometry& triangle, const Ray3& ray, double s_min,
@@ -93,10 +193,28 @@ std::optional<SurfaceHit> intersect(const TriangleGeometry& triangle, const Ray3
     hit.shading_normal = hit.normal;
     hit.uv = {bary->b2, bary->b3};
     hit.part = 0;
-    hit.point = bary->b1 * triangle.p1 + bary->b2 * triangle.p2 + bary->b3 * triangle.p3;
-    hit.error = barycentric_error(*bary, triangle.p1, triangle.p2, triangle.p3);
+    place_barycentric_hit(*bary, triangle.p1, triangle.p2, triangle.p3, ray, hit);
     if (!is_finite(hit)) return std::nullopt;
     return hit;
+}
+
+void place_barycentric_hit(const BarycentricHit& hit, const glm::dvec3& p1, const glm::dvec3& p2,
+                           const glm::dvec3& p3, const Ray3& ray, SurfaceHit& out) {
+    out.point = hit.b1 * p1 + hit.b2 * p2 + hit.b3 * p3;
+    out.error = barycentric_error(hit, p1, p2, p3);
+    if (!std::isfinite(hit.s_error)) return;
+    // origin + s direction in one rounding (fma) of the sum's magnitude,
+    // and s's own error carried along the direction.
+    const glm::dvec3 along{std::fma(hit.s, ray.direction.x, ray.origin.x),
+                           std::fma(hit.s, ray.direction.y, ray.origin.y),
+                           std::fma(hit.s, ray.direction.z, ray.origin.z)};
+    const glm::dvec3 along_error =
+        glm::abs(ray.direction) * (hit.s_error * (1.0 + rounding_gamma(2))) +
+        rounding_gamma(2) * (glm::abs(ray.origin) + glm::abs(hit.s * ray.direction));
+    if (is_finite(along) && is_finite(along_error) && max_abs(along_error) < max_abs(out.error)) {
+        out.point = along;
+        out.error = along_error;
+    }
 }
 
 bool inside(const TriangleGeometry&, glm::dvec3) {

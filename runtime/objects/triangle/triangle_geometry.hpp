@@ -14,6 +14,7 @@
 // ulps of the vertices, however far the origin).
 #pragma once
 
+#include <limits>
 #include <optional>
 
 #include <glm/glm.hpp>
@@ -37,6 +38,9 @@ bool surface_may_meet(const TriangleGeometry& triangle, const Box3& box);
 struct BarycentricHit {
     double s;
     double b1, b2, b3;
+    // A bound on s's error where it is known (s_min >= 0, where the sign
+    // of s is checked), else infinity.
+    double s_error = std::numeric_limits<double>::infinity();
 };
 std::optional<BarycentricHit> intersect_barycentric(const glm::dvec3& p1, const glm::dvec3& p2,
                                                     const glm::dvec3& p3, const Ray3& ray,
@@ -50,6 +54,13 @@ inline glm::dvec3 barycentric_error(const BarycentricHit& hit, const glm::dvec3&
     return rounding_gamma(7) *
            (glm::abs(hit.b1 * p1) + glm::abs(hit.b2 * p2) + glm::abs(hit.b3 * p3));
 }
+// Sets out.point and out.error: the point from the weights
+// (barycentric_error's bound), or, where s's error is known and the ray
+// gives the nearer point, origin + s direction, as POV-Ray forms it (a floor
+// whose vertices are at 1e15 seen from a few units: the weights times the
+// vertices round by a part of a unit, the ray's point by ulps of the origin).
+void place_barycentric_hit(const BarycentricHit& hit, const glm::dvec3& p1, const glm::dvec3& p2,
+                           const glm::dvec3& p3, const Ray3& ray, SurfaceHit& out);
 // Separating-axis test (Akenine-Moller 2001) on the box widened by rounding.
 bool triangle_may_meet(const glm::dvec3& p1, const glm::dvec3& p2, const glm::dvec3& p3,
                        const Box3& box);
