@@ -400,3 +400,31 @@ TEST_CASE("a scene scaled by a power of two renders the same pixels", "[robust]"
         }
     }
 }
+
+// A floor of one triangle whose vertices lie Half from the origin, a few
+// units below the camera: at 1e15 it once drew nothing (the sign of a hit
+// a few units away was lost in terms of 1e15), and at 1e16 its shading
+// points were off by units, so shadow rays left from far off the floor.
+// Beyond 1e12 the floor's part in view does not change, so every half
+// must give the 1e12 image; tolerance 0.05 per channel, as above, with no
+// pixel allowed over it (the rays and the shapes are the same to
+// rounding; a missing floor or a false shadow differs by 0.5).
+TEST_CASE("a floor of one triangle at 1e15 and beyond renders as at 1e12", "[robust]") {
+    const auto scene = [](double half) {
+        const std::string h = number(half);
+        return "camera { location <0, 2, -5> look_at 0 }\n"
+               "light_source { <3, 10, -5>, rgb 1 }\n"
+               "triangle { <-" +
+               h + ", -2, " + h + ">, <" + h + ", -2, " + h + ">, <0, -2, -" + h +
+               "> pigment { rgb <0, 1, 0> } }\n"
+               "sphere { 0, 1 pigment { rgb <1, 0, 0> } }\n"
+               "background { rgb <1, 0, 1> }\n";
+    };
+    const tr::Image reference = render(scene(1e12), tr::Mode::Spacetime);
+    for (const double half : {1e15, 1e16, 1e18}) {
+        for (const tr::Mode mode : {tr::Mode::Spacetime, tr::Mode::Brute}) {
+            INFO("Half = " << half << ", mode " << int(mode));
+            CHECK(differing(reference, render(scene(half), mode), 0.05) == 0);
+        }
+    }
+}
