@@ -45,7 +45,7 @@ struct ObjectTest {
     // Does object `index` cast a full shadow on the segment (one that may
     // let light through is the shader's to filter)?
     bool occludes(std::uint32_t index, const runtime::IntelligentObject& object) const {
-        if (!object.casts_full_shadow()) return false;
+        if (!object.casts_full_shadow() || &object == state.leaving) return false;
         if (state.mailbox.find(index) != Mailbox::kUntested) {
             ++state.counters.mailbox_hits;
             return false;  // tested on this ray already: it did not occlude

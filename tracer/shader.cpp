@@ -164,9 +164,12 @@ inline glm::dvec3 Shader::shadow_filter(std::size_t index, const Hit& h,
     // from that side, so that the surface does not shadow itself.)
     // (So too for a light that shows through from behind: `behind`.)
     glm::dvec3 start = h.start;
-    if ((h.double_lit || behind) && glm::dot(h.geometric, direction) < 0.0)
+    bool from_back = false;
+    if ((h.double_lit || behind) && glm::dot(h.geometric, direction) < 0.0) {
         start = h.double_lit ? h.back_start
                              : runtime::geometry::offset_ray(h.point, h.p.error, -h.geometric);
+        from_back = true;
+    }
     // (Radiosity's gathering rays light by an area light's centre, as
     // POV-Ray's radiosity quality flags have it.)
     if (light.is_area() && state.radiosity.depth == 0) {
@@ -193,9 +196,20 @@ inline glm::dvec3 Shader::shadow_filter(std::size_t index, const Hit& h,
     if (!projected(light, ray, reach)) return glm::dvec3(0.0);
     if (light.shadowless()) return glm::dvec3(1.0);
     ++state.counters.shadow_rays;
+    // A flat surface cannot shadow its own point from a light on the side
+    // the ray starts: the walk passes it by. Only for a ray at one instant
+    // (a moving plane may meet a ray that travels in time), and not within
+    // 2^-20 of grazing, far above the normal's rounding.
+    const double away = glm::dot(from_back ? -h.geometric : h.geometric, direction);
+    state.leaving =
+        ray.direction.w == 0.0 && away > 0x1p-20 * glm::length(direction) && h.object->flat()
+            ? h.object
+            : nullptr;
     // (Objects that may let light through do not block: `blocked` passes
     // them by, and they filter what it lets pass.)
-    if (blocked(ray, reach, state)) return glm::dvec3(0.0);
+    const bool dark = blocked(ray, reach, state);
+    state.leaving = nullptr;
+    if (dark) return glm::dvec3(0.0);
     if (!filtering_) return glm::dvec3(1.0);
     const bool photon_rule = photon_map_ != nullptr && h.object->flags().photon_collect;
     return filtered(ray, reach, h.depth, h.around, state,

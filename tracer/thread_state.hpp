@@ -69,6 +69,10 @@ struct ThreadState {
     // The kind of ray being walked (runtime::RaySight): objects hidden from
     // it are passed by (tracer/object_test.hpp).
     std::uint8_t sight = runtime::kSightAll;
+    // A flat object the shadow ray being walked leaves, heading away from
+    // it: the ray cannot meet it, and ObjectTest::occludes passes it by
+    // (runtime::IntelligentObject::flat). Null for every other ray.
+    const runtime::IntelligentObject* leaving = nullptr;
     // Of the rays on the path being traced, how many passed straight
     // through a surface (the same ior on both sides): POV-Ray traces those
     // as the ray continued, no new trace level (TraceRay's continuedRay),

@@ -208,6 +208,11 @@ class IntelligentObject {
     virtual bool moves() const = 0;
     // Is its map to world space non-affine (twist, taper, bend)?
     virtual bool deformed() const = 0;
+    // Does its surface lie in one plane at every instant (a plane, disc,
+    // triangle or polygon under an affine placement)? Then a ray at one
+    // instant that starts off that plane and heads away from it cannot
+    // meet it: a shadow ray leaving it need not test it (tracer/shader.cpp).
+    virtual bool flat() const { return false; }
     // Does it cast shadows (no no_shadow)?
     virtual bool casts_shadow() const { return true; }
     // May light pass it (a texture that filters or transmits somewhere:

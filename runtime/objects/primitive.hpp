@@ -39,6 +39,15 @@ struct PrimitiveOptions {
     bool no_shadow = false;  // casts no shadow
 };
 
+// A kind whose surface lies in one plane at every instant (Model::kFlat).
+template <class Model>
+constexpr bool is_flat_model() {
+    if constexpr (requires { Model::kFlat; })
+        return Model::kFlat;
+    else
+        return false;
+}
+
 template <class Model>
 constexpr bool is_unbounded_model() {
     if constexpr (requires { Model::kUnbounded; })
@@ -110,6 +119,8 @@ class Primitive final : public IntelligentObject {
     bool solid_bounded() const override { return !kUnbounded && !options_.inverse; }
     bool moves() const override { return moves_; }
     bool deformed() const override { return !motion_.is_affine(); }
+    // (An affine map keeps a plane a plane; a deformation bends it.)
+    bool flat() const override { return is_flat_model<Model>() && motion_.is_affine(); }
     bool casts_shadow() const override { return !options_.no_shadow; }
     bool filters_light() const override { return filters_light_; }
     bool casts_full_shadow() const override { return !options_.no_shadow && !filters_light_; }

@@ -29,6 +29,7 @@ class DiscModel {
   public:
     using Geometry = geometry::DiscGeometry;
     static constexpr bool kSolid = false;
+    static constexpr bool kFlat = true;
 
     explicit DiscModel(const Disc& d)
         : center_(d.center), normal_(d.normal), radius_(d.radius), hole_(d.hole_radius) {}

@@ -12,6 +12,7 @@ class PlaneModel {
   public:
     using Geometry = geometry::PlaneGeometry;
     static constexpr bool kSolid = true;
+    static constexpr bool kFlat = true;
     static constexpr bool kUnbounded = true;
 
     explicit PlaneModel(const Plane& p) : normal_(p.normal), distance_(p.distance) {}

@@ -13,6 +13,7 @@ class PolygonModel {
   public:
     using Geometry = geometry::PolygonGeometry;
     static constexpr bool kSolid = false;
+    static constexpr bool kFlat = true;
 
     explicit PolygonModel(const Polygon& p) {
         points_.reserve(p.points.size());

@@ -38,6 +38,7 @@ class TriangleModel {
   public:
     using Geometry = geometry::TriangleGeometry;
     static constexpr bool kSolid = false;
+    static constexpr bool kFlat = true;
 
     explicit TriangleModel(const Triangle& tri)
         : points_{{CompiledVector3(tri.points[0]), CompiledVector3(tri.points[1]),
@@ -61,6 +62,7 @@ class SmoothTriangleModel {
   public:
     using Geometry = geometry::SmoothTriangleGeometry;
     static constexpr bool kSolid = false;
+    static constexpr bool kFlat = true;
 
     explicit SmoothTriangleModel(const SmoothTriangle& tri)
         : points_{{CompiledVector3(tri.points[0]), CompiledVector3(tri.points[1]),
