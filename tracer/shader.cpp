@@ -197,14 +197,16 @@ inline glm::dvec3 Shader::shadow_filter(std::size_t index, const Hit& h,
     if (light.shadowless()) return glm::dvec3(1.0);
     ++state.counters.shadow_rays;
     // A flat surface cannot shadow its own point from a light on the side
-    // the ray starts: the walk passes it by. Only for a ray at one instant
-    // (a moving plane may meet a ray that travels in time), and not within
-    // 2^-20 of grazing, far above the normal's rounding.
+    // the ray starts, nor a convex solid from a light outside it (the ray
+    // starts outside: hit from outside, h.back false, and not sent from the
+    // back): the walk passes it by. Only for a ray at one instant (a moving
+    // surface may meet a ray that travels in time), and not within 2^-20
+    // of grazing, far above the normal's rounding.
     const double away = glm::dot(from_back ? -h.geometric : h.geometric, direction);
-    state.leaving =
-        ray.direction.w == 0.0 && away > 0x1p-20 * glm::length(direction) && h.object->flat()
-            ? h.object
-            : nullptr;
+    state.leaving = ray.direction.w == 0.0 && away > 0x1p-20 * glm::length(direction) &&
+                            (h.object->flat() || (!h.back && !from_back && h.object->convex()))
+                        ? h.object
+                        : nullptr;
     // (Objects that may let light through do not block: `blocked` passes
     // them by, and they filter what it lets pass.)
     const bool dark = blocked(ray, reach, state);

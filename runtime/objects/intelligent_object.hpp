@@ -213,6 +213,11 @@ class IntelligentObject {
     // instant that starts off that plane and heads away from it cannot
     // meet it: a shadow ray leaving it need not test it (tracer/shader.cpp).
     virtual bool flat() const { return false; }
+    // Is its solid convex at every instant, with its surface's normals
+    // facing out (a sphere or a box under an affine placement, not
+    // `inverse`)? Then a ray at one instant that starts outside and heads
+    // away from the surface's tangent plane cannot meet it either.
+    virtual bool convex() const { return false; }
     // Does it cast shadows (no no_shadow)?
     virtual bool casts_shadow() const { return true; }
     // May light pass it (a texture that filters or transmits somewhere:

@@ -48,6 +48,15 @@ constexpr bool is_flat_model() {
         return false;
 }
 
+// A kind whose solid is convex whatever its parameters (Model::kConvex).
+template <class Model>
+constexpr bool is_convex_model() {
+    if constexpr (requires { Model::kConvex; })
+        return Model::kConvex;
+    else
+        return false;
+}
+
 template <class Model>
 constexpr bool is_unbounded_model() {
     if constexpr (requires { Model::kUnbounded; })
@@ -121,6 +130,10 @@ class Primitive final : public IntelligentObject {
     bool deformed() const override { return !motion_.is_affine(); }
     // (An affine map keeps a plane a plane; a deformation bends it.)
     bool flat() const override { return is_flat_model<Model>() && motion_.is_affine(); }
+    // (An affine map keeps a convex solid convex; `inverse` turns it out.)
+    bool convex() const override {
+        return is_convex_model<Model>() && motion_.is_affine() && !options_.inverse;
+    }
     bool casts_shadow() const override { return !options_.no_shadow; }
     bool filters_light() const override { return filters_light_; }
     bool casts_full_shadow() const override { return !options_.no_shadow && !filters_light_; }

@@ -164,34 +164,40 @@ TEST_CASE("branches that do not split time cost nothing", "[tracer][pay]") {
     for (const auto& object : split.objects) CHECK_FALSE(object->lifetime.is_always());
 }
 
-// A shadow ray leaving a flat surface toward a light on its own side cannot
-// meet that surface: it is not tested (runtime::IntelligentObject::flat).
-// With the floor the only object and every camera ray on it, each camera
-// ray makes the one test of the floor and its shadow ray none, for a plane
-// (kept outside the hierarchy), a polygon, a triangle and a disc (inside
-// it), in every mode. Before, each shadow ray tested the floor again:
-// twice the tests. A sphere is not flat, so it is still tested.
-TEST_CASE("a shadow ray does not test the flat surface it leaves", "[tracer][pay]") {
+// A shadow ray leaving a flat surface toward a light on its own side, or a
+// convex solid toward a light outside it, cannot meet that surface again:
+// it is not tested (runtime::IntelligentObject::flat, convex). With the
+// ground the only object and every camera ray on it, each camera ray makes
+// the one test of the ground and its shadow ray none: a plane (kept
+// outside the hierarchy), a polygon, a triangle, a disc, a turning plane,
+// a sphere and a box (inside it), in every mode. Before, each shadow ray
+// tested the ground again: twice the tests. A torus is neither, so its
+// shadow rays still test it.
+TEST_CASE("a shadow ray does not test the flat or convex surface it leaves", "[tracer][pay]") {
     const std::string camera =
         "camera { location <0, 6, -0.5> look_at 0 angle 30 }\n"
         "light_source { <-3, 9, -2>, rgb 1 }\n";
-    for (const char* floor :
+    for (const char* ground :
          {"plane { y, 0 pigment { rgb 1 } }",
           "polygon { 5, <-20, 0, -20>, <20, 0, -20>, <20, 0, 20>, <-20, 0, 20>, <-20, 0, -20> "
           "pigment { rgb 1 } }",
           "triangle { <-40, 0, -40>, <40, 0, -40>, <0, 0, 60> pigment { rgb 1 } }",
           "disc { 0, y, 40 pigment { rgb 1 } }",
-          "plane { y, 0 pigment { rgb 1 } rotate <0, 0, 10 * clock> }"}) {
-        const auto scene = parse(camera + floor + "\n");
+          "plane { y, 0 pigment { rgb 1 } rotate <0, 0, 10 * clock> }",
+          "sphere { <0, -100, 0>, 100 pigment { rgb 1 } }",
+          "box { <-20, -5, -20>, <20, 0, 20> pigment { rgb 1 } rotate <0, 30 * clock, 0> }"}) {
+        const auto scene = parse(camera + ground + "\n");
         for (const tr::Mode mode : {tr::Mode::Spacetime, tr::Mode::Frames, tr::Mode::Brute}) {
-            INFO(floor << ", mode " << int(mode));
+            INFO(ground << ", mode " << int(mode));
             const tr::Counters c = counters_of(scene, mode);
             REQUIRE(c.shadow_rays == c.primary_rays);
             CHECK(c.object_tests == c.primary_rays);
         }
     }
-    // A sphere as the ground: its shadow rays test it.
-    const auto round = parse(camera + "sphere { <0, -100, 0>, 100 pigment { rgb 1 } }\n");
+    // A torus as the ground (the top of its tube under the camera): its
+    // shadow rays test it.
+    const auto round =
+        parse(camera + "torus { 100, 50 translate <100, -50, 0> pigment { rgb 1 } }\n");
     const tr::Counters c = counters_of(round, tr::Mode::Spacetime);
     REQUIRE(c.shadow_rays == c.primary_rays);
     CHECK(c.object_tests == c.primary_rays + c.shadow_rays);

@@ -13,6 +13,7 @@ class BoxModel {
   public:
     using Geometry = geometry::BoxGeometry;
     static constexpr bool kSolid = true;
+    static constexpr bool kConvex = true;
     static constexpr bool kUvMapping = true;  // POV-Ray 3.7 maps it (primitive.hpp)
 
     explicit BoxModel(const Box& b) : corner1_(b.corner1), corner2_(b.corner2) {}

@@ -17,6 +17,7 @@ class SphereModel {
   public:
     using Geometry = geometry::SphereGeometry;
     static constexpr bool kSolid = true;
+    static constexpr bool kConvex = true;
     static constexpr bool kUvMapping = true;  // POV-Ray 3.7 maps it (primitive.hpp)
 
     explicit SphereModel(const Sphere& s) : center_(s.center), radius_(s.radius) {}
