@@ -288,6 +288,38 @@ TEST_CASE("triangle: a huge floor is hit from close by, and not from behind",
     }
 }
 
+// A huge triangle one of whose edges passes a few units from the rays, on
+// the plane y = 3 (exact at any size): a ray meets it exactly when it
+// crosses y = 3 at x > 0.25. In double the sheared vertices round by units
+// at 2^60, which once drew such a triangle far past that edge where its
+// parameter was formed in double-double (a break-it run, 2026-12-08).
+// So no ray may hit beyond the edge, at any size. A ray within the
+// vertices' rounding in double of the edge (about 2^-50 of their size) may
+// still miss inside it: the watertight test in double decides that first,
+// so both ways are asked only up to 2^30, rays within 1e-3 left out.
+TEST_CASE("triangle: a huge triangle's edge stays where it is", "[runtime][geometry]") {
+    Random random(55);
+    for (const int e : {10, 30, 50, 60, 70, 80}) {
+        INFO("vertices at 2^" << e);
+        const double size = std::ldexp(1.0, e);
+        const TriangleGeometry g{{0.25, 3.0, -size}, {0.25, 3.0, size}, {size, 3.0, 0.0}};
+        int hits = 0, misses = 0;
+        for (int i = 0; i < 400; ++i) {
+            const glm::dvec3 origin = random.in_cube(5.0);
+            if (std::fabs(origin.y - 3.0) < 0.1) continue;
+            const glm::dvec3 target{random.uniform(-1.0, 1.0), 3.0, random.uniform(-1.0, 1.0)};
+            if (std::fabs(target.x - 0.25) < 1e-3) continue;
+            const auto hit = intersect(g, Ray3{origin, target - origin}, 0.0, kInf);
+            if (e <= 30) CHECK(hit.has_value() == (target.x > 0.25));
+            if (hit) CHECK(target.x > 0.25);
+            if (hit) CHECK(hit->s == Approx(1.0).epsilon(0x1p-24));
+            (hit ? hits : misses) += 1;
+        }
+        CHECK(hits > 100);
+        CHECK(misses > 100);
+    }
+}
+
 TEST_CASE("smooth_triangle: interpolated shading normal", "[runtime][geometry]") {
     const SmoothTriangleGeometry g{{0, 0, 0}, {0, 0, 3}, {1, 0, 0},
                                    {1, 0, 1}, {0, 1, 0}, {0, 1, 1}};

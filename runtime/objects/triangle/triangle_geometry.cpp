@@ -50,8 +50,8 @@ DoubleDouble operator-(const DoubleDouble& a, const DoubleDouble& b) {
 // lies within its own error bound of zero and its sign is not known. This
 // happens where the triangle is far larger than the hit's distance (a floor
 // with vertices at 1e15 seen from a few units: t's terms are 1e15 and its
-// value 5). Returns t and its error bound if t is known to be positive,
-// else nothing.
+// value 5). Returns t and its error bound if t is known to be positive and
+// the ray crosses the triangle by these coordinates, else nothing.
 struct RefinedParameter {
     double t, error;
 };
@@ -72,6 +72,15 @@ struct RefinedParameter {
     const DoubleDouble eu = c.x * b.y - c.y * b.x;
     const DoubleDouble ev = a.x * c.y - a.y * c.x;
     const DoubleDouble ew = b.x * a.y - b.y * a.x;
+    // The ray's crossing inside the triangle, decided again from these
+    // coordinates: in double their rounding (ulps of the vertices) moves
+    // the edges by units at 1e18, which drew such a triangle far beyond its
+    // edges. Each edge function depends only on its edge's two vertices and
+    // is formed with the same operations by both triangles sharing it (or
+    // their negation, which may differ in the low part's last bits: the
+    // sign differs only where the value is within those of zero).
+    const double u = eu.value(), v = ev.value(), w = ew.value();
+    if ((u < 0.0 || v < 0.0 || w < 0.0) && (u > 0.0 || v > 0.0 || w > 0.0)) return std::nullopt;
     const double det = (eu + ev + ew).value();
     if (det == 0.0 || !std::isfinite(det)) return std::nullopt;
     const double t = (eu * a.z + ev * b.z + ew * c.z).value() / det;
