@@ -423,7 +423,7 @@ bool TimeSweep::boxes_over_dyadic(int level, std::uint64_t first, std::size_t co
                                   glm::dvec3* edge_hi) const {
     if (!empty() && layout_ != Layout::Whole && level >= depth_) {
         // Pieces inside cached ones: each cached piece decoded once (a
-        // leaf's eight bins mostly lie in one).
+        // leaf's bins mostly lie in one).
         const int finer = level - depth_;
         std::size_t decoded = piece_count();
         MovingBox m;
@@ -467,9 +467,8 @@ bool TimeSweep::boxes_over_dyadic(int level, std::uint64_t first, std::size_t co
     Box4 start = object.placed_box_at(dyadic_time(time_, level, first));
     // Knots at every other cut where the chord over two pieces (four
     // times one piece's error) stays within the growth the sweep allows
-    // for the object's size: five placements for a leaf's eight bins
-    // instead of nine (issue 43: a placement was most of a leaf's work;
-    // the swarm's chord over two bins errs by 0.012 at orbit 10).
+    // for the object's size: three placements for a leaf's four bins
+    // instead of five (issue 43: a placement was most of a leaf's work).
     std::size_t stride = 1;
     if (count % 2 == 0 && !no_chord_end(start)) {
         double wide[3];
