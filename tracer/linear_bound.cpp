@@ -56,6 +56,23 @@ std::pair<double, double> line_below(const Point* p, int n) {
     return {a0, a1};
 }
 
+// line_below over the two points (0, v0) and (1, v1), step for step
+// (the same rounding, so the same line), without the hull.
+std::pair<double, double> line_through(double v0, double v1) {
+    double slope = v1 - v0;
+    if (!std::isfinite(slope)) slope = 0.0;
+    double a0 = v0 - std::max(0.0, (v0 + slope) - v1);
+    double a1 = a0 + slope;
+    for (const auto& [u, v] : {std::pair{0.0, v0}, std::pair{1.0, v1}}) {
+        const double at = a0 + (a1 - a0) * u;
+        if (at > v) {
+            a0 -= at - v;
+            a1 -= at - v;
+        }
+    }
+    return {a0, a1};
+}
+
 double area_of_extents(double x, double y, double z) {
     return 2.0 * (x * y + y * z + z * x);
 }
@@ -180,9 +197,40 @@ double LinearExtent::mean_area() const {
     return box.mean_area();
 }
 
+LinearBox fit_linear(const BinBox& bin, const BinBox& first, const BinBox& last, bool lined) {
+    // The general fit below for n = 1: two points, a bin's start and end.
+    LinearBox box;
+    if (bin.is_empty()) return box;
+    box.empty = false;
+    for (int k = 0; k < 3; ++k)
+        for (const bool upper : {false, true}) {
+            const auto side = [&](const BinBox& b) {
+                return upper ? -double(b.hi[k]) : double(b.lo[k]);
+            };
+            const double held = side(bin);
+            double start = held, end = held;
+            if (lined) {
+                const double a = side(first), z = side(last);
+                if (0.5 * (a + z) >= held) start = a, end = z;
+            }
+            std::pair<double, double> line{-std::numeric_limits<double>::infinity(),
+                                           -std::numeric_limits<double>::infinity()};
+            if (std::isfinite(start) && std::isfinite(end)) line = line_through(start, end);
+            if (upper) {
+                box.hi0[k] = -line.first;
+                box.hi1[k] = -line.second;
+            } else {
+                box.lo0[k] = line.first;
+                box.lo1[k] = line.second;
+            }
+        }
+    return box;
+}
+
 LinearBox fit_linear(const TimeBins& bins) {
     LinearBox box;
     const int n = bins.count;
+    if (n == 1) return fit_linear(bins.bin[0], bins.edge[0], bins.edge[1], bins.lines());
     if (n <= 0 || bins.is_empty()) return box;
     box.empty = false;
     const bool lines = bins.lines();

@@ -18,7 +18,10 @@
 
 namespace hexant::tracer {
 
-inline constexpr int kMaxBins = 8;
+// The most bins a TimeBins holds: the builder's (hierarchy_builder.hpp's
+// kFitBins). Every child under construction carries its bins, so their
+// size is the build's memory traffic: 224 bytes at four, 416 at eight.
+inline constexpr int kMaxBins = 4;
 
 // One bin's box: the space part of a Box4 in single precision, rounded
 // outward (float_down, float_up), so it holds whatever the doubles held.
@@ -139,6 +142,11 @@ struct LinearBox {
 // box over its piece of time, or where the bins are lined, below its line
 // when that is the nearer on average.
 LinearBox fit_linear(const TimeBins& bins);
+// The same over one bin, its lines from `first` to `last` where `lined`
+// (both then non-empty): what fit_linear gives a TimeBins of that one
+// bin, without building it (a piece node fits each of its children's
+// pieces so, four a child).
+LinearBox fit_linear(const BinBox& bin, const BinBox& first, const BinBox& last, bool lined);
 
 // Surface area of a box's space part (0 for an empty box).
 double surface_area(const runtime::Box4& box);

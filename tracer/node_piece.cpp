@@ -60,13 +60,17 @@ bool fit_pieces(const TimeBins& bins, Knots& out) {
         for (int k = 0; k < 3; ++k) out.lo[j][k] = kInf, out.hi[j][k] = -kInf;
     const int m = bins.count / kPieces;
     const bool lines = bins.lines();
-    for (int p = 0; p < kPieces; ++p) {
+    const auto fit_piece = [&](int p) {
+        if (m == 1) return fit_linear(bins.bin[p], bins.edge[p], bins.edge[p + 1], lines);
         TimeBins part = TimeBins::empty(m);
         part.lined = lines;
         for (int b = 0; b < m; ++b) part.bin[b] = bins.bin[p * m + b];
         if (lines)
             for (int e = 0; e <= m; ++e) part.edge[e] = bins.edge[p * m + e];
-        const LinearBox fit = fit_linear(part);
+        return fit_linear(part);
+    };
+    for (int p = 0; p < kPieces; ++p) {
+        const LinearBox fit = fit_piece(p);
         if (fit.empty) continue;
         for (int k = 0; k < 3; ++k) {
             out.lo[p][k] = std::min(out.lo[p][k], fit.lo0[k]);

@@ -17,6 +17,9 @@ using hexant::tracer::LinearBox;
 using hexant::tracer::PackedBins;
 using hexant::tracer::TimeBins;
 
+// As many bins as the builder makes at most.
+constexpr int kBins = hexant::tracer::kMaxBins;
+
 namespace {
 
 hexant::runtime::Box4 everywhere() {
@@ -41,8 +44,8 @@ TEST_CASE("packed bins hold their originals, a step of the hull wider at most", 
         for (const double offset : {0.0, -7e3, 1e7}) {
             std::uniform_real_distribution<double> u(0.0, 1.0);
             for (int trial = 0; trial < 200; ++trial) {
-                TimeBins bins = TimeBins::empty(8);
-                for (int b = 0; b < 8; ++b) {
+                TimeBins bins = TimeBins::empty(kBins);
+                for (int b = 0; b < kBins; ++b) {
                     if (trial % 5 == 0 && b % 3 == 1) continue;  // some bins hold nothing
                     for (int a = 0; a < 3; ++a) {
                         const double x = offset + scale * u(random), y = offset + scale * u(random);
@@ -52,8 +55,8 @@ TEST_CASE("packed bins hold their originals, a step of the hull wider at most", 
                 }
                 const BinBox hull = bins.hull();
                 const TimeBins back = PackedBins::pack(bins, hull).unpack(hull, everywhere());
-                REQUIRE(back.count == 8);
-                for (int b = 0; b < 8; ++b) {
+                REQUIRE(back.count == kBins);
+                for (int b = 0; b < kBins; ++b) {
                     CHECK(back.bin[b].is_empty() == bins.bin[b].is_empty());
                     if (bins.bin[b].is_empty()) continue;
                     REQUIRE(holds(back.bin[b], bins.bin[b]));
@@ -98,15 +101,15 @@ namespace {
 // size, each bin's box the hull of its edges (as the sweeps make them).
 TimeBins random_lined(std::mt19937& random, double scale, double offset) {
     std::uniform_real_distribution<double> u(-1.0, 1.0);
-    TimeBins bins = TimeBins::empty(8);
+    TimeBins bins = TimeBins::empty(kBins);
     glm::dvec3 at(offset), velocity(u(random), u(random), u(random));
-    for (int j = 0; j <= 8; ++j) {
+    for (int j = 0; j <= kBins; ++j) {
         velocity += 0.5 * glm::dvec3(u(random), u(random), u(random));
         at += scale * 0.1 * velocity;
         const double size = scale * (0.01 + 0.05 * (u(random) + 1.0));
         bins.edge[j] = BinBox::of(at - size, at + size);
     }
-    for (int b = 0; b < 8; ++b) {
+    for (int b = 0; b < kBins; ++b) {
         bins.bin[b] = bins.edge[b];
         bins.bin[b].extend(bins.edge[b + 1]);
     }
@@ -138,8 +141,8 @@ TEST_CASE("lined bins pack their edges, and unpack lines and boxes that hold the
             const BinBox hull = bins.frame();
             const TimeBins back = PackedBins::pack(bins, hull).unpack(hull, everywhere());
             REQUIRE(back.lines());
-            for (int j = 0; j <= 8; ++j) CHECK(holds(back.edge[j], bins.edge[j]));
-            for (int b = 0; b < 8; ++b) {
+            for (int j = 0; j <= kBins; ++j) CHECK(holds(back.edge[j], bins.edge[j]));
+            for (int b = 0; b < kBins; ++b) {
                 CHECK(back.bin[b].is_empty() == bins.bin[b].is_empty());
                 if (!bins.bin[b].is_empty()) CHECK(holds(back.bin[b], bins.bin[b]));
             }
@@ -162,7 +165,7 @@ TEST_CASE("clipped lines hold every part of the original lines inside the region
             region.hi[a] = std::max(x, y);
         }
         const TimeBins c = bins.clipped(region);
-        for (int b = 0; b < 8; ++b)
+        for (int b = 0; b < kBins; ++b)
             for (int s = 0; s <= 16; ++s) {
                 const BinBox original = line_at(bins, b, s / 16.0);
                 const BinBox inside = original.clipped(region);
@@ -175,7 +178,7 @@ TEST_CASE("clipped lines hold every part of the original lines inside the region
                 }
             }
         // Clipping only ever raises a lower edge.
-        for (int j = 0; j <= 8; ++j)
+        for (int j = 0; j <= kBins; ++j)
             for (int a = 0; a < 3; ++a) CHECK(c.edge[j].lo[a] >= bins.edge[j].lo[a]);
     }
 }
@@ -189,9 +192,9 @@ TEST_CASE("the linear fit of lined bins lies outside every line, and nearer than
         const TimeBins bins = random_lined(random, 1.0, 0.0);
         const LinearBox fit = fit_linear(bins);
         REQUIRE_FALSE(fit.empty);
-        for (int b = 0; b < 8; ++b)
+        for (int b = 0; b < kBins; ++b)
             for (int s = 0; s <= 8; ++s) {
-                const double w = s / 8.0, u = (b + w) / 8.0;
+                const double w = s / 8.0, u = (b + w) / kBins;
                 const BinBox line = line_at(bins, b, w);
                 for (int a = 0; a < 3; ++a) {
                     const double lo = fit.lo0[a] + u * (fit.lo1[a] - fit.lo0[a]);
@@ -207,4 +210,54 @@ TEST_CASE("the linear fit of lined bins lies outside every line, and nearer than
     }
     // The lines leave out the path inside each bin: nearly always tighter.
     CHECK(nearer > kTrials * 9 / 10);
+}
+
+TEST_CASE("one bin's linear fit is its chord or its box, whichever is nearer, and holds it",
+          "[tracer][bins]") {
+    // A piece node fits each piece of one bin so (fit_linear's one-bin
+    // form): the line through the bin's two edges where that lies inside
+    // the box on average, else the box's side, never inside either.
+    std::mt19937 random(17);
+    int chords = 0;
+    for (const double scale : {1e-6, 1.0, 3e4, 1e30})
+        for (int trial = 0; trial < 500; ++trial) {
+            const TimeBins all = random_lined(random, scale, 7.0 * scale);
+            TimeBins one = TimeBins::empty(1);
+            one.bin[0] = all.bin[1];
+            one.edge[0] = all.edge[1];
+            one.edge[1] = all.edge[2];
+            // Now and then a box far wider than the chord's ends, or a bin
+            // without lines.
+            if (trial % 7 == 3)
+                for (int a = 0; a < 3; ++a) one.bin[0].lo[a] -= float(scale);
+            if (trial % 11 == 5) one.lined = false;
+            const LinearBox fit = fit_linear(one);
+            REQUIRE_FALSE(fit.empty);
+            REQUIRE(fit_linear(one.bin[0], one.edge[0], one.edge[1], one.lines()).lo0 == fit.lo0);
+            for (int a = 0; a < 3; ++a) {
+                const double e0 = one.edge[0].lo[a], e1 = one.edge[1].lo[a];
+                const double box = one.bin[0].lo[a];
+                const bool chord = one.lined && 0.5 * (e0 + e1) >= box;
+                chords += chord;
+                // Exactly the chord's ends or the box's side, but for the
+                // last rounding of a line kept below its points.
+                const double tolerance = 4e-16 * std::max(std::fabs(e0), std::fabs(e1));
+                CHECK(fit.lo0[a] <= (chord ? e0 : box));
+                CHECK(fit.lo1[a] <= (chord ? e1 : box));
+                CHECK(fit.lo0[a] >= (chord ? e0 : box) - tolerance);
+                CHECK(fit.lo1[a] >= (chord ? e1 : box) - tolerance);
+                // Over the bin, below the chord (or the box) in doubles.
+                const double h0 = one.edge[0].hi[a], h1 = one.edge[1].hi[a];
+                const double top = one.bin[0].hi[a];
+                for (int s = 0; s <= 16; ++s) {
+                    const double u = s / 16.0;
+                    const double lo = fit.lo0[a] + u * (fit.lo1[a] - fit.lo0[a]);
+                    const double hi = fit.hi0[a] + u * (fit.hi1[a] - fit.hi0[a]);
+                    CHECK(lo <= std::max(e0 + u * (e1 - e0), box) + tolerance);
+                    CHECK(hi >= std::min(h0 + u * (h1 - h0), top) - tolerance);
+                }
+            }
+        }
+    CHECK(chords > 1000);  // (both sides of the choice are taken)
+    CHECK(chords < 5800);  // (of 6,000)
 }

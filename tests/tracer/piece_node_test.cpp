@@ -30,11 +30,11 @@ using hexant::tracer::TimeBins;
 
 namespace {
 
-constexpr int kBins = 8;
+constexpr int kBins = hexant::tracer::kMaxBins;
 
 // A child on a circular path of radius `orbit` about `centre`, turning
 // `turns` times over [0, 1] of the node's time, of half-size `size`: its
-// bins over eight pieces, lined (each cut's box, the chord's error added:
+// bins over kBins pieces, lined (each cut's box, the chord's error added:
 // orbit * (angle of a piece)^2 / 8), or boxes alone; bins in `empty` hold
 // nothing.
 TimeBins orbit_bins(double centre, double orbit, double turns, double phase, double size,
@@ -158,21 +158,23 @@ TEST_CASE("a piece node's box at every instant holds what its children's bins ho
 TEST_CASE("a piece node's knot beside an empty piece may be inverted, and is kept",
           "[tracer][bins][piece]") {
     // From the swarm under the paper's criterion (a sphere leaving a cell
-    // in its last bin): over piece 3 the object is only in bin 7; its
-    // lower line, from the edges, rises back to knot 3 above its upper
-    // side, the bin's box. The knot is inverted and alone at knot 3: the
-    // frame there must still hold it (it held nothing, and the lower end
-    // decoded to 0, far above the sphere: a lost hit).
+    // in its last bin, then bin 7 of eight): over the last piece the object
+    // is only in the last bin; its lower line, from the edges, rises back
+    // to the knot before it above its upper side, the bin's box. The knot
+    // is inverted and alone there: the frame must still hold it (it held
+    // nothing, and the lower end decoded to 0, far above the sphere: a
+    // lost hit).
+    constexpr int kLast = kBins - 1;
     TimeBins bins = TimeBins::empty(kBins);
     for (int a = 0; a < 3; ++a) {
-        for (int e = 0; e <= 6; ++e)
+        for (int e = 0; e < kLast; ++e)
             bins.edge[e].lo[a] = -7.94670868f, bins.edge[e].hi[a] = -8.13349724f;
-        bins.edge[7].lo[a] = -8.30022621f;
-        bins.edge[7].hi[a] = -7.94670868f;
-        bins.edge[8].lo[a] = -8.64085293f;
-        bins.edge[8].hi[a] = -8.2873354f;
-        bins.bin[7].lo[a] = -8.64085293f;
-        bins.bin[7].hi[a] = -8.13350391f;
+        bins.edge[kLast].lo[a] = -7.94670868f;  // (-8.30022621 at eight bins, the
+        bins.edge[kLast].hi[a] = -7.94670868f;  // lone bin's inverted knot one earlier)
+        bins.edge[kBins].lo[a] = -8.64085293f;
+        bins.edge[kBins].hi[a] = -8.2873354f;
+        bins.bin[kLast].lo[a] = -8.64085293f;
+        bins.bin[kLast].hi[a] = -8.13350391f;
     }
     REQUIRE(bins.lines());
     const std::vector<const TimeBins*> of{&bins};
@@ -180,9 +182,9 @@ TEST_CASE("a piece node's knot beside an empty piece may be inverted, and is kep
     REQUIRE(fit_piece_node(node, Interval(0.0, 0.03125), of));
     for (int s = 0; s <= 100; ++s) {
         const double w = s / 100.0;
-        const BinBox inner = held(bins, 7, w);
+        const BinBox inner = held(bins, kLast, w);
         if (inner.is_empty()) continue;
-        const PieceBox box = piece_box_at(node, 0, 0.03125 * (7.0 + w) / 8.0);
+        const PieceBox box = piece_box_at(node, 0, 0.03125 * (kLast + w) / kBins);
         for (int a = 0; a < 3; ++a) {
             CHECK(box.lo[a] <= inner.lo[a]);
             CHECK(inner.hi[a] <= box.hi[a]);
