@@ -148,8 +148,15 @@ void Hierarchy::build_pending(PendingCell* p, Counters& counters) const {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+void Hierarchy::new_index_generation() const {
+    static std::atomic<std::uint64_t> last{0};
+    index_generation_.store(last.fetch_add(1, std::memory_order_relaxed) + 1,
+                            std::memory_order_release);
+}
+
 void Hierarchy::release(const LiveSlab& slab) const {
     time_index_.clear();
+    new_index_generation();
     PendingCell* p = slab.cell;
     NodeRef::store(slab.slot, NodeRef::node(RefKind::Pending, p));
     p->built = {};
@@ -174,6 +181,7 @@ void Hierarchy::release_outside(double t0, double t1) {
 void Hierarchy::enter_frame(double t0, double t1) {
     release_outside(t0, t1);
     time_index_.build(&root_, t0, t1);
+    new_index_generation();
 }
 
 std::size_t Hierarchy::held_bytes() const {

@@ -199,8 +199,26 @@ class Hierarchy {
     // thread-safe, as release_outside.
     void enter_frame(double t0, double t1);
     // Where the walk of a ray at instant t starts: its piece of the time
-    // index, or `root` (a copy of root()) where the index has none.
-    NodeRef* time_entry(double t, NodeRef* root) const { return time_index_.entry(t, root); }
+    // index, or `root` (a copy of root()) where the index has none. Read
+    // from the thread's own copy, `local`, taken again whenever the shared
+    // index has changed since (enter_frame, a slab's release).
+    NodeRef* time_entry(double t, NodeRef* root, LocalTimeIndex& local) const {
+        // (Generations are unique across hierarchies: one number says both.)
+        const std::uint64_t generation = index_generation_.load(std::memory_order_acquire);
+        if (local.generation != generation) [[unlikely]] {
+            local.index = time_index_;
+            local.generation = generation;
+        }
+        return local.index.entry(t, root);
+    }
+    // The thread's copy built again from the chain as it stands, when a
+    // walk from one of its entries met a time node built since. Thread-safe
+    // (it reads the chain as a walk does, and writes `local` only).
+    void refresh_time_index(LocalTimeIndex& local) const {
+        // (The index never hands out the root's own slot: a chain starts
+        // below it. The cast is for the type of the slots it keeps.)
+        local.index.refresh(const_cast<NodeRef*>(&root_));
+    }
 
     // Node memory in bytes: now, and the most held at once so far.
     std::size_t bytes() const;
@@ -237,6 +255,10 @@ class Hierarchy {
     NodeRef root_;
     // Cleared by every release of a slab (its slots go with it).
     mutable TimeIndex time_index_;
+    // Changed with time_index_, to a number no hierarchy has used: the
+    // threads' copies (LocalTimeIndex) are taken again.
+    mutable std::atomic<std::uint64_t> index_generation_{0};
+    void new_index_generation() const;
 };
 
 }  // namespace hexant::tracer

@@ -14,6 +14,7 @@
 #include "tracer/mailbox.hpp"
 #include "tracer/radiosity_cache.hpp"
 #include "tracer/spectral_band.hpp"
+#include "tracer/time_index.hpp"
 
 namespace hexant::tracer {
 
@@ -73,6 +74,8 @@ struct ThreadState {
     // it: the ray cannot meet it, and ObjectTest::occludes passes it by
     // (runtime::IntelligentObject::flat). Null for every other ray.
     const runtime::IntelligentObject* leaving = nullptr;
+    // This thread's copy of the spacetime hierarchy's time index.
+    LocalTimeIndex time_index{};
     // Of the rays on the path being traced, how many passed straight
     // through a surface (the same ior on both sides): POV-Ray traces those
     // as the ray continued, no new trace level (TraceRay's continuedRay),

@@ -8,10 +8,13 @@ void TimeIndex::clear() {
     cuts_.clear();
     slots_.clear();
     end_closed_ = false;
+    capped_ = false;
 }
 
 void TimeIndex::build(NodeRef* root, double t0, double t1) {
     clear();
+    t0_ = t0;
+    t1_ = t1;
     if (!(t0 <= t1)) return;
     NodeRef ref = NodeRef::load(root);
     if (ref.kind() != RefKind::TimeNode) return;
@@ -30,7 +33,12 @@ void TimeIndex::build(NodeRef* root, double t0, double t1) {
         const Piece p = todo.back();
         todo.pop_back();
         const NodeRef r = NodeRef::load(p.slot);
-        if (r.kind() != RefKind::TimeNode || pieces.size() + todo.size() + 2 > kMaxEntries) {
+        if (r.kind() != RefKind::TimeNode) {
+            pieces.push_back(p);
+            continue;
+        }
+        if (pieces.size() + todo.size() + 2 > kMaxEntries) {
+            capped_ = true;
             pieces.push_back(p);
             continue;
         }

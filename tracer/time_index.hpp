@@ -21,6 +21,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "tracer/cell.hpp"
@@ -40,6 +41,14 @@ class TimeIndex {
     // root is not a time node.
     void build(NodeRef* root, double t0, double t1);
     void clear();
+    // Builds it again over the same shutter, reaching below the time nodes
+    // built since (a thread's own copy, LocalTimeIndex; the chain is read
+    // as a walk reads it, so other threads may build meanwhile).
+    void refresh(NodeRef* root) { build(root, t0_, t1_); }
+    // Whether a walk from an entry that meets a time node would gain by a
+    // refresh: built over a shutter, and not stopped by kMaxEntries (past
+    // that, walks take the time nodes below it as before).
+    bool refreshable() const { return !slots_.empty() && !capped_; }
 
     // The slot a walk at instant t starts from: the indexed piece holding
     // t, or `root` where t lies outside the index.
@@ -66,6 +75,21 @@ class TimeIndex {
     // The last piece holds its end too only where that is the chain's end
     // (elsewhere an instant there belongs to a later piece not indexed).
     bool end_closed_ = false;
+    bool capped_ = false;  // a piece was kept whole because the index was full
+    double t0_ = 0.0, t1_ = -1.0;
+};
+
+// A thread's copy of a hierarchy's time index (ThreadState): taken from the
+// shared one when that changes (`generation`, Hierarchy::time_entry), and
+// refreshed by the thread alone when a walk from one of its entries meets
+// a time node, so that within a frame each ray starts below the chain the
+// frame's first rays built (issue 43: bounce's rays walked about three time
+// nodes below the shared index, built before the frame's own cells).
+struct LocalTimeIndex {
+    TimeIndex index;
+    // The generation of the Hierarchy's index it copies (unique to that
+    // hierarchy and that index; 0: none yet).
+    std::uint64_t generation = 0;
 };
 
 }  // namespace hexant::tracer

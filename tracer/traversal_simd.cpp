@@ -102,7 +102,9 @@ class Walk {
         int top = 0;
         // The frame's time index skips the chain of time nodes above the
         // ray's time slice (time_index.hpp); below it the loop goes on.
-        NodeRef* slot = h_.time_entry(r_.time, &root);
+        LocalTimeIndex& index = state_.time_index;
+        NodeRef* slot = h_.time_entry(r_.time, &root, index);
+        NodeRef* const entry = slot;
         for (;;) {
             NodeRef ref = NodeRef::load(slot);
             // Runs of time nodes: the ray's instant picks each half without
@@ -110,6 +112,10 @@ class Walk {
             // later half: a frame that opens there never needs the earlier
             // one (Hierarchy::release_outside lets it go).
             while (ref.kind() == RefKind::TimeNode) {
+                // A time node at the thread's own entry was built since its
+                // index was: a refresh takes it in for the rays after.
+                if (slot == entry && entry != &root && index.index.refreshable())
+                    h_.refresh_time_index(index);
                 TimeNode* node = ref.as<TimeNode>();
                 slot = &node->child[r_.time >= node->split];
                 ref = NodeRef::load(slot);

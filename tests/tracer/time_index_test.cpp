@@ -134,6 +134,65 @@ TEST_CASE("the time index stops at a pending cell of its chain, which the walk b
     CHECK(index.entry(0.7, &copy) == &copy);
 }
 
+TEST_CASE("a thread's copy of the index, refreshed, starts below the time nodes built since",
+          "[tracer][time_index]") {
+    // The frame's index stops at a pending half; a walk builds a time node
+    // there. The thread's copy, refreshed, leads straight below it, while
+    // the shared index it was copied from stays as it was.
+    std::deque<TimeNode> built;
+    TimeNode& top = built.emplace_back();
+    top.t0 = 0.0;
+    top.t1 = 1.0;
+    top.split = 0.5;
+    top.child[0] = NodeRef::object(1);
+    int marker = 0;
+    top.child[1] = NodeRef::node(RefKind::Pending, &marker);
+    NodeRef root = NodeRef::node(RefKind::TimeNode, &top);
+    NodeRef copy = root;
+    TimeIndex shared;
+    shared.build(&root, 0.25, 0.9);
+    REQUIRE(shared.refreshable());
+    TimeIndex local = shared;
+    TimeNode& half = built.emplace_back();
+    half.t0 = 0.5;
+    half.t1 = 1.0;
+    half.split = 0.75;
+    half.child[0] = NodeRef::object(2);
+    half.child[1] = NodeRef::object(3);
+    NodeRef::store(&top.child[1], NodeRef::node(RefKind::TimeNode, &half));
+    CHECK(local.entry(0.7, &copy) == &top.child[1]);  // one time node to walk
+    local.refresh(&root);
+    CHECK(local.size() == 3);
+    for (int k = 0; k <= 100; ++k) {
+        const double t = 0.25 + 0.65 * k / 100.0;
+        CHECK(local.entry(t, &copy) == descend(&root, t));
+        CHECK(NodeRef::load(local.entry(t, &copy)).kind() != RefKind::TimeNode);
+    }
+    CHECK(shared.entry(0.7, &copy) == &top.child[1]);
+    // The refresh keeps the shutter it was built over: outside it, the
+    // root or the chain's own slot in the pieces that hold its ends.
+    for (const double t : {0.1, 0.2, 0.95, 1.0})
+        CHECK((local.entry(t, &copy) == &copy || local.entry(t, &copy) == descend(&root, t)));
+    CHECK(local.entry(1.5, &copy) == &copy);
+
+    // An index that filled up leaves its last pieces' time nodes to the
+    // walk: refreshing it would gain nothing, on every ray.
+    std::mt19937 random(3);
+    Chain deep;
+    NodeRef deep_root = deep.make(0.0, 1.0, 14, random);
+    TimeIndex full;
+    full.build(&deep_root, 0.0, 1.0);
+    CHECK(full.size() <= TimeIndex::kMaxEntries);
+    CHECK_FALSE(full.refreshable());
+    NodeRef deep_copy = deep_root;
+    for (int k = 0; k <= 1000; ++k) {
+        const double t = k / 1000.0;
+        CHECK(descend(full.entry(t, &deep_copy), t) == descend(&deep_root, t));
+    }
+    TimeIndex none;
+    CHECK_FALSE(none.refreshable());
+}
+
 TEST_CASE("the inline float steps are std::nextafter's", "[tracer][bound_rounding]") {
     using hexant::tracer::float_step_down;
     using hexant::tracer::float_step_up;
