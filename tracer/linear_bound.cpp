@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <tuple>
+#include <utility>
 
 #include "tracer/bound_rounding.hpp"
 
@@ -197,32 +200,53 @@ double LinearExtent::mean_area() const {
     return box.mean_area();
 }
 
+namespace {
+
+// A side's value along axis k (mirrored for the upper end: larger is nearer).
+double side_of(const BinBox& b, int k, bool upper) {
+    return upper ? -double(b.hi[k]) : double(b.lo[k]);
+}
+
+// A non-empty bin's side at its start and end: its line's (from edge
+// `first` to `last`) where the bin is lined and that is the nearer on
+// average, else its box's side.
+std::pair<double, double> bin_ends(const BinBox& bin, const BinBox* first, const BinBox* last,
+                                   int k, bool upper) {
+    const double held = side_of(bin, k, upper);
+    if (first == nullptr) return {held, held};
+    const double a = side_of(*first, k, upper), z = side_of(*last, k, upper);
+    return 0.5 * (a + z) >= held ? std::pair{a, z} : std::pair{held, held};
+}
+
+// Stores a side's line, mirrored back for the upper end; none (an object
+// without a finite box) leaves that side infinite.
+void set_side(LinearBox& box, int k, bool upper, std::optional<std::pair<double, double>> line) {
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    const auto [a0, a1] = line.value_or(std::pair{-kInf, -kInf});
+    if (upper) {
+        box.hi0[k] = -a0;
+        box.hi1[k] = -a1;
+    } else {
+        box.lo0[k] = a0;
+        box.lo1[k] = a1;
+    }
+}
+
+}  // namespace
+
 LinearBox fit_linear(const BinBox& bin, const BinBox& first, const BinBox& last, bool lined) {
-    // The general fit below for n = 1: two points, a bin's start and end.
+    // The general fit below for n = 1: two points, the bin's start and end.
     LinearBox box;
     if (bin.is_empty()) return box;
     box.empty = false;
     for (int k = 0; k < 3; ++k)
         for (const bool upper : {false, true}) {
-            const auto side = [&](const BinBox& b) {
-                return upper ? -double(b.hi[k]) : double(b.lo[k]);
-            };
-            const double held = side(bin);
-            double start = held, end = held;
-            if (lined) {
-                const double a = side(first), z = side(last);
-                if (0.5 * (a + z) >= held) start = a, end = z;
-            }
-            std::pair<double, double> line{-std::numeric_limits<double>::infinity(),
-                                           -std::numeric_limits<double>::infinity()};
-            if (std::isfinite(start) && std::isfinite(end)) line = line_through(start, end);
-            if (upper) {
-                box.hi0[k] = -line.first;
-                box.hi1[k] = -line.second;
-            } else {
-                box.lo0[k] = line.first;
-                box.lo1[k] = line.second;
-            }
+            const auto [start, end] =
+                bin_ends(bin, lined ? &first : nullptr, lined ? &last : nullptr, k, upper);
+            set_side(box, k, upper,
+                     std::isfinite(start) && std::isfinite(end)
+                         ? std::optional(line_through(start, end))
+                         : std::nullopt);
         }
     return box;
 }
@@ -237,23 +261,16 @@ LinearBox fit_linear(const TimeBins& bins) {
     constexpr double kNone = std::numeric_limits<double>::infinity();
     for (int k = 0; k < 3; ++k) {
         for (const bool upper : {false, true}) {
-            // A side's value (mirrored for the upper end: larger is nearer).
-            const auto side = [&](const BinBox& b) {
-                return upper ? -double(b.hi[k]) : double(b.lo[k]);
-            };
-            // Each non-empty bin's values at its start and end: its line's
-            // where that is the nearer on average, else its box's side.
+            // Each non-empty bin's values at its start and end.
             double start[kMaxBins], end[kMaxBins];
             for (int b = 0; b < n; ++b) {
                 if (bins.bin[b].is_empty()) {
                     start[b] = end[b] = kNone;
                     continue;
                 }
-                const double held = side(bins.bin[b]);
-                start[b] = end[b] = held;
-                if (!lines) continue;
-                const double a = side(bins.edge[b]), z = side(bins.edge[b + 1]);
-                if (0.5 * (a + z) >= held) start[b] = a, end[b] = z;
+                std::tie(start[b], end[b]) =
+                    bin_ends(bins.bin[b], lines ? &bins.edge[b] : nullptr,
+                             lines ? &bins.edge[b + 1] : nullptr, k, upper);
             }
             // One point per bin boundary touching a non-empty bin: the
             // outermost of its neighbours' values there.
@@ -263,19 +280,10 @@ LinearBox fit_linear(const TimeBins& bins) {
                 const double v = std::min(j > 0 ? end[j - 1] : kNone, j < n ? start[j] : kNone);
                 if (v != kNone) points[count++] = {double(j) / double(n), v};
             }
-            // An infinite end (an object without a finite box) stays infinite.
             bool finite = true;
             for (int i = 0; i < count; ++i) finite = finite && std::isfinite(points[i].v);
-            std::pair<double, double> line{-std::numeric_limits<double>::infinity(),
-                                           -std::numeric_limits<double>::infinity()};
-            if (finite) line = line_below(points, count);
-            if (upper) {
-                box.hi0[k] = -line.first;
-                box.hi1[k] = -line.second;
-            } else {
-                box.lo0[k] = line.first;
-                box.lo1[k] = line.second;
-            }
+            set_side(box, k, upper,
+                     finite ? std::optional(line_below(points, count)) : std::nullopt);
         }
     }
     return box;
