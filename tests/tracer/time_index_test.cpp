@@ -52,6 +52,18 @@ NodeRef* descend(NodeRef* slot, double t) {
     return slot;
 }
 
+// A time node over [t0, t1] halved at its middle, kept in `store`.
+TimeNode& time_node(std::deque<TimeNode>& store, double t0, double t1, NodeRef early,
+                    NodeRef late) {
+    TimeNode& n = store.emplace_back();
+    n.t0 = t0;
+    n.t1 = t1;
+    n.split = 0.5 * (t0 + t1);
+    n.child[0] = early;
+    n.child[1] = late;
+    return n;
+}
+
 }  // namespace
 
 TEST_CASE("the time index starts each instant where the chain of time nodes leads",
@@ -104,24 +116,15 @@ TEST_CASE("the time index stops at a pending cell of its chain, which the walk b
     // A chain whose later half is not built yet: its slot is a piece of
     // its own, and stays the entry once a walk has built a time node there.
     std::deque<TimeNode> built;
-    TimeNode& top = built.emplace_back();
-    top.t0 = 0.0;
-    top.t1 = 1.0;
-    top.split = 0.5;
-    top.child[0] = NodeRef::object(1);
     int marker = 0;
-    top.child[1] = NodeRef::node(RefKind::Pending, &marker);
+    TimeNode& top =
+        time_node(built, 0.0, 1.0, NodeRef::object(1), NodeRef::node(RefKind::Pending, &marker));
     NodeRef pending_root = NodeRef::node(RefKind::TimeNode, &top);
     index.build(&pending_root, 0.6, 0.9);
     CHECK(index.size() == 1);  // [0.5, 1]; the earlier half is outside the shutter
     CHECK(index.entry(0.7, &copy) == &top.child[1]);
     CHECK(index.entry(0.4, &copy) == &copy);
-    TimeNode& half = built.emplace_back();
-    half.t0 = 0.5;
-    half.t1 = 1.0;
-    half.split = 0.75;
-    half.child[0] = NodeRef::object(2);
-    half.child[1] = NodeRef::object(3);
+    TimeNode& half = time_node(built, 0.5, 1.0, NodeRef::object(2), NodeRef::object(3));
     NodeRef::store(&top.child[1], NodeRef::node(RefKind::TimeNode, &half));
     CHECK(index.entry(0.7, &copy) == &top.child[1]);
     CHECK(descend(index.entry(0.8, &copy), 0.8) == &half.child[1]);
@@ -140,25 +143,16 @@ TEST_CASE("a thread's copy of the index, refreshed, starts below the time nodes 
     // there. The thread's copy, refreshed, leads straight below it, while
     // the shared index it was copied from stays as it was.
     std::deque<TimeNode> built;
-    TimeNode& top = built.emplace_back();
-    top.t0 = 0.0;
-    top.t1 = 1.0;
-    top.split = 0.5;
-    top.child[0] = NodeRef::object(1);
     int marker = 0;
-    top.child[1] = NodeRef::node(RefKind::Pending, &marker);
+    TimeNode& top =
+        time_node(built, 0.0, 1.0, NodeRef::object(1), NodeRef::node(RefKind::Pending, &marker));
     NodeRef root = NodeRef::node(RefKind::TimeNode, &top);
     NodeRef copy = root;
     TimeIndex shared;
     shared.build(&root, 0.25, 0.9);
     REQUIRE(shared.refreshable());
     TimeIndex local = shared;
-    TimeNode& half = built.emplace_back();
-    half.t0 = 0.5;
-    half.t1 = 1.0;
-    half.split = 0.75;
-    half.child[0] = NodeRef::object(2);
-    half.child[1] = NodeRef::object(3);
+    TimeNode& half = time_node(built, 0.5, 1.0, NodeRef::object(2), NodeRef::object(3));
     NodeRef::store(&top.child[1], NodeRef::node(RefKind::TimeNode, &half));
     CHECK(local.entry(0.7, &copy) == &top.child[1]);  // one time node to walk
     local.refresh(&root);
