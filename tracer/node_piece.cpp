@@ -2,9 +2,9 @@
 // bound a line over each of four pieces of the node's time, the knots kept
 // in 8 bits of a frame per knot and axis.
 //
-// Fit: piece p holds bins p m .. p m + m - 1 of the object's bins (m =
-// bins / kPieces); fit_linear over those bins (and their lines where lined)
-// gives a line below (above) everything the object occupies over the piece.
+// Fit: piece p is bin p of the object's bins; fit_linear over that bin
+// (and its line where lined) gives a line below (above) everything the
+// object occupies over the piece.
 // Neighbouring pieces meet at a knot, which takes the lower (upper) of the
 // two lines' ends there: lowering an end of a line lowers the whole line
 // over its piece, so each piece's line stays below. A knot between two
@@ -43,6 +43,10 @@ using namespace hierarchy_build;
 namespace {
 
 constexpr int kPieces = PieceNode::kPieces;
+// A piece is one bin: the builder's bins (kFitBins) are as many as the
+// pieces, and no more fit a TimeBins. (With more bins a piece, fit each
+// piece's bins as one TimeBins with fit_linear.)
+static_assert(kMaxBins == kPieces);
 constexpr int kKnots = PieceNode::kKnots;
 constexpr int kTop = 255;
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -58,19 +62,9 @@ struct Knots {
 bool fit_pieces(const TimeBins& bins, Knots& out) {
     for (int j = 0; j < kKnots; ++j)
         for (int k = 0; k < 3; ++k) out.lo[j][k] = kInf, out.hi[j][k] = -kInf;
-    const int m = bins.count / kPieces;
     const bool lines = bins.lines();
-    const auto fit_piece = [&](int p) {
-        if (m == 1) return fit_linear(bins.bin[p], bins.edge[p], bins.edge[p + 1], lines);
-        TimeBins part = TimeBins::empty(m);
-        part.lined = lines;
-        for (int b = 0; b < m; ++b) part.bin[b] = bins.bin[p * m + b];
-        if (lines)
-            for (int e = 0; e <= m; ++e) part.edge[e] = bins.edge[p * m + e];
-        return fit_linear(part);
-    };
     for (int p = 0; p < kPieces; ++p) {
-        const LinearBox fit = fit_piece(p);
+        const LinearBox fit = fit_linear(bins.bin[p], bins.edge[p], bins.edge[p + 1], lines);
         if (fit.empty) continue;
         for (int k = 0; k < 3; ++k) {
             out.lo[p][k] = std::min(out.lo[p][k], fit.lo0[k]);
@@ -100,7 +94,7 @@ bool fit_piece_node(PieceNode& node, const runtime::Interval& time,
     if (n == 0 || n > std::size_t(kNodeWidth)) return false;
     std::array<Knots, kNodeWidth> knots;
     for (std::size_t i = 0; i < n; ++i) {
-        if (bins[i]->count < kPieces || bins[i]->count % kPieces != 0) return false;
+        if (bins[i]->count != kPieces) return false;
         if (!fit_pieces(*bins[i], knots[i])) return false;
     }
     // Per axis, the margin; per knot and axis, the targets' frame.

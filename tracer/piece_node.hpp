@@ -14,7 +14,7 @@
 namespace hexant::tracer {
 
 // Fills node's bounds and times for children with these bins (each over
-// equal pieces of `time`, a multiple of PieceNode::kPieces of them), the
+// equal pieces of `time`, PieceNode::kPieces of them), the
 // child slots left empty; false where the knots cannot be stored (not
 // finite, or beyond the frames' floats).
 bool fit_piece_node(PieceNode& node, const runtime::Interval& time,

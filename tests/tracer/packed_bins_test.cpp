@@ -5,6 +5,7 @@
 // line holds inside the region, and fitted outside every line.
 #include "tracer/packed_bins.hpp"
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -233,7 +234,25 @@ TEST_CASE("one bin's linear fit is its chord or its box, whichever is nearer, an
             if (trial % 11 == 5) one.lined = false;
             const LinearBox fit = fit_linear(one);
             REQUIRE_FALSE(fit.empty);
-            REQUIRE(fit_linear(one.bin[0], one.edge[0], one.edge[1], one.lines()).lo0 == fit.lo0);
+            // The general fit (the hull) over two bins, the second empty,
+            // fits the first the same line over its half of the time: an
+            // independent path to the same answer, but for rounding (a few
+            // ulps of the values, the slope doubled and halved again).
+            TimeBins two = TimeBins::empty(2);
+            two.lined = one.lined;
+            two.bin[0] = one.bin[0];
+            two.edge[0] = one.edge[0];
+            two.edge[1] = one.edge[1];
+            const LinearBox general = fit_linear(two);
+            for (int a = 0; a < 3; ++a)
+                for (const auto& [e0, e1, g0, g1] :
+                     {std::array{fit.lo0[a], fit.lo1[a], general.lo0[a], general.lo1[a]},
+                      std::array{fit.hi0[a], fit.hi1[a], general.hi0[a], general.hi1[a]}}) {
+                    const double slack =
+                        1e-14 * std::max({std::fabs(e0), std::fabs(e1), std::fabs(g1)});
+                    CHECK(std::fabs(g0 - e0) <= slack);
+                    CHECK(std::fabs(g0 + 0.5 * (g1 - g0) - e1) <= slack);
+                }
             for (int a = 0; a < 3; ++a) {
                 const double e0 = one.edge[0].lo[a], e1 = one.edge[1].lo[a];
                 const double box = one.bin[0].lo[a];
